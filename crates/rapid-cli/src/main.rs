@@ -1,0 +1,2 @@
+//! The `rapid` command.
+fn main() {}

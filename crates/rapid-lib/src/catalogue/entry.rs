@@ -1,0 +1,73 @@
+//! The shape of one catalogue entry: RAPID declaration text plus a doc line.
+//!
+//! Every predefined type, data object, instruction and function is written as the
+//! RAPID declaration a user would write for it (extended where built-ins need more
+//! than user code may say), so the same parser reads user code and the catalogue.
+
+/// What kind of predefined thing an entry declares.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum EntryKind {
+    /// `PROC Name(params)` or `FUNC type Name(params)`, with no body.
+    ///
+    /// Parameter lists use RAPID's own syntax, extended in two ways only built-ins use:
+    /// required alternatives (`num Value | dnum DValue`, ABB's `Value | DValue`) and the
+    /// type `anytype` (any data type; `anytype Name{*}` accepts an array of any rank).
+    Routine,
+    /// `RECORD name type comp; ... ENDRECORD` or `ALIAS base name;`.
+    TypeDecl,
+    /// An atomic value type (`num`, `dnum`, `bool`, `string`): `text` is its name.
+    AtomicValue,
+    /// A non-value type (`clock`, `iodev`, ...): `text` is its name.
+    NonValue,
+    /// A semi-value type (the signal types): `text` is `"name base"`, where `base`
+    /// is the value type the signal reads as in expressions (`"signaldi dionum"`).
+    SemiValue,
+    /// `CONST type name := value;`, `VAR type name;` or `PERS type name := value;`.
+    Data,
+    /// Like `Data`, but a system variable that programs may read and never write
+    /// (`ERRNO`, `INTNO`).
+    ReadOnlyData,
+}
+
+/// One predefined thing: its declaration in RAPID syntax and one line of documentation.
+#[derive(Debug, Clone, Copy)]
+pub struct Entry {
+    pub kind: EntryKind,
+    pub text: &'static str,
+    pub doc: &'static str,
+}
+
+/// A built-in instruction (`PROC`) or function (`FUNC`).
+pub const fn routine(text: &'static str, doc: &'static str) -> Entry {
+    Entry { kind: EntryKind::Routine, text, doc }
+}
+
+/// A predefined RECORD or ALIAS type.
+pub const fn type_decl(text: &'static str, doc: &'static str) -> Entry {
+    Entry { kind: EntryKind::TypeDecl, text, doc }
+}
+
+/// An atomic value type.
+pub const fn atomic(name: &'static str, doc: &'static str) -> Entry {
+    Entry { kind: EntryKind::AtomicValue, text: name, doc }
+}
+
+/// A non-value type.
+pub const fn non_value(name: &'static str, doc: &'static str) -> Entry {
+    Entry { kind: EntryKind::NonValue, text: name, doc }
+}
+
+/// A semi-value type: `"name base"`.
+pub const fn semi_value(name_and_base: &'static str, doc: &'static str) -> Entry {
+    Entry { kind: EntryKind::SemiValue, text: name_and_base, doc }
+}
+
+/// Predefined data (constants, variables, persistents).
+pub const fn data(text: &'static str, doc: &'static str) -> Entry {
+    Entry { kind: EntryKind::Data, text, doc }
+}
+
+/// A read-only system variable.
+pub const fn read_only(text: &'static str, doc: &'static str) -> Entry {
+    Entry { kind: EntryKind::ReadOnlyData, text, doc }
+}

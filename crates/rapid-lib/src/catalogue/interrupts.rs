@@ -1,0 +1,5 @@
+//! Catalogue chapter: interrupts.
+
+use super::entry::*;
+
+pub(crate) const ENTRIES: &[Entry] = &[];

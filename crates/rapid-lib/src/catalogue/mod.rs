@@ -1,0 +1,35 @@
+//! The catalogue of predefined RAPID: one file per chapter of the manual.
+//!
+//! Each chapter file exposes `ENTRIES: &[Entry]`. `ALL_CHAPTERS` lists them; nothing
+//! else in the workspace may declare a built-in.
+
+pub mod entry;
+
+mod types;
+mod data;
+mod math;
+mod strings;
+mod time;
+mod files;
+mod sockets;
+mod system;
+mod io;
+mod interrupts;
+mod motion;
+
+pub use entry::{Entry, EntryKind};
+
+/// Every chapter: (chapter name, its entries).
+pub const ALL_CHAPTERS: &[(&str, &[Entry])] = &[
+    ("types", types::ENTRIES),
+    ("data", data::ENTRIES),
+    ("math", math::ENTRIES),
+    ("strings", strings::ENTRIES),
+    ("time", time::ENTRIES),
+    ("files", files::ENTRIES),
+    ("sockets", sockets::ENTRIES),
+    ("system", system::ENTRIES),
+    ("io", io::ENTRIES),
+    ("interrupts", interrupts::ENTRIES),
+    ("motion", motion::ENTRIES),
+];

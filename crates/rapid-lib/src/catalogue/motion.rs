@@ -1,0 +1,5 @@
+//! Catalogue chapter: motion.
+
+use super::entry::*;
+
+pub(crate) const ENTRIES: &[Entry] = &[];

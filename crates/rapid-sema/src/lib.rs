@@ -1,0 +1,3 @@
+//! rapid-sema: name resolution, type checking and the diagnostics of `rapid check`.
+
+pub mod codes;

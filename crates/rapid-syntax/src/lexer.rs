@@ -1,0 +1,419 @@
+//! The hand-written lexer: text in, tokens out, comments and lexical errors on the
+//! side. It never fails: bad input becomes an error plus the best token it can make.
+
+use crate::error::{SyntaxError, SyntaxErrorKind};
+use crate::span::Span;
+use crate::token::{keyword, Placeholder, Token, TokenKind};
+
+/// Identifiers may have at most this many characters (§1.1.2).
+pub const MAX_IDENT_CHARS: usize = 32;
+/// String values may have at most this many characters (§1.1.2).
+pub const MAX_STRING_CHARS: usize = 80;
+
+/// Streams tokens out of a text.
+pub struct Lexer<'t> {
+    text: &'t str,
+    bytes: &'t [u8],
+    pos: usize,
+    /// Comments seen so far (`!` to the end of the line).
+    pub comments: Vec<Span>,
+    /// Lexical errors seen so far.
+    pub errors: Vec<SyntaxError>,
+}
+
+/// Whether `c` is a letter of the manual's `<letter>` table (ASCII and Latin-1).
+pub fn is_letter(c: char) -> bool {
+    c.is_ascii_alphabetic() || matches!(c, '\u{C0}'..='\u{D6}' | '\u{D8}'..='\u{F6}' | '\u{F8}'..='\u{FF}')
+}
+
+fn is_ident_continue(c: char) -> bool {
+    is_letter(c) || c.is_ascii_digit() || c == '_'
+}
+
+impl<'t> Lexer<'t> {
+    pub fn new(text: &'t str) -> Lexer<'t> {
+        Lexer { text, bytes: text.as_bytes(), pos: 0, comments: Vec::new(), errors: Vec::new() }
+    }
+
+    /// Starts lexing at byte `pos` (used to re-lex one routine body).
+    pub fn at(text: &'t str, pos: usize) -> Lexer<'t> {
+        Lexer { pos, ..Lexer::new(text) }
+    }
+
+    /// The next token; `Eof` forever at the end.
+    pub fn next_token(&mut self) -> Token {
+        loop {
+            self.skip_whitespace();
+            let start = self.pos;
+            let Some(&byte) = self.bytes.get(start) else {
+                return self.token(TokenKind::Eof, start);
+            };
+            let kind = match byte {
+                b'!' => {
+                    self.skip_line();
+                    self.comments.push(Span::new(start, self.pos));
+                    continue;
+                }
+                b'a'..=b'z' | b'A'..=b'Z' => self.ident(),
+                b'0'..=b'9' => self.number(),
+                b'.' if self.peek_byte(1).is_some_and(|b| b.is_ascii_digit()) => self.number(),
+                b'"' => self.string(),
+                b'%' if self.text[start..].starts_with("%%%") => self.header(),
+                b'<' => self.less_or_placeholder(),
+                b'>' => self.one_or_two(TokenKind::Gt, b'=', TokenKind::Ge),
+                b':' => self.one_or_two(TokenKind::Colon, b'=', TokenKind::Assign),
+                b'(' => self.single(TokenKind::LParen),
+                b')' => self.single(TokenKind::RParen),
+                b'[' => self.single(TokenKind::LBracket),
+                b']' => self.single(TokenKind::RBracket),
+                b'{' => self.single(TokenKind::LBrace),
+                b'}' => self.single(TokenKind::RBrace),
+                b',' => self.single(TokenKind::Comma),
+                b';' => self.single(TokenKind::Semi),
+                b'.' => self.single(TokenKind::Dot),
+                b'\\' => self.single(TokenKind::Backslash),
+                b'|' => self.single(TokenKind::Pipe),
+                b'?' => self.single(TokenKind::Question),
+                b'%' => self.single(TokenKind::Percent),
+                b'+' => self.single(TokenKind::Plus),
+                b'-' => self.single(TokenKind::Minus),
+                b'*' => self.single(TokenKind::Star),
+                b'/' => self.single(TokenKind::Slash),
+                b'=' => self.single(TokenKind::Eq),
+                _ => {
+                    let c = self.current_char();
+                    if is_letter(c) {
+                        self.ident()
+                    } else {
+                        self.invalid_character(c);
+                        continue;
+                    }
+                }
+            };
+            return self.token(kind, start);
+        }
+    }
+
+    fn token(&self, kind: TokenKind, start: usize) -> Token {
+        Token { kind, span: Span::new(start, self.pos) }
+    }
+
+    fn error(&mut self, kind: SyntaxErrorKind, span: Span, message: String) {
+        self.errors.push(SyntaxError { kind, span, message });
+    }
+
+    fn peek_byte(&self, ahead: usize) -> Option<u8> {
+        self.bytes.get(self.pos + ahead).copied()
+    }
+
+    fn current_char(&self) -> char {
+        self.text[self.pos..].chars().next().unwrap_or('\0')
+    }
+
+    fn skip_whitespace(&mut self) {
+        while let Some(&b) = self.bytes.get(self.pos) {
+            match b {
+                b' ' | b'\t' | b'\n' | b'\r' | 0x0C => self.pos += 1,
+                // Latin-1 no-break space (U+00A0) shows up in pasted code; treat as blank.
+                0xC2 if self.peek_byte(1) == Some(0xA0) => self.pos += 2,
+                _ => break,
+            }
+        }
+    }
+
+    fn skip_line(&mut self) {
+        match memchr_newline(&self.bytes[self.pos..]) {
+            Some(offset) => self.pos += offset,
+            None => self.pos = self.bytes.len(),
+        }
+        if self.pos > 0 && self.bytes[self.pos - 1] == b'\r' {
+            self.pos -= 1;
+        }
+    }
+
+    fn single(&mut self, kind: TokenKind) -> TokenKind {
+        self.pos += 1;
+        kind
+    }
+
+    fn one_or_two(&mut self, one: TokenKind, second: u8, two: TokenKind) -> TokenKind {
+        self.pos += 1;
+        if self.peek_byte(0) == Some(second) {
+            self.pos += 1;
+            return two;
+        }
+        one
+    }
+
+    fn less_or_placeholder(&mut self) -> TokenKind {
+        let rest = &self.text[self.pos..];
+        if let Some(close) = rest.as_bytes().iter().take(6).position(|&b| b == b'>') {
+            if Placeholder::from_text(&rest[..=close]).is_some() {
+                self.pos += close + 1;
+                return TokenKind::Placeholder;
+            }
+        }
+        self.pos += 1;
+        match self.peek_byte(0) {
+            Some(b'=') => self.single(TokenKind::Le),
+            Some(b'>') => self.single(TokenKind::Ne),
+            _ => TokenKind::Lt,
+        }
+    }
+
+    fn invalid_character(&mut self, c: char) {
+        let start = self.pos;
+        self.pos += c.len_utf8().max(1);
+        let shown = if c.is_control() { format!("U+{:04X}", c as u32) } else { format!("`{c}`") };
+        self.error(
+            SyntaxErrorKind::InvalidCharacter,
+            Span::new(start, self.pos),
+            format!("invalid character {shown}: it cannot start any RAPID token"),
+        );
+    }
+
+    fn ident(&mut self) -> TokenKind {
+        let start = self.pos;
+        let mut n_chars = 0;
+        for c in self.text[start..].chars() {
+            if !is_ident_continue(c) {
+                break;
+            }
+            self.pos += c.len_utf8();
+            n_chars += 1;
+        }
+        let word = &self.text[start..self.pos];
+        if let Some(kw) = keyword(word) {
+            return kw;
+        }
+        if n_chars > MAX_IDENT_CHARS {
+            self.error(
+                SyntaxErrorKind::IdentifierTooLong,
+                Span::new(start, self.pos),
+                format!("identifier has {n_chars} characters; RAPID allows at most {MAX_IDENT_CHARS}"),
+            );
+        }
+        TokenKind::Ident
+    }
+
+    fn eat_digits(&mut self, radix: u32) -> usize {
+        let start = self.pos;
+        while self.peek_byte(0).is_some_and(|b| (b as char).is_digit(radix)) {
+            self.pos += 1;
+        }
+        self.pos - start
+    }
+
+    fn number(&mut self) -> TokenKind {
+        let start = self.pos;
+        let radix = match (self.peek_byte(0), self.peek_byte(1).map(|b| b.to_ascii_lowercase())) {
+            (Some(b'0'), Some(b'x')) => 16,
+            (Some(b'0'), Some(b'o')) => 8,
+            (Some(b'0'), Some(b'b')) => 2,
+            _ => 10,
+        };
+        let mut well_formed = true;
+        if radix != 10 {
+            self.pos += 2;
+            well_formed = self.eat_digits(radix) > 0;
+        } else {
+            let int_digits = self.eat_digits(10);
+            let mut frac_digits = 0;
+            if self.peek_byte(0) == Some(b'.') {
+                self.pos += 1;
+                frac_digits = self.eat_digits(10);
+            }
+            well_formed &= int_digits + frac_digits > 0;
+            if matches!(self.peek_byte(0), Some(b'e' | b'E')) {
+                self.pos += 1;
+                if matches!(self.peek_byte(0), Some(b'+' | b'-')) {
+                    self.pos += 1;
+                }
+                well_formed &= self.eat_digits(10) > 0;
+            }
+        }
+        // Letters or digits glued to a number (`1.5E`, `0x1G`, `12abc`) make it malformed.
+        let glued_start = self.pos;
+        while self.text[self.pos..].chars().next().is_some_and(is_ident_continue) {
+            self.pos += self.current_char().len_utf8();
+        }
+        well_formed &= self.pos == glued_start;
+        let span = Span::new(start, self.pos);
+        if !well_formed {
+            let text = span.text(self.text).to_owned();
+            self.error(SyntaxErrorKind::MalformedNumber, span, format!("malformed number `{text}`"));
+        } else if crate::literal::num_value(span.text(self.text)).is_none_or(|v| !v.is_finite()) {
+            let text = span.text(self.text).to_owned();
+            self.error(
+                SyntaxErrorKind::NumberOutOfRange,
+                span,
+                format!("number `{text}` is outside the range of IEEE 754 numbers"),
+            );
+        }
+        TokenKind::Num
+    }
+
+    fn string(&mut self) -> TokenKind {
+        let start = self.pos;
+        self.pos += 1;
+        let mut n_chars = 0usize;
+        loop {
+            let Some(c) = self.text[self.pos..].chars().next() else {
+                return self.unterminated_string(start);
+            };
+            match c {
+                '\n' | '\r' => return self.unterminated_string(start),
+                '"' if self.peek_byte(1) == Some(b'"') => self.pos += 2,
+                '"' => {
+                    self.pos += 1;
+                    break;
+                }
+                '\\' => self.string_escape(),
+                _ => {
+                    if c as u32 > 0xFF {
+                        let span = Span::new(self.pos, self.pos + c.len_utf8());
+                        self.error(
+                            SyntaxErrorKind::NonLatin1Character,
+                            span,
+                            format!("character `{c}` is not in ISO 8859-1 (Latin-1), the character set of RAPID strings"),
+                        );
+                    }
+                    self.pos += c.len_utf8();
+                }
+            }
+            n_chars += 1;
+        }
+        if n_chars > MAX_STRING_CHARS {
+            self.error(
+                SyntaxErrorKind::StringTooLong,
+                Span::new(start, self.pos),
+                format!("string has {n_chars} characters; RAPID allows at most {MAX_STRING_CHARS}"),
+            );
+        }
+        TokenKind::Str
+    }
+
+    fn string_escape(&mut self) {
+        let start = self.pos;
+        self.pos += 1;
+        if self.peek_byte(0) == Some(b'\\') {
+            self.pos += 1;
+            return;
+        }
+        let hex = |b: Option<u8>| b.is_some_and(|b| b.is_ascii_hexdigit());
+        if hex(self.peek_byte(0)) && hex(self.peek_byte(1)) {
+            self.pos += 2;
+            return;
+        }
+        self.error(
+            SyntaxErrorKind::InvalidStringEscape,
+            Span::new(start, self.pos),
+            "a backslash in a string must be written `\\\\` or start a character code `\\hh`".into(),
+        );
+    }
+
+    fn unterminated_string(&mut self, start: usize) -> TokenKind {
+        self.error(
+            SyntaxErrorKind::UnterminatedString,
+            Span::new(start, self.pos),
+            "string literal has no closing `\"` on its line".into(),
+        );
+        TokenKind::Str
+    }
+
+    fn header(&mut self) -> TokenKind {
+        let start = self.pos;
+        self.pos += 3;
+        match self.text[self.pos..].find("%%%") {
+            Some(offset) => self.pos += offset + 3,
+            None => {
+                self.skip_line();
+                self.error(
+                    SyntaxErrorKind::UnterminatedHeader,
+                    Span::new(start, start + 3),
+                    "file header `%%%` is never closed by a second `%%%`".into(),
+                );
+            }
+        }
+        TokenKind::Header
+    }
+}
+
+fn memchr_newline(bytes: &[u8]) -> Option<usize> {
+    bytes.iter().position(|&b| b == b'\n')
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn kinds(text: &str) -> (Vec<TokenKind>, Vec<SyntaxErrorKind>) {
+        let mut lexer = Lexer::new(text);
+        let mut kinds = Vec::new();
+        loop {
+            let token = lexer.next_token();
+            if token.kind == TokenKind::Eof {
+                break;
+            }
+            kinds.push(token.kind);
+        }
+        (kinds, lexer.errors.iter().map(|e| e.kind).collect())
+    }
+
+    use TokenKind as T;
+
+    #[test]
+    fn numbers_of_every_form() {
+        for text in ["3", "3E2", "3.5", "-245E-2", ".5", "3.", "0x1F", "0o17", "0b1011", "9E9", "1e+3"] {
+            let (toks, errs) = kinds(text);
+            assert!(errs.is_empty(), "{text}: {errs:?}");
+            assert_eq!(*toks.last().unwrap(), T::Num, "{text}");
+        }
+        for text in ["0x", "1.5E", "12abc", "0b102", "0o8"] {
+            assert_eq!(kinds(text).1, vec![SyntaxErrorKind::MalformedNumber], "{text}");
+        }
+        assert_eq!(kinds("1E400").1, vec![SyntaxErrorKind::NumberOutOfRange]);
+    }
+
+    #[test]
+    fn strings_and_escapes() {
+        assert_eq!(kinds(r#""a ""q"" \\ \07""#), (vec![T::Str], vec![]));
+        assert_eq!(kinds(r#""bad \q""#).1, vec![SyntaxErrorKind::InvalidStringEscape]);
+        assert_eq!(kinds("\"open\nx").1, vec![SyntaxErrorKind::UnterminatedString]);
+        let long = format!("\"{}\"", "a".repeat(81));
+        assert_eq!(kinds(&long).1, vec![SyntaxErrorKind::StringTooLong]);
+        let exact = format!("\"{}\"", "a".repeat(80));
+        assert!(kinds(&exact).1.is_empty());
+        // `""` counts as one character.
+        let quotes = format!("\"{}\"", "\"\"".repeat(80));
+        assert!(kinds(&quotes).1.is_empty());
+        assert_eq!(kinds("\"中\"").1, vec![SyntaxErrorKind::NonLatin1Character]);
+    }
+
+    #[test]
+    fn identifiers_keywords_and_limits() {
+        assert_eq!(kinds("MoveL endproc Ärger").0, vec![T::Ident, T::Endproc, T::Ident]);
+        assert!(kinds(&"a".repeat(32)).1.is_empty());
+        assert_eq!(kinds(&"a".repeat(33)).1, vec![SyntaxErrorKind::IdentifierTooLong]);
+        assert_eq!(kinds("a_1 _x").1, vec![SyntaxErrorKind::InvalidCharacter]);
+    }
+
+    #[test]
+    fn operators_placeholders_comments() {
+        let (toks, errs) = kinds("a:=b<>c<=d>=e<f ! comment\n<SMT> <ID> <x");
+        assert!(errs.is_empty());
+        assert_eq!(
+            toks,
+            vec![T::Ident, T::Assign, T::Ident, T::Ne, T::Ident, T::Le, T::Ident, T::Ge, T::Ident, T::Lt, T::Ident,
+                 T::Placeholder, T::Placeholder, T::Lt, T::Ident]
+        );
+    }
+
+    #[test]
+    fn header_and_invalid_bytes() {
+        let (toks, errs) = kinds("%%%\n VERSION:1\n LANGUAGE:ENGLISH\n%%%\nMODULE");
+        assert_eq!((toks, errs), (vec![T::Header, T::Module], vec![]));
+        assert_eq!(kinds("a \0 b").1, vec![SyntaxErrorKind::InvalidCharacter]);
+        assert_eq!(kinds("%%% open").1, vec![SyntaxErrorKind::UnterminatedHeader]);
+    }
+}

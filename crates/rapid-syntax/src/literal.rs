@@ -1,0 +1,72 @@
+//! Values of literals, computed from their text when a later layer needs them.
+
+/// The value of a num literal (`3`, `-` is an operator), `None` if malformed.
+pub fn num_value(text: &str) -> Option<f64> {
+    let lower = text.get(..2).map(|p| p.to_ascii_lowercase());
+    let radix = match lower.as_deref() {
+        Some("0x") => 16,
+        Some("0o") => 8,
+        Some("0b") => 2,
+        _ => return text.parse::<f64>().ok(),
+    };
+    let digits = &text[2..];
+    if digits.is_empty() {
+        return None;
+    }
+    // u128 parsing would overflow past 128 bits; fold digits into an f64 instead.
+    digits.chars().try_fold(0f64, |acc, c| c.to_digit(radix).map(|d| acc * radix as f64 + d as f64))
+}
+
+/// The characters of a string literal (quotes removed, `""`, `\\` and `\hh` decoded).
+/// Returns Latin-1 code points; characters outside Latin-1 are kept as they are.
+pub fn string_value(text: &str) -> String {
+    let inner = text.strip_prefix('"').unwrap_or(text);
+    let inner = inner.strip_suffix('"').unwrap_or(inner);
+    let mut out = String::with_capacity(inner.len());
+    let mut chars = inner.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '"' if chars.peek() == Some(&'"') => {
+                chars.next();
+                out.push('"');
+            }
+            '\\' if chars.peek() == Some(&'\\') => {
+                chars.next();
+                out.push('\\');
+            }
+            '\\' => {
+                let hi = chars.next().and_then(|c| c.to_digit(16));
+                let lo = chars.next().and_then(|c| c.to_digit(16));
+                match (hi, lo) {
+                    (Some(hi), Some(lo)) => out.push(char::from_u32(hi * 16 + lo).unwrap_or('?')),
+                    _ => out.push('\\'),
+                }
+            }
+            _ => out.push(c),
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn num_values() {
+        assert_eq!(num_value("3E2"), Some(300.0));
+        assert_eq!(num_value(".5"), Some(0.5));
+        assert_eq!(num_value("3."), Some(3.0));
+        assert_eq!(num_value("0xFF"), Some(255.0));
+        assert_eq!(num_value("0o17"), Some(15.0));
+        assert_eq!(num_value("0b1011"), Some(11.0));
+        assert_eq!(num_value("-245E-2"), Some(-2.45));
+    }
+
+    #[test]
+    fn string_values() {
+        assert_eq!(string_value(r#""a""b""#), "a\"b");
+        assert_eq!(string_value(r#""x\\y""#), "x\\y");
+        assert_eq!(string_value(r#""\41\07""#), "A\u{7}");
+    }
+}

@@ -1,0 +1,329 @@
+//! The parser's machinery: token lookahead, consuming, error reporting, recovery and
+//! nesting limits. The grammar itself lives in `grammar/`, one file per area.
+//!
+//! Parsing never fails: a missing piece becomes an `Error` node or a placeholder name,
+//! the error is recorded, and the parser resynchronises at the next token of a
+//! recovery set, so one run reports every error in a file.
+
+use std::collections::VecDeque;
+
+use crate::ast::{Arena, Body, BodyItem, Name, Section, SourceFile, Stmt};
+use crate::error::{SyntaxError, SyntaxErrorKind, MAX_ERRORS_PER_FILE};
+use crate::intern::Interner;
+use crate::lexer::Lexer;
+use crate::span::Span;
+use crate::token::{Token, TokenKind, TokenSet};
+
+/// Expressions nested deeper than this are refused (E0122), not recursed into.
+pub const MAX_EXPR_DEPTH: u32 = 256;
+/// Statements nested deeper than this are refused (E0122), not recursed into.
+pub const MAX_STMT_DEPTH: u32 = 256;
+
+/// The result of parsing one file: always a tree, plus what went wrong.
+#[derive(Debug)]
+pub struct Parse {
+    pub file: SourceFile,
+    /// Lexical and syntax errors, in source order.
+    pub errors: Vec<SyntaxError>,
+    /// Every comment (`!` to the end of the line), in source order.
+    pub comments: Vec<Span>,
+}
+
+/// Receives routine body items one at a time (see [`parse_body`]).
+pub type BodySink<'s> = dyn FnMut(BodyItem, &Arena) + 's;
+
+/// What to do with routine bodies.
+pub(crate) enum BodyMode<'s> {
+    /// Keep them in the tree.
+    Keep,
+    /// Parse them for their errors and drop them (an outline).
+    Discard,
+    /// Hand each top-level item to a sink, then drop it.
+    Stream(&'s mut BodySink<'s>),
+}
+
+/// Parses a whole file, bodies included.
+pub fn parse(text: &str, interner: &mut Interner) -> Parse {
+    Parser::new(text, 0, interner, BodyMode::Keep).source_file()
+}
+
+/// Parses a file but drops routine bodies after checking their syntax, so memory stays
+/// proportional to the declarations. Bodies can be streamed later with [`parse_body`].
+pub fn parse_outline(text: &str, interner: &mut Interner) -> Parse {
+    Parser::new(text, 0, interner, BodyMode::Discard).source_file()
+}
+
+/// Re-parses the body of a routine found by [`parse_outline`], handing each top-level
+/// item (declaration, statement, handler keyword) to `sink` together with the arena
+/// holding its expressions. The arena is cleared after each item. Syntax errors were
+/// already reported by the outline, so they are not returned again.
+pub fn parse_body<'s>(text: &str, body_span: Span, interner: &mut Interner, sink: &'s mut BodySink<'s>) {
+    let mut parser = Parser::new(text, body_span.start as usize, interner, BodyMode::Stream(sink));
+    parser.routine_body_items();
+}
+
+pub(crate) struct Parser<'t, 'i, 's> {
+    pub(crate) text: &'t str,
+    lexer: Lexer<'t>,
+    ahead: VecDeque<Token>,
+    prev_end: u32,
+    pub(crate) interner: &'i mut Interner,
+    errors: Vec<SyntaxError>,
+    pub(crate) arena: Arena,
+    pub(crate) expr_depth: u32,
+    pub(crate) stmt_depth: u32,
+    pub(crate) body_mode: BodyMode<'s>,
+    /// Where the last error was reported, to avoid cascades at one spot.
+    last_error_at: Option<u32>,
+}
+
+impl<'t, 'i, 's> Parser<'t, 'i, 's> {
+    pub(crate) fn new(text: &'t str, pos: usize, interner: &'i mut Interner, body_mode: BodyMode<'s>) -> Self {
+        Parser {
+            text,
+            lexer: Lexer::at(text, pos),
+            ahead: VecDeque::with_capacity(4),
+            prev_end: pos as u32,
+            interner,
+            errors: Vec::new(),
+            arena: Arena::default(),
+            expr_depth: 0,
+            stmt_depth: 0,
+            body_mode,
+            last_error_at: None,
+        }
+    }
+
+    /// Collects the tree and all errors (lexical ones included), capped per file.
+    pub(crate) fn finish(mut self, file: SourceFile) -> Parse {
+        let mut errors = std::mem::take(&mut self.lexer.errors);
+        errors.append(&mut self.errors);
+        errors.sort_by_key(|e| e.span.start);
+        if errors.len() > MAX_ERRORS_PER_FILE {
+            let span = errors[MAX_ERRORS_PER_FILE].span;
+            errors.truncate(MAX_ERRORS_PER_FILE);
+            errors.push(SyntaxError {
+                kind: SyntaxErrorKind::TooManyErrors,
+                span,
+                message: format!("more than {MAX_ERRORS_PER_FILE} errors; this does not look like RAPID, so reporting stopped here"),
+            });
+        }
+        Parse { file, errors, comments: std::mem::take(&mut self.lexer.comments) }
+    }
+
+    /// How many errors were found so far.
+    pub(crate) fn error_count(&self) -> usize {
+        self.errors.len() + self.lexer.errors.len()
+    }
+
+    // ---- lookahead -------------------------------------------------------------
+
+    fn fill(&mut self, n: usize) {
+        while self.ahead.len() <= n {
+            let token = self.lexer.next_token();
+            self.ahead.push_back(token);
+        }
+    }
+
+    /// The token `n` places ahead (0 = current).
+    pub(crate) fn nth_token(&mut self, n: usize) -> Token {
+        self.fill(n);
+        self.ahead[n]
+    }
+
+    pub(crate) fn nth(&mut self, n: usize) -> TokenKind {
+        self.nth_token(n).kind
+    }
+
+    pub(crate) fn current(&mut self) -> Token {
+        self.nth_token(0)
+    }
+
+    pub(crate) fn at(&mut self, kind: TokenKind) -> bool {
+        self.nth(0) == kind
+    }
+
+    pub(crate) fn at_set(&mut self, set: TokenSet) -> bool {
+        let kind = self.nth(0);
+        set.contains(kind)
+    }
+
+    pub(crate) fn at_eof(&mut self) -> bool {
+        self.at(TokenKind::Eof)
+    }
+
+    // ---- consuming ---------------------------------------------------------------
+
+    pub(crate) fn bump(&mut self) -> Token {
+        self.fill(0);
+        let token = self.ahead.pop_front().unwrap_or(Token { kind: TokenKind::Eof, span: Span::default() });
+        if token.kind != TokenKind::Eof {
+            self.prev_end = token.span.end;
+        }
+        token
+    }
+
+    pub(crate) fn eat(&mut self, kind: TokenKind) -> bool {
+        if self.at(kind) {
+            self.bump();
+            return true;
+        }
+        false
+    }
+
+    /// Consumes `kind` or reports that it is missing.
+    pub(crate) fn expect(&mut self, kind: TokenKind) -> bool {
+        if self.eat(kind) {
+            return true;
+        }
+        self.error_expected(kind.describe());
+        false
+    }
+
+    /// End offset of the last consumed token.
+    pub(crate) fn prev_end(&self) -> u32 {
+        self.prev_end
+    }
+
+    /// A span from `start` to the end of the last consumed token.
+    pub(crate) fn span_from(&self, start: u32) -> Span {
+        Span { start, end: self.prev_end.max(start) }
+    }
+
+    // ---- errors and recovery -------------------------------------------------------
+
+    pub(crate) fn error(&mut self, kind: SyntaxErrorKind, span: Span, message: String) {
+        if self.last_error_at == Some(span.start) && kind == SyntaxErrorKind::UnexpectedToken {
+            return;
+        }
+        self.last_error_at = Some(span.start);
+        if self.errors.len() <= MAX_ERRORS_PER_FILE {
+            self.errors.push(SyntaxError { kind, span, message });
+        }
+    }
+
+    /// Reports "expected X, found Y" at the current token.
+    pub(crate) fn error_expected(&mut self, what: &str) {
+        let token = self.current();
+        let found = self.describe_token(token);
+        self.error(SyntaxErrorKind::UnexpectedToken, token.span, format!("expected {what}, found {found}"));
+    }
+
+    pub(crate) fn describe_token(&self, token: Token) -> String {
+        match token.kind {
+            TokenKind::Ident | TokenKind::Num | TokenKind::Placeholder => {
+                let text: String = token.span.text(self.text).chars().take(40).collect();
+                format!("{} `{text}`", token.kind.describe())
+            }
+            _ => token.kind.describe().to_string(),
+        }
+    }
+
+    /// Skips tokens until one in `stop` (not consumed) or the end of the file.
+    pub(crate) fn recover_until(&mut self, stop: TokenSet) {
+        while !self.at_eof() && !self.at_set(stop) {
+            self.bump();
+        }
+    }
+
+    /// Skips a run of nested brackets and blocks too deep to parse, without recursion:
+    /// from the current token to the end of the construct it opens.
+    pub(crate) fn skip_nested(&mut self) {
+        let mut depth: u32 = 0;
+        let mut pending_if = false;
+        loop {
+            let kind = self.nth(0);
+            match kind {
+                TokenKind::Eof => return,
+                TokenKind::LParen | TokenKind::LBracket | TokenKind::LBrace => depth += 1,
+                TokenKind::RParen | TokenKind::RBracket | TokenKind::RBrace => depth = depth.saturating_sub(1),
+                TokenKind::If => pending_if = true,
+                TokenKind::Then if pending_if => {
+                    pending_if = false;
+                    depth += 1;
+                }
+                TokenKind::Semi => pending_if = false,
+                TokenKind::For | TokenKind::While | TokenKind::Test => depth += 1,
+                TokenKind::Endif | TokenKind::Endfor | TokenKind::Endwhile | TokenKind::Endtest => {
+                    depth = depth.saturating_sub(1)
+                }
+                TokenKind::Endproc | TokenKind::Endfunc | TokenKind::Endtrap | TokenKind::Endmodule => return,
+                _ => {}
+            }
+            self.bump();
+            if depth == 0 && !pending_if {
+                return;
+            }
+        }
+    }
+
+    /// Reports nesting past a limit once, at the current token.
+    pub(crate) fn error_too_deep(&mut self, what: &str, limit: u32) {
+        let span = self.current().span;
+        self.error(
+            SyntaxErrorKind::NestingTooDeep,
+            span,
+            format!("{what} nested more than {limit} levels deep; simplify the code"),
+        );
+    }
+
+    // ---- names ---------------------------------------------------------------------
+
+    /// A placeholder name for a missing identifier.
+    pub(crate) fn missing_name(&mut self) -> Name {
+        let at = self.current().span.start;
+        Name { sym: self.interner.intern("<ID>"), span: Span { start: at, end: at }, is_placeholder: true }
+    }
+
+    pub(crate) fn name_from(&mut self, token: Token) -> Name {
+        let sym = self.interner.intern(token.span.text(self.text));
+        Name { sym, span: token.span, is_placeholder: token.kind == TokenKind::Placeholder }
+    }
+
+    // ---- streaming routine bodies ------------------------------------------------
+
+    /// Hands one top-level body item on, as the body mode says.
+    pub(crate) fn emit_body_item(&mut self, item: BodyItem, body: &mut Body, section: &mut Section) {
+        match &mut self.body_mode {
+            BodyMode::Keep => keep_body_item(item, body, section),
+            BodyMode::Discard => self.arena.clear(),
+            BodyMode::Stream(sink) => {
+                sink(item, &self.arena);
+                self.arena.clear();
+            }
+        }
+    }
+
+    pub(crate) fn keeps_bodies(&self) -> bool {
+        matches!(self.body_mode, BodyMode::Keep)
+    }
+}
+
+fn keep_body_item(item: BodyItem, body: &mut Body, section: &mut Section) {
+    match item {
+        BodyItem::Decl(decl) => body.decls.push(decl),
+        BodyItem::Stmt(stmt) => push_stmt(body, *section, stmt),
+        BodyItem::Section { section: new, keyword, error_numbers } => {
+            *section = new;
+            let handler = crate::ast::Handler { keyword, error_numbers, stmts: Vec::new() };
+            match new {
+                Section::Body => {}
+                Section::Backward => body.backward = Some(handler),
+                Section::Error => body.error = Some(handler),
+                Section::Undo => body.undo = Some(handler),
+            }
+        }
+    }
+}
+
+fn push_stmt(body: &mut Body, section: Section, stmt: Stmt) {
+    let handler = match section {
+        Section::Body => return body.stmts.push(stmt),
+        Section::Backward => &mut body.backward,
+        Section::Error => &mut body.error,
+        Section::Undo => &mut body.undo,
+    };
+    if let Some(handler) = handler {
+        handler.stmts.push(stmt);
+    }
+}
