@@ -9,12 +9,12 @@ use super::entry::*;
 pub(crate) const ENTRIES: &[Entry] = &[
     // ---- Changing signal values ---------------------------------------------------------
     routine("PROC InvertDO(signaldo Signal)", "Flips a digital output: 0 becomes 1 and 1 becomes 0."),
-    routine("PROC PulseDO(\\switch High, \\num PLength, signaldo Signal)", "Gives a pulse on a digital output; default length 0.2 s, \\High forces a high pulse."),
+    routine(r#"PROC PulseDO(\switch High, \num PLength, signaldo Signal)"#, "Gives a pulse on a digital output; default length 0.2 s, \\High forces a high pulse."),
     routine("PROC Reset(signaldo Signal)", "Sets a digital output to 0."),
     routine("PROC Set(signaldo Signal)", "Sets a digital output to 1."),
     routine("PROC SetAO(signalao Signal, num Value)", "Sets an analog output to a value."),
-    routine("PROC SetDO(\\num SDelay | switch Sync, signaldo Signal, dionum Value)", "Sets a digital output, optionally after a delay or waiting for the physical change."),
-    routine("PROC SetGO(\\num SDelay, signalgo Signal, num Value | dnum Dvalue)", "Sets a group of digital outputs to an integer, optionally after a delay."),
+    routine(r#"PROC SetDO(\num SDelay | switch Sync, signaldo Signal, dionum Value)"#, "Sets a digital output, optionally after a delay or waiting for the physical change."),
+    routine(r#"PROC SetGO(\num SDelay, signalgo Signal, num Value | dnum Dvalue)"#, "Sets a group of digital outputs to an integer, optionally after a delay."),
 
     // ---- Reading signal values ----------------------------------------------------------
     routine("FUNC num AInput(signalai Signal)", "Returns the current value of an analog input."),
@@ -41,15 +41,15 @@ pub(crate) const ENTRIES: &[Entry] = &[
     // ---- I/O devices and networks -------------------------------------------------------
     routine("PROC IODisable(string UnitName, num MaxTime)", "Deactivates an I/O device, waiting at most MaxTime seconds."),
     routine("PROC IOEnable(string UnitName, num MaxTime)", "Activates an I/O device, waiting at most MaxTime seconds."),
-    routine("FUNC iounit_state IOUnitState(string UnitName, \\switch Phys | switch Logic)", "Returns the current (physical or logical) state of an I/O device."),
-    routine("PROC IOBusState(string BusName, VAR busstate State, \\switch Phys | switch Logic)", "Reads the current (physical or logical) state of an I/O network."),
+    routine(r#"FUNC iounit_state IOUnitState(string UnitName, \switch Phys | switch Logic)"#, "Returns the current (physical or logical) state of an I/O device."),
+    routine(r#"PROC IOBusState(string BusName, VAR busstate State, \switch Phys | switch Logic)"#, "Reads the current (physical or logical) state of an I/O network."),
     routine("PROC IOBusStart(string BusName)", "Starts an I/O network."),
-    routine("PROC IOEventMessage(\\switch On | switch Off, string DeviceName)", "Turns event-log messages from an I/O device on or off."),
+    routine(r#"PROC IOEventMessage(\switch On | switch Off, string DeviceName)"#, "Turns event-log messages from an I/O device on or off."),
 
     // ---- Defining signals ---------------------------------------------------------------
     // uncertain: FromSignal may also be a string holding a configured signal name.
     routine("PROC AliasIO(anytype FromSignal, VAR anytype ToSignal)", "Connects a signal variable declared in RAPID to a configured signal."),
     routine("PROC AliasIOReset(VAR anytype Signal)", "Disconnects a signal variable connected earlier by AliasIO."),
     // uncertain: access modes of the optional outputs assumed VAR.
-    routine("PROC GetGroupSignalInfo(anytype Signal, \\VAR dnum MaxDvalue, \\VAR string Label, \\VAR string DeviceName)", "Reads the maximum value, label and device of a digital group signal."),
+    routine(r#"PROC GetGroupSignalInfo(anytype Signal, \VAR dnum MaxDvalue, \VAR string Label, \VAR string DeviceName)"#, "Reads the maximum value, label and device of a digital group signal."),
 ];
