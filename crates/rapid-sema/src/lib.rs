@@ -2,12 +2,33 @@
 //!
 //! Invariant: no IO. Files arrive as bytes with a display path; diagnostics leave as
 //! data (code, span, message) and are rendered by rapid-cli.
+//!
+//! Checking runs in two passes so memory stays proportional to declarations, not to
+//! code: every file is parsed as an outline (bodies are parsed for their syntax errors
+//! and dropped), all declarations are collected, then each routine body is parsed
+//! again and checked one top-level item at a time.
 
+mod body;
+mod calls;
+mod checker;
 pub mod codes;
+mod collect;
+mod consteval;
+mod decls;
 mod diagnostic;
+mod expr;
+mod symbols;
+mod syntax;
+mod types;
+
+use rapid_syntax::ast::Item;
+use rapid_syntax::{parse_body, parse_outline, Interner, Parse, Span};
 
 pub use codes::{Code, Severity};
 pub use diagnostic::{Diagnostic, SourceInput};
+
+use checker::{Checker, WellKnown};
+use collect::ModuleRef;
 
 /// What `check` should do.
 #[derive(Debug, Clone, Default)]
@@ -19,6 +40,69 @@ pub struct Options {
 /// Checks the modules of one task (one program) together and returns every
 /// diagnostic, ordered by file and position.
 pub fn check(files: &[SourceInput], options: &Options) -> Vec<Diagnostic> {
-    let _ = (files, options);
-    Vec::new()
+    let mut interner = Interner::default();
+    let catalogue = rapid_lib::load(&mut interner);
+    let mut diags = Vec::new();
+    let parses: Vec<Option<Parse>> = files
+        .iter()
+        .enumerate()
+        .map(|(file, input)| match input.unreadable {
+            Some(_) => {
+                diags.push(Diagnostic::new(file, Code::EncryptedModule, Span::default(), "this is an ABB-encrypted module; it cannot be read or checked"));
+                None
+            }
+            None => {
+                let parse = parse_outline(&input.text, &mut interner);
+                diags.extend(parse.errors.iter().map(|e| syntax::to_diagnostic(file, e)));
+                Some(parse)
+            }
+        })
+        .collect();
+    if !options.syntax_only {
+        check_semantics(files, &parses, &catalogue, &mut interner, &mut diags);
+    }
+    diags.sort_by_key(|d| (d.file, d.span.start, d.span.end));
+    diags
+}
+
+fn check_semantics(files: &[SourceInput], parses: &[Option<Parse>], catalogue: &rapid_lib::LoadedCatalogue, interner: &mut Interner, diags: &mut Vec<Diagnostic>) {
+    let known = WellKnown { switch: interner.intern("switch"), anytype: interner.intern("anytype"), placeholder_id: interner.intern("<ID>") };
+    let mut ck = Checker::new(files, known);
+    ck.load_builtins(catalogue, interner);
+    let modules: Vec<ModuleRef<'_>> = parses
+        .iter()
+        .enumerate()
+        .filter_map(|(file, parse)| parse.as_ref().map(|p| (file, p)))
+        .flat_map(|(file, parse)| parse.file.modules.iter().map(move |module| ModuleRef { file, module }))
+        .collect();
+    ck.declare_modules(&modules);
+    check_module_items(&mut ck, &modules);
+    for (idx, m) in modules.iter().enumerate() {
+        ck.enter(m.file, idx);
+        for item in &m.module.items {
+            let Item::Routine(routine) = item else { continue };
+            ck.begin_routine(routine);
+            let mut sink = |item: rapid_syntax::ast::BodyItem, arena: &rapid_syntax::ast::Arena| ck.body_item(&item, arena);
+            parse_body(&files[m.file].text, routine.body_span, interner, &mut sink);
+            ck.end_routine();
+        }
+    }
+    diags.append(&mut ck.diags);
+}
+
+/// Module-level declarations: data initialisers and routine headers.
+fn check_module_items(ck: &mut Checker<'_>, modules: &[ModuleRef<'_>]) {
+    for (idx, m) in modules.iter().enumerate() {
+        ck.enter(m.file, idx);
+        for item in &m.module.items {
+            match item {
+                Item::Data(decl) => {
+                    let Some(symbols::Def::Data(data)) = ck.scopes.lookup_module_level(idx, decl.name.sym) else { continue };
+                    ck.check_data_decl(decl, &m.module.arena, data, false);
+                }
+                Item::Routine(routine) => ck.check_routine_header(routine),
+                _ => {}
+            }
+        }
+    }
 }

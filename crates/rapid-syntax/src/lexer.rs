@@ -19,6 +19,8 @@ pub struct Lexer<'t> {
     pub comments: Vec<Span>,
     /// Lexical errors seen so far.
     pub errors: Vec<SyntaxError>,
+    /// Where unterminated strings end: the `;` they swallowed is not reported again.
+    pub unterminated_string_ends: Vec<u32>,
 }
 
 /// Whether `c` is a letter of the manual's `<letter>` table (ASCII and Latin-1).
@@ -32,7 +34,7 @@ fn is_ident_continue(c: char) -> bool {
 
 impl<'t> Lexer<'t> {
     pub fn new(text: &'t str) -> Lexer<'t> {
-        Lexer { text, bytes: text.as_bytes(), pos: 0, comments: Vec::new(), errors: Vec::new() }
+        Lexer { text, bytes: text.as_bytes(), pos: 0, comments: Vec::new(), errors: Vec::new(), unterminated_string_ends: Vec::new() }
     }
 
     /// Starts lexing at byte `pos` (used to re-lex one routine body).
@@ -318,6 +320,7 @@ impl<'t> Lexer<'t> {
             Span::new(start, self.pos),
             "string literal has no closing `\"` on its line".into(),
         );
+        self.unterminated_string_ends.push(self.pos as u32);
         TokenKind::Str
     }
 
@@ -327,7 +330,8 @@ impl<'t> Lexer<'t> {
         match self.text[self.pos..].find("%%%") {
             Some(offset) => self.pos += offset + 3,
             None => {
-                self.skip_line();
+                // Without its closing `%%%`, the header runs to the MODULE line.
+                self.pos = find_module_line(self.text, self.pos).unwrap_or(self.text.len());
                 self.error(
                     SyntaxErrorKind::UnterminatedHeader,
                     Span::new(start, start + 3),
@@ -337,6 +341,19 @@ impl<'t> Lexer<'t> {
         }
         TokenKind::Header
     }
+}
+
+/// The offset of the first line at or after `from` whose first word is MODULE.
+fn find_module_line(text: &str, from: usize) -> Option<usize> {
+    let mut offset = from;
+    for line in text[from..].split_inclusive('\n') {
+        let trimmed = line.trim_start();
+        if trimmed.len() >= 6 && trimmed[..6].eq_ignore_ascii_case("module") {
+            return Some(offset + (line.len() - trimmed.len()));
+        }
+        offset += line.len();
+    }
+    None
 }
 
 fn memchr_newline(bytes: &[u8]) -> Option<usize> {
@@ -415,5 +432,6 @@ mod tests {
         assert_eq!((toks, errs), (vec![T::Header, T::Module], vec![]));
         assert_eq!(kinds("a \0 b").1, vec![SyntaxErrorKind::InvalidCharacter]);
         assert_eq!(kinds("%%% open").1, vec![SyntaxErrorKind::UnterminatedHeader]);
+        assert_eq!(kinds("%%%\n VERSION:1\n%%\nMODULE m").0, vec![T::Header, T::Module]);
     }
 }

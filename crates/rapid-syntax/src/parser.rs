@@ -180,6 +180,19 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
         false
     }
 
+    /// Consumes the `;` that ends a declaration or statement; when it is missing,
+    /// reports it right after the last token, where it belongs.
+    pub(crate) fn expect_semi(&mut self) -> bool {
+        if self.eat(TokenKind::Semi) {
+            return true;
+        }
+        let at = self.prev_end;
+        let found = self.current();
+        let found_text = self.describe_token(found);
+        self.error(SyntaxErrorKind::UnexpectedToken, Span { start: at, end: at }, format!("expected `;`, found {found_text}"));
+        false
+    }
+
     /// End offset of the last consumed token.
     pub(crate) fn prev_end(&self) -> u32 {
         self.prev_end
@@ -193,7 +206,9 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
     // ---- errors and recovery -------------------------------------------------------
 
     pub(crate) fn error(&mut self, kind: SyntaxErrorKind, span: Span, message: String) {
-        if self.last_error_at == Some(span.start) && kind == SyntaxErrorKind::UnexpectedToken {
+        if kind == SyntaxErrorKind::UnexpectedToken
+            && (self.last_error_at == Some(span.start) || self.lexer.unterminated_string_ends.last() == Some(&span.start))
+        {
             return;
         }
         self.last_error_at = Some(span.start);

@@ -189,6 +189,9 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST errtype TYPE_ERR := 3;", "Errors."),
 
     // ---- errnum constants. The real numbers are not public: ours are 1000 upward in list order ---
+    // uncertain: the kernel manual's long-jump error handlers `ERROR (LONG_JMP_ALL_ERR)`
+    // catch every error raised further down the call chain; the number is ours.
+    data("CONST errnum LONG_JMP_ALL_ERR := 999;", "Error-handler list entry meaning every error (long jump)."),
     data("CONST errnum ERR_DIVZERO := 1000;", "Division by zero."),
     data("CONST errnum ERR_OUTOFBND := 1001;", "Array index outside its bounds."),
     data("CONST errnum ERR_ILLDIM := 1002;", "Wrong array dimension."),
@@ -471,6 +474,7 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST icondata iconInfo := 1;", "Information icon."),
     data("CONST icondata iconWarning := 2;", "Warning icon."),
     data("CONST icondata iconError := 3;", "Error icon."),
+    data("CONST icondata iconQuestion := 4;", "Question icon."),
 
     // ---- triggmode, tunetype -----------------------------------------------------------------
     // uncertain: triggmode values assumed.

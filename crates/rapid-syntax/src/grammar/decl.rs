@@ -48,7 +48,7 @@ impl Parser<'_, '_, '_> {
         let kind = if keyword.kind == T::Alias {
             let base = self.name();
             let name = self.name();
-            self.expect(T::Semi);
+            self.expect_semi();
             TypeDefKind::Alias { base, name }
         } else {
             let name = self.name();
@@ -105,7 +105,7 @@ impl Parser<'_, '_, '_> {
         let name = self.name();
         let dims = if self.at(T::LBrace) { self.decl_dims() } else { Vec::new() };
         let init = if self.eat(T::Assign) { Some(self.expr()) } else { None };
-        if !self.expect(T::Semi) {
+        if !self.expect_semi() {
             self.recover_until(TokenSet::new(&[T::Semi]).union(super::STMT_LIST_END).union(super::ITEM_START));
             self.eat(T::Semi);
         }

@@ -37,8 +37,14 @@ impl Parser<'_, '_, '_> {
             return Stmt { kind: StmtKind::Error, span: self.span_from(start) };
         }
         self.stmt_depth += 1;
-        let kind = self.stmt_kind();
+        let errors_before = self.error_count();
+        let mut kind = self.stmt_kind();
         self.stmt_depth -= 1;
+        // A simple statement with a syntax error is not analysed further: its pieces
+        // would only produce follow-on errors.
+        if self.error_count() > errors_before && is_simple(&kind) {
+            kind = StmtKind::Error;
+        }
         Stmt { kind, span: self.span_from(start) }
     }
 
@@ -91,14 +97,9 @@ impl Parser<'_, '_, '_> {
 
     /// The `;` that ends a simple statement; on anything else, report and resync.
     pub(crate) fn end_of_simple_stmt(&mut self) {
-        if self.eat(T::Semi) {
+        if self.expect_semi() {
             return;
         }
-        // Report the missing `;` where it should have been: after the last token.
-        let at = self.prev_end();
-        let found = self.current();
-        let found_text = self.describe_token(found);
-        self.error(SyntaxErrorKind::UnexpectedToken, Span { start: at, end: at }, format!("expected `;`, found {found_text}"));
         self.recover_until(STMT_RECOVERY);
         self.eat(T::Semi);
     }
@@ -284,4 +285,8 @@ impl Parser<'_, '_, '_> {
         self.end_of_simple_stmt();
         StmtKind::Connect { target, trap }
     }
+}
+
+fn is_simple(kind: &StmtKind) -> bool {
+    !matches!(kind, StmtKind::If { .. } | StmtKind::CompactIf { .. } | StmtKind::For { .. } | StmtKind::While { .. } | StmtKind::Test { .. })
 }

@@ -1,0 +1,45 @@
+//! The command line, declared with clap.
+
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+
+/// OpenRAPID: tools for ABB RAPID robot programs.
+#[derive(Debug, Parser)]
+#[command(name = "rapid", version)]
+pub(crate) struct Cli {
+    #[command(subcommand)]
+    pub(crate) command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+pub(crate) enum Command {
+    /// Parse and check RAPID modules and report every error.
+    Check(CheckArgs),
+    /// List every diagnostic code with its severity and meaning.
+    Codes,
+}
+
+#[derive(Debug, Args)]
+pub(crate) struct CheckArgs {
+    /// Report lexical and syntax errors only.
+    #[arg(long)]
+    pub(crate) syntax_only: bool,
+
+    /// How to print the diagnostics.
+    #[arg(long, value_enum, default_value_t = Format::Human)]
+    pub(crate) format: Format,
+
+    /// Module files (.mod .modx .sys .sysx .prg), program files (.pgf) or folders of
+    /// modules. Everything given is checked together as one task.
+    #[arg(required = true, value_name = "PATH")]
+    pub(crate) paths: Vec<PathBuf>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub(crate) enum Format {
+    /// Messages with source excerpts, like rustc.
+    Human,
+    /// One JSON array of diagnostics.
+    Json,
+}

@@ -1,0 +1,37 @@
+//! One module per subcommand, and the exit status they all return.
+
+mod check;
+mod codes;
+
+use std::process::ExitCode;
+
+use crate::args::{Cli, Command};
+
+/// How a run ended, as the shell sees it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum ExitStatus {
+    /// Nothing to report, or warnings only (exit 0).
+    Success,
+    /// The checked program has errors (exit 1).
+    Failure,
+    /// Bad usage or a tool failure such as an unreadable path (exit 2).
+    Error,
+}
+
+impl From<ExitStatus> for ExitCode {
+    fn from(status: ExitStatus) -> ExitCode {
+        match status {
+            ExitStatus::Success => ExitCode::from(0),
+            ExitStatus::Failure => ExitCode::from(1),
+            ExitStatus::Error => ExitCode::from(2),
+        }
+    }
+}
+
+/// Runs the subcommand the user asked for.
+pub(crate) fn run(cli: Cli) -> anyhow::Result<ExitStatus> {
+    match cli.command {
+        Command::Check(args) => check::run(&args),
+        Command::Codes => codes::run(),
+    }
+}

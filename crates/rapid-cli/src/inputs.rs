@@ -1,0 +1,266 @@
+//! Turning the PATHs of the command line into the files of one task: module files,
+//! folders of modules and `.pgf` program files.
+//!
+//! A PATH that cannot be used at all (missing, unreadable, an unknown extension, a
+//! folder without modules) is a tool failure. A module that a `.pgf` lists but that
+//! cannot be read is a finding in the program file (E0130), so the user sees where the
+//! entry is.
+
+mod program_file;
+
+use std::fs;
+use std::io;
+use std::path::{Path, PathBuf};
+
+use anyhow::{bail, Context};
+use rapid_sema::{Code, Diagnostic, SourceInput};
+use rapid_syntax::Span;
+use rustc_hash::FxHashSet;
+
+use self::program_file::{Entry, ProgramFile};
+
+/// Extensions of RAPID module files, compared without regard to case.
+pub(crate) const MODULE_EXTENSIONS: &[&str] = &["mod", "modx", "sys", "sysx", "prg"];
+
+/// The files of one task.
+#[derive(Debug, Default)]
+pub(crate) struct Inputs {
+    /// The module files, in the order `check` receives them.
+    pub(crate) modules: Vec<SourceInput>,
+    /// Program files that list modules. They are not given to `check`; they are kept so
+    /// that a diagnostic about one of their entries can show the entry.
+    pub(crate) programs: Vec<SourceInput>,
+    /// Diagnostics found while reading the inputs. Their `file` indexes [`Inputs::table`].
+    pub(crate) diagnostics: Vec<Diagnostic>,
+    /// For each file of [`Inputs::table`], its place in the order the files were found,
+    /// so output follows the command line even though modules come first in the table.
+    pub(crate) rank: Vec<usize>,
+}
+
+impl Inputs {
+    /// Every file, modules first, then program files: the table diagnostics index.
+    pub(crate) fn table(&self) -> Vec<&SourceInput> {
+        self.modules.iter().chain(&self.programs).collect()
+    }
+}
+
+/// Reads every PATH. Fails, with a message naming the PATH, when one cannot be used.
+pub(crate) fn collect(paths: &[PathBuf]) -> anyhow::Result<Inputs> {
+    let mut collector = Collector::default();
+    for path in paths {
+        collector.add_path(path)?;
+    }
+    Ok(collector.finish())
+}
+
+/// What a file is, by its extension.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum FileKind {
+    Module,
+    Program,
+}
+
+fn file_kind(path: &Path) -> Option<FileKind> {
+    let ext = path.extension()?.to_str()?;
+    if ext.eq_ignore_ascii_case("pgf") {
+        return Some(FileKind::Program);
+    }
+    MODULE_EXTENSIONS
+        .iter()
+        .any(|known| ext.eq_ignore_ascii_case(known))
+        .then_some(FileKind::Module)
+}
+
+/// Where a file went: the module list or the program-file list.
+#[derive(Debug, Clone, Copy)]
+enum FileRef {
+    Module(usize),
+    Program(usize),
+}
+
+#[derive(Debug, Default)]
+struct Collector {
+    modules: Vec<SourceInput>,
+    programs: Vec<SourceInput>,
+    /// Every file in the order it was found.
+    order: Vec<FileRef>,
+    /// Diagnostics whose `file` is an index into `programs`.
+    program_diagnostics: Vec<Diagnostic>,
+    /// Canonical paths already read, so a file named twice is checked once.
+    seen: FxHashSet<PathBuf>,
+}
+
+impl Collector {
+    fn add_path(&mut self, path: &Path) -> anyhow::Result<()> {
+        let shown = path.display();
+        let meta = fs::metadata(path).with_context(|| format!("cannot read `{shown}`"))?;
+        if meta.is_dir() {
+            return self.add_folder(path);
+        }
+        match file_kind(path) {
+            Some(FileKind::Module) => {
+                self.add_module(path).with_context(|| format!("cannot read `{shown}`"))
+            }
+            Some(FileKind::Program) => self.add_program(path),
+            None => bail!(
+                "`{shown}` is not a RAPID file: expected a module ({}), a program file (.pgf) or a folder",
+                extension_list()
+            ),
+        }
+    }
+
+    /// Adds the module files of a folder (not of its subfolders), sorted by name.
+    fn add_folder(&mut self, folder: &Path) -> anyhow::Result<()> {
+        let shown = folder.display();
+        let mut files = Vec::new();
+        for entry in
+            fs::read_dir(folder).with_context(|| format!("cannot read folder `{shown}`"))?
+        {
+            let entry = entry.with_context(|| format!("cannot read folder `{shown}`"))?;
+            let path = entry.path();
+            if file_kind(&path) == Some(FileKind::Module) && path.is_file() {
+                files.push((entry.file_name(), path));
+            }
+        }
+        if files.is_empty() {
+            bail!(
+                "folder `{shown}` holds no RAPID module files ({})",
+                extension_list()
+            );
+        }
+        files.sort();
+        for (_, path) in files {
+            let shown = path.display();
+            self.add_module(&path)
+                .with_context(|| format!("cannot read `{shown}`"))?;
+        }
+        Ok(())
+    }
+
+    fn add_module(&mut self, path: &Path) -> io::Result<()> {
+        if !self.first_sight(path) {
+            return Ok(());
+        }
+        let bytes = fs::read(path)?;
+        self.push_module(SourceInput::from_bytes(path.display().to_string(), bytes));
+        Ok(())
+    }
+
+    /// Adds a `.pgf`: either the modules it lists, or the module it holds itself.
+    fn add_program(&mut self, path: &Path) -> anyhow::Result<()> {
+        if !self.first_sight(path) {
+            return Ok(());
+        }
+        let shown = path.display();
+        let bytes = fs::read(path).with_context(|| format!("cannot read `{shown}`"))?;
+        let source = SourceInput::from_bytes(shown.to_string(), bytes);
+        let entries = match program_file::parse(&source) {
+            ProgramFile::Module => {
+                self.push_module(source);
+                return Ok(());
+            }
+            ProgramFile::Listing(entries) => entries,
+        };
+        let program_idx = self.programs.len();
+        self.programs.push(source);
+        self.order.push(FileRef::Program(program_idx));
+
+        let folder = path.parent().unwrap_or(Path::new(""));
+        for Entry { name, span } in entries {
+            if name.is_empty() {
+                let message = "this <Module> entry names no module";
+                self.program_diagnostics
+                    .push(entry_diagnostic(program_idx, span, message));
+                continue;
+            }
+            let module_path = program_file::resolve(folder, &name);
+            if let Err(err) = self.add_module(&module_path) {
+                let message = format!(
+                    "cannot read module `{}` listed here: {}",
+                    module_path.display(),
+                    describe_io_error(&err)
+                );
+                self.program_diagnostics
+                    .push(entry_diagnostic(program_idx, span, message));
+            }
+        }
+        Ok(())
+    }
+
+    fn push_module(&mut self, source: SourceInput) {
+        self.order.push(FileRef::Module(self.modules.len()));
+        self.modules.push(source);
+    }
+
+    /// Records that `path` is being read; false when it was read before.
+    fn first_sight(&mut self, path: &Path) -> bool {
+        match fs::canonicalize(path) {
+            Ok(canonical) => self.seen.insert(canonical),
+            // Reading will fail and say why.
+            Err(_) => true,
+        }
+    }
+
+    fn finish(self) -> Inputs {
+        let n_modules = self.modules.len();
+        let table_idx = |file: FileRef| match file {
+            FileRef::Module(idx) => idx,
+            FileRef::Program(idx) => n_modules + idx,
+        };
+        let mut rank = vec![0; n_modules + self.programs.len()];
+        for (order_idx, &file) in self.order.iter().enumerate() {
+            rank[table_idx(file)] = order_idx;
+        }
+        let diagnostics = self
+            .program_diagnostics
+            .into_iter()
+            .map(|diag| Diagnostic {
+                file: table_idx(FileRef::Program(diag.file)),
+                ..diag
+            })
+            .collect();
+        Inputs {
+            modules: self.modules,
+            programs: self.programs,
+            diagnostics,
+            rank,
+        }
+    }
+}
+
+fn entry_diagnostic(program_idx: usize, span: Span, message: impl Into<String>) -> Diagnostic {
+    Diagnostic::new(program_idx, Code::ProgramFileEntry, span, message)
+}
+
+fn extension_list() -> String {
+    let list: Vec<String> = MODULE_EXTENSIONS
+        .iter()
+        .map(|ext| format!(".{ext}"))
+        .collect();
+    list.join(" ")
+}
+
+/// Says what went wrong in words, without the OS error number.
+fn describe_io_error(err: &io::Error) -> String {
+    match err.kind() {
+        io::ErrorKind::NotFound => "no such file".to_owned(),
+        io::ErrorKind::PermissionDenied => "permission denied".to_owned(),
+        io::ErrorKind::IsADirectory => "it is a folder".to_owned(),
+        _ => err.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn kinds_ignore_case() {
+        assert_eq!(file_kind(Path::new("a/MAIN.MOD")), Some(FileKind::Module));
+        assert_eq!(file_kind(Path::new("user.Sysx")), Some(FileKind::Module));
+        assert_eq!(file_kind(Path::new("old.prg")), Some(FileKind::Module));
+        assert_eq!(file_kind(Path::new("prog.PGF")), Some(FileKind::Program));
+        assert_eq!(file_kind(Path::new("notes.txt")), None);
+        assert_eq!(file_kind(Path::new("Makefile")), None);
+    }
+}

@@ -1,0 +1,302 @@
+//! Routine calls (§1.1.5 "过程调用", §1.3.4): arguments matched to parameters by
+//! position and name, optional, switch, mutually exclusive and conditional
+//! arguments, and access modes (IN, VAR, INOUT, PERS).
+
+use rapid_syntax::ast::{Arena, Arg, ArgKind, ArgList, ExprId, ExprKind, Name, ParamMode, RoutineKind};
+use rapid_syntax::{Span, Symbol};
+
+use crate::checker::Checker;
+use crate::codes::Code;
+use crate::expr::{Expect, Ty};
+use crate::symbols::{DataKind, Def, ParamInfo, ANY_RANK};
+use crate::types;
+
+impl Checker<'_> {
+    /// `name(args)` in an expression.
+    pub(crate) fn call_expr(&mut self, arena: &Arena, name: Symbol, args: ArgList, span: Span) -> Ty {
+        let name_text = self.text(span).split('(').next().unwrap_or("").trim().to_string();
+        match self.lookup(name) {
+            Some(Def::Routine(idx)) if self.routine(idx).kind == RoutineKind::Func => {
+                self.check_args(idx, arena, args, span);
+                self.routine(idx).ret.map_or(Ty::ERROR, Ty::scalar)
+            }
+            Some(_) => {
+                self.diag(Code::NotAFunction, span, format!("`{name_text}` is not a function"));
+                self.type_args_leniently(arena, args);
+                Ty::ERROR
+            }
+            None => {
+                self.diag(Code::UndefinedFunction, span, format!("undefined function `{name_text}`"));
+                self.type_args_leniently(arena, args);
+                Ty::ERROR
+            }
+        }
+    }
+
+    /// `name args;` as an instruction.
+    pub(crate) fn proc_call(&mut self, arena: &Arena, name: Name, args: ArgList, span: Span) {
+        if name.is_placeholder {
+            return self.type_args_leniently(arena, args);
+        }
+        let text = self.text(name.span);
+        match self.lookup(name.sym) {
+            Some(Def::Routine(idx)) => match self.routine(idx).kind {
+                RoutineKind::Proc => self.check_args(idx, arena, args, span),
+                RoutineKind::Trap => {
+                    self.diag(Code::TrapCalled, name.span, format!("`{text}` is a TRAP routine: traps run on interrupts and cannot be called"));
+                }
+                RoutineKind::Func => {
+                    self.diag(Code::NotAProcedure, name.span, format!("`{text}` is a function, not a procedure; use its value in an expression"));
+                    self.type_args_leniently(arena, args);
+                }
+            },
+            Some(_) => {
+                self.diag(Code::NotAProcedure, name.span, format!("`{text}` is not a procedure"));
+                self.type_args_leniently(arena, args);
+            }
+            None => {
+                let message = format!("no procedure `{text}` is defined in this task; calling it raises ERR_REFUNKPRC at run time");
+                self.diag(Code::UndefinedProcedure, name.span, message);
+                self.type_args_leniently(arena, args);
+            }
+        }
+    }
+
+    /// Types argument expressions of a call that cannot be matched, so names inside
+    /// them are still resolved.
+    pub(crate) fn type_args_leniently(&mut self, arena: &Arena, args: ArgList) {
+        for arg in arena.args(args) {
+            if let (Some(value), ArgKind::Required | ArgKind::Optional) = (arg.value, arg.kind) {
+                self.expr(arena, value, Some(Expect::scalar(types::ANY)));
+            }
+        }
+    }
+
+    fn check_args(&mut self, routine: u32, arena: &Arena, args: ArgList, call_span: Span) {
+        let info = self.routine(routine);
+        if info.has_placeholders {
+            return self.type_args_leniently(arena, args);
+        }
+        let params = info.params.clone();
+        let routine_name = info.display.clone();
+        let builtin = info.chapter.is_some();
+        let groups = group_positions(&params);
+        let mut filled: Vec<Option<usize>> = vec![None; groups.len()];
+        let mut cursor = 0usize;
+        let mut has_placeholder = false;
+        for arg in arena.args(args).to_vec() {
+            if arg.kind == ArgKind::Placeholder {
+                has_placeholder = true;
+                continue;
+            }
+            let Some(param_idx) = self.match_param(arena, &params, &groups, &filled, cursor, &arg, &routine_name) else {
+                if let Some(value) = arg.value.filter(|_| arg.kind != ArgKind::Conditional) {
+                    self.expr(arena, value, Some(Expect::scalar(types::ANY)));
+                }
+                continue;
+            };
+            let pos = groups.iter().position(|g| g.contains(&param_idx)).unwrap_or(0);
+            if let Some(previous) = filled[pos] {
+                let (a, b) = (&params[param_idx].display, &params[previous].display);
+                let message = if previous == param_idx { format!("argument `{a}` is given twice") } else { format!("`{a}` and `{b}` exclude each other; give only one") };
+                self.diag(Code::DuplicateArgument, arg.span, message);
+            } else if pos < cursor {
+                let name = &params[param_idx].display;
+                self.diag(Code::ArgumentOrder, arg.span, format!("argument `{name}` is out of order: arguments must follow the order of `{routine_name}`'s parameters"));
+            }
+            filled[pos] = Some(param_idx);
+            cursor = cursor.max(pos + 1);
+            self.check_arg_value(arena, &params[param_idx], &arg, builtin);
+        }
+        if has_placeholder {
+            return;
+        }
+        for (pos, group) in groups.iter().enumerate() {
+            let first = &params[group[0]];
+            if filled[pos].is_none() && !first.optional {
+                let names: Vec<&str> = group.iter().map(|&p| params[p].display.as_str()).collect();
+                let names = names.join("` or `");
+                self.diag(Code::MissingArgument, call_span, format!("`{routine_name}` needs the argument `{names}`"));
+            }
+        }
+    }
+
+    /// The parameter an argument stands for, reporting arguments that fit none.
+    #[allow(clippy::too_many_arguments)]
+    fn match_param(&mut self, arena: &Arena, params: &[ParamInfo], groups: &[Vec<usize>], filled: &[Option<usize>], cursor: usize, arg: &Arg, routine_name: &str) -> Option<usize> {
+        if let Some(name) = arg.name {
+            let text = self.text(name.span);
+            let Some(idx) = params.iter().position(|p| p.name == name.sym) else {
+                let shown = if arg.kind == ArgKind::Required { text.to_string() } else { format!("\\{text}") };
+                self.diag(Code::UnknownArgument, name.span, format!("`{routine_name}` has no parameter `{shown}`"));
+                return None;
+            };
+            let optional_syntax = arg.kind != ArgKind::Required;
+            if params[idx].optional != optional_syntax {
+                let message = if params[idx].optional {
+                    format!("parameter `{text}` of `{routine_name}` is optional: write it as `\\{text}`")
+                } else {
+                    format!("parameter `{text}` of `{routine_name}` is required: write it without `\\`")
+                };
+                self.diag(Code::RequiredAsOptional, name.span, message);
+            }
+            return Some(idx);
+        }
+        // A positional argument fills the next required group not yet filled.
+        let unfilled_required = |g: &usize| filled[*g].is_none() && !params[groups[*g][0]].optional;
+        // Past the cursor first; an earlier gap means the arguments are out of order
+        // (the caller reports that).
+        let pos = (cursor..groups.len()).find(unfilled_required).or_else(|| (0..cursor).find(unfilled_required));
+        let Some(pos) = pos else {
+            self.diag(Code::TooManyArguments, arg.span, format!("too many arguments for `{routine_name}`"));
+            return None;
+        };
+        let group = &groups[pos];
+        if group.len() == 1 {
+            return Some(group[0]);
+        }
+        // Required alternatives (built-ins only): pick the one whose type fits.
+        let value = arg.value?;
+        let got = self.expr(arena, value, Some(Expect::scalar(types::ANY)));
+        let fits = group.iter().copied().find(|&p| self.types.same(params[p].ty, got.ty) && params[p].rank == got.rank);
+        Some(fits.unwrap_or(group[0]))
+    }
+
+    /// Checks one argument's value; `builtin` calls may pass non-value data to IN
+    /// parameters (the controller passes them by reference).
+    fn check_arg_value(&mut self, arena: &Arena, param: &ParamInfo, arg: &Arg, builtin: bool) {
+        let name = &param.display;
+        match arg.kind {
+            ArgKind::Conditional => return self.check_conditional(arena, param, arg),
+            ArgKind::Optional if param.is_switch() => {
+                if let Some(value) = arg.value {
+                    self.diag(Code::SwitchWithValue, arena.expr(value).span, format!("`\\{name}` is a switch: it takes no value"));
+                }
+                return;
+            }
+            ArgKind::Optional if arg.value.is_none() => {
+                self.diag(Code::MissingArgumentValue, arg.span, format!("`\\{name}` is not a switch: give it a value with `\\{name}:=...`"));
+                return;
+            }
+            _ => {}
+        }
+        let Some(value) = arg.value else { return };
+        let dims = vec![0u32; if param.rank == ANY_RANK { 0 } else { param.rank as usize }];
+        let expect = Expect { ty: param.ty, dims: &dims };
+        if param.mode != ParamMode::In {
+            self.check_reference(arena, value, param);
+        }
+        let got = self.expr(arena, value, Some(expect));
+        if got.ty == types::ERROR {
+            return;
+        }
+        let span = arena.expr(value).span;
+        // `anytype` data parameters take arrays too (WriteAnyBin, ValToStr of a record...).
+        let rank_ok = match param.rank {
+            ANY_RANK => got.rank > 0,
+            0 if param.ty == types::ANY => true,
+            rank => got.rank == rank,
+        };
+        if !rank_ok {
+            let (want, found) = (self.describe(param.ty, param.rank), self.describe(got.ty, got.rank));
+            self.diag(Code::ArrayArgumentMismatch, span, format!("argument `{name}` must be {want}, found {found}"));
+            return;
+        }
+        if param.mode == ParamMode::In && self.types.class(got.ty) == crate::types::ValueClass::NonValue && !self.types.is_lenient(param.ty) && !builtin {
+            let found = self.type_name(got.ty);
+            self.diag(Code::NonValueUse, span, format!("argument `{name}` is an IN parameter, which needs a value; `{found}` is a non-value type (declare the parameter VAR)"));
+            return;
+        }
+        let fits = if param.mode == ParamMode::In { self.types.compatible(param.ty, got.ty) } else { self.types.same(param.ty, got.ty) };
+        if !fits {
+            let (want, found) = (self.describe(param.ty, param.rank), self.describe(got.ty, got.rank));
+            self.diag(Code::TypeMismatch, span, format!("argument `{name}` must be {want}, found {found}"));
+        }
+    }
+
+    /// VAR, INOUT and PERS parameters need a data object of the right kind (§1.1.5).
+    fn check_reference(&mut self, arena: &Arena, value: ExprId, param: &ParamInfo) {
+        let span = arena.expr(value).span;
+        let name = &param.display;
+        let want = match param.mode {
+            ParamMode::Var => "a variable",
+            ParamMode::Pers => "an entire persistent",
+            _ => "a variable or an entire persistent",
+        };
+        let Some((data, entire)) = self.reference_root(arena, value) else {
+            if !matches!(arena.expr(value).kind, ExprKind::Name(_) | ExprKind::Placeholder(_) | ExprKind::Error) {
+                self.diag(Code::ArgumentNotReference, span, format!("argument `{name}` must be {want}, not an expression"));
+            }
+            return;
+        };
+        let kind = self.data(data).kind;
+        let is_var = matches!(kind, DataKind::Var | DataKind::Param(ParamMode::In | ParamMode::Var | ParamMode::Inout));
+        let is_pers = matches!(kind, DataKind::Pers | DataKind::Param(ParamMode::Pers | ParamMode::Inout));
+        let ok = match param.mode {
+            ParamMode::Var => is_var,
+            ParamMode::Pers => is_pers && entire,
+            _ => is_var || (is_pers && entire),
+        };
+        if !ok {
+            let what = match kind {
+                DataKind::Const => "a constant",
+                DataKind::LoopVar => "a FOR loop variable",
+                DataKind::ReadOnly => "a read-only system variable",
+                DataKind::Pers if !entire => "part of a persistent",
+                DataKind::Pers => "a persistent",
+                _ => "a variable",
+            };
+            self.diag(Code::ArgumentNotReference, span, format!("argument `{name}` must be {want}, but this is {what}"));
+        }
+    }
+
+    /// `\Name ? param` forwards an optional parameter of the calling routine.
+    fn check_conditional(&mut self, arena: &Arena, param: &ParamInfo, arg: &Arg) {
+        let Some(value) = arg.value else { return };
+        let span = arena.expr(value).span;
+        let forwarded = match arena.expr(value).kind {
+            ExprKind::Name(sym) => match self.lookup(sym) {
+                Some(Def::Data(data)) => Some(data),
+                _ => None,
+            },
+            _ => self.reference_root(arena, value).map(|(data, _)| data),
+        };
+        match forwarded {
+            Some(data) if self.data(data).optional => {
+                let info = self.data(data);
+                let (ty, rank) = (info.ty, info.rank);
+                let fits = param.is_switch() && ty == types::SWITCH || self.types.compatible(param.ty, ty) && (rank == param.rank || param.rank == ANY_RANK);
+                if !fits && !param.is_switch() {
+                    let (want, found) = (self.describe(param.ty, param.rank), self.describe(ty, rank));
+                    let name = &param.display;
+                    self.diag(Code::TypeMismatch, span, format!("argument `{name}` must be {want}, found {found}"));
+                }
+            }
+            Some(_) => {
+                let text = self.text(span);
+                self.diag(Code::ConditionalFromRequired, span, format!("`{text}` is not an optional parameter of this routine, so it cannot be passed on conditionally with `?`"));
+            }
+            None => {
+                self.expr(arena, value, None);
+            }
+        }
+    }
+}
+
+/// Parameter indices grouped by mutually exclusive group, in declaration order.
+fn group_positions(params: &[ParamInfo]) -> Vec<Vec<usize>> {
+    let mut groups: Vec<Vec<usize>> = Vec::new();
+    let mut last_group = None;
+    for (idx, param) in params.iter().enumerate() {
+        if last_group == Some(param.group) {
+            if let Some(group) = groups.last_mut() {
+                group.push(idx);
+            }
+        } else {
+            groups.push(vec![idx]);
+            last_group = Some(param.group);
+        }
+    }
+    groups
+}
+

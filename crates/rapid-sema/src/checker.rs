@@ -1,0 +1,140 @@
+//! The checker's state: tables, scopes, the file and routine being checked, and the
+//! one place diagnostics are pushed.
+
+use rapid_syntax::ast::{Arena, ExprId, ExprKind};
+use rapid_syntax::{Span, Symbol};
+
+use crate::body::RoutineCtx;
+use crate::codes::Code;
+use crate::diagnostic::{Diagnostic, SourceInput};
+use crate::symbols::{DataInfo, Def, RoutineInfo, Scopes};
+use crate::types::{TypeId, Types};
+
+/// Diagnostics per file past which a file is reported as hopeless.
+pub(crate) const MAX_DIAGNOSTICS_PER_FILE: usize = 500;
+
+/// Names the checker needs to recognise, interned before checking starts.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct WellKnown {
+    pub(crate) switch: Symbol,
+    pub(crate) anytype: Symbol,
+    pub(crate) placeholder_id: Symbol,
+}
+
+/// Well-known types, found in the catalogue.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct CoreTypes {
+    pub(crate) num: TypeId,
+    pub(crate) dnum: TypeId,
+    pub(crate) bool_: TypeId,
+    pub(crate) string: TypeId,
+    pub(crate) pos: TypeId,
+    pub(crate) orient: TypeId,
+    pub(crate) errnum: TypeId,
+    pub(crate) intnum: TypeId,
+}
+
+pub(crate) struct Checker<'a> {
+    pub(crate) files: &'a [SourceInput],
+    pub(crate) types: Types,
+    pub(crate) core: CoreTypes,
+    pub(crate) known: WellKnown,
+    pub(crate) scopes: Scopes,
+    pub(crate) datas: Vec<DataInfo>,
+    pub(crate) routines: Vec<RoutineInfo>,
+    pub(crate) diags: Vec<Diagnostic>,
+    /// The file and module (index into all modules) being checked.
+    pub(crate) file: usize,
+    pub(crate) module: usize,
+    pub(crate) ctx: Option<RoutineCtx>,
+    /// The file of each module.
+    pub(crate) module_files: Vec<usize>,
+    diags_in_file: usize,
+}
+
+impl<'a> Checker<'a> {
+    pub(crate) fn new(files: &'a [SourceInput], known: WellKnown) -> Checker<'a> {
+        let error = crate::types::ERROR;
+        Checker {
+            files,
+            types: Types::new(),
+            core: CoreTypes { num: error, dnum: error, bool_: error, string: error, pos: error, orient: error, errnum: error, intnum: error },
+            known,
+            scopes: Scopes::default(),
+            datas: Vec::new(),
+            routines: Vec::new(),
+            diags: Vec::new(),
+            file: 0,
+            module: 0,
+            ctx: None,
+            module_files: Vec::new(),
+            diags_in_file: 0,
+        }
+    }
+
+    /// Switches to another file.
+    pub(crate) fn enter(&mut self, file: usize, module: usize) {
+        if file != self.file {
+            self.diags_in_file = 0;
+        }
+        self.file = file;
+        self.module = module;
+    }
+
+    /// The text of `span` in the current file.
+    pub(crate) fn text(&self, span: Span) -> &'a str {
+        span.text(&self.files[self.file].text)
+    }
+
+    pub(crate) fn diag(&mut self, code: Code, span: Span, message: String) {
+        self.diags_in_file += 1;
+        if self.diags_in_file > MAX_DIAGNOSTICS_PER_FILE {
+            return;
+        }
+        if self.diags_in_file == MAX_DIAGNOSTICS_PER_FILE {
+            let message = format!("{MAX_DIAGNOSTICS_PER_FILE} diagnostics in this file; reporting stopped here");
+            self.diags.push(Diagnostic::new(self.file, Code::TooManyErrors, span, message));
+            return;
+        }
+        self.diags.push(Diagnostic::new(self.file, code, span, message));
+    }
+
+    pub(crate) fn lookup(&self, sym: Symbol) -> Option<Def> {
+        self.scopes.lookup(self.module, sym)
+    }
+
+    pub(crate) fn data(&self, idx: u32) -> &DataInfo {
+        &self.datas[idx as usize]
+    }
+
+    pub(crate) fn routine(&self, idx: u32) -> &RoutineInfo {
+        &self.routines[idx as usize]
+    }
+
+    pub(crate) fn type_name(&self, ty: TypeId) -> String {
+        self.types.name(ty).to_string()
+    }
+
+    /// The data object at the root of a data reference (`a`, `a{i}`, `a.b{j}.c`), and
+    /// whether the reference is the entire object.
+    pub(crate) fn reference_root(&self, arena: &Arena, id: ExprId) -> Option<(u32, bool)> {
+        let mut cur = id;
+        let mut entire = true;
+        loop {
+            match arena.expr(cur).kind {
+                ExprKind::Name(sym) => {
+                    return match self.lookup(sym) {
+                        Some(Def::Data(data)) => Some((data, entire)),
+                        _ => None,
+                    };
+                }
+                ExprKind::Index { base, .. } | ExprKind::Field { base, .. } => {
+                    entire = false;
+                    cur = base;
+                }
+                ExprKind::Paren(inner) => cur = inner,
+                _ => return None,
+            }
+        }
+    }
+}

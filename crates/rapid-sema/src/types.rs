@@ -1,0 +1,168 @@
+//! The type table: atomic, record, alias, non-value and semi-value types (§1.2.1),
+//! with alias equivalence and the value / semi-value / non-value classes.
+
+use rapid_syntax::{Span, Symbol};
+
+/// Index of a type in the [`Types`] table.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub(crate) struct TypeId(u32);
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Atomic {
+    Num,
+    Dnum,
+    Bool,
+    String,
+}
+
+#[derive(Debug, Clone)]
+pub(crate) struct Field {
+    pub(crate) name: Symbol,
+    pub(crate) display: String,
+    pub(crate) ty: TypeId,
+}
+
+#[derive(Debug, Clone)]
+pub(crate) enum TypeKind {
+    /// Stands for a type that could not be resolved; accepts everything, so one
+    /// mistake gives one diagnostic.
+    Error,
+    /// `anytype` in built-in signatures.
+    Any,
+    /// The `switch` type of optional parameters.
+    Switch,
+    Atomic(Atomic),
+    Record(Vec<Field>),
+    Alias(TypeId),
+    NonValue,
+    /// A signal type and the value type it reads as.
+    SemiValue(TypeId),
+    /// Declared, components not resolved yet.
+    Pending,
+}
+
+/// Whether a type's data can take part in value operations (§1.2.1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum ValueClass {
+    Value,
+    SemiValue,
+    NonValue,
+}
+
+#[derive(Debug, Clone)]
+pub(crate) struct TypeInfo {
+    pub(crate) display: String,
+    pub(crate) kind: TypeKind,
+    pub(crate) span: Span,
+}
+
+/// Every type of the program, built-ins first.
+#[derive(Debug)]
+pub(crate) struct Types {
+    infos: Vec<TypeInfo>,
+}
+
+pub(crate) const ERROR: TypeId = TypeId(0);
+pub(crate) const ANY: TypeId = TypeId(1);
+pub(crate) const SWITCH: TypeId = TypeId(2);
+
+impl Types {
+    pub(crate) fn new() -> Types {
+        let special = |display: &str, kind| TypeInfo { display: display.into(), kind, span: Span::default() };
+        Types { infos: vec![special("<error>", TypeKind::Error), special("anytype", TypeKind::Any), special("switch", TypeKind::Switch)] }
+    }
+
+    pub(crate) fn add(&mut self, info: TypeInfo) -> TypeId {
+        self.infos.push(info);
+        TypeId(self.infos.len() as u32 - 1)
+    }
+
+    pub(crate) fn info(&self, ty: TypeId) -> &TypeInfo {
+        &self.infos[ty.0 as usize]
+    }
+
+    pub(crate) fn set_kind(&mut self, ty: TypeId, kind: TypeKind) {
+        self.infos[ty.0 as usize].kind = kind;
+    }
+
+    pub(crate) fn name(&self, ty: TypeId) -> &str {
+        &self.info(ty).display
+    }
+
+    /// The type with aliases followed to their base.
+    pub(crate) fn canonical(&self, mut ty: TypeId) -> TypeId {
+        for _ in 0..16 {
+            match self.info(ty).kind {
+                TypeKind::Alias(base) => ty = base,
+                _ => return ty,
+            }
+        }
+        ERROR
+    }
+
+    /// The type a value of `ty` has in an expression: signals read as their base.
+    pub(crate) fn value_of(&self, ty: TypeId) -> TypeId {
+        let canon = self.canonical(ty);
+        match self.info(canon).kind {
+            TypeKind::SemiValue(base) => self.canonical(base),
+            _ => canon,
+        }
+    }
+
+    pub(crate) fn atomic(&self, ty: TypeId) -> Option<Atomic> {
+        match self.info(self.value_of(ty)).kind {
+            TypeKind::Atomic(atomic) => Some(atomic),
+            _ => None,
+        }
+    }
+
+    pub(crate) fn is_numeric(&self, ty: TypeId) -> bool {
+        matches!(self.atomic(ty), Some(Atomic::Num | Atomic::Dnum))
+    }
+
+    /// Accepts anything without a further diagnostic.
+    pub(crate) fn is_lenient(&self, ty: TypeId) -> bool {
+        matches!(self.info(self.canonical(ty)).kind, TypeKind::Error | TypeKind::Any | TypeKind::Pending)
+    }
+
+    pub(crate) fn record_fields(&self, ty: TypeId) -> Option<&[Field]> {
+        match &self.info(self.value_of(ty)).kind {
+            TypeKind::Record(fields) => Some(fields),
+            _ => None,
+        }
+    }
+
+    pub(crate) fn class(&self, ty: TypeId) -> ValueClass {
+        self.class_at_depth(ty, 0)
+    }
+
+    fn class_at_depth(&self, ty: TypeId, depth: u32) -> ValueClass {
+        if depth > 16 {
+            return ValueClass::Value;
+        }
+        match &self.info(self.canonical(ty)).kind {
+            TypeKind::NonValue | TypeKind::Switch => ValueClass::NonValue,
+            TypeKind::SemiValue(_) => ValueClass::SemiValue,
+            TypeKind::Record(fields) => {
+                let non_value = fields.iter().any(|f| self.class_at_depth(f.ty, depth + 1) == ValueClass::NonValue);
+                if non_value { ValueClass::NonValue } else { ValueClass::Value }
+            }
+            _ => ValueClass::Value,
+        }
+    }
+
+    /// Whether a value of type `got` may stand where `want` is expected: alias
+    /// equivalence, signals read as their base, num and dnum convert both ways.
+    pub(crate) fn compatible(&self, want: TypeId, got: TypeId) -> bool {
+        if self.is_lenient(want) || self.is_lenient(got) {
+            return true;
+        }
+        let (want_c, got_v) = (self.canonical(want), self.value_of(got));
+        want_c == got_v || want_c == self.canonical(got) || (self.is_numeric(want_c) && self.is_numeric(got_v))
+    }
+
+    /// Whether `got` is exactly the type `want` up to aliases (for reference parameters).
+    pub(crate) fn same(&self, want: TypeId, got: TypeId) -> bool {
+        self.is_lenient(want) || self.is_lenient(got) || self.canonical(want) == self.canonical(got)
+    }
+}

@@ -1,0 +1,5 @@
+! expect: E0124 line 3
+! SYSMODULE given twice
+MODULE E0124_1 (SYSMODULE, SYSMODULE)
+  VAR num n;
+ENDMODULE

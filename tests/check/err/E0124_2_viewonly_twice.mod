@@ -1,0 +1,5 @@
+! expect: E0124 line 3
+! VIEWONLY given twice after NOSTEPIN
+MODULE E0124_2 (NOSTEPIN, VIEWONLY, VIEWONLY)
+  VAR num n;
+ENDMODULE

@@ -1,0 +1,6 @@
+! expect: E0128 line 6
+! a second ENDMODULE
+MODULE E0128_4
+  VAR num n;
+ENDMODULE
+ENDMODULE

@@ -1,0 +1,8 @@
+! expect: E0203 line 6
+! a call to a function that is not defined
+MODULE E0203_1
+  VAR num n;
+  PROC main()
+    n := Compute(2);
+  ENDPROC
+ENDMODULE

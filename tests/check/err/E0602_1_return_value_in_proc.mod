@@ -1,0 +1,7 @@
+! expect: E0602 line 5
+! RETURN 5 in a PROC
+MODULE E0602_1
+  PROC main()
+    RETURN 5;
+  ENDPROC
+ENDMODULE
