@@ -432,6 +432,6 @@ mod tests {
         assert_eq!((toks, errs), (vec![T::Header, T::Module], vec![]));
         assert_eq!(kinds("a \0 b").1, vec![SyntaxErrorKind::InvalidCharacter]);
         assert_eq!(kinds("%%% open").1, vec![SyntaxErrorKind::UnterminatedHeader]);
-        assert_eq!(kinds("%%%\n VERSION:1\n%%\nMODULE m").0, vec![T::Header, T::Module]);
+        assert_eq!(kinds("%%%\n VERSION:1\n%%\nMODULE m").0, vec![T::Header, T::Module, T::Ident]);
     }
 }

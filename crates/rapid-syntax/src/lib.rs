@@ -4,6 +4,7 @@
 //! fails: every input gives a tree plus a list of errors.
 
 pub mod ast;
+pub mod dump;
 pub mod error;
 mod grammar;
 pub mod intern;

@@ -12,6 +12,7 @@
 //! meaning of an expression the strict grammar accepts.
 
 use crate::ast::{BinaryOp, ExprId, ExprKind, Placeholder, UnaryOp};
+use crate::error::SyntaxErrorKind;
 use crate::parser::{Parser, MAX_EXPR_DEPTH};
 use crate::span::Span;
 use crate::token::TokenKind as T;
@@ -64,10 +65,14 @@ impl Parser<'_, '_, '_> {
         let Some(op) = relop(self.nth(0)) else { return lhs };
         self.bump();
         let rhs = self.simple();
-        if relop(self.nth(0)).is_some() {
-            self.error_expected("no second comparison (comparisons do not chain; use AND)");
+        let mut res = self.binary(op, lhs, rhs);
+        if let Some(op) = relop(self.nth(0)) {
+            let span = self.bump().span;
+            self.error(SyntaxErrorKind::UnexpectedToken, span, "comparisons do not chain: write `a < b AND b < c`".into());
+            let rhs = self.simple();
+            res = self.binary(op, res, rhs);
         }
-        self.binary(op, lhs, rhs)
+        res
     }
 
     fn simple(&mut self) -> ExprId {
@@ -124,6 +129,9 @@ impl Parser<'_, '_, '_> {
         let start = self.bump().span.start;
         if self.expr_depth >= MAX_EXPR_DEPTH {
             self.error_too_deep("expressions", MAX_EXPR_DEPTH);
+            while matches!(self.nth(0), T::Minus | T::Plus) {
+                self.bump();
+            }
             self.skip_nested();
             return self.arena.alloc(ExprKind::Error, self.span_from(start));
         }

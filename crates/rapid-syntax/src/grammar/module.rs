@@ -24,6 +24,7 @@ impl Parser<'_, '_, '_> {
                 T::Module => {
                     let module = self.module();
                     file.modules.push(module);
+                    reported_outside = false;
                 }
                 _ => {
                     let span = self.current().span;
