@@ -22,7 +22,7 @@ mod syntax;
 mod types;
 
 use rapid_syntax::ast::Item;
-use rapid_syntax::{parse_body, parse_outline, Interner, Parse, Span};
+use rapid_syntax::{cap_errors, parse_body, parse_outline, Interner, Parse, Span, SyntaxError};
 
 pub use codes::{Code, Severity};
 pub use diagnostic::{Diagnostic, SourceInput};
@@ -51,45 +51,65 @@ pub fn check(files: &[SourceInput], options: &Options) -> Vec<Diagnostic> {
                 diags.push(Diagnostic::new(file, Code::EncryptedModule, Span::default(), "this is an ABB-encrypted module; it cannot be read or checked"));
                 None
             }
-            None => {
-                let parse = parse_outline(&input.text, &mut interner);
-                diags.extend(parse.errors.iter().map(|e| syntax::to_diagnostic(file, e)));
-                Some(parse)
-            }
+            None => Some(parse_outline(&input.text, &mut interner)),
         })
         .collect();
-    if !options.syntax_only {
-        check_semantics(files, &parses, &catalogue, &mut interner, &mut diags);
-    }
-    diags.sort_by_key(|d| (d.file, d.span.start, d.span.end));
-    diags
-}
-
-fn check_semantics(files: &[SourceInput], parses: &[Option<Parse>], catalogue: &rapid_lib::LoadedCatalogue, interner: &mut Interner, diags: &mut Vec<Diagnostic>) {
-    let known = WellKnown { switch: interner.intern("switch"), anytype: interner.intern("anytype"), placeholder_id: interner.intern("<ID>") };
-    let mut ck = Checker::new(files, known);
-    ck.load_builtins(catalogue, interner);
+    let mut syntax_errors: Vec<Vec<SyntaxError>> = parses.iter().map(|p| p.as_ref().map_or(Vec::new(), |p| p.errors.clone())).collect();
     let modules: Vec<ModuleRef<'_>> = parses
         .iter()
         .enumerate()
         .filter_map(|(file, parse)| parse.as_ref().map(|p| (file, p)))
         .flat_map(|(file, parse)| parse.file.modules.iter().map(move |module| ModuleRef { file, module }))
         .collect();
-    ck.declare_modules(&modules);
-    check_module_items(&mut ck, &modules);
+    if options.syntax_only {
+        for m in &modules {
+            for routine in routines(m) {
+                let errors = parse_body(&files[m.file].text, routine.body_span, &mut interner, None);
+                syntax_errors[m.file].extend(errors);
+            }
+        }
+    } else {
+        check_semantics(files, &modules, &catalogue, &mut interner, &mut syntax_errors, &mut diags);
+    }
+    for (file, errors) in syntax_errors.into_iter().enumerate() {
+        diags.extend(cap_errors(errors).iter().map(|e| syntax::to_diagnostic(file, e)));
+    }
+    diags.sort_by_key(|d| (d.file, d.span.start, d.span.end));
+    diags
+}
+
+fn routines<'m>(m: &ModuleRef<'m>) -> impl Iterator<Item = &'m rapid_syntax::ast::Routine> {
+    m.module.items.iter().filter_map(|item| match item {
+        Item::Routine(routine) => Some(routine),
+        _ => None,
+    })
+}
+
+fn check_semantics(
+    files: &[SourceInput],
+    modules: &[ModuleRef<'_>],
+    catalogue: &rapid_lib::LoadedCatalogue,
+    interner: &mut Interner,
+    syntax_errors: &mut [Vec<SyntaxError>],
+    diags: &mut Vec<Diagnostic>,
+) {
+    let known = WellKnown { switch: interner.intern("switch"), anytype: interner.intern("anytype"), placeholder_id: interner.intern("<ID>") };
+    let mut ck = Checker::new(files, known);
+    ck.load_builtins(catalogue, interner);
+    ck.declare_modules(modules);
+    check_module_items(&mut ck, modules);
     for (idx, m) in modules.iter().enumerate() {
         ck.enter(m.file, idx);
-        for item in &m.module.items {
-            let Item::Routine(routine) = item else { continue };
+        for routine in routines(m) {
             ck.begin_routine(routine);
             let mut sink = |item: rapid_syntax::ast::BodyItem, arena: &rapid_syntax::ast::Arena| ck.body_item(&item, arena);
-            parse_body(&files[m.file].text, routine.body_span, interner, &mut sink);
+            let errors = parse_body(&files[m.file].text, routine.body_span, interner, Some(&mut sink));
+            syntax_errors[m.file].extend(errors);
             ck.end_routine();
         }
     }
     diags.append(&mut ck.diags);
 }
-
 /// Module-level declarations: data initialisers and routine headers.
 fn check_module_items(ck: &mut Checker<'_>, modules: &[ModuleRef<'_>]) {
     for (idx, m) in modules.iter().enumerate() {

@@ -17,5 +17,5 @@ pub mod token;
 
 pub use error::{SyntaxError, SyntaxErrorKind};
 pub use intern::{Interner, Symbol};
-pub use parser::{parse, parse_body, parse_outline, BodySink, Parse, MAX_EXPR_DEPTH, MAX_STMT_DEPTH};
+pub use parser::{cap_errors, parse, parse_body, parse_outline, BodySink, Parse, MAX_EXPR_DEPTH, MAX_STMT_DEPTH};
 pub use span::{LineCol, LineIndex, Span};

@@ -36,7 +36,9 @@ pub type BodySink<'s> = dyn FnMut(BodyItem, &Arena) + 's;
 pub(crate) enum BodyMode<'s> {
     /// Keep them in the tree.
     Keep,
-    /// Parse them for their errors and drop them (an outline).
+    /// Only find where they end (an outline); [`parse_body`] parses them later.
+    Skip,
+    /// Parse them for their errors and drop each item at once.
     Discard,
     /// Hand each top-level item to a sink, then drop it.
     Stream(&'s mut BodySink<'s>),
@@ -47,19 +49,45 @@ pub fn parse(text: &str, interner: &mut Interner) -> Parse {
     Parser::new(text, 0, interner, BodyMode::Keep).source_file()
 }
 
-/// Parses a file but drops routine bodies after checking their syntax, so memory stays
-/// proportional to the declarations. Bodies can be streamed later with [`parse_body`].
+/// Parses a file's declarations and routine headers, only scanning over routine
+/// bodies (`Routine::body_span` says where each is), so memory stays proportional to
+/// the declarations. Errors inside bodies are found by [`parse_body`].
 pub fn parse_outline(text: &str, interner: &mut Interner) -> Parse {
-    Parser::new(text, 0, interner, BodyMode::Discard).source_file()
+    Parser::new(text, 0, interner, BodyMode::Skip).source_file()
 }
 
-/// Re-parses the body of a routine found by [`parse_outline`], handing each top-level
-/// item (declaration, statement, handler keyword) to `sink` together with the arena
-/// holding its expressions. The arena is cleared after each item. Syntax errors were
-/// already reported by the outline, so they are not returned again.
-pub fn parse_body<'s>(text: &str, body_span: Span, interner: &mut Interner, sink: &'s mut BodySink<'s>) {
-    let mut parser = Parser::new(text, body_span.start as usize, interner, BodyMode::Stream(sink));
+/// Parses the body of a routine found by [`parse_outline`] and returns its syntax
+/// errors. With a sink, each top-level item (declaration, statement, handler keyword)
+/// is handed to it together with the arena holding its expressions; the arena is
+/// cleared after each item, so memory stays bounded by the largest statement.
+pub fn parse_body<'s>(text: &str, body_span: Span, interner: &mut Interner, sink: Option<&'s mut BodySink<'s>>) -> Vec<SyntaxError> {
+    let mode = match sink {
+        Some(sink) => BodyMode::Stream(sink),
+        None => BodyMode::Discard,
+    };
+    let mut parser = Parser::new(text, body_span.start as usize, interner, mode);
     parser.routine_body_items();
+    let mut errors = std::mem::take(&mut parser.lexer.errors);
+    errors.append(&mut parser.errors);
+    // Lookahead may have lexed past the body; those errors belong to the outline.
+    errors.retain(|e| e.span.start < body_span.end || (body_span.is_empty() && e.span.start == body_span.end));
+    errors.sort_by_key(|e| e.span.start);
+    errors
+}
+
+/// Caps a file's errors at [`MAX_ERRORS_PER_FILE`], ending with one that says so.
+pub fn cap_errors(mut errors: Vec<SyntaxError>) -> Vec<SyntaxError> {
+    errors.sort_by_key(|e| e.span.start);
+    if errors.len() > MAX_ERRORS_PER_FILE {
+        let span = errors[MAX_ERRORS_PER_FILE].span;
+        errors.truncate(MAX_ERRORS_PER_FILE);
+        errors.push(SyntaxError {
+            kind: SyntaxErrorKind::TooManyErrors,
+            span,
+            message: format!("more than {MAX_ERRORS_PER_FILE} errors; this does not look like RAPID, so reporting stopped here"),
+        });
+    }
+    errors
 }
 
 pub(crate) struct Parser<'t, 'i, 's> {
@@ -98,17 +126,7 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
     pub(crate) fn finish(mut self, file: SourceFile) -> Parse {
         let mut errors = std::mem::take(&mut self.lexer.errors);
         errors.append(&mut self.errors);
-        errors.sort_by_key(|e| e.span.start);
-        if errors.len() > MAX_ERRORS_PER_FILE {
-            let span = errors[MAX_ERRORS_PER_FILE].span;
-            errors.truncate(MAX_ERRORS_PER_FILE);
-            errors.push(SyntaxError {
-                kind: SyntaxErrorKind::TooManyErrors,
-                span,
-                message: format!("more than {MAX_ERRORS_PER_FILE} errors; this does not look like RAPID, so reporting stopped here"),
-            });
-        }
-        Parse { file, errors, comments: std::mem::take(&mut self.lexer.comments) }
+        Parse { file, errors: cap_errors(errors), comments: std::mem::take(&mut self.lexer.comments) }
     }
 
     /// How many errors were found so far.
@@ -262,7 +280,7 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
                 TokenKind::Endif | TokenKind::Endfor | TokenKind::Endwhile | TokenKind::Endtest => {
                     depth = depth.saturating_sub(1)
                 }
-                TokenKind::Endproc | TokenKind::Endfunc | TokenKind::Endtrap | TokenKind::Endmodule => return,
+                kind if crate::grammar::ROUTINE_END.contains(kind) => return,
                 _ => {}
             }
             self.bump();
@@ -301,7 +319,7 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
     pub(crate) fn emit_body_item(&mut self, item: BodyItem, body: &mut Body, section: &mut Section) {
         match &mut self.body_mode {
             BodyMode::Keep => keep_body_item(item, body, section),
-            BodyMode::Discard => self.arena.clear(),
+            BodyMode::Skip | BodyMode::Discard => self.arena.clear(),
             BodyMode::Stream(sink) => {
                 sink(item, &self.arena);
                 self.arena.clear();
@@ -311,6 +329,23 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
 
     pub(crate) fn keeps_bodies(&self) -> bool {
         matches!(self.body_mode, BodyMode::Keep)
+    }
+
+    pub(crate) fn skips_bodies(&self) -> bool {
+        matches!(self.body_mode, BodyMode::Skip)
+    }
+
+    /// Scans over a routine body without parsing it (outline mode): to the first token
+    /// that ends a routine, exactly where `routine_body_items` stops. Lexical errors in
+    /// the body are left for `parse_body` to report.
+    pub(crate) fn skip_body(&mut self, stop: TokenSet) {
+        let start = self.current().span.start;
+        while !self.at_set(stop) {
+            self.bump();
+        }
+        let end = self.current().span.start;
+        self.lexer.errors.retain(|e| e.span.start < start || e.span.start >= end);
+        self.lexer.unterminated_string_ends.retain(|&pos| pos < start || pos >= end);
     }
 }
 

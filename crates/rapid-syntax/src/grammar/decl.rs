@@ -29,7 +29,7 @@ impl Parser<'_, '_, '_> {
                 self.bump();
                 self.name_from(token)
             }
-            kind if kind.is_keyword() && AFTER_NAME.contains(self.nth(1)) => {
+            kind if kind.is_keyword() && !super::ROUTINE_END.contains(kind) && AFTER_NAME.contains(self.nth(1)) => {
                 self.bump();
                 let word = token.span.text(self.text).to_ascii_uppercase();
                 self.error(SyntaxErrorKind::ReservedWordAsName, token.span, format!("`{word}` is a reserved word and cannot be used as a name"));

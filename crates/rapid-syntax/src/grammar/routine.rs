@@ -26,7 +26,12 @@ impl Parser<'_, '_, '_> {
 
         let module_arena = std::mem::take(&mut self.arena);
         let body_start = self.current().span.start;
-        let body = self.routine_body_items();
+        let body = if self.skips_bodies() {
+            self.skip_body(ROUTINE_END);
+            None
+        } else {
+            self.routine_body_items()
+        };
         let body_span = Span { start: body_start, end: self.current().span.start.max(body_start) };
         self.arena = module_arena;
 
