@@ -8,7 +8,7 @@ use rustc_hash::FxHashMap;
 
 use crate::checker::Checker;
 use crate::codes::Code;
-use crate::expr::Expect;
+use crate::expr::{Expect, What};
 use crate::symbols::{DataInfo, DataKind, Def};
 use crate::types::{self, ValueClass};
 
@@ -289,15 +289,15 @@ impl Checker<'_> {
         }
         let rank = target_ty.rank.min(3) as usize;
         let expect = Expect { ty: target_ty.ty, dims: &dims[..rank] };
-        self.expect_value(arena, value, expect, "the assigned value");
+        self.expect_value(arena, value, expect, What::Text("the assigned value"));
     }
 
     fn for_stmt(&mut self, arena: &Arena, var: Name, from: ExprId, to: ExprId, step: Option<ExprId>, body: &[Stmt]) {
         let num = Expect::scalar(self.core.num);
-        self.expect_value(arena, from, num, "the FROM value");
-        self.expect_value(arena, to, num, "the TO value");
+        self.expect_value(arena, from, num, What::Text("the FROM value"));
+        self.expect_value(arena, to, num, What::Text("the TO value"));
         if let Some(step) = step {
-            self.expect_value(arena, step, num, "the STEP value");
+            self.expect_value(arena, step, num, What::Text("the STEP value"));
         }
         let data = DataInfo {
             display: self.text(var.span).to_string(),
@@ -328,7 +328,7 @@ impl Checker<'_> {
                     self.expr(arena, value, Some(Expect::scalar(types::ANY)));
                 } else {
                     let dims = vec![0u32; ty.rank as usize];
-                    self.expect_value(arena, value, Expect { ty: ty.ty, dims: &dims }, "a CASE value");
+                    self.expect_value(arena, value, Expect { ty: ty.ty, dims: &dims }, What::Text("a CASE value"));
                 }
             }
             self.stmt_list(arena, &case.body);
@@ -358,7 +358,7 @@ impl Checker<'_> {
             (RoutineKind::Func, None) => self.diag(Code::ReturnValueMismatch, span, "a FUNC must RETURN a value".into()),
             (RoutineKind::Func, Some(value)) => {
                 let want = ret.unwrap_or(types::ERROR);
-                self.expect_value(arena, value, Expect::scalar(want), "the returned value");
+                self.expect_value(arena, value, Expect::scalar(want), What::Text("the returned value"));
             }
             (_, Some(value)) => {
                 let word = if kind == RoutineKind::Proc { "PROC" } else { "TRAP" };
@@ -379,7 +379,7 @@ impl Checker<'_> {
             }
             return;
         };
-        self.expect_value(arena, value, Expect::scalar(self.core.errnum), "the error number");
+        self.expect_value(arena, value, Expect::scalar(self.core.errnum), What::Text("the error number"));
         if let Some(n) = self.const_num(arena, value) {
             if !(1.0..=90.0).contains(&n) || n.fract() != 0.0 {
                 self.diag(Code::RaiseNumberRange, arena.expr(value).span, format!("user error numbers are 1..90; RAISE {n} raises ERR_ILLRAISE at run time"));

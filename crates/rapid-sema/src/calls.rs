@@ -77,62 +77,64 @@ impl Checker<'_> {
         if info.has_placeholders {
             return self.type_args_leniently(arena, args);
         }
-        let params = info.params.clone();
-        let routine_name = info.display.clone();
-        let builtin = info.chapter.is_some();
-        let groups = group_positions(&params);
-        let mut filled: Vec<Option<usize>> = vec![None; groups.len()];
+        let (params, groups, builtin) = (info.params.clone(), info.groups.clone(), info.chapter.is_some());
+        let mut filled = std::mem::take(&mut self.filled_scratch);
+        filled.clear();
+        filled.resize(groups.len(), None);
         let mut cursor = 0usize;
         let mut has_placeholder = false;
-        for arg in arena.args(args).to_vec() {
+        for arg in arena.args(args) {
             if arg.kind == ArgKind::Placeholder {
                 has_placeholder = true;
                 continue;
             }
-            let Some(param_idx) = self.match_param(arena, &params, &groups, &filled, cursor, &arg, &routine_name) else {
+            let Some(param_idx) = self.match_param(arena, routine, &filled, cursor, arg) else {
                 if let Some(value) = arg.value.filter(|_| arg.kind != ArgKind::Conditional) {
                     self.expr(arena, value, Some(Expect::scalar(types::ANY)));
                 }
                 continue;
             };
-            let pos = groups.iter().position(|g| g.contains(&param_idx)).unwrap_or(0);
+            let pos = groups.iter().position(|&(start, end)| (start..end).contains(&param_idx)).unwrap_or(0);
             if let Some(previous) = filled[pos] {
                 let (a, b) = (&params[param_idx].display, &params[previous].display);
                 let message = if previous == param_idx { format!("argument `{a}` is given twice") } else { format!("`{a}` and `{b}` exclude each other; give only one") };
                 self.diag(Code::DuplicateArgument, arg.span, message);
             } else if pos < cursor {
-                let name = &params[param_idx].display;
-                self.diag(Code::ArgumentOrder, arg.span, format!("argument `{name}` is out of order: arguments must follow the order of `{routine_name}`'s parameters"));
+                let (name, routine_name) = (&params[param_idx].display, &self.routine(routine).display);
+                let message = format!("argument `{name}` is out of order: arguments must follow the order of `{routine_name}`'s parameters");
+                self.diag(Code::ArgumentOrder, arg.span, message);
             }
             filled[pos] = Some(param_idx);
             cursor = cursor.max(pos + 1);
-            self.check_arg_value(arena, &params[param_idx], &arg, builtin);
+            self.check_arg_value(arena, &params[param_idx], arg, builtin);
         }
-        if has_placeholder {
-            return;
-        }
-        for (pos, group) in groups.iter().enumerate() {
-            let first = &params[group[0]];
-            if filled[pos].is_none() && !first.optional {
-                let names: Vec<&str> = group.iter().map(|&p| params[p].display.as_str()).collect();
-                let names = names.join("` or `");
-                self.diag(Code::MissingArgument, call_span, format!("`{routine_name}` needs the argument `{names}`"));
+        if !has_placeholder {
+            for (pos, &(start, end)) in groups.iter().enumerate() {
+                if filled[pos].is_none() && !params[start].optional {
+                    let names: Vec<&str> = params[start..end].iter().map(|p| p.display.as_str()).collect();
+                    let message = format!("`{}` needs the argument `{}`", self.routine(routine).display, names.join("` or `"));
+                    self.diag(Code::MissingArgument, call_span, message);
+                }
             }
         }
+        self.filled_scratch = filled;
     }
 
     /// The parameter an argument stands for, reporting arguments that fit none.
-    #[allow(clippy::too_many_arguments)]
-    fn match_param(&mut self, arena: &Arena, params: &[ParamInfo], groups: &[Vec<usize>], filled: &[Option<usize>], cursor: usize, arg: &Arg, routine_name: &str) -> Option<usize> {
+    fn match_param(&mut self, arena: &Arena, routine: u32, filled: &[Option<usize>], cursor: usize, arg: &Arg) -> Option<usize> {
+        let info = self.routine(routine);
+        let (params, groups) = (info.params.clone(), info.groups.clone());
         if let Some(name) = arg.name {
             let text = self.text(name.span);
             let Some(idx) = params.iter().position(|p| p.name == name.sym) else {
                 let shown = if arg.kind == ArgKind::Required { text.to_string() } else { format!("\\{text}") };
-                self.diag(Code::UnknownArgument, name.span, format!("`{routine_name}` has no parameter `{shown}`"));
+                let message = format!("`{}` has no parameter `{shown}`", info.display);
+                self.diag(Code::UnknownArgument, name.span, message);
                 return None;
             };
             let optional_syntax = arg.kind != ArgKind::Required;
             if params[idx].optional != optional_syntax {
+                let routine_name = &self.routine(routine).display;
                 let message = if params[idx].optional {
                     format!("parameter `{text}` of `{routine_name}` is optional: write it as `\\{text}`")
                 } else {
@@ -142,24 +144,24 @@ impl Checker<'_> {
             }
             return Some(idx);
         }
-        // A positional argument fills the next required group not yet filled.
-        let unfilled_required = |g: &usize| filled[*g].is_none() && !params[groups[*g][0]].optional;
+        let unfilled_required = |g: &usize| filled[*g].is_none() && !params[groups[*g].0].optional;
         // Past the cursor first; an earlier gap means the arguments are out of order
         // (the caller reports that).
         let pos = (cursor..groups.len()).find(unfilled_required).or_else(|| (0..cursor).find(unfilled_required));
         let Some(pos) = pos else {
-            self.diag(Code::TooManyArguments, arg.span, format!("too many arguments for `{routine_name}`"));
+            let message = format!("too many arguments for `{}`", info.display);
+            self.diag(Code::TooManyArguments, arg.span, message);
             return None;
         };
-        let group = &groups[pos];
-        if group.len() == 1 {
-            return Some(group[0]);
+        let (start, end) = groups[pos];
+        if end - start == 1 {
+            return Some(start);
         }
         // Required alternatives (built-ins only): pick the one whose type fits.
         let value = arg.value?;
         let got = self.expr(arena, value, Some(Expect::scalar(types::ANY)));
-        let fits = group.iter().copied().find(|&p| self.types.same(params[p].ty, got.ty) && params[p].rank == got.rank);
-        Some(fits.unwrap_or(group[0]))
+        let fits = (start..end).find(|&p| self.types.same(params[p].ty, got.ty) && params[p].rank == got.rank);
+        Some(fits.unwrap_or(start))
     }
 
     /// Checks one argument's value; `builtin` calls may pass non-value data to IN
@@ -181,8 +183,9 @@ impl Checker<'_> {
             _ => {}
         }
         let Some(value) = arg.value else { return };
-        let dims = vec![0u32; if param.rank == ANY_RANK { 0 } else { param.rank as usize }];
-        let expect = Expect { ty: param.ty, dims: &dims };
+        const UNKNOWN_DIMS: [u32; 3] = [0; 3];
+        let rank = if param.rank == ANY_RANK { 0 } else { (param.rank as usize).min(3) };
+        let expect = Expect { ty: param.ty, dims: &UNKNOWN_DIMS[..rank] };
         if param.mode != ParamMode::In {
             self.check_reference(arena, value, param);
         }
@@ -202,7 +205,7 @@ impl Checker<'_> {
             self.diag(Code::ArrayArgumentMismatch, span, format!("argument `{name}` must be {want}, found {found}"));
             return;
         }
-        if param.mode == ParamMode::In && self.types.class(got.ty) == crate::types::ValueClass::NonValue && !self.types.is_lenient(param.ty) && !builtin {
+        if !builtin && param.mode == ParamMode::In && !self.types.is_lenient(param.ty) && self.types.class(got.ty) == crate::types::ValueClass::NonValue {
             let found = self.type_name(got.ty);
             self.diag(Code::NonValueUse, span, format!("argument `{name}` is an IN parameter, which needs a value; `{found}` is a non-value type (declare the parameter VAR)"));
             return;
@@ -281,22 +284,5 @@ impl Checker<'_> {
             }
         }
     }
-}
-
-/// Parameter indices grouped by mutually exclusive group, in declaration order.
-fn group_positions(params: &[ParamInfo]) -> Vec<Vec<usize>> {
-    let mut groups: Vec<Vec<usize>> = Vec::new();
-    let mut last_group = None;
-    for (idx, param) in params.iter().enumerate() {
-        if last_group == Some(param.group) {
-            if let Some(group) = groups.last_mut() {
-                group.push(idx);
-            }
-        } else {
-            groups.push(vec![idx]);
-            last_group = Some(param.group);
-        }
-    }
-    groups
 }
 

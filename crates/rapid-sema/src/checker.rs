@@ -47,6 +47,8 @@ pub(crate) struct Checker<'a> {
     pub(crate) file: usize,
     pub(crate) module: usize,
     pub(crate) ctx: Option<RoutineCtx>,
+    /// Reused by each call check: which parameter group each argument filled.
+    pub(crate) filled_scratch: Vec<Option<usize>>,
     /// The file of each module.
     pub(crate) module_files: Vec<usize>,
     diags_in_file: usize,
@@ -68,6 +70,7 @@ impl<'a> Checker<'a> {
             module: 0,
             ctx: None,
             module_files: Vec::new(),
+            filled_scratch: Vec::new(),
             diags_in_file: 0,
         }
     }

@@ -342,11 +342,13 @@ impl Checker<'_> {
             }
             params.push(self.param_info(param, builtin, text));
         }
+        let groups = crate::symbols::group_ranges(&params);
         let info = RoutineInfo {
             display: routine.name.span.text(text).to_string(),
             kind: routine.kind,
             ret,
-            params,
+            params: params.into(),
+            groups,
             chapter,
             has_placeholders,
         };

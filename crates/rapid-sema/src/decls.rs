@@ -7,7 +7,7 @@ use rustc_hash::FxHashMap;
 
 use crate::checker::Checker;
 use crate::codes::Code;
-use crate::expr::Expect;
+use crate::expr::{Expect, What};
 use crate::types::{self, ValueClass};
 
 /// Array dimensions larger than this are refused (E0312) rather than believed.
@@ -61,7 +61,7 @@ impl Checker<'_> {
         }
         let rank = decl.dims.len().min(3);
         let expect = Expect { ty, dims: &dims[..rank] };
-        self.expect_value(arena, init, expect, "the initial value");
+        self.expect_value(arena, init, expect, What::Text("the initial value"));
     }
 
     fn check_missing_init(&mut self, decl: &DataDecl) {
@@ -86,7 +86,7 @@ impl Checker<'_> {
             if matches!(expr.kind, ExprKind::Placeholder(_) | ExprKind::Error) {
                 continue;
             }
-            self.expect_value(arena, dim, Expect::scalar(self.core.num), "an array dimension");
+            self.expect_value(arena, dim, Expect::scalar(self.core.num), What::Text("an array dimension"));
             match self.const_num(arena, dim) {
                 Some(v) if v >= 1.0 && v.fract() == 0.0 && v <= MAX_DIM_SIZE => *slot = v as u32,
                 Some(v) => {

@@ -43,6 +43,15 @@ impl<'d> Expect<'d> {
     }
 }
 
+/// What a checked value is, for the message when its type is wrong (formatted only
+/// then, so the common case allocates nothing).
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum What<'a> {
+    Text(&'a str),
+    /// Component `idx` of record type `record`.
+    Component(TypeId, usize),
+}
+
 /// The largest magnitude a num (IEEE single) can hold.
 const NUM_MAX: f64 = f32::MAX as f64;
 
@@ -76,24 +85,29 @@ impl Checker<'_> {
     }
 
     /// Types `id` and requires a value assignable to `want` (E0301 otherwise).
-    pub(crate) fn expect_value(&mut self, arena: &Arena, id: ExprId, want: Expect<'_>, what: &str) -> Ty {
+    pub(crate) fn expect_value(&mut self, arena: &Arena, id: ExprId, want: Expect<'_>, what: What<'_>) -> Ty {
         let got = self.expr(arena, id, Some(want));
         self.require_compatible(want.ty, want.rank(), got, arena.expr(id).span, what);
         got
     }
 
-    pub(crate) fn require_compatible(&mut self, want: TypeId, want_rank: u8, got: Ty, span: Span, what: &str) {
+    pub(crate) fn require_compatible(&mut self, want: TypeId, want_rank: u8, got: Ty, span: Span, what: What<'_>) {
         if got.ty == types::ERROR || want == types::ERROR {
             return;
         }
         let rank_ok = want_rank == got.rank || (want_rank == ANY_RANK && got.rank > 0);
-        if !rank_ok {
-            let (w, g) = (self.describe(want, want_rank), self.describe(got.ty, got.rank));
-            self.diag(Code::TypeMismatch, span, format!("{what} must be {w}, found {g}"));
-        } else if !self.types.compatible(want, got.ty) {
-            let (w, g) = (self.describe(want, want_rank), self.describe(got.ty, got.rank));
-            self.diag(Code::TypeMismatch, span, format!("{what} must be {w}, found {g}"));
+        if rank_ok && self.types.compatible(want, got.ty) {
+            return;
         }
+        let (w, g) = (self.describe(want, want_rank), self.describe(got.ty, got.rank));
+        let what = match what {
+            What::Text(text) => text.to_string(),
+            What::Component(record, idx) => {
+                let field = self.types.record_fields(record).and_then(|f| f.get(idx)).map_or("?", |f| f.display.as_str());
+                format!("component `{field}`")
+            }
+        };
+        self.diag(Code::TypeMismatch, span, format!("{what} must be {w}, found {g}"));
     }
 
     /// `num`, `array of num`, `2-dimensional array of pos`.
@@ -108,9 +122,11 @@ impl Checker<'_> {
     }
 
     fn num_literal(&mut self, span: Span, expect: Option<Expect<'_>>) -> Ty {
-        let value = num_value(self.text(span)).unwrap_or(0.0);
         let wants_dnum = expect.is_some_and(|e| self.types.atomic(e.ty) == Some(Atomic::Dnum));
-        if value.abs() > NUM_MAX && !wants_dnum {
+        let text = self.text(span);
+        // Past ±3.4E38 needs an exponent or more than 38 digits; skip the conversion otherwise.
+        let may_exceed = text.len() > 38 || (!text.starts_with("0x") && !text.starts_with("0X") && text.contains(['e', 'E']));
+        if may_exceed && !wants_dnum && num_value(text).unwrap_or(0.0).abs() > NUM_MAX {
             let text = self.text(span);
             self.diag(Code::NumLiteralRange, span, format!("`{text}` is outside the range of num (about ±3.4E38); use a dnum"));
         }
@@ -141,7 +157,7 @@ impl Checker<'_> {
         let base_ty = self.expr(arena, base, None);
         let n_indices = indices.len as u8;
         for &index in arena.list(indices) {
-            self.expect_value(arena, index, Expect::scalar(self.core.num), "an array index");
+            self.expect_value(arena, index, Expect::scalar(self.core.num), What::Text("an array index"));
         }
         if base_ty.ty == types::ERROR {
             return Ty::ERROR;
@@ -293,9 +309,9 @@ impl Checker<'_> {
 
     /// An aggregate checked against the expected record or array shape.
     fn aggregate(&mut self, arena: &Arena, items: rapid_syntax::ast::ListRange, span: Span, expect: Expect<'_>) -> Ty {
-        let items = arena.list(items).to_vec();
+        let items = arena.list(items);
         if self.types.is_lenient(expect.ty) {
-            for &item in &items {
+            for &item in items {
                 self.expr(arena, item, None);
             }
             return Ty { ty: expect.ty, rank: expect.rank() };
@@ -305,26 +321,30 @@ impl Checker<'_> {
                 self.diag(Code::AggregateShape, span, format!("the array has {size} elements but the aggregate gives {}", items.len()));
             }
             let inner = Expect { ty: expect.ty, dims: inner_dims };
-            for &item in &items {
-                self.expect_value(arena, item, inner, "an array element");
+            for &item in items {
+                self.expect_value(arena, item, inner, What::Text("an array element"));
             }
             return Ty { ty: expect.ty, rank: expect.rank() };
         }
-        let Some(fields) = self.types.record_fields(expect.ty).map(|f| f.to_vec()) else {
+        let record = self.types.value_of(expect.ty);
+        let Some(n_fields) = self.types.record_fields(record).map(<[_]>::len) else {
             let ty = self.type_name(expect.ty);
             self.diag(Code::TypeMismatch, span, format!("an aggregate cannot be a `{ty}`: only records and arrays are written as aggregates"));
             return Ty::ERROR;
         };
-        if fields.len() != items.len() {
+        if n_fields != items.len() {
             let ty = self.type_name(expect.ty);
-            self.diag(Code::AggregateShape, span, format!("`{ty}` has {} components but the aggregate gives {}", fields.len(), items.len()));
+            self.diag(Code::AggregateShape, span, format!("`{ty}` has {n_fields} components but the aggregate gives {}", items.len()));
         }
-        for (field, &item) in fields.iter().zip(&items) {
-            let what = format!("component `{}`", field.display);
-            self.expect_value(arena, item, Expect::scalar(field.ty), &what);
-        }
-        for &item in items.iter().skip(fields.len()) {
-            self.expr(arena, item, None);
+        for (idx, &item) in items.iter().enumerate() {
+            match self.types.record_fields(record).and_then(|f| f.get(idx)).map(|f| f.ty) {
+                Some(field_ty) => {
+                    self.expect_value(arena, item, Expect::scalar(field_ty), What::Component(record, idx));
+                }
+                None => {
+                    self.expr(arena, item, None);
+                }
+            }
         }
         Ty::scalar(expect.ty)
     }

@@ -1,6 +1,8 @@
 //! Symbols and scopes (§1.1.5, §1.2.2): built-ins, task-global and module-local
 //! declarations, routine data, parameters and FOR loop variables.
 
+use std::rc::Rc;
+
 use rapid_syntax::ast::{ParamMode, RoutineKind};
 use rapid_syntax::{Span, Symbol};
 use rustc_hash::FxHashMap;
@@ -57,7 +59,9 @@ pub(crate) struct RoutineInfo {
     pub(crate) display: String,
     pub(crate) kind: RoutineKind,
     pub(crate) ret: Option<TypeId>,
-    pub(crate) params: Vec<ParamInfo>,
+    pub(crate) params: Rc<[ParamInfo]>,
+    /// Runs of mutually exclusive parameters, `(start, end)` indices into `params`.
+    pub(crate) groups: Rc<[(usize, usize)]>,
     /// The catalogue chapter of a built-in (`None` for user routines).
     pub(crate) chapter: Option<&'static str>,
     /// The parameter list holds placeholders, so calls cannot be checked.
@@ -115,4 +119,16 @@ impl Scopes {
         }
         self.builtins.get(&sym).copied()
     }
+}
+
+/// Runs of consecutive parameters that share a group (mutually exclusive ones).
+pub(crate) fn group_ranges(params: &[ParamInfo]) -> Rc<[(usize, usize)]> {
+    let mut groups: Vec<(usize, usize)> = Vec::new();
+    for (idx, param) in params.iter().enumerate() {
+        match groups.last_mut() {
+            Some(last) if params[last.0].group == param.group => last.1 = idx + 1,
+            _ => groups.push((idx, idx + 1)),
+        }
+    }
+    groups.into()
 }

@@ -177,12 +177,21 @@ impl<'t> Lexer<'t> {
     fn ident(&mut self) -> TokenKind {
         let start = self.pos;
         let mut n_chars = 0;
-        for c in self.text[start..].chars() {
-            if !is_ident_continue(c) {
+        // ASCII fast path; Latin-1 letters (two bytes in UTF-8) take the slow path.
+        while let Some(&b) = self.bytes.get(self.pos) {
+            if b.is_ascii_alphanumeric() || b == b'_' {
+                self.pos += 1;
+                n_chars += 1;
+            } else if b < 0x80 {
                 break;
+            } else {
+                let c = self.current_char();
+                if !is_ident_continue(c) {
+                    break;
+                }
+                self.pos += c.len_utf8();
+                n_chars += 1;
             }
-            self.pos += c.len_utf8();
-            n_chars += 1;
         }
         let word = &self.text[start..self.pos];
         if let Some(kw) = keyword(word) {
@@ -244,7 +253,7 @@ impl<'t> Lexer<'t> {
         if !well_formed {
             let text = span.text(self.text).to_owned();
             self.error(SyntaxErrorKind::MalformedNumber, span, format!("malformed number `{text}`"));
-        } else if crate::literal::num_value(span.text(self.text)).is_none_or(|v| !v.is_finite()) {
+        } else if could_overflow(span.text(self.text)) && crate::literal::num_value(span.text(self.text)).is_none_or(|v| !v.is_finite()) {
             let text = span.text(self.text).to_owned();
             self.error(
                 SyntaxErrorKind::NumberOutOfRange,
@@ -354,6 +363,12 @@ fn find_module_line(text: &str, from: usize) -> Option<usize> {
         offset += line.len();
     }
     None
+}
+
+/// Only literals with an exponent or hundreds of digits can leave the f64 range, so
+/// the common literal is never converted here.
+fn could_overflow(text: &str) -> bool {
+    text.len() > 300 || (!text.starts_with("0x") && !text.starts_with("0X") && text.bytes().any(|b| b == b'e' || b == b'E'))
 }
 
 fn memchr_newline(bytes: &[u8]) -> Option<usize> {

@@ -98,6 +98,10 @@ pub(crate) struct Parser<'t, 'i, 's> {
     pub(crate) interner: &'i mut Interner,
     errors: Vec<SyntaxError>,
     pub(crate) arena: Arena,
+    /// Stacks for building lists without a fresh Vec per list (nested lists push
+    /// above their parent's mark and pop back before it continues).
+    pub(crate) scratch_exprs: Vec<crate::ast::ExprId>,
+    pub(crate) scratch_args: Vec<crate::ast::Arg>,
     pub(crate) expr_depth: u32,
     pub(crate) stmt_depth: u32,
     pub(crate) body_mode: BodyMode<'s>,
@@ -115,6 +119,8 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
             interner,
             errors: Vec::new(),
             arena: Arena::default(),
+            scratch_exprs: Vec::new(),
+            scratch_args: Vec::new(),
             expr_depth: 0,
             stmt_depth: 0,
             body_mode,

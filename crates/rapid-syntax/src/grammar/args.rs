@@ -28,27 +28,30 @@ impl Parser<'_, '_, '_> {
     /// Arguments until `close` (not consumed).
     fn arg_list(&mut self, close: T) -> ArgList {
         let stop = TokenSet::new(&[close]).union(super::STMT_LIST_END);
-        let mut args: Vec<Arg> = Vec::new();
+        let mark = self.scratch_args.len();
         while !self.at_set(stop) {
-            let after_comma = !args.is_empty() && self.eat(T::Comma);
+            let first = self.scratch_args.len() == mark;
+            let after_comma = !first && self.eat(T::Comma);
             if self.at_set(stop) {
                 self.error_expected("an argument after `,`");
                 break;
             }
             let arg = self.arg(after_comma);
-            if !args.is_empty() && !after_comma && arg.kind == ArgKind::Required {
+            if !first && !after_comma && arg.kind == ArgKind::Required {
                 self.error(SyntaxErrorKind::UnexpectedToken, arg.span, "expected `,` before this argument".into());
             }
             let progressed = arg.span.end > arg.span.start;
-            args.push(arg);
+            self.scratch_args.push(arg);
             if !progressed {
                 self.bump();
                 self.recover_until(stop.union(TokenSet::new(&[T::Comma, T::Backslash])));
             }
         }
-        // Nested calls inside arguments allocated their own argument runs first, so
-        // this call's arguments are appended as one contiguous run now.
-        self.arena.alloc_args(&args)
+        // Nested calls inside arguments stored their own argument runs first, so this
+        // call's arguments are appended as one contiguous run now.
+        let args = self.arena.alloc_args(&self.scratch_args[mark..]);
+        self.scratch_args.truncate(mark);
+        args
     }
 
     fn arg(&mut self, after_comma: bool) -> Arg {

@@ -228,9 +228,10 @@ impl Parser<'_, '_, '_> {
 
     /// `e {, e} close`, after the opening bracket.
     fn expr_list(&mut self, close: T) -> crate::ast::ListRange {
-        let mut items: Vec<ExprId> = Vec::new();
+        let mark = self.scratch_exprs.len();
         loop {
-            items.push(self.expr());
+            let item = self.expr();
+            self.scratch_exprs.push(item);
             if !self.eat(T::Comma) {
                 break;
             }
@@ -240,7 +241,9 @@ impl Parser<'_, '_, '_> {
             self.recover_until(crate::token::TokenSet::new(&[close, T::Semi]).union(super::STMT_LIST_END));
             self.eat(close);
         }
-        self.arena.alloc_list(&items)
+        let items = self.arena.alloc_list(&self.scratch_exprs[mark..]);
+        self.scratch_exprs.truncate(mark);
+        items
     }
 }
 
