@@ -124,8 +124,8 @@ impl Checker<'_> {
     fn num_literal(&mut self, span: Span, expect: Option<Expect<'_>>) -> Ty {
         let wants_dnum = expect.is_some_and(|e| self.types.atomic(e.ty) == Some(Atomic::Dnum));
         let text = self.text(span);
-        // Past ±3.4E38 needs an exponent or more than 38 digits; skip the conversion otherwise.
-        let may_exceed = text.len() > 38 || (!text.starts_with("0x") && !text.starts_with("0X") && text.contains(['e', 'E']));
+        // Only literals near ±3.4E38 are converted for the range check.
+        let may_exceed = rapid_syntax::literal::decimal_magnitude_bound(text) >= 38;
         if may_exceed && !wants_dnum && num_value(text).unwrap_or(0.0).abs() > NUM_MAX {
             let text = self.text(span);
             self.diag(Code::NumLiteralRange, span, format!("`{text}` is outside the range of num (about ±3.4E38); use a dnum"));

@@ -96,6 +96,79 @@ impl<'t> Lexer<'t> {
         }
     }
 
+    /// Moves to the next token of a kind in `stop` without building the tokens in
+    /// between (the outline's scan over routine bodies), and returns it. Token
+    /// boundaries are exactly those of [`Lexer::next_token`]: strings, comments,
+    /// headers and numbers with glued letters are stepped over whole, so a keyword
+    /// inside them is never seen. Lexical errors found on the way are kept.
+    pub fn skip_to(&mut self, stop: crate::token::TokenSet) -> Token {
+        loop {
+            self.skip_whitespace();
+            let start = self.pos;
+            let Some(&byte) = self.bytes.get(start) else {
+                return self.token(TokenKind::Eof, start);
+            };
+            match byte {
+                b'a'..=b'z' | b'A'..=b'Z' => {
+                    if let Some(kind) = self.word_in(stop) {
+                        return self.token(kind, start);
+                    }
+                }
+                b'!' => self.skip_line(),
+                b'"' => {
+                    self.string();
+                }
+                b'0'..=b'9' => self.skip_number(),
+                b'.' if self.peek_byte(1).is_some_and(|b| b.is_ascii_digit()) => self.skip_number(),
+                b'%' if self.text[start..].starts_with("%%%") => {
+                    self.header();
+                }
+                0x80.. => {
+                    let c = self.current_char();
+                    if is_letter(c) {
+                        if let Some(kind) = self.word_in(stop) {
+                            return self.token(kind, start);
+                        }
+                    } else {
+                        self.pos += c.len_utf8();
+                    }
+                }
+                _ => self.pos += 1,
+            }
+        }
+    }
+
+    /// Steps over a number exactly as [`Lexer::number`] consumes it, without checks.
+    fn skip_number(&mut self) {
+        let radix = self.number_radix();
+        if radix != 10 {
+            self.pos += 2;
+            self.eat_digits(radix);
+        } else {
+            self.eat_decimal_digits();
+            if self.peek_byte(0) == Some(b'.') {
+                self.pos += 1;
+                self.eat_decimal_digits();
+            }
+            self.eat_exponent();
+        }
+        self.eat_glued();
+    }
+
+    /// Lexes an identifier or keyword; returns its kind when it is in `stop`.
+    fn word_in(&mut self, stop: crate::token::TokenSet) -> Option<TokenKind> {
+        let start = self.pos;
+        let kind = self.ident();
+        if stop.contains(kind) {
+            return Some(kind);
+        }
+        // Identifier errors (too long) are reported again when the body is parsed.
+        if kind == TokenKind::Ident && self.errors.last().is_some_and(|e| e.span.start as usize == start) {
+            self.errors.pop();
+        }
+        None
+    }
+
     fn token(&self, kind: TokenKind, start: usize) -> Token {
         Token { kind, span: Span::new(start, self.pos) }
     }
@@ -215,40 +288,67 @@ impl<'t> Lexer<'t> {
         self.pos - start
     }
 
-    fn number(&mut self) -> TokenKind {
+    fn eat_decimal_digits(&mut self) -> usize {
         let start = self.pos;
-        let radix = match (self.peek_byte(0), self.peek_byte(1).map(|b| b.to_ascii_lowercase())) {
+        while self.bytes.get(self.pos).is_some_and(u8::is_ascii_digit) {
+            self.pos += 1;
+        }
+        self.pos - start
+    }
+
+    /// `e[+-]digits`; returns whether an exponent was well formed (or absent).
+    fn eat_exponent(&mut self) -> bool {
+        if !matches!(self.peek_byte(0), Some(b'e' | b'E')) {
+            return true;
+        }
+        self.pos += 1;
+        if matches!(self.peek_byte(0), Some(b'+' | b'-')) {
+            self.pos += 1;
+        }
+        self.eat_decimal_digits() > 0
+    }
+
+    /// Letters or digits glued to a number; returns whether there were none.
+    fn eat_glued(&mut self) -> bool {
+        let start = self.pos;
+        loop {
+            match self.bytes.get(self.pos) {
+                Some(b) if b.is_ascii_alphanumeric() || *b == b'_' => self.pos += 1,
+                Some(b) if *b >= 0x80 && is_ident_continue(self.current_char()) => self.pos += self.current_char().len_utf8(),
+                _ => break,
+            }
+        }
+        self.pos == start
+    }
+
+    fn number_radix(&self) -> u32 {
+        match (self.peek_byte(0), self.peek_byte(1).map(|b| b.to_ascii_lowercase())) {
             (Some(b'0'), Some(b'x')) => 16,
             (Some(b'0'), Some(b'o')) => 8,
             (Some(b'0'), Some(b'b')) => 2,
             _ => 10,
-        };
+        }
+    }
+
+    fn number(&mut self) -> TokenKind {
+        let start = self.pos;
+        let radix = self.number_radix();
         let mut well_formed = true;
         if radix != 10 {
             self.pos += 2;
             well_formed = self.eat_digits(radix) > 0;
         } else {
-            let int_digits = self.eat_digits(10);
+            let int_digits = self.eat_decimal_digits();
             let mut frac_digits = 0;
             if self.peek_byte(0) == Some(b'.') {
                 self.pos += 1;
-                frac_digits = self.eat_digits(10);
+                frac_digits = self.eat_decimal_digits();
             }
             well_formed &= int_digits + frac_digits > 0;
-            if matches!(self.peek_byte(0), Some(b'e' | b'E')) {
-                self.pos += 1;
-                if matches!(self.peek_byte(0), Some(b'+' | b'-')) {
-                    self.pos += 1;
-                }
-                well_formed &= self.eat_digits(10) > 0;
-            }
+            well_formed &= self.eat_exponent();
         }
         // Letters or digits glued to a number (`1.5E`, `0x1G`, `12abc`) make it malformed.
-        let glued_start = self.pos;
-        while self.text[self.pos..].chars().next().is_some_and(is_ident_continue) {
-            self.pos += self.current_char().len_utf8();
-        }
-        well_formed &= self.pos == glued_start;
+        well_formed &= self.eat_glued();
         let span = Span::new(start, self.pos);
         if !well_formed {
             let text = span.text(self.text).to_owned();
@@ -365,10 +465,9 @@ fn find_module_line(text: &str, from: usize) -> Option<usize> {
     None
 }
 
-/// Only literals with an exponent or hundreds of digits can leave the f64 range, so
-/// the common literal is never converted here.
+/// Only literals near the f64 limit (about 1E308) are converted to be range checked.
 fn could_overflow(text: &str) -> bool {
-    text.len() > 300 || (!text.starts_with("0x") && !text.starts_with("0X") && text.bytes().any(|b| b == b'e' || b == b'E'))
+    crate::literal::decimal_magnitude_bound(text) > 300
 }
 
 fn memchr_newline(bytes: &[u8]) -> Option<usize> {

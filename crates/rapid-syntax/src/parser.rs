@@ -217,11 +217,6 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
         false
     }
 
-    /// End offset of the last consumed token.
-    pub(crate) fn prev_end(&self) -> u32 {
-        self.prev_end
-    }
-
     /// A span from `start` to the end of the last consumed token.
     pub(crate) fn span_from(&self, start: u32) -> Span {
         Span { start, end: self.prev_end.max(start) }
@@ -346,8 +341,13 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
     /// the body are left for `parse_body` to report.
     pub(crate) fn skip_body(&mut self, stop: TokenSet) {
         let start = self.current().span.start;
-        while !self.at_set(stop) {
+        while !self.at_set(stop) && !self.ahead.is_empty() {
             self.bump();
+        }
+        // Straight through the lexer's scanner: no token is built on the way.
+        if self.ahead.is_empty() {
+            let token = self.lexer.skip_to(stop);
+            self.ahead.push_back(token);
         }
         let end = self.current().span.start;
         self.lexer.errors.retain(|e| e.span.start < start || e.span.start >= end);

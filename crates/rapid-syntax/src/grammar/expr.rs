@@ -7,7 +7,8 @@
 //! simple   ::= [+ | -] term { (+ | -) term }
 //! term     ::= primary { (* | / | DIV | MOD) primary }
 //! ```
-//! Two tolerances the controller also has: NOT may open any logical term
+//! The levels are parsed by one binding-power loop (`expr_bp`) over the table in
+//! `infix_op`. Two tolerances the controller also has: NOT may open any logical term
 //! (`a AND NOT b`), and a sign may open any primary (`a * -1`). Neither changes the
 //! meaning of an expression the strict grammar accepts.
 
@@ -17,128 +18,85 @@ use crate::parser::{Parser, MAX_EXPR_DEPTH};
 use crate::span::Span;
 use crate::token::TokenKind as T;
 
+/// Binding powers, lowest first: the levels of §1.3.5.
+const OR_BP: u8 = 1;
+const AND_BP: u8 = 2;
+const REL_BP: u8 = 3;
+const ADD_BP: u8 = 4;
+const MUL_BP: u8 = 5;
+
+/// The binary operator a token spells and its binding power.
+#[rustfmt::skip]
+fn infix_op(kind: T) -> Option<(BinaryOp, u8)> {
+    Some(match kind {
+        T::Or    => (BinaryOp::Or, OR_BP),     T::Xor => (BinaryOp::Xor, OR_BP),
+        T::And   => (BinaryOp::And, AND_BP),
+        T::Lt    => (BinaryOp::Lt, REL_BP),    T::Le  => (BinaryOp::Le, REL_BP),
+        T::Eq    => (BinaryOp::Eq, REL_BP),    T::Gt  => (BinaryOp::Gt, REL_BP),
+        T::Ge    => (BinaryOp::Ge, REL_BP),    T::Ne  => (BinaryOp::Ne, REL_BP),
+        T::Plus  => (BinaryOp::Add, ADD_BP),   T::Minus => (BinaryOp::Sub, ADD_BP),
+        T::Star  => (BinaryOp::Mul, MUL_BP),   T::Slash => (BinaryOp::Div, MUL_BP),
+        T::Div   => (BinaryOp::IntDiv, MUL_BP), T::Mod => (BinaryOp::Mod, MUL_BP),
+        _ => return None,
+    })
+}
+
 impl Parser<'_, '_, '_> {
     /// A full expression.
     pub(crate) fn expr(&mut self) -> ExprId {
+        self.expr_bp(OR_BP)
+    }
+
+    /// Operators binding at least as tightly as `min_bp`, left to right. Relations
+    /// do not chain: `a < b < c` is reported.
+    fn expr_bp(&mut self, min_bp: u8) -> ExprId {
         let start = self.current().span.start;
         if self.expr_depth >= MAX_EXPR_DEPTH {
-            self.error_too_deep("expressions", MAX_EXPR_DEPTH);
-            self.skip_nested();
-            return self.arena.alloc(ExprKind::Error, self.span_from(start));
+            return self.too_deep(start);
         }
         self.expr_depth += 1;
-        let mut lhs = self.not_or_lterm();
-        loop {
-            let op = match self.nth(0) {
-                T::Or => BinaryOp::Or,
-                T::Xor => BinaryOp::Xor,
-                _ => break,
-            };
-            self.bump();
-            let rhs = self.not_or_lterm();
+        let mut lhs = self.prefix();
+        let mut lhs_is_relation = false;
+        while let Some((op, bp)) = infix_op(self.nth(0)) {
+            if bp < min_bp {
+                break;
+            }
+            let op_token = self.bump();
+            if bp == REL_BP && lhs_is_relation {
+                self.error(SyntaxErrorKind::UnexpectedToken, op_token.span, "comparisons do not chain: write `a < b AND b < c`".into());
+            }
+            let rhs = self.expr_bp(bp + 1);
             lhs = self.binary(op, lhs, rhs);
+            lhs_is_relation = bp == REL_BP;
         }
         self.expr_depth -= 1;
         lhs
     }
 
-    fn not_or_lterm(&mut self) -> ExprId {
-        if !self.at(T::Not) {
-            return self.lterm();
-        }
-        let start = self.bump().span.start;
-        let operand = self.lterm();
-        self.arena.alloc(ExprKind::Unary { op: UnaryOp::Not, operand }, self.span_from(start))
-    }
-
-    fn lterm(&mut self) -> ExprId {
-        let mut lhs = self.relation();
-        while self.eat(T::And) {
-            let rhs = if self.at(T::Not) { self.not_or_lterm() } else { self.relation() };
-            lhs = self.binary(BinaryOp::And, lhs, rhs);
-        }
-        lhs
-    }
-
-    fn relation(&mut self) -> ExprId {
-        let lhs = self.simple();
-        let Some(op) = relop(self.nth(0)) else { return lhs };
-        self.bump();
-        let rhs = self.simple();
-        let mut res = self.binary(op, lhs, rhs);
-        if let Some(op) = relop(self.nth(0)) {
-            let span = self.bump().span;
-            self.error(SyntaxErrorKind::UnexpectedToken, span, "comparisons do not chain: write `a < b AND b < c`".into());
-            let rhs = self.simple();
-            res = self.binary(op, res, rhs);
-        }
-        res
-    }
-
-    fn simple(&mut self) -> ExprId {
-        let mut lhs = match self.nth(0) {
-            T::Minus | T::Plus => self.signed_term(),
-            _ => self.term(),
-        };
-        loop {
-            let op = match self.nth(0) {
-                T::Plus => BinaryOp::Add,
-                T::Minus => BinaryOp::Sub,
-                _ => break,
-            };
-            self.bump();
-            let rhs = self.term();
-            lhs = self.binary(op, lhs, rhs);
-        }
-        lhs
-    }
-
-    fn term(&mut self) -> ExprId {
-        let mut lhs = self.signed();
-        loop {
-            let op = match self.nth(0) {
-                T::Star => BinaryOp::Mul,
-                T::Slash => BinaryOp::Div,
-                T::Div => BinaryOp::IntDiv,
-                T::Mod => BinaryOp::Mod,
-                _ => break,
-            };
-            self.bump();
-            let rhs = self.signed();
-            lhs = self.binary(op, lhs, rhs);
-        }
-        lhs
-    }
-
-    /// `[+|-] term` at the start of a simple expression: the sign covers the whole
-    /// term (`-a*b` is `-(a*b)`).
-    fn signed_term(&mut self) -> ExprId {
-        let op = if self.bump().kind == T::Minus { UnaryOp::Neg } else { UnaryOp::Plus };
-        let start = self.prev_end() - 1;
-        let operand = self.term();
-        self.arena.alloc(ExprKind::Unary { op, operand }, self.span_from(start))
-    }
-
-    /// A primary, optionally signed (the tolerance `a * -1`).
-    fn signed(&mut self) -> ExprId {
-        let op = match self.nth(0) {
-            T::Minus => UnaryOp::Neg,
-            T::Plus => UnaryOp::Plus,
+    /// `NOT` takes a logical term (`NOT a AND b` is `NOT (a AND b)`, per the EBNF);
+    /// a sign takes a term (`-a*b` is `-(a*b)`). NOT may also open a later logical
+    /// term (`a AND NOT b`) and a sign any primary (`a * -1`), as the controller
+    /// accepts; neither changes the meaning of what the strict grammar accepts.
+    fn prefix(&mut self) -> ExprId {
+        let (op, operand_bp) = match self.nth(0) {
+            T::Not => (UnaryOp::Not, AND_BP),
+            T::Minus => (UnaryOp::Neg, MUL_BP),
+            T::Plus => (UnaryOp::Plus, MUL_BP),
             _ => return self.primary(),
         };
         let start = self.bump().span.start;
-        if self.expr_depth >= MAX_EXPR_DEPTH {
-            self.error_too_deep("expressions", MAX_EXPR_DEPTH);
-            while matches!(self.nth(0), T::Minus | T::Plus) {
-                self.bump();
-            }
-            self.skip_nested();
-            return self.arena.alloc(ExprKind::Error, self.span_from(start));
-        }
-        self.expr_depth += 1;
-        let operand = self.signed();
-        self.expr_depth -= 1;
+        let operand = self.expr_bp(operand_bp);
         self.arena.alloc(ExprKind::Unary { op, operand }, self.span_from(start))
+    }
+
+    /// Reports nesting past the limit once and skips the construct without recursing.
+    fn too_deep(&mut self, start: u32) -> ExprId {
+        self.error_too_deep("expressions", MAX_EXPR_DEPTH);
+        while matches!(self.nth(0), T::Minus | T::Plus | T::Not) {
+            self.bump();
+        }
+        self.skip_nested();
+        self.arena.alloc(ExprKind::Error, self.span_from(start))
     }
 
     fn binary(&mut self, op: BinaryOp, lhs: ExprId, rhs: ExprId) -> ExprId {
@@ -214,12 +172,11 @@ impl Parser<'_, '_, '_> {
 
     /// `[e1, e2, ...]`.
     fn aggregate(&mut self) -> ExprId {
-        let start = self.bump().span.start;
+        let start = self.current().span.start;
         if self.expr_depth >= MAX_EXPR_DEPTH {
-            self.error_too_deep("expressions", MAX_EXPR_DEPTH);
-            self.skip_nested();
-            return self.arena.alloc(ExprKind::Error, self.span_from(start));
+            return self.too_deep(start);
         }
+        self.bump();
         self.expr_depth += 1;
         let items = self.expr_list(T::RBracket);
         self.expr_depth -= 1;
@@ -247,14 +204,3 @@ impl Parser<'_, '_, '_> {
     }
 }
 
-fn relop(kind: T) -> Option<BinaryOp> {
-    Some(match kind {
-        T::Lt => BinaryOp::Lt,
-        T::Le => BinaryOp::Le,
-        T::Eq => BinaryOp::Eq,
-        T::Gt => BinaryOp::Gt,
-        T::Ge => BinaryOp::Ge,
-        T::Ne => BinaryOp::Ne,
-        _ => return None,
-    })
-}
