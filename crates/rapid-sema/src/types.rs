@@ -154,6 +154,9 @@ impl Types {
     /// Whether a value of type `got` may stand where `want` is expected: alias
     /// equivalence, signals read as their base, num and dnum convert both ways.
     pub(crate) fn compatible(&self, want: TypeId, got: TypeId) -> bool {
+        if want == got {
+            return true;
+        }
         if self.is_lenient(want) || self.is_lenient(got) {
             return true;
         }
@@ -163,6 +166,6 @@ impl Types {
 
     /// Whether `got` is exactly the type `want` up to aliases (for reference parameters).
     pub(crate) fn same(&self, want: TypeId, got: TypeId) -> bool {
-        self.is_lenient(want) || self.is_lenient(got) || self.canonical(want) == self.canonical(got)
+        want == got || self.is_lenient(want) || self.is_lenient(got) || self.canonical(want) == self.canonical(got)
     }
 }

@@ -25,7 +25,12 @@ impl Interner {
     /// Interns `name` case-insensitively.
     pub fn intern(&mut self, name: &str) -> Symbol {
         self.scratch.clear();
-        self.scratch.extend(name.chars().map(fold_char));
+        if name.is_ascii() {
+            self.scratch.push_str(name);
+            self.scratch.make_ascii_lowercase();
+        } else {
+            self.scratch.extend(name.chars().map(fold_char));
+        }
         if let Some(&sym) = self.map.get(self.scratch.as_str()) {
             return sym;
         }

@@ -334,9 +334,13 @@ impl<'t> Lexer<'t> {
         let start = self.pos;
         let radix = self.number_radix();
         let mut well_formed = true;
+        // Only a number with an exponent or hundreds of digits can leave the f64 range.
+        let may_overflow;
         if radix != 10 {
             self.pos += 2;
-            well_formed = self.eat_digits(radix) > 0;
+            let n_digits = self.eat_digits(radix);
+            well_formed = n_digits > 0;
+            may_overflow = n_digits > 200;
         } else {
             let int_digits = self.eat_decimal_digits();
             let mut frac_digits = 0;
@@ -345,6 +349,7 @@ impl<'t> Lexer<'t> {
                 frac_digits = self.eat_decimal_digits();
             }
             well_formed &= int_digits + frac_digits > 0;
+            may_overflow = int_digits > 300 || matches!(self.peek_byte(0), Some(b'e' | b'E'));
             well_formed &= self.eat_exponent();
         }
         // Letters or digits glued to a number (`1.5E`, `0x1G`, `12abc`) make it malformed.
@@ -353,7 +358,7 @@ impl<'t> Lexer<'t> {
         if !well_formed {
             let text = span.text(self.text).to_owned();
             self.error(SyntaxErrorKind::MalformedNumber, span, format!("malformed number `{text}`"));
-        } else if could_overflow(span.text(self.text)) && crate::literal::num_value(span.text(self.text)).is_none_or(|v| !v.is_finite()) {
+        } else if may_overflow && crate::literal::num_value(span.text(self.text)).is_none_or(|v| !v.is_finite()) {
             let text = span.text(self.text).to_owned();
             self.error(
                 SyntaxErrorKind::NumberOutOfRange,
@@ -463,11 +468,6 @@ fn find_module_line(text: &str, from: usize) -> Option<usize> {
         offset += line.len();
     }
     None
-}
-
-/// Only literals near the f64 limit (about 1E308) are converted to be range checked.
-fn could_overflow(text: &str) -> bool {
-    crate::literal::decimal_magnitude_bound(text) > 300
 }
 
 fn memchr_newline(bytes: &[u8]) -> Option<usize> {

@@ -5,8 +5,6 @@
 //! the error is recorded, and the parser resynchronises at the next token of a
 //! recovery set, so one run reports every error in a file.
 
-use std::collections::VecDeque;
-
 use crate::ast::{Arena, Body, BodyItem, Name, Section, SourceFile, Stmt};
 use crate::error::{SyntaxError, SyntaxErrorKind, MAX_ERRORS_PER_FILE};
 use crate::intern::Interner;
@@ -93,7 +91,7 @@ pub fn cap_errors(mut errors: Vec<SyntaxError>) -> Vec<SyntaxError> {
 pub(crate) struct Parser<'t, 'i, 's> {
     pub(crate) text: &'t str,
     lexer: Lexer<'t>,
-    ahead: VecDeque<Token>,
+    ahead: Lookahead,
     prev_end: u32,
     pub(crate) interner: &'i mut Interner,
     errors: Vec<SyntaxError>,
@@ -114,7 +112,7 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
         Parser {
             text,
             lexer: Lexer::at(text, pos),
-            ahead: VecDeque::with_capacity(4),
+            ahead: Lookahead::default(),
             prev_end: pos as u32,
             interner,
             errors: Vec::new(),
@@ -149,10 +147,10 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
         }
     }
 
-    /// The token `n` places ahead (0 = current).
+    /// The token `n` places ahead (0 = current); the grammar looks at most three ahead.
     pub(crate) fn nth_token(&mut self, n: usize) -> Token {
         self.fill(n);
-        self.ahead[n]
+        self.ahead.get(n)
     }
 
     pub(crate) fn nth(&mut self, n: usize) -> TokenKind {
@@ -180,7 +178,7 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
 
     pub(crate) fn bump(&mut self) -> Token {
         self.fill(0);
-        let token = self.ahead.pop_front().unwrap_or(Token { kind: TokenKind::Eof, span: Span::default() });
+        let token = self.ahead.pop_front();
         if token.kind != TokenKind::Eof {
             self.prev_end = token.span.end;
         }
@@ -341,7 +339,7 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
     /// the body are left for `parse_body` to report.
     pub(crate) fn skip_body(&mut self, stop: TokenSet) {
         let start = self.current().span.start;
-        while !self.at_set(stop) && !self.ahead.is_empty() {
+        while !self.ahead.is_empty() && !stop.contains(self.ahead.get(0).kind) {
             self.bump();
         }
         // Straight through the lexer's scanner: no token is built on the way.
@@ -352,6 +350,53 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
         let end = self.current().span.start;
         self.lexer.errors.retain(|e| e.span.start < start || e.span.start >= end);
         self.lexer.unterminated_string_ends.retain(|&pos| pos < start || pos >= end);
+    }
+}
+
+/// A ring of the next few tokens (the grammar needs at most three of lookahead).
+#[derive(Default)]
+struct Lookahead {
+    tokens: [Token; LOOKAHEAD],
+    head: usize,
+    len: usize,
+}
+
+const LOOKAHEAD: usize = 4;
+
+impl Default for Token {
+    fn default() -> Token {
+        Token { kind: TokenKind::Eof, span: Span::default() }
+    }
+}
+
+impl Lookahead {
+    fn len(&self) -> usize {
+        self.len
+    }
+
+    fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    fn get(&self, n: usize) -> Token {
+        self.tokens[(self.head + n) % LOOKAHEAD]
+    }
+
+    fn push_back(&mut self, token: Token) {
+        // `fill` never asks for more than LOOKAHEAD tokens; past that the oldest is
+        // overwritten, which the grammar's fixed lookahead never reaches.
+        self.tokens[(self.head + self.len) % LOOKAHEAD] = token;
+        self.len = (self.len + 1).min(LOOKAHEAD);
+    }
+
+    fn pop_front(&mut self) -> Token {
+        if self.len == 0 {
+            return Token::default();
+        }
+        let token = self.tokens[self.head];
+        self.head = (self.head + 1) % LOOKAHEAD;
+        self.len -= 1;
+        token
     }
 }
 
