@@ -50,4 +50,12 @@ impl Diagnostic {
     pub fn severity(&self) -> Severity {
         self.code.severity()
     }
+
+    /// `error` or `warning`.
+    pub fn severity_word(&self) -> &'static str {
+        match self.severity() {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+        }
+    }
 }

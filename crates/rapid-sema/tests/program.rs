@@ -1,0 +1,107 @@
+//! Rules that need several modules checked together as one task (§1.1.3, §1.1.5,
+//! §1.2.2): global names across modules, LOCAL hiding, shared persistents, module
+//! names, and the diagnostics' messages as users read them.
+
+use rapid_sema::{check, Code, Options, SourceInput};
+use rapid_syntax::LineIndex;
+
+fn codes(files: &[(&str, &str)]) -> Vec<(String, &'static str, u32)> {
+    let inputs: Vec<SourceInput> = files.iter().map(|(path, text)| SourceInput::from_text(*path, *text)).collect();
+    check(&inputs, &Options::default())
+        .iter()
+        .map(|d| {
+            let text = &inputs[d.file].text;
+            let line = LineIndex::new(text).line_col(text, d.span.start).line;
+            (inputs[d.file].path.clone(), d.code.as_str(), line)
+        })
+        .collect()
+}
+
+#[test]
+fn a_global_routine_is_visible_from_other_modules() {
+    let main = "MODULE MainModule\nPROC main()\n  grip_open;\n  reg1 := part_count();\nENDPROC\nENDMODULE";
+    let lib = "MODULE Lib\nPROC grip_open()\nENDPROC\nFUNC num part_count()\n  RETURN 3;\nENDFUNC\nENDMODULE";
+    assert_eq!(codes(&[("main.mod", main), ("lib.mod", lib)]), vec![]);
+}
+
+#[test]
+fn a_local_routine_is_invisible_from_other_modules() {
+    let main = "MODULE MainModule\nPROC main()\n  helper;\nENDPROC\nENDMODULE";
+    let lib = "MODULE Lib\nLOCAL PROC helper()\nENDPROC\nENDMODULE";
+    assert_eq!(codes(&[("main.mod", main), ("lib.mod", lib)]), vec![("main.mod".into(), "W0202", 3)]);
+}
+
+#[test]
+fn local_data_hides_a_global_of_another_module() {
+    let a = "MODULE A\nLOCAL VAR string n := \"a\";\nPROC pa()\n  n := \"x\";\nENDPROC\nENDMODULE";
+    let b = "MODULE B\nVAR num n := 1;\nPROC pb()\n  n := 2;\nENDPROC\nENDMODULE";
+    assert_eq!(codes(&[("a.mod", a), ("b.mod", b)]), vec![]);
+}
+
+#[test]
+fn one_global_name_in_two_modules_is_ambiguous() {
+    let a = "MODULE A\nVAR num counter;\nENDMODULE";
+    let b = "MODULE B\nPROC counter()\nENDPROC\nENDMODULE";
+    assert_eq!(codes(&[("a.mod", a), ("b.mod", b)]), vec![("b.mod".into(), "E0208", 2)]);
+}
+
+#[test]
+fn a_persistent_declared_in_two_modules_is_one_object() {
+    let a = "MODULE A\nPERS num shared := 0;\nENDMODULE";
+    let b = "MODULE B\nPERS num shared := 0;\nPROC p()\n  shared := 1;\nENDPROC\nENDMODULE";
+    assert_eq!(codes(&[("a.mod", a), ("b.mod", b)]), vec![]);
+}
+
+#[test]
+fn two_modules_of_one_name() {
+    let a = "MODULE Same\nENDMODULE";
+    let b = "MODULE same\nENDMODULE";
+    assert_eq!(codes(&[("a.mod", a), ("b.mod", b)]), vec![("b.mod".into(), "E0216", 1)]);
+}
+
+#[test]
+fn user_declarations_hide_predefined_ones() {
+    // A user routine named like a built-in instruction hides it, with its own signature.
+    let src = "MODULE m\nPROC MoveL(num speed)\nENDPROC\nPROC main()\n  MoveL 5;\n  VAR num v100;\nENDPROC\nENDMODULE";
+    let found = codes(&[("m.mod", src)]);
+    // Only the misplaced declaration is reported; `MoveL 5` matches the user's MoveL.
+    assert_eq!(found, vec![("m.mod".into(), "E0120", 6)]);
+    let hide_data = "MODULE m\nVAR string v100 := \"fast\";\nPROC main()\n  TPWrite v100;\nENDPROC\nENDMODULE";
+    assert_eq!(codes(&[("m.mod", hide_data)]), vec![]);
+}
+
+#[test]
+fn encrypted_modules_are_reported_not_parsed() {
+    let inputs = vec![SourceInput::from_bytes("enc.mod", vec![0xFC, 0x00, 0x41, 0x42])];
+    let diags = check(&inputs, &Options::default());
+    assert_eq!(diags.len(), 1);
+    assert_eq!(diags[0].code, Code::EncryptedModule);
+}
+
+#[test]
+fn syntax_only_skips_semantic_checks() {
+    let src = "MODULE m\nPROC main()\n  undefined_thing := 1;\n  x := ;\nENDPROC\nENDMODULE";
+    let inputs = vec![SourceInput::from_text("m.mod", src)];
+    let diags = check(&inputs, &Options { syntax_only: true });
+    assert_eq!(diags.iter().map(|d| d.code.as_str()).collect::<Vec<_>>(), vec!["E0120"]);
+    let all = check(&inputs, &Options::default());
+    assert_eq!(all.iter().map(|d| d.code.as_str()).collect::<Vec<_>>(), vec!["E0201", "E0120"]);
+}
+
+#[test]
+fn every_code_is_documented_and_messages_read_well() {
+    // Messages as users see them, for review (insta snapshot of a few typical ones).
+    let src = "MODULE m\nVAR num n := \"text\";\nPROC main()\n  MoveL p10, v100, z10;\n  Incr 5;\n  IF n THEN\n  ENDIF\nENDPROC\nENDMODULE";
+    let inputs = vec![SourceInput::from_text("m.mod", src)];
+    let text: String = check(&inputs, &Options::default())
+        .iter()
+        .map(|d| {
+            let line = LineIndex::new(src).line_col(src, d.span.start).line;
+            format!("{}:{line}: {} {}\n", d.code.as_str(), d.severity_word(), d.message)
+        })
+        .collect();
+    insta::assert_snapshot!(text);
+    for code in Code::ALL {
+        assert!(!code.summary().is_empty());
+    }
+}
