@@ -105,3 +105,19 @@ fn every_code_is_documented_and_messages_read_well() {
         assert!(!code.summary().is_empty());
     }
 }
+
+#[test]
+fn deepest_accepted_nesting_checks_without_overflow() {
+    // 255 nested IFs whose innermost condition nests 255 parentheses: both just under
+    // the parser's limits, so the checker walks the deepest tree the parser can build.
+    let mut src = String::from("MODULE m\nPROC p()\n");
+    for _ in 0..255 {
+        src.push_str("IF TRUE THEN\n");
+    }
+    src.push_str(&format!("reg1 := {}1{};\n", "(".repeat(250), ")".repeat(250)));
+    for _ in 0..255 {
+        src.push_str("ENDIF\n");
+    }
+    src.push_str("ENDPROC\nENDMODULE\n");
+    assert_eq!(codes(&[("deep.mod", &src)]), vec![]);
+}
