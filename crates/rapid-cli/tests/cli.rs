@@ -54,14 +54,28 @@ fn clean_file() {
 
 #[test]
 fn file_with_syntax_errors() {
-    // FIXME: `rapid_sema::check` is still a stub, so no errors are reported yet. Once it
-    // reports syntax errors this snapshot shows them and exits 1; accept the new one.
     assert_cmd_snapshot!(rapid(&["check", "syntax_errors.mod"]));
 }
 
 #[test]
+fn file_with_semantic_errors() {
+    assert_cmd_snapshot!(rapid(&["check", "semantic_errors.mod"]));
+}
+
+#[test]
+fn warnings_alone_exit_zero() {
+    assert_cmd_snapshot!(rapid(&["check", "warnings_only.mod"]));
+}
+
+#[test]
 fn syntax_only_flag() {
-    assert_cmd_snapshot!(rapid(&["check", "--syntax-only", "clean.mod"]));
+    // The semantic errors of the file are not looked for.
+    assert_cmd_snapshot!(rapid(&[
+        "check",
+        "--syntax-only",
+        "semantic_errors.mod",
+        "syntax_errors.mod"
+    ]));
 }
 
 #[test]
@@ -71,7 +85,7 @@ fn json_format() {
         "--format",
         "json",
         "missing_entry/Program.pgf",
-        "clean.mod"
+        "syntax_errors.mod"
     ]));
 }
 
@@ -125,6 +139,25 @@ fn program_file_holding_a_module() {
 #[test]
 fn program_file_with_missing_entry() {
     assert_cmd_snapshot!(rapid(&["check", "missing_entry/Program.pgf"]));
+}
+
+#[test]
+fn program_file_entries_from_windows() {
+    // Backups made on Windows name entries with `\` and in any letter case.
+    let dir = scratch("windows_entries");
+    fs::create_dir(dir.join("progmod")).unwrap();
+    fs::write(dir.join("progmod/Main.mod"), "MODULE Main\nENDMODULE\n").unwrap();
+    fs::write(
+        dir.join("Prog.pgf"),
+        "<Program><Module>progmod\\MAIN.MOD</Module></Program>",
+    )
+    .unwrap();
+    let out = rapid_in(&dir, &["check", "Prog.pgf"]).output().unwrap();
+    assert_eq!(
+        String::from_utf8(out.stdout).unwrap(),
+        "checked 2 files: no problems found\n"
+    );
+    assert_eq!(out.status.code(), Some(0));
 }
 
 #[test]
@@ -196,14 +229,16 @@ fn binary_file() {
 #[test]
 fn very_long_line() {
     let dir = scratch("very_long_line");
-    let mut text = String::from("MODULE Long\n    VAR num x := ");
-    while text.len() < 10_000_000 {
-        text.push_str("1 + ");
-    }
-    text.push_str(";\nENDMODULE\n");
+    // A 10 MB routine on one line, with an undefined name in the middle.
+    let statements = "n := n + 1; ".repeat(400_000);
+    let text = format!(
+        "MODULE Long\n    VAR num n := 0;\n    PROC main() {statements}nosuch := 1; {statements}ENDPROC\nENDMODULE\n"
+    );
     fs::write(dir.join("long.mod"), &text).unwrap();
     let stdout = check_survives(&dir, "long.mod");
-    assert!(stdout.len() < 100_000, "{} bytes of output", stdout.len());
+    assert!(stdout.contains("--> long.mod:3:4800017\n"), "{stdout}");
+    assert!(stdout.contains("n + 1; nosuch := 1; n := n"), "{stdout}");
+    assert!(stdout.len() < 2_000, "{} bytes of output", stdout.len());
 }
 
 #[test]

@@ -87,6 +87,7 @@ impl Checker<'_> {
             BodyItem::Decl(decl) => self.routine_data(decl, arena),
             BodyItem::Section { section, keyword, error_numbers } => self.enter_section(*section, *keyword, error_numbers, arena),
             BodyItem::Stmt(stmt) => self.stmt(arena, stmt),
+            BodyItem::End => {}
         }
     }
 

@@ -17,11 +17,12 @@ mod consteval;
 mod decls;
 mod diagnostic;
 mod expr;
+mod pipeline;
 mod symbols;
 mod syntax;
 mod types;
 
-use rapid_syntax::ast::Item;
+use rapid_syntax::ast::{Arena, BodyItem, Item};
 use rapid_syntax::{cap_errors, parse_body, parse_outline, Interner, Parse, Span, SyntaxError};
 
 pub use codes::{Code, Severity};
@@ -102,14 +103,26 @@ fn check_semantics(
         ck.enter(m.file, idx);
         for routine in routines(m) {
             ck.begin_routine(routine);
-            let mut sink = |item: rapid_syntax::ast::BodyItem, arena: &rapid_syntax::ast::Arena| ck.body_item(&item, arena);
-            let errors = parse_body(&files[m.file].text, routine.body_span, interner, Some(&mut sink));
+            let text = &files[m.file].text;
+            let errors = if routine.body_span.len() >= PIPELINE_THRESHOLD {
+                pipeline::check_body(&mut ck, text, routine.body_span, interner)
+            } else {
+                let mut sink = |item: BodyItem, arena: &mut Arena| {
+                    ck.body_item(&item, arena);
+                    arena.clear();
+                };
+                parse_body(text, routine.body_span, interner, Some(&mut sink))
+            };
             syntax_errors[m.file].extend(errors);
             ck.end_routine();
         }
     }
     diags.append(&mut ck.diags);
 }
+
+/// Bodies at least this long (in bytes) are parsed on a second thread while the
+/// checker works through them: CAM programs hold one routine of millions of moves.
+const PIPELINE_THRESHOLD: u32 = 1 << 20;
 /// Module-level declarations: data initialisers and routine headers.
 fn check_module_items(ck: &mut Checker<'_>, modules: &[ModuleRef<'_>]) {
     for (idx, m) in modules.iter().enumerate() {

@@ -189,6 +189,8 @@ pub enum BodyItem {
     Stmt(Stmt),
     /// A handler keyword starts a new section.
     Section { section: Section, keyword: Span, error_numbers: Vec<ExprId> },
+    /// The body is complete (streamed bodies only): a sink that batches items flushes.
+    End,
 }
 
 #[derive(Debug, Clone)]

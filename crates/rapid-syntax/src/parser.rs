@@ -27,8 +27,10 @@ pub struct Parse {
     pub comments: Vec<Span>,
 }
 
-/// Receives routine body items one at a time (see [`parse_body`]).
-pub type BodySink<'s> = dyn FnMut(BodyItem, &Arena) + 's;
+/// Receives routine body items one at a time with the arena holding their
+/// expressions (see [`parse_body`]). The sink owns the arena's contents: it clears
+/// the arena when done with an item, or takes it whole to keep a batch of items.
+pub type BodySink<'s> = dyn FnMut(BodyItem, &mut Arena) + 's;
 
 /// What to do with routine bodies.
 pub(crate) enum BodyMode<'s> {
@@ -56,8 +58,9 @@ pub fn parse_outline(text: &str, interner: &mut Interner) -> Parse {
 
 /// Parses the body of a routine found by [`parse_outline`] and returns its syntax
 /// errors. With a sink, each top-level item (declaration, statement, handler keyword)
-/// is handed to it together with the arena holding its expressions; the arena is
-/// cleared after each item, so memory stays bounded by the largest statement.
+/// is handed to it together with the arena holding its expressions, and a final
+/// `BodyItem::End`; a sink that clears the arena after each item keeps memory bounded
+/// by the largest statement.
 pub fn parse_body<'s>(text: &str, body_span: Span, interner: &mut Interner, sink: Option<&'s mut BodySink<'s>>) -> Vec<SyntaxError> {
     let mode = match sink {
         Some(sink) => BodyMode::Stream(sink),
@@ -65,6 +68,9 @@ pub fn parse_body<'s>(text: &str, body_span: Span, interner: &mut Interner, sink
     };
     let mut parser = Parser::new(text, body_span.start as usize, interner, mode);
     parser.routine_body_items();
+    if let BodyMode::Stream(sink) = &mut parser.body_mode {
+        sink(BodyItem::End, &mut parser.arena);
+    }
     let mut errors = std::mem::take(&mut parser.lexer.errors);
     errors.append(&mut parser.errors);
     // Lookahead may have lexed past the body; those errors belong to the outline.
@@ -319,10 +325,7 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
         match &mut self.body_mode {
             BodyMode::Keep => keep_body_item(item, body, section),
             BodyMode::Skip | BodyMode::Discard => self.arena.clear(),
-            BodyMode::Stream(sink) => {
-                sink(item, &self.arena);
-                self.arena.clear();
-            }
+            BodyMode::Stream(sink) => sink(item, &mut self.arena),
         }
     }
 
@@ -404,6 +407,7 @@ fn keep_body_item(item: BodyItem, body: &mut Body, section: &mut Section) {
     match item {
         BodyItem::Decl(decl) => body.decls.push(decl),
         BodyItem::Stmt(stmt) => push_stmt(body, *section, stmt),
+        BodyItem::End => {}
         BodyItem::Section { section: new, keyword, error_numbers } => {
             *section = new;
             let handler = crate::ast::Handler { keyword, error_numbers, stmts: Vec::new() };
