@@ -65,10 +65,7 @@ fn file_kind(path: &Path) -> Option<FileKind> {
     if ext.eq_ignore_ascii_case("pgf") {
         return Some(FileKind::Program);
     }
-    MODULE_EXTENSIONS
-        .iter()
-        .any(|known| ext.eq_ignore_ascii_case(known))
-        .then_some(FileKind::Module)
+    MODULE_EXTENSIONS.iter().any(|known| ext.eq_ignore_ascii_case(known)).then_some(FileKind::Module)
 }
 
 /// Where a file went: the module list or the program-file list.
@@ -98,9 +95,7 @@ impl Collector {
             return self.add_folder(path);
         }
         match file_kind(path) {
-            Some(FileKind::Module) => {
-                self.add_module(path).with_context(|| format!("cannot read `{shown}`"))
-            }
+            Some(FileKind::Module) => self.add_module(path).with_context(|| format!("cannot read `{shown}`")),
             Some(FileKind::Program) => self.add_program(path),
             None => bail!(
                 "`{shown}` is not a RAPID file: expected a module ({}), a program file (.pgf) or a folder",
@@ -113,9 +108,7 @@ impl Collector {
     fn add_folder(&mut self, folder: &Path) -> anyhow::Result<()> {
         let shown = folder.display();
         let mut files = Vec::new();
-        for entry in
-            fs::read_dir(folder).with_context(|| format!("cannot read folder `{shown}`"))?
-        {
+        for entry in fs::read_dir(folder).with_context(|| format!("cannot read folder `{shown}`"))? {
             let entry = entry.with_context(|| format!("cannot read folder `{shown}`"))?;
             let path = entry.path();
             if file_kind(&path) == Some(FileKind::Module) && path.is_file() {
@@ -123,16 +116,12 @@ impl Collector {
             }
         }
         if files.is_empty() {
-            bail!(
-                "folder `{shown}` holds no RAPID module files ({})",
-                extension_list()
-            );
+            bail!("folder `{shown}` holds no RAPID module files ({})", extension_list());
         }
         files.sort();
         for (_, path) in files {
             let shown = path.display();
-            self.add_module(&path)
-                .with_context(|| format!("cannot read `{shown}`"))?;
+            self.add_module(&path).with_context(|| format!("cannot read `{shown}`"))?;
         }
         Ok(())
     }
@@ -169,19 +158,14 @@ impl Collector {
         for Entry { name, span } in entries {
             if name.is_empty() {
                 let message = "this <Module> entry names no module";
-                self.program_diagnostics
-                    .push(entry_diagnostic(program_idx, span, message));
+                self.program_diagnostics.push(entry_diagnostic(program_idx, span, message));
                 continue;
             }
             let module_path = program_file::resolve(folder, &name);
             if let Err(err) = self.add_module(&module_path) {
-                let message = format!(
-                    "cannot read module `{}` listed here: {}",
-                    module_path.display(),
-                    describe_io_error(&err)
-                );
-                self.program_diagnostics
-                    .push(entry_diagnostic(program_idx, span, message));
+                let message =
+                    format!("cannot read module `{}` listed here: {}", module_path.display(), describe_io_error(&err));
+                self.program_diagnostics.push(entry_diagnostic(program_idx, span, message));
             }
         }
         Ok(())
@@ -214,17 +198,9 @@ impl Collector {
         let diagnostics = self
             .program_diagnostics
             .into_iter()
-            .map(|diag| Diagnostic {
-                file: table_idx(FileRef::Program(diag.file)),
-                ..diag
-            })
+            .map(|diag| Diagnostic { file: table_idx(FileRef::Program(diag.file)), ..diag })
             .collect();
-        Inputs {
-            modules: self.modules,
-            programs: self.programs,
-            diagnostics,
-            rank,
-        }
+        Inputs { modules: self.modules, programs: self.programs, diagnostics, rank }
     }
 }
 
@@ -233,10 +209,7 @@ fn entry_diagnostic(program_idx: usize, span: Span, message: impl Into<String>) 
 }
 
 fn extension_list() -> String {
-    let list: Vec<String> = MODULE_EXTENSIONS
-        .iter()
-        .map(|ext| format!(".{ext}"))
-        .collect();
+    let list: Vec<String> = MODULE_EXTENSIONS.iter().map(|ext| format!(".{ext}")).collect();
     list.join(" ")
 }
 

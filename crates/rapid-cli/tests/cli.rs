@@ -29,9 +29,7 @@ fn rapid(args: &[&str]) -> Command {
 
 /// A fresh, empty scratch folder for one test.
 fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("cli")
-        .join(name);
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli").join(name);
     let _ = fs::remove_dir_all(&dir);
     fs::create_dir_all(&dir).unwrap();
     dir
@@ -41,10 +39,7 @@ fn scratch(name: &str) -> PathBuf {
 fn version() {
     let out = rapid(&["--version"]).output().unwrap();
     assert!(out.status.success());
-    assert_eq!(
-        String::from_utf8(out.stdout).unwrap(),
-        format!("rapid {}\n", env!("CARGO_PKG_VERSION"))
-    );
+    assert_eq!(String::from_utf8(out.stdout).unwrap(), format!("rapid {}\n", env!("CARGO_PKG_VERSION")));
 }
 
 #[test]
@@ -70,23 +65,12 @@ fn warnings_alone_exit_zero() {
 #[test]
 fn syntax_only_flag() {
     // The semantic errors of the file are not looked for.
-    assert_cmd_snapshot!(rapid(&[
-        "check",
-        "--syntax-only",
-        "semantic_errors.mod",
-        "syntax_errors.mod"
-    ]));
+    assert_cmd_snapshot!(rapid(&["check", "--syntax-only", "semantic_errors.mod", "syntax_errors.mod"]));
 }
 
 #[test]
 fn json_format() {
-    assert_cmd_snapshot!(rapid(&[
-        "check",
-        "--format",
-        "json",
-        "missing_entry/Program.pgf",
-        "syntax_errors.mod"
-    ]));
+    assert_cmd_snapshot!(rapid(&["check", "--format", "json", "missing_entry/Program.pgf", "syntax_errors.mod"]));
 }
 
 #[test]
@@ -147,27 +131,15 @@ fn program_file_entries_from_windows() {
     let dir = scratch("windows_entries");
     fs::create_dir(dir.join("progmod")).unwrap();
     fs::write(dir.join("progmod/Main.mod"), "MODULE Main\nENDMODULE\n").unwrap();
-    fs::write(
-        dir.join("Prog.pgf"),
-        "<Program><Module>progmod\\MAIN.MOD</Module></Program>",
-    )
-    .unwrap();
+    fs::write(dir.join("Prog.pgf"), "<Program><Module>progmod\\MAIN.MOD</Module></Program>").unwrap();
     let out = rapid_in(&dir, &["check", "Prog.pgf"]).output().unwrap();
-    assert_eq!(
-        String::from_utf8(out.stdout).unwrap(),
-        "checked 2 files: no problems found\n"
-    );
+    assert_eq!(String::from_utf8(out.stdout).unwrap(), "checked 2 files: no problems found\n");
     assert_eq!(out.status.code(), Some(0));
 }
 
 #[test]
 fn same_file_twice_is_read_once() {
-    assert_cmd_snapshot!(rapid(&[
-        "check",
-        "program/Program.pgf",
-        "program/Tools.mod",
-        "program"
-    ]));
+    assert_cmd_snapshot!(rapid(&["check", "program/Program.pgf", "program/Tools.mod", "program"]));
 }
 
 #[test]
@@ -185,22 +157,11 @@ fn check_survives(dir: &Path, file: &str) -> String {
     let out = rapid_in(dir, &["check", file]).output().unwrap();
     let stdout = String::from_utf8(out.stdout).unwrap();
     let stderr = String::from_utf8(out.stderr).unwrap();
-    assert!(
-        matches!(out.status.code(), Some(0 | 1)),
-        "status {:?}, stderr {stderr}",
-        out.status
-    );
+    assert!(matches!(out.status.code(), Some(0 | 1)), "status {:?}, stderr {stderr}", out.status);
     assert!(stderr.is_empty(), "{stderr}");
-    let longest = stdout
-        .lines()
-        .map(|line| line.chars().count())
-        .max()
-        .unwrap_or(0);
+    let longest = stdout.lines().map(|line| line.chars().count()).max().unwrap_or(0);
     assert!(longest < 300, "a line of {longest} characters");
-    assert!(
-        stdout.ends_with(" file\n") || stdout.ends_with(" files\n") || stdout.ends_with("found\n"),
-        "{stdout}"
-    );
+    assert!(stdout.ends_with(" file\n") || stdout.ends_with(" files\n") || stdout.ends_with("found\n"), "{stdout}");
     stdout
 }
 
@@ -245,29 +206,15 @@ fn very_long_line() {
 fn broken_pipe_is_a_clean_exit() {
     let dir = scratch("broken_pipe");
     // Enough diagnostics to fill a pipe several times over.
-    let entries: String = (0..5000)
-        .map(|idx| format!("<Module>missing_{idx}.mod</Module>\n"))
-        .collect();
-    fs::write(
-        dir.join("Many.pgf"),
-        format!("<Program>\n{entries}</Program>\n"),
-    )
-    .unwrap();
-    let mut child = rapid_in(&dir, &["check", "Many.pgf"])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
+    let entries: String = (0..5000).map(|idx| format!("<Module>missing_{idx}.mod</Module>\n")).collect();
+    fs::write(dir.join("Many.pgf"), format!("<Program>\n{entries}</Program>\n")).unwrap();
+    let mut child =
+        rapid_in(&dir, &["check", "Many.pgf"]).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().unwrap();
     let mut first = [0u8; 16];
     child.stdout.take().unwrap().read_exact(&mut first).unwrap();
     let status = child.wait().unwrap();
     let mut stderr = String::new();
-    child
-        .stderr
-        .take()
-        .unwrap()
-        .read_to_string(&mut stderr)
-        .unwrap();
+    child.stderr.take().unwrap().read_to_string(&mut stderr).unwrap();
     assert_eq!(&first, b"error[E0130]: ca");
     assert_eq!(status.code(), Some(0), "stderr: {stderr}");
     assert!(stderr.is_empty(), "{stderr}");

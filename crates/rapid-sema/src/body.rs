@@ -2,7 +2,9 @@
 //! statements (§1.4, §1.5), labels and GOTO, RETURN, handlers (§1.12), UNDO (§1.13)
 //! and BACKWARD (§1.21) restrictions.
 
-use rapid_syntax::ast::{Arena, BodyItem, DataDecl, ExprId, ExprKind, Name, ParamMode, Routine, RoutineKind, Section, Stmt, StmtKind};
+use rapid_syntax::ast::{
+    Arena, BodyItem, DataDecl, ExprId, ExprKind, Name, ParamMode, Routine, RoutineKind, Section, Stmt, StmtKind,
+};
 use rapid_syntax::{Span, Symbol};
 use rustc_hash::FxHashMap;
 
@@ -33,9 +35,9 @@ pub(crate) struct RoutineCtx {
 impl Checker<'_> {
     /// Starts a routine: parameters become routine data.
     pub(crate) fn begin_routine(&mut self, routine: &Routine) {
-        let ret = routine.ret_ty.and_then(|ty| match self.lookup(ty.sym) {
-            Some(Def::Type(ty)) => Some(ty),
-            _ => Some(types::ERROR),
+        let ret = routine.ret_ty.map(|ty| match self.lookup(ty.sym) {
+            Some(Def::Type(ty)) => ty,
+            _ => types::ERROR,
         });
         self.ctx = Some(RoutineCtx {
             kind: routine.kind,
@@ -85,7 +87,9 @@ impl Checker<'_> {
     pub(crate) fn body_item(&mut self, item: &BodyItem, arena: &Arena) {
         match item {
             BodyItem::Decl(decl) => self.routine_data(decl, arena),
-            BodyItem::Section { section, keyword, error_numbers } => self.enter_section(*section, *keyword, error_numbers, arena),
+            BodyItem::Section { section, keyword, error_numbers } => {
+                self.enter_section(*section, *keyword, error_numbers, arena)
+            }
             BodyItem::Stmt(stmt) => self.stmt(arena, stmt),
             BodyItem::End => {}
         }
@@ -133,7 +137,9 @@ impl Checker<'_> {
     fn check_handler_number(&mut self, arena: &Arena, number: ExprId) {
         let expr = arena.expr(number);
         let ok = match expr.kind {
-            ExprKind::Num => rapid_syntax::literal::num_value(self.text(expr.span)).is_some_and(|v| v.fract() == 0.0 && v >= 0.0),
+            ExprKind::Num => {
+                rapid_syntax::literal::num_value(self.text(expr.span)).is_some_and(|v| v.fract() == 0.0 && v >= 0.0)
+            }
             ExprKind::Name(sym) => match self.lookup(sym) {
                 Some(Def::Data(data)) => self.data(data).ty == self.core.errnum && self.data(data).rank == 0,
                 None => {
@@ -147,7 +153,11 @@ impl Checker<'_> {
         };
         if !ok {
             let text = self.text(expr.span);
-            self.diag(Code::BadHandlerErrorNumber, expr.span, format!("`{text}` is not an error number: use errnum data such as ERR_DIVZERO"));
+            self.diag(
+                Code::BadHandlerErrorNumber,
+                expr.span,
+                format!("`{text}` is not an error number: use errnum data such as ERR_DIVZERO"),
+            );
         }
     }
 
@@ -158,9 +168,13 @@ impl Checker<'_> {
             let text = self.text(*span);
             match ctx.labels.get(label) {
                 None => self.diag(Code::UndefinedLabel, *span, format!("no label `{text}` in this routine")),
-                Some((_, label_path)) if !path.starts_with(label_path) => {
-                    self.diag(Code::GotoIntoBlock, *span, format!("GOTO `{text}` jumps into an IF, FOR, WHILE or TEST body (or another handler) from outside it"))
-                }
+                Some((_, label_path)) if !path.starts_with(label_path) => self.diag(
+                    Code::GotoIntoBlock,
+                    *span,
+                    format!(
+                        "GOTO `{text}` jumps into an IF, FOR, WHILE or TEST body (or another handler) from outside it"
+                    ),
+                ),
                 Some(_) => {}
             }
         }
@@ -172,7 +186,11 @@ impl Checker<'_> {
         }
         if ctx.kind == RoutineKind::Func && !ctx.has_return {
             let text = self.text(ctx.name_span);
-            self.diag(Code::FuncWithoutReturn, ctx.name_span, format!("FUNC `{text}` has no RETURN: ending without one raises ERR_FNCNORET"));
+            self.diag(
+                Code::FuncWithoutReturn,
+                ctx.name_span,
+                format!("FUNC `{text}` has no RETURN: ending without one raises ERR_FNCNORET"),
+            );
         }
         self.datas.truncate(ctx.data_mark);
         self.scopes.routine.clear();
@@ -209,7 +227,11 @@ impl Checker<'_> {
                 let ty = self.expr(arena, *callee, None);
                 if ty.ty != types::ERROR && (ty.rank != 0 || self.types.value_of(ty.ty) != self.core.string) {
                     let span = arena.expr(*callee).span;
-                    self.diag(Code::LateBindingNotString, span, "the procedure name between `%` must be a string expression".into());
+                    self.diag(
+                        Code::LateBindingNotString,
+                        span,
+                        "the procedure name between `%` must be a string expression".into(),
+                    );
                 }
                 self.type_args_leniently(arena, *args);
             }
@@ -247,7 +269,11 @@ impl Checker<'_> {
             StmtKind::Retry | StmtKind::TryNext => {
                 if self.section() != Section::Error {
                     let word = if matches!(stmt.kind, StmtKind::Retry) { "RETRY" } else { "TRYNEXT" };
-                    self.diag(Code::RetryOutsideErrorHandler, stmt.span, format!("{word} may be used only in an ERROR handler"));
+                    self.diag(
+                        Code::RetryOutsideErrorHandler,
+                        stmt.span,
+                        format!("{word} may be used only in an ERROR handler"),
+                    );
                 }
             }
             StmtKind::Connect { target, trap } => self.connect(arena, *target, *trap),
@@ -259,7 +285,11 @@ impl Checker<'_> {
         let ty = self.expr(arena, cond, None);
         if ty.ty != types::ERROR && !self.is_bool(ty) {
             let found = self.describe(ty.ty, ty.rank);
-            self.diag(Code::ConditionNotBool, arena.expr(cond).span, format!("a condition must be a `bool`, found {found}"));
+            self.diag(
+                Code::ConditionNotBool,
+                arena.expr(cond).span,
+                format!("a condition must be a `bool`, found {found}"),
+            );
         }
     }
 
@@ -270,12 +300,25 @@ impl Checker<'_> {
         if let Some((data, entire)) = self.reference_root(arena, target) {
             let info = self.data(data).clone();
             let problem = match info.kind {
-                DataKind::Const => Some((Code::ReadOnlyWrite, format!("`{}` is a constant and cannot be assigned", info.display))),
-                DataKind::LoopVar => Some((Code::ReadOnlyWrite, format!("`{}` is a FOR loop variable: it can only be read", info.display))),
-                DataKind::ReadOnly => Some((Code::ReadOnlyWrite, format!("`{}` is a read-only system variable", info.display))),
+                DataKind::Const => {
+                    Some((Code::ReadOnlyWrite, format!("`{}` is a constant and cannot be assigned", info.display)))
+                }
+                DataKind::LoopVar => Some((
+                    Code::ReadOnlyWrite,
+                    format!("`{}` is a FOR loop variable: it can only be read", info.display),
+                )),
+                DataKind::ReadOnly => {
+                    Some((Code::ReadOnlyWrite, format!("`{}` is a read-only system variable", info.display)))
+                }
                 _ => match self.types.class(info.ty) {
-                    ValueClass::SemiValue => Some((Code::SemiValueWrite, format!("signal `{}` cannot be assigned; use Set, Reset, SetDO, SetAO or SetGO", info.display))),
-                    ValueClass::NonValue => Some((Code::NonValueUse, format!("`{}` has a non-value type and cannot be assigned", info.display))),
+                    ValueClass::SemiValue => Some((
+                        Code::SemiValueWrite,
+                        format!("signal `{}` cannot be assigned; use Set, Reset, SetDO, SetAO or SetGO", info.display),
+                    )),
+                    ValueClass::NonValue => Some((
+                        Code::NonValueUse,
+                        format!("`{}` has a non-value type and cannot be assigned", info.display),
+                    )),
                     ValueClass::Value => None,
                 },
             };
@@ -316,12 +359,22 @@ impl Checker<'_> {
         self.scopes.loop_vars.pop();
     }
 
-    fn test_stmt(&mut self, arena: &Arena, subject: ExprId, cases: &[rapid_syntax::ast::Case], default: Option<&[Stmt]>) {
+    fn test_stmt(
+        &mut self,
+        arena: &Arena,
+        subject: ExprId,
+        cases: &[rapid_syntax::ast::Case],
+        default: Option<&[Stmt]>,
+    ) {
         let ty = self.expr(arena, subject, None);
         let value_ok = ty.ty == types::ERROR || self.types.class(ty.ty) != ValueClass::NonValue;
         if !value_ok {
             let name = self.type_name(ty.ty);
-            self.diag(Code::NonValueUse, arena.expr(subject).span, format!("TEST needs a value; `{name}` is a non-value type"));
+            self.diag(
+                Code::NonValueUse,
+                arena.expr(subject).span,
+                format!("TEST needs a value; `{name}` is a non-value type"),
+            );
         }
         for case in cases {
             for &value in &case.values {
@@ -353,10 +406,16 @@ impl Checker<'_> {
         ctx.has_return = true;
         let (kind, ret, section) = (ctx.kind, ctx.ret, ctx.section);
         if section == Section::Undo {
-            self.diag(Code::IgnoredInUndo, span, "RETURN in an UNDO handler is ignored (with an event-log warning)".into());
+            self.diag(
+                Code::IgnoredInUndo,
+                span,
+                "RETURN in an UNDO handler is ignored (with an event-log warning)".into(),
+            );
         }
         match (kind, value) {
-            (RoutineKind::Func, None) => self.diag(Code::ReturnValueMismatch, span, "a FUNC must RETURN a value".into()),
+            (RoutineKind::Func, None) => {
+                self.diag(Code::ReturnValueMismatch, span, "a FUNC must RETURN a value".into())
+            }
             (RoutineKind::Func, Some(value)) => {
                 let want = ret.unwrap_or(types::ERROR);
                 self.expect_value(arena, value, Expect::scalar(want), What::Text("the returned value"));
@@ -372,18 +431,30 @@ impl Checker<'_> {
     fn raise_stmt(&mut self, arena: &Arena, value: Option<ExprId>, span: Span) {
         let section = self.section();
         if section == Section::Undo {
-            self.diag(Code::IgnoredInUndo, span, "RAISE in an UNDO handler is ignored (with an event-log warning)".into());
+            self.diag(
+                Code::IgnoredInUndo,
+                span,
+                "RAISE in an UNDO handler is ignored (with an event-log warning)".into(),
+            );
         }
         let Some(value) = value else {
             if section != Section::Error {
-                self.diag(Code::RaiseWithoutNumber, span, "RAISE without an error number may be used only in an ERROR handler".into());
+                self.diag(
+                    Code::RaiseWithoutNumber,
+                    span,
+                    "RAISE without an error number may be used only in an ERROR handler".into(),
+                );
             }
             return;
         };
         self.expect_value(arena, value, Expect::scalar(self.core.errnum), What::Text("the error number"));
         if let Some(n) = self.const_num(arena, value) {
             if !(1.0..=90.0).contains(&n) || n.fract() != 0.0 {
-                self.diag(Code::RaiseNumberRange, arena.expr(value).span, format!("user error numbers are 1..90; RAISE {n} raises ERR_ILLRAISE at run time"));
+                self.diag(
+                    Code::RaiseNumberRange,
+                    arena.expr(value).span,
+                    format!("user error numbers are 1..90; RAISE {n} raises ERR_ILLRAISE at run time"),
+                );
             }
         }
     }
@@ -397,7 +468,11 @@ impl Checker<'_> {
                 let is_var = matches!(info.kind, DataKind::Var | DataKind::Param(ParamMode::Var | ParamMode::Inout));
                 if !is_var || !self.types.same(self.core.intnum, target_ty.ty) || target_ty.rank != 0 {
                     let name = info.display.clone();
-                    self.diag(Code::ConnectTargetNotVariable, span, format!("CONNECT needs an `intnum` variable; `{name}` is not one"));
+                    self.diag(
+                        Code::ConnectTargetNotVariable,
+                        span,
+                        format!("CONNECT needs an `intnum` variable; `{name}` is not one"),
+                    );
                 }
             }
             None if target_ty.ty != types::ERROR => {
@@ -408,7 +483,8 @@ impl Checker<'_> {
         if trap.is_placeholder {
             return;
         }
-        let is_trap = matches!(self.lookup(trap.sym), Some(Def::Routine(idx)) if self.routine(idx).kind == RoutineKind::Trap);
+        let is_trap =
+            matches!(self.lookup(trap.sym), Some(Def::Routine(idx)) if self.routine(idx).kind == RoutineKind::Trap);
         if !is_trap {
             let text = self.text(trap.span);
             self.diag(Code::NotATrap, trap.span, format!("`{text}` is not a TRAP routine"));
@@ -426,14 +502,23 @@ impl Checker<'_> {
         let display = info.display.to_ascii_lowercase();
         let text = self.text(name.span);
         if matches!(display.as_str(), "stop" | "break") {
-            self.diag(Code::IgnoredInUndo, name.span, format!("{text} in an UNDO handler is ignored (with an event-log warning)"));
+            self.diag(
+                Code::IgnoredInUndo,
+                name.span,
+                format!("{text} in an UNDO handler is ignored (with an event-log warning)"),
+            );
         } else if chapter == "motion" && is_motion_instruction(&display) {
-            self.diag(Code::MotionInUndo, name.span, format!("motion instruction {text} is not allowed in an UNDO handler"));
+            self.diag(
+                Code::MotionInUndo,
+                name.span,
+                format!("motion instruction {text} is not allowed in an UNDO handler"),
+            );
         }
     }
 }
 
 fn is_motion_instruction(lower_name: &str) -> bool {
-    lower_name.starts_with("move") || lower_name.starts_with("search") || matches!(lower_name, "triggl" | "triggc" | "triggj" | "triggabsj")
+    lower_name.starts_with("move")
+        || lower_name.starts_with("search")
+        || matches!(lower_name, "triggl" | "triggc" | "triggj" | "triggabsj")
 }
-

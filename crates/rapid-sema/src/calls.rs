@@ -43,10 +43,18 @@ impl Checker<'_> {
             Some(Def::Routine(idx)) => match self.routine(idx).kind {
                 RoutineKind::Proc => self.check_args(idx, arena, args, span),
                 RoutineKind::Trap => {
-                    self.diag(Code::TrapCalled, name.span, format!("`{text}` is a TRAP routine: traps run on interrupts and cannot be called"));
+                    self.diag(
+                        Code::TrapCalled,
+                        name.span,
+                        format!("`{text}` is a TRAP routine: traps run on interrupts and cannot be called"),
+                    );
                 }
                 RoutineKind::Func => {
-                    self.diag(Code::NotAProcedure, name.span, format!("`{text}` is a function, not a procedure; use its value in an expression"));
+                    self.diag(
+                        Code::NotAProcedure,
+                        name.span,
+                        format!("`{text}` is a function, not a procedure; use its value in an expression"),
+                    );
                     self.type_args_leniently(arena, args);
                 }
             },
@@ -55,7 +63,9 @@ impl Checker<'_> {
                 self.type_args_leniently(arena, args);
             }
             None => {
-                let message = format!("no procedure `{text}` is defined in this task; calling it raises ERR_REFUNKPRC at run time");
+                let message = format!(
+                    "no procedure `{text}` is defined in this task; calling it raises ERR_REFUNKPRC at run time"
+                );
                 self.diag(Code::UndefinedProcedure, name.span, message);
                 self.type_args_leniently(arena, args);
             }
@@ -97,7 +107,11 @@ impl Checker<'_> {
             let pos = groups.iter().position(|&(start, end)| (start..end).contains(&param_idx)).unwrap_or(0);
             if let Some(previous) = filled[pos] {
                 let (a, b) = (&params[param_idx].display, &params[previous].display);
-                let message = if previous == param_idx { format!("argument `{a}` is given twice") } else { format!("`{a}` and `{b}` exclude each other; give only one") };
+                let message = if previous == param_idx {
+                    format!("argument `{a}` is given twice")
+                } else {
+                    format!("`{a}` and `{b}` exclude each other; give only one")
+                };
                 self.diag(Code::DuplicateArgument, arg.span, message);
             } else if pos < cursor {
                 let (name, routine_name) = (&params[param_idx].display, &self.routine(routine).display);
@@ -112,7 +126,8 @@ impl Checker<'_> {
             for (pos, &(start, end)) in groups.iter().enumerate() {
                 if filled[pos].is_none() && !params[start].optional {
                     let names: Vec<&str> = params[start..end].iter().map(|p| p.display.as_str()).collect();
-                    let message = format!("`{}` needs the argument `{}`", self.routine(routine).display, names.join("` or `"));
+                    let message =
+                        format!("`{}` needs the argument `{}`", self.routine(routine).display, names.join("` or `"));
                     self.diag(Code::MissingArgument, call_span, message);
                 }
             }
@@ -121,7 +136,14 @@ impl Checker<'_> {
     }
 
     /// The parameter an argument stands for, reporting arguments that fit none.
-    fn match_param(&mut self, arena: &Arena, routine: u32, filled: &[Option<usize>], cursor: usize, arg: &Arg) -> Option<usize> {
+    fn match_param(
+        &mut self,
+        arena: &Arena,
+        routine: u32,
+        filled: &[Option<usize>],
+        cursor: usize,
+        arg: &Arg,
+    ) -> Option<usize> {
         let info = self.routine(routine);
         let (params, groups) = (info.params.clone(), info.groups.clone());
         if let Some(name) = arg.name {
@@ -172,12 +194,20 @@ impl Checker<'_> {
             ArgKind::Conditional => return self.check_conditional(arena, param, arg),
             ArgKind::Optional if param.is_switch() => {
                 if let Some(value) = arg.value {
-                    self.diag(Code::SwitchWithValue, arena.expr(value).span, format!("`\\{name}` is a switch: it takes no value"));
+                    self.diag(
+                        Code::SwitchWithValue,
+                        arena.expr(value).span,
+                        format!("`\\{name}` is a switch: it takes no value"),
+                    );
                 }
                 return;
             }
             ArgKind::Optional if arg.value.is_none() => {
-                self.diag(Code::MissingArgumentValue, arg.span, format!("`\\{name}` is not a switch: give it a value with `\\{name}:=...`"));
+                self.diag(
+                    Code::MissingArgumentValue,
+                    arg.span,
+                    format!("`\\{name}` is not a switch: give it a value with `\\{name}:=...`"),
+                );
                 return;
             }
             _ => {}
@@ -205,12 +235,20 @@ impl Checker<'_> {
             self.diag(Code::ArrayArgumentMismatch, span, format!("argument `{name}` must be {want}, found {found}"));
             return;
         }
-        if !builtin && param.mode == ParamMode::In && !self.types.is_lenient(param.ty) && self.types.class(got.ty) == crate::types::ValueClass::NonValue {
+        if !builtin
+            && param.mode == ParamMode::In
+            && !self.types.is_lenient(param.ty)
+            && self.types.class(got.ty) == crate::types::ValueClass::NonValue
+        {
             let found = self.type_name(got.ty);
             self.diag(Code::NonValueUse, span, format!("argument `{name}` is an IN parameter, which needs a value; `{found}` is a non-value type (declare the parameter VAR)"));
             return;
         }
-        let fits = if param.mode == ParamMode::In { self.types.compatible(param.ty, got.ty) } else { self.types.same(param.ty, got.ty) };
+        let fits = if param.mode == ParamMode::In {
+            self.types.compatible(param.ty, got.ty)
+        } else {
+            self.types.same(param.ty, got.ty)
+        };
         if !fits {
             let (want, found) = (self.describe(param.ty, param.rank), self.describe(got.ty, got.rank));
             self.diag(Code::TypeMismatch, span, format!("argument `{name}` must be {want}, found {found}"));
@@ -228,7 +266,11 @@ impl Checker<'_> {
         };
         let Some((data, entire)) = self.reference_root(arena, value) else {
             if !matches!(arena.expr(value).kind, ExprKind::Name(_) | ExprKind::Placeholder(_) | ExprKind::Error) {
-                self.diag(Code::ArgumentNotReference, span, format!("argument `{name}` must be {want}, not an expression"));
+                self.diag(
+                    Code::ArgumentNotReference,
+                    span,
+                    format!("argument `{name}` must be {want}, not an expression"),
+                );
             }
             return;
         };
@@ -249,7 +291,11 @@ impl Checker<'_> {
                 DataKind::Pers => "a persistent",
                 _ => "a variable",
             };
-            self.diag(Code::ArgumentNotReference, span, format!("argument `{name}` must be {want}, but this is {what}"));
+            self.diag(
+                Code::ArgumentNotReference,
+                span,
+                format!("argument `{name}` must be {want}, but this is {what}"),
+            );
         }
     }
 
@@ -268,7 +314,8 @@ impl Checker<'_> {
             Some(data) if self.data(data).optional => {
                 let info = self.data(data);
                 let (ty, rank) = (info.ty, info.rank);
-                let fits = param.is_switch() && ty == types::SWITCH || self.types.compatible(param.ty, ty) && (rank == param.rank || param.rank == ANY_RANK);
+                let fits = param.is_switch() && ty == types::SWITCH
+                    || self.types.compatible(param.ty, ty) && (rank == param.rank || param.rank == ANY_RANK);
                 if !fits && !param.is_switch() {
                     let (want, found) = (self.describe(param.ty, param.rank), self.describe(ty, rank));
                     let name = &param.display;
@@ -285,4 +332,3 @@ impl Checker<'_> {
         }
     }
 }
-

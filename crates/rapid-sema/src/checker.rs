@@ -60,7 +60,16 @@ impl<'a> Checker<'a> {
         Checker {
             files,
             types: Types::new(),
-            core: CoreTypes { num: error, dnum: error, bool_: error, string: error, pos: error, orient: error, errnum: error, intnum: error },
+            core: CoreTypes {
+                num: error,
+                dnum: error,
+                bool_: error,
+                string: error,
+                pos: error,
+                orient: error,
+                errnum: error,
+                intnum: error,
+            },
             known,
             scopes: Scopes::default(),
             datas: Vec::new(),

@@ -25,7 +25,9 @@ pub(crate) struct ModuleRef<'m> {
 enum Level {
     Builtin,
     /// Module index; `local` for LOCAL declarations.
-    Module { local: bool },
+    Module {
+        local: bool,
+    },
 }
 
 impl Checker<'_> {
@@ -71,7 +73,9 @@ impl Checker<'_> {
                     let read_only = entry.entry.kind == EntryKind::ReadOnlyData;
                     self.declare_data(decl, Level::Builtin, read_only, &cat.module.arena, cat.text.as_str());
                 }
-                Item::Routine(routine) => self.declare_routine(routine, Level::Builtin, Some(entry.chapter), cat.text.as_str()),
+                Item::Routine(routine) => {
+                    self.declare_routine(routine, Level::Builtin, Some(entry.chapter), cat.text.as_str())
+                }
                 _ => {}
             }
         }
@@ -125,9 +129,12 @@ impl Checker<'_> {
                         let level = Level::Module { local: decl.scope == DeclScope::Local };
                         self.declare_data(decl, level, false, &m.module.arena, &self.files[m.file].text);
                     }
-                    Item::Routine(routine) => {
-                        self.declare_routine(routine, Level::Module { local: routine.local }, None, &self.files[m.file].text)
-                    }
+                    Item::Routine(routine) => self.declare_routine(
+                        routine,
+                        Level::Module { local: routine.local },
+                        None,
+                        &self.files[m.file].text,
+                    ),
                     _ => {}
                 }
             }
@@ -145,7 +152,11 @@ impl Checker<'_> {
                 self.enter(m.file, idx);
                 let first_path = self.files[modules[first].file].path.clone();
                 let text = self.text(name.span);
-                self.diag(Code::DuplicateModule, name.span, format!("module `{text}` is already in this task (in {first_path})"));
+                self.diag(
+                    Code::DuplicateModule,
+                    name.span,
+                    format!("module `{text}` is already in this task (in {first_path})"),
+                );
             } else {
                 names.insert(name.sym, idx);
             }
@@ -186,7 +197,11 @@ impl Checker<'_> {
                     Some(first) => {
                         let text = self.text(name.span);
                         let other = self.files.get(first_file(self, first)).map_or(String::new(), |f| f.path.clone());
-                        self.diag(Code::AmbiguousGlobal, name.span, format!("global `{text}` is also declared in another module of the task ({other})"));
+                        self.diag(
+                            Code::AmbiguousGlobal,
+                            name.span,
+                            format!("global `{text}` is also declared in another module of the task ({other})"),
+                        );
                     }
                 }
             }
@@ -234,14 +249,22 @@ impl Checker<'_> {
                     let base_ty = self.resolve_type_name(*base, level == Level::Builtin);
                     if level != Level::Builtin && matches!(self.types.info(base_ty).kind, TypeKind::Alias(_)) {
                         let (b, n) = (self.text(base.span), self.text(def.name().span));
-                        self.diag(Code::AliasOfAlias, base.span, format!("ALIAS `{n}` is defined upon `{b}`, which is itself an alias type"));
+                        self.diag(
+                            Code::AliasOfAlias,
+                            base.span,
+                            format!("ALIAS `{n}` is defined upon `{b}`, which is itself an alias type"),
+                        );
                     }
                     self.types.set_kind(ty, TypeKind::Alias(base_ty));
                 }
                 TypeDefKind::Record { components, .. } => {
                     let fields = components
                         .iter()
-                        .map(|c| Field { name: c.name.sym, display: c.name.span.text(text).to_string(), ty: self.resolve_type_name(c.ty, level == Level::Builtin) })
+                        .map(|c| Field {
+                            name: c.name.sym,
+                            display: c.name.span.text(text).to_string(),
+                            ty: self.resolve_type_name(c.ty, level == Level::Builtin),
+                        })
                         .collect();
                     self.types.set_kind(ty, TypeKind::Record(fields));
                     records.push((ty, def.name().span));
@@ -303,7 +326,14 @@ impl Checker<'_> {
 
     // ---- data and routines ------------------------------------------------------------
 
-    fn declare_data(&mut self, decl: &DataDecl, level: Level, read_only: bool, arena: &rapid_syntax::ast::Arena, text: &str) {
+    fn declare_data(
+        &mut self,
+        decl: &DataDecl,
+        level: Level,
+        read_only: bool,
+        arena: &rapid_syntax::ast::Arena,
+        text: &str,
+    ) {
         let builtin = level == Level::Builtin;
         let ty = self.resolve_type_name(decl.ty, builtin);
         let kind = match (read_only, decl.storage) {
@@ -386,4 +416,3 @@ fn item_name(item: &Item) -> Option<(Name, bool)> {
         Item::Placeholder(..) => None,
     }
 }
-

@@ -50,7 +50,9 @@ impl Checker<'_> {
             ExprKind::Index { base, indices } => {
                 self.is_constant(arena, base) && arena.list(indices).iter().all(|&i| self.is_constant(arena, i))
             }
-            ExprKind::Field { base, .. } | ExprKind::Paren(base) | ExprKind::Unary { operand: base, .. } => self.is_constant(arena, base),
+            ExprKind::Field { base, .. } | ExprKind::Paren(base) | ExprKind::Unary { operand: base, .. } => {
+                self.is_constant(arena, base)
+            }
             ExprKind::Binary { lhs, rhs, .. } => self.is_constant(arena, lhs) && self.is_constant(arena, rhs),
             ExprKind::Aggregate(items) => arena.list(items).iter().all(|&i| self.is_constant(arena, i)),
             ExprKind::Call { .. } => false,
@@ -61,7 +63,9 @@ impl Checker<'_> {
     pub(crate) fn is_literal(&self, arena: &Arena, id: ExprId) -> bool {
         match arena.expr(id).kind {
             ExprKind::Num | ExprKind::Str | ExprKind::Bool(_) | ExprKind::Placeholder(_) | ExprKind::Error => true,
-            ExprKind::Unary { op: UnaryOp::Neg | UnaryOp::Plus, operand } => matches!(arena.expr(operand).kind, ExprKind::Num),
+            ExprKind::Unary { op: UnaryOp::Neg | UnaryOp::Plus, operand } => {
+                matches!(arena.expr(operand).kind, ExprKind::Num)
+            }
             ExprKind::Aggregate(items) => arena.list(items).iter().all(|&i| self.is_literal(arena, i)),
             _ => false,
         }

@@ -19,7 +19,11 @@ impl Checker<'_> {
     pub(crate) fn check_data_decl(&mut self, decl: &DataDecl, arena: &Arena, data: u32, in_routine: bool) {
         if in_routine {
             if decl.storage == Storage::Pers {
-                self.diag(Code::PersInRoutine, decl.span, "a PERS may be declared only at module level, not inside a routine".into());
+                self.diag(
+                    Code::PersInRoutine,
+                    decl.span,
+                    "a PERS may be declared only at module level, not inside a routine".into(),
+                );
             }
             if let (DeclScope::Local | DeclScope::Task, Some(span)) = (decl.scope, decl.scope_span) {
                 let word = self.text(span).to_ascii_uppercase();
@@ -34,27 +38,52 @@ impl Checker<'_> {
         let type_name = self.type_name(ty);
         if class != ValueClass::Value && decl.storage != Storage::Var {
             let word = if decl.storage == Storage::Pers { "PERS" } else { "CONST" };
-            self.diag(Code::NonValueDeclaration, decl.span, format!("`{type_name}` is a {} type: it cannot be declared {word}", class_word(class)));
+            self.diag(
+                Code::NonValueDeclaration,
+                decl.span,
+                format!("`{type_name}` is a {} type: it cannot be declared {word}", class_word(class)),
+            );
             return;
         }
         match decl.init {
             Some(init) if class == ValueClass::NonValue => {
                 let span = arena.expr(init).span;
-                self.diag(Code::NonValueDeclaration, span, format!("`{name}` has the non-value type `{type_name}` and cannot be given an initial value"));
+                self.diag(
+                    Code::NonValueDeclaration,
+                    span,
+                    format!("`{name}` has the non-value type `{type_name}` and cannot be given an initial value"),
+                );
             }
             Some(init) if class == ValueClass::SemiValue => {
                 let span = arena.expr(init).span;
-                self.diag(Code::SemiValueWrite, span, format!("signal `{name}` cannot be initialised; signals are bound by the I/O configuration or AliasIO"));
+                self.diag(
+                    Code::SemiValueWrite,
+                    span,
+                    format!(
+                        "signal `{name}` cannot be initialised; signals are bound by the I/O configuration or AliasIO"
+                    ),
+                );
             }
             Some(init) => self.check_init(decl, arena, init, ty, &dims),
             None => self.check_missing_init(decl),
         }
     }
 
-    fn check_init(&mut self, decl: &DataDecl, arena: &Arena, init: rapid_syntax::ast::ExprId, ty: types::TypeId, dims: &[u32; 3]) {
+    fn check_init(
+        &mut self,
+        decl: &DataDecl,
+        arena: &Arena,
+        init: rapid_syntax::ast::ExprId,
+        ty: types::TypeId,
+        dims: &[u32; 3],
+    ) {
         let span = arena.expr(init).span;
         if decl.storage == Storage::Pers && !self.is_literal(arena, init) {
-            self.diag(Code::PersInitNotLiteral, span, "the initial value of a PERS must be a literal expression (literals and aggregates of literals)".into());
+            self.diag(
+                Code::PersInitNotLiteral,
+                span,
+                "the initial value of a PERS must be a literal expression (literals and aggregates of literals)".into(),
+            );
         } else if decl.storage != Storage::Pers && !self.is_constant(arena, init) {
             let what = if decl.storage == Storage::Const { "a CONST" } else { "a VAR" };
             self.diag(Code::ConstInitNotConstant, span, format!("the initial value of {what} must be a constant expression: no variables, persistents or function calls"));
@@ -72,7 +101,11 @@ impl Checker<'_> {
             }
             (Storage::Pers, DeclScope::Local | DeclScope::Task) => {
                 let name = self.text(decl.name.span);
-                self.diag(Code::PersInitMissing, decl.span, format!("LOCAL and TASK persistents need an initial value; `{name}` has none"));
+                self.diag(
+                    Code::PersInitMissing,
+                    decl.span,
+                    format!("LOCAL and TASK persistents need an initial value; `{name}` has none"),
+                );
             }
             _ => {}
         }
@@ -90,10 +123,18 @@ impl Checker<'_> {
             match self.const_num(arena, dim) {
                 Some(v) if v >= 1.0 && v.fract() == 0.0 && v <= MAX_DIM_SIZE => *slot = v as u32,
                 Some(v) => {
-                    self.diag(Code::BadArrayDimension, expr.span, format!("array dimension {v} is not a positive integer"));
+                    self.diag(
+                        Code::BadArrayDimension,
+                        expr.span,
+                        format!("array dimension {v} is not a positive integer"),
+                    );
                 }
                 None => {
-                    self.diag(Code::BadArrayDimension, expr.span, "an array dimension must be a constant expression with a positive integer value".into());
+                    self.diag(
+                        Code::BadArrayDimension,
+                        expr.span,
+                        "an array dimension must be a constant expression with a positive integer value".into(),
+                    );
                 }
             }
         }
@@ -107,7 +148,11 @@ impl Checker<'_> {
                 let class = self.types.class(ty);
                 if class != ValueClass::Value {
                     let name = self.type_name(ty);
-                    self.diag(Code::FuncReturnsNonValue, ret.span, format!("a FUNC must return a value type; `{name}` is a {} type", class_word(class)));
+                    self.diag(
+                        Code::FuncReturnsNonValue,
+                        ret.span,
+                        format!("a FUNC must return a value type; `{name}` is a {} type", class_word(class)),
+                    );
                 }
             }
         }

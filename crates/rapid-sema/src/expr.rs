@@ -74,7 +74,11 @@ impl Checker<'_> {
             ExprKind::Aggregate(items) => match expect {
                 Some(expect) => self.aggregate(arena, items, expr.span, expect),
                 None => {
-                    self.diag(Code::AggregateWithoutType, expr.span, "the type of this aggregate cannot be told from its context".into());
+                    self.diag(
+                        Code::AggregateWithoutType,
+                        expr.span,
+                        "the type of this aggregate cannot be told from its context".into(),
+                    );
                     for &item in arena.list(items) {
                         self.expr(arena, item, None);
                     }
@@ -103,7 +107,8 @@ impl Checker<'_> {
         let what = match what {
             What::Text(text) => text.to_string(),
             What::Component(record, idx) => {
-                let field = self.types.record_fields(record).and_then(|f| f.get(idx)).map_or("?", |f| f.display.as_str());
+                let field =
+                    self.types.record_fields(record).and_then(|f| f.get(idx)).map_or("?", |f| f.display.as_str());
                 format!("component `{field}`")
             }
         };
@@ -128,7 +133,11 @@ impl Checker<'_> {
         let may_exceed = rapid_syntax::literal::decimal_magnitude_bound(text) >= 38;
         if may_exceed && !wants_dnum && num_value(text).unwrap_or(0.0).abs() > NUM_MAX {
             let text = self.text(span);
-            self.diag(Code::NumLiteralRange, span, format!("`{text}` is outside the range of num (about ±3.4E38); use a dnum"));
+            self.diag(
+                Code::NumLiteralRange,
+                span,
+                format!("`{text}` is outside the range of num (about ±3.4E38); use a dnum"),
+            );
         }
         Ty::scalar(if wants_dnum { self.core.dnum } else { self.core.num })
     }
@@ -169,7 +178,11 @@ impl Checker<'_> {
         }
         if base_ty.rank != n_indices && base_ty.rank != ANY_RANK {
             let text = self.text(arena.expr(base).span);
-            self.diag(Code::BadIndex, span, format!("`{text}` has {} dimensions but is indexed with {n_indices}", base_ty.rank));
+            self.diag(
+                Code::BadIndex,
+                span,
+                format!("`{text}` has {} dimensions but is indexed with {n_indices}", base_ty.rank),
+            );
             return Ty::ERROR;
         }
         Ty::scalar(base_ty.ty)
@@ -182,10 +195,15 @@ impl Checker<'_> {
         }
         let field_text = self.text(span).rsplit('.').next().unwrap_or("").trim();
         if base_ty.rank > 0 {
-            self.diag(Code::UnknownComponent, span, format!("an array has no component `{field_text}`; index it first"));
+            self.diag(
+                Code::UnknownComponent,
+                span,
+                format!("an array has no component `{field_text}`; index it first"),
+            );
             return Ty::ERROR;
         }
-        let found = self.types.record_fields(base_ty.ty).map(|fields| fields.iter().find(|f| f.name == field).map(|f| f.ty));
+        let found =
+            self.types.record_fields(base_ty.ty).map(|fields| fields.iter().find(|f| f.name == field).map(|f| f.ty));
         match found {
             Some(Some(ty)) => Ty::scalar(ty),
             Some(None) => {
@@ -195,13 +213,24 @@ impl Checker<'_> {
             }
             None => {
                 let ty = self.type_name(base_ty.ty);
-                self.diag(Code::UnknownComponent, span, format!("`{ty}` is not a record type, so it has no component `{field_text}`"));
+                self.diag(
+                    Code::UnknownComponent,
+                    span,
+                    format!("`{ty}` is not a record type, so it has no component `{field_text}`"),
+                );
                 Ty::ERROR
             }
         }
     }
 
-    fn unary_expr(&mut self, arena: &Arena, op: UnaryOp, operand: ExprId, span: Span, expect: Option<Expect<'_>>) -> Ty {
+    fn unary_expr(
+        &mut self,
+        arena: &Arena,
+        op: UnaryOp,
+        operand: ExprId,
+        span: Span,
+        expect: Option<Expect<'_>>,
+    ) -> Ty {
         let inner_expect = match op {
             UnaryOp::Not => None,
             _ => expect.filter(|e| e.dims.is_empty()),
@@ -233,9 +262,15 @@ impl Checker<'_> {
         let (l, r) = self.operand_types(arena, op, lhs, rhs);
         if l.ty == types::ERROR || r.ty == types::ERROR {
             return match op {
-                BinaryOp::Lt | BinaryOp::Le | BinaryOp::Eq | BinaryOp::Gt | BinaryOp::Ge | BinaryOp::Ne | BinaryOp::And | BinaryOp::Or | BinaryOp::Xor => {
-                    Ty::scalar(self.core.bool_)
-                }
+                BinaryOp::Lt
+                | BinaryOp::Le
+                | BinaryOp::Eq
+                | BinaryOp::Gt
+                | BinaryOp::Ge
+                | BinaryOp::Ne
+                | BinaryOp::And
+                | BinaryOp::Or
+                | BinaryOp::Xor => Ty::scalar(self.core.bool_),
                 _ => Ty::ERROR,
             };
         }
@@ -244,7 +279,11 @@ impl Checker<'_> {
             None => {
                 if matches!(op, BinaryOp::Eq | BinaryOp::Ne) && self.types.class(l.ty) == ValueClass::NonValue {
                     let got = self.type_name(l.ty);
-                    self.diag(Code::NonValueUse, span, format!("`{got}` is a non-value type: its data cannot be compared"));
+                    self.diag(
+                        Code::NonValueUse,
+                        span,
+                        format!("`{got}` is a non-value type: its data cannot be compared"),
+                    );
                     return Ty::scalar(self.core.bool_);
                 }
                 let (a, b) = (self.describe(l.ty, l.rank), self.describe(r.ty, r.rank));
@@ -280,7 +319,8 @@ impl Checker<'_> {
         let (lv, rv) = (self.types.value_of(l.ty), self.types.value_of(r.ty));
         if matches!(op, BinaryOp::Eq | BinaryOp::Ne) {
             let same_shape = l.rank == r.rank;
-            let value = self.types.class(l.ty) != ValueClass::NonValue && self.types.class(r.ty) != ValueClass::NonValue;
+            let value =
+                self.types.class(l.ty) != ValueClass::NonValue && self.types.class(r.ty) != ValueClass::NonValue;
             let comparable = self.types.compatible(l.ty, r.ty) || self.types.compatible(r.ty, l.ty);
             return (same_shape && value && comparable).then_some(c.bool_);
         }
@@ -318,7 +358,11 @@ impl Checker<'_> {
         }
         if let Some((&size, inner_dims)) = expect.dims.split_first() {
             if size != 0 && size as usize != items.len() {
-                self.diag(Code::AggregateShape, span, format!("the array has {size} elements but the aggregate gives {}", items.len()));
+                self.diag(
+                    Code::AggregateShape,
+                    span,
+                    format!("the array has {size} elements but the aggregate gives {}", items.len()),
+                );
             }
             let inner = Expect { ty: expect.ty, dims: inner_dims };
             for &item in items {
@@ -329,12 +373,20 @@ impl Checker<'_> {
         let record = self.types.value_of(expect.ty);
         let Some(n_fields) = self.types.record_fields(record).map(<[_]>::len) else {
             let ty = self.type_name(expect.ty);
-            self.diag(Code::TypeMismatch, span, format!("an aggregate cannot be a `{ty}`: only records and arrays are written as aggregates"));
+            self.diag(
+                Code::TypeMismatch,
+                span,
+                format!("an aggregate cannot be a `{ty}`: only records and arrays are written as aggregates"),
+            );
             return Ty::ERROR;
         };
         if n_fields != items.len() {
             let ty = self.type_name(expect.ty);
-            self.diag(Code::AggregateShape, span, format!("`{ty}` has {n_fields} components but the aggregate gives {}", items.len()));
+            self.diag(
+                Code::AggregateShape,
+                span,
+                format!("`{ty}` has {n_fields} components but the aggregate gives {}", items.len()),
+            );
         }
         for (idx, &item) in items.iter().enumerate() {
             match self.types.record_fields(record).and_then(|f| f.get(idx)).map(|f| f.ty) {

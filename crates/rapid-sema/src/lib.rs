@@ -22,6 +22,8 @@ mod symbols;
 mod syntax;
 mod types;
 
+use std::sync::OnceLock;
+
 use rapid_syntax::ast::{Arena, BodyItem, Item};
 use rapid_syntax::{cap_errors, parse_body, parse_outline, Interner, Parse, Span, SyntaxError};
 
@@ -41,21 +43,27 @@ pub struct Options {
 /// Checks the modules of one task (one program) together and returns every
 /// diagnostic, ordered by file and position.
 pub fn check(files: &[SourceInput], options: &Options) -> Vec<Diagnostic> {
-    let mut interner = Interner::default();
-    let catalogue = rapid_lib::load(&mut interner);
+    let (base_interner, catalogue) = catalogue();
+    let mut interner = base_interner.clone();
     let mut diags = Vec::new();
     let parses: Vec<Option<Parse>> = files
         .iter()
         .enumerate()
         .map(|(file, input)| match input.unreadable {
             Some(_) => {
-                diags.push(Diagnostic::new(file, Code::EncryptedModule, Span::default(), "this is an ABB-encrypted module; it cannot be read or checked"));
+                diags.push(Diagnostic::new(
+                    file,
+                    Code::EncryptedModule,
+                    Span::default(),
+                    "this is an ABB-encrypted module; it cannot be read or checked",
+                ));
                 None
             }
             None => Some(parse_outline(&input.text, &mut interner)),
         })
         .collect();
-    let mut syntax_errors: Vec<Vec<SyntaxError>> = parses.iter().map(|p| p.as_ref().map_or(Vec::new(), |p| p.errors.clone())).collect();
+    let mut syntax_errors: Vec<Vec<SyntaxError>> =
+        parses.iter().map(|p| p.as_ref().map_or(Vec::new(), |p| p.errors.clone())).collect();
     let modules: Vec<ModuleRef<'_>> = parses
         .iter()
         .enumerate()
@@ -70,13 +78,24 @@ pub fn check(files: &[SourceInput], options: &Options) -> Vec<Diagnostic> {
             }
         }
     } else {
-        check_semantics(files, &modules, &catalogue, &mut interner, &mut syntax_errors, &mut diags);
+        check_semantics(files, &modules, catalogue, &mut interner, &mut syntax_errors, &mut diags);
     }
     for (file, errors) in syntax_errors.into_iter().enumerate() {
         diags.extend(cap_errors(errors).iter().map(|e| syntax::to_diagnostic(file, e)));
     }
     diags.sort_by_key(|d| (d.file, d.span.start, d.span.end));
     diags
+}
+
+/// The catalogue, parsed once per process, with the interner that holds its names;
+/// each check starts from a copy of that interner, so the catalogue's symbols hold.
+fn catalogue() -> &'static (Interner, rapid_lib::LoadedCatalogue) {
+    static BASE: OnceLock<(Interner, rapid_lib::LoadedCatalogue)> = OnceLock::new();
+    BASE.get_or_init(|| {
+        let mut interner = Interner::default();
+        let catalogue = rapid_lib::load(&mut interner);
+        (interner, catalogue)
+    })
 }
 
 fn routines<'m>(m: &ModuleRef<'m>) -> impl Iterator<Item = &'m rapid_syntax::ast::Routine> {
@@ -94,7 +113,11 @@ fn check_semantics(
     syntax_errors: &mut [Vec<SyntaxError>],
     diags: &mut Vec<Diagnostic>,
 ) {
-    let known = WellKnown { switch: interner.intern("switch"), anytype: interner.intern("anytype"), placeholder_id: interner.intern("<ID>") };
+    let known = WellKnown {
+        switch: interner.intern("switch"),
+        anytype: interner.intern("anytype"),
+        placeholder_id: interner.intern("<ID>"),
+    };
     let mut ck = Checker::new(files, known);
     ck.load_builtins(catalogue, interner);
     ck.declare_modules(modules);
@@ -130,7 +153,9 @@ fn check_module_items(ck: &mut Checker<'_>, modules: &[ModuleRef<'_>]) {
         for item in &m.module.items {
             match item {
                 Item::Data(decl) => {
-                    let Some(symbols::Def::Data(data)) = ck.scopes.lookup_module_level(idx, decl.name.sym) else { continue };
+                    let Some(symbols::Def::Data(data)) = ck.scopes.lookup_module_level(idx, decl.name.sym) else {
+                        continue;
+                    };
                     ck.check_data_decl(decl, &m.module.arena, data, false);
                 }
                 Item::Routine(routine) => ck.check_routine_header(routine),

@@ -22,7 +22,12 @@ type Batch = (Vec<BodyItem>, Arena);
 
 /// Parses the body at `body_span` on a scoped thread and checks its items here.
 /// Returns the body's syntax errors.
-pub(crate) fn check_body(ck: &mut Checker<'_>, text: &str, body_span: Span, interner: &mut Interner) -> Vec<SyntaxError> {
+pub(crate) fn check_body(
+    ck: &mut Checker<'_>,
+    text: &str,
+    body_span: Span,
+    interner: &mut Interner,
+) -> Vec<SyntaxError> {
     let (batch_tx, batch_rx) = mpsc::sync_channel::<Batch>(BATCHES_IN_FLIGHT);
     let (arena_tx, arena_rx) = mpsc::channel::<Arena>();
     std::thread::scope(|scope| {

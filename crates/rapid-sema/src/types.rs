@@ -69,7 +69,13 @@ pub(crate) const SWITCH: TypeId = TypeId(2);
 impl Types {
     pub(crate) fn new() -> Types {
         let special = |display: &str, kind| TypeInfo { display: display.into(), kind, span: Span::default() };
-        Types { infos: vec![special("<error>", TypeKind::Error), special("anytype", TypeKind::Any), special("switch", TypeKind::Switch)] }
+        Types {
+            infos: vec![
+                special("<error>", TypeKind::Error),
+                special("anytype", TypeKind::Any),
+                special("switch", TypeKind::Switch),
+            ],
+        }
     }
 
     pub(crate) fn add(&mut self, info: TypeInfo) -> TypeId {
@@ -145,7 +151,11 @@ impl Types {
             TypeKind::SemiValue(_) => ValueClass::SemiValue,
             TypeKind::Record(fields) => {
                 let non_value = fields.iter().any(|f| self.class_at_depth(f.ty, depth + 1) == ValueClass::NonValue);
-                if non_value { ValueClass::NonValue } else { ValueClass::Value }
+                if non_value {
+                    ValueClass::NonValue
+                } else {
+                    ValueClass::Value
+                }
             }
             _ => ValueClass::Value,
         }

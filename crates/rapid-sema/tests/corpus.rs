@@ -22,7 +22,8 @@ fn is_module_file(path: &Path) -> bool {
 }
 
 fn sorted_entries(dir: &Path) -> Vec<PathBuf> {
-    let mut entries: Vec<PathBuf> = fs::read_dir(dir).map(|rd| rd.filter_map(|e| e.ok()).map(|e| e.path()).collect()).unwrap_or_default();
+    let mut entries: Vec<PathBuf> =
+        fs::read_dir(dir).map(|rd| rd.filter_map(|e| e.ok()).map(|e| e.path()).collect()).unwrap_or_default();
     entries.sort();
     entries
 }
@@ -56,7 +57,13 @@ fn realistic_modules_check_clean() {
             failures.push(render(&inputs, &diags));
         }
     }
-    assert!(failures.is_empty(), "{} of {} modules do not check clean:\n{}", failures.len(), files.len(), failures.join("\n"));
+    assert!(
+        failures.is_empty(),
+        "{} of {} modules do not check clean:\n{}",
+        failures.len(),
+        files.len(),
+        failures.join("\n")
+    );
 }
 
 #[test]
@@ -68,7 +75,8 @@ fn program_folders_check_clean() {
         let mut inputs = Vec::new();
         for path in sorted_entries(folder) {
             let is_pgf_module = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("pgf"))
-                && fs::read_to_string(&path).is_ok_and(|t| t.lines().any(|l| l.trim_start().to_ascii_uppercase().starts_with("MODULE")));
+                && fs::read_to_string(&path)
+                    .is_ok_and(|t| t.lines().any(|l| l.trim_start().to_ascii_uppercase().starts_with("MODULE")));
             if is_module_file(&path) || is_pgf_module {
                 inputs.push(load(&path));
             }
@@ -110,8 +118,10 @@ fn faulty_inputs_report_exactly_their_codes_and_lines() {
         let expected = expectations(path, &inputs[0]);
         let diags = check(&inputs, &Options::default());
         let index = LineIndex::new(&inputs[0].text);
-        let actual: BTreeSet<(String, u32)> =
-            diags.iter().map(|d| (d.code.as_str().to_string(), index.line_col(&inputs[0].text, d.span.start).line)).collect();
+        let actual: BTreeSet<(String, u32)> = diags
+            .iter()
+            .map(|d| (d.code.as_str().to_string(), index.line_col(&inputs[0].text, d.span.start).line))
+            .collect();
         if actual != expected {
             let missing: Vec<_> = expected.difference(&actual).collect();
             let extra: Vec<_> = actual.difference(&expected).collect();
@@ -119,5 +129,11 @@ fn faulty_inputs_report_exactly_their_codes_and_lines() {
             failures.push(format!("{name}: missing {missing:?}, unexpected {extra:?}\n{}", render(&inputs, &diags)));
         }
     }
-    assert!(failures.is_empty(), "{} of {} faulty inputs differ:\n{}", failures.len(), files.len(), failures.join("\n"));
+    assert!(
+        failures.is_empty(),
+        "{} of {} faulty inputs differ:\n{}",
+        failures.len(),
+        files.len(),
+        failures.join("\n")
+    );
 }

@@ -19,7 +19,12 @@ fn render() -> String {
             Severity::Error => "error",
             Severity::Warning => "warning",
         };
-        out.push_str(&format!("| {} | {severity} | {} | {} |\n", code.as_str(), code.name(), code.summary().replace('|', "\\|")));
+        out.push_str(&format!(
+            "| {} | {severity} | {} | {} |\n",
+            code.as_str(),
+            code.name(),
+            code.summary().replace('|', "\\|")
+        ));
     }
     out
 }
@@ -33,13 +38,20 @@ fn diagnostics_doc_is_fresh() {
         return;
     }
     let actual = fs::read_to_string(&path).unwrap_or_default();
-    assert!(actual == expected, "docs/diagnostics.md is stale: run `UPDATE_DOCS=1 cargo test -p rapid-sema --test docs_fresh`");
+    assert!(
+        actual == expected,
+        "docs/diagnostics.md is stale: run `UPDATE_DOCS=1 cargo test -p rapid-sema --test docs_fresh`"
+    );
 }
 
 #[test]
 fn every_code_has_a_fixture() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/check/err");
-    let names: Vec<String> = fs::read_dir(&dir).unwrap().filter_map(|e| e.ok()).map(|e| e.file_name().to_string_lossy().into_owned()).collect();
+    let names: Vec<String> = fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .collect();
     // Codes that need several files or a whole program are tested in tests/program.rs
     // and the CLI tests instead.
     let elsewhere = ["E0208", "E0216", "E0130", "E0111"];

@@ -124,7 +124,7 @@ pub struct Routine {
     /// Where the body starts (just after the header) and ends (before the END keyword).
     pub body_span: Span,
     /// The body, when the file was parsed with `BodyMode::Keep`.
-    pub body: Option<Body>,
+    pub body: Option<Box<Body>>,
     pub span: Span,
 }
 
@@ -188,7 +188,11 @@ pub enum BodyItem {
     Decl(DataDecl),
     Stmt(Stmt),
     /// A handler keyword starts a new section.
-    Section { section: Section, keyword: Span, error_numbers: Vec<ExprId> },
+    Section {
+        section: Section,
+        keyword: Span,
+        error_numbers: Vec<ExprId>,
+    },
     /// The body is complete (streamed bodies only): a sink that batches items flushes.
     End,
 }
@@ -201,15 +205,45 @@ pub struct Stmt {
 
 #[derive(Debug, Clone)]
 pub enum StmtKind {
-    Assign { target: ExprId, value: ExprId },
-    Call { name: Name, args: ArgList },
+    Assign {
+        target: ExprId,
+        value: ExprId,
+    },
+    Call {
+        name: Name,
+        args: ArgList,
+    },
     /// `% expr % args;`
-    LateCall { callee: ExprId, args: ArgList },
-    If { cond: ExprId, then: Vec<Stmt>, elifs: Vec<ElseIf>, els: Option<Vec<Stmt>> },
-    CompactIf { cond: ExprId, stmt: Box<Stmt> },
-    For { var: Name, from: ExprId, to: ExprId, step: Option<ExprId>, body: Vec<Stmt> },
-    While { cond: ExprId, body: Vec<Stmt> },
-    Test { subject: ExprId, cases: Vec<Case>, default: Option<Vec<Stmt>> },
+    LateCall {
+        callee: ExprId,
+        args: ArgList,
+    },
+    If {
+        cond: ExprId,
+        then: Vec<Stmt>,
+        elifs: Vec<ElseIf>,
+        els: Option<Vec<Stmt>>,
+    },
+    CompactIf {
+        cond: ExprId,
+        stmt: Box<Stmt>,
+    },
+    For {
+        var: Name,
+        from: ExprId,
+        to: ExprId,
+        step: Option<ExprId>,
+        body: Vec<Stmt>,
+    },
+    While {
+        cond: ExprId,
+        body: Vec<Stmt>,
+    },
+    Test {
+        subject: ExprId,
+        cases: Vec<Case>,
+        default: Option<Vec<Stmt>>,
+    },
     Goto(Name),
     Label(Name),
     Return(Option<ExprId>),
@@ -217,7 +251,10 @@ pub enum StmtKind {
     Retry,
     TryNext,
     Exit,
-    Connect { target: ExprId, trap: Name },
+    Connect {
+        target: ExprId,
+        trap: Name,
+    },
     /// `<SMT>` (or `<EIT>`/`<CSE>` left where they stand in for a clause).
     Placeholder(Placeholder),
     /// A statement that could not be parsed (the error is reported).
@@ -318,13 +355,29 @@ pub enum ExprKind {
     /// A data name (variable, persistent, constant or parameter).
     Name(Symbol),
     /// `base{i, j}`.
-    Index { base: ExprId, indices: ListRange },
+    Index {
+        base: ExprId,
+        indices: ListRange,
+    },
     /// `base.component`; the component name ends the expression's span.
-    Field { base: ExprId, field: Symbol },
+    Field {
+        base: ExprId,
+        field: Symbol,
+    },
     /// `name(args)`.
-    Call { name: Symbol, args: ArgList },
-    Unary { op: UnaryOp, operand: ExprId },
-    Binary { op: BinaryOp, lhs: ExprId, rhs: ExprId },
+    Call {
+        name: Symbol,
+        args: ArgList,
+    },
+    Unary {
+        op: UnaryOp,
+        operand: ExprId,
+    },
+    Binary {
+        op: BinaryOp,
+        lhs: ExprId,
+        rhs: ExprId,
+    },
     Paren(ExprId),
     /// `[e1, e2, ...]`.
     Aggregate(ListRange),

@@ -45,7 +45,8 @@ impl Printer<'_> {
         match &def.kind {
             TypeDefKind::Alias { base, name } => format!("({local}alias {} {})", self.name(*base), self.name(*name)),
             TypeDefKind::Record { name, components } => {
-                let comps: Vec<String> = components.iter().map(|c| format!("({} {})", self.name(c.ty), self.name(c.name))).collect();
+                let comps: Vec<String> =
+                    components.iter().map(|c| format!("({} {})", self.name(c.ty), self.name(c.name))).collect();
                 format!("({local}record {} {})", self.name(*name), comps.join(" "))
             }
         }
@@ -83,7 +84,8 @@ impl Printer<'_> {
             self.stmts(&mut out, &body.stmts, &body.arena, 1);
             for (word, handler) in [("backward", &body.backward), ("error", &body.error), ("undo", &body.undo)] {
                 if let Some(handler) = handler {
-                    let numbers: Vec<String> = handler.error_numbers.iter().map(|&n| self.expr(&body.arena, n)).collect();
+                    let numbers: Vec<String> =
+                        handler.error_numbers.iter().map(|&n| self.expr(&body.arena, n)).collect();
                     let numbers = if numbers.is_empty() { String::new() } else { format!(" ({})", numbers.join(" ")) };
                     out.push_str(&format!("\n  {word}{numbers}:"));
                     self.stmts(&mut out, &handler.stmts, &body.arena, 2);
@@ -120,9 +122,13 @@ impl Printer<'_> {
     fn stmt(&self, stmt: &Stmt, arena: &Arena, depth: usize) -> String {
         let mut out = String::new();
         match &stmt.kind {
-            StmtKind::Assign { target, value } => out = format!("(assign {} {})", self.expr(arena, *target), self.expr(arena, *value)),
+            StmtKind::Assign { target, value } => {
+                out = format!("(assign {} {})", self.expr(arena, *target), self.expr(arena, *value))
+            }
             StmtKind::Call { name, args } => out = format!("(call {}{})", self.name(*name), self.args(arena, *args)),
-            StmtKind::LateCall { callee, args } => out = format!("(late {}{})", self.expr(arena, *callee), self.args(arena, *args)),
+            StmtKind::LateCall { callee, args } => {
+                out = format!("(late {}{})", self.expr(arena, *callee), self.args(arena, *args))
+            }
             StmtKind::If { cond, then, elifs, els } => {
                 out.push_str(&format!("(if {}", self.expr(arena, *cond)));
                 self.stmts(&mut out, then, arena, depth + 1);
@@ -137,10 +143,17 @@ impl Printer<'_> {
                 }
                 out.push(')');
             }
-            StmtKind::CompactIf { cond, stmt } => out = format!("(if1 {} {})", self.expr(arena, *cond), self.stmt(stmt, arena, depth)),
+            StmtKind::CompactIf { cond, stmt } => {
+                out = format!("(if1 {} {})", self.expr(arena, *cond), self.stmt(stmt, arena, depth))
+            }
             StmtKind::For { var, from, to, step, body } => {
                 let step = step.map(|s| format!(" step {}", self.expr(arena, s))).unwrap_or_default();
-                out.push_str(&format!("(for {} {} {}{step}", self.name(*var), self.expr(arena, *from), self.expr(arena, *to)));
+                out.push_str(&format!(
+                    "(for {} {} {}{step}",
+                    self.name(*var),
+                    self.expr(arena, *from),
+                    self.expr(arena, *to)
+                ));
                 self.stmts(&mut out, body, arena, depth + 1);
                 out.push(')');
             }
@@ -164,12 +177,18 @@ impl Printer<'_> {
             }
             StmtKind::Goto(label) => out = format!("(goto {})", self.name(*label)),
             StmtKind::Label(label) => out = format!("(label {})", self.name(*label)),
-            StmtKind::Return(value) => out = format!("(return{})", value.map(|v| format!(" {}", self.expr(arena, v))).unwrap_or_default()),
-            StmtKind::Raise(value) => out = format!("(raise{})", value.map(|v| format!(" {}", self.expr(arena, v))).unwrap_or_default()),
+            StmtKind::Return(value) => {
+                out = format!("(return{})", value.map(|v| format!(" {}", self.expr(arena, v))).unwrap_or_default())
+            }
+            StmtKind::Raise(value) => {
+                out = format!("(raise{})", value.map(|v| format!(" {}", self.expr(arena, v))).unwrap_or_default())
+            }
             StmtKind::Retry => out.push_str("(retry)"),
             StmtKind::TryNext => out.push_str("(trynext)"),
             StmtKind::Exit => out.push_str("(exit)"),
-            StmtKind::Connect { target, trap } => out = format!("(connect {} {})", self.expr(arena, *target), self.name(*trap)),
+            StmtKind::Connect { target, trap } => {
+                out = format!("(connect {} {})", self.expr(arena, *target), self.name(*trap))
+            }
             StmtKind::Placeholder(ph) => out = format!("{ph:?}"),
             StmtKind::Error => out.push_str("(error)"),
         }
@@ -205,13 +224,19 @@ impl Printer<'_> {
                 let idx: Vec<String> = arena.list(indices).iter().map(|&i| self.expr(arena, i)).collect();
                 format!("(index {} {})", self.expr(arena, base), idx.join(" "))
             }
-            ExprKind::Field { base, field } => format!("(. {} {})", self.expr(arena, base), self.interner.resolve(field)),
+            ExprKind::Field { base, field } => {
+                format!("(. {} {})", self.expr(arena, base), self.interner.resolve(field))
+            }
             ExprKind::Call { args, .. } => {
                 let name = expr.span.text(self.text).split('(').next().unwrap_or("").trim();
                 format!("(fn {name}{})", self.args(arena, args))
             }
-            ExprKind::Unary { op, operand } => format!("({} {})", format!("{op:?}").to_lowercase(), self.expr(arena, operand)),
-            ExprKind::Binary { op, lhs, rhs } => format!("({} {} {})", op.text(), self.expr(arena, lhs), self.expr(arena, rhs)),
+            ExprKind::Unary { op, operand } => {
+                format!("({} {})", format!("{op:?}").to_lowercase(), self.expr(arena, operand))
+            }
+            ExprKind::Binary { op, lhs, rhs } => {
+                format!("({} {} {})", op.text(), self.expr(arena, lhs), self.expr(arena, rhs))
+            }
             ExprKind::Paren(inner) => self.expr(arena, inner),
             ExprKind::Aggregate(items) => {
                 let items: Vec<String> = arena.list(items).iter().map(|&i| self.expr(arena, i)).collect();

@@ -14,7 +14,7 @@ impl Symbol {
 }
 
 /// The table of interned names, shared by every file of one check or run.
-#[derive(Debug, Default)]
+#[derive(Debug, Default, Clone)]
 pub struct Interner {
     map: FxHashMap<Box<str>, Symbol>,
     names: Vec<Box<str>>,

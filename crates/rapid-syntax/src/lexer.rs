@@ -34,7 +34,14 @@ fn is_ident_continue(c: char) -> bool {
 
 impl<'t> Lexer<'t> {
     pub fn new(text: &'t str) -> Lexer<'t> {
-        Lexer { text, bytes: text.as_bytes(), pos: 0, comments: Vec::new(), errors: Vec::new(), unterminated_string_ends: Vec::new() }
+        Lexer {
+            text,
+            bytes: text.as_bytes(),
+            pos: 0,
+            comments: Vec::new(),
+            errors: Vec::new(),
+            unterminated_string_ends: Vec::new(),
+        }
     }
 
     /// Starts lexing at byte `pos` (used to re-lex one routine body).
@@ -314,7 +321,9 @@ impl<'t> Lexer<'t> {
         loop {
             match self.bytes.get(self.pos) {
                 Some(b) if b.is_ascii_alphanumeric() || *b == b'_' => self.pos += 1,
-                Some(b) if *b >= 0x80 && is_ident_continue(self.current_char()) => self.pos += self.current_char().len_utf8(),
+                Some(b) if *b >= 0x80 && is_ident_continue(self.current_char()) => {
+                    self.pos += self.current_char().len_utf8()
+                }
                 _ => break,
             }
         }
@@ -391,7 +400,9 @@ impl<'t> Lexer<'t> {
                         self.error(
                             SyntaxErrorKind::NonLatin1Character,
                             span,
-                            format!("character `{c}` is not in ISO 8859-1 (Latin-1), the character set of RAPID strings"),
+                            format!(
+                                "character `{c}` is not in ISO 8859-1 (Latin-1), the character set of RAPID strings"
+                            ),
                         );
                     }
                     self.pos += c.len_utf8();
@@ -535,8 +546,23 @@ mod tests {
         assert!(errs.is_empty());
         assert_eq!(
             toks,
-            vec![T::Ident, T::Assign, T::Ident, T::Ne, T::Ident, T::Le, T::Ident, T::Ge, T::Ident, T::Lt, T::Ident,
-                 T::Placeholder, T::Placeholder, T::Lt, T::Ident]
+            vec![
+                T::Ident,
+                T::Assign,
+                T::Ident,
+                T::Ne,
+                T::Ident,
+                T::Le,
+                T::Ident,
+                T::Ge,
+                T::Ident,
+                T::Lt,
+                T::Ident,
+                T::Placeholder,
+                T::Placeholder,
+                T::Lt,
+                T::Ident
+            ]
         );
     }
 

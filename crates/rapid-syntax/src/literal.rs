@@ -50,7 +50,11 @@ fn small_exponent(bytes: &[u8]) -> i64 {
         return if negative { -1_000_000 } else { 1_000_000 };
     }
     let value = digits.iter().fold(0i64, |acc, &d| acc * 10 + i64::from(d.wrapping_sub(b'0') % 10));
-    if negative { -value } else { value }
+    if negative {
+        -value
+    } else {
+        value
+    }
 }
 
 /// The characters of a string literal (quotes removed, `""`, `\\` and `\hh` decoded).

@@ -61,7 +61,12 @@ pub fn parse_outline(text: &str, interner: &mut Interner) -> Parse {
 /// is handed to it together with the arena holding its expressions, and a final
 /// `BodyItem::End`; a sink that clears the arena after each item keeps memory bounded
 /// by the largest statement.
-pub fn parse_body<'s>(text: &str, body_span: Span, interner: &mut Interner, sink: Option<&'s mut BodySink<'s>>) -> Vec<SyntaxError> {
+pub fn parse_body<'s>(
+    text: &str,
+    body_span: Span,
+    interner: &mut Interner,
+    sink: Option<&'s mut BodySink<'s>>,
+) -> Vec<SyntaxError> {
     let mode = match sink {
         Some(sink) => BodyMode::Stream(sink),
         None => BodyMode::Discard,
@@ -88,7 +93,9 @@ pub fn cap_errors(mut errors: Vec<SyntaxError>) -> Vec<SyntaxError> {
         errors.push(SyntaxError {
             kind: SyntaxErrorKind::TooManyErrors,
             span,
-            message: format!("more than {MAX_ERRORS_PER_FILE} errors; this does not look like RAPID, so reporting stopped here"),
+            message: format!(
+                "more than {MAX_ERRORS_PER_FILE} errors; this does not look like RAPID, so reporting stopped here"
+            ),
         });
     }
     errors
@@ -217,7 +224,11 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
         let at = self.prev_end;
         let found = self.current();
         let found_text = self.describe_token(found);
-        self.error(SyntaxErrorKind::UnexpectedToken, Span { start: at, end: at }, format!("expected `;`, found {found_text}"));
+        self.error(
+            SyntaxErrorKind::UnexpectedToken,
+            Span { start: at, end: at },
+            format!("expected `;`, found {found_text}"),
+        );
         false
     }
 
@@ -230,7 +241,8 @@ impl<'t, 'i, 's> Parser<'t, 'i, 's> {
 
     pub(crate) fn error(&mut self, kind: SyntaxErrorKind, span: Span, message: String) {
         if kind == SyntaxErrorKind::UnexpectedToken
-            && (self.last_error_at == Some(span.start) || self.lexer.unterminated_string_ends.last() == Some(&span.start))
+            && (self.last_error_at == Some(span.start)
+                || self.lexer.unterminated_string_ends.last() == Some(&span.start))
         {
             return;
         }

@@ -92,19 +92,37 @@ pub fn keyword(word: &str) -> Option<TokenKind> {
 /// The editor placeholders of §1.1.2 (`<SMT>` and friends).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Placeholder {
-    Tdn, Ddn, Rdn, Par, Alt, Dim, Smt, Var, Eit, Cse, Exp, Arg, Id,
+    Tdn,
+    Ddn,
+    Rdn,
+    Par,
+    Alt,
+    Dim,
+    Smt,
+    Var,
+    Eit,
+    Cse,
+    Exp,
+    Arg,
+    Id,
 }
 
 impl Placeholder {
     /// The placeholder spelled `<text>` (upper case only, as the editor writes them).
     pub fn from_text(text: &str) -> Option<Placeholder> {
         Some(match text {
-            "<TDN>" => Placeholder::Tdn, "<DDN>" => Placeholder::Ddn,
-            "<RDN>" => Placeholder::Rdn, "<PAR>" => Placeholder::Par,
-            "<ALT>" => Placeholder::Alt, "<DIM>" => Placeholder::Dim,
-            "<SMT>" => Placeholder::Smt, "<VAR>" => Placeholder::Var,
-            "<EIT>" => Placeholder::Eit, "<CSE>" => Placeholder::Cse,
-            "<EXP>" => Placeholder::Exp, "<ARG>" => Placeholder::Arg,
+            "<TDN>" => Placeholder::Tdn,
+            "<DDN>" => Placeholder::Ddn,
+            "<RDN>" => Placeholder::Rdn,
+            "<PAR>" => Placeholder::Par,
+            "<ALT>" => Placeholder::Alt,
+            "<DIM>" => Placeholder::Dim,
+            "<SMT>" => Placeholder::Smt,
+            "<VAR>" => Placeholder::Var,
+            "<EIT>" => Placeholder::Eit,
+            "<CSE>" => Placeholder::Cse,
+            "<EXP>" => Placeholder::Exp,
+            "<ARG>" => Placeholder::Arg,
             "<ID>" => Placeholder::Id,
             _ => return None,
         })

@@ -35,7 +35,8 @@ fn errors(src: &str) -> Vec<(K, u32)> {
     let mut interner = Interner::default();
     let parse = parse(src, &mut interner);
     let index = LineIndex::new(src);
-    let mut errs: Vec<(K, u32)> = parse.errors.iter().map(|e| (e.kind, index.line_col(src, e.span.start).line)).collect();
+    let mut errs: Vec<(K, u32)> =
+        parse.errors.iter().map(|e| (e.kind, index.line_col(src, e.span.start).line)).collect();
     errs.sort_by_key(|&(kind, line)| (line, format!("{kind:?}")));
     errs
 }
@@ -127,20 +128,20 @@ fn expression_placeholder() {
 
 #[test]
 fn assignment_to_entire_element_and_component() {
-    assert_eq!(body("x := 1;\na{2} := 3;\np.trans.x := 4;"), "(assign x 1)\n  (assign (index a 2) 3)\n  (assign (. (. p trans) x) 4)");
+    assert_eq!(
+        body("x := 1;\na{2} := 3;\np.trans.x := 4;"),
+        "(assign x 1)\n  (assign (index a 2) 3)\n  (assign (. (. p trans) x) 4)"
+    );
 }
 
 #[test]
 fn procedure_calls_with_commas_as_the_ebnf_allows() {
+    assert_eq!(body("MoveL p1, v100, z10, tool0\\WObj:=wobj0;"), "(call MoveL p1 v100 z10 tool0 (\\WObj wobj0))");
+    assert_eq!(body("MoveL p1, v100, z10, tool0, \\WObj:=wobj0;"), "(call MoveL p1 v100 z10 tool0 (\\WObj wobj0))");
     assert_eq!(
-        body("MoveL p1, v100, z10, tool0\\WObj:=wobj0;"),
-        "(call MoveL p1 v100 z10 tool0 (\\WObj wobj0))"
+        body("MoveL[[1,2,3],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]],v100,fine,tool0;").lines().count(),
+        1
     );
-    assert_eq!(
-        body("MoveL p1, v100, z10, tool0, \\WObj:=wobj0;"),
-        "(call MoveL p1 v100 z10 tool0 (\\WObj wobj0))"
-    );
-    assert_eq!(body("MoveL[[1,2,3],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]],v100,fine,tool0;").lines().count(), 1);
     assert_eq!(body("Stop;"), "(call Stop)");
     assert_eq!(body("TPWrite \"n=\"\\Num:=n;"), "(call TPWrite \"n=\" (\\Num n))");
     assert_eq!(body("routine4 \\on;"), "(call routine4 \\on)");
@@ -195,7 +196,10 @@ fn test_with_several_values_per_case_and_default() {
 #[test]
 fn goto_labels_and_keyword_statements() {
     assert_eq!(body("start:\nGOTO start;"), "(label start)\n  (goto start)");
-    assert_eq!(body("RETURN;\nRETURN x + 1;\nRAISE;\nRAISE 5;\nEXIT;"), "(return)\n  (return (+ x 1))\n  (raise)\n  (raise 5)\n  (exit)");
+    assert_eq!(
+        body("RETURN;\nRETURN x + 1;\nRAISE;\nRAISE 5;\nEXIT;"),
+        "(return)\n  (return (+ x 1))\n  (raise)\n  (raise 5)\n  (exit)"
+    );
     assert_eq!(body("CONNECT intno1 WITH trap1;"), "(connect intno1 trap1)");
 }
 
@@ -224,7 +228,8 @@ fn parameter_placeholders() {
 
 #[test]
 fn func_and_trap_declarations() {
-    let dump = tree("MODULE m\nLOCAL FUNC num vecLen(pos v)\nRETURN Sqrt(v.x);\nENDFUNC\nTRAP t\nRETURN;\nENDTRAP\nENDMODULE");
+    let dump =
+        tree("MODULE m\nLOCAL FUNC num vecLen(pos v)\nRETURN Sqrt(v.x);\nENDFUNC\nTRAP t\nRETURN;\nENDTRAP\nENDMODULE");
     assert_eq!(dump.lines().nth(1).unwrap(), "(local func num vecLen (pos v#1)");
     assert!(dump.contains("(trap t ()\n  (return))"));
 }
@@ -233,7 +238,10 @@ fn func_and_trap_declarations() {
 fn handlers_in_order_with_error_numbers() {
     let src = "MODULE m\nPROC p()\nx := 1;\nBACKWARD\ny;\nERROR (ERR_DIVZERO, 5)\nRETRY;\nUNDO\nz;\nENDPROC\nENDMODULE";
     let dump = tree(src);
-    assert!(dump.contains("backward:\n    (call y)\n  error (ERR_DIVZERO 5):\n    (retry)\n  undo:\n    (call z)"), "{dump}");
+    assert!(
+        dump.contains("backward:\n    (call y)\n  error (ERR_DIVZERO 5):\n    (retry)\n  undo:\n    (call z)"),
+        "{dump}"
+    );
     let wrong = "MODULE m\nPROC p()\nUNDO\nERROR\nENDPROC\nENDMODULE";
     assert_eq!(errors(wrong), vec![(K::UnexpectedToken, 4)]);
 }
@@ -249,7 +257,10 @@ fn routine_data_comes_before_instructions() {
 
 #[test]
 fn module_attributes_in_the_manuals_order() {
-    assert_eq!(tree("MODULE m (SYSMODULE, NOSTEPIN, VIEWONLY)\nENDMODULE").trim(), "(module m sysmodule nostepin viewonly)");
+    assert_eq!(
+        tree("MODULE m (SYSMODULE, NOSTEPIN, VIEWONLY)\nENDMODULE").trim(),
+        "(module m sysmodule nostepin viewonly)"
+    );
     assert_eq!(errors("MODULE m (READONLY, SYSMODULE)\nENDMODULE"), vec![(K::ModuleAttributeOrder, 1)]);
     assert_eq!(errors("MODULE m (NOVIEW, NOSTEPIN)\nENDMODULE"), vec![(K::ModuleAttributeOrder, 1)]);
     assert_eq!(errors("MODULE m (SYSMODULE, NOVIEW)\nENDMODULE"), vec![]);
@@ -281,7 +292,8 @@ fn module_item_placeholders() {
 
 #[test]
 fn header_case_and_multiple_modules() {
-    let src = "%%%\n  VERSION:1\n  LANGUAGE:ENGLISH\n%%%\nmodule A\nproc P()\nendproc\nEndModule\nMODULE B\nENDMODULE\n";
+    let src =
+        "%%%\n  VERSION:1\n  LANGUAGE:ENGLISH\n%%%\nmodule A\nproc P()\nendproc\nEndModule\nMODULE B\nENDMODULE\n";
     let dump = tree(src);
     assert!(dump.starts_with("(module A)\n(proc P ())\n(module B)"), "{dump}");
 }
@@ -341,7 +353,12 @@ fn a_thousand_nested_ifs_are_one_clean_error() {
 
 #[test]
 fn deep_aggregates_and_signs_are_bounded_too() {
-    let src = format!("MODULE m\nVAR num x := {}1{};\nVAR num y := {}1;\nENDMODULE", "[".repeat(5000), "]".repeat(5000), "-".repeat(5000));
+    let src = format!(
+        "MODULE m\nVAR num x := {}1{};\nVAR num y := {}1;\nENDMODULE",
+        "[".repeat(5000),
+        "]".repeat(5000),
+        "-".repeat(5000)
+    );
     assert_eq!(errors(&src), vec![(K::NestingTooDeep, 2), (K::NestingTooDeep, 3)]);
 }
 
@@ -372,5 +389,24 @@ fn a_ten_megabyte_line_is_linear() {
 fn truncated_files_and_empty_input() {
     assert_eq!(errors(""), vec![(K::OutsideModule, 1)]);
     assert_eq!(errors("MODULE"), vec![(K::UnclosedBlock, 1), (K::UnexpectedToken, 1)]);
-    assert_eq!(errors("MODULE m\nPROC p()\nx := [1, 2"), vec![(K::UnclosedBlock, 1), (K::UnclosedBlock, 2), (K::UnexpectedToken, 3)]);
+    assert_eq!(
+        errors("MODULE m\nPROC p()\nx := [1, 2"),
+        vec![(K::UnclosedBlock, 1), (K::UnclosedBlock, 2), (K::UnexpectedToken, 3)]
+    );
+}
+
+#[test]
+fn long_operator_chains_are_bounded_too() {
+    // Left-nested trees are walked recursively by later passes, so a chain of 10,000
+    // additions is one clean error, not a stack overflow further down.
+    let src = format!("MODULE m\nPROC p()\nx := {}1;\ny := 2;\nENDPROC\nENDMODULE", "1 + ".repeat(10_000));
+    assert_eq!(errors(&src), vec![(K::NestingTooDeep, 3)]);
+    let fine = format!("MODULE m\nVAR num x := {}1;\nENDMODULE", "1 + ".repeat(200));
+    assert_eq!(errors(&fine), vec![]);
+}
+
+#[test]
+fn long_component_chains_are_bounded_too() {
+    let src = format!("MODULE m\nPROC p()\nx := a{};\nENDPROC\nENDMODULE", ".b{1}".repeat(5_000));
+    assert_eq!(errors(&src), vec![(K::NestingTooDeep, 3)]);
 }

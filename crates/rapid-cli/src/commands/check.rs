@@ -12,9 +12,7 @@ use crate::render::{self, Files, Summary};
 
 pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
     let inputs = inputs::collect(&args.paths)?;
-    let options = Options {
-        syntax_only: args.syntax_only,
-    };
+    let options = Options { syntax_only: args.syntax_only };
     let mut diagnostics = rapid_sema::check(&inputs.modules, &options);
     diagnostics.extend(inputs.diagnostics.iter().cloned());
 
@@ -30,11 +28,7 @@ pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
     }
     out.flush()?;
 
-    Ok(if summary.errors > 0 {
-        ExitStatus::Failure
-    } else {
-        ExitStatus::Success
-    })
+    Ok(if summary.errors > 0 { ExitStatus::Failure } else { ExitStatus::Success })
 }
 
 /// Orders diagnostics by file (in the order the files were found) and then by position.

@@ -18,13 +18,7 @@ fn write_table(out: &mut dyn Write) -> io::Result<()> {
     writeln!(out, "{:<6} {:<8} summary", "code", "severity")?;
     for code in Code::ALL {
         let severity = severity_name(code.severity());
-        writeln!(
-            out,
-            "{:<6} {:<8} {}",
-            code.as_str(),
-            severity,
-            code.summary()
-        )?;
+        writeln!(out, "{:<6} {:<8} {}", code.as_str(), severity, code.summary())?;
     }
     Ok(())
 }

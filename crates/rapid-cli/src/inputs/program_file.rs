@@ -72,12 +72,9 @@ fn find_ignoring_case(path: &Path) -> Option<PathBuf> {
         _ => Path::new("."),
     };
     let entries = fs::read_dir(parent).ok()?;
-    let found = entries.filter_map(Result::ok).find(|entry| {
-        entry
-            .file_name()
-            .to_str()
-            .is_some_and(|name| name.eq_ignore_ascii_case(wanted))
-    })?;
+    let found = entries
+        .filter_map(Result::ok)
+        .find(|entry| entry.file_name().to_str().is_some_and(|name| name.eq_ignore_ascii_case(wanted)))?;
     Some(path.with_file_name(found.file_name()))
 }
 
@@ -97,19 +94,13 @@ fn holds_module(text: &str) -> bool {
             break;
         }
     }
-    let word_len = rest
-        .bytes()
-        .take_while(|b| b.is_ascii_alphanumeric() || *b == b'_')
-        .count();
+    let word_len = rest.bytes().take_while(|b| b.is_ascii_alphanumeric() || *b == b'_').count();
     rest[..word_len].eq_ignore_ascii_case("MODULE")
 }
 
 /// The `<Module>` entries of an XML listing, or `None` when the text is not XML.
 fn listing(text: &str) -> Option<Vec<Entry>> {
-    if !text
-        .trim_start_matches(|c: char| c.is_whitespace() || c == '\u{feff}')
-        .starts_with('<')
-    {
+    if !text.trim_start_matches(|c: char| c.is_whitespace() || c == '\u{feff}').starts_with('<') {
         return None;
     }
     let bytes = text.as_bytes();
@@ -131,24 +122,17 @@ fn listing(text: &str) -> Option<Vec<Entry>> {
             .take_while(|b| b.is_ascii_alphanumeric() || matches!(b, b'_' | b'-' | b'.' | b':'))
             .count();
         let tag_name = &rest[1..1 + name_len];
-        let tag_end = text[tag_start..]
-            .find('>')
-            .map_or(text.len(), |end| tag_start + end + 1);
+        let tag_end = text[tag_start..].find('>').map_or(text.len(), |end| tag_start + end + 1);
         pos = tag_end;
         if !tag_name.eq_ignore_ascii_case("Module") {
             continue;
         }
         if tag_end >= 2 && bytes[tag_end - 1] == b'>' && bytes[tag_end - 2] == b'/' {
-            entries.push(Entry {
-                name: String::new(),
-                span: Span::new(tag_start, tag_end),
-            });
+            entries.push(Entry { name: String::new(), span: Span::new(tag_start, tag_end) });
             continue;
         }
         // Text holds no `<`, so the entry runs to the next tag (normally `</Module>`).
-        let content_end = text[tag_end..]
-            .find('<')
-            .map_or(text.len(), |end| tag_end + end);
+        let content_end = text[tag_end..].find('<').map_or(text.len(), |end| tag_end + end);
         let raw = &text[tag_end..content_end];
         let trimmed = raw.trim();
         let name_start = tag_end + (raw.len() - raw.trim_start().len());
@@ -157,10 +141,7 @@ fn listing(text: &str) -> Option<Vec<Entry>> {
         } else {
             Span::new(name_start, name_start + trimmed.len())
         };
-        entries.push(Entry {
-            name: decode_entities(trimmed),
-            span,
-        });
+        entries.push(Entry { name: decode_entities(trimmed), span });
         pos = content_end;
     }
     Some(entries)
@@ -168,9 +149,7 @@ fn listing(text: &str) -> Option<Vec<Entry>> {
 
 /// The offset just past the first `end` at or after `from`, or the end of the text.
 fn skip_past(text: &str, from: usize, end: &str) -> usize {
-    text.get(from..)
-        .and_then(|rest| rest.find(end))
-        .map_or(text.len(), |at| from + at + end.len())
+    text.get(from..).and_then(|rest| rest.find(end)).map_or(text.len(), |at| from + at + end.len())
 }
 
 /// Decodes the five named XML entities and numeric character references.
@@ -223,10 +202,9 @@ mod tests {
 
     fn names(text: &str) -> Vec<(String, &str)> {
         match parse_text(text) {
-            ProgramFile::Listing(entries) => entries
-                .into_iter()
-                .map(|entry| (entry.name, entry.span.text(text)))
-                .collect(),
+            ProgramFile::Listing(entries) => {
+                entries.into_iter().map(|entry| (entry.name, entry.span.text(text))).collect()
+            }
             ProgramFile::Module => panic!("expected a listing"),
         }
     }
@@ -236,10 +214,7 @@ mod tests {
         let text = "<?xml version=\"1.0\" encoding=\"ISO-8859-1\" ?>\r\n<Program>\r\n\t<Module>MainModule.mod</Module>\r\n\t<Module> Other.mod </Module>\r\n</Program>\r\n";
         assert_eq!(
             names(text),
-            vec![
-                ("MainModule.mod".to_owned(), "MainModule.mod"),
-                ("Other.mod".to_owned(), "Other.mod")
-            ]
+            vec![("MainModule.mod".to_owned(), "MainModule.mod"), ("Other.mod".to_owned(), "Other.mod")]
         );
     }
 
@@ -248,45 +223,26 @@ mod tests {
         let text = "<Program><!-- <Module>Old.mod</Module> --><module>R&amp;D.mod</module><Module/><Module></Module></Program>";
         assert_eq!(
             names(text),
-            vec![
-                ("R&D.mod".to_owned(), "R&amp;D.mod"),
-                (String::new(), "<Module/>"),
-                (String::new(), "<Module>"),
-            ]
+            vec![("R&D.mod".to_owned(), "R&amp;D.mod"), (String::new(), "<Module/>"), (String::new(), "<Module>"),]
         );
     }
 
     #[test]
     fn malformed_listings_do_not_fail() {
-        for text in [
-            "<",
-            "<Module",
-            "<Module>",
-            "<Module>a.mod",
-            "<!--",
-            "<?xml",
-            "<Program><Module>&#xFFFFFFFF;&#;&</Module>",
-        ] {
+        for text in
+            ["<", "<Module", "<Module>", "<Module>a.mod", "<!--", "<?xml", "<Program><Module>&#xFFFFFFFF;&#;&</Module>"]
+        {
             let _ = parse_text(text);
         }
-        assert_eq!(
-            names("<Program><Module>a.mod"),
-            vec![("a.mod".to_owned(), "a.mod")]
-        );
+        assert_eq!(names("<Program><Module>a.mod"), vec![("a.mod".to_owned(), "a.mod")]);
     }
 
     #[test]
     fn modules_are_recognised() {
         assert_eq!(parse_text("MODULE Main\nENDMODULE"), ProgramFile::Module);
-        assert_eq!(
-            parse_text("\u{feff}%%%\n VERSION:1\n%%%\n! note\nmodule Main(SYSMODULE)"),
-            ProgramFile::Module
-        );
+        assert_eq!(parse_text("\u{feff}%%%\n VERSION:1\n%%%\n! note\nmodule Main(SYSMODULE)"), ProgramFile::Module);
         assert_eq!(parse_text("just words"), ProgramFile::Module);
         assert_eq!(parse_text("%%% open header <Program>"), ProgramFile::Module);
-        assert_eq!(
-            parse_text("<Program></Program>"),
-            ProgramFile::Listing(Vec::new())
-        );
+        assert_eq!(parse_text("<Program></Program>"), ProgramFile::Listing(Vec::new()));
     }
 }

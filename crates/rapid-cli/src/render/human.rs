@@ -43,36 +43,19 @@ pub(crate) fn render(
 }
 
 /// Writes one diagnostic: header, location and the excerpt with carets.
-pub(crate) fn render_one(
-    out: &mut dyn Write,
-    files: &Files<'_>,
-    diag: &Diagnostic,
-) -> io::Result<()> {
+pub(crate) fn render_one(out: &mut dyn Write, files: &Files<'_>, diag: &Diagnostic) -> io::Result<()> {
     let severity = severity_name(diag.severity());
-    writeln!(
-        out,
-        "{severity}[{}]: {}",
-        diag.code.as_str(),
-        sanitize(&diag.message)
-    )?;
+    writeln!(out, "{severity}[{}]: {}", diag.code.as_str(), sanitize(&diag.message))?;
 
     let location = files.location(diag);
     let line_no = location.start.line.to_string();
     let gutter = " ".repeat(line_no.len());
-    writeln!(
-        out,
-        "{gutter}--> {}:{}:{}",
-        files.path(diag.file),
-        location.start.line,
-        location.start.column
-    )?;
+    writeln!(out, "{gutter}--> {}:{}:{}", files.path(diag.file), location.start.line, location.start.column)?;
 
     let text = files.text(diag.file);
     let (start, end) = files.offsets(diag);
     let line_start = text[..start].rfind('\n').map_or(0, |idx| idx + 1);
-    let line_end = text[start..]
-        .find('\n')
-        .map_or(text.len(), |idx| start + idx);
+    let line_end = text[start..].find('\n').map_or(text.len(), |idx| start + idx);
     let line = text[line_start..line_end].trim_end_matches('\r');
     let caret_start = (start - line_start).min(line.len());
     let caret_end = (end.min(line_end) - line_start).clamp(caret_start, line.len());
@@ -115,15 +98,9 @@ pub(crate) struct Excerpt {
 pub(crate) fn excerpt(line: &str, start: usize, end: usize) -> Excerpt {
     let is_long = line.len() > LONG_LINE && line.chars().take(LONG_LINE + 1).count() > LONG_LINE;
     let (window_start, window_end) = if is_long {
-        let window_start = line[..start]
-            .char_indices()
-            .rev()
-            .nth(WINDOW_LEAD - 1)
-            .map_or(0, |(idx, _)| idx);
-        let window_end = line[window_start..]
-            .char_indices()
-            .nth(WINDOW)
-            .map_or(line.len(), |(idx, _)| window_start + idx);
+        let window_start = line[..start].char_indices().rev().nth(WINDOW_LEAD - 1).map_or(0, |(idx, _)| idx);
+        let window_end =
+            line[window_start..].char_indices().nth(WINDOW).map_or(line.len(), |(idx, _)| window_start + idx);
         (window_start, window_end)
     } else {
         (0, line.len())
@@ -152,11 +129,7 @@ pub(crate) fn excerpt(line: &str, start: usize, end: usize) -> Excerpt {
     if window_end < line.len() {
         text.push_str("...");
     }
-    Excerpt {
-        text,
-        caret_column,
-        caret_width: caret_end_column.saturating_sub(caret_column).max(1),
-    }
+    Excerpt { text, caret_column, caret_width: caret_end_column.saturating_sub(caret_column).max(1) }
 }
 
 /// Appends how `c` should look in a terminal and returns how many columns that takes.
@@ -187,10 +160,7 @@ fn visible(c: char) -> char {
 
 /// Makes a message safe to print on one line.
 fn sanitize(message: &str) -> String {
-    message
-        .chars()
-        .map(|c| if c == '\t' { ' ' } else { visible(c) })
-        .collect()
+    message.chars().map(|c| if c == '\t' { ' ' } else { visible(c) }).collect()
 }
 
 /// Terminal columns a character takes: 0 for combining marks and zero-width characters,
@@ -231,9 +201,7 @@ mod tests {
         let files = Files::new(&table);
         let diagnostics: Vec<Diagnostic> = diags
             .iter()
-            .map(|&(file, code, start, end, message)| {
-                Diagnostic::new(file, code, Span::new(start, end), message)
-            })
+            .map(|&(file, code, start, end, message)| Diagnostic::new(file, code, Span::new(start, end), message))
             .collect();
         let summary = Summary::of(&diagnostics, table.len());
         let mut out = Vec::new();
@@ -256,13 +224,7 @@ mod tests {
             &[source],
             &[
                 (0, Code::UndefinedData, a, b, "undefined data `foo`"),
-                (
-                    0,
-                    Code::UndefinedProcedure,
-                    c,
-                    d,
-                    "procedure `nosuch` is not defined in the task",
-                ),
+                (0, Code::UndefinedProcedure, c, d, "procedure `nosuch` is not defined in the task"),
             ],
         );
         insta::assert_snapshot!(out);
@@ -271,10 +233,7 @@ mod tests {
     #[test]
     fn clean_summary() {
         let source = SourceInput::from_text("a.mod", "MODULE a\nENDMODULE\n");
-        assert_eq!(
-            render_str(&[source], &[]),
-            "checked 1 file: no problems found\n"
-        );
+        assert_eq!(render_str(&[source], &[]), "checked 1 file: no problems found\n");
     }
 
     #[test]
@@ -286,20 +245,8 @@ mod tests {
         let out = render_str(
             &[source],
             &[
-                (
-                    0,
-                    Code::UnexpectedToken,
-                    semi,
-                    semi,
-                    "expected an expression, found `;`",
-                ),
-                (
-                    0,
-                    Code::UnclosedBlock,
-                    text.len() - 2,
-                    text.len() + 5,
-                    "past the end",
-                ),
+                (0, Code::UnexpectedToken, semi, semi, "expected an expression, found `;`"),
+                (0, Code::UnclosedBlock, text.len() - 2, text.len() + 5, "past the end"),
             ],
         );
         insta::assert_snapshot!(out);
@@ -309,10 +256,7 @@ mod tests {
     fn multi_line_span_stops_at_line_end() {
         let text = "IF a THEN\n  b;\nENDIF";
         let source = SourceInput::from_text("m.mod", text);
-        let out = render_str(
-            &[source],
-            &[(0, Code::UnclosedBlock, 0, text.len(), "IF without ENDIF")],
-        );
+        let out = render_str(&[source], &[(0, Code::UnclosedBlock, 0, text.len(), "IF without ENDIF")]);
         insta::assert_snapshot!(out);
     }
 
@@ -321,16 +265,7 @@ mod tests {
         let text = "\tVAR\tnum x:=\u{1b}[31m; ! 注释 \u{0}\n";
         let source = SourceInput::from_text("t.mod", text);
         let (a, b) = span_of(text, "\u{1b}");
-        let out = render_str(
-            &[source],
-            &[(
-                0,
-                Code::InvalidCharacter,
-                a,
-                b,
-                "invalid character `\u{1b}`\tthere",
-            )],
-        );
+        let out = render_str(&[source], &[(0, Code::InvalidCharacter, a, b, "invalid character `\u{1b}`\tthere")]);
         insta::assert_snapshot!(out);
         let (c, _) = span_of(text, "\u{0}");
         let shown = excerpt(text.trim_end(), c, c + 1);
@@ -345,10 +280,7 @@ mod tests {
         let text = format!("MODULE m\n{line}\nENDMODULE\n");
         let (a, b) = span_of(&text, "bad");
         let source = SourceInput::from_text("long.mod", text.clone());
-        let out = render_str(
-            &[source],
-            &[(0, Code::UnexpectedToken, a, b, "unexpected `bad`")],
-        );
+        let out = render_str(&[source], &[(0, Code::UnexpectedToken, a, b, "unexpected `bad`")]);
         assert!(out.len() < 600, "output too long: {} bytes", out.len());
         insta::assert_snapshot!(out);
     }

@@ -39,11 +39,7 @@ struct JsonDiagnostic<'a> {
 }
 
 /// Writes the diagnostics as one pretty-printed JSON array and a newline.
-pub(crate) fn render(
-    out: &mut dyn Write,
-    files: &Files<'_>,
-    diagnostics: &[Diagnostic],
-) -> io::Result<()> {
+pub(crate) fn render(out: &mut dyn Write, files: &Files<'_>, diagnostics: &[Diagnostic]) -> io::Result<()> {
     let objects: Vec<JsonDiagnostic<'_>> = diagnostics
         .iter()
         .map(|diag| {
@@ -84,31 +80,15 @@ mod tests {
         let foo = text.find("foo").unwrap();
         let quote = text.find('"').unwrap();
         let diagnostics = [
-            Diagnostic::new(
-                0,
-                Code::UndefinedData,
-                Span::new(quote, quote + 4),
-                "a \"quoted\"\nmessage",
-            ),
-            Diagnostic::new(
-                0,
-                Code::UndefinedProcedure,
-                Span::new(foo, foo + 3),
-                "procedure `foo` is not defined",
-            ),
+            Diagnostic::new(0, Code::UndefinedData, Span::new(quote, quote + 4), "a \"quoted\"\nmessage"),
+            Diagnostic::new(0, Code::UndefinedProcedure, Span::new(foo, foo + 3), "procedure `foo` is not defined"),
             Diagnostic::new(1, Code::ProgramFileEntry, Span::new(0, 0), "empty"),
         ];
-        let sources = [
-            SourceInput::from_text("dir/m.mod", text),
-            SourceInput::from_text("p.pgf", ""),
-        ];
+        let sources = [SourceInput::from_text("dir/m.mod", text), SourceInput::from_text("p.pgf", "")];
         let out = render_str(&sources, &diagnostics);
         insta::assert_snapshot!(out);
         let parsed: serde_json::Value = serde_json::from_str(&out).unwrap();
-        assert_eq!(
-            parsed[0]["end_column"], 11,
-            "columns count characters, not bytes"
-        );
+        assert_eq!(parsed[0]["end_column"], 11, "columns count characters, not bytes");
     }
 
     #[test]

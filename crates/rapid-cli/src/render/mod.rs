@@ -27,17 +27,12 @@ pub(crate) struct Location {
 
 impl<'a> Files<'a> {
     pub(crate) fn new(sources: &'a [&'a SourceInput]) -> Files<'a> {
-        Files {
-            sources,
-            line_indexes: sources.iter().map(|_| OnceCell::new()).collect(),
-        }
+        Files { sources, line_indexes: sources.iter().map(|_| OnceCell::new()).collect() }
     }
 
     /// The path to show for a file.
     pub(crate) fn path(&self, file: usize) -> &str {
-        self.sources
-            .get(file)
-            .map_or("<unknown file>", |source| &source.path)
+        self.sources.get(file).map_or("<unknown file>", |source| &source.path)
     }
 
     /// The text of a file (empty for a file the checker does not know).
@@ -55,16 +50,12 @@ impl<'a> Files<'a> {
         let (start, end) = self.offsets(diag);
         let text = self.text(diag.file);
         match self.line_index(diag.file) {
-            Some(index) => Location {
-                start: index.line_col(text, start as u32),
-                end: index.line_col(text, end as u32),
-            },
+            Some(index) => {
+                Location { start: index.line_col(text, start as u32), end: index.line_col(text, end as u32) }
+            }
             None => {
                 let origin = LineCol { line: 1, column: 1 };
-                Location {
-                    start: origin,
-                    end: origin,
-                }
+                Location { start: origin, end: origin }
             }
         }
     }
@@ -88,15 +79,8 @@ pub(crate) struct Summary {
 
 impl Summary {
     pub(crate) fn of(diagnostics: &[Diagnostic], n_files: usize) -> Summary {
-        let errors = diagnostics
-            .iter()
-            .filter(|diag| diag.severity() == Severity::Error)
-            .count();
-        Summary {
-            errors,
-            warnings: diagnostics.len() - errors,
-            files: n_files,
-        }
+        let errors = diagnostics.iter().filter(|diag| diag.severity() == Severity::Error).count();
+        Summary { errors, warnings: diagnostics.len() - errors, files: n_files }
     }
 }
 
@@ -138,9 +122,6 @@ mod tests {
         assert_eq!(location.end, LineCol { line: 2, column: 2 });
         let unknown = Diagnostic::new(7, Code::UndefinedData, Span { start: 5, end: 6 }, "m");
         assert_eq!(files.path(7), "<unknown file>");
-        assert_eq!(
-            files.location(&unknown).start,
-            LineCol { line: 1, column: 1 }
-        );
+        assert_eq!(files.location(&unknown).start, LineCol { line: 1, column: 1 });
     }
 }

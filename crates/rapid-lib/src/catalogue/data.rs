@@ -52,11 +52,13 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST speeddata vlin200 := [0, 0, 200, 0];", "Linear external axes at 200 mm/s."),
     data("CONST speeddata vlin500 := [0, 0, 500, 0];", "Linear external axes at 500 mm/s."),
     data("CONST speeddata vlin1000 := [0, 0, 1000, 0];", "Linear external axes at 1000 mm/s."),
-
     // ---- Zone data (zonedata = [finep, pzone_tcp, pzone_ori, pzone_eax, zone_ori, zone_leax, zone_reax]) ---
     data("CONST zonedata fine := [TRUE, 0, 0, 0, 0, 0, 0];", "Stop point: the robot stops at the target."),
     // uncertain: z0 and z1 values do not follow the 1.5x pattern and are not confirmed.
-    data("CONST zonedata z0 := [FALSE, 0.3, 0.3, 0.3, 0.03, 0.3, 0.03];", "Fly-by point with a minimal (0.3 mm) TCP zone."),
+    data(
+        "CONST zonedata z0 := [FALSE, 0.3, 0.3, 0.3, 0.03, 0.3, 0.03];",
+        "Fly-by point with a minimal (0.3 mm) TCP zone.",
+    ),
     data("CONST zonedata z1 := [FALSE, 1, 1, 1, 0.1, 1, 0.1];", "Fly-by point with a 1 mm TCP zone."),
     data("CONST zonedata z5 := [FALSE, 5, 8, 8, 0.8, 8, 0.8];", "Fly-by point with a 5 mm TCP zone."),
     data("CONST zonedata z10 := [FALSE, 10, 15, 15, 1.5, 15, 1.5];", "Fly-by point with a 10 mm TCP zone."),
@@ -70,28 +72,58 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST zonedata z100 := [FALSE, 100, 150, 150, 15, 150, 15];", "Fly-by point with a 100 mm TCP zone."),
     data("CONST zonedata z150 := [FALSE, 150, 225, 225, 23, 225, 23];", "Fly-by point with a 150 mm TCP zone."),
     data("CONST zonedata z200 := [FALSE, 200, 300, 300, 30, 300, 30];", "Fly-by point with a 200 mm TCP zone."),
-
     // ---- Stop point data ---------------------------------------------------------------------
     // uncertain: stoppoint values 1..3 assumed.
     data("CONST stoppoint inpos := 1;", "Stop point kind: wait until in position."),
     data("CONST stoppoint stoptime := 2;", "Stop point kind: wait a fixed time after stopping."),
     data("CONST stoppoint fllwtime := 3;", "Stop point kind: fine point with a follow time (for conveyors)."),
     // uncertain: inpos*/stoptime*/fllwtime* component values recalled, not confirmed.
-    data(r#"CONST stoppointdata inpos20 := [1, FALSE, [20, 20, 0, 2], 0, 0, "", 0, 0];"#, "In-position stop point at 20% of the fine-point criteria."),
-    data(r#"CONST stoppointdata inpos50 := [1, FALSE, [50, 50, 0, 2], 0, 0, "", 0, 0];"#, "In-position stop point at 50% of the fine-point criteria."),
-    data(r#"CONST stoppointdata inpos100 := [1, FALSE, [100, 100, 0, 2], 0, 0, "", 0, 0];"#, "In-position stop point at 100% of the fine-point criteria."),
-    data(r#"CONST stoppointdata stoptime0_5 := [2, FALSE, [0, 0, 0, 0], 0.5, 0, "", 0, 0];"#, "Stop point that waits 0.5 s after the robot stops."),
-    data(r#"CONST stoppointdata stoptime1_0 := [2, FALSE, [0, 0, 0, 0], 1.0, 0, "", 0, 0];"#, "Stop point that waits 1.0 s after the robot stops."),
-    data(r#"CONST stoppointdata stoptime1_5 := [2, FALSE, [0, 0, 0, 0], 1.5, 0, "", 0, 0];"#, "Stop point that waits 1.5 s after the robot stops."),
-    data(r#"CONST stoppointdata fllwtime0_5 := [3, TRUE, [0, 0, 0, 0], 0, 0.5, "", 0, 0];"#, "Fine point with 0.5 s follow time on a conveyor."),
-    data(r#"CONST stoppointdata fllwtime1_0 := [3, TRUE, [0, 0, 0, 0], 0, 1.0, "", 0, 0];"#, "Fine point with 1.0 s follow time on a conveyor."),
-    data(r#"CONST stoppointdata fllwtime1_5 := [3, TRUE, [0, 0, 0, 0], 0, 1.5, "", 0, 0];"#, "Fine point with 1.5 s follow time on a conveyor."),
-
+    data(
+        r#"CONST stoppointdata inpos20 := [1, FALSE, [20, 20, 0, 2], 0, 0, "", 0, 0];"#,
+        "In-position stop point at 20% of the fine-point criteria.",
+    ),
+    data(
+        r#"CONST stoppointdata inpos50 := [1, FALSE, [50, 50, 0, 2], 0, 0, "", 0, 0];"#,
+        "In-position stop point at 50% of the fine-point criteria.",
+    ),
+    data(
+        r#"CONST stoppointdata inpos100 := [1, FALSE, [100, 100, 0, 2], 0, 0, "", 0, 0];"#,
+        "In-position stop point at 100% of the fine-point criteria.",
+    ),
+    data(
+        r#"CONST stoppointdata stoptime0_5 := [2, FALSE, [0, 0, 0, 0], 0.5, 0, "", 0, 0];"#,
+        "Stop point that waits 0.5 s after the robot stops.",
+    ),
+    data(
+        r#"CONST stoppointdata stoptime1_0 := [2, FALSE, [0, 0, 0, 0], 1.0, 0, "", 0, 0];"#,
+        "Stop point that waits 1.0 s after the robot stops.",
+    ),
+    data(
+        r#"CONST stoppointdata stoptime1_5 := [2, FALSE, [0, 0, 0, 0], 1.5, 0, "", 0, 0];"#,
+        "Stop point that waits 1.5 s after the robot stops.",
+    ),
+    data(
+        r#"CONST stoppointdata fllwtime0_5 := [3, TRUE, [0, 0, 0, 0], 0, 0.5, "", 0, 0];"#,
+        "Fine point with 0.5 s follow time on a conveyor.",
+    ),
+    data(
+        r#"CONST stoppointdata fllwtime1_0 := [3, TRUE, [0, 0, 0, 0], 0, 1.0, "", 0, 0];"#,
+        "Fine point with 1.0 s follow time on a conveyor.",
+    ),
+    data(
+        r#"CONST stoppointdata fllwtime1_5 := [3, TRUE, [0, 0, 0, 0], 0, 1.5, "", 0, 0];"#,
+        "Fine point with 1.5 s follow time on a conveyor.",
+    ),
     // ---- Tool, work object and load (system module BASE) -------------------------------------
-    data("PERS tooldata tool0 := [TRUE, [[0, 0, 0], [1, 0, 0, 0]], [0.001, [0, 0, 0.001], [1, 0, 0, 0], 0, 0, 0]];", "Flange tool: TCP at the mounting flange, negligible load."),
-    data(r#"PERS wobjdata wobj0 := [FALSE, TRUE, "", [[0, 0, 0], [1, 0, 0, 0]], [[0, 0, 0], [1, 0, 0, 0]]];"#, "Work object equal to the world frame."),
+    data(
+        "PERS tooldata tool0 := [TRUE, [[0, 0, 0], [1, 0, 0, 0]], [0.001, [0, 0, 0.001], [1, 0, 0, 0], 0, 0, 0]];",
+        "Flange tool: TCP at the mounting flange, negligible load.",
+    ),
+    data(
+        r#"PERS wobjdata wobj0 := [FALSE, TRUE, "", [[0, 0, 0], [1, 0, 0, 0]], [[0, 0, 0], [1, 0, 0, 0]]];"#,
+        "Work object equal to the world frame.",
+    ),
     data("PERS loaddata load0 := [0.001, [0, 0, 0.001], [1, 0, 0, 0], 0, 0, 0];", "Empty payload."),
-
     // ---- Motion system data ------------------------------------------------------------------
     read_only("VAR motsetdata C_MOTSET;", "Current motion settings (VelSet, AccSet, SingArea, ConfJ/L, ...)."),
     read_only("VAR progdisp C_PROGDISP;", "Current program displacement and external axis offsets."),
@@ -99,11 +131,9 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("VAR mecunit ROB_ID;", "Reference to the robot controlled by this task, if any."),
     // uncertain: mechanical units come from the configuration; ROB_1 is present in single-robot systems.
     data("VAR mecunit ROB_1;", "The first robot mechanical unit."),
-
     // ---- Error recovery system data ----------------------------------------------------------
     read_only("VAR errnum ERRNO;", "Number of the latest recoverable error, read in ERROR handlers."),
     read_only("VAR intnum INTNO;", "Number of the interrupt that started the current trap routine."),
-
     // ---- User module data (system module User) -----------------------------------------------
     data("VAR num reg1 := 0;", "General register 1, from system module User."),
     data("VAR num reg2 := 0;", "General register 2, from system module User."),
@@ -111,18 +141,22 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("VAR num reg4 := 0;", "General register 4, from system module User."),
     data("VAR num reg5 := 0;", "General register 5, from system module User."),
     data("VAR clock clock1;", "General stopwatch, from system module User."),
-
     // ---- Digital values ----------------------------------------------------------------------
     data("CONST dionum low := 0;", "Digital signal value 0."),
     data("CONST dionum high := 1;", "Digital signal value 1."),
     data("CONST dionum edge := 2;", "Either edge of a digital signal (interrupts, triggers)."),
-
     // ---- Numbers and strings -----------------------------------------------------------------
     // uncertain: listed as a standard constant by a public RAPID syntax file; many programs declare their own.
     data("CONST num pi := 3.1415926;", "The number pi."),
     data(r#"CONST string STR_DIGIT := "0123456789";"#, "The decimal digits."),
-    data(r#"CONST string STR_UPPER := "ABCDEFGHIJKLMNOPQRSTUVWXYZ\C0\C1\C2\C3\C4\C5\C6\C7\C8\C9\CA\CB\CC\CD\CE\CF\D0\D1\D2\D3\D4\D5\D6\D8\D9\DA\DB\DC\DD\DE";"#, "Upper-case Latin-1 letters, A-Z and the accented ones."),
-    data(r#"CONST string STR_LOWER := "abcdefghijklmnopqrstuvwxyz\E0\E1\E2\E3\E4\E5\E6\E7\E8\E9\EA\EB\EC\ED\EE\EF\F0\F1\F2\F3\F4\F5\F6\F8\F9\FA\FB\FC\FD\FE";"#, "Lower-case Latin-1 letters, a-z and the accented ones."),
+    data(
+        r#"CONST string STR_UPPER := "ABCDEFGHIJKLMNOPQRSTUVWXYZ\C0\C1\C2\C3\C4\C5\C6\C7\C8\C9\CA\CB\CC\CD\CE\CF\D0\D1\D2\D3\D4\D5\D6\D8\D9\DA\DB\DC\DD\DE";"#,
+        "Upper-case Latin-1 letters, A-Z and the accented ones.",
+    ),
+    data(
+        r#"CONST string STR_LOWER := "abcdefghijklmnopqrstuvwxyz\E0\E1\E2\E3\E4\E5\E6\E7\E8\E9\EA\EB\EC\ED\EE\EF\F0\F1\F2\F3\F4\F5\F6\F8\F9\FA\FB\FC\FD\FE";"#,
+        "Lower-case Latin-1 letters, a-z and the accented ones.",
+    ),
     // uncertain: the manual's blank set may contain more than the space.
     data(r#"CONST string STR_WHITE := " ";"#, "Blank characters."),
     data(r#"CONST string stEmpty := "";"#, "The empty string."),
@@ -135,7 +169,6 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data(r#"CONST string diskhome := "HOME:";"#, "Device name of the HOME directory."),
     data(r#"CONST string disktemp := "TEMP:";"#, "Device name of the temporary directory."),
     data(r#"CONST string diskram := "RAMDISK:";"#, "Device name of the RAM disk."),
-
     // ---- inttypes for PackRawBytes and UnpackRawBytes ----------------------------------------
     data("CONST inttypes USINT := 1;", "Unsigned 1-byte integer."),
     data("CONST inttypes UINT := 2;", "Unsigned 2-byte integer."),
@@ -145,7 +178,6 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST inttypes INT := -2;", "Signed 2-byte integer."),
     data("CONST inttypes DINT := -4;", "Signed 4-byte integer."),
     data("CONST inttypes LINT := -8;", "Signed 8-byte integer."),
-
     // ---- opnum and opcalc --------------------------------------------------------------------
     // uncertain: opnum values 1..6 in this order assumed.
     data("CONST opnum LT := 1;", "Comparison operator: less than."),
@@ -160,7 +192,6 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST opcalc OpMult := 3;", "Arithmetic operator for StrDigCalc: multiplication."),
     data("CONST opcalc OpDiv := 4;", "Arithmetic operator for StrDigCalc: integer division."),
     data("CONST opcalc OpMod := 5;", "Arithmetic operator for StrDigCalc: remainder."),
-
     // ---- errdomain (event-log domains) -------------------------------------------------------
     data("CONST errdomain COMMON_ERR := 0;", "Any domain."),
     data("CONST errdomain OP_STATE := 1;", "Operational state changes."),
@@ -181,13 +212,11 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST errdomain SPOTWELD_ERR := 12;", "Spot welding errors (older name)."),
     data("CONST errdomain PAINT_ERR := 13;", "Paint errors (older name)."),
     data("CONST errdomain PICKWARE_ERR := 14;", "PickWare errors (older name)."),
-
     // ---- errtype -----------------------------------------------------------------------------
     data("CONST errtype TYPE_ALL := 0;", "Any event-log entry type."),
     data("CONST errtype TYPE_STATE := 1;", "State change entries."),
     data("CONST errtype TYPE_WARN := 2;", "Warnings."),
     data("CONST errtype TYPE_ERR := 3;", "Errors."),
-
     // ---- errnum constants. The real numbers are not public: ours are 1000 upward in list order ---
     // uncertain: the kernel manual's long-jump error handlers `ERROR (LONG_JMP_ALL_ERR)`
     // catch every error raised further down the call chain; the number is ours.
@@ -396,7 +425,6 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST errnum ERR_MT_ABORT := 1201;", "Machine tending: aborted."),
     data("CONST errnum ERR_MT_HOME := 1202;", "Machine tending: home error."),
     data("CONST errnum ERR_MT_HOMERUN := 1203;", "Machine tending: home run error."),
-
     // ---- socketstatus ------------------------------------------------------------------------
     // uncertain: socketstatus values 1..5 assumed.
     data("CONST socketstatus SOCKET_CREATED := 1;", "Socket created, not yet connected or bound."),
@@ -404,13 +432,11 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST socketstatus SOCKET_BOUND := 3;", "Socket bound to a local address and port."),
     data("CONST socketstatus SOCKET_LISTENING := 4;", "Socket listening for connections."),
     data("CONST socketstatus SOCKET_CLOSED := 5;", "Socket closed."),
-
     // ---- tpnum -------------------------------------------------------------------------------
     // uncertain: tpnum values assumed.
     data("CONST tpnum TP_PROGRAM := 1;", "FlexPendant program window."),
     data("CONST tpnum TP_LATEST := 2;", "The FlexPendant window used before the current one."),
     data("CONST tpnum TP_SCREENVIEWER := 3;", "FlexPendant ScreenViewer window."),
-
     // ---- iounit_state ------------------------------------------------------------------------
     // uncertain: iounit_state values recalled (1.., 10.., 20.. ranges), not confirmed.
     data("CONST iounit_state IOUNIT_RUNNING := 1;", "I/O device running."),
@@ -426,7 +452,6 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST iounit_state IOUNIT_PHYS_STATE_UNCONFIGURED := 24;", "I/O device not configured."),
     data("CONST iounit_state IOUNIT_PHYS_STATE_STARTUP := 25;", "I/O device starting up."),
     data("CONST iounit_state IOUNIT_PHYS_STATE_INIT := 26;", "I/O device being initialized."),
-
     // ---- busstate ----------------------------------------------------------------------------
     // uncertain: busstate values assumed.
     data("CONST busstate BUSSTATE_HALTED := 0;", "I/O network halted."),
@@ -441,7 +466,6 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST busstate IOBUS_PHYS_STATE_ERROR := 23;", "I/O network physically in error."),
     data("CONST busstate IOBUS_PHYS_STATE_STARTUP := 24;", "I/O network physically starting up."),
     data("CONST busstate IOBUS_PHYS_STATE_INIT := 25;", "I/O network physically initializing."),
-
     // ---- aiotrigg ----------------------------------------------------------------------------
     data("CONST aiotrigg AIO_ABOVE_HIGH := 1;", "Signal above the high value."),
     data("CONST aiotrigg AIO_BELOW_HIGH := 2;", "Signal below the high value."),
@@ -451,7 +475,6 @@ pub(crate) const ENTRIES: &[Entry] = &[
     // uncertain: AIO_OUTSIDE and AIO_ALWAYS values assumed.
     data("CONST aiotrigg AIO_OUTSIDE := 6;", "Signal outside the low..high range."),
     data("CONST aiotrigg AIO_ALWAYS := 7;", "Any change of the signal."),
-
     // ---- UI: btnres, buttondata, icondata ----------------------------------------------------
     // uncertain: btnres values assumed in this order (0..7).
     data("CONST btnres resUnkwn := 0;", "Dialog result unknown (no button)."),
@@ -475,7 +498,6 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST icondata iconWarning := 2;", "Warning icon."),
     data("CONST icondata iconError := 3;", "Error icon."),
     data("CONST icondata iconQuestion := 4;", "Question icon."),
-
     // ---- triggmode, tunetype -----------------------------------------------------------------
     // uncertain: triggmode values assumed.
     data("CONST triggmode TRIGG_MODE1 := 1;", "Trigger action mode 1."),
@@ -493,7 +515,6 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST tunetype TUNE_DI := 8;", "Tune damping (DI)."),
     data("CONST tunetype TUNE_DK := 9;", "Tune damping (DK)."),
     data("CONST tunetype TUNE_DL := 10;", "Tune damping (DL)."),
-
     // ---- Load identification -----------------------------------------------------------------
     data("CONST paridnum TOOL_LOAD_ID := 1;", "Identify the tool load."),
     data("CONST paridnum PAY_LOAD_ID := 2;", "Identify the payload."),
@@ -512,12 +533,10 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST paridvalidnum ROB_LM1_LOAD_VAL := 20;", "Valid for load identification with a limited mass."),
     data("CONST loadidnum MASS_KNOWN := 1;", "Payload mass is known."),
     data("CONST loadidnum MASS_WITH_AX3 := 2;", "Identify the mass by moving axis 3."),
-
     // ---- signalorigin ------------------------------------------------------------------------
     data("CONST signalorigin SIGORIG_NONE := 0;", "Signal not known to the I/O system."),
     data("CONST signalorigin SIGORIG_CFG := 1;", "Signal defined in the I/O configuration."),
     data("CONST signalorigin SIGORIG_ALIAS := 2;", "Signal connected by AliasIO."),
-
     // ---- symnum results of OpMode and RunMode ------------------------------------------------
     data("CONST symnum OP_UNDEF := 0;", "Operating mode undefined."),
     data("CONST symnum OP_AUTO := 1;", "Automatic mode."),
@@ -529,7 +548,6 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST symnum RUN_INSTR_BWD := 3;", "Stepping backward."),
     data("CONST symnum RUN_SIM := 4;", "Simulated running."),
     data("CONST symnum RUN_STEP_MOVE := 5;", "Move-step running."),
-
     // ---- event_type, handler_type, exec_level, tsp_status ------------------------------------
     data("CONST event_type EVENT_NONE := 0;", "Not in an event routine."),
     data("CONST event_type EVENT_POWERON := 1;", "POWER ON event routine."),
@@ -551,7 +569,6 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST tsp_status TSP_STATUS_DEACT := 1;", "Task unchecked in the Task Selection Panel."),
     data("CONST tsp_status TSP_STATUS_DEACT_SERV_ROUT := 2;", "Task unchecked but runs service routines."),
     data("CONST tsp_status TSP_STATUS_ACT := 3;", "Task checked in the Task Selection Panel."),
-
     // ---- cfgdomain ---------------------------------------------------------------------------
     // uncertain: cfgdomain string values assumed.
     data(r#"CONST cfgdomain ALL_DOMAINS := "ALL";"#, "Every configuration domain."),
@@ -561,7 +578,6 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data(r#"CONST cfgdomain PROC_DOMAIN := "PROC";"#, "Process configuration."),
     data(r#"CONST cfgdomain SIO_DOMAIN := "SIO";"#, "Serial communication configuration."),
     data(r#"CONST cfgdomain SYS_DOMAIN := "SYS";"#, "Controller configuration."),
-
     // ---- motionprocessmode -------------------------------------------------------------------
     // uncertain: motionprocessmode values assumed.
     data("CONST motionprocessmode OPTIMAL_CYCLE_TIME_MODE := 1;", "Fastest cycle time."),

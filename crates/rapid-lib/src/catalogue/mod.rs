@@ -5,17 +5,17 @@
 
 pub mod entry;
 
-mod types;
 mod data;
-mod math;
-mod strings;
-mod time;
 mod files;
-mod sockets;
-mod system;
-mod io;
 mod interrupts;
+mod io;
+mod math;
 mod motion;
+mod sockets;
+mod strings;
+mod system;
+mod time;
+mod types;
 
 pub use entry::{Entry, EntryKind};
 

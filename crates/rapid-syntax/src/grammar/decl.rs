@@ -11,9 +11,8 @@ use crate::token::{Placeholder, TokenKind as T, TokenSet};
 pub(crate) const MAX_DIMS: usize = 3;
 
 /// Tokens that may follow a name, so a reserved word there was meant as a name.
-const AFTER_NAME: TokenSet = TokenSet::new(&[
-    T::Semi, T::Assign, T::LBrace, T::LParen, T::Comma, T::RParen, T::Colon, T::Pipe, T::Backslash,
-]);
+const AFTER_NAME: TokenSet =
+    TokenSet::new(&[T::Semi, T::Assign, T::LBrace, T::LParen, T::Comma, T::RParen, T::Colon, T::Pipe, T::Backslash]);
 
 impl Parser<'_, '_, '_> {
     /// An identifier (or `<ID>`). A reserved word followed by what a name would be
@@ -32,7 +31,11 @@ impl Parser<'_, '_, '_> {
             kind if kind.is_keyword() && !super::ROUTINE_END.contains(kind) && AFTER_NAME.contains(self.nth(1)) => {
                 self.bump();
                 let word = token.span.text(self.text).to_ascii_uppercase();
-                self.error(SyntaxErrorKind::ReservedWordAsName, token.span, format!("`{word}` is a reserved word and cannot be used as a name"));
+                self.error(
+                    SyntaxErrorKind::ReservedWordAsName,
+                    token.span,
+                    format!("`{word}` is a reserved word and cannot be used as a name"),
+                );
                 self.name_from(token)
             }
             _ => {
@@ -129,7 +132,11 @@ impl Parser<'_, '_, '_> {
         self.expect(T::RBrace);
         if dims.len() > MAX_DIMS {
             let span = self.span_from(open.span.start);
-            self.error(SyntaxErrorKind::TooManyDimensions, span, format!("array has {} dimensions; RAPID allows at most {MAX_DIMS}", dims.len()));
+            self.error(
+                SyntaxErrorKind::TooManyDimensions,
+                span,
+                format!("array has {} dimensions; RAPID allows at most {MAX_DIMS}", dims.len()),
+            );
         }
         dims
     }

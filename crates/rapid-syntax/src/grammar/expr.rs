@@ -55,21 +55,41 @@ impl Parser<'_, '_, '_> {
             return self.too_deep(start);
         }
         self.expr_depth += 1;
+        let depth_on_entry = self.expr_depth;
         let mut lhs = self.prefix();
         let mut lhs_is_relation = false;
         while let Some((op, bp)) = infix_op(self.nth(0)) {
             if bp < min_bp {
                 break;
             }
+            // Each operator in a chain nests the tree one level deeper on the left;
+            // later passes walk it recursively, so the chain counts towards the limit.
+            if self.expr_depth + 1 >= MAX_EXPR_DEPTH {
+                let span = self.current().span;
+                self.error(
+                    SyntaxErrorKind::NestingTooDeep,
+                    span,
+                    format!(
+                        "an expression with more than {MAX_EXPR_DEPTH} operators in a chain is too complex; split it"
+                    ),
+                );
+                self.skip_expression_rest();
+                break;
+            }
+            self.expr_depth += 1;
             let op_token = self.bump();
             if bp == REL_BP && lhs_is_relation {
-                self.error(SyntaxErrorKind::UnexpectedToken, op_token.span, "comparisons do not chain: write `a < b AND b < c`".into());
+                self.error(
+                    SyntaxErrorKind::UnexpectedToken,
+                    op_token.span,
+                    "comparisons do not chain: write `a < b AND b < c`".into(),
+                );
             }
             let rhs = self.expr_bp(bp + 1);
             lhs = self.binary(op, lhs, rhs);
             lhs_is_relation = bp == REL_BP;
         }
-        self.expr_depth -= 1;
+        self.expr_depth = depth_on_entry - 1;
         lhs
     }
 
@@ -87,6 +107,25 @@ impl Parser<'_, '_, '_> {
         let start = self.bump().span.start;
         let operand = self.expr_bp(operand_bp);
         self.arena.alloc(ExprKind::Unary { op, operand }, self.span_from(start))
+    }
+
+    /// Skips the rest of an expression that is too complex: operators and operands
+    /// (brackets skipped whole) up to whatever cannot continue an expression.
+    fn skip_expression_rest(&mut self) {
+        loop {
+            match self.nth(0) {
+                T::LParen | T::LBracket | T::LBrace => self.skip_nested(),
+                kind if infix_op(kind).is_some()
+                    || matches!(
+                        kind,
+                        T::Not | T::Num | T::Str | T::Ident | T::True | T::False | T::Dot | T::Placeholder
+                    ) =>
+                {
+                    self.bump();
+                }
+                _ => return,
+            }
+        }
     }
 
     /// Reports nesting past the limit once and skips the construct without recursing.
@@ -151,7 +190,19 @@ impl Parser<'_, '_, '_> {
                 self.arena.alloc(ExprKind::Name(name.sym), name.span)
             }
         };
+        let mut chain = 0;
         loop {
+            if matches!(self.nth(0), T::LBrace | T::Dot) && self.expr_depth + chain >= MAX_EXPR_DEPTH {
+                let span = self.current().span;
+                self.error(
+                    SyntaxErrorKind::NestingTooDeep,
+                    span,
+                    format!("more than {MAX_EXPR_DEPTH} nested indices and components; simplify the reference"),
+                );
+                self.skip_expression_rest();
+                return expr;
+            }
+            chain += 1;
             match self.nth(0) {
                 T::LBrace => {
                     self.bump();
@@ -203,4 +254,3 @@ impl Parser<'_, '_, '_> {
         items
     }
 }
-

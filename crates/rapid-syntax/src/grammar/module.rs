@@ -30,7 +30,11 @@ impl Parser<'_, '_, '_> {
                     let span = self.current().span;
                     if !reported_outside {
                         let what = if file.modules.is_empty() { "before MODULE" } else { "after ENDMODULE" };
-                        self.error(SyntaxErrorKind::OutsideModule, span, format!("program text {what}: everything must be inside MODULE ... ENDMODULE"));
+                        self.error(
+                            SyntaxErrorKind::OutsideModule,
+                            span,
+                            format!("program text {what}: everything must be inside MODULE ... ENDMODULE"),
+                        );
                         reported_outside = true;
                     }
                     self.bump();
@@ -81,7 +85,11 @@ impl Parser<'_, '_, '_> {
         match Placeholder::from_text(token.span.text(self.text)) {
             Some(ph @ (Placeholder::Tdn | Placeholder::Ddn | Placeholder::Rdn)) => Item::Placeholder(ph, token.span),
             _ => {
-                self.error(SyntaxErrorKind::UnexpectedToken, token.span, "only <TDN>, <DDN> or <RDN> may stand for a module item".into());
+                self.error(
+                    SyntaxErrorKind::UnexpectedToken,
+                    token.span,
+                    "only <TDN>, <DDN> or <RDN> may stand for a module item".into(),
+                );
                 Item::Placeholder(Placeholder::Ddn, token.span)
             }
         }
@@ -100,14 +108,22 @@ impl Parser<'_, '_, '_> {
         match self.nth(0) {
             T::Record | T::Alias => {
                 if let Some(span) = task {
-                    self.error(SyntaxErrorKind::UnexpectedToken, span, "TASK applies only to PERS and VAR declarations".into());
+                    self.error(
+                        SyntaxErrorKind::UnexpectedToken,
+                        span,
+                        "TASK applies only to PERS and VAR declarations".into(),
+                    );
                 }
                 Some(Item::Type(self.type_def(start, local.is_some())))
             }
             T::Var | T::Pers | T::Const => Some(Item::Data(self.data_decl(start, local, task))),
             T::Proc | T::Func | T::Trap => {
                 if let Some(span) = task {
-                    self.error(SyntaxErrorKind::UnexpectedToken, span, "TASK applies only to PERS and VAR declarations".into());
+                    self.error(
+                        SyntaxErrorKind::UnexpectedToken,
+                        span,
+                        "TASK applies only to PERS and VAR declarations".into(),
+                    );
                 }
                 Some(Item::Routine(self.routine(start, local.is_some())))
             }
@@ -152,11 +168,19 @@ impl Parser<'_, '_, '_> {
     fn check_attribute(&mut self, before: &[(ModuleAttr, Span)], attr: ModuleAttr, span: Span) {
         let text = span.text(self.text).to_ascii_uppercase();
         if before.iter().any(|(a, _)| *a == attr) {
-            self.error(SyntaxErrorKind::DuplicateModuleAttribute, span, format!("module attribute {text} is given twice"));
+            self.error(
+                SyntaxErrorKind::DuplicateModuleAttribute,
+                span,
+                format!("module attribute {text} is given twice"),
+            );
         } else if before.iter().any(|(a, _)| *a > attr) {
             self.error(SyntaxErrorKind::ModuleAttributeOrder, span, format!("module attribute {text} is out of order: the order is SYSMODULE, NOVIEW, NOSTEPIN, VIEWONLY, READONLY"));
         } else if attr > ModuleAttr::Noview && before.iter().any(|(a, _)| *a == ModuleAttr::Noview) {
-            self.error(SyntaxErrorKind::ModuleAttributeOrder, span, format!("NOVIEW may stand alone or with SYSMODULE only, not with {text}"));
+            self.error(
+                SyntaxErrorKind::ModuleAttributeOrder,
+                span,
+                format!("NOVIEW may stand alone or with SYSMODULE only, not with {text}"),
+            );
         }
     }
 }

@@ -48,7 +48,11 @@ impl Parser<'_, '_, '_> {
                 let kw = keyword.span.text(self.text).to_ascii_uppercase();
                 let end_word = end.describe().trim_matches('`');
                 let routine_name = name.span.text(self.text).to_owned();
-                self.error(SyntaxErrorKind::UnclosedBlock, keyword.span, format!("{kw} {routine_name} has no {end_word}"));
+                self.error(
+                    SyntaxErrorKind::UnclosedBlock,
+                    keyword.span,
+                    format!("{kw} {routine_name} has no {end_word}"),
+                );
             }
         }
         Routine { local, kind, ret_ty, name, params, body_span, body, span: self.span_from(start) }
@@ -99,7 +103,16 @@ impl Parser<'_, '_, '_> {
             let token = self.bump();
             let placeholder = Placeholder::from_text(token.span.text(self.text));
             let name = self.missing_name();
-            return Param { mode: ParamMode::In, ty: name, name, rank: 0, optional, group, placeholder, span: token.span };
+            return Param {
+                mode: ParamMode::In,
+                ty: name,
+                name,
+                rank: 0,
+                optional,
+                group,
+                placeholder,
+                span: token.span,
+            };
         }
         let mode = match self.nth(0) {
             T::Var => ParamMode::Var,
@@ -137,14 +150,18 @@ impl Parser<'_, '_, '_> {
         self.expect(T::RBrace);
         if rank as usize > super::decl::MAX_DIMS {
             let span = self.span_from(open.span.start);
-            self.error(SyntaxErrorKind::TooManyDimensions, span, format!("array parameter has {rank} dimensions; RAPID allows at most 3"));
+            self.error(
+                SyntaxErrorKind::TooManyDimensions,
+                span,
+                format!("array parameter has {rank} dimensions; RAPID allows at most 3"),
+            );
         }
         rank
     }
 
     /// Routine data, statements and handlers up to (not including) the END keyword.
     /// Returns the body when bodies are kept.
-    pub(crate) fn routine_body_items(&mut self) -> Option<Body> {
+    pub(crate) fn routine_body_items(&mut self) -> Option<Box<Body>> {
         let mut body = Body::default();
         let mut section = Section::Body;
         let mut seen_statement = false;
@@ -154,7 +171,11 @@ impl Parser<'_, '_, '_> {
                 kind if ROUTINE_END.contains(kind) => break,
                 T::Var | T::Pers | T::Const | T::Local | T::Task => {
                     if seen_statement || section != Section::Body {
-                        self.error(SyntaxErrorKind::UnexpectedToken, token.span, "data declarations must come before the routine's first instruction".into());
+                        self.error(
+                            SyntaxErrorKind::UnexpectedToken,
+                            token.span,
+                            "data declarations must come before the routine's first instruction".into(),
+                        );
                     }
                     let local = self.eat(T::Local).then_some(token.span);
                     let task = (local.is_none() && self.eat(T::Task)).then_some(token.span);
@@ -168,8 +189,16 @@ impl Parser<'_, '_, '_> {
                 T::Backward | T::Error | T::Undo => {
                     let next = self.handler_keyword(section);
                     let keyword = token.span;
-                    let error_numbers = if next == Section::Error && self.at(T::LParen) { self.error_number_list() } else { Vec::new() };
-                    self.emit_body_item(BodyItem::Section { section: next, keyword, error_numbers }, &mut body, &mut section);
+                    let error_numbers = if next == Section::Error && self.at(T::LParen) {
+                        self.error_number_list()
+                    } else {
+                        Vec::new()
+                    };
+                    self.emit_body_item(
+                        BodyItem::Section { section: next, keyword, error_numbers },
+                        &mut body,
+                        &mut section,
+                    );
                     section = next;
                 }
                 _ => {
@@ -181,7 +210,7 @@ impl Parser<'_, '_, '_> {
         }
         if self.keeps_bodies() {
             body.arena = std::mem::take(&mut self.arena);
-            return Some(body);
+            return Some(Box::new(body));
         }
         None
     }
@@ -202,7 +231,11 @@ impl Parser<'_, '_, '_> {
         };
         if rank(next) <= rank(current) {
             let word = token.span.text(self.text).to_ascii_uppercase();
-            self.error(SyntaxErrorKind::UnexpectedToken, token.span, format!("{word} handler out of place: handlers come once each, in the order BACKWARD, ERROR, UNDO"));
+            self.error(
+                SyntaxErrorKind::UnexpectedToken,
+                token.span,
+                format!("{word} handler out of place: handlers come once each, in the order BACKWARD, ERROR, UNDO"),
+            );
         }
         next
     }

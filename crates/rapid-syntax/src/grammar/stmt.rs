@@ -19,7 +19,11 @@ impl Parser<'_, '_, '_> {
         while !self.at_set(STMT_LIST_END) {
             if matches!(self.nth(0), T::Var | T::Pers | T::Const | T::Local) {
                 let span = self.current().span;
-                self.error(SyntaxErrorKind::UnexpectedToken, span, "data declarations may stand only at the start of a routine".into());
+                self.error(
+                    SyntaxErrorKind::UnexpectedToken,
+                    span,
+                    "data declarations may stand only at the start of a routine".into(),
+                );
                 let _ = self.data_decl(span.start, None, None);
                 continue;
             }
@@ -145,7 +149,11 @@ impl Parser<'_, '_, '_> {
             }
             _ => {
                 self.bump();
-                self.error(SyntaxErrorKind::UnexpectedToken, token.span, "only <SMT> may stand for an instruction".into());
+                self.error(
+                    SyntaxErrorKind::UnexpectedToken,
+                    token.span,
+                    "only <SMT> may stand for an instruction".into(),
+                );
                 self.eat(T::Semi);
                 StmtKind::Error
             }
@@ -198,7 +206,11 @@ impl Parser<'_, '_, '_> {
     fn compact_if(&mut self, cond: crate::ast::ExprId) -> StmtKind {
         let token = self.current();
         if matches!(token.kind, T::If | T::For | T::While | T::Test) {
-            self.error(SyntaxErrorKind::CompoundInCompactIf, token.span, "a compact IF (without THEN) takes one simple instruction; use IF ... THEN ... ENDIF".into());
+            self.error(
+                SyntaxErrorKind::CompoundInCompactIf,
+                token.span,
+                "a compact IF (without THEN) takes one simple instruction; use IF ... THEN ... ENDIF".into(),
+            );
         } else if STMT_LIST_END.contains(token.kind) || token.kind == T::Semi {
             self.error_expected("THEN or an instruction");
             self.eat(T::Semi);
@@ -288,5 +300,12 @@ impl Parser<'_, '_, '_> {
 }
 
 fn is_simple(kind: &StmtKind) -> bool {
-    !matches!(kind, StmtKind::If { .. } | StmtKind::CompactIf { .. } | StmtKind::For { .. } | StmtKind::While { .. } | StmtKind::Test { .. })
+    !matches!(
+        kind,
+        StmtKind::If { .. }
+            | StmtKind::CompactIf { .. }
+            | StmtKind::For { .. }
+            | StmtKind::While { .. }
+            | StmtKind::Test { .. }
+    )
 }
