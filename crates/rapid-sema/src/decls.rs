@@ -163,7 +163,7 @@ impl Checker<'_> {
         for param in routine.params.iter().filter(|p| p.placeholder.is_none()) {
             let name = self.text(param.name.span);
             if param.ty.sym == self.known.switch && (!param.optional || param.rank > 0) {
-                let why = if param.rank > 0 { "cannot be an array" } else { "must be optional: write `\\switch` " };
+                let why = if param.rank > 0 { "cannot be an array" } else { "must be optional: write `\\switch`" };
                 self.diag(Code::SwitchNotOptional, param.span, format!("switch parameter `{name}` {why}"));
             }
             if !param.optional && group_sizes.get(&param.group).copied().unwrap_or(0) > 1 {

@@ -148,9 +148,10 @@ impl Checker<'_> {
                 let info = self.data(data);
                 Ty { ty: info.ty, rank: info.rank }
             }
-            Some(Def::Routine(_)) | Some(Def::Type(_)) => {
+            Some(def @ (Def::Routine(_) | Def::Type(_))) => {
                 let text = self.text(span);
-                self.diag(Code::NotData, span, format!("`{text}` is a routine or a data type, not data"));
+                let what = if matches!(def, Def::Routine(_)) { "a routine" } else { "a data type" };
+                self.diag(Code::NotData, span, format!("`{text}` is {what}, not data"));
                 Ty::ERROR
             }
             None if sym == self.known.placeholder_id => Ty::ERROR,
