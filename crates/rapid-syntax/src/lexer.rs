@@ -473,7 +473,7 @@ fn find_module_line(text: &str, from: usize) -> Option<usize> {
     let mut offset = from;
     for line in text[from..].split_inclusive('\n') {
         let trimmed = line.trim_start();
-        if trimmed.len() >= 6 && trimmed[..6].eq_ignore_ascii_case("module") {
+        if trimmed.get(..6).is_some_and(|word| word.eq_ignore_ascii_case("module")) {
             return Some(offset + (line.len() - trimmed.len()));
         }
         offset += line.len();
@@ -572,6 +572,9 @@ mod tests {
         assert_eq!((toks, errs), (vec![T::Header, T::Module], vec![]));
         assert_eq!(kinds("a \0 b").1, vec![SyntaxErrorKind::InvalidCharacter]);
         assert_eq!(kinds("%%% open").1, vec![SyntaxErrorKind::UnterminatedHeader]);
+        // Found by the fuzzer: a non-ASCII letter where the scan for MODULE looks.
+        assert_eq!(kinds("%%%\n  LAN-1\u{df}x\nMODULE m").0, vec![T::Header, T::Module, T::Ident]);
+        assert_eq!(kinds("%%%\nModu\u{df}\n").1, vec![SyntaxErrorKind::UnterminatedHeader]);
         assert_eq!(kinds("%%%\n VERSION:1\n%%\nMODULE m").0, vec![T::Header, T::Module, T::Ident]);
     }
 }
