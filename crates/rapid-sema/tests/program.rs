@@ -121,3 +121,34 @@ fn deepest_accepted_nesting_checks_without_overflow() {
     src.push_str("ENDPROC\nENDMODULE\n");
     assert_eq!(codes(&[("deep.mod", &src)]), vec![]);
 }
+
+#[test]
+fn long_bodies_checked_on_two_threads_report_like_short_ones() {
+    // Over 1 MB of body takes the pipelined path (parser thread + checker thread);
+    // its diagnostics must be exactly those of the one-thread path, in order.
+    let mut src = String::from("MODULE cam\nPERS tooldata t1 := [TRUE,[[0,0,100],[1,0,0,0]],[1,[0,0,1],[1,0,0,0],0,0,0]];\nPROC main()\n");
+    let mut expected = Vec::new();
+    for n in 0..12_000 {
+        let line = 4 + n;
+        match n {
+            100 => {
+                src.push_str("MoveL [[1,2,3],[1,0,0,0],[0,0,0,0]],v100,z1,t1;\n");
+                expected.push(("cam.mod".to_string(), "E0304", line));
+            }
+            5_000 => {
+                src.push_str("MoveL p_missing,v100,z1,t1;\n");
+                expected.push(("cam.mod".to_string(), "E0201", line));
+            }
+            11_999 => {
+                src.push_str("MoveL [[1,2,3],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]],v100,z1;\n");
+                expected.push(("cam.mod".to_string(), "E0402", line));
+            }
+            _ => src.push_str(&format!(
+                "MoveL [[{n}.125,-{n}.5,{n}],[0.707107,0,0.707107,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]],v100,z1,t1\\WObj:=wobj0;\n"
+            )),
+        }
+    }
+    src.push_str("ENDPROC\nENDMODULE\n");
+    assert!(src.len() > 1 << 20, "the body must be long enough to be pipelined");
+    assert_eq!(codes(&[("cam.mod", &src)]), expected);
+}
