@@ -54,7 +54,8 @@ impl Checker<'_> {
         });
         let text = &self.files[self.file].text;
         for param in routine.params.iter().filter(|p| p.placeholder.is_none()) {
-            let info = self.param_info(param, false, text);
+            // Parameter types were resolved, and reported, when the routine was declared.
+            let info = self.with_diagnostics_muted(|ck| ck.param_info(param, false, text));
             let data = DataInfo {
                 display: info.display.clone(),
                 ty: info.ty,
@@ -310,15 +311,17 @@ impl Checker<'_> {
                 DataKind::ReadOnly => {
                     Some((Code::ReadOnlyWrite, format!("`{}` is a read-only system variable", info.display)))
                 }
-                _ => match self.types.class(info.ty) {
+                // What is assigned decides (§1.2.1): a num component of a record that also
+                // holds rawbytes is value data, though the record as a whole is not.
+                _ => match self.types.class(target_ty.ty) {
                     ValueClass::SemiValue => Some((
                         Code::SemiValueWrite,
                         format!("signal `{}` cannot be assigned; use Set, Reset, SetDO, SetAO or SetGO", info.display),
                     )),
-                    ValueClass::NonValue => Some((
-                        Code::NonValueUse,
-                        format!("`{}` has a non-value type and cannot be assigned", info.display),
-                    )),
+                    ValueClass::NonValue => {
+                        let ty = self.type_name(target_ty.ty);
+                        Some((Code::NonValueUse, format!("`{ty}` is a non-value type: its data cannot be assigned")))
+                    }
                     ValueClass::Value => None,
                 },
             };
@@ -483,11 +486,11 @@ impl Checker<'_> {
         if trap.is_placeholder {
             return;
         }
-        let is_trap =
-            matches!(self.lookup(trap.sym), Some(Def::Routine(idx)) if self.routine(idx).kind == RoutineKind::Trap);
-        if !is_trap {
-            let text = self.text(trap.span);
-            self.diag(Code::NotATrap, trap.span, format!("`{text}` is not a TRAP routine"));
+        let text = self.text(trap.span);
+        match self.lookup(trap.sym) {
+            Some(Def::Routine(idx)) if self.routine(idx).kind == RoutineKind::Trap => {}
+            Some(_) => self.diag(Code::NotATrap, trap.span, format!("`{text}` is not a TRAP routine")),
+            None => self.diag(Code::NotATrap, trap.span, format!("no TRAP routine `{text}` is defined in this task")),
         }
     }
 

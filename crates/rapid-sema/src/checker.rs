@@ -111,6 +111,15 @@ impl<'a> Checker<'a> {
         self.diags.push(Diagnostic::new(self.file, code, span, message));
     }
 
+    /// Runs `f` and drops the diagnostics it reports (for work done twice).
+    pub(crate) fn with_diagnostics_muted<T>(&mut self, f: impl FnOnce(&mut Self) -> T) -> T {
+        let (n_diags, n_in_file) = (self.diags.len(), self.diags_in_file);
+        let res = f(self);
+        self.diags.truncate(n_diags);
+        self.diags_in_file = n_in_file;
+        res
+    }
+
     pub(crate) fn lookup(&self, sym: Symbol) -> Option<Def> {
         self.scopes.lookup(self.module, sym)
     }

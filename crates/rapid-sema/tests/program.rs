@@ -126,7 +126,9 @@ fn deepest_accepted_nesting_checks_without_overflow() {
 fn long_bodies_checked_on_two_threads_report_like_short_ones() {
     // Over 1 MB of body takes the pipelined path (parser thread + checker thread);
     // its diagnostics must be exactly those of the one-thread path, in order.
-    let mut src = String::from("MODULE cam\nPERS tooldata t1 := [TRUE,[[0,0,100],[1,0,0,0]],[1,[0,0,1],[1,0,0,0],0,0,0]];\nPROC main()\n");
+    let mut src = String::from(
+        "MODULE cam\nPERS tooldata t1 := [TRUE,[[0,0,100],[1,0,0,0]],[1,[0,0,1],[1,0,0,0],0,0,0]];\nPROC main()\n",
+    );
     let mut expected = Vec::new();
     for n in 0..12_000 {
         let line = 4 + n;
@@ -151,4 +153,18 @@ fn long_bodies_checked_on_two_threads_report_like_short_ones() {
     src.push_str("ENDPROC\nENDMODULE\n");
     assert!(src.len() > 1 << 20, "the body must be long enough to be pipelined");
     assert_eq!(codes(&[("cam.mod", &src)]), expected);
+}
+
+#[test]
+fn value_components_of_non_value_records_can_be_assigned() {
+    // Found in the field (ROS-Industrial driver): a num inside a record that also holds
+    // rawbytes is value data (§1.2.1); only the non-value parts cannot be assigned.
+    let src = "MODULE m\nRECORD hdr\n  num a;\nENDRECORD\nRECORD msg\n  hdr h;\n  rawbytes data;\nENDRECORD\nPROC p()\n  VAR msg m;\n  VAR msg m2;\n  VAR rawbytes r;\n  m.h.a := 1;\n  m.h := [2];\n  m := m2;\n  m.data := r;\nENDPROC\nENDMODULE";
+    assert_eq!(codes(&[("m.mod", src)]), vec![("m.mod".into(), "E0307", 15), ("m.mod".into(), "E0307", 16)]);
+}
+
+#[test]
+fn an_undefined_parameter_type_is_reported_once() {
+    let src = "MODULE m\nPROC p(nosuchtype x)\nENDPROC\nENDMODULE";
+    assert_eq!(codes(&[("m.mod", src)]), vec![("m.mod".into(), "E0204", 2)]);
 }

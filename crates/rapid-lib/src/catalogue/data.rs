@@ -131,6 +131,9 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("VAR mecunit ROB_ID;", "Reference to the robot controlled by this task, if any."),
     // uncertain: mechanical units come from the configuration; ROB_1 is present in single-robot systems.
     data("VAR mecunit ROB_1;", "The first robot mechanical unit."),
+    // uncertain: every configured task X has a predefined `XId` of type taskid; until the
+    // system configuration is read (issue 5), the default task T_ROB1 is assumed.
+    data("VAR taskid T_ROB1Id;", "Identity of the program task T_ROB1 (for \\TaskRef arguments)."),
     // ---- Error recovery system data ----------------------------------------------------------
     read_only("VAR errnum ERRNO;", "Number of the latest recoverable error, read in ERROR handlers."),
     read_only("VAR intnum INTNO;", "Number of the interrupt that started the current trap routine."),

@@ -4,11 +4,12 @@ use super::entry::*;
 
 pub(crate) const ENTRIES: &[Entry] = &[
     // --- Basic operations -----------------------------------------------------------------
-    // uncertain: added in RW 6.11; listed as an instruction. The public extract gives only
-    // Text \Arg1 \Arg2 ({1}/{2} replacement); reading Text as updated in place is a guess.
+    // uncertain: added in RW 6.11. Programs use its value (`s := StrFormat("p{1}.bin"\Arg1:=n)`),
+    // so it is a function; the public record shows {1}/{2} placeholders but not the highest
+    // \ArgN, so ten are accepted rather than reject a real program.
     routine(
-        r#"PROC StrFormat(INOUT string Text \string Arg1 \string Arg2)"#,
-        "Formats a text, replacing the {1} and {2} placeholders with the given strings.",
+        r#"FUNC string StrFormat(string Str \string Arg1 \string Arg2 \string Arg3 \string Arg4 \string Arg5 \string Arg6 \string Arg7 \string Arg8 \string Arg9 \string Arg10)"#,
+        "Returns a text with its {1}, {2} ... placeholders replaced by the given strings.",
     ),
     routine(r#"FUNC num StrLen(string Str)"#, "Returns the number of characters in a string."),
     routine(

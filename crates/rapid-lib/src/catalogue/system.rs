@@ -205,6 +205,9 @@ pub(crate) const ENTRIES: &[Entry] = &[
         r#"FUNC bool GetNextProduct(INOUT num ListNumber, VAR string Name \VAR string Version)"#,
         "Steps through the installed products, returning the next product name.",
     ),
+    // uncertain: ABB's StateMachine add-in calls it; signature from the instruction list
+    // of RobotWare 6 (no argument, returns the ModalPayLoadMode system parameter).
+    routine(r#"FUNC num GetModalPayLoadMode()"#, "Returns the ModalPayLoadMode system parameter (1 = payload modal)."),
     routine(
         r#"FUNC string GetSysInfo(\switch SerialNo | switch SWVersion | switch SWVersionName | switch RobotType | switch CtrlId | switch LanIp | switch CtrlLang | switch SystemName)"#,
         "Returns one item of system information, such as serial number or software version.",

@@ -121,7 +121,11 @@ impl Parser<'_, '_, '_> {
                 // `x = 1;` is a common slip for `x := 1;`: say so, and read it as meant.
                 let target = self.postfix_expr();
                 let eq = self.bump();
-                self.error(SyntaxErrorKind::UnexpectedToken, eq.span, "`=` compares values; assignment is written `:=`".into());
+                self.error(
+                    SyntaxErrorKind::UnexpectedToken,
+                    eq.span,
+                    "`=` compares values; assignment is written `:=`".into(),
+                );
                 let value = self.expr();
                 self.end_of_simple_stmt();
                 StmtKind::Assign { target, value }
