@@ -98,24 +98,7 @@ impl Checker<'_> {
 
     fn routine_data(&mut self, decl: &DataDecl, arena: &Arena) {
         let ty = self.resolve_type_name(decl.ty, false);
-        let kind = match decl.storage {
-            rapid_syntax::ast::Storage::Const => DataKind::Const,
-            rapid_syntax::ast::Storage::Pers => DataKind::Pers,
-            rapid_syntax::ast::Storage::Var => DataKind::Var,
-        };
-        let const_value = match (kind, decl.init) {
-            (DataKind::Const, Some(init)) if decl.dims.is_empty() => self.const_num(arena, init),
-            _ => None,
-        };
-        let data = DataInfo {
-            display: self.text(decl.name.span).to_string(),
-            ty,
-            rank: decl.dims.len().min(3) as u8,
-            dims: [0; 3],
-            kind,
-            const_value,
-            optional: false,
-        };
+        let data = self.data_info(decl, ty, false, true, arena, &self.files[self.file].text);
         let idx = self.add_routine_data(decl.name, data);
         self.check_data_decl(decl, arena, idx, true);
     }

@@ -336,6 +336,23 @@ impl Checker<'_> {
     ) {
         let builtin = level == Level::Builtin;
         let ty = self.resolve_type_name(decl.ty, builtin);
+        let info = self.data_info(decl, ty, read_only, !builtin, arena, text);
+        self.datas.push(info);
+        let idx = self.datas.len() as u32 - 1;
+        self.register(decl.name, level, Def::Data(idx));
+    }
+
+    /// What the data table records about a declaration; the value of a num CONST is
+    /// evaluated when `evaluate_const` (built-ins need no values).
+    pub(crate) fn data_info(
+        &self,
+        decl: &DataDecl,
+        ty: TypeId,
+        read_only: bool,
+        evaluate_const: bool,
+        arena: &rapid_syntax::ast::Arena,
+        text: &str,
+    ) -> DataInfo {
         let kind = match (read_only, decl.storage) {
             (true, _) => DataKind::ReadOnly,
             (_, Storage::Var) => DataKind::Var,
@@ -343,10 +360,10 @@ impl Checker<'_> {
             (_, Storage::Const) => DataKind::Const,
         };
         let const_value = match (kind, decl.init) {
-            (DataKind::Const, Some(init)) if decl.dims.is_empty() && !builtin => self.const_num(arena, init),
+            (DataKind::Const, Some(init)) if decl.dims.is_empty() && evaluate_const => self.const_num(arena, init),
             _ => None,
         };
-        let info = DataInfo {
+        DataInfo {
             display: decl.name.span.text(text).to_string(),
             ty,
             rank: decl.dims.len().min(3) as u8,
@@ -354,10 +371,7 @@ impl Checker<'_> {
             kind,
             const_value,
             optional: false,
-        };
-        self.datas.push(info);
-        let idx = self.datas.len() as u32 - 1;
-        self.register(decl.name, level, Def::Data(idx));
+        }
     }
 
     fn declare_routine(&mut self, routine: &Routine, level: Level, chapter: Option<&'static str>, text: &str) {
