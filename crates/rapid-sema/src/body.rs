@@ -282,44 +282,45 @@ impl Checker<'_> {
         let target_span = arena.expr(target).span;
         let mut dims = [0u32; 3];
         if let Some((data, entire)) = self.reference_root(arena, target) {
-            let info = self.data(data).clone();
-            let problem = match info.kind {
-                DataKind::Const => {
-                    Some((Code::ReadOnlyWrite, format!("`{}` is a constant and cannot be assigned", info.display)))
-                }
-                DataKind::LoopVar => Some((
-                    Code::ReadOnlyWrite,
-                    format!("`{}` is a FOR loop variable: it can only be read", info.display),
-                )),
-                DataKind::ReadOnly => {
-                    Some((Code::ReadOnlyWrite, format!("`{}` is a read-only system variable", info.display)))
-                }
-                // What is assigned decides (§1.2.1): a num component of a record that also
-                // holds rawbytes is value data, though the record as a whole is not.
-                _ => match self.types.class(target_ty.ty) {
-                    ValueClass::SemiValue => Some((
-                        Code::SemiValueWrite,
-                        format!("signal `{}` cannot be assigned; use Set, Reset, SetDO, SetAO or SetGO", info.display),
-                    )),
-                    ValueClass::NonValue => {
-                        let ty = self.type_name(target_ty.ty);
-                        Some((Code::NonValueUse, format!("`{ty}` is a non-value type: its data cannot be assigned")))
-                    }
-                    ValueClass::Value => None,
-                },
-            };
+            let problem = self.assignment_problem(data, target_ty);
             if let Some((code, message)) = problem {
                 self.diag(code, target_span, message);
                 self.expr(arena, value, Some(Expect::scalar(types::ANY)));
                 return;
             }
             if entire {
-                dims = info.dims;
+                dims = self.data(data).dims;
             }
         }
         let rank = target_ty.rank.min(3) as usize;
         let expect = Expect { ty: target_ty.ty, dims: &dims[..rank] };
         self.expect_value(arena, value, expect, What::Text("the assigned value"));
+    }
+
+    /// Why data `data` may not be assigned a value of `target_ty` (§1.2.1, §1.2.2).
+    fn assignment_problem(&self, data: u32, target_ty: crate::expr::Ty) -> Option<(Code, String)> {
+        let info = self.data(data);
+        let name = &info.display;
+        match info.kind {
+            DataKind::Const => Some((Code::ReadOnlyWrite, format!("`{name}` is a constant and cannot be assigned"))),
+            DataKind::LoopVar => {
+                Some((Code::ReadOnlyWrite, format!("`{name}` is a FOR loop variable: it can only be read")))
+            }
+            DataKind::ReadOnly => Some((Code::ReadOnlyWrite, format!("`{name}` is a read-only system variable"))),
+            // What is assigned decides (§1.2.1): a num component of a record that also
+            // holds rawbytes is value data, though the record as a whole is not.
+            _ => match self.types.class(target_ty.ty) {
+                ValueClass::SemiValue => Some((
+                    Code::SemiValueWrite,
+                    format!("signal `{name}` cannot be assigned; use Set, Reset, SetDO, SetAO or SetGO"),
+                )),
+                ValueClass::NonValue => {
+                    let ty = self.type_name(target_ty.ty);
+                    Some((Code::NonValueUse, format!("`{ty}` is a non-value type: its data cannot be assigned")))
+                }
+                ValueClass::Value => None,
+            },
+        }
     }
 
     fn for_stmt(&mut self, arena: &Arena, var: Name, from: ExprId, to: ExprId, step: Option<ExprId>, body: &[Stmt]) {
