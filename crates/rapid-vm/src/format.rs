@@ -1,0 +1,1 @@
+//! How the controller turns values into text (TPWrite, NumToStr, ValToStr, Write).
