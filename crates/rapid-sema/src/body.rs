@@ -11,7 +11,7 @@ use rustc_hash::FxHashMap;
 use crate::checker::Checker;
 use crate::codes::Code;
 use crate::expr::{Expect, What};
-use crate::symbols::{DataInfo, DataKind, Def};
+use crate::symbols::{DataInfo, DataKind, DeclOrigin, Def};
 use crate::types::{self, ValueClass};
 
 /// What the checker knows about the routine whose body it is reading.
@@ -64,6 +64,7 @@ impl Checker<'_> {
                 kind: DataKind::Param(info.mode),
                 const_value: None,
                 optional: info.optional,
+                origin: DeclOrigin::Routine,
             };
             self.add_routine_data(param.name, data);
         }
@@ -338,6 +339,7 @@ impl Checker<'_> {
             kind: DataKind::LoopVar,
             const_value: None,
             optional: false,
+            origin: DeclOrigin::Routine,
         };
         self.datas.push(data);
         let idx = self.datas.len() as u32 - 1;

@@ -8,7 +8,7 @@ use crate::body::RoutineCtx;
 use crate::codes::Code;
 use crate::diagnostic::{Diagnostic, SourceInput};
 use crate::symbols::{DataInfo, Def, RoutineInfo, Scopes};
-use crate::types::{TypeId, Types};
+use crate::types::{CoreTypes, TypeId, Types};
 
 /// Diagnostics per file past which a file is reported as hopeless.
 pub(crate) const MAX_DIAGNOSTICS_PER_FILE: usize = 500;
@@ -19,19 +19,6 @@ pub(crate) struct WellKnown {
     pub(crate) switch: Symbol,
     pub(crate) anytype: Symbol,
     pub(crate) placeholder_id: Symbol,
-}
-
-/// Well-known types, found in the catalogue.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct CoreTypes {
-    pub(crate) num: TypeId,
-    pub(crate) dnum: TypeId,
-    pub(crate) bool_: TypeId,
-    pub(crate) string: TypeId,
-    pub(crate) pos: TypeId,
-    pub(crate) orient: TypeId,
-    pub(crate) errnum: TypeId,
-    pub(crate) intnum: TypeId,
 }
 
 pub(crate) struct Checker<'a> {

@@ -10,7 +10,7 @@ use rustc_hash::FxHashMap;
 
 use crate::checker::Checker;
 use crate::codes::Code;
-use crate::symbols::{DataInfo, DataKind, Def, Origin, ParamInfo, RoutineInfo, ANY_RANK};
+use crate::symbols::{DeclOrigin, DataInfo, DataKind, Def, Origin, ParamInfo, RoutineInfo, ANY_RANK};
 use crate::types::{self, Atomic, Field, TypeId, TypeInfo, TypeKind};
 
 /// One user module and the file it came from.
@@ -68,13 +68,15 @@ impl Checker<'_> {
         self.find_core_types(interner);
         for entry in &cat.entries {
             let Some(item) = cat.item(entry) else { continue };
+            let rapid_lib::BuiltinItem::Parsed(item_idx) = entry.item else { continue };
+            let origin = DeclOrigin::Builtin(item_idx);
             match item {
                 Item::Data(decl) => {
                     let read_only = entry.entry.kind == EntryKind::ReadOnlyData;
-                    self.declare_data(decl, Level::Builtin, read_only, &cat.module.arena, cat.text.as_str());
+                    self.declare_data(decl, Level::Builtin, read_only, &cat.module.arena, cat.text.as_str(), origin);
                 }
                 Item::Routine(routine) => {
-                    self.declare_routine(routine, Level::Builtin, Some(entry.chapter), cat.text.as_str())
+                    self.declare_routine(routine, Level::Builtin, Some(entry.chapter), cat.text.as_str(), origin)
                 }
                 _ => {}
             }
@@ -86,7 +88,7 @@ impl Checker<'_> {
             Some(Def::Type(ty)) => *ty,
             _ => types::ERROR,
         };
-        self.core = crate::checker::CoreTypes {
+        self.core = crate::types::CoreTypes {
             num: find("num"),
             dnum: find("dnum"),
             bool_: find("bool"),
@@ -123,17 +125,19 @@ impl Checker<'_> {
         }
         for (idx, m) in modules.iter().enumerate() {
             self.enter(m.file, idx);
-            for item in &m.module.items {
+            for (item_idx, item) in m.module.items.iter().enumerate() {
+                let origin = DeclOrigin::Module { module: idx, item: item_idx };
                 match item {
                     Item::Data(decl) => {
                         let level = Level::Module { local: decl.scope == DeclScope::Local };
-                        self.declare_data(decl, level, false, &m.module.arena, &self.files[m.file].text);
+                        self.declare_data(decl, level, false, &m.module.arena, &self.files[m.file].text, origin);
                     }
                     Item::Routine(routine) => self.declare_routine(
                         routine,
                         Level::Module { local: routine.local },
                         None,
                         &self.files[m.file].text,
+                        origin,
                     ),
                     _ => {}
                 }
@@ -333,10 +337,11 @@ impl Checker<'_> {
         read_only: bool,
         arena: &rapid_syntax::ast::Arena,
         text: &str,
+        origin: DeclOrigin,
     ) {
         let builtin = level == Level::Builtin;
         let ty = self.resolve_type_name(decl.ty, builtin);
-        let info = self.data_info(decl, ty, read_only, !builtin, arena, text);
+        let info = DataInfo { origin, ..self.data_info(decl, ty, read_only, !builtin, arena, text) };
         self.datas.push(info);
         let idx = self.datas.len() as u32 - 1;
         self.register(decl.name, level, Def::Data(idx));
@@ -371,10 +376,18 @@ impl Checker<'_> {
             kind,
             const_value,
             optional: false,
+            origin: DeclOrigin::Routine,
         }
     }
 
-    fn declare_routine(&mut self, routine: &Routine, level: Level, chapter: Option<&'static str>, text: &str) {
+    fn declare_routine(
+        &mut self,
+        routine: &Routine,
+        level: Level,
+        chapter: Option<&'static str>,
+        text: &str,
+        origin: DeclOrigin,
+    ) {
         let builtin = level == Level::Builtin;
         let ret = routine.ret_ty.map(|ty| self.resolve_type_name(ty, builtin));
         let mut has_placeholders = false;
@@ -395,6 +408,7 @@ impl Checker<'_> {
             groups,
             chapter,
             has_placeholders,
+            origin,
         };
         self.routines.push(info);
         let idx = self.routines.len() as u32 - 1;

@@ -18,9 +18,9 @@ mod decls;
 mod diagnostic;
 mod expr;
 mod pipeline;
-mod symbols;
+pub mod symbols;
 mod syntax;
-mod types;
+pub mod types;
 
 use std::sync::OnceLock;
 
@@ -43,6 +43,42 @@ pub struct Options {
 /// Checks the modules of one task (one program) together and returns every
 /// diagnostic, ordered by file and position.
 pub fn check(files: &[SourceInput], options: &Options) -> Vec<Diagnostic> {
+    analyze(files, options).diagnostics
+}
+
+/// What checking a task found: its diagnostics and, unless only the syntax was
+/// checked, the resolved tables the interpreter builds on.
+#[derive(Debug)]
+pub struct Analysis {
+    pub diagnostics: Vec<Diagnostic>,
+    pub program: Option<Program>,
+}
+
+/// The task's declarations, resolved: every type, data object (built-in and
+/// module-level; routine data is the interpreter's business) and routine, with the
+/// scopes that resolve names and the interner that spelled them.
+#[derive(Debug)]
+pub struct Program {
+    pub interner: Interner,
+    pub types: types::Types,
+    pub core: types::CoreTypes,
+    pub datas: Vec<symbols::DataInfo>,
+    pub routines: Vec<symbols::RoutineInfo>,
+    /// Built-in, task-global and module-local names (`Scopes::routine` is empty).
+    pub scopes: symbols::Scopes,
+    /// The file of each module, in module order (the order of `DeclOrigin::Module`).
+    pub module_files: Vec<usize>,
+}
+
+impl Program {
+    /// Whether the analysis found errors (warnings allowed).
+    pub fn has_errors(diagnostics: &[Diagnostic]) -> bool {
+        diagnostics.iter().any(|d| d.severity() == Severity::Error)
+    }
+}
+
+/// Checks a task like [`check`] and keeps the resolved declarations.
+pub fn analyze(files: &[SourceInput], options: &Options) -> Analysis {
     let (base_interner, catalogue) = catalogue();
     let mut interner = base_interner.clone();
     let mut diags = Vec::new();
@@ -70,6 +106,7 @@ pub fn check(files: &[SourceInput], options: &Options) -> Vec<Diagnostic> {
         .filter_map(|(file, parse)| parse.as_ref().map(|p| (file, p)))
         .flat_map(|(file, parse)| parse.file.modules.iter().map(move |module| ModuleRef { file, module }))
         .collect();
+    let mut program = None;
     if options.syntax_only {
         for m in &modules {
             for routine in routines(m) {
@@ -78,18 +115,27 @@ pub fn check(files: &[SourceInput], options: &Options) -> Vec<Diagnostic> {
             }
         }
     } else {
-        check_semantics(files, &modules, catalogue, &mut interner, &mut syntax_errors, &mut diags);
+        let ck = check_semantics(files, &modules, catalogue, &mut interner, &mut syntax_errors, &mut diags);
+        program = Some(Program {
+            interner,
+            types: ck.types,
+            core: ck.core,
+            datas: ck.datas,
+            routines: ck.routines,
+            scopes: ck.scopes,
+            module_files: ck.module_files,
+        });
     }
     for (file, errors) in syntax_errors.into_iter().enumerate() {
         diags.extend(cap_errors(errors).iter().map(|e| syntax::to_diagnostic(file, e)));
     }
     diags.sort_by_key(|d| (d.file, d.span.start, d.span.end));
-    diags
+    Analysis { diagnostics: diags, program }
 }
 
 /// The catalogue, parsed once per process, with the interner that holds its names;
 /// each check starts from a copy of that interner, so the catalogue's symbols hold.
-fn catalogue() -> &'static (Interner, rapid_lib::LoadedCatalogue) {
+pub fn catalogue() -> &'static (Interner, rapid_lib::LoadedCatalogue) {
     static BASE: OnceLock<(Interner, rapid_lib::LoadedCatalogue)> = OnceLock::new();
     BASE.get_or_init(|| {
         let mut interner = Interner::default();
@@ -105,14 +151,14 @@ fn routines<'m>(m: &ModuleRef<'m>) -> impl Iterator<Item = &'m rapid_syntax::ast
     })
 }
 
-fn check_semantics(
-    files: &[SourceInput],
+fn check_semantics<'a>(
+    files: &'a [SourceInput],
     modules: &[ModuleRef<'_>],
     catalogue: &rapid_lib::LoadedCatalogue,
     interner: &mut Interner,
     syntax_errors: &mut [Vec<SyntaxError>],
     diags: &mut Vec<Diagnostic>,
-) {
+) -> Checker<'a> {
     let known = WellKnown {
         switch: interner.intern("switch"),
         anytype: interner.intern("anytype"),
@@ -141,6 +187,7 @@ fn check_semantics(
         }
     }
     diags.append(&mut ck.diags);
+    ck
 }
 
 /// Bodies at least this long (in bytes) are parsed on a second thread while the

@@ -10,10 +10,10 @@ use rustc_hash::FxHashMap;
 use crate::types::TypeId;
 
 /// Rank of an `anytype X{*}` parameter: any array.
-pub(crate) const ANY_RANK: u8 = u8::MAX;
+pub const ANY_RANK: u8 = u8::MAX;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum DataKind {
+pub enum DataKind {
     Var,
     Pers,
     Const,
@@ -24,53 +24,68 @@ pub(crate) enum DataKind {
 }
 
 #[derive(Debug, Clone)]
-pub(crate) struct DataInfo {
-    pub(crate) display: String,
-    pub(crate) ty: TypeId,
-    pub(crate) rank: u8,
+pub struct DataInfo {
+    pub display: String,
+    pub ty: TypeId,
+    pub rank: u8,
     /// Known sizes of the dimensions (0 = unknown).
-    pub(crate) dims: [u32; 3],
-    pub(crate) kind: DataKind,
+    pub dims: [u32; 3],
+    pub kind: DataKind,
     /// The value of a num CONST, when it is a constant expression we can evaluate.
-    pub(crate) const_value: Option<f64>,
+    pub const_value: Option<f64>,
     /// An optional parameter of the routine being checked.
-    pub(crate) optional: bool,
+    pub optional: bool,
+    /// Where the declaration is (to find its initial value).
+    pub origin: DeclOrigin,
+}
+
+/// Where a data object or routine was declared.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DeclOrigin {
+    /// Item `index` of the catalogue's module.
+    Builtin(usize),
+    /// Item `item` of user module `module` (index into the task's modules).
+    Module { module: usize, item: usize },
+    /// Routine data, a parameter or a loop variable.
+    Routine,
 }
 
 #[derive(Debug, Clone)]
-pub(crate) struct ParamInfo {
-    pub(crate) name: Symbol,
-    pub(crate) display: String,
-    pub(crate) ty: TypeId,
-    pub(crate) rank: u8,
-    pub(crate) mode: ParamMode,
-    pub(crate) optional: bool,
-    pub(crate) group: u16,
+pub struct ParamInfo {
+    pub name: Symbol,
+    pub display: String,
+    pub ty: TypeId,
+    pub rank: u8,
+    pub mode: ParamMode,
+    pub optional: bool,
+    pub group: u16,
 }
 
 impl ParamInfo {
-    pub(crate) fn is_switch(&self) -> bool {
+    pub fn is_switch(&self) -> bool {
         self.ty == crate::types::SWITCH
     }
 }
 
 #[derive(Debug, Clone)]
-pub(crate) struct RoutineInfo {
-    pub(crate) display: String,
-    pub(crate) kind: RoutineKind,
-    pub(crate) ret: Option<TypeId>,
-    pub(crate) params: Rc<[ParamInfo]>,
+pub struct RoutineInfo {
+    pub display: String,
+    pub kind: RoutineKind,
+    pub ret: Option<TypeId>,
+    pub params: Rc<[ParamInfo]>,
     /// Runs of mutually exclusive parameters, `(start, end)` indices into `params`.
-    pub(crate) groups: Rc<[(usize, usize)]>,
+    pub groups: Rc<[(usize, usize)]>,
     /// The catalogue chapter of a built-in (`None` for user routines).
-    pub(crate) chapter: Option<&'static str>,
+    pub chapter: Option<&'static str>,
     /// The parameter list holds placeholders, so calls cannot be checked.
-    pub(crate) has_placeholders: bool,
+    pub has_placeholders: bool,
+    /// Where the routine was declared.
+    pub origin: DeclOrigin,
 }
 
 /// What a name denotes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Def {
+pub enum Def {
     Data(u32),
     Routine(u32),
     Type(TypeId),
@@ -78,28 +93,28 @@ pub(crate) enum Def {
 
 /// Where a module-level declaration came from, for duplicate checks.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Origin {
-    pub(crate) module: usize,
-    pub(crate) span: Span,
-    pub(crate) def: Def,
+pub struct Origin {
+    pub module: usize,
+    pub span: Span,
+    pub def: Def,
 }
 
 /// All declarations visible to a task, by scope level.
 #[derive(Debug, Default)]
-pub(crate) struct Scopes {
-    pub(crate) builtins: FxHashMap<Symbol, Def>,
-    pub(crate) globals: FxHashMap<Symbol, Origin>,
-    pub(crate) module_locals: Vec<FxHashMap<Symbol, Def>>,
+pub struct Scopes {
+    pub builtins: FxHashMap<Symbol, Def>,
+    pub globals: FxHashMap<Symbol, Origin>,
+    pub module_locals: Vec<FxHashMap<Symbol, Def>>,
     /// Routine data and parameters of the routine being checked.
-    pub(crate) routine: FxHashMap<Symbol, u32>,
+    pub routine: FxHashMap<Symbol, u32>,
     /// FOR loop variables, innermost last.
-    pub(crate) loop_vars: Vec<(Symbol, u32)>,
+    pub loop_vars: Vec<(Symbol, u32)>,
 }
 
 impl Scopes {
     /// Resolves `sym` from inside module `module`: loop variables, routine data,
     /// module-local items, task-global items, then built-ins (§1.1.5, §1.2.2).
-    pub(crate) fn lookup(&self, module: usize, sym: Symbol) -> Option<Def> {
+    pub fn lookup(&self, module: usize, sym: Symbol) -> Option<Def> {
         if let Some(&(_, data)) = self.loop_vars.iter().rev().find(|(s, _)| *s == sym) {
             return Some(Def::Data(data));
         }
@@ -110,7 +125,7 @@ impl Scopes {
     }
 
     /// Like `lookup`, ignoring routine data (for declarations at module level).
-    pub(crate) fn lookup_module_level(&self, module: usize, sym: Symbol) -> Option<Def> {
+    pub fn lookup_module_level(&self, module: usize, sym: Symbol) -> Option<Def> {
         if let Some(def) = self.module_locals.get(module).and_then(|m| m.get(&sym)) {
             return Some(*def);
         }
@@ -122,7 +137,7 @@ impl Scopes {
 }
 
 /// Runs of consecutive parameters that share a group (mutually exclusive ones).
-pub(crate) fn group_ranges(params: &[ParamInfo]) -> Rc<[(usize, usize)]> {
+pub fn group_ranges(params: &[ParamInfo]) -> Rc<[(usize, usize)]> {
     let mut groups: Vec<(usize, usize)> = Vec::new();
     for (idx, param) in params.iter().enumerate() {
         match groups.last_mut() {

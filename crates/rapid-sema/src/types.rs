@@ -5,10 +5,10 @@ use rapid_syntax::{Span, Symbol};
 
 /// Index of a type in the [`Types`] table.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub(crate) struct TypeId(u32);
+pub struct TypeId(u32);
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Atomic {
+pub enum Atomic {
     Num,
     Dnum,
     Bool,
@@ -16,14 +16,14 @@ pub(crate) enum Atomic {
 }
 
 #[derive(Debug, Clone)]
-pub(crate) struct Field {
-    pub(crate) name: Symbol,
-    pub(crate) display: String,
-    pub(crate) ty: TypeId,
+pub struct Field {
+    pub name: Symbol,
+    pub display: String,
+    pub ty: TypeId,
 }
 
 #[derive(Debug, Clone)]
-pub(crate) enum TypeKind {
+pub enum TypeKind {
     /// Stands for a type that could not be resolved; accepts everything, so one
     /// mistake gives one diagnostic.
     Error,
@@ -43,31 +43,31 @@ pub(crate) enum TypeKind {
 
 /// Whether a type's data can take part in value operations (§1.2.1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum ValueClass {
+pub enum ValueClass {
     Value,
     SemiValue,
     NonValue,
 }
 
 #[derive(Debug, Clone)]
-pub(crate) struct TypeInfo {
-    pub(crate) display: String,
-    pub(crate) kind: TypeKind,
-    pub(crate) span: Span,
+pub struct TypeInfo {
+    pub display: String,
+    pub kind: TypeKind,
+    pub span: Span,
 }
 
 /// Every type of the program, built-ins first.
 #[derive(Debug)]
-pub(crate) struct Types {
+pub struct Types {
     infos: Vec<TypeInfo>,
 }
 
-pub(crate) const ERROR: TypeId = TypeId(0);
-pub(crate) const ANY: TypeId = TypeId(1);
-pub(crate) const SWITCH: TypeId = TypeId(2);
+pub const ERROR: TypeId = TypeId(0);
+pub const ANY: TypeId = TypeId(1);
+pub const SWITCH: TypeId = TypeId(2);
 
 impl Types {
-    pub(crate) fn new() -> Types {
+    pub fn new() -> Types {
         let special = |display: &str, kind| TypeInfo { display: display.into(), kind, span: Span::default() };
         Types {
             infos: vec![
@@ -78,25 +78,25 @@ impl Types {
         }
     }
 
-    pub(crate) fn add(&mut self, info: TypeInfo) -> TypeId {
+    pub fn add(&mut self, info: TypeInfo) -> TypeId {
         self.infos.push(info);
         TypeId(self.infos.len() as u32 - 1)
     }
 
-    pub(crate) fn info(&self, ty: TypeId) -> &TypeInfo {
+    pub fn info(&self, ty: TypeId) -> &TypeInfo {
         &self.infos[ty.0 as usize]
     }
 
-    pub(crate) fn set_kind(&mut self, ty: TypeId, kind: TypeKind) {
+    pub fn set_kind(&mut self, ty: TypeId, kind: TypeKind) {
         self.infos[ty.0 as usize].kind = kind;
     }
 
-    pub(crate) fn name(&self, ty: TypeId) -> &str {
+    pub fn name(&self, ty: TypeId) -> &str {
         &self.info(ty).display
     }
 
     /// The type with aliases followed to their base.
-    pub(crate) fn canonical(&self, mut ty: TypeId) -> TypeId {
+    pub fn canonical(&self, mut ty: TypeId) -> TypeId {
         for _ in 0..16 {
             match self.info(ty).kind {
                 TypeKind::Alias(base) => ty = base,
@@ -107,7 +107,7 @@ impl Types {
     }
 
     /// The type a value of `ty` has in an expression: signals read as their base.
-    pub(crate) fn value_of(&self, ty: TypeId) -> TypeId {
+    pub fn value_of(&self, ty: TypeId) -> TypeId {
         let canon = self.canonical(ty);
         match self.info(canon).kind {
             TypeKind::SemiValue(base) => self.canonical(base),
@@ -115,30 +115,30 @@ impl Types {
         }
     }
 
-    pub(crate) fn atomic(&self, ty: TypeId) -> Option<Atomic> {
+    pub fn atomic(&self, ty: TypeId) -> Option<Atomic> {
         match self.info(self.value_of(ty)).kind {
             TypeKind::Atomic(atomic) => Some(atomic),
             _ => None,
         }
     }
 
-    pub(crate) fn is_numeric(&self, ty: TypeId) -> bool {
+    pub fn is_numeric(&self, ty: TypeId) -> bool {
         matches!(self.atomic(ty), Some(Atomic::Num | Atomic::Dnum))
     }
 
     /// Accepts anything without a further diagnostic.
-    pub(crate) fn is_lenient(&self, ty: TypeId) -> bool {
+    pub fn is_lenient(&self, ty: TypeId) -> bool {
         matches!(self.info(self.canonical(ty)).kind, TypeKind::Error | TypeKind::Any | TypeKind::Pending)
     }
 
-    pub(crate) fn record_fields(&self, ty: TypeId) -> Option<&[Field]> {
+    pub fn record_fields(&self, ty: TypeId) -> Option<&[Field]> {
         match &self.info(self.value_of(ty)).kind {
             TypeKind::Record(fields) => Some(fields),
             _ => None,
         }
     }
 
-    pub(crate) fn class(&self, ty: TypeId) -> ValueClass {
+    pub fn class(&self, ty: TypeId) -> ValueClass {
         self.class_at_depth(ty, 0)
     }
 
@@ -163,7 +163,7 @@ impl Types {
 
     /// Whether a value of type `got` may stand where `want` is expected: alias
     /// equivalence, signals read as their base, num and dnum convert both ways.
-    pub(crate) fn compatible(&self, want: TypeId, got: TypeId) -> bool {
+    pub fn compatible(&self, want: TypeId, got: TypeId) -> bool {
         if want == got {
             return true;
         }
@@ -175,7 +175,20 @@ impl Types {
     }
 
     /// Whether `got` is exactly the type `want` up to aliases (for reference parameters).
-    pub(crate) fn same(&self, want: TypeId, got: TypeId) -> bool {
+    pub fn same(&self, want: TypeId, got: TypeId) -> bool {
         want == got || self.is_lenient(want) || self.is_lenient(got) || self.canonical(want) == self.canonical(got)
     }
+}
+
+/// Well-known types, found in the catalogue.
+#[derive(Debug, Clone, Copy)]
+pub struct CoreTypes {
+    pub num: TypeId,
+    pub dnum: TypeId,
+    pub bool_: TypeId,
+    pub string: TypeId,
+    pub pos: TypeId,
+    pub orient: TypeId,
+    pub errnum: TypeId,
+    pub intnum: TypeId,
 }
