@@ -16,8 +16,33 @@ pub(crate) struct Cli {
 pub(crate) enum Command {
     /// Parse and check RAPID modules and report every error.
     Check(CheckArgs),
+    /// Run a RAPID program on the virtual controller (task T_ROB1).
+    Run(RunArgs),
     /// List every diagnostic code with its severity and meaning.
     Codes,
+}
+
+#[derive(Debug, Args)]
+pub(crate) struct RunArgs {
+    /// The routine to start (a PROC without parameters).
+    #[arg(long, default_value = "main")]
+    pub(crate) entry: String,
+
+    /// Stop with an error after this many executed instructions.
+    #[arg(long, value_name = "N")]
+    pub(crate) max_steps: Option<u64>,
+
+    /// Stop with an error when the virtual clock passes this many seconds.
+    #[arg(long, value_name = "SECONDS")]
+    pub(crate) max_time: Option<f64>,
+
+    /// Wait in wall-clock time (WaitTime really waits).
+    #[arg(long)]
+    pub(crate) realtime: bool,
+
+    /// Module files, program files (.pgf) or folders, loaded together as one task.
+    #[arg(required = true, value_name = "PATH")]
+    pub(crate) paths: Vec<PathBuf>,
 }
 
 #[derive(Debug, Args)]

@@ -10,7 +10,7 @@ use rustc_hash::FxHashMap;
 
 use crate::checker::Checker;
 use crate::codes::Code;
-use crate::symbols::{DeclOrigin, DataInfo, DataKind, Def, Origin, ParamInfo, RoutineInfo, ANY_RANK};
+use crate::symbols::{DataInfo, DataKind, DeclOrigin, Def, Origin, ParamInfo, RoutineInfo, ANY_RANK};
 use crate::types::{self, Atomic, Field, TypeId, TypeInfo, TypeKind};
 
 /// One user module and the file it came from.

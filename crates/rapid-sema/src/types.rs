@@ -66,6 +66,12 @@ pub const ERROR: TypeId = TypeId(0);
 pub const ANY: TypeId = TypeId(1);
 pub const SWITCH: TypeId = TypeId(2);
 
+impl Default for Types {
+    fn default() -> Types {
+        Types::new()
+    }
+}
+
 impl Types {
     pub fn new() -> Types {
         let special = |display: &str, kind| TypeInfo { display: display.into(), kind, span: Span::default() };

@@ -3,4 +3,110 @@
 //! Invariant: no IO of its own. Output, input, clocks and files reach it through host
 //! traits; RAPID call depth lives in explicit frames, never on the Rust stack.
 
+pub mod builtins;
+pub mod compile;
+pub mod errnames;
+pub mod error;
+pub mod exec;
 pub mod format;
+pub mod host;
+pub mod ir;
+pub mod ops;
+pub mod value;
+
+use rapid_sema::symbols::Def;
+use rapid_sema::{analyze, Diagnostic, Options, Program, SourceInput};
+use rapid_syntax::ast::RoutineKind;
+use rustc_hash::FxHashMap;
+
+pub use exec::{Exit, Unhandled, Vm};
+pub use host::{Host, RecordingHost};
+
+/// Why a program could not be loaded.
+#[derive(Debug)]
+pub enum LoadError {
+    /// The program does not check: its diagnostics (errors among them).
+    Diagnostics(Vec<Diagnostic>),
+    /// It checks, but uses something the interpreter cannot run yet.
+    Unsupported(Vec<compile::CompileError>),
+    /// No routine of that name to start.
+    NoEntry(String),
+    /// Giving data its initial values failed.
+    Init(Unhandled),
+}
+
+/// A program ready to run: its VM positioned at the entry routine.
+pub struct Loaded {
+    pub vm: Vm,
+    /// Warnings found while checking.
+    pub warnings: Vec<Diagnostic>,
+}
+
+/// Checks, compiles and initialises the task made of `files`, ready to run `entry`.
+pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
+    let analysis = analyze(files, &Options::default());
+    if Program::has_errors(&analysis.diagnostics) {
+        return Err(LoadError::Diagnostics(analysis.diagnostics));
+    }
+    let Some(mut prog) = analysis.program else { return Err(LoadError::Diagnostics(analysis.diagnostics)) };
+    let (_, catalogue) = rapid_sema::catalogue();
+    let parses: Vec<(usize, rapid_syntax::Parse)> = files
+        .iter()
+        .enumerate()
+        .filter(|(_, f)| f.unreadable.is_none())
+        .map(|(idx, f)| (idx, rapid_syntax::parse(&f.text, &mut prog.interner)))
+        .collect();
+    let modules: Vec<compile::ModuleSource<'_>> = parses
+        .iter()
+        .flat_map(|(file, parse)| {
+            parse.file.modules.iter().map(move |module| compile::ModuleSource {
+                file: *file,
+                text: &files[*file].text,
+                module,
+            })
+        })
+        .collect();
+    let compiled =
+        compile::compile(&prog, &modules, &catalogue.module, &catalogue.text).map_err(LoadError::Unsupported)?;
+    let types = ops::OpTypes { pos: prog.core.pos, orient: prog.core.orient };
+    let procs_by_name: FxHashMap<String, u32> = prog
+        .routines
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| r.chapter.is_none() && r.kind == RoutineKind::Proc)
+        .map(|(idx, r)| (r.display.to_lowercase(), idx as u32))
+        .collect();
+    let global_named = |name: &str| match prog.interner.get(name).and_then(|sym| prog.scopes.builtins.get(&sym)) {
+        Some(Def::Data(idx)) => Some(*idx),
+        _ => None,
+    };
+    let errno_global = global_named("ERRNO");
+    let mut vm =
+        Vm::new(compiled.routines, procs_by_name, compiled.global_defaults, types, FxHashMap::default(), errno_global);
+    let mut host = RecordingHost::default();
+    vm.start(std::rc::Rc::new(compiled.init));
+    if let Exit::Unhandled(unhandled) = vm.run(&mut host, u64::MAX) {
+        return Err(LoadError::Init(unhandled));
+    }
+    let errnos: FxHashMap<&'static str, i32> = errnames::Err::ALL
+        .iter()
+        .map(|e| e.name())
+        .chain(["LONG_JMP_ALL_ERR"])
+        .filter_map(|name| {
+            let value = vm.global(global_named(name)?)?.as_f64()?;
+            Some((name, value as i32))
+        })
+        .collect();
+    vm.set_errnos(errnos);
+    let entry_idx = prog.interner.get(entry).and_then(|sym| prog.scopes.globals.get(&sym).map(|o| o.def));
+    let started = match entry_idx {
+        Some(Def::Routine(idx)) if prog.routines[idx as usize].kind == RoutineKind::Proc => vm.start_routine(idx),
+        _ => false,
+    };
+    if !started {
+        return Err(LoadError::NoEntry(entry.to_string()));
+    }
+    vm.steps = 0;
+    let warnings = analysis.diagnostics;
+    Ok(Loaded { vm, warnings })
+}

@@ -2,6 +2,7 @@
 
 mod check;
 mod codes;
+mod run;
 
 use std::process::ExitCode;
 
@@ -32,6 +33,7 @@ impl From<ExitStatus> for ExitCode {
 pub(crate) fn run(cli: Cli) -> anyhow::Result<ExitStatus> {
     match cli.command {
         Command::Check(args) => check::run(&args),
+        Command::Run(args) => run::run(&args),
         Command::Codes => codes::run(),
     }
 }

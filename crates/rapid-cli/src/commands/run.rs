@@ -1,0 +1,128 @@
+//! `rapid run PATH…`: loads the task like `rapid check`, refuses a program with
+//! errors, then runs the entry routine; pendant output goes to stdout, one line per
+//! write, and an unhandled error is reported on stderr as the system error handler's
+//! event-log entry would be.
+
+// The CLI is the one crate that talks to the terminal; run reports on stderr.
+#![allow(clippy::print_stderr)]
+
+use std::io::{self, BufWriter, Write};
+use std::time::Duration;
+
+use rapid_sema::SourceInput;
+use rapid_syntax::LineIndex;
+use rapid_vm::{load, Exit, Host, LoadError};
+
+use crate::args::RunArgs;
+use crate::commands::ExitStatus;
+use crate::inputs;
+use crate::render::{self, Files, Summary};
+
+/// Instructions executed between checks of the bounds and of output flushing.
+const SLICE: u64 = 1 << 16;
+
+pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
+    let inputs = inputs::collect(&args.paths)?;
+    let mut loaded = match load(&inputs.modules, &args.entry) {
+        Ok(loaded) => loaded,
+        Err(err) => return report_load_error(err, &inputs.modules),
+    };
+    let mut host = StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false };
+    let status = loop {
+        let exit = loaded.vm.run(&mut host, SLICE);
+        if let Some(max) = args.max_steps {
+            if loaded.vm.steps > max {
+                host.flush();
+                eprintln!("error: stopped after {max} steps (--max-steps); the program did not end");
+                break ExitStatus::Failure;
+            }
+        }
+        match exit {
+            Exit::Done | Exit::Stopped => break ExitStatus::Success,
+            Exit::Budget => {}
+            Exit::Wait(seconds) => {
+                loaded.vm.time += seconds;
+                if let Some(max) = args.max_time {
+                    if loaded.vm.time > max {
+                        host.flush();
+                        eprintln!("error: stopped at {max} s of controller time (--max-time); the program did not end");
+                        break ExitStatus::Failure;
+                    }
+                }
+                if args.realtime {
+                    host.flush();
+                    std::thread::sleep(Duration::from_secs_f64(seconds.min(86_400.0)));
+                }
+            }
+            Exit::Unhandled(unhandled) => {
+                host.flush();
+                let (path, line, column) = location(&inputs.modules, unhandled.file, unhandled.span.start);
+                eprintln!("error: {}", unhandled.error);
+                eprintln!("  in routine {} at {path}:{line}:{column}", unhandled.routine);
+                eprintln!("  the program stopped (no ERROR handler took the error)");
+                break ExitStatus::Failure;
+            }
+        }
+    };
+    host.flush();
+    Ok(status)
+}
+
+fn location(files: &[SourceInput], file: usize, offset: u32) -> (String, u32, u32) {
+    match files.get(file) {
+        Some(input) => {
+            let at = LineIndex::new(&input.text).line_col(&input.text, offset);
+            (input.path.clone(), at.line, at.column)
+        }
+        None => ("<predefined>".into(), 0, 0),
+    }
+}
+
+fn report_load_error(err: LoadError, files: &[SourceInput]) -> anyhow::Result<ExitStatus> {
+    match err {
+        LoadError::Diagnostics(diagnostics) => {
+            let table: Vec<&SourceInput> = files.iter().collect();
+            let summary = Summary::of(&diagnostics, table.len());
+            let mut out = io::stderr().lock();
+            render::human::render(&mut out, &Files::new(&table), &diagnostics, &summary)?;
+            writeln!(out, "the program has errors; it was not run")?;
+        }
+        LoadError::Unsupported(errors) => {
+            for e in errors {
+                let (path, line, column) = location(files, e.file, e.span.start);
+                eprintln!("error: {} ({path}:{line}:{column})", e.message);
+            }
+            eprintln!("the program was not run");
+        }
+        LoadError::NoEntry(name) => {
+            eprintln!("error: no procedure `{name}` without parameters to start (use --entry NAME)");
+            return Ok(ExitStatus::Error);
+        }
+        LoadError::Init(unhandled) => {
+            eprintln!("error: while giving data its initial values: {}", unhandled.error);
+        }
+    }
+    Ok(ExitStatus::Failure)
+}
+
+struct StdoutHost<'a> {
+    out: BufWriter<io::StdoutLock<'a>>,
+    broken: bool,
+}
+
+impl StdoutHost<'_> {
+    fn flush(&mut self) {
+        if !self.broken && self.out.flush().is_err() {
+            self.broken = true;
+        }
+    }
+}
+
+impl Host for StdoutHost<'_> {
+    fn tp_write(&mut self, line: &str) {
+        // A closed pipe (`rapid run x | head`) is not the program's fault: keep running.
+        if !self.broken && writeln!(self.out, "{line}").is_err() {
+            self.broken = true;
+        }
+    }
+}

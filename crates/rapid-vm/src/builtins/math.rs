@@ -1,0 +1,183 @@
+//! Arithmetic built-ins (§1.15): functions return the numeric kind of their argument
+//! (the `...Dnum` forms get dnums); trigonometry works in degrees.
+
+use super::{present, Ctx};
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::Value;
+
+type Res = Result<Option<Value>, RapidError>;
+
+/// A result of the same numeric kind as `like`.
+fn same_kind(like: &Value, x: f64) -> Value {
+    match like {
+        Value::Dnum(_) => Value::Dnum(x),
+        _ => Value::Num(x as f32),
+    }
+}
+
+fn unary(ctx: &mut Ctx<'_>, args: &[Value], f: impl Fn(f64) -> f64) -> Res {
+    let value = ctx.value(&args[0])?;
+    let x = ctx.num(&value)?;
+    Ok(Some(same_kind(&value, f(x))))
+}
+
+pub(super) fn abs(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    unary(ctx, args, f64::abs)
+}
+
+pub(super) fn sqrt(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    if ctx.num(&args[0])? < 0.0 {
+        return Err(ctx.error(Err::ArgValue, "Sqrt of a negative number"));
+    }
+    unary(ctx, args, f64::sqrt)
+}
+
+pub(super) fn exp(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    unary(ctx, args, f64::exp)
+}
+
+pub(super) fn pow(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let base_value = ctx.value(&args[0])?;
+    let (base, exponent) = (ctx.num(&base_value)?, ctx.num(&args[1])?);
+    if (base < 0.0 && exponent.fract() != 0.0) || (base == 0.0 && exponent <= 0.0) {
+        return Err(ctx.error(Err::ArgValue, format!("Pow({base}, {exponent}) is not defined")));
+    }
+    Ok(Some(same_kind(&base_value, base.powf(exponent))))
+}
+
+/// Round half away from zero to `\Dec` decimals (0 without it).
+pub(super) fn round(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let dec = decimals(ctx, args.get(1))?;
+    let scale = 10f64.powi(dec);
+    unary(ctx, args, |x| (x * scale).round() / scale)
+}
+
+/// Cut (toward zero) to `\Dec` decimals.
+pub(super) fn trunc(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let dec = decimals(ctx, args.get(1))?;
+    let scale = 10f64.powi(dec);
+    unary(ctx, args, |x| (x * scale).trunc() / scale)
+}
+
+fn decimals(ctx: &Ctx<'_>, arg: Option<&Value>) -> Result<i32, RapidError> {
+    match ctx.opt_num(arg)? {
+        None => Ok(0),
+        Some(d) if d >= 0.0 && d.fract() == 0.0 && d <= 15.0 => Ok(d as i32),
+        Some(d) => Err(ctx.error(Err::ArgValue, format!("{d} is not a number of decimals"))),
+    }
+}
+
+fn degrees(ctx: &mut Ctx<'_>, args: &[Value], f: impl Fn(f64) -> f64) -> Res {
+    let x = ctx.num(&args[0])?;
+    Ok(Some(Value::Num(f(x.to_radians()) as f32)))
+}
+
+pub(super) fn sin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    degrees(ctx, args, f64::sin)
+}
+
+pub(super) fn cos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    degrees(ctx, args, f64::cos)
+}
+
+pub(super) fn tan(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    degrees(ctx, args, f64::tan)
+}
+
+fn inverse(ctx: &mut Ctx<'_>, args: &[Value], unit_range: bool, f: impl Fn(f64) -> f64) -> Res {
+    let x = ctx.num(&args[0])?;
+    if unit_range && !(-1.0..=1.0).contains(&x) {
+        return Err(ctx.error(Err::ArgValue, format!("{x} is outside -1..1")));
+    }
+    Ok(Some(Value::Num(f(x).to_degrees() as f32)))
+}
+
+pub(super) fn asin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    inverse(ctx, args, true, f64::asin)
+}
+
+pub(super) fn acos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    inverse(ctx, args, true, f64::acos)
+}
+
+pub(super) fn atan(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    inverse(ctx, args, false, f64::atan)
+}
+
+pub(super) fn atan2(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (y, x) = (ctx.num(&args[0])?, ctx.num(&args[1])?);
+    Ok(Some(Value::Num(y.atan2(x).to_degrees() as f32)))
+}
+
+/// The first argument of a required `Name | Dname` pair that was passed.
+fn first_present(args: &[Value]) -> &Value {
+    args.iter().find(|a| present(Some(a))).unwrap_or(&Value::Absent)
+}
+
+fn update(ctx: &mut Ctx<'_>, target: &Value, f: impl Fn(f64) -> f64) -> Res {
+    let current = ctx.value(target)?;
+    let x = ctx.num(&current)?;
+    ctx.store(target, same_kind(&current, f(x)))?;
+    Ok(None)
+}
+
+pub(super) fn incr(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    update(ctx, first_present(&args[..2]), |x| x + 1.0)
+}
+
+pub(super) fn decr(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    update(ctx, first_present(&args[..2]), |x| x - 1.0)
+}
+
+pub(super) fn clear(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    update(ctx, first_present(&args[..2]), |_| 0.0)
+}
+
+pub(super) fn add(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let amount = ctx.num(first_present(&args[2..4]))?;
+    update(ctx, first_present(&args[..2]), |x| x + amount)
+}
+
+fn pos_parts(ctx: &Ctx<'_>, arg: &Value) -> Result<[f64; 3], RapidError> {
+    match ctx.value(arg)? {
+        Value::Record(r) => {
+            let get = |i: usize| r.fields.get(i).and_then(Value::as_f64).unwrap_or(0.0);
+            Ok([get(0), get(1), get(2)])
+        }
+        _ => Err(ctx.error(Err::ArgValue, "a pos argument was expected")),
+    }
+}
+
+pub(super) fn dot_prod(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (a, b) = (pos_parts(ctx, &args[0])?, pos_parts(ctx, &args[1])?);
+    Ok(Some(Value::Num((a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) as f32)))
+}
+
+pub(super) fn cross_prod(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (a, b) = (pos_parts(ctx, &args[0])?, pos_parts(ctx, &args[1])?);
+    let c = [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+    Ok(Some(ctx.pos(c[0] as f32, c[1] as f32, c[2] as f32)))
+}
+
+pub(super) fn vect_magn(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let a = pos_parts(ctx, &args[0])?;
+    Ok(Some(Value::Num((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt() as f32)))
+}
+
+pub(super) fn num_to_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    Ok(Some(Value::Dnum(ctx.num(&args[0])?)))
+}
+
+/// `DnumToNum(Value [\Integer])`: the value as a num; with \Integer it must be an
+/// integer that a num holds exactly.
+pub(super) fn dnum_to_num(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let x = ctx.num(&args[0])?;
+    if present(args.get(1)) && (x.fract() != 0.0 || x.abs() > 8_388_608.0) {
+        return Err(ctx.error(Err::NumLimit, format!("{x} is not an integer a num holds exactly")));
+    }
+    if x.abs() > f64::from(f32::MAX) {
+        return Err(ctx.error(Err::NumLimit, format!("{x} does not fit in a num")));
+    }
+    Ok(Some(Value::Num(x as f32)))
+}

@@ -1,0 +1,167 @@
+//! The implementations of built-in instructions and functions, one file per family.
+//! Their signatures are declared once in rapid-lib's catalogue; this table maps a
+//! built-in's name to the Rust function that runs it. A built-in missing here is
+//! refused by the compiler with "not supported by `rapid run` yet".
+
+mod math;
+mod pendant;
+mod strings;
+mod system;
+
+use rapid_sema::types::TypeId;
+
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::exec::storage::Storage;
+use crate::host::Host;
+use crate::ops::OpTypes;
+use crate::value::{Record, Value};
+
+/// Index of a built-in in [`TABLE`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct BuiltinId(pub u16);
+
+/// Arguments arrive in parameter order: values for IN parameters, `Value::Ref` for
+/// VAR/INOUT/PERS, `Value::Absent` for optional ones not passed, `Value::SwitchOn`.
+pub type BuiltinFn = fn(&mut Ctx<'_>, &[Value]) -> Result<Option<Value>, RapidError>;
+
+/// What a built-in may touch.
+pub struct Ctx<'a> {
+    pub storage: &'a mut Storage,
+    pub host: &'a mut dyn Host,
+    pub types: OpTypes,
+    /// Virtual time in seconds.
+    pub time: f64,
+    /// Set by waiting instructions: how long to wait (virtual seconds).
+    pub wait: Option<f64>,
+    /// Set by Stop.
+    pub stop: bool,
+    pub errnos: &'a rustc_hash::FxHashMap<&'static str, i32>,
+    /// The next free booked error number (BookErrNo).
+    pub next_booked: &'a mut i32,
+}
+
+impl Ctx<'_> {
+    pub fn error(&self, err: Err, message: impl Into<String>) -> RapidError {
+        RapidError {
+            errno: self.errnos.get(err.name()).copied().unwrap_or(0),
+            name: err.name(),
+            message: message.into(),
+            fatal: false,
+        }
+    }
+
+    /// The value of an argument (through a reference).
+    pub fn value(&self, arg: &Value) -> Result<Value, RapidError> {
+        match arg {
+            Value::Ref(place) => self.storage.get(place).cloned().map_err(|(e, m)| self.error(e, m)),
+            other => Ok(other.clone()),
+        }
+    }
+
+    pub fn num(&self, arg: &Value) -> Result<f64, RapidError> {
+        match self.value(arg)? {
+            Value::Num(n) => Ok(f64::from(n)),
+            Value::Dnum(d) => Ok(d),
+            _ => Err(self.error(Err::ArgValue, "a numeric argument was expected")),
+        }
+    }
+
+    pub fn opt_num(&self, arg: Option<&Value>) -> Result<Option<f64>, RapidError> {
+        match arg {
+            None | Some(Value::Absent) => Ok(None),
+            Some(v) => self.num(v).map(Some),
+        }
+    }
+
+    pub fn string(&self, arg: &Value) -> Result<String, RapidError> {
+        match self.value(arg)? {
+            Value::Str(s) => Ok(s.into()),
+            _ => Err(self.error(Err::ArgValue, "a string argument was expected")),
+        }
+    }
+
+    /// Writes through a VAR/INOUT/PERS argument.
+    pub fn store(&mut self, arg: &Value, value: Value) -> Result<(), RapidError> {
+        let Value::Ref(place) = arg else { return Err(self.error(Err::ArgValue, "this argument must be data")) };
+        let place = place.clone();
+        self.storage.set(&place, value).map_err(|(e, m)| self.error(e, m))
+    }
+
+    pub fn pos(&self, x: f32, y: f32, z: f32) -> Value {
+        Value::Record(Box::new(Record {
+            ty: self.types.pos,
+            fields: vec![Value::Num(x), Value::Num(y), Value::Num(z)],
+        }))
+    }
+
+    pub fn pos_ty(&self) -> TypeId {
+        self.types.pos
+    }
+}
+
+/// Present means passed: not absent.
+pub fn present(arg: Option<&Value>) -> bool {
+    arg.is_some_and(|a| !a.is_absent())
+}
+
+/// Every implemented built-in: (name as the catalogue spells it, implementation).
+pub static TABLE: &[(&str, BuiltinFn)] = &[
+    ("TPWrite", pendant::tp_write),
+    ("TPErase", pendant::tp_erase),
+    ("ErrWrite", pendant::err_write),
+    ("WaitTime", system::wait_time),
+    ("Stop", system::stop),
+    ("Break", system::break_),
+    ("BookErrNo", system::book_err_no),
+    ("Dim", system::dim),
+    ("Abs", math::abs),
+    ("AbsDnum", math::abs),
+    ("Sqrt", math::sqrt),
+    ("SqrtDnum", math::sqrt),
+    ("Pow", math::pow),
+    ("PowDnum", math::pow),
+    ("Exp", math::exp),
+    ("Round", math::round),
+    ("RoundDnum", math::round),
+    ("Trunc", math::trunc),
+    ("TruncDnum", math::trunc),
+    ("Sin", math::sin),
+    ("Cos", math::cos),
+    ("Tan", math::tan),
+    ("ASin", math::asin),
+    ("ACos", math::acos),
+    ("ATan", math::atan),
+    ("ATan2", math::atan2),
+    ("Incr", math::incr),
+    ("Decr", math::decr),
+    ("Add", math::add),
+    ("Clear", math::clear),
+    ("DotProd", math::dot_prod),
+    ("CrossProd", math::cross_prod),
+    ("VectMagn", math::vect_magn),
+    ("NumToDnum", math::num_to_dnum),
+    ("DnumToNum", math::dnum_to_num),
+    ("StrLen", strings::str_len),
+    ("StrPart", strings::str_part),
+    ("StrFind", strings::str_find),
+    ("StrMatch", strings::str_match),
+    ("StrMemb", strings::str_memb),
+    ("StrMap", strings::str_map),
+    ("NumToStr", strings::num_to_str),
+    ("DnumToStr", strings::dnum_to_str),
+    ("ValToStr", strings::val_to_str),
+];
+
+/// The implementation of the built-in named `name` (any letter case).
+pub fn lookup(name: &str) -> Option<BuiltinId> {
+    TABLE.iter().position(|(n, _)| n.eq_ignore_ascii_case(name)).map(|i| BuiltinId(i as u16))
+}
+
+pub fn function(id: BuiltinId) -> BuiltinFn {
+    TABLE[id.0 as usize].1
+}
+
+pub fn name(id: BuiltinId) -> &'static str {
+    TABLE[id.0 as usize].0
+}

@@ -1,0 +1,53 @@
+//! Teach pendant output: TPWrite (with one of \Num, \Bool, \Pos, \Orient, \Dnum
+//! appended in the controller's format), TPErase, ErrWrite.
+
+use super::{present, Ctx};
+use crate::error::RapidError;
+use crate::format::{bool_to_text, dnum_to_text, num_to_text, orient_to_text, pos_to_text};
+use crate::value::Value;
+
+/// `TPWrite String [\Num] | [\Bool] | [\Pos] | [\Orient] | [\Dnum]` (parameter order
+/// as the catalogue declares it).
+pub(super) fn tp_write(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
+    let mut line = ctx.string(&args[0])?;
+    let value = args[1..].iter().find(|a| present(Some(a)));
+    if let Some(value) = value {
+        line.push_str(&value_text(ctx, &ctx.value(value)?));
+    }
+    ctx.host.tp_write(&line);
+    Ok(None)
+}
+
+/// A value appended by TPWrite: numbers in the standard format, bools as TRUE/FALSE,
+/// pos and orient as aggregates.
+fn value_text(ctx: &Ctx<'_>, value: &Value) -> String {
+    match value {
+        Value::Num(n) => num_to_text(*n),
+        Value::Dnum(d) => dnum_to_text(*d),
+        Value::Bool(b) => bool_to_text(*b).to_string(),
+        Value::Record(r) => {
+            let comps: Vec<f32> = r.fields.iter().map(|f| if let Value::Num(n) = f { *n } else { 0.0 }).collect();
+            match comps.as_slice() {
+                [x, y, z] if r.ty == ctx.types.pos => pos_to_text([*x, *y, *z]),
+                [a, b, c, d] => orient_to_text([*a, *b, *c, *d]),
+                _ => String::new(),
+            }
+        }
+        _ => String::new(),
+    }
+}
+
+pub(super) fn tp_erase(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
+    ctx.host.tp_erase();
+    Ok(None)
+}
+
+/// `ErrWrite [\W] | [\I] Header Reason [\RL2] [\RL3] [\RL4]`: shown (and logged) as
+/// its header and reason lines.
+pub(super) fn err_write(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
+    for arg in args.iter().filter(|a| matches!(a, Value::Str(_) | Value::Ref(_))) {
+        let text = ctx.string(arg)?;
+        ctx.host.tp_write(&text);
+    }
+    Ok(None)
+}

@@ -1,0 +1,107 @@
+//! String built-ins (§1.19). Positions are 1-based; "not found" is the length + 1.
+
+use super::{present, Ctx};
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::format::{dnum_to_str as dnum_text, num_to_str as num_text};
+use crate::value::Value;
+
+type Res = Result<Option<Value>, RapidError>;
+
+fn chars(s: &str) -> Vec<char> {
+    s.chars().collect()
+}
+
+fn text(s: String) -> Option<Value> {
+    Some(Value::Str(s.into_boxed_str()))
+}
+
+/// A character position 1..=len+1 (len+1 only where the manual allows it).
+fn position(ctx: &Ctx<'_>, arg: &Value, len: usize, allow_end: bool) -> Result<usize, RapidError> {
+    let pos = ctx.num(arg)?;
+    let max = if allow_end { len + 1 } else { len };
+    if pos.fract() != 0.0 || pos < 1.0 || pos > max as f64 {
+        return Err(ctx.error(Err::OutOfBounds, format!("character position {pos} is outside 1..{max}")));
+    }
+    Ok(pos as usize)
+}
+
+pub(super) fn str_len(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    Ok(Some(Value::Num(chars(&ctx.string(&args[0])?).len() as f32)))
+}
+
+pub(super) fn str_part(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let s = chars(&ctx.string(&args[0])?);
+    let start = position(ctx, &args[1], s.len(), true)?;
+    let len = ctx.num(&args[2])?;
+    if len.fract() != 0.0 || len < 0.0 || start - 1 + len as usize > s.len() {
+        return Err(ctx.error(Err::OutOfBounds, format!("the part of length {len} runs past the end")));
+    }
+    Ok(text(s[start - 1..start - 1 + len as usize].iter().collect()))
+}
+
+pub(super) fn str_find(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let s = chars(&ctx.string(&args[0])?);
+    let start = position(ctx, &args[1], s.len(), true)?;
+    let set = chars(&ctx.string(&args[2])?);
+    let not_in_set = present(args.get(3));
+    let found = s.iter().enumerate().skip(start - 1).find(|(_, c)| set.contains(c) != not_in_set).map(|(i, _)| i + 1);
+    Ok(Some(Value::Num(found.unwrap_or(s.len() + 1) as f32)))
+}
+
+pub(super) fn str_match(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let s = chars(&ctx.string(&args[0])?);
+    let start = position(ctx, &args[1], s.len(), true)?;
+    let pattern = chars(&ctx.string(&args[2])?);
+    let found = (start - 1..s.len()).find(|&i| s[i..].starts_with(&pattern)).map(|i| i + 1);
+    Ok(Some(Value::Num(found.unwrap_or(s.len() + 1) as f32)))
+}
+
+pub(super) fn str_memb(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let s = chars(&ctx.string(&args[0])?);
+    let pos = position(ctx, &args[1], s.len(), false)?;
+    let set = chars(&ctx.string(&args[2])?);
+    Ok(Some(Value::Bool(set.contains(&s[pos - 1]))))
+}
+
+pub(super) fn str_map(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let s = ctx.string(&args[0])?;
+    let (from, to) = (chars(&ctx.string(&args[1])?), chars(&ctx.string(&args[2])?));
+    let mapped = s.chars().map(|c| from.iter().position(|&f| f == c).and_then(|i| to.get(i).copied()).unwrap_or(c));
+    Ok(text(mapped.collect()))
+}
+
+pub(super) fn num_to_str(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (value, dec) = (ctx.num(&args[0])?, ctx.num(&args[1])?);
+    let s = num_text(value, dec as i32, present(args.get(2))).map_err(|e| ctx.error(Err::ArgValue, e.to_string()))?;
+    Ok(text(s))
+}
+
+pub(super) fn dnum_to_str(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (value, dec) = (ctx.num(&args[0])?, ctx.num(&args[1])?);
+    let s = dnum_text(value, dec as i32, present(args.get(2))).map_err(|e| ctx.error(Err::ArgValue, e.to_string()))?;
+    Ok(text(s))
+}
+
+/// `ValToStr(Val)`: the value in RAPID literal syntax.
+pub(super) fn val_to_str(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let value = ctx.value(&args[0])?;
+    let s = literal(&value);
+    if s.chars().count() > crate::value::MAX_STRING_CHARS {
+        return Err(ctx.error(Err::StringTooLong, "the text of the value is longer than 80 characters"));
+    }
+    Ok(text(s))
+}
+
+fn literal(value: &Value) -> String {
+    use crate::format::{aggregate_to_text, bool_to_text, dnum_to_text, num_to_text, string_to_literal};
+    match value {
+        Value::Num(n) => num_to_text(*n),
+        Value::Dnum(d) => dnum_to_text(*d),
+        Value::Bool(b) => bool_to_text(*b).to_string(),
+        Value::Str(s) => string_to_literal(s),
+        Value::Record(r) => aggregate_to_text(&r.fields.iter().map(literal).collect::<Vec<_>>()),
+        Value::Array(a) => aggregate_to_text(&a.elems.iter().map(literal).collect::<Vec<_>>()),
+        _ => String::new(),
+    }
+}

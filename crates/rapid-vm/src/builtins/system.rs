@@ -1,0 +1,48 @@
+//! Program flow and system built-ins: WaitTime, Stop, Break, BookErrNo, Dim.
+
+use super::{present, Ctx};
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::Value;
+
+/// `WaitTime [\InPos] Time`: waits `Time` seconds of controller time.
+pub(super) fn wait_time(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
+    let time_arg = args.iter().rev().find(|a| present(Some(a))).ok_or_else(|| ctx.error(Err::ArgValue, "no time"))?;
+    let seconds = ctx.num(time_arg)?;
+    if seconds < 0.0 {
+        return Err(ctx.error(Err::ArgValue, "WaitTime needs a time of 0 or more seconds"));
+    }
+    ctx.wait = Some(seconds);
+    Ok(None)
+}
+
+pub(super) fn stop(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
+    ctx.stop = true;
+    Ok(None)
+}
+
+/// `Break` stops execution for debugging (no debugger is attached: like Stop).
+pub(super) fn break_(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
+    ctx.stop = true;
+    Ok(None)
+}
+
+/// `BookErrNo ErrorName`: gives the errnum variable a free system error number.
+pub(super) fn book_err_no(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
+    let number = *ctx.next_booked;
+    *ctx.next_booked += 1;
+    ctx.store(&args[0], Value::Num(number as f32))?;
+    Ok(None)
+}
+
+/// `Dim(ArrPar, DimNo)`: the size of dimension DimNo of an array.
+pub(super) fn dim(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
+    let array = ctx.value(&args[0])?;
+    let dim_no = ctx.num(&args[1])?;
+    let Value::Array(array) = array else { return Err(ctx.error(Err::ArgValue, "Dim needs an array")) };
+    let rank = f64::from(array.rank());
+    if dim_no.fract() != 0.0 || dim_no < 1.0 || dim_no > rank {
+        return Err(ctx.error(Err::OutOfBounds, format!("the array has no dimension {dim_no}")));
+    }
+    Ok(Some(Value::Num(array.dims[dim_no as usize - 1] as f32)))
+}

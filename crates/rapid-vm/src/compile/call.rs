@@ -1,0 +1,169 @@
+//! Calls: arguments matched to parameters by position and name (the program is
+//! checked, so the match exists), then passed as values (IN), places (VAR, INOUT,
+//! PERS), absent, switches, or conditionally forwarded optional parameters.
+
+use rapid_sema::symbols::{ParamInfo, RoutineInfo};
+use rapid_syntax::ast::{Arena, Arg, ArgKind, ArgList, ExprKind, ParamMode};
+use rapid_syntax::{Span, Symbol};
+
+use super::expr::expected_dims;
+use super::{CompileError, LocalKind, Resolved, RoutineCompiler};
+use crate::builtins;
+use crate::ir::{ArgSpec, CallSite, Callee, Instr, LateArg};
+
+impl RoutineCompiler<'_> {
+    /// A call of `name` with `args`; `in_expr` for function calls (the result is pushed).
+    pub(crate) fn call(
+        &mut self,
+        arena: &Arena,
+        name: Symbol,
+        args: ArgList,
+        span: Span,
+        in_expr: bool,
+    ) -> Result<(), CompileError> {
+        let Some(Resolved::Routine(idx)) = self.resolve(name) else {
+            // Calls to undefined procedures raise ERR_REFUNKPRC when executed.
+            let site = CallSite { callee: Callee::Late, args: Vec::new(), n_pushed: 0, late_args: Vec::new() };
+            let name_text = span.text(self.text).split(|c: char| c == '(' || c.is_whitespace()).next().unwrap_or("");
+            let name_idx = self.code.constant(crate::value::Value::Str(name_text.into()));
+            self.code.emit(Instr::Const(name_idx));
+            let late = self.late_site(arena, args, site)?;
+            self.code.emit(Instr::LateCall(late));
+            return Ok(());
+        };
+        let info = self.prog.routines[idx as usize].clone();
+        let callee = match info.chapter {
+            None => Callee::Routine(idx),
+            Some(_) => {
+                if info.display.eq_ignore_ascii_case("Present") {
+                    return self.present(arena, args, span);
+                }
+                match builtins::lookup(&info.display) {
+                    Some(id) => Callee::Builtin(id),
+                    None => return Err(self.unsupported(span, &format!("the built-in `{}`", info.display))),
+                }
+            }
+        };
+        let _ = in_expr;
+        let bound = bind_args(&info, arena.args(args));
+        let mut specs = Vec::with_capacity(info.params.len());
+        let mut n_pushed = 0u16;
+        for (param, arg) in info.params.iter().zip(&bound) {
+            let spec = match arg {
+                None => ArgSpec::Absent,
+                Some(arg) => self.arg(arena, param, arg)?,
+            };
+            if matches!(spec, ArgSpec::Value | ArgSpec::Place) {
+                n_pushed += 1;
+            }
+            specs.push(spec);
+        }
+        let site = self.site(CallSite { callee, args: specs, n_pushed, late_args: Vec::new() });
+        self.code.emit(Instr::Call(site));
+        Ok(())
+    }
+
+    fn site(&mut self, site: CallSite) -> u32 {
+        self.code.sites.push(site);
+        self.code.sites.len() as u32 - 1
+    }
+
+    fn arg(&mut self, arena: &Arena, param: &ParamInfo, arg: &Arg) -> Result<ArgSpec, CompileError> {
+        let by_ref = param.mode != ParamMode::In;
+        match arg.kind {
+            ArgKind::Optional if arg.value.is_none() => return Ok(ArgSpec::Switch),
+            ArgKind::Conditional => {
+                let Some(value) = arg.value else { return Ok(ArgSpec::Absent) };
+                let ExprKind::Name(sym) = arena.expr(value).kind else {
+                    return Err(self.unsupported(arg.span, "a conditional argument that is not a parameter name"));
+                };
+                return match self.resolve(sym) {
+                    Some(Resolved::Local(local)) if matches!(local.kind, LocalKind::Param { optional: true, .. }) => {
+                        Ok(ArgSpec::Conditional { slot: local.slot, by_ref })
+                    }
+                    _ => Err(self.error(arg.span, "a conditional argument must name an optional parameter")),
+                };
+            }
+            _ => {}
+        }
+        let Some(value) = arg.value else { return Ok(ArgSpec::Absent) };
+        if by_ref {
+            self.place(arena, value)?;
+            return Ok(ArgSpec::Place);
+        }
+        let expect =
+            if param.ty == rapid_sema::types::ANY { None } else { Some((param.ty, expected_dims(param.rank, [0; 3]))) };
+        self.expr(arena, value, expect)?;
+        Ok(ArgSpec::Value)
+    }
+
+    /// `Present(p)`: whether optional parameter `p` was passed.
+    fn present(&mut self, arena: &Arena, args: ArgList, span: Span) -> Result<(), CompileError> {
+        let value = arena.args(args).first().and_then(|a| a.value);
+        let sym = value.and_then(|v| match arena.expr(v).kind {
+            ExprKind::Name(sym) => Some(sym),
+            _ => None,
+        });
+        match sym.and_then(|s| self.resolve(s)) {
+            Some(Resolved::Local(local)) => {
+                self.code.emit(Instr::Present(local.slot));
+                Ok(())
+            }
+            _ => Err(self.error(span, "Present needs an optional parameter of this routine")),
+        }
+    }
+
+    /// A late-bound call: the callee's name is on the stack; arguments are positional.
+    pub(crate) fn late_site(&mut self, arena: &Arena, args: ArgList, mut site: CallSite) -> Result<u32, CompileError> {
+        for arg in arena.args(args) {
+            let Some(value) = arg.value else {
+                return Err(self.unsupported(arg.span, "an optional argument in a late-bound call"));
+            };
+            if arg.kind != ArgKind::Required || arg.name.is_some() {
+                return Err(self.unsupported(arg.span, "a named or optional argument in a late-bound call"));
+            }
+            let is_data = self.static_type(arena, value).is_some()
+                && matches!(
+                    arena.expr(value).kind,
+                    ExprKind::Name(_) | ExprKind::Index { .. } | ExprKind::Field { .. }
+                );
+            if is_data {
+                self.place(arena, value)?;
+            } else {
+                self.expr(arena, value, None)?;
+            }
+            site.late_args.push(LateArg { by_ref: is_data });
+            site.n_pushed += 1;
+        }
+        Ok(self.site(site))
+    }
+}
+
+/// Which argument (if any) each parameter gets, in parameter order.
+fn bind_args<'a>(info: &RoutineInfo, args: &'a [Arg]) -> Vec<Option<&'a Arg>> {
+    let params = &info.params;
+    let mut bound: Vec<Option<&Arg>> = vec![None; params.len()];
+    let mut cursor_group = 0usize;
+    for arg in args {
+        if arg.kind == ArgKind::Placeholder {
+            continue;
+        }
+        let idx = match arg.name {
+            Some(name) => params.iter().position(|p| p.name == name.sym),
+            None => {
+                let free = |g: &usize| {
+                    let (start, end) = info.groups[*g];
+                    !params[start].optional && (start..end).all(|p| bound[p].is_none())
+                };
+                let group = (cursor_group..info.groups.len()).find(free).or_else(|| (0..info.groups.len()).find(free));
+                group.map(|g| info.groups[g].0)
+            }
+        };
+        let Some(idx) = idx else { continue };
+        if let Some(g) = info.groups.iter().position(|&(s, e)| (s..e).contains(&idx)) {
+            cursor_group = cursor_group.max(g + 1);
+        }
+        bound[idx] = Some(arg);
+    }
+    bound
+}

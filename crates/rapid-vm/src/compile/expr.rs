@@ -1,0 +1,190 @@
+//! Expressions (§1.3): literals, data references as places, aggregates typed from the
+//! expected type, function calls, operators.
+
+use rapid_sema::types::{Atomic, TypeId, TypeKind};
+use rapid_syntax::ast::{Arena, ExprId, ExprKind};
+use rapid_syntax::literal::{num_value, string_value};
+
+use super::{CompileError, Resolved, RoutineCompiler};
+use crate::ir::Instr;
+use crate::value::Value;
+
+/// The type (and known dimension sizes) the context expects.
+pub(crate) type Expected = Option<(TypeId, [u32; 3])>;
+
+impl RoutineCompiler<'_> {
+    /// Emits code that pushes the value of `id`.
+    pub(crate) fn expr(&mut self, arena: &Arena, id: ExprId, expect: Expected) -> Result<(), CompileError> {
+        let expr = *arena.expr(id);
+        match expr.kind {
+            ExprKind::Num => {
+                let value = num_value(expr.span.text(self.text)).unwrap_or(0.0);
+                let constant = if self.expects_dnum(expect) { Value::Dnum(value) } else { Value::Num(value as f32) };
+                let idx = self.code.constant(constant);
+                self.code.emit(Instr::Const(idx));
+            }
+            ExprKind::Str => {
+                let idx = self.code.constant(Value::Str(string_value(expr.span.text(self.text)).into_boxed_str()));
+                self.code.emit(Instr::Const(idx));
+            }
+            ExprKind::Bool(b) => {
+                let idx = self.code.constant(Value::Bool(b));
+                self.code.emit(Instr::Const(idx));
+            }
+            ExprKind::Name(sym) => match self.resolve(sym) {
+                Some(Resolved::Local(local)) => {
+                    self.code.emit(Instr::LoadLocal(local.slot));
+                }
+                Some(Resolved::Global(idx)) => {
+                    self.code.emit(Instr::LoadGlobal(idx));
+                }
+                _ => return Err(self.error(expr.span, "not data")),
+            },
+            ExprKind::Index { .. } | ExprKind::Field { .. } => {
+                self.place(arena, id)?;
+                self.code.emit(Instr::LoadPlace);
+            }
+            ExprKind::Call { name, args } => self.call(arena, name, args, expr.span, true)?,
+            ExprKind::Unary { op, operand } => {
+                self.expr(arena, operand, expect)?;
+                self.code.emit(Instr::Unary(op));
+            }
+            ExprKind::Binary { op, lhs, rhs } => {
+                // Aggregates compared with typed data take that data's type (§1.3.3).
+                let lhs_ty = self.static_type(arena, lhs);
+                let rhs_ty = self.static_type(arena, rhs);
+                let num_ctx = if self.expects_dnum(expect) { expect } else { None };
+                self.expr(arena, lhs, rhs_ty.or(num_ctx))?;
+                self.expr(arena, rhs, lhs_ty.or(num_ctx))?;
+                self.code.emit(Instr::Binary(op));
+            }
+            ExprKind::Paren(inner) => self.expr(arena, inner, expect)?,
+            ExprKind::Aggregate(items) => self.aggregate(arena, items, expr.span, expect)?,
+            ExprKind::Placeholder(_) | ExprKind::Error => {
+                self.code.emit(Instr::Placeholder);
+            }
+        }
+        Ok(())
+    }
+
+    fn expects_dnum(&self, expect: Expected) -> bool {
+        expect.is_some_and(|(ty, _)| self.prog.types.atomic(ty) == Some(Atomic::Dnum))
+    }
+
+    fn aggregate(
+        &mut self,
+        arena: &Arena,
+        items: rapid_syntax::ast::ListRange,
+        span: rapid_syntax::Span,
+        expect: Expected,
+    ) -> Result<(), CompileError> {
+        let Some((ty, dims)) = expect else { return Err(self.error(span, "an aggregate without a type")) };
+        let items = arena.list(items);
+        if dims[0] > 0 {
+            let inner = [dims[1], dims[2], 0];
+            for &item in items {
+                self.expr(arena, item, Some((ty, inner)))?;
+            }
+            self.code.emit(Instr::MakeArray(items.len() as u32));
+            return Ok(());
+        }
+        let record = self.prog.types.value_of(ty);
+        let field_types: Vec<TypeId> = match &self.prog.types.info(record).kind {
+            TypeKind::Record(fields) => fields.iter().map(|f| f.ty).collect(),
+            _ => {
+                // An array parameter of unknown size, or `anytype`: build an array.
+                for &item in items {
+                    self.expr(arena, item, Some((ty, [0; 3])))?;
+                }
+                self.code.emit(Instr::MakeArray(items.len() as u32));
+                return Ok(());
+            }
+        };
+        for (&item, &field_ty) in items.iter().zip(&field_types) {
+            self.expr(arena, item, Some((field_ty, [0; 3])))?;
+        }
+        self.code.emit(Instr::MakeRecord(record, items.len() as u16));
+        Ok(())
+    }
+
+    /// Emits code that pushes the place of a data reference (`a`, `a{i}`, `r.c`...).
+    pub(crate) fn place(&mut self, arena: &Arena, id: ExprId) -> Result<(), CompileError> {
+        let expr = *arena.expr(id);
+        match expr.kind {
+            ExprKind::Name(sym) => match self.resolve(sym) {
+                Some(Resolved::Local(local)) => {
+                    self.code.emit(Instr::PlaceLocal(local.slot));
+                }
+                Some(Resolved::Global(idx)) => {
+                    self.code.emit(Instr::PlaceGlobal(idx));
+                }
+                _ => return Err(self.error(expr.span, "not data")),
+            },
+            ExprKind::Index { base, indices } => {
+                self.place(arena, base)?;
+                let indices = arena.list(indices);
+                for &index in indices {
+                    self.expr(arena, index, None)?;
+                }
+                self.code.emit(Instr::PlaceIndex(indices.len() as u8));
+            }
+            ExprKind::Field { base, field } => {
+                self.place(arena, base)?;
+                let (ty, _) = self.static_type(arena, base).ok_or_else(|| self.error(expr.span, "unknown record"))?;
+                let record = self.prog.types.value_of(ty);
+                let idx = match &self.prog.types.info(record).kind {
+                    TypeKind::Record(fields) => fields.iter().position(|f| f.name == field),
+                    _ => None,
+                };
+                let idx = idx.ok_or_else(|| self.error(expr.span, "unknown record component"))?;
+                self.code.emit(Instr::PlaceField(idx as u16));
+            }
+            ExprKind::Paren(inner) => self.place(arena, inner)?,
+            ExprKind::Placeholder(_) => {
+                self.code.emit(Instr::Placeholder);
+            }
+            _ => return Err(self.error(expr.span, "this expression is not data that can be referred to")),
+        }
+        Ok(())
+    }
+
+    /// The declared type of a data reference (and its known dimension sizes).
+    pub(crate) fn static_type(&self, arena: &Arena, id: ExprId) -> Expected {
+        let expr = arena.expr(id);
+        match expr.kind {
+            ExprKind::Name(sym) => match self.resolve(sym)? {
+                Resolved::Local(local) => Some((local.ty, expected_dims(local.rank, local.dims))),
+                Resolved::Global(idx) => {
+                    let data = &self.prog.datas[idx as usize];
+                    Some((data.ty, expected_dims(data.rank, data.dims)))
+                }
+                _ => None,
+            },
+            ExprKind::Index { base, .. } => self.static_type(arena, base).map(|(ty, _)| (ty, [0; 3])),
+            ExprKind::Field { base, field } => {
+                let (ty, _) = self.static_type(arena, base)?;
+                match &self.prog.types.info(self.prog.types.value_of(ty)).kind {
+                    TypeKind::Record(fields) => fields.iter().find(|f| f.name == field).map(|f| (f.ty, [0; 3])),
+                    _ => None,
+                }
+            }
+            ExprKind::Paren(inner) => self.static_type(arena, inner),
+            ExprKind::Call { name, .. } => match self.resolve(name)? {
+                Resolved::Routine(idx) => self.prog.routines[idx as usize].ret.map(|t| (t, [0; 3])),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+}
+
+/// Dimension sizes for an expected type: 0 past the rank (scalar levels), and
+/// `u32::MAX` for a dimension whose size is not known (array parameters), so an
+/// aggregate still knows it builds an array.
+pub(crate) fn expected_dims(rank: u8, dims: [u32; 3]) -> [u32; 3] {
+    let mut out = [0u32; 3];
+    for (idx, slot) in out.iter_mut().enumerate().take((rank as usize).min(3)) {
+        *slot = if dims[idx] == 0 { u32::MAX } else { dims[idx] };
+    }
+    out
+}

@@ -1,0 +1,405 @@
+//! From checked syntax trees to `Code`: names become slots, data references become
+//! places, calls become call sites, statements become jumps (§1.1–§1.5).
+//!
+//! The program has passed `rapid_sema::analyze` without errors, so the compiler
+//! trusts types and arity; what it cannot run yet it refuses with a clear message.
+
+mod call;
+mod expr;
+mod stmt;
+
+use rapid_sema::symbols::{DataKind, DeclOrigin, Def};
+use rapid_sema::types::{Atomic, TypeId, TypeKind};
+use rapid_sema::Program;
+use rapid_syntax::ast::{Arena, DataDecl, Item, Module, ParamMode, Routine, RoutineKind};
+use rapid_syntax::{Span, Symbol};
+use rustc_hash::FxHashMap;
+
+use crate::ir::{Code, Instr};
+use crate::value::{Array, Opaque, OpaqueState, Record, Value};
+
+/// A construct the interpreter cannot run yet, or a program it cannot load.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CompileError {
+    pub file: usize,
+    pub span: Span,
+    pub message: String,
+}
+
+/// One module's syntax tree with the file it came from.
+pub struct ModuleSource<'a> {
+    pub file: usize,
+    pub text: &'a str,
+    pub module: &'a Module,
+}
+
+/// Everything compiled: one `Code` per user routine (indexed like
+/// `Program::routines`, `None` for built-ins) and the code that gives every global
+/// its initial value.
+pub struct Compiled {
+    pub routines: Vec<Option<Code>>,
+    pub init: Code,
+    pub global_defaults: Vec<Value>,
+}
+
+/// What a local slot holds.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Local {
+    pub(crate) slot: u32,
+    pub(crate) ty: TypeId,
+    pub(crate) rank: u8,
+    pub(crate) dims: [u32; 3],
+    pub(crate) kind: LocalKind,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum LocalKind {
+    Param { mode: ParamMode, optional: bool },
+    Data,
+    LoopVar,
+    Temp,
+}
+
+/// Compiles every user routine and the global initialisers.
+pub fn compile(
+    prog: &Program,
+    modules: &[ModuleSource<'_>],
+    builtin_module: &Module,
+    builtin_text: &str,
+) -> Result<Compiled, Vec<CompileError>> {
+    let mut errors = Vec::new();
+    let global_defaults: Vec<Value> =
+        prog.datas.iter().map(|d| default_value(prog, d.ty, &d.dims[..d.rank as usize])).collect();
+    let init = compile_init(prog, modules, builtin_module, builtin_text, &mut errors);
+    let mut routines: Vec<Option<Code>> = vec![None; prog.routines.len()];
+    for (idx, info) in prog.routines.iter().enumerate() {
+        let DeclOrigin::Module { module, item } = info.origin else { continue };
+        let Some(source) = modules.get(module) else { continue };
+        let Some(Item::Routine(routine)) = source.module.items.get(item) else { continue };
+        let mut rc = RoutineCompiler::new(prog, module, source.file, source.text);
+        match rc.routine(routine) {
+            Ok(code) => routines[idx] = Some(code),
+            Err(mut errs) => errors.append(&mut errs),
+        }
+    }
+    if errors.is_empty() {
+        Ok(Compiled { routines, init, global_defaults })
+    } else {
+        Err(errors)
+    }
+}
+
+/// The code run at load: initial values of predefined and module data, in order.
+fn compile_init(
+    prog: &Program,
+    modules: &[ModuleSource<'_>],
+    builtin_module: &Module,
+    builtin_text: &str,
+    errors: &mut Vec<CompileError>,
+) -> Code {
+    let mut init = RoutineCompiler::new(prog, usize::MAX, usize::MAX, builtin_text);
+    init.code.name = "<load>".into();
+    for (idx, data) in prog.datas.iter().enumerate() {
+        let (decl, arena, text, module, file) = match data.origin {
+            DeclOrigin::Builtin(item) => match builtin_module.items.get(item) {
+                Some(Item::Data(decl)) => (decl, &builtin_module.arena, builtin_text, usize::MAX, usize::MAX),
+                _ => continue,
+            },
+            DeclOrigin::Module { module, item } => match modules.get(module).map(|m| (m, m.module.items.get(item))) {
+                Some((m, Some(Item::Data(decl)))) => (decl, &m.module.arena, m.text, module, m.file),
+                _ => continue,
+            },
+            DeclOrigin::Routine => continue,
+        };
+        let Some(init_expr) = decl.init else { continue };
+        init.module = module;
+        init.file = file;
+        init.code.file = file;
+        init.text = text;
+        let expect = Some((data.ty, data.dims));
+        match init.expr(arena, init_expr, expect) {
+            Ok(()) => {
+                init.code.emit(Instr::StoreGlobal(idx as u32));
+            }
+            Err(e) => errors.push(e),
+        }
+    }
+    init.code.emit(Instr::Return);
+    init.finish_locals();
+    init.code
+}
+
+/// The value data of type `ty` has before anything is assigned (§1.2.2): 0, "",
+/// FALSE, records of such values, arrays of them.
+pub fn default_value(prog: &Program, ty: TypeId, dims: &[u32]) -> Value {
+    if let Some((&n, inner)) = dims.split_first() {
+        let n = n.max(1);
+        let elems = (0..n).map(|_| default_value(prog, ty, inner)).collect();
+        let mut all = [0u32; 3];
+        all[..dims.len()].copy_from_slice(dims);
+        return flatten_array(Array { dims: all, elems });
+    }
+    let canon = prog.types.canonical(ty);
+    match &prog.types.info(canon).kind {
+        TypeKind::Atomic(Atomic::Num) => Value::Num(0.0),
+        TypeKind::Atomic(Atomic::Dnum) => Value::Dnum(0.0),
+        TypeKind::Atomic(Atomic::Bool) => Value::Bool(false),
+        TypeKind::Atomic(Atomic::String) => Value::Str("".into()),
+        TypeKind::Record(fields) => Value::Record(Box::new(Record {
+            ty: canon,
+            fields: fields.iter().map(|f| default_value(prog, f.ty, &[])).collect(),
+        })),
+        TypeKind::SemiValue(base) => default_value(prog, *base, &[]),
+        _ => Value::Opaque(Box::new(Opaque { ty: canon, state: OpaqueState::None })),
+    }
+}
+
+/// Nested arrays (rows of rows) become one array with up to three dimensions.
+pub fn flatten_array(array: Array) -> Value {
+    let rows_are_arrays = array.elems.first().is_some_and(|e| matches!(e, Value::Array(_)));
+    if !rows_are_arrays {
+        return Value::Array(Box::new(array));
+    }
+    let mut dims = [array.elems.len() as u32, 0, 0];
+    let mut elems = Vec::new();
+    for row in array.elems {
+        if let Value::Array(row) = row {
+            dims[1] = row.dims[0];
+            dims[2] = row.dims[1];
+            elems.extend(row.elems);
+        }
+    }
+    Value::Array(Box::new(Array { dims, elems }))
+}
+
+/// Compiles one routine.
+pub(crate) struct RoutineCompiler<'p> {
+    pub(crate) prog: &'p Program,
+    pub(crate) module: usize,
+    pub(crate) file: usize,
+    pub(crate) text: &'p str,
+    pub(crate) code: Code,
+    pub(crate) locals: FxHashMap<Symbol, Local>,
+    pub(crate) loop_vars: Vec<(Symbol, Local)>,
+    pub(crate) labels: FxHashMap<Symbol, u32>,
+    pub(crate) gotos: Vec<(u32, Symbol, Span)>,
+    pub(crate) n_locals: u32,
+    pub(crate) local_types: Vec<(TypeId, [u32; 3], u8)>,
+    pub(crate) ret_ty: Option<TypeId>,
+}
+
+impl<'p> RoutineCompiler<'p> {
+    pub(crate) fn new(prog: &'p Program, module: usize, file: usize, text: &'p str) -> RoutineCompiler<'p> {
+        RoutineCompiler {
+            prog,
+            module,
+            file,
+            text,
+            code: Code { file, ..Code::default() },
+            locals: FxHashMap::default(),
+            loop_vars: Vec::new(),
+            labels: FxHashMap::default(),
+            gotos: Vec::new(),
+            n_locals: 0,
+            local_types: Vec::new(),
+            ret_ty: None,
+        }
+    }
+
+    pub(crate) fn error(&self, span: Span, message: impl Into<String>) -> CompileError {
+        CompileError { file: self.file, span, message: message.into() }
+    }
+
+    pub(crate) fn unsupported(&self, span: Span, what: &str) -> CompileError {
+        self.error(span, format!("{what} is not supported by `rapid run` yet"))
+    }
+
+    /// A fresh local slot of the given type.
+    pub(crate) fn new_local(&mut self, ty: TypeId, dims: [u32; 3], rank: u8, kind: LocalKind) -> Local {
+        let slot = self.n_locals;
+        self.n_locals += 1;
+        self.local_types.push((ty, dims, rank));
+        Local { slot, ty, rank, dims, kind }
+    }
+
+    /// Fills in the slot count and the default values of non-parameter locals.
+    pub(crate) fn finish_locals(&mut self) {
+        self.code.n_locals = self.n_locals;
+        let n_params = self.code.n_params as usize;
+        self.code.local_defaults = self.local_types[n_params..]
+            .iter()
+            .map(|(ty, dims, rank)| default_value(self.prog, *ty, &dims[..*rank as usize]))
+            .collect();
+    }
+
+    /// What a name denotes here: a local slot, or a global definition.
+    pub(crate) fn resolve(&self, sym: Symbol) -> Option<Resolved> {
+        if let Some((_, local)) = self.loop_vars.iter().rev().find(|(s, _)| *s == sym) {
+            return Some(Resolved::Local(*local));
+        }
+        if let Some(local) = self.locals.get(&sym) {
+            return Some(Resolved::Local(*local));
+        }
+        let def = if self.module == usize::MAX {
+            self.prog.scopes.builtins.get(&sym).copied().or_else(|| self.prog.scopes.globals.get(&sym).map(|o| o.def))
+        } else {
+            self.prog.scopes.lookup_module_level(self.module, sym)
+        };
+        match def? {
+            Def::Data(idx) => Some(Resolved::Global(idx)),
+            Def::Routine(idx) => Some(Resolved::Routine(idx)),
+            Def::Type(ty) => Some(Resolved::Type(ty)),
+        }
+    }
+
+    pub(crate) fn routine(&mut self, routine: &Routine) -> Result<Code, Vec<CompileError>> {
+        let name = routine.name.span.text(self.text).to_string();
+        self.code.name = name;
+        self.code.span = routine.span;
+        self.code.is_func = routine.kind == RoutineKind::Func;
+        self.code.is_trap = routine.kind == RoutineKind::Trap;
+        self.ret_ty = routine.ret_ty.and_then(|t| match self.resolve(t.sym) {
+            Some(Resolved::Type(ty)) => Some(ty),
+            _ => None,
+        });
+        self.code.ret_like = self.ret_ty.and_then(|ty| numeric_like(self.prog, ty, 0));
+        let Some(body) = &routine.body else { return Ok(self.code.clone()) };
+        self.declare_params(routine);
+        let mut errors = Vec::new();
+        for decl in &body.decls {
+            if let Err(e) = self.routine_data(decl, &body.arena) {
+                errors.push(e);
+            }
+        }
+        self.stmt_list(&body.arena, &body.stmts, &mut errors);
+        self.code.emit(Instr::FellOffEnd);
+        if let Some(handler) = &body.error {
+            let pc = self.code.here();
+            let numbers = handler.error_numbers.iter().filter_map(|&n| self.handler_number(&body.arena, n)).collect();
+            self.code.error_handler = Some(crate::ir::Handler { pc, numbers });
+            self.stmt_list(&body.arena, &handler.stmts, &mut errors);
+            self.code.emit(Instr::FellOffEnd);
+        }
+        if let Some(handler) = &body.undo {
+            self.code.undo_handler = Some(self.code.here());
+            self.stmt_list(&body.arena, &handler.stmts, &mut errors);
+            self.code.emit(Instr::Return);
+        }
+        if let Some(handler) = &body.backward {
+            // Backward execution is driven by a debugger, not by forward runs; the
+            // handler is compiled so its errors show, and kept for that API.
+            self.code.backward_handler = Some(self.code.here());
+            self.stmt_list(&body.arena, &handler.stmts, &mut errors);
+            self.code.emit(Instr::Return);
+        }
+        self.resolve_gotos(&mut errors);
+        self.finish_locals();
+        if errors.is_empty() {
+            Ok(std::mem::take(&mut self.code))
+        } else {
+            Err(errors)
+        }
+    }
+
+    fn declare_params(&mut self, routine: &Routine) {
+        for param in routine.params.iter().filter(|p| p.placeholder.is_none()) {
+            let ty = match self.resolve(param.ty.sym) {
+                Some(Resolved::Type(ty)) => ty,
+                _ => rapid_sema::types::SWITCH,
+            };
+            let kind = LocalKind::Param { mode: param.mode, optional: param.optional };
+            let local = self.new_local(ty, [0; 3], param.rank, kind);
+            self.locals.insert(param.name.sym, local);
+            let by_ref = param.mode != ParamMode::In;
+            self.code.param_by_ref.push(by_ref);
+            self.code.param_likes.push(if by_ref { None } else { numeric_like(self.prog, ty, param.rank) });
+        }
+        self.code.n_params = self.n_locals;
+    }
+
+    fn routine_data(&mut self, decl: &DataDecl, arena: &Arena) -> Result<(), CompileError> {
+        let ty = match self.resolve(decl.ty.sym) {
+            Some(Resolved::Type(ty)) => ty,
+            _ => return Err(self.error(decl.ty.span, "unknown data type")),
+        };
+        let mut dims = [0u32; 3];
+        for (slot, &dim) in dims.iter_mut().zip(&decl.dims) {
+            *slot = self.const_dim(arena, dim)?;
+        }
+        let rank = decl.dims.len().min(3) as u8;
+        let local = self.new_local(ty, dims, rank, LocalKind::Data);
+        self.locals.insert(decl.name.sym, local);
+        if let Some(init) = decl.init {
+            self.expr(arena, init, Some((ty, dims)))?;
+            self.code.emit(Instr::StoreLocal(local.slot));
+        }
+        Ok(())
+    }
+
+    fn const_dim(&self, arena: &Arena, dim: rapid_syntax::ast::ExprId) -> Result<u32, CompileError> {
+        let expr = arena.expr(dim);
+        let value = match expr.kind {
+            rapid_syntax::ast::ExprKind::Num => rapid_syntax::literal::num_value(expr.span.text(self.text)),
+            rapid_syntax::ast::ExprKind::Name(sym) => match self.resolve(sym) {
+                Some(Resolved::Global(idx)) => self.prog.datas[idx as usize].const_value,
+                _ => None,
+            },
+            _ => None,
+        };
+        match value {
+            Some(v) if v >= 1.0 && v.fract() == 0.0 => Ok(v as u32),
+            _ => Err(self.unsupported(expr.span, "an array dimension computed from an expression")),
+        }
+    }
+
+    fn handler_number(&self, arena: &Arena, id: rapid_syntax::ast::ExprId) -> Option<i32> {
+        let expr = arena.expr(id);
+        match expr.kind {
+            rapid_syntax::ast::ExprKind::Num => {
+                rapid_syntax::literal::num_value(expr.span.text(self.text)).map(|v| v as i32)
+            }
+            rapid_syntax::ast::ExprKind::Name(sym) => match self.resolve(sym) {
+                Some(Resolved::Global(idx)) => {
+                    let data = &self.prog.datas[idx as usize];
+                    if data.kind == DataKind::Const {
+                        data.const_value.map(|v| v as i32).or(Some(-(idx as i32) - 1))
+                    } else {
+                        Some(-(idx as i32) - 1)
+                    }
+                }
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+
+    fn resolve_gotos(&mut self, errors: &mut Vec<CompileError>) {
+        for (at, label, span) in std::mem::take(&mut self.gotos) {
+            match self.labels.get(&label) {
+                Some(&target) => self.code.patch(at, target),
+                None => errors.push(self.error(span, "GOTO to an undefined label")),
+            }
+        }
+    }
+}
+
+/// A zero of type `ty` when it is num or dnum (the kind arguments convert to).
+fn numeric_like(prog: &Program, ty: TypeId, rank: u8) -> Option<Value> {
+    if rank > 0 {
+        return None;
+    }
+    match prog.types.atomic(ty) {
+        Some(Atomic::Num) => Some(Value::Num(0.0)),
+        Some(Atomic::Dnum) => Some(Value::Dnum(0.0)),
+        _ => None,
+    }
+}
+
+/// What a name resolves to while compiling a routine.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Resolved {
+    Local(Local),
+    Global(u32),
+    Routine(u32),
+    Type(TypeId),
+}

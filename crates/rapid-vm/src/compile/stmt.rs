@@ -1,0 +1,214 @@
+//! Statements (§1.4, §1.5): assignment, calls, IF, FOR, WHILE, TEST, GOTO and labels,
+//! RETURN, RAISE, RETRY, TRYNEXT, EXIT. Each statement's code range is recorded for
+//! error recovery.
+
+use rapid_syntax::ast::{Arena, ExprKind, Stmt, StmtKind};
+
+use super::{CompileError, LocalKind, Resolved, RoutineCompiler};
+use crate::ir::{CallSite, Callee, Instr, StmtRange};
+
+impl RoutineCompiler<'_> {
+    pub(crate) fn stmt_list(&mut self, arena: &Arena, stmts: &[Stmt], errors: &mut Vec<CompileError>) {
+        for stmt in stmts {
+            if let Err(e) = self.stmt(arena, stmt, errors) {
+                errors.push(e);
+            }
+        }
+    }
+
+    fn stmt(&mut self, arena: &Arena, stmt: &Stmt, errors: &mut Vec<CompileError>) -> Result<(), CompileError> {
+        let range_idx = self.code.stmts.len();
+        let start = self.code.here();
+        self.code.stmts.push(StmtRange { start, end: start, span: stmt.span });
+        let res = self.stmt_kind(arena, stmt, errors);
+        self.code.stmts[range_idx].end = self.code.here();
+        res
+    }
+
+    fn stmt_kind(&mut self, arena: &Arena, stmt: &Stmt, errors: &mut Vec<CompileError>) -> Result<(), CompileError> {
+        match &stmt.kind {
+            StmtKind::Assign { target, value } => self.assign(arena, *target, *value)?,
+            StmtKind::Call { name, args } => self.call(arena, name.sym, *args, stmt.span, false)?,
+            StmtKind::LateCall { callee, args } => {
+                self.expr(arena, *callee, None)?;
+                let site = CallSite { callee: Callee::Late, args: Vec::new(), n_pushed: 0, late_args: Vec::new() };
+                let site = self.late_site(arena, *args, site)?;
+                self.code.emit(Instr::LateCall(site));
+            }
+            StmtKind::If { cond, then, elifs, els } => {
+                let mut to_end = Vec::new();
+                self.expr(arena, *cond, None)?;
+                let mut skip = self.code.emit(Instr::JumpIfFalse(0));
+                self.stmt_list(arena, then, errors);
+                for elif in elifs {
+                    to_end.push(self.code.emit(Instr::Jump(0)));
+                    let here = self.code.here();
+                    self.code.patch(skip, here);
+                    match elif.cond {
+                        Some(cond) => self.expr(arena, cond, None)?,
+                        None => {
+                            self.code.emit(Instr::Placeholder);
+                        }
+                    }
+                    skip = self.code.emit(Instr::JumpIfFalse(0));
+                    self.stmt_list(arena, &elif.body, errors);
+                }
+                if let Some(els) = els {
+                    to_end.push(self.code.emit(Instr::Jump(0)));
+                    let here = self.code.here();
+                    self.code.patch(skip, here);
+                    self.stmt_list(arena, els, errors);
+                } else {
+                    let here = self.code.here();
+                    self.code.patch(skip, here);
+                }
+                let end = self.code.here();
+                for at in to_end {
+                    self.code.patch(at, end);
+                }
+            }
+            StmtKind::CompactIf { cond, stmt: inner } => {
+                self.expr(arena, *cond, None)?;
+                let skip = self.code.emit(Instr::JumpIfFalse(0));
+                self.stmt(arena, inner, errors)?;
+                let here = self.code.here();
+                self.code.patch(skip, here);
+            }
+            StmtKind::For { var, from, to, step, body } => {
+                let num = self.prog.core.num;
+                self.expr(arena, *from, None)?;
+                self.expr(arena, *to, None)?;
+                if let Some(step) = step {
+                    self.expr(arena, *step, None)?;
+                }
+                let local = self.new_local(num, [0; 3], 0, LocalKind::LoopVar);
+                self.new_local(num, [0; 3], 0, LocalKind::Temp);
+                self.new_local(num, [0; 3], 0, LocalKind::Temp);
+                self.code.emit(Instr::ForInit { var: local.slot, has_step: step.is_some() });
+                let check = self.code.emit(Instr::ForCheck { var: local.slot, exit: 0 });
+                self.loop_vars.push((var.sym, local));
+                self.stmt_list(arena, body, errors);
+                self.loop_vars.pop();
+                self.code.emit(Instr::ForNext { var: local.slot, check });
+                let exit = self.code.here();
+                self.code.patch(check, exit);
+            }
+            StmtKind::While { cond, body } => {
+                let top = self.code.here();
+                self.expr(arena, *cond, None)?;
+                let exit = self.code.emit(Instr::JumpIfFalse(0));
+                self.stmt_list(arena, body, errors);
+                self.code.emit(Instr::Jump(top));
+                let here = self.code.here();
+                self.code.patch(exit, here);
+            }
+            StmtKind::Test { subject, cases, default } => {
+                let subject_ty = self.static_type(arena, *subject);
+                let ty = subject_ty.map_or(self.prog.core.num, |(t, _)| t);
+                let tmp = self.new_local(ty, [0; 3], 0, LocalKind::Temp);
+                self.expr(arena, *subject, None)?;
+                self.code.emit(Instr::StoreLocal(tmp.slot));
+                let mut to_end = Vec::new();
+                for case in cases {
+                    let mut to_body = Vec::new();
+                    for &value in &case.values {
+                        self.code.emit(Instr::LoadLocal(tmp.slot));
+                        self.expr(arena, value, subject_ty)?;
+                        self.code.emit(Instr::Binary(rapid_syntax::ast::BinaryOp::Ne));
+                        to_body.push(self.code.emit(Instr::JumpIfFalse(0)));
+                    }
+                    let next_case = self.code.emit(Instr::Jump(0));
+                    let body_start = self.code.here();
+                    for at in to_body {
+                        self.code.patch(at, body_start);
+                    }
+                    self.stmt_list(arena, &case.body, errors);
+                    to_end.push(self.code.emit(Instr::Jump(0)));
+                    let here = self.code.here();
+                    self.code.patch(next_case, here);
+                }
+                if let Some(default) = default {
+                    self.stmt_list(arena, default, errors);
+                }
+                let end = self.code.here();
+                for at in to_end {
+                    self.code.patch(at, end);
+                }
+            }
+            StmtKind::Goto(label) => {
+                let at = self.code.emit(Instr::Jump(0));
+                self.gotos.push((at, label.sym, label.span));
+            }
+            StmtKind::Label(label) => {
+                let here = self.code.here();
+                self.labels.insert(label.sym, here);
+            }
+            StmtKind::Return(value) => match value {
+                Some(value) => {
+                    let ret = self.ret_ty;
+                    self.expr(arena, *value, ret.map(|t| (t, [0; 3])))?;
+                    self.code.emit(Instr::ReturnValue);
+                }
+                None => {
+                    self.code.emit(Instr::Return);
+                }
+            },
+            StmtKind::Raise(value) => match value {
+                Some(value) => {
+                    self.expr(arena, *value, None)?;
+                    self.code.emit(Instr::Raise);
+                }
+                None => {
+                    self.code.emit(Instr::ReRaise);
+                }
+            },
+            StmtKind::Retry => {
+                self.code.emit(Instr::Retry);
+            }
+            StmtKind::TryNext => {
+                self.code.emit(Instr::TryNext);
+            }
+            StmtKind::Exit => {
+                self.code.emit(Instr::Exit);
+            }
+            StmtKind::Connect { .. } => return Err(self.unsupported(stmt.span, "CONNECT (interrupts)")),
+            StmtKind::Placeholder(_) | StmtKind::Error => {
+                self.code.emit(Instr::Placeholder);
+            }
+        }
+        Ok(())
+    }
+
+    fn assign(
+        &mut self,
+        arena: &Arena,
+        target: rapid_syntax::ast::ExprId,
+        value: rapid_syntax::ast::ExprId,
+    ) -> Result<(), CompileError> {
+        let expect = self.static_type(arena, target);
+        match arena.expr(target).kind {
+            ExprKind::Name(sym) => match self.resolve(sym) {
+                Some(Resolved::Local(local)) => {
+                    self.expr(arena, value, expect)?;
+                    self.code.emit(Instr::StoreLocal(local.slot));
+                    return Ok(());
+                }
+                Some(Resolved::Global(idx)) => {
+                    self.expr(arena, value, expect)?;
+                    self.code.emit(Instr::StoreGlobal(idx));
+                    return Ok(());
+                }
+                _ => {}
+            },
+            ExprKind::Placeholder(_) => {
+                self.code.emit(Instr::Placeholder);
+                return Ok(());
+            }
+            _ => {}
+        }
+        self.place(arena, target)?;
+        self.expr(arena, value, expect)?;
+        self.code.emit(Instr::StorePlace);
+        Ok(())
+    }
+}

@@ -1,0 +1,297 @@
+//! Calls and returns, late binding, and error recovery: ERROR handlers found by table
+//! lookup, RETRY, TRYNEXT, RAISE, propagation to callers, the system error handler
+//! (§1.12), and UNDO handlers run on EXIT (§1.13).
+
+use std::rc::Rc;
+
+use super::{ActiveError, Exit, Frame, Unhandled, Vm, MAX_CALL_DEPTH, MAX_RETRIES};
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::ir::{ArgSpec, Callee, Code};
+use crate::value::{Place, Root, Value};
+
+impl Vm {
+    pub(super) fn push_frame(&mut self, code: Rc<Code>, args: Vec<Value>) {
+        let base = self.storage.stack.len() as u32;
+        self.storage.stack.extend(args);
+        self.storage.stack.extend(code.local_defaults.iter().cloned());
+        self.frames.push(Frame { code, pc: 0, base, active: None, retries: 0, last_retry_stmt: None, undoing: false });
+    }
+
+    /// `Call(site)`: collects the arguments the caller pushed and enters the callee.
+    pub(super) fn call(
+        &mut self,
+        code: &Code,
+        site: u32,
+        host: &mut dyn crate::host::Host,
+    ) -> Result<Option<Exit>, RapidError> {
+        let site = &code.sites[site as usize];
+        let at = self.storage.stack.len() - site.n_pushed as usize;
+        let mut pushed = self.storage.stack.split_off(at).into_iter();
+        let base = self.frame().base;
+        let mut args = Vec::with_capacity(site.args.len());
+        for spec in &site.args {
+            let arg = match spec {
+                ArgSpec::Value | ArgSpec::Place => pushed.next().unwrap_or(Value::Absent),
+                ArgSpec::Absent => Value::Absent,
+                ArgSpec::Switch => Value::SwitchOn,
+                ArgSpec::Conditional { slot, by_ref } => self.forward(base + slot, *by_ref)?,
+            };
+            args.push(arg);
+        }
+        match site.callee {
+            Callee::Builtin(id) => {
+                let (result, wait, stop) = self.run_builtin(id, &args, host)?;
+                if let Some(value) = result {
+                    self.push(value);
+                }
+                self.frame_mut().pc += 1;
+                if stop {
+                    return Ok(Some(Exit::Stopped));
+                }
+                Ok(wait.map(Exit::Wait))
+            }
+            Callee::Routine(idx) => {
+                let Some(callee) = self.routines.get(idx as usize).cloned().flatten() else {
+                    return Err(RapidError::fatal("call to a routine that was not compiled"));
+                };
+                self.enter(callee, args)
+            }
+            Callee::Late => Err(RapidError::fatal("late call through a plain call site")),
+        }
+    }
+
+    fn enter(&mut self, callee: Rc<Code>, mut args: Vec<Value>) -> Result<Option<Exit>, RapidError> {
+        if self.frames.len() >= MAX_CALL_DEPTH {
+            return Err(RapidError::fatal(format!(
+                "more than {MAX_CALL_DEPTH} nested routine calls (runaway recursion?)"
+            )));
+        }
+        // IN arguments take the numeric kind of their parameter.
+        for (arg, like) in args.iter_mut().zip(&callee.param_likes) {
+            if let Some(like) = like {
+                let value = std::mem::replace(arg, Value::Absent);
+                *arg = super::coerce_like(like, value).map_err(|f| self.fault(f))?;
+            }
+        }
+        self.push_frame(callee, args);
+        Ok(None)
+    }
+
+    /// A conditional argument: the caller's optional parameter, when it was passed.
+    fn forward(&self, index: u32, by_ref: bool) -> Result<Value, RapidError> {
+        let raw = &self.storage.stack[index as usize];
+        Ok(match raw {
+            Value::Absent => Value::Absent,
+            Value::SwitchOn => Value::SwitchOn,
+            Value::Ref(place) if by_ref => Value::Ref(place.clone()),
+            Value::Ref(place) => self.storage.get(place).map_err(|f| self.fault(f))?.clone(),
+            _ if by_ref => Value::Ref(Box::new(Place { root: Root::Stack(index), path: Vec::new() })),
+            value => value.clone(),
+        })
+    }
+
+    /// `% name % args`: finds the procedure by name at run time.
+    pub(super) fn late_call(&mut self, code: &Code, site: u32) -> Result<Option<Exit>, RapidError> {
+        let site = &code.sites[site as usize];
+        let at = self.storage.stack.len() - site.n_pushed as usize;
+        let pushed = self.storage.stack.split_off(at);
+        let name = match self.pop() {
+            Value::Str(name) => name,
+            _ => return Err(self.error(Err::CallProc, "the procedure name is not a string")),
+        };
+        let Some(&idx) = self.procs_by_name.get(&name.to_lowercase()) else {
+            return Err(self.error(Err::RefUnknownProc, format!("no procedure `{name}` is loaded")));
+        };
+        let Some(callee) = self.routines.get(idx as usize).cloned().flatten() else {
+            return Err(self.error(Err::RefUnknownProc, format!("no procedure `{name}` is loaded")));
+        };
+        if callee.is_func || callee.is_trap || callee.n_params as usize != pushed.len() {
+            return Err(self.error(Err::CallProc, format!("`{name}` cannot be called with these arguments")));
+        }
+        let mut args = Vec::with_capacity(pushed.len());
+        for ((value, late), by_ref) in pushed.into_iter().zip(&site.late_args).zip(&callee.param_by_ref) {
+            args.push(match (value, late.by_ref, by_ref) {
+                (Value::Ref(place), true, true) => Value::Ref(place),
+                (Value::Ref(place), true, false) => self.storage.get(&place).map_err(|f| self.fault(f))?.clone(),
+                (value, false, false) => value,
+                (_, false, true) => {
+                    return Err(self.error(Err::CallProc, format!("`{name}` needs data, not a value, for an argument")))
+                }
+                (value, _, _) => value,
+            });
+        }
+        self.enter(callee, args)
+    }
+
+    /// Leaves the top frame; the caller continues after its call.
+    pub(super) fn return_from(&mut self, value: Option<Value>) -> Option<Exit> {
+        let Some(frame) = self.frames.pop() else { return Some(Exit::Done) };
+        self.storage.stack.truncate(frame.base as usize);
+        if self.exiting {
+            return self.continue_exit();
+        }
+        let Some(caller) = self.frames.last_mut() else { return Some(Exit::Done) };
+        caller.pc += 1;
+        if let Some(mut value) = value {
+            if let Some(like) = &frame.code.ret_like {
+                value = super::coerce_like(like, value).unwrap_or(Value::Absent);
+            }
+            self.push(value);
+        }
+        None
+    }
+
+    /// `RAISE n`: user numbers 1..90 (and booked ones); anything else ERR_ILLRAISE.
+    pub(super) fn user_error(&self, n: f64) -> RapidError {
+        let n_int = n as i32;
+        let booked = n_int >= super::FIRST_BOOKED_ERRNO && n_int < self.next_booked;
+        let predefined = self.errnos.values().any(|&v| v == n_int);
+        if n.fract() == 0.0 && ((1..=90).contains(&n_int) || booked || predefined) {
+            let name = self.errnos.iter().find(|(_, &v)| v == n_int).map_or("", |(k, _)| *k);
+            return RapidError {
+                errno: n_int,
+                name,
+                message: format!("error {n_int} raised by the program"),
+                fatal: false,
+            };
+        }
+        self.error(Err::IllegalRaise, format!("RAISE {n}: user error numbers are 1..90"))
+    }
+
+    /// Bare RAISE in an ERROR handler: the same error, raised at the call in the caller.
+    pub(super) fn re_raise(&mut self) -> Result<Option<Exit>, RapidError> {
+        let Some(active) = self.frame_mut().active.take() else {
+            return Err(RapidError::fatal("RAISE without a number outside an ERROR handler"));
+        };
+        let frame = self.frames.pop().expect("a running frame");
+        self.storage.stack.truncate(frame.base as usize);
+        if self.frames.is_empty() {
+            return Ok(Some(self.unhandled(active.error, &frame)));
+        }
+        Err(active.error)
+    }
+
+    pub(super) fn retry(&mut self) -> Result<Option<Exit>, RapidError> {
+        let frame = self.frame_mut();
+        let Some(active) = frame.active.take() else { return Err(RapidError::fatal("RETRY outside an ERROR handler")) };
+        if frame.last_retry_stmt == Some(active.stmt.start) {
+            frame.retries += 1;
+        } else {
+            frame.retries = 1;
+            frame.last_retry_stmt = Some(active.stmt.start);
+        }
+        if frame.retries > MAX_RETRIES {
+            let mut error =
+                self.error(Err::TooManyRetries, format!("more than {MAX_RETRIES} RETRY of one instruction"));
+            error.fatal = true;
+            return Err(error);
+        }
+        let frame = self.frame_mut();
+        frame.pc = active.stmt.start;
+        let keep = frame.base + frame.code.n_locals;
+        self.storage.stack.truncate(keep as usize);
+        Ok(None)
+    }
+
+    /// The end of a routine's code: a FUNC must have returned; the end of an ERROR
+    /// handler hands the error to the system error handler (§1.12).
+    pub(super) fn fell_off_end(&mut self) -> Result<Option<Exit>, RapidError> {
+        let frame = self.frame();
+        if let Some(active) = &frame.active {
+            let mut error = active.error.clone();
+            error.fatal = true;
+            return Err(error);
+        }
+        if frame.code.is_func {
+            return Err(self.error(Err::FuncNoReturn, format!("FUNC {} ended without RETURN", frame.code.name)));
+        }
+        Ok(self.return_from(None))
+    }
+
+    /// Raises `error` at the top frame's current instruction: its ERROR handler takes
+    /// it, or it propagates to the caller's call; at the top, the system error handler.
+    pub(super) fn raise(&mut self, error: RapidError) -> Option<Exit> {
+        loop {
+            let frame = self.frames.last()?;
+            let in_handler = frame.active.is_some() || frame.undoing;
+            let handler = frame.code.error_handler.as_ref().filter(|h| self.handler_takes(h, &error));
+            match handler {
+                Some(handler) if !error.fatal && !in_handler && !self.exiting => {
+                    let stmt = frame.code.stmt_at(frame.pc).unwrap_or(crate::ir::StmtRange {
+                        start: frame.pc,
+                        end: frame.pc + 1,
+                        span: frame.code.span,
+                    });
+                    let handler_pc = handler.pc;
+                    if let Some(global) = self.errno_global {
+                        self.storage.globals[global as usize] = Value::Num(error.errno as f32);
+                    }
+                    let frame = self.frames.last_mut()?;
+                    if frame.last_retry_stmt != Some(stmt.start) {
+                        frame.retries = 0;
+                    }
+                    frame.active = Some(ActiveError { error, stmt });
+                    frame.pc = handler_pc;
+                    let keep = frame.base + frame.code.n_locals;
+                    self.storage.stack.truncate(keep as usize);
+                    return None;
+                }
+                _ if error.fatal || in_handler || self.frames.len() == 1 => {
+                    let frame = self.frames.last()?;
+                    let exit = self.unhandled(error, frame);
+                    self.frames.clear();
+                    return Some(exit);
+                }
+                _ => {
+                    let frame = self.frames.pop()?;
+                    self.storage.stack.truncate(frame.base as usize);
+                }
+            }
+        }
+    }
+
+    fn handler_takes(&self, handler: &crate::ir::Handler, error: &RapidError) -> bool {
+        handler.numbers.is_empty()
+            || handler.numbers.iter().any(|&n| {
+                let number = if n < 0 {
+                    // A data object's number, read now (booked errnum variables).
+                    self.storage.globals.get((-n - 1) as usize).and_then(Value::as_f64).map_or(i32::MIN, |v| v as i32)
+                } else {
+                    n
+                };
+                number == error.errno || self.errnos.get("LONG_JMP_ALL_ERR") == Some(&number)
+            })
+    }
+
+    fn unhandled(&self, error: RapidError, frame: &Frame) -> Exit {
+        let span = frame.code.stmt_at(frame.pc).map_or(frame.code.span, |s| s.span);
+        Exit::Unhandled(Unhandled { error, routine: frame.code.name.clone(), file: frame.code.file, span })
+    }
+
+    /// EXIT: runs the UNDO handlers of the call chain, innermost first, then ends.
+    pub(super) fn exit(&mut self) -> Option<Exit> {
+        self.exiting = true;
+        self.continue_exit()
+    }
+
+    fn continue_exit(&mut self) -> Option<Exit> {
+        while let Some(frame) = self.frames.last_mut() {
+            match frame.code.undo_handler {
+                Some(pc) if !frame.undoing => {
+                    frame.undoing = true;
+                    frame.active = None;
+                    frame.pc = pc;
+                    let keep = frame.base + frame.code.n_locals;
+                    self.storage.stack.truncate(keep as usize);
+                    return None;
+                }
+                _ => {
+                    let frame = self.frames.pop()?;
+                    self.storage.stack.truncate(frame.base as usize);
+                }
+            }
+        }
+        Some(Exit::Done)
+    }
+}

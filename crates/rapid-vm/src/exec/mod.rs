@@ -1,0 +1,421 @@
+//! The executor: frames on a `Vec`, a budgeted run loop that can stop after any
+//! instruction, and RAPID error recovery by table lookup (§1.12), never by Rust
+//! unwinding. Frame layout on the value stack:
+//!
+//! ```text
+//! frame.base ─► | param 0 | … | param n-1 | data / loop / temp slots | operands … |
+//! ```
+//! A VAR, INOUT or PERS parameter slot holds `Value::Ref(place)`; loads and stores
+//! go through it.
+
+mod call;
+pub mod storage;
+
+use std::rc::Rc;
+
+use rustc_hash::FxHashMap;
+
+use crate::builtins::Ctx;
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::ir::{Code, Instr, StmtRange};
+use crate::ops::{self, OpTypes};
+use crate::value::{Array, PathStep, Place, Record, Root, Value};
+use storage::{coerce_like, index_place, Storage};
+
+/// RETRY may restart a failing instruction this many times (§1.12: "up to four").
+pub const MAX_RETRIES: u32 = 4;
+/// Calls nested deeper than this stop the program (runaway recursion).
+pub const MAX_CALL_DEPTH: usize = 10_000;
+/// The first number BookErrNo hands out.
+const FIRST_BOOKED_ERRNO: i32 = 5000;
+
+/// Why `run` returned.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Exit {
+    /// The program ended: main returned or EXIT ran.
+    Done,
+    /// Stop (or Break): execution halts; a restart would continue.
+    Stopped,
+    /// The step budget is spent; call `run` again to go on.
+    Budget,
+    /// A waiting instruction: advance the clock by this many seconds, then `run`.
+    Wait(f64),
+    /// An error no handler took; the system error handler stops the program.
+    Unhandled(Unhandled),
+}
+
+/// An error that reached the system error handler, with where it happened.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Unhandled {
+    pub error: RapidError,
+    pub routine: String,
+    pub file: usize,
+    pub span: rapid_syntax::Span,
+}
+
+/// An error being handled by a frame's ERROR handler.
+#[derive(Debug, Clone)]
+struct ActiveError {
+    error: RapidError,
+    stmt: StmtRange,
+}
+
+#[derive(Debug)]
+struct Frame {
+    code: Rc<Code>,
+    pc: u32,
+    base: u32,
+    active: Option<ActiveError>,
+    retries: u32,
+    last_retry_stmt: Option<u32>,
+    /// Running this frame's UNDO handler while the program exits.
+    undoing: bool,
+}
+
+/// One program task's interpreter.
+pub struct Vm {
+    routines: Vec<Option<Rc<Code>>>,
+    procs_by_name: FxHashMap<String, u32>,
+    storage: Storage,
+    frames: Vec<Frame>,
+    types: OpTypes,
+    errnos: FxHashMap<&'static str, i32>,
+    errno_global: Option<u32>,
+    next_booked: i32,
+    exiting: bool,
+    /// Virtual time in seconds.
+    pub time: f64,
+    /// Instructions executed so far.
+    pub steps: u64,
+}
+
+impl Vm {
+    /// A VM for compiled routines; `globals` already hold their initial values.
+    pub fn new(
+        routines: Vec<Option<Code>>,
+        procs_by_name: FxHashMap<String, u32>,
+        globals: Vec<Value>,
+        types: OpTypes,
+        errnos: FxHashMap<&'static str, i32>,
+        errno_global: Option<u32>,
+    ) -> Vm {
+        Vm {
+            routines: routines.into_iter().map(|c| c.map(Rc::new)).collect(),
+            procs_by_name,
+            storage: Storage { globals, stack: Vec::new() },
+            frames: Vec::new(),
+            types,
+            errnos,
+            errno_global,
+            next_booked: FIRST_BOOKED_ERRNO,
+            exiting: false,
+            time: 0.0,
+            steps: 0,
+        }
+    }
+
+    /// The numbers of the predefined errors (read from the ERR_ constants at load).
+    pub fn set_errnos(&mut self, errnos: FxHashMap<&'static str, i32>) {
+        self.errnos = errnos;
+    }
+
+    /// The value of global `idx`.
+    pub fn global(&self, idx: u32) -> Option<&Value> {
+        self.storage.globals.get(idx as usize)
+    }
+
+    /// Runs `code` with no arguments as the first frame (the entry routine or the
+    /// load-time initialisers).
+    pub fn start(&mut self, code: Rc<Code>) {
+        self.frames.clear();
+        self.storage.stack.clear();
+        self.exiting = false;
+        self.push_frame(code, Vec::new());
+    }
+
+    /// Starts routine `idx` (which takes no arguments).
+    pub fn start_routine(&mut self, idx: u32) -> bool {
+        match self.routines.get(idx as usize).cloned().flatten() {
+            Some(code) => {
+                self.start(code);
+                true
+            }
+            None => false,
+        }
+    }
+
+    fn errno(&self, err: Err) -> i32 {
+        self.errnos.get(err.name()).copied().unwrap_or(0)
+    }
+
+    fn error(&self, err: Err, message: impl Into<String>) -> RapidError {
+        RapidError { errno: self.errno(err), name: err.name(), message: message.into(), fatal: false }
+    }
+
+    fn fault(&self, (err, message): (Err, String)) -> RapidError {
+        self.error(err, message)
+    }
+
+    /// Executes at most `budget` instructions.
+    pub fn run(&mut self, host: &mut dyn crate::host::Host, budget: u64) -> Exit {
+        for _ in 0..budget {
+            if self.frames.is_empty() {
+                return Exit::Done;
+            }
+            self.steps += 1;
+            match self.step(host) {
+                Ok(None) => {}
+                Ok(Some(exit)) => return exit,
+                Err(error) => {
+                    if let Some(exit) = self.raise(error) {
+                        return exit;
+                    }
+                }
+            }
+        }
+        if self.frames.is_empty() {
+            Exit::Done
+        } else {
+            Exit::Budget
+        }
+    }
+
+    fn frame(&self) -> &Frame {
+        self.frames.last().expect("a running frame")
+    }
+
+    fn frame_mut(&mut self) -> &mut Frame {
+        self.frames.last_mut().expect("a running frame")
+    }
+
+    fn pop(&mut self) -> Value {
+        self.storage.stack.pop().unwrap_or(Value::Absent)
+    }
+
+    fn push(&mut self, value: Value) {
+        self.storage.stack.push(value);
+    }
+
+    fn pop_num(&mut self) -> Result<f64, RapidError> {
+        let value = self.pop();
+        value.as_f64().ok_or_else(|| self.error(Err::ArgValue, "a number was expected"))
+    }
+
+    /// Executes one instruction of the top frame.
+    fn step(&mut self, host: &mut dyn crate::host::Host) -> Result<Option<Exit>, RapidError> {
+        let (code, pc, base) = {
+            let frame = self.frame();
+            (frame.code.clone(), frame.pc, frame.base)
+        };
+        let Some(&instr) = code.instrs.get(pc as usize) else {
+            return Err(RapidError::fatal("the program counter left its routine"));
+        };
+        let mut next = pc + 1;
+        match instr {
+            Instr::Const(i) => self.push(code.consts[i as usize].clone()),
+            Instr::LoadLocal(slot) => {
+                let value = self.load_local(base + slot)?;
+                self.push(value);
+            }
+            Instr::StoreLocal(slot) => {
+                let value = self.pop();
+                self.store_local(base + slot, value)?;
+            }
+            Instr::LoadGlobal(idx) => {
+                let value = self.storage.globals.get(idx as usize).cloned().unwrap_or(Value::Absent);
+                self.push(value);
+            }
+            Instr::StoreGlobal(idx) => {
+                let value = self.pop();
+                let place = Place { root: Root::Global(idx), path: Vec::new() };
+                self.storage.set(&place, value).map_err(|f| self.fault(f))?;
+            }
+            Instr::PlaceLocal(slot) => {
+                let place = match &self.storage.stack[(base + slot) as usize] {
+                    Value::Ref(place) => (**place).clone(),
+                    Value::Absent => return Err(self.error(Err::NotPresent, "an optional parameter was not passed")),
+                    _ => Place { root: Root::Stack(base + slot), path: Vec::new() },
+                };
+                self.push(Value::Ref(Box::new(place)));
+            }
+            Instr::PlaceGlobal(idx) => {
+                self.push(Value::Ref(Box::new(Place { root: Root::Global(idx), path: Vec::new() })))
+            }
+            Instr::PlaceField(field) => {
+                if let Some(Value::Ref(place)) = self.storage.stack.last_mut() {
+                    place.path.push(PathStep::Field(field));
+                }
+            }
+            Instr::PlaceIndex(n) => {
+                let indices = self.pop_indices(n)?;
+                let Value::Ref(place) = self.pop() else { return Err(RapidError::fatal("no place to index")) };
+                let place = index_place(&self.storage, *place, &indices).map_err(|f| self.fault(f))?;
+                self.push(Value::Ref(Box::new(place)));
+            }
+            Instr::LoadPlace => {
+                let Value::Ref(place) = self.pop() else { return Err(RapidError::fatal("no place to load")) };
+                let value = self.storage.get(&place).map_err(|f| self.fault(f))?.clone();
+                self.push(value);
+            }
+            Instr::StorePlace => {
+                let value = self.pop();
+                let Value::Ref(place) = self.pop() else { return Err(RapidError::fatal("no place to store")) };
+                self.storage.set(&place, value).map_err(|f| self.fault(f))?;
+            }
+            Instr::Field(field) => {
+                let Value::Record(record) = self.pop() else { return Err(self.error(Err::ArgValue, "not a record")) };
+                let value = record.fields.into_iter().nth(field as usize).unwrap_or(Value::Absent);
+                self.push(value);
+            }
+            Instr::Index(n) => {
+                let indices = self.pop_indices(n)?;
+                let Value::Array(array) = self.pop() else { return Err(self.error(Err::ArgValue, "not an array")) };
+                let flat = storage::element_index(array.dims, &indices).map_err(|f| self.fault(f))?;
+                let value = array.elems.into_iter().nth(flat as usize).unwrap_or(Value::Absent);
+                self.push(value);
+            }
+            Instr::Unary(op) => {
+                let value = self.pop();
+                let res = ops::unary(op, value, self.types).map_err(|f| self.fault(f))?;
+                self.push(res);
+            }
+            Instr::Binary(op) => {
+                let rhs = self.pop();
+                let lhs = self.pop();
+                let res = ops::binary(op, lhs, rhs, self.types).map_err(|f| self.fault(f))?;
+                self.push(res);
+            }
+            Instr::MakeRecord(ty, n) => {
+                let at = self.storage.stack.len() - n as usize;
+                let fields = self.storage.stack.split_off(at);
+                self.push(Value::Record(Box::new(Record { ty, fields })));
+            }
+            Instr::MakeArray(n) => {
+                let at = self.storage.stack.len() - n as usize;
+                let elems = self.storage.stack.split_off(at);
+                let array = Array { dims: [n, 0, 0], elems };
+                self.push(crate::compile::flatten_array(array));
+            }
+            Instr::Jump(target) => next = target,
+            Instr::JumpIfFalse(target) => match self.pop() {
+                Value::Bool(false) => next = target,
+                Value::Bool(true) => {}
+                _ => return Err(self.error(Err::ArgValue, "a condition did not give a bool")),
+            },
+            Instr::Pop => {
+                self.pop();
+            }
+            Instr::Call(site) => return self.call(&code, site, host),
+            Instr::LateCall(site) => return self.late_call(&code, site),
+            Instr::Return => return Ok(self.return_from(None)),
+            Instr::ReturnValue => {
+                let value = self.pop();
+                return Ok(self.return_from(Some(value)));
+            }
+            Instr::Raise => {
+                let n = self.pop_num()?;
+                return Err(self.user_error(n));
+            }
+            Instr::ReRaise => return self.re_raise(),
+            Instr::Retry => return self.retry(),
+            Instr::TryNext => {
+                let active = self.frame_mut().active.take();
+                let Some(active) = active else { return Err(RapidError::fatal("TRYNEXT outside an ERROR handler")) };
+                next = active.stmt.end;
+                self.frame_mut().retries = 0;
+            }
+            Instr::Exit => return Ok(self.exit()),
+            Instr::ForInit { var, has_step } => {
+                let step = if has_step { Some(self.pop_num()?) } else { None };
+                let to = self.pop_num()?;
+                let from = self.pop_num()?;
+                // Without STEP the loop counts up by 1, or down by 1 when FROM > TO.
+                let step = step.unwrap_or(if from > to { -1.0 } else { 1.0 });
+                let slots = (base + var) as usize;
+                self.storage.stack[slots] = Value::Num(from as f32);
+                self.storage.stack[slots + 1] = Value::Num(to as f32);
+                self.storage.stack[slots + 2] = Value::Num(step as f32);
+            }
+            Instr::ForCheck { var, exit } => {
+                let slots = (base + var) as usize;
+                let (v, to, step) = (
+                    self.storage.stack[slots].as_f64().unwrap_or(0.0),
+                    self.storage.stack[slots + 1].as_f64().unwrap_or(0.0),
+                    self.storage.stack[slots + 2].as_f64().unwrap_or(0.0),
+                );
+                let done = if step >= 0.0 { v > to } else { v < to };
+                if done {
+                    next = exit;
+                }
+            }
+            Instr::ForNext { var, check } => {
+                let slots = (base + var) as usize;
+                let v = self.storage.stack[slots].as_f64().unwrap_or(0.0);
+                let step = self.storage.stack[slots + 2].as_f64().unwrap_or(0.0);
+                self.storage.stack[slots] = Value::Num((v + step) as f32);
+                next = check;
+            }
+            Instr::Present(slot) => {
+                let present = !self.storage.stack[(base + slot) as usize].is_absent();
+                self.push(Value::Bool(present));
+            }
+            Instr::Placeholder => return Err(self.error(Err::ExecPlaceholder, "a placeholder cannot be executed")),
+            Instr::FellOffEnd => return self.fell_off_end(),
+        }
+        self.frame_mut().pc = next;
+        Ok(None)
+    }
+
+    fn pop_indices(&mut self, n: u8) -> Result<Vec<f64>, RapidError> {
+        let mut indices = vec![0.0; n as usize];
+        for slot in indices.iter_mut().rev() {
+            *slot = self.pop_num()?;
+        }
+        Ok(indices)
+    }
+
+    fn load_local(&self, index: u32) -> Result<Value, RapidError> {
+        match &self.storage.stack[index as usize] {
+            Value::Ref(place) => self.storage.get(place).cloned().map_err(|f| self.fault(f)),
+            Value::Absent => Err(self.error(Err::NotPresent, "an optional parameter was not passed")),
+            value => Ok(value.clone()),
+        }
+    }
+
+    fn store_local(&mut self, index: u32, value: Value) -> Result<(), RapidError> {
+        let slot = &mut self.storage.stack[index as usize];
+        if let Value::Ref(place) = slot {
+            let place = (**place).clone();
+            return self.storage.set(&place, value).map_err(|f| self.fault(f));
+        }
+        match coerce_like(slot, value) {
+            Ok(value) => {
+                *slot = value;
+                Ok(())
+            }
+            Err(fault) => Err(self.fault(fault)),
+        }
+    }
+
+    /// Builds a built-in's context, runs it, and returns the wait/stop it asked for.
+    fn run_builtin(
+        &mut self,
+        id: crate::builtins::BuiltinId,
+        args: &[Value],
+        host: &mut dyn crate::host::Host,
+    ) -> Result<(Option<Value>, Option<f64>, bool), RapidError> {
+        let mut ctx = Ctx {
+            storage: &mut self.storage,
+            host,
+            types: self.types,
+            time: self.time,
+            wait: None,
+            stop: false,
+            errnos: &self.errnos,
+            next_booked: &mut self.next_booked,
+        };
+        let res = crate::builtins::function(id)(&mut ctx, args)?;
+        Ok((res, ctx.wait, ctx.stop))
+    }
+}

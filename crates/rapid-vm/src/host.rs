@@ -1,0 +1,22 @@
+//! The world outside the interpreter: the teach pendant (and, later, files, sockets
+//! and I/O), behind a trait so tests and the server provide their own.
+
+/// What the program's pendant instructions reach.
+pub trait Host {
+    /// One line on the pendant's display (TPWrite, ErrWrite).
+    fn tp_write(&mut self, line: &str);
+    /// TPErase.
+    fn tp_erase(&mut self) {}
+}
+
+/// A host that records pendant lines (for tests).
+#[derive(Debug, Default)]
+pub struct RecordingHost {
+    pub lines: Vec<String>,
+}
+
+impl Host for RecordingHost {
+    fn tp_write(&mut self, line: &str) {
+        self.lines.push(line.to_string());
+    }
+}

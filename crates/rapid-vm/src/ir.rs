@@ -1,0 +1,200 @@
+//! The compiled form of a routine: a stack machine's instructions over numbered
+//! slots (never names), a constant pool, call-site descriptions and the statement
+//! table that error recovery (RETRY, TRYNEXT) works from.
+
+use rapid_sema::types::TypeId;
+use rapid_syntax::ast::{BinaryOp, UnaryOp};
+use rapid_syntax::Span;
+
+use crate::builtins::BuiltinId;
+use crate::value::Value;
+
+/// One instruction. Operands come from and results go to the frame's operand stack.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Instr {
+    /// Push constant `n` of the pool.
+    Const(u32),
+    /// Push the value of local slot `n` (through it when it holds a reference).
+    LoadLocal(u32),
+    /// Pop a value into local slot `n` (through it when it holds a reference).
+    StoreLocal(u32),
+    LoadGlobal(u32),
+    StoreGlobal(u32),
+    /// Push the place of local slot `n` (the referenced place for a reference).
+    PlaceLocal(u32),
+    PlaceGlobal(u32),
+    /// Replace the place on top with its component `n`.
+    PlaceField(u16),
+    /// Pop `n` indices and a place; push the element's place (bounds checked).
+    PlaceIndex(u8),
+    /// Pop a place, push its value.
+    LoadPlace,
+    /// Pop a value and a place; store the value there.
+    StorePlace,
+    /// Pop a record, push its component `n`.
+    Field(u16),
+    /// Pop `n` indices and an array, push the element.
+    Index(u8),
+    Unary(UnaryOp),
+    Binary(BinaryOp),
+    /// Pop `n` values, push a record of type `ty`.
+    MakeRecord(TypeId, u16),
+    /// Pop `n` values (elements or rows), push an array.
+    MakeArray(u32),
+    Jump(u32),
+    /// Pop a bool; jump when it is FALSE.
+    JumpIfFalse(u32),
+    Pop,
+    /// Call routine or built-in described by call site `n`.
+    Call(u32),
+    /// Pop a string naming a procedure; call it with call site `n`'s arguments.
+    LateCall(u32),
+    /// End a PROC or TRAP.
+    Return,
+    /// Pop the value a FUNC returns.
+    ReturnValue,
+    /// Pop an error number and raise it.
+    Raise,
+    /// Raise the current error again in the caller (bare RAISE in an ERROR handler).
+    ReRaise,
+    Retry,
+    TryNext,
+    Exit,
+    /// FOR: pop FROM, TO and STEP (or none for the default) into slots var, var+1, var+2.
+    ForInit {
+        var: u32,
+        has_step: bool,
+    },
+    /// FOR: jump to `exit` when the loop variable has passed TO.
+    ForCheck {
+        var: u32,
+        exit: u32,
+    },
+    /// FOR: add STEP to the variable and jump back to `check`.
+    ForNext {
+        var: u32,
+        check: u32,
+    },
+    /// Push whether optional parameter slot `n` was passed.
+    Present(u32),
+    /// Executing a placeholder raises ERR_EXECPHR.
+    Placeholder,
+    /// The routine ran off its end without RETURN (in a FUNC: ERR_FNCNORET).
+    FellOffEnd,
+}
+
+/// How a call passes each parameter, in parameter order.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ArgSpec {
+    /// A value computed by the caller (IN parameters).
+    Value,
+    /// A place computed by the caller (VAR, INOUT, PERS parameters).
+    Place,
+    /// Not passed.
+    Absent,
+    /// A switch that was passed.
+    Switch,
+    /// `\Name?param`: the caller's optional parameter in local slot `slot`, passed on
+    /// only when present; `by_ref` for VAR/INOUT/PERS parameters.
+    Conditional { slot: u32, by_ref: bool },
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Callee {
+    Routine(u32),
+    Builtin(BuiltinId),
+    /// Late binding: resolved by name at run time.
+    Late,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct CallSite {
+    pub callee: Callee,
+    pub args: Vec<ArgSpec>,
+    /// How many values the caller pushed (the Value and Place arguments).
+    pub n_pushed: u16,
+    /// Late binding: the arguments as written, matched against the callee at run time.
+    pub late_args: Vec<LateArg>,
+}
+
+/// A late-bound call's argument: positional values only (places when the callee
+/// wants references).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LateArg {
+    pub by_ref: bool,
+}
+
+/// A statement's code range, for RETRY (restart it) and TRYNEXT (go past it).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct StmtRange {
+    pub start: u32,
+    pub end: u32,
+    pub span: Span,
+}
+
+/// One compiled routine.
+#[derive(Debug, Clone, Default)]
+pub struct Code {
+    pub name: String,
+    pub file: usize,
+    pub instrs: Vec<Instr>,
+    pub consts: Vec<Value>,
+    pub sites: Vec<CallSite>,
+    /// Local slots: parameters first, then routine data, loop variables, temporaries.
+    pub n_locals: u32,
+    pub n_params: u32,
+    /// Default values of the non-parameter locals (slot n_params + i).
+    pub local_defaults: Vec<Value>,
+    /// Statements in order of their start; nested ones follow their parent.
+    pub stmts: Vec<StmtRange>,
+    pub error_handler: Option<Handler>,
+    pub undo_handler: Option<u32>,
+    pub backward_handler: Option<u32>,
+    pub is_func: bool,
+    pub is_trap: bool,
+    pub span: Span,
+    /// For each parameter: a value of its numeric kind when it is an IN num or dnum
+    /// (arguments are converted to it), else `None`.
+    pub param_likes: Vec<Option<Value>>,
+    /// For each parameter: VAR, INOUT or PERS.
+    pub param_by_ref: Vec<bool>,
+    /// A FUNC's result is converted to the numeric kind of this value.
+    pub ret_like: Option<Value>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Handler {
+    pub pc: u32,
+    /// `ERROR (n1, n2)`: the errors it takes; empty takes all.
+    pub numbers: Vec<i32>,
+}
+
+impl Code {
+    /// The innermost statement whose code holds `pc`.
+    pub fn stmt_at(&self, pc: u32) -> Option<StmtRange> {
+        self.stmts.iter().rev().find(|s| s.start <= pc && pc < s.end).copied()
+    }
+
+    pub fn emit(&mut self, instr: Instr) -> u32 {
+        self.instrs.push(instr);
+        self.instrs.len() as u32 - 1
+    }
+
+    pub fn here(&self) -> u32 {
+        self.instrs.len() as u32
+    }
+
+    /// Points the jump at `at` to `target`.
+    pub fn patch(&mut self, at: u32, target: u32) {
+        match &mut self.instrs[at as usize] {
+            Instr::Jump(t) | Instr::JumpIfFalse(t) => *t = target,
+            Instr::ForCheck { exit, .. } => *exit = target,
+            _ => {}
+        }
+    }
+
+    pub fn constant(&mut self, value: Value) -> u32 {
+        self.consts.push(value);
+        self.consts.len() as u32 - 1
+    }
+}
