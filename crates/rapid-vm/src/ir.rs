@@ -31,6 +31,19 @@ pub enum Instr {
     LoadPlace,
     /// Pop a value and a place; store the value there.
     StorePlace,
+    /// Pop `n` indices; push that element of the array in local slot `slot` (through
+    /// a reference) or global `slot`.
+    LoadElem {
+        global: bool,
+        slot: u32,
+        n: u8,
+    },
+    /// Pop a value and `n` indices; store the value in that element.
+    StoreElem {
+        global: bool,
+        slot: u32,
+        n: u8,
+    },
     /// Pop a record, push its component `n`.
     Field(u16),
     /// Pop `n` indices and an array, push the element.
@@ -79,6 +92,8 @@ pub enum Instr {
     Present(u32),
     /// Executing a placeholder raises ERR_EXECPHR.
     Placeholder,
+    /// Pop a number and a name; push the name followed by the number (CallByVar).
+    NameWithNumber,
     /// The routine ran off its end without RETURN (in a FUNC: ERR_FNCNORET).
     FellOffEnd,
 }

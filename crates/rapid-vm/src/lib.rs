@@ -98,6 +98,7 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
         })
         .collect();
     vm.set_errnos(errnos);
+    vm.set_pers_globals(prog.datas.iter().map(|d| d.kind == rapid_sema::symbols::DataKind::Pers).collect());
     let entry_idx = prog.interner.get(entry).and_then(|sym| prog.scopes.globals.get(&sym).map(|o| o.def));
     let started = match entry_idx {
         Some(Def::Routine(idx)) if prog.routines[idx as usize].kind == RoutineKind::Proc => vm.start_routine(idx),

@@ -181,3 +181,13 @@ pub(super) fn dnum_to_num(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     }
     Ok(Some(Value::Num(x as f32)))
 }
+
+pub(super) fn max(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (a, b) = (ctx.num(&args[0])?, ctx.num(&args[1])?);
+    Ok(Some(Value::Num(a.max(b) as f32)))
+}
+
+pub(super) fn min(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (a, b) = (ctx.num(&args[0])?, ctx.num(&args[1])?);
+    Ok(Some(Value::Num(a.min(b) as f32)))
+}

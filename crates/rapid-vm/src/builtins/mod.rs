@@ -37,6 +37,8 @@ pub struct Ctx<'a> {
     /// Set by Stop.
     pub stop: bool,
     pub errnos: &'a rustc_hash::FxHashMap<&'static str, i32>,
+    /// Which globals are persistents.
+    pub pers_globals: &'a [bool],
     /// The next free booked error number (BookErrNo).
     pub next_booked: &'a mut i32,
 }
@@ -115,6 +117,12 @@ pub static TABLE: &[(&str, BuiltinFn)] = &[
     ("Break", system::break_),
     ("BookErrNo", system::book_err_no),
     ("Dim", system::dim),
+    ("IsPers", system::is_pers),
+    ("IsVar", system::is_var),
+    ("Max", math::max),
+    ("Min", math::min),
+    ("StrOrder", strings::str_order),
+    ("StrToVal", strings::str_to_val),
     ("Abs", math::abs),
     ("AbsDnum", math::abs),
     ("Sqrt", math::sqrt),

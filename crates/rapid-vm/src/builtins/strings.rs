@@ -105,3 +105,137 @@ fn literal(value: &Value) -> String {
         _ => String::new(),
     }
 }
+
+/// `StrOrder(Str1, Str2, Order)`: whether Str1 comes before or equals Str2 when
+/// characters sort by their position in Order (characters missing from Order sort
+/// after all listed ones, by code); a prefix sorts first.
+pub(super) fn str_order(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (a, b, order) = (chars(&ctx.string(&args[0])?), chars(&ctx.string(&args[1])?), chars(&ctx.string(&args[2])?));
+    let rank = |c: char| order.iter().position(|&o| o == c).map_or(order.len() + c as usize, |p| p);
+    for (x, y) in a.iter().zip(&b) {
+        if x != y {
+            return Ok(Some(Value::Bool(rank(*x) < rank(*y))));
+        }
+    }
+    Ok(Some(Value::Bool(a.len() <= b.len())))
+}
+
+/// `StrToVal(Str, Val)`: reads a RAPID literal of Val's type into Val; FALSE (and Val
+/// unchanged) when the text is not such a literal.
+pub(super) fn str_to_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let text = ctx.string(&args[0])?;
+    let template = ctx.value(&args[1])?;
+    let mut reader = LiteralReader { chars: text.chars().collect(), pos: 0 };
+    let parsed = reader.value_like(&template).filter(|_| reader.at_end());
+    match parsed {
+        Some(value) => {
+            ctx.store(&args[1], value)?;
+            Ok(Some(Value::Bool(true)))
+        }
+        None => Ok(Some(Value::Bool(false))),
+    }
+}
+
+/// Reads literals shaped like a template value.
+struct LiteralReader {
+    chars: Vec<char>,
+    pos: usize,
+}
+
+impl LiteralReader {
+    fn skip_blanks(&mut self) {
+        while self.chars.get(self.pos).is_some_and(|c| c.is_whitespace()) {
+            self.pos += 1;
+        }
+    }
+
+    fn at_end(&mut self) -> bool {
+        self.skip_blanks();
+        self.pos == self.chars.len()
+    }
+
+    fn eat(&mut self, c: char) -> bool {
+        self.skip_blanks();
+        if self.chars.get(self.pos) == Some(&c) {
+            self.pos += 1;
+            return true;
+        }
+        false
+    }
+
+    fn value_like(&mut self, template: &Value) -> Option<Value> {
+        self.skip_blanks();
+        match template {
+            Value::Num(_) => self.number().map(|n| Value::Num(n as f32)),
+            Value::Dnum(_) => self.number().map(Value::Dnum),
+            Value::Bool(_) => self.word().and_then(|w| match w.to_ascii_uppercase().as_str() {
+                "TRUE" => Some(Value::Bool(true)),
+                "FALSE" => Some(Value::Bool(false)),
+                _ => None,
+            }),
+            Value::Str(_) => self.string().map(|s| Value::Str(s.into_boxed_str())),
+            Value::Record(record) => {
+                let fields = self.list(&record.fields)?;
+                Some(Value::Record(Box::new(crate::value::Record { ty: record.ty, fields })))
+            }
+            Value::Array(array) => {
+                let elems = self.list(&array.elems)?;
+                Some(Value::Array(Box::new(crate::value::Array { dims: array.dims, elems })))
+            }
+            _ => None,
+        }
+    }
+
+    fn list(&mut self, templates: &[Value]) -> Option<Vec<Value>> {
+        if !self.eat('[') {
+            return None;
+        }
+        let mut out = Vec::with_capacity(templates.len());
+        for (idx, template) in templates.iter().enumerate() {
+            if idx > 0 && !self.eat(',') {
+                return None;
+            }
+            out.push(self.value_like(template)?);
+        }
+        self.eat(']').then_some(out)
+    }
+
+    fn number(&mut self) -> Option<f64> {
+        let start = self.pos;
+        while self.chars.get(self.pos).is_some_and(|c| c.is_ascii_alphanumeric() || matches!(c, '.' | '+' | '-')) {
+            self.pos += 1;
+        }
+        let text: String = self.chars[start..self.pos].iter().collect();
+        let (negative, body) = match text.strip_prefix('-') {
+            Some(rest) => (true, rest),
+            None => (false, text.strip_prefix('+').unwrap_or(&text)),
+        };
+        let value = rapid_syntax::literal::num_value(body).filter(|v| v.is_finite())?;
+        Some(if negative { -value } else { value })
+    }
+
+    fn word(&mut self) -> Option<String> {
+        let start = self.pos;
+        while self.chars.get(self.pos).is_some_and(|c| c.is_ascii_alphabetic()) {
+            self.pos += 1;
+        }
+        (self.pos > start).then(|| self.chars[start..self.pos].iter().collect())
+    }
+
+    fn string(&mut self) -> Option<String> {
+        if !self.eat('"') {
+            return None;
+        }
+        let start = self.pos;
+        loop {
+            match self.chars.get(self.pos)? {
+                '"' if self.chars.get(self.pos + 1) == Some(&'"') => self.pos += 2,
+                '"' => break,
+                _ => self.pos += 1,
+            }
+        }
+        let raw: String = self.chars[start..self.pos].iter().collect();
+        self.pos += 1;
+        Some(rapid_syntax::literal::string_value(&format!("\"{raw}\"")))
+    }
+}

@@ -46,3 +46,24 @@ pub(super) fn dim(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, Ra
     }
     Ok(Some(Value::Num(array.dims[dim_no as usize - 1] as f32)))
 }
+
+/// Whether an INOUT argument refers to a persistent (a PERS, or through PERS params).
+fn refers_to_pers(ctx: &Ctx<'_>, arg: &Value) -> bool {
+    match arg {
+        Value::Ref(place) => match place.root {
+            crate::value::Root::Global(idx) => ctx.pers_globals.get(idx as usize).copied().unwrap_or(false),
+            crate::value::Root::Stack(_) => false,
+        },
+        _ => false,
+    }
+}
+
+/// `IsPers(DatObj)`: whether an INOUT parameter refers to a persistent.
+pub(super) fn is_pers(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
+    Ok(Some(Value::Bool(refers_to_pers(ctx, &args[0]))))
+}
+
+/// `IsVar(DatObj)`: whether an INOUT parameter refers to a variable.
+pub(super) fn is_var(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
+    Ok(Some(Value::Bool(!refers_to_pers(ctx, &args[0]))))
+}

@@ -38,6 +38,9 @@ impl RoutineCompiler<'_> {
                 if info.display.eq_ignore_ascii_case("Present") {
                     return self.present(arena, args, span);
                 }
+                if info.display.eq_ignore_ascii_case("CallByVar") {
+                    return self.call_by_var(arena, args);
+                }
                 match builtins::lookup(&info.display) {
                     Some(id) => Callee::Builtin(id),
                     None => return Err(self.unsupported(span, &format!("the built-in `{}`", info.display))),
@@ -111,6 +114,19 @@ impl RoutineCompiler<'_> {
             }
             _ => Err(self.error(span, "Present needs an optional parameter of this routine")),
         }
+    }
+
+    /// `CallByVar Name, Number`: a late-bound call of the procedure `Name` + `Number`.
+    fn call_by_var(&mut self, arena: &Arena, args: ArgList) -> Result<(), CompileError> {
+        for arg in arena.args(args) {
+            if let Some(value) = arg.value {
+                self.expr(arena, value, None)?;
+            }
+        }
+        self.code.emit(Instr::NameWithNumber);
+        let site = self.site(CallSite { callee: Callee::Late, args: Vec::new(), n_pushed: 0, late_args: Vec::new() });
+        self.code.emit(Instr::LateCall(site));
+        Ok(())
     }
 
     /// A late-bound call: the callee's name is on the stack; arguments are positional.

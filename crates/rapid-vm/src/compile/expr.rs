@@ -40,6 +40,14 @@ impl RoutineCompiler<'_> {
                 }
                 _ => return Err(self.error(expr.span, "not data")),
             },
+            ExprKind::Index { base, indices } if self.elem_root(arena, base).is_some() => {
+                let (global, slot) = self.elem_root(arena, base).unwrap_or((false, 0));
+                let indices = arena.list(indices);
+                for &index in indices {
+                    self.expr(arena, index, None)?;
+                }
+                self.code.emit(Instr::LoadElem { global, slot, n: indices.len() as u8 });
+            }
             ExprKind::Index { .. } | ExprKind::Field { .. } => {
                 self.place(arena, id)?;
                 self.code.emit(Instr::LoadPlace);
@@ -107,6 +115,18 @@ impl RoutineCompiler<'_> {
         Ok(())
     }
 
+    /// An array named directly (`a` in `a{i}`): (global?, slot).
+    pub(crate) fn elem_root(&self, arena: &Arena, base: ExprId) -> Option<(bool, u32)> {
+        match arena.expr(base).kind {
+            ExprKind::Name(sym) => match self.resolve(sym)? {
+                Resolved::Local(local) => Some((false, local.slot)),
+                Resolved::Global(idx) => Some((true, idx)),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+
     /// Emits code that pushes the place of a data reference (`a`, `a{i}`, `r.c`...).
     pub(crate) fn place(&mut self, arena: &Arena, id: ExprId) -> Result<(), CompileError> {
         let expr = *arena.expr(id);
@@ -168,7 +188,24 @@ impl RoutineCompiler<'_> {
                     _ => None,
                 }
             }
-            ExprKind::Paren(inner) => self.static_type(arena, inner),
+            ExprKind::Paren(inner) | ExprKind::Unary { operand: inner, .. } => self.static_type(arena, inner),
+            // Arithmetic keeps a record operand's type (pos * num is a pos, orient *
+            // orient an orient); comparisons and logic give no aggregate context.
+            ExprKind::Binary { op, lhs, rhs } => {
+                use rapid_syntax::ast::BinaryOp as B;
+                if !matches!(op, B::Add | B::Sub | B::Mul | B::Div) {
+                    return None;
+                }
+                let (l, r) = (self.static_type(arena, lhs), self.static_type(arena, rhs));
+                let is_record = |t: &Expected| t.is_some_and(|(ty, _)| self.prog.types.record_fields(ty).is_some());
+                if is_record(&l) {
+                    l
+                } else if is_record(&r) {
+                    r
+                } else {
+                    l.or(r)
+                }
+            }
             ExprKind::Call { name, .. } => match self.resolve(name)? {
                 Resolved::Routine(idx) => self.prog.routines[idx as usize].ret.map(|t| (t, [0; 3])),
                 _ => None,

@@ -204,6 +204,17 @@ impl RoutineCompiler<'_> {
                 self.code.emit(Instr::Placeholder);
                 return Ok(());
             }
+            ExprKind::Index { base, indices } => {
+                if let Some((global, slot)) = self.elem_root(arena, base) {
+                    let indices = arena.list(indices);
+                    for &index in indices {
+                        self.expr(arena, index, None)?;
+                    }
+                    self.expr(arena, value, expect)?;
+                    self.code.emit(Instr::StoreElem { global, slot, n: indices.len() as u8 });
+                    return Ok(());
+                }
+            }
             _ => {}
         }
         self.place(arena, target)?;

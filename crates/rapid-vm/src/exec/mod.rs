@@ -82,6 +82,8 @@ pub struct Vm {
     types: OpTypes,
     errnos: FxHashMap<&'static str, i32>,
     errno_global: Option<u32>,
+    /// Which globals are persistents (IsPers, IsVar).
+    pers_globals: Vec<bool>,
     next_booked: i32,
     exiting: bool,
     /// Virtual time in seconds.
@@ -108,6 +110,7 @@ impl Vm {
             types,
             errnos,
             errno_global,
+            pers_globals: Vec::new(),
             next_booked: FIRST_BOOKED_ERRNO,
             exiting: false,
             time: 0.0,
@@ -118,6 +121,11 @@ impl Vm {
     /// The numbers of the predefined errors (read from the ERR_ constants at load).
     pub fn set_errnos(&mut self, errnos: FxHashMap<&'static str, i32>) {
         self.errnos = errnos;
+    }
+
+    /// Marks which globals are persistents.
+    pub fn set_pers_globals(&mut self, pers: Vec<bool>) {
+        self.pers_globals = pers;
     }
 
     /// The value of global `idx`.
@@ -159,11 +167,15 @@ impl Vm {
 
     /// Executes at most `budget` instructions.
     pub fn run(&mut self, host: &mut dyn crate::host::Host, budget: u64) -> Exit {
-        for _ in 0..budget {
+        let mut remaining = budget;
+        while remaining > 0 {
             if self.frames.is_empty() {
                 return Exit::Done;
             }
-            self.steps += 1;
+            if !self.run_fast(&mut remaining) {
+                break;
+            }
+            // The instruction at pc needs the general path.
             match self.step(host) {
                 Ok(None) => {}
                 Ok(Some(exit)) => return exit,
@@ -179,6 +191,111 @@ impl Vm {
         } else {
             Exit::Budget
         }
+    }
+
+    /// Runs the top frame's instructions that need nothing but num arithmetic,
+    /// jumps and loads/stores of nums, without leaving the loop. Returns `false`
+    /// when the budget ran out; `true` when the instruction at pc (already counted)
+    /// needs `step`.
+    fn run_fast(&mut self, remaining: &mut u64) -> bool {
+        let (code, base, mut pc) = {
+            let frame = self.frame();
+            (frame.code.clone(), frame.base as usize, frame.pc)
+        };
+        let stack = &mut self.storage.stack;
+        let needs_step = loop {
+            if *remaining == 0 {
+                break false;
+            }
+            *remaining -= 1;
+            self.steps += 1;
+            let Some(&instr) = code.instrs.get(pc as usize) else { break true };
+            match instr {
+                Instr::Const(i) => match &code.consts[i as usize] {
+                    Value::Num(n) => stack.push(Value::Num(*n)),
+                    Value::Bool(b) => stack.push(Value::Bool(*b)),
+                    _ => break true,
+                },
+                Instr::LoadLocal(slot) => match stack[base + slot as usize] {
+                    Value::Num(n) => stack.push(Value::Num(n)),
+                    Value::Bool(b) => stack.push(Value::Bool(b)),
+                    _ => break true,
+                },
+                Instr::StoreLocal(slot) => match (stack.last(), &stack[base + slot as usize]) {
+                    (Some(Value::Num(_)), Value::Num(_)) | (Some(Value::Bool(_)), Value::Bool(_)) => {
+                        let value = stack.pop().unwrap_or(Value::Absent);
+                        stack[base + slot as usize] = value;
+                    }
+                    _ => break true,
+                },
+                Instr::LoadGlobal(idx) => match self.storage.globals.get(idx as usize) {
+                    Some(Value::Num(n)) => stack.push(Value::Num(*n)),
+                    _ => break true,
+                },
+                Instr::Binary(op) => {
+                    let len = stack.len();
+                    let (Value::Num(a), Value::Num(b)) = (&stack[len - 2], &stack[len - 1]) else { break true };
+                    let (a, b) = (*a, *b);
+                    use rapid_syntax::ast::BinaryOp as B;
+                    let res = match op {
+                        B::Add => Value::Num(a + b),
+                        B::Sub => Value::Num(a - b),
+                        B::Mul => Value::Num(a * b),
+                        B::Div if b != 0.0 => Value::Num(a / b),
+                        B::Mod if b != 0.0 && a.fract() == 0.0 && b.fract() == 0.0 => Value::Num(a % b),
+                        B::IntDiv if b != 0.0 && a.fract() == 0.0 && b.fract() == 0.0 => {
+                            Value::Num((f64::from(a) / f64::from(b)).trunc() as f32)
+                        }
+                        B::Lt => Value::Bool(a < b),
+                        B::Le => Value::Bool(a <= b),
+                        B::Gt => Value::Bool(a > b),
+                        B::Ge => Value::Bool(a >= b),
+                        B::Eq => Value::Bool(a == b),
+                        B::Ne => Value::Bool(a != b),
+                        _ => break true,
+                    };
+                    stack.pop();
+                    if let Some(top) = stack.last_mut() {
+                        *top = res;
+                    }
+                }
+                Instr::Jump(target) => {
+                    pc = target;
+                    continue;
+                }
+                Instr::JumpIfFalse(target) => match stack.last() {
+                    Some(Value::Bool(b)) => {
+                        let b = *b;
+                        stack.pop();
+                        pc = if b { pc + 1 } else { target };
+                        continue;
+                    }
+                    _ => break true,
+                },
+                Instr::ForCheck { var, exit } => {
+                    let slots = base + var as usize;
+                    let (Value::Num(v), Value::Num(to), Value::Num(step)) =
+                        (&stack[slots], &stack[slots + 1], &stack[slots + 2])
+                    else {
+                        break true;
+                    };
+                    let done = if *step >= 0.0 { v > to } else { v < to };
+                    pc = if done { exit } else { pc + 1 };
+                    continue;
+                }
+                Instr::ForNext { var, check } => {
+                    let slots = base + var as usize;
+                    let (Value::Num(v), Value::Num(step)) = (&stack[slots], &stack[slots + 2]) else { break true };
+                    stack[slots] = Value::Num(v + step);
+                    pc = check;
+                    continue;
+                }
+                _ => break true,
+            }
+            pc += 1;
+        };
+        self.frame_mut().pc = pc;
+        needs_step
     }
 
     fn frame(&self) -> &Frame {
@@ -263,6 +380,17 @@ impl Vm {
                 let Value::Ref(place) = self.pop() else { return Err(RapidError::fatal("no place to store")) };
                 self.storage.set(&place, value).map_err(|f| self.fault(f))?;
             }
+            Instr::LoadElem { global, slot, n } => {
+                let indices = self.pop_index_array(n)?;
+                let value = self.element(global, base + slot, slot, &indices[..n as usize])?.clone();
+                self.push(value);
+            }
+            Instr::StoreElem { global, slot, n } => {
+                let value = self.pop();
+                let indices = self.pop_index_array(n)?;
+                let place = self.element_place(global, base + slot, slot, &indices[..n as usize])?;
+                self.storage.set(&place, value).map_err(|f| self.fault(f))?;
+            }
             Instr::Field(field) => {
                 let Value::Record(record) = self.pop() else { return Err(self.error(Err::ArgValue, "not a record")) };
                 let value = record.fields.into_iter().nth(field as usize).unwrap_or(Value::Absent);
@@ -315,7 +443,16 @@ impl Vm {
             }
             Instr::Raise => {
                 let n = self.pop_num()?;
-                return Err(self.user_error(n));
+                let error = self.user_error(n);
+                // In an ERROR handler, RAISE hands the (new) error to the caller's
+                // handler (§1.12); elsewhere it is raised here.
+                if self.frame().active.is_some() {
+                    if let Some(active) = self.frame_mut().active.as_mut() {
+                        active.error = error.clone();
+                    }
+                    return self.re_raise();
+                }
+                return Err(error);
             }
             Instr::ReRaise => return self.re_raise(),
             Instr::Retry => return self.retry(),
@@ -361,6 +498,14 @@ impl Vm {
                 self.push(Value::Bool(present));
             }
             Instr::Placeholder => return Err(self.error(Err::ExecPlaceholder, "a placeholder cannot be executed")),
+            Instr::NameWithNumber => {
+                let number = self.pop_num()?;
+                let name = match self.pop() {
+                    Value::Str(s) => s,
+                    _ => return Err(self.error(Err::CallProc, "CallByVar needs a name")),
+                };
+                self.push(Value::Str(format!("{name}{}", number as i64).into_boxed_str()));
+            }
             Instr::FellOffEnd => return self.fell_off_end(),
         }
         self.frame_mut().pc = next;
@@ -373,6 +518,45 @@ impl Vm {
             *slot = self.pop_num()?;
         }
         Ok(indices)
+    }
+
+    fn pop_index_array(&mut self, n: u8) -> Result<[f64; 3], RapidError> {
+        let mut indices = [0.0; 3];
+        for slot in indices.iter_mut().take(n as usize).rev() {
+            *slot = self.pop_num()?;
+        }
+        Ok(indices)
+    }
+
+    /// The root place of an array named directly (a local slot through its reference).
+    fn array_root(&self, global: bool, stack_index: u32, slot: u32) -> Result<Place, RapidError> {
+        if global {
+            return Ok(Place { root: Root::Global(slot), path: Vec::new() });
+        }
+        match &self.storage.stack[stack_index as usize] {
+            Value::Ref(place) => Ok((**place).clone()),
+            Value::Absent => Err(self.error(Err::NotPresent, "an optional parameter was not passed")),
+            _ => Ok(Place { root: Root::Stack(stack_index), path: Vec::new() }),
+        }
+    }
+
+    fn element(&self, global: bool, stack_index: u32, slot: u32, indices: &[f64]) -> Result<&Value, RapidError> {
+        let array = if global {
+            self.storage.globals.get(slot as usize)
+        } else {
+            match &self.storage.stack[stack_index as usize] {
+                Value::Ref(place) => Some(self.storage.get(place).map_err(|f| self.fault(f))?),
+                value => Some(value),
+            }
+        };
+        let Some(Value::Array(array)) = array else { return Err(self.error(Err::ArgValue, "not an array")) };
+        let flat = storage::element_index(array.dims, indices).map_err(|f| self.fault(f))?;
+        Ok(&array.elems[flat as usize])
+    }
+
+    fn element_place(&self, global: bool, stack_index: u32, slot: u32, indices: &[f64]) -> Result<Place, RapidError> {
+        let root = self.array_root(global, stack_index, slot)?;
+        index_place(&self.storage, root, indices).map_err(|f| self.fault(f))
     }
 
     fn load_local(&self, index: u32) -> Result<Value, RapidError> {
@@ -413,6 +597,7 @@ impl Vm {
             wait: None,
             stop: false,
             errnos: &self.errnos,
+            pers_globals: &self.pers_globals,
             next_booked: &mut self.next_booked,
         };
         let res = crate::builtins::function(id)(&mut ctx, args)?;
