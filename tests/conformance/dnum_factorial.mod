@@ -10,11 +10,13 @@ MODULE dnum_factorial
 
     PROC main()
         VAR dnum f;
-        VAR dnum m := 1000000;
+        VAR dnum k := 1000;
         f := fact(15);
-        ! 1307674368000 = 1307674 * 10^6 + 368000
-        TPWrite "high=" \Dnum:=f DIV m;
-        TPWrite "low=" \Dnum:=f MOD m;
+        ! 1307674368000 in groups of three digits: 1307 674 368 000
+        TPWrite "g1=" \Dnum:=f DIV (k * k * k);
+        TPWrite "g2=" \Dnum:=(f DIV (k * k)) MOD k;
+        TPWrite "g3=" \Dnum:=(f DIV k) MOD k;
+        TPWrite "g4=" \Dnum:=f MOD k;
         TPWrite "ratio=" \Dnum:=fact(15) / fact(13);
     ENDPROC
 ENDMODULE

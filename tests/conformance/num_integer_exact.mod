@@ -18,6 +18,7 @@ MODULE num_integer_exact
         FOR i FROM 1 TO 1000 DO
             sum := sum + i;
         ENDFOR
-        TPWrite "sum=" \Num:=sum;
+        IF sum = 500500 TPWrite "sum exact";
+        TPWrite "sum mod 1000=" \Num:=sum MOD 1000;
     ENDPROC
 ENDMODULE

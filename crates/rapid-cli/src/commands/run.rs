@@ -29,7 +29,14 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     };
     let mut host = StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false };
     let status = loop {
-        let exit = loaded.vm.run(&mut host, SLICE);
+        // Defence in depth: an interpreter bug must not take the terminal down with a
+        // panic trace; it is reported as what it is.
+        let step = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| loaded.vm.run(&mut host, SLICE)));
+        let Ok(exit) = step else {
+            host.flush();
+            eprintln!("internal error: the interpreter failed; please report this program");
+            break ExitStatus::Error;
+        };
         if let Some(max) = args.max_steps {
             if loaded.vm.steps > max {
                 host.flush();

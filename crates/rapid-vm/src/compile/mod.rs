@@ -68,6 +68,22 @@ pub fn compile(
     builtin_text: &str,
 ) -> Result<Compiled, Vec<CompileError>> {
     let mut errors = Vec::new();
+    for data in &prog.datas {
+        if let Some(n) = too_many_elements(&data.dims[..data.rank as usize]) {
+            let span = match data.origin {
+                DeclOrigin::Module { module, item } => modules.get(module).and_then(|m| m.module.items.get(item)).map(item_span),
+                _ => None,
+            };
+            let file = match data.origin {
+                DeclOrigin::Module { module, .. } => modules.get(module).map_or(usize::MAX, |m| m.file),
+                _ => usize::MAX,
+            };
+            errors.push(CompileError { file, span: span.unwrap_or_default(), message: array_too_large(&data.display, n) });
+        }
+    }
+    if !errors.is_empty() {
+        return Err(errors);
+    }
     let global_defaults: Vec<Value> =
         prog.datas.iter().map(|d| default_value(prog, d.ty, &d.dims[..d.rank as usize])).collect();
     let init = compile_init(prog, modules, builtin_module, builtin_text, &mut errors);
@@ -127,6 +143,29 @@ fn compile_init(
     init.code.emit(Instr::Return);
     init.finish_locals();
     init.code
+}
+
+/// Arrays may hold at most this many elements: the controller's program memory is a
+/// few megabytes, and a bigger array would only exhaust the host's.
+pub const MAX_ARRAY_ELEMENTS: u64 = 1 << 22;
+
+/// The element count of an array with `dims` when it is over the limit.
+fn too_many_elements(dims: &[u32]) -> Option<u64> {
+    let n = dims.iter().fold(1u64, |acc, &d| acc.saturating_mul(u64::from(d.max(1))));
+    (n > MAX_ARRAY_ELEMENTS).then_some(n)
+}
+
+fn array_too_large(name: &str, n: u64) -> String {
+    format!("array `{name}` has {n} elements; at most {MAX_ARRAY_ELEMENTS} fit in program memory")
+}
+
+fn item_span(item: &Item) -> Span {
+    match item {
+        Item::Data(decl) => decl.span,
+        Item::Routine(routine) => routine.span,
+        Item::Type(def) => def.span,
+        Item::Placeholder(_, span) => *span,
+    }
 }
 
 /// The value data of type `ty` has before anything is assigned (§1.2.2): 0, "",
@@ -327,6 +366,9 @@ impl<'p> RoutineCompiler<'p> {
             *slot = self.const_dim(arena, dim)?;
         }
         let rank = decl.dims.len().min(3) as u8;
+        if let Some(n) = too_many_elements(&dims[..rank as usize]) {
+            return Err(self.error(decl.span, array_too_large(decl.name.span.text(self.text), n)));
+        }
         let local = self.new_local(ty, dims, rank, LocalKind::Data);
         self.locals.insert(decl.name.sym, local);
         if let Some(init) = decl.init {
