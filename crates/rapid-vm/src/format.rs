@@ -154,7 +154,24 @@ pub fn num_to_str(value: f64, dec: i32, exp: bool) -> Result<String, FormatError
     if let Some(text) = non_finite(f64::from(v)) {
         return Ok(text);
     }
+    if let Some(text) = integer_fixed(f64::from(v), dec, exp) {
+        return Ok(text);
+    }
     to_str(v.is_sign_negative(), &Digits::exact_f32(v), dec, exp)
+}
+
+/// The common case of an integer value in fixed notation, written without the exact
+/// digit machinery: the same text it would produce (`42` with 2 decimals: `42.00`).
+fn integer_fixed(value: f64, dec: usize, exp: bool) -> Option<String> {
+    if exp || value.fract() != 0.0 || value.abs() >= 1e15 || value == 0.0 && value.is_sign_negative() {
+        return None;
+    }
+    let mut text = format!("{}", value as i64);
+    if dec > 0 {
+        text.push('.');
+        text.extend(std::iter::repeat_n('0', dec));
+    }
+    Some(text)
 }
 
 /// `DnumToStr(Val Dec [\Exp])`: [`num_to_str`] for a `dnum` (f64), `dec` up to 15.

@@ -203,12 +203,13 @@ impl Vm {
             (frame.code.clone(), frame.base as usize, frame.pc)
         };
         let stack = &mut self.storage.stack;
+        let budget = *remaining;
+        let mut left = budget;
         let needs_step = loop {
-            if *remaining == 0 {
+            if left == 0 {
                 break false;
             }
-            *remaining -= 1;
-            self.steps += 1;
+            left -= 1;
             let Some(&instr) = code.instrs.get(pc as usize) else { break true };
             match instr {
                 Instr::Const(i) => match &code.consts[i as usize] {
@@ -294,6 +295,8 @@ impl Vm {
             }
             pc += 1;
         };
+        self.steps += budget - left;
+        *remaining = left;
         self.frame_mut().pc = pc;
         needs_step
     }
