@@ -40,6 +40,11 @@ pub(crate) struct RunArgs {
     #[arg(long)]
     pub(crate) realtime: bool,
 
+    /// Operator answers for pendant dialogs (TPReadNum, TPReadFK, UINumEntry, ...),
+    /// one per line, used in order; lines starting with `#` are comments.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) tp_input: Option<PathBuf>,
+
     /// Module files, program files (.pgf) or folders, loaded together as one task.
     #[arg(required = true, value_name = "PATH")]
     pub(crate) paths: Vec<PathBuf>,

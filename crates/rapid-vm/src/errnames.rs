@@ -32,4 +32,6 @@ errors! {
     ArgValue = "ERR_ARGVALERR",
     NumLimit = "ERR_NUM_LIMIT",
     IllegalDim = "ERR_ILLDIM",
+    TpNoClient = "ERR_TP_NO_CLIENT",
+    TpMaxTime = "ERR_TP_MAXTIME",
 }

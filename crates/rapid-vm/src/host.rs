@@ -7,16 +7,27 @@ pub trait Host {
     fn tp_write(&mut self, line: &str);
     /// TPErase.
     fn tp_erase(&mut self) {}
+    /// The operator's next answer to a pendant dialog (TPReadNum, TPReadFK, UI...),
+    /// or `None` when no operator answers.
+    fn tp_answer(&mut self, _prompt: &str) -> Option<String> {
+        None
+    }
 }
 
 /// A host that records pendant lines (for tests).
 #[derive(Debug, Default)]
 pub struct RecordingHost {
     pub lines: Vec<String>,
+    /// Answers handed out in order.
+    pub answers: std::collections::VecDeque<String>,
 }
 
 impl Host for RecordingHost {
     fn tp_write(&mut self, line: &str) {
         self.lines.push(line.to_string());
+    }
+
+    fn tp_answer(&mut self, _prompt: &str) -> Option<String> {
+        self.answers.pop_front()
     }
 }

@@ -27,7 +27,15 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         Ok(loaded) => loaded,
         Err(err) => return report_load_error(err, &inputs.modules),
     };
-    let mut host = StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false };
+    let answers = match &args.tp_input {
+        Some(path) => {
+            let text = std::fs::read_to_string(path)
+                .map_err(|e| anyhow::anyhow!("cannot read the pendant answers `{}`: {e}", path.display()))?;
+            text.lines().filter(|l| !l.starts_with('#')).map(str::to_string).collect()
+        }
+        None => std::collections::VecDeque::new(),
+    };
+    let mut host = StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers };
     let status = loop {
         // Defence in depth: an interpreter bug must not take the terminal down with a
         // panic trace; it is reported as what it is.
@@ -115,6 +123,7 @@ fn report_load_error(err: LoadError, files: &[SourceInput]) -> anyhow::Result<Ex
 struct StdoutHost<'a> {
     out: BufWriter<io::StdoutLock<'a>>,
     broken: bool,
+    answers: std::collections::VecDeque<String>,
 }
 
 impl StdoutHost<'_> {
@@ -131,5 +140,9 @@ impl Host for StdoutHost<'_> {
         if !self.broken && writeln!(self.out, "{line}").is_err() {
             self.broken = true;
         }
+    }
+
+    fn tp_answer(&mut self, _prompt: &str) -> Option<String> {
+        self.answers.pop_front()
     }
 }

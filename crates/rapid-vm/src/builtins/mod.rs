@@ -3,6 +3,7 @@
 //! built-in's name to the Rust function that runs it. A built-in missing here is
 //! refused by the compiler with "not supported by `rapid run` yet".
 
+mod dialogs;
 mod math;
 mod pendant;
 mod strings;
@@ -39,6 +40,10 @@ pub struct Ctx<'a> {
     pub errnos: &'a rustc_hash::FxHashMap<&'static str, i32>,
     /// Which globals are persistents.
     pub pers_globals: &'a [bool],
+    /// RETRYs left in the calling routine's error handler (RemainingRetries).
+    pub retries_left: u32,
+    /// Set by ResetRetryCount.
+    pub reset_retries: bool,
     /// The next free booked error number (BookErrNo).
     pub next_booked: &'a mut i32,
 }
@@ -112,6 +117,16 @@ pub static TABLE: &[(&str, BuiltinFn)] = &[
     ("TPWrite", pendant::tp_write),
     ("TPErase", pendant::tp_erase),
     ("ErrWrite", pendant::err_write),
+    ("TPReadNum", dialogs::tp_read_num),
+    ("TPReadDnum", dialogs::tp_read_num),
+    ("TPReadFK", dialogs::tp_read_fk),
+    ("UINumEntry", dialogs::ui_num_entry),
+    ("UIDnumEntry", dialogs::ui_dnum_entry),
+    ("UIAlphaEntry", dialogs::ui_alpha_entry),
+    ("UIClientExist", dialogs::ui_client_exist),
+    ("RemainingRetries", system::remaining_retries),
+    ("ResetRetryCount", system::reset_retry_count),
+    ("SkipWarn", system::skip_warn),
     ("WaitTime", system::wait_time),
     ("Stop", system::stop),
     ("Break", system::break_),

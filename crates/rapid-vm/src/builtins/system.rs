@@ -67,3 +67,20 @@ pub(super) fn is_pers(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>
 pub(super) fn is_var(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
     Ok(Some(Value::Bool(!refers_to_pers(ctx, &args[0]))))
 }
+
+/// `RemainingRetries()`: how many more RETRYs the current error may take.
+pub(super) fn remaining_retries(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
+    Ok(Some(Value::Num(ctx.retries_left as f32)))
+}
+
+/// `ResetRetryCount`: the retry count of the current error starts again.
+pub(super) fn reset_retry_count(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
+    ctx.reset_retries = true;
+    Ok(None)
+}
+
+/// `SkipWarn`: the handled error leaves no warning in the event log. The interpreter
+/// keeps no event log yet (issue 5), so there is nothing to drop.
+pub(super) fn skip_warn(_ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
+    Ok(None)
+}

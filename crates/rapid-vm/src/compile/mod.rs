@@ -71,14 +71,20 @@ pub fn compile(
     for data in &prog.datas {
         if let Some(n) = too_many_elements(&data.dims[..data.rank as usize]) {
             let span = match data.origin {
-                DeclOrigin::Module { module, item } => modules.get(module).and_then(|m| m.module.items.get(item)).map(item_span),
+                DeclOrigin::Module { module, item } => {
+                    modules.get(module).and_then(|m| m.module.items.get(item)).map(item_span)
+                }
                 _ => None,
             };
             let file = match data.origin {
                 DeclOrigin::Module { module, .. } => modules.get(module).map_or(usize::MAX, |m| m.file),
                 _ => usize::MAX,
             };
-            errors.push(CompileError { file, span: span.unwrap_or_default(), message: array_too_large(&data.display, n) });
+            errors.push(CompileError {
+                file,
+                span: span.unwrap_or_default(),
+                message: array_too_large(&data.display, n),
+            });
         }
     }
     if !errors.is_empty() {

@@ -265,7 +265,12 @@ impl Vm {
     }
 
     fn unhandled(&self, error: RapidError, frame: &Frame) -> Exit {
-        let span = frame.code.stmt_at(frame.pc).map_or(frame.code.span, |s| s.span);
+        // The failing statement; at the end of an ERROR handler, the one that raised.
+        let span = frame
+            .code
+            .stmt_at(frame.pc)
+            .or_else(|| frame.active.as_ref().map(|a| a.stmt))
+            .map_or(frame.code.span, |s| s.span);
         Exit::Unhandled(Unhandled { error, routine: frame.code.name.clone(), file: frame.code.file, span })
     }
 

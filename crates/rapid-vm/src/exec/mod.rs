@@ -601,9 +601,17 @@ impl Vm {
             stop: false,
             errnos: &self.errnos,
             pers_globals: &self.pers_globals,
+            retries_left: MAX_RETRIES.saturating_sub(self.frames.last().map_or(0, |f| f.retries)),
+            reset_retries: false,
             next_booked: &mut self.next_booked,
         };
         let res = crate::builtins::function(id)(&mut ctx, args)?;
-        Ok((res, ctx.wait, ctx.stop))
+        let (wait, stop, reset) = (ctx.wait, ctx.stop, ctx.reset_retries);
+        if reset {
+            if let Some(frame) = self.frames.last_mut() {
+                frame.retries = 0;
+            }
+        }
+        Ok((res, wait, stop))
     }
 }

@@ -1,0 +1,90 @@
+//! The interpreter as the controller drives it: resumable runs with a step budget,
+//! waits that hand control back, two programs interleaved one step at a time, and
+//! pendant answers from the host.
+
+use rapid_sema::SourceInput;
+use rapid_vm::{load, Exit, RecordingHost, Vm};
+
+fn vm(src: &str) -> Vm {
+    match load(&[SourceInput::from_text("t.mod", src)], "main") {
+        Ok(loaded) => loaded.vm,
+        Err(err) => panic!("load failed: {err:?}"),
+    }
+}
+
+const COUNTER: &str =
+    "MODULE t\nPROC main()\n  FOR i FROM 1 TO 3 DO\n    TPWrite \"line \" \\Num:=i;\n  ENDFOR\nENDPROC\nENDMODULE";
+
+#[test]
+fn a_run_can_stop_after_any_instruction_and_resume() {
+    let mut machine = vm(COUNTER);
+    let mut host = RecordingHost::default();
+    let mut n_budget_exits = 0;
+    loop {
+        match machine.run(&mut host, 1) {
+            Exit::Budget => n_budget_exits += 1,
+            Exit::Done => break,
+            other => panic!("unexpected exit {other:?}"),
+        }
+        assert!(n_budget_exits < 10_000, "the program must end");
+    }
+    assert_eq!(host.lines, vec!["line 1", "line 2", "line 3"]);
+    assert!(n_budget_exits > 3, "one-step budgets must return to the caller repeatedly");
+}
+
+#[test]
+fn two_programs_interleave_step_by_step() {
+    let (mut a, mut b) = (vm(COUNTER), vm(&COUNTER.replace("line ", "other ")));
+    let mut host = RecordingHost::default();
+    let (mut a_done, mut b_done) = (false, false);
+    while !(a_done && b_done) {
+        if !a_done {
+            a_done = a.run(&mut host, 1) == Exit::Done;
+        }
+        if !b_done {
+            b_done = b.run(&mut host, 1) == Exit::Done;
+        }
+    }
+    // Identical programs advanced one instruction each in turn: their writes alternate.
+    let expected: Vec<String> = (1..=3).flat_map(|i| [format!("line {i}"), format!("other {i}")]).collect();
+    assert_eq!(host.lines, expected);
+}
+
+#[test]
+fn waits_hand_control_back_with_the_time_to_wait() {
+    let mut machine =
+        vm("MODULE t\nPROC main()\n  TPWrite \"a\";\n  WaitTime 1.5;\n  TPWrite \"b\";\nENDPROC\nENDMODULE");
+    let mut host = RecordingHost::default();
+    assert_eq!(machine.run(&mut host, 1_000), Exit::Wait(1.5));
+    assert_eq!(host.lines, vec!["a"]);
+    machine.time += 1.5;
+    assert_eq!(machine.run(&mut host, 1_000), Exit::Done);
+    assert_eq!(host.lines, vec!["a", "b"]);
+}
+
+#[test]
+fn pendant_dialogs_take_the_hosts_answers() {
+    let src = "MODULE t\nPROC main()\n  VAR num n;\n  TPReadNum n, \"How many?\";\n  TPWrite \"n=\" \\Num:=n * 2;\nENDPROC\nENDMODULE";
+    let mut machine = vm(src);
+    let mut host = RecordingHost::default();
+    host.answers.push_back("21".into());
+    assert_eq!(machine.run(&mut host, 1_000), Exit::Done);
+    assert_eq!(host.lines, vec!["n=42"]);
+
+    let mut unanswered = vm(src);
+    let mut host = RecordingHost::default();
+    match unanswered.run(&mut host, 1_000) {
+        Exit::Unhandled(u) => assert_eq!(u.error.name, "ERR_TP_NO_CLIENT"),
+        other => panic!("expected ERR_TP_NO_CLIENT, got {other:?}"),
+    }
+}
+
+#[test]
+fn runaway_recursion_is_a_clean_stop() {
+    let mut machine = vm("MODULE t\nPROC r()\n  r;\nENDPROC\nPROC main()\n  r;\nENDPROC\nENDMODULE");
+    let mut host = RecordingHost::default();
+    match machine.run(&mut host, u64::MAX) {
+        Exit::Unhandled(u) => assert!(u.error.message.contains("nested routine calls"), "{}", u.error.message),
+        other => panic!("expected a stop, got {other:?}"),
+    }
+}
