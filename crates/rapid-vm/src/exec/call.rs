@@ -27,21 +27,36 @@ impl Vm {
     ) -> Result<Option<Exit>, RapidError> {
         let site = &code.sites[site as usize];
         let at = self.storage.stack.len() - site.n_pushed as usize;
-        let mut pushed = self.storage.stack.split_off(at).into_iter();
+        // The common call passes every parameter: the caller pushed them in order,
+        // so the callee's frame starts right there, nothing copied.
+        if let Callee::Routine(idx) = site.callee {
+            if site.n_pushed as usize == site.args.len() {
+                let Some(callee) = self.routines.get(idx as usize).cloned().flatten() else {
+                    return Err(RapidError::fatal("call to a routine that was not compiled"));
+                };
+                return self.enter_in_place(callee, at);
+            }
+        }
+        let mut args = std::mem::take(&mut self.arg_scratch);
+        args.clear();
         let base = self.frame().base;
-        let mut args = Vec::with_capacity(site.args.len());
-        for spec in &site.args {
-            let arg = match spec {
-                ArgSpec::Value | ArgSpec::Place => pushed.next().unwrap_or(Value::Absent),
-                ArgSpec::Absent => Value::Absent,
-                ArgSpec::Switch => Value::SwitchOn,
-                ArgSpec::Conditional { slot, by_ref } => self.forward(base + slot, *by_ref)?,
-            };
-            args.push(arg);
+        {
+            let mut pushed = self.storage.stack.drain(at..).collect::<Vec<_>>().into_iter();
+            for spec in &site.args {
+                let arg = match spec {
+                    ArgSpec::Value | ArgSpec::Place => pushed.next().unwrap_or(Value::Absent),
+                    ArgSpec::Absent => Value::Absent,
+                    ArgSpec::Switch => Value::SwitchOn,
+                    ArgSpec::Conditional { slot, by_ref } => self.forward(base + slot, *by_ref)?,
+                };
+                args.push(arg);
+            }
         }
         match site.callee {
             Callee::Builtin(id) => {
-                let (result, wait, stop) = self.run_builtin(id, &args, host)?;
+                let outcome = self.run_builtin(id, &args, host);
+                self.arg_scratch = args;
+                let (result, wait, stop) = outcome?;
                 if let Some(value) = result {
                     self.push(value);
                 }
@@ -59,6 +74,28 @@ impl Vm {
             }
             Callee::Late => Err(RapidError::fatal("late call through a plain call site")),
         }
+    }
+
+    /// Enters `callee` whose arguments are the top values of the stack from `at`.
+    fn enter_in_place(&mut self, callee: Rc<Code>, at: usize) -> Result<Option<Exit>, RapidError> {
+        if self.frames.len() >= MAX_CALL_DEPTH {
+            return Err(RapidError::fatal(format!(
+                "more than {MAX_CALL_DEPTH} nested routine calls (runaway recursion?)"
+            )));
+        }
+        for (offset, like) in callee.param_likes.iter().enumerate() {
+            if let Some(like) = like {
+                let slot = &mut self.storage.stack[at + offset];
+                if std::mem::discriminant(slot) != std::mem::discriminant(like) {
+                    let value = std::mem::replace(slot, Value::Absent);
+                    let coerced = super::coerce_like(like, value).map_err(|f| self.fault(f))?;
+                    self.storage.stack[at + offset] = coerced;
+                }
+            }
+        }
+        self.storage.stack.extend(callee.local_defaults.iter().cloned());
+        self.frames.push(Frame { code: callee, pc: 0, base: at as u32, active: None, retries: 0, last_retry_stmt: None, undoing: false });
+        Ok(None)
     }
 
     fn enter(&mut self, callee: Rc<Code>, mut args: Vec<Value>) -> Result<Option<Exit>, RapidError> {

@@ -84,6 +84,8 @@ pub struct Vm {
     errno_global: Option<u32>,
     /// Which globals are persistents (IsPers, IsVar).
     pers_globals: Vec<bool>,
+    /// Reused for the arguments of calls that need rearranging.
+    arg_scratch: Vec<Value>,
     next_booked: i32,
     exiting: bool,
     /// Virtual time in seconds.
@@ -111,6 +113,7 @@ impl Vm {
             errnos,
             errno_global,
             pers_globals: Vec::new(),
+            arg_scratch: Vec::new(),
             next_booked: FIRST_BOOKED_ERRNO,
             exiting: false,
             time: 0.0,
