@@ -50,6 +50,9 @@ pub enum Instr {
     Index(u8),
     Unary(UnaryOp),
     Binary(BinaryOp),
+    /// A binary operator whose operands may come straight from a local slot or the
+    /// constant pool instead of the stack (the right one popped first).
+    BinOp { op: BinaryOp, lhs: Operand, rhs: Operand },
     /// Pop `n` values, push a record of type `ty`.
     MakeRecord(TypeId, u16),
     /// Pop `n` values (elements or rows), push an array.
@@ -96,6 +99,14 @@ pub enum Instr {
     NameWithNumber,
     /// The routine ran off its end without RETURN (in a FUNC: ERR_FNCNORET).
     FellOffEnd,
+}
+
+/// Where an operand of `BinOp` comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Operand {
+    Stack,
+    Local(u32),
+    Const(u32),
 }
 
 /// How a call passes each parameter, in parameter order.

@@ -6,7 +6,7 @@ use rapid_syntax::ast::{Arena, ExprId, ExprKind};
 use rapid_syntax::literal::{num_value, string_value};
 
 use super::{CompileError, Resolved, RoutineCompiler};
-use crate::ir::Instr;
+use crate::ir::{Instr, Operand};
 use crate::value::Value;
 
 /// The type (and known dimension sizes) the context expects.
@@ -62,9 +62,18 @@ impl RoutineCompiler<'_> {
                 let lhs_ty = self.static_type(arena, lhs);
                 let rhs_ty = self.static_type(arena, rhs);
                 let num_ctx = if self.expects_dnum(expect) { expect } else { None };
-                self.expr(arena, lhs, rhs_ty.or(num_ctx))?;
-                self.expr(arena, rhs, lhs_ty.or(num_ctx))?;
-                self.code.emit(Instr::Binary(op));
+                let rhs_leaf = self.leaf_operand(arena, rhs, lhs_ty.or(num_ctx));
+                // A leaf on the left is read when the operator runs, so only when the
+                // right side cannot change it (it is a leaf too).
+                let lhs_leaf = rhs_leaf.and(self.leaf_operand(arena, lhs, rhs_ty.or(num_ctx)));
+                if lhs_leaf.is_none() {
+                    self.expr(arena, lhs, rhs_ty.or(num_ctx))?;
+                }
+                if rhs_leaf.is_none() {
+                    self.expr(arena, rhs, lhs_ty.or(num_ctx))?;
+                }
+                let (lhs, rhs) = (lhs_leaf.unwrap_or(Operand::Stack), rhs_leaf.unwrap_or(Operand::Stack));
+                self.code.emit(Instr::BinOp { op, lhs, rhs });
             }
             ExprKind::Paren(inner) => self.expr(arena, inner, expect)?,
             ExprKind::Aggregate(items) => self.aggregate(arena, items, expr.span, expect)?,
@@ -73,6 +82,23 @@ impl RoutineCompiler<'_> {
             }
         }
         Ok(())
+    }
+
+    /// A local or a literal that `BinOp` can read in place.
+    fn leaf_operand(&mut self, arena: &Arena, id: ExprId, expect: Expected) -> Option<Operand> {
+        let expr = *arena.expr(id);
+        match expr.kind {
+            ExprKind::Name(sym) => match self.resolve(sym)? {
+                Resolved::Local(local) => Some(Operand::Local(local.slot)),
+                _ => None,
+            },
+            ExprKind::Num => {
+                let value = num_value(expr.span.text(self.text))?;
+                let constant = if self.expects_dnum(expect) { Value::Dnum(value) } else { Value::Num(value as f32) };
+                Some(Operand::Const(self.code.constant(constant)))
+            }
+            _ => None,
+        }
     }
 
     fn expects_dnum(&self, expect: Expected) -> bool {

@@ -240,28 +240,38 @@ impl Vm {
                     let len = stack.len();
                     let (Value::Num(a), Value::Num(b)) = (&stack[len - 2], &stack[len - 1]) else { break true };
                     let (a, b) = (*a, *b);
-                    use rapid_syntax::ast::BinaryOp as B;
-                    let res = match op {
-                        B::Add => Value::Num(a + b),
-                        B::Sub => Value::Num(a - b),
-                        B::Mul => Value::Num(a * b),
-                        B::Div if b != 0.0 => Value::Num(a / b),
-                        B::Mod if b != 0.0 && a.fract() == 0.0 && b.fract() == 0.0 => Value::Num(a % b),
-                        B::IntDiv if b != 0.0 && a.fract() == 0.0 && b.fract() == 0.0 => {
-                            Value::Num((f64::from(a) / f64::from(b)).trunc() as f32)
-                        }
-                        B::Lt => Value::Bool(a < b),
-                        B::Le => Value::Bool(a <= b),
-                        B::Gt => Value::Bool(a > b),
-                        B::Ge => Value::Bool(a >= b),
-                        B::Eq => Value::Bool(a == b),
-                        B::Ne => Value::Bool(a != b),
-                        _ => break true,
-                    };
+                    let Some(res) = fast_num_op(op, a, b) else { break true };
                     stack.pop();
                     if let Some(top) = stack.last_mut() {
                         *top = res;
                     }
+                }
+                Instr::BinOp { op, lhs, rhs } => {
+                    let num_at = |operand: crate::ir::Operand, stack: &Vec<Value>, depth: usize| match operand {
+                        crate::ir::Operand::Stack => match stack.get(stack.len().wrapping_sub(depth + 1)) {
+                            Some(Value::Num(n)) => Some(*n),
+                            _ => None,
+                        },
+                        crate::ir::Operand::Local(slot) => match stack[base + slot as usize] {
+                            Value::Num(n) => Some(n),
+                            _ => None,
+                        },
+                        crate::ir::Operand::Const(i) => match code.consts[i as usize] {
+                            Value::Num(n) => Some(n),
+                            _ => None,
+                        },
+                    };
+                    let rhs_on_stack = rhs == crate::ir::Operand::Stack;
+                    let lhs_depth = usize::from(rhs_on_stack);
+                    let (Some(a), Some(b)) = (num_at(lhs, stack, lhs_depth), num_at(rhs, stack, 0)) else { break true };
+                    let Some(res) = fast_num_op(op, a, b) else { break true };
+                    if rhs_on_stack {
+                        stack.pop();
+                    }
+                    if lhs == crate::ir::Operand::Stack {
+                        stack.pop();
+                    }
+                    stack.push(res);
                 }
                 Instr::Jump(target) => {
                     pc = target;
@@ -420,6 +430,12 @@ impl Vm {
                 let res = ops::binary(op, lhs, rhs, self.types).map_err(|f| self.fault(f))?;
                 self.push(res);
             }
+            Instr::BinOp { op, lhs, rhs } => {
+                let rhs = self.operand(&code, base, rhs)?;
+                let lhs = self.operand(&code, base, lhs)?;
+                let res = ops::binary(op, lhs, rhs, self.types).map_err(|f| self.fault(f))?;
+                self.push(res);
+            }
             Instr::MakeRecord(ty, n) => {
                 let at = self.storage.stack.len() - n as usize;
                 let fields = self.storage.stack.split_off(at);
@@ -526,6 +542,14 @@ impl Vm {
         Ok(indices)
     }
 
+    fn operand(&mut self, code: &Code, base: u32, operand: crate::ir::Operand) -> Result<Value, RapidError> {
+        match operand {
+            crate::ir::Operand::Stack => Ok(self.pop()),
+            crate::ir::Operand::Local(slot) => self.load_local(base + slot),
+            crate::ir::Operand::Const(i) => Ok(code.consts[i as usize].clone()),
+        }
+    }
+
     fn pop_index_array(&mut self, n: u8) -> Result<[f64; 3], RapidError> {
         let mut indices = [0.0; 3];
         for slot in indices.iter_mut().take(n as usize).rev() {
@@ -575,9 +599,15 @@ impl Vm {
 
     fn store_local(&mut self, index: u32, value: Value) -> Result<(), RapidError> {
         let slot = &mut self.storage.stack[index as usize];
-        if let Value::Ref(place) = slot {
-            let place = (**place).clone();
-            return self.storage.set(&place, value).map_err(|f| self.fault(f));
+        if let Value::Ref(_) = slot {
+            // Take the reference out while storing through it (no copy of the place).
+            let reference = std::mem::replace(slot, Value::Absent);
+            let res = match &reference {
+                Value::Ref(place) => self.storage.set(place, value),
+                _ => Ok(()),
+            };
+            self.storage.stack[index as usize] = reference;
+            return res.map_err(|f| self.fault(f));
         }
         match coerce_like(slot, value) {
             Ok(value) => {
@@ -617,4 +647,27 @@ impl Vm {
         }
         Ok((res, wait, stop))
     }
+}
+
+/// num arithmetic and comparisons the fast loop does itself; `None` sends the
+/// instruction to the general path (errors, non-integer DIV/MOD, AND/OR).
+fn fast_num_op(op: rapid_syntax::ast::BinaryOp, a: f32, b: f32) -> Option<Value> {
+    use rapid_syntax::ast::BinaryOp as B;
+    Some(match op {
+        B::Add => Value::Num(a + b),
+        B::Sub => Value::Num(a - b),
+        B::Mul => Value::Num(a * b),
+        B::Div if b != 0.0 => Value::Num(a / b),
+        B::Mod if b != 0.0 && a.fract() == 0.0 && b.fract() == 0.0 => Value::Num(a % b),
+        B::IntDiv if b != 0.0 && a.fract() == 0.0 && b.fract() == 0.0 => {
+            Value::Num((f64::from(a) / f64::from(b)).trunc() as f32)
+        }
+        B::Lt => Value::Bool(a < b),
+        B::Le => Value::Bool(a <= b),
+        B::Gt => Value::Bool(a > b),
+        B::Ge => Value::Bool(a >= b),
+        B::Eq => Value::Bool(a == b),
+        B::Ne => Value::Bool(a != b),
+        _ => return None,
+    })
 }
