@@ -225,13 +225,20 @@ impl Vm {
                     Value::Bool(b) => stack.push(Value::Bool(b)),
                     _ => break true,
                 },
-                Instr::StoreLocal(slot) => match (stack.last(), &stack[base + slot as usize]) {
-                    (Some(Value::Num(_)), Value::Num(_)) | (Some(Value::Bool(_)), Value::Bool(_)) => {
-                        let value = stack.pop().unwrap_or(Value::Absent);
-                        stack[base + slot as usize] = value;
+                Instr::StoreLocal(slot) => {
+                    let at = base + slot as usize;
+                    match (stack.last(), &stack[at]) {
+                        (Some(&Value::Num(n)), Value::Num(_)) => {
+                            drop_plain(stack.pop());
+                            stack[at] = Value::Num(n);
+                        }
+                        (Some(&Value::Bool(b)), Value::Bool(_)) => {
+                            drop_plain(stack.pop());
+                            stack[at] = Value::Bool(b);
+                        }
+                        _ => break true,
                     }
-                    _ => break true,
-                },
+                }
                 Instr::LoadGlobal(idx) => match self.storage.globals.get(idx as usize) {
                     Some(Value::Num(n)) => stack.push(Value::Num(*n)),
                     _ => break true,
@@ -241,10 +248,9 @@ impl Vm {
                     let (Value::Num(a), Value::Num(b)) = (&stack[len - 2], &stack[len - 1]) else { break true };
                     let (a, b) = (*a, *b);
                     let Some(res) = fast_num_op(op, a, b) else { break true };
-                    stack.pop();
-                    if let Some(top) = stack.last_mut() {
-                        *top = res;
-                    }
+                    drop_plain(stack.pop());
+                    drop_plain(stack.pop());
+                    stack.push(res);
                 }
                 Instr::BinOp { op, lhs, rhs } => {
                     let num_at = |operand: crate::ir::Operand, stack: &Vec<Value>, depth: usize| match operand {
@@ -266,10 +272,10 @@ impl Vm {
                     let (Some(a), Some(b)) = (num_at(lhs, stack, lhs_depth), num_at(rhs, stack, 0)) else { break true };
                     let Some(res) = fast_num_op(op, a, b) else { break true };
                     if rhs_on_stack {
-                        stack.pop();
+                        drop_plain(stack.pop());
                     }
                     if lhs == crate::ir::Operand::Stack {
-                        stack.pop();
+                        drop_plain(stack.pop());
                     }
                     stack.push(res);
                 }
@@ -280,7 +286,7 @@ impl Vm {
                 Instr::JumpIfFalse(target) => match stack.last() {
                     Some(Value::Bool(b)) => {
                         let b = *b;
-                        stack.pop();
+                        drop_plain(stack.pop());
                         pc = if b { pc + 1 } else { target };
                         continue;
                     }
@@ -651,6 +657,7 @@ impl Vm {
 
 /// num arithmetic and comparisons the fast loop does itself; `None` sends the
 /// instruction to the general path (errors, non-integer DIV/MOD, AND/OR).
+#[inline(always)]
 fn fast_num_op(op: rapid_syntax::ast::BinaryOp, a: f32, b: f32) -> Option<Value> {
     use rapid_syntax::ast::BinaryOp as B;
     Some(match op {
@@ -658,9 +665,16 @@ fn fast_num_op(op: rapid_syntax::ast::BinaryOp, a: f32, b: f32) -> Option<Value>
         B::Sub => Value::Num(a - b),
         B::Mul => Value::Num(a * b),
         B::Div if b != 0.0 => Value::Num(a / b),
-        B::Mod if b != 0.0 && a.fract() == 0.0 && b.fract() == 0.0 => Value::Num(a % b),
-        B::IntDiv if b != 0.0 && a.fract() == 0.0 && b.fract() == 0.0 => {
-            Value::Num((f64::from(a) / f64::from(b)).trunc() as f32)
+        B::Mod | B::IntDiv => {
+            // Integer operands (exactly representable as i64) take integer arithmetic:
+            // MOD keeps the dividend's sign and DIV truncates, as RAPID's do.
+            // num holds integers exactly only up to 2^24, so i32 covers every case where
+            // the operands are integers at all; larger magnitudes take the general path.
+            let (x, y) = (a as i32, b as i32);
+            if y == 0 || x as f32 != a || y as f32 != b || x == i32::MIN {
+                return None;
+            }
+            Value::Num(if op == B::Mod { (x % y) as f32 } else { (x / y) as f32 })
         }
         B::Lt => Value::Bool(a < b),
         B::Le => Value::Bool(a <= b),
@@ -670,4 +684,11 @@ fn fast_num_op(op: rapid_syntax::ast::BinaryOp, a: f32, b: f32) -> Option<Value>
         B::Ne => Value::Bool(a != b),
         _ => return None,
     })
+}
+
+/// Discards a value the fast loop knows to be a num or bool (nothing to free), without
+/// running the general drop code.
+#[inline(always)]
+fn drop_plain(value: Option<Value>) {
+    std::mem::forget(value);
 }
