@@ -40,6 +40,11 @@ pub(crate) struct RunArgs {
     #[arg(long)]
     pub(crate) realtime: bool,
 
+    /// When the program ends, write the persistents' values back into their module
+    /// files, as the controller's Save Module does (atomically; other bytes kept).
+    #[arg(long)]
+    pub(crate) save_pers: bool,
+
     /// Operator answers for pendant dialogs (TPReadNum, TPReadFK, UINumEntry, ...),
     /// one per line, used in order; lines starting with `#` are comments.
     #[arg(long, value_name = "FILE")]

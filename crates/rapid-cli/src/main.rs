@@ -5,6 +5,7 @@ mod args;
 mod commands;
 mod inputs;
 mod render;
+mod save;
 
 use std::io::{self, Write};
 use std::process::ExitCode;

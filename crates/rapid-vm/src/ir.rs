@@ -52,7 +52,11 @@ pub enum Instr {
     Binary(BinaryOp),
     /// A binary operator whose operands may come straight from a local slot or the
     /// constant pool instead of the stack (the right one popped first).
-    BinOp { op: BinaryOp, lhs: Operand, rhs: Operand },
+    BinOp {
+        op: BinaryOp,
+        lhs: Operand,
+        rhs: Operand,
+    },
     /// Pop `n` values, push a record of type `ty`.
     MakeRecord(TypeId, u16),
     /// Pop `n` values (elements or rows), push an array.

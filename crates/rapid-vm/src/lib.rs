@@ -12,6 +12,7 @@ pub mod format;
 pub mod host;
 pub mod ir;
 pub mod ops;
+pub mod persist;
 pub mod value;
 
 use rapid_sema::symbols::Def;
@@ -40,6 +41,8 @@ pub struct Loaded {
     pub vm: Vm,
     /// Warnings found while checking.
     pub warnings: Vec<Diagnostic>,
+    /// Where each module-level persistent's value is written (for Save Module).
+    pub persistents: Vec<persist::PersSite>,
 }
 
 /// Checks, compiles and initialises the task made of `files`, ready to run `entry`.
@@ -108,6 +111,25 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
         return Err(LoadError::NoEntry(entry.to_string()));
     }
     vm.steps = 0;
+    let persistents = pers_sites(&prog, &modules);
     let warnings = analysis.diagnostics;
-    Ok(Loaded { vm, warnings })
+    Ok(Loaded { vm, warnings, persistents })
+}
+
+/// The module-level persistents and where their values stand in their files.
+fn pers_sites(prog: &Program, modules: &[compile::ModuleSource<'_>]) -> Vec<persist::PersSite> {
+    use rapid_sema::symbols::{DataKind, DeclOrigin};
+    let mut sites = Vec::new();
+    for (global, data) in prog.datas.iter().enumerate() {
+        let DeclOrigin::Module { module, item } = data.origin else { continue };
+        if data.kind != DataKind::Pers {
+            continue;
+        }
+        let Some(source) = modules.get(module) else { continue };
+        let Some(rapid_syntax::ast::Item::Data(decl)) = source.module.items.get(item) else { continue };
+        let init = decl.init.map(|e| source.module.arena.expr(e).span);
+        let semi = decl.span.text(source.text).rfind(';').map_or(decl.span.end, |i| decl.span.start + i as u32);
+        sites.push(persist::PersSite { global: global as u32, file: source.file, init, insert_at: semi });
+    }
+    sites
 }

@@ -80,7 +80,25 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         }
     };
     host.flush();
+    if args.save_pers {
+        save_persistents(&loaded, &inputs.modules)?;
+    }
     Ok(status)
+}
+
+/// Writes each changed persistent's value into its module file (Save Module).
+fn save_persistents(loaded: &rapid_vm::Loaded, files: &[SourceInput]) -> anyhow::Result<()> {
+    for (file, input) in files.iter().enumerate() {
+        let sites: Vec<_> = loaded
+            .persistents
+            .iter()
+            .filter(|s| s.file == file)
+            .filter_map(|s| loaded.vm.global(s.global).map(|v| (s, v)))
+            .collect();
+        let Some(new_text) = rapid_vm::persist::rewrite(&input.text, &sites) else { continue };
+        crate::save::write_module(std::path::Path::new(&input.path), &input.text, &new_text)?;
+    }
+    Ok(())
 }
 
 fn location(files: &[SourceInput], file: usize, offset: u32) -> (String, u32, u32) {

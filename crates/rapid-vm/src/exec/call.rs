@@ -94,7 +94,15 @@ impl Vm {
             }
         }
         self.storage.stack.extend(callee.local_defaults.iter().cloned());
-        self.frames.push(Frame { code: callee, pc: 0, base: at as u32, active: None, retries: 0, last_retry_stmt: None, undoing: false });
+        self.frames.push(Frame {
+            code: callee,
+            pc: 0,
+            base: at as u32,
+            active: None,
+            retries: 0,
+            last_retry_stmt: None,
+            undoing: false,
+        });
         Ok(None)
     }
 
