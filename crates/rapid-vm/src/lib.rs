@@ -43,6 +43,8 @@ pub struct Loaded {
     pub warnings: Vec<Diagnostic>,
     /// Where each module-level persistent's value is written (for Save Module).
     pub persistents: Vec<persist::PersSite>,
+    /// The entry routine (for [`Vm::pp_to_main`]).
+    pub entry: u32,
 }
 
 /// Checks, compiles and initialises the task made of `files`, ready to run `entry`.
@@ -84,10 +86,18 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
         _ => None,
     };
     let errno_global = global_named("ERRNO");
-    let mut vm =
-        Vm::new(compiled.routines, procs_by_name, compiled.global_defaults, types, FxHashMap::default(), errno_global);
+    let mut vm = Vm::new(
+        compiled.routines,
+        procs_by_name,
+        compiled.global_defaults.clone(),
+        types,
+        FxHashMap::default(),
+        errno_global,
+    );
     let mut host = RecordingHost::default();
-    vm.start(std::rc::Rc::new(compiled.init));
+    let init = std::rc::Rc::new(compiled.init);
+    vm.set_init(init.clone(), compiled.global_defaults.clone());
+    vm.start(init);
     if let Exit::Unhandled(unhandled) = vm.run(&mut host, u64::MAX) {
         return Err(LoadError::Init(unhandled));
     }
@@ -110,10 +120,14 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
     if !started {
         return Err(LoadError::NoEntry(entry.to_string()));
     }
+    let entry_routine = match entry_idx {
+        Some(Def::Routine(idx)) => idx,
+        _ => 0,
+    };
     vm.steps = 0;
     let persistents = pers_sites(&prog, &modules);
     let warnings = analysis.diagnostics;
-    Ok(Loaded { vm, warnings, persistents })
+    Ok(Loaded { vm, warnings, persistents, entry: entry_routine })
 }
 
 /// The module-level persistents and where their values stand in their files.

@@ -88,3 +88,54 @@ fn runaway_recursion_is_a_clean_stop() {
         other => panic!("expected a stop, got {other:?}"),
     }
 }
+
+#[test]
+fn pp_to_main_reinitialises_variables_and_keeps_persistents() {
+    // §1.2.2 start-up table: "PP to Main" initialises constants and variables; persistents
+    // are unchanged.
+    let src = "MODULE t\nPERS num p := 0;\nVAR num v := 0;\nPROC main()\n  p := p + 1;\n  v := v + 1;\n  TPWrite \"p=\" \\Num:=p;\n  TPWrite \"v=\" \\Num:=v;\nENDPROC\nENDMODULE";
+    let loaded = match load(&[SourceInput::from_text("t.mod", src)], "main") {
+        Ok(loaded) => loaded,
+        Err(err) => panic!("load failed: {err:?}"),
+    };
+    let (mut machine, entry) = (loaded.vm, loaded.entry);
+    let mut host = RecordingHost::default();
+    assert_eq!(machine.run(&mut host, 10_000), Exit::Done);
+    machine.pp_to_main(&mut host, entry).expect("pp to main");
+    assert_eq!(machine.run(&mut host, 10_000), Exit::Done);
+    assert_eq!(host.lines, vec!["p=1", "v=1", "p=2", "v=1"]);
+}
+
+#[test]
+fn a_stopped_program_continues_with_the_next_instruction() {
+    let mut machine = vm("MODULE t\nPROC main()\n  TPWrite \"a\";\n  Stop;\n  TPWrite \"b\";\nENDPROC\nENDMODULE");
+    let mut host = RecordingHost::default();
+    assert_eq!(machine.run(&mut host, 1_000), Exit::Stopped);
+    assert_eq!(host.lines, vec!["a"]);
+    assert_eq!(machine.run(&mut host, 1_000), Exit::Done);
+    assert_eq!(host.lines, vec!["a", "b"]);
+}
+
+#[test]
+fn pp_to_main_runs_the_undo_handlers_of_running_routines() {
+    // §1.13: moving the program pointer to main while routines run executes their UNDO.
+    let src = "MODULE t\nPROC sub()\n  TPWrite \"in sub\";\n  Stop;\nUNDO\n  TPWrite \"undo sub\";\nENDPROC\nPROC main()\n  sub;\nENDPROC\nENDMODULE";
+    let loaded = match load(&[SourceInput::from_text("t.mod", src)], "main") {
+        Ok(loaded) => loaded,
+        Err(err) => panic!("load failed: {err:?}"),
+    };
+    let (mut machine, entry) = (loaded.vm, loaded.entry);
+    let mut host = RecordingHost::default();
+    assert_eq!(machine.run(&mut host, 1_000), Exit::Stopped);
+    machine.pp_to_main(&mut host, entry).expect("pp to main");
+    assert_eq!(host.lines, vec!["in sub", "undo sub"]);
+}
+
+#[test]
+fn exit_cycle_ends_the_cycle_after_undo() {
+    let src = "MODULE t\nPROC main()\n  TPWrite \"a\";\n  ExitCycle;\n  TPWrite \"never\";\nUNDO\n  TPWrite \"undo main\";\nENDPROC\nENDMODULE";
+    let mut machine = vm(src);
+    let mut host = RecordingHost::default();
+    assert_eq!(machine.run(&mut host, 1_000), Exit::CycleEnded);
+    assert_eq!(host.lines, vec!["a", "undo main"]);
+}

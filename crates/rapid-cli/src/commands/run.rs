@@ -53,7 +53,8 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
             }
         }
         match exit {
-            Exit::Done | Exit::Stopped => break ExitStatus::Success,
+            // One cycle is run: ExitCycle ends it like the end of main.
+            Exit::Done | Exit::Stopped | Exit::CycleEnded => break ExitStatus::Success,
             Exit::Budget => {}
             Exit::Wait(seconds) => {
                 loaded.vm.time += seconds;

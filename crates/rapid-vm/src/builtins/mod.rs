@@ -35,8 +35,8 @@ pub struct Ctx<'a> {
     pub time: f64,
     /// Set by waiting instructions: how long to wait (virtual seconds).
     pub wait: Option<f64>,
-    /// Set by Stop.
-    pub stop: bool,
+    /// Set by Stop and ExitCycle.
+    pub stop: StopKind,
     pub errnos: &'a rustc_hash::FxHashMap<&'static str, i32>,
     /// Which globals are persistents.
     pub pers_globals: &'a [bool],
@@ -107,6 +107,16 @@ impl Ctx<'_> {
     }
 }
 
+/// How a built-in ends the normal flow.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StopKind {
+    None,
+    /// Stop (and Break): halt; a restart continues with the next instruction.
+    Stop,
+    /// ExitCycle: end the cycle (UNDO handlers run), PP back to main.
+    ExitCycle,
+}
+
 /// Present means passed: not absent.
 pub fn present(arg: Option<&Value>) -> bool {
     arg.is_some_and(|a| !a.is_absent())
@@ -129,6 +139,7 @@ pub static TABLE: &[(&str, BuiltinFn)] = &[
     ("SkipWarn", system::skip_warn),
     ("WaitTime", system::wait_time),
     ("Stop", system::stop),
+    ("ExitCycle", system::exit_cycle),
     ("Break", system::break_),
     ("BookErrNo", system::book_err_no),
     ("Dim", system::dim),

@@ -17,13 +17,19 @@ pub(super) fn wait_time(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
 }
 
 pub(super) fn stop(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
-    ctx.stop = true;
+    ctx.stop = super::StopKind::Stop;
+    Ok(None)
+}
+
+/// `ExitCycle`: ends the current cycle; the program pointer goes back to main.
+pub(super) fn exit_cycle(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
+    ctx.stop = super::StopKind::ExitCycle;
     Ok(None)
 }
 
 /// `Break` stops execution for debugging (no debugger is attached: like Stop).
 pub(super) fn break_(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
-    ctx.stop = true;
+    ctx.stop = super::StopKind::Stop;
     Ok(None)
 }
 

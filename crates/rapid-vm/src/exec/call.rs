@@ -61,10 +61,14 @@ impl Vm {
                     self.push(value);
                 }
                 self.frame_mut().pc += 1;
-                if stop {
-                    return Ok(Some(Exit::Stopped));
+                match stop {
+                    crate::builtins::StopKind::None => Ok(wait.map(Exit::Wait)),
+                    crate::builtins::StopKind::Stop => Ok(Some(Exit::Stopped)),
+                    crate::builtins::StopKind::ExitCycle => {
+                        self.cycle_exit = true;
+                        Ok(self.exit())
+                    }
                 }
-                Ok(wait.map(Exit::Wait))
             }
             Callee::Routine(idx) => {
                 let Some(callee) = self.routines.get(idx as usize).cloned().flatten() else {
@@ -325,7 +329,7 @@ impl Vm {
         self.continue_exit()
     }
 
-    fn continue_exit(&mut self) -> Option<Exit> {
+    pub(super) fn continue_exit(&mut self) -> Option<Exit> {
         while let Some(frame) = self.frames.last_mut() {
             match frame.code.undo_handler {
                 Some(pc) if !frame.undoing => {
@@ -342,6 +346,6 @@ impl Vm {
                 }
             }
         }
-        Some(Exit::Done)
+        Some(if self.cycle_exit { Exit::CycleEnded } else { Exit::Done })
     }
 }

@@ -43,6 +43,9 @@ pub enum Exit {
     Wait(f64),
     /// An error no handler took; the system error handler stops the program.
     Unhandled(Unhandled),
+    /// ExitCycle: the cycle ended (UNDO handlers ran); a continuous run would start
+    /// main again, a single-cycle run stops.
+    CycleEnded,
 }
 
 /// An error that reached the system error handler, with where it happened.
@@ -88,6 +91,10 @@ pub struct Vm {
     arg_scratch: Vec<Value>,
     next_booked: i32,
     exiting: bool,
+    /// The exit under way ends the cycle (ExitCycle) rather than the program (EXIT).
+    cycle_exit: bool,
+    /// For program events: the load-time code and the values data has before it.
+    init: Option<(Rc<Code>, Vec<Value>)>,
     /// Virtual time in seconds.
     pub time: f64,
     /// Instructions executed so far.
@@ -116,6 +123,8 @@ impl Vm {
             arg_scratch: Vec::new(),
             next_booked: FIRST_BOOKED_ERRNO,
             exiting: false,
+            cycle_exit: false,
+            init: None,
             time: 0.0,
             steps: 0,
         }
@@ -142,7 +151,46 @@ impl Vm {
         self.frames.clear();
         self.storage.stack.clear();
         self.exiting = false;
+        self.cycle_exit = false;
         self.push_frame(code, Vec::new());
+    }
+
+    /// Remembers how data gets its initial values, for [`Vm::pp_to_main`].
+    pub fn set_init(&mut self, code: Rc<Code>, defaults: Vec<Value>) {
+        self.init = Some((code, defaults));
+    }
+
+    /// "PP to Main" (§1.2.2 start-up table): UNDO handlers of the routines still
+    /// running are run (§1.13); constants and variables get their initial values
+    /// again; persistents keep theirs; execution is set to start `entry`.
+    pub fn pp_to_main(&mut self, host: &mut dyn crate::host::Host, entry: u32) -> Result<(), Unhandled> {
+        if !self.frames.is_empty() {
+            self.exiting = true;
+            if self.continue_exit().is_none() {
+                if let Exit::Unhandled(u) = self.run(host, u64::MAX) {
+                    return Err(u);
+                }
+            }
+        }
+        if let Some((code, defaults)) = self.init.clone() {
+            let kept: Vec<(usize, Value)> = self
+                .pers_globals
+                .iter()
+                .enumerate()
+                .filter(|(_, &pers)| pers)
+                .filter_map(|(idx, _)| self.storage.globals.get(idx).map(|v| (idx, v.clone())))
+                .collect();
+            self.storage.globals = defaults;
+            self.start(code);
+            if let Exit::Unhandled(u) = self.run(host, u64::MAX) {
+                return Err(u);
+            }
+            for (idx, value) in kept {
+                self.storage.globals[idx] = value;
+            }
+        }
+        self.start_routine(entry);
+        Ok(())
     }
 
     /// Starts routine `idx` (which takes no arguments).
@@ -630,14 +678,14 @@ impl Vm {
         id: crate::builtins::BuiltinId,
         args: &[Value],
         host: &mut dyn crate::host::Host,
-    ) -> Result<(Option<Value>, Option<f64>, bool), RapidError> {
+    ) -> Result<(Option<Value>, Option<f64>, crate::builtins::StopKind), RapidError> {
         let mut ctx = Ctx {
             storage: &mut self.storage,
             host,
             types: self.types,
             time: self.time,
             wait: None,
-            stop: false,
+            stop: crate::builtins::StopKind::None,
             errnos: &self.errnos,
             pers_globals: &self.pers_globals,
             retries_left: MAX_RETRIES.saturating_sub(self.frames.last().map_or(0, |f| f.retries)),
