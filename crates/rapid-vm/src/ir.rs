@@ -160,6 +160,11 @@ pub struct StmtRange {
     pub start: u32,
     pub end: u32,
     pub span: Span,
+    /// Nesting depth: 0 for the statements of a routine's body or handler.
+    pub depth: u16,
+    /// For a call of a user procedure: which routine (backward execution runs its
+    /// BACKWARD handler).
+    pub calls: Option<u32>,
 }
 
 /// One compiled routine.

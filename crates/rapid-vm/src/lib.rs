@@ -20,6 +20,7 @@ use rapid_sema::{analyze, Diagnostic, Options, Program, SourceInput};
 use rapid_syntax::ast::RoutineKind;
 use rustc_hash::FxHashMap;
 
+pub use exec::backward::{BackStep, BackwardRefusal};
 pub use exec::{Exit, Unhandled, Vm};
 pub use host::{Host, RecordingHost};
 

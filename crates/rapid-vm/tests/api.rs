@@ -139,3 +139,48 @@ fn exit_cycle_ends_the_cycle_after_undo() {
     assert_eq!(machine.run(&mut host, 1_000), Exit::CycleEnded);
     assert_eq!(host.lines, vec!["a", "undo main"]);
 }
+
+/// The manual's example 1 of §1.21, with TPWrite standing in for the moves.
+const MOVE_TO: &str = "MODULE t\nPROC MoveTo()\n  TPWrite \"fwd p1\";\n  TPWrite \"fwd p2 p3\";\n  TPWrite \"fwd p4\";\nBACKWARD\n  TPWrite \"back p4\";\n  TPWrite \"back p2 p3\";\n  TPWrite \"back p1\";\nENDPROC\nPROC Plain()\n  TPWrite \"plain\";\nENDPROC\nPROC main()\n  TPWrite \"start\";\n  MoveTo;\n  Plain;\n  Stop;\n  TPWrite \"end\";\nENDPROC\nENDMODULE";
+
+#[test]
+fn stepping_backward_runs_backward_handlers_and_refuses_what_the_manual_refuses() {
+    use rapid_vm::{BackStep, BackwardRefusal};
+    let mut machine = vm(MOVE_TO);
+    let mut host = RecordingHost::default();
+    assert_eq!(machine.run(&mut host, 10_000), Exit::Stopped);
+    assert_eq!(host.lines, vec!["start", "fwd p1", "fwd p2 p3", "fwd p4", "plain"]);
+    host.lines.clear();
+    // Back over Stop (no backward meaning), then Plain has no BACKWARD handler.
+    assert_eq!(machine.step_backward(&mut host), Ok(BackStep::Moved));
+    assert_eq!(machine.step_backward(&mut host), Err(BackwardRefusal::NoBackwardHandler("Plain".into())));
+    assert!(host.lines.is_empty());
+}
+
+#[test]
+fn a_call_runs_backward_through_its_backward_handler() {
+    use rapid_vm::{BackStep, BackwardRefusal};
+    let src = MOVE_TO.replace("  Plain;\n", "");
+    let mut machine = vm(&src);
+    let mut host = RecordingHost::default();
+    assert_eq!(machine.run(&mut host, 10_000), Exit::Stopped);
+    host.lines.clear();
+    assert_eq!(machine.step_backward(&mut host), Ok(BackStep::Moved));
+    assert_eq!(machine.step_backward(&mut host), Ok(BackStep::RanBackwardHandler("MoveTo".into())));
+    assert_eq!(host.lines, vec!["back p4", "back p2 p3", "back p1"]);
+    assert_eq!(machine.step_backward(&mut host), Ok(BackStep::Moved));
+    assert_eq!(machine.step_backward(&mut host), Err(BackwardRefusal::AtRoutineStart));
+    // Running forward again from the start repeats the program's first lines.
+    host.lines.clear();
+    assert_eq!(machine.run(&mut host, 10_000), Exit::Stopped);
+    assert_eq!(host.lines, vec!["start", "fwd p1", "fwd p2 p3", "fwd p4"]);
+}
+
+#[test]
+fn backward_execution_does_not_leave_compound_statements() {
+    use rapid_vm::BackwardRefusal;
+    let mut machine = vm("MODULE t\nPROC main()\n  IF TRUE THEN\n    TPWrite \"in\";\n    Stop;\n    TPWrite \"still in\";\n  ENDIF\nENDPROC\nENDMODULE");
+    let mut host = RecordingHost::default();
+    assert_eq!(machine.run(&mut host, 1_000), Exit::Stopped);
+    assert_eq!(machine.step_backward(&mut host), Err(BackwardRefusal::InsideCompoundStatement));
+}

@@ -231,6 +231,8 @@ pub(crate) struct RoutineCompiler<'p> {
     pub(crate) n_locals: u32,
     pub(crate) local_types: Vec<(TypeId, [u32; 3], u8)>,
     pub(crate) ret_ty: Option<TypeId>,
+    /// Nesting depth of the statement being compiled.
+    pub(crate) stmt_depth: u16,
 }
 
 impl<'p> RoutineCompiler<'p> {
@@ -248,6 +250,7 @@ impl<'p> RoutineCompiler<'p> {
             n_locals: 0,
             local_types: Vec::new(),
             ret_ty: None,
+            stmt_depth: 0,
         }
     }
 

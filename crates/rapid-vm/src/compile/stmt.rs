@@ -19,8 +19,18 @@ impl RoutineCompiler<'_> {
     fn stmt(&mut self, arena: &Arena, stmt: &Stmt, errors: &mut Vec<CompileError>) -> Result<(), CompileError> {
         let range_idx = self.code.stmts.len();
         let start = self.code.here();
-        self.code.stmts.push(StmtRange { start, end: start, span: stmt.span });
+        let calls = match &stmt.kind {
+            StmtKind::Call { name, .. } => match self.resolve(name.sym) {
+                Some(Resolved::Routine(idx)) if self.prog.routines[idx as usize].chapter.is_none() => Some(idx),
+                _ => None,
+            },
+            _ => None,
+        };
+        let depth = self.stmt_depth;
+        self.code.stmts.push(StmtRange { start, end: start, span: stmt.span, depth, calls });
+        self.stmt_depth += 1;
         let res = self.stmt_kind(arena, stmt, errors);
+        self.stmt_depth -= 1;
         self.code.stmts[range_idx].end = self.code.here();
         res
     }

@@ -15,7 +15,16 @@ impl Vm {
         let base = self.storage.stack.len() as u32;
         self.storage.stack.extend(args);
         self.storage.stack.extend(code.local_defaults.iter().cloned());
-        self.frames.push(Frame { code, pc: 0, base, active: None, retries: 0, last_retry_stmt: None, undoing: false });
+        self.frames.push(Frame {
+            code,
+            pc: 0,
+            base,
+            active: None,
+            retries: 0,
+            last_retry_stmt: None,
+            undoing: false,
+            return_to: None,
+        });
     }
 
     /// `Call(site)`: collects the arguments the caller pushed and enters the callee.
@@ -98,14 +107,16 @@ impl Vm {
             }
         }
         self.storage.stack.extend(callee.local_defaults.iter().cloned());
+        let (pc, return_to) = self.entry_point(&callee);
         self.frames.push(Frame {
             code: callee,
-            pc: 0,
+            pc,
             base: at as u32,
             active: None,
             retries: 0,
             last_retry_stmt: None,
             undoing: false,
+            return_to,
         });
         Ok(None)
     }
@@ -123,8 +134,21 @@ impl Vm {
                 *arg = super::coerce_like(like, value).map_err(|f| self.fault(f))?;
             }
         }
+        let (pc, return_to) = self.entry_point(&callee);
         self.push_frame(callee, args);
+        let frame = self.frame_mut();
+        frame.pc = pc;
+        frame.return_to = return_to;
         Ok(None)
+    }
+
+    /// Where a call enters its routine: the start, or its BACKWARD handler when the
+    /// call is being executed backward.
+    fn entry_point(&mut self, callee: &Code) -> (u32, Option<u32>) {
+        match (self.backward_entry.take(), callee.backward_handler) {
+            (Some(stmt), Some(pc)) => (pc, Some(stmt)),
+            _ => (0, None),
+        }
     }
 
     /// A conditional argument: the caller's optional parameter, when it was passed.
@@ -181,7 +205,7 @@ impl Vm {
             return self.continue_exit();
         }
         let Some(caller) = self.frames.last_mut() else { return Some(Exit::Done) };
-        caller.pc += 1;
+        caller.pc = frame.return_to.unwrap_or(caller.pc + 1);
         if let Some(mut value) = value {
             if let Some(like) = &frame.code.ret_like {
                 value = super::coerce_like(like, value).unwrap_or(Value::Absent);
@@ -271,6 +295,8 @@ impl Vm {
                         start: frame.pc,
                         end: frame.pc + 1,
                         span: frame.code.span,
+                        depth: 0,
+                        calls: None,
                     });
                     let handler_pc = handler.pc;
                     if let Some(global) = self.errno_global {

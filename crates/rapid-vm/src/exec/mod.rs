@@ -8,6 +8,7 @@
 //! A VAR, INOUT or PERS parameter slot holds `Value::Ref(place)`; loads and stores
 //! go through it.
 
+pub mod backward;
 mod call;
 pub mod storage;
 
@@ -74,6 +75,8 @@ struct Frame {
     last_retry_stmt: Option<u32>,
     /// Running this frame's UNDO handler while the program exits.
     undoing: bool,
+    /// Running this frame's BACKWARD handler: where the caller's PP goes afterwards.
+    return_to: Option<u32>,
 }
 
 /// One program task's interpreter.
@@ -93,6 +96,9 @@ pub struct Vm {
     exiting: bool,
     /// The exit under way ends the cycle (ExitCycle) rather than the program (EXIT).
     cycle_exit: bool,
+    /// The next call enters its routine's BACKWARD handler (backward execution);
+    /// the caller's PP then returns to this statement start.
+    backward_entry: Option<u32>,
     /// For program events: the load-time code and the values data has before it.
     init: Option<(Rc<Code>, Vec<Value>)>,
     /// Virtual time in seconds.
@@ -124,6 +130,7 @@ impl Vm {
             next_booked: FIRST_BOOKED_ERRNO,
             exiting: false,
             cycle_exit: false,
+            backward_entry: None,
             init: None,
             time: 0.0,
             steps: 0,
