@@ -48,7 +48,9 @@ impl Vm {
         if body_end.is_some_and(|end| pc >= end) {
             return Err(BackwardRefusal::InHandler);
         }
-        let Some(prev) = top_level.filter(|s| s.end <= pc).last() else { return Err(BackwardRefusal::AtRoutineStart) };
+        let Some(prev) = top_level.filter(|s| s.end <= pc).next_back() else {
+            return Err(BackwardRefusal::AtRoutineStart);
+        };
         let Some(callee_idx) = prev.calls else {
             self.frame_mut().pc = prev.start;
             return Ok(BackStep::Moved);
