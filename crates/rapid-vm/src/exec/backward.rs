@@ -40,7 +40,7 @@ impl Vm {
             return Err(BackwardRefusal::InHandler);
         }
         let (code, pc, depth) = (frame.code.clone(), frame.pc, self.frames.len());
-        let top_level = code.stmts.iter().filter(|s| s.depth == 0);
+        let mut top_level = code.stmts.iter().filter(|s| s.depth == 0);
         if top_level.clone().any(|s| s.start < pc && pc < s.end) {
             return Err(BackwardRefusal::InsideCompoundStatement);
         }
@@ -48,7 +48,7 @@ impl Vm {
         if body_end.is_some_and(|end| pc >= end) {
             return Err(BackwardRefusal::InHandler);
         }
-        let Some(prev) = top_level.filter(|s| s.end <= pc).next_back() else {
+        let Some(prev) = top_level.rfind(|s| s.end <= pc) else {
             return Err(BackwardRefusal::AtRoutineStart);
         };
         let Some(callee_idx) = prev.calls else {
