@@ -44,9 +44,9 @@ pub fn binary(op: BinaryOp, a: Value, b: Value, types: OpTypes) -> Result<Value,
         _ => {}
     }
     match (&a, &b) {
-        (Value::Num(x), Value::Num(y)) => num_op(op, *x, *y),
+        (Value::Num(x), Value::Num(y)) => finite(num_op(op, *x, *y)?),
         (Value::Num(_) | Value::Dnum(_), Value::Num(_) | Value::Dnum(_)) => {
-            dnum_op(op, a.as_f64().unwrap_or(0.0), b.as_f64().unwrap_or(0.0))
+            finite(dnum_op(op, a.as_f64().unwrap_or(0.0), b.as_f64().unwrap_or(0.0))?)
         }
         (Value::Str(x), Value::Str(y)) if op == B::Add => concat(x, y),
         (Value::Record(x), Value::Record(y)) if x.ty == types.pos && y.ty == types.pos => pos_op(op, x, y),
@@ -65,6 +65,16 @@ pub fn binary(op: BinaryOp, a: Value, b: Value, types: OpTypes) -> Result<Value,
             Ok(map_pos(p, |x| k * x))
         }
         _ => Err(type_fault(op.text(), &a, Some(&b))),
+    }
+}
+
+/// Arithmetic that overflows the number type is an error, not an infinity (`(?)`:
+/// the controller's errno for it is not public; ERR_NUM_LIMIT is the closest name).
+fn finite(value: Value) -> Result<Value, OpError> {
+    match value {
+        Value::Num(n) if !n.is_finite() => Err((Err::NumLimit, "the result is outside the range of num".into())),
+        Value::Dnum(d) if !d.is_finite() => Err((Err::NumLimit, "the result is outside the range of dnum".into())),
+        other => Ok(other),
     }
 }
 

@@ -715,11 +715,12 @@ impl Vm {
 #[inline(always)]
 fn fast_num_op(op: rapid_syntax::ast::BinaryOp, a: f32, b: f32) -> Option<Value> {
     use rapid_syntax::ast::BinaryOp as B;
+    let finite = |x: f32| x.is_finite().then_some(Value::Num(x));
     Some(match op {
-        B::Add => Value::Num(a + b),
-        B::Sub => Value::Num(a - b),
-        B::Mul => Value::Num(a * b),
-        B::Div if b != 0.0 => Value::Num(a / b),
+        B::Add => finite(a + b)?,
+        B::Sub => finite(a - b)?,
+        B::Mul => finite(a * b)?,
+        B::Div if b != 0.0 => finite(a / b)?,
         B::Mod | B::IntDiv => {
             // Integer operands (exactly representable as i64) take integer arithmetic:
             // MOD keeps the dividend's sign and DIV truncates, as RAPID's do.
