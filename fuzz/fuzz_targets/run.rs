@@ -1,0 +1,21 @@
+//! Fuzz target `run`: arbitrary bytes as a module; when it checks clean, it is
+//! compiled and run for a bounded number of steps (waits advance the virtual clock).
+//! Nothing may panic: bad programs end with a RAPID error or the bound.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use rapid_sema::SourceInput;
+use rapid_vm::{load, Exit, RecordingHost};
+
+fuzz_target!(|data: &[u8]| {
+    let files = vec![SourceInput::from_bytes("a.mod", data.to_vec())];
+    let Ok(mut loaded) = load(&files, "main") else { return };
+    let mut host = RecordingHost::default();
+    for _ in 0..100 {
+        match loaded.vm.run(&mut host, 2_000) {
+            Exit::Budget => {}
+            Exit::Wait(seconds) => loaded.vm.time += seconds,
+            _ => break,
+        }
+    }
+});
