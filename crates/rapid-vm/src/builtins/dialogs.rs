@@ -125,14 +125,17 @@ const BUTTON_NAMES: [(i32, &str); 7] = [
 /// btnOKCancel 2, btnRetryCancel 3, btnYesNo 4, btnYesNoCancel 5, as catalogue/data.rs
 /// declares them), or `None` for a value that is none of these.
 fn standard_buttons(buttondata: f64) -> Option<&'static [i32]> {
-    Some(match buttondata {
-        v if v == -1.0 => &[],
-        v if v == 0.0 => &[RES_OK],
-        v if v == 1.0 => &[RES_ABORT, RES_RETRY, RES_IGNORE],
-        v if v == 2.0 => &[RES_OK, RES_CANCEL],
-        v if v == 3.0 => &[RES_RETRY, RES_CANCEL],
-        v if v == 4.0 => &[RES_YES, RES_NO],
-        v if v == 5.0 => &[RES_YES, RES_NO, RES_CANCEL],
+    if buttondata.fract() != 0.0 {
+        return None;
+    }
+    Some(match buttondata as i64 {
+        -1 => &[],
+        0 => &[RES_OK],
+        1 => &[RES_ABORT, RES_RETRY, RES_IGNORE],
+        2 => &[RES_OK, RES_CANCEL],
+        3 => &[RES_RETRY, RES_CANCEL],
+        4 => &[RES_YES, RES_NO],
+        5 => &[RES_YES, RES_NO, RES_CANCEL],
         _ => return None,
     })
 }
@@ -474,13 +477,8 @@ pub(super) fn ui_msg_box(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         }
     }
     let buttons = dialog_buttons(ctx, args.get(MSG_BOX_BUTTONS), None)?;
-    let pressed = press_button(
-        ctx,
-        &lines.join("\n"),
-        &buttons,
-        args.get(MSG_BOX_MAX_TIME),
-        args.get(MSG_BOX_BREAK_FLAG),
-    )?;
+    let pressed =
+        press_button(ctx, &lines.join("\n"), &buttons, args.get(MSG_BOX_MAX_TIME), args.get(MSG_BOX_BREAK_FLAG))?;
     store_opt(ctx, args.get(MSG_BOX_RESULT), Value::Num(pressed.unwrap_or(RES_UNKWN) as f32))?;
     Ok(None)
 }

@@ -55,7 +55,9 @@ fn ui_msg_box_standard_button_sets() {
     let body = |buttons: &str| {
         format!("  VAR btnres r;\n  UIMsgBox \"?\" \\Buttons:={buttons} \\Result:=r;\n  TPWrite \"\" \\Num:=r;")
     };
-    let cases: [(&str, &[(&str, &str)], &[&str]); 6] = [
+    /// A buttondata constant, answers with the btnres value they give, answers refused.
+    type Case = (&'static str, &'static [(&'static str, &'static str)], &'static [&'static str]);
+    let cases: [Case; 6] = [
         ("btnOK", &[("ok", "1")], &["Cancel"]),
         ("btnAbrtRtryIgn", &[("Abort", "2"), ("retry", "3"), ("IGNORE", "4")], &["OK"]),
         ("btnOKCancel", &[("OK", "1"), ("Cancel", "5")], &["No"]),
@@ -224,7 +226,8 @@ fn ui_entries_honour_break_flag() {
 
 #[test]
 fn tp_read_fk_still_takes_numbers_and_key_texts() {
-    let body = "  VAR num k;\n  TPReadFK k, \"Which?\", \"Go\", \"\", \"Stop\", stEmpty, stEmpty;\n  TPWrite \"k=\" \\Num:=k;";
+    let body =
+        "  VAR num k;\n  TPReadFK k, \"Which?\", \"Go\", \"\", \"Stop\", stEmpty, stEmpty;\n  TPWrite \"k=\" \\Num:=k;";
     assert_eq!(lines("", body, &["stop"]), ["k=3"]);
     assert_eq!(lines("", body, &["1"]), ["k=1"]);
     assert_eq!(fails("", body, &["2"]), "ERR_ARGVALERR");

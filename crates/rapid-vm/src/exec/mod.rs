@@ -334,6 +334,30 @@ impl Vm {
                     }
                     stack.push(res);
                 }
+                Instr::LoadElem { global: false, slot, n: 1 } => {
+                    let len = stack.len();
+                    let Some(&Value::Num(index)) = stack.last() else { break true };
+                    let Value::Array(array) = &stack[base + slot as usize] else { break true };
+                    let Some(&Value::Num(elem)) = element_1d(array, index) else { break true };
+                    stack[len - 1] = Value::Num(elem);
+                }
+                Instr::LoadElem { global: true, slot, n: 1 } => {
+                    let len = stack.len();
+                    let Some(&Value::Num(index)) = stack.last() else { break true };
+                    let Some(Value::Array(array)) = self.storage.globals.get(slot as usize) else { break true };
+                    let Some(&Value::Num(elem)) = element_1d(array, index) else { break true };
+                    stack[len - 1] = Value::Num(elem);
+                }
+                Instr::StoreElem { global: false, slot, n: 1 } => {
+                    let len = stack.len();
+                    let (Value::Num(index), Value::Num(value)) = (&stack[len - 2], &stack[len - 1]) else { break true };
+                    let (index, value) = (*index, *value);
+                    let Value::Array(array) = &mut stack[base + slot as usize] else { break true };
+                    let Some(Value::Num(elem)) = element_1d_mut(array, index) else { break true };
+                    *elem = value;
+                    drop_plain(stack.pop());
+                    drop_plain(stack.pop());
+                }
                 Instr::Jump(target) => {
                     pc = target;
                     continue;
@@ -747,4 +771,23 @@ fn fast_num_op(op: rapid_syntax::ast::BinaryOp, a: f32, b: f32) -> Option<Value>
 #[inline(always)]
 fn drop_plain(value: Option<Value>) {
     std::mem::forget(value);
+}
+
+/// Element `index` (1-based) of a one-dimensional array, when in bounds.
+#[inline(always)]
+fn element_1d(array: &crate::value::Array, index: f32) -> Option<&Value> {
+    let i = index as usize;
+    if array.dims[1] != 0 || i as f32 != index || i == 0 || i > array.dims[0] as usize {
+        return None;
+    }
+    array.elems.get(i - 1)
+}
+
+#[inline(always)]
+fn element_1d_mut(array: &mut crate::value::Array, index: f32) -> Option<&mut Value> {
+    let i = index as usize;
+    if array.dims[1] != 0 || i as f32 != index || i == 0 || i > array.dims[0] as usize {
+        return None;
+    }
+    array.elems.get_mut(i - 1)
 }
