@@ -34,4 +34,7 @@ errors! {
     IllegalDim = "ERR_ILLDIM",
     TpNoClient = "ERR_TP_NO_CLIENT",
     TpMaxTime = "ERR_TP_MAXTIME",
+    UiInitValue = "ERR_UI_INITVALUE",
+    UiMaxMin = "ERR_UI_MAXMIN",
+    UiNotInt = "ERR_UI_NOTINT",
 }
