@@ -161,7 +161,7 @@ fn concat(x: &str, y: &str) -> Result<Value, OpError> {
     let mut s = String::with_capacity(x.len() + y.len());
     s.push_str(x);
     s.push_str(y);
-    Ok(Value::Str(s.into_boxed_str()))
+    Ok(Value::Str(s.into()))
 }
 
 fn pos_components(r: &Record) -> [f32; 3] {

@@ -13,7 +13,7 @@ pub enum Value {
     Dnum(f64),
     Bool(bool),
     /// Characters are Latin-1 code points (U+0000..U+00FF).
-    Str(Box<str>),
+    Str(std::rc::Rc<str>),
     Record(Box<Record>),
     Array(Box<Array>),
     /// Data of a non-value type (clock, iodev, ...), which only built-ins touch.

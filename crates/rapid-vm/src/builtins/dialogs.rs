@@ -433,12 +433,12 @@ pub(super) fn ui_alpha_entry(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let prompt = ui_prompt(ctx, args)?;
     let Some(text) = answer(ctx, &prompt, args.get(ALPHA_ENTRY_MAX_TIME), args.get(ALPHA_ENTRY_BREAK_FLAG))? else {
         let init = opt_string(ctx, args.get(ALPHA_ENTRY_INIT))?;
-        return Ok(Some(Value::Str(init.into_boxed_str())));
+        return Ok(Some(Value::Str(init.into())));
     };
     if text.chars().count() > crate::value::MAX_STRING_CHARS {
         return Err(ctx.error(Err::StringTooLong, "the operator's answer is longer than 80 characters"));
     }
-    Ok(Some(Value::Str(text.into_boxed_str())))
+    Ok(Some(Value::Str(text.into())))
 }
 
 /// The button the operator pressed in a message box, or `None` when \BreakFlag took

@@ -83,7 +83,7 @@ impl Ctx<'_> {
 
     pub fn string(&self, arg: &Value) -> Result<String, RapidError> {
         match self.value(arg)? {
-            Value::Str(s) => Ok(s.into()),
+            Value::Str(s) => Ok(s.to_string()),
             _ => Err(self.error(Err::ArgValue, "a string argument was expected")),
         }
     }

@@ -13,7 +13,7 @@ fn chars(s: &str) -> Vec<char> {
 }
 
 fn text(s: String) -> Option<Value> {
-    Some(Value::Str(s.into_boxed_str()))
+    Some(Value::Str(s.into()))
 }
 
 /// A character position 1..=len+1 (len+1 only where the manual allows it).
@@ -27,7 +27,10 @@ fn position(ctx: &Ctx<'_>, arg: &Value, len: usize, allow_end: bool) -> Result<u
 }
 
 pub(super) fn str_len(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    Ok(Some(Value::Num(chars(&ctx.string(&args[0])?).len() as f32)))
+    match ctx.value(&args[0])? {
+        Value::Str(s) => Ok(Some(Value::Num(s.chars().count() as f32))),
+        _ => Err(ctx.error(Err::ArgValue, "a string argument was expected")),
+    }
 }
 
 pub(super) fn str_part(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
@@ -173,7 +176,7 @@ impl LiteralReader {
                 "FALSE" => Some(Value::Bool(false)),
                 _ => None,
             }),
-            Value::Str(_) => self.string().map(|s| Value::Str(s.into_boxed_str())),
+            Value::Str(_) => self.string().map(|s| Value::Str(s.into())),
             Value::Record(record) => {
                 let fields = self.list(&record.fields)?;
                 Some(Value::Record(Box::new(crate::value::Record { ty: record.ty, fields })))

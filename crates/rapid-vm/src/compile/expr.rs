@@ -24,7 +24,7 @@ impl RoutineCompiler<'_> {
                 self.code.emit(Instr::Const(idx));
             }
             ExprKind::Str => {
-                let idx = self.code.constant(Value::Str(string_value(expr.span.text(self.text)).into_boxed_str()));
+                let idx = self.code.constant(Value::Str(string_value(expr.span.text(self.text)).into()));
                 self.code.emit(Instr::Const(idx));
             }
             ExprKind::Bool(b) => {

@@ -49,18 +49,22 @@ impl Vm {
         let mut args = std::mem::take(&mut self.arg_scratch);
         args.clear();
         let base = self.frame().base;
-        {
-            let mut pushed = self.storage.stack.drain(at..).collect::<Vec<_>>().into_iter();
-            for spec in &site.args {
-                let arg = match spec {
-                    ArgSpec::Value | ArgSpec::Place => pushed.next().unwrap_or(Value::Absent),
-                    ArgSpec::Absent => Value::Absent,
-                    ArgSpec::Switch => Value::SwitchOn,
-                    ArgSpec::Conditional { slot, by_ref } => self.forward(base + slot, *by_ref)?,
-                };
-                args.push(arg);
+        // Conditional arguments read the caller's slots (below the pushed values)
+        // first; then the pushed values move into place without a copy.
+        for spec in &site.args {
+            args.push(match spec {
+                ArgSpec::Conditional { slot, by_ref } => self.forward(base + slot, *by_ref)?,
+                ArgSpec::Switch => Value::SwitchOn,
+                _ => Value::Absent,
+            });
+        }
+        let mut pushed = self.storage.stack.drain(at..);
+        for (spec, arg) in site.args.iter().zip(args.iter_mut()) {
+            if matches!(spec, ArgSpec::Value | ArgSpec::Place) {
+                *arg = pushed.next().unwrap_or(Value::Absent);
             }
         }
+        drop(pushed);
         match site.callee {
             Callee::Builtin(id) => {
                 let outcome = self.run_builtin(id, &args, host);

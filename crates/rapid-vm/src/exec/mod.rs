@@ -611,7 +611,7 @@ impl Vm {
                     Value::Str(s) => s,
                     _ => return Err(self.error(Err::CallProc, "CallByVar needs a name")),
                 };
-                self.push(Value::Str(format!("{name}{}", number as i64).into_boxed_str()));
+                self.push(Value::Str(format!("{name}{}", number as i64).into()));
             }
             Instr::FellOffEnd => return self.fell_off_end(),
         }
