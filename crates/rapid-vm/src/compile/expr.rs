@@ -65,7 +65,7 @@ impl RoutineCompiler<'_> {
                 let rhs_leaf = self.leaf_operand(arena, rhs, lhs_ty.or(num_ctx));
                 // A leaf on the left is read when the operator runs, so only when the
                 // right side cannot change it (it is a leaf too).
-                let lhs_leaf = rhs_leaf.and(self.leaf_operand(arena, lhs, rhs_ty.or(num_ctx)));
+                let lhs_leaf = rhs_leaf.and_then(|_| self.leaf_operand(arena, lhs, rhs_ty.or(num_ctx)));
                 if lhs_leaf.is_none() {
                     self.expr(arena, lhs, rhs_ty.or(num_ctx))?;
                 }
