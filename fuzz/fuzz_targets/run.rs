@@ -11,8 +11,10 @@ fuzz_target!(|data: &[u8]| {
     let files = vec![SourceInput::from_bytes("a.mod", data.to_vec())];
     let Ok(mut loaded) = load(&files, "main") else { return };
     let mut host = RecordingHost::default();
-    for _ in 0..100 {
-        match loaded.vm.run(&mut host, 2_000) {
+    // 20,000 steps: enough to reach deep into a program, bounded even when each step
+    // copies a large array.
+    for _ in 0..20 {
+        match loaded.vm.run(&mut host, 1_000) {
             Exit::Budget => {}
             Exit::Wait(seconds) => loaded.vm.time += seconds,
             _ => break,

@@ -152,8 +152,9 @@ fn compile_init(
 }
 
 /// Arrays may hold at most this many elements: the controller's program memory is a
-/// few megabytes, and a bigger array would only exhaust the host's.
-pub const MAX_ARRAY_ELEMENTS: u64 = 1 << 22;
+/// few megabytes (a million nums is 4 MB there), and a bigger array would only
+/// exhaust the host's and make every copy of it slow.
+pub const MAX_ARRAY_ELEMENTS: u64 = 1 << 20;
 
 /// The element count of an array with `dims` when it is over the limit.
 fn too_many_elements(dims: &[u32]) -> Option<u64> {
