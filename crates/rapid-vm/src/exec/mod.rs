@@ -275,13 +275,27 @@ impl Vm {
                     Value::Bool(b) => stack.push(Value::Bool(*b)),
                     _ => break true,
                 },
-                Instr::LoadLocal(slot) => match stack[base + slot as usize] {
-                    Value::Num(n) => stack.push(Value::Num(n)),
-                    Value::Bool(b) => stack.push(Value::Bool(b)),
+                Instr::LoadLocal(slot) => match &stack[base + slot as usize] {
+                    Value::Num(n) => stack.push(Value::Num(*n)),
+                    Value::Bool(b) => stack.push(Value::Bool(*b)),
+                    // A VAR parameter referring to a whole num in a caller's slot.
+                    Value::Ref(place) if place.path.is_empty() => match place.root {
+                        Root::Stack(at) => match stack[at as usize] {
+                            Value::Num(n) => stack.push(Value::Num(n)),
+                            _ => break true,
+                        },
+                        Root::Global(_) => break true,
+                    },
                     _ => break true,
                 },
                 Instr::StoreLocal(slot) => {
-                    let at = base + slot as usize;
+                    let mut at = base + slot as usize;
+                    if let Value::Ref(place) = &stack[at] {
+                        match (place.path.is_empty(), place.root) {
+                            (true, Root::Stack(target)) => at = target as usize,
+                            _ => break true,
+                        }
+                    }
                     match (stack.last(), &stack[at]) {
                         (Some(&Value::Num(n)), Value::Num(_)) => {
                             drop_plain(stack.pop());
@@ -353,6 +367,16 @@ impl Vm {
                     let (Value::Num(index), Value::Num(value)) = (&stack[len - 2], &stack[len - 1]) else { break true };
                     let (index, value) = (*index, *value);
                     let Value::Array(array) = &mut stack[base + slot as usize] else { break true };
+                    let Some(Value::Num(elem)) = element_1d_mut(array, index) else { break true };
+                    *elem = value;
+                    drop_plain(stack.pop());
+                    drop_plain(stack.pop());
+                }
+                Instr::StoreElem { global: true, slot, n: 1 } => {
+                    let len = stack.len();
+                    let (Value::Num(index), Value::Num(value)) = (&stack[len - 2], &stack[len - 1]) else { break true };
+                    let (index, value) = (*index, *value);
+                    let Some(Value::Array(array)) = self.storage.globals.get_mut(slot as usize) else { break true };
                     let Some(Value::Num(elem)) = element_1d_mut(array, index) else { break true };
                     *elem = value;
                     drop_plain(stack.pop());
