@@ -277,7 +277,7 @@ impl Checker<'_> {
         }
         if level != Level::Builtin {
             for (ty, span) in records {
-                if self.record_contains(ty, ty, 0) {
+                if self.record_contains(ty) {
                     let name = self.types.name(ty).to_string();
                     self.diag(Code::RecursiveRecord, span, format!("RECORD `{name}` contains itself"));
                 }
@@ -285,12 +285,26 @@ impl Checker<'_> {
         }
     }
 
-    fn record_contains(&self, outer: TypeId, ty: TypeId, depth: u32) -> bool {
-        if depth > 32 {
-            return false;
+    /// Whether record `outer` contains itself, directly or through other records: a
+    /// walk over the records it reaches, each visited once.
+    fn record_contains(&self, outer: TypeId) -> bool {
+        let mut visited: Vec<TypeId> = Vec::new();
+        let mut pending: Vec<TypeId> =
+            self.types.record_fields(outer).map_or(Vec::new(), |f| f.iter().map(|f| f.ty).collect());
+        while let Some(next) = pending.pop() {
+            let canon = self.types.canonical(next);
+            if canon == outer {
+                return true;
+            }
+            if visited.contains(&canon) {
+                continue;
+            }
+            visited.push(canon);
+            if let Some(fields) = self.types.record_fields(canon) {
+                pending.extend(fields.iter().map(|f| f.ty));
+            }
         }
-        let Some(fields) = self.types.record_fields(ty) else { return false };
-        fields.iter().any(|f| self.types.canonical(f.ty) == outer || self.record_contains(outer, f.ty, depth + 1))
+        false
     }
 
     fn lookup_decl(&self, sym: Symbol, level: Level) -> Option<Def> {

@@ -145,26 +145,26 @@ impl Types {
     }
 
     pub fn class(&self, ty: TypeId) -> ValueClass {
-        self.class_at_depth(ty, 0)
-    }
-
-    fn class_at_depth(&self, ty: TypeId, depth: u32) -> ValueClass {
-        if depth > 16 {
-            return ValueClass::Value;
-        }
-        match &self.info(self.canonical(ty)).kind {
-            TypeKind::NonValue | TypeKind::Switch => ValueClass::NonValue,
-            TypeKind::SemiValue(_) => ValueClass::SemiValue,
-            TypeKind::Record(fields) => {
-                let non_value = fields.iter().any(|f| self.class_at_depth(f.ty, depth + 1) == ValueClass::NonValue);
-                if non_value {
-                    ValueClass::NonValue
-                } else {
-                    ValueClass::Value
-                }
+        // A record is non-value when any component, however deep, is: one walk over
+        // the types it reaches, each visited once (records may form cycles, E0509).
+        let mut visited: Vec<TypeId> = Vec::new();
+        let mut pending = vec![ty];
+        let mut class = ValueClass::Value;
+        while let Some(next) = pending.pop() {
+            let canon = self.canonical(next);
+            if visited.contains(&canon) {
+                continue;
             }
-            _ => ValueClass::Value,
+            visited.push(canon);
+            match &self.info(canon).kind {
+                TypeKind::NonValue | TypeKind::Switch => return ValueClass::NonValue,
+                // Only the type itself being a signal makes data semi-value.
+                TypeKind::SemiValue(_) if canon == self.canonical(ty) => class = ValueClass::SemiValue,
+                TypeKind::Record(fields) => pending.extend(fields.iter().map(|f| f.ty)),
+                _ => {}
+            }
         }
+        class
     }
 
     /// Whether a value of type `got` may stand where `want` is expected: alias
