@@ -32,6 +32,8 @@ errors! {
     ArgValue = "ERR_ARGVALERR",
     NumLimit = "ERR_NUM_LIMIT",
     IllegalDim = "ERR_ILLDIM",
+    Overflow = "ERR_OVERFLOW",
+    WaitMaxTime = "ERR_WAIT_MAXTIME",
     TpNoClient = "ERR_TP_NO_CLIENT",
     TpMaxTime = "ERR_TP_MAXTIME",
     UiInitValue = "ERR_UI_INITVALUE",

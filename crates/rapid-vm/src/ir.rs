@@ -101,6 +101,12 @@ pub enum Instr {
     Placeholder,
     /// Pop a number and a name; push the name followed by the number (CallByVar).
     NameWithNumber,
+    /// Push the controller's time in seconds (a dnum).
+    PushTime,
+    /// Pop a number of seconds and wait that long (the run hands control back).
+    WaitPop,
+    /// Raise the predefined error `0` (WaitUntil's timeout).
+    RaiseWaitTimeout,
     /// The routine ran off its end without RETURN (in a FUNC: ERR_FNCNORET).
     FellOffEnd,
 }

@@ -3,6 +3,7 @@
 //! built-in's name to the Rust function that runs it. A built-in missing here is
 //! refused by the compiler with "not supported by `rapid run` yet".
 
+mod clock;
 mod dialogs;
 mod math;
 mod pendant;
@@ -143,6 +144,10 @@ pub static TABLE: &[(&str, BuiltinFn)] = &[
     ("ResetRetryCount", system::reset_retry_count),
     ("SkipWarn", system::skip_warn),
     ("WaitTime", system::wait_time),
+    ("ClkReset", clock::clk_reset),
+    ("ClkStart", clock::clk_start),
+    ("ClkStop", clock::clk_stop),
+    ("ClkRead", clock::clk_read),
     ("Stop", system::stop),
     ("ExitCycle", system::exit_cycle),
     ("Break", system::break_),

@@ -41,6 +41,9 @@ impl RoutineCompiler<'_> {
                 if info.display.eq_ignore_ascii_case("CallByVar") {
                     return self.call_by_var(arena, args);
                 }
+                if info.display.eq_ignore_ascii_case("WaitUntil") {
+                    return self.wait_until(arena, &info, args, span);
+                }
                 match builtins::lookup(&info.display) {
                     Some(id) => Callee::Builtin(id),
                     None => return Err(self.unsupported(span, &format!("the built-in `{}`", info.display))),
@@ -114,6 +117,84 @@ impl RoutineCompiler<'_> {
             }
             _ => Err(self.error(span, "Present needs an optional parameter of this routine")),
         }
+    }
+
+    /// `WaitUntil [\InPos] Cond [\MaxTime] [\TimeFlag] [\PollRate]`: the condition is
+    /// evaluated again every poll (0.1 s of controller time by default); past \MaxTime
+    /// ERR_WAIT_MAXTIME, or with \TimeFlag the flag is set TRUE and execution goes on.
+    fn wait_until(&mut self, arena: &Arena, info: &RoutineInfo, args: ArgList, span: Span) -> Result<(), CompileError> {
+        let bound = bind_args(info, arena.args(args));
+        let arg_of = |name: &str| {
+            info.params
+                .iter()
+                .position(|p| p.display.eq_ignore_ascii_case(name))
+                .and_then(|i| bound[i])
+                .and_then(|a| a.value)
+        };
+        let Some(cond) = arg_of("Cond") else { return Err(self.error(span, "WaitUntil needs a condition")) };
+        if ["Visualize", "Header", "Message", "MsgArray"].iter().any(|n| arg_of(n).is_some()) {
+            return Err(self.unsupported(span, "WaitUntil with \\Visualize"));
+        }
+        let (max_time, time_flag, poll_rate) = (arg_of("MaxTime"), arg_of("TimeFlag"), arg_of("PollRate"));
+        let num = self.prog.core.num;
+        let dnum = self.prog.core.dnum;
+        let start = self.new_local(dnum, [0; 3], 0, LocalKind::Temp);
+        self.code.emit(Instr::PushTime);
+        self.code.emit(Instr::StoreLocal(start.slot));
+        let top = self.code.here();
+        self.expr(arena, cond, None)?;
+        let to_wait = self.code.emit(Instr::JumpIfFalse(0));
+        if let Some(flag) = time_flag {
+            self.place(arena, flag)?;
+            let idx = self.code.constant(crate::value::Value::Bool(false));
+            self.code.emit(Instr::Const(idx));
+            self.code.emit(Instr::StorePlace);
+        }
+        let to_done = self.code.emit(Instr::Jump(0));
+        let here = self.code.here();
+        self.code.patch(to_wait, here);
+        if let Some(max_time) = max_time {
+            // elapsed >= MaxTime ?
+            self.code.emit(Instr::PushTime);
+            self.code.emit(Instr::LoadLocal(start.slot));
+            self.code.emit(Instr::Binary(rapid_syntax::ast::BinaryOp::Sub));
+            self.expr(arena, max_time, Some((num, [0; 3])))?;
+            self.code.emit(Instr::Binary(rapid_syntax::ast::BinaryOp::Lt));
+            let still_time = self.code.emit(Instr::JumpIfFalse(0));
+            let to_poll = self.code.emit(Instr::Jump(0));
+            let timeout = self.code.here();
+            self.code.patch(still_time, timeout);
+            match time_flag {
+                Some(flag) => {
+                    self.place(arena, flag)?;
+                    let idx = self.code.constant(crate::value::Value::Bool(true));
+                    self.code.emit(Instr::Const(idx));
+                    self.code.emit(Instr::StorePlace);
+                    let jump = self.code.emit(Instr::Jump(0));
+                    self.exits.push(jump);
+                }
+                None => {
+                    self.code.emit(Instr::RaiseWaitTimeout);
+                }
+            }
+            let poll = self.code.here();
+            self.code.patch(to_poll, poll);
+        }
+        match poll_rate {
+            Some(rate) => self.expr(arena, rate, Some((num, [0; 3])))?,
+            None => {
+                let idx = self.code.constant(crate::value::Value::Num(0.1));
+                self.code.emit(Instr::Const(idx));
+            }
+        }
+        self.code.emit(Instr::WaitPop);
+        self.code.emit(Instr::Jump(top));
+        let done = self.code.here();
+        self.code.patch(to_done, done);
+        for jump in std::mem::take(&mut self.exits) {
+            self.code.patch(jump, done);
+        }
+        Ok(())
     }
 
     /// `CallByVar Name, Number`: a late-bound call of the procedure `Name` + `Number`.

@@ -234,6 +234,8 @@ pub(crate) struct RoutineCompiler<'p> {
     pub(crate) ret_ty: Option<TypeId>,
     /// Nesting depth of the statement being compiled.
     pub(crate) stmt_depth: u16,
+    /// Jumps to the end of the construct being compiled (patched when it ends).
+    pub(crate) exits: Vec<u32>,
 }
 
 impl<'p> RoutineCompiler<'p> {
@@ -252,6 +254,7 @@ impl<'p> RoutineCompiler<'p> {
             local_types: Vec::new(),
             ret_ty: None,
             stmt_depth: 0,
+            exits: Vec::new(),
         }
     }
 

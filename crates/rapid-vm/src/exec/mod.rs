@@ -629,6 +629,17 @@ impl Vm {
                 self.push(Value::Bool(present));
             }
             Instr::Placeholder => return Err(self.error(Err::ExecPlaceholder, "a placeholder cannot be executed")),
+            Instr::PushTime => self.push(Value::Dnum(self.time)),
+            Instr::WaitPop => {
+                let seconds = self.pop_num()?;
+                self.frame_mut().pc = next;
+                return Ok(Some(Exit::Wait(seconds.max(0.0))));
+            }
+            Instr::RaiseWaitTimeout => {
+                return Err(
+                    self.error(Err::WaitMaxTime, "WaitUntil: the condition did not become TRUE within \\MaxTime")
+                )
+            }
             Instr::NameWithNumber => {
                 let number = self.pop_num()?;
                 let name = match self.pop() {
