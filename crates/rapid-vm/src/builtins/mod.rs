@@ -5,6 +5,7 @@
 
 mod clock;
 mod dialogs;
+mod geometry;
 mod math;
 mod pendant;
 mod strings;
@@ -184,6 +185,12 @@ pub static TABLE: &[(&str, BuiltinFn)] = &[
     ("DotProd", math::dot_prod),
     ("CrossProd", math::cross_prod),
     ("VectMagn", math::vect_magn),
+    ("OrientZYX", geometry::orient_zyx),
+    ("EulerZYX", geometry::euler_zyx),
+    ("NOrient", geometry::n_orient),
+    ("PoseMult", geometry::pose_mult),
+    ("PoseInv", geometry::pose_inv),
+    ("PoseVect", geometry::pose_vect),
     ("NumToDnum", math::num_to_dnum),
     ("DnumToNum", math::dnum_to_num),
     ("StrLen", strings::str_len),
