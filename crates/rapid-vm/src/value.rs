@@ -60,6 +60,8 @@ pub enum OpaqueState {
         accumulated: f64,
         started_at: Option<f64>,
     },
+    /// A rawbytes: its valid bytes (at most 1024).
+    RawBytes(Vec<u8>),
 }
 
 /// Where a data object (or a part of it) lives.

@@ -16,7 +16,8 @@ fn clock_state(ctx: &Ctx<'_>, arg: &Value) -> Result<(f64, Option<f64>, Opaque),
     match ctx.value(arg)? {
         Value::Opaque(opaque) => match opaque.state {
             OpaqueState::Clock { accumulated, started_at } => Ok((accumulated, started_at, *opaque)),
-            OpaqueState::None => Ok((0.0, None, *opaque)),
+            // A fresh clock (OpaqueState::None); the checker lets only clocks reach here.
+            _ => Ok((0.0, None, *opaque)),
         },
         _ => Err(ctx.error(Err::ArgValue, "a clock was expected")),
     }

@@ -3,11 +3,13 @@
 //! built-in's name to the Rust function that runs it. A built-in missing here is
 //! refused by the compiler with "not supported by `rapid run` yet".
 
+mod bits;
 mod clock;
 mod dialogs;
 mod geometry;
 mod math;
 mod pendant;
+mod rawbytes;
 mod strings;
 mod system;
 
@@ -128,6 +130,11 @@ pub fn present(arg: Option<&Value>) -> bool {
 pub static TABLE: &[(&str, BuiltinFn)] = &[
     ("TPWrite", pendant::tp_write),
     ("TPErase", pendant::tp_erase),
+    ("ClearRawBytes", rawbytes::clear_raw_bytes),
+    ("CopyRawBytes", rawbytes::copy_raw_bytes),
+    ("PackRawBytes", rawbytes::pack_raw_bytes),
+    ("UnpackRawBytes", rawbytes::unpack_raw_bytes),
+    ("RawBytesLen", rawbytes::raw_bytes_len),
     ("ErrWrite", pendant::err_write),
     ("TPReadNum", dialogs::tp_read_num),
     ("TPReadDnum", dialogs::tp_read_num),
@@ -202,6 +209,26 @@ pub static TABLE: &[(&str, BuiltinFn)] = &[
     ("NumToStr", strings::num_to_str),
     ("DnumToStr", strings::dnum_to_str),
     ("ValToStr", strings::val_to_str),
+    ("BitAnd", bits::bit_and),
+    ("BitOr", bits::bit_or),
+    ("BitXOr", bits::bit_xor),
+    ("BitNeg", bits::bit_neg),
+    ("BitLSh", bits::bit_lsh),
+    ("BitRSh", bits::bit_rsh),
+    ("BitCheck", bits::bit_check),
+    ("BitSet", bits::bit_set),
+    ("BitClear", bits::bit_clear),
+    ("BitAndDnum", bits::bit_and_dnum),
+    ("BitOrDnum", bits::bit_or_dnum),
+    ("BitXOrDnum", bits::bit_xor_dnum),
+    ("BitNegDnum", bits::bit_neg_dnum),
+    ("BitLShDnum", bits::bit_lsh_dnum),
+    ("BitRShDnum", bits::bit_rsh_dnum),
+    ("BitCheckDnum", bits::bit_check_dnum),
+    ("ByteToStr", bits::byte_to_str),
+    ("StrToByte", bits::str_to_byte),
+    ("DecToHex", bits::dec_to_hex),
+    ("HexToDec", bits::hex_to_dec),
 ];
 
 /// The implementation of the built-in named `name` (any letter case).
