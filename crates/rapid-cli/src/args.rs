@@ -45,6 +45,11 @@ pub(crate) struct RunArgs {
     #[arg(long)]
     pub(crate) save_pers: bool,
 
+    /// When the program ends, print the event log (ErrWrite, ErrLog, ErrRaise
+    /// entries) to stderr, oldest first.
+    #[arg(long)]
+    pub(crate) event_log: bool,
+
     /// Operator answers for pendant dialogs (TPReadNum, TPReadFK, UINumEntry, ...),
     /// one per line, used in order; lines starting with `#` are comments.
     #[arg(long, value_name = "FILE")]

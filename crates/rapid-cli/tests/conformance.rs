@@ -1,6 +1,6 @@
 //! The conformance corpus of `rapid run`: `tests/conformance/NAME.mod` with `NAME.out`
-//! (exact stdout), optional `NAME.exit` (exit status, default 0) and `NAME.err` (a
-//! fragment stderr must contain). Expected outputs were worked out by hand from the
+//! (exact stdout), optional `NAME.exit` (exit status, default 0), `NAME.err` (a
+//! fragment stderr must contain) and `NAME.args` (extra `rapid run` options). Expected outputs were worked out by hand from the
 //! manual (see tests/conformance/README.md).
 //!
 //! `tests/conformance/PENDING` lists programs the interpreter does not pass yet, one
@@ -21,8 +21,11 @@ struct Outcome {
 }
 
 fn run_one(module: &Path) -> Outcome {
+    // Optional NAME.args: extra `rapid run` options, separated by whitespace.
+    let extra = fs::read_to_string(module.with_extension("args")).unwrap_or_default();
     let out = Command::new(env!("CARGO_BIN_EXE_rapid"))
         .args(["run", "--max-steps", "50000000", "--max-time", "100000"])
+        .args(extra.split_whitespace())
         .arg(module)
         .output()
         .expect("run rapid");

@@ -7,6 +7,7 @@ pub mod builtins;
 pub mod compile;
 pub mod errnames;
 pub mod error;
+pub mod events;
 pub mod exec;
 pub mod format;
 pub mod host;
@@ -15,7 +16,7 @@ pub mod ops;
 pub mod persist;
 pub mod value;
 
-use rapid_sema::symbols::Def;
+use rapid_sema::symbols::{DeclOrigin, Def};
 use rapid_sema::{analyze, Diagnostic, Options, Program, SourceInput};
 use rapid_syntax::ast::RoutineKind;
 use rustc_hash::FxHashMap;
@@ -112,6 +113,8 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
         })
         .collect();
     vm.set_errnos(errnos);
+    let module_data = prog.datas.iter().enumerate().filter(|(_, d)| matches!(d.origin, DeclOrigin::Module { .. }));
+    vm.set_data_names(module_data.map(|(i, d)| (d.display.to_lowercase(), i as u32)).collect());
     vm.set_pers_globals(prog.datas.iter().map(|d| d.kind == rapid_sema::symbols::DataKind::Pers).collect());
     let entry_idx = prog.interner.get(entry).and_then(|sym| prog.scopes.globals.get(&sym).map(|o| o.def));
     let started = match entry_idx {

@@ -184,3 +184,25 @@ fn backward_execution_does_not_leave_compound_statements() {
     assert_eq!(machine.run(&mut host, 1_000), Exit::Stopped);
     assert_eq!(machine.step_backward(&mut host), Err(BackwardRefusal::InsideCompoundStatement));
 }
+
+#[test]
+fn the_event_log_keeps_each_entry_with_its_domain_number_kind_and_time() {
+    use rapid_vm::events::EventKind;
+    let src = "MODULE t\nPROC main()\n  WaitTime 2;\n  ErrLog 4801 \\W, \"Hot\", \"Motor 3\", ERRSTR_UNUSED, ERRSTR_UNUSED, ERRSTR_UNUSED;\n  ErrWrite \"Stop\", \"Door open\";\nENDPROC\nENDMODULE";
+    let mut machine = vm(src);
+    let mut host = RecordingHost::default();
+    loop {
+        match machine.run(&mut host, 1000) {
+            Exit::Wait(seconds) => machine.time += seconds,
+            Exit::Done => break,
+            other => panic!("unexpected exit {other:?}"),
+        }
+    }
+    let log = machine.event_log();
+    assert_eq!(log.len(), 2);
+    assert_eq!((log[0].domain, log[0].number, log[0].kind, log[0].code()), (8, 4801, EventKind::Warning, 84801));
+    assert_eq!((log[0].title.as_str(), log[0].lines.clone()), ("Hot", vec!["Motor 3".to_string()]));
+    assert_eq!(log[0].time, 2.0, "logged after the 2 s wait");
+    assert_eq!((log[1].code(), log[1].kind, log[1].title.as_str()), (80001, EventKind::Error, "Stop"));
+    assert_eq!(host.lines, vec!["Stop", "Door open"], "ErrWrite also shows its lines on the pendant");
+}

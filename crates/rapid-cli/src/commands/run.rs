@@ -81,6 +81,11 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         }
     };
     host.flush();
+    if args.event_log {
+        for event in loaded.vm.event_log() {
+            eprintln!("event {event}");
+        }
+    }
     if args.save_pers {
         save_persistents(&loaded, &inputs.modules)?;
     }

@@ -163,6 +163,12 @@ pub(crate) const ENTRIES: &[Entry] = &[
     // uncertain: the manual's blank set may contain more than the space.
     data(r#"CONST string STR_WHITE := " ";"#, "Blank characters."),
     data(r#"CONST string stEmpty := "";"#, "The empty string."),
+    // ---- errstr markers for ErrLog/ErrRaise arguments. The controller's stored texts are not
+    // public (uncertain); rapid-vm's events.rs expands exactly these values.
+    data(r#"CONST errstr ERRSTR_TASK := "<ERRSTR_TASK>";"#, "Event-log argument: the name of the task."),
+    data(r#"CONST errstr ERRSTR_CONTEXT := "<ERRSTR_CONTEXT>";"#, "Event-log argument: where the error happened."),
+    data(r#"CONST errstr ERRSTR_EMPTY := "<ERRSTR_EMPTY>";"#, "Event-log argument: an empty line."),
+    data(r#"CONST errstr ERRSTR_UNUSED := "<ERRSTR_UNUSED>";"#, "Event-log argument: not used, left out."),
     data(r#"CONST string EOF := "EOF";"#, "What ReadStr returns at end of file."),
     data("CONST num EOF_NUM := 9.998E36;", "What ReadNum returns at end of file."),
     data("CONST num EOF_BIN := -1;", "What ReadBin returns at end of file."),

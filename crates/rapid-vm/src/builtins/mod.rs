@@ -6,6 +6,7 @@
 mod bits;
 mod clock;
 mod dialogs;
+mod events;
 mod geometry;
 mod math;
 mod pendant;
@@ -50,6 +51,12 @@ pub struct Ctx<'a> {
     pub reset_retries: bool,
     /// The next free booked error number (BookErrNo).
     pub next_booked: &'a mut i32,
+    /// The event log (ErrWrite, ErrLog, ErrRaise).
+    pub events: &'a mut Vec<crate::events::Event>,
+    /// Module-level data by lower-case name.
+    pub data_by_name: &'a rustc_hash::FxHashMap<String, u32>,
+    /// The routine that made the call (ERRSTR_CONTEXT).
+    pub routine: &'a str,
 }
 
 impl Ctx<'_> {
@@ -151,6 +158,8 @@ pub static TABLE: &[(&str, BuiltinFn)] = &[
     ("RemainingRetries", system::remaining_retries),
     ("ResetRetryCount", system::reset_retry_count),
     ("SkipWarn", system::skip_warn),
+    ("ErrLog", events::err_log),
+    ("ErrRaise", events::err_raise),
     ("WaitTime", system::wait_time),
     ("ClkReset", clock::clk_reset),
     ("ClkStart", clock::clk_start),

@@ -3,6 +3,7 @@
 
 use super::{present, Ctx};
 use crate::error::RapidError;
+use crate::events::{Event, EventKind, USER_DOMAIN};
 use crate::format::{bool_to_text, dnum_to_text, num_to_text, orient_to_text, pos_to_text};
 use crate::value::Value;
 
@@ -42,12 +43,27 @@ pub(super) fn tp_erase(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Valu
     Ok(None)
 }
 
-/// `ErrWrite [\W] | [\I] Header Reason [\RL2] [\RL3] [\RL4]`: shown (and logged) as
-/// its header and reason lines.
+/// `ErrWrite [\W] | [\I] Header Reason [\RL2] [\RL3] [\RL4]`: shown on the pendant
+/// as its header and reason lines, and logged as user event 80001 (error), 80002
+/// (`\W`) or 80003 (`\I`).
 pub(super) fn err_write(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
-    for arg in args.iter().filter(|a| matches!(a, Value::Str(_) | Value::Ref(_))) {
-        let text = ctx.string(arg)?;
-        ctx.host.tp_write(&text);
+    let (number, kind) = if present(args.first()) {
+        (2, EventKind::Warning)
+    } else if present(args.get(1)) {
+        (3, EventKind::Info)
+    } else {
+        (1, EventKind::Error)
+    };
+    let mut texts = Vec::new();
+    for arg in args[2..].iter().filter(|a| present(Some(a))) {
+        texts.push(ctx.string(arg)?);
     }
+    for text in &texts {
+        ctx.host.tp_write(text);
+    }
+    let mut texts = texts.into_iter();
+    let title = texts.next().unwrap_or_default();
+    let event = Event { domain: USER_DOMAIN, number, kind, time: ctx.time, title, lines: texts.collect() };
+    ctx.events.push(event);
     Ok(None)
 }

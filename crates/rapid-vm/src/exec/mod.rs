@@ -30,7 +30,7 @@ pub const MAX_RETRIES: u32 = 4;
 /// Calls nested deeper than this stop the program (runaway recursion).
 pub const MAX_CALL_DEPTH: usize = 10_000;
 /// The first number BookErrNo hands out.
-const FIRST_BOOKED_ERRNO: i32 = 5000;
+pub(crate) const FIRST_BOOKED_ERRNO: i32 = 5000;
 
 /// Why `run` returned.
 #[derive(Debug, Clone, PartialEq)]
@@ -106,6 +106,10 @@ pub struct Vm {
     pub time: f64,
     /// Instructions executed so far.
     pub steps: u64,
+    /// What ErrWrite, ErrLog and ErrRaise logged, oldest first.
+    events: Vec<crate::events::Event>,
+    /// Module-level data by lower-case name (ErrRaise names its errnum as text).
+    data_by_name: FxHashMap<String, u32>,
 }
 
 impl Vm {
@@ -135,6 +139,8 @@ impl Vm {
             init: None,
             time: 0.0,
             steps: 0,
+            events: Vec::new(),
+            data_by_name: FxHashMap::default(),
         }
     }
 
@@ -146,6 +152,16 @@ impl Vm {
     /// Marks which globals are persistents.
     pub fn set_pers_globals(&mut self, pers: Vec<bool>) {
         self.pers_globals = pers;
+    }
+
+    /// Names module-level data for built-ins that take a data name as text (ErrRaise).
+    pub fn set_data_names(&mut self, names: FxHashMap<String, u32>) {
+        self.data_by_name = names;
+    }
+
+    /// The event log written so far, oldest first.
+    pub fn event_log(&self) -> &[crate::events::Event] {
+        &self.events
     }
 
     /// The value of global `idx`.
@@ -586,6 +602,9 @@ impl Vm {
             retries_left: MAX_RETRIES.saturating_sub(self.frames.last().map_or(0, |f| f.retries)),
             reset_retries: false,
             next_booked: &mut self.next_booked,
+            events: &mut self.events,
+            data_by_name: &self.data_by_name,
+            routine: self.frames.last().map_or("", |f| f.code.name.as_str()),
         };
         let res = crate::builtins::function(id)(&mut ctx, args)?;
         let (wait, stop, reset) = (ctx.wait, ctx.stop, ctx.reset_retries);

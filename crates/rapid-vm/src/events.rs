@@ -1,0 +1,75 @@
+//! The controller's event log as RAPID writes to it: ErrWrite, ErrLog, ErrRaise and
+//! errors that reach the system error handler. Clients read it through
+//! [`crate::exec::Vm::event_log`]; `rapid run --event-log` prints it.
+
+use std::fmt;
+
+/// The user domain (USER_DEF_ERR): what ErrWrite, ErrLog and ErrRaise write.
+pub const USER_DOMAIN: u32 = 8;
+/// The program domain (PROGRAM_ERR): errors stopped by the system error handler.
+pub const PROGRAM_DOMAIN: u32 = 4;
+
+/// How serious an event is (the `\W` and `\I` switches of ErrWrite and ErrLog).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum EventKind {
+    Error,
+    Warning,
+    Info,
+}
+
+/// One event-log entry.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Event {
+    pub domain: u32,
+    /// The number inside the domain (ErrLog's ErrorId, 1..3 for ErrWrite).
+    pub number: u32,
+    pub kind: EventKind,
+    /// Controller time (virtual seconds) when it was logged.
+    pub time: f64,
+    pub title: String,
+    /// The message lines after the title, unused arguments left out.
+    pub lines: Vec<String>,
+}
+
+impl Event {
+    /// The code the pendant shows: domain × 10000 + number (80001 for an ErrWrite).
+    /// The ×10000 layout is how the public manuals write the ErrWrite codes (80001,
+    /// 80002, 80003); that ErrLog's 4800 shows as 84800 follows from it (uncertain).
+    pub fn code(&self) -> u32 {
+        self.domain * 10_000 + self.number
+    }
+}
+
+impl fmt::Display for Event {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let kind = match self.kind {
+            EventKind::Error => "error",
+            EventKind::Warning => "warning",
+            EventKind::Info => "information",
+        };
+        write!(f, "{} {kind}: {}", self.code(), self.title)?;
+        for line in &self.lines {
+            write!(f, "\n    {line}")?;
+        }
+        Ok(())
+    }
+}
+
+/// The four predefined `errstr` markers (declared in the catalogue's data.rs). The
+/// controller fills in the task name and the error context for the first two,
+/// shows an empty line for ERRSTR_EMPTY and leaves ERRSTR_UNUSED out.
+pub const ERRSTR_TASK: &str = "<ERRSTR_TASK>";
+pub const ERRSTR_CONTEXT: &str = "<ERRSTR_CONTEXT>";
+pub const ERRSTR_EMPTY: &str = "<ERRSTR_EMPTY>";
+pub const ERRSTR_UNUSED: &str = "<ERRSTR_UNUSED>";
+
+/// An errstr argument as the log shows it; `None` for ERRSTR_UNUSED.
+pub fn expand_errstr(text: &str, task: &str, context: &str) -> Option<String> {
+    match text {
+        ERRSTR_UNUSED => None,
+        ERRSTR_EMPTY => Some(String::new()),
+        ERRSTR_TASK => Some(task.to_string()),
+        ERRSTR_CONTEXT => Some(context.to_string()),
+        other => Some(other.to_string()),
+    }
+}
