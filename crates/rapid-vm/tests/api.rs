@@ -206,3 +206,17 @@ fn the_event_log_keeps_each_entry_with_its_domain_number_kind_and_time() {
     assert_eq!((log[1].code(), log[1].kind, log[1].title.as_str()), (80001, EventKind::Error, "Stop"));
     assert_eq!(host.lines, vec!["Stop", "Door open"], "ErrWrite also shows its lines on the pendant");
 }
+
+#[test]
+fn an_error_nothing_handles_is_logged_in_the_program_domain() {
+    let src = "MODULE t\nPROC main()\n  VAR num zero;\n  TPWrite \"x\" \\Num:=1 / zero;\nENDPROC\nENDMODULE";
+    let mut machine = vm(src);
+    let mut host = RecordingHost::default();
+    let Exit::Unhandled(unhandled) = machine.run(&mut host, 1000) else { panic!("the division must fail") };
+    let log = machine.event_log();
+    assert_eq!(log.len(), 1);
+    assert_eq!(log[0].domain, rapid_vm::events::PROGRAM_DOMAIN);
+    assert_eq!(log[0].number as i32, unhandled.error.errno);
+    assert!(log[0].title.contains("ERR_DIVZERO"), "title: {}", log[0].title);
+    assert_eq!(log[0].lines, vec!["routine main".to_string()]);
+}

@@ -251,14 +251,13 @@ impl Vm {
                 break;
             }
             // The instruction at pc needs the general path.
-            match self.step(host) {
-                Ok(None) => {}
-                Ok(Some(exit)) => return exit,
-                Err(error) => {
-                    if let Some(exit) = self.raise(error) {
-                        return exit;
-                    }
-                }
+            let exit = match self.step(host) {
+                Ok(exit) => exit,
+                Err(error) => self.raise(error),
+            };
+            if let Some(exit) = exit {
+                self.log_if_unhandled(&exit);
+                return exit;
             }
         }
         if self.frames.is_empty() {
@@ -266,6 +265,22 @@ impl Vm {
         } else {
             Exit::Budget
         }
+    }
+
+    /// The system error handler's event-log entry for an error nothing handled:
+    /// program domain, the error's number, its name and message, where it happened.
+    /// The controller's own numbering of these entries is not public (uncertain).
+    fn log_if_unhandled(&mut self, exit: &Exit) {
+        let Exit::Unhandled(unhandled) = exit else { return };
+        let number = u32::try_from(unhandled.error.errno).unwrap_or(0);
+        self.events.push(crate::events::Event {
+            domain: crate::events::PROGRAM_DOMAIN,
+            number,
+            kind: crate::events::EventKind::Error,
+            time: self.time,
+            title: unhandled.error.to_string(),
+            lines: vec![format!("routine {}", unhandled.routine)],
+        });
     }
 
     fn frame(&self) -> &Frame {
