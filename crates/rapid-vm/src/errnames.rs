@@ -29,6 +29,7 @@ errors! {
     TooManyRetries = "ERR_EXCRTYMAX",
     ExecPlaceholder = "ERR_EXECPHR",
     IntNotValue = "ERR_INT_NOTVAL",
+    IntMaxValue = "ERR_INT_MAXVAL",
     ArgValue = "ERR_ARGVALERR",
     NumLimit = "ERR_NUM_LIMIT",
     IllegalDim = "ERR_ILLDIM",

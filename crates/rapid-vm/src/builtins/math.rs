@@ -68,46 +68,103 @@ fn decimals(ctx: &Ctx<'_>, arg: Option<&Value>) -> Result<i32, RapidError> {
     }
 }
 
-fn degrees(ctx: &mut Ctx<'_>, args: &[Value], f: impl Fn(f64) -> f64) -> Res {
+/// A trigonometric result: num for Sin/Cos/..., dnum for the `...Dnum` forms.
+fn trig_result(dnum: bool, x: f64) -> Value {
+    if dnum {
+        Value::Dnum(x)
+    } else {
+        Value::Num(x as f32)
+    }
+}
+
+fn degrees(ctx: &mut Ctx<'_>, args: &[Value], dnum: bool, f: impl Fn(f64) -> f64) -> Res {
     let x = ctx.num(&args[0])?;
-    Ok(Some(Value::Num(f(x.to_radians()) as f32)))
+    Ok(Some(trig_result(dnum, f(x.to_radians()))))
 }
 
 pub(super) fn sin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    degrees(ctx, args, f64::sin)
+    degrees(ctx, args, false, f64::sin)
 }
 
 pub(super) fn cos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    degrees(ctx, args, f64::cos)
+    degrees(ctx, args, false, f64::cos)
 }
 
 pub(super) fn tan(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    degrees(ctx, args, f64::tan)
+    degrees(ctx, args, false, f64::tan)
 }
 
-fn inverse(ctx: &mut Ctx<'_>, args: &[Value], unit_range: bool, f: impl Fn(f64) -> f64) -> Res {
+pub(super) fn sin_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    degrees(ctx, args, true, f64::sin)
+}
+
+pub(super) fn cos_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    degrees(ctx, args, true, f64::cos)
+}
+
+pub(super) fn tan_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    degrees(ctx, args, true, f64::tan)
+}
+
+fn inverse(ctx: &mut Ctx<'_>, args: &[Value], unit_range: bool, dnum: bool, f: impl Fn(f64) -> f64) -> Res {
     let x = ctx.num(&args[0])?;
     if unit_range && !(-1.0..=1.0).contains(&x) {
         return Err(ctx.error(Err::ArgValue, format!("{x} is outside -1..1")));
     }
-    Ok(Some(Value::Num(f(x).to_degrees() as f32)))
+    Ok(Some(trig_result(dnum, f(x).to_degrees())))
 }
 
 pub(super) fn asin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    inverse(ctx, args, true, f64::asin)
+    inverse(ctx, args, true, false, f64::asin)
 }
 
 pub(super) fn acos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    inverse(ctx, args, true, f64::acos)
+    inverse(ctx, args, true, false, f64::acos)
 }
 
 pub(super) fn atan(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    inverse(ctx, args, false, f64::atan)
+    inverse(ctx, args, false, false, f64::atan)
+}
+
+pub(super) fn asin_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    inverse(ctx, args, true, true, f64::asin)
+}
+
+pub(super) fn acos_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    inverse(ctx, args, true, true, f64::acos)
+}
+
+pub(super) fn atan_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    inverse(ctx, args, false, true, f64::atan)
 }
 
 pub(super) fn atan2(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (y, x) = (ctx.num(&args[0])?, ctx.num(&args[1])?);
-    Ok(Some(Value::Num(y.atan2(x).to_degrees() as f32)))
+    Ok(Some(trig_result(false, y.atan2(x).to_degrees())))
+}
+
+pub(super) fn atan2_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (y, x) = (ctx.num(&args[0])?, ctx.num(&args[1])?);
+    Ok(Some(trig_result(true, y.atan2(x).to_degrees())))
+}
+
+/// `TryInt DataObj | DataObj2`: a num must hold an integer of at most 8388608 in
+/// magnitude, a dnum one of at most 4503599627370496 (the exact-integer ranges,
+/// docs/semantics.md). Which of ERR_INT_NOTVAL / ERR_INT_MAXVAL the controller
+/// raises for a too-large integer is our reading of their names (uncertain).
+pub(super) fn try_int(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let value = ctx.value(first_present(&args[..2]))?;
+    let (x, limit) = match value {
+        Value::Dnum(d) => (d, 4_503_599_627_370_496.0),
+        other => (ctx.num(&other)?, 8_388_608.0),
+    };
+    if x.fract() != 0.0 || !x.is_finite() {
+        return Err(ctx.error(Err::IntNotValue, format!("{x} is not an integer")));
+    }
+    if x.abs() > limit {
+        return Err(ctx.error(Err::IntMaxValue, format!("{x} is beyond the exact integers ({limit})")));
+    }
+    Ok(None)
 }
 
 /// The first argument of a required `Name | Dname` pair that was passed.

@@ -4,6 +4,7 @@
 //! refused by the compiler with "not supported by `rapid run` yet".
 
 mod bits;
+mod calendar;
 mod clock;
 mod dialogs;
 mod events;
@@ -57,6 +58,8 @@ pub struct Ctx<'a> {
     pub data_by_name: &'a rustc_hash::FxHashMap<String, u32>,
     /// The routine that made the call (ERRSTR_CONTEXT).
     pub routine: &'a str,
+    /// Wall-clock seconds since 1970 when the program was loaded (CDate, CTime).
+    pub wall_epoch: f64,
 }
 
 impl Ctx<'_> {
@@ -194,6 +197,18 @@ pub static TABLE: &[(&str, BuiltinFn)] = &[
     ("ACos", math::acos),
     ("ATan", math::atan),
     ("ATan2", math::atan2),
+    ("SinDnum", math::sin_dnum),
+    ("CosDnum", math::cos_dnum),
+    ("TanDnum", math::tan_dnum),
+    ("ASinDnum", math::asin_dnum),
+    ("ACosDnum", math::acos_dnum),
+    ("ATanDnum", math::atan_dnum),
+    ("ATan2Dnum", math::atan2_dnum),
+    ("TryInt", math::try_int),
+    ("CDate", calendar::c_date),
+    ("CTime", calendar::c_time),
+    ("GetTime", calendar::get_time),
+    ("GetTaskName", system::get_task_name),
     ("Incr", math::incr),
     ("Decr", math::decr),
     ("Add", math::add),

@@ -110,6 +110,9 @@ pub struct Vm {
     events: Vec<crate::events::Event>,
     /// Module-level data by lower-case name (ErrRaise names its errnum as text).
     data_by_name: FxHashMap<String, u32>,
+    /// Wall-clock seconds since 1970 when the VM was made: the calendar clock is this
+    /// plus the controller time.
+    wall_epoch: f64,
 }
 
 impl Vm {
@@ -141,6 +144,9 @@ impl Vm {
             steps: 0,
             events: Vec::new(),
             data_by_name: FxHashMap::default(),
+            wall_epoch: std::time::SystemTime::now()
+                .duration_since(std::time::UNIX_EPOCH)
+                .map_or(0.0, |d| d.as_secs_f64()),
         }
     }
 
@@ -620,6 +626,7 @@ impl Vm {
             events: &mut self.events,
             data_by_name: &self.data_by_name,
             routine: self.frames.last().map_or("", |f| f.code.name.as_str()),
+            wall_epoch: self.wall_epoch,
         };
         let res = crate::builtins::function(id)(&mut ctx, args)?;
         let (wait, stop, reset) = (ctx.wait, ctx.stop, ctx.reset_retries);
