@@ -114,7 +114,11 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
         .collect();
     vm.set_errnos(errnos);
     let module_data = prog.datas.iter().enumerate().filter(|(_, d)| matches!(d.origin, DeclOrigin::Module { .. }));
-    vm.set_data_names(module_data.map(|(i, d)| (d.display.to_lowercase(), i as u32)).collect());
+    let named = |(i, d): (usize, &rapid_sema::symbols::DataInfo)| {
+        let constant = d.kind == rapid_sema::symbols::DataKind::Const;
+        (d.display.to_lowercase(), builtins::NamedData { global: i as u32, constant })
+    };
+    vm.set_data_names(module_data.map(named).collect());
     vm.set_pers_globals(prog.datas.iter().map(|d| d.kind == rapid_sema::symbols::DataKind::Pers).collect());
     let entry_idx = prog.interner.get(entry).and_then(|sym| prog.scopes.globals.get(&sym).map(|o| o.def));
     let started = match entry_idx {

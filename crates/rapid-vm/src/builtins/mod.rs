@@ -13,6 +13,7 @@ mod math;
 mod pendant;
 mod rawbytes;
 mod strings;
+mod symbols;
 mod system;
 
 use rapid_sema::types::TypeId;
@@ -55,7 +56,7 @@ pub struct Ctx<'a> {
     /// The event log (ErrWrite, ErrLog, ErrRaise).
     pub events: &'a mut Vec<crate::events::Event>,
     /// Module-level data by lower-case name.
-    pub data_by_name: &'a rustc_hash::FxHashMap<String, u32>,
+    pub data_by_name: &'a rustc_hash::FxHashMap<String, NamedData>,
     /// The routine that made the call (ERRSTR_CONTEXT).
     pub routine: &'a str,
     /// Wall-clock seconds since 1970 when the program was loaded (CDate, CTime).
@@ -119,6 +120,13 @@ impl Ctx<'_> {
     pub fn pos_ty(&self) -> TypeId {
         self.types.pos
     }
+}
+
+/// Module-level data that built-ins find by name (ErrRaise, GetDataVal, SetDataVal).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct NamedData {
+    pub global: u32,
+    pub constant: bool,
 }
 
 /// How a built-in ends the normal flow.
@@ -209,6 +217,8 @@ pub static TABLE: &[(&str, BuiltinFn)] = &[
     ("CTime", calendar::c_time),
     ("GetTime", calendar::get_time),
     ("GetTaskName", system::get_task_name),
+    ("GetDataVal", symbols::get_data_val),
+    ("SetDataVal", symbols::set_data_val),
     ("Incr", math::incr),
     ("Decr", math::decr),
     ("Add", math::add),

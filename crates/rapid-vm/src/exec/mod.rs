@@ -109,7 +109,7 @@ pub struct Vm {
     /// What ErrWrite, ErrLog and ErrRaise logged, oldest first.
     events: Vec<crate::events::Event>,
     /// Module-level data by lower-case name (ErrRaise names its errnum as text).
-    data_by_name: FxHashMap<String, u32>,
+    data_by_name: FxHashMap<String, crate::builtins::NamedData>,
     /// Wall-clock seconds since 1970 when the VM was made: the calendar clock is this
     /// plus the controller time.
     wall_epoch: f64,
@@ -161,7 +161,7 @@ impl Vm {
     }
 
     /// Names module-level data for built-ins that take a data name as text (ErrRaise).
-    pub fn set_data_names(&mut self, names: FxHashMap<String, u32>) {
+    pub fn set_data_names(&mut self, names: FxHashMap<String, crate::builtins::NamedData>) {
         self.data_by_name = names;
     }
 

@@ -1,0 +1,81 @@
+//! Data found by name at run time (§1.6 "数据搜索"): GetDataVal and SetDataVal.
+//! `rapid run` runs one task, so the names are the task's module-level data; routine
+//! data is not reached by name (whether the controller reaches the calling
+//! routine's own data is not in the public record: uncertain). The `\Block` form needs GetNextSym's datapos, which is not
+//! implemented yet, so it stops the program with a clear message.
+
+use super::{present, Ctx, NamedData};
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::Value;
+
+type Res = Result<Option<Value>, RapidError>;
+
+/// The task `rapid run` runs.
+const TASK_NAME: &str = "T_ROB1";
+
+/// Finds `Object` after checking the task options (`\Block | \TaskRef | \TaskName`).
+fn lookup(ctx: &Ctx<'_>, args: &[Value]) -> Result<NamedData, RapidError> {
+    if present(args.get(1)) {
+        return Err(RapidError::fatal("GetDataVal/SetDataVal \\Block is not supported by `rapid run` yet"));
+    }
+    if present(args.get(3)) {
+        let task = ctx.string(&args[3])?;
+        if !task.eq_ignore_ascii_case(TASK_NAME) {
+            return Err(ctx.error(Err::TaskName, format!("no task `{task}` (rapid run runs {TASK_NAME})")));
+        }
+    }
+    let name = ctx.string(&args[0])?;
+    ctx.data_by_name
+        .get(&name.to_lowercase())
+        .copied()
+        .ok_or_else(|| ctx.error(Err::SymAccess, format!("no module-level data named `{name}`")))
+}
+
+/// Whether two values have the same data type and shape (array sizes included).
+fn same_type(a: &Value, b: &Value) -> bool {
+    match (a, b) {
+        (Value::Num(_), Value::Num(_))
+        | (Value::Dnum(_), Value::Dnum(_))
+        | (Value::Bool(_), Value::Bool(_))
+        | (Value::Str(_), Value::Str(_)) => true,
+        (Value::Record(x), Value::Record(y)) => x.ty == y.ty,
+        (Value::Array(x), Value::Array(y)) => {
+            x.dims == y.dims && x.elems.first().zip(y.elems.first()).is_none_or(|(p, q)| same_type(p, q))
+        }
+        _ => false,
+    }
+}
+
+fn type_error(ctx: &Ctx<'_>, name: &str) -> RapidError {
+    ctx.error(Err::SymbolType, format!("`{name}` is not of the type of the Value argument"))
+}
+
+/// `GetDataVal Object [\Block]|[\TaskRef]|[\TaskName] Value`: copies the named data
+/// into Value, which must be of the same type (else ERR_SYMBOL_TYPE).
+pub(super) fn get_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let named = lookup(ctx, args)?;
+    let found = ctx.storage.globals[named.global as usize].clone();
+    let target = &args[4];
+    if !same_type(&found, &ctx.value(target)?) {
+        return Err(type_error(ctx, &ctx.string(&args[0])?));
+    }
+    ctx.store(target, found)?;
+    Ok(None)
+}
+
+/// `SetDataVal Object [\Block]|[\TaskRef]|[\TaskName] Value`: writes Value into the
+/// named data. A constant cannot be written (ERR_SYM_ACCESS).
+pub(super) fn set_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let named = lookup(ctx, args)?;
+    let name = ctx.string(&args[0])?;
+    if named.constant {
+        return Err(ctx.error(Err::SymAccess, format!("`{name}` is a constant")));
+    }
+    let value = ctx.value(&args[4])?;
+    if !same_type(&ctx.storage.globals[named.global as usize], &value) {
+        return Err(type_error(ctx, &name));
+    }
+    ctx.storage.globals[named.global as usize] = value;
+    Ok(None)
+}
