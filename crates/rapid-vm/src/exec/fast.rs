@@ -55,7 +55,7 @@ impl Vm {
                     match (stack.last(), &stack[at]) {
                         (Some(&Value::Num(n)), Value::Num(_)) => {
                             drop_plain(stack.pop());
-                            stack[at] = Value::Num(n);
+                            set_num(&mut stack[at], n);
                         }
                         (Some(&Value::Bool(b)), Value::Bool(_)) => {
                             drop_plain(stack.pop());
@@ -74,8 +74,7 @@ impl Vm {
                     let (a, b) = (*a, *b);
                     let Some(res) = fast_num_op(op, a, b) else { break true };
                     drop_plain(stack.pop());
-                    drop_plain(stack.pop());
-                    stack.push(res);
+                    put_result(stack.last_mut(), res);
                 }
                 Instr::BinOp { op, lhs, rhs } => {
                     let num_at = |operand: crate::ir::Operand, stack: &Vec<Value>, depth: usize| match operand {
@@ -96,13 +95,16 @@ impl Vm {
                     let lhs_depth = usize::from(rhs_on_stack);
                     let (Some(a), Some(b)) = (num_at(lhs, stack, lhs_depth), num_at(rhs, stack, 0)) else { break true };
                     let Some(res) = fast_num_op(op, a, b) else { break true };
-                    if rhs_on_stack {
-                        drop_plain(stack.pop());
+                    // The result takes the place of the deepest stack operand, written
+                    // in place; with no stack operand it is pushed.
+                    match (lhs == crate::ir::Operand::Stack, rhs_on_stack) {
+                        (true, true) => {
+                            drop_plain(stack.pop());
+                            put_result(stack.last_mut(), res);
+                        }
+                        (true, false) | (false, true) => put_result(stack.last_mut(), res),
+                        (false, false) => stack.push(res.into_value()),
                     }
-                    if lhs == crate::ir::Operand::Stack {
-                        drop_plain(stack.pop());
-                    }
-                    stack.push(res);
                 }
                 Instr::LoadElem { global: false, slot, n: 1 } => {
                     let len = stack.len();
@@ -180,12 +182,54 @@ impl Vm {
     }
 }
 
+/// The result of a fast num operation. Kept apart from `Value` so that a result can be
+/// written into an existing num slot as a bare f32: building a whole `Value` in a
+/// temporary and copying it costs a store-forwarding stall on every operation
+/// (measured with perf on bench/interp/arith).
+#[derive(Clone, Copy)]
+enum FastResult {
+    Num(f32),
+    Bool(bool),
+}
+
+impl FastResult {
+    #[inline(always)]
+    fn into_value(self) -> Value {
+        match self {
+            FastResult::Num(n) => Value::Num(n),
+            FastResult::Bool(b) => Value::Bool(b),
+        }
+    }
+}
+
+/// Overwrites a stack slot that holds a num or bool operand with a result.
+#[inline(always)]
+fn put_result(slot: Option<&mut Value>, res: FastResult) {
+    let Some(slot) = slot else { return };
+    match (res, &mut *slot) {
+        (FastResult::Num(n), Value::Num(x)) => *x = n,
+        (FastResult::Bool(b), Value::Bool(x)) => *x = b,
+        (res, slot) => {
+            // The old value is a num or bool: nothing to free.
+            std::mem::forget(std::mem::replace(slot, res.into_value()));
+        }
+    }
+}
+
+/// Writes a num into a slot that already holds a num.
+#[inline(always)]
+fn set_num(slot: &mut Value, n: f32) {
+    if let Value::Num(x) = slot {
+        *x = n;
+    }
+}
+
 /// num arithmetic and comparisons the fast loop does itself; `None` sends the
 /// instruction to the general path (errors, non-integer DIV/MOD, AND/OR).
 #[inline(always)]
-fn fast_num_op(op: rapid_syntax::ast::BinaryOp, a: f32, b: f32) -> Option<Value> {
+fn fast_num_op(op: rapid_syntax::ast::BinaryOp, a: f32, b: f32) -> Option<FastResult> {
     use rapid_syntax::ast::BinaryOp as B;
-    let finite = |x: f32| x.is_finite().then_some(Value::Num(x));
+    let finite = |x: f32| x.is_finite().then_some(FastResult::Num(x));
     Some(match op {
         B::Add => finite(a + b)?,
         B::Sub => finite(a - b)?,
@@ -200,14 +244,14 @@ fn fast_num_op(op: rapid_syntax::ast::BinaryOp, a: f32, b: f32) -> Option<Value>
             if y == 0 || x as f32 != a || y as f32 != b || x == i32::MIN {
                 return None;
             }
-            Value::Num(if op == B::Mod { (x % y) as f32 } else { (x / y) as f32 })
+            FastResult::Num(if op == B::Mod { (x % y) as f32 } else { (x / y) as f32 })
         }
-        B::Lt => Value::Bool(a < b),
-        B::Le => Value::Bool(a <= b),
-        B::Gt => Value::Bool(a > b),
-        B::Ge => Value::Bool(a >= b),
-        B::Eq => Value::Bool(a == b),
-        B::Ne => Value::Bool(a != b),
+        B::Lt => FastResult::Bool(a < b),
+        B::Le => FastResult::Bool(a <= b),
+        B::Gt => FastResult::Bool(a > b),
+        B::Ge => FastResult::Bool(a >= b),
+        B::Eq => FastResult::Bool(a == b),
+        B::Ne => FastResult::Bool(a != b),
         _ => return None,
     })
 }
