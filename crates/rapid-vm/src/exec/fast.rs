@@ -82,8 +82,16 @@ impl Vm {
                             Some(Value::Num(n)) => Some(*n),
                             _ => None,
                         },
-                        crate::ir::Operand::Local(slot) => match stack[base + slot as usize] {
-                            Value::Num(n) => Some(n),
+                        crate::ir::Operand::Local(slot) => match &stack[base + slot as usize] {
+                            Value::Num(n) => Some(*n),
+                            // A VAR parameter referring to a whole num in a caller's slot.
+                            Value::Ref(place) if place.path.is_empty() => match place.root {
+                                Root::Stack(at) => match stack[at as usize] {
+                                    Value::Num(n) => Some(n),
+                                    _ => None,
+                                },
+                                Root::Global(_) => None,
+                            },
                             _ => None,
                         },
                         crate::ir::Operand::Const(i) => match code.consts[i as usize] {
