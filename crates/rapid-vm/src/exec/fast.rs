@@ -40,7 +40,10 @@ impl Vm {
                             Value::Num(n) => stack.push(Value::Num(n)),
                             _ => break true,
                         },
-                        Root::Global(_) => break true,
+                        Root::Global(idx) => match self.storage.globals.get(idx as usize) {
+                            Some(&Value::Num(n)) => stack.push(Value::Num(n)),
+                            _ => break true,
+                        },
                     },
                     _ => break true,
                 },
@@ -49,6 +52,18 @@ impl Vm {
                     if let Value::Ref(place) = &stack[at] {
                         match (place.path.is_empty(), place.root) {
                             (true, Root::Stack(target)) => at = target as usize,
+                            // A VAR parameter referring to a whole module-level num.
+                            (true, Root::Global(idx)) => {
+                                let (Some(&Value::Num(n)), Some(Value::Num(x))) =
+                                    (stack.last(), self.storage.globals.get_mut(idx as usize))
+                                else {
+                                    break true;
+                                };
+                                *x = n;
+                                drop_plain(stack.pop());
+                                pc += 1;
+                                continue;
+                            }
                             _ => break true,
                         }
                     }
@@ -77,6 +92,7 @@ impl Vm {
                     put_result(stack.last_mut(), res);
                 }
                 Instr::BinOp { op, lhs, rhs } => {
+                    let globals = &self.storage.globals;
                     let num_at = |operand: crate::ir::Operand, stack: &Vec<Value>, depth: usize| match operand {
                         crate::ir::Operand::Stack => match stack.get(stack.len().wrapping_sub(depth + 1)) {
                             Some(Value::Num(n)) => Some(*n),
@@ -90,7 +106,10 @@ impl Vm {
                                     Value::Num(n) => Some(n),
                                     _ => None,
                                 },
-                                Root::Global(_) => None,
+                                Root::Global(idx) => match globals.get(idx as usize) {
+                                    Some(&Value::Num(n)) => Some(n),
+                                    _ => None,
+                                },
                             },
                             _ => None,
                         },
