@@ -2,7 +2,7 @@ MODULE data_by_name
     ! GetDataVal and SetDataVal reach module-level data through its name as text
     ! (case-insensitive, like every RAPID name). Value must have the data's type
     ! (else ERR_SYMBOL_TYPE); an unknown name gives ERR_SYM_ACCESS, and so does
-    ! writing a constant.
+    ! writing a constant; a task other than T_ROB1 gives ERR_TASKNAME.
     VAR num counter := 7;
     PERS string label := "first";
     CONST num limit := 99;
@@ -30,6 +30,17 @@ MODULE data_by_name
         try_get_bool;
         try_set_constant;
         try_unknown;
+        try_other_task;
+    ENDPROC
+
+    ! rapid run runs the one task T_ROB1: another task name is ERR_TASKNAME.
+    PROC try_other_task()
+        VAR num n;
+        GetDataVal "counter" \TaskName:="T_ROB2", n;
+        TPWrite "not reached";
+    ERROR
+        IF ERRNO = ERR_TASKNAME TPWrite "no such task";
+        RETURN;
     ENDPROC
 
     PROC try_get_bool()
