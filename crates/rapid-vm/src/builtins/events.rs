@@ -1,14 +1,11 @@
 //! Writing to the event log from RAPID: ErrLog and ErrRaise (ErrWrite, which also
 //! shows its text on the pendant, lives with the pendant output).
 
-use super::{present, Ctx};
+use super::{present, Ctx, TASK_NAME};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::events::{expand_errstr, Event, EventKind, USER_DOMAIN};
 use crate::value::Value;
-
-/// The task `rapid run` runs (ERRSTR_TASK).
-const TASK_NAME: &str = "T_ROB1";
 
 /// ErrLog and ErrRaise take event numbers 4800..4999 of the user domain. The public
 /// record does not say which error an out-of-range number gives; we raise
@@ -76,8 +73,7 @@ fn booked_number(ctx: &Ctx<'_>, name: &str) -> Result<i32, RapidError> {
         return Err(ctx.error(Err::ArgValue, format!("ErrRaise: no errnum data named `{name}`")));
     };
     let errno = value as i32;
-    let booked = f64::from(errno) == value && errno >= crate::exec::FIRST_BOOKED_ERRNO && errno < *ctx.next_booked;
-    if !booked {
+    if f64::from(errno) != value || !crate::exec::is_booked(errno, *ctx.next_booked) {
         return Err(
             ctx.error(Err::ArgValue, format!("ErrRaise: `{name}` holds {value}, not a number booked by BookErrNo"))
         );

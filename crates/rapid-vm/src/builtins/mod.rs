@@ -122,6 +122,9 @@ impl Ctx<'_> {
     }
 }
 
+/// The one program task `rapid run` runs (GetTaskName, ERRSTR_TASK, \TaskName).
+pub(crate) const TASK_NAME: &str = "T_ROB1";
+
 /// Module-level data that built-ins find by name (ErrRaise, GetDataVal, SetDataVal).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct NamedData {

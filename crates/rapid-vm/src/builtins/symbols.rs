@@ -4,15 +4,12 @@
 //! routine's own data is not in the public record: uncertain). The `\Block` form needs GetNextSym's datapos, which is not
 //! implemented yet, so it stops the program with a clear message.
 
-use super::{present, Ctx, NamedData};
+use super::{present, Ctx, NamedData, TASK_NAME};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
 
 type Res = Result<Option<Value>, RapidError>;
-
-/// The task `rapid run` runs.
-const TASK_NAME: &str = "T_ROB1";
 
 /// Finds `Object` after checking the task options (`\Block | \TaskRef | \TaskName`).
 fn lookup(ctx: &Ctx<'_>, args: &[Value]) -> Result<NamedData, RapidError> {

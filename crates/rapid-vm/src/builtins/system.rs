@@ -97,5 +97,5 @@ pub(super) fn get_task_name(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<
     if let Some(number) = args.iter().take(2).find(|a| present(Some(a))) {
         ctx.store(number, Value::Num(1.0))?;
     }
-    Ok(Some(Value::Str("T_ROB1".into())))
+    Ok(Some(Value::Str(super::TASK_NAME.into())))
 }

@@ -222,7 +222,7 @@ impl Vm {
     /// `RAISE n`: user numbers 1..90 (and booked ones); anything else ERR_ILLRAISE.
     pub(super) fn user_error(&self, n: f64) -> RapidError {
         let n_int = n as i32;
-        let booked = n_int >= super::FIRST_BOOKED_ERRNO && n_int < self.next_booked;
+        let booked = super::is_booked(n_int, self.next_booked);
         let predefined = self.errnos.values().any(|&v| v == n_int);
         if n.fract() == 0.0 && ((1..=90).contains(&n_int) || booked || predefined) {
             let name = self.errnos.iter().find(|(_, &v)| v == n_int).map_or("", |(k, _)| *k);

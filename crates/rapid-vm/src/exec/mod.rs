@@ -30,7 +30,12 @@ pub const MAX_RETRIES: u32 = 4;
 /// Calls nested deeper than this stop the program (runaway recursion).
 pub const MAX_CALL_DEPTH: usize = 10_000;
 /// The first number BookErrNo hands out.
-pub(crate) const FIRST_BOOKED_ERRNO: i32 = 5000;
+const FIRST_BOOKED_ERRNO: i32 = 5000;
+
+/// Whether `n` is a number BookErrNo has given out (the next free one is `next_booked`).
+pub(crate) fn is_booked(n: i32, next_booked: i32) -> bool {
+    (FIRST_BOOKED_ERRNO..next_booked).contains(&n)
+}
 
 /// Why `run` returned.
 #[derive(Debug, Clone, PartialEq)]
