@@ -17,9 +17,49 @@ pub enum EventKind {
     Info,
 }
 
+/// The log keeps the newest entries up to this many, like the controller's bounded
+/// event log (its real size per domain is not in the public record: uncertain).
+pub const LOG_CAPACITY: usize = 1000;
+
+/// The event log: entries oldest first, each with a sequence number.
+#[derive(Debug, Default)]
+pub struct EventLog {
+    entries: Vec<Event>,
+    next_seq: u64,
+}
+
+impl EventLog {
+    /// Appends `event`, numbering it; returns its sequence number. Past
+    /// [`LOG_CAPACITY`] the oldest entries are dropped.
+    pub fn push(&mut self, mut event: Event) -> u64 {
+        let seq = self.next_seq;
+        self.next_seq += 1;
+        event.seq = seq;
+        if self.entries.len() >= LOG_CAPACITY {
+            // Drop a tenth at once so that a flood of events costs O(1) per push.
+            self.entries.drain(..LOG_CAPACITY / 10);
+        }
+        self.entries.push(event);
+        seq
+    }
+
+    /// Removes the entry numbered `seq`, if it is still in the log (SkipWarn).
+    pub fn remove(&mut self, seq: u64) {
+        if let Some(index) = self.entries.iter().rposition(|e| e.seq == seq) {
+            self.entries.remove(index);
+        }
+    }
+
+    pub fn entries(&self) -> &[Event] {
+        &self.entries
+    }
+}
+
 /// One event-log entry.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Event {
+    /// Its place in the log since the program was loaded (set by [`EventLog::push`]).
+    pub seq: u64,
     pub domain: u32,
     /// The number inside the domain (ErrLog's ErrorId, 1..3 for ErrWrite).
     pub number: u32,

@@ -220,3 +220,53 @@ fn an_error_nothing_handles_is_logged_in_the_program_domain() {
     assert!(log[0].title.contains("ERR_DIVZERO"), "title: {}", log[0].title);
     assert_eq!(log[0].lines, vec!["routine main".to_string()]);
 }
+
+/// §1.12: an error an ERROR handler takes still leaves a warning in the event log;
+/// SkipWarn in the handler keeps it out.
+#[test]
+fn handled_errors_leave_a_warning_unless_the_handler_skips_it() {
+    use rapid_vm::events::{EventKind, PROGRAM_DOMAIN};
+    let src = "MODULE t
+PROC main()
+  VAR num zero;
+  VAR num x;
+  x := 1 / zero;
+  x := 2 / zero;
+  TPWrite \"done\";
+ERROR
+  IF x = 0 THEN
+    x := 5;
+    TRYNEXT;
+  ENDIF
+  SkipWarn;
+  TRYNEXT;
+ENDPROC
+ENDMODULE";
+    let mut machine = vm(src);
+    let mut host = RecordingHost::default();
+    assert_eq!(machine.run(&mut host, 10_000), Exit::Done);
+    assert_eq!(host.lines, vec!["done"]);
+    let log = machine.event_log();
+    assert_eq!(log.len(), 1, "only the first division's warning stays: {log:?}");
+    assert_eq!((log[0].domain, log[0].kind), (PROGRAM_DOMAIN, EventKind::Warning));
+    assert!(log[0].title.contains("ERR_DIVZERO"), "title: {}", log[0].title);
+}
+
+#[test]
+fn the_event_log_keeps_the_newest_entries_within_its_capacity() {
+    use rapid_vm::events::LOG_CAPACITY;
+    let src = "MODULE t
+PROC main()
+  FOR i FROM 1 TO 1500 DO
+    ErrLog 4800, \"n\" + NumToStr(i, 0), ERRSTR_UNUSED, ERRSTR_UNUSED, ERRSTR_UNUSED, ERRSTR_UNUSED;
+  ENDFOR
+ENDPROC
+ENDMODULE";
+    let mut machine = vm(src);
+    let mut host = RecordingHost::default();
+    assert_eq!(machine.run(&mut host, 1_000_000), Exit::Done);
+    let log = machine.event_log();
+    assert!(log.len() <= LOG_CAPACITY && log.len() >= LOG_CAPACITY * 9 / 10, "{} entries", log.len());
+    assert_eq!(log.last().map(|e| (e.title.as_str(), e.seq)), Some(("n1500", 1499)), "the newest is kept");
+    assert!(log.windows(2).all(|w| w[1].seq == w[0].seq + 1), "consecutive, oldest dropped first");
+}

@@ -51,10 +51,12 @@ pub struct Ctx<'a> {
     pub retries_left: u32,
     /// Set by ResetRetryCount.
     pub reset_retries: bool,
+    /// Set by SkipWarn.
+    pub skip_warn: bool,
     /// The next free booked error number (BookErrNo).
     pub next_booked: &'a mut i32,
     /// The event log (ErrWrite, ErrLog, ErrRaise).
-    pub events: &'a mut Vec<crate::events::Event>,
+    pub events: &'a mut crate::events::EventLog,
     /// Module-level data by lower-case name.
     pub data_by_name: &'a rustc_hash::FxHashMap<String, NamedData>,
     /// The routine that made the call (ERRSTR_CONTEXT).

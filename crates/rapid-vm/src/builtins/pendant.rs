@@ -63,7 +63,7 @@ pub(super) fn err_write(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
     }
     let mut texts = texts.into_iter();
     let title = texts.next().unwrap_or_default();
-    let event = Event { domain: USER_DOMAIN, number, kind, time: ctx.time, title, lines: texts.collect() };
+    let event = Event { seq: 0, domain: USER_DOMAIN, number, kind, time: ctx.time, title, lines: texts.collect() };
     ctx.events.push(event);
     Ok(None)
 }

@@ -85,9 +85,9 @@ pub(super) fn reset_retry_count(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Op
     Ok(None)
 }
 
-/// `SkipWarn`: the handled error leaves no warning in the event log. The interpreter
-/// keeps no event log yet (issue 5), so there is nothing to drop.
-pub(super) fn skip_warn(_ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
+/// `SkipWarn`: the error the running handler took leaves no warning in the event log.
+pub(super) fn skip_warn(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
+    ctx.skip_warn = true;
     Ok(None)
 }
 

@@ -7,6 +7,7 @@ use std::rc::Rc;
 use super::{ActiveError, Exit, Frame, Unhandled, Vm, MAX_CALL_DEPTH, MAX_RETRIES};
 use crate::errnames::Err;
 use crate::error::RapidError;
+use crate::events::EventKind;
 use crate::ir::{ArgSpec, Callee, Code};
 use crate::value::{Place, Root, Value};
 
@@ -306,11 +307,13 @@ impl Vm {
                     if let Some(global) = self.errno_global {
                         self.storage.globals[global as usize] = Value::Num(error.errno as f32);
                     }
+                    let routine = frame.code.name.clone();
+                    let warning = Some(self.log_program_event(EventKind::Warning, &error, &routine));
                     let frame = self.frames.last_mut()?;
                     if frame.last_retry_stmt != Some(stmt.start) {
                         frame.retries = 0;
                     }
-                    frame.active = Some(ActiveError { error, stmt });
+                    frame.active = Some(ActiveError { error, stmt, warning });
                     frame.pc = handler_pc;
                     let keep = frame.base + frame.code.n_locals;
                     self.storage.stack.truncate(keep as usize);

@@ -69,6 +69,8 @@ pub struct Unhandled {
 struct ActiveError {
     error: RapidError,
     stmt: StmtRange,
+    /// The event-log warning a handled error leaves (§1.12), until SkipWarn drops it.
+    warning: Option<u64>,
 }
 
 #[derive(Debug)]
@@ -112,7 +114,7 @@ pub struct Vm {
     /// Instructions executed so far.
     pub steps: u64,
     /// What ErrWrite, ErrLog and ErrRaise logged, oldest first.
-    events: Vec<crate::events::Event>,
+    events: crate::events::EventLog,
     /// Module-level data by lower-case name (ErrRaise names its errnum as text).
     data_by_name: FxHashMap<String, crate::builtins::NamedData>,
     /// Wall-clock seconds since 1970 when the VM was made: the calendar clock is this
@@ -147,7 +149,7 @@ impl Vm {
             init: None,
             time: 0.0,
             steps: 0,
-            events: Vec::new(),
+            events: crate::events::EventLog::default(),
             data_by_name: FxHashMap::default(),
             wall_epoch: std::time::SystemTime::now()
                 .duration_since(std::time::UNIX_EPOCH)
@@ -172,7 +174,7 @@ impl Vm {
 
     /// The event log written so far, oldest first.
     pub fn event_log(&self) -> &[crate::events::Event] {
-        &self.events
+        self.events.entries()
     }
 
     /// The value of global `idx`.
@@ -283,15 +285,30 @@ impl Vm {
     /// The controller's own numbering of these entries is not public (uncertain).
     fn log_if_unhandled(&mut self, exit: &Exit) {
         let Exit::Unhandled(unhandled) = exit else { return };
-        let number = u32::try_from(unhandled.error.errno).unwrap_or(0);
+        self.log_program_event(crate::events::EventKind::Error, &unhandled.error, &unhandled.routine);
+    }
+
+    /// Logs `error` in the program domain; returns the entry's index. An error that
+    /// an ERROR handler takes still leaves a warning (§1.12), one that none takes an
+    /// error entry from the system error handler. Returns the entry's number.
+    fn log_program_event(&mut self, kind: crate::events::EventKind, error: &RapidError, routine: &str) -> u64 {
         self.events.push(crate::events::Event {
+            seq: 0,
             domain: crate::events::PROGRAM_DOMAIN,
-            number,
-            kind: crate::events::EventKind::Error,
+            number: u32::try_from(error.errno).unwrap_or(0),
+            kind,
             time: self.time,
-            title: unhandled.error.to_string(),
-            lines: vec![format!("routine {}", unhandled.routine)],
-        });
+            title: error.to_string(),
+            lines: vec![format!("routine {routine}")],
+        })
+    }
+
+    /// SkipWarn: the warning of the error the running handler took is not kept.
+    fn drop_handled_warning(&mut self) {
+        let warning = self.frames.last_mut().and_then(|f| f.active.as_mut()).and_then(|a| a.warning.take());
+        if let Some(seq) = warning {
+            self.events.remove(seq);
+        }
     }
 
     fn frame(&self) -> &Frame {
@@ -627,6 +644,7 @@ impl Vm {
             pers_globals: &self.pers_globals,
             retries_left: MAX_RETRIES.saturating_sub(self.frames.last().map_or(0, |f| f.retries)),
             reset_retries: false,
+            skip_warn: false,
             next_booked: &mut self.next_booked,
             events: &mut self.events,
             data_by_name: &self.data_by_name,
@@ -634,11 +652,14 @@ impl Vm {
             wall_epoch: self.wall_epoch,
         };
         let res = crate::builtins::function(id)(&mut ctx, args)?;
-        let (wait, stop, reset) = (ctx.wait, ctx.stop, ctx.reset_retries);
+        let (wait, stop, reset, skip_warn) = (ctx.wait, ctx.stop, ctx.reset_retries, ctx.skip_warn);
         if reset {
             if let Some(frame) = self.frames.last_mut() {
                 frame.retries = 0;
             }
+        }
+        if skip_warn {
+            self.drop_handled_warning();
         }
         Ok((res, wait, stop))
     }
