@@ -62,6 +62,9 @@ pub enum OpaqueState {
     },
     /// A rawbytes: its valid bytes (at most 1024).
     RawBytes(Vec<u8>),
+    /// An iodev, dir or socketdev: the number of its entry in the owning family's
+    /// table in [`crate::builtins::Resources`].
+    Handle(u32),
 }
 
 /// Where a data object (or a part of it) lives.

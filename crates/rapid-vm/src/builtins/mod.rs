@@ -8,12 +8,16 @@ mod calendar;
 mod clock;
 mod dialogs;
 mod events;
+pub mod files;
 mod geometry;
 mod math;
+mod matrix;
 mod pendant;
 mod rawbytes;
+pub mod sockets;
 mod strings;
 mod symbols;
+mod sysinfo;
 mod system;
 
 use rapid_sema::types::TypeId;
@@ -63,6 +67,25 @@ pub struct Ctx<'a> {
     pub routine: &'a str,
     /// Wall-clock seconds since 1970 when the program was loaded (CDate, CTime).
     pub wall_epoch: f64,
+    /// Open files, directories and sockets of the task.
+    pub resources: &'a mut Resources,
+}
+
+/// What the task holds open outside the interpreter: each family keeps its own table,
+/// referred to by `OpaqueState::Handle` in the program's iodev/dir/socketdev data.
+#[derive(Default)]
+pub struct Resources {
+    pub files: files::FileState,
+    pub sockets: sockets::SocketState,
+}
+
+impl Resources {
+    /// Closes every file, directory and socket (end of program, PP to Main: the
+    /// start-up table of §1.2.2 closes files and sockets).
+    pub fn close_all(&mut self) {
+        self.files.close_all();
+        self.sockets.close_all();
+    }
 }
 
 impl Ctx<'_> {
@@ -149,8 +172,17 @@ pub fn present(arg: Option<&Value>) -> bool {
     arg.is_some_and(|a| !a.is_absent())
 }
 
-/// Every implemented built-in: (name as the catalogue spells it, implementation).
-pub static TABLE: &[(&str, BuiltinFn)] = &[
+/// One family's built-ins: (name as the catalogue spells it, implementation).
+pub type Entries = &'static [(&'static str, BuiltinFn)];
+
+/// Every family's table; a built-in's id is its position in their concatenation.
+static FAMILIES: &[Entries] = &[CORE, files::ENTRIES, sockets::ENTRIES, matrix::ENTRIES, sysinfo::ENTRIES];
+
+static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =
+    std::sync::LazyLock::new(|| FAMILIES.iter().flat_map(|family| family.iter().copied()).collect());
+
+/// The built-ins implemented before the library was split into families.
+static CORE: Entries = &[
     ("TPWrite", pendant::tp_write),
     ("TPErase", pendant::tp_erase),
     ("ClearRawBytes", rawbytes::clear_raw_bytes),

@@ -120,6 +120,8 @@ pub struct Vm {
     /// Wall-clock seconds since 1970 when the VM was made: the calendar clock is this
     /// plus the controller time.
     wall_epoch: f64,
+    /// Open files, directories and sockets.
+    resources: crate::builtins::Resources,
 }
 
 impl Vm {
@@ -154,7 +156,14 @@ impl Vm {
             wall_epoch: std::time::SystemTime::now()
                 .duration_since(std::time::UNIX_EPOCH)
                 .map_or(0.0, |d| d.as_secs_f64()),
+            resources: crate::builtins::Resources::default(),
         }
+    }
+
+    /// The task's files, directories and sockets (to configure devices, or to close
+    /// everything when the program ends).
+    pub fn resources_mut(&mut self) -> &mut crate::builtins::Resources {
+        &mut self.resources
     }
 
     /// The numbers of the predefined errors (read from the ERR_ constants at load).
@@ -209,6 +218,7 @@ impl Vm {
                 }
             }
         }
+        self.resources.close_all();
         if let Some((code, defaults)) = self.init.clone() {
             let kept: Vec<(usize, Value)> = self
                 .pers_globals
@@ -650,6 +660,7 @@ impl Vm {
             data_by_name: &self.data_by_name,
             routine: self.frames.last().map_or("", |f| f.code.name.as_str()),
             wall_epoch: self.wall_epoch,
+            resources: &mut self.resources,
         };
         let res = crate::builtins::function(id)(&mut ctx, args)?;
         let (wait, stop, reset, skip_warn) = (ctx.wait, ctx.stop, ctx.reset_retries, ctx.skip_warn);
