@@ -173,7 +173,7 @@ fn pos_components(r: &Record) -> [f32; 3] {
 }
 
 fn make_like(r: &Record, comps: &[f32]) -> Value {
-    Value::Record(Box::new(Record { ty: r.ty, fields: comps.iter().map(|&c| Value::Num(c)).collect() }))
+    Value::Record(std::rc::Rc::new(Record { ty: r.ty, fields: comps.iter().map(|&c| Value::Num(c)).collect() }))
 }
 
 fn map_pos(r: &Record, f: impl Fn(f32) -> f32) -> Value {

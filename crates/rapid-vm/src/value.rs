@@ -14,7 +14,7 @@ pub enum Value {
     Bool(bool),
     /// Characters are Latin-1 code points (U+0000..U+00FF).
     Str(std::rc::Rc<str>),
-    Record(Box<Record>),
+    Record(std::rc::Rc<Record>),
     Array(Box<Array>),
     /// Data of a non-value type (clock, iodev, ...), which only built-ins touch.
     Opaque(Box<Opaque>),
@@ -104,7 +104,7 @@ impl Value {
 
     pub fn step_mut(&mut self, step: PathStep) -> Option<&mut Value> {
         match (self, step) {
-            (Value::Record(r), PathStep::Field(i)) => r.fields.get_mut(i as usize),
+            (Value::Record(r), PathStep::Field(i)) => std::rc::Rc::make_mut(r).fields.get_mut(i as usize),
             (Value::Array(a), PathStep::Element(i)) => a.elems.get_mut(i as usize),
             _ => None,
         }

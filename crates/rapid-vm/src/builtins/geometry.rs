@@ -29,7 +29,7 @@ fn vec3(ctx: &Ctx<'_>, value: &Value) -> Result<Vec3, RapidError> {
 }
 
 /// A pose's translation and rotation.
-fn pose(ctx: &Ctx<'_>, value: &Value) -> Result<(Vec3, Quat, Box<Record>), RapidError> {
+fn pose(ctx: &Ctx<'_>, value: &Value) -> Result<(Vec3, Quat, std::rc::Rc<Record>), RapidError> {
     match value {
         Value::Record(r) if r.fields.len() == 2 => Ok((vec3(ctx, &r.fields[0])?, quat(ctx, &r.fields[1])?, r.clone())),
         _ => Err(ctx.error(Err::ArgValue, "a pose was expected")),
@@ -38,7 +38,7 @@ fn pose(ctx: &Ctx<'_>, value: &Value) -> Result<(Vec3, Quat, Box<Record>), Rapid
 
 fn with_numbers(like: &Value, numbers: &[f64]) -> Value {
     match like {
-        Value::Record(r) => Value::Record(Box::new(Record {
+        Value::Record(r) => Value::Record(std::rc::Rc::new(Record {
             ty: r.ty,
             fields: numbers.iter().map(|&x| Value::Num(x as f32)).collect(),
         })),
@@ -81,7 +81,7 @@ fn axis_angle(axis: usize, degrees: f64) -> Quat {
 pub(super) fn orient_zyx(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (z, y, x) = (ctx.num(&args[0])?, ctx.num(&args[1])?, ctx.num(&args[2])?);
     let q = mul(mul(axis_angle(2, z), axis_angle(1, y)), axis_angle(0, x));
-    Ok(Some(Value::Record(Box::new(Record {
+    Ok(Some(Value::Record(std::rc::Rc::new(Record {
         ty: ctx.types.orient,
         fields: q.iter().map(|&c| Value::Num(c as f32)).collect(),
     }))))
@@ -109,9 +109,10 @@ pub(super) fn n_orient(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(with_numbers(&value, &q)))
 }
 
-fn make_pose(mut like: Box<Record>, t: Vec3, q: Quat) -> Value {
-    like.fields[0] = with_numbers(&like.fields[0], &t);
-    like.fields[1] = with_numbers(&like.fields[1], &q);
+fn make_pose(mut like: std::rc::Rc<Record>, t: Vec3, q: Quat) -> Value {
+    let record = std::rc::Rc::make_mut(&mut like);
+    record.fields[0] = with_numbers(&record.fields[0], &t);
+    record.fields[1] = with_numbers(&record.fields[1], &q);
     Value::Record(like)
 }
 

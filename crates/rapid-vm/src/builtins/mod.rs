@@ -136,7 +136,7 @@ impl Ctx<'_> {
     }
 
     pub fn pos(&self, x: f32, y: f32, z: f32) -> Value {
-        Value::Record(Box::new(Record {
+        Value::Record(std::rc::Rc::new(Record {
             ty: self.types.pos,
             fields: vec![Value::Num(x), Value::Num(y), Value::Num(z)],
         }))

@@ -179,7 +179,7 @@ impl LiteralReader {
             Value::Str(_) => self.string().map(|s| Value::Str(s.into())),
             Value::Record(record) => {
                 let fields = self.list(&record.fields)?;
-                Some(Value::Record(Box::new(crate::value::Record { ty: record.ty, fields })))
+                Some(Value::Record(std::rc::Rc::new(crate::value::Record { ty: record.ty, fields })))
             }
             Value::Array(array) => {
                 let elems = self.list(&array.elems)?;

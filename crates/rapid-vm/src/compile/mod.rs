@@ -191,7 +191,7 @@ pub fn default_value(prog: &Program, ty: TypeId, dims: &[u32]) -> Value {
         TypeKind::Atomic(Atomic::Dnum) => Value::Dnum(0.0),
         TypeKind::Atomic(Atomic::Bool) => Value::Bool(false),
         TypeKind::Atomic(Atomic::String) => Value::Str("".into()),
-        TypeKind::Record(fields) => Value::Record(Box::new(Record {
+        TypeKind::Record(fields) => Value::Record(std::rc::Rc::new(Record {
             ty: canon,
             fields: fields.iter().map(|f| default_value(prog, f.ty, &[])).collect(),
         })),

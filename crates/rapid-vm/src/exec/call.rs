@@ -70,19 +70,7 @@ impl Vm {
             Callee::Builtin(id) => {
                 let outcome = self.run_builtin(id, &args, host);
                 self.arg_scratch = args;
-                let (result, wait, stop) = outcome?;
-                if let Some(value) = result {
-                    self.push(value);
-                }
-                self.frame_mut().pc += 1;
-                match stop {
-                    crate::builtins::StopKind::None => Ok(wait.map(Exit::Wait)),
-                    crate::builtins::StopKind::Stop => Ok(Some(Exit::Stopped)),
-                    crate::builtins::StopKind::ExitCycle => {
-                        self.cycle_exit = true;
-                        Ok(self.exit())
-                    }
-                }
+                self.after_builtin(outcome)
             }
             Callee::Routine(idx) => {
                 let Some(callee) = self.routines.get(idx as usize).cloned().flatten() else {
@@ -91,6 +79,27 @@ impl Vm {
                 self.enter(callee, args)
             }
             Callee::Late => Err(RapidError::fatal("late call through a plain call site")),
+        }
+    }
+
+    /// Finishes a built-in call: pushes its result, moves past the call, and turns
+    /// the wait or stop it asked for into the run's exit.
+    pub(super) fn after_builtin(
+        &mut self,
+        outcome: Result<(Option<Value>, Option<f64>, crate::builtins::StopKind), RapidError>,
+    ) -> Result<Option<Exit>, RapidError> {
+        let (result, wait, stop) = outcome?;
+        if let Some(value) = result {
+            self.push(value);
+        }
+        self.frame_mut().pc += 1;
+        match stop {
+            crate::builtins::StopKind::None => Ok(wait.map(Exit::Wait)),
+            crate::builtins::StopKind::Stop => Ok(Some(Exit::Stopped)),
+            crate::builtins::StopKind::ExitCycle => {
+                self.cycle_exit = true;
+                Ok(self.exit())
+            }
         }
     }
 

@@ -1,51 +1,64 @@
 //! The fast loop: the instructions of hot code that need nothing but nums, bools,
-//! jumps and one-dimensional num arrays run here without leaving the loop; anything
-//! else is handed back to `Vm::step`.
+//! strings, jumps, one-dimensional num arrays and calls of built-ins with every
+//! argument pushed run here without leaving the loop; anything else is handed back
+//! to `Vm::step`.
 
-use super::{Value, Vm};
-use crate::ir::Instr;
-use crate::value::Root;
+use super::{Exit, RapidError, Value, Vm};
+use crate::ir::{ArgSpec, Callee, Instr};
+use crate::value::{Root, MAX_STRING_CHARS};
+
+/// Why the fast loop stopped.
+pub(super) enum Fast {
+    /// The budget ran out.
+    Budget,
+    /// The instruction at pc (already counted) needs `Vm::step`.
+    Step,
+    /// A built-in call ended in something other than a plain result (an error, a
+    /// wait, a stop): the outcome `Vm::step` would have given.
+    Called(Result<Option<Exit>, RapidError>),
+}
 
 impl Vm {
     /// Runs the top frame's instructions that need nothing but num arithmetic,
-    /// jumps and loads/stores of nums, without leaving the loop. Returns `false`
-    /// when the budget ran out; `true` when the instruction at pc (already counted)
-    /// needs `step`.
-    pub(super) fn run_fast(&mut self, remaining: &mut u64) -> bool {
+    /// jumps, loads/stores of nums, bools and strings and plain built-in calls,
+    /// without leaving the loop.
+    pub(super) fn run_fast(&mut self, remaining: &mut u64, host: &mut dyn crate::host::Host) -> Fast {
         let (code, base, mut pc) = {
             let frame = self.frame();
             (frame.code.clone(), frame.base as usize, frame.pc)
         };
-        let stack = &mut self.storage.stack;
         let budget = *remaining;
         let mut left = budget;
-        let needs_step = loop {
+        let outcome = loop {
             if left == 0 {
-                break false;
+                break Fast::Budget;
             }
             left -= 1;
-            let Some(&instr) = code.instrs.get(pc as usize) else { break true };
+            let Some(&instr) = code.instrs.get(pc as usize) else { break Fast::Step };
+            let stack = &mut self.storage.stack;
             match instr {
                 Instr::Const(i) => match &code.consts[i as usize] {
                     Value::Num(n) => stack.push(Value::Num(*n)),
                     Value::Bool(b) => stack.push(Value::Bool(*b)),
-                    _ => break true,
+                    Value::Str(s) => stack.push(Value::Str(s.clone())),
+                    _ => break Fast::Step,
                 },
                 Instr::LoadLocal(slot) => match &stack[base + slot as usize] {
                     Value::Num(n) => stack.push(Value::Num(*n)),
                     Value::Bool(b) => stack.push(Value::Bool(*b)),
+                    Value::Str(s) => stack.push(Value::Str(s.clone())),
                     // A VAR parameter referring to a whole num in a caller's slot.
                     Value::Ref(place) if place.path.is_empty() => match place.root {
                         Root::Stack(at) => match stack[at as usize] {
                             Value::Num(n) => stack.push(Value::Num(n)),
-                            _ => break true,
+                            _ => break Fast::Step,
                         },
                         Root::Global(idx) => match self.storage.globals.get(idx as usize) {
                             Some(&Value::Num(n)) => stack.push(Value::Num(n)),
-                            _ => break true,
+                            _ => break Fast::Step,
                         },
                     },
-                    _ => break true,
+                    _ => break Fast::Step,
                 },
                 Instr::StoreLocal(slot) => {
                     let mut at = base + slot as usize;
@@ -57,14 +70,14 @@ impl Vm {
                                 let (Some(&Value::Num(n)), Some(Value::Num(x))) =
                                     (stack.last(), self.storage.globals.get_mut(idx as usize))
                                 else {
-                                    break true;
+                                    break Fast::Step;
                                 };
                                 *x = n;
                                 drop_plain(stack.pop());
                                 pc += 1;
                                 continue;
                             }
-                            _ => break true,
+                            _ => break Fast::Step,
                         }
                     }
                     match (stack.last(), &stack[at]) {
@@ -76,18 +89,37 @@ impl Vm {
                             drop_plain(stack.pop());
                             stack[at] = Value::Bool(b);
                         }
-                        _ => break true,
+                        (Some(Value::Str(_)), Value::Str(_)) => {
+                            if let Some(value) = stack.pop() {
+                                stack[at] = value;
+                            }
+                        }
+                        _ => break Fast::Step,
                     }
                 }
                 Instr::LoadGlobal(idx) => match self.storage.globals.get(idx as usize) {
                     Some(Value::Num(n)) => stack.push(Value::Num(*n)),
-                    _ => break true,
+                    _ => break Fast::Step,
                 },
+                Instr::Binary(rapid_syntax::ast::BinaryOp::Add)
+                    if matches!(&stack[stack.len() - 2..], [Value::Str(_), Value::Str(_)]) =>
+                {
+                    let (Some(Value::Str(b)), Some(Value::Str(a))) = (stack.pop(), stack.last()) else {
+                        break Fast::Step;
+                    };
+                    let Some(joined) = concat(a, &b) else {
+                        stack.push(Value::Str(b));
+                        break Fast::Step;
+                    };
+                    if let Some(slot) = stack.last_mut() {
+                        *slot = joined;
+                    }
+                }
                 Instr::Binary(op) => {
                     let len = stack.len();
-                    let (Value::Num(a), Value::Num(b)) = (&stack[len - 2], &stack[len - 1]) else { break true };
+                    let (Value::Num(a), Value::Num(b)) = (&stack[len - 2], &stack[len - 1]) else { break Fast::Step };
                     let (a, b) = (*a, *b);
-                    let Some(res) = fast_num_op(op, a, b) else { break true };
+                    let Some(res) = fast_num_op(op, a, b) else { break Fast::Step };
                     drop_plain(stack.pop());
                     put_result(stack.last_mut(), res);
                 }
@@ -120,8 +152,8 @@ impl Vm {
                     };
                     let rhs_on_stack = rhs == crate::ir::Operand::Stack;
                     let lhs_depth = usize::from(rhs_on_stack);
-                    let (Some(a), Some(b)) = (num_at(lhs, stack, lhs_depth), num_at(rhs, stack, 0)) else { break true };
-                    let Some(res) = fast_num_op(op, a, b) else { break true };
+                    let (Some(a), Some(b)) = (num_at(lhs, stack, lhs_depth), num_at(rhs, stack, 0)) else { break Fast::Step };
+                    let Some(res) = fast_num_op(op, a, b) else { break Fast::Step };
                     // The result takes the place of the deepest stack operand, written
                     // in place; with no stack operand it is pushed.
                     match (lhs == crate::ir::Operand::Stack, rhs_on_stack) {
@@ -135,34 +167,34 @@ impl Vm {
                 }
                 Instr::LoadElem { global: false, slot, n: 1 } => {
                     let len = stack.len();
-                    let Some(&Value::Num(index)) = stack.last() else { break true };
-                    let Value::Array(array) = &stack[base + slot as usize] else { break true };
-                    let Some(&Value::Num(elem)) = element_1d(array, index) else { break true };
+                    let Some(&Value::Num(index)) = stack.last() else { break Fast::Step };
+                    let Value::Array(array) = &stack[base + slot as usize] else { break Fast::Step };
+                    let Some(&Value::Num(elem)) = element_1d(array, index) else { break Fast::Step };
                     stack[len - 1] = Value::Num(elem);
                 }
                 Instr::LoadElem { global: true, slot, n: 1 } => {
                     let len = stack.len();
-                    let Some(&Value::Num(index)) = stack.last() else { break true };
-                    let Some(Value::Array(array)) = self.storage.globals.get(slot as usize) else { break true };
-                    let Some(&Value::Num(elem)) = element_1d(array, index) else { break true };
+                    let Some(&Value::Num(index)) = stack.last() else { break Fast::Step };
+                    let Some(Value::Array(array)) = self.storage.globals.get(slot as usize) else { break Fast::Step };
+                    let Some(&Value::Num(elem)) = element_1d(array, index) else { break Fast::Step };
                     stack[len - 1] = Value::Num(elem);
                 }
                 Instr::StoreElem { global: false, slot, n: 1 } => {
                     let len = stack.len();
-                    let (Value::Num(index), Value::Num(value)) = (&stack[len - 2], &stack[len - 1]) else { break true };
+                    let (Value::Num(index), Value::Num(value)) = (&stack[len - 2], &stack[len - 1]) else { break Fast::Step };
                     let (index, value) = (*index, *value);
-                    let Value::Array(array) = &mut stack[base + slot as usize] else { break true };
-                    let Some(Value::Num(elem)) = element_1d_mut(array, index) else { break true };
+                    let Value::Array(array) = &mut stack[base + slot as usize] else { break Fast::Step };
+                    let Some(Value::Num(elem)) = element_1d_mut(array, index) else { break Fast::Step };
                     *elem = value;
                     drop_plain(stack.pop());
                     drop_plain(stack.pop());
                 }
                 Instr::StoreElem { global: true, slot, n: 1 } => {
                     let len = stack.len();
-                    let (Value::Num(index), Value::Num(value)) = (&stack[len - 2], &stack[len - 1]) else { break true };
+                    let (Value::Num(index), Value::Num(value)) = (&stack[len - 2], &stack[len - 1]) else { break Fast::Step };
                     let (index, value) = (*index, *value);
-                    let Some(Value::Array(array)) = self.storage.globals.get_mut(slot as usize) else { break true };
-                    let Some(Value::Num(elem)) = element_1d_mut(array, index) else { break true };
+                    let Some(Value::Array(array)) = self.storage.globals.get_mut(slot as usize) else { break Fast::Step };
+                    let Some(Value::Num(elem)) = element_1d_mut(array, index) else { break Fast::Step };
                     *elem = value;
                     drop_plain(stack.pop());
                     drop_plain(stack.pop());
@@ -171,6 +203,40 @@ impl Vm {
                     pc = target;
                     continue;
                 }
+                Instr::Call(site) => {
+                    let site = &code.sites[site as usize];
+                    let Callee::Builtin(id) = site.callee else { break Fast::Step };
+                    if site.args.iter().any(|a| matches!(a, ArgSpec::Conditional { .. })) {
+                        break Fast::Step;
+                    }
+                    let at = stack.len() - site.n_pushed as usize;
+                    let mut args = std::mem::take(&mut self.arg_scratch);
+                    args.clear();
+                    // Moved as one block; the few arguments not pushed are inserted
+                    // after (moving values one by one through temporaries costs a
+                    // store-forwarding stall each, measured with perf).
+                    args.extend(stack.drain(at..));
+                    if site.n_pushed as usize != site.args.len() {
+                        for (i, spec) in site.args.iter().enumerate() {
+                            match spec {
+                                ArgSpec::Switch => args.insert(i, Value::SwitchOn),
+                                ArgSpec::Absent | ArgSpec::Conditional { .. } => args.insert(i, Value::Absent),
+                                ArgSpec::Value | ArgSpec::Place => {}
+                            }
+                        }
+                    }
+                    self.frame_mut().pc = pc;
+                    let outcome = self.run_builtin(id, &args, host);
+                    self.arg_scratch = args;
+                    match outcome {
+                        Ok((result, None, crate::builtins::StopKind::None)) => {
+                            if let Some(value) = result {
+                                self.storage.stack.push(value);
+                            }
+                        }
+                        other => break Fast::Called(self.after_builtin(other)),
+                    }
+                }
                 Instr::JumpIfFalse(target) => match stack.last() {
                     Some(Value::Bool(b)) => {
                         let b = *b;
@@ -178,14 +244,14 @@ impl Vm {
                         pc = if b { pc + 1 } else { target };
                         continue;
                     }
-                    _ => break true,
+                    _ => break Fast::Step,
                 },
                 Instr::ForCheck { var, exit } => {
                     let slots = base + var as usize;
                     let (Value::Num(v), Value::Num(to), Value::Num(step)) =
                         (&stack[slots], &stack[slots + 1], &stack[slots + 2])
                     else {
-                        break true;
+                        break Fast::Step;
                     };
                     let done = if *step >= 0.0 { v > to } else { v < to };
                     pc = if done { exit } else { pc + 1 };
@@ -193,20 +259,36 @@ impl Vm {
                 }
                 Instr::ForNext { var, check } => {
                     let slots = base + var as usize;
-                    let (Value::Num(v), Value::Num(step)) = (&stack[slots], &stack[slots + 2]) else { break true };
+                    let (Value::Num(v), Value::Num(step)) = (&stack[slots], &stack[slots + 2]) else { break Fast::Step };
                     stack[slots] = Value::Num(v + step);
                     pc = check;
                     continue;
                 }
-                _ => break true,
+                _ => break Fast::Step,
             }
             pc += 1;
         };
         self.steps += budget - left;
         *remaining = left;
-        self.frame_mut().pc = pc;
-        needs_step
+        if !matches!(outcome, Fast::Called(_)) {
+            self.frame_mut().pc = pc;
+        }
+        outcome
     }
+}
+
+/// `a + b` when the result certainly fits a RAPID string: at most 80 bytes of UTF-8
+/// are at most 80 characters. Longer results take the general path, which counts
+/// characters and raises ERR_STRTOOLNG.
+#[inline(always)]
+fn concat(a: &str, b: &str) -> Option<Value> {
+    if a.len() + b.len() > MAX_STRING_CHARS {
+        return None;
+    }
+    let mut joined = String::with_capacity(a.len() + b.len());
+    joined.push_str(a);
+    joined.push_str(b);
+    Some(Value::Str(joined.into()))
 }
 
 /// The result of a fast num operation. Kept apart from `Value` so that a result can be

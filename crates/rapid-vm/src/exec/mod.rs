@@ -270,11 +270,13 @@ impl Vm {
             if self.frames.is_empty() {
                 return Exit::Done;
             }
-            if !self.run_fast(&mut remaining) {
-                break;
-            }
-            // The instruction at pc needs the general path.
-            let exit = match self.step(host) {
+            let outcome = match self.run_fast(&mut remaining, host) {
+                fast::Fast::Budget => break,
+                // The instruction at pc needs the general path.
+                fast::Fast::Step => self.step(host),
+                fast::Fast::Called(outcome) => outcome,
+            };
+            let exit = match outcome {
                 Ok(exit) => exit,
                 Err(error) => self.raise(error),
             };
@@ -416,7 +418,12 @@ impl Vm {
             }
             Instr::Field(field) => {
                 let Value::Record(record) = self.pop() else { return Err(self.error(Err::ArgValue, "not a record")) };
-                let value = record.fields.into_iter().nth(field as usize).unwrap_or(Value::Absent);
+                // A record nobody else holds gives up its component; a shared one copies it.
+                let value = match std::rc::Rc::try_unwrap(record) {
+                    Ok(record) => record.fields.into_iter().nth(field as usize),
+                    Err(shared) => shared.fields.get(field as usize).cloned(),
+                }
+                .unwrap_or(Value::Absent);
                 self.push(value);
             }
             Instr::Index(n) => {
@@ -446,7 +453,7 @@ impl Vm {
             Instr::MakeRecord(ty, n) => {
                 let at = self.storage.stack.len() - n as usize;
                 let fields = self.storage.stack.split_off(at);
-                self.push(Value::Record(Box::new(Record { ty, fields })));
+                self.push(Value::Record(std::rc::Rc::new(Record { ty, fields })));
             }
             Instr::MakeArray(n) => {
                 let at = self.storage.stack.len() - n as usize;
