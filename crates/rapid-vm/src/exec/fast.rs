@@ -47,6 +47,8 @@ impl Vm {
                     Value::Num(n) => stack.push(Value::Num(*n)),
                     Value::Bool(b) => stack.push(Value::Bool(*b)),
                     Value::Str(s) => stack.push(Value::Str(s.clone())),
+                    // Records are shared until written: a load is a reference count.
+                    Value::Record(r) => stack.push(Value::Record(r.clone())),
                     // A VAR parameter referring to a whole num in a caller's slot.
                     Value::Ref(place) if place.path.is_empty() => match place.root {
                         Root::Stack(at) => match stack[at as usize] {
@@ -89,7 +91,7 @@ impl Vm {
                             drop_plain(stack.pop());
                             stack[at] = Value::Bool(b);
                         }
-                        (Some(Value::Str(_)), Value::Str(_)) => {
+                        (Some(Value::Str(_)), Value::Str(_)) | (Some(Value::Record(_)), Value::Record(_)) => {
                             if let Some(value) = stack.pop() {
                                 stack[at] = value;
                             }
@@ -97,8 +99,17 @@ impl Vm {
                         _ => break Fast::Step,
                     }
                 }
+                Instr::Field(field) => {
+                    let Some(Value::Record(record)) = stack.last() else { break Fast::Step };
+                    let Some(value) = record.fields.get(field as usize).cloned() else { break Fast::Step };
+                    if let Some(top) = stack.last_mut() {
+                        *top = value;
+                    }
+                }
                 Instr::LoadGlobal(idx) => match self.storage.globals.get(idx as usize) {
                     Some(Value::Num(n)) => stack.push(Value::Num(*n)),
+                    Some(Value::Str(s)) => stack.push(Value::Str(s.clone())),
+                    Some(Value::Record(r)) => stack.push(Value::Record(r.clone())),
                     _ => break Fast::Step,
                 },
                 Instr::Binary(rapid_syntax::ast::BinaryOp::Add)
@@ -117,11 +128,29 @@ impl Vm {
                 }
                 Instr::Binary(op) => {
                     let len = stack.len();
-                    let (Value::Num(a), Value::Num(b)) = (&stack[len - 2], &stack[len - 1]) else { break Fast::Step };
-                    let (a, b) = (*a, *b);
-                    let Some(res) = fast_num_op(op, a, b) else { break Fast::Step };
-                    drop_plain(stack.pop());
-                    put_result(stack.last_mut(), res);
+                    if let (Value::Num(a), Value::Num(b)) = (&stack[len - 2], &stack[len - 1]) {
+                        if let Some(res) = fast_num_op(op, *a, *b) {
+                            drop_plain(stack.pop());
+                            put_result(stack.last_mut(), res);
+                            pc += 1;
+                            continue;
+                        }
+                    }
+                    // Every other operand type (pos, orient, dnum, ...) and every
+                    // error, exactly as `Vm::step` does it.
+                    let (Some(rhs), Some(lhs)) = (stack.pop(), stack.pop()) else { break Fast::Step };
+                    match crate::ops::binary(op, lhs, rhs, self.types) {
+                        Ok(value) => stack.push(value),
+                        Err(fault) => {
+                            self.frame_mut().pc = pc;
+                            break Fast::Called(Err(self.fault(fault)));
+                        }
+                    }
+                }
+                Instr::MakeRecord(ty, n) => {
+                    let at = stack.len() - n as usize;
+                    let fields = stack.split_off(at);
+                    stack.push(Value::Record(std::rc::Rc::new(crate::value::Record { ty, fields })));
                 }
                 Instr::BinOp { op, lhs, rhs } => {
                     let globals = &self.storage.globals;
@@ -152,7 +181,9 @@ impl Vm {
                     };
                     let rhs_on_stack = rhs == crate::ir::Operand::Stack;
                     let lhs_depth = usize::from(rhs_on_stack);
-                    let (Some(a), Some(b)) = (num_at(lhs, stack, lhs_depth), num_at(rhs, stack, 0)) else { break Fast::Step };
+                    let (Some(a), Some(b)) = (num_at(lhs, stack, lhs_depth), num_at(rhs, stack, 0)) else {
+                        break Fast::Step;
+                    };
                     let Some(res) = fast_num_op(op, a, b) else { break Fast::Step };
                     // The result takes the place of the deepest stack operand, written
                     // in place; with no stack operand it is pushed.
@@ -181,7 +212,9 @@ impl Vm {
                 }
                 Instr::StoreElem { global: false, slot, n: 1 } => {
                     let len = stack.len();
-                    let (Value::Num(index), Value::Num(value)) = (&stack[len - 2], &stack[len - 1]) else { break Fast::Step };
+                    let (Value::Num(index), Value::Num(value)) = (&stack[len - 2], &stack[len - 1]) else {
+                        break Fast::Step;
+                    };
                     let (index, value) = (*index, *value);
                     let Value::Array(array) = &mut stack[base + slot as usize] else { break Fast::Step };
                     let Some(Value::Num(elem)) = element_1d_mut(array, index) else { break Fast::Step };
@@ -191,9 +224,13 @@ impl Vm {
                 }
                 Instr::StoreElem { global: true, slot, n: 1 } => {
                     let len = stack.len();
-                    let (Value::Num(index), Value::Num(value)) = (&stack[len - 2], &stack[len - 1]) else { break Fast::Step };
+                    let (Value::Num(index), Value::Num(value)) = (&stack[len - 2], &stack[len - 1]) else {
+                        break Fast::Step;
+                    };
                     let (index, value) = (*index, *value);
-                    let Some(Value::Array(array)) = self.storage.globals.get_mut(slot as usize) else { break Fast::Step };
+                    let Some(Value::Array(array)) = self.storage.globals.get_mut(slot as usize) else {
+                        break Fast::Step;
+                    };
                     let Some(Value::Num(elem)) = element_1d_mut(array, index) else { break Fast::Step };
                     *elem = value;
                     drop_plain(stack.pop());
@@ -259,7 +296,9 @@ impl Vm {
                 }
                 Instr::ForNext { var, check } => {
                     let slots = base + var as usize;
-                    let (Value::Num(v), Value::Num(step)) = (&stack[slots], &stack[slots + 2]) else { break Fast::Step };
+                    let (Value::Num(v), Value::Num(step)) = (&stack[slots], &stack[slots + 2]) else {
+                        break Fast::Step;
+                    };
                     stack[slots] = Value::Num(v + step);
                     pc = check;
                     continue;
