@@ -107,9 +107,14 @@ impl Ctx<'_> {
     }
 
     pub fn num(&self, arg: &Value) -> Result<f64, RapidError> {
-        match self.value(arg)? {
-            Value::Num(n) => Ok(f64::from(n)),
-            Value::Dnum(d) => Ok(d),
+        // Read in place: no copy of the argument on this hot path.
+        let value = match arg {
+            Value::Ref(place) => self.storage.get(place).map_err(|(e, m)| self.error(e, m))?,
+            other => other,
+        };
+        match value {
+            Value::Num(n) => Ok(f64::from(*n)),
+            Value::Dnum(d) => Ok(*d),
             _ => Err(self.error(Err::ArgValue, "a numeric argument was expected")),
         }
     }

@@ -152,6 +152,34 @@ impl Vm {
                     let fields = stack.split_off(at);
                     stack.push(Value::Record(std::rc::Rc::new(crate::value::Record { ty, fields })));
                 }
+                Instr::BinOp { op: rapid_syntax::ast::BinaryOp::Add, lhs, rhs }
+                    if is_str(lhs, stack, base, &code.consts, usize::from(rhs == crate::ir::Operand::Stack))
+                        && is_str(rhs, stack, base, &code.consts, 0) =>
+                {
+                    let lhs_depth = usize::from(rhs == crate::ir::Operand::Stack);
+                    let joined = match (
+                        str_at(lhs, stack, base, &code.consts, lhs_depth),
+                        str_at(rhs, stack, base, &code.consts, 0),
+                    ) {
+                        (Some(a), Some(b)) => concat(a, b),
+                        _ => None,
+                    };
+                    let Some(joined) = joined else { break Fast::Step };
+                    match (lhs == crate::ir::Operand::Stack, rhs == crate::ir::Operand::Stack) {
+                        (true, true) => {
+                            stack.pop();
+                            if let Some(top) = stack.last_mut() {
+                                *top = joined;
+                            }
+                        }
+                        (true, false) | (false, true) => {
+                            if let Some(top) = stack.last_mut() {
+                                *top = joined;
+                            }
+                        }
+                        (false, false) => stack.push(joined),
+                    }
+                }
                 Instr::BinOp { op, lhs, rhs } => {
                     let globals = &self.storage.globals;
                     let num_at = |operand: crate::ir::Operand, stack: &Vec<Value>, depth: usize| match operand {
@@ -314,6 +342,32 @@ impl Vm {
         }
         outcome
     }
+}
+
+/// The string an operand names: the stack value `depth` below the top, a local slot
+/// holding a string itself (not a reference), or a constant.
+#[inline(always)]
+fn str_at<'a>(
+    operand: crate::ir::Operand,
+    stack: &'a [Value],
+    base: usize,
+    consts: &'a [Value],
+    depth: usize,
+) -> Option<&'a str> {
+    let value = match operand {
+        crate::ir::Operand::Stack => stack.get(stack.len().wrapping_sub(depth + 1)),
+        crate::ir::Operand::Local(slot) => stack.get(base + slot as usize),
+        crate::ir::Operand::Const(i) => consts.get(i as usize),
+    };
+    match value {
+        Some(Value::Str(s)) => Some(s),
+        _ => None,
+    }
+}
+
+#[inline(always)]
+fn is_str(operand: crate::ir::Operand, stack: &[Value], base: usize, consts: &[Value], depth: usize) -> bool {
+    str_at(operand, stack, base, consts, depth).is_some()
 }
 
 /// `a + b` when the result certainly fits a RAPID string: at most 80 bytes of UTF-8
