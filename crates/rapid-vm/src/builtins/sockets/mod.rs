@@ -12,11 +12,14 @@
 //! given; WAIT_MAX is honoured as about 97 days), and then reports the wall time it
 //! spent through `ctx.wait`: the VM has already moved past the instruction, so the
 //! caller of `Vm::run` advances the virtual clock by exactly that much and the
-//! instruction is not run again. A wait that ends in an error (ERR_SOCK_TIMEOUT) cannot
-//! report its time this way: a built-in's `ctx.wait` is dropped when it returns an
-//! error (see the report for the lead). When tasks run side by side, table.rs's
-//! `poll_*` functions are the seam: they make progress without waiting, so a scheduler
-//! can poll each waiting task instead of blocking the controller.
+//! instruction is not run again. Two known gaps, both in the VM's handling of
+//! `ctx.wait`, not here: a wait that ends in an error (ERR_SOCK_TIMEOUT) does not
+//! advance the clock (the VM drops `ctx.wait` when a built-in fails), and
+//! `rapid run --realtime` sleeps the reported time once more after the wait.
+//!
+//! When tasks run side by side, table.rs's `poll_*` functions are the seam: they make
+//! progress without waiting, so a scheduler can poll each waiting task instead of
+//! blocking the controller.
 
 mod payload;
 mod table;

@@ -511,3 +511,74 @@ fn io_fault(e: &io::Error) -> Fault {
     };
     (err, format!("socket error: {e}"))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn loopback_any_port() -> SocketAddrV4 {
+        SocketAddrV4::new(Ipv4Addr::LOCALHOST, 0)
+    }
+
+    #[test]
+    fn states_follow_the_instructions() {
+        let mut table = SocketState::default();
+        assert_eq!(table.status(None), Status::Closed);
+        let tcp = Some(table.create(false).unwrap());
+        assert_eq!(table.status(tcp), Status::Created);
+        assert_eq!(table.listen(tcp).unwrap_err().0, Err::SockNotBound);
+        table.bind(tcp, loopback_any_port()).unwrap();
+        assert_eq!(table.status(tcp), Status::Bound);
+        assert_eq!(table.bind(tcp, loopback_any_port()).unwrap_err().0, Err::SockIsBound);
+        table.listen(tcp).unwrap();
+        assert_eq!(table.status(tcp), Status::Listening);
+        assert_eq!(table.bound_addrs().len(), 1);
+        table.close(tcp);
+        assert_eq!(table.status(tcp), Status::Closed);
+        assert_eq!(table.listen(tcp).unwrap_err().0, Err::SockClosed);
+    }
+
+    #[test]
+    fn handles_are_not_reused_and_the_table_is_bounded() {
+        let mut table = SocketState::default();
+        let first = table.create(true).unwrap();
+        table.close(Some(first));
+        let second = table.create(true).unwrap();
+        assert_ne!(first, second, "a stale socketdev must not reach a new socket");
+        for _ in 1..MAX_SOCKETS {
+            table.create(false).unwrap();
+        }
+        assert_eq!(table.create(false).unwrap_err().0, Err::SockUnspec);
+        table.close_all();
+        assert_eq!(table.status(Some(second)), Status::Closed);
+    }
+
+    #[test]
+    fn os_errors_map_to_socket_errors() {
+        use io::ErrorKind as K;
+        let cases = [
+            (K::AddrInUse, Err::SockAddrInUse),
+            (K::AddrNotAvailable, Err::SockAddrInvalid),
+            (K::ConnectionReset, Err::SockClosed),
+            (K::BrokenPipe, Err::SockClosed),
+            (K::TimedOut, Err::SockTimeout),
+            (K::HostUnreachable, Err::SockNetUnreach),
+            (K::PermissionDenied, Err::SockUnspec),
+        ];
+        for (kind, err) in cases {
+            assert_eq!(io_fault(&io::Error::from(kind)).0, err, "{kind:?}");
+        }
+    }
+
+    #[test]
+    fn a_receive_waits_no_longer_than_its_deadline() {
+        let mut table = SocketState::default();
+        let udp = Some(table.create(true).unwrap());
+        table.bind(udp, loopback_any_port()).unwrap();
+        let started = Instant::now();
+        let fault = table.receive_from(udp, 80, started + Duration::from_millis(50)).unwrap_err();
+        assert_eq!(fault.0, Err::SockTimeout);
+        let waited = started.elapsed();
+        assert!(waited >= Duration::from_millis(50) && waited < Duration::from_secs(5), "{waited:?}");
+    }
+}
