@@ -454,3 +454,45 @@ ENDMODULE
          first part 80\nsecond part 20\n"
     );
 }
+
+#[test]
+fn a_server_serves_clients_one_after_another() {
+    let mut machine = vm(r#"MODULE t
+    VAR socketdev server;
+    VAR socketdev client;
+    VAR string got;
+    PROC main()
+        SocketCreate server;
+        SocketBind server, "127.0.0.1", 0;
+        SocketListen server;
+        FOR k FROM 1 TO 2 DO
+            SocketAccept server, client \Time:=10;
+            SocketReceive client \Str:=got \ReadNoOfBytes:=3 \Time:=10;
+            SocketSend client \Str:=got + NumToStr(k, 0);
+            SocketClose client;
+            TPWrite "served " + got;
+        ENDFOR
+        TPWrite "server " \Num:=SocketGetStatus(server);
+        SocketClose server;
+    ENDPROC
+ENDMODULE
+"#);
+    let mut host = RecordingHost::default();
+    let addr = run_until_bound(&mut machine, &mut host);
+    let peers = thread::spawn(move || {
+        ["one", "two"]
+            .iter()
+            .map(|word| {
+                let mut stream = TcpStream::connect_timeout(&addr, PEER_TIMEOUT).expect("connect");
+                stream.set_read_timeout(Some(PEER_TIMEOUT)).expect("timeout");
+                stream.write_all(word.as_bytes()).expect("word");
+                let mut answer = String::new();
+                stream.read_to_string(&mut answer).expect("answer");
+                answer
+            })
+            .collect::<Vec<_>>()
+    });
+    run_to_end(&mut machine, &mut host);
+    assert_eq!(peers.join().expect("client thread"), vec!["one1", "two2"]);
+    assert_eq!(host.lines, vec!["served one", "served two", "server 4"]);
+}
