@@ -1,0 +1,288 @@
+//! Socket Messaging (§1.10): SocketCreate, SocketConnect, SocketBind, SocketListen,
+//! SocketAccept, SocketSend, SocketSendTo, SocketReceive, SocketReceiveFrom,
+//! SocketClose, SocketGetStatus, SocketPeek, on real TCP and UDP sockets (std::net).
+//!
+//! A `socketdev` holds `OpaqueState::Handle(n)`, the number of its entry in the task's
+//! [`SocketState`] (table.rs); a fresh or closed one holds nothing and reports
+//! SOCKET_CLOSED. Argument data is converted in payload.rs.
+//!
+//! Time. A wait on a real socket runs in wall-clock time, and the controller's virtual
+//! clock must not skip past it. The VM is single-threaded, so a waiting built-in
+//! blocks, with an OS timeout that never goes past the RAPID `\Time` (60 s when not
+//! given; WAIT_MAX is honoured as about 97 days), and then reports the wall time it
+//! spent through `ctx.wait`: the VM has already moved past the instruction, so the
+//! caller of `Vm::run` advances the virtual clock by exactly that much and the
+//! instruction is not run again. Two known gaps, both in the VM's handling of
+//! `ctx.wait`, not here: a wait that ends in an error (ERR_SOCK_TIMEOUT) does not
+//! advance the clock (the VM drops `ctx.wait` when a built-in fails), and
+//! `rapid run --realtime` sleeps the reported time once more after the wait.
+//!
+//! When tasks run side by side, table.rs's `poll_*` functions are the seam: they make
+//! progress without waiting, so a scheduler can poll each waiting task instead of
+//! blocking the controller.
+
+mod payload;
+mod table;
+
+use std::net::{Ipv4Addr, SocketAddr, SocketAddrV4};
+use std::str::FromStr;
+use std::time::{Duration, Instant};
+
+use super::{present, Ctx, Entries};
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::{Opaque, OpaqueState, Value};
+pub use table::{SocketState, Status};
+
+type Res = Result<Option<Value>, RapidError>;
+
+/// The `\Time` of Connect, Accept and the receives when none is given (manual: 60 s).
+const DEFAULT_TIME: f64 = 60.0;
+
+pub(super) static ENTRIES: Entries = &[
+    ("SocketCreate", socket_create),
+    ("SocketConnect", socket_connect),
+    ("SocketBind", socket_bind),
+    ("SocketListen", socket_listen),
+    ("SocketAccept", socket_accept),
+    ("SocketSend", socket_send),
+    ("SocketSendTo", socket_send_to),
+    ("SocketReceive", socket_receive),
+    ("SocketReceiveFrom", socket_receive_from),
+    ("SocketClose", socket_close),
+    ("SocketGetStatus", socket_get_status),
+    ("SocketPeek", socket_peek),
+];
+
+/// `SocketCreate Socket [\UDP]`: a new TCP (stream) or UDP (datagram) socket.
+fn socket_create(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (opaque, handle) = socket_arg(ctx, &args[0])?;
+    // uncertain: the manual says the socket must not be in use; the error it raises
+    // then is not documented (ERR_SOCK_UNSPEC here). A socket whose connection broke
+    // may be created again.
+    if ctx.resources.sockets.in_use(handle) {
+        return Err(ctx.error(Err::SockUnspec, "the socket is already created (SocketClose it first)"));
+    }
+    ctx.resources.sockets.close(handle);
+    let new = ctx.resources.sockets.create(present(args.get(1))).map_err(|f| fault(ctx, f))?;
+    set_handle(ctx, &args[0], opaque, Some(new))
+}
+
+/// `SocketConnect Socket Address Port [\Time]`: connects to a remote computer.
+fn socket_connect(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (_, handle) = socket_arg(ctx, &args[0])?;
+    let to = remote_addr(ctx, &args[1], &args[2])?;
+    let timeout = time_arg(ctx, args.get(3))?;
+    let started = Instant::now();
+    let res = ctx.resources.sockets.connect(handle, to, deadline(started, timeout));
+    finish_wait(ctx, started, res)?;
+    Ok(None)
+}
+
+/// `SocketBind Socket LocalAddress LocalPort`: binds to a local address and port
+/// (port 0: one the OS chooses).
+fn socket_bind(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (_, handle) = socket_arg(ctx, &args[0])?;
+    let ip = ip_arg(ctx, &args[1])?;
+    let port = port_arg(ctx, &args[2], true)?;
+    ctx.resources.sockets.bind(handle, SocketAddrV4::new(ip, port)).map_err(|f| fault(ctx, f))?;
+    Ok(None)
+}
+
+/// `SocketListen Socket`: a bound TCP socket starts taking connections.
+fn socket_listen(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (_, handle) = socket_arg(ctx, &args[0])?;
+    ctx.resources.sockets.listen(handle).map_err(|f| fault(ctx, f))?;
+    Ok(None)
+}
+
+/// `SocketAccept Socket ClientSocket [\ClientAddress] [\Time]`: waits for a client;
+/// ClientSocket becomes the connection, ClientAddress the client's IP address.
+fn socket_accept(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (_, handle) = socket_arg(ctx, &args[0])?;
+    let (client, client_handle) = socket_arg(ctx, &args[1])?;
+    let timeout = time_arg(ctx, args.get(3))?;
+    let started = Instant::now();
+    let res = ctx.resources.sockets.accept(handle, deadline(started, timeout));
+    let (new, ip) = finish_wait(ctx, started, res)?;
+    // uncertain: a ClientSocket still in use is replaced (its connection closed); the
+    // manual documents no error for it.
+    ctx.resources.sockets.close(client_handle);
+    set_handle(ctx, &args[1], client, Some(new))?;
+    if present(args.get(2)) {
+        ctx.store(&args[2], Value::Str(ip.to_string().into()))?;
+    }
+    Ok(None)
+}
+
+/// `SocketSend Socket [\Str] | [\RawData] | [\Data] [\NoOfBytes]`.
+fn socket_send(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (_, handle) = socket_arg(ctx, &args[0])?;
+    let slot = payload::chosen(ctx, args, 1)?;
+    let no_of_bytes = ctx.opt_num(args.get(4))?;
+    let bytes = payload::bytes_to_send(ctx, args, slot, no_of_bytes)?;
+    let started = Instant::now();
+    // uncertain: the manual gives no send timeout; a peer that reads nothing may hold
+    // a send for at most the default 60 s before ERR_SOCK_TIMEOUT.
+    let res = ctx.resources.sockets.send(handle, &bytes, deadline(started, Duration::from_secs(60)));
+    finish_wait(ctx, started, res)?;
+    Ok(None)
+}
+
+/// `SocketSendTo Socket RemoteAddress RemotePort [\Str] | [\RawData] | [\Data]
+/// [\NoOfBytes]`: one datagram.
+fn socket_send_to(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (_, handle) = socket_arg(ctx, &args[0])?;
+    let to = remote_addr(ctx, &args[1], &args[2])?;
+    let slot = payload::chosen(ctx, args, 3)?;
+    let no_of_bytes = ctx.opt_num(args.get(6))?;
+    let bytes = payload::bytes_to_send(ctx, args, slot, no_of_bytes)?;
+    ctx.resources.sockets.send_to(handle, &bytes, to).map_err(|f| fault(ctx, f))?;
+    Ok(None)
+}
+
+/// `SocketReceive Socket [\Str] | [\RawData] | [\Data] [\ReadNoOfBytes] [\NoRecBytes]
+/// [\Time]`: waits for data; without \ReadNoOfBytes takes what has arrived (at least
+/// one byte, at most what the data holds), with it waits for exactly that many.
+fn socket_receive(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (_, handle) = socket_arg(ctx, &args[0])?;
+    let slot = payload::chosen(ctx, args, 1)?;
+    let capacity = payload::capacity(ctx, args, slot)?;
+    let want = match ctx.opt_num(args.get(4))? {
+        Some(n) => {
+            let n = payload::read_count(ctx, n, capacity)?;
+            table::Want { min: n, max: n }
+        }
+        None => table::Want { min: 1, max: capacity },
+    };
+    let timeout = time_arg(ctx, args.get(6))?;
+    let started = Instant::now();
+    let res = ctx.resources.sockets.receive(handle, want, deadline(started, timeout));
+    let bytes = finish_wait(ctx, started, res)?;
+    payload::store_received(ctx, args, slot, &bytes)?;
+    if present(args.get(5)) {
+        ctx.store(&args[5], Value::Num(bytes.len() as f32))?;
+    }
+    Ok(None)
+}
+
+/// `SocketReceiveFrom Socket [\Str] | [\RawData] | [\Data] [\ReadNoOfBytes]
+/// [\NoRecBytes] RemoteAddress RemotePort [\Time]`: the next datagram and its sender.
+fn socket_receive_from(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (_, handle) = socket_arg(ctx, &args[0])?;
+    let slot = payload::chosen(ctx, args, 1)?;
+    let capacity = payload::capacity(ctx, args, slot)?;
+    // uncertain: for a datagram, \ReadNoOfBytes is read as the most bytes to keep.
+    let max = match ctx.opt_num(args.get(4))? {
+        Some(n) => payload::read_count(ctx, n, capacity)?,
+        None => capacity,
+    };
+    let timeout = time_arg(ctx, args.get(8))?;
+    let started = Instant::now();
+    let res = ctx.resources.sockets.receive_from(handle, max, deadline(started, timeout));
+    let (bytes, from) = finish_wait(ctx, started, res)?;
+    payload::store_received(ctx, args, slot, &bytes)?;
+    if present(args.get(5)) {
+        ctx.store(&args[5], Value::Num(bytes.len() as f32))?;
+    }
+    let (ip, port) = match from {
+        SocketAddr::V4(v4) => (*v4.ip(), v4.port()),
+        SocketAddr::V6(v6) => (v6.ip().to_ipv4_mapped().unwrap_or(Ipv4Addr::UNSPECIFIED), v6.port()),
+    };
+    ctx.store(&args[6], Value::Str(ip.to_string().into()))?;
+    ctx.store(&args[7], Value::Num(f32::from(port)))?;
+    Ok(None)
+}
+
+/// `SocketClose Socket`: closes the socket; closing one not in use is no error.
+fn socket_close(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (opaque, handle) = socket_arg(ctx, &args[0])?;
+    ctx.resources.sockets.close(handle);
+    set_handle(ctx, &args[0], opaque, None)
+}
+
+/// `SocketGetStatus(Socket)`: SOCKET_CREATED, _CONNECTED, _BOUND, _LISTENING or
+/// _CLOSED (also for a socket never created).
+// uncertain: a socket whose peer closed still reports SOCKET_CONNECTED until a send or
+// receive finds out (the controller keeps the state its instructions set).
+fn socket_get_status(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (_, handle) = socket_arg(ctx, &args[0])?;
+    let status = ctx.resources.sockets.status(handle);
+    Ok(Some(Value::Num(status as u8 as f32)))
+}
+
+/// `SocketPeek(Socket)`: how many bytes have arrived and not been received yet.
+fn socket_peek(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (_, handle) = socket_arg(ctx, &args[0])?;
+    let n = ctx.resources.sockets.peek(handle).map_err(|f| fault(ctx, f))?;
+    Ok(Some(Value::Num(n as f32)))
+}
+
+// ---- helpers --------------------------------------------------------------------------
+
+/// The socketdev an argument names and the handle it holds (none when fresh/closed).
+fn socket_arg(ctx: &Ctx<'_>, arg: &Value) -> Result<(Opaque, Option<u32>), RapidError> {
+    match ctx.value(arg)? {
+        Value::Opaque(opaque) => {
+            let handle = match opaque.state {
+                OpaqueState::Handle(h) => Some(h),
+                _ => None,
+            };
+            Ok((*opaque, handle))
+        }
+        _ => Err(ctx.error(Err::ArgValue, "a socketdev was expected")),
+    }
+}
+
+fn set_handle(ctx: &mut Ctx<'_>, arg: &Value, mut opaque: Opaque, handle: Option<u32>) -> Res {
+    opaque.state = handle.map_or(OpaqueState::None, OpaqueState::Handle);
+    ctx.store(arg, Value::Opaque(Box::new(opaque)))?;
+    Ok(None)
+}
+
+/// Reports the wall time a socket operation took as a wait of the controller clock,
+/// and turns its fault into the RAPID error.
+fn finish_wait<T>(ctx: &mut Ctx<'_>, started: Instant, res: Result<T, table::Fault>) -> Result<T, RapidError> {
+    ctx.wait = Some(started.elapsed().as_secs_f64());
+    res.map_err(|f| fault(ctx, f))
+}
+
+fn fault(ctx: &Ctx<'_>, (err, message): table::Fault) -> RapidError {
+    ctx.error(err, message)
+}
+
+/// `\Time` in seconds (60 when absent); 0 means do not wait.
+// uncertain: the manual does not say what a negative \Time raises (ERR_ARGVALERR).
+fn time_arg(ctx: &Ctx<'_>, arg: Option<&Value>) -> Result<Duration, RapidError> {
+    let seconds = ctx.opt_num(arg)?.unwrap_or(DEFAULT_TIME);
+    Duration::try_from_secs_f64(seconds)
+        .map_err(|_| ctx.error(Err::ArgValue, format!("\\Time:={seconds} is not a time of 0 or more seconds")))
+}
+
+/// The instant `timeout` after `started` (far in the future if that overflows).
+fn deadline(started: Instant, timeout: Duration) -> Instant {
+    started.checked_add(timeout).unwrap_or_else(|| started + Duration::from_secs(86_400 * 365))
+}
+
+/// An IPv4 address in dotted form ("192.168.125.1"); names are not resolved.
+fn ip_arg(ctx: &Ctx<'_>, arg: &Value) -> Result<Ipv4Addr, RapidError> {
+    let text = ctx.string(arg)?;
+    Ipv4Addr::from_str(&text)
+        .map_err(|_| ctx.error(Err::SockAddrInvalid, format!("`{text}` is not an IP address like 192.168.125.1")))
+}
+
+/// A port number 0..65535 (0 only where the OS may choose one: SocketBind).
+// uncertain: the error for a port out of range is not documented (ERR_SOCK_ADDR_INVALID).
+fn port_arg(ctx: &Ctx<'_>, arg: &Value, zero_ok: bool) -> Result<u16, RapidError> {
+    let port = ctx.num(arg)?;
+    let lowest = if zero_ok { 0.0 } else { 1.0 };
+    if port.fract() != 0.0 || !(lowest..=65_535.0).contains(&port) {
+        return Err(ctx.error(Err::SockAddrInvalid, format!("{port} is not a port number")));
+    }
+    Ok(port as u16)
+}
+
+/// The remote address and port of SocketConnect / SocketSendTo.
+fn remote_addr(ctx: &Ctx<'_>, address: &Value, port: &Value) -> Result<SocketAddrV4, RapidError> {
+    Ok(SocketAddrV4::new(ip_arg(ctx, address)?, port_arg(ctx, port, false)?))
+}
