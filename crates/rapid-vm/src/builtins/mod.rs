@@ -46,6 +46,10 @@ pub struct Ctx<'a> {
     pub time: f64,
     /// Set by waiting instructions: how long to wait (virtual seconds).
     pub wait: Option<f64>,
+    /// Wall-clock seconds a built-in already spent waiting on the outside world (a
+    /// socket): the controller clock moves on by this much, on success and on error,
+    /// with no further wait (`--realtime` must not sleep it twice).
+    pub waited: f64,
     /// Set by Stop and ExitCycle.
     pub stop: StopKind,
     pub errnos: &'a rustc_hash::FxHashMap<&'static str, i32>,

@@ -656,6 +656,7 @@ impl Vm {
             types: self.types,
             time: self.time,
             wait: None,
+            waited: 0.0,
             stop: crate::builtins::StopKind::None,
             errnos: &self.errnos,
             pers_globals: &self.pers_globals,
@@ -669,7 +670,10 @@ impl Vm {
             wall_epoch: self.wall_epoch,
             resources: &mut self.resources,
         };
-        let res = crate::builtins::function(id)(&mut ctx, args)?;
+        let res = crate::builtins::function(id)(&mut ctx, args);
+        let waited = ctx.waited;
+        self.time += waited;
+        let res = res?;
         let (wait, stop, reset, skip_warn) = (ctx.wait, ctx.stop, ctx.reset_retries, ctx.skip_warn);
         if reset {
             if let Some(frame) = self.frames.last_mut() {

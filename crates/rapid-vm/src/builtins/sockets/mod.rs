@@ -10,12 +10,9 @@
 //! clock must not skip past it. The VM is single-threaded, so a waiting built-in
 //! blocks, with an OS timeout that never goes past the RAPID `\Time` (60 s when not
 //! given; WAIT_MAX is honoured as about 97 days), and then reports the wall time it
-//! spent through `ctx.wait`: the VM has already moved past the instruction, so the
-//! caller of `Vm::run` advances the virtual clock by exactly that much and the
-//! instruction is not run again. Two known gaps, both in the VM's handling of
-//! `ctx.wait`, not here: a wait that ends in an error (ERR_SOCK_TIMEOUT) does not
-//! advance the clock (the VM drops `ctx.wait` when a built-in fails), and
-//! `rapid run --realtime` sleeps the reported time once more after the wait.
+//! spent through `ctx.waited`: the VM advances the virtual clock by exactly that much,
+//! also when the wait ends in an error (ERR_SOCK_TIMEOUT), and nobody sleeps it again
+//! (not even `rapid run --realtime`).
 //!
 //! When tasks run side by side, table.rs's `poll_*` functions are the seam: they make
 //! progress without waiting, so a scheduler can poll each waiting task instead of
@@ -243,7 +240,7 @@ fn set_handle(ctx: &mut Ctx<'_>, arg: &Value, mut opaque: Opaque, handle: Option
 /// Reports the wall time a socket operation took as a wait of the controller clock,
 /// and turns its fault into the RAPID error.
 fn finish_wait<T>(ctx: &mut Ctx<'_>, started: Instant, res: Result<T, table::Fault>) -> Result<T, RapidError> {
-    ctx.wait = Some(started.elapsed().as_secs_f64());
+    ctx.waited = started.elapsed().as_secs_f64();
     res.map_err(|f| fault(ctx, f))
 }
 
