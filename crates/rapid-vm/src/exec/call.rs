@@ -322,7 +322,7 @@ impl Vm {
                     if frame.last_retry_stmt != Some(stmt.start) {
                         frame.retries = 0;
                     }
-                    frame.active = Some(ActiveError { error, stmt, warning });
+                    frame.active = Some(Box::new(ActiveError { error, stmt, warning }));
                     frame.pc = handler_pc;
                     let keep = frame.base + frame.code.n_locals;
                     self.storage.stack.truncate(keep as usize);

@@ -78,7 +78,9 @@ struct Frame {
     code: Rc<Code>,
     pc: u32,
     base: u32,
-    active: Option<ActiveError>,
+    /// The error this frame's handler is taking (boxed: frames stay small, so a call
+    /// pushes a few words, not a block copy).
+    active: Option<Box<ActiveError>>,
     retries: u32,
     last_retry_stmt: Option<u32>,
     /// Running this frame's UNDO handler while the program exits.
