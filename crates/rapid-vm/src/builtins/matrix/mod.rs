@@ -66,9 +66,9 @@ fn matrix_mult(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     // two apart by the value, whichever slot holds it.
     let operand = if super::present(args.get(4)) { &args[4] } else { &args[3] };
     let c = match ctx.value(operand)? {
-        Value::Array(b_array) => {
-            let b = read_block(ctx, operand, a.ncols(), b_array.dims[1] as usize, "B")?;
-            a * b
+        Value::Array(b) => {
+            let (rows, cols) = (a.ncols(), b.dims[1] as usize);
+            a * block_of(ctx, &b, rows, cols, "B")?
         }
         _ => a * ctx.num(operand)?,
     };
@@ -125,12 +125,19 @@ fn read_matrix(
 
 /// The top-left `rows` x `cols` block of a matrix operand that must be at least that large.
 fn read_block(ctx: &Ctx<'_>, arg: &Value, rows: usize, cols: usize, what: &str) -> Result<DMatrix<f64>, RapidError> {
-    let a = array(ctx, arg, 2, what)?;
+    block_of(ctx, &array(ctx, arg, 2, what)?, rows, cols, what)
+}
+
+/// The top-left `rows` x `cols` block of `a`, which must be at least that large.
+fn block_of(ctx: &Ctx<'_>, a: &Array, rows: usize, cols: usize, what: &str) -> Result<DMatrix<f64>, RapidError> {
+    if a.rank() != 2 {
+        return Err(ctx.error(Err::InvalidDim, format!("{what} must be an array of 2 dimension(s)")));
+    }
     if (a.dims[0] as usize) < rows || (a.dims[1] as usize) < cols {
         let (r, c) = (a.dims[0], a.dims[1]);
         return Err(ctx.error(Err::InvalidDim, format!("{what} is {r}x{c}, the operation needs {rows}x{cols}")));
     }
-    Ok(block(&a, rows, cols))
+    Ok(block(a, rows, cols))
 }
 
 fn block(a: &Array, rows: usize, cols: usize) -> DMatrix<f64> {
