@@ -132,6 +132,11 @@ pub(crate) const ENTRIES: &[Entry] = &[
     ),
     routine(r#"FUNC dnum BitRShDnum(dnum Value, num ShiftSteps)"#, "Shifts an integer dnum right by 1-52 steps."),
     // --- Matrix instructions --------------------------------------------------------------
+    // MatrixSolve, MatrixSolveQR and MatrixSVD: argument lists as in the RW6 manual extract
+    // [S1] (`MatrixSolve A [\A_m] [\A_n] b x`, `MatrixSolveQR A [\A_m] [\A_n] Q R`,
+    // `MatrixSVD A [\A_m] [\A_n] U S V [\Econ]`); the extract types every array as
+    // `dnum{*}`; uncertain: read here as 2-D for the matrices (its text says m x n matrix).
+    // The other six are not in the extract (RW 6.15) and follow the same pattern.
     // uncertain: added in RW 6.15.04; argument names, order and optional size arguments are a guess.
     routine(
         r#"PROC MatrixAdd(dnum A{*,*} \num A_m \num A_n, dnum B{*,*}, VAR dnum C{*,*})"#,
@@ -159,23 +164,21 @@ pub(crate) const ENTRIES: &[Entry] = &[
     ),
     // uncertain: added in RW 6.15.04; argument names and optional size arguments are a guess.
     routine(r#"PROC MatrixReset(VAR dnum A{*,*} \num A_m \num A_n)"#, "Sets every element of a matrix to zero."),
-    // uncertain: the extract gives A as a flat dnum array; read here as a 2-D matrix.
     routine(
         r#"PROC MatrixSolve(dnum A{*,*} \num A_m \num A_n, dnum b{*}, VAR dnum x{*})"#,
         "Solves the linear system A*x = b (least squares when A has more rows).",
     ),
-    // uncertain: the extract gives A, Q, R as flat dnum arrays; read here as 2-D matrices.
     routine(
         r#"PROC MatrixSolveQR(dnum A{*,*} \num A_m \num A_n, VAR dnum Q{*,*}, VAR dnum R{*,*})"#,
         "Computes a QR factorisation of matrix A into Q and R.",
     ),
-    // uncertain: the extract gives A, U, V as flat dnum arrays; read here as 2-D matrices.
     routine(
         r#"PROC MatrixSVD(dnum A{*,*} \num A_m \num A_n, VAR dnum U{*,*}, VAR dnum S{*}, VAR dnum V{*,*} \switch Econ)"#,
         "Computes a singular value decomposition of matrix A into U, S and V.",
     ),
     // --- Shape fitting --------------------------------------------------------------------
-    // uncertain: Points read as an N x 3 dnum matrix (the extract only says an array of dnum).
+    // Arguments as in the RW6 manual extract [S1]. uncertain: Points read as an N x 3 dnum
+    // matrix, one point per row (the extract only says an array of dnum).
     routine(
         r#"PROC FitCircle(dnum Points{*,*} \num NumPoints, VAR pos Center, VAR num Radius, VAR pos Normal \VAR num RMS \VAR num MaxErr \VAR num IndexWorst)"#,
         "Fits a circle to a set of 3D points; returns centre, radius and plane normal.",

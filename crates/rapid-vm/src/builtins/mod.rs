@@ -15,6 +15,8 @@ mod matrix;
 mod pendant;
 mod rawbytes;
 pub mod sockets;
+mod strdig;
+mod strformat;
 mod strings;
 mod symbols;
 mod sysinfo;
@@ -185,7 +187,8 @@ pub fn present(arg: Option<&Value>) -> bool {
 pub type Entries = &'static [(&'static str, BuiltinFn)];
 
 /// Every family's table; a built-in's id is its position in their concatenation.
-static FAMILIES: &[Entries] = &[CORE, files::ENTRIES, sockets::ENTRIES, matrix::ENTRIES, sysinfo::ENTRIES];
+static FAMILIES: &[Entries] =
+    &[CORE, files::ENTRIES, sockets::ENTRIES, matrix::ENTRIES, sysinfo::ENTRIES, strdig::ENTRIES, strformat::ENTRIES];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =
     std::sync::LazyLock::new(|| FAMILIES.iter().flat_map(|family| family.iter().copied()).collect());
