@@ -75,6 +75,9 @@ pub struct Ctx<'a> {
     pub wall_epoch: f64,
     /// Open files, directories and sockets of the task.
     pub resources: &'a mut Resources,
+    /// The call chain, outermost first; the last frame made the call (ExecHandler,
+    /// ExecLevel).
+    pub(crate) chain: &'a [crate::exec::Frame],
 }
 
 /// What the task holds open outside the interpreter: each family keeps its own table,
@@ -266,6 +269,8 @@ static CORE: Entries = &[
     ("CTime", calendar::c_time),
     ("GetTime", calendar::get_time),
     ("GetTaskName", system::get_task_name),
+    ("ExecHandler", system::exec_handler),
+    ("ExecLevel", system::exec_level),
     ("GetDataVal", symbols::get_data_val),
     ("SetDataVal", symbols::set_data_val),
     ("Incr", math::incr),

@@ -99,3 +99,16 @@ pub(super) fn get_task_name(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<
     }
     Ok(Some(Value::Str(super::TASK_NAME.into())))
 }
+
+/// `ExecHandler()`: which handler the calling routine is running (handler_type).
+pub(super) fn exec_handler(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
+    let handler = ctx.chain.last().map_or(0, |frame| frame.handler_type());
+    Ok(Some(Value::Num(f32::from(handler))))
+}
+
+/// `ExecLevel()`: LEVEL_TRAP (1) while a TRAP routine is anywhere in the call chain,
+/// else LEVEL_NORMAL (0). Service routines (LEVEL_SERVICE, 2) do not exist here.
+pub(super) fn exec_level(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
+    let in_trap = ctx.chain.iter().any(|frame| frame.is_trap());
+    Ok(Some(Value::Num(if in_trap { 1.0 } else { 0.0 })))
+}

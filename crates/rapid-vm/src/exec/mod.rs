@@ -74,7 +74,7 @@ struct ActiveError {
 }
 
 #[derive(Debug)]
-struct Frame {
+pub(crate) struct Frame {
     code: Rc<Code>,
     pc: u32,
     base: u32,
@@ -87,6 +87,26 @@ struct Frame {
     undoing: bool,
     /// Running this frame's BACKWARD handler: where the caller's PP goes afterwards.
     return_to: Option<u32>,
+}
+
+impl Frame {
+    /// Which handler of its routine this frame runs (ExecHandler): the handler_type
+    /// values HANDLER_NONE 0, HANDLER_BWD 1, HANDLER_ERR 2, HANDLER_UNDO 3.
+    pub(crate) fn handler_type(&self) -> u8 {
+        if self.undoing {
+            3
+        } else if self.active.is_some() {
+            2
+        } else if self.return_to.is_some() {
+            1
+        } else {
+            0
+        }
+    }
+
+    pub(crate) fn is_trap(&self) -> bool {
+        self.code.is_trap
+    }
 }
 
 /// One program task's interpreter.
@@ -671,6 +691,7 @@ impl Vm {
             routine: self.frames.last().map_or("", |f| f.code.name.as_str()),
             wall_epoch: self.wall_epoch,
             resources: &mut self.resources,
+            chain: &self.frames,
         };
         let res = crate::builtins::function(id)(&mut ctx, args);
         let waited = ctx.waited;
