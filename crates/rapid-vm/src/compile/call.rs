@@ -41,6 +41,9 @@ impl RoutineCompiler<'_> {
                 if info.display.eq_ignore_ascii_case("CallByVar") {
                     return self.call_by_var(arena, args);
                 }
+                if info.display.eq_ignore_ascii_case("Type") {
+                    return self.type_name(arena, args, span);
+                }
                 if info.display.eq_ignore_ascii_case("WaitUntil") {
                     return self.wait_until(arena, &info, args, span);
                 }
@@ -101,6 +104,36 @@ impl RoutineCompiler<'_> {
             if param.ty == rapid_sema::types::ANY { None } else { Some((param.ty, expected_dims(param.rank, [0; 3]))) };
         self.expr(arena, value, expect)?;
         Ok(ArgSpec::Value)
+    }
+
+    /// `Type(Data [\BaseName])`: the name of the data's declared type — an alias's own
+    /// name, or with `\BaseName` the type it stands for. Known when compiling, so the
+    /// call becomes a constant.
+    // uncertain: the manual does not say whether the indices of an element argument
+    // are evaluated; the name does not depend on them, so they are not.
+    fn type_name(&mut self, arena: &Arena, args: ArgList, span: Span) -> Result<(), CompileError> {
+        let args = arena.args(args);
+        let mut base_name = false;
+        let mut data = None;
+        for arg in args {
+            match (arg.kind, arg.value) {
+                (ArgKind::Optional, None) => base_name = true,
+                (ArgKind::Conditional, _) => {
+                    return Err(self.unsupported(arg.span, "Type with a conditional \\BaseName argument"))
+                }
+                (_, Some(value)) => data = Some(value),
+                _ => {}
+            }
+        }
+        let Some((ty, _)) = data.and_then(|value| self.static_type(arena, value)) else {
+            return Err(self.error(span, "Type needs a data object as its argument"));
+        };
+        let types = &self.prog.types;
+        let ty = if base_name { types.canonical(ty) } else { ty };
+        let name = types.name(ty).to_string();
+        let idx = self.code.constant(crate::value::Value::Str(name.as_str().into()));
+        self.code.emit(Instr::Const(idx));
+        Ok(())
     }
 
     /// `Present(p)`: whether optional parameter `p` was passed.
