@@ -10,10 +10,12 @@ MODULE file_readstr_options
         Open "HOME:/s.txt", f \Write;
         Write f, "a b,,c";
         Write f, "dos\0D";
-        FOR i FROM 1 TO 9 DO
+        FOR i FROM 1 TO 8 DO
             long := long + "0123456789";
         ENDFOR
-        Write f, long;
+        ! A line of 90 characters (a string holds at most 80).
+        Write f, long \NoNewLine;
+        Write f, "0123456789";
         Write f, "tail";
         Close f;
         Open "HOME:/s.txt", f \Read;

@@ -105,8 +105,7 @@ fn configure_files(loaded: &mut rapid_vm::Loaded, args: &RunArgs, files: &[Sourc
         .flat_map(|f| {
             let parse = rapid_syntax::parse(&f.text, &mut interner);
             let path = std::path::PathBuf::from(&f.path);
-            let names: Vec<String> =
-                parse.file.modules.iter().map(|m| m.name.span.text(&f.text).to_string()).collect();
+            let names: Vec<String> = parse.file.modules.iter().map(|m| m.name.span.text(&f.text).to_string()).collect();
             names.into_iter().map(move |name| ModuleFile { name, path: path.clone() })
         })
         .collect();

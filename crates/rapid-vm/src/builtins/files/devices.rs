@@ -70,8 +70,9 @@ pub(crate) fn resolve(root: Option<&Path>, text: &str) -> Result<Resolved, PathF
     let (device, rest) = split_device(text)?;
     let segments = normalise(text, rest)?;
     let device_root = root.join(device);
-    std::fs::create_dir_all(&device_root)
-        .map_err(|e| PathFault::Refused(format!("the device folder `{}` cannot be made: {e}", device_root.display())))?;
+    std::fs::create_dir_all(&device_root).map_err(|e| {
+        PathFault::Refused(format!("the device folder `{}` cannot be made: {e}", device_root.display()))
+    })?;
     let mut path = device_root.clone();
     path.extend(&segments);
     check_links(&device_root, &path, text)?;

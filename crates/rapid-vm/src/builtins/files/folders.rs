@@ -114,10 +114,7 @@ pub(super) fn remove_file(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// The source and target of RenameFile/CopyFile: the source must be an existing file
 /// and the target must not exist (ERR_FILEEXIST).
-fn source_and_target(
-    ctx: &Ctx<'_>,
-    args: &[Value],
-) -> Result<(std::path::PathBuf, std::path::PathBuf), RapidError> {
+fn source_and_target(ctx: &Ctx<'_>, args: &[Value]) -> Result<(std::path::PathBuf, std::path::PathBuf), RapidError> {
     let (old_text, old, _) = path_arg(ctx, &args[0])?;
     let (new_text, new, _) = path_arg(ctx, &args[1])?;
     if !old.is_file() {

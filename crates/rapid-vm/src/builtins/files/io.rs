@@ -115,9 +115,8 @@ pub(super) fn read_str(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `ReadBin(IODevice [\Time])`: the next byte (0..255); EOF_BIN at end of file.
 pub(super) fn read_bin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     check_time(ctx, args.get(1))?;
-    let bytes = with_file(ctx, &args[0], Need::Read, |file| {
-        file.read_bytes(1).map_err(|e| io_fault("ReadBin failed", &e))
-    })?;
+    let bytes =
+        with_file(ctx, &args[0], Need::Read, |file| file.read_bytes(1).map_err(|e| io_fault("ReadBin failed", &e)))?;
     Ok(Some(Value::Num(bytes.first().map_or(EOF_BIN, |&b| f32::from(b)))))
 }
 
@@ -159,7 +158,9 @@ pub(super) fn write_bin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
             }
         }
     }
-    with_file(ctx, &args[0], Need::Write, |file| file.write_bytes(&bytes).map_err(|e| io_fault("WriteBin failed", &e)))?;
+    with_file(ctx, &args[0], Need::Write, |file| {
+        file.write_bytes(&bytes).map_err(|e| io_fault("WriteBin failed", &e))
+    })?;
     Ok(None)
 }
 

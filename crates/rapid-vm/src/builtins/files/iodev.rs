@@ -209,7 +209,7 @@ pub(super) fn clear_io_buff(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// expire, but it must be a sensible number.
 pub(super) fn check_time(ctx: &Ctx<'_>, arg: Option<&Value>) -> Result<(), RapidError> {
     match ctx.opt_num(arg)? {
-        Some(t) if !(t > 0.0) => Err(ctx.error(Err::ArgValue, format!("\\Time:={t} must be positive"))),
+        Some(t) if t.is_nan() || t <= 0.0 => Err(ctx.error(Err::ArgValue, format!("\\Time:={t} must be positive"))),
         _ => Ok(()),
     }
 }
