@@ -1,5 +1,7 @@
 MODULE file_dirs
     ! MakeDir, OpenDir/ReadDir/CloseDir, RemoveDir and IsFile \Directory (manual §1.16).
+    ! IsFile with a kind raises ERR_FILEACC for a path that does not exist (public RAPID
+    ! programs make a missing directory in that handler); without a kind it is FALSE.
     ! ReadDir gives "." and ".." first (the controller's file system lists them; public
     ! RAPID programs skip two entries), then, here, the names in alphabetical order.
     VAR dir d;
@@ -26,6 +28,7 @@ MODULE file_dirs
         try "open missing", 3;
         try "read closed", 4;
         try "remove a device", 5;
+        try "IsFile \\Directory of a missing path", 6;
         RemoveFile "HOME:/work/a.txt";
         RemoveFile "HOME:/work/b.txt";
         RemoveDir "HOME:/work/sub";
@@ -46,6 +49,8 @@ MODULE file_dirs
             IF ReadDir(d, name) TPWrite "read " + name;
         CASE 5:
             RemoveDir "HOME:";
+        CASE 6:
+            IF IsFile("HOME:/nowhere" \Directory) TPWrite "exists";
         ENDTEST
         TPWrite what + ": no error";
     ERROR

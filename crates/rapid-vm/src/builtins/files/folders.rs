@@ -141,10 +141,19 @@ pub(super) fn copy_file(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 }
 
 /// `IsFile(Path [\Directory] | [\Fifo] | [\RegFile] | [\BlockSpec] | [\CharSpec])`:
-/// whether the path exists, or exists and is of the given kind.
+/// whether the path exists, or, with a kind, whether it is of that kind.
+///
+/// A path that does not exist gives FALSE without a kind, and ERR_FILEACC with one:
+/// public RAPID programs test `IsFile(dir \Directory)` and make the missing directory in
+/// their ERR_FILEACC handler, while `IsFile(file)` alone answers FALSE for a new file.
 pub(super) fn is_file(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (_, path, _) = path_arg(ctx, &args[0])?;
-    let Ok(meta) = std::fs::metadata(&path) else { return Ok(Some(Value::Bool(false))) };
+    let (text, path, _) = path_arg(ctx, &args[0])?;
+    let kind_given = args.get(1..6).unwrap_or_default().iter().any(|a| present(Some(a)));
+    let meta = match std::fs::metadata(&path) {
+        Ok(meta) => meta,
+        Err(_) if !kind_given => return Ok(Some(Value::Bool(false))),
+        Err(e) => return Err(access(ctx, format!("`{text}`: {e}"))),
+    };
     let kind = meta.file_type();
     let answer = if present(args.get(1)) {
         kind.is_dir()

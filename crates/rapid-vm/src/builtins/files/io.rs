@@ -32,7 +32,8 @@ const RAWBYTES_CAPACITY: usize = 1024;
 /// the text, the value in the format TPWrite uses, and a line feed unless `\NoNewLine`.
 pub(super) fn write(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let mut line = ctx.string(&args[1])?;
-    if let Some(value) = args[2..7].iter().find(|a| present(Some(a))) {
+    let values = args.get(2..7).unwrap_or_default();
+    if let Some(value) = values.iter().find(|a| present(Some(a))) {
         line.push_str(&value_text(ctx, &ctx.value(value)?));
     }
     if !present(args.get(7)) {
