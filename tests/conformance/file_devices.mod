@@ -1,7 +1,7 @@
 MODULE file_devices
     ! The devices HOME:, TEMP:, RAMDISK: and BACKUP: are separate folders; device names
-    ! are not case-sensitive; a path without a device is on HOME:; `.` and `..` inside a
-    ! device are allowed as long as they stay in it (docs/semantics.md).
+    ! and file names are not case-sensitive; a path without a device is on HOME:; `.` and
+    ! `..` inside a device are allowed as long as they stay in it (docs/semantics.md).
     PROC main()
         VAR iodev f;
         put "HOME:/same.txt", "home";
@@ -17,6 +17,8 @@ MODULE file_devices
         MakeDir "RAMDISK:/d";
         show "RAMDISK:/d/../same.txt";
         show "RAMDISK:/./d/./../same.txt";
+        put "HOME:/Mixed.txt", "mixed";
+        show "HOME:/MIXED.TXT";
         put "rel.txt", "relative";
         show "HOME:/rel.txt";
         TPWrite "escape=" \Bool:=escape();

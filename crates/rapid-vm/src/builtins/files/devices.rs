@@ -3,9 +3,10 @@
 //!
 //! Each device is a folder under the root named like the device (`HOME:` is
 //! `<root>/HOME`), created the first time a path on it is used. A path without a device
-//! is on `HOME:`. A path is refused, never followed, when it names an unknown device,
-//! is an absolute host path, climbs out of its device with `..`, or reaches through a
-//! symbolic link to somewhere outside its device.
+//! is on `HOME:`. Names ignore letter case, as on the controller's disk. A path is
+//! refused, never followed, when it names an unknown device, is an absolute host path,
+//! climbs out of its device with `..`, or reaches through a symbolic link to somewhere
+//! outside its device.
 
 use std::path::{Path, PathBuf};
 
@@ -74,7 +75,10 @@ pub(crate) fn resolve(root: Option<&Path>, text: &str) -> Result<Resolved, PathF
         PathFault::Refused(format!("the device folder `{}` cannot be made: {e}", device_root.display()))
     })?;
     let mut path = device_root.clone();
-    path.extend(&segments);
+    for segment in &segments {
+        let name = existing_spelling(&path, segment);
+        path.push(name);
+    }
     check_links(&device_root, &path, text)?;
     Ok(Resolved { path, is_device_root: segments.is_empty() })
 }
@@ -123,6 +127,25 @@ fn normalise<'a>(text: &str, rest: &'a str) -> Result<Vec<&'a str>, PathFault> {
     Ok(segments)
 }
 
+/// The name of `segment` in `dir` as it is spelt on the disk: the controller's disk
+/// ignores letter case (`LOG.TXT` opens `log.txt`), the host's may not. A name that
+/// exists exactly, or nowhere, is kept as written.
+// uncertain: we take the IRC5 mass storage to be a FAT-style file system that keeps
+// but ignores letter case.
+fn existing_spelling(dir: &Path, segment: &str) -> String {
+    if dir.join(segment).symlink_metadata().is_ok() {
+        return segment.to_string();
+    }
+    let Ok(entries) = std::fs::read_dir(dir) else { return segment.to_string() };
+    let mut matches: Vec<String> = entries
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|name| name.eq_ignore_ascii_case(segment))
+        .collect();
+    matches.sort();
+    matches.into_iter().next().unwrap_or_else(|| segment.to_string())
+}
+
 /// Refuses a path that reaches, through a symbolic link, somewhere outside its device
 /// (or through a link that leads nowhere, which a write would follow).
 fn check_links(device_root: &Path, path: &Path, text: &str) -> Result<(), PathFault> {
@@ -164,6 +187,19 @@ mod tests {
         assert_eq!(resolve(Some(&root), "a/./b/../c").unwrap().path, root.join("HOME").join("a").join("c"));
         assert!(resolve(Some(&root), "RAMDISK:").unwrap().is_device_root);
         assert!(root.join("RAMDISK").is_dir());
+        let _ = std::fs::remove_dir_all(&root);
+    }
+
+    #[test]
+    fn letter_case_is_ignored() {
+        let root = temp_root("case");
+        std::fs::create_dir_all(root.join("HOME").join("Logs")).unwrap();
+        std::fs::write(root.join("HOME").join("Logs").join("Day.txt"), "x").unwrap();
+        let r = resolve(Some(&root), "HOME:/LOGS/day.TXT").unwrap();
+        assert_eq!(r.path, root.join("HOME").join("Logs").join("Day.txt"));
+        // A new name keeps the spelling it was given.
+        let r = resolve(Some(&root), "home:/logs/New.txt").unwrap();
+        assert_eq!(r.path, root.join("HOME").join("Logs").join("New.txt"));
         let _ = std::fs::remove_dir_all(&root);
     }
 
