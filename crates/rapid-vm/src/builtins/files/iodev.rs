@@ -34,8 +34,11 @@ pub(super) struct OpenFile {
 /// What an instruction needs of the file.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) enum Need {
+    /// It reads: the file must have been opened for reading.
     Read,
+    /// It writes: the file must have been opened for writing.
     Write,
+    /// The file only has to be open (Rewind, ClearIOBuff).
     Open,
 }
 
