@@ -75,6 +75,22 @@ fn links_pointing_outside_are_not_followed() {
     assert_eq!(String::from_utf8_lossy(&out.stdout), "ERR_FILEACC\n");
 }
 
+#[cfg(unix)]
+#[test]
+fn a_fifo_in_the_root_is_not_opened() {
+    let dir = temp_dir("fifo");
+    let home = dir.join("home");
+    fs::create_dir_all(home.join("HOME")).unwrap();
+    let made = Command::new("mkfifo").arg(home.join("HOME").join("pipe")).status();
+    if !made.is_ok_and(|s| s.success()) {
+        return; // No mkfifo on this host: nothing to check.
+    }
+    let module = dir.join("w.mod");
+    fs::write(&module, writer("HOME:/pipe")).unwrap();
+    let out = run(&module, Some(&home));
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "ERR_FILEOPEN\n");
+}
+
 #[test]
 fn the_default_root_is_beside_the_program() {
     let dir = temp_dir("default");

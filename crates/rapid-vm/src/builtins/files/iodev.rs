@@ -143,6 +143,13 @@ pub(super) fn open(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         (present(args.get(3)), present(args.get(4)), present(args.get(5)), present(args.get(6)));
     let path_text = super::devices::join_object(&object, file_name.as_deref());
     let resolved = resolve(ctx, &path_text, Err::FileOpen)?;
+    // Only regular files: a directory cannot be read as a file, and opening a FIFO or a
+    // device placed in the root would block the controller or reach hardware.
+    if let Ok(meta) = std::fs::metadata(&resolved.path) {
+        if !meta.is_file() {
+            return Err(ctx.error(Err::FileOpen, format!("`{path_text}` is not a file")));
+        }
+    }
     let mut options = OpenOptions::new();
     let (readable, writable, at_end) = match (read, write, append, bin) {
         (true, _, _, _) => (true, false, false),
@@ -167,9 +174,6 @@ pub(super) fn open(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         Ok(file)
     });
     let file = match opened {
-        Ok(file) if file.metadata().is_ok_and(|m| m.is_dir()) => {
-            return Err(ctx.error(Err::FileOpen, format!("`{path_text}` is a directory")))
-        }
         Ok(file) => file,
         Err(e) => return Err(ctx.error(Err::FileOpen, format!("`{path_text}` cannot be opened: {e}"))),
     };
