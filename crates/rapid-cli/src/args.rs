@@ -55,6 +55,13 @@ pub(crate) struct RunArgs {
     #[arg(long, value_name = "FILE")]
     pub(crate) tp_input: Option<PathBuf>,
 
+    /// The controller's root folder: the file devices HOME:, TEMP:, RAMDISK: and BACKUP:
+    /// are its subfolders HOME, TEMP, RAMDISK and BACKUP (made when first used). The
+    /// program's files never leave it. Default: a folder `rapid-controller` beside the
+    /// first PATH.
+    #[arg(long, value_name = "DIR")]
+    pub(crate) home: Option<PathBuf>,
+
     /// Module files, program files (.pgf) or folders, loaded together as one task.
     #[arg(required = true, value_name = "PATH")]
     pub(crate) paths: Vec<PathBuf>,

@@ -1,7 +1,9 @@
 //! The conformance corpus of `rapid run`: `tests/conformance/NAME.mod` with `NAME.out`
 //! (exact stdout), optional `NAME.exit` (exit status, default 0), `NAME.err` (a
-//! fragment stderr must contain) and `NAME.args` (extra `rapid run` options). Expected outputs were worked out by hand from the
-//! manual (see tests/conformance/README.md).
+//! fragment stderr must contain) and `NAME.args` (extra `rapid run` options). Each
+//! program runs with its own empty controller root (`--home`), removed afterwards.
+//! Expected outputs were worked out by hand from the manual (see
+//! tests/conformance/README.md).
 //!
 //! `tests/conformance/PENDING` lists programs the interpreter does not pass yet, one
 //! name per line with the reason. They are still run: each must FAIL, so a program that
@@ -23,12 +25,18 @@ struct Outcome {
 fn run_one(module: &Path) -> Outcome {
     // Optional NAME.args: extra `rapid run` options, separated by whitespace.
     let extra = fs::read_to_string(module.with_extension("args")).unwrap_or_default();
+    // A fresh controller root per program, so file tests never write into the repository
+    // and never see another program's files.
+    let home = fresh_home(module);
     let out = Command::new(env!("CARGO_BIN_EXE_rapid"))
         .args(["run", "--max-steps", "50000000", "--max-time", "100000"])
+        .arg("--home")
+        .arg(&home)
         .args(extra.split_whitespace())
         .arg(module)
         .output()
         .expect("run rapid");
+    let _ = fs::remove_dir_all(&home);
     let expected_out = fs::read_to_string(module.with_extension("out")).unwrap_or_default();
     let expected_exit: i32 =
         fs::read_to_string(module.with_extension("exit")).ok().and_then(|s| s.trim().parse().ok()).unwrap_or(0);
@@ -52,6 +60,15 @@ fn run_one(module: &Path) -> Outcome {
         problems.push(format!("stderr:\n{stderr}"));
     }
     Outcome { passed: problems.is_empty(), detail: problems.join("\n") }
+}
+
+/// An empty folder for the controller root of one program.
+fn fresh_home(module: &Path) -> PathBuf {
+    let name = module.file_stem().unwrap_or_default().to_string_lossy();
+    let home = std::env::temp_dir().join(format!("rapid-conformance-{}-{name}", std::process::id()));
+    let _ = fs::remove_dir_all(&home);
+    fs::create_dir_all(&home).expect("make a controller root");
+    home
 }
 
 #[test]

@@ -11,6 +11,7 @@ use std::time::Duration;
 
 use rapid_sema::SourceInput;
 use rapid_syntax::LineIndex;
+use rapid_vm::builtins::files::ModuleFile;
 use rapid_vm::{load, Exit, Host, LoadError};
 
 use crate::args::RunArgs;
@@ -27,6 +28,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         Ok(loaded) => loaded,
         Err(err) => return report_load_error(err, &inputs.modules),
     };
+    configure_files(&mut loaded, args, &inputs.modules);
     let answers = match &args.tp_input {
         Some(path) => {
             let text = std::fs::read_to_string(path)
@@ -90,6 +92,37 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         save_persistents(&loaded, &inputs.modules)?;
     }
     Ok(status)
+}
+
+/// The controller root of the file devices (`--home`, else `rapid-controller` beside
+/// the first PATH) and the loaded modules' files (ModExist, ModTimeDnum).
+fn configure_files(loaded: &mut rapid_vm::Loaded, args: &RunArgs, files: &[SourceInput]) {
+    let root = args.home.clone().unwrap_or_else(|| default_home(&args.paths));
+    let mut interner = rapid_syntax::Interner::default();
+    let modules = files
+        .iter()
+        .filter(|f| f.unreadable.is_none())
+        .flat_map(|f| {
+            let parse = rapid_syntax::parse(&f.text, &mut interner);
+            let path = std::path::PathBuf::from(&f.path);
+            let names: Vec<String> = parse.file.modules.iter().map(|m| m.name.span.text(&f.text).to_string()).collect();
+            names.into_iter().map(move |name| ModuleFile { name, path: path.clone() })
+        })
+        .collect();
+    let state = &mut loaded.vm.resources_mut().files;
+    state.set_root(root);
+    state.set_modules(modules);
+}
+
+/// `rapid-controller` in the folder holding the first PATH (for a folder of modules,
+/// beside that folder).
+fn default_home(paths: &[std::path::PathBuf]) -> std::path::PathBuf {
+    let first = paths.first().map(|p| p.as_path()).unwrap_or(std::path::Path::new("."));
+    let parent = match first.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => std::path::PathBuf::from("."),
+    };
+    parent.join("rapid-controller")
 }
 
 /// Writes each changed persistent's value into its module file (Save Module).

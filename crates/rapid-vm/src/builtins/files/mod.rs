@@ -1,0 +1,154 @@
+//! Files and folders on the controller's devices (§1.16) and character/binary I/O on
+//! them (§1.10).
+//!
+//! * [`devices`]: device paths (`HOME:`, `TEMP:`, ...) and the sandbox under one root.
+//! * [`folders`]: MakeDir, RemoveDir, OpenDir/ReadDir/CloseDir (`dir`), RemoveFile,
+//!   RenameFile, CopyFile, IsFile, FSSize, FileSize, FileTimeDnum, ModExist, ModTimeDnum.
+//! * [`iodev`]: Open, Close, Rewind, ClearIOBuff and the open-file table (`iodev`).
+//! * [`io`]: Write, ReadNum, ReadStr and the binary reads and writes.
+//! * [`text`] and [`anybin`]: the pure parts (fields of text files, WriteAnyBin's format).
+//!
+//! An iodev or dir variable holds `OpaqueState::Handle(n)`; `n` keys this family's tables
+//! in [`FileState`]. Handles are never reused, so an iodev that was closed (or closed by
+//! PP to Main) is simply not found: ERR_FILEACC.
+
+mod anybin;
+mod devices;
+mod folders;
+mod io;
+mod iodev;
+mod text;
+
+use std::path::{Path, PathBuf};
+
+use rustc_hash::FxHashMap;
+
+use super::{Ctx, Entries};
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::{Opaque, OpaqueState, Value};
+
+type Res = Result<Option<Value>, RapidError>;
+/// An error before it becomes a RAPID error (the tables are borrowed while it is made).
+type Fault = (Err, String);
+
+/// Open files and directories of the task, the controller root the devices live under
+/// and the loaded modules' files (ModExist, ModTimeDnum).
+#[derive(Default)]
+pub struct FileState {
+    root: Option<PathBuf>,
+    modules: Vec<ModuleFile>,
+    files: FxHashMap<u32, iodev::OpenFile>,
+    dirs: FxHashMap<u32, folders::DirListing>,
+    last_handle: u32,
+}
+
+/// A loaded module and the file it came from.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ModuleFile {
+    pub name: String,
+    pub path: PathBuf,
+}
+
+impl FileState {
+    /// The folder the devices live in: `HOME:` is `<root>/HOME`, and so on. Without a
+    /// root every file built-in raises an error.
+    pub fn set_root(&mut self, root: impl Into<PathBuf>) {
+        self.root = Some(root.into());
+    }
+
+    pub fn root(&self) -> Option<&Path> {
+        self.root.as_deref()
+    }
+
+    /// The task's loaded modules (ModExist, ModTimeDnum).
+    pub fn set_modules(&mut self, modules: Vec<ModuleFile>) {
+        self.modules = modules;
+    }
+
+    /// Closes every open file and directory.
+    pub fn close_all(&mut self) {
+        self.files.clear();
+        self.dirs.clear();
+    }
+
+    fn new_handle(&mut self) -> u32 {
+        self.last_handle = self.last_handle.wrapping_add(1).max(1);
+        self.last_handle
+    }
+}
+
+pub(super) static ENTRIES: Entries = &[
+    ("Open", iodev::open),
+    ("Close", iodev::close),
+    ("Rewind", iodev::rewind),
+    ("ClearIOBuff", iodev::clear_io_buff),
+    ("Write", io::write),
+    ("ReadNum", io::read_num),
+    ("ReadStr", io::read_str),
+    ("ReadBin", io::read_bin),
+    ("ReadStrBin", io::read_str_bin),
+    ("WriteBin", io::write_bin),
+    ("WriteStrBin", io::write_str_bin),
+    ("WriteAnyBin", io::write_any_bin),
+    ("ReadAnyBin", io::read_any_bin),
+    ("WriteRawBytes", io::write_raw_bytes),
+    ("ReadRawBytes", io::read_raw_bytes),
+    ("MakeDir", folders::make_dir),
+    ("RemoveDir", folders::remove_dir),
+    ("OpenDir", folders::open_dir),
+    ("ReadDir", folders::read_dir),
+    ("CloseDir", folders::close_dir),
+    ("RemoveFile", folders::remove_file),
+    ("RenameFile", folders::rename_file),
+    ("CopyFile", folders::copy_file),
+    ("IsFile", folders::is_file),
+    ("FSSize", folders::fs_size),
+    ("FileSize", folders::file_size),
+    ("FileTimeDnum", folders::file_time_dnum),
+    ("ModExist", folders::mod_exist),
+    ("ModTimeDnum", folders::mod_time_dnum),
+];
+
+// ---- helpers shared by the family ---------------------------------------------------------
+
+/// The opaque shell of an iodev or dir argument and the handle it holds, if any.
+fn handle_of(ctx: &Ctx<'_>, arg: &Value) -> Result<(Opaque, Option<u32>), RapidError> {
+    match ctx.value(arg)? {
+        Value::Opaque(opaque) => {
+            let handle = match opaque.state {
+                OpaqueState::Handle(h) => Some(h),
+                _ => None,
+            };
+            Ok((*opaque, handle))
+        }
+        _ => Err(ctx.error(Err::ArgValue, "an iodev or dir was expected")),
+    }
+}
+
+/// Stores `state` into the iodev or dir variable `arg`.
+fn set_handle(ctx: &mut Ctx<'_>, arg: &Value, mut shell: Opaque, state: OpaqueState) -> Result<(), RapidError> {
+    shell.state = state;
+    ctx.store(arg, Value::Opaque(Box::new(shell)))
+}
+
+/// A RAPID path resolved on its device; `err` is the error a refused path raises here.
+fn resolve(ctx: &Ctx<'_>, text: &str, err: Err) -> Result<devices::Resolved, RapidError> {
+    devices::resolve(ctx.resources.files.root(), text).map_err(|fault| ctx.error(err, fault.message()))
+}
+
+fn fault(ctx: &Ctx<'_>, (err, message): Fault) -> RapidError {
+    ctx.error(err, message)
+}
+
+/// An I/O failure of the host as ERR_FILEACC, naming what was done.
+fn io_fault(what: &str, e: &std::io::Error) -> Fault {
+    (Err::FileAccess, format!("{what}: {e}"))
+}
+
+fn opt_string(ctx: &Ctx<'_>, arg: Option<&Value>) -> Result<Option<String>, RapidError> {
+    match arg {
+        None | Some(Value::Absent) => Ok(None),
+        Some(v) => ctx.string(v).map(Some),
+    }
+}
