@@ -156,7 +156,7 @@ fn decode_value(body: &[u8], at: &mut usize, like: &Value) -> Result<Value, Faul
                 return Err(corrupt("the record read has another number of components than Data"));
             }
             let fields = r.fields.iter().map(|f| decode_value(body, at, f)).collect::<Result<Vec<_>, _>>()?;
-            Ok(Value::Record(Box::new(Record { ty: r.ty, fields })))
+            Ok(Value::Record(std::rc::Rc::new(Record { ty: r.ty, fields })))
         }
         Value::Array(a) => {
             tag(body, at, TAG_ARRAY)?;
@@ -188,7 +188,7 @@ mod tests {
     }
 
     fn record(fields: Vec<Value>) -> Value {
-        Value::Record(Box::new(Record { ty: ANY, fields }))
+        Value::Record(std::rc::Rc::new(Record { ty: ANY, fields }))
     }
 
     #[test]
