@@ -1,6 +1,7 @@
 //! rapid-vm: executes RAPID programs checked by rapid-sema.
 //!
-//! Invariant: no IO of its own. Output, input, clocks and files reach it through host
+//! Invariant: no IO of its own except the program's files (sandboxed under the
+//! controller root) and sockets (builtins::Resources). Output, input and clocks reach it through host
 //! traits; RAPID call depth lives in explicit frames, never on the Rust stack.
 
 pub mod builtins;
