@@ -109,6 +109,63 @@ pub enum Instr {
     RaiseWaitTimeout,
     /// The routine ran off its end without RETURN (in a FUNC: ERR_FNCNORET).
     FellOffEnd,
+    /// Evaluate kernel `kernel` and store its result at its target, then continue at
+    /// `skip`. When the kernel cannot run (an operand is not a plain num, or an error
+    /// would arise) nothing happens and execution continues with the next instruction:
+    /// the statement's general code, which follows and does it all again (a kernel only
+    /// reads, so starting over is safe).
+    KernelStore {
+        kernel: u32,
+        skip: u32,
+    },
+    /// Evaluate condition kernel `kernel`: FALSE jumps to `on_false`, TRUE continues at
+    /// `skip`; when it cannot run, the next instruction (the condition's general code).
+    KernelBranch {
+        kernel: u32,
+        on_false: u32,
+        skip: u32,
+    },
+}
+
+/// Most values a kernel holds at once (deeper expressions get no kernel).
+pub const KERNEL_DEPTH: usize = 16;
+
+/// A straight-line computation over nums (and the bools of comparisons) that the
+/// executor evaluates in f32 registers, never touching the value stack. Compiled only
+/// for expressions whose every leaf is num data or a num literal, so the result is the
+/// one the general code would give whenever the kernel runs at all.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Kernel {
+    pub ops: Vec<KernelOp>,
+    /// Where `KernelStore` puts the result (`None` for conditions).
+    pub target: Option<KernelTarget>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum KernelOp {
+    /// A num in local slot `n` (through a reference to a whole num).
+    Local(u32),
+    Global(u32),
+    Const(f32),
+    /// Pop an index; push that element of the one-dimensional num array in local or
+    /// global `slot`.
+    Elem {
+        global: bool,
+        slot: u32,
+    },
+    /// Arithmetic and comparisons on nums; AND, OR, XOR on bools (1 or 0).
+    Binary(BinaryOp),
+    Neg,
+    Not,
+}
+
+/// Where a `KernelStore` writes. For `Elem` the kernel leaves two values: the index
+/// (pushed first) and the value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum KernelTarget {
+    Local(u32),
+    Global(u32),
+    Elem { global: bool, slot: u32 },
 }
 
 /// Where an operand of `BinOp` comes from.
@@ -201,6 +258,8 @@ pub struct Code {
     pub param_by_ref: Vec<bool>,
     /// A FUNC's result is converted to the numeric kind of this value.
     pub ret_like: Option<Value>,
+    /// The kernels of `KernelStore` and `KernelBranch`.
+    pub kernels: Vec<Kernel>,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -230,7 +289,15 @@ impl Code {
         match &mut self.instrs[at as usize] {
             Instr::Jump(t) | Instr::JumpIfFalse(t) => *t = target,
             Instr::ForCheck { exit, .. } => *exit = target,
+            Instr::KernelBranch { on_false, .. } => *on_false = target,
             _ => {}
+        }
+    }
+
+    /// Points the `skip` of the kernel instruction at `at` to `target`.
+    pub fn patch_skip(&mut self, at: u32, target: u32) {
+        if let Instr::KernelStore { skip, .. } | Instr::KernelBranch { skip, .. } = &mut self.instrs[at as usize] {
+            *skip = target;
         }
     }
 

@@ -6,6 +6,7 @@
 
 mod call;
 mod expr;
+mod kernel;
 mod stmt;
 
 use rapid_sema::symbols::{DataKind, DeclOrigin, Def};

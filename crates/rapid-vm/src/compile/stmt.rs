@@ -47,30 +47,29 @@ impl RoutineCompiler<'_> {
             }
             StmtKind::If { cond, then, elifs, els } => {
                 let mut to_end = Vec::new();
-                self.expr(arena, *cond, None)?;
-                let mut skip = self.code.emit(Instr::JumpIfFalse(0));
+                let mut skip = self.condition(arena, *cond)?;
                 self.stmt_list(arena, then, errors);
                 for elif in elifs {
                     to_end.push(self.code.emit(Instr::Jump(0)));
                     let here = self.code.here();
-                    self.code.patch(skip, here);
-                    match elif.cond {
-                        Some(cond) => self.expr(arena, cond, None)?,
+                    self.patch_all(&skip, here);
+                    skip = match elif.cond {
+                        Some(cond) => self.condition(arena, cond)?,
                         None => {
                             self.code.emit(Instr::Placeholder);
+                            vec![self.code.emit(Instr::JumpIfFalse(0))]
                         }
-                    }
-                    skip = self.code.emit(Instr::JumpIfFalse(0));
+                    };
                     self.stmt_list(arena, &elif.body, errors);
                 }
                 if let Some(els) = els {
                     to_end.push(self.code.emit(Instr::Jump(0)));
                     let here = self.code.here();
-                    self.code.patch(skip, here);
+                    self.patch_all(&skip, here);
                     self.stmt_list(arena, els, errors);
                 } else {
                     let here = self.code.here();
-                    self.code.patch(skip, here);
+                    self.patch_all(&skip, here);
                 }
                 let end = self.code.here();
                 for at in to_end {
@@ -78,11 +77,10 @@ impl RoutineCompiler<'_> {
                 }
             }
             StmtKind::CompactIf { cond, stmt: inner } => {
-                self.expr(arena, *cond, None)?;
-                let skip = self.code.emit(Instr::JumpIfFalse(0));
+                let skip = self.condition(arena, *cond)?;
                 self.stmt(arena, inner, errors)?;
                 let here = self.code.here();
-                self.code.patch(skip, here);
+                self.patch_all(&skip, here);
             }
             StmtKind::For { var, from, to, step, body } => {
                 let num = self.prog.core.num;
@@ -105,12 +103,11 @@ impl RoutineCompiler<'_> {
             }
             StmtKind::While { cond, body } => {
                 let top = self.code.here();
-                self.expr(arena, *cond, None)?;
-                let exit = self.code.emit(Instr::JumpIfFalse(0));
+                let exit = self.condition(arena, *cond)?;
                 self.stmt_list(arena, body, errors);
                 self.code.emit(Instr::Jump(top));
                 let here = self.code.here();
-                self.code.patch(exit, here);
+                self.patch_all(&exit, here);
             }
             StmtKind::Test { subject, cases, default } => {
                 let subject_ty = self.static_type(arena, *subject);
@@ -189,7 +186,45 @@ impl RoutineCompiler<'_> {
         Ok(())
     }
 
+    /// Code that evaluates condition `cond` and jumps when it is FALSE: a kernel
+    /// (when the condition is plain num comparisons) followed by the general code.
+    /// Returns the jumps whose target is the FALSE branch, to be patched together.
+    fn condition(&mut self, arena: &Arena, cond: rapid_syntax::ast::ExprId) -> Result<Vec<u32>, CompileError> {
+        let kernel = self.kernel_branch(arena, cond);
+        self.expr(arena, cond, None)?;
+        let jump = self.code.emit(Instr::JumpIfFalse(0));
+        let here = self.code.here();
+        Ok(match kernel {
+            Some(kernel) => {
+                self.code.patch_skip(kernel, here);
+                vec![kernel, jump]
+            }
+            None => vec![jump],
+        })
+    }
+
+    fn patch_all(&mut self, jumps: &[u32], target: u32) {
+        for &at in jumps {
+            self.code.patch(at, target);
+        }
+    }
+
     fn assign(
+        &mut self,
+        arena: &Arena,
+        target: rapid_syntax::ast::ExprId,
+        value: rapid_syntax::ast::ExprId,
+    ) -> Result<(), CompileError> {
+        let kernel = self.kernel_store(arena, target, value);
+        self.assign_general(arena, target, value)?;
+        if let Some(kernel) = kernel {
+            let here = self.code.here();
+            self.code.patch_skip(kernel, here);
+        }
+        Ok(())
+    }
+
+    fn assign_general(
         &mut self,
         arena: &Arena,
         target: rapid_syntax::ast::ExprId,

@@ -11,6 +11,7 @@
 pub mod backward;
 mod call;
 mod fast;
+mod kernel;
 pub mod storage;
 
 use std::rc::Rc;
@@ -378,6 +379,9 @@ impl Vm {
         let mut next = pc + 1;
         match instr {
             Instr::Const(i) => self.push(code.consts[i as usize].clone()),
+            // The fast loop runs kernels; here the statement's general code, which
+            // follows, does the work.
+            Instr::KernelStore { .. } | Instr::KernelBranch { .. } => {}
             Instr::LoadLocal(slot) => {
                 let value = self.load_local(base + slot)?;
                 self.push(value);

@@ -1,0 +1,199 @@
+//! Kernels: num assignments and num conditions compiled a second time into a
+//! straight-line f32 program (`ir::Kernel`) that the executor runs without touching
+//! the value stack. The statement's general code always follows its kernel and runs
+//! whenever the kernel cannot (an operand that is not a plain num at run time, or an
+//! error such as a division by zero), so a kernel never changes what a program does;
+//! it only skips the general code when the answer is certain.
+//!
+//! Only expressions whose every leaf is num data (locals, module data, elements of
+//! one-dimensional num arrays) or a num literal qualify, with at least one operator.
+
+use rapid_sema::symbols::DataKind;
+use rapid_sema::types::TypeId;
+use rapid_syntax::ast::{Arena, BinaryOp, ExprId, ExprKind, ParamMode, UnaryOp};
+use rapid_syntax::literal::num_value;
+
+use super::{LocalKind, Resolved, RoutineCompiler};
+use crate::ir::{Instr, Kernel, KernelOp, KernelTarget, KERNEL_DEPTH};
+
+/// What a kernel sub-expression gives.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    Num,
+    Bool,
+}
+
+impl RoutineCompiler<'_> {
+    /// Emits a `KernelStore` for `target := value` when both qualify; returns the
+    /// instruction so its `skip` can be pointed past the general code.
+    pub(crate) fn kernel_store(&mut self, arena: &Arena, target: ExprId, value: ExprId) -> Option<u32> {
+        if !has_operator(arena, value) {
+            return None;
+        }
+        let mut ops = Vec::new();
+        let target = self.kernel_target(arena, target, &mut ops)?;
+        self.kernel_expr(arena, value, Kind::Num, &mut ops)?;
+        self.emit_kernel(Kernel { ops, target: Some(target) }, |kernel| Instr::KernelStore { kernel, skip: 0 })
+    }
+
+    /// Emits a `KernelBranch` for condition `cond` when it qualifies.
+    pub(crate) fn kernel_branch(&mut self, arena: &Arena, cond: ExprId) -> Option<u32> {
+        let mut ops = Vec::new();
+        self.kernel_expr(arena, cond, Kind::Bool, &mut ops)?;
+        self.emit_kernel(Kernel { ops, target: None }, |kernel| Instr::KernelBranch { kernel, on_false: 0, skip: 0 })
+    }
+
+    fn emit_kernel(&mut self, kernel: Kernel, instr: impl FnOnce(u32) -> Instr) -> Option<u32> {
+        if max_depth(&kernel.ops)? > KERNEL_DEPTH {
+            return None;
+        }
+        self.code.kernels.push(kernel);
+        let idx = self.code.kernels.len() as u32 - 1;
+        Some(self.code.emit(instr(idx)))
+    }
+
+    /// A num variable the kernel may write: a local (or a parameter, through its
+    /// reference at run time), a module-level VAR, or an element of a
+    /// one-dimensional num VAR array (its index computed first). Persistents are left
+    /// to the general code.
+    fn kernel_target(&self, arena: &Arena, target: ExprId, ops: &mut Vec<KernelOp>) -> Option<KernelTarget> {
+        match arena.expr(target).kind {
+            ExprKind::Name(sym) => match self.resolve(sym)? {
+                Resolved::Local(local) if self.is_num(local.ty) && local.rank == 0 => {
+                    (!matches!(local.kind, LocalKind::Param { mode: ParamMode::Pers, .. }))
+                        .then_some(KernelTarget::Local(local.slot))
+                }
+                Resolved::Global(idx) => {
+                    let data = &self.prog.datas[idx as usize];
+                    (data.kind == DataKind::Var && data.rank == 0 && self.is_num(data.ty))
+                        .then_some(KernelTarget::Global(idx))
+                }
+                _ => None,
+            },
+            ExprKind::Index { base, indices } => {
+                let (global, slot) = self.num_array_1d(arena, base, true)?;
+                let [index] = arena.list(indices) else { return None };
+                self.kernel_expr(arena, *index, Kind::Num, ops)?;
+                Some(KernelTarget::Elem { global, slot })
+            }
+            _ => None,
+        }
+    }
+
+    /// Appends the ops of `id`, which must give `want`; `None` when it does not qualify.
+    fn kernel_expr(&self, arena: &Arena, id: ExprId, want: Kind, ops: &mut Vec<KernelOp>) -> Option<()> {
+        let expr = *arena.expr(id);
+        match (expr.kind, want) {
+            (ExprKind::Num, Kind::Num) => {
+                let value = num_value(expr.span.text(self.text))?;
+                ops.push(KernelOp::Const(value as f32));
+            }
+            (ExprKind::Name(sym), Kind::Num) => ops.push(self.kernel_leaf(sym)?),
+            (ExprKind::Index { base, indices }, Kind::Num) => {
+                let (global, slot) = self.num_array_1d(arena, base, false)?;
+                let [index] = arena.list(indices) else { return None };
+                self.kernel_expr(arena, *index, Kind::Num, ops)?;
+                ops.push(KernelOp::Elem { global, slot });
+            }
+            (ExprKind::Paren(inner), _) => self.kernel_expr(arena, inner, want, ops)?,
+            (ExprKind::Unary { op: UnaryOp::Plus, operand }, Kind::Num) => {
+                self.kernel_expr(arena, operand, Kind::Num, ops)?;
+            }
+            (ExprKind::Unary { op: UnaryOp::Neg, operand }, Kind::Num) => {
+                self.kernel_expr(arena, operand, Kind::Num, ops)?;
+                ops.push(KernelOp::Neg);
+            }
+            (ExprKind::Unary { op: UnaryOp::Not, operand }, Kind::Bool) => {
+                self.kernel_expr(arena, operand, Kind::Bool, ops)?;
+                ops.push(KernelOp::Not);
+            }
+            (ExprKind::Binary { op, lhs, rhs }, _) => {
+                let operands = operand_kind(op)?;
+                if result_kind(op) != want {
+                    return None;
+                }
+                self.kernel_expr(arena, lhs, operands, ops)?;
+                self.kernel_expr(arena, rhs, operands, ops)?;
+                ops.push(KernelOp::Binary(op));
+            }
+            _ => return None,
+        }
+        Some(())
+    }
+
+    /// A num datum read by name.
+    fn kernel_leaf(&self, sym: rapid_syntax::Symbol) -> Option<KernelOp> {
+        match self.resolve(sym)? {
+            Resolved::Local(local) if self.is_num(local.ty) && local.rank == 0 => Some(KernelOp::Local(local.slot)),
+            Resolved::Global(idx) => {
+                let data = &self.prog.datas[idx as usize];
+                (data.rank == 0
+                    && self.is_num(data.ty)
+                    && matches!(data.kind, DataKind::Var | DataKind::Pers | DataKind::Const))
+                .then_some(KernelOp::Global(idx))
+            }
+            _ => None,
+        }
+    }
+
+    /// A one-dimensional num array named directly: (global?, slot). For writes, module
+    /// data must be a VAR.
+    fn num_array_1d(&self, arena: &Arena, base: ExprId, write: bool) -> Option<(bool, u32)> {
+        let ExprKind::Name(sym) = arena.expr(base).kind else { return None };
+        match self.resolve(sym)? {
+            Resolved::Local(local) => (self.is_num(local.ty) && local.rank == 1).then_some((false, local.slot)),
+            Resolved::Global(idx) => {
+                let data = &self.prog.datas[idx as usize];
+                let kind_ok = if write { data.kind == DataKind::Var } else { data.kind != DataKind::LoopVar };
+                (kind_ok && data.rank == 1 && self.is_num(data.ty)).then_some((true, idx))
+            }
+            _ => None,
+        }
+    }
+
+    /// num itself or an alias of it (never dnum).
+    fn is_num(&self, ty: TypeId) -> bool {
+        self.prog.types.canonical(ty) == self.prog.core.num
+    }
+}
+
+/// What the operands of `op` must be.
+fn operand_kind(op: BinaryOp) -> Option<Kind> {
+    use BinaryOp as B;
+    match op {
+        B::Add | B::Sub | B::Mul | B::Div | B::IntDiv | B::Mod => Some(Kind::Num),
+        B::Lt | B::Le | B::Gt | B::Ge | B::Eq | B::Ne => Some(Kind::Num),
+        B::And | B::Or | B::Xor => Some(Kind::Bool),
+    }
+}
+
+fn result_kind(op: BinaryOp) -> Kind {
+    use BinaryOp as B;
+    match op {
+        B::Add | B::Sub | B::Mul | B::Div | B::IntDiv | B::Mod => Kind::Num,
+        _ => Kind::Bool,
+    }
+}
+
+/// An assignment of a bare leaf gains nothing from a kernel.
+fn has_operator(arena: &Arena, id: ExprId) -> bool {
+    match arena.expr(id).kind {
+        ExprKind::Paren(inner) => has_operator(arena, inner),
+        ExprKind::Binary { .. } | ExprKind::Unary { .. } => true,
+        _ => false,
+    }
+}
+
+/// The most values the ops hold at once; `None` for a malformed sequence.
+fn max_depth(ops: &[KernelOp]) -> Option<usize> {
+    let (mut depth, mut max) = (0usize, 0usize);
+    for op in ops {
+        match op {
+            KernelOp::Local(_) | KernelOp::Global(_) | KernelOp::Const(_) => depth += 1,
+            KernelOp::Elem { .. } | KernelOp::Neg | KernelOp::Not => depth.checked_sub(1).map(|_| ())?,
+            KernelOp::Binary(_) => depth = depth.checked_sub(1)?,
+        }
+        max = max.max(depth);
+    }
+    Some(max)
+}

@@ -1,0 +1,145 @@
+//! Runs kernels (`ir::Kernel`): num expressions and conditions evaluated in f32
+//! registers on the Rust stack. Every value read must be a plain num (or a reference
+//! to a whole num) and every operation must succeed as the fast loop's num arithmetic
+//! does; anything else answers `None`, and the statement's general code, which
+//! follows the kernel instruction, runs instead and raises any error itself.
+//!
+//! Why: each `Value` the stack machine pushes is 24 bytes assembled in a temporary,
+//! and the copies cost a store-forwarding stall apiece (perf on bench/interp/arith);
+//! a kernel moves bare f32s.
+
+use super::fast::{element_1d, element_1d_mut, fast_num_op, FastResult};
+use crate::ir::{Kernel, KernelOp, KernelTarget, KERNEL_DEPTH};
+use crate::value::{Root, Value};
+
+/// What a kernel left: its top value and, for an element target, the index below it.
+/// Only these two leave the registers (copying the whole register file out would
+/// stall on the narrow stores that just wrote it).
+pub(super) struct Results {
+    top: f32,
+    below_top: Option<f32>,
+}
+
+/// Evaluates `kernel` against the frame at `base` of `stack` and the globals.
+#[inline]
+pub(super) fn eval(kernel: &Kernel, stack: &[Value], base: usize, globals: &[Value]) -> Option<Results> {
+    let mut regs = [0f32; KERNEL_DEPTH];
+    let mut len = 0usize;
+    for op in &kernel.ops {
+        match *op {
+            KernelOp::Local(slot) => {
+                *regs.get_mut(len)? = local_num(stack, globals, base + slot as usize)?;
+                len += 1;
+            }
+            KernelOp::Global(idx) => {
+                let Some(&Value::Num(n)) = globals.get(idx as usize) else { return None };
+                *regs.get_mut(len)? = n;
+                len += 1;
+            }
+            KernelOp::Const(n) => {
+                *regs.get_mut(len)? = n;
+                len += 1;
+            }
+            KernelOp::Elem { global, slot } => {
+                let index = regs.get_mut(len.checked_sub(1)?)?;
+                let array = if global { globals.get(slot as usize) } else { stack.get(base + slot as usize) };
+                let Some(Value::Array(array)) = array else { return None };
+                let Some(&Value::Num(elem)) = element_1d(array, *index) else { return None };
+                *index = elem;
+            }
+            KernelOp::Neg => {
+                let top = regs.get_mut(len.checked_sub(1)?)?;
+                *top = -*top;
+            }
+            KernelOp::Not => {
+                let top = regs.get_mut(len.checked_sub(1)?)?;
+                *top = if *top == 0.0 { 1.0 } else { 0.0 };
+            }
+            KernelOp::Binary(op) => {
+                len = len.checked_sub(1)?;
+                let (a, b) = (*regs.get(len.checked_sub(1)?)?, regs[len]);
+                *regs.get_mut(len - 1)? = binary(op, a, b)?;
+            }
+        }
+    }
+    let top = *regs.get(len.checked_sub(1)?)?;
+    let below_top = len.checked_sub(2).map(|i| regs[i]);
+    Some(Results { top, below_top })
+}
+
+/// Writes a store kernel's result to its target; `None` (nothing written) when the
+/// target is not a plain num slot or the element index is out of range.
+#[inline]
+pub(super) fn store(
+    target: KernelTarget,
+    results: &Results,
+    stack: &mut [Value],
+    base: usize,
+    globals: &mut [Value],
+) -> Option<()> {
+    let value = results.top;
+    let slot = match target {
+        KernelTarget::Local(slot) => {
+            let at = base + slot as usize;
+            match stack.get(at)? {
+                Value::Num(_) => stack.get_mut(at)?,
+                Value::Ref(place) if place.path.is_empty() => match place.root {
+                    Root::Stack(to) => stack.get_mut(to as usize)?,
+                    Root::Global(idx) => globals.get_mut(idx as usize)?,
+                },
+                _ => return None,
+            }
+        }
+        KernelTarget::Global(idx) => globals.get_mut(idx as usize)?,
+        KernelTarget::Elem { global, slot } => {
+            let array = if global { globals.get_mut(slot as usize)? } else { stack.get_mut(base + slot as usize)? };
+            let Value::Array(array) = array else { return None };
+            element_1d_mut(array, results.below_top?)?
+        }
+    };
+    let Value::Num(x) = slot else { return None };
+    *x = value;
+    Some(())
+}
+
+/// The condition a branch kernel computed.
+#[inline]
+pub(super) fn truth(results: &Results) -> Option<bool> {
+    Some(results.top != 0.0)
+}
+
+/// A num in a local slot, or behind a reference to a whole num.
+#[inline(always)]
+fn local_num(stack: &[Value], globals: &[Value], at: usize) -> Option<f32> {
+    match stack.get(at)? {
+        Value::Num(n) => Some(*n),
+        Value::Ref(place) if place.path.is_empty() => match place.root {
+            Root::Stack(to) => match stack.get(to as usize)? {
+                Value::Num(n) => Some(*n),
+                _ => None,
+            },
+            Root::Global(idx) => match globals.get(idx as usize)? {
+                Value::Num(n) => Some(*n),
+                _ => None,
+            },
+        },
+        _ => None,
+    }
+}
+
+/// num arithmetic and comparisons exactly as the fast loop does them (bools are 1 and
+/// 0); AND, OR, XOR on bools.
+#[inline(always)]
+fn binary(op: rapid_syntax::ast::BinaryOp, a: f32, b: f32) -> Option<f32> {
+    use rapid_syntax::ast::BinaryOp as B;
+    let bit = |x: bool| if x { 1.0 } else { 0.0 };
+    match op {
+        B::And => Some(bit(a != 0.0 && b != 0.0)),
+        B::Or => Some(bit(a != 0.0 || b != 0.0)),
+        B::Xor => Some(bit((a != 0.0) != (b != 0.0))),
+        _ => match fast_num_op(op, a, b)? {
+            FastResult::Num(n) => Some(n),
+            FastResult::Bool(x) => Some(bit(x)),
+        },
+    }
+}
