@@ -19,6 +19,7 @@ MODULE argname_basic
         TPWrite "component " + ArgName(target.x);
         TPWrite "element " + ArgName(table{2});
         TPWrite "named " + ArgName(Parameter:=limit);
+        TPWrite "array " + ArgName(table);
         ! An IN parameter still refers back to the data object passed for it.
         show chales;
         show table{3};
@@ -31,6 +32,11 @@ MODULE argname_basic
         optional \a:=target.z;
         forward \b:=counter;
         %"show"% limit;
+        arrays table;
+    ENDPROC
+
+    PROC arrays(num a{*})
+        TPWrite "array parameter " + ArgName(a);
     ENDPROC
 
     PROC show(num par1)
