@@ -8,6 +8,7 @@ MODULE argname_errors
     PROC main()
         VAR errnum e := 99;
         VAR string s;
+        VAR string label;
         show 5;
         show chales + 1;
         show Abs(chales);
@@ -20,7 +21,23 @@ MODULE argname_errors
         TPWrite "success " + s + " " \Num:=e;
         quiet 5;
         quiet chales;
+        ! A handler that skips a failed ArgName with TRYNEXT keeps the default name.
+        label := "L";
+        TPWrite "describe " + describe(\n:=chales);
+        TPWrite "describe " + describe(\n:=7);
+        TPWrite "describe " + describe(\s:="x" + "y");
+        TPWrite "describe " + describe(\s:=label);
     ENDPROC
+
+    FUNC string describe(\num n | string s)
+        VAR string name := "-";
+        IF Present(n) name := ArgName(n);
+        IF Present(s) name := ArgName(s);
+        RETURN name;
+    ERROR
+        IF ERRNO = ERR_ARGNAME TRYNEXT;
+        RAISE;
+    ENDFUNC
 
     PROC show(num par1)
         TPWrite "name " + ArgName(par1);

@@ -185,3 +185,11 @@ fn words_skip_comments_and_strings() {
         ["tpwrite", "argname", "x", "s", "type", "y"].iter().map(|w| w.to_string()).collect();
     assert_eq!(found, expected);
 }
+
+#[test]
+fn implemented_counts_inline_built_ins_and_refuses_the_rest() {
+    assert!(rapid_vm::builtins::implemented("present"));
+    assert!(rapid_vm::builtins::implemented("ArgName"));
+    assert!(rapid_vm::builtins::implemented("StrLen"));
+    assert!(!rapid_vm::builtins::implemented("MoveL"));
+}
