@@ -14,7 +14,7 @@ root=$(cd "$here/../.." && pwd)
 runs=${RUNS:-5}
 limit=${TIMEOUT:-300}
 rapid="$root/target/release/rapid"
-all_benchmarks=(startup fib arith strings bubble pos varcall)
+all_benchmarks=(startup fib arith strings bubble pos varcall strops fileio)
 if (($# > 0)); then benchmarks=("$@"); else benchmarks=("${all_benchmarks[@]}"); fi
 
 if ! [[ "$runs" =~ ^[1-9][0-9]*$ ]]; then
@@ -122,11 +122,15 @@ failures=0
 rows=()
 for name in "${benchmarks[@]}"; do
     echo "running $name" >&2
-    lua_ns=$(measure "$name.lua" lua5.4 "$here/$name.lua")
-    py_ns=$(measure "$name.py" "$python" "$here/$name.py")
+    # A folder of its own for the files a benchmark writes: the controller root
+    # (`--home`) for RAPID, the first argument for Lua and Python.
+    home="$work/$name.home"
+    mkdir -p "$home"
+    lua_ns=$(measure "$name.lua" lua5.4 "$here/$name.lua" "$home")
+    py_ns=$(measure "$name.py" "$python" "$here/$name.py" "$home")
     rapid_ns="n/a"
     if ((have_rapid)); then
-        rapid_ns=$(measure "$name.rapid" "$rapid" run "$here/$name.mod")
+        rapid_ns=$(measure "$name.rapid" "$rapid" run --home "$home" "$here/$name.mod")
     fi
 
     # Every output that was produced must equal the expected text and each other.

@@ -210,6 +210,18 @@ pub struct CallSite {
     pub late_args: Vec<LateArg>,
 }
 
+/// Where a call's argument came from, for ArgName: the data object it names, a
+/// parameter of the calling routine (look one call further out), or nothing.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ArgOrigin {
+    /// The whole data object the argument names (also for an element or component).
+    Data(std::rc::Rc<str>),
+    /// The calling routine's parameter `n`: its own argument is the origin.
+    Param(u32),
+    /// An expression, an absent optional argument or a switch: no data object.
+    None,
+}
+
 /// A late-bound call's argument: positional values only (places when the callee
 /// wants references).
 #[derive(Debug, Clone, PartialEq)]
@@ -260,6 +272,9 @@ pub struct Code {
     pub ret_like: Option<Value>,
     /// The kernels of `KernelStore` and `KernelBranch`.
     pub kernels: Vec<Kernel>,
+    /// For the call sites of user routines and of ArgName: where each argument came
+    /// from, in parameter order (positional for late calls), sorted by site index.
+    pub arg_origins: Vec<(u32, Box<[ArgOrigin]>)>,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -273,6 +288,12 @@ impl Code {
     /// The innermost statement whose code holds `pc`.
     pub fn stmt_at(&self, pc: u32) -> Option<StmtRange> {
         self.stmts.iter().rev().find(|s| s.start <= pc && pc < s.end).copied()
+    }
+
+    /// Where the arguments of call site `site` came from (ArgName), if recorded.
+    pub fn arg_origins(&self, site: u32) -> Option<&[ArgOrigin]> {
+        let at = self.arg_origins.binary_search_by_key(&site, |(s, _)| *s).ok()?;
+        Some(&self.arg_origins[at].1)
     }
 
     pub fn emit(&mut self, instr: Instr) -> u32 {

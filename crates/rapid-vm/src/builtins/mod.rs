@@ -3,6 +3,7 @@
 //! built-in's name to the Rust function that runs it. A built-in missing here is
 //! refused by the compiler with "not supported by `rapid run` yet".
 
+mod argname;
 mod bits;
 mod calendar;
 mod clock;
@@ -190,8 +191,16 @@ pub fn present(arg: Option<&Value>) -> bool {
 pub type Entries = &'static [(&'static str, BuiltinFn)];
 
 /// Every family's table; a built-in's id is its position in their concatenation.
-static FAMILIES: &[Entries] =
-    &[CORE, files::ENTRIES, sockets::ENTRIES, matrix::ENTRIES, sysinfo::ENTRIES, strdig::ENTRIES, strformat::ENTRIES];
+static FAMILIES: &[Entries] = &[
+    CORE,
+    files::ENTRIES,
+    sockets::ENTRIES,
+    matrix::ENTRIES,
+    sysinfo::ENTRIES,
+    strdig::ENTRIES,
+    strformat::ENTRIES,
+    argname::ENTRIES,
+];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =
     std::sync::LazyLock::new(|| FAMILIES.iter().flat_map(|family| family.iter().copied()).collect());
@@ -322,6 +331,16 @@ static CORE: Entries = &[
 /// The implementation of the built-in named `name` (any letter case).
 pub fn lookup(name: &str) -> Option<BuiltinId> {
     TABLE.iter().position(|(n, _)| n.eq_ignore_ascii_case(name)).map(|i| BuiltinId(i as u16))
+}
+
+/// Built-ins the compiler turns into instructions of their own instead of a call
+/// (see `compile/call.rs`): they run although they are in no family's table.
+const COMPILED_INLINE: &[&str] = &["Present", "CallByVar", "Type", "WaitUntil"];
+
+/// Whether `rapid run` runs the built-in named `name` (any letter case); a program
+/// calling one that is not is refused when it is loaded.
+pub fn implemented(name: &str) -> bool {
+    lookup(name).is_some() || COMPILED_INLINE.iter().any(|n| n.eq_ignore_ascii_case(name))
 }
 
 pub fn function(id: BuiltinId) -> BuiltinFn {

@@ -9,7 +9,7 @@ use rapid_syntax::{Span, Symbol};
 use super::expr::expected_dims;
 use super::{CompileError, LocalKind, Resolved, RoutineCompiler};
 use crate::builtins;
-use crate::ir::{ArgSpec, CallSite, Callee, Instr, LateArg};
+use crate::ir::{ArgOrigin, ArgSpec, CallSite, Callee, Instr, LateArg};
 
 impl RoutineCompiler<'_> {
     /// A call of `name` with `args`; `in_expr` for function calls (the result is pushed).
@@ -47,6 +47,9 @@ impl RoutineCompiler<'_> {
                 if info.display.eq_ignore_ascii_case("WaitUntil") {
                     return self.wait_until(arena, &info, args, span);
                 }
+                if info.display.eq_ignore_ascii_case("ArgName") {
+                    return self.arg_name(arena, &info, args, span);
+                }
                 match builtins::lookup(&info.display) {
                     Some(id) => Callee::Builtin(id),
                     None => return Err(self.unsupported(span, &format!("the built-in `{}`", info.display))),
@@ -67,9 +70,89 @@ impl RoutineCompiler<'_> {
             }
             specs.push(spec);
         }
+        // ArgName in the callee looks through its parameters to these arguments.
+        let origins = match callee {
+            Callee::Routine(_) => Some(self.origins(arena, &bound, &specs)),
+            _ => None,
+        };
         let site = self.site(CallSite { callee, args: specs, n_pushed, late_args: Vec::new() });
+        if let Some(origins) = origins {
+            self.code.arg_origins.push((site, origins));
+        }
         self.code.emit(Instr::Call(site));
         Ok(())
+    }
+
+    /// `ArgName(Parameter [\ErrorNumber])`: the Parameter argument is never evaluated
+    /// (an absent optional parameter or a switch must give ERR_ARGNAME, not
+    /// ERR_NOTPRES); the call site records which data object it names instead.
+    fn arg_name(&mut self, arena: &Arena, info: &RoutineInfo, args: ArgList, span: Span) -> Result<(), CompileError> {
+        let Some(id) = builtins::lookup(&info.display) else {
+            return Err(self.unsupported(span, "the built-in `ArgName`"));
+        };
+        let bound = bind_args(info, arena.args(args));
+        let mut specs = Vec::with_capacity(info.params.len());
+        let mut n_pushed = 0u16;
+        for (idx, (param, arg)) in info.params.iter().zip(&bound).enumerate() {
+            let spec = match arg {
+                Some(_) if idx == 0 => ArgSpec::Absent,
+                Some(arg) => self.arg(arena, param, arg)?,
+                None => ArgSpec::Absent,
+            };
+            if matches!(spec, ArgSpec::Value | ArgSpec::Place) {
+                n_pushed += 1;
+            }
+            specs.push(spec);
+        }
+        let origin = match bound.first().copied().flatten().and_then(|arg| arg.value) {
+            Some(value) => self.data_origin(arena, value),
+            None => ArgOrigin::None,
+        };
+        let site = self.site(CallSite { callee: Callee::Builtin(id), args: specs, n_pushed, late_args: Vec::new() });
+        self.code.arg_origins.push((site, Box::new([origin])));
+        self.code.emit(Instr::Call(site));
+        Ok(())
+    }
+
+    /// Where each bound argument came from, in parameter order.
+    fn origins(&self, arena: &Arena, bound: &[Option<&Arg>], specs: &[ArgSpec]) -> Box<[ArgOrigin]> {
+        bound
+            .iter()
+            .zip(specs)
+            .map(|(arg, spec)| match (spec, arg.and_then(|a| a.value)) {
+                (ArgSpec::Conditional { slot, .. }, _) => ArgOrigin::Param(*slot),
+                (ArgSpec::Value | ArgSpec::Place, Some(value)) => self.data_origin(arena, value),
+                _ => ArgOrigin::None,
+            })
+            .collect()
+    }
+
+    /// The data object an argument names: the whole object for an element or a
+    /// component, a parameter of this routine, or nothing for any other expression.
+    // uncertain: a parenthesised name `(x)` is taken as an expression (no data object).
+    // uncertain: routine data and loop variables are named as written at the argument;
+    // module data by its declaration.
+    fn data_origin(&self, arena: &Arena, value: rapid_syntax::ast::ExprId) -> ArgOrigin {
+        let mut id = value;
+        let sym = loop {
+            match arena.expr(id).kind {
+                ExprKind::Index { base, .. } | ExprKind::Field { base, .. } => id = base,
+                ExprKind::Name(sym) => break sym,
+                _ => return ArgOrigin::None,
+            }
+        };
+        match self.resolve(sym) {
+            Some(Resolved::Global(idx)) => match self.prog.datas.get(idx as usize) {
+                Some(data) => ArgOrigin::Data(data.display.as_str().into()),
+                None => ArgOrigin::None,
+            },
+            Some(Resolved::Local(local)) => match local.kind {
+                LocalKind::Param { .. } => ArgOrigin::Param(local.slot),
+                LocalKind::Data | LocalKind::LoopVar => ArgOrigin::Data(arena.expr(id).span.text(self.text).into()),
+                LocalKind::Temp => ArgOrigin::None,
+            },
+            _ => ArgOrigin::None,
+        }
     }
 
     fn site(&mut self, site: CallSite) -> u32 {
@@ -245,6 +328,7 @@ impl RoutineCompiler<'_> {
 
     /// A late-bound call: the callee's name is on the stack; arguments are positional.
     pub(crate) fn late_site(&mut self, arena: &Arena, args: ArgList, mut site: CallSite) -> Result<u32, CompileError> {
+        let mut origins = Vec::new();
         for arg in arena.args(args) {
             let Some(value) = arg.value else {
                 return Err(self.unsupported(arg.span, "an optional argument in a late-bound call"));
@@ -264,8 +348,11 @@ impl RoutineCompiler<'_> {
             }
             site.late_args.push(LateArg { by_ref: is_data });
             site.n_pushed += 1;
+            origins.push(self.data_origin(arena, value));
         }
-        Ok(self.site(site))
+        let site = self.site(site);
+        self.code.arg_origins.push((site, origins.into_boxed_slice()));
+        Ok(site)
     }
 }
 

@@ -91,6 +91,12 @@ pub(crate) struct Frame {
 }
 
 impl Frame {
+    /// The routine this frame runs and the instruction it is at: for a caller, its
+    /// call (ArgName follows arguments out through the chain).
+    pub(crate) fn position(&self) -> (&Code, u32) {
+        (&self.code, self.pc)
+    }
+
     /// Which handler of its routine this frame runs (ExecHandler): the handler_type
     /// values HANDLER_NONE 0, HANDLER_BWD 1, HANDLER_ERR 2, HANDLER_UNDO 3.
     pub(crate) fn handler_type(&self) -> u8 {
