@@ -19,8 +19,10 @@ mod strdig;
 mod strformat;
 mod strings;
 mod symbols;
+pub mod symsearch;
 mod sysinfo;
 mod system;
+pub mod texttab;
 
 use rapid_sema::types::TypeId;
 
@@ -86,6 +88,10 @@ pub struct Ctx<'a> {
 pub struct Resources {
     pub files: files::FileState,
     pub sockets: sockets::SocketState,
+    /// Installed user text tables (kept at PP to Main, as the controller keeps them).
+    pub texttab: texttab::TextTabState,
+    /// The task's module data by module, and the search SetDataSearch started.
+    pub symsearch: symsearch::SymSearchState,
 }
 
 impl Resources {
@@ -94,6 +100,7 @@ impl Resources {
     pub fn close_all(&mut self) {
         self.files.close_all();
         self.sockets.close_all();
+        self.symsearch.end_search();
     }
 }
 
@@ -190,8 +197,17 @@ pub fn present(arg: Option<&Value>) -> bool {
 pub type Entries = &'static [(&'static str, BuiltinFn)];
 
 /// Every family's table; a built-in's id is its position in their concatenation.
-static FAMILIES: &[Entries] =
-    &[CORE, files::ENTRIES, sockets::ENTRIES, matrix::ENTRIES, sysinfo::ENTRIES, strdig::ENTRIES, strformat::ENTRIES];
+static FAMILIES: &[Entries] = &[
+    CORE,
+    files::ENTRIES,
+    sockets::ENTRIES,
+    matrix::ENTRIES,
+    sysinfo::ENTRIES,
+    strdig::ENTRIES,
+    strformat::ENTRIES,
+    texttab::ENTRIES,
+    symsearch::ENTRIES,
+];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =
     std::sync::LazyLock::new(|| FAMILIES.iter().flat_map(|family| family.iter().copied()).collect());
