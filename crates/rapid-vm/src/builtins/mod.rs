@@ -7,6 +7,7 @@ mod bits;
 mod calendar;
 mod clock;
 mod dialogs;
+mod dnheader;
 mod events;
 pub mod files;
 mod geometry;
@@ -15,6 +16,7 @@ mod matrix;
 mod pendant;
 mod rawbytes;
 pub mod sockets;
+pub mod spy;
 mod strdig;
 mod strformat;
 mod strings;
@@ -92,6 +94,8 @@ pub struct Resources {
     pub texttab: texttab::TextTabState,
     /// The task's module data by module, and the search SetDataSearch started.
     pub symsearch: symsearch::SymSearchState,
+    /// The execution log SpyStart opened (ended at PP to Main, as on the controller).
+    pub spy: spy::SpyState,
 }
 
 impl Resources {
@@ -101,6 +105,7 @@ impl Resources {
         self.files.close_all();
         self.sockets.close_all();
         self.symsearch.end_search();
+        self.spy.stop();
     }
 }
 
@@ -207,6 +212,7 @@ static FAMILIES: &[Entries] = &[
     strformat::ENTRIES,
     texttab::ENTRIES,
     symsearch::ENTRIES,
+    dnheader::ENTRIES,
 ];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =
