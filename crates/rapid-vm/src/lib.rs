@@ -120,6 +120,7 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
         (d.display.to_lowercase(), builtins::NamedData { global: i as u32, constant })
     };
     vm.set_data_names(module_data.map(named).collect());
+    vm.resources_mut().symsearch = builtins::symsearch::catalog::task_symbols(&prog, &modules);
     vm.set_pers_globals(prog.datas.iter().map(|d| d.kind == rapid_sema::symbols::DataKind::Pers).collect());
     let entry_idx = prog.interner.get(entry).and_then(|sym| prog.scopes.globals.get(&sym).map(|o| o.def));
     let started = match entry_idx {

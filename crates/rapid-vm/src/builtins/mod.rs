@@ -8,6 +8,7 @@ mod bits;
 mod calendar;
 mod clock;
 mod dialogs;
+mod dnheader;
 mod events;
 pub mod files;
 mod geometry;
@@ -16,12 +17,15 @@ mod matrix;
 mod pendant;
 mod rawbytes;
 pub mod sockets;
+pub mod spy;
 mod strdig;
 mod strformat;
 mod strings;
 mod symbols;
+pub mod symsearch;
 mod sysinfo;
 mod system;
+pub mod texttab;
 
 use rapid_sema::types::TypeId;
 
@@ -87,6 +91,12 @@ pub struct Ctx<'a> {
 pub struct Resources {
     pub files: files::FileState,
     pub sockets: sockets::SocketState,
+    /// Installed user text tables (kept at PP to Main, as the controller keeps them).
+    pub texttab: texttab::TextTabState,
+    /// The task's module data by module, and the search SetDataSearch started.
+    pub symsearch: symsearch::SymSearchState,
+    /// The execution log SpyStart opened (ended at PP to Main, as on the controller).
+    pub spy: spy::SpyState,
 }
 
 impl Resources {
@@ -95,6 +105,8 @@ impl Resources {
     pub fn close_all(&mut self) {
         self.files.close_all();
         self.sockets.close_all();
+        self.symsearch.end_search();
+        self.spy.stop();
     }
 }
 
@@ -200,6 +212,9 @@ static FAMILIES: &[Entries] = &[
     strdig::ENTRIES,
     strformat::ENTRIES,
     argname::ENTRIES,
+    texttab::ENTRIES,
+    symsearch::ENTRIES,
+    dnheader::ENTRIES,
 ];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =

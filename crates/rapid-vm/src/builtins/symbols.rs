@@ -1,20 +1,20 @@
 //! Data found by name at run time (§1.6 "数据搜索"): GetDataVal and SetDataVal.
 //! `rapid run` runs one task, so the names are the task's module-level data; routine
 //! data is not reached by name (whether the controller reaches the calling
-//! routine's own data is not in the public record: uncertain). The `\Block` form needs GetNextSym's datapos, which is not
-//! implemented yet, so it stops the program with a clear message.
+//! routine's own data is not in the public record: uncertain). With `\Block` (a datapos
+//! from GetNextSym) the name is looked up as seen from that module: its LOCAL data too.
 
 use super::{present, Ctx, NamedData, TASK_NAME};
 use crate::errnames::Err;
 use crate::error::RapidError;
-use crate::value::Value;
+use crate::value::{OpaqueState, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
 /// Finds `Object` after checking the task options (`\Block | \TaskRef | \TaskName`).
 fn lookup(ctx: &Ctx<'_>, args: &[Value]) -> Result<NamedData, RapidError> {
     if present(args.get(1)) {
-        return Err(RapidError::fatal("GetDataVal/SetDataVal \\Block is not supported by `rapid run` yet"));
+        return in_block(ctx, &args[0], &args[1]);
     }
     if present(args.get(3)) {
         let task = ctx.string(&args[3])?;
@@ -29,8 +29,24 @@ fn lookup(ctx: &Ctx<'_>, args: &[Value]) -> Result<NamedData, RapidError> {
         .ok_or_else(|| ctx.error(Err::SymAccess, format!("no module-level data named `{name}`")))
 }
 
+/// `Object` as seen from the module a datapos names (ERR_SYM_ACCESS if not found, or
+/// if the datapos was never set by GetNextSym).
+fn in_block(ctx: &Ctx<'_>, object: &Value, block: &Value) -> Result<NamedData, RapidError> {
+    let name = ctx.string(object)?;
+    let handle = match ctx.value(block)? {
+        Value::Opaque(shell) => match shell.state {
+            OpaqueState::Handle(h) => Some(h),
+            _ => None,
+        },
+        _ => None,
+    };
+    handle
+        .and_then(|h| ctx.resources.symsearch.in_block(h, &name))
+        .ok_or_else(|| ctx.error(Err::SymAccess, format!("no data named `{name}` in the block of the datapos")))
+}
+
 /// Whether two values have the same data type and shape (array sizes included).
-fn same_type(a: &Value, b: &Value) -> bool {
+pub(super) fn same_type(a: &Value, b: &Value) -> bool {
     match (a, b) {
         (Value::Num(_), Value::Num(_))
         | (Value::Dnum(_), Value::Dnum(_))

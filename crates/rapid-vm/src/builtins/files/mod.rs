@@ -13,7 +13,7 @@
 //! PP to Main) is simply not found: ERR_FILEACC.
 
 mod anybin;
-mod devices;
+pub(crate) mod devices;
 mod folders;
 mod io;
 mod iodev;
