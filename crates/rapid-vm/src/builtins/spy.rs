@@ -105,6 +105,7 @@ const HEADER: &str = "TASK    INSTR                                    IN    COD
 // uncertain: the manual does not say what a second SpyStart does; we end the first log.
 pub fn spy_start(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let path = ctx.string(&args[0])?;
+    ctx.resources.files.flush_all();
     let resolved = super::files::devices::resolve(ctx.resources.files.root(), &path)
         .map_err(|fault| ctx.error(Err::FileOpen, fault.message()))?;
     let file = File::create(&resolved.path)

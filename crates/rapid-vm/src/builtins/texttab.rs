@@ -119,6 +119,7 @@ fn parse_tables(bytes: &[u8]) -> Result<Vec<TextTable>, FormatFault> {
 // manual guards every install with TextTabFreeToUse and names no error for it).
 fn text_tab_install(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let file = ctx.string(&args[0])?;
+    ctx.resources.files.flush_all();
     let resolved = super::files::devices::resolve(ctx.resources.files.root(), &file)
         .map_err(|fault| ctx.error(Err::FileOpen, fault.message()))?;
     let bytes = std::fs::read(&resolved.path)

@@ -28,7 +28,7 @@ pub(super) struct DirListing {
 }
 
 /// A path argument resolved on its device (a refused path raises ERR_FILEACC).
-fn path_arg(ctx: &Ctx<'_>, arg: &Value) -> Result<(String, std::path::PathBuf, bool), RapidError> {
+fn path_arg(ctx: &mut Ctx<'_>, arg: &Value) -> Result<(String, std::path::PathBuf, bool), RapidError> {
     let text = ctx.string(arg)?;
     let resolved = resolve(ctx, &text, Err::FileAccess)?;
     Ok((text, resolved.path, resolved.is_device_root))
@@ -114,7 +114,10 @@ pub(super) fn remove_file(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// The source and target of RenameFile/CopyFile: the source must be an existing file
 /// and the target must not exist (ERR_FILEEXIST).
-fn source_and_target(ctx: &Ctx<'_>, args: &[Value]) -> Result<(std::path::PathBuf, std::path::PathBuf), RapidError> {
+fn source_and_target(
+    ctx: &mut Ctx<'_>,
+    args: &[Value],
+) -> Result<(std::path::PathBuf, std::path::PathBuf), RapidError> {
     let (old_text, old, _) = path_arg(ctx, &args[0])?;
     let (new_text, new, _) = path_arg(ctx, &args[1])?;
     if !old.is_file() {

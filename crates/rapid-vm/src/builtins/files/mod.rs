@@ -66,6 +66,14 @@ impl FileState {
         self.modules = modules;
     }
 
+    /// Writes out what every open file holds in its write buffer. A failure stays
+    /// pending and is reported by the file's next write or its Close.
+    pub fn flush_all(&mut self) {
+        for file in self.files.values_mut() {
+            let _ = file.flush();
+        }
+    }
+
     /// Closes every open file and directory.
     pub fn close_all(&mut self) {
         self.files.clear();
@@ -133,7 +141,10 @@ fn set_handle(ctx: &mut Ctx<'_>, arg: &Value, mut shell: Opaque, state: OpaqueSt
 }
 
 /// A RAPID path resolved on its device; `err` is the error a refused path raises here.
-fn resolve(ctx: &Ctx<'_>, text: &str, err: Err) -> Result<devices::Resolved, RapidError> {
+/// Every built-in that names a path comes here first, so what the task wrote but still
+/// holds in its write buffers reaches the files before anything looks at them.
+fn resolve(ctx: &mut Ctx<'_>, text: &str, err: Err) -> Result<devices::Resolved, RapidError> {
+    ctx.resources.files.flush_all();
     devices::resolve(ctx.resources.files.root(), text).map_err(|fault| ctx.error(err, fault.message()))
 }
 
