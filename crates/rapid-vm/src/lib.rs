@@ -121,6 +121,7 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
     };
     vm.set_data_names(module_data.map(named).collect());
     vm.set_pers_globals(prog.datas.iter().map(|d| d.kind == rapid_sema::symbols::DataKind::Pers).collect());
+    vm.set_program_sources(files.to_vec());
     let entry_idx = prog.interner.get(entry).and_then(|sym| prog.scopes.globals.get(&sym).map(|o| o.def));
     let started = match entry_idx {
         Some(Def::Routine(idx)) if prog.routines[idx as usize].kind == RoutineKind::Proc => vm.start_routine(idx),
@@ -140,7 +141,7 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
 }
 
 /// The module-level persistents and where their values stand in their files.
-fn pers_sites(prog: &Program, modules: &[compile::ModuleSource<'_>]) -> Vec<persist::PersSite> {
+pub(crate) fn pers_sites(prog: &Program, modules: &[compile::ModuleSource<'_>]) -> Vec<persist::PersSite> {
     use rapid_sema::symbols::{DataKind, DeclOrigin};
     let mut sites = Vec::new();
     for (global, data) in prog.datas.iter().enumerate() {

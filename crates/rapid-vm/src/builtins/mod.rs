@@ -12,6 +12,7 @@ pub mod files;
 mod geometry;
 mod math;
 mod matrix;
+pub mod modules;
 mod pendant;
 mod rawbytes;
 pub mod sockets;
@@ -86,6 +87,7 @@ pub struct Ctx<'a> {
 pub struct Resources {
     pub files: files::FileState,
     pub sockets: sockets::SocketState,
+    pub modules: modules::ModuleState,
 }
 
 impl Resources {
@@ -94,6 +96,7 @@ impl Resources {
     pub fn close_all(&mut self) {
         self.files.close_all();
         self.sockets.close_all();
+        self.modules.close_all();
     }
 }
 
@@ -190,8 +193,16 @@ pub fn present(arg: Option<&Value>) -> bool {
 pub type Entries = &'static [(&'static str, BuiltinFn)];
 
 /// Every family's table; a built-in's id is its position in their concatenation.
-static FAMILIES: &[Entries] =
-    &[CORE, files::ENTRIES, sockets::ENTRIES, matrix::ENTRIES, sysinfo::ENTRIES, strdig::ENTRIES, strformat::ENTRIES];
+static FAMILIES: &[Entries] = &[
+    CORE,
+    files::ENTRIES,
+    sockets::ENTRIES,
+    matrix::ENTRIES,
+    sysinfo::ENTRIES,
+    strdig::ENTRIES,
+    strformat::ENTRIES,
+    modules::ENTRIES,
+];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =
     std::sync::LazyLock::new(|| FAMILIES.iter().flat_map(|family| family.iter().copied()).collect());

@@ -13,7 +13,7 @@
 //! PP to Main) is simply not found: ERR_FILEACC.
 
 mod anybin;
-mod devices;
+pub(crate) mod devices;
 mod folders;
 mod io;
 mod iodev;
@@ -64,6 +64,11 @@ impl FileState {
     /// The task's loaded modules (ModExist, ModTimeDnum).
     pub fn set_modules(&mut self, modules: Vec<ModuleFile>) {
         self.modules = modules;
+    }
+
+    /// The task's loaded modules.
+    pub fn modules(&self) -> &[ModuleFile] {
+        &self.modules
     }
 
     /// Closes every open file and directory.
