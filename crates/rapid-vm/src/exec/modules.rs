@@ -267,6 +267,7 @@ impl Vm {
             })?;
         let (routines, datas) = members(&checked.prog, module_idx);
         self.install(&checked.prog, compiled.routines, &compiled.defaults, &routines, &datas);
+        self.relink_units(&checked, &modules);
         let init = Rc::new(compiled.init);
         self.resources.files.set_modules(
             self.resources
@@ -293,6 +294,27 @@ impl Vm {
         let unit = self.modules.units.len() - 1;
         self.snapshot_pers(unit);
         res
+    }
+
+    /// Compiles the other loaded modules again: a name they use may now be declared by
+    /// the new module (one unloaded and loaded again has new data slots). Frames already
+    /// running keep the code they started with.
+    fn relink_units(&mut self, checked: &Checked, modules: &[ModuleSource<'_>]) {
+        let (_, catalogue) = rapid_sema::catalogue();
+        let n_base = self.modules.base_modules.len();
+        let live: Vec<usize> = (0..self.modules.units.len()).filter(|&u| self.modules.units[u].live).collect();
+        for unit in live {
+            let Ok(compiled) =
+                compile::compile_module(&checked.prog, modules, n_base + unit, &catalogue.module, &catalogue.text)
+            else {
+                continue;
+            };
+            for (idx, code) in compiled.routines {
+                if let Some(slot) = self.routines.get_mut(idx as usize) {
+                    *slot = Some(Rc::new(code));
+                }
+            }
+        }
     }
 
     /// The ERR_SYNTAX message of a module the checker rejected outright.
@@ -413,6 +435,13 @@ impl Vm {
         self.frames.iter().any(|f| codes.iter().any(|c| Rc::ptr_eq(c, &f.code)))
     }
 
+    /// Whether code of loaded module `unit` is running; its code is told by its file,
+    /// since a frame may run code compiled before the module was linked again.
+    fn unit_runs(&self, unit: usize) -> bool {
+        let file = self.modules.base.len() + unit;
+        self.frames.iter().any(|f| f.code.file == file) || self.runs_any(&self.modules.units[unit].routines)
+    }
+
     /// `UnLoad`: removes the module loaded from `host`.
     fn unload(
         &mut self,
@@ -426,7 +455,7 @@ impl Vm {
             return Err(self.error(Err::Unload, format!("no module was loaded from `{text}` with Load or WaitLoad")));
         };
         let u = &self.modules.units[unit];
-        if self.runs_any(&u.routines) {
+        if self.unit_runs(unit) {
             let name = u.name.clone();
             return Err(self.error(Err::Unload, format!("module `{name}` cannot be unloaded: its code is running")));
         }
@@ -478,7 +507,7 @@ impl Vm {
     /// `EraseModule`: removes any module of the task by name.
     fn erase(&mut self, name: &str) -> Result<(), RapidError> {
         if let Some(unit) = self.modules.units.iter().position(|u| u.live && u.name.eq_ignore_ascii_case(name)) {
-            if self.runs_any(&self.modules.units[unit].routines) {
+            if self.unit_runs(unit) {
                 return Err(self.error(Err::Unload, format!("module `{name}` cannot be erased: its code is running")));
             }
             self.remove_unit(unit);
