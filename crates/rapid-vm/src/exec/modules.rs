@@ -212,6 +212,12 @@ impl Vm {
         request: ModuleRequest,
         host: &mut dyn crate::host::Host,
     ) -> Result<(), RapidError> {
+        if self.modules.base.is_empty() {
+            // A VM made without `load` does not know its program's sources.
+            return Err(RapidError::fatal(
+                "this task was started without its program's sources; modules cannot be linked",
+            ));
+        }
         match request {
             ModuleRequest::Load { file, check_ref } => self.link(file, check_ref, host),
             ModuleRequest::Unload { host: path, path: text, err_if_changed, save } => {
