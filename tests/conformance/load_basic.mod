@@ -21,6 +21,8 @@ MODULE load_basic
     TPWrite "after " \Bool:=ModExist("ext");
     %"ext_hello"% 2;
     %"ext_hello"% n;
+    ! A module-qualified name reaches the procedure too, as public programs use it.
+    %"ext:ext_hello"% 1;
     UnLoad "HOME:/ext.mod";
     TPWrite "unloaded " \Bool:=ModExist("ext");
     %"ext_hello"% 1;

@@ -77,13 +77,14 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
     let compiled =
         compile::compile(&prog, &modules, &catalogue.module, &catalogue.text).map_err(LoadError::Unsupported)?;
     let types = ops::OpTypes { pos: prog.core.pos, orient: prog.core.orient };
-    let procs_by_name: FxHashMap<String, u32> = prog
+    let mut procs_by_name: FxHashMap<String, u32> = prog
         .routines
         .iter()
         .enumerate()
         .filter(|(_, r)| r.chapter.is_none() && r.kind == RoutineKind::Proc)
         .map(|(idx, r)| (r.display.to_lowercase(), idx as u32))
         .collect();
+    procs_by_name.extend(qualified_procs(&prog, &modules));
     let global_named = |name: &str| match prog.interner.get(name).and_then(|sym| prog.scopes.builtins.get(&sym)) {
         Some(Def::Data(idx)) => Some(*idx),
         _ => None,
@@ -138,6 +139,23 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
     let persistents = pers_sites(&prog, &modules);
     let warnings = analysis.diagnostics;
     Ok(Loaded { vm, warnings, persistents, entry: entry_routine })
+}
+
+/// Late binding by `"module:procedure"` (public programs call loaded code as
+/// `%"CfreePath:path"%`): every user procedure under its module-qualified name.
+// uncertain: whether the controller also reaches a LOCAL procedure this way; we do.
+pub(crate) fn qualified_procs(prog: &Program, modules: &[compile::ModuleSource<'_>]) -> Vec<(String, u32)> {
+    let mut names = Vec::new();
+    for (idx, routine) in prog.routines.iter().enumerate() {
+        let DeclOrigin::Module { module, .. } = routine.origin else { continue };
+        if routine.kind != RoutineKind::Proc {
+            continue;
+        }
+        let Some(source) = modules.get(module) else { continue };
+        let module_name = source.module.name.span.text(source.text);
+        names.push((format!("{module_name}:{}", routine.display).to_lowercase(), idx as u32));
+    }
+    names
 }
 
 /// The module-level persistents and where their values stand in their files.

@@ -273,6 +273,8 @@ impl Vm {
             })?;
         let (routines, datas) = members(&checked.prog, module_idx);
         self.install(&checked.prog, compiled.routines, &compiled.defaults, &routines, &datas);
+        let qualified = crate::qualified_procs(&checked.prog, &modules);
+        self.procs_by_name.extend(qualified.into_iter().filter(|(_, idx)| routines.contains(idx)));
         self.relink_units(&checked, &modules);
         let init = Rc::new(compiled.init);
         self.resources.files.set_modules(
