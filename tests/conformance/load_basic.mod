@@ -19,6 +19,8 @@ MODULE load_basic
     TPWrite "before " \Bool:=ModExist("ext");
     Load \Dynamic, "HOME:/ext.mod";
     TPWrite "after " \Bool:=ModExist("ext");
+    ! ModTimeDnum of a loaded module is the time of the file it came from.
+    TPWrite "time " \Bool:=ModTimeDnum("ext") = FileTimeDnum("HOME:/ext.mod" \ModifyTime);
     %"ext_hello"% 2;
     %"ext_hello"% n;
     ! A module-qualified name reaches the procedure too, as public programs use it.

@@ -51,3 +51,25 @@ fn pp_to_main_unloads_dynamic_modules_and_reinitialises_static_ones() {
     let expected = ["sv=6", "sp=2", "dy TRUE", "st TRUE", "sv=6", "sp=3", "dy FALSE", "st TRUE"];
     assert_eq!(host.lines, expected);
 }
+
+#[test]
+fn a_module_that_does_not_check_is_refused_with_its_diagnostics() {
+    let root = std::env::temp_dir().join(format!("rapid-dynload-syntax-{}", std::process::id()));
+    let module = root.join("HOME");
+    std::fs::create_dir_all(&module).expect("a temporary folder");
+    std::fs::write(module.join("bad.mod"), "MODULE bad\nPROC bad_p()\n  x := ;\nENDPROC\nENDMODULE\n")
+        .expect("a module file");
+    let program = "MODULE t\nPROC main()\n  Load \"HOME:/bad.mod\";\nENDPROC\nENDMODULE\n";
+    let loaded = match load(&[SourceInput::from_text("t.mod", program)], "main") {
+        Ok(loaded) => loaded,
+        Err(err) => panic!("load failed: {err:?}"),
+    };
+    let mut machine = loaded.vm;
+    machine.resources_mut().files.set_root(&root);
+    let mut host = RecordingHost::default();
+    let exit = machine.run(&mut host, 100_000);
+    let _ = std::fs::remove_dir_all(&root);
+    let Exit::Unhandled(unhandled) = exit else { panic!("expected ERR_SYNTAX, got {exit:?}") };
+    assert_eq!(unhandled.error.name, "ERR_SYNTAX");
+    assert!(unhandled.error.message.contains("HOME:/bad.mod:3:"), "{}", unhandled.error.message);
+}
