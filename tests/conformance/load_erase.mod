@@ -30,11 +30,14 @@ MODULE load_erase
     EraseModule "lib";
     TPWrite "lib " \Bool:=ModExist("lib");
     CheckProgRef;
+    ! \CheckRef checks the whole task, which has lost lib; without it, helper loads
+    Load "HOME:/helper.mod" \CheckRef;
+    Load "HOME:/helper.mod";
+    TPWrite "helper " \Bool:=ModExist("helper");
     Load "HOME:/lib.mod";
     CheckProgRef;
     TPWrite "refs ok";
     %"user_p"%;
-    Load "HOME:/helper.mod";
     EraseModule "HELPER";
     TPWrite "helper " \Bool:=ModExist("helper");
     %"helper_p"%;

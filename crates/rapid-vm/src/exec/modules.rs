@@ -351,8 +351,11 @@ impl Vm {
         // uncertain: without \CheckRef the controller links a module with unresolved data
         // or functions and fails only when they are used; code that names what does not
         // exist cannot be compiled here, so that load is refused with ERR_LINKREF as well.
-        let mut unresolved: Vec<&Diagnostic> = mine.into_iter().chain(others).collect();
+        // With \CheckRef the whole task is checked: also references other modules lost
+        // (to an UnLoad or EraseModule) and procedure calls that reach nothing.
+        let mut unresolved: Vec<&Diagnostic> = mine;
         if check_ref {
+            unresolved.extend(others);
             unresolved.extend(checked.diagnostics.iter().filter(|d| d.code == DiagCode::UndefinedProcedure));
         }
         if unresolved.is_empty() {
