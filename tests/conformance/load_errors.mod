@@ -37,8 +37,8 @@ MODULE load_errors
     Close f;
     ! 1: no such file
     Load "HOME:/nofile.mod";
-    ! 2: loads; 3: the same file again
-    Load "HOME:/good.mod";
+    ! 2: loads (FilePath and \File); 3: the same file again
+    Load "HOME:" \File:="good.mod";
     Load "HOME:/good.mod";
     ! 4: a module named like one of the task's own
     Load "HOME:/twin.mod";

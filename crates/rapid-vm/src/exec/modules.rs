@@ -344,6 +344,8 @@ impl Vm {
         let errors: Vec<&Diagnostic> = checked.diagnostics.iter().filter(|d| d.severity() == Severity::Error).collect();
         let (mine, others): (Vec<&Diagnostic>, Vec<&Diagnostic>) = errors.iter().partition(|d| d.file == file);
         let syntax: Vec<&Diagnostic> = mine.iter().copied().filter(|d| !is_unresolved(d.code)).collect();
+        // uncertain: a global name the task already declares (DuplicateDeclaration) is
+        // reported as ERR_SYNTAX; the controller's error for that clash is not public.
         if !syntax.is_empty() {
             let why = quote(&checked.files, &syntax);
             return Err(self.error(Err::Syntax, format!("module `{name}` does not check: {why}")));
@@ -475,7 +477,9 @@ impl Vm {
             // uncertain: "changed" is a persistent whose value differs from the file's.
             return Err(self.error(Err::NotSaved, format!("module `{name}` changed since it was loaded")));
         }
-        if save && self.unit_changed(unit) {
+        // The manual: with \Save the module is saved, to where it was loaded from,
+        // before it is unloaded (changed or not).
+        if save {
             let name = self.modules.units[unit].name.clone();
             let dest = self.modules.units[unit].host.clone();
             self.save_module(&name, Some((dest, text.to_string())))?;
