@@ -517,6 +517,13 @@ impl Vm {
         let files: Vec<ModuleFile> =
             self.resources.files.modules().iter().filter(|m| !m.name.eq_ignore_ascii_case(name)).cloned().collect();
         self.resources.files.set_modules(files);
+        // Loaded modules compiled again without it: a call of one of its procedures then
+        // raises ERR_REFUNKPRC, as a call of a procedure defined nowhere does. (Code
+        // using its data no longer compiles and is kept; CheckProgRef reports it.)
+        if let Ok(checked) = check(self.modules.sources()) {
+            let modules = checked.modules();
+            self.relink_units(&checked, &modules);
+        }
     }
 
     /// `EraseModule`: removes any module of the task by name.
