@@ -68,6 +68,8 @@ struct Unit {
     dynamic: bool,
     routines: Vec<u32>,
     datas: Vec<u32>,
+    /// The slots of its persistents: a global PERS the task already had is shared.
+    pers: Vec<u32>,
     init: Rc<Code>,
     /// Persistent values when loaded or last saved (UnLoad \ErrIfChanged).
     saved_pers: Vec<(u32, Value)>,
@@ -166,6 +168,30 @@ fn members(prog: &Program, module: usize) -> (Vec<u32>, Vec<u32>) {
     let routines = prog.routines.iter().enumerate().filter(|(_, r)| mine(r.origin)).map(|(i, _)| i as u32).collect();
     let datas = prog.datas.iter().enumerate().filter(|(_, d)| mine(d.origin)).map(|(i, _)| i as u32).collect();
     (routines, datas)
+}
+
+/// Where the value of persistent `data` lives: a global PERS declared in several
+/// modules is one persistent, held by the first declaration (what its name resolves
+/// to); `None` when `data` is no persistent.
+// uncertain: a module loaded with a global PERS the task already has keeps the current
+// value (its own initial value is not applied), as for the task's own modules.
+fn pers_slot(prog: &Program, data: u32) -> Option<u32> {
+    let info = prog.datas.get(data as usize)?;
+    if info.kind != DataKind::Pers {
+        return None;
+    }
+    let sym = prog.interner.get(&info.display)?;
+    if let DeclOrigin::Module { module, .. } = info.origin {
+        if prog.scopes.module_locals.get(module).and_then(|m| m.get(&sym)) == Some(&Def::Data(data)) {
+            return Some(data);
+        }
+    }
+    match prog.scopes.globals.get(&sym).map(|o| o.def) {
+        Some(Def::Data(first)) if prog.datas.get(first as usize).is_some_and(|d| d.kind == DataKind::Pers) => {
+            Some(first)
+        }
+        _ => Some(data),
+    }
 }
 
 /// Text as the controller's files hold it: Latin-1 (other characters become `?`).
@@ -272,6 +298,7 @@ impl Vm {
                 self.error(Err::Syntax, format!("module `{name}` cannot be run: {}", why.join("; ")))
             })?;
         let (routines, datas) = members(&checked.prog, module_idx);
+        let pers = datas.iter().filter_map(|&d| pers_slot(&checked.prog, d)).collect();
         self.install(&checked.prog, compiled.routines, &compiled.defaults, &routines, &datas);
         let qualified = crate::qualified_procs(&checked.prog, &modules);
         self.procs_by_name.extend(qualified.into_iter().filter(|(_, idx)| routines.contains(idx)));
@@ -295,6 +322,7 @@ impl Vm {
             dynamic: file.dynamic,
             routines,
             datas,
+            pers,
             init: init.clone(),
             saved_pers: Vec::new(),
         });
@@ -432,12 +460,8 @@ impl Vm {
 
     fn snapshot_pers(&mut self, unit: usize) {
         let Some(u) = self.modules.units.get(unit) else { return };
-        let pers = u
-            .datas
-            .iter()
-            .filter(|&&g| self.pers_globals.get(g as usize).copied().unwrap_or(false))
-            .filter_map(|&g| self.storage.globals.get(g as usize).map(|v| (g, v.clone())))
-            .collect();
+        let pers =
+            u.pers.iter().filter_map(|&g| self.storage.globals.get(g as usize).map(|v| (g, v.clone()))).collect();
         self.modules.units[unit].saved_pers = pers;
     }
 
@@ -616,7 +640,10 @@ impl Vm {
         let values: Vec<(&crate::persist::PersSite, &Value)> = sites
             .iter()
             .filter(|s| s.file == file && s.insert_at >= start && s.insert_at <= end)
-            .filter_map(|s| self.storage.globals.get(s.global as usize).map(|v| (s, v)))
+            .filter_map(|s| {
+                let slot = pers_slot(&checked.prog, s.global).unwrap_or(s.global);
+                self.storage.globals.get(slot as usize).map(|v| (s, v))
+            })
             .collect();
         let new = crate::persist::rewrite(text, &values).unwrap_or_else(|| text.clone());
         if whole_file {
