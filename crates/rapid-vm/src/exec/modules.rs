@@ -372,7 +372,7 @@ impl Vm {
         let errors: Vec<&Diagnostic> = checked.diagnostics.iter().filter(|d| d.severity() == Severity::Error).collect();
         let (mine, others): (Vec<&Diagnostic>, Vec<&Diagnostic>) = errors.iter().partition(|d| d.file == file);
         let syntax: Vec<&Diagnostic> = mine.iter().copied().filter(|d| !is_unresolved(d.code)).collect();
-        // uncertain: a global name the task already declares (DuplicateDeclaration) is
+        // uncertain: a global name the task already declares (AmbiguousGlobal) is
         // reported as ERR_SYNTAX; the controller's error for that clash is not public.
         if !syntax.is_empty() {
             let why = quote(&checked.files, &syntax);
