@@ -14,6 +14,7 @@ MODULE load_basic
     Write f, "    count := count + k;";
     Write f, "    TPWrite ""ext count="" \\Num:=count;";
     Write f, "  ENDPROC";
+    Write f, "  PROC ext_1() TPWrite ""by var""; ENDPROC";
     Write f, "ENDMODULE";
     Close f;
     TPWrite "before " \Bool:=ModExist("ext");
@@ -25,6 +26,7 @@ MODULE load_basic
     %"ext_hello"% n;
     ! A module-qualified name reaches the procedure too, as public programs use it.
     %"ext:ext_hello"% 1;
+    CallByVar "ext_", 1;
     UnLoad "HOME:/ext.mod";
     TPWrite "unloaded " \Bool:=ModExist("ext");
     %"ext_hello"% 1;
