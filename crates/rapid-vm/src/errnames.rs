@@ -76,4 +76,15 @@ errors! {
     TextNotExist = "ERR_TXTNOEXIST",
     NotArray = "ERR_NOTARR",
     ArgName = "ERR_ARGNAME",
+    // Loading, unloading and saving program modules (§1.17).
+    LinkRef = "ERR_LINKREF",
+    Loaded = "ERR_LOADED",
+    Unload = "ERR_UNLOAD",
+    Module = "ERR_MODULE",
+    Syntax = "ERR_SYNTAX",
+    IoError = "ERR_IOERROR",
+    NotSaved = "ERR_NOTSAVED",
+    LoadNoInUse = "ERR_LOADNO_INUSE",
+    LoadNoNoUse = "ERR_LOADNO_NOUSE",
+    UnknownLoad = "ERR_UNKPROC",
 }

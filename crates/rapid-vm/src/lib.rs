@@ -77,13 +77,14 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
     let compiled =
         compile::compile(&prog, &modules, &catalogue.module, &catalogue.text).map_err(LoadError::Unsupported)?;
     let types = ops::OpTypes { pos: prog.core.pos, orient: prog.core.orient };
-    let procs_by_name: FxHashMap<String, u32> = prog
+    let mut procs_by_name: FxHashMap<String, u32> = prog
         .routines
         .iter()
         .enumerate()
         .filter(|(_, r)| r.chapter.is_none() && r.kind == RoutineKind::Proc)
         .map(|(idx, r)| (r.display.to_lowercase(), idx as u32))
         .collect();
+    procs_by_name.extend(qualified_procs(&prog, &modules));
     let global_named = |name: &str| match prog.interner.get(name).and_then(|sym| prog.scopes.builtins.get(&sym)) {
         Some(Def::Data(idx)) => Some(*idx),
         _ => None,
@@ -122,6 +123,7 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
     vm.set_data_names(module_data.map(named).collect());
     vm.resources_mut().symsearch = builtins::symsearch::catalog::task_symbols(&prog, &modules);
     vm.set_pers_globals(prog.datas.iter().map(|d| d.kind == rapid_sema::symbols::DataKind::Pers).collect());
+    vm.set_program_sources(files.to_vec());
     let entry_idx = prog.interner.get(entry).and_then(|sym| prog.scopes.globals.get(&sym).map(|o| o.def));
     let started = match entry_idx {
         Some(Def::Routine(idx)) if prog.routines[idx as usize].kind == RoutineKind::Proc => vm.start_routine(idx),
@@ -140,8 +142,25 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
     Ok(Loaded { vm, warnings, persistents, entry: entry_routine })
 }
 
+/// Late binding by `"module:procedure"` (public programs call loaded code as
+/// `%"CfreePath:path"%`): every user procedure under its module-qualified name.
+// uncertain: whether the controller also reaches a LOCAL procedure this way; we do.
+pub(crate) fn qualified_procs(prog: &Program, modules: &[compile::ModuleSource<'_>]) -> Vec<(String, u32)> {
+    let mut names = Vec::new();
+    for (idx, routine) in prog.routines.iter().enumerate() {
+        let DeclOrigin::Module { module, .. } = routine.origin else { continue };
+        if routine.kind != RoutineKind::Proc {
+            continue;
+        }
+        let Some(source) = modules.get(module) else { continue };
+        let module_name = source.module.name.span.text(source.text);
+        names.push((format!("{module_name}:{}", routine.display).to_lowercase(), idx as u32));
+    }
+    names
+}
+
 /// The module-level persistents and where their values stand in their files.
-fn pers_sites(prog: &Program, modules: &[compile::ModuleSource<'_>]) -> Vec<persist::PersSite> {
+pub(crate) fn pers_sites(prog: &Program, modules: &[compile::ModuleSource<'_>]) -> Vec<persist::PersSite> {
     use rapid_sema::symbols::{DataKind, DeclOrigin};
     let mut sites = Vec::new();
     for (global, data) in prog.datas.iter().enumerate() {

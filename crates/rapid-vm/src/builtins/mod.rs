@@ -14,6 +14,7 @@ pub mod files;
 mod geometry;
 mod math;
 mod matrix;
+pub mod modules;
 mod pendant;
 mod rawbytes;
 pub mod sockets;
@@ -97,6 +98,7 @@ pub struct Resources {
     pub symsearch: symsearch::SymSearchState,
     /// The execution log SpyStart opened (ended at PP to Main, as on the controller).
     pub spy: spy::SpyState,
+    pub modules: modules::ModuleState,
 }
 
 impl Resources {
@@ -107,6 +109,7 @@ impl Resources {
         self.sockets.close_all();
         self.symsearch.end_search();
         self.spy.stop();
+        self.modules.close_all();
     }
 }
 
@@ -215,6 +218,7 @@ static FAMILIES: &[Entries] = &[
     texttab::ENTRIES,
     symsearch::ENTRIES,
     dnheader::ENTRIES,
+    modules::ENTRIES,
 ];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =

@@ -93,7 +93,7 @@ pub fn compile(
     }
     let global_defaults: Vec<Value> =
         prog.datas.iter().map(|d| default_value(prog, d.ty, &d.dims[..d.rank as usize])).collect();
-    let init = compile_init(prog, modules, builtin_module, builtin_text, &mut errors);
+    let init = compile_init(prog, modules, builtin_module, builtin_text, &mut errors, None);
     let mut routines: Vec<Option<Code>> = vec![None; prog.routines.len()];
     for (idx, info) in prog.routines.iter().enumerate() {
         let DeclOrigin::Module { module, item } = info.origin else { continue };
@@ -112,17 +112,75 @@ pub fn compile(
     }
 }
 
-/// The code run at load: initial values of predefined and module data, in order.
+/// One module linked into a running task: its routines and data by their indices in
+/// the program, and the code giving that data its initial values.
+pub struct CompiledModule {
+    pub routines: Vec<(u32, Code)>,
+    pub init: Code,
+    /// The data's values before `init` runs.
+    pub defaults: Vec<(u32, Value)>,
+}
+
+/// Compiles module `module` (an index into `modules`) of a program that is already
+/// running: only its routines and its data's initial values (Load, WaitLoad).
+pub fn compile_module(
+    prog: &Program,
+    modules: &[ModuleSource<'_>],
+    module: usize,
+    builtin_module: &Module,
+    builtin_text: &str,
+) -> Result<CompiledModule, Vec<CompileError>> {
+    let mut errors = Vec::new();
+    let mine = |origin: DeclOrigin| matches!(origin, DeclOrigin::Module { module: m, .. } if m == module);
+    let mut defaults = Vec::new();
+    for (idx, data) in prog.datas.iter().enumerate().filter(|(_, d)| mine(d.origin)) {
+        let dims = &data.dims[..data.rank as usize];
+        if let Some(n) = too_many_elements(dims) {
+            let span = modules.get(module).map_or(Span::default(), |m| m.module.span);
+            let file = modules.get(module).map_or(usize::MAX, |m| m.file);
+            errors.push(CompileError { file, span, message: array_too_large(&data.display, n) });
+            continue;
+        }
+        defaults.push((idx as u32, default_value(prog, data.ty, dims)));
+    }
+    if !errors.is_empty() {
+        return Err(errors);
+    }
+    let init = compile_init(prog, modules, builtin_module, builtin_text, &mut errors, Some(module));
+    let mut routines = Vec::new();
+    for (idx, info) in prog.routines.iter().enumerate().filter(|(_, r)| mine(r.origin)) {
+        let DeclOrigin::Module { module, item } = info.origin else { continue };
+        let Some(source) = modules.get(module) else { continue };
+        let Some(Item::Routine(routine)) = source.module.items.get(item) else { continue };
+        let mut rc = RoutineCompiler::new(prog, module, source.file, source.text);
+        match rc.routine(routine) {
+            Ok(code) => routines.push((idx as u32, code)),
+            Err(mut errs) => errors.append(&mut errs),
+        }
+    }
+    if errors.is_empty() {
+        Ok(CompiledModule { routines, init, defaults })
+    } else {
+        Err(errors)
+    }
+}
+
+/// The code run at load: initial values of predefined and module data, in order
+/// (of module `only`'s data alone when given).
 fn compile_init(
     prog: &Program,
     modules: &[ModuleSource<'_>],
     builtin_module: &Module,
     builtin_text: &str,
     errors: &mut Vec<CompileError>,
+    only: Option<usize>,
 ) -> Code {
     let mut init = RoutineCompiler::new(prog, usize::MAX, usize::MAX, builtin_text);
     init.code.name = "<load>".into();
     for (idx, data) in prog.datas.iter().enumerate() {
+        if only.is_some_and(|m| !matches!(data.origin, DeclOrigin::Module { module, .. } if module == m)) {
+            continue;
+        }
         let (decl, arena, text, module, file) = match data.origin {
             DeclOrigin::Builtin(item) => match builtin_module.items.get(item) {
                 Some(Item::Data(decl)) => (decl, &builtin_module.arena, builtin_text, usize::MAX, usize::MAX),

@@ -12,6 +12,7 @@ pub mod backward;
 mod call;
 mod fast;
 mod kernel;
+pub mod modules;
 pub mod storage;
 
 use std::rc::Rc;
@@ -151,6 +152,8 @@ pub struct Vm {
     wall_epoch: f64,
     /// Open files, directories and sockets.
     resources: crate::builtins::Resources,
+    /// The program's sources and the modules loaded at run time (Load, UnLoad).
+    modules: modules::TaskModules,
 }
 
 impl Vm {
@@ -186,6 +189,7 @@ impl Vm {
                 .duration_since(std::time::UNIX_EPOCH)
                 .map_or(0.0, |d| d.as_secs_f64()),
             resources: crate::builtins::Resources::default(),
+            modules: modules::TaskModules::default(),
         }
     }
 
@@ -261,6 +265,7 @@ impl Vm {
             if let Exit::Unhandled(u) = self.run(host, u64::MAX) {
                 return Err(u);
             }
+            self.modules_at_pp_to_main(host)?;
             for (idx, value) in kept {
                 self.storage.globals[idx] = value;
             }
@@ -715,6 +720,9 @@ impl Vm {
         }
         if skip_warn {
             self.drop_handled_warning();
+        }
+        if let Some(request) = self.resources.modules.take_request() {
+            self.module_request(request, host)?;
         }
         Ok((res, wait, stop))
     }

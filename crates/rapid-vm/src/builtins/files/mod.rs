@@ -74,6 +74,11 @@ impl FileState {
         }
     }
 
+    /// The task's loaded modules.
+    pub fn modules(&self) -> &[ModuleFile] {
+        &self.modules
+    }
+
     /// Closes every open file and directory.
     pub fn close_all(&mut self) {
         self.files.clear();

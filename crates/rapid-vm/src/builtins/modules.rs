@@ -1,0 +1,253 @@
+//! Loading, unloading and saving program modules while the task runs (§1.6, §1.17):
+//! Load, UnLoad, StartLoad, WaitLoad, CancelLoad (`loadsession`), CheckProgRef, Save
+//! and EraseModule.
+//!
+//! A built-in here only reads its arguments and, for a load, the module file; then it
+//! leaves a [`ModuleRequest`] in [`ModuleState`]. Checking, compiling and linking code
+//! into the task needs the whole VM, so `exec::modules` carries the request out as soon
+//! as the built-in returns, before the next instruction runs.
+
+use std::path::PathBuf;
+
+use rapid_sema::SourceInput;
+use rustc_hash::FxHashMap;
+
+use super::files::devices;
+use super::{present, Ctx, Entries};
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::{Opaque, OpaqueState, Value};
+
+type Res = Result<Option<Value>, RapidError>;
+
+/// Module files bigger than this are refused: the controller's program memory is a
+/// few megabytes, and reading a huge file would only stall the task.
+const MAX_MODULE_BYTES: u64 = 8 << 20;
+
+/// A module file read from a device, ready to be linked into the task.
+#[derive(Debug, Clone)]
+pub struct LoadFile {
+    /// The RAPID path as the program wrote it (FilePath joined with \File).
+    pub path: String,
+    /// Where it is on the host, inside its device.
+    pub host: PathBuf,
+    pub source: SourceInput,
+    /// `\Dynamic`: unloaded again at PP to Main.
+    pub dynamic: bool,
+}
+
+/// What a built-in of this family asks the VM to do.
+#[derive(Debug, Clone)]
+pub enum ModuleRequest {
+    Load {
+        file: LoadFile,
+        check_ref: bool,
+    },
+    Unload {
+        host: PathBuf,
+        path: String,
+        err_if_changed: bool,
+        save: bool,
+    },
+    /// WaitLoad: optionally unload one module, then link the one StartLoad read.
+    WaitLoad {
+        unload: Option<(PathBuf, String)>,
+        file: LoadFile,
+        check_ref: bool,
+    },
+    CheckProgRef,
+    /// Save: `dest` is the file to write, `None` for the file the module came from.
+    Save {
+        module: String,
+        dest: Option<(PathBuf, String)>,
+    },
+    Erase {
+        module: String,
+    },
+}
+
+/// The family's state: the request waiting for the VM and the open load sessions.
+#[derive(Default)]
+pub struct ModuleState {
+    pub(crate) request: Option<ModuleRequest>,
+    /// Load sessions StartLoad began and WaitLoad or CancelLoad has not ended.
+    sessions: FxHashMap<u32, LoadFile>,
+    last_session: u32,
+}
+
+impl ModuleState {
+    /// PP to Main ends every load session (like files and sockets, they are task
+    /// resources of the program run).
+    pub fn close_all(&mut self) {
+        self.sessions.clear();
+        self.request = None;
+    }
+
+    /// The request left by the built-in that just ran.
+    pub(crate) fn take_request(&mut self) -> Option<ModuleRequest> {
+        self.request.take()
+    }
+}
+
+pub(super) static ENTRIES: Entries = &[
+    ("Load", load),
+    ("UnLoad", unload),
+    ("StartLoad", start_load),
+    ("WaitLoad", wait_load),
+    ("CancelLoad", cancel_load),
+    ("CheckProgRef", check_prog_ref),
+    ("Save", save),
+    ("EraseModule", erase_module),
+];
+
+/// An optional string argument.
+fn opt_string(ctx: &Ctx<'_>, arg: Option<&Value>) -> Result<Option<String>, RapidError> {
+    match arg {
+        Some(a) if present(Some(a)) => ctx.string(a).map(Some),
+        _ => Ok(None),
+    }
+}
+
+/// FilePath with its optional \File, as one RAPID path, and where it is on the host.
+fn resolve(ctx: &Ctx<'_>, path: &Value, file: Option<&Value>, err: Err) -> Result<(String, PathBuf), RapidError> {
+    let path = ctx.string(path)?;
+    let file = opt_string(ctx, file)?;
+    let text = devices::join_object(&path, file.as_deref());
+    match devices::resolve(ctx.resources.files.root(), &text) {
+        Ok(resolved) => Ok((text, resolved.path)),
+        Err(fault) => Err(ctx.error(err, format!("`{text}`: {}", fault.message()))),
+    }
+}
+
+/// Reads the module file named by FilePath and \File.
+fn read_module(ctx: &Ctx<'_>, path: &Value, file: Option<&Value>, dynamic: bool) -> Result<LoadFile, RapidError> {
+    let (path, host) = resolve(ctx, path, file, Err::FileNotFound)?;
+    let meta = std::fs::metadata(&host);
+    match meta {
+        Ok(meta) if meta.is_file() => {
+            if meta.len() > MAX_MODULE_BYTES {
+                return Err(ctx.error(
+                    Err::IoError,
+                    format!("`{path}` is larger than the program memory ({MAX_MODULE_BYTES} bytes)"),
+                ));
+            }
+        }
+        // uncertain: the manual names ERR_FILNOTFND for a module file that is not there.
+        _ => return Err(ctx.error(Err::FileNotFound, format!("the module file `{path}` was not found"))),
+    }
+    let bytes = std::fs::read(&host).map_err(|e| ctx.error(Err::IoError, format!("`{path}` cannot be read: {e}")))?;
+    let source = SourceInput::from_bytes(path.clone(), bytes);
+    Ok(LoadFile { path, host, source, dynamic })
+}
+
+/// `Load [\Dynamic] FilePath [\File] [\CheckRef]`.
+fn load(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let file = read_module(ctx, &args[1], args.get(2), present(args.first()))?;
+    ctx.resources.modules.request = Some(ModuleRequest::Load { file, check_ref: present(args.get(3)) });
+    Ok(None)
+}
+
+/// `UnLoad [\ErrIfChanged] | [\Save] FilePath [\File]`.
+fn unload(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (path, host) = resolve(ctx, &args[2], args.get(3), Err::Unload)?;
+    let (err_if_changed, save) = (present(args.first()), present(args.get(1)));
+    ctx.resources.modules.request = Some(ModuleRequest::Unload { host, path, err_if_changed, save });
+    Ok(None)
+}
+
+/// The session a loadsession argument holds, if any.
+fn session_of(ctx: &Ctx<'_>, arg: &Value) -> Result<(Opaque, Option<u32>), RapidError> {
+    match ctx.value(arg)? {
+        Value::Opaque(opaque) => {
+            let handle = match opaque.state {
+                OpaqueState::Handle(h) => Some(h),
+                _ => None,
+            };
+            Ok((*opaque, handle))
+        }
+        _ => Err(ctx.error(Err::ArgValue, "a loadsession was expected")),
+    }
+}
+
+/// `StartLoad [\Dynamic] FilePath [\File] LoadNo`: the file is read now; WaitLoad links it.
+fn start_load(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (shell, handle) = session_of(ctx, &args[3])?;
+    // uncertain: StartLoad on a session still waiting for its WaitLoad raises
+    // ERR_LOADNO_INUSE (the name of that error says so; the manual's page is not public).
+    if handle.is_some_and(|h| ctx.resources.modules.sessions.contains_key(&h)) {
+        return Err(ctx.error(Err::LoadNoInUse, "the load session is in use; WaitLoad or CancelLoad it first"));
+    }
+    let file = read_module(ctx, &args[1], args.get(2), present(args.first()))?;
+    let state = &mut ctx.resources.modules;
+    state.last_session = state.last_session.wrapping_add(1).max(1);
+    let id = state.last_session;
+    state.sessions.insert(id, file);
+    ctx.store(&args[3], Value::Opaque(Box::new(Opaque { ty: shell.ty, state: OpaqueState::Handle(id) })))?;
+    Ok(None)
+}
+
+/// Ends the session held in `arg` (the variable becomes unused) and returns its file.
+fn end_session(ctx: &mut Ctx<'_>, arg: &Value, err: Err, what: &str) -> Result<LoadFile, RapidError> {
+    let (shell, handle) = session_of(ctx, arg)?;
+    let Some(file) = handle.and_then(|h| ctx.resources.modules.sessions.remove(&h)) else {
+        return Err(ctx.error(err, format!("{what}: the loadsession has no load under way (no StartLoad)")));
+    };
+    ctx.store(arg, Value::Opaque(Box::new(Opaque { ty: shell.ty, state: OpaqueState::None })))?;
+    Ok(file)
+}
+
+/// `WaitLoad [\UnloadPath] [\UnloadFile] LoadNo [\CheckRef]`.
+fn wait_load(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let unload = match args.first() {
+        Some(path) if present(Some(path)) => Some(resolve(ctx, path, args.get(1), Err::Unload)?),
+        _ => None,
+    };
+    let unload = unload.map(|(path, host)| (host, path));
+    // uncertain: a loadsession with no StartLoad behind it raises ERR_UNKPROC in WaitLoad
+    // (the catalogue's description of that error).
+    let file = end_session(ctx, &args[2], Err::UnknownLoad, "WaitLoad")?;
+    ctx.resources.modules.request = Some(ModuleRequest::WaitLoad { unload, file, check_ref: present(args.get(3)) });
+    Ok(None)
+}
+
+/// `CancelLoad LoadNo`: drops a load StartLoad began.
+fn cancel_load(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    // uncertain: CancelLoad on a session not in use raises ERR_LOADNO_NOUSE.
+    end_session(ctx, &args[0], Err::LoadNoNoUse, "CancelLoad")?;
+    Ok(None)
+}
+
+/// `CheckProgRef`: ERR_LINKREF when the task has unresolved references.
+fn check_prog_ref(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+    ctx.resources.modules.request = Some(ModuleRequest::CheckProgRef);
+    Ok(None)
+}
+
+/// `Save [\TaskRef] | [\TaskName] ModuleName [\FilePath] [\File]`.
+fn save(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    if let Some(task) = opt_string(ctx, args.get(1))? {
+        if !task.eq_ignore_ascii_case(super::TASK_NAME) {
+            return Err(
+                ctx.error(Err::TaskName, format!("no program task `{task}` (this task is {})", super::TASK_NAME))
+            );
+        }
+    }
+    let module = ctx.string(&args[2])?;
+    let dest = match args.get(3) {
+        Some(path) if present(Some(path)) => {
+            let (text, host) = resolve(ctx, path, args.get(4), Err::IoError)?;
+            Some((host, text))
+        }
+        // uncertain: \File without \FilePath names a file beside the module's own.
+        _ => None,
+    };
+    ctx.resources.modules.request = Some(ModuleRequest::Save { module, dest });
+    Ok(None)
+}
+
+/// `EraseModule ModuleName`.
+fn erase_module(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let module = ctx.string(&args[0])?;
+    ctx.resources.modules.request = Some(ModuleRequest::Erase { module });
+    Ok(None)
+}

@@ -1,0 +1,75 @@
+//! Modules loaded at run time across PP to Main (§1.17: a module loaded `\Dynamic` is
+//! unloaded by PP to Main; one loaded without it stays, its data initialised again like
+//! the task's own, §1.2.2 start-up table). A conformance program runs only one cycle, so
+//! this needs the API.
+
+use rapid_sema::SourceInput;
+use rapid_vm::{load, Exit, RecordingHost};
+
+const PROGRAM: &str = r#"MODULE t
+VAR iodev f;
+PERS num runs := 0;
+PROC main()
+  runs := runs + 1;
+  IF runs = 1 THEN
+    Open "HOME:/st.mod", f \Write;
+    Write f, "MODULE st";
+    Write f, "VAR num sv := 5; PERS num sp := 1;";
+    Write f, "PROC st_p() sv := sv + 1; sp := sp + 1;";
+    Write f, "TPWrite ""sv="" \\Num:=sv; TPWrite ""sp="" \\Num:=sp; ENDPROC";
+    Write f, "ENDMODULE";
+    Close f;
+    Open "HOME:/dy.mod", f \Write;
+    Write f, "MODULE dy";
+    Write f, "PROC dy_p() TPWrite ""dy""; ENDPROC";
+    Write f, "ENDMODULE";
+    Close f;
+    Load "HOME:/st.mod";
+    Load \Dynamic, "HOME:/dy.mod";
+  ENDIF
+  %"st_p"%;
+  TPWrite "dy " \Bool:=ModExist("dy");
+  TPWrite "st " \Bool:=ModExist("st");
+ENDPROC
+ENDMODULE
+"#;
+
+#[test]
+fn pp_to_main_unloads_dynamic_modules_and_reinitialises_static_ones() {
+    let root = std::env::temp_dir().join(format!("rapid-dynload-{}", std::process::id()));
+    let loaded = match load(&[SourceInput::from_text("t.mod", PROGRAM)], "main") {
+        Ok(loaded) => loaded,
+        Err(err) => panic!("load failed: {err:?}"),
+    };
+    let (mut machine, entry) = (loaded.vm, loaded.entry);
+    machine.resources_mut().files.set_root(&root);
+    let mut host = RecordingHost::default();
+    assert_eq!(machine.run(&mut host, 100_000), Exit::Done);
+    machine.pp_to_main(&mut host, entry).expect("pp to main");
+    assert_eq!(machine.run(&mut host, 100_000), Exit::Done);
+    let _ = std::fs::remove_dir_all(&root);
+    let expected = ["sv=6", "sp=2", "dy TRUE", "st TRUE", "sv=6", "sp=3", "dy FALSE", "st TRUE"];
+    assert_eq!(host.lines, expected);
+}
+
+#[test]
+fn a_module_that_does_not_check_is_refused_with_its_diagnostics() {
+    let root = std::env::temp_dir().join(format!("rapid-dynload-syntax-{}", std::process::id()));
+    let module = root.join("HOME");
+    std::fs::create_dir_all(&module).expect("a temporary folder");
+    std::fs::write(module.join("bad.mod"), "MODULE bad\nPROC bad_p()\n  x := ;\nENDPROC\nENDMODULE\n")
+        .expect("a module file");
+    let program = "MODULE t\nPROC main()\n  Load \"HOME:/bad.mod\";\nENDPROC\nENDMODULE\n";
+    let loaded = match load(&[SourceInput::from_text("t.mod", program)], "main") {
+        Ok(loaded) => loaded,
+        Err(err) => panic!("load failed: {err:?}"),
+    };
+    let mut machine = loaded.vm;
+    machine.resources_mut().files.set_root(&root);
+    let mut host = RecordingHost::default();
+    let exit = machine.run(&mut host, 100_000);
+    let _ = std::fs::remove_dir_all(&root);
+    let Exit::Unhandled(unhandled) = exit else { panic!("expected ERR_SYNTAX, got {exit:?}") };
+    assert_eq!(unhandled.error.name, "ERR_SYNTAX");
+    assert!(unhandled.error.message.contains("HOME:/bad.mod:3:"), "{}", unhandled.error.message);
+}
