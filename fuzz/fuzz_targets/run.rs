@@ -10,6 +10,9 @@ use rapid_vm::{load, Exit, RecordingHost};
 fuzz_target!(|data: &[u8]| {
     let files = vec![SourceInput::from_bytes("a.mod", data.to_vec())];
     let Ok(mut loaded) = load(&files, "main") else { return };
+    // No network and no file root: a fuzzed program must not wait on real sockets
+    // or write files (file built-ins raise their errors without a root).
+    loaded.vm.resources_mut().sockets.set_offline(true);
     let mut host = RecordingHost::default();
     // 20,000 steps: enough to reach deep into a program, bounded even when each step
     // copies a large array.

@@ -73,3 +73,31 @@ fn a_module_that_does_not_check_is_refused_with_its_diagnostics() {
     assert_eq!(unhandled.error.name, "ERR_SYNTAX");
     assert!(unhandled.error.message.contains("HOME:/bad.mod:3:"), "{}", unhandled.error.message);
 }
+
+#[test]
+fn a_static_call_into_an_erased_module_raises_err_refunkprc() {
+    // EraseModule removes one of the task's own modules; a call compiled against it
+    // then reaches nothing, which the controller reports as an unknown procedure.
+    let main = r#"MODULE m
+PROC main()
+  helper;
+  EraseModule "h";
+  helper;
+  TPWrite "not reached";
+ERROR
+  IF ERRNO = ERR_REFUNKPRC TPWrite "ERR_REFUNKPRC";
+  RETURN;
+ENDPROC
+ENDMODULE
+"#;
+    let helper = "MODULE h\nPROC helper()\n  TPWrite \"helper\";\nENDPROC\nENDMODULE\n";
+    let files = [SourceInput::from_text("m.mod", main), SourceInput::from_text("h.mod", helper)];
+    let loaded = match load(&files, "main") {
+        Ok(loaded) => loaded,
+        Err(err) => panic!("load failed: {err:?}"),
+    };
+    let mut machine = loaded.vm;
+    let mut host = RecordingHost::default();
+    assert_eq!(machine.run(&mut host, 100_000), Exit::Done);
+    assert_eq!(host.lines, ["helper", "ERR_REFUNKPRC"]);
+}

@@ -42,7 +42,9 @@ impl Vm {
         if let Callee::Routine(idx) = site.callee {
             if site.n_pushed as usize == site.args.len() {
                 let Some(callee) = self.routines.get(idx as usize).cloned().flatten() else {
-                    return Err(RapidError::fatal("call to a routine that was not compiled"));
+                    // Its module was erased or unloaded (EraseModule, UnLoad) after this
+                    // call was compiled: the controller's unresolved-reference error.
+                    return Err(self.error(Err::RefUnknownProc, "the called routine's module is no longer loaded"));
                 };
                 return self.enter_in_place(callee, at);
             }
@@ -74,7 +76,9 @@ impl Vm {
             }
             Callee::Routine(idx) => {
                 let Some(callee) = self.routines.get(idx as usize).cloned().flatten() else {
-                    return Err(RapidError::fatal("call to a routine that was not compiled"));
+                    // Its module was erased or unloaded (EraseModule, UnLoad) after this
+                    // call was compiled: the controller's unresolved-reference error.
+                    return Err(self.error(Err::RefUnknownProc, "the called routine's module is no longer loaded"));
                 };
                 self.enter(callee, args)
             }

@@ -57,6 +57,9 @@ fn socket_create(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     // uncertain: the manual says the socket must not be in use; the error it raises
     // then is not documented (ERR_SOCK_UNSPEC here). A socket whose connection broke
     // may be created again.
+    if ctx.resources.sockets.is_offline() {
+        return Err(ctx.error(Err::SockUnspec, "this controller has no network (sockets are switched off)"));
+    }
     if ctx.resources.sockets.in_use(handle) {
         return Err(ctx.error(Err::SockUnspec, "the socket is already created (SocketClose it first)"));
     }

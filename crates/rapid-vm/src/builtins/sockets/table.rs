@@ -86,9 +86,20 @@ pub struct SocketState {
     entries: FxHashMap<u32, Endpoint>,
     /// Handles are never reused, so a stale `socketdev` never reaches a new socket.
     next_handle: u32,
+    /// No network for this task (fuzzing, sandboxed hosts): SocketCreate fails.
+    offline: bool,
 }
 
 impl SocketState {
+    /// Takes the network away from (or gives it back to) the task.
+    pub fn set_offline(&mut self, offline: bool) {
+        self.offline = offline;
+    }
+
+    pub fn is_offline(&self) -> bool {
+        self.offline
+    }
+
     /// Closes every socket.
     pub fn close_all(&mut self) {
         self.entries.clear();
