@@ -16,6 +16,7 @@ mod math;
 mod matrix;
 pub mod modules;
 mod pendant;
+mod random;
 mod rawbytes;
 pub mod sockets;
 pub mod spy;
@@ -99,6 +100,8 @@ pub struct Resources {
     /// The execution log SpyStart opened (ended at PP to Main, as on the controller).
     pub spy: spy::SpyState,
     pub modules: modules::ModuleState,
+    /// Rand's generator (kept across PP to Main: the sequence goes on).
+    pub random: random::RandomState,
 }
 
 impl Resources {
@@ -219,6 +222,7 @@ static FAMILIES: &[Entries] = &[
     symsearch::ENTRIES,
     dnheader::ENTRIES,
     modules::ENTRIES,
+    random::ENTRIES,
 ];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =

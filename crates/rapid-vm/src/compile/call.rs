@@ -41,6 +41,24 @@ impl RoutineCompiler<'_> {
                 if info.display.eq_ignore_ascii_case("CallByVar") {
                     return self.call_by_var(arena, args);
                 }
+                if info.display.eq_ignore_ascii_case("Break") && !self.loops.is_empty() {
+                    // RW 6.15 (manual §1.5): Break ends the innermost enclosing loop.
+                    // Outside a loop it keeps its older meaning, a debugging stop.
+                    let jump = self.code.emit(Instr::Jump(0));
+                    if let Some(jumps) = self.loops.last_mut() {
+                        jumps.breaks.push(jump);
+                    }
+                    return Ok(());
+                }
+                if info.display.eq_ignore_ascii_case("Continue") {
+                    // Manual §1.5: skip the rest of the loop, start its next iteration.
+                    let Some(jumps) = self.loops.last_mut() else {
+                        return Err(self.error(span, "Continue is only allowed inside a FOR or WHILE loop"));
+                    };
+                    let jump = self.code.emit(Instr::Jump(0));
+                    jumps.continues.push(jump);
+                    return Ok(());
+                }
                 if info.display.eq_ignore_ascii_case("Type") {
                     return self.type_name(arena, args, span);
                 }

@@ -295,6 +295,16 @@ pub(crate) struct RoutineCompiler<'p> {
     pub(crate) stmt_depth: u16,
     /// Jumps to the end of the construct being compiled (patched when it ends).
     pub(crate) exits: Vec<u32>,
+    /// The FOR and WHILE loops around the statement being compiled, innermost last
+    /// (Break and Continue jump out of or back into the innermost one).
+    pub(crate) loops: Vec<LoopJumps>,
+}
+
+/// A loop's Break and Continue jumps, patched when the loop's code is complete.
+#[derive(Debug, Default)]
+pub(crate) struct LoopJumps {
+    pub(crate) breaks: Vec<u32>,
+    pub(crate) continues: Vec<u32>,
 }
 
 impl<'p> RoutineCompiler<'p> {
@@ -307,6 +317,7 @@ impl<'p> RoutineCompiler<'p> {
             code: Code { file, ..Code::default() },
             locals: FxHashMap::default(),
             loop_vars: Vec::new(),
+            loops: Vec::new(),
             labels: FxHashMap::default(),
             gotos: Vec::new(),
             n_locals: 0,

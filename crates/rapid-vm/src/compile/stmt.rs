@@ -95,19 +95,23 @@ impl RoutineCompiler<'_> {
                 self.code.emit(Instr::ForInit { var: local.slot, has_step: step.is_some() });
                 let check = self.code.emit(Instr::ForCheck { var: local.slot, exit: 0 });
                 self.loop_vars.push((var.sym, local));
+                self.loops.push(super::LoopJumps::default());
                 self.stmt_list(arena, body, errors);
                 self.loop_vars.pop();
-                self.code.emit(Instr::ForNext { var: local.slot, check });
+                let next = self.code.emit(Instr::ForNext { var: local.slot, check });
                 let exit = self.code.here();
                 self.code.patch(check, exit);
+                self.end_loop(next, exit);
             }
             StmtKind::While { cond, body } => {
                 let top = self.code.here();
                 let exit = self.condition(arena, *cond)?;
+                self.loops.push(super::LoopJumps::default());
                 self.stmt_list(arena, body, errors);
                 self.code.emit(Instr::Jump(top));
                 let here = self.code.here();
                 self.patch_all(&exit, here);
+                self.end_loop(top, here);
             }
             StmtKind::Test { subject, cases, default } => {
                 let subject_ty = self.static_type(arena, *subject);
@@ -201,6 +205,14 @@ impl RoutineCompiler<'_> {
             }
             None => vec![jump],
         })
+    }
+
+    /// Points the innermost loop's Continue jumps at `next` (where the next iteration
+    /// starts: FOR's step, WHILE's condition) and its Break jumps at `exit`.
+    fn end_loop(&mut self, next: u32, exit: u32) {
+        let Some(jumps) = self.loops.pop() else { return };
+        self.patch_all(&jumps.continues, next);
+        self.patch_all(&jumps.breaks, exit);
     }
 
     fn patch_all(&mut self, jumps: &[u32], target: u32) {
