@@ -223,6 +223,7 @@ static FAMILIES: &[Entries] = &[
     dnheader::ENTRIES,
     modules::ENTRIES,
     random::ENTRIES,
+    spy::ENTRIES,
 ];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =

@@ -3,10 +3,9 @@
 //! instruction as written, the time it was entered, how it ended and the time it was
 //! left (milliseconds since SpyStart, on the controller's clock).
 //!
-//! NOT REGISTERED: the lines need a hook in the executor (the lead's `exec/**`), which
-//! calls [`SpyState::record`] once per executed statement; until it exists SpyStart and
-//! SpyStop stay refused at load. Everything else (the file, its layout, PP to Main
-//! ending the log) is here and tested.
+//! The executor (`exec/spy.rs`) runs instructions one at a time while the log is open
+//! and calls [`SpyState::record`] once per executed statement; here are the file, its
+//! layout and PP to Main ending the log.
 //!
 //! ```text
 //! TASK    INSTR                                    IN    CODE    OUT
@@ -160,3 +159,5 @@ mod tests {
         let _ = std::fs::remove_dir_all(&dir);
     }
 }
+
+pub(super) static ENTRIES: super::Entries = &[("SpyStart", spy_start), ("SpyStop", spy_stop)];

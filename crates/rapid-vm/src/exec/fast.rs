@@ -331,6 +331,12 @@ impl Vm {
                             if let Some(value) = result {
                                 self.storage.stack.push(value);
                             }
+                            if self.resources.spy.is_active() {
+                                // SpyStart: from the next instruction on, the log sees
+                                // every statement, which only the general path shows.
+                                self.frame_mut().pc = pc + 1;
+                                break Fast::Called(Ok(None));
+                            }
                         }
                         other => break Fast::Called(self.after_builtin(other)),
                     }

@@ -13,6 +13,7 @@ mod call;
 mod fast;
 mod kernel;
 pub mod modules;
+mod spy;
 pub mod storage;
 
 use std::rc::Rc;
@@ -154,6 +155,8 @@ pub struct Vm {
     resources: crate::builtins::Resources,
     /// The program's sources and the modules loaded at run time (Load, UnLoad).
     modules: modules::TaskModules,
+    /// Statements the execution log (SpyStart) has seen start and not yet end.
+    spy_open: Vec<spy::SpyOpen>,
 }
 
 impl Vm {
@@ -190,6 +193,7 @@ impl Vm {
                 .map_or(0.0, |d| d.as_secs_f64()),
             resources: crate::builtins::Resources::default(),
             modules: modules::TaskModules::default(),
+            spy_open: Vec::new(),
         }
     }
 
@@ -304,11 +308,20 @@ impl Vm {
             if self.frames.is_empty() {
                 return Exit::Done;
             }
-            let outcome = match self.run_fast(&mut remaining, host) {
-                fast::Fast::Budget => break,
-                // The instruction at pc needs the general path.
-                fast::Fast::Step => self.step(host),
-                fast::Fast::Called(outcome) => outcome,
+            let outcome = if self.resources.spy.is_active() {
+                // The execution log sees every statement: one instruction at a time.
+                remaining -= 1;
+                self.steps += 1;
+                let outcome = self.spy_step(host);
+                self.spy_forget_if_stopped();
+                outcome
+            } else {
+                match self.run_fast(&mut remaining, host) {
+                    fast::Fast::Budget => break,
+                    // The instruction at pc needs the general path.
+                    fast::Fast::Step => self.step(host),
+                    fast::Fast::Called(outcome) => outcome,
+                }
             };
             let exit = match outcome {
                 Ok(exit) => exit,

@@ -219,6 +219,14 @@ impl TaskModules {
         self.base.iter().cloned().chain(self.units.iter().map(|u| u.source.clone())).collect()
     }
 
+    /// The text of source file `file` (the task's files, then loaded modules).
+    pub(super) fn source_text(&self, file: usize) -> Option<&str> {
+        match self.base.get(file) {
+            Some(input) => Some(&input.text),
+            None => self.units.get(file - self.base.len()).map(|u| u.source.text.as_str()),
+        }
+    }
+
     /// Whether a module of this name is loaded (any letter case).
     fn is_loaded(&self, name: &str) -> bool {
         self.base_modules.iter().any(|m| m.live && m.name.eq_ignore_ascii_case(name))
