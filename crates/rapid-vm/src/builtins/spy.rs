@@ -123,6 +123,8 @@ pub fn spy_stop(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     Ok(None)
 }
 
+pub(super) static ENTRIES: super::Entries = &[("SpyStart", spy_start), ("SpyStop", spy_stop)];
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -159,5 +161,3 @@ mod tests {
         let _ = std::fs::remove_dir_all(&dir);
     }
 }
-
-pub(super) static ENTRIES: super::Entries = &[("SpyStart", spy_start), ("SpyStop", spy_stop)];

@@ -38,7 +38,7 @@ impl Vm {
             Ok(Some(_)) => self.spy_close_above(0),
             Ok(None) => {}
         }
-        Ok(result?)
+        result
     }
 
     /// The source text of the statement that starts at the top frame's pc, if one does.
