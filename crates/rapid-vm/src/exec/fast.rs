@@ -485,13 +485,7 @@ pub(super) fn fast_num_op(op: rapid_syntax::ast::BinaryOp, a: f32, b: f32) -> Op
             if y == 0 || x as f32 != a || y as f32 != b || x == i32::MIN {
                 return None;
             }
-            // The quotient in f64 rather than with an integer division (about half
-            // the latency): for |x|, |y| < 2^31 the truncated f64 quotient is the exact
-            // integer quotient (k - 1/y needs at most 32 significant bits), and
-            // x - q*y is exact, with the dividend's sign.
-            let (x, y) = (f64::from(x), f64::from(y));
-            let q = (x / y) as i64 as f64;
-            FastResult::Num(if op == B::Mod { (x - q * y) as f32 } else { q as f32 })
+            FastResult::Num(if op == B::Mod { (x % y) as f32 } else { (x / y) as f32 })
         }
         B::Lt => FastResult::Bool(a < b),
         B::Le => FastResult::Bool(a <= b),
