@@ -7,6 +7,9 @@ pub trait Host {
     fn tp_write(&mut self, line: &str);
     /// TPErase.
     fn tp_erase(&mut self) {}
+    /// TPShow: bring pendant window `window` (a tpnum value) to the front. A pendant
+    /// with one window (stdout) has nothing to switch.
+    fn tp_show(&mut self, _window: i32) {}
     /// The operator's next answer to a pendant dialog (TPReadNum, TPReadFK, UI...),
     /// or `None` when no operator answers.
     fn tp_answer(&mut self, _prompt: &str) -> Option<String> {
@@ -20,6 +23,8 @@ pub struct RecordingHost {
     pub lines: Vec<String>,
     /// Answers handed out in order.
     pub answers: std::collections::VecDeque<String>,
+    /// The windows TPShow brought to the front, in order.
+    pub shown: Vec<i32>,
 }
 
 impl Host for RecordingHost {
@@ -29,5 +34,9 @@ impl Host for RecordingHost {
 
     fn tp_answer(&mut self, _prompt: &str) -> Option<String> {
         self.answers.pop_front()
+    }
+
+    fn tp_show(&mut self, window: i32) {
+        self.shown.push(window);
     }
 }

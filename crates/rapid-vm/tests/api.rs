@@ -270,3 +270,13 @@ ENDMODULE";
     assert_eq!(log.last().map(|e| (e.title.as_str(), e.seq)), Some(("n1500", 1499)), "the newest is kept");
     assert!(log.windows(2).all(|w| w[1].seq == w[0].seq + 1), "consecutive, oldest dropped first");
 }
+
+#[test]
+fn tpshow_reaches_the_host_and_refuses_unknown_windows() {
+    let mut vm = vm("MODULE m\nPROC main()\n  TPShow TP_SCREENVIEWER;\n  TPShow TP_LATEST;\n  TPShow 7;\nERROR\n  IF ERRNO = ERR_ARGVALERR TPWrite \"ERR_ARGVALERR\";\n  RETURN;\nENDPROC\nENDMODULE\n");
+    let mut host = RecordingHost::default();
+    assert_eq!(vm.run(&mut host, 1_000), Exit::Done);
+    // TP_SCREENVIEWER and TP_LATEST as the catalogue numbers them.
+    assert_eq!(host.shown, [3, 2]);
+    assert_eq!(host.lines, ["ERR_ARGVALERR"]);
+}

@@ -233,6 +233,7 @@ static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =
 static CORE: Entries = &[
     ("TPWrite", pendant::tp_write),
     ("TPErase", pendant::tp_erase),
+    ("TPShow", pendant::tp_show),
     ("ClearRawBytes", rawbytes::clear_raw_bytes),
     ("CopyRawBytes", rawbytes::copy_raw_bytes),
     ("PackRawBytes", rawbytes::pack_raw_bytes),

@@ -67,3 +67,17 @@ pub(super) fn err_write(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
     ctx.events.push(event);
     Ok(None)
 }
+
+/// `TPShow Window`: brings a pendant window to the front (TP_PROGRAM, TP_LATEST,
+/// TP_SCREENVIEWER). The host decides what that means; `rapid run`'s pendant is
+/// stdout, with one window.
+// uncertain: the manual names no error for a Window that is no tpnum value; we raise
+// ERR_ARGVALERR rather than ignore it.
+pub(super) fn tp_show(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
+    let window = ctx.num(&args[0])?;
+    if !(1.0..=3.0).contains(&window) || window.fract() != 0.0 {
+        return Err(ctx.error(crate::errnames::Err::ArgValue, format!("{window} is not a pendant window (tpnum)")));
+    }
+    ctx.host.tp_show(window as i32);
+    Ok(None)
+}
