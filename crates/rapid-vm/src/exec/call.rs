@@ -218,6 +218,7 @@ impl Vm {
     /// Leaves the top frame; the caller continues after its call.
     pub(super) fn return_from(&mut self, value: Option<Value>) -> Option<Exit> {
         let Some(frame) = self.frames.pop() else { return Some(Exit::Done) };
+        self.recycle_places(frame.base as usize, frame.code.n_params as usize);
         self.storage.stack.truncate(frame.base as usize);
         if self.exiting {
             return self.continue_exit();

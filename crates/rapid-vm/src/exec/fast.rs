@@ -277,6 +277,19 @@ impl Vm {
                     self.frame_mut().pc = pc;
                     break Fast::Called(Ok(self.return_from(Some(value))));
                 }
+                Instr::PlaceLocal(slot) => {
+                    let place = match &stack[base + slot as usize] {
+                        Value::Ref(place) if place.path.is_empty() => place.root,
+                        Value::Ref(_) | Value::Absent => break Fast::Step,
+                        _ => Root::Stack((base + slot as usize) as u32),
+                    };
+                    let place = self.pooled_place(place, &[]);
+                    self.storage.stack.push(Value::Ref(place));
+                }
+                Instr::PlaceGlobal(idx) => {
+                    let place = self.pooled_place(Root::Global(idx), &[]);
+                    self.storage.stack.push(Value::Ref(place));
+                }
                 Instr::KernelStore { kernel, skip } => {
                     let kernel = &code.kernels[kernel as usize];
                     let globals = &mut self.storage.globals;

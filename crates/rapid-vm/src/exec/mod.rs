@@ -157,6 +157,9 @@ pub struct Vm {
     modules: modules::TaskModules,
     /// Statements the execution log (SpyStart) has seen start and not yet end.
     spy_open: Vec<spy::SpyOpen>,
+    /// Boxes of references passed to VAR/INOUT/PERS parameters, returned when their
+    /// routine returns: a call with such arguments allocates nothing.
+    place_pool: Vec<Box<Place>>,
 }
 
 impl Vm {
@@ -194,6 +197,7 @@ impl Vm {
             resources: crate::builtins::Resources::default(),
             modules: modules::TaskModules::default(),
             spy_open: Vec::new(),
+            place_pool: Vec::new(),
         }
     }
 
@@ -370,6 +374,35 @@ impl Vm {
         }
     }
 
+    /// A boxed place, from the pool when one is free.
+    pub(super) fn pooled_place(&mut self, root: Root, path: &[PathStep]) -> Box<Place> {
+        match self.place_pool.pop() {
+            Some(mut place) => {
+                place.root = root;
+                place.path.clear();
+                place.path.extend_from_slice(path);
+                place
+            }
+            None => Box::new(Place { root, path: path.to_vec() }),
+        }
+    }
+
+    /// Takes back the reference boxes in the parameter slots of a returning frame.
+    pub(super) fn recycle_places(&mut self, base: usize, n_params: usize) {
+        const POOL_LIMIT: usize = 256;
+        let end = (base + n_params).min(self.storage.stack.len());
+        for at in base..end {
+            if self.place_pool.len() >= POOL_LIMIT {
+                return;
+            }
+            if matches!(self.storage.stack[at], Value::Ref(_)) {
+                if let Value::Ref(place) = std::mem::replace(&mut self.storage.stack[at], Value::Absent) {
+                    self.place_pool.push(place);
+                }
+            }
+        }
+    }
+
     fn frame(&self) -> &Frame {
         self.frames.last().expect("a running frame")
     }
@@ -424,15 +457,17 @@ impl Vm {
                 self.storage.set(&place, value).map_err(|f| self.fault(f))?;
             }
             Instr::PlaceLocal(slot) => {
-                let place = match &self.storage.stack[(base + slot) as usize] {
-                    Value::Ref(place) => (**place).clone(),
+                let (root, path) = match &self.storage.stack[(base + slot) as usize] {
+                    Value::Ref(place) => (place.root, place.path.clone()),
                     Value::Absent => return Err(self.error(Err::NotPresent, "an optional parameter was not passed")),
-                    _ => Place { root: Root::Stack(base + slot), path: Vec::new() },
+                    _ => (Root::Stack(base + slot), Vec::new()),
                 };
-                self.push(Value::Ref(Box::new(place)));
+                let place = self.pooled_place(root, &path);
+                self.push(Value::Ref(place));
             }
             Instr::PlaceGlobal(idx) => {
-                self.push(Value::Ref(Box::new(Place { root: Root::Global(idx), path: Vec::new() })))
+                let place = self.pooled_place(Root::Global(idx), &[]);
+                self.push(Value::Ref(place));
             }
             Instr::PlaceField(field) => {
                 if let Some(Value::Ref(place)) = self.storage.stack.last_mut() {
