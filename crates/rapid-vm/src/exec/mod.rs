@@ -158,7 +158,9 @@ pub struct Vm {
     /// Statements the execution log (SpyStart) has seen start and not yet end.
     spy_open: Vec<spy::SpyOpen>,
     /// Boxes of references passed to VAR/INOUT/PERS parameters, returned when their
-    /// routine returns: a call with such arguments allocates nothing.
+    /// routine returns: a call with such arguments allocates nothing. Boxes, not
+    /// places, because `Value::Ref` holds a box and is handed one as it is.
+    #[allow(clippy::vec_box)]
     place_pool: Vec<Box<Place>>,
 }
 
