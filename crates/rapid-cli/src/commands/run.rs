@@ -74,7 +74,12 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
             }
             Exit::Unhandled(unhandled) => {
                 host.flush();
-                let (path, line, column) = location(&inputs.modules, unhandled.file, unhandled.span.start);
+                // A module loaded at run time is not among the inputs; the VM knows it.
+                let loaded_module = loaded.vm.program_source(unhandled.file);
+                let (path, line, column) = match inputs.modules.get(unhandled.file).or(loaded_module) {
+                    Some(input) => location(std::slice::from_ref(input), 0, unhandled.span.start),
+                    None => location(&[], 0, 0),
+                };
                 eprintln!("error: {}", unhandled.error);
                 eprintln!("  in routine {} at {path}:{line}:{column}", unhandled.routine);
                 eprintln!("  the program stopped (no ERROR handler took the error)");

@@ -219,12 +219,17 @@ impl TaskModules {
         self.base.iter().cloned().chain(self.units.iter().map(|u| u.source.clone())).collect()
     }
 
-    /// The text of source file `file` (the task's files, then loaded modules).
-    pub(super) fn source_text(&self, file: usize) -> Option<&str> {
+    /// Source file `file` (the task's files, then loaded modules).
+    pub(super) fn source(&self, file: usize) -> Option<&SourceInput> {
         match self.base.get(file) {
-            Some(input) => Some(&input.text),
-            None => self.units.get(file - self.base.len()).map(|u| u.source.text.as_str()),
+            Some(input) => Some(input),
+            None => self.units.get(file - self.base.len()).map(|u| &u.source),
         }
+    }
+
+    /// The text of source file `file`.
+    pub(super) fn source_text(&self, file: usize) -> Option<&str> {
+        self.source(file).map(|input| input.text.as_str())
     }
 
     /// Whether a module of this name is loaded (any letter case).
@@ -235,6 +240,12 @@ impl TaskModules {
 }
 
 impl Vm {
+    /// Source file `file` of the running program: one it started with or a module it
+    /// loaded since (for error locations).
+    pub fn program_source(&self, file: usize) -> Option<&SourceInput> {
+        self.modules.source(file)
+    }
+
     /// The files the task was started with (for linking modules loaded at run time).
     pub fn set_program_sources(&mut self, files: Vec<SourceInput>) {
         self.modules = TaskModules::new(files);
