@@ -268,6 +268,10 @@ impl Vm {
                     pc = target;
                     continue;
                 }
+                Instr::FellOffEnd => {
+                    self.frame_mut().pc = pc;
+                    break Fast::Called(self.fell_off_end());
+                }
                 Instr::Return => {
                     self.frame_mut().pc = pc;
                     break Fast::Called(Ok(self.return_from(None)));
