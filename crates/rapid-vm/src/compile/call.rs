@@ -75,7 +75,7 @@ impl RoutineCompiler<'_> {
             }
         };
         let _ = in_expr;
-        let bound = bind_args(&info, arena.args(args));
+        let bound = bind_args(&info, arena.args(args), |id, param| self.arg_fits(arena, id, param));
         let mut specs = Vec::with_capacity(info.params.len());
         let mut n_pushed = 0u16;
         for (param, arg) in info.params.iter().zip(&bound) {
@@ -108,7 +108,7 @@ impl RoutineCompiler<'_> {
         let Some(id) = builtins::lookup(&info.display) else {
             return Err(self.unsupported(span, "the built-in `ArgName`"));
         };
-        let bound = bind_args(info, arena.args(args));
+        let bound = bind_args(info, arena.args(args), |id, param| self.arg_fits(arena, id, param));
         let mut specs = Vec::with_capacity(info.params.len());
         let mut n_pushed = 0u16;
         for (idx, (param, arg)) in info.params.iter().zip(&bound).enumerate() {
@@ -237,6 +237,16 @@ impl RoutineCompiler<'_> {
         Ok(())
     }
 
+    /// Whether an argument expression is known at compile time to have the type and
+    /// the number of dimensions of `param` (aliases followed on both sides).
+    fn arg_fits(&self, arena: &Arena, id: rapid_syntax::ast::ExprId, param: &ParamInfo) -> bool {
+        let types = &self.prog.types;
+        self.static_type(arena, id).is_some_and(|(ty, dims)| {
+            let rank = dims.iter().filter(|&&d| d > 0).count() as u8;
+            types.canonical(ty) == types.canonical(param.ty) && rank == param.rank
+        })
+    }
+
     /// `Present(p)`: whether optional parameter `p` was passed.
     fn present(&mut self, arena: &Arena, args: ArgList, span: Span) -> Result<(), CompileError> {
         let value = arena.args(args).first().and_then(|a| a.value);
@@ -257,7 +267,7 @@ impl RoutineCompiler<'_> {
     /// evaluated again every poll (0.1 s of controller time by default); past \MaxTime
     /// ERR_WAIT_MAXTIME, or with \TimeFlag the flag is set TRUE and execution goes on.
     fn wait_until(&mut self, arena: &Arena, info: &RoutineInfo, args: ArgList, span: Span) -> Result<(), CompileError> {
-        let bound = bind_args(info, arena.args(args));
+        let bound = bind_args(info, arena.args(args), |id, param| self.arg_fits(arena, id, param));
         let arg_of = |name: &str| {
             info.params
                 .iter()
@@ -375,7 +385,14 @@ impl RoutineCompiler<'_> {
 }
 
 /// Which argument (if any) each parameter gets, in parameter order.
-fn bind_args<'a>(info: &RoutineInfo, args: &'a [Arg]) -> Vec<Option<&'a Arg>> {
+/// Binds arguments to parameters. A positional argument for a required group of
+/// alternatives (`num Value | dnum Dvalue`) takes the alternative of its own type, as
+/// the checker matched it; when its type is not known here, the first.
+fn bind_args<'a>(
+    info: &RoutineInfo,
+    args: &'a [Arg],
+    arg_fits: impl Fn(rapid_syntax::ast::ExprId, &ParamInfo) -> bool,
+) -> Vec<Option<&'a Arg>> {
     let params = &info.params;
     let mut bound: Vec<Option<&Arg>> = vec![None; params.len()];
     let mut cursor_group = 0usize;
@@ -391,7 +408,11 @@ fn bind_args<'a>(info: &RoutineInfo, args: &'a [Arg]) -> Vec<Option<&'a Arg>> {
                     !params[start].optional && (start..end).all(|p| bound[p].is_none())
                 };
                 let group = (cursor_group..info.groups.len()).find(free).or_else(|| (0..info.groups.len()).find(free));
-                group.map(|g| info.groups[g].0)
+                group.map(|g| {
+                    let (start, end) = info.groups[g];
+                    let fits = |p: &usize| arg.value.is_some_and(|id| arg_fits(id, &params[*p]));
+                    (start..end).find(fits).unwrap_or(start)
+                })
             }
         };
         let Some(idx) = idx else { continue };

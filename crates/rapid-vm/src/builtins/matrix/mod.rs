@@ -62,8 +62,8 @@ fn elementwise(ctx: &mut Ctx<'_>, args: &[Value], op: fn(f64, f64) -> f64) -> Re
 /// block of A has columns; all of B's columns are used), or C := Scalar * A.
 fn matrix_mult(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let a = read_matrix(ctx, &args[0], args.get(1), args.get(2), "A")?;
-    // The compiler binds a positional argument to the first of `B | Scalar`, so tell the
-    // two apart by the value, whichever slot holds it.
+    // B and Scalar are alternatives: whichever was passed (the compiler binds a
+    // positional argument by its type and rank; a value of unknown shape goes to B).
     let operand = if super::present(args.get(4)) { &args[4] } else { &args[3] };
     let c = match ctx.value(operand)? {
         Value::Array(b) => {
