@@ -87,4 +87,6 @@ errors! {
     LoadNoInUse = "ERR_LOADNO_INUSE",
     LoadNoNoUse = "ERR_LOADNO_NOUSE",
     UnknownLoad = "ERR_UNKPROC",
+    // I/O signals (§1.9).
+    NoAliasIoDef = "ERR_NO_ALIASIO_DEF",
 }

@@ -16,6 +16,9 @@ impl RoutineCompiler<'_> {
     /// Emits code that pushes the value of `id`.
     pub(crate) fn expr(&mut self, arena: &Arena, id: ExprId, expect: Expected) -> Result<(), CompileError> {
         let expr = *arena.expr(id);
+        if matches!(expr.kind, ExprKind::Name(_) | ExprKind::Index { .. }) && self.is_signal_data(arena, id) {
+            return self.signal_read(arena, id);
+        }
         match expr.kind {
             ExprKind::Num => {
                 let value = num_value(expr.span.text(self.text)).unwrap_or(0.0);
@@ -81,6 +84,39 @@ impl RoutineCompiler<'_> {
                 self.code.emit(Instr::Placeholder);
             }
         }
+        Ok(())
+    }
+
+    /// Whether `id` names data of a signal type (signaldi, signaldo, …).
+    fn is_signal_data(&self, arena: &Arena, id: ExprId) -> bool {
+        self.static_type(arena, id)
+            .is_some_and(|(ty, _)| self.prog.types.class(ty) == rapid_sema::types::ValueClass::SemiValue)
+    }
+
+    /// Reading a signal. Signals declared in RAPID can only be connected by AliasIO,
+    /// which `rapid run` does not run yet, so reading one raises ERR_NO_ALIASIO_DEF as
+    /// on the controller (manual §1.9). Signals of the I/O configuration are refused.
+    fn signal_read(&mut self, arena: &Arena, id: ExprId) -> Result<(), CompileError> {
+        let span = arena.expr(id).span;
+        let mut root = id;
+        while let ExprKind::Index { base, .. } = arena.expr(root).kind {
+            root = base;
+        }
+        let declared_in_rapid = match arena.expr(root).kind {
+            ExprKind::Name(sym) => match self.resolve(sym) {
+                Some(Resolved::Global(idx)) => {
+                    !matches!(self.prog.datas[idx as usize].origin, rapid_sema::symbols::DeclOrigin::Builtin(_))
+                }
+                _ => true,
+            },
+            _ => true,
+        };
+        if !declared_in_rapid {
+            return Err(self.unsupported(span, "reading signals of the I/O configuration (issue 5)"));
+        }
+        let name = span.text(self.text).to_string();
+        let idx = self.code.constant(Value::Str(name.as_str().into()));
+        self.code.emit(Instr::SignalNotConnected(idx));
         Ok(())
     }
 

@@ -627,6 +627,16 @@ impl Vm {
                 self.frame_mut().pc = next;
                 return Ok(Some(Exit::Wait(seconds.max(0.0))));
             }
+            Instr::SignalNotConnected(name) => {
+                let name = code.consts.get(name as usize).map_or(String::new(), |v| match v {
+                    Value::Str(s) => s.to_string(),
+                    _ => String::new(),
+                });
+                return Err(self.error(
+                    Err::NoAliasIoDef,
+                    format!("the signal variable `{name}` is not connected to an I/O signal (AliasIO)"),
+                ));
+            }
             Instr::RaiseWaitTimeout => {
                 return Err(
                     self.error(Err::WaitMaxTime, "WaitUntil: the condition did not become TRUE within \\MaxTime")
