@@ -23,10 +23,23 @@ impl Vm {
     /// jumps, loads/stores of nums, bools and strings and plain built-in calls,
     /// without leaving the loop.
     pub(super) fn run_fast(&mut self, remaining: &mut u64, host: &mut dyn crate::host::Host) -> Fast {
-        let (code, base, mut pc) = {
+        let (mut code, mut base, mut pc) = {
             let frame = self.frame();
             (frame.code.clone(), frame.base as usize, frame.pc)
         };
+        // After a call or a return the loop goes on in the frame now on top.
+        macro_rules! continue_in_top_frame {
+            ($outcome:expr) => {
+                match $outcome {
+                    Ok(None) if !self.frames.is_empty() && !self.exiting => {
+                        let frame = self.frame();
+                        (code, base, pc) = (frame.code.clone(), frame.base as usize, frame.pc);
+                        continue;
+                    }
+                    outcome => break Fast::Called(outcome),
+                }
+            };
+        }
         let budget = *remaining;
         let mut left = budget;
         let outcome = loop {
@@ -270,16 +283,16 @@ impl Vm {
                 }
                 Instr::FellOffEnd => {
                     self.frame_mut().pc = pc;
-                    break Fast::Called(self.fell_off_end());
+                    continue_in_top_frame!(self.fell_off_end());
                 }
                 Instr::Return => {
                     self.frame_mut().pc = pc;
-                    break Fast::Called(Ok(self.return_from(None)));
+                    continue_in_top_frame!(Ok(self.return_from(None)));
                 }
                 Instr::ReturnValue => {
                     let value = stack.pop().unwrap_or(Value::Absent);
                     self.frame_mut().pc = pc;
-                    break Fast::Called(Ok(self.return_from(Some(value))));
+                    continue_in_top_frame!(Ok(self.return_from(Some(value))));
                 }
                 Instr::PlaceLocal(slot) => {
                     let place = match &stack[base + slot as usize] {
@@ -319,7 +332,7 @@ impl Vm {
                     let Callee::Builtin(id) = site.callee else {
                         // A routine: entered here, and the loop starts again in its frame.
                         self.frame_mut().pc = pc;
-                        break Fast::Called(self.call(&code, site_index, host));
+                        continue_in_top_frame!(self.call(&code, site_index, host));
                     };
                     if site.args.iter().any(|a| matches!(a, ArgSpec::Conditional { .. })) {
                         break Fast::Step;
