@@ -154,6 +154,18 @@ impl Ctx<'_> {
         }
     }
 
+    /// A string argument without copying it.
+    pub fn str_arg(&self, arg: &Value) -> Result<std::rc::Rc<str>, RapidError> {
+        let value = match arg {
+            Value::Ref(place) => self.storage.get(place).map_err(|(e, m)| self.error(e, m))?,
+            other => other,
+        };
+        match value {
+            Value::Str(s) => Ok(s.clone()),
+            _ => Err(self.error(Err::ArgValue, "a string argument was expected")),
+        }
+    }
+
     pub fn string(&self, arg: &Value) -> Result<String, RapidError> {
         match self.value(arg)? {
             Value::Str(s) => Ok(s.to_string()),

@@ -4,7 +4,7 @@ use super::{present, Ctx};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::format::{dnum_to_str as dnum_text, num_to_str as num_text};
-use crate::value::Value;
+use crate::value::{Value, MAX_STRING_CHARS};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -14,6 +14,41 @@ fn chars(s: &str) -> Vec<char> {
 
 fn text(s: String) -> Option<Value> {
     Some(Value::Str(s.into()))
+}
+
+/// Runs `f` on the characters of `s`, kept on the stack: a RAPID string never holds
+/// more than 80 (longer text, which no RAPID value has, goes to the heap). The string
+/// functions run in tight loops; this keeps them from allocating.
+fn with_chars<R>(s: &str, f: impl FnOnce(&[char]) -> R) -> R {
+    let mut buf = ['\0'; MAX_STRING_CHARS];
+    let mut n = 0;
+    for c in s.chars() {
+        if n == buf.len() {
+            return f(&chars(s));
+        }
+        buf[n] = c;
+        n += 1;
+    }
+    f(&buf[..n])
+}
+
+/// A string value made of `chars` with one allocation (the value's own).
+fn text_of(chars: impl Iterator<Item = char>) -> Option<Value> {
+    // Latin-1 characters take at most 2 bytes in UTF-8.
+    let mut buf = [0u8; 2 * MAX_STRING_CHARS];
+    let mut len = 0;
+    let mut chars = chars.peekable();
+    while let Some(&c) = chars.peek() {
+        if len + c.len_utf8() > buf.len() {
+            // Longer than any RAPID string: build it on the heap.
+            let mut long = String::from(std::str::from_utf8(&buf[..len]).unwrap_or_default());
+            long.extend(chars);
+            return text(long);
+        }
+        len += c.encode_utf8(&mut buf[len..]).len();
+        chars.next();
+    }
+    Some(Value::Str(std::str::from_utf8(&buf[..len]).unwrap_or_default().into()))
 }
 
 /// A character position 1..=len+1 (len+1 only where the manual allows it).
@@ -34,44 +69,54 @@ pub(super) fn str_len(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 }
 
 pub(super) fn str_part(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let s = chars(&ctx.string(&args[0])?);
-    let start = position(ctx, &args[1], s.len(), true)?;
-    let len = ctx.num(&args[2])?;
-    if len.fract() != 0.0 || len < 0.0 || start - 1 + len as usize > s.len() {
-        return Err(ctx.error(Err::OutOfBounds, format!("the part of length {len} runs past the end")));
-    }
-    Ok(text(s[start - 1..start - 1 + len as usize].iter().collect()))
+    let source = ctx.str_arg(&args[0])?;
+    with_chars(&source, |s| {
+        let start = position(ctx, &args[1], s.len(), true)?;
+        let len = ctx.num(&args[2])?;
+        if len.fract() != 0.0 || len < 0.0 || start - 1 + len as usize > s.len() {
+            return Err(ctx.error(Err::OutOfBounds, format!("the part of length {len} runs past the end")));
+        }
+        Ok(text_of(s[start - 1..start - 1 + len as usize].iter().copied()))
+    })
 }
 
 pub(super) fn str_find(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let s = chars(&ctx.string(&args[0])?);
-    let start = position(ctx, &args[1], s.len(), true)?;
-    let set = chars(&ctx.string(&args[2])?);
+    let (source, set) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[2])?);
     let not_in_set = present(args.get(3));
-    let found = s.iter().enumerate().skip(start - 1).find(|(_, c)| set.contains(c) != not_in_set).map(|(i, _)| i + 1);
-    Ok(Some(Value::Num(found.unwrap_or(s.len() + 1) as f32)))
+    with_chars(&source, |s| {
+        let start = position(ctx, &args[1], s.len(), true)?;
+        let found = s.iter().enumerate().skip(start - 1).find(|(_, c)| set.contains(**c) != not_in_set);
+        Ok(Some(Value::Num(found.map_or(s.len() + 1, |(i, _)| i + 1) as f32)))
+    })
 }
 
 pub(super) fn str_match(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let s = chars(&ctx.string(&args[0])?);
-    let start = position(ctx, &args[1], s.len(), true)?;
-    let pattern = chars(&ctx.string(&args[2])?);
-    let found = (start - 1..s.len()).find(|&i| s[i..].starts_with(&pattern)).map(|i| i + 1);
-    Ok(Some(Value::Num(found.unwrap_or(s.len() + 1) as f32)))
+    let (source, pattern) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[2])?);
+    with_chars(&source, |s| {
+        let start = position(ctx, &args[1], s.len(), true)?;
+        with_chars(&pattern, |pattern| {
+            let found = (start - 1..s.len()).find(|&i| s[i..].starts_with(pattern)).map(|i| i + 1);
+            Ok(Some(Value::Num(found.unwrap_or(s.len() + 1) as f32)))
+        })
+    })
 }
 
 pub(super) fn str_memb(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let s = chars(&ctx.string(&args[0])?);
-    let pos = position(ctx, &args[1], s.len(), false)?;
-    let set = chars(&ctx.string(&args[2])?);
-    Ok(Some(Value::Bool(set.contains(&s[pos - 1]))))
+    let (source, set) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[2])?);
+    with_chars(&source, |s| {
+        let pos = position(ctx, &args[1], s.len(), false)?;
+        Ok(Some(Value::Bool(set.contains(s[pos - 1]))))
+    })
 }
 
 pub(super) fn str_map(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let s = ctx.string(&args[0])?;
-    let (from, to) = (chars(&ctx.string(&args[1])?), chars(&ctx.string(&args[2])?));
-    let mapped = s.chars().map(|c| from.iter().position(|&f| f == c).and_then(|i| to.get(i).copied()).unwrap_or(c));
-    Ok(text(mapped.collect()))
+    let (source, from, to) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[1])?, ctx.str_arg(&args[2])?);
+    with_chars(&from, |from| {
+        with_chars(&to, |to| {
+            let map = |c: char| from.iter().position(|&f| f == c).and_then(|i| to.get(i).copied()).unwrap_or(c);
+            Ok(text_of(source.chars().map(map)))
+        })
+    })
 }
 
 pub(super) fn num_to_str(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
