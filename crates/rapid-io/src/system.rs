@@ -130,6 +130,11 @@ impl IoSystem {
         self.ids.get(&name.to_ascii_lowercase()).copied()
     }
 
+    /// Every signal definition, indexed by id.
+    pub fn defs(&self) -> &[SignalDef] {
+        &self.defs
+    }
+
     pub fn def(&self, id: SignalId) -> Option<&SignalDef> {
         self.defs.get(id as usize)
     }
@@ -213,7 +218,7 @@ impl IoSystem {
     /// pulse or delayed change of the same signal not yet carried out (manual §2.10).
     pub fn set(&mut self, id: SignalId, value: f64, t: f64) -> Result<(), IoError> {
         self.advance(t);
-        let value = self.check_order(id, value, "a program write")?;
+        let value = self.check_order(id, value)?;
         self.cancel(id);
         self.change(id, value, Cause::Order);
         Ok(())
@@ -223,7 +228,7 @@ impl IoSystem {
     /// The value is checked now. The order replaces any earlier pending order of the signal.
     pub fn set_delayed(&mut self, id: SignalId, value: f64, t: f64, delay: f64) -> Result<(), IoError> {
         self.advance(t);
-        let value = self.check_order(id, value, "a delayed write")?;
+        let value = self.check_order(id, value)?;
         let kind = self.def_of(id)?.kind;
         if !matches!(kind, SignalKind::DO | SignalKind::GO) {
             return Err(self.wrong_kind(id, "a delayed write"));
@@ -312,7 +317,7 @@ impl IoSystem {
         Ok(())
     }
 
-    fn check_order(&self, id: SignalId, value: f64, _order: &'static str) -> Result<f64, IoError> {
+    fn check_order(&self, id: SignalId, value: f64) -> Result<f64, IoError> {
         self.check_writable(id)?;
         check_value(self.def_of(id)?, value)
     }
