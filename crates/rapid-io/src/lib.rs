@@ -11,7 +11,7 @@
 //!   cross-connections naming unknown or non-digital signals, and any loop through the
 //!   cross-connections ([`ConfigError`], with the position in the input list for file:line).
 //! - Signal ids ([`SignalId`]) are dense indices in definition order; the VM stores them.
-//! - Values are `f64`: digital 0/1, groups integers `0..=2^bits-1` (exact up to 32 bits),
+//! - Values are `f64`: digital 0/1 (a program order takes any value but 0 as 1), groups integers `0..=2^bits-1` (exact up to 32 bits),
 //!   analog the logical value. [`IoSystem::physical`] scales analog values to physical ones
 //!   along the line through (MinLog, MinPhys) and (MaxLog, MaxPhys); with a converter width,
 //!   a written analog value is rounded to the nearest of its `2^bits` steps.

@@ -317,9 +317,13 @@ impl IoSystem {
         Ok(())
     }
 
+    /// Checks a program order's value. SetDO takes any value other than 0 as 1 (the SetDO
+    /// manual's table of specified values), so a digital order never fails on its value.
     fn check_order(&self, id: SignalId, value: f64) -> Result<f64, IoError> {
         self.check_writable(id)?;
-        check_value(self.def_of(id)?, value)
+        let def = self.def_of(id)?;
+        let value = if def.kind == SignalKind::DO && value.is_finite() && value != 0.0 { 1.0 } else { value };
+        check_value(def, value)
     }
 
     /// Refuses a new pulse or delay when the limit is reached by other signals (the signal's

@@ -59,7 +59,8 @@ pub enum IoError {
     WrongKind { signal: String, kind: SignalKind, order: &'static str },
     /// The signal's access level does not let RAPID write it.
     AccessDenied { signal: String },
-    /// A digital value other than 0 or 1.
+    /// A digital value other than 0 or 1 from the hardware (a program order takes any value
+    /// other than 0 as 1).
     DigitalValue { signal: String, value: f64 },
     /// A group value that is not an integer in 0..=max.
     GroupLimit { signal: String, value: f64, max: f64 },
@@ -83,13 +84,14 @@ impl IoError {
             // uncertain: the manuals list no recoverable error for a write refused by the
             // access level; ERR_SIG_NOT_VALID ("the signal cannot be accessed") is the closest.
             IoError::AccessDenied { .. } => Some("ERR_SIG_NOT_VALID"),
-            // uncertain: a dionum other than 0/1, or a time out of range, is an argument error.
-            IoError::DigitalValue { .. } | IoError::BadTime { .. } => Some("ERR_ARGVALERR"),
+            // uncertain: a delay or pulse length out of range is an argument error.
+            IoError::BadTime { .. } => Some("ERR_ARGVALERR"),
             // uncertain: the limits of 10 pulsing / 20 delayed signals (§2.10) come with no named
             // error; the controller reports them in the event log and stops.
             IoError::TooManyPulses { .. } | IoError::TooManyDelayed { .. } => None,
-            // The checker already refuses these; reaching them is a bug of the caller.
-            IoError::UnknownSignal(_) | IoError::WrongKind { .. } => None,
+            // The checker already refuses these, and a bad digital value only comes from the
+            // hardware side (a stimulus): reaching them from RAPID is a bug of the caller.
+            IoError::UnknownSignal(_) | IoError::WrongKind { .. } | IoError::DigitalValue { .. } => None,
         }
     }
 }

@@ -13,12 +13,18 @@ fn range(lmin: f64, lmax: f64, pmin: f64, pmax: f64, bits: u8) -> AnalogRange {
 }
 
 #[test]
-fn digital_values_are_0_or_1() {
-    let mut io = system(vec![sig("do1", DO)], vec![]);
-    let err = io.set(0, 2.0, 0.0).unwrap_err();
+fn setdo_takes_any_value_but_0_as_1() {
+    let mut io = system(vec![sig("do1", DO), sig("di1", SignalKind::DI)], vec![]);
+    io.set(0, 2.0, 0.0).unwrap();
+    assert_eq!(val(&io, "do1"), 1.0);
+    io.set(0, 0.0, 0.0).unwrap();
+    io.set_delayed(0, -0.5, 0.0, 1.0).unwrap();
+    io.advance(1.0);
+    assert_eq!(val(&io, "do1"), 1.0);
+    // The hardware side is held to 0 and 1.
+    let err = io.set_input(1, 2.0, 2.0).unwrap_err();
     assert!(matches!(err, IoError::DigitalValue { .. }));
-    assert_eq!(err.rapid_error(), Some("ERR_ARGVALERR"));
-    assert_eq!(val(&io, "do1"), 0.0);
+    assert_eq!(val(&io, "di1"), 0.0);
 }
 
 #[test]
