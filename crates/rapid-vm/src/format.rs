@@ -163,11 +163,20 @@ pub fn num_to_str(value: f64, dec: i32, exp: bool) -> Result<String, FormatError
 /// The common case of an integer value in fixed notation, written without the exact
 /// digit machinery: the same text it would produce (`42` with 2 decimals: `42.00`).
 fn integer_fixed(value: f64, dec: usize, exp: bool) -> Option<String> {
-    if exp || value.fract() != 0.0 || value.abs() >= 1e15 || value == 0.0 && value.is_sign_negative() {
+    let mut buf = [0u8; INTEGER_TEXT_MAX];
+    integer_fixed_into(value, dec, exp, &mut buf).map(str::to_string)
+}
+
+/// The longest text `integer_fixed_into` writes: sign, 15 digits, point, 15 decimals.
+const INTEGER_TEXT_MAX: usize = 40;
+
+/// [`integer_fixed`] written into `buf` (no allocation). Digits are written by hand:
+/// the formatting machinery costs more than the rest of NumToStr on the common integer
+/// case (measured with perf on bench/interp/strings).
+fn integer_fixed_into(value: f64, dec: usize, exp: bool, buf: &mut [u8; INTEGER_TEXT_MAX]) -> Option<&str> {
+    if exp || value.fract() != 0.0 || value.abs() >= 1e15 || value == 0.0 && value.is_sign_negative() || dec > 15 {
         return None;
     }
-    // Digits written by hand: the formatting machinery costs more than the rest of
-    // NumToStr on the common integer case (measured with perf on bench/interp/strings).
     let int = value as i64;
     let mut digits = [0u8; 20];
     let mut at = digits.len();
@@ -180,16 +189,33 @@ fn integer_fixed(value: f64, dec: usize, exp: bool) -> Option<String> {
             break;
         }
     }
-    let mut text = String::with_capacity(digits.len() - at + 1 + dec);
+    let mut len = 0;
+    let mut put = |b: u8| {
+        buf[len] = b;
+        len += 1;
+    };
     if int < 0 {
-        text.push('-');
+        put(b'-');
     }
-    text.extend(digits[at..].iter().map(|&d| char::from(d)));
+    digits[at..].iter().for_each(|&d| put(d));
     if dec > 0 {
-        text.push('.');
-        text.extend(std::iter::repeat_n('0', dec));
+        put(b'.');
+        (0..dec).for_each(|_| put(b'0'));
     }
-    Some(text)
+    std::str::from_utf8(&buf[..len]).ok()
+}
+
+/// [`num_to_str`] as a string value, with one allocation on the integer path.
+pub fn num_to_str_value(value: f64, dec: i32, exp: bool) -> Result<std::rc::Rc<str>, FormatError> {
+    let dec_checked = check_decimals(dec, NUM_MAX_DECIMALS)?;
+    let v = value as f32;
+    let mut buf = [0u8; INTEGER_TEXT_MAX];
+    if v.is_finite() {
+        if let Some(text) = integer_fixed_into(f64::from(v), dec_checked, exp, &mut buf) {
+            return Ok(text.into());
+        }
+    }
+    num_to_str(value, dec, exp).map(|s| s.into())
 }
 
 /// `DnumToStr(Val Dec [\Exp])`: [`num_to_str`] for a `dnum` (f64), `dec` up to 15.

@@ -3,7 +3,7 @@
 use super::{present, Ctx};
 use crate::errnames::Err;
 use crate::error::RapidError;
-use crate::format::{dnum_to_str as dnum_text, num_to_str as num_text};
+use crate::format::dnum_to_str as dnum_text;
 use crate::value::{Value, MAX_STRING_CHARS};
 
 type Res = Result<Option<Value>, RapidError>;
@@ -121,8 +121,9 @@ pub(super) fn str_map(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 pub(super) fn num_to_str(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (value, dec) = (ctx.num(&args[0])?, ctx.num(&args[1])?);
-    let s = num_text(value, dec as i32, present(args.get(2))).map_err(|e| ctx.error(Err::ArgValue, e.to_string()))?;
-    Ok(text(s))
+    let s = crate::format::num_to_str_value(value, dec as i32, present(args.get(2)))
+        .map_err(|e| ctx.error(Err::ArgValue, e.to_string()))?;
+    Ok(Some(Value::Str(s)))
 }
 
 pub(super) fn dnum_to_str(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {

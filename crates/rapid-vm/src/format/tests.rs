@@ -326,3 +326,19 @@ fn length_counts_characters_not_bytes() {
     assert!(check_length(eighty.clone()).is_ok());
     assert_eq!(check_length(eighty + "x"), Err(FormatError::StringTooLong));
 }
+
+#[test]
+fn num_to_str_value_gives_num_to_strs_text() {
+    // The allocation-light path for integers must give the same text as NumToStr's
+    // general one, for every number of decimals and with \Exp.
+    let values = [0.0, -0.0, 1.0, -1.0, 42.0, -999_999.0, 16_777_216.0, 1e14, 2.5, -0.125, f64::from(f32::MAX)];
+    for &v in &values {
+        for dec in 0..=6 {
+            for exp in [false, true] {
+                let text = num_to_str(v, dec, exp).map(|s| s.to_string());
+                let value = super::num_to_str_value(v, dec, exp).map(|s| s.to_string());
+                assert_eq!(text.ok(), value.ok(), "{v} dec {dec} exp {exp}");
+            }
+        }
+    }
+}
