@@ -447,9 +447,11 @@ fn concat(a: &str, b: &str) -> Option<Value> {
     if a.len() + b.len() > MAX_STRING_CHARS {
         return None;
     }
-    let mut joined = String::with_capacity(a.len() + b.len());
-    joined.push_str(a);
-    joined.push_str(b);
+    // Joined on the stack, so the value's own allocation is the only one.
+    let mut buf = [0u8; MAX_STRING_CHARS];
+    buf[..a.len()].copy_from_slice(a.as_bytes());
+    buf[a.len()..a.len() + b.len()].copy_from_slice(b.as_bytes());
+    let joined = std::str::from_utf8(&buf[..a.len() + b.len()]).ok()?;
     Some(Value::Str(joined.into()))
 }
 
