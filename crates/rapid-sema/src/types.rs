@@ -101,6 +101,11 @@ impl Types {
         &self.info(ty).display
     }
 
+    /// The type named `name` (any letter case), predefined or declared.
+    pub fn find(&self, name: &str) -> Option<TypeId> {
+        self.infos.iter().position(|info| info.display.eq_ignore_ascii_case(name)).map(|i| TypeId(i as u32))
+    }
+
     /// The type with aliases followed to their base.
     pub fn canonical(&self, mut ty: TypeId) -> TypeId {
         for _ in 0..16 {

@@ -89,4 +89,9 @@ errors! {
     UnknownLoad = "ERR_UNKPROC",
     // I/O signals (§1.9).
     NoAliasIoDef = "ERR_NO_ALIASIO_DEF",
+    AliasIoDef = "ERR_ALIASIO_DEF",
+    AliasIoType = "ERR_ALIASIO_TYPE",
+    AoLim = "ERR_AO_LIM",
+    GoLim = "ERR_GO_LIM",
+    SigNotValid = "ERR_SIG_NOT_VALID",
 }

@@ -107,9 +107,9 @@ pub enum Instr {
     WaitPop,
     /// Raise the predefined error `0` (WaitUntil's timeout).
     RaiseWaitTimeout,
-    /// Reading a signal variable declared in RAPID that no AliasIO connected:
-    /// ERR_NO_ALIASIO_DEF (manual §1.9). Constant `n` names the data.
-    SignalNotConnected(u32),
+    /// Pop signal data, push the signal's value; data no AliasIO connected raises
+    /// ERR_NO_ALIASIO_DEF (manual §1.9). Constant `n` names the data (for the message).
+    ReadSignal(u32),
     /// The routine ran off its end without RETURN (in a FUNC: ERR_FNCNORET).
     FellOffEnd,
     /// Evaluate kernel `kernel` and store its result at its target, then continue at

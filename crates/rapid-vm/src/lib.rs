@@ -122,6 +122,7 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
     };
     vm.set_data_names(module_data.map(named).collect());
     vm.resources_mut().symsearch = builtins::symsearch::catalog::task_symbols(&prog, &modules);
+    vm.resources_mut().io.kinds = signal_kinds(&prog);
     vm.set_pers_globals(prog.datas.iter().map(|d| d.kind == rapid_sema::symbols::DataKind::Pers).collect());
     vm.set_program_sources(files.to_vec());
     let entry_idx = prog.interner.get(entry).and_then(|sym| prog.scopes.globals.get(&sym).map(|o| o.def));
@@ -175,4 +176,13 @@ pub(crate) fn pers_sites(prog: &Program, modules: &[compile::ModuleSource<'_>]) 
         sites.push(persist::PersSite { global: global as u32, file: source.file, init, insert_at: semi });
     }
     sites
+}
+
+/// The program's types for the six signal kinds (AliasIO checks kinds by them).
+fn signal_kinds(prog: &Program) -> Vec<(rapid_sema::types::TypeId, rapid_io::SignalKind)> {
+    use rapid_io::SignalKind as K;
+    [K::DI, K::DO, K::AI, K::AO, K::GI, K::GO]
+        .into_iter()
+        .filter_map(|kind| prog.types.find(kind.rapid_type()).map(|ty| (ty, kind)))
+        .collect()
 }

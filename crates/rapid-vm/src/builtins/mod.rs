@@ -12,6 +12,7 @@ mod dnheader;
 mod events;
 pub mod files;
 mod geometry;
+pub mod io;
 mod math;
 mod matrix;
 pub mod modules;
@@ -102,6 +103,8 @@ pub struct Resources {
     pub modules: modules::ModuleState,
     /// Rand's generator (kept across PP to Main: the sequence goes on).
     pub random: random::RandomState,
+    /// The task's I/O system (signals) and the RAPID types of the signal kinds.
+    pub io: io::IoState,
 }
 
 impl Resources {
@@ -235,6 +238,7 @@ static FAMILIES: &[Entries] = &[
     dnheader::ENTRIES,
     modules::ENTRIES,
     random::ENTRIES,
+    io::ENTRIES,
     spy::ENTRIES,
 ];
 

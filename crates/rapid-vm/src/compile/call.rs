@@ -11,6 +11,9 @@ use super::{CompileError, LocalKind, Resolved, RoutineCompiler};
 use crate::builtins;
 use crate::ir::{ArgOrigin, ArgSpec, CallSite, Callee, Instr, LateArg};
 
+/// Built-ins whose `anytype` parameters take a signal itself rather than its value.
+const SIGNAL_TAKING: &[&str] = &["AliasIO", "AliasIOReset", "ValidIO", "GetSignalOrigin"];
+
 impl RoutineCompiler<'_> {
     /// A call of `name` with `args`; `in_expr` for function calls (the result is pushed).
     pub(crate) fn call(
@@ -78,10 +81,12 @@ impl RoutineCompiler<'_> {
         let bound = bind_args(&info, arena.args(args), |id, param| self.arg_fits(arena, id, param));
         let mut specs = Vec::with_capacity(info.params.len());
         let mut n_pushed = 0u16;
+        let takes_signals =
+            info.chapter.is_some() && SIGNAL_TAKING.iter().any(|n| info.display.eq_ignore_ascii_case(n));
         for (param, arg) in info.params.iter().zip(&bound) {
             let spec = match arg {
                 None => ArgSpec::Absent,
-                Some(arg) => self.arg(arena, param, arg)?,
+                Some(arg) => self.arg(arena, param, arg, takes_signals)?,
             };
             if matches!(spec, ArgSpec::Value | ArgSpec::Place) {
                 n_pushed += 1;
@@ -114,7 +119,7 @@ impl RoutineCompiler<'_> {
         for (idx, (param, arg)) in info.params.iter().zip(&bound).enumerate() {
             let spec = match arg {
                 Some(_) if idx == 0 => ArgSpec::Absent,
-                Some(arg) => self.arg(arena, param, arg)?,
+                Some(arg) => self.arg(arena, param, arg, false)?,
                 None => ArgSpec::Absent,
             };
             if matches!(spec, ArgSpec::Value | ArgSpec::Place) {
@@ -178,7 +183,13 @@ impl RoutineCompiler<'_> {
         self.code.sites.len() as u32 - 1
     }
 
-    fn arg(&mut self, arena: &Arena, param: &ParamInfo, arg: &Arg) -> Result<ArgSpec, CompileError> {
+    fn arg(
+        &mut self,
+        arena: &Arena,
+        param: &ParamInfo,
+        arg: &Arg,
+        takes_signals: bool,
+    ) -> Result<ArgSpec, CompileError> {
         let by_ref = param.mode != ParamMode::In;
         match arg.kind {
             ArgKind::Optional if arg.value.is_none() => return Ok(ArgSpec::Switch),
@@ -203,7 +214,12 @@ impl RoutineCompiler<'_> {
         }
         let expect =
             if param.ty == rapid_sema::types::ANY { None } else { Some((param.ty, expected_dims(param.rank, [0; 3]))) };
+        // A signal parameter (or AliasIO's and ValidIO's `anytype`) takes the signal
+        // itself, not its value.
+        let signal_param = self.prog.types.class(param.ty) == rapid_sema::types::ValueClass::SemiValue;
+        self.signal_as_data = signal_param || (param.ty == rapid_sema::types::ANY && takes_signals);
         self.expr(arena, value, expect)?;
+        self.signal_as_data = false;
         Ok(ArgSpec::Value)
     }
 

@@ -16,9 +16,13 @@ impl RoutineCompiler<'_> {
     /// Emits code that pushes the value of `id`.
     pub(crate) fn expr(&mut self, arena: &Arena, id: ExprId, expect: Expected) -> Result<(), CompileError> {
         let expr = *arena.expr(id);
-        if matches!(expr.kind, ExprKind::Name(_) | ExprKind::Index { .. }) && self.is_signal_data(arena, id) {
+        if !self.signal_as_data
+            && matches!(expr.kind, ExprKind::Name(_) | ExprKind::Index { .. })
+            && self.is_signal_data(arena, id)
+        {
             return self.signal_read(arena, id);
         }
+        self.signal_as_data = false;
         match expr.kind {
             ExprKind::Num => {
                 let value = num_value(expr.span.text(self.text)).unwrap_or(0.0);
@@ -93,9 +97,9 @@ impl RoutineCompiler<'_> {
             .is_some_and(|(ty, _)| self.prog.types.class(ty) == rapid_sema::types::ValueClass::SemiValue)
     }
 
-    /// Reading a signal. Signals declared in RAPID can only be connected by AliasIO,
-    /// which `rapid run` does not run yet, so reading one raises ERR_NO_ALIASIO_DEF as
-    /// on the controller (manual §1.9). Signals of the I/O configuration are refused.
+    /// Reading a signal: the signal data, then its value (ERR_NO_ALIASIO_DEF when no
+    /// AliasIO connected it, manual §1.9). Signals of the I/O configuration itself are
+    /// refused until `rapid run` reads configurations.
     fn signal_read(&mut self, arena: &Arena, id: ExprId) -> Result<(), CompileError> {
         let span = arena.expr(id).span;
         let mut root = id;
@@ -114,9 +118,11 @@ impl RoutineCompiler<'_> {
         if !declared_in_rapid {
             return Err(self.unsupported(span, "reading signals of the I/O configuration (issue 5)"));
         }
+        self.signal_as_data = true;
+        self.expr(arena, id, None)?;
         let name = span.text(self.text).to_string();
         let idx = self.code.constant(Value::Str(name.as_str().into()));
-        self.code.emit(Instr::SignalNotConnected(idx));
+        self.code.emit(Instr::ReadSignal(idx));
         Ok(())
     }
 

@@ -254,7 +254,9 @@ pub fn default_value(prog: &Program, ty: TypeId, dims: &[u32]) -> Value {
             ty: canon,
             fields: fields.iter().map(|f| default_value(prog, f.ty, &[])).collect(),
         })),
-        TypeKind::SemiValue(base) => default_value(prog, *base, &[]),
+        // Signal data: not connected to an I/O signal until AliasIO (or the I/O
+        // configuration) connects it.
+        TypeKind::SemiValue(_) => Value::Opaque(Box::new(Opaque { ty: canon, state: OpaqueState::None })),
         _ => Value::Opaque(Box::new(Opaque { ty: canon, state: OpaqueState::None })),
     }
 }
@@ -295,6 +297,9 @@ pub(crate) struct RoutineCompiler<'p> {
     pub(crate) stmt_depth: u16,
     /// Jumps to the end of the construct being compiled (patched when it ends).
     pub(crate) exits: Vec<u32>,
+    /// Signal data is being passed to a parameter that takes the signal itself (a
+    /// signal parameter, AliasIO): load it without reading the signal's value.
+    pub(crate) signal_as_data: bool,
     /// The FOR and WHILE loops around the statement being compiled, innermost last
     /// (Break and Continue jump out of or back into the innermost one).
     pub(crate) loops: Vec<LoopJumps>,
@@ -318,6 +323,7 @@ impl<'p> RoutineCompiler<'p> {
             locals: FxHashMap::default(),
             loop_vars: Vec::new(),
             loops: Vec::new(),
+            signal_as_data: false,
             labels: FxHashMap::default(),
             gotos: Vec::new(),
             n_locals: 0,

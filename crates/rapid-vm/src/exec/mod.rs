@@ -627,15 +627,22 @@ impl Vm {
                 self.frame_mut().pc = next;
                 return Ok(Some(Exit::Wait(seconds.max(0.0))));
             }
-            Instr::SignalNotConnected(name) => {
-                let name = code.consts.get(name as usize).map_or(String::new(), |v| match v {
-                    Value::Str(s) => s.to_string(),
-                    _ => String::new(),
-                });
-                return Err(self.error(
-                    Err::NoAliasIoDef,
-                    format!("the signal variable `{name}` is not connected to an I/O signal (AliasIO)"),
-                ));
+            Instr::ReadSignal(name) => {
+                let data = self.pop();
+                let value = crate::builtins::io::read_signal(&mut self.resources, self.time, &data);
+                match value {
+                    Some(value) => self.push(Value::Num(value as f32)),
+                    None => {
+                        let name = match code.consts.get(name as usize) {
+                            Some(Value::Str(s)) => s.to_string(),
+                            _ => String::new(),
+                        };
+                        return Err(self.error(
+                            Err::NoAliasIoDef,
+                            format!("the signal variable `{name}` is not connected to an I/O signal (AliasIO)"),
+                        ));
+                    }
+                }
             }
             Instr::RaiseWaitTimeout => {
                 return Err(

@@ -1,0 +1,203 @@
+//! I/O signals (§1.9) on the task's I/O system (`crates/rapid-io`, in
+//! `Resources::io`): AliasIO, AliasIOReset, Set, Reset, SetDO, SetAO, SetGO, InvertDO,
+//! PulseDO, TestDI, ValidIO, and reading signals in expressions.
+//!
+//! Signal data holds `OpaqueState::Handle(id)` once connected (AliasIO, or the I/O
+//! configuration for its own signals) and nothing before: using it then raises
+//! ERR_NO_ALIASIO_DEF (manual §1.9). Every access first brings the I/O system up to the
+//! controller's time, so delayed and pulsed orders take effect when they are due.
+//! `rapid run` has no I/O configuration yet (issue 5): there, AliasIO finds no signal.
+
+use rapid_io::{IoSystem, SignalKind};
+use rapid_sema::types::TypeId;
+
+use super::{present, Ctx, Entries, Resources};
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::{Opaque, OpaqueState, Value};
+
+type Res = Result<Option<Value>, RapidError>;
+
+/// The I/O system of a task and the RAPID types of its signal kinds.
+#[derive(Default)]
+pub struct IoState {
+    pub system: Option<IoSystem>,
+    /// signaldi … signalgo as this program numbers them (set at load).
+    pub kinds: Vec<(TypeId, SignalKind)>,
+}
+
+/// The value of signal data, or `None` when it is not connected (ERR_NO_ALIASIO_DEF).
+pub(crate) fn read_signal(resources: &mut Resources, time: f64, data: &Value) -> Option<f64> {
+    let Value::Opaque(opaque) = data else { return None };
+    let OpaqueState::Handle(id) = opaque.state else { return None };
+    let system = resources.io.system.as_mut()?;
+    system.advance(time);
+    system.value(id)
+}
+
+/// The signal id signal data (an argument) is connected to.
+fn signal(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
+    let data = ctx.value(arg)?;
+    let connected = match &data {
+        Value::Opaque(opaque) => match opaque.state {
+            OpaqueState::Handle(id) => Some(id),
+            _ => None,
+        },
+        _ => None,
+    };
+    let Some(id) = connected else {
+        return Err(ctx.error(Err::NoAliasIoDef, "the signal variable is not connected to an I/O signal (AliasIO)"));
+    };
+    let time = ctx.time;
+    if let Some(system) = ctx.resources.io.system.as_mut() {
+        system.advance(time);
+    }
+    Ok(id)
+}
+
+/// Runs an order on the I/O system and turns its failure into the RAPID error.
+fn order(ctx: &mut Ctx<'_>, run: impl FnOnce(&mut IoSystem, f64) -> Result<(), rapid_io::IoError>) -> Res {
+    let time = ctx.time;
+    let Some(system) = ctx.resources.io.system.as_mut() else {
+        return Err(ctx.error(Err::NoAliasIoDef, "this task has no I/O system"));
+    };
+    match run(system, time) {
+        Ok(()) => Ok(None),
+        Err(fault) => Err(io_error(ctx, &fault)),
+    }
+}
+
+fn io_error(ctx: &Ctx<'_>, fault: &rapid_io::IoError) -> RapidError {
+    let named = fault.rapid_error().and_then(|name| Err::ALL.iter().copied().find(|e| e.name() == name));
+    match named {
+        Some(err) => ctx.error(err, fault.to_string()),
+        // §2.10's limits (10 pulses, 20 delayed orders) have no recoverable error: the
+        // controller stops the program with an event-log message.
+        None => RapidError::fatal(fault.to_string()),
+    }
+}
+
+/// `Set Signal`: a digital output to 1.
+fn set(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let id = signal(ctx, &args[0])?;
+    order(ctx, |io, t| io.set(id, 1.0, t))
+}
+
+/// `Reset Signal`: a digital output to 0.
+fn reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let id = signal(ctx, &args[0])?;
+    order(ctx, |io, t| io.set(id, 0.0, t))
+}
+
+/// `SetDO [\SDelay] | [\Sync] Signal Value`. `\Sync` waits until the physical output has
+/// changed; the simulated output changes at once, so there is nothing to wait for.
+fn set_do(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let id = signal(ctx, &args[2])?;
+    let value = ctx.num(&args[3])?;
+    match ctx.opt_num(args.first())? {
+        Some(delay) => order(ctx, |io, t| io.set_delayed(id, value, t, delay)),
+        None => order(ctx, |io, t| io.set(id, value, t)),
+    }
+}
+
+/// `SetAO Signal Value`.
+fn set_ao(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let id = signal(ctx, &args[0])?;
+    let value = ctx.num(&args[1])?;
+    order(ctx, |io, t| io.set(id, value, t))
+}
+
+/// `SetGO [\SDelay] Signal Value | Dvalue`.
+fn set_go(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let id = signal(ctx, &args[1])?;
+    let value = if present(args.get(2)) { ctx.num(&args[2])? } else { ctx.num(&args[3])? };
+    match ctx.opt_num(args.first())? {
+        Some(delay) => order(ctx, |io, t| io.set_delayed(id, value, t, delay)),
+        None => order(ctx, |io, t| io.set(id, value, t)),
+    }
+}
+
+/// `InvertDO Signal`.
+fn invert_do(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let id = signal(ctx, &args[0])?;
+    order(ctx, |io, t| io.invert(id, t))
+}
+
+/// `PulseDO [\High] [\PLength] Signal` (0.2 s without `\PLength`).
+fn pulse_do(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let id = signal(ctx, &args[2])?;
+    let high = present(args.first());
+    let length = ctx.opt_num(args.get(1))?;
+    order(ctx, |io, t| io.pulse(id, high, length, t))
+}
+
+/// `TestDI(Signal)`: whether a digital input is 1.
+fn test_di(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let id = signal(ctx, &args[0])?;
+    let value = ctx.resources.io.system.as_ref().and_then(|io| io.value(id));
+    Ok(Some(Value::Bool(value == Some(1.0))))
+}
+
+/// `ValidIO(Signal)`: whether the signal can be used now: connected, on a running unit
+/// (every simulated unit runs).
+fn valid_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let valid = match ctx.value(&args[0])? {
+        Value::Opaque(opaque) => match opaque.state {
+            OpaqueState::Handle(id) => ctx.resources.io.system.as_ref().is_some_and(|io| io.def(id).is_some()),
+            _ => false,
+        },
+        _ => false,
+    };
+    Ok(Some(Value::Bool(valid)))
+}
+
+/// `AliasIO FromSignal ToSignal`: connects signal data declared in RAPID to a signal of
+/// the I/O configuration, named as text or by signal data connected already.
+/// ERR_ALIASIO_DEF when FromSignal is no configured signal, ERR_ALIASIO_TYPE when the
+/// two are of different signal types, ERR_NO_ALIASIO_DEF when FromSignal is signal data
+/// that is not connected.
+fn alias_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let from = match ctx.value(&args[0])? {
+        Value::Str(name) => {
+            let id = ctx.resources.io.system.as_ref().and_then(|io| io.id(&name));
+            id.ok_or_else(|| ctx.error(Err::AliasIoDef, format!("no signal `{name}` in the I/O configuration")))?
+        }
+        other => signal(ctx, &other)?,
+    };
+    let Value::Ref(_) = &args[1] else { return Err(ctx.error(Err::ArgValue, "ToSignal must be signal data")) };
+    let Value::Opaque(target) = ctx.value(&args[1])? else {
+        return Err(ctx.error(Err::ArgValue, "ToSignal must be signal data"));
+    };
+    let from_kind = ctx.resources.io.system.as_ref().and_then(|io| io.def(from)).map(|def| def.kind);
+    let to_kind = ctx.resources.io.kinds.iter().find(|(ty, _)| *ty == target.ty).map(|(_, kind)| *kind);
+    if from_kind.is_none() || from_kind != to_kind {
+        return Err(ctx.error(Err::AliasIoType, "FromSignal and ToSignal are different kinds of signal"));
+    }
+    let connected = Opaque { ty: target.ty, state: OpaqueState::Handle(from) };
+    ctx.store(&args[1], Value::Opaque(Box::new(connected)))?;
+    Ok(None)
+}
+
+/// `AliasIOReset Signal`: disconnects signal data AliasIO connected.
+fn alias_io_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let Value::Opaque(target) = ctx.value(&args[0])? else {
+        return Err(ctx.error(Err::ArgValue, "Signal must be signal data"));
+    };
+    let reset = Opaque { ty: target.ty, state: OpaqueState::None };
+    ctx.store(&args[0], Value::Opaque(Box::new(reset)))?;
+    Ok(None)
+}
+
+pub(super) static ENTRIES: Entries = &[
+    ("AliasIO", alias_io),
+    ("AliasIOReset", alias_io_reset),
+    ("Set", set),
+    ("Reset", reset),
+    ("SetDO", set_do),
+    ("SetAO", set_ao),
+    ("SetGO", set_go),
+    ("InvertDO", invert_do),
+    ("PulseDO", pulse_do),
+    ("TestDI", test_di),
+    ("ValidIO", valid_io),
+];

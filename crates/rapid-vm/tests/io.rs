@@ -1,0 +1,151 @@
+//! I/O signals through the VM (§1.9, §2.10): AliasIO connects RAPID signal data to
+//! signals of the I/O system, orders and reads act on it at the controller's time.
+//! `rapid run` cannot configure signals yet, so the I/O system is built here.
+
+use rapid_io::{AnalogRange, IoSystem, SignalDef, SignalKind};
+use rapid_sema::SourceInput;
+use rapid_vm::{load, Exit, RecordingHost};
+
+/// do1, di1, go1 (8 bits), ao1 (logical 0..10).
+fn io_system() -> IoSystem {
+    let mut go1 = SignalDef::new("go1", SignalKind::GO);
+    go1.group_bits = 8;
+    let mut ao1 = SignalDef::new("ao1", SignalKind::AO);
+    ao1.analog =
+        Some(AnalogRange { logical_min: 0.0, logical_max: 10.0, physical_min: 0.0, physical_max: 10.0, bits: 0 });
+    let defs = vec![SignalDef::new("do1", SignalKind::DO), SignalDef::new("di1", SignalKind::DI), go1, ao1];
+    match IoSystem::new(defs, Vec::new()) {
+        Ok(io) => io,
+        Err(err) => panic!("the test configuration is valid: {err:?}"),
+    }
+}
+
+/// Runs `program` to its end with the I/O system above; the pendant lines.
+fn run(program: &str) -> Vec<String> {
+    let mut loaded = match load(&[SourceInput::from_text("m.mod", program)], "main") {
+        Ok(loaded) => loaded,
+        Err(err) => panic!("the program loads: {err:?}"),
+    };
+    loaded.vm.resources_mut().io.system = Some(io_system());
+    let mut host = RecordingHost::default();
+    for _ in 0..1_000 {
+        match loaded.vm.run(&mut host, 100_000) {
+            Exit::Wait(seconds) => loaded.vm.time += seconds,
+            Exit::Done => return host.lines,
+            other => panic!("the program ended with {other:?}; output {:?}", host.lines),
+        }
+    }
+    panic!("the program did not end")
+}
+
+#[test]
+fn orders_and_reads_follow_the_controller_clock() {
+    // Hand-worked from §1.9/§2.10: Set/InvertDO act at once; PulseDO \PLength:=0.5 is
+    // high until 0.5 s later; SetDO \SDelay:=1 changes the output 1 s later.
+    let lines = run(r#"MODULE m
+VAR signaldo lamp;
+PROC main()
+  AliasIO "do1", lamp;
+  TPWrite "start " \Num:=lamp;
+  Set lamp;
+  TPWrite "set " \Num:=lamp;
+  InvertDO lamp;
+  TPWrite "inverted " \Num:=lamp;
+  PulseDO \PLength:=0.5, lamp;
+  TPWrite "pulse " \Num:=lamp;
+  WaitTime 0.4;
+  TPWrite "at 0.4 " \Num:=lamp;
+  WaitTime 0.2;
+  TPWrite "at 0.6 " \Num:=lamp;
+  SetDO \SDelay:=1, lamp, 1;
+  TPWrite "ordered " \Num:=lamp;
+  WaitTime 1.1;
+  TPWrite "after the delay " \Num:=lamp;
+  Reset lamp;
+  TPWrite "reset " \Num:=lamp;
+ENDPROC
+ENDMODULE
+"#);
+    let expected = [
+        "start 0",
+        "set 1",
+        "inverted 0",
+        "pulse 1",
+        "at 0.4 1",
+        "at 0.6 0",
+        "ordered 0",
+        "after the delay 1",
+        "reset 0",
+    ];
+    assert_eq!(lines, expected);
+}
+
+#[test]
+fn groups_analog_outputs_inputs_and_their_errors() {
+    // go1 has 8 bits: 255 is the largest value, 256 raises ERR_GO_LIM; ao1's logical
+    // range is 0..10, so 12 raises ERR_AO_LIM; di1 is 0 (its default).
+    let lines = run(r#"MODULE m
+VAR signalgo code;
+VAR signalao speed;
+VAR signaldi part;
+PROC main()
+  AliasIO "go1", code;
+  AliasIO "ao1", speed;
+  AliasIO "di1", part;
+  SetGO code, 255;
+  TPWrite "code " \Num:=code;
+  SetAO speed, 2.5;
+  TPWrite "speed " \Num:=speed;
+  TPWrite "part " \Bool:=TestDI(part);
+  TPWrite "valid " \Bool:=ValidIO(part);
+  SetGO code, 256;
+  SetAO speed, 12;
+  TPWrite "code still " \Num:=code;
+ERROR
+  IF ERRNO = ERR_GO_LIM TPWrite "ERR_GO_LIM";
+  IF ERRNO = ERR_AO_LIM TPWrite "ERR_AO_LIM";
+  TRYNEXT;
+ENDPROC
+ENDMODULE
+"#);
+    let expected = ["code 255", "speed 2.5", "part FALSE", "valid TRUE", "ERR_GO_LIM", "ERR_AO_LIM", "code still 255"];
+    assert_eq!(lines, expected);
+}
+
+#[test]
+fn alias_io_errors_and_unconnected_signals() {
+    // AliasIO: an unknown signal name → ERR_ALIASIO_DEF; a DI onto signaldo data →
+    // ERR_ALIASIO_TYPE; unconnected data → ERR_NO_ALIASIO_DEF on use; AliasIOReset
+    // disconnects (manual §1.9, AliasIO).
+    let lines = run(r#"MODULE m
+VAR signaldo lamp;
+VAR signaldo other;
+PROC main()
+  AliasIO "nosuch", lamp;
+  AliasIO "di1", lamp;
+  Set lamp;
+  TPWrite "valid " \Bool:=ValidIO(lamp);
+  AliasIO "do1", lamp;
+  AliasIO lamp, other;
+  Set other;
+  TPWrite "lamp through other " \Num:=lamp;
+  AliasIOReset lamp;
+  Reset lamp;
+ERROR
+  IF ERRNO = ERR_ALIASIO_DEF TPWrite "ERR_ALIASIO_DEF";
+  IF ERRNO = ERR_ALIASIO_TYPE TPWrite "ERR_ALIASIO_TYPE";
+  IF ERRNO = ERR_NO_ALIASIO_DEF TPWrite "ERR_NO_ALIASIO_DEF";
+  TRYNEXT;
+ENDPROC
+ENDMODULE
+"#);
+    let expected = [
+        "ERR_ALIASIO_DEF",
+        "ERR_ALIASIO_TYPE",
+        "ERR_NO_ALIASIO_DEF",
+        "valid FALSE",
+        "lamp through other 1",
+        "ERR_NO_ALIASIO_DEF",
+    ];
+    assert_eq!(lines, expected);
+}
