@@ -52,7 +52,13 @@ pub struct Loaded {
 
 /// Checks, compiles and initialises the task made of `files`, ready to run `entry`.
 pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
-    let analysis = analyze(files, &Options::default());
+    load_with(files, entry, &Options::default())
+}
+
+/// [`load`] with checking options: the data the system configuration declares (the
+/// signals of a backup's `EIO.cfg`).
+pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Result<Loaded, LoadError> {
+    let analysis = analyze(files, options);
     if Program::has_errors(&analysis.diagnostics) {
         return Err(LoadError::Diagnostics(analysis.diagnostics));
     }
