@@ -36,6 +36,8 @@ pub(crate) struct Inputs {
     pub(crate) programs: Vec<SourceInput>,
     /// A backup's configuration files (`SYSPAR/*.cfg`), kept for their diagnostics.
     pub(crate) configs: Vec<SourceInput>,
+    /// The parsed configuration files with their domains (`EIO`), for ReadCfgData.
+    pub(crate) syspar: Vec<(String, CfgFile)>,
     /// The data the configuration declares: the signals of `EIO.cfg`.
     pub(crate) predefined: Vec<PredefinedData>,
     /// The task read from a backup, when a PATH was one.
@@ -97,6 +99,7 @@ struct Collector {
     program_diagnostics: Vec<Diagnostic>,
     configs: Vec<SourceInput>,
     predefined: Vec<PredefinedData>,
+    syspar: Vec<(String, CfgFile)>,
     task: Option<TaskFolder>,
     /// Diagnostics whose `file` is an index into `configs`.
     config_diagnostics: Vec<Diagnostic>,
@@ -158,7 +161,8 @@ impl Collector {
             self.configs.push(SourceInput::from_bytes(shown.to_string(), bytes));
             let parsed = rapid_config::parse(&self.configs[config_idx].text);
             self.config_findings(config_idx, &parsed.errors);
-            match domain(&parsed, &path).as_str() {
+            let domain = domain(&parsed, &path);
+            match domain.as_str() {
                 "EIO" => {
                     let eio = eio::read(&parsed);
                     self.config_findings(config_idx, &eio.errors);
@@ -174,6 +178,7 @@ impl Collector {
                 }
                 _ => {}
             }
+            self.syspar.push((domain, parsed));
         }
         let shown = folder.display();
         let Some(task) = backup::choose_task(folder, tasks, sys.as_ref()) else {
@@ -284,6 +289,7 @@ impl Collector {
             programs: self.programs,
             configs: self.configs,
             predefined: self.predefined,
+            syspar: self.syspar,
             task: self.task,
             diagnostics,
             rank,

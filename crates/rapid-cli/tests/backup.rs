@@ -177,3 +177,153 @@ fn a_task_folder_without_modules_is_a_tool_failure() {
     let stderr = text(&out.stderr);
     assert!(stderr.contains("holds no modules in PROGMOD or SYSMOD"), "{stderr}");
 }
+
+const CFG_EIO: &str = "EIO:CFG_1.0:6:1::
+#
+EIO_SIGNAL:
+
+      -Name \"diPart\" -SignalType \"DI\" -Device \"d652\" -DeviceMap \"0\"
+
+      -Name \"doGrip\" -SignalType \"DO\" -Device \"d652\" -DeviceMap \"1\"\\
+      -Access \"All\" -Default 1
+
+      -Name \"diVirtual\" -SignalType \"DI\"
+
+      -Name \"doLamp\" -SignalType \"DO\" -Device \"d652\" -DeviceMap \"2\"
+";
+
+const CFG_SYS: &str = "SYS:CFG_1.0:6:0::
+#
+CAB_TASKS:
+
+      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask 
+";
+
+const CFG_PROGRAM: &str = r#"MODULE MainModule
+    VAR string s := "";
+    VAR num n := 0;
+    VAR dnum d := 0;
+    VAR bool b := FALSE;
+    VAR num idx := 0;
+
+    PROC main()
+        ReadCfgData "/EIO/EIO_SIGNAL/DOGRIP", "Device", s;
+        TPWrite "device " + s;
+        ReadCfgData "/EIO/EIO_SIGNAL/doGrip", "Default", n;
+        TPWrite "default " \Num:=n;
+        ReadCfgData "/EIO/EIO_SIGNAL/doGrip", "Default", d;
+        TPWrite "default as dnum " \Dnum:=d;
+        ReadCfgData "/SYS/CAB_TASKS/T_ROB1", "MotionTask", b;
+        TPWrite "motion task " \Bool:=b;
+        ReadCfgData "/SYS/CAB_TASKS/T_ROB1", "Hidden", b;
+        TPWrite "hidden " \Bool:=b;
+        WHILE idx <> END_OF_LIST DO
+            ReadCfgData "/EIO/EIO_SIGNAL/Device/d652", "Name", s \ListNo:=idx;
+            TPWrite "on d652: " + s + ", next " \Num:=idx;
+        ENDWHILE
+        ReadCfgData "/EIO/EIO_SIGNAL/nosuch", "Device", s;
+        ReadCfgData "/EIO/EIO_SIGNAL/doGrip", "Label", s;
+        ReadCfgData "/MMC/X/y", "Name", s;
+        ReadCfgData "EIO/EIO_SIGNAL/doGrip", "Device", s;
+        ReadCfgData "/EIO/EIO_SIGNAL/doGrip", "Default", s;
+        ReadCfgData "/EIO/EIO_SIGNAL/doGrip", "Device", n;
+        idx := 3;
+        ReadCfgData "/EIO/EIO_SIGNAL/Device/d652", "Name", s \ListNo:=idx;
+        idx := -1;
+        ReadCfgData "/EIO/EIO_SIGNAL/Device/d652", "Name", s \ListNo:=idx;
+        WriteCfgData "/EIO/EIO_SIGNAL/doGrip", "Default", 0;
+        WriteCfgData "/EIO/EIO_SIGNAL/doGrip", "Access", "ReadOnly";
+        WriteCfgData "/EIO/EIO_SIGNAL/diVirtual", "Access", "All";
+        WriteCfgData "/SYS/CAB_TASKS/T_ROB1", "MotionTask", FALSE;
+        WriteCfgData "/EIO/EIO_SIGNAL/doGrip", "Access", 3;
+        WriteCfgData "/EIO/EIO_SIGNAL/doGrip", "Access", "a""b";
+        WriteCfgData "/EIO/EIO_SIGNAL/doGrip", "Label", "x";
+        ReadCfgData "/EIO/EIO_SIGNAL/doGrip", "Default", n;
+        TPWrite "default now " \Num:=n;
+        ReadCfgData "/SYS/CAB_TASKS/T_ROB1", "MotionTask", b;
+        TPWrite "motion task now " \Bool:=b;
+        SaveCfgData "HOME:/EIO_saved.cfg", EIO_DOMAIN;
+        SaveCfgData "HOME:", \File:="sys_saved.cfg", SYS_DOMAIN;
+        SaveCfgData "HOME:/x.cfg", PROC_DOMAIN;
+        SaveCfgData "HOME:/nofolder/x.cfg", EIO_DOMAIN;
+        SaveCfgData "HOME:", EIO_DOMAIN;
+        SaveCfgData "usb9:/x.cfg", EIO_DOMAIN;
+        MakeDir "HOME:/all";
+        SaveCfgData "HOME:/all", ALL_DOMAINS;
+        TPWrite "done";
+    ERROR
+        IF ERRNO = ERR_CFG_NOTFND THEN
+            TPWrite "ERR_CFG_NOTFND";
+        ELSEIF ERRNO = ERR_CFG_ILLTYPE THEN
+            TPWrite "ERR_CFG_ILLTYPE";
+        ELSEIF ERRNO = ERR_CFG_OUTOFBOUNDS THEN
+            TPWrite "ERR_CFG_OUTOFBOUNDS";
+        ELSEIF ERRNO = ERR_CFG_LIMIT THEN
+            TPWrite "ERR_CFG_LIMIT";
+        ELSEIF ERRNO = ERR_CFG_ILL_DOMAIN THEN
+            TPWrite "ERR_CFG_ILL_DOMAIN";
+        ELSEIF ERRNO = ERR_CFG_WRITEFILE THEN
+            TPWrite "ERR_CFG_WRITEFILE";
+        ELSE
+            TPWrite "other error";
+        ENDIF
+        TRYNEXT;
+    ENDPROC
+ENDMODULE
+"#;
+
+#[test]
+fn read_write_and_save_configuration_data() {
+    let dir = scratch("cfgdata");
+    write(
+        &dir,
+        &[
+            ("cell/SYSPAR/EIO.cfg", CFG_EIO),
+            ("cell/SYSPAR/SYS.cfg", CFG_SYS),
+            ("cell/RAPID/TASK1/PROGMOD/MainModule.mod", CFG_PROGRAM),
+        ],
+    );
+    let out = rapid_in(&dir, &["run", "--home", "home", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let expected = "\
+device d652
+default 1
+default as dnum 1
+motion task TRUE
+hidden FALSE
+on d652: diPart, next 1
+on d652: doGrip, next 2
+on d652: doLamp, next -1
+ERR_CFG_NOTFND
+ERR_CFG_NOTFND
+ERR_CFG_NOTFND
+ERR_CFG_NOTFND
+ERR_CFG_ILLTYPE
+ERR_CFG_ILLTYPE
+ERR_CFG_OUTOFBOUNDS
+ERR_CFG_OUTOFBOUNDS
+ERR_CFG_ILLTYPE
+ERR_CFG_LIMIT
+ERR_CFG_NOTFND
+default now 0
+motion task now FALSE
+ERR_CFG_ILL_DOMAIN
+ERR_CFG_WRITEFILE
+ERR_CFG_WRITEFILE
+ERR_CFG_WRITEFILE
+done
+";
+    assert_eq!(text(&out.stdout), expected);
+    // One value changed, one replaced, one attribute added; every other byte as read.
+    let saved = fs::read_to_string(dir.join("home/HOME/EIO_saved.cfg")).expect("saved EIO");
+    let changed = CFG_EIO
+        .replace("-Access \"All\" -Default 1", "-Access \"ReadOnly\" -Default 0")
+        .replace("-Name \"diVirtual\" -SignalType \"DI\"", "-Name \"diVirtual\" -SignalType \"DI\" -Access \"All\"");
+    assert_eq!(saved, changed);
+    let sys = fs::read_to_string(dir.join("home/HOME/sys_saved.cfg")).expect("saved SYS");
+    assert_eq!(sys, CFG_SYS.replace(" -MotionTask", ""));
+    assert_eq!(fs::read_to_string(dir.join("home/HOME/all/EIO.cfg")).expect("all EIO"), changed);
+    assert!(dir.join("home/HOME/all/SYS.cfg").is_file());
+    // The backup itself is never written.
+    assert_eq!(fs::read_to_string(dir.join("cell/SYSPAR/EIO.cfg")).expect("EIO"), CFG_EIO);
+}

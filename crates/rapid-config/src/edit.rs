@@ -40,6 +40,32 @@ impl CfgFile {
     }
 }
 
+impl CfgFile {
+    /// The file's text with flag `attr` added at the end of an instance; `None` when
+    /// the instance has it already.
+    pub fn with_flag(&self, section: usize, instance: usize, attr: &str) -> Result<Option<String>, EditError> {
+        let inst = self.sections.get(section).and_then(|s| s.instances.get(instance)).ok_or(EditError::NoInstance)?;
+        if inst.has(attr) {
+            return Ok(None);
+        }
+        let end = inst.span.end;
+        Ok(Some(format!("{} -{attr}{}", &self.text[..end], &self.text[end..])))
+    }
+
+    /// The file's text without attribute `attr` of an instance (and the blanks before
+    /// it on its line), e.g. a flag switched off. `None` when the instance lacks it.
+    pub fn without_attr(&self, section: usize, instance: usize, attr: &str) -> Result<Option<String>, EditError> {
+        let inst = self.sections.get(section).and_then(|s| s.instances.get(instance)).ok_or(EditError::NoInstance)?;
+        let Some(found) = inst.attr(attr) else { return Ok(None) };
+        let end = found.value.as_ref().map_or(found.name_span.end, |v| v.span.end);
+        let before = &self.text[..found.name_span.start];
+        let start = before.trim_end_matches([' ', '\t']).len();
+        // The first item of the instance keeps its indentation.
+        let start = if start == 0 || self.text[..start].ends_with('\n') { found.name_span.start } else { start };
+        Ok(Some(format!("{}{}", &self.text[..start], &self.text[end..])))
+    }
+}
+
 /// A value as the file writes it: in quotes when it was quoted, or when it is empty or
 /// holds blanks (a bare value ends at the first blank).
 fn format_value(value: &str, quoted: bool) -> String {

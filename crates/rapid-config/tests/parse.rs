@@ -259,3 +259,14 @@ fn moc_robots() {
     assert_eq!(robots.len(), 1);
     assert_eq!((robots[0].name.as_str(), robots[0].robot_type.as_deref()), ("ROB_1", Some("ROB1")));
 }
+
+#[test]
+fn removing_a_flag_keeps_the_rest() {
+    let file = fixture("sys.cfg");
+    let (section, instance) = rapid_config::find_named(&file, "CAB_TASKS", "T_ROB1").expect("task");
+    let edited = file.with_value(section, instance, "Entry", "go").expect("edit");
+    let file = parse(&edited);
+    let edited = file.without_attr(section, instance, "MotionTask").expect("edit").expect("present");
+    assert_eq!(edited, file.text.replace(" -MotionTask", ""));
+    assert_eq!(file.without_attr(section, instance, "Hidden"), Ok(None));
+}

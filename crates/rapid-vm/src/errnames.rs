@@ -87,4 +87,11 @@ errors! {
     LoadNoInUse = "ERR_LOADNO_INUSE",
     LoadNoNoUse = "ERR_LOADNO_NOUSE",
     UnknownLoad = "ERR_UNKPROC",
+    // Configuration data (§1.17).
+    CfgIllType = "ERR_CFG_ILLTYPE",
+    CfgIllDomain = "ERR_CFG_ILL_DOMAIN",
+    CfgLimit = "ERR_CFG_LIMIT",
+    CfgNotFound = "ERR_CFG_NOTFND",
+    CfgOutOfBounds = "ERR_CFG_OUTOFBOUNDS",
+    CfgWriteFile = "ERR_CFG_WRITEFILE",
 }

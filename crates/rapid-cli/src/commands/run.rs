@@ -37,6 +37,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         Err(err) => return report_load_error(err, &inputs.modules),
     };
     configure_files(&mut loaded, args, &inputs.modules);
+    loaded.vm.resources_mut().cfgdata.set_config(inputs.syspar.clone());
     let answers = match &args.tp_input {
         Some(path) => {
             let text = std::fs::read_to_string(path)

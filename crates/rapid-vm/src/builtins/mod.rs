@@ -6,6 +6,7 @@
 mod argname;
 mod bits;
 mod calendar;
+pub mod cfgdata;
 mod clock;
 mod dialogs;
 mod dnheader;
@@ -102,6 +103,8 @@ pub struct Resources {
     pub modules: modules::ModuleState,
     /// Rand's generator (kept across PP to Main: the sequence goes on).
     pub random: random::RandomState,
+    /// The system parameters the run was started with (kept at PP to Main).
+    pub cfgdata: cfgdata::CfgState,
 }
 
 impl Resources {
@@ -224,6 +227,7 @@ static FAMILIES: &[Entries] = &[
     modules::ENTRIES,
     random::ENTRIES,
     spy::ENTRIES,
+    cfgdata::ENTRIES,
 ];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =
