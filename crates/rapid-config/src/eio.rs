@@ -176,16 +176,12 @@ pub fn read(file: &CfgFile) -> Eio {
             eio.signals.push(signal);
         }
     }
+    let mut cross_errors = Vec::new();
     for inst in file.instances("EIO_CROSS") {
-        if let Some(cross) = cross(inst) {
-            eio.cross.push(cross);
-        }
+        check_cross(inst, &eio, &mut cross_errors);
+        eio.cross.extend(cross(inst));
     }
-    let mut errors = Vec::new();
-    for inst in file.instances("EIO_CROSS") {
-        check_cross(inst, &eio, &mut errors);
-    }
-    eio.errors.extend(errors);
+    eio.errors.append(&mut cross_errors);
     // Findings carry the line of their own span (a value may sit on a continuation line).
     for error in &mut eio.errors {
         error.line = file.line_of(error.span.start);

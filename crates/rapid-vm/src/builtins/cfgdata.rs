@@ -225,6 +225,14 @@ fn write_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
             format!("attribute `{attr_name}` of `{path}` is a {}, CfgData is a {}", kind_name(kind), kind_name(wanted));
         return Err(ctx.error(Err::CfgIllType, message));
     }
+    let number = match &value {
+        Value::Num(n) => Some(f64::from(*n)),
+        Value::Dnum(d) => Some(*d),
+        _ => None,
+    };
+    if number.is_some_and(|n| !n.is_finite()) {
+        return Err(ctx.error(Err::CfgLimit, "a configuration number must be finite"));
+    }
     let file = &ctx.resources.cfgdata.domains[found.domain].1;
     let (section, inst) = found.at;
     let edited = match &value {
@@ -234,9 +242,7 @@ fn write_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
             Ok(text) => Some(text),
             Err(_) => return Err(ctx.error(Err::CfgLimit, "a configuration string cannot hold `\"`")),
         },
-        Value::Num(n) => file.with_value(section, inst, &attr_name, &format_number(f64::from(*n))).ok(),
-        Value::Dnum(d) => file.with_value(section, inst, &attr_name, &format_number(*d)).ok(),
-        _ => None,
+        _ => number.and_then(|n| file.with_value(section, inst, &attr_name, &format_number(n)).ok()),
     };
     if let Some(text) = edited {
         ctx.resources.cfgdata.domains[found.domain].1 = rapid_config::parse(&text);
