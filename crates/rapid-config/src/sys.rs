@@ -40,6 +40,9 @@ pub struct Task {
     pub mechanical_unit_group: Option<String>,
     /// `-Hidden`: not shown on the pendant.
     pub hidden: bool,
+    /// `-TaskInForeground`: the task this one is in the background of (it runs only
+    /// while that task idles); none for a task at the top level.
+    pub foreground: Option<String>,
     pub line: u32,
 }
 
@@ -93,6 +96,16 @@ pub fn read(file: &CfgFile) -> Sys {
             error(file, &mut sys.errors, inst, format!("at most {MAX_TASKS} tasks; {extra} more are configured"));
         }
     }
+    for inst in file.instances("CAB_TASKS") {
+        let (Some(name), Some(value)) = (inst.name(), inst.attr("TaskInForeground").and_then(|a| a.value.as_ref()))
+        else {
+            continue;
+        };
+        if !value.text.is_empty() && sys.task(&value.text).is_none() {
+            let message = format!("task `{name}` runs in the background of `{}`, which is not a task", value.text);
+            sys.errors.push(CfgError { line: file.line_of(value.span.start), span: value.span.clone(), message });
+        }
+    }
     for inst in file.instances("CAB_TASK_MODULES") {
         let Some(path) = inst.value("File") else {
             error(file, &mut sys.errors, inst, "a task module without `-File`".to_owned());
@@ -141,6 +154,7 @@ fn task(file: &CfgFile, inst: &Instance, errors: &mut Vec<CfgError>) -> Option<T
         motion_task: inst.has("MotionTask"),
         mechanical_unit_group: inst.value("UseMechanicalUnitGroup").map(str::to_owned),
         hidden: inst.has("Hidden"),
+        foreground: inst.value("TaskInForeground").filter(|t| !t.is_empty()).map(str::to_owned),
         line: inst.line,
     })
 }

@@ -230,6 +230,7 @@ fn sys_tasks_and_modules() {
     assert_eq!(logger.task_type, sys::TaskType::SemiStatic);
     assert_eq!((logger.entry.as_str(), logger.trust_level.as_deref()), ("log_main", Some("None")));
     assert!(!logger.motion_task);
+    assert_eq!((logger.foreground.as_deref(), rob.foreground.as_deref()), (Some("T_ROB1"), None));
     assert_eq!(sys.modules.len(), 2);
     assert!(sys.modules[0].shared && !sys.modules[0].all_tasks);
     assert_eq!(sys.modules[1].module.as_deref(), Some("user"));
@@ -238,7 +239,10 @@ fn sys_tasks_and_modules() {
 
 #[test]
 fn sys_findings() {
-    let file = parse("SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n  -Name \"T1\" -Type \"DYNAMIC\"\n\n  -Name \"t1\"\n\n  -Type \"NORMAL\"\n");
+    let file = parse(
+        "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n  -Name \"T1\" -Type \"DYNAMIC\"\n\n  -Name \"t1\"\n\n  -Type \"NORMAL\"\n\n  \
+         -Name \"T2\" -TaskInForeground \"T9\"\n",
+    );
     let sys = sys::read(&file);
     let found: Vec<(u32, &str)> = sys.errors.iter().map(|e| (e.line, e.message.as_str())).collect();
     assert_eq!(
@@ -247,6 +251,7 @@ fn sys_findings() {
             (5, "task `T1`: unknown type `DYNAMIC` (NORMAL, STATIC or SEMISTATIC)"),
             (7, "task `t1` is configured twice"),
             (9, "a task without `-Name`"),
+            (11, "task `T2` runs in the background of `T9`, which is not a task"),
         ]
     );
 }
