@@ -52,6 +52,10 @@ pub fn parse(text: &str) -> CfgFile {
         reader.seen_content = true;
         idx += 1;
     }
+    if !reader.seen_content {
+        // An empty file says nothing: not even which domain it configures.
+        reader.error(0..0, MISSING_HEADER);
+    }
     reader.file
 }
 

@@ -275,3 +275,40 @@ fn removing_a_flag_keeps_the_rest() {
     assert_eq!(edited, file.text.replace(" -MotionTask", ""));
     assert_eq!(file.without_attr(section, instance, "Hidden"), Ok(None));
 }
+
+#[test]
+fn an_empty_file_lacks_its_header() {
+    for text in ["", "\n\n   \n"] {
+        let file = parse(text);
+        assert_eq!(file.errors.len(), 1, "{text:?}");
+        assert_eq!(file.errors[0].line, 1);
+        assert!(file.errors[0].message.contains("header"));
+    }
+}
+
+#[test]
+fn never_panics_on_prefixes_or_odd_text() {
+    let mut texts: Vec<String> =
+        ["-", "\"", "\\", "-a\\", "#\n-\n", "X:\n-a \"", "EIO:\n-\\\n\\\n", ":::\n-1 -2", "É:\n -é \"é\"\\\n"]
+            .iter()
+            .map(|t| t.to_string())
+            .collect();
+    for name in ["eio_rw6.cfg", "eio_rw5.cfg", "sys.cfg"] {
+        let text = fixture(name).text;
+        texts.extend(text.char_indices().map(|(i, _)| text[..i].to_owned()));
+    }
+    for text in &texts {
+        let file = parse(text);
+        let _ = (eio::read(&file), sys::read(&file), moc::robots(&file));
+        for (si, section) in file.sections.iter().enumerate() {
+            for ii in 0..section.instances.len() {
+                let _ = file.with_value(si, ii, "Name", "x y");
+                let _ = file.with_flag(si, ii, "Flag");
+                let _ = file.without_attr(si, ii, "Name");
+            }
+        }
+        for error in &file.errors {
+            assert!(error.span.start <= error.span.end && error.span.end <= text.len(), "{text:?}: {error:?}");
+        }
+    }
+}
