@@ -182,6 +182,7 @@ pub fn read(file: &CfgFile) -> Eio {
         eio.cross.extend(cross(inst));
     }
     eio.errors.append(&mut cross_errors);
+    check_loops(file, &mut eio);
     // Findings carry the line of their own span (a value may sit on a continuation line).
     for error in &mut eio.errors {
         error.line = file.line_of(error.span.start);
@@ -342,6 +343,43 @@ fn check_cross(inst: &Instance, eio: &Eio, errors: &mut Vec<CfgError>) {
         if is_oper && !["AND", "OR"].contains(&value.text.to_ascii_uppercase().as_str()) {
             let message = format!("cross-connection operator `{}` is neither AND nor OR", value.text);
             errors.push(CfgError { line: inst.line, span: value.span.clone(), message });
+        }
+    }
+}
+
+/// A cross-connection whose result drives, through a chain of others, one of its own
+/// actors is a loop, which the controller refuses to start with (issue 5, item 2).
+fn check_loops(file: &CfgFile, eio: &mut Eio) {
+    let lower = |s: &str| s.to_ascii_lowercase();
+    // For each result signal, the actors that drive it.
+    let drives: Vec<(String, Vec<String>)> =
+        eio.cross.iter().map(|c| (lower(&c.result), c.actors.iter().map(|a| lower(&a.signal)).collect())).collect();
+    let instances: Vec<&Instance> = file.instances("EIO_CROSS").filter(|i| cross(i).is_some()).collect();
+    for (idx, (result, _)) in drives.iter().enumerate() {
+        // Walk back from the result's actors; reaching the result again is a loop.
+        let mut stack: Vec<&str> = drives[idx].1.iter().map(String::as_str).collect();
+        let mut seen: Vec<&str> = Vec::new();
+        let mut looped = false;
+        while let Some(signal) = stack.pop() {
+            if signal == result {
+                looped = true;
+                break;
+            }
+            if seen.contains(&signal) {
+                continue;
+            }
+            seen.push(signal);
+            for (other, actors) in &drives {
+                if other == signal {
+                    stack.extend(actors.iter().map(String::as_str));
+                }
+            }
+        }
+        if looped {
+            let Some(inst) = instances.get(idx) else { continue };
+            let message =
+                format!("cross-connections loop: `{}` is driven, through them, by itself", eio.cross[idx].result);
+            push(&mut eio.errors, inst, value_span(inst, "Res"), message);
         }
     }
 }

@@ -312,3 +312,47 @@ fn never_panics_on_prefixes_or_odd_text() {
         }
     }
 }
+
+#[test]
+fn cross_connection_loops() {
+    let text = "\
+EIO:CFG_1.0:6:1::
+#
+EIO_SIGNAL:
+
+      -Name \"a\" -SignalType \"DI\"
+
+      -Name \"b\" -SignalType \"DI\"
+
+      -Name \"c\" -SignalType \"DI\"
+
+      -Name \"d\" -SignalType \"DI\"
+#
+EIO_CROSS:
+
+      -Res \"b\" -Act1 \"a\"
+
+      -Res \"c\" -Act1 \"b\" -Oper1 \"OR\" -Act2 \"d\"
+
+      -Res \"a\" -Act1 \"c\"
+
+      -Res \"d\" -Act1 \"a\" -Act1_invert
+";
+    let eio = eio::read(&parse(text));
+    let found: Vec<(u32, &str)> = eio.errors.iter().map(|e| (e.line, e.message.as_str())).collect();
+    assert_eq!(
+        found,
+        [
+            (15, "cross-connections loop: `b` is driven, through them, by itself"),
+            (17, "cross-connections loop: `c` is driven, through them, by itself"),
+            (19, "cross-connections loop: `a` is driven, through them, by itself"),
+            (21, "cross-connections loop: `d` is driven, through them, by itself"),
+        ]
+    );
+    // A chain without a loop is fine.
+    let chain = text
+        .replace("-Res \"a\" -Act1 \"c\"", "-Res \"a\" -Act1 \"d\" -Act1_invert")
+        .replace("-Res \"d\" -Act1 \"a\" -Act1_invert", "");
+    let eio = eio::read(&parse(&chain));
+    assert!(eio.errors.is_empty(), "{:?}", eio.errors);
+}
