@@ -196,7 +196,7 @@ const CFG_SYS: &str = "SYS:CFG_1.0:6:0::
 #
 CAB_TASKS:
 
-      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask 
+      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\x20
 ";
 
 const CFG_PROGRAM: &str = r#"MODULE MainModule
