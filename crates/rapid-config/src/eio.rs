@@ -152,6 +152,8 @@ pub fn read(file: &CfgFile) -> Eio {
     let mut eio = Eio::default();
     for section in &file.sections {
         let kind = section.name.to_ascii_uppercase();
+        // uncertain: RobotWare 6 names every device type `<NETWORK>_DEVICE` (public
+        // backups show DEVICENET_DEVICE, PROFINET_INTERNAL_ANYBUS_DEVICE, …).
         if kind == "EIO_UNIT" || kind.ends_with("_DEVICE") {
             for inst in &section.instances {
                 if let Some(name) = inst.name() {
@@ -231,6 +233,7 @@ fn signal(inst: &Instance, errors: &mut Vec<CfgError>) -> Option<Signal> {
             Vec::new()
         }
     };
+    // uncertain: the controller refuses a DI/DO mapped on more than one bit.
     if signal_type.is_digital() && bits.len() > 1 {
         let message = format!("signal `{name}`: a digital signal maps one bit, this map names {}", bits.len());
         push(errors, inst, value_span(inst, map_attr), message);

@@ -51,6 +51,8 @@ struct InstancePath {
     key: (String, String),
 }
 
+// uncertain: a path without the leading `/` or with another number of parts is not
+// found (ERR_CFG_NOTFND) rather than refused some other way.
 fn parse_path(text: &str) -> Option<InstancePath> {
     let parts: Vec<&str> = text.strip_prefix('/')?.split('/').collect();
     let (domain, type_name, key) = match parts.as_slice() {
@@ -113,6 +115,8 @@ fn find(ctx: &mut Ctx<'_>, path_text: &str, list_no: Option<&Value>) -> Result<F
     let Some(list_arg) = list_no.filter(|a| present(Some(*a))) else {
         return Ok(Found { domain, at: found[0], next: None });
     };
+    // uncertain: a \ListNo that is negative, fractional or past the last match raises
+    // ERR_CFG_OUTOFBOUNDS; the manual's loop ends at END_OF_LIST without raising.
     let n = ctx.num(list_arg)?;
     if n.fract() != 0.0 || n < 0.0 || n >= found.len() as f64 {
         let message = format!("\\ListNo {n} is outside 0..{} for `{path_text}`", found.len() - 1);
@@ -230,6 +234,8 @@ fn write_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         Value::Dnum(d) => Some(*d),
         _ => None,
     };
+    // uncertain: without the parameter schema's limits, ERR_CFG_LIMIT is raised only for
+    // what no file can hold: a number that is not finite, a string with `"`.
     if number.is_some_and(|n| !n.is_finite()) {
         return Err(ctx.error(Err::CfgLimit, "a configuration number must be finite"));
     }
