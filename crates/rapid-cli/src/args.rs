@@ -24,9 +24,10 @@ pub(crate) enum Command {
 
 #[derive(Debug, Args)]
 pub(crate) struct RunArgs {
-    /// The routine to start (a PROC without parameters).
-    #[arg(long, default_value = "main")]
-    pub(crate) entry: String,
+    /// The routine to start (a PROC without parameters). Default: the task's `-Entry`
+    /// in a backup's SYS.cfg, else `main`.
+    #[arg(long)]
+    pub(crate) entry: Option<String>,
 
     /// Stop with an error after this many executed instructions.
     #[arg(long, value_name = "N")]

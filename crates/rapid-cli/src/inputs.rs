@@ -1,11 +1,13 @@
 //! Turning the PATHs of the command line into the files of one task: module files,
-//! folders of modules and `.pgf` program files.
+//! folders of modules, `.pgf` program files and controller backup folders (whose
+//! `SYSPAR/*.cfg` configuration is read too).
 //!
 //! A PATH that cannot be used at all (missing, unreadable, an unknown extension, a
 //! folder without modules) is a tool failure. A module that a `.pgf` lists but that
 //! cannot be read is a finding in the program file (E0130), so the user sees where the
 //! entry is.
 
+mod backup;
 mod program_file;
 
 use std::fs;
@@ -13,10 +15,12 @@ use std::io;
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context};
-use rapid_sema::{Code, Diagnostic, SourceInput};
+use rapid_config::{eio, sys, CfgError, CfgFile};
+use rapid_sema::{Code, Diagnostic, PredefinedData, SourceInput};
 use rapid_syntax::Span;
 use rustc_hash::FxHashSet;
 
+pub(crate) use self::backup::TaskFolder;
 use self::program_file::{Entry, ProgramFile};
 
 /// Extensions of RAPID module files, compared without regard to case.
@@ -30,6 +34,14 @@ pub(crate) struct Inputs {
     /// Program files that list modules. They are not given to `check`; they are kept so
     /// that a diagnostic about one of their entries can show the entry.
     pub(crate) programs: Vec<SourceInput>,
+    /// A backup's configuration files (`SYSPAR/*.cfg`), kept for their diagnostics.
+    pub(crate) configs: Vec<SourceInput>,
+    /// The parsed configuration files with their domains (`EIO`), for ReadCfgData.
+    pub(crate) syspar: Vec<(String, CfgFile)>,
+    /// The data the configuration declares: the signals of `EIO.cfg`.
+    pub(crate) predefined: Vec<PredefinedData>,
+    /// The task read from a backup, when a PATH was one.
+    pub(crate) task: Option<TaskFolder>,
     /// Diagnostics found while reading the inputs. Their `file` indexes [`Inputs::table`].
     pub(crate) diagnostics: Vec<Diagnostic>,
     /// For each file of [`Inputs::table`], its place in the order the files were found,
@@ -38,9 +50,10 @@ pub(crate) struct Inputs {
 }
 
 impl Inputs {
-    /// Every file, modules first, then program files: the table diagnostics index.
+    /// Every file, modules first, then program files, then configuration files: the
+    /// table diagnostics index.
     pub(crate) fn table(&self) -> Vec<&SourceInput> {
-        self.modules.iter().chain(&self.programs).collect()
+        self.modules.iter().chain(&self.programs).chain(&self.configs).collect()
     }
 }
 
@@ -73,6 +86,7 @@ fn file_kind(path: &Path) -> Option<FileKind> {
 enum FileRef {
     Module(usize),
     Program(usize),
+    Config(usize),
 }
 
 #[derive(Debug, Default)]
@@ -83,6 +97,12 @@ struct Collector {
     order: Vec<FileRef>,
     /// Diagnostics whose `file` is an index into `programs`.
     program_diagnostics: Vec<Diagnostic>,
+    configs: Vec<SourceInput>,
+    predefined: Vec<PredefinedData>,
+    syspar: Vec<(String, CfgFile)>,
+    task: Option<TaskFolder>,
+    /// Diagnostics whose `file` is an index into `configs`.
+    config_diagnostics: Vec<Diagnostic>,
     /// Canonical paths already read, so a file named twice is checked once.
     seen: FxHashSet<PathBuf>,
 }
@@ -92,6 +112,10 @@ impl Collector {
         let shown = path.display();
         let meta = fs::metadata(path).with_context(|| format!("cannot read `{shown}`"))?;
         if meta.is_dir() {
+            let tasks = backup::task_folders(path);
+            if !tasks.is_empty() {
+                return self.add_backup(path, &tasks);
+            }
             return self.add_folder(path);
         }
         match file_kind(path) {
@@ -124,6 +148,59 @@ impl Collector {
             self.add_module(&path).with_context(|| format!("cannot read `{shown}`"))?;
         }
         Ok(())
+    }
+
+    /// Adds a backup: its configuration, then the modules of its T_ROB1 task.
+    fn add_backup(&mut self, folder: &Path, tasks: &[(u32, PathBuf)]) -> anyhow::Result<()> {
+        let mut sys = None;
+        for path in backup::config_files(folder) {
+            let shown = path.display();
+            let bytes = fs::read(&path).with_context(|| format!("cannot read `{shown}`"))?;
+            let config_idx = self.configs.len();
+            self.order.push(FileRef::Config(config_idx));
+            self.configs.push(SourceInput::from_bytes(shown.to_string(), bytes));
+            let parsed = rapid_config::parse(&self.configs[config_idx].text);
+            self.config_findings(config_idx, &parsed.errors);
+            let domain = domain(&parsed, &path);
+            match domain.as_str() {
+                "EIO" => {
+                    let eio = eio::read(&parsed);
+                    self.config_findings(config_idx, &eio.errors);
+                    self.predefined.extend(eio.signals.iter().map(|signal| PredefinedData {
+                        name: signal.name.clone(),
+                        type_name: signal.signal_type.rapid_type().to_owned(),
+                    }));
+                }
+                "SYS" => {
+                    let view = sys::read(&parsed);
+                    self.config_findings(config_idx, &view.errors);
+                    sys = Some(view);
+                }
+                _ => {}
+            }
+            self.syspar.push((domain, parsed));
+        }
+        let shown = folder.display();
+        let Some(task) = backup::choose_task(folder, tasks, sys.as_ref()) else {
+            bail!("backup `{shown}` holds no RAPID/TASKn folder");
+        };
+        let modules = backup::task_modules(&task.folder);
+        if modules.is_empty() {
+            bail!("backup `{shown}`: task folder `{}` holds no modules in PROGMOD or SYSMOD", task.folder.display());
+        }
+        for path in modules {
+            let shown = path.display();
+            self.add_module(&path).with_context(|| format!("cannot read `{shown}`"))?;
+        }
+        self.task = Some(task);
+        Ok(())
+    }
+
+    fn config_findings(&mut self, config_idx: usize, errors: &[CfgError]) {
+        self.config_diagnostics.extend(errors.iter().map(|error| {
+            let span = Span::new(error.span.start, error.span.end);
+            Diagnostic::new(config_idx, Code::ConfigFile, span, error.message.clone())
+        }));
     }
 
     fn add_module(&mut self, path: &Path) -> io::Result<()> {
@@ -187,11 +264,13 @@ impl Collector {
 
     fn finish(self) -> Inputs {
         let n_modules = self.modules.len();
+        let n_programs = self.programs.len();
         let table_idx = |file: FileRef| match file {
             FileRef::Module(idx) => idx,
             FileRef::Program(idx) => n_modules + idx,
+            FileRef::Config(idx) => n_modules + n_programs + idx,
         };
-        let mut rank = vec![0; n_modules + self.programs.len()];
+        let mut rank = vec![0; n_modules + n_programs + self.configs.len()];
         for (order_idx, &file) in self.order.iter().enumerate() {
             rank[table_idx(file)] = order_idx;
         }
@@ -199,8 +278,30 @@ impl Collector {
             .program_diagnostics
             .into_iter()
             .map(|diag| Diagnostic { file: table_idx(FileRef::Program(diag.file)), ..diag })
+            .chain(
+                self.config_diagnostics
+                    .into_iter()
+                    .map(|diag| Diagnostic { file: table_idx(FileRef::Config(diag.file)), ..diag }),
+            )
             .collect();
-        Inputs { modules: self.modules, programs: self.programs, diagnostics, rank }
+        Inputs {
+            modules: self.modules,
+            programs: self.programs,
+            configs: self.configs,
+            predefined: self.predefined,
+            syspar: self.syspar,
+            task: self.task,
+            diagnostics,
+            rank,
+        }
+    }
+}
+
+/// The domain of a configuration file: its header's, else its file name's (`EIO.cfg`).
+fn domain(file: &CfgFile, path: &Path) -> String {
+    match file.domain() {
+        Some(domain) => domain.to_ascii_uppercase(),
+        None => path.file_stem().and_then(|s| s.to_str()).unwrap_or("").to_ascii_uppercase(),
     }
 }
 

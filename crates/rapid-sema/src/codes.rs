@@ -2,7 +2,7 @@
 //!
 //! `E…` codes are errors, `W…` codes are warnings. The first two digits group them:
 //! 01 lexical and syntax, 02 names and scopes, 03 types and expressions, 04 routine
-//! calls, 05 declarations, 06 flow and handlers.
+//! calls, 05 declarations, 06 flow and handlers, 07 system configuration.
 
 macro_rules! diagnostic_codes {
     ($( $code:literal $severity:ident $name:ident : $summary:literal ; )*) => {
@@ -140,6 +140,9 @@ diagnostic_codes! {
     "E0608" Error   RaiseWithoutNumber:        "RAISE without an error number outside an ERROR handler";
     "E0609" Error   ConnectTargetNotVariable:  "CONNECT to something that is not an intnum variable";
     "E0610" Error   BadHandlerErrorNumber:     "an ERROR handler number list entry that is not an errnum constant";
+
+    // System configuration (a backup's SYSPAR/*.cfg, read by rapid-cli).
+    "E0701" Error   ConfigFile:                "a line of a .cfg configuration file that cannot be read, or a configuration the controller refuses";
 }
 
 #[cfg(test)]

@@ -83,6 +83,34 @@ impl Checker<'_> {
         }
     }
 
+    /// Declares the configured data (signals of `EIO.cfg`) as predefined VAR data. A
+    /// name the catalogue already has keeps its catalogue meaning; a type name the
+    /// catalogue lacks is skipped (the caller passes only built-in types).
+    // uncertain: on a controller a signal named like predefined data is refused by the
+    // configuration; here the catalogue's meaning wins.
+    pub(crate) fn declare_predefined(&mut self, extra: &[crate::PredefinedData], interner: &mut Interner) {
+        for data in extra {
+            let Some(Def::Type(ty)) = self.scopes.builtins.get(&interner.intern(&data.type_name)).copied() else {
+                continue;
+            };
+            let sym = interner.intern(&data.name);
+            if self.scopes.builtins.contains_key(&sym) {
+                continue;
+            }
+            self.datas.push(DataInfo {
+                display: data.name.clone(),
+                ty,
+                rank: 0,
+                dims: [0; 3],
+                kind: DataKind::Var,
+                const_value: None,
+                optional: false,
+                origin: DeclOrigin::CONFIGURED,
+            });
+            self.scopes.builtins.insert(sym, Def::Data(self.datas.len() as u32 - 1));
+        }
+    }
+
     fn find_core_types(&mut self, interner: &mut Interner) {
         let mut find = |name: &str| match self.scopes.builtins.get(&interner.intern(name)) {
             Some(Def::Type(ty)) => *ty,

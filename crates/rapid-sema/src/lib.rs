@@ -38,6 +38,17 @@ use collect::ModuleRef;
 pub struct Options {
     /// Stop after parsing: report lexical and syntax errors only.
     pub syntax_only: bool,
+    /// Data the system's configuration declares beyond the catalogue (the I/O signals
+    /// of `EIO.cfg`), known in the task like predefined data.
+    pub predefined: Vec<PredefinedData>,
+}
+
+/// One configured data object: a name and the name of its (built-in) type, such as
+/// `diPartReady` of `signaldi`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct PredefinedData {
+    pub name: String,
+    pub type_name: String,
 }
 
 /// Checks the modules of one task (one program) together and returns every
@@ -115,7 +126,7 @@ pub fn analyze(files: &[SourceInput], options: &Options) -> Analysis {
             }
         }
     } else {
-        let ck = check_semantics(files, &modules, catalogue, &mut interner, &mut syntax_errors, &mut diags);
+        let ck = check_semantics(files, &modules, catalogue, options, &mut interner, &mut syntax_errors, &mut diags);
         program = Some(Program {
             interner,
             types: ck.types,
@@ -155,6 +166,7 @@ fn check_semantics<'a>(
     files: &'a [SourceInput],
     modules: &[ModuleRef<'_>],
     catalogue: &rapid_lib::LoadedCatalogue,
+    options: &Options,
     interner: &mut Interner,
     syntax_errors: &mut [Vec<SyntaxError>],
     diags: &mut Vec<Diagnostic>,
@@ -166,6 +178,7 @@ fn check_semantics<'a>(
     };
     let mut ck = Checker::new(files, known);
     ck.load_builtins(catalogue, interner);
+    ck.declare_predefined(&options.predefined, interner);
     ck.declare_modules(modules);
     check_module_items(&mut ck, modules);
     for (idx, m) in modules.iter().enumerate() {

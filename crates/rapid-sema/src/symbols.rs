@@ -50,6 +50,12 @@ pub enum DeclOrigin {
     Routine,
 }
 
+impl DeclOrigin {
+    /// Data the system configuration declares ([`crate::Options::predefined`]): a
+    /// built-in that no catalogue item holds, so it starts with its type's default.
+    pub const CONFIGURED: DeclOrigin = DeclOrigin::Builtin(usize::MAX);
+}
+
 #[derive(Debug, Clone)]
 pub struct ParamInfo {
     pub name: Symbol,

@@ -82,7 +82,7 @@ fn encrypted_modules_are_reported_not_parsed() {
 fn syntax_only_skips_semantic_checks() {
     let src = "MODULE m\nPROC main()\n  undefined_thing := 1;\n  x := ;\nENDPROC\nENDMODULE";
     let inputs = vec![SourceInput::from_text("m.mod", src)];
-    let diags = check(&inputs, &Options { syntax_only: true });
+    let diags = check(&inputs, &Options { syntax_only: true, ..Options::default() });
     assert_eq!(diags.iter().map(|d| d.code.as_str()).collect::<Vec<_>>(), vec!["E0120"]);
     let all = check(&inputs, &Options::default());
     assert_eq!(all.iter().map(|d| d.code.as_str()).collect::<Vec<_>>(), vec!["E0201", "E0120"]);
@@ -176,4 +176,25 @@ fn mutually_recursive_records_are_found_without_exponential_work() {
     let src = "MODULE m\nRECORD ra\n  rb x1;\n  rb x2;\n  rb x3;\n  rb x4;\nENDRECORD\nRECORD rb\n  ra y1;\n  ra y2;\n  ra y3;\n  ra y4;\nENDRECORD\nPROC main()\n  VAR ra v;\nENDPROC\nENDMODULE";
     let found = codes(&[("m.mod", src)]);
     assert_eq!(found, vec![("m.mod".into(), "E0509", 2), ("m.mod".into(), "E0509", 8)]);
+}
+
+#[test]
+fn configured_data_is_known_like_predefined_data() {
+    let main = "MODULE MainModule\nPROC main()\n  IF diPartReady = 1 THEN\n    Set doGrip;\n  ENDIF\n  \
+                reg1 := goRecipe;\n  diPartReady := 1;\nENDPROC\nENDMODULE";
+    let inputs = [SourceInput::from_text("main.mod", main)];
+    let predefined =
+        [("diPartReady", "signaldi"), ("DOGRIP", "signaldo"), ("goRecipe", "signalgo"), ("junk", "nosuchtype")]
+            .iter()
+            .map(|(name, ty)| rapid_sema::PredefinedData { name: (*name).into(), type_name: (*ty).into() })
+            .collect();
+    let options = Options { predefined, ..Options::default() };
+    let found: Vec<(&str, u32)> = check(&inputs, &options)
+        .iter()
+        .map(|d| (d.code.as_str(), LineIndex::new(main).line_col(main, d.span.start).line))
+        .collect();
+    // A signal is semi-value data: it is read, never assigned (line 7).
+    assert_eq!(found, vec![("E0308", 7)]);
+    let without: Vec<&str> = check(&inputs, &Options::default()).iter().map(|d| d.code.as_str()).collect();
+    assert!(without.contains(&"E0201"), "{without:?}");
 }

@@ -94,4 +94,11 @@ errors! {
     AoLim = "ERR_AO_LIM",
     GoLim = "ERR_GO_LIM",
     SigNotValid = "ERR_SIG_NOT_VALID",
+    // Configuration data (§1.17).
+    CfgIllType = "ERR_CFG_ILLTYPE",
+    CfgIllDomain = "ERR_CFG_ILL_DOMAIN",
+    CfgLimit = "ERR_CFG_LIMIT",
+    CfgNotFound = "ERR_CFG_NOTFND",
+    CfgOutOfBounds = "ERR_CFG_OUTOFBOUNDS",
+    CfgWriteFile = "ERR_CFG_WRITEFILE",
 }

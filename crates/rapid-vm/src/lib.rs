@@ -52,7 +52,13 @@ pub struct Loaded {
 
 /// Checks, compiles and initialises the task made of `files`, ready to run `entry`.
 pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
-    let analysis = analyze(files, &Options::default());
+    load_with(files, entry, &Options::default())
+}
+
+/// [`load`] with checking options: the data the system configuration declares (the
+/// signals of a backup's `EIO.cfg`).
+pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Result<Loaded, LoadError> {
+    let analysis = analyze(files, options);
     if Program::has_errors(&analysis.diagnostics) {
         return Err(LoadError::Diagnostics(analysis.diagnostics));
     }
@@ -123,6 +129,13 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
     vm.set_data_names(module_data.map(named).collect());
     vm.resources_mut().symsearch = builtins::symsearch::catalog::task_symbols(&prog, &modules);
     vm.resources_mut().io.kinds = signal_kinds(&prog);
+    vm.resources_mut().io.configured = prog
+        .datas
+        .iter()
+        .enumerate()
+        .filter(|(_, data)| data.origin == DeclOrigin::CONFIGURED)
+        .map(|(idx, data)| (idx as u32, data.display.clone()))
+        .collect();
     vm.set_pers_globals(prog.datas.iter().map(|d| d.kind == rapid_sema::symbols::DataKind::Pers).collect());
     vm.set_program_sources(files.to_vec());
     let entry_idx = prog.interner.get(entry).and_then(|sym| prog.scopes.globals.get(&sym).map(|o| o.def));

@@ -12,7 +12,7 @@ use crate::render::{self, Files, Summary};
 
 pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
     let inputs = inputs::collect(&args.paths)?;
-    let options = Options { syntax_only: args.syntax_only };
+    let options = Options { syntax_only: args.syntax_only, predefined: inputs.predefined.clone() };
     let mut diagnostics = rapid_sema::check(&inputs.modules, &options);
     diagnostics.extend(inputs.diagnostics.iter().cloned());
 

@@ -9,10 +9,10 @@
 use std::io::{self, BufWriter, Write};
 use std::time::Duration;
 
-use rapid_sema::SourceInput;
+use rapid_sema::{Code, Options, Severity, SourceInput};
 use rapid_syntax::LineIndex;
 use rapid_vm::builtins::files::ModuleFile;
-use rapid_vm::{load, Exit, Host, LoadError};
+use rapid_vm::{load_with, Exit, Host, LoadError};
 
 use crate::args::RunArgs;
 use crate::commands::ExitStatus;
@@ -24,11 +24,30 @@ const SLICE: u64 = 1 << 16;
 
 pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     let inputs = inputs::collect(&args.paths)?;
-    let mut loaded = match load(&inputs.modules, &args.entry) {
+    if inputs.diagnostics.iter().any(|d| d.code == Code::ConfigFile && d.severity() == Severity::Error) {
+        return report_input_errors(&inputs);
+    }
+    let entry = match (&args.entry, inputs.task.as_ref().and_then(|t| t.entry.as_ref())) {
+        (Some(entry), _) | (None, Some(entry)) => entry.clone(),
+        (None, None) => "main".to_owned(),
+    };
+    let options = Options { predefined: inputs.predefined.clone(), ..Options::default() };
+    let mut loaded = match load_with(&inputs.modules, &entry, &options) {
         Ok(loaded) => loaded,
         Err(err) => return report_load_error(err, &inputs.modules),
     };
     configure_files(&mut loaded, args, &inputs.modules);
+    loaded.vm.resources_mut().cfgdata.set_config(inputs.syspar.clone());
+    if let Some((_, eio)) = inputs.syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("EIO")) {
+        match rapid_vm::builtins::io_config::io_system(&rapid_config::eio::read(eio)) {
+            Ok(system) => loaded.vm.install_io(system),
+            Err(message) => {
+                eprintln!("error: {message}");
+                eprintln!("the system has errors; it was not run");
+                return Ok(ExitStatus::Failure);
+            }
+        }
+    }
     let answers = match &args.tp_input {
         Some(path) => {
             let text = std::fs::read_to_string(path)
@@ -153,6 +172,17 @@ fn location(files: &[SourceInput], file: usize, offset: u32) -> (String, u32, u3
         }
         None => ("<predefined>".into(), 0, 0),
     }
+}
+
+/// Errors in a backup's configuration: the controller would not start, so nothing
+/// runs (the report shows every input finding, warnings and `.pgf` entries too).
+fn report_input_errors(inputs: &inputs::Inputs) -> anyhow::Result<ExitStatus> {
+    let table = inputs.table();
+    let summary = Summary::of(&inputs.diagnostics, table.len());
+    let mut out = io::stderr().lock();
+    render::human::render(&mut out, &Files::new(&table), &inputs.diagnostics, &summary)?;
+    writeln!(out, "the system has errors; it was not run")?;
+    Ok(ExitStatus::Failure)
 }
 
 fn report_load_error(err: LoadError, files: &[SourceInput]) -> anyhow::Result<ExitStatus> {

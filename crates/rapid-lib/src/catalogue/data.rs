@@ -587,6 +587,7 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data(r#"CONST cfgdomain PROC_DOMAIN := "PROC";"#, "Process configuration."),
     data(r#"CONST cfgdomain SIO_DOMAIN := "SIO";"#, "Serial communication configuration."),
     data(r#"CONST cfgdomain SYS_DOMAIN := "SYS";"#, "Controller configuration."),
+    data("CONST num END_OF_LIST := -1;", "ReadCfgData/WriteCfgData \\ListNo after the last matching instance."),
     // ---- motionprocessmode -------------------------------------------------------------------
     // uncertain: motionprocessmode values assumed.
     data("CONST motionprocessmode OPTIMAL_CYCLE_TIME_MODE := 1;", "Fastest cycle time."),

@@ -24,6 +24,24 @@ pub struct IoState {
     pub system: Option<IoSystem>,
     /// signaldi … signalgo as this program numbers them (set at load).
     pub kinds: Vec<(TypeId, SignalKind)>,
+    /// The signals of the I/O configuration as program data: (global, name).
+    pub configured: Vec<(u32, String)>,
+}
+
+impl IoState {
+    /// The value each configured signal's data holds: connected to its signal.
+    pub(crate) fn configured_values(&self) -> Vec<(u32, Value)> {
+        let Some(system) = &self.system else { return Vec::new() };
+        self.configured
+            .iter()
+            .filter_map(|(global, name)| {
+                let id = system.id(name)?;
+                let kind = system.def(id)?.kind;
+                let ty = self.kinds.iter().find(|(_, k)| *k == kind)?.0;
+                Some((*global, Value::Opaque(Box::new(Opaque { ty, state: OpaqueState::Handle(id) }))))
+            })
+            .collect()
+    }
 }
 
 /// The value of signal data, or `None` when it is not connected (ERR_NO_ALIASIO_DEF).

@@ -6,6 +6,7 @@
 mod argname;
 mod bits;
 mod calendar;
+pub mod cfgdata;
 mod clock;
 mod dialogs;
 mod dnheader;
@@ -13,6 +14,7 @@ mod events;
 pub mod files;
 mod geometry;
 pub mod io;
+pub mod io_config;
 mod math;
 mod matrix;
 pub mod modules;
@@ -105,6 +107,8 @@ pub struct Resources {
     pub random: random::RandomState,
     /// The task's I/O system (signals) and the RAPID types of the signal kinds.
     pub io: io::IoState,
+    /// The system parameters the run was started with (kept at PP to Main).
+    pub cfgdata: cfgdata::CfgState,
 }
 
 impl Resources {
@@ -240,6 +244,7 @@ static FAMILIES: &[Entries] = &[
     random::ENTRIES,
     io::ENTRIES,
     spy::ENTRIES,
+    cfgdata::ENTRIES,
 ];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =

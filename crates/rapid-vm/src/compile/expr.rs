@@ -98,26 +98,10 @@ impl RoutineCompiler<'_> {
     }
 
     /// Reading a signal: the signal data, then its value (ERR_NO_ALIASIO_DEF when no
-    /// AliasIO connected it, manual §1.9). Signals of the I/O configuration itself are
-    /// refused until `rapid run` reads configurations.
+    /// AliasIO connected it, manual §1.9; the configuration's own signals are connected
+    /// when the I/O system is installed).
     fn signal_read(&mut self, arena: &Arena, id: ExprId) -> Result<(), CompileError> {
         let span = arena.expr(id).span;
-        let mut root = id;
-        while let ExprKind::Index { base, .. } = arena.expr(root).kind {
-            root = base;
-        }
-        let declared_in_rapid = match arena.expr(root).kind {
-            ExprKind::Name(sym) => match self.resolve(sym) {
-                Some(Resolved::Global(idx)) => {
-                    !matches!(self.prog.datas[idx as usize].origin, rapid_sema::symbols::DeclOrigin::Builtin(_))
-                }
-                _ => true,
-            },
-            _ => true,
-        };
-        if !declared_in_rapid {
-            return Err(self.unsupported(span, "reading signals of the I/O configuration (issue 5)"));
-        }
         self.signal_as_data = true;
         self.expr(arena, id, None)?;
         let name = span.text(self.text).to_string();

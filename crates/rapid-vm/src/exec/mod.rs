@@ -203,6 +203,23 @@ impl Vm {
         }
     }
 
+    /// Installs the task's I/O system and connects the configuration's signals (their
+    /// program data) to it.
+    pub fn install_io(&mut self, system: rapid_io::IoSystem) {
+        self.resources.io.system = Some(system);
+        self.connect_configured_signals();
+    }
+
+    /// Configured signals are connected from the start, also after PP to Main
+    /// re-initialises the data.
+    fn connect_configured_signals(&mut self) {
+        for (global, value) in self.resources.io.configured_values() {
+            if let Some(slot) = self.storage.globals.get_mut(global as usize) {
+                *slot = value;
+            }
+        }
+    }
+
     /// The task's files, directories and sockets (to configure devices, or to close
     /// everything when the program ends).
     pub fn resources_mut(&mut self) -> &mut crate::builtins::Resources {
@@ -279,6 +296,7 @@ impl Vm {
             for (idx, value) in kept {
                 self.storage.globals[idx] = value;
             }
+            self.connect_configured_signals();
         }
         self.start_routine(entry);
         Ok(())

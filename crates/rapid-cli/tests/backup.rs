@@ -1,0 +1,364 @@
+//! Controller backup folders given to `rapid check` and `rapid run`: the T_ROB1 task's
+//! modules, the signals of `SYSPAR/EIO.cfg`, and `.cfg` findings with file and line.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn backups() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/check/backups")
+}
+
+/// A fresh, empty scratch folder for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("backup").join(name);
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    dir
+}
+
+/// `rapid ARGS…` run in `dir`, so messages hold relative paths.
+fn rapid_in(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rapid")).current_dir(dir).args(args).output().expect("run rapid")
+}
+
+fn write(root: &Path, files: &[(&str, &str)]) {
+    for (path, text) in files {
+        let path = root.join(path);
+        fs::create_dir_all(path.parent().expect("parent")).expect("folder");
+        fs::write(path, text).expect("write");
+    }
+}
+
+fn copy_dir(from: &Path, to: &Path) {
+    fs::create_dir_all(to).expect("folder");
+    for entry in fs::read_dir(from).expect("read folder") {
+        let entry = entry.expect("entry");
+        let target = to.join(entry.file_name());
+        if entry.path().is_dir() {
+            copy_dir(&entry.path(), &target);
+        } else {
+            fs::copy(entry.path(), target).expect("copy");
+        }
+    }
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+#[test]
+fn a_backup_checks_clean_with_its_configured_signals() {
+    let out = rapid_in(&backups(), &["check", "palletizer"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stdout));
+    // T_ROB1's three modules (TASK2 by backinfo.txt) and the three .cfg files.
+    assert_eq!(text(&out.stdout), "checked 6 files: no problems found\n");
+}
+
+#[test]
+fn the_task_folder_comes_from_backinfo_not_its_number() {
+    let dir = scratch("backinfo");
+    let sys =
+        "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      -Name \"T_LOGGER\"\n\n      -Name \"T_ROB1\" -Type \"NORMAL\"\n";
+    write(
+        &dir,
+        &[
+            (
+                "two/BACKINFO/backinfo.txt",
+                "#\n>>TASK1: (T_ROB1,,)\nPROGMOD\\Robot.mod @ \n\n>>TASK2: (T_LOGGER,,)\n\n>>EOF:\n",
+            ),
+            ("two/SYSPAR/SYS.cfg", sys),
+            (
+                "two/RAPID/TASK1/PROGMOD/Robot.mod",
+                "MODULE Robot\n  PROC main()\n    TPWrite \"robot\";\n  ENDPROC\nENDMODULE\n",
+            ),
+            (
+                "two/RAPID/TASK2/PROGMOD/Logger.mod",
+                "MODULE Logger\n  PROC main()\n    TPWrite \"logger\";\n  ENDPROC\nENDMODULE\n",
+            ),
+        ],
+    );
+    // SYS.cfg lists T_ROB1 second, but backinfo.txt says its folder is TASK1.
+    let out = rapid_in(&dir, &["run", "two"]);
+    assert_eq!(text(&out.stdout), "robot\n", "{}", text(&out.stderr));
+    // Without backinfo.txt the folder is the task's place in SYS.cfg.
+    fs::remove_dir_all(dir.join("two/BACKINFO")).expect("remove");
+    let out = rapid_in(&dir, &["run", "two"]);
+    assert_eq!(text(&out.stdout), "logger\n", "{}", text(&out.stderr));
+}
+
+#[test]
+fn cfg_findings_have_file_and_line_and_unknown_signals_are_undefined() {
+    let dir = scratch("broken");
+    copy_dir(&backups().join("palletizer"), &dir.join("b"));
+    let eio = dir.join("b/SYSPAR/EIO.cfg");
+    let broken = fs::read_to_string(&eio).expect("EIO.cfg").replace("-SignalType \"GO\"", "-SignalType \"GX\"");
+    fs::write(&eio, broken.replace("-DeviceMap \"8-15\"", "-DeviceMap \"8-15\" stray")).expect("write");
+    let out = rapid_in(&dir, &["check", "b"]);
+    assert_eq!(out.status.code(), Some(1));
+    let stdout = text(&out.stdout);
+    assert!(
+        stdout.contains(
+            "error[E0701]: unexpected `stray`: attributes start with `-` and a name\n  --> b/SYSPAR/EIO.cfg:26:"
+        ),
+        "{stdout}"
+    );
+    assert!(stdout.contains("error[E0701]: signal `goPlacedCount`: unknown signal type `GX`"), "{stdout}");
+    assert!(stdout.contains("--> b/SYSPAR/EIO.cfg:28:41"), "{stdout}");
+    // The signal with the bad type is not declared, so its use is an undefined name.
+    assert!(stdout.contains("error[E0201]: undefined data `goPlacedCount`"), "{stdout}");
+    assert!(stdout.contains("found 3 errors and 0 warnings in 6 files"), "{stdout}");
+
+    let out = rapid_in(&dir, &["run", "b"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(out.stdout.is_empty());
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("E0701") && stderr.contains("the system has errors; it was not run"), "{stderr}");
+}
+
+#[test]
+fn running_a_backup_that_uses_io_is_refused_at_load() {
+    let out = rapid_in(&backups(), &["run", "palletizer"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(out.stdout.is_empty());
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("the built-in `WaitDI` is not supported by `rapid run` yet"), "{stderr}");
+    assert!(stderr.contains("the program was not run"), "{stderr}");
+}
+
+#[test]
+fn running_a_backup_starts_t_rob1_at_its_configured_entry() {
+    let dir = scratch("runs");
+    write(
+        &dir,
+        &[
+            ("cell/SYSPAR/SYS.cfg", "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\\\n      -Entry \"start_cell\"\n"),
+            ("cell/SYSPAR/EIO.cfg", "EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n      -Name \"diStart\" -SignalType \"DI\"\n"),
+            (
+                "cell/RAPID/TASK1/PROGMOD/MainModule.mod",
+                "MODULE MainModule\n  PROC main()\n    TPWrite \"wrong entry\";\n  ENDPROC\n  PROC start_cell()\n    TPWrite \"cell started, counter \" \\Num:=counter;\n  ENDPROC\nENDMODULE\n",
+            ),
+            ("cell/RAPID/TASK1/SYSMOD/user.sys", "MODULE user(SYSMODULE)\n  VAR num counter := 7;\nENDMODULE\n"),
+        ],
+    );
+    let out = rapid_in(&dir, &["run", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "cell started, counter 7\n");
+    let out = rapid_in(&dir, &["run", "--entry", "main", "cell"]);
+    assert_eq!(text(&out.stdout), "wrong entry\n");
+}
+
+#[test]
+fn a_backup_without_configuration_uses_its_first_task_folder() {
+    let dir = scratch("bare");
+    write(
+        &dir,
+        &[
+            (
+                "bare/RAPID/TASK2/PROGMOD/Other.mod",
+                "MODULE Other\n  PROC main()\n    TPWrite \"task 2\";\n  ENDPROC\nENDMODULE\n",
+            ),
+            (
+                "bare/RAPID/TASK1/PROGMOD/First.mod",
+                "MODULE First\n  PROC main()\n    TPWrite \"task 1\";\n  ENDPROC\nENDMODULE\n",
+            ),
+        ],
+    );
+    let out = rapid_in(&dir, &["run", "bare"]);
+    assert_eq!(text(&out.stdout), "task 1\n");
+}
+
+#[test]
+fn a_task_folder_without_modules_is_a_tool_failure() {
+    let dir = scratch("empty");
+    write(&dir, &[("empty/RAPID/TASK1/PROGMOD/readme.txt", "nothing here\n")]);
+    let out = rapid_in(&dir, &["check", "empty"]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out.stderr));
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("holds no modules in PROGMOD or SYSMOD"), "{stderr}");
+}
+
+const CFG_EIO: &str = "EIO:CFG_1.0:6:1::
+#
+EIO_SIGNAL:
+
+      -Name \"diPart\" -SignalType \"DI\" -Device \"d652\" -DeviceMap \"0\"
+
+      -Name \"doGrip\" -SignalType \"DO\" -Device \"d652\" -DeviceMap \"1\"\\
+      -Access \"All\" -Default 1
+
+      -Name \"diVirtual\" -SignalType \"DI\"
+
+      -Name \"doLamp\" -SignalType \"DO\" -Device \"d652\" -DeviceMap \"2\"
+";
+
+const CFG_SYS: &str = "SYS:CFG_1.0:6:0::
+#
+CAB_TASKS:
+
+      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\x20
+";
+
+const CFG_PROGRAM: &str = r#"MODULE MainModule
+    VAR string s := "";
+    VAR num n := 0;
+    VAR dnum d := 0;
+    VAR bool b := FALSE;
+    VAR num idx := 0;
+
+    PROC main()
+        ReadCfgData "/EIO/EIO_SIGNAL/DOGRIP", "Device", s;
+        TPWrite "device " + s;
+        ReadCfgData "/EIO/EIO_SIGNAL/doGrip", "Default", n;
+        TPWrite "default " \Num:=n;
+        ReadCfgData "/EIO/EIO_SIGNAL/doGrip", "Default", d;
+        TPWrite "default as dnum " \Dnum:=d;
+        ReadCfgData "/SYS/CAB_TASKS/T_ROB1", "MotionTask", b;
+        TPWrite "motion task " \Bool:=b;
+        ReadCfgData "/SYS/CAB_TASKS/T_ROB1", "Hidden", b;
+        TPWrite "hidden " \Bool:=b;
+        WHILE idx <> END_OF_LIST DO
+            ReadCfgData "/EIO/EIO_SIGNAL/Device/d652", "Name", s \ListNo:=idx;
+            TPWrite "on d652: " + s + ", next " \Num:=idx;
+        ENDWHILE
+        ReadCfgData "/EIO/EIO_SIGNAL/nosuch", "Device", s;
+        ReadCfgData "/EIO/EIO_SIGNAL/doGrip", "Label", s;
+        ReadCfgData "/MMC/X/y", "Name", s;
+        ReadCfgData "EIO/EIO_SIGNAL/doGrip", "Device", s;
+        ReadCfgData "/EIO/EIO_SIGNAL/doGrip", "Default", s;
+        ReadCfgData "/EIO/EIO_SIGNAL/doGrip", "Device", n;
+        idx := 3;
+        ReadCfgData "/EIO/EIO_SIGNAL/Device/d652", "Name", s \ListNo:=idx;
+        idx := -1;
+        ReadCfgData "/EIO/EIO_SIGNAL/Device/d652", "Name", s \ListNo:=idx;
+        WriteCfgData "/EIO/EIO_SIGNAL/doGrip", "Default", 0;
+        WriteCfgData "/EIO/EIO_SIGNAL/doGrip", "Access", "ReadOnly";
+        WriteCfgData "/EIO/EIO_SIGNAL/diVirtual", "Access", "All";
+        WriteCfgData "/SYS/CAB_TASKS/T_ROB1", "MotionTask", FALSE;
+        WriteCfgData "/EIO/EIO_SIGNAL/doGrip", "Access", 3;
+        WriteCfgData "/EIO/EIO_SIGNAL/doGrip", "Access", "a""b";
+        WriteCfgData "/EIO/EIO_SIGNAL/doGrip", "Label", "x";
+        ReadCfgData "/EIO/EIO_SIGNAL/doGrip", "Default", n;
+        TPWrite "default now " \Num:=n;
+        ReadCfgData "/SYS/CAB_TASKS/T_ROB1", "MotionTask", b;
+        TPWrite "motion task now " \Bool:=b;
+        SaveCfgData "HOME:/EIO_saved.cfg", EIO_DOMAIN;
+        SaveCfgData "HOME:", \File:="sys_saved.cfg", SYS_DOMAIN;
+        SaveCfgData "HOME:/x.cfg", PROC_DOMAIN;
+        SaveCfgData "HOME:/nofolder/x.cfg", EIO_DOMAIN;
+        SaveCfgData "HOME:", EIO_DOMAIN;
+        SaveCfgData "usb9:/x.cfg", EIO_DOMAIN;
+        MakeDir "HOME:/all";
+        SaveCfgData "HOME:/all", ALL_DOMAINS;
+        TPWrite "done";
+    ERROR
+        IF ERRNO = ERR_CFG_NOTFND THEN
+            TPWrite "ERR_CFG_NOTFND";
+        ELSEIF ERRNO = ERR_CFG_ILLTYPE THEN
+            TPWrite "ERR_CFG_ILLTYPE";
+        ELSEIF ERRNO = ERR_CFG_OUTOFBOUNDS THEN
+            TPWrite "ERR_CFG_OUTOFBOUNDS";
+        ELSEIF ERRNO = ERR_CFG_LIMIT THEN
+            TPWrite "ERR_CFG_LIMIT";
+        ELSEIF ERRNO = ERR_CFG_ILL_DOMAIN THEN
+            TPWrite "ERR_CFG_ILL_DOMAIN";
+        ELSEIF ERRNO = ERR_CFG_WRITEFILE THEN
+            TPWrite "ERR_CFG_WRITEFILE";
+        ELSE
+            TPWrite "other error";
+        ENDIF
+        TRYNEXT;
+    ENDPROC
+ENDMODULE
+"#;
+
+#[test]
+fn read_write_and_save_configuration_data() {
+    let dir = scratch("cfgdata");
+    write(
+        &dir,
+        &[
+            ("cell/SYSPAR/EIO.cfg", CFG_EIO),
+            ("cell/SYSPAR/SYS.cfg", CFG_SYS),
+            ("cell/RAPID/TASK1/PROGMOD/MainModule.mod", CFG_PROGRAM),
+        ],
+    );
+    let out = rapid_in(&dir, &["run", "--home", "home", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let expected = "\
+device d652
+default 1
+default as dnum 1
+motion task TRUE
+hidden FALSE
+on d652: diPart, next 1
+on d652: doGrip, next 2
+on d652: doLamp, next -1
+ERR_CFG_NOTFND
+ERR_CFG_NOTFND
+ERR_CFG_NOTFND
+ERR_CFG_NOTFND
+ERR_CFG_ILLTYPE
+ERR_CFG_ILLTYPE
+ERR_CFG_OUTOFBOUNDS
+ERR_CFG_OUTOFBOUNDS
+ERR_CFG_ILLTYPE
+ERR_CFG_LIMIT
+ERR_CFG_NOTFND
+default now 0
+motion task now FALSE
+ERR_CFG_ILL_DOMAIN
+ERR_CFG_WRITEFILE
+ERR_CFG_WRITEFILE
+ERR_CFG_WRITEFILE
+done
+";
+    assert_eq!(text(&out.stdout), expected);
+    // One value changed, one replaced, one attribute added; every other byte as read.
+    let saved = fs::read_to_string(dir.join("home/HOME/EIO_saved.cfg")).expect("saved EIO");
+    let changed = CFG_EIO
+        .replace("-Access \"All\" -Default 1", "-Access \"ReadOnly\" -Default 0")
+        .replace("-Name \"diVirtual\" -SignalType \"DI\"", "-Name \"diVirtual\" -SignalType \"DI\" -Access \"All\"");
+    assert_eq!(saved, changed);
+    let sys = fs::read_to_string(dir.join("home/HOME/sys_saved.cfg")).expect("saved SYS");
+    assert_eq!(sys, CFG_SYS.replace(" -MotionTask", ""));
+    assert_eq!(fs::read_to_string(dir.join("home/HOME/all/EIO.cfg")).expect("all EIO"), changed);
+    assert!(dir.join("home/HOME/all/SYS.cfg").is_file());
+    // The backup itself is never written.
+    assert_eq!(fs::read_to_string(dir.join("cell/SYSPAR/EIO.cfg")).expect("EIO"), CFG_EIO);
+}
+
+#[test]
+fn a_backups_signals_run_with_their_defaults_groups_and_cross_connections() {
+    // EIO.cfg gives diReady the default 1 and giPattern (8 bits) the default 3;
+    // EIO_CROSS drives diVacuum from doGrip (manual §2.10: the input follows the
+    // output). Worked by hand: the cross-connection shows the output at once, a pulse
+    // of 0.5 s is over 0.6 s later, giPattern + 1 is 4, and goCount (4 bits) refuses
+    // 16 with ERR_GO_LIM.
+    let dir = scratch("io_cell");
+    let eio = "EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n\
+      -Name \"diReady\" -SignalType \"DI\" -Default 1\n\n\
+      -Name \"diVacuum\" -SignalType \"DI\"\n\n\
+      -Name \"doGrip\" -SignalType \"DO\"\n\n\
+      -Name \"doDone\" -SignalType \"DO\"\n\n\
+      -Name \"giPattern\" -SignalType \"GI\" -DeviceMap \"8-15\" -Default 3\n\n\
+      -Name \"goCount\" -SignalType \"GO\" -DeviceMap \"0-3\"\n\
+      #\nEIO_CROSS:\n\n      -Name \"vacuum\" -Res \"diVacuum\" -Act1 \"doGrip\"\n";
+    let program = "MODULE MainModule\n  PROC main()\n\
+      IF diReady = 1 TPWrite \"ready, pattern \" \\Num:=giPattern + 1;\n\
+      TPWrite \"vacuum \" \\Num:=diVacuum;\n\
+      Set doGrip;\n\
+      TPWrite \"vacuum \" \\Num:=diVacuum;\n\
+      PulseDO \\PLength:=0.5, doDone;\n\
+      TPWrite \"done \" \\Num:=doDone;\n\
+      WaitTime 0.6;\n\
+      TPWrite \"done \" \\Num:=doDone;\n\
+      SetGO goCount, 15;\n\
+      TPWrite \"count \" \\Num:=goCount;\n\
+      SetGO goCount, 16;\n\
+    ERROR\n      IF ERRNO = ERR_GO_LIM TPWrite \"ERR_GO_LIM\";\n      TRYNEXT;\n  ENDPROC\nENDMODULE\n";
+    write(&dir, &[("cell/SYSPAR/EIO.cfg", eio), ("cell/RAPID/TASK1/PROGMOD/MainModule.mod", program)]);
+    let out = rapid_in(&dir, &["run", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "ready, pattern 4\nvacuum 0\nvacuum 1\ndone 1\ndone 0\ncount 15\nERR_GO_LIM\n");
+}

@@ -1,0 +1,371 @@
+//! Configuration data (manual §1.17): ReadCfgData, WriteCfgData and SaveCfgData on the
+//! system parameters the run was started with (a backup's `SYSPAR/*.cfg`).
+//!
+//! An instance path is `/DOMAIN/TYPE/NAME` (the instance whose `-Name` is NAME) or,
+//! with `\ListNo`, `/DOMAIN/TYPE/ATTRIBUTE/VALUE` (the instances whose ATTRIBUTE is
+//! VALUE; `\ListNo` picks one, 0 first, and comes back as the next one's number or
+//! END_OF_LIST, -1, after the last). Attribute values have the type the file gives them:
+//! a quoted value is a string, a bare number a num, a flag a bool.
+//!
+//! Writes change the configuration in memory (the controller uses most parameters after
+//! a restart); SaveCfgData writes a domain's file, every other byte as it was read.
+
+use std::io::Write;
+use std::path::Path;
+
+use rapid_config::{CfgFile, Instance};
+
+use super::files::devices;
+use super::{present, Ctx, Entries};
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::Value;
+
+type Res = Result<Option<Value>, RapidError>;
+
+/// `END_OF_LIST`: what `\ListNo` becomes after the last matching instance.
+const END_OF_LIST: f32 = -1.0;
+
+/// The configuration of the run: one parsed file per domain.
+#[derive(Debug, Default)]
+pub struct CfgState {
+    domains: Vec<(String, CfgFile)>,
+}
+
+impl CfgState {
+    /// Installs the configuration: (domain such as `EIO`, parsed file) pairs.
+    pub fn set_config(&mut self, domains: Vec<(String, CfgFile)>) {
+        self.domains = domains;
+    }
+
+    fn domain(&self, name: &str) -> Option<usize> {
+        self.domains.iter().position(|(d, _)| d.eq_ignore_ascii_case(name))
+    }
+}
+
+/// An instance path taken apart.
+struct InstancePath {
+    domain: String,
+    type_name: String,
+    /// (attribute, value) the instances must have: `("Name", NAME)` for the short form.
+    key: (String, String),
+}
+
+// uncertain: a path without the leading `/` or with another number of parts is not
+// found (ERR_CFG_NOTFND) rather than refused some other way.
+fn parse_path(text: &str) -> Option<InstancePath> {
+    let parts: Vec<&str> = text.strip_prefix('/')?.split('/').collect();
+    let (domain, type_name, key) = match parts.as_slice() {
+        [domain, type_name, name] => (domain, type_name, ("Name".to_owned(), (*name).to_owned())),
+        [domain, type_name, attr, value] => (domain, type_name, ((*attr).to_owned(), (*value).to_owned())),
+        _ => return None,
+    };
+    if domain.is_empty() || type_name.is_empty() {
+        return None;
+    }
+    Some(InstancePath { domain: (*domain).to_owned(), type_name: (*type_name).to_owned(), key })
+}
+
+/// The instances of `path`, as (section index, instance index), in file order.
+fn matches(file: &CfgFile, path: &InstancePath) -> Vec<(usize, usize)> {
+    let (attr, wanted) = &path.key;
+    let mut found = Vec::new();
+    for (si, section) in file.sections.iter().enumerate() {
+        if !section.name.eq_ignore_ascii_case(&path.type_name) {
+            continue;
+        }
+        for (ii, inst) in section.instances.iter().enumerate() {
+            // uncertain: values compare without regard to case (names on the controller
+            // ignore case); an attribute other than Name compares as written otherwise.
+            if inst.value(attr).is_some_and(|v| v.eq_ignore_ascii_case(wanted)) {
+                found.push((si, ii));
+            }
+        }
+    }
+    found
+}
+
+/// Where an instance is: domain, section and instance indices, and the `\ListNo` to
+/// hand back.
+struct Found {
+    domain: usize,
+    at: (usize, usize),
+    next: Option<f32>,
+}
+
+/// Finds the instance of a path (and `\ListNo`), or raises the error the manual names.
+fn find(ctx: &mut Ctx<'_>, path_text: &str, list_no: Option<&Value>) -> Result<Found, RapidError> {
+    let Some(path) = parse_path(path_text) else {
+        return Err(ctx.error(
+            Err::CfgNotFound,
+            format!("`{path_text}` is not an instance path such as \"/EIO/EIO_SIGNAL/di1\""),
+        ));
+    };
+    if ctx.resources.cfgdata.domains.is_empty() {
+        // uncertain: without a configuration nothing is found (the controller always has one).
+        return Err(ctx.error(Err::CfgNotFound, "no system configuration is loaded (run a backup folder)"));
+    }
+    let Some(domain) = ctx.resources.cfgdata.domain(&path.domain) else {
+        return Err(ctx.error(Err::CfgNotFound, format!("no configuration domain `{}`", path.domain)));
+    };
+    let found = matches(&ctx.resources.cfgdata.domains[domain].1, &path);
+    if found.is_empty() {
+        return Err(ctx.error(Err::CfgNotFound, format!("no instance `{path_text}`")));
+    }
+    let Some(list_arg) = list_no.filter(|a| present(Some(*a))) else {
+        return Ok(Found { domain, at: found[0], next: None });
+    };
+    // uncertain: a \ListNo that is negative, fractional or past the last match raises
+    // ERR_CFG_OUTOFBOUNDS; the manual's loop ends at END_OF_LIST without raising.
+    let n = ctx.num(list_arg)?;
+    if n.fract() != 0.0 || n < 0.0 || n >= found.len() as f64 {
+        let message = format!("\\ListNo {n} is outside 0..{} for `{path_text}`", found.len() - 1);
+        return Err(ctx.error(Err::CfgOutOfBounds, message));
+    }
+    let idx = n as usize;
+    let next = if idx + 1 < found.len() { (idx + 1) as f32 } else { END_OF_LIST };
+    Ok(Found { domain, at: found[idx], next: Some(next) })
+}
+
+fn instance<'s>(state: &'s CfgState, found: &Found) -> Option<&'s Instance> {
+    let file = &state.domains.get(found.domain)?.1;
+    file.sections.get(found.at.0)?.instances.get(found.at.1)
+}
+
+/// The kind of value an attribute holds, as the file writes it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    Text,
+    Number,
+    Flag,
+}
+
+fn kind_of(attr: &rapid_config::Attr) -> Kind {
+    match &attr.value {
+        None => Kind::Flag,
+        Some(v) if v.quoted => Kind::Text,
+        Some(v) if v.text.parse::<f64>().is_ok() => Kind::Number,
+        // uncertain: bare words that are not numbers (`30,82`) read as strings.
+        Some(_) => Kind::Text,
+    }
+}
+
+fn kind_name(kind: Kind) -> &'static str {
+    match kind {
+        Kind::Text => "string",
+        Kind::Number => "num",
+        Kind::Flag => "bool",
+    }
+}
+
+/// The kind a CfgData argument's type asks for.
+fn wanted_kind(value: &Value) -> Option<Kind> {
+    match value {
+        Value::Str(_) => Some(Kind::Text),
+        Value::Num(_) | Value::Dnum(_) => Some(Kind::Number),
+        Value::Bool(_) => Some(Kind::Flag),
+        _ => None,
+    }
+}
+
+/// `ReadCfgData InstancePath, Attribute, CfgData [\ListNo]`.
+fn read_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let path = ctx.string(&args[0])?;
+    let attr_name = ctx.string(&args[1])?;
+    let target = ctx.value(&args[2])?;
+    let found = find(ctx, &path, args.get(3))?;
+    let Some(inst) = instance(&ctx.resources.cfgdata, &found) else {
+        return Err(ctx.error(Err::CfgNotFound, format!("no instance `{path}`")));
+    };
+    let Some(wanted) = wanted_kind(&target) else {
+        return Err(ctx.error(Err::CfgIllType, "CfgData must be num, dnum, bool or string"));
+    };
+    let value = match inst.attr(&attr_name) {
+        // uncertain: a flag the instance does not write is FALSE (its default); any
+        // other attribute it does not write is not found (we know no defaults).
+        None if wanted == Kind::Flag => Value::Bool(false),
+        None => return Err(ctx.error(Err::CfgNotFound, format!("`{path}` has no attribute `{attr_name}`"))),
+        Some(attr) => {
+            let kind = kind_of(attr);
+            if kind != wanted {
+                let message = format!(
+                    "attribute `{attr_name}` of `{path}` is a {}, CfgData is a {}",
+                    kind_name(kind),
+                    kind_name(wanted)
+                );
+                return Err(ctx.error(Err::CfgIllType, message));
+            }
+            let text = attr.value.as_ref().map_or("", |v| v.text.as_str());
+            match (kind, &target) {
+                (Kind::Flag, _) => Value::Bool(true),
+                (Kind::Text, _) => Value::Str(text.into()),
+                (Kind::Number, Value::Dnum(_)) => Value::Dnum(text.parse::<f64>().unwrap_or_default()),
+                (Kind::Number, _) => Value::Num(text.parse::<f32>().unwrap_or_default()),
+            }
+        }
+    };
+    ctx.store(&args[2], value)?;
+    if let Some(next) = found.next {
+        ctx.store(&args[3], Value::Num(next))?;
+    }
+    Ok(None)
+}
+
+/// `WriteCfgData InstancePath, Attribute, CfgData [\ListNo]`.
+fn write_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let path = ctx.string(&args[0])?;
+    let attr_name = ctx.string(&args[1])?;
+    let value = ctx.value(&args[2])?;
+    let found = find(ctx, &path, args.get(3))?;
+    let Some(wanted) = wanted_kind(&value) else {
+        return Err(ctx.error(Err::CfgIllType, "CfgData must be num, dnum, bool or string"));
+    };
+    let kind = match attribute_kind(&ctx.resources.cfgdata, &found, &attr_name) {
+        Some(kind) => kind,
+        None => return Err(ctx.error(Err::CfgNotFound, format!("`{path}` has no attribute `{attr_name}`"))),
+    };
+    if kind != wanted {
+        let message =
+            format!("attribute `{attr_name}` of `{path}` is a {}, CfgData is a {}", kind_name(kind), kind_name(wanted));
+        return Err(ctx.error(Err::CfgIllType, message));
+    }
+    let number = match &value {
+        Value::Num(n) => Some(f64::from(*n)),
+        Value::Dnum(d) => Some(*d),
+        _ => None,
+    };
+    // uncertain: without the parameter schema's limits, ERR_CFG_LIMIT is raised only for
+    // what no file can hold: a number that is not finite, a string with `"`.
+    if number.is_some_and(|n| !n.is_finite()) {
+        return Err(ctx.error(Err::CfgLimit, "a configuration number must be finite"));
+    }
+    let file = &ctx.resources.cfgdata.domains[found.domain].1;
+    let (section, inst) = found.at;
+    let edited = match &value {
+        Value::Bool(true) => file.with_flag(section, inst, &attr_name).ok().flatten(),
+        Value::Bool(false) => file.without_attr(section, inst, &attr_name).ok().flatten(),
+        Value::Str(s) => match file.with_value(section, inst, &attr_name, s) {
+            Ok(text) => Some(text),
+            Err(_) => return Err(ctx.error(Err::CfgLimit, "a configuration string cannot hold `\"`")),
+        },
+        _ => number.and_then(|n| file.with_value(section, inst, &attr_name, &format_number(n)).ok()),
+    };
+    if let Some(text) = edited {
+        ctx.resources.cfgdata.domains[found.domain].1 = rapid_config::parse(&text);
+    }
+    if let Some(next) = found.next {
+        ctx.store(&args[3], Value::Num(next))?;
+    }
+    Ok(None)
+}
+
+/// The kind of an attribute: as this instance writes it, else as another instance of
+/// the same type does (an attribute left at its default is not written).
+// uncertain: without ABB's parameter schema, an attribute no instance of the type
+// writes is not found.
+fn attribute_kind(state: &CfgState, found: &Found, attr_name: &str) -> Option<Kind> {
+    if let Some(attr) = instance(state, found)?.attr(attr_name) {
+        return Some(kind_of(attr));
+    }
+    let file = &state.domains.get(found.domain)?.1;
+    let type_name = &file.sections.get(found.at.0)?.name;
+    file.instances(type_name).find_map(|i| i.attr(attr_name)).map(kind_of)
+}
+
+/// A number as the configuration writes it: integers without a point, others in the
+/// shortest form that reads back the same.
+fn format_number(n: f64) -> String {
+    if n.fract() == 0.0 && n.abs() < 1e15 {
+        format!("{}", n as i64)
+    } else {
+        format!("{}", n as f32)
+    }
+}
+
+/// `SaveCfgData FilePath [\File], Domain`.
+fn save_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let file_path = ctx.string(&args[0])?;
+    let file = match args.get(1) {
+        Some(arg) if present(Some(arg)) => Some(ctx.string(arg)?),
+        _ => None,
+    };
+    let domain = ctx.string(&args[2])?;
+    let all = domain.eq_ignore_ascii_case("ALL");
+    let chosen: Vec<usize> = if all {
+        (0..ctx.resources.cfgdata.domains.len()).collect()
+    } else {
+        ctx.resources.cfgdata.domain(&domain).into_iter().collect()
+    };
+    if chosen.is_empty() {
+        return Err(ctx.error(Err::CfgIllDomain, format!("no configuration domain `{domain}` is loaded")));
+    }
+    let target = devices::join_object(&file_path, file.as_deref());
+    for idx in chosen {
+        // ALL_DOMAINS saves each domain as DOMAIN.cfg in the folder FilePath names.
+        // uncertain: the file names of ALL_DOMAINS follow the backup's SYSPAR names.
+        let text = if all {
+            devices::join_object(&target, Some(&format!("{}.cfg", ctx.resources.cfgdata.domains[idx].0)))
+        } else {
+            target.clone()
+        };
+        let resolved = devices::resolve(ctx.resources.files.root(), &text)
+            .map_err(|fault| ctx.error(Err::CfgWriteFile, fault.message()))?;
+        if resolved.is_device_root || resolved.path.is_dir() {
+            return Err(ctx.error(Err::CfgWriteFile, format!("`{text}` is a folder, not a file")));
+        }
+        let contents = ctx.resources.cfgdata.domains[idx].1.text.clone();
+        write_atomically(&resolved.path, contents.as_bytes())
+            .map_err(|e| ctx.error(Err::CfgWriteFile, format!("cannot write `{text}`: {e}")))?;
+    }
+    Ok(None)
+}
+
+/// Writes a file so a crash leaves the old or the new contents, never a torn file:
+/// a temporary file beside it, flushed to disk, then renamed over it.
+fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let Some(parent) = path.parent() else { return Err(std::io::Error::other("the path has no folder")) };
+    if !parent.is_dir() {
+        return Err(std::io::Error::new(std::io::ErrorKind::NotFound, "the folder does not exist"));
+    }
+    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("cfg");
+    let temp = parent.join(format!(".{name}.saving"));
+    let result = (|| {
+        let mut out = std::fs::File::create(&temp)?;
+        out.write_all(bytes)?;
+        out.sync_all()?;
+        std::fs::rename(&temp, path)
+    })();
+    if result.is_err() {
+        let _ = std::fs::remove_file(&temp);
+    }
+    result
+}
+
+pub(super) static ENTRIES: Entries =
+    &[("ReadCfgData", read_cfg_data), ("WriteCfgData", write_cfg_data), ("SaveCfgData", save_cfg_data)];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn paths() {
+        let p = parse_path("/EIO/EIO_SIGNAL/di1").expect("path");
+        assert_eq!(
+            (p.domain.as_str(), p.type_name.as_str(), p.key.0.as_str(), p.key.1.as_str()),
+            ("EIO", "EIO_SIGNAL", "Name", "di1")
+        );
+        let p = parse_path("/EIO/EIO_SIGNAL/Device/d652").expect("path");
+        assert_eq!((p.key.0.as_str(), p.key.1.as_str()), ("Device", "d652"));
+        assert!(parse_path("EIO/EIO_SIGNAL/di1").is_none());
+        assert!(parse_path("/EIO/di1").is_none());
+        assert!(parse_path("//EIO_SIGNAL/x").is_none());
+    }
+
+    #[test]
+    fn numbers() {
+        assert_eq!(format_number(4.0), "4");
+        assert_eq!(format_number(-1.0), "-1");
+        assert_eq!(format_number(0.05), "0.05");
+    }
+}
