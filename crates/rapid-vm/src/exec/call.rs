@@ -395,4 +395,33 @@ impl Vm {
         }
         Some(if self.cycle_exit { Exit::CycleEnded } else { Exit::Done })
     }
+
+    /// A boxed place, from the pool when one is free.
+    pub(super) fn pooled_place(&mut self, root: Root, path: &[crate::value::PathStep]) -> Box<Place> {
+        match self.place_pool.pop() {
+            Some(mut place) => {
+                place.root = root;
+                place.path.clear();
+                place.path.extend_from_slice(path);
+                place
+            }
+            None => Box::new(Place { root, path: path.to_vec() }),
+        }
+    }
+
+    /// Takes back the reference boxes in the parameter slots of a returning frame.
+    pub(super) fn recycle_places(&mut self, base: usize, n_params: usize) {
+        const POOL_LIMIT: usize = 256;
+        let end = (base + n_params).min(self.storage.stack.len());
+        for at in base..end {
+            if self.place_pool.len() >= POOL_LIMIT {
+                return;
+            }
+            if matches!(self.storage.stack[at], Value::Ref(_)) {
+                if let Value::Ref(place) = std::mem::replace(&mut self.storage.stack[at], Value::Absent) {
+                    self.place_pool.push(place);
+                }
+            }
+        }
+    }
 }

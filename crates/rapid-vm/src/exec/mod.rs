@@ -11,6 +11,7 @@
 pub mod backward;
 mod call;
 mod fast;
+mod io;
 mod kernel;
 pub mod modules;
 mod spy;
@@ -203,23 +204,6 @@ impl Vm {
         }
     }
 
-    /// Installs the task's I/O system and connects the configuration's signals (their
-    /// program data) to it.
-    pub fn install_io(&mut self, system: rapid_io::IoSystem) {
-        self.resources.io.system = Some(system);
-        self.connect_configured_signals();
-    }
-
-    /// Configured signals are connected from the start, also after PP to Main
-    /// re-initialises the data.
-    fn connect_configured_signals(&mut self) {
-        for (global, value) in self.resources.io.configured_values() {
-            if let Some(slot) = self.storage.globals.get_mut(global as usize) {
-                *slot = value;
-            }
-        }
-    }
-
     /// The task's files, directories and sockets (to configure devices, or to close
     /// everything when the program ends).
     pub fn resources_mut(&mut self) -> &mut crate::builtins::Resources {
@@ -391,35 +375,6 @@ impl Vm {
         let warning = self.frames.last_mut().and_then(|f| f.active.as_mut()).and_then(|a| a.warning.take());
         if let Some(seq) = warning {
             self.events.remove(seq);
-        }
-    }
-
-    /// A boxed place, from the pool when one is free.
-    pub(super) fn pooled_place(&mut self, root: Root, path: &[PathStep]) -> Box<Place> {
-        match self.place_pool.pop() {
-            Some(mut place) => {
-                place.root = root;
-                place.path.clear();
-                place.path.extend_from_slice(path);
-                place
-            }
-            None => Box::new(Place { root, path: path.to_vec() }),
-        }
-    }
-
-    /// Takes back the reference boxes in the parameter slots of a returning frame.
-    pub(super) fn recycle_places(&mut self, base: usize, n_params: usize) {
-        const POOL_LIMIT: usize = 256;
-        let end = (base + n_params).min(self.storage.stack.len());
-        for at in base..end {
-            if self.place_pool.len() >= POOL_LIMIT {
-                return;
-            }
-            if matches!(self.storage.stack[at], Value::Ref(_)) {
-                if let Value::Ref(place) = std::mem::replace(&mut self.storage.stack[at], Value::Absent) {
-                    self.place_pool.push(place);
-                }
-            }
         }
     }
 

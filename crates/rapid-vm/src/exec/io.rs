@@ -1,0 +1,23 @@
+//! The VM's side of the I/O system: installing it and connecting the configuration's
+//! signals (their program data) to it.
+
+use super::Vm;
+
+impl Vm {
+    /// Installs the task's I/O system and connects the configuration's signals (their
+    /// program data) to it.
+    pub fn install_io(&mut self, system: rapid_io::IoSystem) {
+        self.resources.io.system = Some(system);
+        self.connect_configured_signals();
+    }
+
+    /// Configured signals are connected from the start, also after PP to Main
+    /// re-initialises the data.
+    pub(super) fn connect_configured_signals(&mut self) {
+        for (global, value) in self.resources.io.configured_values() {
+            if let Some(slot) = self.storage.globals.get_mut(global as usize) {
+                *slot = value;
+            }
+        }
+    }
+}
