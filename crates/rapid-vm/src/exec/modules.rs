@@ -47,6 +47,9 @@ pub struct TaskModules {
     base_modules: Vec<BaseModule>,
     /// Modules loaded while running, in load order; unloaded ones stay as stand-ins.
     units: Vec<Unit>,
+    /// How the task was checked (the configuration's signals): loaded modules see the
+    /// same names.
+    options: Options,
 }
 
 struct BaseModule {
@@ -99,8 +102,8 @@ impl Checked {
 }
 
 /// Checks `files` as one task; `None` when the checker gave up.
-fn check(files: Vec<SourceInput>) -> Result<Checked, Vec<Diagnostic>> {
-    let analysis = analyze(&files, &Options::default());
+fn check(files: Vec<SourceInput>, options: &Options) -> Result<Checked, Vec<Diagnostic>> {
+    let analysis = analyze(&files, options);
     let Some(mut prog) = analysis.program else { return Err(analysis.diagnostics) };
     let parses = files
         .iter()
@@ -211,7 +214,7 @@ impl TaskModules {
                 base_modules.push(BaseModule { name, file, index, live: true });
             }
         }
-        TaskModules { base, base_modules, units: Vec::new() }
+        TaskModules { base, base_modules, units: Vec::new(), options: Options::default() }
     }
 
     /// Every source of the program as it stands.
@@ -249,6 +252,11 @@ impl Vm {
     /// The files the task was started with (for linking modules loaded at run time).
     pub fn set_program_sources(&mut self, files: Vec<SourceInput>) {
         self.modules = TaskModules::new(files);
+    }
+
+    /// How the task was checked, so modules loaded later are checked the same way.
+    pub fn set_program_options(&mut self, options: Options) {
+        self.modules.options = options;
     }
 
     /// Carries out what a module built-in asked for.
@@ -303,7 +311,7 @@ impl Vm {
         let mut files = self.modules.sources();
         files.push(file.source.clone());
         let new_file = files.len() - 1;
-        let checked = match check(files.clone()) {
+        let checked = match check(files.clone(), &self.modules.options) {
             Ok(checked) => checked,
             Err(diags) => return Err(self.error(Err::Syntax, self.no_check(&name, &files, &diags, new_file))),
         };
@@ -563,7 +571,7 @@ impl Vm {
         // Loaded modules compiled again without it: a call of one of its procedures then
         // raises ERR_REFUNKPRC, as a call of a procedure defined nowhere does. (Code
         // using its data no longer compiles and is kept; CheckProgRef reports it.)
-        if let Ok(checked) = check(self.modules.sources()) {
+        if let Ok(checked) = check(self.modules.sources(), &self.modules.options) {
             let modules = checked.modules();
             self.relink_units(&checked, &modules);
         }
@@ -583,8 +591,8 @@ impl Vm {
             // uncertain: erasing a module that is not in the task raises ERR_MODULE.
             return Err(self.error(Err::Module, format!("no module `{name}` is loaded")));
         };
-        let checked =
-            check(self.modules.sources()).map_err(|_| self.error(Err::Module, "the task's program does not check"))?;
+        let checked = check(self.modules.sources(), &self.modules.options)
+            .map_err(|_| self.error(Err::Module, "the task's program does not check"))?;
         let (routines, datas) = members(&checked.prog, idx);
         if self.runs_any(&routines) {
             return Err(self.error(Err::Unload, format!("module `{name}` cannot be erased: its code is running")));
@@ -634,8 +642,8 @@ impl Vm {
             }
         };
         let (host, shown) = dest.unwrap_or(own);
-        let checked =
-            check(self.modules.sources()).map_err(|_| self.error(Err::IoError, "the task's program does not check"))?;
+        let checked = check(self.modules.sources(), &self.modules.options)
+            .map_err(|_| self.error(Err::IoError, "the task's program does not check"))?;
         let text = self.module_text(&checked, file, index, unit.is_some());
         std::fs::write(&host, latin1_bytes(&text))
             .map_err(|e| self.error(Err::IoError, format!("module `{name}` cannot be saved to `{shown}`: {e}")))?;
@@ -678,7 +686,7 @@ impl Vm {
     /// `CheckProgRef`: ERR_LINKREF when some reference of the task does not resolve.
     fn check_prog_ref(&mut self) -> Result<(), RapidError> {
         let files = self.modules.sources();
-        let diags = match check(files.clone()) {
+        let diags = match check(files.clone(), &self.modules.options) {
             Ok(checked) => checked.diagnostics,
             Err(diags) => diags,
         };
@@ -726,7 +734,8 @@ mod tests {
 
     /// Types, data and routines a program declares (the checker's numbering).
     fn counts(text: &str) -> (rapid_sema::types::TypeId, usize, usize) {
-        let mut checked = check(vec![SourceInput::from_text("m.mod", text)]).unwrap_or_else(|_| panic!("no program"));
+        let mut checked = check(vec![SourceInput::from_text("m.mod", text)], &Options::default())
+            .unwrap_or_else(|_| panic!("no program"));
         let errors = checked.diagnostics.iter().filter(|d| d.severity() == Severity::Error).count();
         assert_eq!(errors, 0, "{:?}", checked.diagnostics);
         let (routines, datas) = members(&checked.prog, 0);
