@@ -63,6 +63,16 @@ pub(crate) struct RunArgs {
     #[arg(long, value_name = "DIR")]
     pub(crate) home: Option<PathBuf>,
 
+    /// Input changes at given controller times ("at 1.5 set di1 1" per line), so
+    /// programs waiting on inputs run unattended. Needs an I/O configuration (a backup).
+    #[arg(long, value_name = "FILE")]
+    pub(crate) stimulus: Option<PathBuf>,
+
+    /// When the program ends, write every signal change as CSV (time, signal, old,
+    /// new, cause) to FILE.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) io_log: Option<PathBuf>,
+
     /// Module files, program files (.pgf) or folders, loaded together as one task.
     #[arg(required = true, value_name = "PATH")]
     pub(crate) paths: Vec<PathBuf>,

@@ -6,6 +6,7 @@ mod commands;
 mod inputs;
 mod render;
 mod save;
+mod stimulus;
 
 use std::io::{self, Write};
 use std::process::ExitCode;

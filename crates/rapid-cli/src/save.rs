@@ -40,3 +40,17 @@ pub(crate) fn write_module(path: &Path, loaded_text: &str, new_text: &str) -> an
     fs::rename(&tmp, path).with_context(|| format!("cannot replace `{shown}`"))?;
     Ok(())
 }
+
+/// Writes a file the run produces (a log) beside its place and renames it over, so a
+/// crash never leaves half a file.
+pub(crate) fn write_new(path: &Path, bytes: &[u8]) -> anyhow::Result<()> {
+    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let tmp = dir.join(format!(".{name}.rapid-write.tmp"));
+    let mut file = fs::File::create(&tmp).with_context(|| format!("cannot write `{}`", tmp.display()))?;
+    file.write_all(bytes)?;
+    file.sync_all()?;
+    drop(file);
+    fs::rename(&tmp, path).with_context(|| format!("cannot write `{}`", path.display()))?;
+    Ok(())
+}

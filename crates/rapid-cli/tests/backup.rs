@@ -117,13 +117,49 @@ fn cfg_findings_have_file_and_line_and_unknown_signals_are_undefined() {
 }
 
 #[test]
-fn running_a_backup_that_uses_io_is_refused_at_load() {
-    let out = rapid_in(&backups(), &["run", "palletizer"]);
+fn a_backup_runs_unattended_on_a_stimulus_and_logs_its_signals() {
+    // The palletizer waits for diPartAtPick (WaitDI); the stimulus readies the pallet
+    // at 0 s and brings the part at 2.5 s. Worked by hand from the program: the gripper
+    // closes at 2.5 s (the cross-connection raises diVacuumOk with it), opens 0.2 s
+    // later, the count goes to 1, the conveyor to 120 and doCycleDone starts a pulse.
+    // aoConveyorSpeed (0..500 on a 16-bit converter, 0..65535) reads back in converter
+    // steps: 120 is 15728.4 steps, so 15728 × 500 / 65535 = 119.996948….
+    let dir = scratch("stimulus");
+    write(
+        &dir,
+        &[(
+            "stimulus.txt",
+            "# palletizer\nat 0 set diPalletReady 1\nat 0 set giLayerPattern 5\nat 2.5 s set diPartAtPick 1\n",
+        )],
+    );
+    copy_dir(&backups().join("palletizer"), &dir.join("palletizer"));
+    let out = rapid_in(&dir, &["run", "--stimulus", "stimulus.txt", "--io-log", "io.csv", "palletizer"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(out.stdout.is_empty(), "{}", text(&out.stdout));
+    let log = std::fs::read_to_string(dir.join("io.csv")).expect("the I/O log is written");
+    let expected = "time,signal,old,new,cause\n\
+        0,diPalletReady,0,1,Hardware\n\
+        0,giLayerPattern,0,5,Hardware\n\
+        2.5,diPartAtPick,0,1,Hardware\n\
+        2.5,doGripperClose,0,1,Order\n\
+        2.5,diVacuumOk,0,1,Cross\n\
+        2.7,doGripperClose,1,0,Order\n\
+        2.7,diVacuumOk,1,0,Cross\n\
+        2.7,goPlacedCount,0,1,Order\n\
+        2.7,aoConveyorSpeed,0,119.996948,Order\n\
+        2.7,doCycleDone,0,1,Order\n";
+    assert_eq!(log, expected);
+}
+
+#[test]
+fn a_stimulus_needs_inputs_of_the_configuration() {
+    let dir = scratch("bad_stimulus");
+    write(&dir, &[("stimulus.txt", "at 1 set doGripperClose 1\n")]);
+    let out =
+        rapid_in(&dir, &["run", "--stimulus", "stimulus.txt", &backups().join("palletizer").display().to_string()]);
     assert_eq!(out.status.code(), Some(1));
-    assert!(out.stdout.is_empty());
     let stderr = text(&out.stderr);
-    assert!(stderr.contains("the built-in `WaitDI` is not supported by `rapid run` yet"), "{stderr}");
-    assert!(stderr.contains("the program was not run"), "{stderr}");
+    assert!(stderr.contains("stimulus.txt:1: `doGripperClose` is an output; a stimulus sets inputs only"), "{stderr}");
 }
 
 #[test]

@@ -38,15 +38,10 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     };
     configure_files(&mut loaded, args, &inputs.modules);
     loaded.vm.resources_mut().cfgdata.set_config(inputs.syspar.clone());
-    if let Some((_, eio)) = inputs.syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("EIO")) {
-        match rapid_vm::builtins::io_config::io_system(&rapid_config::eio::read(eio)) {
-            Ok(system) => loaded.vm.install_io(system),
-            Err(message) => {
-                eprintln!("error: {message}");
-                eprintln!("the system has errors; it was not run");
-                return Ok(ExitStatus::Failure);
-            }
-        }
+    if let Err(message) = configure_io(&mut loaded, args, &inputs.syspar) {
+        eprintln!("error: {message}");
+        eprintln!("the system has errors; it was not run");
+        return Ok(ExitStatus::Failure);
     }
     let answers = match &args.tp_input {
         Some(path) => {
@@ -114,6 +109,9 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     }
     if args.save_pers {
         save_persistents(&loaded, &inputs.modules)?;
+    }
+    if let Some(path) = &args.io_log {
+        write_io_log(&loaded, path)?;
     }
     Ok(status)
 }
@@ -237,4 +235,56 @@ impl Host for StdoutHost<'_> {
     fn tp_answer(&mut self, _prompt: &str) -> Option<String> {
         self.answers.pop_front()
     }
+}
+
+/// The I/O system of the backup's EIO.cfg, and the stimulus for its inputs.
+fn configure_io(
+    loaded: &mut rapid_vm::Loaded,
+    args: &RunArgs,
+    syspar: &[(String, rapid_config::CfgFile)],
+) -> Result<(), String> {
+    let eio = syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("EIO"));
+    if let Some((_, eio)) = eio {
+        loaded.vm.install_io(rapid_vm::builtins::io_config::io_system(&rapid_config::eio::read(eio))?);
+    }
+    let Some(path) = &args.stimulus else { return Ok(()) };
+    let shown = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read the stimulus `{shown}`: {e}"))?;
+    let io = &mut loaded.vm.resources_mut().io;
+    let Some(system) = &io.system else {
+        return Err(format!("`{shown}`: a stimulus needs an I/O configuration (run a backup folder)"));
+    };
+    io.stimulus = crate::stimulus::parse(&shown, &text, system)?.into();
+    Ok(())
+}
+
+/// `x` with at most `places` decimals, trailing zeros dropped (times to the
+/// millisecond, values to a millionth).
+fn decimals(x: f64, places: usize) -> String {
+    let text = format!("{x:.places$}");
+    let text = if text.contains('.') { text.trim_end_matches('0').trim_end_matches('.') } else { &text };
+    if text == "-0" {
+        "0".to_string()
+    } else {
+        text.to_string()
+    }
+}
+
+/// `--io-log`: every signal change as CSV (times in seconds to the millisecond, values
+/// to a millionth), written atomically.
+fn write_io_log(loaded: &rapid_vm::Loaded, path: &std::path::Path) -> anyhow::Result<()> {
+    let mut csv = String::from("time,signal,old,new,cause\n");
+    if let Some(system) = loaded.vm.io_system() {
+        for change in system.changes() {
+            csv.push_str(&format!(
+                "{},{},{},{},{:?}\n",
+                decimals(change.time, 3),
+                change.signal,
+                decimals(change.old, 6),
+                decimals(change.new, 6),
+                change.cause
+            ));
+        }
+    }
+    crate::save::write_new(path, csv.as_bytes())
 }

@@ -26,9 +26,41 @@ pub struct IoState {
     pub kinds: Vec<(TypeId, SignalKind)>,
     /// The signals of the I/O configuration as program data: (global, name).
     pub configured: Vec<(u32, String)>,
+    /// Input changes from outside (a stimulus script): (time, signal, value), in time
+    /// order, not yet applied.
+    pub stimulus: std::collections::VecDeque<(f64, u32, f64)>,
+    /// The waiting instruction under way (WaitDI …): (call depth, pc, started at).
+    pub(crate) waiting: Option<(usize, u32, f64)>,
 }
 
 impl IoState {
+    /// Brings the I/O system up to time `t`: stimulus changes and scheduled orders in
+    /// time order.
+    pub fn advance(&mut self, t: f64) {
+        let Some(system) = self.system.as_mut() else { return };
+        while let Some(&(at, id, value)) = self.stimulus.front() {
+            if at > t {
+                break;
+            }
+            system.advance(at);
+            // A stimulus names inputs only (checked when it is read); an input a
+            // cross-connection drives ignores it, as its physical channel is off.
+            let _ = system.set_input(id, value, at);
+            self.stimulus.pop_front();
+        }
+        system.advance(t);
+    }
+
+    /// When the next signal change is due (a stimulus or a scheduled order).
+    pub fn next_event_time(&self) -> Option<f64> {
+        let scheduled = self.system.as_ref().and_then(|s| s.next_event_time());
+        let stimulus = self.stimulus.front().map(|&(at, _, _)| at);
+        match (scheduled, stimulus) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        }
+    }
+
     /// The value each configured signal's data holds: connected to its signal.
     pub(crate) fn configured_values(&self) -> Vec<(u32, Value)> {
         let Some(system) = &self.system else { return Vec::new() };
@@ -48,13 +80,12 @@ impl IoState {
 pub(crate) fn read_signal(resources: &mut Resources, time: f64, data: &Value) -> Option<f64> {
     let Value::Opaque(opaque) = data else { return None };
     let OpaqueState::Handle(id) = opaque.state else { return None };
-    let system = resources.io.system.as_mut()?;
-    system.advance(time);
-    system.value(id)
+    resources.io.advance(time);
+    resources.io.system.as_ref()?.value(id)
 }
 
 /// The signal id signal data (an argument) is connected to.
-fn signal(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
+pub(super) fn signal(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
     let data = ctx.value(arg)?;
     let connected = match &data {
         Value::Opaque(opaque) => match opaque.state {
@@ -66,10 +97,7 @@ fn signal(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
     let Some(id) = connected else {
         return Err(ctx.error(Err::NoAliasIoDef, "the signal variable is not connected to an I/O signal (AliasIO)"));
     };
-    let time = ctx.time;
-    if let Some(system) = ctx.resources.io.system.as_mut() {
-        system.advance(time);
-    }
+    ctx.resources.io.advance(ctx.time);
     Ok(id)
 }
 

@@ -15,6 +15,7 @@ pub mod files;
 mod geometry;
 pub mod io;
 pub mod io_config;
+mod io_wait;
 mod math;
 mod matrix;
 pub mod modules;
@@ -217,6 +218,9 @@ pub enum StopKind {
     Stop,
     /// ExitCycle: end the cycle (UNDO handlers run), PP back to main.
     ExitCycle,
+    /// A waiting instruction whose condition does not hold yet (WaitDI …): wait for
+    /// `Ctx::wait`, then run the statement again from its start.
+    Repeat,
 }
 
 /// Present means passed: not absent.
@@ -243,6 +247,7 @@ static FAMILIES: &[Entries] = &[
     modules::ENTRIES,
     random::ENTRIES,
     io::ENTRIES,
+    io_wait::ENTRIES,
     spy::ENTRIES,
     cfgdata::ENTRIES,
 ];

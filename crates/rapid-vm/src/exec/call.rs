@@ -93,11 +93,18 @@ impl Vm {
         outcome: Result<(Option<Value>, Option<f64>, crate::builtins::StopKind), RapidError>,
     ) -> Result<Option<Exit>, RapidError> {
         let (result, wait, stop) = outcome?;
+        if stop == crate::builtins::StopKind::Repeat {
+            // The arguments are gone from the stack: the statement starts over.
+            let frame = self.frame_mut();
+            frame.pc = frame.code.stmt_at(frame.pc).map_or(frame.pc, |s| s.start);
+            return Ok(Some(Exit::Wait(wait.unwrap_or(0.0))));
+        }
         if let Some(value) = result {
             self.push(value);
         }
         self.frame_mut().pc += 1;
         match stop {
+            crate::builtins::StopKind::Repeat => Ok(None),
             crate::builtins::StopKind::None => Ok(wait.map(Exit::Wait)),
             crate::builtins::StopKind::Stop => Ok(Some(Exit::Stopped)),
             crate::builtins::StopKind::ExitCycle => {

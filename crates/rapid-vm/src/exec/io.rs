@@ -20,4 +20,9 @@ impl Vm {
             }
         }
     }
+
+    /// The task's I/O system, if it has one (its signals, their change log).
+    pub fn io_system(&self) -> Option<&rapid_io::IoSystem> {
+        self.resources.io.system.as_ref()
+    }
 }

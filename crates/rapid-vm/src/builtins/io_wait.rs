@@ -1,0 +1,178 @@
+//! Waiting for signals (§1.9): WaitDI, WaitDO, WaitGI, WaitGO, WaitAI, WaitAO with
+//! `\MaxTime` (ERR_WAIT_MAXTIME), `\TimeFlag` (DI/DO: no error, the flag is set) and
+//! `\ValueAtTimeout` (groups and analog signals: the value when time ran out).
+//!
+//! While the condition does not hold, the instruction waits until the next signal
+//! change the I/O system knows of (a scheduled order, a stimulus) or the deadline, and
+//! is run again (`StopKind::Repeat`). The start of the wait is kept per call depth and
+//! instruction, so the deadline counts from the first try.
+
+use super::io::signal;
+use super::{present, Ctx, Entries, StopKind};
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::Value;
+
+type Res = Result<Option<Value>, RapidError>;
+
+/// How long to wait before looking again when nothing is scheduled: no signal can
+/// change then except at the deadline, so this only bounds a wait without \MaxTime.
+const IDLE_POLL: f64 = 3600.0;
+
+/// What a wait compares the signal with.
+#[derive(Clone, Copy)]
+enum Compare {
+    Eq,
+    NotEq,
+    Lt,
+    Gt,
+}
+
+impl Compare {
+    fn holds(self, value: f64, target: f64) -> bool {
+        match self {
+            Compare::Eq => value == target,
+            Compare::NotEq => value != target,
+            Compare::Lt => value < target,
+            Compare::Gt => value > target,
+        }
+    }
+}
+
+/// Where the arguments of one wait instruction are.
+struct Layout {
+    signal: usize,
+    compare: Option<[usize; 3]>,
+    value: usize,
+    dvalue: Option<usize>,
+    max_time: usize,
+    /// `\TimeFlag` (DI/DO) or `\ValueAtTimeout` (and `\DvalueAtTimeout`).
+    time_flag: Option<usize>,
+    at_timeout: Option<(usize, Option<usize>)>,
+    visualize: usize,
+}
+
+const DIGITAL: Layout = Layout {
+    signal: 0,
+    compare: None,
+    value: 1,
+    dvalue: None,
+    max_time: 2,
+    time_flag: Some(3),
+    at_timeout: None,
+    visualize: 4,
+};
+const GROUP: Layout = Layout {
+    signal: 0,
+    compare: Some([1, 2, 3]),
+    value: 4,
+    dvalue: Some(5),
+    max_time: 6,
+    time_flag: None,
+    at_timeout: Some((7, Some(8))),
+    visualize: 9,
+};
+const ANALOG: Layout = Layout {
+    signal: 0,
+    compare: None,
+    value: 3,
+    dvalue: None,
+    max_time: 4,
+    time_flag: None,
+    at_timeout: Some((5, None)),
+    visualize: 6,
+};
+
+fn wait_digital(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    wait(ctx, args, &DIGITAL, Compare::Eq)
+}
+
+fn wait_group(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let compare =
+        match GROUP.compare.map(|[ne, lt, gt]| (present(args.get(ne)), present(args.get(lt)), present(args.get(gt)))) {
+            Some((true, _, _)) => Compare::NotEq,
+            Some((_, true, _)) => Compare::Lt,
+            Some((_, _, true)) => Compare::Gt,
+            _ => Compare::Eq,
+        };
+    wait(ctx, args, &GROUP, compare)
+}
+
+/// WaitAI/WaitAO take `\LT` or `\GT` (one of them).
+fn wait_analog(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let compare = if present(args.get(1)) { Compare::Lt } else { Compare::Gt };
+    wait(ctx, args, &ANALOG, compare)
+}
+
+fn wait(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, compare: Compare) -> Res {
+    if present(args.get(layout.visualize)) {
+        return Err(RapidError::fatal(
+            "\\Visualize (a pendant dialog while waiting) is not supported by `rapid run` yet",
+        ));
+    }
+    let id = signal(ctx, &args[layout.signal])?;
+    let target = match layout.dvalue {
+        Some(d) if present(args.get(d)) => ctx.num(&args[d])?,
+        _ => ctx.num(&args[layout.value])?,
+    };
+    let value = ctx.resources.io.system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0);
+    let here = wait_key(ctx);
+    let now = ctx.time;
+    let started = match ctx.resources.io.waiting {
+        Some((depth, pc, at)) if (depth, pc) == here => at,
+        _ => now,
+    };
+    if compare.holds(value, target) {
+        ctx.resources.io.waiting = None;
+        if let Some(flag) = layout.time_flag.filter(|&f| present(args.get(f))) {
+            ctx.store(&args[flag], Value::Bool(false))?;
+        }
+        return Ok(None);
+    }
+    let deadline = ctx.opt_num(args.get(layout.max_time))?.map(|max| started + max);
+    if deadline.is_some_and(|d| now >= d) {
+        ctx.resources.io.waiting = None;
+        return timed_out(ctx, args, layout, value);
+    }
+    ctx.resources.io.waiting = Some((here.0, here.1, started));
+    let next = ctx.resources.io.next_event_time().unwrap_or(now + IDLE_POLL);
+    let until = deadline.map_or(next, |d| d.min(next)).max(now);
+    // A change due now (or a rounding tie) still moves the clock a little, so the wait
+    // always ends.
+    ctx.wait = Some((until - now).max(1e-6));
+    ctx.stop = StopKind::Repeat;
+    Ok(None)
+}
+
+/// Past `\MaxTime`: with `\TimeFlag` the flag is set and execution goes on; otherwise
+/// ERR_WAIT_MAXTIME, after storing the value in `\ValueAtTimeout`.
+fn timed_out(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, value: f64) -> Res {
+    if let Some(flag) = layout.time_flag.filter(|&f| present(args.get(f))) {
+        ctx.store(&args[flag], Value::Bool(true))?;
+        return Ok(None);
+    }
+    if let Some((num, dnum)) = layout.at_timeout {
+        if present(args.get(num)) {
+            ctx.store(&args[num], Value::Num(value as f32))?;
+        }
+        if let Some(d) = dnum.filter(|&d| present(args.get(d))) {
+            ctx.store(&args[d], Value::Dnum(value))?;
+        }
+    }
+    Err(ctx.error(Err::WaitMaxTime, "the signal did not reach the value within \\MaxTime"))
+}
+
+/// The call depth and instruction of the waiting call.
+fn wait_key(ctx: &Ctx<'_>) -> (usize, u32) {
+    let pc = ctx.chain.last().map_or(0, |frame| frame.position().1);
+    (ctx.chain.len(), pc)
+}
+
+pub(super) static ENTRIES: Entries = &[
+    ("WaitDI", wait_digital),
+    ("WaitDO", wait_digital),
+    ("WaitGI", wait_group),
+    ("WaitGO", wait_group),
+    ("WaitAI", wait_analog),
+    ("WaitAO", wait_analog),
+];
