@@ -94,6 +94,7 @@ PROC main()
   AliasIO "di1", part;
   SetGO code, 255;
   TPWrite "code " \Num:=code;
+  TPWrite "code as dnum " \Dnum:=GOutputDnum(code);
   SetAO speed, 2.5;
   TPWrite "speed " \Num:=speed;
   TPWrite "part " \Bool:=TestDI(part);
@@ -108,7 +109,16 @@ ERROR
 ENDPROC
 ENDMODULE
 "#);
-    let expected = ["code 255", "speed 2.5", "part FALSE", "valid TRUE", "ERR_GO_LIM", "ERR_AO_LIM", "code still 255"];
+    let expected = [
+        "code 255",
+        "code as dnum 255",
+        "speed 2.5",
+        "part FALSE",
+        "valid TRUE",
+        "ERR_GO_LIM",
+        "ERR_AO_LIM",
+        "code still 255",
+    ];
     assert_eq!(lines, expected);
 }
 

@@ -184,6 +184,14 @@ fn test_di(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(Value::Bool(value == Some(1.0))))
 }
 
+/// `GInputDnum(Signal)` / `GOutputDnum(Signal)`: a group's value as a dnum, exact for
+/// groups of up to 32 bits (a num holds integers exactly only to 23 bits, manual §1.9).
+fn group_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let id = signal(ctx, &args[0])?;
+    let value = ctx.resources.io.system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0);
+    Ok(Some(Value::Dnum(value)))
+}
+
 /// `ValidIO(Signal)`: whether the signal can be used now: connected, on a running unit
 /// (every simulated unit runs).
 fn valid_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
@@ -246,4 +254,6 @@ pub(super) static ENTRIES: Entries = &[
     ("PulseDO", pulse_do),
     ("TestDI", test_di),
     ("ValidIO", valid_io),
+    ("GInputDnum", group_dnum),
+    ("GOutputDnum", group_dnum),
 ];
