@@ -103,6 +103,14 @@ pub fn num_to_text(v: f32) -> String {
     } else {
         None
     };
+    // An integer of at most six digits prints as itself under %.6G: written directly,
+    // without the exact digit machinery (the common case; perf on bench/interp/fileio).
+    if let Some(integer) = snapped.filter(|&i| i < 1e6) {
+        let mut buf = [0u8; INTEGER_TEXT_MAX];
+        if let Some(text) = integer_fixed_into(integer, 0, false, &mut buf) {
+            return signed(x < 0.0 && integer != 0.0, text.to_string());
+        }
+    }
     let digits = match snapped {
         Some(integer) => Digits::exact_f64(integer),
         None => Digits::exact_f32(v),

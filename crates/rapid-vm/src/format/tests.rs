@@ -342,3 +342,16 @@ fn num_to_str_value_gives_num_to_strs_text() {
         }
     }
 }
+
+#[test]
+fn num_to_text_writes_small_integers_as_the_digit_rules_do() {
+    // The direct path for integers below a million must give %.6G's text.
+    for n in (-999_999i32..=999_999).step_by(997).chain([0, 1, -1, 999_999, -999_999, 100_000]) {
+        let v = n as f32;
+        let rule = Digits::exact_f64(f64::from(n).abs()).general(NUM_SIGNIFICANT_DIGITS);
+        let expected = if n < 0 { format!("-{rule}") } else { rule };
+        assert_eq!(num_to_text(v), expected, "{n}");
+    }
+    assert_eq!(num_to_text(-0.0), "0");
+    assert_eq!(num_to_text(1e6), "1E+06");
+}
