@@ -6,43 +6,92 @@
 //! ```text
 //! at 1.5 set diPartAtPick 1      # at 1.5 s of controller time, the input becomes 1
 //! at 4 s set giRecipe 12         # an `s` after the time is allowed
+//! when doGrip = 1 after 0.2 s set diGripClosed 1   # every time doGrip becomes 1
+//! when doGrip = 0 set diGripClosed 0               # at once
 //! ```
 //!
-//! Signals must be inputs (DI, GI, AI) of the I/O configuration; a digital input takes
-//! 0 or 1. Other forms (reacting to outputs, pendant answers) are not supported yet and
-//! are reported with their line.
+//! `set` names inputs (DI, GI, AI) of the I/O configuration; a digital input takes 0
+//! or 1; `when` watches any signal. Pendant answers in the stimulus are not supported
+//! yet (use `--tp-input`); any other line is reported with its line number.
 
 use rapid_io::{IoSystem, SignalKind};
+use rapid_vm::builtins::io::Reaction;
 
-/// The stimulus of `text` (from file `path`) as (time, signal id, value), in time order.
-pub(crate) fn parse(path: &str, text: &str, io: &IoSystem) -> Result<Vec<(f64, u32, f64)>, String> {
-    let mut orders = Vec::new();
+/// A stimulus: timed input changes (time, signal id, value) in time order, and
+/// reactions.
+pub(crate) type Stimulus = (Vec<(f64, u32, f64)>, Vec<Reaction>);
+
+/// The stimulus of `text` (from file `path`).
+pub(crate) fn parse(path: &str, text: &str, io: &IoSystem) -> Result<Stimulus, String> {
+    let (mut orders, mut reactions) = (Vec::new(), Vec::new());
     for (n, line) in text.lines().enumerate() {
         let line = line.split('#').next().unwrap_or("").trim();
         if line.is_empty() {
             continue;
         }
-        let order = parse_line(line, io).map_err(|message| format!("{path}:{}: {message}", n + 1))?;
-        orders.push(order);
+        let at_line = |message: String| format!("{path}:{}: {message}", n + 1);
+        if line.starts_with("when ") {
+            reactions.push(parse_reaction(line, io).map_err(at_line)?);
+        } else {
+            orders.push(parse_order(line, io).map_err(at_line)?);
+        }
     }
     // Stable: orders at the same time apply in the order written.
     orders.sort_by(|a, b| a.0.total_cmp(&b.0));
-    Ok(orders)
+    Ok((orders, reactions))
 }
 
-fn parse_line(line: &str, io: &IoSystem) -> Result<(f64, u32, f64), String> {
-    let words: Vec<&str> = line.split_whitespace().collect();
-    let words: Vec<&str> = match words.as_slice() {
-        ["at", time, "s", rest @ ..] => [&["at", time][..], rest].concat(),
-        _ => words,
-    };
+/// `at SECONDS [s] set INPUT VALUE`.
+fn parse_order(line: &str, io: &IoSystem) -> Result<(f64, u32, f64), String> {
+    let words = without_units(line);
     let ["at", time, "set", name, value] = words.as_slice() else {
-        return Err(format!("expected `at SECONDS set SIGNAL VALUE`, found `{line}`"));
+        return Err(format!("expected `at SECONDS set SIGNAL VALUE` or `when …`, found `{line}`"));
     };
-    let time: f64 = time.parse().map_err(|_| format!("`{time}` is not a time in seconds"))?;
+    let time = seconds(time)?;
+    let (id, value) = input(io, name, value)?;
+    Ok((time, id, value))
+}
+
+/// `when SIGNAL = VALUE [after SECONDS [s]] set INPUT VALUE`.
+fn parse_reaction(line: &str, io: &IoSystem) -> Result<Reaction, String> {
+    let words = without_units(line);
+    let (watch, value, delay, target, set) = match words.as_slice() {
+        ["when", watch, "=", value, "after", delay, "set", target, set] => (watch, value, Some(delay), target, set),
+        ["when", watch, "=", value, "set", target, set] => (watch, value, None, target, set),
+        _ => return Err(format!("expected `when SIGNAL = VALUE [after SECONDS] set SIGNAL VALUE`, found `{line}`")),
+    };
+    let watch_id = io.id(watch).ok_or_else(|| format!("no signal `{watch}` in the I/O configuration"))?;
+    let value: f64 = value.parse().map_err(|_| format!("`{value}` is not a number"))?;
+    let delay = delay.map_or(Ok(0.0), |d| seconds(d))?;
+    let (target, set) = input(io, target, set)?;
+    Ok(Reaction { watch: watch_id, value, delay, target, set })
+}
+
+/// The words of a line, with the unit `s` after a time dropped.
+fn without_units(line: &str) -> Vec<&str> {
+    let words: Vec<&str> = line.split_whitespace().collect();
+    let mut out = Vec::with_capacity(words.len());
+    for (i, word) in words.iter().enumerate() {
+        let after_time =
+            i > 0 && words[i - 1].parse::<f64>().is_ok() && matches!(words.get(i - 2), Some(&"at" | &"after"));
+        if *word == "s" && after_time {
+            continue;
+        }
+        out.push(*word);
+    }
+    out
+}
+
+fn seconds(text: &str) -> Result<f64, String> {
+    let time: f64 = text.parse().map_err(|_| format!("`{text}` is not a time in seconds"))?;
     if !time.is_finite() || time < 0.0 {
         return Err(format!("the time {time} is not 0 or later"));
     }
+    Ok(time)
+}
+
+/// An input of the configuration and a value it can take.
+fn input(io: &IoSystem, name: &str, value: &str) -> Result<(u32, f64), String> {
     let id = io.id(name).ok_or_else(|| format!("no signal `{name}` in the I/O configuration"))?;
     let kind = io.def(id).map(|d| d.kind).ok_or_else(|| format!("no signal `{name}`"))?;
     if !kind.is_input() {
@@ -52,7 +101,7 @@ fn parse_line(line: &str, io: &IoSystem) -> Result<(f64, u32, f64), String> {
     if kind == SignalKind::DI && value != 0.0 && value != 1.0 {
         return Err(format!("digital input `{name}` takes 0 or 1, not {value}"));
     }
-    Ok((time, id, value))
+    Ok((id, value))
 }
 
 #[cfg(test)]
@@ -67,7 +116,15 @@ mod tests {
     #[test]
     fn orders_are_read_in_time_order_with_comments_and_units() {
         let text = "# start\nat 2 set di1 0\n\nat 1.5 s set DI1 1   # case ignored\n";
-        assert_eq!(super::parse("s.txt", text, &io()), Ok(vec![(1.5, 0, 1.0), (2.0, 0, 0.0)]));
+        assert_eq!(super::parse("s.txt", text, &io()), Ok((vec![(1.5, 0, 1.0), (2.0, 0, 0.0)], Vec::new())));
+    }
+
+    #[test]
+    fn reactions_watch_any_signal_and_set_an_input() {
+        let text = "when do1 = 1 after 0.2 s set di1 1\nwhen do1 = 0 set di1 0\n";
+        let reaction = |value, delay, set| rapid_vm::builtins::io::Reaction { watch: 1, value, delay, target: 0, set };
+        let expected = vec![reaction(1.0, 0.2, 1.0), reaction(0.0, 0.0, 0.0)];
+        assert_eq!(super::parse("s.txt", text, &io()), Ok((Vec::new(), expected)));
     }
 
     #[test]
@@ -79,9 +136,11 @@ mod tests {
             ("at 1 set do1 1", "s.txt:1: `do1` is an output; a stimulus sets inputs only"),
             ("at 1 set di1 2", "s.txt:1: digital input `di1` takes 0 or 1, not 2"),
             (
-                "when do1 = 1 set di1 1",
-                "s.txt:1: expected `at SECONDS set SIGNAL VALUE`, found `when do1 = 1 set di1 1`",
+                "at 1 answer TPReadNum 7",
+                "s.txt:1: expected `at SECONDS set SIGNAL VALUE` or `when …`, found `at 1 answer TPReadNum 7`",
             ),
+            ("when do1 = 1 set do1 1", "s.txt:1: `do1` is an output; a stimulus sets inputs only"),
+            ("when di1 = 1 after -1 set di1 0", "s.txt:1: the time -1 is not 0 or later"),
         ];
         for (text, message) in cases {
             assert_eq!(super::parse("s.txt", text, &io), Err(message.to_string()));

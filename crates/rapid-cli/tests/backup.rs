@@ -398,3 +398,36 @@ fn a_backups_signals_run_with_their_defaults_groups_and_cross_connections() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "ready, pattern 4\nvacuum 0\nvacuum 1\ndone 1\ndone 0\ncount 15\nERR_GO_LIM\n");
 }
+
+#[test]
+fn a_stimulus_reacts_to_the_programs_outputs() {
+    // A handshake: the program closes the gripper and waits for its sensor; the
+    // stimulus answers 0.3 s after every doGrip = 1 and drops the sensor at once on
+    // doGrip = 0. Worked by hand: the first wait ends at 0.3 s, the sensor is 0 right
+    // after Reset, the second cycle starts at 0.3 s and its wait ends at 0.6 s.
+    let dir = scratch("handshake");
+    let eio = "EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n\
+      -Name \"doGrip\" -SignalType \"DO\"\n\n\
+      -Name \"diGripClosed\" -SignalType \"DI\"\n";
+    let program = "MODULE MainModule\n  VAR clock c;\n  PROC main()\n\
+      ClkStart c;\n\
+      FOR i FROM 1 TO 2 DO\n\
+        Set doGrip;\n\
+        WaitDI diGripClosed, 1;\n\
+        TPWrite \"closed at \" \\Num:=ClkRead(c);\n\
+        Reset doGrip;\n\
+        TPWrite \"sensor \" \\Num:=diGripClosed;\n\
+      ENDFOR\n  ENDPROC\nENDMODULE\n";
+    let stimulus = "when doGrip = 1 after 0.3 s set diGripClosed 1\nwhen doGrip = 0 set diGripClosed 0\n";
+    write(
+        &dir,
+        &[
+            ("cell/SYSPAR/EIO.cfg", eio),
+            ("cell/RAPID/TASK1/PROGMOD/MainModule.mod", program),
+            ("stimulus.txt", stimulus),
+        ],
+    );
+    let out = rapid_in(&dir, &["run", "--stimulus", "stimulus.txt", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "closed at 0.3\nsensor 0\nclosed at 0.6\nsensor 0\n");
+}

@@ -254,7 +254,9 @@ fn configure_io(
     let Some(system) = &io.system else {
         return Err(format!("`{shown}`: a stimulus needs an I/O configuration (run a backup folder)"));
     };
-    io.stimulus = crate::stimulus::parse(&shown, &text, system)?.into();
+    let (orders, reactions) = crate::stimulus::parse(&shown, &text, system)?;
+    io.stimulus = orders.into();
+    io.reactions = reactions;
     Ok(())
 }
 

@@ -29,31 +29,61 @@ pub struct IoState {
     /// Input changes from outside (a stimulus script): (time, signal, value), in time
     /// order, not yet applied.
     pub stimulus: std::collections::VecDeque<(f64, u32, f64)>,
+    /// Stimulus reactions: when a signal changes to a value, an input follows.
+    pub reactions: Vec<Reaction>,
+    /// How many entries of the change log the reactions have seen.
+    seen_changes: usize,
     /// The waiting instruction under way (WaitDI …): (call depth, pc, started at).
     pub(crate) waiting: Option<(usize, u32, f64)>,
 }
 
+/// `when WATCH = VALUE after DELAY set TARGET SET`: every time `watch` changes to
+/// `value`, input `target` becomes `set` `delay` seconds later.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Reaction {
+    pub watch: u32,
+    pub value: f64,
+    pub delay: f64,
+    pub target: u32,
+    pub set: f64,
+}
+
+/// Changes one instant may cause through reactions before the stimulus is taken to
+/// loop (two reactions undoing each other with no delay).
+const MAX_REACTIONS_PER_ADVANCE: usize = 100_000;
+
 impl IoState {
-    /// Brings the I/O system up to time `t`: stimulus changes and scheduled orders in
-    /// time order.
+    /// Brings the I/O system up to time `t`, one change at a time in time order:
+    /// stimulus lines, scheduled orders, and the reactions they trigger.
     pub fn advance(&mut self, t: f64) {
         let Some(system) = self.system.as_mut() else { return };
-        while let Some(&(at, id, value)) = self.stimulus.front() {
-            if at > t {
-                break;
+        for _ in 0..MAX_REACTIONS_PER_ADVANCE {
+            react(system, &self.reactions, &mut self.seen_changes, &mut self.stimulus);
+            let stimulus = self.stimulus.front().map(|&(at, _, _)| at).filter(|&at| at <= t);
+            let scheduled = system.next_event_time().filter(|&at| at <= t);
+            match (stimulus, scheduled) {
+                (Some(at), order) if order.is_none_or(|o| at <= o) => {
+                    system.advance(at);
+                    if let Some((at, id, value)) = self.stimulus.pop_front() {
+                        // A stimulus names inputs only (checked when it is read); an input
+                        // a cross-connection drives ignores it, as its physical channel
+                        // is off.
+                        let _ = system.set_input(id, value, at);
+                    }
+                }
+                (_, Some(at)) => system.advance(at),
+                _ => break,
             }
-            system.advance(at);
-            // A stimulus names inputs only (checked when it is read); an input a
-            // cross-connection drives ignores it, as its physical channel is off.
-            let _ = system.set_input(id, value, at);
-            self.stimulus.pop_front();
         }
         system.advance(t);
+        react(system, &self.reactions, &mut self.seen_changes, &mut self.stimulus);
     }
 
-    /// When the next signal change is due (a stimulus or a scheduled order).
-    pub fn next_event_time(&self) -> Option<f64> {
-        let scheduled = self.system.as_ref().and_then(|s| s.next_event_time());
+    /// When the next signal change is due (a stimulus, a reaction or a scheduled order).
+    pub fn next_event_time(&mut self) -> Option<f64> {
+        let system = self.system.as_mut()?;
+        react(system, &self.reactions, &mut self.seen_changes, &mut self.stimulus);
+        let scheduled = system.next_event_time();
         let stimulus = self.stimulus.front().map(|&(at, _, _)| at);
         match (scheduled, stimulus) {
             (Some(a), Some(b)) => Some(a.min(b)),
@@ -74,6 +104,25 @@ impl IoState {
             })
             .collect()
     }
+}
+
+/// Schedules the reactions to the changes logged since the last look, keeping the
+/// stimulus in time order (equal times in the order they arose).
+fn react(
+    system: &IoSystem,
+    reactions: &[Reaction],
+    seen: &mut usize,
+    stimulus: &mut std::collections::VecDeque<(f64, u32, f64)>,
+) {
+    let changes = system.changes();
+    for change in changes.get(*seen..).unwrap_or(&[]) {
+        for r in reactions.iter().filter(|r| r.watch == change.id && r.value == change.new) {
+            let at = change.time + r.delay;
+            let place = stimulus.partition_point(|&(t, _, _)| t <= at);
+            stimulus.insert(place, (at, r.target, r.set));
+        }
+    }
+    *seen = changes.len();
 }
 
 /// The value of signal data, or `None` when it is not connected (ERR_NO_ALIASIO_DEF).
