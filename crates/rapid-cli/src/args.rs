@@ -58,8 +58,9 @@ pub(crate) struct RunArgs {
 
     /// The controller's root folder: the file devices HOME:, TEMP:, RAMDISK: and BACKUP:
     /// are its subfolders HOME, TEMP, RAMDISK and BACKUP (made when first used). The
-    /// program's files never leave it. Default: a folder `rapid-controller` beside the
-    /// first PATH.
+    /// program's files never leave it. Default: the backup folder itself when PATH is a
+    /// backup (its HOME is the controller's HOME:), else a folder `rapid-controller`
+    /// beside the first PATH.
     #[arg(long, value_name = "DIR")]
     pub(crate) home: Option<PathBuf>,
 

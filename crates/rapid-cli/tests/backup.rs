@@ -431,3 +431,17 @@ fn a_stimulus_reacts_to_the_programs_outputs() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "closed at 0.3\nsensor 0\nclosed at 0.6\nsensor 0\n");
 }
+
+#[test]
+fn a_backups_home_folder_is_the_home_device() {
+    // A backup carries the controller's HOME folder: HOME: files are read from it.
+    let dir = scratch("home_device");
+    let program = "MODULE MainModule\n  VAR iodev f;\n  PROC main()\n\
+      Open \"HOME:/recipe.txt\", f \\Read;\n\
+      TPWrite \"recipe \" + ReadStr(f);\n\
+      Close f;\n  ENDPROC\nENDMODULE\n";
+    write(&dir, &[("cell/RAPID/TASK1/PROGMOD/MainModule.mod", program), ("cell/HOME/recipe.txt", "blue boxes\n")]);
+    let out = rapid_in(&dir, &["run", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "recipe blue boxes\n");
+}

@@ -36,7 +36,9 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         Ok(loaded) => loaded,
         Err(err) => return report_load_error(err, &inputs.modules),
     };
-    configure_files(&mut loaded, args, &inputs.modules);
+    // A backup's own HOME folder is the controller's HOME: device.
+    let backup_root = inputs.task.as_ref().and_then(|task| Some(task.folder.parent()?.parent()?.to_path_buf()));
+    configure_files(&mut loaded, args, &inputs.modules, backup_root);
     loaded.vm.resources_mut().cfgdata.set_config(inputs.syspar.clone());
     if let Err(message) = configure_io(&mut loaded, args, &inputs.syspar) {
         eprintln!("error: {message}");
@@ -118,8 +120,13 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
 
 /// The controller root of the file devices (`--home`, else `rapid-controller` beside
 /// the first PATH) and the loaded modules' files (ModExist, ModTimeDnum).
-fn configure_files(loaded: &mut rapid_vm::Loaded, args: &RunArgs, files: &[SourceInput]) {
-    let root = args.home.clone().unwrap_or_else(|| default_home(&args.paths));
+fn configure_files(
+    loaded: &mut rapid_vm::Loaded,
+    args: &RunArgs,
+    files: &[SourceInput],
+    backup_root: Option<std::path::PathBuf>,
+) {
+    let root = args.home.clone().or(backup_root).unwrap_or_else(|| default_home(&args.paths));
     let mut interner = rapid_syntax::Interner::default();
     let modules = files
         .iter()
