@@ -94,6 +94,9 @@ errors! {
     AoLim = "ERR_AO_LIM",
     GoLim = "ERR_GO_LIM",
     SigNotValid = "ERR_SIG_NOT_VALID",
+    // Interrupts (§1.11).
+    UnknownInterrupt = "ERR_UNKINO",
+    AlreadyConnected = "ERR_ALRDYCNT",
     // Configuration data (§1.17).
     CfgIllType = "ERR_CFG_ILLTYPE",
     CfgIllDomain = "ERR_CFG_ILL_DOMAIN",

@@ -107,6 +107,9 @@ pub enum Instr {
     WaitPop,
     /// Raise the predefined error `0` (WaitUntil's timeout).
     RaiseWaitTimeout,
+    /// CONNECT: pop the intnum's place; give it a new interrupt whose trap is routine `n`
+    /// (ERR_ALRDYCNT when it is connected already).
+    Connect(u32),
     /// Pop signal data, push the signal's value; data no AliasIO connected raises
     /// ERR_NO_ALIASIO_DEF (manual §1.9). Constant `n` names the data (for the message).
     ReadSignal(u32),

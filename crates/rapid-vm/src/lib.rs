@@ -104,6 +104,7 @@ pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Resul
         FxHashMap::default(),
         errno_global,
     );
+    vm.set_intno_global(global_named("INTNO"));
     let mut host = RecordingHost::default();
     let init = std::rc::Rc::new(compiled.init);
     vm.set_init(init.clone(), compiled.global_defaults.clone());

@@ -226,3 +226,31 @@ ENDMODULE
         ["gave up TRUE", "at 1", "in time TRUE", "at 1.5", "ERR_WAIT_MAXTIME, value 0", "at 2", "pulse over at 2.25"];
     assert_eq!(lines, expected);
 }
+
+#[test]
+fn signal_interrupts_run_their_trap_on_each_matching_change() {
+    // ISignalDO lamp, 1: every change of do1 to 1 (Set, the start of a pulse) starts the
+    // trap before the next instruction; changes to 0 do not.
+    let lines = run(r#"MODULE m
+VAR signaldo lamp;
+VAR intnum on_lamp;
+VAR num rises := 0;
+PROC main()
+  AliasIO "do1", lamp;
+  CONNECT on_lamp WITH lamp_trap;
+  ISignalDO lamp, 1, on_lamp;
+  Set lamp;
+  TPWrite "after Set";
+  Reset lamp;
+  PulseDO \PLength:=0.5, lamp;
+  WaitTime 1;
+  TPWrite "rises " \Num:=rises;
+ENDPROC
+TRAP lamp_trap
+  rises := rises + 1;
+  TPWrite "lamp rose";
+ENDTRAP
+ENDMODULE
+"#);
+    assert_eq!(lines, ["lamp rose", "after Set", "lamp rose", "rises 2"]);
+}

@@ -135,7 +135,9 @@ fn wait(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, compare: Compare) ->
         return timed_out(ctx, args, layout, value);
     }
     ctx.resources.io.waiting = Some((here.0, here.1, started));
-    let next = ctx.resources.io.next_event_time().unwrap_or(now + IDLE_POLL);
+    let io_next = ctx.resources.io.next_event_time();
+    let interrupt_next = super::interrupts::next_due(ctx);
+    let next = [io_next, interrupt_next].into_iter().flatten().min_by(f64::total_cmp).unwrap_or(now + IDLE_POLL);
     let until = deadline.map_or(next, |d| d.min(next)).max(now);
     // A change due now (or a rounding tie) still moves the clock a little, so the wait
     // always ends.

@@ -13,6 +13,7 @@ mod dnheader;
 mod events;
 pub mod files;
 mod geometry;
+pub mod interrupts;
 pub mod io;
 pub mod io_config;
 mod io_wait;
@@ -108,6 +109,8 @@ pub struct Resources {
     pub random: random::RandomState,
     /// The task's I/O system (signals) and the RAPID types of the signal kinds.
     pub io: io::IoState,
+    /// The task's interrupts (deleted at PP to Main).
+    pub interrupts: interrupts::InterruptState,
     /// The system parameters the run was started with (kept at PP to Main).
     pub cfgdata: cfgdata::CfgState,
 }
@@ -121,6 +124,7 @@ impl Resources {
         self.symsearch.end_search();
         self.spy.stop();
         self.modules.close_all();
+        self.interrupts.clear();
     }
 }
 
@@ -247,6 +251,7 @@ static FAMILIES: &[Entries] = &[
     modules::ENTRIES,
     random::ENTRIES,
     io::ENTRIES,
+    interrupts::ENTRIES,
     io_wait::ENTRIES,
     spy::ENTRIES,
     cfgdata::ENTRIES,

@@ -12,7 +12,25 @@ pub(super) fn wait_time(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
     if seconds < 0.0 {
         return Err(ctx.error(Err::ArgValue, "WaitTime needs a time of 0 or more seconds"));
     }
-    ctx.wait = Some(seconds);
+    // While interrupts can fire, the wait ends at the next one due, so its trap runs in
+    // time (§1.11: traps run during waits), and then goes on for the rest.
+    let Some(due) = super::interrupts::next_due(ctx) else {
+        ctx.wait = Some(seconds);
+        return Ok(None);
+    };
+    let here = (ctx.chain.len(), ctx.chain.last().map_or(0, |f| f.position().1));
+    let started = match ctx.resources.io.waiting {
+        Some((depth, pc, at)) if (depth, pc) == here => at,
+        _ => ctx.time,
+    };
+    let end = started + seconds;
+    if ctx.time >= end {
+        ctx.resources.io.waiting = None;
+        return Ok(None);
+    }
+    ctx.resources.io.waiting = Some((here.0, here.1, started));
+    ctx.wait = Some((end.min(due) - ctx.time).max(1e-6));
+    ctx.stop = super::StopKind::Repeat;
     Ok(None)
 }
 

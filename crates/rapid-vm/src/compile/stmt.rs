@@ -182,7 +182,13 @@ impl RoutineCompiler<'_> {
             StmtKind::Exit => {
                 self.code.emit(Instr::Exit);
             }
-            StmtKind::Connect { .. } => return Err(self.unsupported(stmt.span, "CONNECT (interrupts)")),
+            StmtKind::Connect { target, trap } => {
+                let Some(super::Resolved::Routine(idx)) = self.resolve(trap.sym) else {
+                    return Err(self.error(trap.span, "CONNECT needs a TRAP routine"));
+                };
+                self.place(arena, *target)?;
+                self.code.emit(Instr::Connect(idx));
+            }
             StmtKind::Placeholder(_) | StmtKind::Error => {
                 self.code.emit(Instr::Placeholder);
             }

@@ -25,6 +25,7 @@ impl Vm {
             last_retry_stmt: None,
             undoing: false,
             return_to: None,
+            interrupted: false,
         });
     }
 
@@ -142,6 +143,7 @@ impl Vm {
             last_retry_stmt: None,
             undoing: false,
             return_to,
+            interrupted: false,
         });
         Ok(None)
     }
@@ -340,7 +342,7 @@ impl Vm {
                     self.storage.stack.truncate(keep as usize);
                     return None;
                 }
-                _ if error.fatal || in_handler || self.frames.len() == 1 => {
+                _ if error.fatal || in_handler || self.frames.len() == 1 || frame.interrupted => {
                     let frame = self.frames.last()?;
                     let exit = self.unhandled(error, frame);
                     self.frames.clear();

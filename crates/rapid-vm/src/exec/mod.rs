@@ -11,6 +11,7 @@
 pub mod backward;
 mod call;
 mod fast;
+mod interrupts;
 mod io;
 mod kernel;
 pub mod modules;
@@ -89,8 +90,12 @@ pub(crate) struct Frame {
     last_retry_stmt: Option<u32>,
     /// Running this frame's UNDO handler while the program exits.
     undoing: bool,
-    /// Running this frame's BACKWARD handler: where the caller's PP goes afterwards.
+    /// Running this frame's BACKWARD handler, or a TRAP: where the caller's PP goes
+    /// afterwards.
     return_to: Option<u32>,
+    /// A TRAP routine an interrupt started: it returns to the interrupted instruction,
+    /// and an error it does not handle goes to the system error handler.
+    interrupted: bool,
 }
 
 impl Frame {
@@ -107,7 +112,7 @@ impl Frame {
             3
         } else if self.active.is_some() {
             2
-        } else if self.return_to.is_some() {
+        } else if self.return_to.is_some() && !self.interrupted {
             1
         } else {
             0
@@ -128,6 +133,8 @@ pub struct Vm {
     types: OpTypes,
     errnos: FxHashMap<&'static str, i32>,
     errno_global: Option<u32>,
+    /// INTNO, set when a trap starts.
+    intno_global: Option<u32>,
     /// Which globals are persistents (IsPers, IsVar).
     pers_globals: Vec<bool>,
     /// Reused for the arguments of calls that need rearranging.
@@ -183,6 +190,7 @@ impl Vm {
             types,
             errnos,
             errno_global,
+            intno_global: None,
             pers_globals: Vec::new(),
             arg_scratch: Vec::new(),
             next_booked: FIRST_BOOKED_ERRNO,
@@ -213,6 +221,11 @@ impl Vm {
     /// The numbers of the predefined errors (read from the ERR_ constants at load).
     pub fn set_errnos(&mut self, errnos: FxHashMap<&'static str, i32>) {
         self.errnos = errnos;
+    }
+
+    /// Where INTNO lives (set when a trap starts).
+    pub fn set_intno_global(&mut self, global: Option<u32>) {
+        self.intno_global = global;
     }
 
     /// Marks which globals are persistents.
@@ -316,11 +329,17 @@ impl Vm {
             if self.frames.is_empty() {
                 return Exit::Done;
             }
-            let outcome = if self.resources.spy.is_active() {
-                // The execution log sees every statement: one instruction at a time.
+            let watched = self.resources.interrupts.active();
+            let outcome = if self.resources.spy.is_active() || watched {
+                // The execution log sees every statement, and interrupts are looked for
+                // before every instruction: one instruction at a time.
                 remaining -= 1;
                 self.steps += 1;
-                let outcome = self.spy_step(host);
+                if watched {
+                    self.poll_interrupts();
+                    self.enter_trap_if_due();
+                }
+                let outcome = if self.resources.spy.is_active() { self.spy_step(host) } else { self.step(host) };
                 self.spy_forget_if_stopped();
                 outcome
             } else {
@@ -599,6 +618,15 @@ impl Vm {
                 let seconds = self.pop_num()?;
                 self.frame_mut().pc = next;
                 return Ok(Some(Exit::Wait(seconds.max(0.0))));
+            }
+            Instr::Connect(trap) => {
+                let Value::Ref(place) = self.pop() else { return Err(RapidError::fatal("CONNECT without an intnum")) };
+                let current = self.storage.get(&place).ok().and_then(Value::as_f64).unwrap_or(0.0);
+                if current >= 1.0 && self.resources.interrupts.get_mut(current as u32).is_some() {
+                    return Err(self.error(Err::AlreadyConnected, "the intnum is connected to a trap already"));
+                }
+                let number = self.resources.interrupts.connect(trap);
+                self.storage.set(&place, Value::Num(number as f32)).map_err(|f| self.fault(f))?;
             }
             Instr::ReadSignal(name) => {
                 let data = self.pop();

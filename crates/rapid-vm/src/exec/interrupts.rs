@@ -1,0 +1,86 @@
+//! The executor's side of interrupts (§1.11): noticing events (timers due, signal
+//! changes) and running TRAP routines between instructions. While anything can fire,
+//! `Vm::run` executes one instruction at a time and looks before each; waits end at
+//! the next possible interrupt (`builtins::interrupts::next_due`) so traps run in time.
+
+use super::{Frame, Vm};
+use crate::builtins::interrupts::Source;
+use crate::value::Value;
+
+impl Vm {
+    /// Queues the interrupts whose events have happened by now.
+    pub(super) fn poll_interrupts(&mut self) {
+        let now = self.time;
+        let interrupts = &mut self.resources.interrupts;
+        let mut fired = Vec::new();
+        for (idx, slot) in interrupts.table.iter_mut().enumerate() {
+            let Some(interrupt) = slot else { continue };
+            if let Some(Source::Timer { period, next, single }) = &mut interrupt.source {
+                if *next <= now {
+                    fired.push(idx as u32 + 1);
+                    if *single {
+                        interrupt.source = None;
+                    } else {
+                        *next += *period;
+                    }
+                }
+            }
+        }
+        if interrupts.watches_signals() {
+            self.resources.io.advance(now);
+            let changes = self.resources.io.system.as_ref().map(|io| io.changes()).unwrap_or(&[]);
+            let interrupts = &mut self.resources.interrupts;
+            for change in changes.get(interrupts.seen_changes..).unwrap_or(&[]) {
+                for (idx, slot) in interrupts.table.iter_mut().enumerate() {
+                    let Some(interrupt) = slot else { continue };
+                    let Some(Source::Signal { id, value, single }) = interrupt.source else { continue };
+                    if id == change.id && (value == 2.0 || value == change.new) {
+                        fired.push(idx as u32 + 1);
+                        if single {
+                            interrupt.source = None;
+                        }
+                    }
+                }
+            }
+            interrupts.seen_changes = changes.len();
+        }
+        for number in fired {
+            self.resources.interrupts.fire(number);
+        }
+    }
+
+    /// Starts the trap of the first queued interrupt, when one may run now: interrupts
+    /// are enabled, no trap is running, and the interrupted routine is between
+    /// instructions (at the start of a statement).
+    pub(super) fn enter_trap_if_due(&mut self) {
+        let interrupts = &self.resources.interrupts;
+        if interrupts.queue.is_empty() || interrupts.disabled || self.frames.iter().any(|f| f.interrupted) {
+            return;
+        }
+        let Some(top) = self.frames.last() else { return };
+        let at_statement = top.code.stmt_at(top.pc).is_some_and(|s| s.start == top.pc);
+        if !at_statement || top.undoing || self.exiting {
+            return;
+        }
+        let Some(number) = self.resources.interrupts.queue.pop_front() else { return };
+        let trap = self.resources.interrupts.get_mut(number).map(|i| i.trap);
+        let Some(code) = trap.and_then(|t| self.routines.get(t as usize).cloned().flatten()) else { return };
+        if let Some(global) = self.intno_global {
+            self.storage.globals[global as usize] = Value::Num(number as f32);
+        }
+        let resume = top.pc;
+        let base = self.storage.stack.len() as u32;
+        self.storage.stack.extend(code.local_defaults.iter().cloned());
+        self.frames.push(Frame {
+            code,
+            pc: 0,
+            base,
+            active: None,
+            retries: 0,
+            last_retry_stmt: None,
+            undoing: false,
+            return_to: Some(resume),
+            interrupted: true,
+        });
+    }
+}
