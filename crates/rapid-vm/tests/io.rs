@@ -95,6 +95,7 @@ PROC main()
   SetGO code, 255;
   TPWrite "code " \Num:=code;
   TPWrite "code as dnum " \Dnum:=GOutputDnum(code);
+  TPWrite "GOutput " \Num:=GOutput(code);
   SetAO speed, 2.5;
   TPWrite "speed " \Num:=speed;
   TPWrite "part " \Bool:=TestDI(part);
@@ -112,6 +113,7 @@ ENDMODULE
     let expected = [
         "code 255",
         "code as dnum 255",
+        "GOutput 255",
         "speed 2.5",
         "part FALSE",
         "valid TRUE",

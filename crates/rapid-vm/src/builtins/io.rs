@@ -241,6 +241,14 @@ fn group_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(Value::Dnum(value)))
 }
 
+/// `DInput`, `DOutput`, `GInput`, `GOutput`, `AInput`, `AOutput` (older forms of reading
+/// a signal): the signal's value as a num.
+fn signal_value(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let id = signal(ctx, &args[0])?;
+    let value = ctx.resources.io.system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0);
+    Ok(Some(Value::Num(value as f32)))
+}
+
 /// `ValidIO(Signal)`: whether the signal can be used now: connected, on a running unit
 /// (every simulated unit runs).
 fn valid_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
@@ -304,5 +312,11 @@ pub(super) static ENTRIES: Entries = &[
     ("TestDI", test_di),
     ("ValidIO", valid_io),
     ("GInputDnum", group_dnum),
+    ("DInput", signal_value),
+    ("DOutput", signal_value),
+    ("GInput", signal_value),
+    ("GOutput", signal_value),
+    ("AInput", signal_value),
+    ("AOutput", signal_value),
     ("GOutputDnum", group_dnum),
 ];
