@@ -256,3 +256,27 @@ ENDMODULE
 "#);
     assert_eq!(lines, ["lamp rose", "after Set", "lamp rose", "rises 2"]);
 }
+
+#[test]
+fn group_interrupts_run_on_every_change() {
+    // ISignalGO: each change of go1's value starts the trap; setting the same value
+    // again is no change.
+    let lines = run(r#"MODULE m
+VAR signalgo code;
+VAR intnum on_code;
+PROC main()
+  AliasIO "go1", code;
+  CONNECT on_code WITH code_trap;
+  ISignalGO code, on_code;
+  SetGO code, 5;
+  SetGO code, 5;
+  SetGO code, 7;
+  TPWrite "done";
+ENDPROC
+TRAP code_trap
+  TPWrite "code now " \Num:=code;
+ENDTRAP
+ENDMODULE
+"#);
+    assert_eq!(lines, ["code now 5", "code now 7", "done"]);
+}

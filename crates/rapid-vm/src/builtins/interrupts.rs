@@ -147,13 +147,28 @@ fn isignal_digital(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         return Err(ctx.error(Err::ArgValue, format!("TriggValue {value} is not 0, 1 or 2")));
     }
     let n = interrupt_number(ctx, &args[4])?;
-    // Only changes from now on count.
-    ctx.resources.interrupts.seen_changes =
-        ctx.resources.io.system.as_ref().map_or(0, |io| io.changes().len()).max(ctx.resources.interrupts.seen_changes);
-    if let Some(interrupt) = ctx.resources.interrupts.get_mut(n) {
-        interrupt.source = Some(Source::Signal { id, value, single });
-    }
+    watch_signal(ctx, n, Source::Signal { id, value, single });
     Ok(None)
+}
+
+/// `ISignalGI/ISignalGO [\Single] | [\SingleSafe] Signal Interrupt`: every change of the
+/// group's value.
+fn isignal_group(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let single = present(args.first()) || present(args.get(1));
+    let id = signal(ctx, &args[2])?;
+    let n = interrupt_number(ctx, &args[3])?;
+    watch_signal(ctx, n, Source::Signal { id, value: 2.0, single });
+    Ok(None)
+}
+
+/// Orders interrupt `n` on a signal: only changes from now on count.
+fn watch_signal(ctx: &mut Ctx<'_>, n: u32, source: Source) {
+    let logged = ctx.resources.io.system.as_ref().map_or(0, |io| io.changes().len());
+    let interrupts = &mut ctx.resources.interrupts;
+    interrupts.seen_changes = interrupts.seen_changes.max(logged);
+    if let Some(interrupt) = interrupts.get_mut(n) {
+        interrupt.source = Some(source);
+    }
 }
 
 /// `IDelete Interrupt`: the interrupt is gone; the intnum may be connected again.
@@ -198,6 +213,8 @@ pub(super) static ENTRIES: Entries = &[
     ("ITimer", itimer),
     ("ISignalDI", isignal_digital),
     ("ISignalDO", isignal_digital),
+    ("ISignalGI", isignal_group),
+    ("ISignalGO", isignal_group),
     ("IDelete", idelete),
     ("ISleep", isleep),
     ("IWatch", iwatch),
