@@ -27,6 +27,8 @@ pub enum Source {
     Timer { period: f64, next: f64, single: bool },
     /// ISignalDI/ISignalDO: when signal `id` changes to `value` (2: any change).
     Signal { id: u32, value: f64, single: bool },
+    /// IPers: when the persistent at `place` gets a value other than `last`.
+    Pers { place: crate::value::Place, last: Value, single: bool },
 }
 
 /// One connected interrupt.
@@ -171,6 +173,20 @@ fn watch_signal(ctx: &mut Ctx<'_>, n: u32, source: Source) {
     }
 }
 
+/// `IPers [\Single] | [\SingleSafe] Name Interrupt`: every change of a persistent's
+/// value.
+fn ipers(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let single = present(args.first()) || present(args.get(1));
+    let Value::Ref(place) = &args[2] else { return Err(ctx.error(Err::ArgValue, "IPers needs a persistent")) };
+    let place = (**place).clone();
+    let last = ctx.value(&args[2])?;
+    let n = interrupt_number(ctx, &args[3])?;
+    if let Some(interrupt) = ctx.resources.interrupts.get_mut(n) {
+        interrupt.source = Some(Source::Pers { place, last, single });
+    }
+    Ok(None)
+}
+
 /// `IDelete Interrupt`: the interrupt is gone; the intnum may be connected again.
 fn idelete(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let number = ctx.num(&args[0])?;
@@ -214,6 +230,7 @@ pub(super) static ENTRIES: Entries = &[
     ("ISignalDI", isignal_digital),
     ("ISignalDO", isignal_digital),
     ("ISignalGI", isignal_group),
+    ("IPers", ipers),
     ("ISignalGO", isignal_group),
     ("IDelete", idelete),
     ("ISleep", isleep),

@@ -26,6 +26,19 @@ impl Vm {
                 }
             }
         }
+        for (idx, slot) in self.resources.interrupts.table.iter_mut().enumerate() {
+            let Some(interrupt) = slot else { continue };
+            let Some(Source::Pers { place, last, single }) = &mut interrupt.source else { continue };
+            let Ok(now_value) = self.storage.get(place) else { continue };
+            if now_value != last {
+                *last = now_value.clone();
+                fired.push(idx as u32 + 1);
+                if *single {
+                    interrupt.source = None;
+                }
+            }
+        }
+        let interrupts = &mut self.resources.interrupts;
         if interrupts.watches_signals() {
             self.resources.io.advance(now);
             let changes = self.resources.io.system.as_ref().map(|io| io.changes()).unwrap_or(&[]);
