@@ -29,6 +29,9 @@ pub enum Source {
     Signal { id: u32, value: f64, single: bool },
     /// IPers: when the persistent at `place` gets a value other than `last`.
     Pers { place: crate::value::Place, last: Value, single: bool },
+    /// IError: an event-log entry of `domain` (0: any), number `id` (any when `None`)
+    /// and `kind` (0 any, 1 state, 2 warning, 3 error).
+    Error { domain: u32, id: Option<u32>, kind: u32 },
 }
 
 /// One connected interrupt.
@@ -52,6 +55,12 @@ pub struct InterruptState {
     pub disabled: bool,
     /// How much of the I/O change log signal interrupts have seen.
     pub seen_changes: usize,
+    /// The number of the first event-log entry error interrupts have not seen.
+    pub next_event: u64,
+    /// For each queued interrupt fired by an event-log entry: that entry's number.
+    pub events: Vec<(u32, u64)>,
+    /// The event of the trap that runs now (GetTrapData).
+    pub trap_event: Option<u64>,
 }
 
 impl InterruptState {
@@ -187,6 +196,78 @@ fn ipers(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
+/// `IError ErrorDomain [\ErrorId] ErrorType Interrupt`: an interrupt for event-log
+/// entries (manual §1.11, §1.12): errors, warnings or state changes of a domain.
+fn ierror(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let domain = ctx.num(&args[0])? as u32;
+    let id = ctx.opt_num(args.get(1))?.map(|n| n as u32);
+    let kind = ctx.num(&args[2])? as u32;
+    let n = interrupt_number(ctx, &args[3])?;
+    // Only entries from now on count.
+    let next = ctx.events.entries().last().map_or(0, |e| e.seq + 1);
+    let interrupts = &mut ctx.resources.interrupts;
+    interrupts.next_event = interrupts.next_event.max(next);
+    if let Some(interrupt) = interrupts.get_mut(n) {
+        interrupt.source = Some(Source::Error { domain, id, kind });
+    }
+    Ok(None)
+}
+
+/// `GetTrapData TrapEvent`: in a trap started by IError, what started it.
+// uncertain: outside such a trap the manual names no error; ERR_ARGVALERR.
+fn get_trap_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let Some(seq) = ctx.resources.interrupts.trap_event else {
+        return Err(ctx.error(Err::ArgValue, "GetTrapData outside a trap started by IError"));
+    };
+    let Value::Opaque(shell) = ctx.value(&args[0])? else {
+        return Err(ctx.error(Err::ArgValue, "TrapEvent must be trapdata"));
+    };
+    let data = crate::value::Opaque { ty: shell.ty, state: crate::value::OpaqueState::Handle(seq as u32) };
+    ctx.store(&args[0], Value::Opaque(Box::new(data)))?;
+    Ok(None)
+}
+
+/// `ReadErrData TrapEvent ErrorDomain ErrorId ErrorType [\Title] [\Str1] … [\Str5]`.
+fn read_err_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let seq = match ctx.value(&args[0])? {
+        Value::Opaque(o) => match o.state {
+            crate::value::OpaqueState::Handle(seq) => Some(u64::from(seq)),
+            _ => None,
+        },
+        _ => None,
+    };
+    let event = seq.and_then(|seq| ctx.events.entries().iter().find(|e| e.seq == seq).cloned());
+    let Some(event) = event else {
+        return Err(ctx.error(Err::ArgValue, "TrapEvent holds no event (GetTrapData first)"));
+    };
+    ctx.store(&args[1], Value::Num(event.domain as f32))?;
+    ctx.store(&args[2], Value::Num(event.number as f32))?;
+    ctx.store(&args[3], Value::Num(event_type(event.kind) as f32))?;
+    if present(args.get(4)) {
+        ctx.store(&args[4], Value::Str(limit(&event.title).into()))?;
+    }
+    for (k, line) in (5..10).zip(event.lines.iter().map(Some).chain(std::iter::repeat(None))) {
+        if present(args.get(k)) {
+            ctx.store(&args[k], Value::Str(limit(line.map_or("", |l| l.as_str())).into()))?;
+        }
+    }
+    Ok(None)
+}
+
+/// A message text as a RAPID string (at most 80 characters).
+fn limit(text: &str) -> String {
+    text.chars().take(crate::value::MAX_STRING_CHARS).collect()
+}
+
+/// errtype of an event: TYPE_STATE 1 (information), TYPE_WARN 2, TYPE_ERR 3.
+pub(crate) fn event_type(kind: crate::events::EventKind) -> u32 {
+    match kind {
+        crate::events::EventKind::Info => 1,
+        crate::events::EventKind::Warning => 2,
+        crate::events::EventKind::Error => 3,
+    }
+}
+
 /// `IDelete Interrupt`: the interrupt is gone; the intnum may be connected again.
 fn idelete(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let number = ctx.num(&args[0])?;
@@ -231,6 +312,9 @@ pub(super) static ENTRIES: Entries = &[
     ("ISignalDO", isignal_digital),
     ("ISignalGI", isignal_group),
     ("IPers", ipers),
+    ("IError", ierror),
+    ("GetTrapData", get_trap_data),
+    ("ReadErrData", read_err_data),
     ("ISignalGO", isignal_group),
     ("IDelete", idelete),
     ("ISleep", isleep),

@@ -361,9 +361,10 @@ impl Vm {
                             if let Some(value) = result {
                                 self.storage.stack.push(value);
                             }
-                            if self.resources.spy.is_active() {
-                                // SpyStart: from the next instruction on, the log sees
-                                // every statement, which only the general path shows.
+                            if self.resources.spy.is_active() || self.resources.interrupts.active() {
+                                // SpyStart, or an interrupt ordered: from the next
+                                // instruction on, the run looks at every statement (the
+                                // log, interrupts to take), which the fast loop skips.
                                 self.frame_mut().pc = pc + 1;
                                 break Fast::Called(Ok(None));
                             }

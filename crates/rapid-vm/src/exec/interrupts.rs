@@ -38,6 +38,7 @@ impl Vm {
                 }
             }
         }
+        self.poll_error_interrupts();
         let interrupts = &mut self.resources.interrupts;
         if interrupts.watches_signals() {
             self.resources.io.advance(now);
@@ -62,6 +63,36 @@ impl Vm {
         }
     }
 
+    /// Queues the error interrupts (IError) of event-log entries logged since the last
+    /// look, remembering which entry fired each (GetTrapData).
+    fn poll_error_interrupts(&mut self) {
+        let first_unseen = self.resources.interrupts.next_event;
+        let mut fired = Vec::new();
+        for event in self.events.entries().iter().filter(|e| e.seq >= first_unseen) {
+            for (idx, slot) in self.resources.interrupts.table.iter().enumerate() {
+                let Some(Source::Error { domain, id, kind }) = slot.as_ref().and_then(|i| i.source.clone()) else {
+                    continue;
+                };
+                let domain_ok = domain == 0 || domain == event.domain;
+                let id_ok = id.is_none_or(|id| id == event.number);
+                let kind_ok = kind == 0 || kind == crate::builtins::interrupts::event_type(event.kind);
+                if domain_ok && id_ok && kind_ok {
+                    fired.push((idx as u32 + 1, event.seq));
+                }
+            }
+        }
+        if let Some(last) = self.events.entries().last() {
+            self.resources.interrupts.next_event = first_unseen.max(last.seq + 1);
+        }
+        for (number, seq) in fired {
+            let before = self.resources.interrupts.queue.len();
+            self.resources.interrupts.fire(number);
+            if self.resources.interrupts.queue.len() > before {
+                self.resources.interrupts.events.push((number, seq));
+            }
+        }
+    }
+
     /// Starts the trap of the first queued interrupt, when one may run now: interrupts
     /// are enabled, no trap is running, and the interrupted routine is between
     /// instructions (at the start of a statement).
@@ -76,6 +107,9 @@ impl Vm {
             return;
         }
         let Some(number) = self.resources.interrupts.queue.pop_front() else { return };
+        let interrupts = &mut self.resources.interrupts;
+        interrupts.trap_event =
+            interrupts.events.iter().position(|&(n, _)| n == number).map(|i| interrupts.events.remove(i).1);
         let trap = self.resources.interrupts.get_mut(number).map(|i| i.trap);
         let Some(code) = trap.and_then(|t| self.routines.get(t as usize).cloned().flatten()) else { return };
         if let Some(global) = self.intno_global {
