@@ -22,11 +22,22 @@ fn io_system() -> IoSystem {
 
 /// Runs `program` to its end with the I/O system above; the pendant lines.
 fn run(program: &str) -> Vec<String> {
+    run_with(program, &[])
+}
+
+/// Runs `program` to its end with the I/O system above and `stimulus` (time, signal
+/// name, value) for its inputs; the pendant lines.
+fn run_with(program: &str, stimulus: &[(f64, &str, f64)]) -> Vec<String> {
     let mut loaded = match load(&[SourceInput::from_text("m.mod", program)], "main") {
         Ok(loaded) => loaded,
         Err(err) => panic!("the program loads: {err:?}"),
     };
-    loaded.vm.resources_mut().io.system = Some(io_system());
+    let system = io_system();
+    let io = &mut loaded.vm.resources_mut().io;
+    for &(at, name, value) in stimulus {
+        io.stimulus.push_back((at, system.id(name).expect("a configured signal"), value));
+    }
+    io.system = Some(system);
     let mut host = RecordingHost::default();
     for _ in 0..1_000 {
         match loaded.vm.run(&mut host, 100_000) {
@@ -162,35 +173,13 @@ ENDMODULE
     assert_eq!(lines, expected);
 }
 
-/// Runs `program` with di1 set to 1 at 1.5 s from outside (a stimulus).
-fn run_with_stimulus(program: &str) -> Vec<String> {
-    let mut loaded = match load(&[SourceInput::from_text("m.mod", program)], "main") {
-        Ok(loaded) => loaded,
-        Err(err) => panic!("the program loads: {err:?}"),
-    };
-    let system = io_system();
-    let di1 = system.id("di1").expect("di1 is configured");
-    let io = &mut loaded.vm.resources_mut().io;
-    io.system = Some(system);
-    io.stimulus.push_back((1.5, di1, 1.0));
-    let mut host = RecordingHost::default();
-    for _ in 0..1_000 {
-        match loaded.vm.run(&mut host, 100_000) {
-            Exit::Wait(seconds) => loaded.vm.time += seconds,
-            Exit::Done => return host.lines,
-            other => panic!("the program ended with {other:?}; output {:?}", host.lines),
-        }
-    }
-    panic!("the program did not end")
-}
-
 #[test]
 fn waits_end_when_the_signal_changes_or_time_runs_out() {
     // di1 becomes 1 at 1.5 s. WaitDI with \MaxTime:=1 and \TimeFlag gives up at 1 s
     // (flag TRUE, no error); the next WaitDI ends exactly at 1.5 s (flag FALSE); WaitGO
     // on go1 (still 0) with \MaxTime:=0.5 raises ERR_WAIT_MAXTIME at 2 s and stores the
     // value at timeout; WaitDO sees a pulse end at its scheduled time.
-    let lines = run_with_stimulus(
+    let lines = run_with(
         r#"MODULE m
 VAR signaldi part;
 VAR signalgo code;
@@ -223,6 +212,7 @@ ERROR
 ENDPROC
 ENDMODULE
 "#,
+        &[(1.5, "di1", 1.0)],
     );
     let expected =
         ["gave up TRUE", "at 1", "in time TRUE", "at 1.5", "ERR_WAIT_MAXTIME, value 0", "at 2", "pulse over at 2.25"];

@@ -166,6 +166,21 @@ impl Ctx<'_> {
         }
     }
 
+    /// The shell of a non-value argument (iodev, dir, socketdev, loadsession …) and
+    /// the handle it holds, if any; `what` names the type for the error.
+    pub fn handle_arg(&self, arg: &Value, what: &str) -> Result<(crate::value::Opaque, Option<u32>), RapidError> {
+        match self.value(arg)? {
+            Value::Opaque(opaque) => {
+                let handle = match opaque.state {
+                    crate::value::OpaqueState::Handle(h) => Some(h),
+                    _ => None,
+                };
+                Ok((*opaque, handle))
+            }
+            _ => Err(self.error(Err::ArgValue, format!("{what} was expected"))),
+        }
+    }
+
     /// A string argument without copying it.
     pub fn str_arg(&self, arg: &Value) -> Result<std::rc::Rc<str>, RapidError> {
         let value = match arg {

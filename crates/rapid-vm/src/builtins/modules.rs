@@ -157,16 +157,7 @@ fn unload(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// The session a loadsession argument holds, if any.
 fn session_of(ctx: &Ctx<'_>, arg: &Value) -> Result<(Opaque, Option<u32>), RapidError> {
-    match ctx.value(arg)? {
-        Value::Opaque(opaque) => {
-            let handle = match opaque.state {
-                OpaqueState::Handle(h) => Some(h),
-                _ => None,
-            };
-            Ok((*opaque, handle))
-        }
-        _ => Err(ctx.error(Err::ArgValue, "a loadsession was expected")),
-    }
+    ctx.handle_arg(arg, "a loadsession")
 }
 
 /// `StartLoad [\Dynamic] FilePath [\File] LoadNo`: the file is read now; WaitLoad links it.

@@ -3,7 +3,7 @@
 //! `Vm::run` executes one instruction at a time and looks before each; waits end at
 //! the next possible interrupt (`builtins::interrupts::next_due`) so traps run in time.
 
-use super::{Frame, Vm};
+use super::Vm;
 use crate::builtins::interrupts::Source;
 use crate::value::Value;
 
@@ -116,18 +116,9 @@ impl Vm {
             self.storage.globals[global as usize] = Value::Num(number as f32);
         }
         let resume = top.pc;
-        let base = self.storage.stack.len() as u32;
-        self.storage.stack.extend(code.local_defaults.iter().cloned());
-        self.frames.push(Frame {
-            code,
-            pc: 0,
-            base,
-            active: None,
-            retries: 0,
-            last_retry_stmt: None,
-            undoing: false,
-            return_to: Some(resume),
-            interrupted: true,
-        });
+        self.push_frame(code, Vec::new());
+        let frame = self.frame_mut();
+        frame.return_to = Some(resume);
+        frame.interrupted = true;
     }
 }

@@ -15,7 +15,6 @@ use super::{anybin, fault, io_fault, opt_string, Fault, Res};
 use crate::builtins::{present, Ctx};
 use crate::errnames::Err;
 use crate::error::RapidError;
-use crate::format::{bool_to_text, dnum_to_text, num_to_text, orient_to_text, pos_to_text};
 use crate::value::{Opaque, OpaqueState, Value, MAX_STRING_CHARS};
 
 /// What ReadNum returns at end of file: EOF_NUM (manual ReadNum; the catalogue's
@@ -34,7 +33,7 @@ pub(super) fn write(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let mut line = ctx.string(&args[1])?;
     let values = args.get(2..7).unwrap_or_default();
     if let Some(value) = values.iter().find(|a| present(Some(a))) {
-        line.push_str(&value_text(ctx, &ctx.value(value)?));
+        line.push_str(&crate::builtins::pendant::value_text(ctx, &ctx.value(value)?));
     }
     if !present(args.get(7)) {
         line.push('\n');
@@ -42,24 +41,6 @@ pub(super) fn write(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let bytes = bytes_of(&line);
     with_file(ctx, &args[0], Need::Write, |file| file.write_bytes(&bytes).map_err(|e| io_fault("Write failed", &e)))?;
     Ok(None)
-}
-
-/// A value appended by Write, as TPWrite appends it.
-fn value_text(ctx: &Ctx<'_>, value: &Value) -> String {
-    match value {
-        Value::Num(n) => num_to_text(*n),
-        Value::Dnum(d) => dnum_to_text(*d),
-        Value::Bool(b) => bool_to_text(*b).to_string(),
-        Value::Record(r) => {
-            let comps: Vec<f32> = r.fields.iter().map(|f| if let Value::Num(n) = f { *n } else { 0.0 }).collect();
-            match comps.as_slice() {
-                [x, y, z] if r.ty == ctx.types.pos => pos_to_text([*x, *y, *z]),
-                [a, b, c, d] => orient_to_text([*a, *b, *c, *d]),
-                _ => String::new(),
-            }
-        }
-        _ => String::new(),
-    }
 }
 
 /// `ReadNum(IODevice [\Delim] [\Time])`: the next number; EOF_NUM at end of file;

@@ -127,16 +127,7 @@ pub(super) static ENTRIES: Entries = &[
 
 /// The opaque shell of an iodev or dir argument and the handle it holds, if any.
 fn handle_of(ctx: &Ctx<'_>, arg: &Value) -> Result<(Opaque, Option<u32>), RapidError> {
-    match ctx.value(arg)? {
-        Value::Opaque(opaque) => {
-            let handle = match opaque.state {
-                OpaqueState::Handle(h) => Some(h),
-                _ => None,
-            };
-            Ok((*opaque, handle))
-        }
-        _ => Err(ctx.error(Err::ArgValue, "an iodev or dir was expected")),
-    }
+    ctx.handle_arg(arg, "an iodev or dir")
 }
 
 /// Stores `state` into the iodev or dir variable `arg`.

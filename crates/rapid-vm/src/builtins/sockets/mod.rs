@@ -222,16 +222,7 @@ fn socket_peek(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// The socketdev an argument names and the handle it holds (none when fresh/closed).
 fn socket_arg(ctx: &Ctx<'_>, arg: &Value) -> Result<(Opaque, Option<u32>), RapidError> {
-    match ctx.value(arg)? {
-        Value::Opaque(opaque) => {
-            let handle = match opaque.state {
-                OpaqueState::Handle(h) => Some(h),
-                _ => None,
-            };
-            Ok((*opaque, handle))
-        }
-        _ => Err(ctx.error(Err::ArgValue, "a socketdev was expected")),
-    }
+    ctx.handle_arg(arg, "a socketdev")
 }
 
 fn set_handle(ctx: &mut Ctx<'_>, arg: &Value, mut opaque: Opaque, handle: Option<u32>) -> Res {
