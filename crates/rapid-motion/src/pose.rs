@@ -1,0 +1,46 @@
+//! Poses and joint values in RAPID units (mm, degrees, scalar-first quaternions),
+//! on nalgebra's isometries.
+
+use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
+
+/// Six axis angles in degrees, axis 1 first.
+pub type Joints = [f64; 6];
+
+/// A frame: translation in mm and a rotation.
+pub type Pose = Isometry3<f64>;
+
+/// The pose of RAPID `[[x, y, z], [q1, q2, q3, q4]]` (the quaternion is normalised,
+/// as RAPID requires of an orient used in motion).
+pub fn pose(trans: [f64; 3], orient: [f64; 4]) -> Pose {
+    let [q1, q2, q3, q4] = orient;
+    let rotation = UnitQuaternion::from_quaternion(Quaternion::new(q1, q2, q3, q4));
+    Isometry3::from_parts(Translation3::new(trans[0], trans[1], trans[2]), rotation)
+}
+
+/// The translation of a pose, mm.
+pub fn trans(pose: &Pose) -> [f64; 3] {
+    let v: Vector3<f64> = pose.translation.vector;
+    [v.x, v.y, v.z]
+}
+
+/// The rotation of a pose as RAPID's `[q1, q2, q3, q4]`, scalar first, with q1 ≥ 0
+/// (the sign the controller shows; both signs are the same rotation).
+pub fn orient(pose: &Pose) -> [f64; 4] {
+    let q = pose.rotation.quaternion();
+    let sign = if q.w < 0.0 { -1.0 } else { 1.0 };
+    [sign * q.w, sign * q.i, sign * q.j, sign * q.k]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn round_trip_keeps_rapid_order() {
+        let h = std::f64::consts::FRAC_1_SQRT_2;
+        let p = pose([374.0, 0.0, 630.0], [h, 0.0, h, 0.0]);
+        let o = orient(&p);
+        assert!((o[0] - 0.5f64.sqrt()).abs() < 1e-6 && (o[2] - 0.5f64.sqrt()).abs() < 1e-6);
+        assert_eq!(trans(&p), [374.0, 0.0, 630.0]);
+    }
+}
