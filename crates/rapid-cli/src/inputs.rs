@@ -42,6 +42,8 @@ pub(crate) struct Inputs {
     pub(crate) predefined: Vec<PredefinedData>,
     /// The task read from a backup, when a PATH was one.
     pub(crate) task: Option<TaskFolder>,
+    /// The backup's task configuration (SYS.cfg), when it has one.
+    pub(crate) sys: Option<sys::Sys>,
     /// Diagnostics found while reading the inputs. Their `file` indexes [`Inputs::table`].
     pub(crate) diagnostics: Vec<Diagnostic>,
     /// For each file of [`Inputs::table`], its place in the order the files were found,
@@ -59,7 +61,12 @@ impl Inputs {
 
 /// Reads every PATH. Fails, with a message naming the PATH, when one cannot be used.
 pub(crate) fn collect(paths: &[PathBuf]) -> anyhow::Result<Inputs> {
-    let mut collector = Collector::default();
+    collect_task(paths, None)
+}
+
+/// [`collect`], reading task `task` of a backup (T_ROB1 when none is named).
+pub(crate) fn collect_task(paths: &[PathBuf], task: Option<&str>) -> anyhow::Result<Inputs> {
+    let mut collector = Collector { wanted_task: task.map(str::to_owned), ..Collector::default() };
     for path in paths {
         collector.add_path(path)?;
     }
@@ -101,6 +108,10 @@ struct Collector {
     predefined: Vec<PredefinedData>,
     syspar: Vec<(String, CfgFile)>,
     task: Option<TaskFolder>,
+    /// The backup task to read (T_ROB1 when none is named).
+    wanted_task: Option<String>,
+    /// The backup's SYS configuration.
+    sys: Option<sys::Sys>,
     /// Diagnostics whose `file` is an index into `configs`.
     config_diagnostics: Vec<Diagnostic>,
     /// Canonical paths already read, so a file named twice is checked once.
@@ -181,7 +192,16 @@ impl Collector {
             self.syspar.push((domain, parsed));
         }
         let shown = folder.display();
-        let Some(task) = backup::choose_task(folder, tasks, sys.as_ref()) else {
+        // Every task of the system is known by a taskid `<name>Id` (GetTaskName, CRobT \\TaskRef).
+        if let Some(sys) = &sys {
+            self.predefined.extend(
+                sys.tasks
+                    .iter()
+                    .filter(|t| !t.name.eq_ignore_ascii_case("T_ROB1"))
+                    .map(|t| PredefinedData { name: format!("{}Id", t.name), type_name: "taskid".to_owned() }),
+            );
+        }
+        let Some(task) = backup::choose_task(folder, tasks, sys.as_ref(), self.wanted_task.as_deref()) else {
             bail!("backup `{shown}` holds no RAPID/TASKn folder");
         };
         let modules = backup::task_modules(&task.folder);
@@ -193,6 +213,7 @@ impl Collector {
             self.add_module(&path).with_context(|| format!("cannot read `{shown}`"))?;
         }
         self.task = Some(task);
+        self.sys = sys;
         Ok(())
     }
 
@@ -291,6 +312,7 @@ impl Collector {
             predefined: self.predefined,
             syspar: self.syspar,
             task: self.task,
+            sys: self.sys,
             diagnostics,
             rank,
         }

@@ -101,6 +101,12 @@ impl Types {
         &self.info(ty).display
     }
 
+    /// Every type of the table with its name (to match types between two programs,
+    /// e.g. the tasks of one controller).
+    pub fn named(&self) -> impl Iterator<Item = (TypeId, &str)> + '_ {
+        self.infos.iter().enumerate().map(|(i, info)| (TypeId(i as u32), info.display.as_str()))
+    }
+
     /// The type named `name` (any letter case), predefined or declared.
     pub fn find(&self, name: &str) -> Option<TypeId> {
         self.infos.iter().position(|info| info.display.eq_ignore_ascii_case(name)).map(|i| TypeId(i as u32))

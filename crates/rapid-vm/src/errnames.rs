@@ -104,4 +104,6 @@ errors! {
     CfgNotFound = "ERR_CFG_NOTFND",
     CfgOutOfBounds = "ERR_CFG_OUTOFBOUNDS",
     CfgWriteFile = "ERR_CFG_WRITEFILE",
+    // Multitasking (§1.20).
+    WaitSyncTask = "ERR_WAITSYNCTASK",
 }

@@ -48,6 +48,23 @@ pub struct Loaded {
     pub persistents: Vec<persist::PersSite>,
     /// The entry routine (for [`Vm::pp_to_main`]).
     pub entry: u32,
+    /// The global persistents other tasks share by name (§1.20).
+    pub shared_pers: Vec<SharedPers>,
+    /// Every type of the program by lower-case name: values passed between tasks have
+    /// their record types renumbered through it.
+    pub types_by_name: FxHashMap<String, rapid_sema::types::TypeId>,
+}
+
+/// A module-level persistent declared neither LOCAL nor TASK: one object for every
+/// task of the system that declares it (§1.20).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SharedPers {
+    pub global: u32,
+    /// As declared (compared without regard to case).
+    pub name: String,
+    pub type_name: String,
+    /// Array sizes (all 0 for a scalar): tasks must agree on type and size.
+    pub dims: [u32; 3],
 }
 
 /// Checks, compiles and initialises the task made of `files`, ready to run `entry`.
@@ -154,8 +171,10 @@ pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Resul
     };
     vm.steps = 0;
     let persistents = pers_sites(&prog, &modules);
+    let shared_pers = shared_pers(&prog, &modules);
+    let types_by_name = prog.types.named().map(|(id, name)| (name.to_ascii_lowercase(), id)).collect();
     let warnings = analysis.diagnostics;
-    Ok(Loaded { vm, warnings, persistents, entry: entry_routine })
+    Ok(Loaded { vm, warnings, persistents, entry: entry_routine, shared_pers, types_by_name })
 }
 
 /// Late binding by `"module:procedure"` (public programs call loaded code as
@@ -191,6 +210,27 @@ pub(crate) fn pers_sites(prog: &Program, modules: &[compile::ModuleSource<'_>]) 
         sites.push(persist::PersSite { global: global as u32, file: source.file, init, insert_at: semi });
     }
     sites
+}
+
+/// The module-level persistents visible to other tasks (neither LOCAL nor TASK).
+fn shared_pers(prog: &Program, modules: &[compile::ModuleSource<'_>]) -> Vec<SharedPers> {
+    use rapid_sema::symbols::DataKind;
+    let mut shared = Vec::new();
+    for (global, data) in prog.datas.iter().enumerate() {
+        let DeclOrigin::Module { module, item } = data.origin else { continue };
+        let Some(source) = modules.get(module) else { continue };
+        let Some(rapid_syntax::ast::Item::Data(decl)) = source.module.items.get(item) else { continue };
+        if data.kind != DataKind::Pers || decl.scope != rapid_syntax::ast::DeclScope::Global {
+            continue;
+        }
+        shared.push(SharedPers {
+            global: global as u32,
+            name: data.display.clone(),
+            type_name: prog.types.name(data.ty).to_string(),
+            dims: data.dims,
+        });
+    }
+    shared
 }
 
 /// The program's types for the six signal kinds (AliasIO checks kinds by them).

@@ -3,6 +3,7 @@
 mod check;
 mod codes;
 mod run;
+mod run_system;
 
 use std::process::ExitCode;
 

@@ -27,6 +27,9 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     if inputs.diagnostics.iter().any(|d| d.code == Code::ConfigFile && d.severity() == Severity::Error) {
         return report_input_errors(&inputs);
     }
+    if inputs.sys.as_ref().is_some_and(|sys| sys.tasks.len() > 1) {
+        return super::run_system::run(args, inputs);
+    }
     let entry = match (&args.entry, inputs.task.as_ref().and_then(|t| t.entry.as_ref())) {
         (Some(entry), _) | (None, Some(entry)) => entry.clone(),
         (None, None) => "main".to_owned(),
@@ -45,14 +48,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         eprintln!("the system has errors; it was not run");
         return Ok(ExitStatus::Failure);
     }
-    let answers = match &args.tp_input {
-        Some(path) => {
-            let text = std::fs::read_to_string(path)
-                .map_err(|e| anyhow::anyhow!("cannot read the pendant answers `{}`: {e}", path.display()))?;
-            text.lines().filter(|l| !l.starts_with('#')).map(str::to_string).collect()
-        }
-        None => std::collections::VecDeque::new(),
-    };
+    let answers = pendant_answers(args)?;
     let mut host = StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers };
     let status = loop {
         // Defence in depth: an interpreter bug must not take the terminal down with a
@@ -113,14 +109,22 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         save_persistents(&loaded, &inputs.modules)?;
     }
     if let Some(path) = &args.io_log {
-        write_io_log(&loaded, path)?;
+        write_io_log(loaded.vm.io_system(), path)?;
     }
     Ok(status)
 }
 
+/// The operator's answers of `--tp-input`, in order.
+pub(crate) fn pendant_answers(args: &RunArgs) -> anyhow::Result<std::collections::VecDeque<String>> {
+    let Some(path) = &args.tp_input else { return Ok(std::collections::VecDeque::new()) };
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| anyhow::anyhow!("cannot read the pendant answers `{}`: {e}", path.display()))?;
+    Ok(text.lines().filter(|l| !l.starts_with('#')).map(str::to_string).collect())
+}
+
 /// The controller root of the file devices (`--home`, else `rapid-controller` beside
 /// the first PATH) and the loaded modules' files (ModExist, ModTimeDnum).
-fn configure_files(
+pub(crate) fn configure_files(
     loaded: &mut rapid_vm::Loaded,
     args: &RunArgs,
     files: &[SourceInput],
@@ -155,7 +159,7 @@ fn default_home(paths: &[std::path::PathBuf]) -> std::path::PathBuf {
 }
 
 /// Writes each changed persistent's value into its module file (Save Module).
-fn save_persistents(loaded: &rapid_vm::Loaded, files: &[SourceInput]) -> anyhow::Result<()> {
+pub(crate) fn save_persistents(loaded: &rapid_vm::Loaded, files: &[SourceInput]) -> anyhow::Result<()> {
     for (file, input) in files.iter().enumerate() {
         let sites: Vec<_> = loaded
             .persistents
@@ -169,7 +173,7 @@ fn save_persistents(loaded: &rapid_vm::Loaded, files: &[SourceInput]) -> anyhow:
     Ok(())
 }
 
-fn location(files: &[SourceInput], file: usize, offset: u32) -> (String, u32, u32) {
+pub(crate) fn location(files: &[SourceInput], file: usize, offset: u32) -> (String, u32, u32) {
     match files.get(file) {
         Some(input) => {
             let at = LineIndex::new(&input.text).line_col(&input.text, offset);
@@ -181,7 +185,7 @@ fn location(files: &[SourceInput], file: usize, offset: u32) -> (String, u32, u3
 
 /// Errors in a backup's configuration: the controller would not start, so nothing
 /// runs (the report shows every input finding, warnings and `.pgf` entries too).
-fn report_input_errors(inputs: &inputs::Inputs) -> anyhow::Result<ExitStatus> {
+pub(crate) fn report_input_errors(inputs: &inputs::Inputs) -> anyhow::Result<ExitStatus> {
     let table = inputs.table();
     let summary = Summary::of(&inputs.diagnostics, table.len());
     let mut out = io::stderr().lock();
@@ -190,7 +194,7 @@ fn report_input_errors(inputs: &inputs::Inputs) -> anyhow::Result<ExitStatus> {
     Ok(ExitStatus::Failure)
 }
 
-fn report_load_error(err: LoadError, files: &[SourceInput]) -> anyhow::Result<ExitStatus> {
+pub(crate) fn report_load_error(err: LoadError, files: &[SourceInput]) -> anyhow::Result<ExitStatus> {
     match err {
         LoadError::Diagnostics(diagnostics) => {
             let table: Vec<&SourceInput> = files.iter().collect();
@@ -217,14 +221,14 @@ fn report_load_error(err: LoadError, files: &[SourceInput]) -> anyhow::Result<Ex
     Ok(ExitStatus::Failure)
 }
 
-struct StdoutHost<'a> {
-    out: BufWriter<io::StdoutLock<'a>>,
-    broken: bool,
-    answers: std::collections::VecDeque<String>,
+pub(crate) struct StdoutHost<'a> {
+    pub(crate) out: BufWriter<io::StdoutLock<'a>>,
+    pub(crate) broken: bool,
+    pub(crate) answers: std::collections::VecDeque<String>,
 }
 
 impl StdoutHost<'_> {
-    fn flush(&mut self) {
+    pub(crate) fn flush(&mut self) {
         if !self.broken && self.out.flush().is_err() {
             self.broken = true;
         }
@@ -281,9 +285,9 @@ fn decimals(x: f64, places: usize) -> String {
 
 /// `--io-log`: every signal change as CSV (times in seconds to the millisecond, values
 /// to a millionth), written atomically.
-fn write_io_log(loaded: &rapid_vm::Loaded, path: &std::path::Path) -> anyhow::Result<()> {
+pub(crate) fn write_io_log(io: Option<&rapid_io::IoSystem>, path: &std::path::Path) -> anyhow::Result<()> {
     let mut csv = String::from("time,signal,old,new,cause\n");
-    if let Some(system) = loaded.vm.io_system() {
+    if let Some(system) = io {
         for change in system.changes() {
             csv.push_str(&format!(
                 "{},{},{},{},{:?}\n",

@@ -75,11 +75,20 @@ pub(crate) fn config_files(folder: &Path) -> Vec<PathBuf> {
     files
 }
 
-/// The task to read: T_ROB1, else SYS.cfg's first task, else the first task folder.
-pub(crate) fn choose_task(folder: &Path, tasks: &[(u32, PathBuf)], sys: Option<&Sys>) -> Option<TaskFolder> {
+/// The task to read: `wanted`, else T_ROB1, else SYS.cfg's first task, else the first
+/// task folder.
+pub(crate) fn choose_task(
+    folder: &Path,
+    tasks: &[(u32, PathBuf)],
+    sys: Option<&Sys>,
+    wanted: Option<&str>,
+) -> Option<TaskFolder> {
     let first = tasks.first()?;
     let names = backinfo_tasks(folder);
-    let wanted = sys.and_then(|sys| sys.task("T_ROB1").or(sys.tasks.first())).map(|t| t.name.clone());
+    let wanted = match wanted {
+        Some(name) => Some(name.to_owned()),
+        None => sys.and_then(|sys| sys.task("T_ROB1").or(sys.tasks.first())).map(|t| t.name.clone()),
+    };
     let wanted =
         wanted.or_else(|| names.iter().find(|(_, n)| n.eq_ignore_ascii_case("T_ROB1")).map(|(_, n)| n.clone()));
     let Some(wanted) = wanted else {

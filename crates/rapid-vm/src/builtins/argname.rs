@@ -27,7 +27,7 @@ fn arg_name(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidErr
     if let Some(var) = error_number {
         ctx.store(var, Value::Num(0.0))?;
     }
-    if let Some(name) = original_name(ctx.chain) {
+    if let Some(name) = original_name(ctx.chain, 0) {
         return Ok(Some(Value::Str(name)));
     }
     let err = ctx.error(Err::ArgName, "the argument is not a data object (an expression, a switch or not present)");
@@ -40,11 +40,12 @@ fn arg_name(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidErr
     }
 }
 
-/// The origin of ArgName's argument, followed through each parameter to the argument
-/// the caller passed for it. At most one step per frame, so it ends.
-fn original_name(chain: &[Frame]) -> Option<Rc<str>> {
+/// The data object passed for parameter `param` of the built-in being called, followed
+/// through each parameter to the argument the caller passed for it. At most one step
+/// per frame, so it ends.
+pub(crate) fn original_name(chain: &[Frame], param: usize) -> Option<Rc<str>> {
     let (innermost, callers) = chain.split_last()?;
-    let mut origin = site_origins(innermost)?.first()?.clone();
+    let mut origin = site_origins(innermost)?.get(param)?.clone();
     for caller in callers.iter().rev() {
         match origin {
             ArgOrigin::Param(n) => origin = site_origins(caller)?.get(n as usize)?.clone(),

@@ -1,7 +1,7 @@
 //! Writing to the event log from RAPID: ErrLog and ErrRaise (ErrWrite, which also
 //! shows its text on the pendant, lives with the pendant output).
 
-use super::{present, Ctx, TASK_NAME};
+use super::{present, Ctx};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::events::{expand_errstr, Event, EventKind, USER_DOMAIN};
@@ -23,7 +23,7 @@ fn event_number(ctx: &Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
 fn user_event(ctx: &Ctx<'_>, number: u32, kind: EventKind, texts: &[Value]) -> Result<Event, RapidError> {
     let mut expanded = Vec::with_capacity(texts.len());
     for text in texts {
-        expanded.push(expand_errstr(&ctx.string(text)?, TASK_NAME, ctx.routine));
+        expanded.push(expand_errstr(&ctx.string(text)?, ctx.resources.tasking.name(), ctx.routine));
     }
     let mut expanded = expanded.into_iter();
     let title = expanded.next().flatten().unwrap_or_default();

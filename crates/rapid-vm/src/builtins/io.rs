@@ -37,6 +37,34 @@ pub struct IoState {
     pub(crate) waiting: Option<(usize, u32, f64)>,
 }
 
+/// The part of the I/O state every task of a controller shares: the signals, what the
+/// stimulus still has to apply and the reactions to it.
+#[derive(Default)]
+pub struct SharedIo {
+    pub system: Option<IoSystem>,
+    pub stimulus: std::collections::VecDeque<(f64, u32, f64)>,
+    pub reactions: Vec<Reaction>,
+    seen_changes: usize,
+}
+
+impl SharedIo {
+    /// How many signal changes the system has logged (a task waiting on a signal
+    /// looks again when this grows).
+    pub fn change_count(&self) -> usize {
+        self.system.as_ref().map_or(0, |s| s.changes().len())
+    }
+}
+
+impl IoState {
+    /// Swaps the shared part with the controller's (see `Resources::exchange_shared`).
+    pub fn exchange_shared(&mut self, shared: &mut SharedIo) {
+        std::mem::swap(&mut self.system, &mut shared.system);
+        std::mem::swap(&mut self.stimulus, &mut shared.stimulus);
+        std::mem::swap(&mut self.reactions, &mut shared.reactions);
+        std::mem::swap(&mut self.seen_changes, &mut shared.seen_changes);
+    }
+}
+
 /// `when WATCH = VALUE after DELAY set TARGET SET`: every time `watch` changes to
 /// `value`, input `target` becomes `set` `delay` seconds later.
 #[derive(Debug, Clone, PartialEq)]

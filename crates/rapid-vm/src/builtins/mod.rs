@@ -32,6 +32,7 @@ mod symbols;
 pub mod symsearch;
 mod sysinfo;
 mod system;
+pub mod tasking;
 pub mod texttab;
 
 use rapid_sema::types::TypeId;
@@ -113,6 +114,16 @@ pub struct Resources {
     pub interrupts: interrupts::InterruptState,
     /// The system parameters the run was started with (kept at PP to Main).
     pub cfgdata: cfgdata::CfgState,
+    /// Which task this is and what the tasks share (sync points).
+    pub tasking: tasking::TaskingState,
+}
+
+/// What the tasks of one controller share: handed to the task that runs, so each
+/// task's built-ins see the one I/O system and the one set of sync points.
+#[derive(Default)]
+pub struct Shared {
+    pub io: io::SharedIo,
+    pub tasking: tasking::SharedTasking,
 }
 
 impl Resources {
@@ -125,6 +136,13 @@ impl Resources {
         self.spy.stop();
         self.modules.close_all();
         self.interrupts.clear();
+        self.tasking.end_waits();
+    }
+
+    /// Swaps the controller's shared state with the task's (hand in, take back).
+    pub fn exchange_shared(&mut self, shared: &mut Shared) {
+        self.io.exchange_shared(&mut shared.io);
+        std::mem::swap(&mut self.tasking.shared, &mut shared.tasking);
     }
 }
 
@@ -219,9 +237,6 @@ impl Ctx<'_> {
     }
 }
 
-/// The one program task `rapid run` runs (GetTaskName, ERRSTR_TASK, \TaskName).
-pub(crate) const TASK_NAME: &str = "T_ROB1";
-
 /// Module-level data that built-ins find by name (ErrRaise, GetDataVal, SetDataVal).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct NamedData {
@@ -270,6 +285,7 @@ static FAMILIES: &[Entries] = &[
     io_wait::ENTRIES,
     spy::ENTRIES,
     cfgdata::ENTRIES,
+    tasking::ENTRIES,
 ];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =
@@ -348,7 +364,6 @@ static CORE: Entries = &[
     ("CDate", calendar::c_date),
     ("CTime", calendar::c_time),
     ("GetTime", calendar::get_time),
-    ("GetTaskName", system::get_task_name),
     ("ExecHandler", system::exec_handler),
     ("ExecLevel", system::exec_level),
     ("GetDataVal", symbols::get_data_val),

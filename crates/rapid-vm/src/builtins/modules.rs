@@ -217,11 +217,7 @@ fn check_prog_ref(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 /// `Save [\TaskRef] | [\TaskName] ModuleName [\FilePath] [\File]`.
 fn save(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if let Some(task) = opt_string(ctx, args.get(1))? {
-        if !task.eq_ignore_ascii_case(super::TASK_NAME) {
-            return Err(
-                ctx.error(Err::TaskName, format!("no program task `{task}` (this task is {})", super::TASK_NAME))
-            );
-        }
+        super::tasking::check_own_task(ctx, &task, "saving another task's module")?;
     }
     let module = ctx.string(&args[2])?;
     let dest = match args.get(3) {

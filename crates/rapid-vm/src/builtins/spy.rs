@@ -19,7 +19,7 @@
 use std::fs::File;
 use std::io::{BufWriter, Write};
 
-use super::{Ctx, TASK_NAME};
+use super::Ctx;
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
@@ -71,12 +71,11 @@ impl SpyState {
     }
 
     /// Logs one executed instruction: `instr` is its source text, `time_in` and
-    /// `time_out` controller times in seconds. A write failure ends the log (the
+    /// `time_out` controller times in seconds, `task` the task that ran it. A write failure ends the log (the
     /// program must not stop because its debugging log could not be written).
-    pub fn record(&mut self, instr: &str, time_in: f64, code: SpyCode, time_out: f64) {
+    pub fn record(&mut self, task: &str, instr: &str, time_in: f64, code: SpyCode, time_out: f64) {
         let Some(log) = self.log.as_mut() else { return };
-        let line =
-            format_line(TASK_NAME, instr, millis(log.started_at, time_in), code, millis(log.started_at, time_out));
+        let line = format_line(task, instr, millis(log.started_at, time_in), code, millis(log.started_at, time_out));
         if writeln!(log.out, "{line}").is_err() {
             self.log = None;
         }
@@ -145,14 +144,14 @@ mod tests {
         std::fs::create_dir_all(&dir).expect("temp dir");
         let path = dir.join("spy.log");
         let mut spy = SpyState::default();
-        spy.record("ignored;", 0.0, SpyCode::Ready, 0.0);
+        spy.record("T_ROB1", "ignored;", 0.0, SpyCode::Ready, 0.0);
         let file = File::create(&path).expect("file");
         spy.log = Some(SpyLog { out: BufWriter::new(file), started_at: 1.0 });
         assert!(spy.is_active());
-        spy.record("a := 1;", 1.0, SpyCode::Ready, 1.0);
-        spy.record("WaitTime 0.5;", 1.0, SpyCode::Wait, 1.5);
+        spy.record("T_ROB1", "a := 1;", 1.0, SpyCode::Ready, 1.0);
+        spy.record("T_ROB1", "WaitTime 0.5;", 1.0, SpyCode::Wait, 1.5);
         spy.stop();
-        spy.record("after;", 2.0, SpyCode::Ready, 2.0);
+        spy.record("T_ROB1", "after;", 2.0, SpyCode::Ready, 2.0);
         let text = std::fs::read_to_string(&path).expect("log");
         let lines: Vec<&str> = text.lines().collect();
         assert_eq!(lines.len(), 2);

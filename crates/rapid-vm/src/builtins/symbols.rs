@@ -4,7 +4,7 @@
 //! routine's own data is not in the public record: uncertain). With `\Block` (a datapos
 //! from GetNextSym) the name is looked up as seen from that module: its LOCAL data too.
 
-use super::{present, Ctx, NamedData, TASK_NAME};
+use super::{present, Ctx, NamedData};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{OpaqueState, Value};
@@ -18,9 +18,7 @@ fn lookup(ctx: &Ctx<'_>, args: &[Value]) -> Result<NamedData, RapidError> {
     }
     if present(args.get(3)) {
         let task = ctx.string(&args[3])?;
-        if !task.eq_ignore_ascii_case(TASK_NAME) {
-            return Err(ctx.error(Err::TaskName, format!("no task `{task}` (rapid run runs {TASK_NAME})")));
-        }
+        super::tasking::check_own_task(ctx, &task, "reading or writing another task's data")?;
     }
     let name = ctx.string(&args[0])?;
     ctx.data_by_name

@@ -109,15 +109,6 @@ pub(super) fn skip_warn(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Val
     Ok(None)
 }
 
-/// `GetTaskName([\TaskNo] | [\MecTaskNo])`: `rapid run` runs one motion task,
-/// T_ROB1, task number 1; its connected motion task is itself.
-pub(super) fn get_task_name(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
-    if let Some(number) = args.iter().take(2).find(|a| present(Some(a))) {
-        ctx.store(number, Value::Num(1.0))?;
-    }
-    Ok(Some(Value::Str(super::TASK_NAME.into())))
-}
-
 /// `ExecHandler()`: which handler the calling routine is running (handler_type).
 pub(super) fn exec_handler(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
     let handler = ctx.chain.last().map_or(0, |frame| frame.handler_type());

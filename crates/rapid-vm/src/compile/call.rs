@@ -12,6 +12,10 @@ use crate::builtins;
 use crate::ir::{ArgOrigin, ArgSpec, CallSite, Callee, Instr, LateArg};
 
 /// Built-ins whose `anytype` parameters take a signal itself rather than its value.
+/// Built-ins that know an argument by the name of the data passed: a syncident is the
+/// same sync point in every task by its name, a taskid names its task (`T_ROB2Id`).
+const NAME_TAKING: &[&str] = &["WaitSyncTask", "TaskIsActive", "TaskIsExecuting"];
+
 const SIGNAL_TAKING: &[&str] = &["AliasIO", "AliasIOReset", "ValidIO", "GetSignalOrigin"];
 
 impl RoutineCompiler<'_> {
@@ -94,8 +98,11 @@ impl RoutineCompiler<'_> {
             specs.push(spec);
         }
         // ArgName in the callee looks through its parameters to these arguments.
+        // Built-ins that identify data by its name (a syncident, a taskid) read it there too.
+        let names_data = info.chapter.is_some() && NAME_TAKING.iter().any(|n| info.display.eq_ignore_ascii_case(n));
         let origins = match callee {
             Callee::Routine(_) => Some(self.origins(arena, &bound, &specs)),
+            Callee::Builtin(_) if names_data => Some(self.origins(arena, &bound, &specs)),
             _ => None,
         };
         let site = self.site(CallSite { callee, args: specs, n_pushed, late_args: Vec::new() });

@@ -98,6 +98,7 @@ impl Vm {
             // The arguments are gone from the stack: the statement starts over.
             let frame = self.frame_mut();
             frame.pc = frame.code.stmt_at(frame.pc).map_or(frame.pc, |s| s.start);
+            self.wait_rechecks = true;
             return Ok(Some(Exit::Wait(wait.unwrap_or(0.0))));
         }
         if let Some(value) = result {
@@ -106,7 +107,10 @@ impl Vm {
         self.frame_mut().pc += 1;
         match stop {
             crate::builtins::StopKind::Repeat => Ok(None),
-            crate::builtins::StopKind::None => Ok(wait.map(Exit::Wait)),
+            crate::builtins::StopKind::None => {
+                self.wait_rechecks = false;
+                Ok(wait.map(Exit::Wait))
+            }
             crate::builtins::StopKind::Stop => Ok(Some(Exit::Stopped)),
             crate::builtins::StopKind::ExitCycle => {
                 self.cycle_exit = true;

@@ -12,8 +12,9 @@ impl Vm {
     }
 
     /// Configured signals are connected from the start, also after PP to Main
-    /// re-initialises the data.
-    pub(super) fn connect_configured_signals(&mut self) {
+    /// re-initialises the data. (A controller calls this with its shared I/O system
+    /// handed in, for every task.)
+    pub fn connect_configured_signals(&mut self) {
         for (global, value) in self.resources.io.configured_values() {
             if let Some(slot) = self.storage.globals.get_mut(global as usize) {
                 *slot = value;

@@ -152,6 +152,10 @@ pub struct Vm {
     pub time: f64,
     /// Instructions executed so far.
     pub steps: u64,
+    /// The last `Exit::Wait` looks at its condition again when resumed (WaitDI,
+    /// WaitUntil, WaitSyncTask …), so it may be resumed early, when another task
+    /// changed something; false for a plain delay (WaitTime), which must run its course.
+    pub wait_rechecks: bool,
     /// What ErrWrite, ErrLog and ErrRaise logged, oldest first.
     events: crate::events::EventLog,
     /// Module-level data by lower-case name (ErrRaise names its errnum as text).
@@ -200,6 +204,7 @@ impl Vm {
             init: None,
             time: 0.0,
             steps: 0,
+            wait_rechecks: false,
             events: crate::events::EventLog::default(),
             data_by_name: FxHashMap::default(),
             wall_epoch: std::time::SystemTime::now()
@@ -246,6 +251,19 @@ impl Vm {
     /// The value of global `idx`.
     pub fn global(&self, idx: u32) -> Option<&Value> {
         self.storage.globals.get(idx as usize)
+    }
+
+    /// Gives global `idx` a value (the controller, sharing persistents between tasks).
+    pub fn set_global(&mut self, idx: u32, value: Value) {
+        if let Some(slot) = self.storage.globals.get_mut(idx as usize) {
+            *slot = value;
+        }
+    }
+
+    /// Swaps the controller's shared state (I/O system, sync points) with the task's:
+    /// before the task runs, and back after.
+    pub fn exchange_shared(&mut self, shared: &mut crate::builtins::Shared) {
+        self.resources.exchange_shared(shared);
     }
 
     /// Runs `code` with no arguments as the first frame (the entry routine or the
@@ -617,6 +635,8 @@ impl Vm {
             Instr::WaitPop => {
                 let seconds = self.pop_num()?;
                 self.frame_mut().pc = next;
+                // WaitUntil's poll: the loop looks at its condition again when resumed.
+                self.wait_rechecks = true;
                 return Ok(Some(Exit::Wait(seconds.max(0.0))));
             }
             Instr::Connect(trap) => {

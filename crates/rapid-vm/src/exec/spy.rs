@@ -68,7 +68,8 @@ impl Vm {
     fn spy_close_last(&mut self, code: SpyCode) {
         let Some(open) = self.spy_open.pop() else { return };
         let code = if code == SpyCode::Ready && open.waited { SpyCode::Wait } else { code };
-        self.resources.spy.record(&open.text, open.time_in, code, self.time);
+        let task = self.resources.tasking.name().to_owned();
+        self.resources.spy.record(&task, &open.text, open.time_in, code, self.time);
     }
 
     /// A log that ended (SpyStop, PP to Main) leaves nothing open behind.

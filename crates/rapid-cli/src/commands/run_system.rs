@@ -1,0 +1,246 @@
+//! `rapid run BACKUP` for a system of several tasks (SYS.cfg `CAB_TASKS`): every task
+//! is loaded from its `RAPID/TASKn` folder, and the controller runs them
+//! pseudo-parallel (`rapid_controller`), sharing the I/O system and the global
+//! persistents. The run ends when every NORMAL task has ended; each task's unhandled
+//! error is reported with the task's name.
+
+// The CLI is the one crate that talks to the terminal; run reports on stderr.
+#![allow(clippy::print_stderr)]
+
+use std::io::{self, BufWriter};
+use std::time::Duration;
+
+use rapid_config::sys::{Sys, TaskType};
+use rapid_controller::{Controller, SystemExit, TaskEnd, TaskKind, TaskSpec, TrustLevel};
+use rapid_sema::{Options, SourceInput};
+use rapid_vm::load_with;
+
+use super::run::{self as single, StdoutHost};
+use crate::args::RunArgs;
+use crate::commands::ExitStatus;
+use crate::inputs::{self, Inputs};
+
+/// Instructions (all tasks together) between checks of the bounds.
+const SLICE: u64 = 1 << 14;
+
+/// One task's inputs, loaded program and configuration.
+struct LoadedTask {
+    inputs: Inputs,
+    spec: TaskSpec,
+}
+
+pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
+    let Some(sys) = first.sys.clone() else { return single::run(args) };
+    let specs = match task_specs(&sys) {
+        Ok(specs) => specs,
+        Err(message) => return refuse(&message),
+    };
+    let mut tasks = Vec::new();
+    let mut first = Some(first);
+    for spec in specs {
+        let inputs = match first.take().filter(|f| f.task.as_ref().is_some_and(|t| t.name == spec.name)) {
+            Some(inputs) => inputs,
+            None => inputs::collect_task(&args.paths, Some(&spec.name))?,
+        };
+        tasks.push(LoadedTask { inputs, spec });
+    }
+    let mut loaded = Vec::new();
+    for (idx, task) in tasks.iter().enumerate() {
+        let entry = match (&args.entry, sys.task(&task.spec.name)) {
+            (Some(entry), _) if idx == 0 => entry.clone(),
+            (_, Some(config)) => config.entry.clone(),
+            _ => "main".to_owned(),
+        };
+        let options = Options { predefined: task.inputs.predefined.clone(), ..Options::default() };
+        let mut program = match load_with(&task.inputs.modules, &entry, &options) {
+            Ok(program) => program,
+            Err(err) => {
+                eprintln!("error: task {} cannot start:", task.spec.name);
+                return single::report_load_error(err, &task.inputs.modules);
+            }
+        };
+        let backup_root = task.inputs.task.as_ref().and_then(|t| Some(t.folder.parent()?.parent()?.to_path_buf()));
+        single::configure_files(&mut program, args, &task.inputs.modules, backup_root);
+        program.vm.resources_mut().cfgdata.set_config(task.inputs.syspar.clone());
+        loaded.push((task.spec.clone(), program));
+    }
+    let io = match io_system(&tasks[0].inputs) {
+        Ok(io) => io,
+        Err(message) => return refuse(&message),
+    };
+    let mut controller = match Controller::new(loaded, io) {
+        Ok(controller) => controller,
+        Err(message) => return refuse(&message),
+    };
+    if let Err(message) = install_stimulus(&mut controller, args) {
+        return refuse(&message);
+    }
+    let mut host =
+        StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers: single::pendant_answers(args)? };
+    let bounded = drive(&mut controller, &mut host, args);
+    host.flush();
+    let status = report(&controller, &tasks, bounded);
+    finish(&controller, &tasks, args)?;
+    Ok(status)
+}
+
+/// The tasks of SYS.cfg in configuration order.
+fn task_specs(sys: &Sys) -> Result<Vec<TaskSpec>, String> {
+    sys.tasks
+        .iter()
+        .map(|task| {
+            let trust = match &task.trust_level {
+                None => TrustLevel::default(),
+                Some(text) => TrustLevel::parse(text).ok_or_else(|| {
+                    format!("task {}: unknown -TrustLevel `{text}` (SysFail, SysHalt, SysStop, NoSafety)", task.name)
+                })?,
+            };
+            let kind = match task.task_type {
+                TaskType::Normal => TaskKind::Normal,
+                TaskType::Static => TaskKind::Static,
+                TaskType::SemiStatic => TaskKind::SemiStatic,
+            };
+            Ok(TaskSpec {
+                name: task.name.clone(),
+                kind,
+                trust,
+                foreground: task.foreground.clone(),
+                motion: task.motion_task,
+            })
+        })
+        .collect()
+}
+
+fn refuse(message: &str) -> anyhow::Result<ExitStatus> {
+    eprintln!("error: {message}");
+    eprintln!("the system has errors; it was not run");
+    Ok(ExitStatus::Failure)
+}
+
+/// The I/O system of the backup's EIO.cfg (one for the whole controller).
+fn io_system(inputs: &Inputs) -> Result<Option<rapid_io::IoSystem>, String> {
+    let eio = inputs.syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("EIO"));
+    match eio {
+        Some((_, eio)) => rapid_vm::builtins::io_config::io_system(&rapid_config::eio::read(eio)).map(Some),
+        None => Ok(None),
+    }
+}
+
+fn install_stimulus(controller: &mut Controller, args: &RunArgs) -> Result<(), String> {
+    let Some(path) = &args.stimulus else { return Ok(()) };
+    let shown = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read the stimulus `{shown}`: {e}"))?;
+    let io = &mut controller.shared_mut().io;
+    let Some(system) = &io.system else {
+        return Err(format!("`{shown}`: a stimulus needs an I/O configuration (the backup has no EIO.cfg)"));
+    };
+    let (orders, reactions) = crate::stimulus::parse(&shown, &text, system)?;
+    io.stimulus = orders.into();
+    io.reactions = reactions;
+    Ok(())
+}
+
+/// Why the run stopped before the system ended, if a bound stopped it.
+enum Bound {
+    Steps(u64),
+    Time(f64),
+    InternalError,
+}
+
+/// Runs the system to its end or to a bound.
+fn drive(controller: &mut Controller, host: &mut StdoutHost<'_>, args: &RunArgs) -> Option<Bound> {
+    loop {
+        let step = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| controller.run(host, SLICE)));
+        let Ok(exit) = step else { return Some(Bound::InternalError) };
+        if let Some(max) = args.max_steps {
+            if controller.steps > max {
+                return Some(Bound::Steps(max));
+            }
+        }
+        match exit {
+            SystemExit::Ended => return None,
+            SystemExit::Budget => {}
+            SystemExit::Wait(seconds) => {
+                controller.advance(seconds);
+                if let Some(max) = args.max_time {
+                    if controller.time > max {
+                        return Some(Bound::Time(max));
+                    }
+                }
+                if args.realtime {
+                    host.flush();
+                    std::thread::sleep(Duration::from_secs_f64(seconds.min(86_400.0)));
+                }
+            }
+        }
+    }
+}
+
+/// Prints what ended the run badly: a bound, each task's unhandled error, a static
+/// task's stop that stopped the system. Success when none.
+fn report(controller: &Controller, tasks: &[LoadedTask], bound: Option<Bound>) -> ExitStatus {
+    let mut status = ExitStatus::Success;
+    match bound {
+        Some(Bound::Steps(max)) => {
+            eprintln!("error: stopped after {max} steps (--max-steps); the program did not end");
+            status = ExitStatus::Failure;
+        }
+        Some(Bound::Time(max)) => {
+            eprintln!("error: stopped at {max} s of controller time (--max-time); the program did not end");
+            status = ExitStatus::Failure;
+        }
+        Some(Bound::InternalError) => {
+            eprintln!("internal error: the interpreter failed; please report this program");
+            return ExitStatus::Error;
+        }
+        None => {}
+    }
+    for (task, input) in controller.tasks.iter().zip(tasks) {
+        let Some(TaskEnd::Failed(unhandled)) = task.end() else { continue };
+        let modules = &input.inputs.modules;
+        let loaded_module = task.loaded.vm.program_source(unhandled.file);
+        let (path, line, column) = match modules.get(unhandled.file).or(loaded_module) {
+            Some(source) => single::location(std::slice::from_ref(source), 0, unhandled.span.start),
+            None => single::location(&[], 0, 0),
+        };
+        eprintln!("error: {}", unhandled.error);
+        eprintln!("  in task {}, routine {} at {path}:{line}:{column}", task.spec.name, unhandled.routine);
+        eprintln!("  the task stopped (no ERROR handler took the error)");
+        status = ExitStatus::Failure;
+    }
+    if let Some(stop) = &controller.system_stop {
+        let state = match stop.trust {
+            TrustLevel::SysFail => "the system is in SYS_FAIL (only a restart resets it)",
+            TrustLevel::SysHalt => "the system halted (motors off)",
+            _ => "the system stopped",
+        };
+        eprintln!(
+            "error: task {} stopped; its TrustLevel {} stopped every NORMAL task: {state}",
+            stop.task,
+            stop.trust.name()
+        );
+        status = ExitStatus::Failure;
+    }
+    status
+}
+
+/// The logs and saves asked for, after the run.
+fn finish(controller: &Controller, tasks: &[LoadedTask], args: &RunArgs) -> anyhow::Result<()> {
+    if args.event_log {
+        for task in &controller.tasks {
+            for event in task.loaded.vm.event_log() {
+                eprintln!("event {} {event}", task.spec.name);
+            }
+        }
+    }
+    if args.save_pers {
+        for (task, input) in controller.tasks.iter().zip(tasks) {
+            let modules: &[SourceInput] = &input.inputs.modules;
+            single::save_persistents(&task.loaded, modules)?;
+        }
+    }
+    if let Some(path) = &args.io_log {
+        single::write_io_log(controller.io_system(), path)?;
+    }
+    Ok(())
+}

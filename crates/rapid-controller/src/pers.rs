@@ -1,0 +1,133 @@
+//! The global persistents of a system (§1.20): one object per name for every task
+//! that declares it. Each task keeps its own copy in its globals; the store holds the
+//! current value, and the controller copies changes in before a task runs and out
+//! after (tasks run one at a time, so no task ever sees a stale value).
+
+use rapid_vm::value::Value;
+use rapid_vm::{Loaded, SharedPers};
+use rustc_hash::FxHashMap;
+
+use crate::types::{renumber, same, TypeMap};
+
+/// One shared persistent.
+#[derive(Debug)]
+struct Entry {
+    /// As first declared, for messages.
+    name: String,
+    type_name: String,
+    dims: [u32; 3],
+    value: Value,
+    /// The task whose types `value` is numbered in.
+    owner: usize,
+    /// The store's generation when it last changed.
+    changed: u64,
+}
+
+/// A task's view of the store: where each of its shared persistents lives.
+#[derive(Debug, Default)]
+pub(crate) struct TaskPers {
+    /// (global in the task, entry in the store, the value the task had when last synced).
+    slots: Vec<(u32, usize, Value)>,
+    /// The store generation the task has seen.
+    seen: u64,
+}
+
+/// Every global persistent of the system.
+#[derive(Debug, Default)]
+pub struct PersStore {
+    entries: Vec<Entry>,
+    by_name: FxHashMap<String, usize>,
+    /// Bumped by every change.
+    pub generation: u64,
+}
+
+impl PersStore {
+    /// Registers task `task`'s global persistents. A persistent another task declared
+    /// already keeps its value (the first declaration creates the object); one with
+    /// another type or size is the error of §1.20.
+    pub(crate) fn register(&mut self, task: usize, task_name: &str, loaded: &Loaded) -> Result<TaskPers, String> {
+        let mut view = TaskPers::default();
+        for pers in &loaded.shared_pers {
+            let key = pers.name.to_ascii_lowercase();
+            let value = loaded.vm.global(pers.global).cloned().unwrap_or(Value::Absent);
+            let idx = match self.by_name.get(&key) {
+                Some(&idx) => {
+                    check_same_shape(&self.entries[idx], pers, task_name)?;
+                    idx
+                }
+                None => {
+                    self.entries.push(Entry {
+                        name: pers.name.clone(),
+                        type_name: pers.type_name.clone(),
+                        dims: pers.dims,
+                        value: value.clone(),
+                        owner: task,
+                        changed: 1,
+                    });
+                    self.generation = 1;
+                    self.by_name.insert(key, self.entries.len() - 1);
+                    self.entries.len() - 1
+                }
+            };
+            view.slots.push((pers.global, idx, value));
+        }
+        Ok(view)
+    }
+
+    /// Before task `task` runs: the changes made since it last looked, into its globals.
+    pub(crate) fn copy_in(&self, task: usize, view: &mut TaskPers, vm: &mut rapid_vm::Vm, maps: &[Vec<TypeMap>]) {
+        if view.seen == self.generation {
+            return;
+        }
+        for (global, idx, last) in &mut view.slots {
+            let entry = &self.entries[*idx];
+            if entry.changed > view.seen && entry.owner != task {
+                let value = renumber(&entry.value, &maps[entry.owner][task]);
+                vm.set_global(*global, value.clone());
+                *last = value;
+            }
+        }
+        view.seen = self.generation;
+    }
+
+    /// After task `task` ran: what it changed, into the store.
+    pub(crate) fn copy_out(&mut self, task: usize, view: &mut TaskPers, vm: &rapid_vm::Vm) {
+        for (global, idx, last) in &mut view.slots {
+            let Some(now) = vm.global(*global) else { continue };
+            if same(now, last) {
+                continue;
+            }
+            *last = now.clone();
+            self.generation += 1;
+            let entry = &mut self.entries[*idx];
+            entry.value = now.clone();
+            entry.owner = task;
+            entry.changed = self.generation;
+        }
+        // copy_in ran just before the task did, and no other task ran since: the
+        // task holds every current value.
+        view.seen = self.generation;
+    }
+}
+
+fn check_same_shape(entry: &Entry, pers: &SharedPers, task_name: &str) -> Result<(), String> {
+    if entry.type_name.eq_ignore_ascii_case(&pers.type_name) && entry.dims == pers.dims {
+        return Ok(());
+    }
+    Err(format!(
+        "persistent `{}` is declared `{}` in one task and `{}` in task {task_name}: global persistents of \
+         the same name must have the same type and size in every task",
+        entry.name,
+        shape(&entry.type_name, entry.dims),
+        shape(&pers.type_name, pers.dims)
+    ))
+}
+
+fn shape(type_name: &str, dims: [u32; 3]) -> String {
+    let sizes: Vec<String> = dims.iter().take_while(|&&d| d > 0).map(u32::to_string).collect();
+    if sizes.is_empty() {
+        type_name.to_string()
+    } else {
+        format!("{type_name}{{{}}}", sizes.join(","))
+    }
+}

@@ -1,0 +1,305 @@
+//! The scheduler (§1.20 优先级): round-robin one instruction each among the busy tasks
+//! whose foreground tasks are idle; the controller clock moves on while every runnable
+//! task waits, and by a nominal instruction time while tasks compute, so a task that
+//! polls in a loop does not stop the clock for the others.
+
+use rapid_vm::builtins::tasking::{SharedTasking, TaskInfo};
+use rapid_vm::builtins::Shared;
+use rapid_vm::{Exit, Host, Loaded};
+
+use crate::pers::{PersStore, TaskPers};
+use crate::task::{TaskEnd, TaskKind, TaskSpec, TrustLevel};
+use crate::types::{type_map, TypeMap};
+
+/// Controller time one instruction takes while tasks compute.
+// uncertain: RobotWare does not publish instruction times; a microsecond is the order
+// of a simple RAPID instruction on an IRC5. It only matters for tasks that loop
+// without waiting.
+pub const INSTRUCTION_TIME: f64 = 1e-6;
+
+/// Why [`Controller::run`] returned.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SystemExit {
+    /// The instruction budget is spent; call `run` again.
+    Budget,
+    /// Every runnable task waits: move the clock on by this much ([`Controller::advance`]).
+    Wait(f64),
+    /// The run is over: every NORMAL task has ended (or, in a system of static tasks
+    /// only, every task), or the system stopped them (trust level).
+    Ended,
+}
+
+/// Where a task stands.
+#[derive(Debug, Clone, PartialEq)]
+enum State {
+    Ready,
+    /// Waiting until the clock reaches `until`; a wait that `rechecks` may be woken
+    /// early when the shared state changes past `epoch`.
+    Waiting {
+        until: f64,
+        rechecks: bool,
+        epoch: u64,
+    },
+    Ended(TaskEnd),
+}
+
+/// One task under the controller.
+pub struct Task {
+    pub spec: TaskSpec,
+    pub loaded: Loaded,
+    state: State,
+    pers: TaskPers,
+    /// Index of the task this one stands behind.
+    foreground: Option<usize>,
+}
+
+impl Task {
+    /// How the task ended, if it has.
+    pub fn end(&self) -> Option<&TaskEnd> {
+        match &self.state {
+            State::Ended(end) => Some(end),
+            _ => None,
+        }
+    }
+}
+
+/// The system failure a static task's stop caused, by its trust level.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SystemStop {
+    pub task: String,
+    pub trust: TrustLevel,
+}
+
+/// The tasks of one controller and what they share.
+pub struct Controller {
+    pub tasks: Vec<Task>,
+    shared: Shared,
+    pers: PersStore,
+    /// `maps[a][b]`: renumbering of task a's record types into task b's.
+    maps: Vec<Vec<TypeMap>>,
+    /// The controller clock, seconds.
+    pub time: f64,
+    /// Instructions executed, all tasks together.
+    pub steps: u64,
+    /// Set when a static task's stop stopped the NORMAL tasks.
+    pub system_stop: Option<SystemStop>,
+}
+
+impl Controller {
+    /// A controller for `tasks` (in configuration order) sharing `io`. Fails when the
+    /// tasks disagree on a global persistent's type or size, or a task names a
+    /// foreground task the system does not have.
+    pub fn new(tasks: Vec<(TaskSpec, Loaded)>, io: Option<rapid_io::IoSystem>) -> Result<Controller, String> {
+        let infos = tasks
+            .iter()
+            .map(|(spec, _)| TaskInfo { name: spec.name.clone(), motion: spec.motion, active: true, executing: true })
+            .collect();
+        let mut shared = Shared { tasking: SharedTasking::new(infos), ..Shared::default() };
+        shared.io.system = io;
+        let maps = tasks
+            .iter()
+            .map(|(_, from)| tasks.iter().map(|(_, to)| type_map(&from.types_by_name, &to.types_by_name)).collect())
+            .collect();
+        let mut pers = PersStore::default();
+        let mut built = Vec::with_capacity(tasks.len());
+        for (idx, (spec, mut loaded)) in tasks.into_iter().enumerate() {
+            let view = pers.register(idx, &spec.name, &loaded)?;
+            loaded.vm.resources_mut().tasking.me = spec.name.clone();
+            loaded.vm.exchange_shared(&mut shared);
+            loaded.vm.connect_configured_signals();
+            loaded.vm.exchange_shared(&mut shared);
+            built.push(Task { spec, loaded, state: State::Ready, pers: view, foreground: None });
+        }
+        for idx in 0..built.len() {
+            let Some(name) = built[idx].spec.foreground.clone() else { continue };
+            let Some(fg) = built.iter().position(|t| t.spec.name.eq_ignore_ascii_case(&name)) else {
+                return Err(format!(
+                    "task {} runs behind task `{name}`, which the system does not have",
+                    built[idx].spec.name
+                ));
+            };
+            built[idx].foreground = Some(fg);
+        }
+        Ok(Controller { tasks: built, shared, pers, maps, time: 0.0, steps: 0, system_stop: None })
+    }
+
+    /// The I/O system the tasks share (its change log), if there is one.
+    pub fn io_system(&self) -> Option<&rapid_io::IoSystem> {
+        self.shared.io.system.as_ref()
+    }
+
+    /// The shared state, to configure before the run (the stimulus).
+    pub fn shared_mut(&mut self) -> &mut Shared {
+        &mut self.shared
+    }
+
+    /// Moves the clock on (after [`SystemExit::Wait`]).
+    pub fn advance(&mut self, seconds: f64) {
+        self.time += seconds;
+    }
+
+    /// Runs at most `budget` instructions, all tasks together.
+    pub fn run(&mut self, host: &mut dyn Host, budget: u64) -> SystemExit {
+        let mut remaining = budget;
+        while remaining > 0 {
+            self.wake();
+            if self.is_over() {
+                self.halt_the_rest();
+                return SystemExit::Ended;
+            }
+            let runnable = self.runnable();
+            if runnable.is_empty() {
+                return match self.next_wake() {
+                    Some(until) => SystemExit::Wait((until - self.time).max(0.0)),
+                    None => {
+                        self.halt_the_rest();
+                        SystemExit::Ended
+                    }
+                };
+            }
+            for idx in runnable {
+                if remaining == 0 {
+                    break;
+                }
+                remaining -= 1;
+                self.step(idx, host);
+                if matches!(self.tasks[idx].state, State::Ended(_)) {
+                    self.after_end(idx);
+                }
+            }
+        }
+        SystemExit::Budget
+    }
+
+    /// Runs one instruction of task `idx` with the shared state handed in.
+    fn step(&mut self, idx: usize, host: &mut dyn Host) {
+        let time = self.time;
+        let task = &mut self.tasks[idx];
+        self.pers.copy_in(idx, &mut task.pers, &mut task.loaded.vm, &self.maps);
+        task.loaded.vm.time = time;
+        task.loaded.vm.exchange_shared(&mut self.shared);
+        let exit = task.loaded.vm.run(host, 1);
+        task.loaded.vm.exchange_shared(&mut self.shared);
+        self.pers.copy_out(idx, &mut task.pers, &task.loaded.vm);
+        self.steps += 1;
+        // A built-in that waited on the outside world (a socket) moved the task's clock.
+        self.time = self.time.max(self.tasks[idx].loaded.vm.time) + INSTRUCTION_TIME;
+        let epoch = self.epoch();
+        let rechecks = self.tasks[idx].loaded.vm.wait_rechecks;
+        let state = match exit {
+            Exit::Budget => State::Ready,
+            Exit::Wait(seconds) => State::Waiting { until: time + seconds, rechecks, epoch },
+            Exit::Done => self.cycle_end(idx, TaskEnd::Done),
+            Exit::CycleEnded => self.cycle_end(idx, TaskEnd::CycleEnded),
+            Exit::Stopped => State::Ended(TaskEnd::Stopped),
+            Exit::Unhandled(unhandled) => State::Ended(TaskEnd::Failed(unhandled)),
+        };
+        self.tasks[idx].state = state;
+    }
+
+    /// The end of a task's cycle: a NORMAL task has run its one cycle; a static task
+    /// runs continuously, so it starts its entry routine again.
+    // uncertain: STATIC and SEMISTATIC tasks run in continuous mode on the controller,
+    // so the end of main starts main again rather than stopping the task.
+    fn cycle_end(&mut self, idx: usize, end: TaskEnd) -> State {
+        let task = &mut self.tasks[idx];
+        if task.spec.kind == TaskKind::Normal {
+            return State::Ended(end);
+        }
+        let entry = task.loaded.entry;
+        if task.loaded.vm.start_routine(entry) {
+            State::Ready
+        } else {
+            State::Ended(end)
+        }
+    }
+
+    /// A task ended: the others see it no longer executing; a static task's stop
+    /// applies its trust level.
+    fn after_end(&mut self, idx: usize) {
+        let name = self.tasks[idx].spec.name.clone();
+        self.shared.tasking.set_executing(&name, false);
+        let spec = &self.tasks[idx].spec;
+        if spec.kind == TaskKind::Normal || spec.trust == TrustLevel::NoSafety {
+            return;
+        }
+        self.system_stop = Some(SystemStop { task: name, trust: spec.trust });
+        for other in 0..self.tasks.len() {
+            if self.tasks[other].spec.kind == TaskKind::Normal && !matches!(self.tasks[other].state, State::Ended(_)) {
+                self.tasks[other].state = State::Ended(TaskEnd::Halted);
+                let other_name = self.tasks[other].spec.name.clone();
+                self.shared.tasking.set_executing(&other_name, false);
+            }
+        }
+    }
+
+    /// Everything a waiting task may be waiting for: signal changes, sync points,
+    /// semaphores and shared persistents.
+    fn epoch(&self) -> u64 {
+        self.shared.io.change_count() as u64 + self.shared.tasking.epoch + self.pers.generation
+    }
+
+    /// Waiting tasks whose time has come, or whose condition may now hold.
+    fn wake(&mut self) {
+        let (now, epoch) = (self.time, self.epoch());
+        for task in &mut self.tasks {
+            if let State::Waiting { until, rechecks, epoch: seen } = task.state {
+                if until <= now || (rechecks && seen != epoch) {
+                    task.state = State::Ready;
+                }
+            }
+        }
+    }
+
+    /// Ready tasks none of whose foreground tasks is busy, in configuration order.
+    fn runnable(&self) -> Vec<usize> {
+        (0..self.tasks.len())
+            .filter(|&idx| self.tasks[idx].state == State::Ready && self.foreground_idle(idx))
+            .collect()
+    }
+
+    fn foreground_idle(&self, idx: usize) -> bool {
+        let mut at = self.tasks[idx].foreground;
+        // The chain is at most as long as the task list (a cycle ends the walk).
+        for _ in 0..self.tasks.len() {
+            let Some(fg) = at else { return true };
+            if self.tasks[fg].state == State::Ready {
+                return false;
+            }
+            at = self.tasks[fg].foreground;
+        }
+        true
+    }
+
+    /// The earliest time a waiting task wakes.
+    fn next_wake(&self) -> Option<f64> {
+        self.tasks
+            .iter()
+            .filter_map(|t| match t.state {
+                State::Waiting { until, .. } => Some(until),
+                _ => None,
+            })
+            .min_by(f64::total_cmp)
+    }
+
+    /// Over when every NORMAL task has ended; a system of static tasks only runs
+    /// until they all have.
+    fn is_over(&self) -> bool {
+        let normal: Vec<&Task> = self.tasks.iter().filter(|t| t.spec.kind == TaskKind::Normal).collect();
+        let ended = |t: &&Task| matches!(t.state, State::Ended(_));
+        if normal.is_empty() {
+            self.tasks.iter().all(|t| ended(&t))
+        } else {
+            normal.iter().all(ended)
+        }
+    }
+
+    /// The run is over: tasks still running (static ones) stop.
+    fn halt_the_rest(&mut self) {
+        for task in &mut self.tasks {
+            if !matches!(task.state, State::Ended(_)) {
+                task.state = State::Ended(TaskEnd::Halted);
+            }
+        }
+    }
+}

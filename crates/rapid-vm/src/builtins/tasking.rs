@@ -1,0 +1,344 @@
+//! Multitasking (§1.20) as a task sees it: WaitSyncTask, TestAndSet, WaitTestAndSet,
+//! GetTaskName, TaskRunMec, TaskRunRob, TaskIsActive, TaskIsExecuting, IsSyncMoveOn,
+//! TasksInSync.
+//!
+//! What the tasks of a controller share (the task list, the sync points) is a
+//! [`SharedTasking`] the controller hands to whichever task runs (see
+//! `Vm::exchange_shared`); a task alone has the one-task list of `Default`. Waits here
+//! are re-checked (`StopKind::Repeat`): the controller wakes a waiting task whenever
+//! another task changes the shared state, so nothing depends on a polling period.
+
+use rustc_hash::FxHashMap;
+
+use super::{present, Ctx, Entries, StopKind};
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::{Record, Value};
+
+type Res = Result<Option<Value>, RapidError>;
+
+/// How long a sync wait without \TimeOut sleeps before looking again when nothing
+/// wakes it: only a bound, as the controller wakes waiting tasks on every change.
+const IDLE_POLL: f64 = 3600.0;
+
+/// One task of the system, as every task sees it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct TaskInfo {
+    pub name: String,
+    /// Runs motion instructions (`-MotionTask`): TaskRunRob, TaskRunMec.
+    pub motion: bool,
+    /// Selected in the task selection panel (TaskIsActive); every configured task is.
+    pub active: bool,
+    /// Executing now (started, not stopped or ended): TaskIsExecuting.
+    pub executing: bool,
+}
+
+/// A sync point of WaitSyncTask: which tasks have arrived in the current round.
+#[derive(Debug, Clone, Default)]
+struct SyncPoint {
+    /// Completed rounds; a waiting task passes once the round it arrived in is over.
+    round: u64,
+    arrived: Vec<String>,
+}
+
+/// The multitasking state all tasks share.
+#[derive(Debug, Clone)]
+pub struct SharedTasking {
+    pub tasks: Vec<TaskInfo>,
+    sync: FxHashMap<String, SyncPoint>,
+    /// Bumped on every change a waiting task could be waiting for.
+    pub epoch: u64,
+}
+
+impl Default for SharedTasking {
+    /// A system of one task, T_ROB1, moving the robot.
+    fn default() -> Self {
+        let t_rob1 = TaskInfo { name: "T_ROB1".into(), motion: true, active: true, executing: true };
+        SharedTasking { tasks: vec![t_rob1], sync: FxHashMap::default(), epoch: 0 }
+    }
+}
+
+impl SharedTasking {
+    /// The system's tasks, in configuration order.
+    pub fn new(tasks: Vec<TaskInfo>) -> SharedTasking {
+        SharedTasking { tasks, sync: FxHashMap::default(), epoch: 0 }
+    }
+
+    fn task(&self, name: &str) -> Option<&TaskInfo> {
+        self.tasks.iter().find(|t| t.name.eq_ignore_ascii_case(name))
+    }
+
+    /// Marks a task executing or not (the controller, as tasks start and end).
+    pub fn set_executing(&mut self, name: &str, executing: bool) {
+        if let Some(task) = self.tasks.iter_mut().find(|t| t.name.eq_ignore_ascii_case(name)) {
+            if task.executing != executing {
+                task.executing = executing;
+                self.epoch += 1;
+            }
+        }
+    }
+}
+
+/// The task's own side: who it is, its shared view, the sync wait under way.
+#[derive(Debug, Clone, Default)]
+pub struct TaskingState {
+    /// The task's name; empty means T_ROB1 (a program run alone).
+    pub me: String,
+    pub shared: SharedTasking,
+    /// The WaitSyncTask under way: (sync point, round it arrived in, started at,
+    /// call depth, pc).
+    waiting: Option<(String, u64, f64, usize, u32)>,
+}
+
+impl TaskingState {
+    /// The task's name (T_ROB1 when run alone).
+    pub fn name(&self) -> &str {
+        if self.me.is_empty() {
+            "T_ROB1"
+        } else {
+            &self.me
+        }
+    }
+
+    /// Forgets a wait under way (PP to Main).
+    pub(crate) fn end_waits(&mut self) {
+        self.waiting = None;
+    }
+
+    /// Its number: its place in the configuration, from 1.
+    fn number(&self) -> usize {
+        self.shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(self.name())).map_or(1, |i| i + 1)
+    }
+}
+
+/// `WaitSyncTask [\InPos] SyncID, TaskList [\TimeOut]`: waits until every task of the
+/// list has reached the sync point of this name (the syncident's data name, the same
+/// in every task). Tasks of the list that are not executing are not waited for.
+// uncertain: \InPos waits for the robot to stand still; no motion runs yet, so it
+// always does.
+// uncertain: a task in the list the system does not have raises ERR_TASKNAME.
+fn wait_sync_task(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let Some(point) = super::argname::original_name(ctx.chain, 1) else {
+        return Err(ctx.error(Err::ArgValue, "the sync point must be a syncident variable"));
+    };
+    let point = point.to_ascii_lowercase();
+    let list = task_list(ctx, &args[2])?;
+    let me = ctx.resources.tasking.name().to_string();
+    for name in &list {
+        if ctx.resources.tasking.shared.task(name).is_none() {
+            return Err(ctx.error(Err::TaskName, format!("the system has no task `{name}`")));
+        }
+    }
+    let here = (ctx.chain.len(), ctx.chain.last().map_or(0, |f| f.position().1));
+    let now = ctx.time;
+    let tasking = &mut ctx.resources.tasking;
+    let waiting = tasking.waiting.clone().filter(|w| w.0 == point && (w.3, w.4) == here);
+    let (round, started) = match waiting {
+        Some((_, round, started, _, _)) => (round, started),
+        None => {
+            let sync = tasking.shared.sync.entry(point.clone()).or_default();
+            if !sync.arrived.iter().any(|t| t.eq_ignore_ascii_case(&me)) {
+                sync.arrived.push(me.clone());
+            }
+            tasking.shared.epoch += 1;
+            (sync.round, now)
+        }
+    };
+    complete_round_if_all_arrived(tasking, &point, &list);
+    if tasking.shared.sync.get(&point).is_some_and(|s| s.round > round) {
+        tasking.waiting = None;
+        return Ok(None);
+    }
+    let deadline = ctx.opt_num(args.get(3))?.map(|t| started + t);
+    let tasking = &mut ctx.resources.tasking;
+    if deadline.is_some_and(|d| now >= d) {
+        tasking.waiting = None;
+        if let Some(sync) = tasking.shared.sync.get_mut(&point) {
+            sync.arrived.retain(|t| !t.eq_ignore_ascii_case(&me));
+        }
+        return Err(ctx.error(Err::WaitSyncTask, "the other tasks did not reach the sync point within \\TimeOut"));
+    }
+    tasking.waiting = Some((point, round, started, here.0, here.1));
+    let next = [deadline, super::interrupts::next_due(ctx)].into_iter().flatten().min_by(f64::total_cmp);
+    ctx.wait = Some(next.map_or(IDLE_POLL, |t| (t - now).max(1e-6)));
+    ctx.stop = StopKind::Repeat;
+    Ok(None)
+}
+
+/// Ends the round of a sync point once every executing task of the list is there.
+fn complete_round_if_all_arrived(tasking: &mut TaskingState, point: &str, list: &[String]) {
+    let shared = &mut tasking.shared;
+    let Some(sync) = shared.sync.get(point) else { return };
+    let all_there = list.iter().all(|name| {
+        let executing = shared.tasks.iter().any(|t| t.name.eq_ignore_ascii_case(name) && t.executing);
+        !executing || sync.arrived.iter().any(|a| a.eq_ignore_ascii_case(name))
+    });
+    if all_there {
+        if let Some(sync) = shared.sync.get_mut(point) {
+            sync.round += 1;
+            sync.arrived.clear();
+        }
+        shared.epoch += 1;
+    }
+}
+
+/// The task names of a `tasks` array (empty names are skipped).
+fn task_list(ctx: &Ctx<'_>, arg: &Value) -> Result<Vec<String>, RapidError> {
+    let Value::Array(array) = ctx.value(arg)? else {
+        return Err(ctx.error(Err::ArgValue, "the task list must be an array of tasks"));
+    };
+    let names = array.elems.iter().filter_map(|elem| match elem {
+        Value::Record(record) => match record.fields.first() {
+            Some(Value::Str(name)) if !name.is_empty() => Some(name.to_string()),
+            _ => None,
+        },
+        _ => None,
+    });
+    Ok(names.collect())
+}
+
+/// `TestAndSet(Object)`: takes the semaphore if it is free (FALSE): sets it and
+/// returns TRUE; otherwise FALSE. Tasks run one instruction at a time, so the test and
+/// the set are one step no other task can come between.
+fn test_and_set(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let taken = matches!(ctx.value(&args[0])?, Value::Bool(true));
+    if taken {
+        return Ok(Some(Value::Bool(false)));
+    }
+    ctx.store(&args[0], Value::Bool(true))?;
+    ctx.resources.tasking.shared.epoch += 1;
+    Ok(Some(Value::Bool(true)))
+}
+
+/// `WaitTestAndSet Object`: waits until the semaphore is free, then takes it.
+fn wait_test_and_set(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    if let Some(Value::Bool(true)) = test_and_set(ctx, args)? {
+        return Ok(None);
+    }
+    let next = super::interrupts::next_due(ctx);
+    ctx.wait = Some(next.map_or(IDLE_POLL, |t| (t - ctx.time).max(1e-6)));
+    ctx.stop = StopKind::Repeat;
+    Ok(None)
+}
+
+/// `GetTaskName([\TaskNo] | [\MecTaskNo])`: the task's name; `\TaskNo` also gives its
+/// number; `\MecTaskNo` gives the name and number of the motion task it is
+/// connected to (itself when it is one).
+// uncertain: a task that is no motion task is taken to be connected to the first
+// motion task of the system (the controller follows -UseMechanicalUnitGroup).
+fn get_task_name(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let tasking = &ctx.resources.tasking;
+    if present(args.get(1)) {
+        let me = tasking.number();
+        let motion = match tasking.shared.tasks.get(me - 1) {
+            Some(task) if task.motion => Some(me),
+            _ => tasking.shared.tasks.iter().position(|t| t.motion).map(|i| i + 1),
+        };
+        let Some(number) = motion else {
+            return Err(ctx.error(Err::TaskName, "the system has no motion task"));
+        };
+        let name = tasking.shared.tasks[number - 1].name.clone();
+        ctx.store(&args[1], Value::Num(number as f32))?;
+        return Ok(Some(Value::Str(name.into())));
+    }
+    let (name, number) = (tasking.name().to_string(), tasking.number());
+    if present(args.first()) {
+        ctx.store(&args[0], Value::Num(number as f32))?;
+    }
+    Ok(Some(Value::Str(name.into())))
+}
+
+/// A built-in given a task name (`\TaskName`) works on its own task: another task of
+/// the system is not reachable yet (a clear refusal), a name the system does not have
+/// is ERR_TASKNAME.
+pub(crate) fn check_own_task(ctx: &Ctx<'_>, task: &str, what: &str) -> Result<(), RapidError> {
+    let tasking = &ctx.resources.tasking;
+    if task.eq_ignore_ascii_case(tasking.name()) {
+        return Ok(());
+    }
+    if tasking.shared.task(task).is_some() {
+        return Err(RapidError::fatal(format!("{what} (task {task}) is not supported by `rapid run` yet")));
+    }
+    Err(ctx.error(Err::TaskName, format!("the system has no task `{task}`")))
+}
+
+fn my_task<'c>(ctx: &'c Ctx<'_>) -> Option<&'c TaskInfo> {
+    ctx.resources.tasking.shared.task(ctx.resources.tasking.name())
+}
+
+/// `TaskRunRob()`: the task controls a robot with a TCP (it is a motion task).
+fn task_run_rob(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+    Ok(Some(Value::Bool(my_task(ctx).is_some_and(|t| t.motion))))
+}
+
+/// `TaskRunMec()`: the task controls a mechanical unit; only motion tasks do here.
+// uncertain: a task with external axes but no robot also answers TRUE on a controller;
+// the systems we model have robot units only.
+fn task_run_mec(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+    task_run_rob(ctx, _args)
+}
+
+/// The task a `taskid | string` argument pair names: a taskid by its data name
+/// (`T_ROB2Id` is T_ROB2), a string as written.
+fn named_task(ctx: &Ctx<'_>, args: &[Value]) -> Result<TaskInfo, RapidError> {
+    let name = if present(args.get(1)) {
+        ctx.string(&args[1])?
+    } else {
+        let data = super::argname::original_name(ctx.chain, 0).unwrap_or_default();
+        let lower = data.to_ascii_lowercase();
+        lower.strip_suffix("id").map_or(data.to_string(), |stem| data[..stem.len()].to_string())
+    };
+    ctx.resources
+        .tasking
+        .shared
+        .task(&name)
+        .cloned()
+        .ok_or_else(|| ctx.error(Err::TaskName, format!("the system has no task `{name}`")))
+}
+
+/// `TaskIsActive(TaskRef | TaskName)`: the task is selected in the task selection
+/// panel; every task of the configuration is, here.
+fn task_is_active(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    Ok(Some(Value::Bool(named_task(ctx, args)?.active)))
+}
+
+/// `TaskIsExecuting(TaskRef | TaskName)`: the task is running (not stopped or ended).
+fn task_is_executing(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    Ok(Some(Value::Bool(named_task(ctx, args)?.executing)))
+}
+
+/// `IsSyncMoveOn()`: the task is in synchronized movement. SyncMoveOn is not run yet
+/// (a program using it is refused at load), so no task ever is.
+fn is_sync_move_on(_ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+    Ok(Some(Value::Bool(false)))
+}
+
+/// `TasksInSync(TaskList)`: how many tasks move synchronized, their names in the list
+/// (the rest emptied). None do (see IsSyncMoveOn).
+fn tasks_in_sync(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    if let Value::Array(mut array) = ctx.value(&args[0])? {
+        for elem in &mut array.elems {
+            if let Value::Record(record) = elem {
+                let record: &mut Record = std::rc::Rc::make_mut(record);
+                if let Some(name) = record.fields.first_mut() {
+                    *name = Value::Str("".into());
+                }
+            }
+        }
+        ctx.store(&args[0], Value::Array(array))?;
+    }
+    Ok(Some(Value::Num(0.0)))
+}
+
+pub(super) static ENTRIES: Entries = &[
+    ("WaitSyncTask", wait_sync_task),
+    ("TestAndSet", test_and_set),
+    ("WaitTestAndSet", wait_test_and_set),
+    ("GetTaskName", get_task_name),
+    ("TaskRunRob", task_run_rob),
+    ("TaskRunMec", task_run_mec),
+    ("TaskIsActive", task_is_active),
+    ("TaskIsExecuting", task_is_executing),
+    ("IsSyncMoveOn", is_sync_move_on),
+    ("TasksInSync", tasks_in_sync),
+];
