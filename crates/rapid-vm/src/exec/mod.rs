@@ -15,6 +15,7 @@ mod interrupts;
 mod io;
 mod kernel;
 pub mod modules;
+mod shared;
 mod spy;
 pub mod storage;
 
@@ -152,9 +153,8 @@ pub struct Vm {
     pub time: f64,
     /// Instructions executed so far.
     pub steps: u64,
-    /// The last `Exit::Wait` looks at its condition again when resumed (WaitDI,
-    /// WaitUntil, WaitSyncTask …), so it may be resumed early, when another task
-    /// changed something; false for a plain delay (WaitTime), which must run its course.
+    /// The last `Exit::Wait` re-checks its condition when resumed (WaitDI, WaitSyncTask),
+    /// so another task's change may resume it early; a delay (WaitTime) may not be.
     pub wait_rechecks: bool,
     /// What ErrWrite, ErrLog and ErrRaise logged, oldest first.
     events: crate::events::EventLog,
@@ -248,23 +248,6 @@ impl Vm {
         self.events.entries()
     }
 
-    /// The value of global `idx`.
-    pub fn global(&self, idx: u32) -> Option<&Value> {
-        self.storage.globals.get(idx as usize)
-    }
-
-    /// Gives global `idx` a value (the controller, sharing persistents between tasks).
-    pub fn set_global(&mut self, idx: u32, value: Value) {
-        if let Some(slot) = self.storage.globals.get_mut(idx as usize) {
-            *slot = value;
-        }
-    }
-
-    /// Swaps the controller's shared state (I/O system, sync points) with the task's:
-    /// before the task runs, and back after.
-    pub fn exchange_shared(&mut self, shared: &mut crate::builtins::Shared) {
-        self.resources.exchange_shared(shared);
-    }
 
     /// Runs `code` with no arguments as the first frame (the entry routine or the
     /// load-time initialisers).
@@ -635,8 +618,8 @@ impl Vm {
             Instr::WaitPop => {
                 let seconds = self.pop_num()?;
                 self.frame_mut().pc = next;
-                // WaitUntil's poll: the loop looks at its condition again when resumed.
-                self.wait_rechecks = true;
+                // WaitUntil polls every 100 ms (§1.20): it is not resumed early.
+                self.wait_rechecks = false;
                 return Ok(Some(Exit::Wait(seconds.max(0.0))));
             }
             Instr::Connect(trap) => {
