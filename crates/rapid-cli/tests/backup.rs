@@ -51,8 +51,9 @@ fn text(bytes: &[u8]) -> String {
 fn a_backup_checks_clean_with_its_configured_signals() {
     let out = rapid_in(&backups(), &["check", "palletizer"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stdout));
-    // T_ROB1's three modules (TASK2 by backinfo.txt) and the three .cfg files.
-    assert_eq!(text(&out.stdout), "checked 6 files: no problems found\n");
+    // T_ROB1's three modules (TASK2 by backinfo.txt), the three .cfg files, and the
+    // two modules of the other task, T_LOGGER (TASK1).
+    assert_eq!(text(&out.stdout), "checked 8 files: no problems found\n");
 }
 
 #[test]
@@ -127,7 +128,8 @@ fn cfg_findings_have_file_and_line_and_unknown_signals_are_undefined() {
     assert!(stdout.contains("--> b/SYSPAR/EIO.cfg:28:41"), "{stdout}");
     // The signal with the bad type is not declared, so its use is an undefined name.
     assert!(stdout.contains("error[E0201]: undefined data `goPlacedCount`"), "{stdout}");
-    assert!(stdout.contains("found 3 errors and 0 warnings in 6 files"), "{stdout}");
+    // Both tasks are checked: T_ROB1 (3 modules), T_LOGGER (2) and the 3 .cfg files.
+    assert!(stdout.contains("found 3 errors and 0 warnings in 8 files"), "{stdout}");
 
     let out = rapid_in(&dir, &["run", "b"]);
     assert_eq!(out.status.code(), Some(1));

@@ -281,8 +281,9 @@ fn task_run_mec(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 /// The task a `taskid | string` argument pair names: a taskid by its data name
 /// (`T_ROB2Id` is T_ROB2), a string as written.
 fn named_task(ctx: &Ctx<'_>, args: &[Value]) -> Result<TaskInfo, RapidError> {
-    let name = if present(args.get(1)) {
-        ctx.string(&args[1])?
+    let text = args.iter().take(2).find(|arg| matches!(ctx.value(arg), Ok(Value::Str(_))));
+    let name = if let Some(text) = text {
+        ctx.string(text)?
     } else {
         let data = super::argname::original_name(ctx.chain, 0).unwrap_or_default();
         let lower = data.to_ascii_lowercase();

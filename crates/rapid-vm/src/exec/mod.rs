@@ -248,7 +248,6 @@ impl Vm {
         self.events.entries()
     }
 
-
     /// Runs `code` with no arguments as the first frame (the entry routine or the
     /// load-time initialisers).
     pub fn start(&mut self, code: Rc<Code>) {

@@ -1,0 +1,292 @@
+//! Systems of several tasks (§1.20): backups whose SYS.cfg configures more than one
+//! task run them pseudo-parallel. Expected outputs are worked out from the manual's
+//! rules: round-robin among busy tasks, background tasks only while their foreground
+//! task idles, global persistents shared by name, WaitSyncTask meeting points.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/check/backups").join(name)
+}
+
+/// A fresh, empty scratch folder for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("multitask").join(name);
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    dir
+}
+
+fn rapid_in(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rapid")).current_dir(dir).args(args).output().expect("run rapid")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// A task of a test system: its CAB_TASKS attributes (after -Name) and its module.
+struct TaskDef<'a> {
+    name: &'a str,
+    attrs: &'a str,
+    module: &'a str,
+}
+
+/// Writes backup `sys` in `dir`: one RAPID/TASKn folder per task, in order, and
+/// SYS.cfg (and EIO.cfg when signals are given).
+fn system(dir: &Path, tasks: &[TaskDef<'_>], eio_signals: &str) -> PathBuf {
+    let root = dir.join("sys");
+    let mut sys = String::from("SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n");
+    for (n, task) in tasks.iter().enumerate() {
+        sys.push_str(&format!("\n      -Name \"{}\" {}\n", task.name, task.attrs));
+        let folder = root.join(format!("RAPID/TASK{}/PROGMOD", n + 1));
+        fs::create_dir_all(&folder).expect("task folder");
+        fs::write(folder.join("Main.mod"), task.module).expect("module");
+    }
+    fs::create_dir_all(root.join("SYSPAR")).expect("syspar");
+    fs::write(root.join("SYSPAR/SYS.cfg"), sys).expect("SYS.cfg");
+    if !eio_signals.is_empty() {
+        fs::write(root.join("SYSPAR/EIO.cfg"), format!("EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n{eio_signals}"))
+            .expect("EIO.cfg");
+    }
+    root
+}
+
+fn copy_dir(from: &Path, to: &Path) {
+    fs::create_dir_all(to).expect("folder");
+    for entry in fs::read_dir(from).expect("read folder") {
+        let entry = entry.expect("entry");
+        let target = to.join(entry.file_name());
+        if entry.path().is_dir() {
+            copy_dir(&entry.path(), &target);
+        } else {
+            fs::copy(entry.path(), target).expect("copy");
+        }
+    }
+}
+
+#[test]
+fn two_tasks_share_persistents_and_meet_at_sync_points() {
+    let dir = scratch("sync_pair");
+    copy_dir(&fixture("sync_pair"), &dir.join("sync_pair"));
+    let out = rapid_in(&dir, &["run", "--io-log", "io.csv", "--save-pers", "sync_pair"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    // The robot reads each part after the feeder wrote it (sync point), counts it in
+    // the shared partsMade, and the feeder sees the count 0.1 s after the last meeting.
+    assert_eq!(
+        text(&out.stdout),
+        "robot took part1\nrobot took part2\nrobot took part3\nrobot made 3\nfeeder sees 3\n"
+    );
+    // The feeder's output goes up at each part and down half a second later.
+    let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
+    let expected = "time,signal,old,new,cause\n0,doFeederBusy,0,1,Order\n0.5,doFeederBusy,1,0,Order\n\
+                    0.5,doFeederBusy,0,1,Order\n1,doFeederBusy,1,0,Order\n1,doFeederBusy,0,1,Order\n\
+                    1.5,doFeederBusy,1,0,Order\n";
+    assert_eq!(log, expected);
+    // One persistent object: both tasks' modules are saved with its final value.
+    for module in ["RAPID/TASK1/PROGMOD/Cell.mod", "RAPID/TASK2/PROGMOD/Feeder.mod"] {
+        let saved = fs::read_to_string(dir.join("sync_pair").join(module)).expect("module");
+        assert!(saved.contains("PERS num partsMade := 3;"), "{module}: {saved}");
+        assert!(saved.contains("PERS string lastPart := \"part3\";"), "{module}: {saved}");
+    }
+}
+
+#[test]
+fn persistents_of_one_name_must_agree_on_type_and_size() {
+    let dir = scratch("pers_mismatch");
+    let a = "MODULE A\n  PERS num shared{2} := [1, 2];\n  PROC main()\n    TPWrite \"a\";\n  ENDPROC\nENDMODULE\n";
+    let b = "MODULE B\n  PERS num shared{3} := [1, 2, 3];\n  PROC main()\n    TPWrite \"b\";\n  ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: a },
+        TaskDef { name: "T_B", attrs: "-Type \"NORMAL\"", module: b },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(text(&out.stdout), "", "nothing runs");
+    let err = text(&out.stderr);
+    assert!(err.contains("persistent `shared` is declared `num{2}` in one task and `num{3}` in task T_B"), "{err}");
+    assert!(err.contains("it was not run"), "{err}");
+}
+
+#[test]
+fn a_background_task_runs_only_while_its_foreground_task_waits() {
+    let dir = scratch("background");
+    // T_ROB1 writes, waits a second, writes. T_BG stands behind it and writes every
+    // 0.4 s: at 0, 0.4 and 0.8 (all while T_ROB1 waits); the run ends with T_ROB1.
+    let fg = "MODULE Fg\n  PROC main()\n    TPWrite \"fg start\";\n    WaitTime 1;\n    TPWrite \"fg end\";\n  \
+              ENDPROC\nENDMODULE\n";
+    let bg = "MODULE Bg\n  PROC main()\n    WHILE TRUE DO\n      TPWrite \"bg\";\n      WaitTime 0.4;\n    \
+              ENDWHILE\n  ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: fg },
+        TaskDef { name: "T_BG", attrs: "-Type \"STATIC\" -TaskInForeground \"T_ROB1\"", module: bg },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "fg start\nbg\nbg\nbg\nfg end\n");
+}
+
+#[test]
+fn wait_test_and_set_guards_a_critical_section() {
+    let dir = scratch("semaphore");
+    // T_ROB1 takes the lock at 0 and holds it for 0.2 s; T_B asks at 0.1 and gets it
+    // only when T_ROB1 frees it at 0.2. TestAndSet on a taken lock answers FALSE.
+    let a = "MODULE A\n  PERS bool lock := FALSE;\n  PROC main()\n    WaitTestAndSet lock;\n    \
+             TPWrite \"a in\";\n    WaitTime 0.2;\n    TPWrite \"a out\";\n    lock := FALSE;\n  ENDPROC\nENDMODULE\n";
+    let b = "MODULE B\n  PERS bool lock := FALSE;\n  PROC main()\n    WaitTime 0.1;\n    \
+             IF NOT TestAndSet(lock) TPWrite \"b finds it taken\";\n    WaitTestAndSet lock;\n    \
+             TPWrite \"b in\";\n    lock := FALSE;\n  ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: a },
+        TaskDef { name: "T_B", attrs: "-Type \"NORMAL\"", module: b },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "a in\nb finds it taken\na out\nb in\n");
+}
+
+#[test]
+fn a_sync_point_times_out_with_err_waitsynctask() {
+    let dir = scratch("sync_timeout");
+    // T_B is busy for 2 s before it comes to the sync point; T_ROB1 waits at most
+    // 0.5 s, handles ERR_WAITSYNCTASK and then waits without a limit: both meet at 2
+    // (its handler returns: reaching ENDPROC in a handler would stop the task, §1.12).
+    let a = "MODULE A\n  PERS tasks both{2} := [[\"T_ROB1\"], [\"T_B\"]];\n  VAR syncident meet;\n  \
+             PROC main()\n    WaitSyncTask meet, both \\TimeOut:=0.5;\n    TPWrite \"a met b\";\n  \
+             ERROR\n    IF ERRNO = ERR_WAITSYNCTASK THEN\n      TPWrite \"a gave up waiting\";\n      \
+             WaitSyncTask meet, both;\n      TPWrite \"a met b late\";\n      RETURN;\n    ENDIF\n  ENDPROC\nENDMODULE\n";
+    let b = "MODULE B\n  PERS tasks both{2} := [[\"T_ROB1\"], [\"T_B\"]];\n  VAR syncident meet;\n  \
+             PROC main()\n    WaitTime 2;\n    TPWrite \"b arrives\";\n    WaitSyncTask meet, both;\n  \
+             ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: a },
+        TaskDef { name: "T_B", attrs: "-Type \"NORMAL\"", module: b },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "a gave up waiting\nb arrives\na met b late\n");
+}
+
+#[test]
+fn a_static_task_that_fails_stops_the_normal_tasks_by_its_trust_level() {
+    let dir = scratch("trust");
+    // T_MON divides by zero at 0.5 s. With the default trust level (SysFail) T_ROB1,
+    // waiting until 2 s, is stopped: it never writes "done".
+    let rob = "MODULE R\n  PROC main()\n    TPWrite \"start\";\n    WaitTime 2;\n    TPWrite \"done\";\n  \
+               ENDPROC\nENDMODULE\n";
+    let mon = "MODULE M\n  VAR num zero := 0;\n  PROC main()\n    WaitTime 0.5;\n    \
+               TPWrite \"ratio \" \\Num:=1 / zero;\n  ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: rob },
+        TaskDef { name: "T_MON", attrs: "-Type \"STATIC\"", module: mon },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(text(&out.stdout), "start\n");
+    let err = text(&out.stderr);
+    assert!(err.contains("ERR_DIVZERO"), "{err}");
+    assert!(err.contains("in task T_MON, routine main"), "{err}");
+    assert!(err.contains("TrustLevel SysFail stopped every NORMAL task"), "{err}");
+
+    // NoSafety: only the failing task stops; T_ROB1 finishes (the error is still
+    // reported, so the run fails).
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: rob },
+        TaskDef { name: "T_MON", attrs: "-Type \"STATIC\" -TrustLevel \"NoSafety\"", module: mon },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(text(&out.stdout), "start\ndone\n");
+    assert!(!text(&out.stderr).contains("TrustLevel"), "{}", text(&out.stderr));
+}
+
+#[test]
+fn an_output_set_in_one_task_interrupts_another() {
+    let dir = scratch("interrupt");
+    // The manual's example (§1.20, 使中断运用同步): task 1 sets do1, task 2's
+    // ISignalDO trap runs. Task 2 also waits for the signal with WaitDO.
+    let t1 = "MODULE M1\n  PROC main()\n    WaitTime 0.3;\n    SetDO do1, 1;\n  ENDPROC\nENDMODULE\n";
+    let t2 = "MODULE M2\n  VAR intnum isiint1;\n  PROC main()\n    CONNECT isiint1 WITH isi_trap;\n    \
+              ISignalDO do1, 1, isiint1;\n    WaitDO do1, 1;\n    TPWrite \"task 2 saw do1\";\n    \
+              IDelete isiint1;\n  ENDPROC\n  TRAP isi_trap\n    TPWrite \"trap in task 2\";\n  ENDTRAP\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: t1 },
+        TaskDef { name: "T_B", attrs: "-Type \"NORMAL\"", module: t2 },
+    ];
+    system(&dir, &tasks, "\n      -Name \"do1\" -SignalType \"DO\"\n");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "trap in task 2\ntask 2 saw do1\n");
+}
+
+#[test]
+fn tasks_know_their_names_numbers_and_each_other() {
+    let dir = scratch("names");
+    let t1 = "MODULE M1\n  PROC main()\n    VAR num no;\n    TPWrite GetTaskName(\\TaskNo:=no) \\Num:=no;\n    \
+              IF TaskRunRob() TPWrite \"T_ROB1 moves the robot\";\n    IF TaskIsExecuting(T_PLCId) TPWrite \"T_PLC executes\";\n    WaitTime 1;\n  ENDPROC\nENDMODULE\n";
+    let t2 = "MODULE M2\n  PROC main()\n    VAR num no;\n    WaitTime 0.5;\n    \
+              TPWrite GetTaskName(\\TaskNo:=no) \\Num:=no;\n    IF NOT TaskRunRob() TPWrite \"T_PLC does not\";\n    \
+              TPWrite \"motion task \" + GetTaskName(\\MecTaskNo:=no) \\Num:=no;\n    \
+              IF TaskIsExecuting(\"T_ROB1\") AND TaskIsActive(T_ROB1Id) TPWrite \"T_ROB1 executes\";\n    WaitTime 1;\n    \
+              IF NOT TaskIsExecuting(\"T_ROB1\") TPWrite \"T_ROB1 has ended\";\n  ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: t1 },
+        TaskDef { name: "T_PLC", attrs: "-Type \"NORMAL\"", module: t2 },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(
+        text(&out.stdout),
+        "T_ROB11\nT_ROB1 moves the robot\nT_PLC executes\nT_PLC2\nT_PLC does not\nmotion task T_ROB11\nT_ROB1 executes\nT_ROB1 has ended\n"
+    );
+}
+
+#[test]
+fn a_shared_record_keeps_its_type_when_the_tasks_number_types_differently() {
+    let dir = scratch("records");
+    // The two programs declare their record types in opposite orders, so each numbers
+    // them differently; the shared persistent is still one `point` value.
+    let t1 = "MODULE M1\n  RECORD other\n    num a;\n  ENDRECORD\n  RECORD point\n    num x;\n    num y;\n  \
+              ENDRECORD\n  PERS point spot := [0, 0];\n  PROC main()\n    spot := [3, 4];\n  ENDPROC\nENDMODULE\n";
+    let t2 = "MODULE M2\n  RECORD point\n    num x;\n    num y;\n  ENDRECORD\n  RECORD other\n    num a;\n  \
+              ENDRECORD\n  PERS point spot := [0, 0];\n  PROC main()\n    VAR point want := [3, 4];\n    \
+              WaitTime 0.1;\n    IF spot = want TPWrite \"same point\";\n    TPWrite ValToStr(spot);\n  \
+              ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: t1 },
+        TaskDef { name: "T_B", attrs: "-Type \"NORMAL\"", module: t2 },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "same point\n[3,4]\n");
+}
+
+#[test]
+fn check_reads_every_task_of_a_backup() {
+    let dir = scratch("check_all");
+    // T_B's module uses a name only T_ROB1 declares: each task is checked on its own,
+    // so the finding is in T_B's file.
+    let a = "MODULE A\n  VAR num onlyInA := 1;\n  PROC main()\n    onlyInA := 2;\n  ENDPROC\nENDMODULE\n";
+    let b = "MODULE B\n  PROC main()\n    onlyInA := 3;\n  ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: a },
+        TaskDef { name: "T_B", attrs: "-Type \"NORMAL\"", module: b },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["check", "sys"]);
+    assert_eq!(out.status.code(), Some(1));
+    let report = text(&out.stdout);
+    assert!(report.contains("sys/RAPID/TASK2/PROGMOD/Main.mod:3:5"), "{report}");
+    assert!(!report.contains("TASK1/PROGMOD/Main.mod:"), "{report}");
+    assert!(report.contains("3 files"), "{report}");
+}
