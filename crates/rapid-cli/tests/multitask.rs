@@ -290,3 +290,47 @@ fn check_reads_every_task_of_a_backup() {
     assert!(!report.contains("TASK1/PROGMOD/Main.mod:"), "{report}");
     assert!(report.contains("3 files"), "{report}");
 }
+
+#[test]
+fn the_three_task_example_runs_as_worked_out() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let dir = scratch("press_cell");
+    copy_dir(&root.join("examples/press_cell"), &dir.join("press_cell"));
+    fs::copy(root.join("examples/press_cell.stimulus"), dir.join("press_cell.stimulus")).expect("stimulus");
+    let out = rapid_in(&dir, &["run", "--stimulus", "press_cell.stimulus", "--io-log", "io.csv", "press_cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    // Part 1 arrives at 0.2; the robot needs 0.4 s to load, the press 1.1 s, the
+    // unload 0.35 s; the next part is there 1.5 s after the last was taken; the
+    // monitor reports at every whole second while the robot waits.
+    let expected = [
+        "robot: picking part 1",               // 0.2
+        "press: pressing part 1",              // 0.6
+        "monitor: 0 parts done, press closed", // 1.0
+        "monitor: 0 parts done, press open",   // 2.0 (opened at 1.7)
+        "robot: part 1 done",                  // 2.05
+        "robot: picking part 2",               // 2.05 (part there since 1.7)
+        "press: pressing part 2",              // 2.45
+        "monitor: 1 parts done, press closed", // 3.0
+        "robot: part 2 done",                  // 3.9 (press opened at 3.55)
+        "robot: picking part 3",               // 3.9
+        "monitor: 2 parts done, press open",   // 4.0
+        "press: pressing part 3",              // 4.3
+        "monitor: 2 parts done, press closed", // 5.0
+        "robot: part 3 done",                  // 5.75 (press opened at 5.4)
+        "press: 3 parts pressed",              // 5.75, after the last meeting
+    ];
+    assert_eq!(text(&out.stdout), expected.map(|l| format!("{l}\n")).concat());
+    let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
+    let press: Vec<&str> = log.lines().filter(|l| l.contains(",doPressClose,")).collect();
+    assert_eq!(
+        press,
+        [
+            "0.6,doPressClose,0,1,Order",
+            "1.7,doPressClose,1,0,Order",
+            "2.45,doPressClose,0,1,Order",
+            "3.55,doPressClose,1,0,Order",
+            "4.3,doPressClose,0,1,Order",
+            "5.4,doPressClose,1,0,Order"
+        ]
+    );
+}
