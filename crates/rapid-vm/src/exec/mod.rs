@@ -371,13 +371,23 @@ impl Vm {
     /// The controller's own numbering of these entries is not public (uncertain).
     fn log_if_unhandled(&mut self, exit: &Exit) {
         let Exit::Unhandled(unhandled) = exit else { return };
-        self.log_program_event(crate::events::EventKind::Error, &unhandled.error, &unhandled.routine);
+        let place = crate::events::EventPlace {
+            routine: unhandled.routine.clone(),
+            file: unhandled.file,
+            span: unhandled.span,
+        };
+        self.log_program_event(crate::events::EventKind::Error, &unhandled.error, place);
     }
 
     /// Logs `error` in the program domain; returns the entry's index. An error that
     /// an ERROR handler takes still leaves a warning (§1.12), one that none takes an
     /// error entry from the system error handler. Returns the entry's number.
-    fn log_program_event(&mut self, kind: crate::events::EventKind, error: &RapidError, routine: &str) -> u64 {
+    fn log_program_event(
+        &mut self,
+        kind: crate::events::EventKind,
+        error: &RapidError,
+        place: crate::events::EventPlace,
+    ) -> u64 {
         self.events.push(crate::events::Event {
             seq: 0,
             domain: crate::events::PROGRAM_DOMAIN,
@@ -385,8 +395,15 @@ impl Vm {
             kind,
             time: self.time,
             title: error.to_string(),
-            lines: vec![format!("routine {routine}")],
+            lines: vec![format!("routine {}", place.routine)],
+            place: Some(place),
         })
+    }
+
+    /// Where `frame` is: its routine and the statement at its PC (for a caller, its call).
+    fn place_of(frame: &Frame) -> crate::events::EventPlace {
+        let span = frame.code.stmt_at(frame.pc).map_or(frame.code.span, |s| s.span);
+        crate::events::EventPlace { routine: frame.code.name.clone(), file: frame.code.file, span }
     }
 
     /// SkipWarn: the warning of the error the running handler took is not kept.
@@ -776,11 +793,18 @@ impl Vm {
             resources: &mut self.resources,
             chain: &self.frames,
         };
+        let first_event = ctx.events.next_seq();
         let res = crate::builtins::function(id)(&mut ctx, args);
         let waited = ctx.waited;
-        self.time += waited;
-        let res = res?;
         let (wait, stop, reset, skip_warn) = (ctx.wait, ctx.stop, ctx.reset_retries, ctx.skip_warn);
+        self.time += waited;
+        // What the built-in logged (ErrWrite, ErrLog, ErrRaise) happened at its call.
+        if self.events.next_seq() != first_event {
+            if let Some(frame) = self.frames.last() {
+                self.events.place_since(first_event, &Self::place_of(frame));
+            }
+        }
+        let res = res?;
         if reset {
             if let Some(frame) = self.frames.last_mut() {
                 frame.retries = 0;
