@@ -148,3 +148,24 @@ fn an_empty_log_is_an_empty_file_and_nothing_else_is_left() {
     names.sort();
     assert_eq!(names, ["log.jsonl", "m.mod"]);
 }
+
+#[test]
+fn an_entry_from_a_module_loaded_at_run_time_names_its_rapid_path() {
+    let dir = fresh_dir("loaded");
+    fs::create_dir_all(dir.join("home").join("HOME")).expect("HOME device");
+    fs::write(
+        dir.join("home").join("HOME").join("tool.mod"),
+        "MODULE tool\n  PROC tool_use()\n    WaitTime 0.5;\n    ErrWrite \\I, \"Tool used\", \"again\";\n  ENDPROC\nENDMODULE\n",
+    )
+    .expect("write module");
+    let program = "MODULE m\n  PROC main()\n    Load \"HOME:/tool.mod\";\n    %\"tool_use\"%;\n  ENDPROC\nENDMODULE\n";
+    let out = run(&dir, program, &["--home", "home"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    // ErrWrite \I: user domain, number 3, at line 4 of the loaded module, after 0.5 s.
+    let expected = json!({
+        "seq": 0, "time": 0.5, "task": "T_ROB1", "domain": 8, "number": 3, "code": 80003, "type": "info",
+        "title": "Tool used", "description": ["again"], "routine": "tool_use", "file": "HOME:/tool.mod",
+        "line": 4, "column": 5,
+    });
+    assert_eq!(entries(&dir), [expected]);
+}

@@ -172,3 +172,60 @@ fn a_saved_module_keeps_its_permissions() {
     assert_eq!(fs::read_dir(&dir).expect("read folder").count(), 1, "a temporary file was left behind");
     fs::remove_dir_all(&dir).expect("clean up");
 }
+
+#[test]
+fn the_save_instruction_replaces_the_module_the_same_way() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = fresh_dir("instruction");
+    let home = dir.join("home");
+    fs::create_dir_all(home.join("HOME")).expect("HOME device");
+    let tool = home.join("HOME").join("tool.mod");
+    fs::write(
+        &tool,
+        "MODULE tool\n  PERS num uses := 4;\n  PROC tool_use()\n    uses := uses + 1;\n  ENDPROC\nENDMODULE\n",
+    )
+    .expect("write module");
+    fs::set_permissions(&tool, fs::Permissions::from_mode(0o640)).expect("chmod");
+    let main = dir.join("m.mod");
+    fs::write(&main, "MODULE m\n  PROC main()\n    Load \"HOME:/tool.mod\";\n    %\"tool_use\"%;\n    Save \"tool\";\n  ENDPROC\nENDMODULE\n")
+        .expect("write module");
+    let out =
+        Command::new(env!("CARGO_BIN_EXE_rapid")).args(["run", "--home"]).arg(&home).arg(&main).output().expect("run");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    // Save writes the module with its persistent's current value (manual 1.2.2).
+    assert_eq!(
+        fs::read_to_string(&tool).expect("read"),
+        "MODULE tool\n  PERS num uses := 5;\n  PROC tool_use()\n    uses := uses + 1;\n  ENDPROC\nENDMODULE\n"
+    );
+    assert_eq!(fs::metadata(&tool).expect("stat").permissions().mode() & 0o7777, 0o640);
+    assert_eq!(fs::read_dir(home.join("HOME")).expect("read folder").count(), 1, "a temporary file was left behind");
+    fs::remove_dir_all(&dir).expect("clean up");
+}
+
+#[test]
+fn a_module_that_cannot_be_saved_costs_the_others_nothing() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = fresh_dir("partial");
+    let (a, b) = (dir.join("a.mod"), dir.join("b.mod"));
+    let a_text = "MODULE a\n  PERS num x := 1;\n  PROC main()\n    x := 2;\n    y := 3;\n  ENDPROC\nENDMODULE\n";
+    fs::write(&a, a_text).expect("write a");
+    fs::write(&b, "MODULE b\n  PERS num y := 1;\nENDMODULE\n").expect("write b");
+    // A read-only module is not replaced behind its owner's back.
+    fs::set_permissions(&a, fs::Permissions::from_mode(0o444)).expect("chmod");
+    let out = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .args(["run", "--save-pers", "--elog"])
+        .arg(dir.join("log.jsonl"))
+        .arg(&a)
+        .arg(&b)
+        .output()
+        .expect("run");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("a.mod") && stderr.contains("read-only"), "{stderr}");
+    assert_eq!(fs::read_to_string(&a).expect("read a"), a_text);
+    assert_eq!(fs::read_to_string(&b).expect("read b"), "MODULE b\n  PERS num y := 3;\nENDMODULE\n");
+    // The event log is written all the same (empty: nothing was logged).
+    assert_eq!(fs::read_to_string(dir.join("log.jsonl")).expect("the log"), "");
+    fs::set_permissions(&a, fs::Permissions::from_mode(0o644)).expect("chmod");
+    fs::remove_dir_all(&dir).expect("clean up");
+}
