@@ -51,6 +51,12 @@ pub(crate) struct RunArgs {
     #[arg(long)]
     pub(crate) event_log: bool,
 
+    /// When the program ends (however it ends), write the event log to FILE as JSON
+    /// lines: seq, time, task, domain, number, type, title, description, routine,
+    /// file, line (see docs/elog.md).
+    #[arg(long, value_name = "FILE")]
+    pub(crate) elog: Option<PathBuf>,
+
     /// Operator answers for pendant dialogs (TPReadNum, TPReadFK, UINumEntry, ...),
     /// one per line, used in order; lines starting with `#` are comments.
     #[arg(long, value_name = "FILE")]

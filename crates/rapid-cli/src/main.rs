@@ -3,6 +3,7 @@
 
 mod args;
 mod commands;
+mod elog;
 mod inputs;
 mod render;
 mod save;

@@ -1,13 +1,38 @@
 //! Writing a module file back safely: the file is re-read and must still be what was
 //! loaded; the new text is encoded as the file was (UTF-8 with or without BOM, or
-//! Latin-1), written beside it and renamed over it, so a crash never leaves half a file.
+//! Latin-1) and written atomically (a temporary file beside it, fsync, rename over
+//! it, fsync of the folder: [`rapid_vm::persist::write_atomic`]), so a crash or a kill
+//! at any moment leaves the old or the new file, never half a file.
 
 use std::fs;
-use std::io::Write;
 use std::path::Path;
 
 use anyhow::{bail, Context};
+use rapid_sema::SourceInput;
 use rapid_syntax::source::{decode, Encoding};
+
+/// `--save-pers`: writes each changed persistent's value into its module file (Save
+/// Module). Every file is tried even when one fails, so one unwritable module does
+/// not cost the others their values; the failures are reported together.
+pub(crate) fn save_persistents(loaded: &rapid_vm::Loaded, files: &[SourceInput]) -> anyhow::Result<()> {
+    let mut failures = Vec::new();
+    for (file, input) in files.iter().enumerate() {
+        let sites: Vec<_> = loaded
+            .persistents
+            .iter()
+            .filter(|s| s.file == file)
+            .filter_map(|s| loaded.vm.global(s.global).map(|v| (s, v)))
+            .collect();
+        let Some(new_text) = rapid_vm::persist::rewrite(&input.text, &sites) else { continue };
+        if let Err(e) = write_module(Path::new(&input.path), &input.text, &new_text) {
+            failures.push(format!("{e:#}"));
+        }
+    }
+    match failures.len() {
+        0 => Ok(()),
+        _ => bail!("{}", failures.join("\nerror: ")),
+    }
+}
 
 /// Replaces the module at `path`, loaded as `loaded_text`, with `new_text`.
 pub(crate) fn write_module(path: &Path, loaded_text: &str, new_text: &str) -> anyhow::Result<()> {
@@ -30,27 +55,10 @@ pub(crate) fn write_module(path: &Path, loaded_text: &str, new_text: &str) -> an
             .collect::<anyhow::Result<Vec<u8>>>()?,
         Encoding::Utf16 => bail!("`{shown}` is UTF-16; saving persistents into it is not supported"),
     };
-    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.rapid-save.tmp"));
-    let mut file = fs::File::create(&tmp).with_context(|| format!("cannot write `{}`", tmp.display()))?;
-    file.write_all(&encoded)?;
-    file.sync_all()?;
-    drop(file);
-    fs::rename(&tmp, path).with_context(|| format!("cannot replace `{shown}`"))?;
-    Ok(())
+    rapid_vm::persist::write_atomic(path, &encoded).with_context(|| format!("cannot save persistents into `{shown}`"))
 }
 
-/// Writes a file the run produces (a log) beside its place and renames it over, so a
-/// crash never leaves half a file.
+/// Writes a file the run produces (a log) atomically, like a module.
 pub(crate) fn write_new(path: &Path, bytes: &[u8]) -> anyhow::Result<()> {
-    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.rapid-write.tmp"));
-    let mut file = fs::File::create(&tmp).with_context(|| format!("cannot write `{}`", tmp.display()))?;
-    file.write_all(bytes)?;
-    file.sync_all()?;
-    drop(file);
-    fs::rename(&tmp, path).with_context(|| format!("cannot write `{}`", path.display()))?;
-    Ok(())
+    rapid_vm::persist::write_atomic(path, bytes).with_context(|| format!("cannot write `{}`", path.display()))
 }

@@ -4,6 +4,8 @@
 
 use std::fmt;
 
+use rapid_syntax::Span;
+
 /// The user domain (USER_DEF_ERR): what ErrWrite, ErrLog and ErrRaise write.
 pub const USER_DOMAIN: u32 = 8;
 /// The program domain (PROGRAM_ERR): errors stopped by the system error handler.
@@ -53,6 +55,32 @@ impl EventLog {
     pub fn entries(&self) -> &[Event] {
         &self.entries
     }
+
+    /// The number the next entry will get.
+    pub fn next_seq(&self) -> u64 {
+        self.next_seq
+    }
+
+    /// Gives the entries numbered `from` on that have no place yet the place `at`
+    /// (the VM knows where a built-in that logged was called; the built-in does not).
+    pub fn place_since(&mut self, from: u64, at: &EventPlace) {
+        for event in self.entries.iter_mut().rev().take_while(|e| e.seq >= from) {
+            if event.place.is_none() {
+                event.place = Some(at.clone());
+            }
+        }
+    }
+}
+
+/// Where an event was logged: the routine and the statement running.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EventPlace {
+    pub routine: String,
+    /// The program file (an index of the VM's sources: the task's files, then
+    /// modules loaded at run time; `usize::MAX` for none).
+    pub file: usize,
+    /// The statement, in that file.
+    pub span: Span,
 }
 
 /// One event-log entry.
@@ -69,6 +97,8 @@ pub struct Event {
     pub title: String,
     /// The message lines after the title, unused arguments left out.
     pub lines: Vec<String>,
+    /// Where it was logged, when it came from running code.
+    pub place: Option<EventPlace>,
 }
 
 impl Event {

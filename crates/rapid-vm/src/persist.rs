@@ -1,7 +1,12 @@
 //! Writing persistents back into their modules, the way the controller's Save Module
 //! does (§1.2.2: "the initial value of a persistent declaration is updated when the
 //! module is saved"): only the value text of each changed `PERS` declaration is
-//! replaced; every other byte of the file stays as it was.
+//! replaced; every other byte of the file stays as it was. The file itself is replaced
+//! atomically ([`write_atomic`]), so no crash leaves a torn module.
+
+pub mod atomic;
+
+pub use atomic::write_atomic;
 
 use rapid_syntax::Span;
 

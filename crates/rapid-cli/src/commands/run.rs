@@ -105,9 +105,14 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
             eprintln!("event {event}");
         }
     }
-    if args.save_pers {
-        save_persistents(&loaded, &inputs.modules)?;
-    }
+    // Both are written even when the other fails: neither may cost the other.
+    let saved = if args.save_pers { crate::save::save_persistents(&loaded, &inputs.modules) } else { Ok(()) };
+    let logged = args.elog.as_deref().map_or(Ok(()), |path| {
+        let task = crate::elog::TaskEvents { task: crate::elog::MAIN_TASK, vm: &loaded.vm, files: &inputs.modules };
+        crate::elog::write(path, &[task])
+    });
+    saved?;
+    logged?;
     if let Some(path) = &args.io_log {
         write_io_log(loaded.vm.io_system(), path)?;
     }
@@ -156,21 +161,6 @@ fn default_home(paths: &[std::path::PathBuf]) -> std::path::PathBuf {
         _ => std::path::PathBuf::from("."),
     };
     parent.join("rapid-controller")
-}
-
-/// Writes each changed persistent's value into its module file (Save Module).
-pub(crate) fn save_persistents(loaded: &rapid_vm::Loaded, files: &[SourceInput]) -> anyhow::Result<()> {
-    for (file, input) in files.iter().enumerate() {
-        let sites: Vec<_> = loaded
-            .persistents
-            .iter()
-            .filter(|s| s.file == file)
-            .filter_map(|s| loaded.vm.global(s.global).map(|v| (s, v)))
-            .collect();
-        let Some(new_text) = rapid_vm::persist::rewrite(&input.text, &sites) else { continue };
-        crate::save::write_module(std::path::Path::new(&input.path), &input.text, &new_text)?;
-    }
-    Ok(())
 }
 
 pub(crate) fn location(files: &[SourceInput], file: usize, offset: u32) -> (String, u32, u32) {

@@ -233,12 +233,32 @@ fn finish(controller: &Controller, tasks: &[LoadedTask], args: &RunArgs) -> anyh
             }
         }
     }
+    // Every task's save and the log are attempted even when one fails.
+    let mut saved = Ok(());
     if args.save_pers {
         for (task, input) in controller.tasks.iter().zip(tasks) {
             let modules: &[SourceInput] = &input.inputs.modules;
-            single::save_persistents(&task.loaded, modules)?;
+            let result = crate::save::save_persistents(&task.loaded, modules);
+            if saved.is_ok() {
+                saved = result;
+            }
         }
     }
+    let logged = args.elog.as_deref().map_or(Ok(()), |path| {
+        let events: Vec<crate::elog::TaskEvents<'_>> = controller
+            .tasks
+            .iter()
+            .zip(tasks)
+            .map(|(task, input)| crate::elog::TaskEvents {
+                task: &task.spec.name,
+                vm: &task.loaded.vm,
+                files: &input.inputs.modules,
+            })
+            .collect();
+        crate::elog::write(path, &events)
+    });
+    saved?;
+    logged?;
     if let Some(path) = &args.io_log {
         single::write_io_log(controller.io_system(), path)?;
     }

@@ -28,7 +28,8 @@ fn user_event(ctx: &Ctx<'_>, number: u32, kind: EventKind, texts: &[Value]) -> R
     let mut expanded = expanded.into_iter();
     let title = expanded.next().flatten().unwrap_or_default();
     let lines = expanded.flatten().collect();
-    Ok(Event { seq: 0, domain: USER_DOMAIN, number, kind, time: ctx.time, title, lines })
+    // The VM adds where the program logged it (it knows the calling statement).
+    Ok(Event { seq: 0, domain: USER_DOMAIN, number, kind, time: ctx.time, title, lines, place: None })
 }
 
 /// `ErrLog ErrorId [\W] | [\I] Argument1 .. Argument5`: logs a user message; the

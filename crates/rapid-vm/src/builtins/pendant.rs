@@ -63,7 +63,9 @@ pub(super) fn err_write(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
     }
     let mut texts = texts.into_iter();
     let title = texts.next().unwrap_or_default();
-    let event = Event { seq: 0, domain: USER_DOMAIN, number, kind, time: ctx.time, title, lines: texts.collect() };
+    let lines = texts.collect();
+    // The VM adds where the program logged it (it knows the calling statement).
+    let event = Event { seq: 0, domain: USER_DOMAIN, number, kind, time: ctx.time, title, lines, place: None };
     ctx.events.push(event);
     Ok(None)
 }

@@ -334,8 +334,8 @@ impl Vm {
                     if let Some(global) = self.errno_global {
                         self.storage.globals[global as usize] = Value::Num(error.errno as f32);
                     }
-                    let routine = frame.code.name.clone();
-                    let warning = Some(self.log_program_event(EventKind::Warning, &error, &routine));
+                    let place = Self::place_of(frame);
+                    let warning = Some(self.log_program_event(EventKind::Warning, &error, place));
                     let frame = self.frames.last_mut()?;
                     if frame.last_retry_stmt != Some(stmt.start) {
                         frame.retries = 0;

@@ -14,6 +14,7 @@ mod fast;
 mod interrupts;
 mod io;
 mod kernel;
+mod log;
 pub mod modules;
 mod shared;
 mod spy;
@@ -363,37 +364,6 @@ impl Vm {
             Exit::Done
         } else {
             Exit::Budget
-        }
-    }
-
-    /// The system error handler's event-log entry for an error nothing handled:
-    /// program domain, the error's number, its name and message, where it happened.
-    /// The controller's own numbering of these entries is not public (uncertain).
-    fn log_if_unhandled(&mut self, exit: &Exit) {
-        let Exit::Unhandled(unhandled) = exit else { return };
-        self.log_program_event(crate::events::EventKind::Error, &unhandled.error, &unhandled.routine);
-    }
-
-    /// Logs `error` in the program domain; returns the entry's index. An error that
-    /// an ERROR handler takes still leaves a warning (§1.12), one that none takes an
-    /// error entry from the system error handler. Returns the entry's number.
-    fn log_program_event(&mut self, kind: crate::events::EventKind, error: &RapidError, routine: &str) -> u64 {
-        self.events.push(crate::events::Event {
-            seq: 0,
-            domain: crate::events::PROGRAM_DOMAIN,
-            number: u32::try_from(error.errno).unwrap_or(0),
-            kind,
-            time: self.time,
-            title: error.to_string(),
-            lines: vec![format!("routine {routine}")],
-        })
-    }
-
-    /// SkipWarn: the warning of the error the running handler took is not kept.
-    fn drop_handled_warning(&mut self) {
-        let warning = self.frames.last_mut().and_then(|f| f.active.as_mut()).and_then(|a| a.warning.take());
-        if let Some(seq) = warning {
-            self.events.remove(seq);
         }
     }
 
@@ -778,11 +748,18 @@ impl Vm {
             resources: &mut self.resources,
             chain: &self.frames,
         };
+        let first_event = ctx.events.next_seq();
         let res = crate::builtins::function(id)(&mut ctx, args);
         let waited = ctx.waited;
-        self.time += waited;
-        let res = res?;
         let (wait, stop, reset, skip_warn) = (ctx.wait, ctx.stop, ctx.reset_retries, ctx.skip_warn);
+        self.time += waited;
+        // What the built-in logged (ErrWrite, ErrLog, ErrRaise) happened at its call.
+        if self.events.next_seq() != first_event {
+            if let Some(frame) = self.frames.last() {
+                self.events.place_since(first_event, &Self::place_of(frame));
+            }
+        }
+        let res = res?;
         if reset {
             if let Some(frame) = self.frames.last_mut() {
                 frame.retries = 0;

@@ -645,7 +645,7 @@ impl Vm {
         let checked = check(self.modules.sources(), &self.modules.options)
             .map_err(|_| self.error(Err::IoError, "the task's program does not check"))?;
         let text = self.module_text(&checked, file, index, unit.is_some());
-        std::fs::write(&host, latin1_bytes(&text))
+        crate::persist::write_atomic(&host, &latin1_bytes(&text))
             .map_err(|e| self.error(Err::IoError, format!("module `{name}` cannot be saved to `{shown}`: {e}")))?;
         if let Some(unit) = unit {
             self.snapshot_pers(unit);

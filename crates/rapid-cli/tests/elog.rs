@@ -1,0 +1,171 @@
+//! `rapid run --elog FILE`: the event log as JSON lines (docs/elog.md), written when
+//! the run ends however it ends. The expected entries are worked out by hand from the
+//! program: what each instruction logs (ErrWrite, ErrLog, ErrRaise, a handled error's
+//! warning, SkipWarn, the system error handler's entry), at which controller time and
+//! at which statement.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use serde_json::{json, Value};
+
+fn fresh_dir(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("elog").join(name);
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("test folder");
+    dir
+}
+
+/// Runs `rapid run --elog log.jsonl ARGS… m.mod` in `dir` (so entries name `m.mod`).
+fn run(dir: &Path, program: &str, args: &[&str]) -> Output {
+    fs::write(dir.join("m.mod"), program).expect("write module");
+    Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .current_dir(dir)
+        .args(["run", "--elog", "log.jsonl"])
+        .args(args)
+        .arg("m.mod")
+        .output()
+        .expect("run rapid")
+}
+
+/// The file's lines, each parsed; every line must be one JSON object.
+fn entries(dir: &Path) -> Vec<Value> {
+    let text = fs::read_to_string(dir.join("log.jsonl")).expect("the log was written");
+    assert!(text.is_empty() || text.ends_with('\n'), "the last line is not ended");
+    text.lines().map(|l| serde_json::from_str::<Value>(l).expect("a JSON object per line")).collect()
+}
+
+/// `entry` without its title (compared separately: the program domain's titles are
+/// the VM's error messages).
+fn without_title(entry: &Value) -> Value {
+    let mut entry = entry.clone();
+    entry.as_object_mut().expect("an object").remove("title");
+    entry
+}
+
+const PROGRAM: &str = "\
+MODULE m
+  VAR errnum ERR_GRIP := -1;
+  PROC main()
+    VAR num z := 0;
+    BookErrNo ERR_GRIP;
+    TPWrite \"\" \\Num:=ERR_DIVZERO;
+    TPWrite \"\" \\Num:=ERR_GRIP;
+    ErrWrite \"Gripper\", \"no part\" \\RL2:=\"line 2\";
+    WaitTime 1.5;
+    ErrLog 4800 \\I, \"Cycle\", \"started\", ERRSTR_TASK, ERRSTR_UNUSED, ERRSTR_UNUSED;
+    check;
+    WaitTime 0.25;
+    reg1 := 1 / z;
+  ENDPROC
+  PROC check()
+    VAR num z := 0;
+    reg2 := 2 / z;
+    ErrRaise \"ERR_GRIP\", 4801, \"Grip lost\", \"at station 3\", ERRSTR_UNUSED, ERRSTR_UNUSED, ERRSTR_UNUSED;
+  ERROR
+    IF ERRNO = ERR_GRIP SkipWarn;
+    TRYNEXT;
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn every_entry_with_time_task_routine_and_place() {
+    let dir = fresh_dir("entries");
+    let out = run(&dir, PROGRAM, &[]);
+    // The unhandled division by zero stops the program: exit 1, and the log is written.
+    assert_eq!(out.status.code(), Some(1), "{}", String::from_utf8_lossy(&out.stderr));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    // The first two pendant lines are the error numbers (ErrWrite's lines follow).
+    let numbers: Vec<u64> = stdout.lines().take(2).map(|l| l.trim().parse().expect("a number")).collect();
+    let [divzero, grip] = numbers[..] else { panic!("two numbers expected: {stdout}") };
+
+    let place = |routine: &str, line: u32| json!({"routine": routine, "file": "m.mod", "line": line, "column": 5});
+    let entry = |seq: u64, time: f64, domain: u64, number: u64, kind: &str, description: Value, at: Value| {
+        let mut e = json!({
+            "seq": seq, "time": time, "task": "T_ROB1", "domain": domain, "number": number,
+            "code": domain * 10_000 + number, "type": kind, "description": description,
+        });
+        let fields = e.as_object_mut().expect("an object");
+        for (k, v) in at.as_object().expect("an object") {
+            fields.insert(k.clone(), v.clone());
+        }
+        e
+    };
+    let expected = [
+        // ErrWrite: user domain (8), number 1 for an error; header as title.
+        entry(0, 0.0, 8, 1, "error", json!(["no part", "line 2"]), place("main", 8)),
+        // ErrLog \I after 1.5 s: ERRSTR_TASK is the task's name, unused arguments dropped.
+        entry(1, 1.5, 8, 4800, "info", json!(["started", "T_ROB1"]), place("main", 10)),
+        // The division by zero check's handler takes: a warning in the program domain (4).
+        entry(2, 1.5, 4, divzero, "warning", json!(["routine check"]), place("check", 17)),
+        // ErrRaise logs its message, then raises ERR_GRIP ...
+        entry(3, 1.5, 8, 4801, "error", json!(["at station 3"]), place("check", 18)),
+        // ... whose warning (seq 4) SkipWarn takes out of the log; then main's division
+        // by zero after another 0.25 s reaches the system error handler: an error.
+        entry(5, 1.75, 4, divzero, "error", json!(["routine main"]), place("main", 13)),
+    ];
+    let got = entries(&dir);
+    assert_eq!(got.len(), expected.len(), "{got:#?}");
+    for (got, expected) in got.iter().zip(&expected) {
+        assert_eq!(&without_title(got), expected);
+    }
+    let titles: Vec<&str> = got.iter().map(|e| e["title"].as_str().expect("a title")).collect();
+    assert_eq!(titles[0], "Gripper");
+    assert_eq!(titles[1], "Cycle");
+    assert!(titles[2].contains("ERR_DIVZERO"), "{}", titles[2]);
+    assert_eq!(titles[3], "Grip lost");
+    assert!(titles[4].contains("ERR_DIVZERO"), "{}", titles[4]);
+    assert_ne!(grip, divzero);
+    // --elog leaves --event-log alone: nothing on stderr but the error report.
+    assert!(!String::from_utf8_lossy(&out.stderr).contains("event "));
+}
+
+#[test]
+fn written_when_the_run_is_stopped_by_max_steps() {
+    let dir = fresh_dir("max-steps");
+    let program = "MODULE m\n  PROC main()\n    ErrWrite \\W, \"Looping\", \"forever\";\n    WHILE TRUE DO\n      reg1 := reg1 + 1;\n    ENDWHILE\n  ENDPROC\nENDMODULE\n";
+    let out = run(&dir, program, &["--max-steps", "1000"]);
+    assert_eq!(out.status.code(), Some(1), "{}", String::from_utf8_lossy(&out.stderr));
+    let expected = json!({
+        "seq": 0, "time": 0.0, "task": "T_ROB1", "domain": 8, "number": 2, "code": 80002, "type": "warning",
+        "title": "Looping", "description": ["forever"], "routine": "main", "file": "m.mod", "line": 3, "column": 5,
+    });
+    assert_eq!(entries(&dir), [expected]);
+}
+
+#[test]
+fn an_empty_log_is_an_empty_file_and_nothing_else_is_left() {
+    let dir = fresh_dir("empty");
+    let out = run(&dir, "MODULE m\n  PROC main()\n    TPWrite \"quiet\";\n  ENDPROC\nENDMODULE\n", &[]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(entries(&dir).is_empty());
+    let mut names: Vec<String> = fs::read_dir(&dir)
+        .expect("read")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["log.jsonl", "m.mod"]);
+}
+
+#[test]
+fn an_entry_from_a_module_loaded_at_run_time_names_its_rapid_path() {
+    let dir = fresh_dir("loaded");
+    fs::create_dir_all(dir.join("home").join("HOME")).expect("HOME device");
+    fs::write(
+        dir.join("home").join("HOME").join("tool.mod"),
+        "MODULE tool\n  PROC tool_use()\n    WaitTime 0.5;\n    ErrWrite \\I, \"Tool used\", \"again\";\n  ENDPROC\nENDMODULE\n",
+    )
+    .expect("write module");
+    let program = "MODULE m\n  PROC main()\n    Load \"HOME:/tool.mod\";\n    %\"tool_use\"%;\n  ENDPROC\nENDMODULE\n";
+    let out = run(&dir, program, &["--home", "home"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    // ErrWrite \I: user domain, number 3, at line 4 of the loaded module, after 0.5 s.
+    let expected = json!({
+        "seq": 0, "time": 0.5, "task": "T_ROB1", "domain": 8, "number": 3, "code": 80003, "type": "info",
+        "title": "Tool used", "description": ["again"], "routine": "tool_use", "file": "HOME:/tool.mod",
+        "line": 4, "column": 5,
+    });
+    assert_eq!(entries(&dir), [expected]);
+}
