@@ -104,4 +104,7 @@ errors! {
     CfgNotFound = "ERR_CFG_NOTFND",
     CfgOutOfBounds = "ERR_CFG_OUTOFBOUNDS",
     CfgWriteFile = "ERR_CFG_WRITEFILE",
+    // Motion settings and position functions (§1.7, §1.8).
+    SpeedRefreshLim = "ERR_SPEED_REFRESH_LIM",
+    Frame = "ERR_FRAME",
 }

@@ -20,6 +20,7 @@ mod io_wait;
 mod math;
 mod matrix;
 pub mod modules;
+pub mod motion;
 mod pendant;
 mod random;
 mod rawbytes;
@@ -113,6 +114,8 @@ pub struct Resources {
     pub interrupts: interrupts::InterruptState,
     /// The system parameters the run was started with (kept at PP to Main).
     pub cfgdata: cfgdata::CfgState,
+    /// The motion settings (reset to their defaults at PP to Main).
+    pub motion: motion::MotionState,
 }
 
 impl Resources {
@@ -125,6 +128,7 @@ impl Resources {
         self.spy.stop();
         self.modules.close_all();
         self.interrupts.clear();
+        self.motion.reset();
     }
 }
 
@@ -270,6 +274,7 @@ static FAMILIES: &[Entries] = &[
     io_wait::ENTRIES,
     spy::ENTRIES,
     cfgdata::ENTRIES,
+    motion::ENTRIES,
 ];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =
