@@ -141,7 +141,11 @@ pub(crate) fn def_acc_frame(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let from = point_list(ctx, &args[0], n)?;
     let to = point_list(ctx, &args[1], n)?;
     let fit = rigid_fit(&from, &to).ok_or_else(|| frame_error(ctx))?;
-    let errors: Vec<f64> = from.iter().zip(&to).map(|(a, b)| (fit * nalgebra::Point3::from(*a) - nalgebra::Point3::from(*b)).norm()).collect();
+    let errors: Vec<f64> = from
+        .iter()
+        .zip(&to)
+        .map(|(a, b)| (fit * nalgebra::Point3::from(*a) - nalgebra::Point3::from(*b)).norm())
+        .collect();
     let max = errors.iter().copied().fold(0.0, f64::max);
     let mean = errors.iter().sum::<f64>() / n as f64;
     ctx.store(&args[3], Value::Num(max as f32))?;

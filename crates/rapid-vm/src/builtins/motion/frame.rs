@@ -98,7 +98,9 @@ fn num(x: f64) -> Value {
 /// `like` (a pos/orient/extjoint record) with new numbers.
 fn with_numbers(like: &Value, numbers: &[f64]) -> Value {
     match like {
-        Value::Record(r) => Value::Record(Rc::new(Record { ty: r.ty, fields: numbers.iter().map(|&x| num(x)).collect() })),
+        Value::Record(r) => {
+            Value::Record(Rc::new(Record { ty: r.ty, fields: numbers.iter().map(|&x| num(x)).collect() }))
+        }
         other => other.clone(),
     }
 }
@@ -142,9 +144,7 @@ pub(super) fn pose_value(ctx: &Ctx<'_>, frame: &Isometry3<f64>) -> Result<Value,
     let q = from_matrix(frame.rotation.to_rotation_matrix().matrix());
     let t = frame.translation.vector;
     let pos = Value::Record(Rc::new(Record { ty: ctx.types.pos, fields: vec![num(t.x), num(t.y), num(t.z)] }));
-    let orient = Value::Record(Rc::new(Record {
-        ty: ctx.types.orient,
-        fields: vec![num(q.w), num(q.i), num(q.j), num(q.k)],
-    }));
+    let orient =
+        Value::Record(Rc::new(Record { ty: ctx.types.orient, fields: vec![num(q.w), num(q.i), num(q.j), num(q.k)] }));
     Ok(Value::Record(Rc::new(Record { ty: pose_ty, fields: vec![pos, orient] })))
 }

@@ -38,10 +38,9 @@ pub(crate) fn rel_tool(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         return Ok(Some(frame::with_trans_rot(&point, &moved, &q)));
     }
     let axes = [Vector3::x_axis(), Vector3::y_axis(), Vector3::z_axis()];
-    let turn = axes
-        .iter()
-        .zip(angles)
-        .fold(UnitQuaternion::identity(), |acc, (axis, deg)| acc * UnitQuaternion::from_axis_angle(axis, deg.unwrap_or(0.0).to_radians()));
+    let turn = axes.iter().zip(angles).fold(UnitQuaternion::identity(), |acc, (axis, deg)| {
+        acc * UnitQuaternion::from_axis_angle(axis, deg.unwrap_or(0.0).to_radians())
+    });
     Ok(Some(frame::with_trans_rot(&point, &moved, &(rot * turn).into_inner())))
 }
 
