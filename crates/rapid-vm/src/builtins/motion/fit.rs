@@ -152,3 +152,53 @@ pub(crate) fn def_acc_frame(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     ctx.store(&args[4], Value::Num(mean as f32))?;
     Ok(Some(frame::pose_value(ctx, &fit)?))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn turn(axis: Vector3<f64>, degrees: f64) -> UnitQuaternion<f64> {
+        UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_normalize(axis), degrees.to_radians())
+    }
+
+    #[test]
+    fn a_rigid_motion_is_found_again_from_its_points() {
+        // A turn about a skew axis and a shift; the fit must find them back exactly.
+        let motion =
+            Isometry3::from_parts(Translation3::new(12.5, -40.0, 300.0), turn(Vector3::new(1.0, 2.0, 3.0), 37.0));
+        let from = [
+            Vector3::new(0.0, 0.0, 0.0),
+            Vector3::new(250.0, 10.0, -5.0),
+            Vector3::new(-30.0, 180.0, 20.0),
+            Vector3::new(60.0, 70.0, 140.0),
+        ];
+        let to: Vec<Vector3<f64>> =
+            from.iter().map(|p| motion.transform_vector(p) + motion.translation.vector).collect();
+        let fit = rigid_fit(&from, &to).expect("a frame");
+        assert!((fit.translation.vector - motion.translation.vector).norm() < 1e-9);
+        assert!(fit.rotation.angle_to(&motion.rotation) < 1e-9);
+    }
+
+    #[test]
+    fn mirrored_points_still_give_a_proper_rotation() {
+        // The second list is the first mirrored in the xy plane: the best proper
+        // rotation is returned, never a reflection.
+        let from = [
+            Vector3::new(0.0, 0.0, 10.0),
+            Vector3::new(100.0, 0.0, 0.0),
+            Vector3::new(0.0, 100.0, 0.0),
+            Vector3::new(0.0, 0.0, 0.0),
+        ];
+        let to: Vec<Vector3<f64>> = from.iter().map(|p| Vector3::new(p.x, p.y, -p.z)).collect();
+        let fit = rigid_fit(&from, &to).expect("a frame");
+        let r = fit.rotation.to_rotation_matrix();
+        assert!((r.matrix().determinant() - 1.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn points_on_a_line_give_no_frame() {
+        let line: Vec<Vector3<f64>> = (0..4).map(|i| Vector3::new(f64::from(i) * 10.0, 5.0, 5.0)).collect();
+        assert!(rigid_fit(&line, &line).is_none());
+        assert!(three_point_frame([line[0], line[1], line[2]], 1).is_none());
+    }
+}
