@@ -43,8 +43,46 @@ pub struct Task {
     /// `-TaskInForeground`: the task this one is in the background of (it runs only
     /// while that task idles); none for a task at the top level.
     pub foreground: Option<String>,
+    /// The task's RAPID Message Queue (`-RmqType`, `-RmqMode`, `-RmqMaxMsgSize`,
+    /// `-RmqMaxNoOfMsg`).
+    pub rmq: Rmq,
     pub line: u32,
 }
+
+/// `-RmqType`: who may send to the task's message queue.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RmqType {
+    /// The task has no queue.
+    None,
+    /// Other tasks of the controller may send.
+    Internal,
+    /// Other tasks and clients outside the controller may send.
+    Remote,
+}
+
+/// A task's RAPID Message Queue configuration.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Rmq {
+    pub rmq_type: RmqType,
+    /// `-RmqMode Synchronous` (RMQReadWait receives); else Interrupt (IRMQMessage traps).
+    pub synchronous: bool,
+    /// `-RmqMaxMsgSize`, bytes of data in one message.
+    pub max_msg_size: u32,
+    /// `-RmqMaxNoOfMsg`, messages the queue holds.
+    pub max_no_of_msg: u32,
+}
+
+// uncertain: the defaults and ranges as we know them from ABB's system parameters
+// manual (Controller, Task): no queue, interrupt mode, 400 bytes (max 3000), 5
+// messages (max 10).
+impl Default for Rmq {
+    fn default() -> Self {
+        Rmq { rmq_type: RmqType::None, synchronous: false, max_msg_size: 400, max_no_of_msg: 5 }
+    }
+}
+
+const RMQ_MAX_MSG_SIZE: u32 = 3000;
+const RMQ_MAX_NO_OF_MSG: u32 = 10;
 
 /// One `CAB_TASK_MODULES` instance: a module file loaded into a task at start.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -155,6 +193,47 @@ fn task(file: &CfgFile, inst: &Instance, errors: &mut Vec<CfgError>) -> Option<T
         mechanical_unit_group: inst.value("UseMechanicalUnitGroup").map(str::to_owned),
         hidden: inst.has("Hidden"),
         foreground: inst.value("TaskInForeground").filter(|t| !t.is_empty()).map(str::to_owned),
+        rmq: rmq(file, inst, name, errors),
         line: inst.line,
     })
+}
+
+/// The `-Rmq…` attributes of a task; a bad value is reported and the default kept.
+fn rmq(file: &CfgFile, inst: &Instance, task: &str, errors: &mut Vec<CfgError>) -> Rmq {
+    let mut rmq = Rmq::default();
+    if let Some(text) = inst.value("RmqType") {
+        match text.to_ascii_lowercase().as_str() {
+            "none" => rmq.rmq_type = RmqType::None,
+            "internal" => rmq.rmq_type = RmqType::Internal,
+            "remote" => rmq.rmq_type = RmqType::Remote,
+            _ => error(
+                file,
+                errors,
+                inst,
+                format!("task `{task}`: unknown -RmqType `{text}` (None, Internal or Remote)"),
+            ),
+        }
+    }
+    if let Some(text) = inst.value("RmqMode") {
+        match text.to_ascii_lowercase().as_str() {
+            "interrupt" => rmq.synchronous = false,
+            "synchronous" => rmq.synchronous = true,
+            _ => error(
+                file,
+                errors,
+                inst,
+                format!("task `{task}`: unknown -RmqMode `{text}` (Interrupt or Synchronous)"),
+            ),
+        }
+    }
+    let mut number = |attr: &str, max: u32, slot: &mut u32| {
+        let Some(text) = inst.value(attr) else { return };
+        match text.trim().parse::<u32>() {
+            Ok(n) if (1..=max).contains(&n) => *slot = n,
+            _ => error(file, errors, inst, format!("task `{task}`: -{attr} `{text}` is not a number from 1 to {max}")),
+        }
+    };
+    number("RmqMaxMsgSize", RMQ_MAX_MSG_SIZE, &mut rmq.max_msg_size);
+    number("RmqMaxNoOfMsg", RMQ_MAX_NO_OF_MSG, &mut rmq.max_no_of_msg);
+    rmq
 }

@@ -106,4 +106,7 @@ errors! {
     CfgWriteFile = "ERR_CFG_WRITEFILE",
     // Multitasking (§1.20).
     WaitSyncTask = "ERR_WAITSYNCTASK",
+    // Motion settings and position functions (§1.7, §1.8).
+    SpeedRefreshLim = "ERR_SPEED_REFRESH_LIM",
+    Frame = "ERR_FRAME",
 }

@@ -146,6 +146,11 @@ pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Resul
     };
     vm.set_data_names(module_data.map(named).collect());
     vm.resources_mut().symsearch = builtins::symsearch::catalog::task_symbols(&prog, &modules);
+    vm.resources_mut().motion.links = builtins::motion::MotionLinks {
+        motset: global_named("C_MOTSET"),
+        progdisp: global_named("C_PROGDISP"),
+        pose: prog.types.find("pose"),
+    };
     vm.resources_mut().io.kinds = signal_kinds(&prog);
     vm.resources_mut().io.configured = prog
         .datas

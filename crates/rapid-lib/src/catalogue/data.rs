@@ -125,8 +125,18 @@ pub(crate) const ENTRIES: &[Entry] = &[
     ),
     data("PERS loaddata load0 := [0.001, [0, 0, 0.001], [1, 0, 0, 0], 0, 0, 0];", "Empty payload."),
     // ---- Motion system data ------------------------------------------------------------------
-    read_only("VAR motsetdata C_MOTSET;", "Current motion settings (VelSet, AccSet, SingArea, ConfJ/L, ...)."),
-    read_only("VAR progdisp C_PROGDISP;", "Current program displacement and external axis offsets."),
+    // The values SYS_RESET sets at PP to Main (manual 1.7); rapid-vm's motion family keeps them
+    // in step with its state (builtins/motion/mod.rs, MotionState::default).
+    // uncertain: vel.max is vmax.v_tcp on RW6 (5000 here, as vmax); conf.ax1/ax4/ax6 = 30/45/90 and
+    // accmax/decelmax/worldaccmax = -1 are recalled from the manual's motsetdata page.
+    read_only(
+        "VAR motsetdata C_MOTSET := [[100, 5000], [100, 100, 100], [FALSE, FALSE, FALSE, FALSE], [TRUE, TRUE, 30, 45, 90], 100, TRUE, 100, FALSE, -1, FALSE, -1, 0, FALSE, -1, TRUE];",
+        "Current motion settings (VelSet, AccSet, SingArea, ConfJ/L, ...).",
+    ),
+    read_only(
+        "VAR progdisp C_PROGDISP := [[[0, 0, 0], [1, 0, 0, 0]], [0, 0, 0, 0, 0, 0]];",
+        "Current program displacement and external axis offsets.",
+    ),
     // uncertain: ROB_ID is read-only on the controller; declared as a plain VAR because mecunit cannot be assigned.
     data("VAR mecunit ROB_ID;", "Reference to the robot controlled by this task, if any."),
     // uncertain: mechanical units come from the configuration; ROB_1 is present in single-robot systems.

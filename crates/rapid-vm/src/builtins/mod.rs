@@ -20,6 +20,7 @@ mod io_wait;
 mod math;
 mod matrix;
 pub mod modules;
+pub mod motion;
 mod pendant;
 mod random;
 mod rawbytes;
@@ -116,6 +117,8 @@ pub struct Resources {
     pub cfgdata: cfgdata::CfgState,
     /// Which task this is and what the tasks share (sync points).
     pub tasking: tasking::TaskingState,
+    /// The motion settings (reset to their defaults at PP to Main).
+    pub motion: motion::MotionState,
 }
 
 /// What the tasks of one controller share: handed to the task that runs, so each
@@ -137,6 +140,7 @@ impl Resources {
         self.modules.close_all();
         self.interrupts.clear();
         self.tasking.end_waits();
+        self.motion.reset();
     }
 
     /// Swaps the controller's shared state with the task's (hand in, take back).
@@ -286,6 +290,7 @@ static FAMILIES: &[Entries] = &[
     spy::ENTRIES,
     cfgdata::ENTRIES,
     tasking::ENTRIES,
+    motion::ENTRIES,
 ];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =

@@ -1,0 +1,240 @@
+//! The motion family (manual §1.7 motion settings, §1.8 motion): the settings the
+//! controller keeps for the task's robot and the position functions that need no
+//! robot model. Instructions that move the robot or read its position are not here
+//! yet and stay refused when a program is loaded.
+//!
+//! The settings live in [`MotionState`]; the parts RAPID can read back are mirrored
+//! into the system data C_MOTSET (motsetdata) and C_PROGDISP (progdisp) each time an
+//! instruction changes them. At PP to Main both go back to their defaults: the state
+//! by [`MotionState::reset`], the system data by their catalogue initial values,
+//! which equal [`Settings::default`].
+
+mod fit;
+mod frame;
+mod position;
+mod settings;
+
+use std::rc::Rc;
+
+use nalgebra::Isometry3;
+use rapid_sema::types::TypeId;
+
+use super::{Ctx, Entries};
+use crate::value::Value;
+
+pub(super) static ENTRIES: Entries = &[
+    ("VelSet", settings::vel_set),
+    ("AccSet", settings::acc_set),
+    ("ConfJ", settings::conf_j),
+    ("ConfL", settings::conf_l),
+    ("SingArea", settings::sing_area),
+    ("CirPathMode", settings::cir_path_mode),
+    ("GripLoad", settings::grip_load),
+    ("PathResol", settings::path_resol),
+    ("CornerPathWarning", settings::corner_path_warning),
+    ("SpeedRefresh", settings::speed_refresh),
+    ("CSpeedOverride", settings::c_speed_override),
+    ("PDispSet", settings::pdisp_set),
+    ("PDispOff", settings::pdisp_off),
+    ("EOffsSet", settings::eoffs_set),
+    ("EOffsOff", settings::eoffs_off),
+    ("Offs", position::offs),
+    ("RelTool", position::rel_tool),
+    ("ORobT", position::orob_t),
+    ("MirPos", position::mir_pos),
+    ("Distance", position::distance),
+    ("DefFrame", fit::def_frame),
+    ("DefDFrame", fit::def_d_frame),
+    ("DefAccFrame", fit::def_acc_frame),
+];
+
+/// Where the motion family's system data and types are in the loaded program (set
+/// once at load; kept at PP to Main).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct MotionLinks {
+    /// The global holding C_MOTSET.
+    pub motset: Option<u32>,
+    /// The global holding C_PROGDISP.
+    pub progdisp: Option<u32>,
+    /// The record type `pose` (results of DefFrame and its kin).
+    pub pose: Option<TypeId>,
+}
+
+/// How the robot passes singular points (SingArea).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum SingMode {
+    #[default]
+    Off,
+    Wrist,
+    LockAxis4,
+}
+
+/// How the tool is reoriented on circular paths (CirPathMode); the number is the
+/// value C_MOTSET.cirpathreori shows.
+// uncertain: the numbering 0..5 in switch order is assumed, not published.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum CirPathMode {
+    #[default]
+    PathFrame = 0,
+    ObjectFrame = 1,
+    CirPointOri = 2,
+    Wrist45 = 3,
+    Wrist46 = 4,
+    Wrist56 = 5,
+}
+
+/// loaddata: mass kg, centre of gravity mm, axes of moment, inertia kgm².
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Load {
+    pub mass: f64,
+    pub cog: [f64; 3],
+    pub aom: [f64; 4],
+    pub inertia: [f64; 3],
+}
+
+/// `load0`: the payload the controller assumes when none is declared.
+pub const LOAD0: Load = Load { mass: 0.001, cog: [0.0, 0.0, 0.001], aom: [1.0, 0.0, 0.0, 0.0], inertia: [0.0; 3] };
+
+/// The motion settings of the task (the values SYS_RESET sets are the defaults).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Settings {
+    /// VelSet: speed override in percent and TCP speed limit in mm/s.
+    pub vel_override: f64,
+    pub vel_max: f64,
+    /// AccSet: acceleration, ramp and fine-point ramp in percent of normal.
+    pub acc: f64,
+    pub ramp: f64,
+    pub fine_point_ramp: f64,
+    pub sing: SingMode,
+    /// ConfJ and ConfL: configuration supervision on.
+    pub conf_j: bool,
+    pub conf_l: bool,
+    /// PathResol: path sample time in percent of the configured one.
+    pub path_resol: f64,
+    pub cir_path_mode: CirPathMode,
+    /// GripLoad: the payload in the gripper.
+    pub grip_load: Load,
+    /// CornerPathWarning: corner path failures are reported.
+    pub corner_path_warning: bool,
+    /// SpeedRefresh: the task's speed override in percent.
+    pub speed_refresh: f64,
+    /// PDispSet/PDispOff: the program displacement frame.
+    pub pdisp: Isometry3<f64>,
+    /// EOffsSet/EOffsOff: the external axis offsets.
+    pub eoffs: [f64; 6],
+}
+
+impl Default for Settings {
+    fn default() -> Settings {
+        Settings {
+            // uncertain: RW6 documents vmax.v_tcp (MaxRobSpeed) as the default Max;
+            // 5000 as the catalogue's vmax until robot models land.
+            vel_override: 100.0,
+            vel_max: 5000.0,
+            acc: 100.0,
+            ramp: 100.0,
+            fine_point_ramp: 100.0,
+            sing: SingMode::Off,
+            conf_j: true,
+            conf_l: true,
+            path_resol: 100.0,
+            cir_path_mode: CirPathMode::PathFrame,
+            grip_load: LOAD0,
+            corner_path_warning: true,
+            // uncertain: that SYS_RESET also sets the SpeedRefresh override back to 100.
+            speed_refresh: 100.0,
+            pdisp: Isometry3::identity(),
+            eoffs: [0.0; 6],
+        }
+    }
+}
+
+/// The motion family's part of the task's resources.
+#[derive(Debug, Clone)]
+pub struct MotionState {
+    pub links: MotionLinks,
+    pub settings: Settings,
+    /// The operator's speed override on the FlexPendant, in percent (not changed by
+    /// programs; kept at PP to Main).
+    pub operator_override: f64,
+}
+
+impl Default for MotionState {
+    fn default() -> MotionState {
+        MotionState { links: MotionLinks::default(), settings: Settings::default(), operator_override: 100.0 }
+    }
+}
+
+impl MotionState {
+    /// PP to Main, a new program, a restart: every setting back to its default
+    /// (manual 1.7, SYS_RESET).
+    pub fn reset(&mut self) {
+        self.settings = Settings::default();
+    }
+}
+
+/// Writes the readable settings into C_MOTSET and C_PROGDISP.
+fn mirror(ctx: &mut Ctx<'_>) {
+    let state = &ctx.resources.motion;
+    let s = &state.settings;
+    if let Some(global) = state.links.motset {
+        let leaves = [
+            (&[0, 0][..], num(s.vel_override)),
+            (&[0, 1], num(s.vel_max)),
+            (&[1, 0], num(s.acc)),
+            (&[1, 1], num(s.ramp)),
+            (&[1, 2], num(s.fine_point_ramp)),
+            (&[2, 0], Value::Bool(s.sing == SingMode::Wrist)),
+            (&[2, 1], Value::Bool(s.sing == SingMode::LockAxis4)),
+            (&[3, 0], Value::Bool(s.conf_j)),
+            (&[3, 1], Value::Bool(s.conf_l)),
+            (&[4], num(s.path_resol)),
+            (&[11], num(s.cir_path_mode as i32 as f64)),
+        ];
+        write_leaves(ctx.storage.globals.get_mut(global as usize), &leaves);
+    }
+    if let Some(global) = state.links.progdisp {
+        let t = s.pdisp.translation.vector;
+        let q = s.pdisp.rotation.into_inner();
+        let e = s.eoffs;
+        let leaves = [
+            (&[0, 0, 0][..], num(t.x)),
+            (&[0, 0, 1], num(t.y)),
+            (&[0, 0, 2], num(t.z)),
+            (&[0, 1, 0], num(q.w)),
+            (&[0, 1, 1], num(q.i)),
+            (&[0, 1, 2], num(q.j)),
+            (&[0, 1, 3], num(q.k)),
+            (&[1, 0], num(e[0])),
+            (&[1, 1], num(e[1])),
+            (&[1, 2], num(e[2])),
+            (&[1, 3], num(e[3])),
+            (&[1, 4], num(e[4])),
+            (&[1, 5], num(e[5])),
+        ];
+        write_leaves(ctx.storage.globals.get_mut(global as usize), &leaves);
+    }
+}
+
+fn num(x: f64) -> Value {
+    Value::Num(x as f32)
+}
+
+fn write_leaves(target: Option<&mut Value>, leaves: &[(&[usize], Value)]) {
+    let Some(target) = target else { return };
+    for (path, value) in leaves {
+        set_leaf(target, path, value.clone());
+    }
+}
+
+/// Replaces the component at `path` (field indices) of a record value; a path that
+/// does not fit the value changes nothing.
+fn set_leaf(target: &mut Value, path: &[usize], value: Value) {
+    let Some((&first, rest)) = path.split_first() else {
+        *target = value;
+        return;
+    };
+    let Value::Record(record) = target else { return };
+    let Some(field) = Rc::make_mut(record).fields.get_mut(first) else { return };
+    set_leaf(field, rest, value);
+}
