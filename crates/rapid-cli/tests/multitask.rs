@@ -334,3 +334,75 @@ fn the_three_task_example_runs_as_worked_out() {
         ]
     );
 }
+
+#[test]
+fn tasks_talk_through_rapid_message_queues() {
+    let dir = scratch("rmq");
+    // T_ROB1 (interrupt mode) takes string messages in a trap and answers with the
+    // string's length; T_PLC (synchronous mode) asks at 0.5 s with RMQSendWait, then
+    // sends a robjoint no trap is ordered for (discarded), then waits 0.3 s in vain.
+    let robot = "MODULE M1\n  VAR intnum msgint;\n  VAR string command := \"\";\n  PROC main()\n    \
+                 CONNECT msgint WITH on_message;\n    IRMQMessage command, msgint;\n    WaitTime 2;\n    \
+                 TPWrite \"robot got \" + command;\n    IDelete msgint;\n  ENDPROC\n  TRAP on_message\n    \
+                 VAR rmqmessage msg;\n    VAR rmqheader header;\n    VAR rmqslot sender;\n    VAR num userdef;\n    \
+                 RMQGetMessage msg;\n    RMQGetMsgHeader msg \\Header:=header \\SenderId:=sender \\UserDef:=userdef;\n    \
+                 RMQGetMsgData msg, command;\n    \
+                 TPWrite \"trap: \" + header.datatype + \" \" + command + \" from \" + RMQGetSlotName(sender) \\Num:=userdef;\n    \
+                 RMQSendMessage sender, StrLen(command);\n  ENDTRAP\nENDMODULE\n";
+    let plc = "MODULE M2\n  VAR rmqslot robot;\n  VAR rmqmessage answer;\n  VAR num len;\n  \
+               VAR robjoint rj := [1, 2, 3, 4, 5, 6];\n  PROC main()\n    RMQFindSlot robot, \"RMQ_T_ROB1\";\n    \
+               WaitTime 0.5;\n    RMQSendWait robot, \"pick\" \\UserDef:=7, answer, len \\Timeout:=1;\n    \
+               RMQGetMsgData answer, len;\n    TPWrite \"plc got answer \" \\Num:=len;\n    \
+               RMQSendMessage robot, rj;\n    RMQReadWait answer \\TimeOut:=0.3;\n    TPWrite \"plc got more\";\n  \
+               ERROR\n    IF ERRNO = ERR_RMQ_TIMEOUT THEN\n      TPWrite \"plc: no more messages\";\n      RETURN;\n    \
+               ENDIF\n  ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -RmqType \"Internal\"", module: robot },
+        TaskDef {
+            name: "T_PLC",
+            attrs: "-Type \"NORMAL\" -RmqType \"Internal\" -RmqMode \"Synchronous\"",
+            module: plc,
+        },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(
+        text(&out.stdout),
+        "trap: string pick from RMQ_T_PLC7\nplc got answer 4\nplc: no more messages\nrobot got pick\n"
+    );
+}
+
+#[test]
+fn message_queue_errors_are_the_controllers() {
+    let dir = scratch("rmq_errors");
+    // T_SINK has a synchronous queue of at most 2 messages of at most 10 bytes that
+    // nobody reads; T_ROB1 provokes each error once and handles it.
+    let main = "MODULE M1\n  VAR rmqslot sink;\n  VAR rmqslot unset;\n  VAR rmqmessage empty;\n  VAR num stage := 0;\n  \
+                PROC main()\n    stage := 1;\n    RMQFindSlot sink, \"RMQ_T_NOBODY\";\n    RMQFindSlot sink, \"rmq_t_sink\";\n    \
+                TPWrite RMQGetSlotName(sink);\n    stage := 2;\n    RMQSendMessage unset, 1;\n    stage := 3;\n    \
+                RMQSendMessage sink, \"more than ten bytes\";\n    stage := 4;\n    RMQSendMessage sink, 1;\n    \
+                RMQSendMessage sink, 2;\n    RMQSendMessage sink, 3;\n    stage := 5;\n    RMQGetMsgHeader empty;\n    \
+                stage := 6;\n    RMQGetMessage empty;\n    TPWrite \"done\";\n  ERROR\n    \
+                TPWrite \"step \" + NumToStr(stage, 0) + \": \" \\Num:=ERRNO;\n    TRYNEXT;\n  \
+                ENDPROC\nENDMODULE\n";
+    let sink = "MODULE M2\n  PROC main()\n    WaitTime 1;\n  ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: main },
+        TaskDef {
+            name: "T_SINK",
+            attrs: "-Type \"NORMAL\" -RmqType \"Internal\" -RmqMode \"Synchronous\" -RmqMaxMsgSize 10 -RmqMaxNoOfMsg 2",
+            module: sink,
+        },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    // ERR_RMQ_NAME 1118; the slot's name as configured; ERR_RMQ_INVALID 1115;
+    // ERR_RMQ_MSGSIZE 1117 (19 characters > 10 bytes); ERR_RMQ_FULL 1114 on the third
+    // message; ERR_RMQ_INVMSG 1116; T_ROB1 has no queue of its own: ERR_RMQ_NOMSG 1119.
+    assert_eq!(
+        text(&out.stdout),
+        "step 1: 1118\nRMQ_T_SINK\nstep 2: 1115\nstep 3: 1117\nstep 4: 1114\nstep 5: 1116\nstep 6: 1119\ndone\n"
+    );
+}

@@ -92,7 +92,13 @@ impl Controller {
     pub fn new(tasks: Vec<(TaskSpec, Loaded)>, io: Option<rapid_io::IoSystem>) -> Result<Controller, String> {
         let infos = tasks
             .iter()
-            .map(|(spec, _)| TaskInfo { name: spec.name.clone(), motion: spec.motion, active: true, executing: true })
+            .map(|(spec, _)| TaskInfo {
+                name: spec.name.clone(),
+                motion: spec.motion,
+                active: true,
+                executing: true,
+                rmq: spec.rmq,
+            })
             .collect();
         let mut shared = Shared { tasking: SharedTasking::new(infos), ..Shared::default() };
         shared.io.system = io;

@@ -61,6 +61,8 @@ pub struct TaskSpec {
     pub foreground: Option<String>,
     /// `-MotionTask`: the task that moves the robot.
     pub motion: bool,
+    /// Its RAPID Message Queue (`-RmqType` …).
+    pub rmq: rapid_config::sys::Rmq,
 }
 
 /// Why a task is no longer running.

@@ -106,6 +106,16 @@ errors! {
     CfgWriteFile = "ERR_CFG_WRITEFILE",
     // Multitasking (§1.20).
     WaitSyncTask = "ERR_WAITSYNCTASK",
+    // RAPID Message Queue (§1.10).
+    RmqDim = "ERR_RMQ_DIM",
+    RmqFull = "ERR_RMQ_FULL",
+    RmqInvalid = "ERR_RMQ_INVALID",
+    RmqInvalidMsg = "ERR_RMQ_INVMSG",
+    RmqMsgSize = "ERR_RMQ_MSGSIZE",
+    RmqName = "ERR_RMQ_NAME",
+    RmqNoMsg = "ERR_RMQ_NOMSG",
+    RmqTimeout = "ERR_RMQ_TIMEOUT",
+    RmqValue = "ERR_RMQ_VALUE",
     // Motion settings and position functions (§1.7, §1.8).
     SpeedRefreshLim = "ERR_SPEED_REFRESH_LIM",
     Frame = "ERR_FRAME",

@@ -146,6 +146,7 @@ pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Resul
     };
     vm.set_data_names(module_data.map(named).collect());
     vm.resources_mut().symsearch = builtins::symsearch::catalog::task_symbols(&prog, &modules);
+    vm.resources_mut().rmq.names = builtins::rmq::TypeNames::new(prog.types.named());
     vm.resources_mut().motion.links = builtins::motion::MotionLinks {
         motset: global_named("C_MOTSET"),
         progdisp: global_named("C_PROGDISP"),

@@ -106,6 +106,7 @@ fn task_specs(sys: &Sys) -> Result<Vec<TaskSpec>, String> {
                 trust,
                 foreground: task.foreground.clone(),
                 motion: task.motion_task,
+                rmq: task.rmq,
             })
         })
         .collect()

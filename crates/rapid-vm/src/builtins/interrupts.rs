@@ -32,6 +32,9 @@ pub enum Source {
     /// IError: an event-log entry of `domain` (0: any), number `id` (any when `None`)
     /// and `kind` (0 any, 1 state, 2 warning, 3 error).
     Error { domain: u32, id: Option<u32>, kind: u32 },
+    /// IRMQMessage: a message of this data type (name as declared, array sizes)
+    /// arrived in the task's queue.
+    Rmq { datatype: String, dims: [u32; 3] },
 }
 
 /// One connected interrupt.
@@ -122,7 +125,7 @@ pub(crate) fn next_due(ctx: &mut Ctx<'_>) -> Option<f64> {
 }
 
 /// The connected interrupt an intnum argument names; ERR_UNKINO when none.
-fn interrupt_number(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
+pub(super) fn interrupt_number(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
     let number = ctx.num(arg)?;
     let n = number as u32;
     if number.fract() != 0.0 || number < 1.0 || ctx.resources.interrupts.get_mut(n).is_none() {

@@ -24,6 +24,7 @@ pub mod motion;
 mod pendant;
 mod random;
 mod rawbytes;
+pub mod rmq;
 pub mod sockets;
 pub mod spy;
 mod strdig;
@@ -119,6 +120,8 @@ pub struct Resources {
     pub tasking: tasking::TaskingState,
     /// The motion settings (reset to their defaults at PP to Main).
     pub motion: motion::MotionState,
+    /// The task's side of the RAPID Message Queue.
+    pub rmq: rmq::RmqState,
 }
 
 /// What the tasks of one controller share: handed to the task that runs, so each
@@ -140,6 +143,7 @@ impl Resources {
         self.modules.close_all();
         self.interrupts.clear();
         self.tasking.end_waits();
+        self.rmq.end_waits();
         self.motion.reset();
     }
 
@@ -291,6 +295,7 @@ static FAMILIES: &[Entries] = &[
     cfgdata::ENTRIES,
     tasking::ENTRIES,
     motion::ENTRIES,
+    rmq::ENTRIES,
 ];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =

@@ -13,11 +13,14 @@ pub(super) fn wait_time(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
         return Err(ctx.error(Err::ArgValue, "WaitTime needs a time of 0 or more seconds"));
     }
     // While interrupts can fire, the wait ends at the next one due, so its trap runs in
-    // time (§1.11: traps run during waits), and then goes on for the rest.
-    let Some(due) = super::interrupts::next_due(ctx) else {
+    // time (§1.11: traps run during waits), and then goes on for the rest. An interrupt
+    // another task causes (a persistent, a message) has no time: the wait re-checks, so
+    // the controller resumes it when that task changes something.
+    let due = super::interrupts::next_due(ctx);
+    if due.is_none() && !ctx.resources.interrupts.active() {
         ctx.wait = Some(seconds);
         return Ok(None);
-    };
+    }
     let here = (ctx.chain.len(), ctx.chain.last().map_or(0, |f| f.position().1));
     let started = match ctx.resources.io.waiting {
         Some((depth, pc, at)) if (depth, pc) == here => at,
@@ -29,7 +32,7 @@ pub(super) fn wait_time(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
         return Ok(None);
     }
     ctx.resources.io.waiting = Some((here.0, here.1, started));
-    ctx.wait = Some((end.min(due) - ctx.time).max(1e-6));
+    ctx.wait = Some((due.map_or(end, |due| end.min(due)) - ctx.time).max(1e-6));
     ctx.stop = super::StopKind::Repeat;
     Ok(None)
 }

@@ -8,7 +8,11 @@
 //! are re-checked (`StopKind::Repeat`): the controller wakes a waiting task whenever
 //! another task changes the shared state, so nothing depends on a polling period.
 
+use std::collections::VecDeque;
+
 use rustc_hash::FxHashMap;
+
+use super::rmq::RmqMessage;
 
 use super::{present, Ctx, Entries, StopKind};
 use crate::errnames::Err;
@@ -31,6 +35,8 @@ pub struct TaskInfo {
     pub active: bool,
     /// Executing now (started, not stopped or ended): TaskIsExecuting.
     pub executing: bool,
+    /// Its RAPID Message Queue (none by default).
+    pub rmq: rapid_config::sys::Rmq,
 }
 
 /// A sync point of WaitSyncTask: which tasks have arrived in the current round.
@@ -46,6 +52,8 @@ struct SyncPoint {
 pub struct SharedTasking {
     pub tasks: Vec<TaskInfo>,
     sync: FxHashMap<String, SyncPoint>,
+    /// Each task's RAPID Message Queue, by task index.
+    pub queues: Vec<VecDeque<RmqMessage>>,
     /// Bumped on every change a waiting task could be waiting for.
     pub epoch: u64,
 }
@@ -53,15 +61,17 @@ pub struct SharedTasking {
 impl Default for SharedTasking {
     /// A system of one task, T_ROB1, moving the robot.
     fn default() -> Self {
-        let t_rob1 = TaskInfo { name: "T_ROB1".into(), motion: true, active: true, executing: true };
-        SharedTasking { tasks: vec![t_rob1], sync: FxHashMap::default(), epoch: 0 }
+        let rmq = rapid_config::sys::Rmq::default();
+        let t_rob1 = TaskInfo { name: "T_ROB1".into(), motion: true, active: true, executing: true, rmq };
+        SharedTasking::new(vec![t_rob1])
     }
 }
 
 impl SharedTasking {
     /// The system's tasks, in configuration order.
     pub fn new(tasks: Vec<TaskInfo>) -> SharedTasking {
-        SharedTasking { tasks, sync: FxHashMap::default(), epoch: 0 }
+        let queues = tasks.iter().map(|_| VecDeque::new()).collect();
+        SharedTasking { tasks, sync: FxHashMap::default(), queues, epoch: 0 }
     }
 
     fn task(&self, name: &str) -> Option<&TaskInfo> {
@@ -107,7 +117,19 @@ impl TaskingState {
 
     /// Its number: its place in the configuration, from 1.
     fn number(&self) -> usize {
-        self.shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(self.name())).map_or(1, |i| i + 1)
+        self.index() + 1
+    }
+
+    /// Its index in the task list.
+    pub(crate) fn index(&self) -> usize {
+        self.shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(self.name())).unwrap_or(0)
+    }
+
+    /// Messages in the task's queue no trap has been looked for yet (interrupt mode).
+    pub(crate) fn has_undispatched(&self) -> bool {
+        let me = self.index();
+        let synchronous = self.shared.tasks.get(me).is_some_and(|t| t.rmq.synchronous);
+        !synchronous && self.shared.queues.get(me).is_some_and(|q| q.iter().any(|m| !m.dispatched))
     }
 }
 

@@ -39,6 +39,7 @@ impl Vm {
             }
         }
         self.poll_error_interrupts();
+        self.dispatch_messages();
         let interrupts = &mut self.resources.interrupts;
         if interrupts.watches_signals() {
             self.resources.io.advance(now);
@@ -58,6 +59,41 @@ impl Vm {
             }
             interrupts.seen_changes = changes.len();
         }
+        for number in fired {
+            self.resources.interrupts.fire(number);
+        }
+    }
+
+    /// Interrupt mode of the RAPID Message Queue: each new message of the task's queue
+    /// fires the IRMQMessage interrupt ordered for its data type; one that none is
+    /// ordered for is discarded.
+    // uncertain: the controller also logs a warning for a discarded message; not yet.
+    pub(super) fn dispatch_messages(&mut self) {
+        if !self.resources.tasking.has_undispatched() {
+            return;
+        }
+        let me = self.resources.tasking.index();
+        let mut fired = Vec::new();
+        let table = &self.resources.interrupts.table;
+        let Some(queue) = self.resources.tasking.shared.queues.get_mut(me) else { return };
+        queue.retain_mut(|message| {
+            if message.dispatched {
+                return true;
+            }
+            message.dispatched = true;
+            let wanted = table.iter().enumerate().find(|(_, slot)| {
+                matches!(slot.as_ref().and_then(|i| i.source.as_ref()),
+                    Some(Source::Rmq { datatype, dims })
+                        if datatype.eq_ignore_ascii_case(&message.datatype) && *dims == message.dims)
+            });
+            match wanted {
+                Some((idx, _)) => {
+                    fired.push(idx as u32 + 1);
+                    true
+                }
+                None => false,
+            }
+        });
         for number in fired {
             self.resources.interrupts.fire(number);
         }

@@ -326,6 +326,8 @@ impl Vm {
     /// Executes at most `budget` instructions.
     pub fn run(&mut self, host: &mut dyn crate::host::Host, budget: u64) -> Exit {
         let mut remaining = budget;
+        // Messages another task sent while this one did not run.
+        self.dispatch_messages();
         while remaining > 0 {
             if self.frames.is_empty() {
                 return Exit::Done;

@@ -1,0 +1,112 @@
+//! The data of an RMQ message, free of any task's type numbering: each task's
+//! program numbers its types itself, so a record travels by its type's name and is
+//! rebuilt with the receiver's numbers.
+
+use rapid_sema::types::TypeId;
+use rustc_hash::FxHashMap;
+
+use crate::value::{Array, Record, Value};
+
+/// A value on its way between tasks.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Datum {
+    Num(f32),
+    Dnum(f64),
+    Bool(bool),
+    Str(String),
+    /// A record by its type's name (as declared).
+    Record(String, Vec<Datum>),
+    Array([u32; 3], Vec<Datum>),
+}
+
+/// The task's types: names as declared by number, numbers by lower-case name.
+#[derive(Debug, Default, Clone)]
+pub struct TypeNames {
+    pub by_id: FxHashMap<TypeId, String>,
+    pub by_name: FxHashMap<String, TypeId>,
+}
+
+impl TypeNames {
+    /// From every (id, name) of a program's type table.
+    pub fn new<'a>(types: impl Iterator<Item = (TypeId, &'a str)>) -> TypeNames {
+        let mut names = TypeNames::default();
+        for (id, name) in types {
+            names.by_id.insert(id, name.to_owned());
+            names.by_name.entry(name.to_ascii_lowercase()).or_insert(id);
+        }
+        names
+    }
+}
+
+/// The RAPID type name of a value (an array's is its elements'), as declared, and its
+/// array sizes (all 0 for a scalar). Aliases are not seen: a value declared `errnum`
+/// is a `num` here.
+// uncertain: the controller may send an alias type's own name in the message header.
+pub(super) fn type_of(value: &Value, names: &TypeNames) -> Option<(String, [u32; 3])> {
+    match value {
+        Value::Num(_) => Some(("num".into(), [0; 3])),
+        Value::Dnum(_) => Some(("dnum".into(), [0; 3])),
+        Value::Bool(_) => Some(("bool".into(), [0; 3])),
+        Value::Str(_) => Some(("string".into(), [0; 3])),
+        Value::Record(record) => Some((names.by_id.get(&record.ty)?.clone(), [0; 3])),
+        Value::Array(array) => {
+            let (name, _) = type_of(array.elems.first()?, names)?;
+            Some((name, array.dims))
+        }
+        _ => None,
+    }
+}
+
+/// The datum of a value; `None` for data that cannot travel (non-value data).
+pub(super) fn to_datum(value: &Value, names: &TypeNames) -> Option<Datum> {
+    Some(match value {
+        Value::Num(n) => Datum::Num(*n),
+        Value::Dnum(d) => Datum::Dnum(*d),
+        Value::Bool(b) => Datum::Bool(*b),
+        Value::Str(s) => Datum::Str(s.to_string()),
+        Value::Record(record) => {
+            let fields = record.fields.iter().map(|f| to_datum(f, names)).collect::<Option<Vec<_>>>()?;
+            Datum::Record(names.by_id.get(&record.ty)?.clone(), fields)
+        }
+        Value::Array(array) => {
+            let elems = array.elems.iter().map(|e| to_datum(e, names)).collect::<Option<Vec<_>>>()?;
+            Datum::Array(array.dims, elems)
+        }
+        _ => return None,
+    })
+}
+
+/// The value of a datum in the receiving task; `None` when the task has no type of a
+/// record's name.
+pub(super) fn to_value(datum: &Datum, names: &TypeNames) -> Option<Value> {
+    Some(match datum {
+        Datum::Num(n) => Value::Num(*n),
+        Datum::Dnum(d) => Value::Dnum(*d),
+        Datum::Bool(b) => Value::Bool(*b),
+        Datum::Str(s) => Value::Str(s.as_str().into()),
+        Datum::Record(name, fields) => {
+            let ty = *names.by_name.get(&name.to_ascii_lowercase())?;
+            let fields = fields.iter().map(|f| to_value(f, names)).collect::<Option<Vec<_>>>()?;
+            Value::Record(std::rc::Rc::new(Record { ty, fields }))
+        }
+        Datum::Array(dims, elems) => {
+            let elems = elems.iter().map(|e| to_value(e, names)).collect::<Option<Vec<_>>>()?;
+            Value::Array(Box::new(Array { dims: *dims, elems }))
+        }
+    })
+}
+
+/// The bytes the datum takes in a message: 4 per num, 8 per dnum, 1 per bool, a
+/// string's characters.
+// uncertain: the controller's message encoding is not public; this is what RmqMaxMsgSize
+// is compared with.
+pub(super) fn size(datum: &Datum) -> usize {
+    match datum {
+        Datum::Num(_) => 4,
+        Datum::Dnum(_) => 8,
+        Datum::Bool(_) => 1,
+        Datum::Str(s) => s.chars().count(),
+        Datum::Record(_, fields) => fields.iter().map(size).sum(),
+        Datum::Array(_, elems) => elems.iter().map(size).sum(),
+    }
+}
