@@ -72,8 +72,17 @@ pub fn inverse_conf(
         return Err(MotionError::OutOfReach);
     }
     let cfx = usize::try_from(conf[3]).ok().filter(|&c| c < 8).ok_or(MotionError::Configuration)?;
-    let solution = branches[cfx].ok_or(MotionError::Configuration)?;
+    let mut solution = branches[cfx].ok_or(MotionError::Configuration)?;
     let limits = kin.limits_ref();
+    if solution[4] == 0.0 {
+        // The solver returns q5 exactly 0 only at the wrist singularity, where axes 4
+        // and 6 can share their sum in any way: share it so both land in the asked
+        // quadrants when that is possible.
+        if let Some((q4, q6)) = split_wrist(solution[3] + solution[5], conf[1], conf[2], seed[3], limits) {
+            solution[3] = q4;
+            solution[5] = q6;
+        }
+    }
     let mut res = [0.0; 6];
     for axis in 0..6 {
         let options = turns_of(solution[axis], limits[axis]);
@@ -95,6 +104,35 @@ pub fn inverse_conf(
 /// (the same as `Kinematics::inverse_near`).
 pub fn inverse_nearest(kin: &Opw, flange: &Pose, seed: &Joints) -> Result<Joints, MotionError> {
     nearest_within_limits(&kin.branches(flange, Some(seed)), seed, kin.limits_ref())
+}
+
+/// At q5 = 0: q4 in quadrant `cf4` and q6 = sum − q4 (plus turns) in quadrant `cf6`,
+/// both within limits, with q4 as close to the seed as that allows.
+fn split_wrist(sum: f64, cf4: i32, cf6: i32, seed4: f64, limits: &[(f64, f64); 6]) -> Option<(f64, f64)> {
+    let (lo4, hi4) = quadrant_within(cf4, limits[3])?;
+    let (lo6, hi6) = quadrant_within(cf6, limits[5])?;
+    let mut best: Option<(f64, f64, f64)> = None;
+    for turn in -3..=3 {
+        let total = sum + 360.0 * f64::from(turn);
+        // q6 = total − q4 within [lo6, hi6] ⇔ q4 within [total − hi6, total − lo6].
+        let (lo, hi) = (lo4.max(total - hi6), hi4.min(total - lo6));
+        if lo > hi {
+            continue;
+        }
+        let q4 = seed4.clamp(lo, hi);
+        if best.is_none_or(|(d, _, _)| (q4 - seed4).abs() < d) {
+            best = Some(((q4 - seed4).abs(), q4, total - q4));
+        }
+    }
+    best.map(|(_, q4, q6)| (q4, q6))
+}
+
+/// The part of quadrant `cf` within the limits, as a closed range just short of the
+/// quadrant's upper end (which belongs to the next quadrant).
+fn quadrant_within(cf: i32, (lo, hi): (f64, f64)) -> Option<(f64, f64)> {
+    let start = 90.0 * f64::from(cf);
+    let (a, b) = (start.max(lo), (start + 90.0 - 1e-9).min(hi));
+    (a <= b).then_some((a, b))
 }
 
 /// The turn in the wanted quadrant (or, compliant, the nearest quadrant within one),

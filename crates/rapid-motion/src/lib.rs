@@ -16,7 +16,7 @@ pub use confdata::{confdata_of, inverse_conf, inverse_nearest, ConfData, ConfMat
 pub use frames::{offs, pdisp_from, rel_tool, FrameChain};
 pub use kinematics::{Opw, OpwParams};
 pub use pose::{Joints, Pose};
-pub use robots::{default_model, find_model, RobotModel};
+pub use robots::{default_model, find_model, models, RobotModel};
 
 /// Why a motion computation has no answer. Each maps to the controller's error when
 /// the VM reports it (ERR_ROBLIMIT and friends).
