@@ -3,7 +3,7 @@
 //! a programmed configuration asks for (ConfJ\On) or the one closest to the current
 //! joints (ConfJ\Off).
 
-use crate::kinematics::{nearest_within_limits, Opw, OpwParams};
+use crate::kinematics::{finite_seed, nearest_within_limits, Opw, OpwParams};
 use crate::kinematics::{turns_of, Turns};
 use crate::{Joints, MotionError, Pose};
 
@@ -67,6 +67,7 @@ pub fn inverse_conf(
     seed: &Joints,
     mode: ConfMatch,
 ) -> Result<Joints, MotionError> {
+    let seed = &finite_seed(seed);
     let branches = kin.branches(flange, Some(seed));
     if branches.iter().all(Option::is_none) {
         return Err(MotionError::OutOfReach);
@@ -103,7 +104,8 @@ pub fn inverse_conf(
 /// ConfJ\Off: the solution closest to `seed` over every configuration and turn
 /// (the same as `Kinematics::inverse_near`).
 pub fn inverse_nearest(kin: &Opw, flange: &Pose, seed: &Joints) -> Result<Joints, MotionError> {
-    nearest_within_limits(&kin.branches(flange, Some(seed)), seed, kin.limits_ref())
+    let seed = finite_seed(seed);
+    nearest_within_limits(&kin.branches(flange, Some(&seed)), &seed, kin.limits_ref())
 }
 
 /// At q5 = 0: q4 in quadrant `cf4` and q6 = sum − q4 (plus turns) in quadrant `cf6`,

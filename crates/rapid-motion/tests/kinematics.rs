@@ -277,3 +277,67 @@ fn configuration_that_cannot_reach() {
         Err(MotionError::Configuration)
     );
 }
+
+#[test]
+fn stretched_arm_has_one_elbow_and_no_nan() {
+    let kin = model("IRB 120");
+    // q3 + φ = −90° with φ = atan2(−70, 302): the upper arm in line with the lower arm.
+    let q3 = -90.0 - (-70.0f64).atan2(302.0).to_degrees();
+    let joints = [0.0, 20.0, q3, 0.0, 40.0, 0.0];
+    let flange = kin.forward(&joints);
+    let branches = kin.branches(&flange, None);
+    for joints in branches.iter().flatten() {
+        assert!(joints.iter().all(|q| q.is_finite()));
+        assert!((kin.forward(joints).translation.vector - flange.translation.vector).norm() < 1e-5);
+    }
+    // Both elbows coincide; near the stretched arm the angle is only good to about
+    // √ε of the elbow cosine, hence the looser bound.
+    let got = kin.inverse_near(&flange, &joints).unwrap();
+    assert_joints(&got, &joints, 1e-4);
+}
+
+#[test]
+fn seeds_that_are_not_numbers() {
+    let kin = model("IRB 120");
+    let joints = [0.0, 10.0, 20.0, 30.0, 0.0, 40.0];
+    let flange = kin.forward(&joints);
+    let seed = [f64::NAN; 6];
+    let got = kin.inverse_near(&flange, &seed).unwrap();
+    assert!(got.iter().all(|q| q.is_finite()) && same_pose(&kin.forward(&got), &flange));
+    let got = inverse_conf(&kin, &flange, &[0, 0, 0, 0], &seed, ConfMatch::Exact).unwrap();
+    assert_joints(&got, &[0.0, 10.0, 20.0, 0.0, 0.0, 70.0], 1e-9);
+}
+
+#[test]
+fn calc_joint_t_and_calc_rob_t_through_tool_wobj_and_displacement() {
+    use rapid_motion::FrameChain;
+    let kin = model("IRB 1600-10/1.45");
+    let chain = FrameChain {
+        base: pose([0.0, 0.0, 200.0], [1.0, 0.0, 0.0, 0.0]),
+        tframe: pose([10.0, 0.0, 150.0], [0.965926, 0.0, 0.258819, 0.0]),
+        uframe: pose([900.0, -300.0, 100.0], [0.707107, 0.0, 0.0, 0.707107]),
+        oframe: pose([50.0, 50.0, 0.0], [1.0, 0.0, 0.0, 0.0]),
+        pdisp: pose([5.0, -5.0, 10.0], [1.0, 0.0, 0.0, 0.0]),
+        stationary_tool: false,
+    };
+    let joints = [-20.0, 30.0, 10.0, 40.0, 50.0, -60.0];
+    // CalcRobT, then CalcJointT of its result, gives the joints back.
+    let (target, conf) = chain.robtarget_of(&kin, &joints);
+    let back = chain.joints_for(&kin, &target, &conf, &[0.0; 6], ConfMatch::Exact).unwrap();
+    assert_joints(&back, &joints, 1e-6);
+    // The TCP in the world is where the object frame puts the displaced target.
+    let world = chain.tcp_in_world(&kin.forward(&joints));
+    let via_object = chain.uframe * chain.oframe * chain.pdisp * target;
+    assert!(same_pose(&world, &via_object));
+
+    // The same with the robot holding the work object past a stationary tool.
+    let held = FrameChain {
+        tframe: pose([1200.0, 300.0, 600.0], [0.0, 0.0, 1.0, 0.0]),
+        uframe: pose([0.0, 0.0, 120.0], [1.0, 0.0, 0.0, 0.0]),
+        stationary_tool: true,
+        ..chain
+    };
+    let (target, conf) = held.robtarget_of(&kin, &joints);
+    let back = held.joints_for(&kin, &target, &conf, &[0.0; 6], ConfMatch::Exact).unwrap();
+    assert_joints(&back, &joints, 1e-6);
+}

@@ -64,6 +64,8 @@ impl Opw {
     /// with angles in (−180°, 180°] and joint limits not applied. Where an axis is free
     /// (wrist or shoulder singularity) it keeps the seed's value, or 0 without a seed.
     pub fn branches(&self, flange: &Pose, seed: Option<&Joints>) -> Branches {
+        // A seed that is not a number cannot guide a free axis; free axes then take 0.
+        let seed = seed.filter(|s| s.iter().all(|q| q.is_finite()));
         solve::branches(&self.params, flange, seed)
     }
 
@@ -120,7 +122,14 @@ impl Kinematics for Opw {
     /// singularity keep the seed's value. `OutOfReach` when the pose has no solution at
     /// all, `JointLimit` when every solution leaves the limits.
     fn inverse_near(&self, flange: &Pose, seed: &Joints) -> Result<Joints, MotionError> {
-        let branches = self.branches(flange, Some(seed));
-        nearest_within_limits(&branches, seed, &self.limits)
+        let seed = finite_seed(seed);
+        let branches = self.branches(flange, Some(&seed));
+        nearest_within_limits(&branches, &seed, &self.limits)
     }
+}
+
+/// The seed with any value that is not a number read as 0°, so comparisons with it
+/// stay meaningful.
+pub(crate) fn finite_seed(seed: &Joints) -> Joints {
+    seed.map(|q| if q.is_finite() { q } else { 0.0 })
 }
