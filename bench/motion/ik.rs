@@ -33,7 +33,9 @@ fn main() {
     let recovered = joints
         .iter()
         .zip(&poses)
-        .filter(|(j, p)| kin.inverse_near(p, j).is_ok_and(|s| s.iter().zip(j.iter()).all(|(a, b)| (a - b).abs() < 1e-6)))
+        .filter(|(j, p)| {
+            kin.inverse_near(p, j).is_ok_and(|s| s.iter().zip(j.iter()).all(|(a, b)| (a - b).abs() < 1e-6))
+        })
         .count();
     println!("model {}, {SAMPLES} random joint sets within limits, median of {runs} runs", model.name);
     println!("round trip: {recovered} of {SAMPLES} recovered within 1e-6 deg");

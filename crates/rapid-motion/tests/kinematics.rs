@@ -315,7 +315,7 @@ fn calc_joint_t_and_calc_rob_t_through_tool_wobj_and_displacement() {
     let chain = FrameChain {
         base: pose([0.0, 0.0, 200.0], [1.0, 0.0, 0.0, 0.0]),
         tframe: pose([10.0, 0.0, 150.0], [0.965926, 0.0, 0.258819, 0.0]),
-        uframe: pose([900.0, -300.0, 100.0], [0.707107, 0.0, 0.0, 0.707107]),
+        uframe: pose([900.0, -300.0, 100.0], [0.5, 0.0, 0.0, 0.5]),
         oframe: pose([50.0, 50.0, 0.0], [1.0, 0.0, 0.0, 0.0]),
         pdisp: pose([5.0, -5.0, 10.0], [1.0, 0.0, 0.0, 0.0]),
         stationary_tool: false,
