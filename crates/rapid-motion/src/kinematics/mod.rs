@@ -133,3 +133,44 @@ impl Kinematics for Opw {
 pub(crate) fn finite_seed(seed: &Joints) -> Joints {
     seed.map(|q| if q.is_finite() { q } else { 0.0 })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An arm with every OPW length non-zero, the lateral offset `b` included (no
+    /// built-in ABB model has one).
+    fn offset_arm() -> Opw {
+        let params = OpwParams { a1: 120.0, a2: -60.0, b: 40.0, c1: 400.0, c2: 500.0, c3: 450.0, c4: 90.0 };
+        let limits =
+            [(-180.0, 180.0), (-120.0, 120.0), (-180.0, 120.0), (-400.0, 400.0), (-125.0, 125.0), (-400.0, 400.0)];
+        Opw::new(params, limits, [100.0; 6])
+    }
+
+    #[test]
+    fn zero_position_of_an_offset_arm() {
+        // x = a1 + c3 + c4, y = b, z = c1 + c2 − a2; tool0 turned 90° about y.
+        let flange = offset_arm().forward(&[0.0; 6]);
+        assert!((flange.translation.vector - Vector3::new(660.0, 40.0, 960.0)).norm() < 1e-9);
+    }
+
+    #[test]
+    fn offset_arm_round_trips() {
+        let kin = offset_arm();
+        let sets = [
+            [10.0, 20.0, -30.0, 40.0, 50.0, 60.0],
+            [-150.0, -60.0, 80.0, -200.0, -20.0, 300.0],
+            [95.0, 100.0, -170.0, 5.0, 110.0, -5.0],
+        ];
+        for joints in sets {
+            let flange = kin.forward(&joints);
+            let got = kin.inverse_near(&flange, &joints).unwrap();
+            assert!(got.iter().zip(&joints).all(|(a, b)| (a - b).abs() < 1e-6), "{got:?} for {joints:?}");
+            for solution in kin.branches(&flange, None).iter().flatten() {
+                let back = kin.forward(solution);
+                assert!((back.translation.vector - flange.translation.vector).norm() < 1e-6);
+                assert!(back.rotation.angle_to(&flange.rotation) < 1e-9);
+            }
+        }
+    }
+}
