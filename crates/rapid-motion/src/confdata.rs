@@ -73,6 +73,9 @@ pub fn inverse_conf(
         return Err(MotionError::OutOfReach);
     }
     let cfx = usize::try_from(conf[3]).ok().filter(|&c| c < 8).ok_or(MotionError::Configuration)?;
+    // uncertain: when the asked configuration reaches the pose only outside the limits
+    // we report the limit (ERR_ROBLIMIT's joint-out-of-range flavour), not the
+    // configuration, even if another configuration would be within limits.
     let mut solution = branches[cfx].ok_or(MotionError::Configuration)?;
     let limits = kin.limits_ref();
     if solution[4] == 0.0 {
