@@ -6,6 +6,21 @@
 //! These are the computations behind MoveJ/MoveL targets, CalcJointT, CalcRobT,
 //! CRobT and CPos; the VM turns its tooldata/wobjdata/progdisp values into a
 //! [`FrameChain`] and its robtargets into poses.
+//!
+//! ```
+//! use rapid_motion::pose::{pose, trans};
+//! use rapid_motion::{find_model, ConfMatch, FrameChain, Kinematics};
+//!
+//! let kin = find_model("ROB1_120_0.58").unwrap().kinematics();
+//! let chain = FrameChain { tframe: pose([0.0, 0.0, 100.0], [1.0, 0.0, 0.0, 0.0]), ..FrameChain::default() };
+//! let target = pose([300.0, 50.0, 300.0], [0.0, 0.0, 1.0, 0.0]); // robtarget trans, rot
+//! let current = [0.0; 6]; // CJointT
+//! let goal = chain.joints_for(&kin, &target, &[0, 0, 0, 0], &current, ConfMatch::Compliant).unwrap();
+//! let (back, conf) = chain.robtarget_of(&kin, &goal); // CalcRobT
+//! assert!(trans(&back).iter().zip([300.0, 50.0, 300.0]).all(|(a, b)| (a - b).abs() < 1e-6));
+//! assert_eq!(conf[3], 0);
+//! let _nearest = kin.inverse_near(&chain.flange_goal(&target), &current); // ConfJ\Off
+//! ```
 
 use nalgebra::{Translation3, UnitQuaternion, Vector3};
 
