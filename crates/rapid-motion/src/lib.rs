@@ -6,9 +6,17 @@
 //! with the scalar first (`orient = [q1, q2, q3, q4]`). Conversions to whatever a
 //! solver uses internally happen inside the module that calls it.
 
+pub mod confdata;
+pub mod frames;
+pub mod kinematics;
 pub mod pose;
+pub mod robots;
 
+pub use confdata::{confdata_of, inverse_conf, inverse_nearest, ConfData, ConfMatch};
+pub use frames::{offs, pdisp_from, rel_tool, FrameChain};
+pub use kinematics::{Opw, OpwParams};
 pub use pose::{Joints, Pose};
+pub use robots::{default_model, find_model, models, RobotModel};
 
 /// Why a motion computation has no answer. Each maps to the controller's error when
 /// the VM reports it (ERR_ROBLIMIT and friends).

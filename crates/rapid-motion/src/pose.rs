@@ -17,6 +17,15 @@ pub fn pose(trans: [f64; 3], orient: [f64; 4]) -> Pose {
     Isometry3::from_parts(Translation3::new(trans[0], trans[1], trans[2]), rotation)
 }
 
+/// The pose of `[[x, y, z], [q1, q2, q3, q4]]`, or `None` when a component is not a
+/// number or the quaternion is (nearly) zero and so names no rotation; the VM reports
+/// that as the controller's unnormalised-orientation error.
+pub fn checked_pose(trans: [f64; 3], orient: [f64; 4]) -> Option<Pose> {
+    let finite = trans.iter().chain(&orient).all(|v| v.is_finite());
+    let norm = orient.iter().map(|q| q * q).sum::<f64>().sqrt();
+    (finite && norm > 1e-9).then(|| pose(trans, orient))
+}
+
 /// The translation of a pose, mm.
 pub fn trans(pose: &Pose) -> [f64; 3] {
     let v: Vector3<f64> = pose.translation.vector;
@@ -42,5 +51,15 @@ mod tests {
         let o = orient(&p);
         assert!((o[0] - 0.5f64.sqrt()).abs() < 1e-6 && (o[2] - 0.5f64.sqrt()).abs() < 1e-6);
         assert_eq!(trans(&p), [374.0, 0.0, 630.0]);
+    }
+
+    #[test]
+    fn checked_pose_refuses_what_names_no_rotation() {
+        assert!(checked_pose([0.0; 3], [0.0; 4]).is_none());
+        assert!(checked_pose([f64::NAN, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0]).is_none());
+        assert!(checked_pose([0.0; 3], [f64::INFINITY, 0.0, 0.0, 0.0]).is_none());
+        // Not normalised is normalised, as NOrient would.
+        let p = checked_pose([1.0, 2.0, 3.0], [2.0, 0.0, 0.0, 0.0]).unwrap();
+        assert_eq!(orient(&p), [1.0, 0.0, 0.0, 0.0]);
     }
 }

@@ -1,0 +1,176 @@
+//! Forward and inverse kinematics of 6-axis arms with an ortho-parallel base and a
+//! spherical wrist (OPW: Brandstötter, Angerer, Hofbaur 2014), in ABB's joint
+//! convention: zero has the lower arm upright and the upper arm horizontal, and the
+//! flange frame is ABB's `tool0`.
+//!
+//! The solver is our own closed form (`solve.rs`); `turns.rs` maps its principal
+//! angles onto the multi-turn ranges of axes such as ±400° on axis 6.
+
+mod solve;
+mod turns;
+
+use nalgebra::{Translation3, UnitQuaternion, Vector3};
+
+use crate::{Joints, Kinematics, MotionError, Pose};
+
+pub use solve::Branches;
+pub use turns::{nearest_within_limits, LIMIT_TOLERANCE};
+
+pub(crate) use turns::{turns as turns_of, Turns};
+
+/// OPW link lengths in mm (motion.md §2.1): `a1` shoulder offset, `a2` elbow offset
+/// (negative when the forearm axis lies above axis 3), `b` lateral offset, `c1` height
+/// of axis 2, `c2` lower arm, `c3` upper arm to the wrist centre, `c4` wrist centre to
+/// flange.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OpwParams {
+    pub a1: f64,
+    pub a2: f64,
+    pub b: f64,
+    pub c1: f64,
+    pub c2: f64,
+    pub c3: f64,
+    pub c4: f64,
+}
+
+/// An OPW arm with its joint limits and axis speeds: the kinematics the VM asks.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Opw {
+    params: OpwParams,
+    limits: [(f64, f64); 6],
+    speeds: [f64; 6],
+}
+
+impl Opw {
+    pub fn new(params: OpwParams, limits: [(f64, f64); 6], speeds: [f64; 6]) -> Opw {
+        Opw { params, limits, speeds }
+    }
+
+    /// The same arm with other joint limits (a backup's MOC.cfg `ARM` bounds, in degrees).
+    pub fn with_limits(self, limits: [(f64, f64); 6]) -> Opw {
+        Opw { limits, ..self }
+    }
+
+    pub fn params(&self) -> &OpwParams {
+        &self.params
+    }
+
+    pub(crate) fn limits_ref(&self) -> &[(f64, f64); 6] {
+        &self.limits
+    }
+
+    /// The eight arm/wrist solutions for a flange pose, indexed by cfx (bit 2: wrist
+    /// centre behind axis 1, bit 1: behind the lower arm, bit 0: axis 5 negative), each
+    /// with angles in (−180°, 180°] and joint limits not applied. Where an axis is free
+    /// (wrist or shoulder singularity) it keeps the seed's value, or 0 without a seed.
+    pub fn branches(&self, flange: &Pose, seed: Option<&Joints>) -> Branches {
+        // A seed that is not a number cannot guide a free axis; free axes then take 0.
+        let seed = seed.filter(|s| s.iter().all(|q| q.is_finite()));
+        solve::branches(&self.params, flange, seed)
+    }
+
+    /// The 1-based axis of the first joint outside its limits, if any.
+    pub fn limit_violation(&self, joints: &Joints) -> Option<usize> {
+        joints.iter().zip(&self.limits).position(|(q, &(lo, hi))| !turns::within(*q, lo, hi)).map(|i| i + 1)
+    }
+
+    /// The wrist centre (axis 4/5/6 crossing) in the base frame for these joints, mm.
+    pub fn wrist_centre(&self, joints: &Joints) -> Vector3<f64> {
+        let p = &self.params;
+        let [q1, q2, q3, ..] = joints.map(f64::to_radians);
+        let t = q2 + q3;
+        let x1 = p.a1 + p.c2 * q2.sin() + p.c3 * t.cos() - p.a2 * t.sin();
+        let z1 = p.c1 + p.c2 * q2.cos() - p.c3 * t.sin() - p.a2 * t.cos();
+        let (s1, c1) = q1.sin_cos();
+        Vector3::new(x1 * c1 - p.b * s1, x1 * s1 + p.b * c1, z1)
+    }
+}
+
+impl Kinematics for Opw {
+    fn forward(&self, joints: &Joints) -> Pose {
+        let [q1, q2, q3, q4, q5, q6] = joints.map(f64::to_radians);
+        let y = Vector3::y_axis();
+        let z = Vector3::z_axis();
+        // The upper arm points along the wrist's z when q2 + q3 = −90°, hence the quarter turn.
+        let rotation = UnitQuaternion::from_axis_angle(&z, q1)
+            * UnitQuaternion::from_axis_angle(&y, q2 + q3 + std::f64::consts::FRAC_PI_2)
+            * UnitQuaternion::from_axis_angle(&z, q4)
+            * UnitQuaternion::from_axis_angle(&y, q5)
+            * UnitQuaternion::from_axis_angle(&z, q6);
+        let flange = self.wrist_centre(joints) + rotation * Vector3::new(0.0, 0.0, self.params.c4);
+        Pose::from_parts(Translation3::from(flange), rotation)
+    }
+
+    fn inverse(&self, flange: &Pose) -> Vec<Joints> {
+        let mut res = Vec::new();
+        for solution in self.branches(flange, None).iter().flatten() {
+            turns::push_all_within(&mut res, solution, &self.limits);
+        }
+        res
+    }
+
+    fn limits(&self) -> [(f64, f64); 6] {
+        self.limits
+    }
+
+    fn max_speeds(&self) -> [f64; 6] {
+        self.speeds
+    }
+
+    /// The solution whose largest single-axis move from `seed` is smallest, choosing
+    /// among the turns of axes with ranges beyond ±180° as well; free axes at a
+    /// singularity keep the seed's value. `OutOfReach` when the pose has no solution at
+    /// all, `JointLimit` when every solution leaves the limits.
+    fn inverse_near(&self, flange: &Pose, seed: &Joints) -> Result<Joints, MotionError> {
+        let seed = finite_seed(seed);
+        let branches = self.branches(flange, Some(&seed));
+        nearest_within_limits(&branches, &seed, &self.limits)
+    }
+}
+
+/// The seed with any value that is not a number read as 0°, so comparisons with it
+/// stay meaningful.
+pub(crate) fn finite_seed(seed: &Joints) -> Joints {
+    seed.map(|q| if q.is_finite() { q } else { 0.0 })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An arm with every OPW length non-zero, the lateral offset `b` included (no
+    /// built-in ABB model has one).
+    fn offset_arm() -> Opw {
+        let params = OpwParams { a1: 120.0, a2: -60.0, b: 40.0, c1: 400.0, c2: 500.0, c3: 450.0, c4: 90.0 };
+        let limits =
+            [(-180.0, 180.0), (-120.0, 120.0), (-180.0, 120.0), (-400.0, 400.0), (-125.0, 125.0), (-400.0, 400.0)];
+        Opw::new(params, limits, [100.0; 6])
+    }
+
+    #[test]
+    fn zero_position_of_an_offset_arm() {
+        // x = a1 + c3 + c4, y = b, z = c1 + c2 − a2; tool0 turned 90° about y.
+        let flange = offset_arm().forward(&[0.0; 6]);
+        assert!((flange.translation.vector - Vector3::new(660.0, 40.0, 960.0)).norm() < 1e-9);
+    }
+
+    #[test]
+    fn offset_arm_round_trips() {
+        let kin = offset_arm();
+        let sets = [
+            [10.0, 20.0, -30.0, 40.0, 50.0, 60.0],
+            [-150.0, -60.0, 80.0, -200.0, -20.0, 300.0],
+            [95.0, 100.0, -170.0, 5.0, 110.0, -5.0],
+        ];
+        for joints in sets {
+            let flange = kin.forward(&joints);
+            let got = kin.inverse_near(&flange, &joints).unwrap();
+            assert!(got.iter().zip(&joints).all(|(a, b)| (a - b).abs() < 1e-6), "{got:?} for {joints:?}");
+            for solution in kin.branches(&flange, None).iter().flatten() {
+                let back = kin.forward(solution);
+                assert!((back.translation.vector - flange.translation.vector).norm() < 1e-6);
+                assert!(back.rotation.angle_to(&flange.rotation) < 1e-9);
+            }
+        }
+    }
+}

@@ -1,0 +1,279 @@
+//! The built-in ABB robot models (OPW link lengths, joint limits, axis speeds) and the
+//! lookup of a model by the names users and backups give it.
+//!
+//! Geometry, limits and speeds come from `shared/reference/motion.md` §2.2 and §2.3
+//! (rs-opw-kinematics presets and the ROS-Industrial URDFs, cross-checked there).
+//! Lengths are stored in millimetres.
+
+use crate::kinematics::{Opw, OpwParams};
+
+/// One robot variant: its name as ABB writes it, what its name may be written as,
+/// its arm geometry and its axis data.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RobotModel {
+    /// ABB's product name, e.g. `IRB 120-3/0.58`.
+    pub name: &'static str,
+    /// Family names this variant answers to (`120`, `140t`), lower case.
+    families: &'static [&'static str],
+    /// Handling capacities in kg that name this geometry (`IRB 4600-60/2.05` → 60).
+    payloads: &'static [u32],
+    /// Reaches in metres that name this geometry (`IRB 4600-60/2.05` → 2.05).
+    reaches: &'static [f64],
+    /// OPW link lengths, mm.
+    pub opw: OpwParams,
+    /// Lower and upper limit of each axis, degrees.
+    pub limits: [(f64, f64); 6],
+    /// Maximum speed of each axis, degrees per second.
+    pub max_speeds: [f64; 6],
+}
+
+impl RobotModel {
+    /// The kinematics of this model, with its nominal joint limits.
+    pub fn kinematics(&self) -> Opw {
+        Opw::new(self.opw, self.limits, self.max_speeds)
+    }
+}
+
+/// The model a controller without other information runs: IRB 120-3/0.58.
+pub fn default_model() -> &'static RobotModel {
+    &MODELS[0]
+}
+
+/// Every built-in model, the default first, then by family.
+pub fn models() -> &'static [RobotModel] {
+    MODELS
+}
+
+/// The model a name stands for, or `None` when no built-in model fits.
+///
+/// Accepts what users and backups write: `IRB120`, `IRB 120-3/0.58`, `irb120_3_58`,
+/// `irb4600_60_205`, and MOC.cfg robot types such as `ROB1_120_0.58`,
+/// `ROB1_1200_0.9_5_TypeB` or `ROB1_6700_LeanID_2.65_220`, in any case and with any of
+/// ` _-/,` between the parts. A bare family (`IRB 4600`) gives its first variant.
+/// Numbers after the family pick the variant: a decimal is a reach in metres, an
+/// integer a handling capacity in kg or a reach in centimetres (`58` for 0.58 m).
+pub fn find_model(name: &str) -> Option<&'static RobotModel> {
+    let parsed = ParsedName::of(name)?;
+    let mut best: Option<(usize, &'static RobotModel)> = None;
+    for model in MODELS.iter().filter(|m| m.families.contains(&parsed.family.as_str())) {
+        let Some(score) = parsed.score(model) else { continue };
+        if best.is_none_or(|(s, _)| score > s) {
+            best = Some((score, model));
+        }
+    }
+    best.map(|(_, model)| model)
+}
+
+/// A robot name split into its family and the numbers after it.
+struct ParsedName {
+    family: String,
+    /// Numbers written with a decimal point: reaches in metres.
+    decimals: Vec<f64>,
+    /// Whole numbers: handling capacities, or reaches in centimetres.
+    integers: Vec<u32>,
+}
+
+impl ParsedName {
+    fn of(name: &str) -> Option<ParsedName> {
+        let lower = name.to_ascii_lowercase();
+        let mut family = None;
+        let mut decimals = Vec::new();
+        let mut integers = Vec::new();
+        // A name is short; a very long one is not a robot name, so the loop is bounded.
+        for raw in lower.split([' ', '_', '-', '/', ',', '\t']).filter(|t| !t.is_empty()).take(16) {
+            let token = raw.strip_prefix("irb").unwrap_or(raw);
+            if token.is_empty() || is_rob_prefix(token) {
+                continue;
+            }
+            if family.is_none() {
+                if token.starts_with(|c: char| c.is_ascii_digit()) && token.is_ascii() {
+                    family = Some(token.to_string());
+                }
+                continue;
+            }
+            if let Ok(n) = token.parse::<u32>() {
+                integers.push(n);
+            } else if let Ok(x) = token.parse::<f64>() {
+                if x.is_finite() {
+                    decimals.push(x);
+                }
+            }
+            // Words such as `LeanID` or `TypeB` name options, not the geometry.
+        }
+        Some(ParsedName { family: family?, decimals, integers })
+    }
+
+    /// How well the numbers fit a model of the right family; `None` when one
+    /// contradicts it.
+    fn score(&self, model: &RobotModel) -> Option<usize> {
+        let reach_matches = |x: f64| model.reaches.iter().any(|r| (r - x).abs() < 0.005);
+        let reach_cm = |n: u32| model.reaches.iter().any(|r| (r * 100.0).round() as u32 == n);
+        if !self.decimals.iter().all(|&x| reach_matches(x)) {
+            return None;
+        }
+        let mut reach_named = !self.decimals.is_empty();
+        let mut score = self.decimals.len();
+        let mut unmatched = 0;
+        for &n in &self.integers {
+            if model.payloads.contains(&n) {
+                score += 1;
+            } else if reach_cm(n) {
+                reach_named = true;
+                score += 1;
+            } else {
+                unmatched += 1;
+            }
+        }
+        // uncertain: a capacity we do not list (LeanID 220 kg on the 6700-2.65 arm) is
+        // taken to be a variant of the same arm when the reach names the geometry.
+        if unmatched > 0 && !reach_named {
+            return None;
+        }
+        Some(score)
+    }
+}
+
+/// `rob1`, `rob_1` split to `rob`: the robot-number prefix of a MOC.cfg robot type.
+fn is_rob_prefix(token: &str) -> bool {
+    token.strip_prefix("rob").is_some_and(|rest| rest.chars().all(|c| c.is_ascii_digit()))
+}
+
+const fn opw(a1: f64, a2: f64, c1: f64, c2: f64, c3: f64, c4: f64) -> OpwParams {
+    // The table in motion.md is in metres; we keep millimetres.
+    OpwParams {
+        a1: a1 * 1000.0,
+        a2: a2 * 1000.0,
+        b: 0.0,
+        c1: c1 * 1000.0,
+        c2: c2 * 1000.0,
+        c3: c3 * 1000.0,
+        c4: c4 * 1000.0,
+    }
+}
+
+const fn sym(x: f64) -> (f64, f64) {
+    (-x, x)
+}
+
+const IRB120_LIMITS: [(f64, f64); 6] = [sym(165.0), sym(110.0), (-110.0, 70.0), sym(160.0), sym(120.0), sym(400.0)];
+const IRB4600_LIMITS: [(f64, f64); 6] =
+    [sym(180.0), (-90.0, 150.0), (-180.0, 75.0), sym(400.0), (-125.0, 120.0), sym(400.0)];
+const IRB1200_GEOMETRY_5_90: OpwParams = opw(0.0, -0.042, 0.3991, 0.448, 0.451, 0.082);
+const IRB1600_LIMITS_12: [(f64, f64); 6] =
+    [sym(180.0), (-63.0, 110.0), (-235.0, 55.0), sym(200.0), sym(115.0), sym(400.0)];
+
+#[rustfmt::skip]
+static MODELS: &[RobotModel] = &[
+    RobotModel { name: "IRB 120-3/0.58", families: &["120"], payloads: &[3], reaches: &[0.58],
+        opw: opw(0.0, -0.070, 0.290, 0.270, 0.302, 0.072), limits: IRB120_LIMITS,
+        max_speeds: [250.0, 250.0, 250.0, 320.0, 320.0, 420.0] },
+    RobotModel { name: "IRB 120T-3/0.58", families: &["120t"], payloads: &[3], reaches: &[0.58],
+        opw: opw(0.0, -0.070, 0.290, 0.270, 0.302, 0.072), limits: IRB120_LIMITS,
+        max_speeds: [250.0, 250.0, 250.0, 420.0, 590.0, 600.0] },
+    // uncertain: motion.md gives the limits of the 140T only; the 140 is taken to share them.
+    RobotModel { name: "IRB 140-6/0.81", families: &["140", "140t"], payloads: &[6], reaches: &[0.81],
+        opw: opw(0.070, 0.0, 0.352, 0.360, 0.380, 0.065),
+        limits: [sym(180.0), (-90.0, 110.0), (-230.0, 50.0), sym(200.0), sym(115.0), sym(400.0)],
+        max_speeds: [250.0, 250.0, 260.0, 360.0, 360.0, 450.0] },
+    RobotModel { name: "IRB 1200-5/0.9", families: &["1200"], payloads: &[5], reaches: &[0.9],
+        opw: IRB1200_GEOMETRY_5_90,
+        limits: [sym(170.0), (-100.0, 130.0), (-200.0, 70.0), sym(270.0), sym(130.0), sym(360.0)],
+        max_speeds: [288.0, 240.0, 300.0, 400.0, 405.0, 600.0] },
+    RobotModel { name: "IRB 1200-7/0.7", families: &["1200"], payloads: &[7], reaches: &[0.7],
+        opw: opw(0.0, -0.042, 0.3991, 0.350, 0.351, 0.082),
+        limits: [sym(170.0), (-100.0, 135.0), (-200.0, 70.0), sym(270.0), sym(130.0), sym(360.0)],
+        max_speeds: [288.0, 240.0, 300.0, 400.0, 405.0, 600.0] },
+    RobotModel { name: "IRB 1600-6/1.2", families: &["1600"], payloads: &[6, 10], reaches: &[1.2],
+        opw: opw(0.150, 0.0, 0.4865, 0.475, 0.600, 0.065), limits: IRB1600_LIMITS_12,
+        max_speeds: [150.0, 160.0, 170.0, 320.0, 400.0, 450.0] },
+    RobotModel { name: "IRB 1600-10/1.45", families: &["1600"], payloads: &[8, 10], reaches: &[1.45],
+        opw: opw(0.150, 0.0, 0.4865, 0.700, 0.600, 0.065),
+        limits: [sym(180.0), (-90.0, 120.0), (-245.0, 65.0), sym(200.0), sym(115.0), sym(400.0)],
+        max_speeds: [180.0, 180.0, 200.0, 400.0, 400.0, 460.0] },
+    // uncertain: the reaches that name the 2400 (1.55 m for /10, 1.5 m for /16) are from memory.
+    RobotModel { name: "IRB 2400-10/1.55", families: &["2400"], payloads: &[10, 16], reaches: &[1.55, 1.5],
+        opw: opw(0.100, -0.135, 0.615, 0.705, 0.755, 0.085),
+        limits: [sym(180.0), (-100.0, 110.0), (-60.0, 65.0), sym(200.0), sym(120.0), sym(400.0)],
+        max_speeds: [150.0, 150.0, 150.0, 360.0, 360.0, 450.0] },
+    RobotModel { name: "IRB 2600-12/1.65", families: &["2600"], payloads: &[12], reaches: &[1.65],
+        opw: opw(0.150, -0.115, 0.445, 0.700, 0.795, 0.085),
+        limits: [sym(180.0), (-155.0, 95.0), (-155.0, 75.0), sym(400.0), sym(120.0), sym(400.0)],
+        max_speeds: [175.0, 175.0, 175.0, 360.0, 360.0, 500.0] },
+    RobotModel { name: "IRB 4600-60/2.05", families: &["4600"], payloads: &[60], reaches: &[2.05],
+        opw: opw(0.175, -0.175, 0.495, 0.900, 0.960, 0.135), limits: IRB4600_LIMITS,
+        max_speeds: [175.0, 175.0, 175.0, 250.0, 250.0, 360.0] },
+    RobotModel { name: "IRB 4600-40/2.55", families: &["4600"], payloads: &[40], reaches: &[2.55],
+        opw: opw(0.175, -0.175, 0.495, 1.095, 1.270, 0.135), limits: IRB4600_LIMITS,
+        max_speeds: [175.0, 175.0, 175.0, 250.0, 250.0, 360.0] },
+    RobotModel { name: "IRB 4600-20/2.50", families: &["4600"], payloads: &[20], reaches: &[2.50],
+        opw: opw(0.175, -0.175, 0.495, 1.095, 1.2305, 0.085), limits: IRB4600_LIMITS,
+        max_speeds: [175.0, 175.0, 175.0, 360.0, 360.0, 500.0] },
+    RobotModel { name: "IRB 6640-185/2.8", families: &["6640"], payloads: &[185], reaches: &[2.8],
+        opw: opw(0.320, -0.200, 0.780, 1.075, 1.392, 0.200),
+        limits: [sym(170.0), (-65.0, 85.0), (-180.0, 70.0), sym(300.0), sym(120.0), sym(360.0)],
+        max_speeds: [100.0, 90.0, 90.0, 170.0, 140.0, 190.0] },
+    RobotModel { name: "IRB 6700-200/2.60", families: &["6700"], payloads: &[200], reaches: &[2.60],
+        opw: opw(0.320, -0.200, 0.780, 1.125, 1.1425, 0.200),
+        limits: [sym(170.0), (-65.0, 85.0), (-180.0, 70.0), sym(300.0), sym(130.0), sym(360.0)],
+        max_speeds: [110.0, 110.0, 110.0, 190.0, 150.0, 210.0] },
+    RobotModel { name: "IRB 6700-235/2.65", families: &["6700"], payloads: &[235], reaches: &[2.65],
+        opw: opw(0.320, -0.200, 0.780, 1.135, 1.1825, 0.200),
+        limits: [sym(170.0), (-65.0, 85.0), (-180.0, 70.0), sym(300.0), sym(130.0), sym(360.0)],
+        max_speeds: [100.0, 90.0, 90.0, 170.0, 120.0, 190.0] },
+    RobotModel { name: "IRB 7600-150/3.5", families: &["7600"], payloads: &[150], reaches: &[3.5],
+        opw: opw(0.410, -0.165, 0.780, 1.075, 2.012, 0.250),
+        limits: [sym(180.0), (-60.0, 85.0), (-180.0, 60.0), sym(300.0), sym(100.0), sym(360.0)],
+        max_speeds: [100.0, 60.0, 60.0, 100.0, 100.0, 190.0] },
+];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn name_of(s: &str) -> Option<&'static str> {
+        find_model(s).map(|m| m.name)
+    }
+
+    #[test]
+    fn names_users_write() {
+        assert_eq!(name_of("IRB120"), Some("IRB 120-3/0.58"));
+        assert_eq!(name_of("IRB 120-3/0.58"), Some("IRB 120-3/0.58"));
+        assert_eq!(name_of("irb120_3_58"), Some("IRB 120-3/0.58"));
+        assert_eq!(name_of("IRB 120T"), Some("IRB 120T-3/0.58"));
+        assert_eq!(name_of("irb4600_40_255"), Some("IRB 4600-40/2.55"));
+        assert_eq!(name_of("IRB 4600-20/2.50"), Some("IRB 4600-20/2.50"));
+        assert_eq!(name_of("IRB 4600"), Some("IRB 4600-60/2.05"));
+        assert_eq!(name_of("irb1600-8/1.45"), Some("IRB 1600-10/1.45"));
+        assert_eq!(name_of("IRB 140T"), Some("IRB 140-6/0.81"));
+        assert_eq!(name_of("irb6640_185_280"), Some("IRB 6640-185/2.8"));
+    }
+
+    #[test]
+    fn moc_robot_types() {
+        assert_eq!(name_of("ROB1_120_0.58"), Some("IRB 120-3/0.58"));
+        assert_eq!(name_of("ROB1_1200_0.9_5_TypeB"), Some("IRB 1200-5/0.9"));
+        assert_eq!(name_of("ROB1_1200_0.7_7"), Some("IRB 1200-7/0.7"));
+        assert_eq!(name_of("ROB1_6700_LeanID_2.65_220"), Some("IRB 6700-235/2.65"));
+        assert_eq!(name_of("rob2_2600_1.65_12"), Some("IRB 2600-12/1.65"));
+    }
+
+    #[test]
+    fn names_that_fit_nothing() {
+        assert_eq!(name_of(""), None);
+        assert_eq!(name_of("IRB"), None);
+        assert_eq!(name_of("IRB 999"), None);
+        assert_eq!(name_of("IRB 4600-999/9.9"), None);
+        assert_eq!(name_of("IRB 120-3/2.5"), None);
+        assert_eq!(name_of("KUKA KR6"), None);
+    }
+
+    #[test]
+    fn calibration_position_matches_the_table() {
+        // motion.md §2.2: tool0 at zero is x = a1 + c3 + c4, z = c1 + c2 − a2.
+        let m = find_model("IRB 140").unwrap();
+        let p = m.opw;
+        assert!((p.a1 + p.c3 + p.c4 - 515.0).abs() < 1e-9);
+        assert!((p.c1 + p.c2 - p.a2 - 712.0).abs() < 1e-9);
+        assert_eq!(default_model().name, "IRB 120-3/0.58");
+    }
+}
