@@ -206,9 +206,14 @@ fn zone_is_reduced_to_half_the_neighbour_distance() {
 #[test]
 fn fly_by_without_a_successor_is_a_corner_path_failure() {
     let z10 = ZoneData::predefined("z10").unwrap();
-    let planned = plan_all(&FAST, accel(10_000.0), &[linear(at(1000.0, 0.0, 0.0), 1000.0, z10)]);
-    assert!(planned[0].corner_path_failure);
-    assert!(close(planned[0].duration(), 1.1, 1e-9));
+    let mut planner = Planner::new(&FAST, [0.0; 6], accel(10_000.0));
+    assert_eq!(planner.push(&linear(at(1000.0, 0.0, 0.0), 1000.0, z10)), Ok(None));
+    assert!(planner.has_pending());
+    assert!(close(planner.pending_stop_time().unwrap(), 1.1, 1e-9));
+    let planned = planner.flush().unwrap();
+    assert!(planned.corner_path_failure);
+    assert!(close(planned.duration(), 1.1, 1e-9));
+    assert_eq!(planner.pending_stop_time(), None);
 }
 
 #[test]
@@ -346,4 +351,80 @@ fn joint_moves_blend_per_joint() {
         best = best.min(((q[0] - 100.0).powi(2) + q[1].powi(2)).sqrt());
     }
     assert!(close(best, 10.0 * FRAC_1_SQRT_2 / 2.0, 1e-3), "{best}");
+}
+
+#[test]
+fn short_fly_by_zigzag_stays_continuous() {
+    // Points 4 to 40 mm apart with z50 zones that all shrink to half the
+    // distance, at v1000: whatever the planner chooses, the trajectory must be
+    // finite, on one time axis, and never jump. (A property, not hand numbers.)
+    let z50 = ZoneData::predefined("z50").unwrap();
+    let mut moves = Vec::new();
+    let (mut x, mut y) = (0.0, 0.0);
+    for i in 0..40 {
+        let step = 4.0 + (i % 10) as f64 * 4.0;
+        if i % 2 == 0 {
+            x += step
+        } else {
+            y += if i % 4 == 1 { step } else { -step }
+        }
+        let zone = if i == 39 { ZoneData::FINE } else { z50 };
+        moves.push(linear(turned(x, y, 0.0, (i % 7) as f64), 1000.0, zone));
+    }
+    let planned = plan_all(&FAST, accel(10_000.0), &moves);
+    assert_eq!(planned.len(), 40);
+    assert!(planned.iter().filter(|m| m.corner_time > 0.0).count() >= 30);
+    assert!(planned.windows(2).all(|w| w[0].end == w[1].start));
+    let samples: Vec<_> = planned.iter().flat_map(|m| m.samples(&FAST, 0.001)).collect();
+    for pair in samples.windows(2) {
+        let jump = (pair[1].tcp.translation.vector - pair[0].tcp.translation.vector).norm();
+        assert!(jump <= 1000.0 * 0.001 * 1.01 + 1e-9, "{jump} mm in 1 ms at {}", pair[0].time);
+        assert!(pair[0].joints.iter().all(|q| q.is_finite()) && pair[0].tcp_speed <= 1000.0 * 1.01);
+        // Speed changes no faster than the path acceleration (10 mm/s per ms).
+        let dv = (pair[1].tcp_speed - pair[0].tcp_speed).abs();
+        assert!(dv <= 10.0 * 1.01, "{dv} mm/s in 1 ms at {}", pair[0].time);
+    }
+}
+
+/// A polar robot: axis 1 turns about z (°), axis 2 is the radius and axis 3
+/// the height (mm); axis 4 turns the wrist so the tool keeps its heading.
+struct Polar;
+
+impl Kinematics for Polar {
+    fn forward(&self, q: &Joints) -> Pose {
+        let a = q[0].to_radians();
+        let heading = UnitQuaternion::from_euler_angles(0.0, 0.0, (q[0] + q[3]).to_radians());
+        Isometry3::from_parts(Translation3::new(q[1] * a.cos(), q[1] * a.sin(), q[2]), heading)
+    }
+
+    fn inverse(&self, flange: &Pose) -> Vec<Joints> {
+        let t = flange.translation.vector;
+        let turn = t.y.atan2(t.x).to_degrees();
+        let wrist = (flange.rotation.euler_angles().2.to_degrees() - turn + 540.0).rem_euclid(360.0) - 180.0;
+        vec![[turn, t.x.hypot(t.y), t.z, wrist, 0.0, 0.0]]
+    }
+
+    fn limits(&self) -> [(f64, f64); 6] {
+        [(-180.0, 180.0), (0.0, 1e4), (-1e4, 1e4), (-180.0, 180.0), (-1.0, 1.0), (-1.0, 1.0)]
+    }
+
+    fn max_speeds(&self) -> [f64; 6] {
+        [90.0, 1e5, 1e5, 1e5, 1e5, 1e5]
+    }
+}
+
+#[test]
+fn movel_slows_where_an_axis_would_be_too_fast() {
+    // A line past axis 1 at 100 mm: axis 1 turns at v/100 rad/s at the closest
+    // point, so with 90 °/s the TCP may do at most 100·π/2 = 157.08 mm/s there.
+    // The planner samples the path every 20 mm, which sees a little less than
+    // the peak: 20 mm per atan(0.2) = 11.31° of axis 1, i.e. 159.15 mm/s.
+    let mut planner = Planner::new(&Polar, [-45.0, 100.0 * 2f64.sqrt(), 0.0, 45.0, 0.0, 0.0], accel(10_000.0));
+    assert_eq!(planner.push(&linear(at(100.0, 100.0, 0.0), 1000.0, ZoneData::FINE)), Ok(None));
+    let planned = planner.flush().unwrap();
+    let time_at = |v: f64| 200.0 / v + v / 10_000.0;
+    let t = planned.duration();
+    assert!(t <= time_at(157.08) && t >= time_at(159.16), "{t}");
+    let mid = planned.sample(&Polar, planned.start + t / 2.0);
+    assert!(close(mid.joints[0], 0.0, 1e-6) && close(mid.tcp.translation.y, 0.0, 1e-6));
 }

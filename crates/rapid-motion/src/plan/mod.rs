@@ -13,6 +13,37 @@
 //! profile with constant acceleration. Joint moves are measured in a joint
 //! metric where each axis is divided by its maximum speed, so the limiting axis
 //! sets the pace and all axes start and stop together.
+//!
+//! ```
+//! # use rapid_motion::{Joints, Kinematics, Pose};
+//! # struct Gantry;
+//! # impl Kinematics for Gantry {
+//! #     fn forward(&self, q: &Joints) -> Pose { Pose::translation(q[0], q[1], q[2]) }
+//! #     fn inverse(&self, p: &Pose) -> Vec<Joints> {
+//! #         let t = p.translation.vector;
+//! #         vec![[t.x, t.y, t.z, 0.0, 0.0, 0.0]]
+//! #     }
+//! #     fn limits(&self) -> [(f64, f64); 6] { [(-1e4, 1e4); 6] }
+//! #     fn max_speeds(&self) -> [f64; 6] { [1e4; 6] }
+//! # }
+//! use rapid_motion::plan::{AccelLimits, MoveRequest, Planner, SpeedData, Target, ZoneData, DEFAULT_STEP};
+//! use rapid_motion::pose::pose;
+//!
+//! let robot = Gantry;
+//! let mut planner = Planner::new(&robot, [0.0; 6], AccelLimits::nominal(&robot.max_speeds()));
+//! let v1000 = SpeedData::predefined("v1000").unwrap();
+//! let tool0 = Pose::identity();
+//! let mut moves = Vec::new();
+//! for (x, zone) in [(100.0, "z10"), (200.0, "fine")] {
+//!     let target = Target::Linear(pose([x, 50.0, 0.0], [1.0, 0.0, 0.0, 0.0]));
+//!     let zone = ZoneData::predefined(zone).unwrap();
+//!     moves.extend(planner.push(&MoveRequest { target, speed: v1000, zone, tool: tool0 })?);
+//! }
+//! moves.extend(planner.flush());
+//! let trace: Vec<_> = moves.iter().flat_map(|m| m.samples(&robot, DEFAULT_STEP)).collect();
+//! assert!(moves[1].end > 0.0 && trace.iter().all(|s| s.tcp_speed <= 1000.0 + 1e-9));
+//! # Ok::<(), rapid_motion::MotionError>(())
+//! ```
 
 mod corner;
 mod data;
@@ -97,6 +128,16 @@ impl<'k, K: Kinematics + ?Sized> Planner<'k, K> {
     /// when the robot stands still at the end of the last move.
     pub fn time(&self) -> f64 {
         self.time
+    }
+
+    /// When the waiting move would stand still at its end point if no move
+    /// followed it: the latest a fly-by point's successor can be pushed before
+    /// the robot would have to stop (a corner path failure).
+    pub fn pending_stop_time(&self) -> Option<f64> {
+        let p = self.pending.as_ref()?;
+        let limits = &p.prep.limits;
+        let own = limits.length - p.s_start;
+        Some(self.time + Profile::trapezoid(p.v_start, 0.0, limits.cap, limits.acc, own).duration)
     }
 
     /// Whether a move waits for its successor.
