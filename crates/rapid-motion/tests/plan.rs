@@ -340,7 +340,8 @@ fn joint_moves_blend_per_joint() {
     let fly = plan_all(&robot, acc, &[joint(via, z10), joint(end, ZoneData::FINE)]);
     let stop = plan_all(&robot, acc, &[joint(via, ZoneData::FINE), joint(end, ZoneData::FINE)]);
     assert!(close(stop[1].end, 2.2, 1e-9));
-    assert!(fly[1].end < stop[1].end);
+    // 0.95 s into the corner, 0.2 s of corner, 0.95 s out of it.
+    assert!(close(fly[1].end, 2.1, 1e-9));
     // 10 mm of a 100 mm TCP distance: the zone is 10 % of each joint move; a
     // 90° corner at 100/s then is the same parabola as in TCP space.
     assert!(close(fly[0].corner_time, 0.2, 1e-9));
@@ -427,4 +428,27 @@ fn movel_slows_where_an_axis_would_be_too_fast() {
     assert!(t <= time_at(157.08) && t >= time_at(159.16), "{t}");
     let mid = planned.sample(&Polar, planned.start + t / 2.0);
     assert!(close(mid.joints[0], 0.0, 1e-6) && close(mid.tcp.translation.y, 0.0, 1e-6));
+}
+
+#[test]
+fn corner_across_a_change_of_interpolation() {
+    // MoveL 100 mm at v100 with z10, then MoveJ 100 along y (axes at 100/s and
+    // 1000/s², TCP acceleration 1000 mm/s²): the corner is a joint-space
+    // parabola, so the sums match the all-joint case. MoveL: 5 mm of ramp in
+    // 0.1 s, 85 mm at 100 in 0.85 s; corner 2·10/100 = 0.2 s; MoveJ from 10 %
+    // on: 85 % at full speed in 0.85 s, ramp down in 0.1 s. Total 2.1 s.
+    let robot = Gantry { speeds: [100.0; 6] };
+    let acc = AccelLimits { tcp: 1000.0, ori: 1e6, joint: [1000.0; 6], settle: 0.0 };
+    let z10 = ZoneData::predefined("z10").unwrap();
+    let to_joints = MoveRequest {
+        target: Target::Joints([100.0, 100.0, 0.0, 0.0, 0.0, 0.0]),
+        ..linear(at(0.0, 0.0, 0.0), 5000.0, ZoneData::FINE)
+    };
+    let planned = plan_all(&robot, acc, &[linear(at(100.0, 0.0, 0.0), 100.0, z10), to_joints]);
+    assert!(close(planned[0].corner_time, 0.2, 1e-6), "{}", planned[0].corner_time);
+    assert!(close(planned[1].end, 2.1, 1e-6), "{}", planned[1].end);
+    // And back: MoveJ with z10 into a MoveL.
+    let from_joints = MoveRequest { zone: z10, target: Target::Joints([100.0, 0.0, 0.0, 0.0, 0.0, 0.0]), ..to_joints };
+    let planned = plan_all(&robot, acc, &[from_joints, linear(at(100.0, 100.0, 0.0), 100.0, ZoneData::FINE)]);
+    assert!(close(planned[1].end, 2.1, 1e-6), "{}", planned[1].end);
 }

@@ -3,7 +3,7 @@
 //! the zone exit on the outgoing path — in TCP space between Cartesian moves, per
 //! joint between joint moves.
 
-use super::path::{Bezier, Geometry, Metric, OriLerp, Point, EPS_TCP};
+use super::path::{weighted_distance, Bezier, Metric, OriLerp, Point, EPS_TCP};
 use super::profile::EPS_LEN;
 use super::segment::{axis_cap, solve_at, Prepared};
 use crate::{Joints, Kinematics};
@@ -41,6 +41,10 @@ pub(crate) struct Corner {
     pub(crate) cap: f64,
     /// The acceleration both moves allow.
     pub(crate) acc: f64,
+    /// Corner-metric speed per unit of the incoming and the outgoing move's
+    /// path speed: 1 unless a Cartesian move meets a joint-space corner.
+    pub(crate) scale_in: f64,
+    pub(crate) scale_out: f64,
     /// Joint values along the corner, keyed by the curve parameter.
     pub(crate) seeds: Vec<(f64, Joints)>,
 }
@@ -80,11 +84,22 @@ impl CornerPath {
     }
 }
 
+/// Where a corner leaves the incoming move and joins the outgoing one.
+struct Ends {
+    path: CornerPath,
+    s_in: f64,
+    s_out: f64,
+    scale_in: f64,
+    scale_out: f64,
+}
+
 /// The corner between `cur` and `next`, or `None` when `cur` ends in a stop
-/// point: a `fine` zone, a zone reduced to nothing, a change of tool or of
-/// interpolation type, a pure reorientation on either side, or a reversal.
+/// point: a `fine` zone, a zone reduced to nothing, a pure reorientation on
+/// either side, or a reversal. Between Cartesian moves with one tool the
+/// corner is a TCP parabola; across a change of interpolation type or of tool
+/// it is a joint-space parabola (§2.2.3).
 pub(crate) fn corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared) -> Option<Corner> {
-    if cur.zone.is_stop() || !same_tool(cur, next) {
+    if cur.zone.is_stop() {
         return None;
     }
     let (len_in, len_out) = (cur.limits.length, next.limits.length);
@@ -93,16 +108,21 @@ pub(crate) fn corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Pre
     if zone.is_nan() || zone <= EPS_TCP || len_in <= EPS_LEN || len_out <= EPS_LEN {
         return None;
     }
-    let (path, s_in, s_out) = match (cur.geom.metric(), next.geom.metric()) {
-        (Metric::Mm, Metric::Mm) => tcp_corner(cur, next, zone)?,
-        (Metric::Joint, Metric::Joint) => joint_corner(cur, next, zone)?,
-        _ => return None,
+    let one_tool = same_tool(cur, next);
+    let Ends { path, s_in, s_out, scale_in, scale_out } = match (cur.geom.metric(), next.geom.metric()) {
+        (Metric::Deg, _) | (_, Metric::Deg) => return None,
+        (Metric::Mm, Metric::Mm) if one_tool => tcp_corner(cur, next, zone)?,
+        _ => joint_corner(kin, cur, next, zone)?,
     };
+    let scales_ok = [scale_in, scale_out].iter().all(|k| k.is_finite() && *k > 1e-12);
+    if !scales_ok {
+        return None;
+    }
     let (turn, leg) = turn_and_leg(&path);
     if turn.is_nan() || turn >= MAX_TURN {
         return None;
     }
-    let acc = cur.limits.acc.min(next.limits.acc);
+    let acc = (cur.limits.acc * scale_in).min(next.limits.acc * scale_out);
     // The blend has constant acceleration v² · sin(θ/2) / d (motion.md §4.2).
     let half = (turn / 2.0).to_radians().sin();
     let mut cap = if half > 1e-9 { (acc * leg / half).sqrt() } else { f64::INFINITY };
@@ -112,7 +132,7 @@ pub(crate) fn corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Pre
     if let CornerPath::Joint { curve } = &path {
         cap = cap.min(joint_corner_cap(curve));
     }
-    Some(Corner { path, zone, s_in, s_out, cap, acc, seeds })
+    Some(Corner { path, zone, s_in, s_out, cap, acc, scale_in, scale_out, seeds })
 }
 
 fn same_tool(cur: &Prepared, next: &Prepared) -> bool {
@@ -122,7 +142,7 @@ fn same_tool(cur: &Prepared, next: &Prepared) -> bool {
 
 /// A TCP parabola: entry `zone` mm of path before the programmed point, exit
 /// `zone` mm after it.
-fn tcp_corner(cur: &Prepared, next: &Prepared, zone: f64) -> Option<(CornerPath, f64, f64)> {
+fn tcp_corner(cur: &Prepared, next: &Prepared, zone: f64) -> Option<Ends> {
     let (len_in, s_out) = (cur.limits.length, zone);
     let s_in = len_in - zone;
     let (Point::Tcp(a, _), Point::Tcp(p, _), Point::Tcp(b, _)) =
@@ -133,21 +153,50 @@ fn tcp_corner(cur: &Prepared, next: &Prepared, zone: f64) -> Option<(CornerPath,
     let curve = Bezier::new(a.into(), p.into(), b.into(), [1.0; 3]);
     let (ori_in, ori_out) = (*cur.geom.ori()?, *next.geom.ori()?);
     let (f_in, f_out) = (s_in / len_in, s_out / next.limits.length);
-    Some((CornerPath::Tcp { curve, ori_in, f_in, ori_out, f_out }, s_in, s_out))
+    let path = CornerPath::Tcp { curve, ori_in, f_in, ori_out, f_out };
+    Some(Ends { path, s_in, s_out, scale_in: 1.0, scale_out: 1.0 })
 }
 
-/// A joint-space parabola whose entry and exit are the fractions of each move
-/// that the TCP zone is of the move's TCP distance.
-fn joint_corner(cur: &Prepared, next: &Prepared, zone: f64) -> Option<(CornerPath, f64, f64)> {
-    let (f_in, f_out) = (zone / cur.room, zone / next.room);
-    let (s_in, s_out) = (cur.limits.length * (1.0 - f_in), next.limits.length * f_out);
-    let (Point::Joints(a), Point::Joints(b)) = (cur.geom.at(s_in), next.geom.at(s_out)) else {
-        return None;
+/// A joint-space parabola through the programmed point's joints. On a joint
+/// move the entry (exit) is the fraction of the move that the TCP zone is of
+/// its TCP distance; on a Cartesian move it is `zone` mm along the path,
+/// solved with IK.
+fn joint_corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared, zone: f64) -> Option<Ends> {
+    let s_in = match cur.geom.metric() {
+        Metric::Joint => cur.limits.length * (1.0 - zone / cur.room),
+        _ => cur.limits.length - zone,
     };
-    let Geometry::Joint { weights, .. } = &cur.geom else {
-        return None;
+    let s_out = match next.geom.metric() {
+        Metric::Joint => next.limits.length * zone / next.room,
+        _ => zone,
     };
-    Some((CornerPath::Joint { curve: Bezier::new(a, cur.end_joints, b, *weights) }, s_in, s_out))
+    let weights = cur.max_speeds.map(|v| 1.0 / v);
+    let (a, scale_in) = joints_and_scale(kin, cur, s_in, -1.0, &weights)?;
+    let (b, scale_out) = joints_and_scale(kin, next, s_out, 1.0, &weights)?;
+    let path = CornerPath::Joint { curve: Bezier::new(a, cur.end_joints, b, weights) };
+    Some(Ends { path, s_in, s_out, scale_in, scale_out })
+}
+
+/// The joints at path parameter `s` of `m`, and the joint-metric length per
+/// unit of `m`'s path parameter there (1 for a joint move; for a Cartesian
+/// move, by a 1 mm difference towards `side`).
+fn joints_and_scale<K: Kinematics + ?Sized>(
+    kin: &K,
+    m: &Prepared,
+    s: f64,
+    side: f64,
+    weights: &[f64; 6],
+) -> Option<(Joints, f64)> {
+    let solve = |s: f64, seed: &Joints| solve_at(kin, &m.geom.at(s), &m.tool, seed).ok();
+    match m.geom.at(s) {
+        Point::Joints(q) => Some((q, 1.0)),
+        Point::Tcp(..) => {
+            let q = solve(s, &nearest_seed(&m.seeds, s)?)?;
+            let h = side * 1.0f64.min(m.limits.length / 4.0);
+            let q2 = solve(s + h, &q)?;
+            Some((q, weighted_distance(&q, &q2, weights) / h.abs()))
+        }
+    }
 }
 
 /// The turn angle (°) between the corner's two legs, and the shorter leg's

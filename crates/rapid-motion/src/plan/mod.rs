@@ -85,11 +85,11 @@ fn corner_speeds(pending: &Pending, c: Corner, next: &Prepared) -> Option<(Corne
     // but never slower than braking at full deceleration from the start gives.
     let reach = (v0 * v0 + 2.0 * cur.acc * own).sqrt();
     let brake = (v0 * v0 - 2.0 * cur.acc * own).max(0.0).sqrt();
-    let v_in = cur.cap.min(c.cap).min(reach).max(brake);
+    let v_in = cur.cap.min(c.cap / c.scale_in).min(reach).max(brake);
     // Exit: the next move's own successor is not known yet, so it must still be
     // able to stop within what is left of it.
     let left = (next.limits.length - c.s_out).max(0.0);
-    let v_out = next.limits.cap.min(c.cap).min((2.0 * next.limits.acc * left).sqrt());
+    let v_out = next.limits.cap.min(c.cap / c.scale_out).min((2.0 * next.limits.acc * left).sqrt());
     (v_in + v_out > 1e-9).then_some((c, v_in, v_out))
 }
 
@@ -175,7 +175,7 @@ impl<'k, K: Kinematics + ?Sized> Planner<'k, K> {
         let (profiles, handover) = match &blend {
             Some((c, v_in, v_out)) => {
                 let own = prep.limits.length.min(c.s_in) - pending.s_start;
-                let (rate_in, rate_out) = c.path.rates(*v_in, *v_out);
+                let (rate_in, rate_out) = c.path.rates(v_in * c.scale_in, v_out * c.scale_out);
                 let profiles = vec![
                     Profile::trapezoid(pending.v_start, *v_in, prep.limits.cap, prep.limits.acc, own),
                     Profile::blend(rate_in, rate_out),
