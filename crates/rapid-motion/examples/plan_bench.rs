@@ -55,11 +55,10 @@ fn main() {
         .collect();
 
     let started = Instant::now();
-    let mut planner =
-        Planner::new(&robot, [400.0, 0.0, 500.0, 0.0, 0.0, 0.0], AccelLimits::nominal(&robot.max_speeds()));
+    let mut planner = Planner::new([400.0, 0.0, 500.0, 0.0, 0.0, 0.0], AccelLimits::nominal(&robot.max_speeds()));
     let mut planned: Vec<PlannedMove> = Vec::with_capacity(MOVES);
     for request in &requests {
-        match planner.push(request) {
+        match planner.push(&robot, request) {
             Ok(done) => planned.extend(done),
             Err(e) => return println!("planning failed: {e}"),
         }

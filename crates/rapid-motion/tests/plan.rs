@@ -63,8 +63,8 @@ fn linear(to: Pose, v: f64, zone: ZoneData) -> MoveRequest {
 
 /// Plans `moves` in order and flushes.
 fn plan_all<K: Kinematics>(kin: &K, acc: AccelLimits, moves: &[MoveRequest]) -> Vec<PlannedMove> {
-    let mut planner = Planner::new(kin, [0.0; 6], acc);
-    let mut planned: Vec<PlannedMove> = moves.iter().filter_map(|m| planner.push(m).unwrap()).collect();
+    let mut planner = Planner::new([0.0; 6], acc);
+    let mut planned: Vec<PlannedMove> = moves.iter().filter_map(|m| planner.push(kin, m).unwrap()).collect();
     planned.extend(planner.flush());
     planned
 }
@@ -206,8 +206,8 @@ fn zone_is_reduced_to_half_the_neighbour_distance() {
 #[test]
 fn fly_by_without_a_successor_is_a_corner_path_failure() {
     let z10 = ZoneData::predefined("z10").unwrap();
-    let mut planner = Planner::new(&FAST, [0.0; 6], accel(10_000.0));
-    assert_eq!(planner.push(&linear(at(1000.0, 0.0, 0.0), 1000.0, z10)), Ok(None));
+    let mut planner = Planner::new([0.0; 6], accel(10_000.0));
+    assert_eq!(planner.push(&FAST, &linear(at(1000.0, 0.0, 0.0), 1000.0, z10)), Ok(None));
     assert!(planner.has_pending());
     assert!(close(planner.pending_stop_time().unwrap(), 1.1, 1e-9));
     let planned = planner.flush().unwrap();
@@ -269,35 +269,38 @@ fn movec_quarter_circle() {
 
 #[test]
 fn degenerate_circle_is_an_error() {
-    let mut planner = Planner::new(&FAST, [0.0; 6], accel(10_000.0));
+    let mut planner = Planner::new([0.0; 6], accel(10_000.0));
     let request = MoveRequest {
         target: Target::Circular { via: at(50.0, 0.0, 0.0), to: at(100.0, 0.0, 0.0) },
         ..linear(at(0.0, 0.0, 0.0), 500.0, ZoneData::FINE)
     };
-    assert_eq!(planner.push(&request), Err(MotionError::DegenerateCircle));
+    assert_eq!(planner.push(&FAST, &request), Err(MotionError::DegenerateCircle));
     assert!(!planner.has_pending());
 }
 
 #[test]
 fn degenerate_inputs_give_errors_or_zero_time() {
-    let mut planner = Planner::new(&FAST, [0.0; 6], accel(10_000.0));
+    let mut planner = Planner::new([0.0; 6], accel(10_000.0));
     // The same point again: zero length, zero time, no NaN.
     let same = linear(at(0.0, 0.0, 0.0), 1000.0, ZoneData::FINE);
-    assert_eq!(planner.push(&same), Ok(None));
+    assert_eq!(planner.push(&FAST, &same), Ok(None));
     let planned = planner.flush().unwrap();
     assert_eq!(planned.duration(), 0.0);
     let s = planned.sample(&FAST, f64::NAN);
     assert!(s.joints.iter().all(|q| q.is_finite()) && s.tcp_speed == 0.0);
     // A TCP move with no TCP speed, a NaN target, a target past a joint limit.
-    assert!(matches!(planner.push(&linear(at(10.0, 0.0, 0.0), 0.0, ZoneData::FINE)), Err(MotionError::InvalidData(_))));
     assert!(matches!(
-        planner.push(&linear(at(f64::NAN, 0.0, 0.0), 100.0, ZoneData::FINE)),
+        planner.push(&FAST, &linear(at(10.0, 0.0, 0.0), 0.0, ZoneData::FINE)),
+        Err(MotionError::InvalidData(_))
+    ));
+    assert!(matches!(
+        planner.push(&FAST, &linear(at(f64::NAN, 0.0, 0.0), 100.0, ZoneData::FINE)),
         Err(MotionError::InvalidData(_))
     ));
     let zero_quat = rapid_motion::pose::pose([0.0, 0.0, 0.0], [0.0, 0.0, 0.0, 0.0]);
-    assert!(matches!(planner.push(&linear(zero_quat, 100.0, ZoneData::FINE)), Err(MotionError::InvalidData(_))));
+    assert!(matches!(planner.push(&FAST, &linear(zero_quat, 100.0, ZoneData::FINE)), Err(MotionError::InvalidData(_))));
     let past = MoveRequest { target: Target::Joints([0.0, 0.0, 0.0, 0.0, 95.0, 0.0]), ..same };
-    assert_eq!(planner.push(&past), Err(MotionError::JointLimit { axis: 5 }));
+    assert_eq!(planner.push(&FAST, &past), Err(MotionError::JointLimit { axis: 5 }));
     assert!(planner.flush().is_none());
 }
 
@@ -316,9 +319,9 @@ fn samples_share_one_grid() {
 #[test]
 fn accset_and_velset_scale_the_move() {
     // AccSet 50: a = 5000; VelSet 50 %: v = 500. T = 1000/500 + 500/5000.
-    let mut planner = Planner::new(&FAST, [0.0; 6], accel(10_000.0));
+    let mut planner = Planner::new([0.0; 6], accel(10_000.0));
     planner.set_settings(MotionSettings { acc: 50.0, vel_override: 50.0, ..MotionSettings::default() });
-    assert_eq!(planner.push(&linear(at(1000.0, 0.0, 0.0), 1000.0, ZoneData::FINE)), Ok(None));
+    assert_eq!(planner.push(&FAST, &linear(at(1000.0, 0.0, 0.0), 1000.0, ZoneData::FINE)), Ok(None));
     assert!(close(planner.flush().unwrap().duration(), 2.1, 1e-9));
 }
 
@@ -420,8 +423,8 @@ fn movel_slows_where_an_axis_would_be_too_fast() {
     // point, so with 90 °/s the TCP may do at most 100·π/2 = 157.08 mm/s there.
     // The planner samples the path every 20 mm, which sees a little less than
     // the peak: 20 mm per atan(0.2) = 11.31° of axis 1, i.e. 159.15 mm/s.
-    let mut planner = Planner::new(&Polar, [-45.0, 100.0 * 2f64.sqrt(), 0.0, 45.0, 0.0, 0.0], accel(10_000.0));
-    assert_eq!(planner.push(&linear(at(100.0, 100.0, 0.0), 1000.0, ZoneData::FINE)), Ok(None));
+    let mut planner = Planner::new([-45.0, 100.0 * 2f64.sqrt(), 0.0, 45.0, 0.0, 0.0], accel(10_000.0));
+    assert_eq!(planner.push(&Polar, &linear(at(100.0, 100.0, 0.0), 1000.0, ZoneData::FINE)), Ok(None));
     let planned = planner.flush().unwrap();
     let time_at = |v: f64| 200.0 / v + v / 10_000.0;
     let t = planned.duration();

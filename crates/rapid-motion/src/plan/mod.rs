@@ -30,14 +30,14 @@
 //! use rapid_motion::pose::pose;
 //!
 //! let robot = Gantry;
-//! let mut planner = Planner::new(&robot, [0.0; 6], AccelLimits::nominal(&robot.max_speeds()));
+//! let mut planner = Planner::new([0.0; 6], AccelLimits::nominal(&robot.max_speeds()));
 //! let v1000 = SpeedData::predefined("v1000").unwrap();
 //! let tool0 = Pose::identity();
 //! let mut moves = Vec::new();
 //! for (x, zone) in [(100.0, "z10"), (200.0, "fine")] {
 //!     let target = Target::Linear(pose([x, 50.0, 0.0], [1.0, 0.0, 0.0, 0.0]));
 //!     let zone = ZoneData::predefined(zone).unwrap();
-//!     moves.extend(planner.push(&MoveRequest { target, speed: v1000, zone, tool: tool0 })?);
+//!     moves.extend(planner.push(&robot, &MoveRequest { target, speed: v1000, zone, tool: tool0 })?);
 //! }
 //! moves.extend(planner.flush());
 //! let trace: Vec<_> = moves.iter().flat_map(|m| m.samples(&robot, DEFAULT_STEP)).collect();
@@ -65,8 +65,7 @@ use sample::{Piece, Span};
 use segment::Prepared;
 
 /// Plans a robot's moves one at a time, in program order.
-pub struct Planner<'k, K: Kinematics + ?Sized> {
-    kin: &'k K,
+pub struct Planner {
     nominal: AccelLimits,
     settings: MotionSettings,
     /// Where the last pushed move ends (the start of the next).
@@ -74,23 +73,6 @@ pub struct Planner<'k, K: Kinematics + ?Sized> {
     /// When the pending move starts.
     time: f64,
     pending: Option<Pending>,
-}
-
-/// The speeds at a corner's entry and exit, or `None` when the corner would be
-/// walked at no speed at all (the move then stops instead).
-fn corner_speeds(pending: &Pending, c: Corner, next: &Prepared) -> Option<(Corner, f64, f64)> {
-    let (cur, own) = (&pending.prep.limits, (c.s_in - pending.s_start).max(0.0));
-    let v0 = pending.v_start;
-    // Entry: as fast as this move's cap, the corner and acceleration allow,
-    // but never slower than braking at full deceleration from the start gives.
-    let reach = (v0 * v0 + 2.0 * cur.acc * own).sqrt();
-    let brake = (v0 * v0 - 2.0 * cur.acc * own).max(0.0).sqrt();
-    let v_in = cur.cap.min(c.cap / c.scale_in).min(reach).max(brake);
-    // Exit: the next move's own successor is not known yet, so it must still be
-    // able to stop within what is left of it.
-    let left = (next.limits.length - c.s_out).max(0.0);
-    let v_out = next.limits.cap.min(c.cap / c.scale_out).min((2.0 * next.limits.acc * left).sqrt());
-    (v_in + v_out > 1e-9).then_some((c, v_in, v_out))
 }
 
 /// A move pushed but not yet final: it waits for the next move to plan its
@@ -102,11 +84,11 @@ struct Pending {
     v_start: f64,
 }
 
-impl<'k, K: Kinematics + ?Sized> Planner<'k, K> {
+impl Planner {
     /// A planner for a robot standing at `start` at time 0, with the robot's
     /// nominal accelerations (see [`AccelLimits::nominal`]).
-    pub fn new(kin: &'k K, start: Joints, nominal: AccelLimits) -> Self {
-        Planner { kin, nominal, settings: MotionSettings::default(), joints: start, time: 0.0, pending: None }
+    pub fn new(start: Joints, nominal: AccelLimits) -> Self {
+        Planner { nominal, settings: MotionSettings::default(), joints: start, time: 0.0, pending: None }
     }
 
     /// The settings (AccSet, VelSet, speed override) moves are planned with.
@@ -148,14 +130,19 @@ impl<'k, K: Kinematics + ?Sized> Planner<'k, K> {
     /// Adds a move. Returns the previous move, now final, if there was one. On
     /// an error (unreachable target, zero speed, degenerate circle) nothing
     /// changes: the previous move still waits.
-    pub fn push(&mut self, request: &MoveRequest) -> Result<Option<PlannedMove>, MotionError> {
-        let prep = segment::prepare(self.kin, request, &self.joints, &self.settings, &self.nominal)?;
+    pub fn push<K: Kinematics + ?Sized>(
+        &mut self,
+        kin: &K,
+        request: &MoveRequest,
+    ) -> Result<Option<PlannedMove>, MotionError> {
+        let prep = segment::prepare(kin, request, &self.joints, &self.settings, &self.nominal)?;
         self.joints = prep.end_joints;
         let Some(pending) = self.pending.take() else {
             self.pending = Some(Pending { prep, s_start: 0.0, v_start: 0.0 });
             return Ok(None);
         };
-        let (planned, handover) = self.finalize(&pending, Some(&prep));
+        let blend = corner::corner(kin, &pending.prep, &prep).and_then(|c| corner_speeds(&pending, c, &prep));
+        let (planned, handover) = self.finalize(&pending, blend);
         let (s_start, v_start) = handover.unwrap_or((0.0, 0.0));
         self.pending = Some(Pending { prep, s_start, v_start });
         Ok(Some(planned))
@@ -164,14 +151,16 @@ impl<'k, K: Kinematics + ?Sized> Planner<'k, K> {
     /// Ends the queue: the waiting move, if any, stops at its end point.
     pub fn flush(&mut self) -> Option<PlannedMove> {
         let pending = self.pending.take()?;
-        Some(self.finalize(&pending, None).0)
+        let (mut planned, _) = self.finalize(&pending, None);
+        planned.corner_path_failure = !pending.prep.zone.is_stop();
+        Some(planned)
     }
 
-    /// Times `pending`, with a corner into `next` when one can be made. Returns
-    /// the planned move and where and how fast `next` takes over.
-    fn finalize(&mut self, pending: &Pending, next: Option<&Prepared>) -> (PlannedMove, Option<(f64, f64)>) {
+    /// Times `pending`, ending in `blend` (a corner with its entry and exit
+    /// speeds) or in a stop. Returns the planned move and where on its path and
+    /// how fast the next move takes over.
+    fn finalize(&mut self, pending: &Pending, blend: Option<(Corner, f64, f64)>) -> (PlannedMove, Option<(f64, f64)>) {
         let prep = &pending.prep;
-        let blend = next.and_then(|n| corner::corner(self.kin, prep, n).and_then(|c| corner_speeds(pending, c, n)));
         let (profiles, handover) = match &blend {
             Some((c, v_in, v_out)) => {
                 let own = prep.limits.length.min(c.s_in) - pending.s_start;
@@ -187,9 +176,7 @@ impl<'k, K: Kinematics + ?Sized> Planner<'k, K> {
                 (vec![Profile::trapezoid(pending.v_start, 0.0, prep.limits.cap, prep.limits.acc, own)], None)
             }
         };
-        let mut planned = self.place(pending, blend.as_ref().map(|b| &b.0), profiles);
-        planned.corner_path_failure = next.is_none() && !prep.zone.is_stop();
-        (planned, handover)
+        (self.place(pending, blend.as_ref().map(|b| &b.0), profiles), handover)
     }
 
     /// Lays the profiles out on the time axis from the planner's clock.
@@ -229,4 +216,21 @@ impl<'k, K: Kinematics + ?Sized> Planner<'k, K> {
             tool: prep.tool,
         }
     }
+}
+
+/// The speeds at a corner's entry and exit, or `None` when the corner would be
+/// walked at no speed at all (the move then stops instead).
+fn corner_speeds(pending: &Pending, c: Corner, next: &Prepared) -> Option<(Corner, f64, f64)> {
+    let (cur, own) = (&pending.prep.limits, (c.s_in - pending.s_start).max(0.0));
+    let v0 = pending.v_start;
+    // Entry: as fast as this move's cap, the corner and acceleration allow,
+    // but never slower than braking at full deceleration from the start gives.
+    let reach = (v0 * v0 + 2.0 * cur.acc * own).sqrt();
+    let brake = (v0 * v0 - 2.0 * cur.acc * own).max(0.0).sqrt();
+    let v_in = cur.cap.min(c.cap / c.scale_in).min(reach).max(brake);
+    // Exit: the next move's own successor is not known yet, so it must still be
+    // able to stop within what is left of it.
+    let left = (next.limits.length - c.s_out).max(0.0);
+    let v_out = next.limits.cap.min(c.cap / c.scale_out).min((2.0 * next.limits.acc * left).sqrt());
+    (v_in + v_out > 1e-9).then_some((c, v_in, v_out))
 }
