@@ -455,3 +455,41 @@ fn corner_across_a_change_of_interpolation() {
     let planned = plan_all(&robot, acc, &[from_joints, linear(at(100.0, 100.0, 0.0), 100.0, ZoneData::FINE)]);
     assert!(close(planned[1].end, 2.1, 1e-6), "{}", planned[1].end);
 }
+
+#[test]
+fn speed_changes_inside_the_corner() {
+    // v500 into a 90° z10 corner, v100 out of it: the corner starts at 500 and
+    // ends at 100, its parameter rate changing linearly, so it takes
+    // 4d/(v_in + v_out) = 40/600 s.
+    let z10 = ZoneData::predefined("z10").unwrap();
+    let moves = [linear(at(100.0, 0.0, 0.0), 500.0, z10), linear(at(100.0, 100.0, 0.0), 100.0, ZoneData::FINE)];
+    let planned = plan_all(&FAST, accel(20_000.0), &moves);
+    assert!(close(planned[0].corner_time, 40.0 / 600.0, 1e-9));
+    let entry = planned[0].sample(&FAST, planned[0].zone_entry + 1e-9);
+    let exit = planned[0].sample(&FAST, planned[0].end - 1e-9);
+    assert!(close(entry.tcp_speed, 500.0, 1e-3) && close(exit.tcp_speed, 100.0, 1e-3));
+    // The second side then runs 10 → 100 mm at 100 and brakes: 90/100 + 100/40000.
+    assert!(close(planned[1].duration(), 0.9 + 0.0025, 1e-9));
+}
+
+#[test]
+fn circles_blend_into_lines() {
+    // MoveL, MoveC (half circle of r = 50) and MoveL, all with z10: corners
+    // between lines and arcs, and the trajectory stays continuous.
+    let z10 = ZoneData::predefined("z10").unwrap();
+    let arc = MoveRequest {
+        target: Target::Circular { via: at(250.0, 50.0, 0.0), to: at(200.0, 100.0, 0.0) },
+        ..linear(at(0.0, 0.0, 0.0), 500.0, z10)
+    };
+    let moves = [linear(at(200.0, 0.0, 0.0), 500.0, z10), arc, linear(at(0.0, 100.0, 0.0), 500.0, ZoneData::FINE)];
+    let planned = plan_all(&FAST, accel(20_000.0), &moves);
+    assert!(planned[..2].iter().all(|m| m.zone == 10.0 && m.corner_time > 0.0));
+    let samples: Vec<_> = planned.iter().flat_map(|m| m.samples(&FAST, 0.0005)).collect();
+    for pair in samples.windows(2) {
+        let jump = (pair[1].tcp.translation.vector - pair[0].tcp.translation.vector).norm();
+        assert!(jump <= 500.0 * 0.0005 * 1.01 + 1e-9, "{jump} at {}", pair[0].time);
+    }
+    // Half way along the arc the TCP is on the circle, 50 mm from its centre.
+    let mid = planned[1].sample(&FAST, (planned[1].start + planned[1].zone_entry) / 2.0);
+    assert!(close((mid.tcp.translation.vector - Vector3::new(200.0, 50.0, 0.0)).norm(), 50.0, 1e-6));
+}
