@@ -493,3 +493,29 @@ fn circles_blend_into_lines() {
     let mid = planned[1].sample(&FAST, (planned[1].start + planned[1].zone_entry) / 2.0);
     assert!(close((mid.tcp.translation.vector - Vector3::new(200.0, 50.0, 0.0)).norm(), 50.0, 1e-6));
 }
+
+#[test]
+fn reorientation_zone_starts_turning_before_the_corner() {
+    // Side 1 keeps the tool still; side 2 turns it 90° over 100 mm (0.9°/mm).
+    // z10 has pzone_ori 15 mm: the turn fades in from 15 mm before the point,
+    // as (x² · 15 mm) of side 2's rotation at progress x through the 30 mm zone.
+    let z10 = ZoneData::predefined("z10").unwrap();
+    let moves = [
+        linear(at(100.0, 0.0, 0.0), 500.0, z10),
+        MoveRequest { speed: speed(500.0, 500.0), ..linear(turned(100.0, 100.0, 0.0, 90.0), 0.0, ZoneData::FINE) },
+    ];
+    let planned = plan_all(&FAST, accel(20_000.0), &moves);
+    let turn = |t: f64, m: &PlannedMove| m.sample(&FAST, t).tcp.rotation.angle().to_degrees();
+    // 88 mm along side 1 (after the 6.25 mm ramp, at 500 mm/s): x = 0.1.
+    let t88 = 0.025 + (88.0 - 6.25) / 500.0;
+    assert!(close(planned[0].sample(&FAST, t88).tcp.translation.x, 88.0, 1e-9));
+    assert!(close(turn(t88, &planned[0]), 0.01 * 15.0 * 0.9, 1e-9));
+    // Before the zone nothing turns.
+    assert!(turn(0.025 + (84.0 - 6.25) / 500.0, &planned[0]) < 1e-9);
+    // Corner exit, 10 mm into side 2: x = 25/30.
+    assert!(close(turn(planned[0].end, &planned[0]), (25.0f64 / 30.0).powi(2) * 15.0 * 0.9, 1e-9));
+    // Zone exit (15 mm into side 2, 5 mm after the corner at 500 mm/s): 13.5°,
+    // and from there on the plain interpolation: 45° at 50 mm.
+    assert!(close(turn(planned[1].start + 0.01, &planned[1]), 13.5, 1e-9));
+    assert!(close(turn(planned[1].start + 0.08, &planned[1]), 45.0, 1e-9));
+}

@@ -3,7 +3,8 @@
 //! the zone exit on the outgoing path — in TCP space between Cartesian moves, per
 //! joint between joint moves.
 
-use super::path::{weighted_distance, Bezier, Metric, OriLerp, Point, EPS_TCP};
+use super::orient::OriZone;
+use super::path::{weighted_distance, Bezier, Metric, Point, EPS_TCP};
 use super::profile::EPS_LEN;
 use super::segment::{axis_cap, solve_at, Prepared};
 use crate::{Joints, Kinematics};
@@ -18,10 +19,9 @@ const CORNER_SAMPLES: usize = 8;
 /// The curve of a corner path.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) enum CornerPath {
-    /// Between Cartesian moves. The orientation blends from the incoming move's
-    /// interpolation (from fraction `f_in` to its end) into the outgoing one's
-    /// (from its start to fraction `f_out`).
-    Tcp { curve: Bezier<3>, ori_in: OriLerp, f_in: f64, ori_out: OriLerp, f_out: f64 },
+    /// Between Cartesian moves with one tool; `zone` is the position zone (mm)
+    /// and `ori` the reorientation zone around it.
+    Tcp { curve: Bezier<3>, ori: OriZone, zone: f64 },
     /// Between joint moves, in degrees, measured in the joint metric.
     Joint { curve: Bezier<6> },
 }
@@ -54,12 +54,9 @@ impl CornerPath {
     pub(crate) fn at(&self, u: f64) -> Point {
         let u = if u.is_finite() { u.clamp(0.0, 1.0) } else { 0.0 };
         match self {
-            CornerPath::Tcp { curve, ori_in, f_in, ori_out, f_out } => {
+            CornerPath::Tcp { curve, ori, zone } => {
                 let [x, y, z] = curve.point(u);
-                let from = ori_in.at(f_in + u * (1.0 - f_in));
-                let to = ori_out.at(u * f_out);
-                let ori = from.try_slerp(&to, u, 1e-12).unwrap_or(from);
-                Point::Tcp(nalgebra::Vector3::new(x, y, z), ori)
+                Point::Tcp(nalgebra::Vector3::new(x, y, z), ori.at(ori.progress_corner(u, *zone)))
             }
             CornerPath::Joint { curve } => Point::Joints(curve.point(u)),
         }
@@ -74,6 +71,14 @@ impl CornerPath {
         };
         let rate = |v: f64, d: f64| if d > 0.0 { v / d } else { 0.0 };
         (rate(v_in, d0), rate(v_out, d1))
+    }
+
+    /// The reorientation zone, for the moves on either side of a TCP corner.
+    pub(crate) fn ori_zone(&self) -> Option<OriZone> {
+        match self {
+            CornerPath::Tcp { ori, .. } => Some(*ori),
+            CornerPath::Joint { .. } => None,
+        }
     }
 
     fn arc_length_to(&self, u: f64) -> f64 {
@@ -151,9 +156,17 @@ fn tcp_corner(cur: &Prepared, next: &Prepared, zone: f64) -> Option<Ends> {
         return None;
     };
     let curve = Bezier::new(a.into(), p.into(), b.into(), [1.0; 3]);
-    let (ori_in, ori_out) = (*cur.geom.ori()?, *next.geom.ori()?);
-    let (f_in, f_out) = (s_in / len_in, s_out / next.limits.length);
-    let path = CornerPath::Tcp { curve, ori_in, f_in, ori_out, f_out };
+    // The reorientation zone is never smaller than the position zone, and is
+    // reduced to half the neighbour distances like it (motion.md §3.2).
+    let reach = cur.zone.pzone_ori.max(zone).min(cur.room / 2.0).min(next.room / 2.0);
+    let ori = OriZone {
+        before: *cur.geom.ori()?,
+        before_len: len_in,
+        after: *next.geom.ori()?,
+        after_len: next.limits.length,
+        reach: if reach.is_finite() { reach } else { zone },
+    };
+    let path = CornerPath::Tcp { curve, ori, zone };
     Some(Ends { path, s_in, s_out, scale_in: 1.0, scale_out: 1.0 })
 }
 

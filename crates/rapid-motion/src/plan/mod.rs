@@ -48,6 +48,7 @@
 mod corner;
 mod data;
 mod limits;
+mod orient;
 mod path;
 mod profile;
 mod sample;
@@ -60,6 +61,7 @@ pub use segment::{MoveRequest, Target};
 
 use crate::{Joints, Kinematics, MotionError};
 use corner::Corner;
+use orient::OriZone;
 use profile::Profile;
 use sample::{Piece, Span};
 use segment::Prepared;
@@ -82,6 +84,15 @@ struct Pending {
     /// Where on its path it starts (after the previous corner) and how fast.
     s_start: f64,
     v_start: f64,
+    /// The previous corner's reorientation zone, reaching into this move.
+    ori_in: Option<OriZone>,
+}
+
+/// Where the next move takes over after a corner.
+struct Handover {
+    s_out: f64,
+    v_out: f64,
+    ori: Option<OriZone>,
 }
 
 impl Planner {
@@ -138,13 +149,15 @@ impl Planner {
         let prep = segment::prepare(kin, request, &self.joints, &self.settings, &self.nominal)?;
         self.joints = prep.end_joints;
         let Some(pending) = self.pending.take() else {
-            self.pending = Some(Pending { prep, s_start: 0.0, v_start: 0.0 });
+            self.pending = Some(Pending { prep, s_start: 0.0, v_start: 0.0, ori_in: None });
             return Ok(None);
         };
         let blend = corner::corner(kin, &pending.prep, &prep).and_then(|c| corner_speeds(&pending, c, &prep));
         let (planned, handover) = self.finalize(&pending, blend);
-        let (s_start, v_start) = handover.unwrap_or((0.0, 0.0));
-        self.pending = Some(Pending { prep, s_start, v_start });
+        self.pending = Some(match handover {
+            Some(h) => Pending { prep, s_start: h.s_out, v_start: h.v_out, ori_in: h.ori },
+            None => Pending { prep, s_start: 0.0, v_start: 0.0, ori_in: None },
+        });
         Ok(Some(planned))
     }
 
@@ -159,7 +172,7 @@ impl Planner {
     /// Times `pending`, ending in `blend` (a corner with its entry and exit
     /// speeds) or in a stop. Returns the planned move and where on its path and
     /// how fast the next move takes over.
-    fn finalize(&mut self, pending: &Pending, blend: Option<(Corner, f64, f64)>) -> (PlannedMove, Option<(f64, f64)>) {
+    fn finalize(&mut self, pending: &Pending, blend: Option<(Corner, f64, f64)>) -> (PlannedMove, Option<Handover>) {
         let prep = &pending.prep;
         let (profiles, handover) = match &blend {
             Some((c, v_in, v_out)) => {
@@ -169,7 +182,7 @@ impl Planner {
                     Profile::trapezoid(pending.v_start, *v_in, prep.limits.cap, prep.limits.acc, own),
                     Profile::blend(rate_in, rate_out),
                 ];
-                (profiles, Some((c.s_out, *v_out)))
+                (profiles, Some(Handover { s_out: c.s_out, v_out: *v_out, ori: c.path.ori_zone() }))
             }
             None => {
                 let own = prep.limits.length - pending.s_start;
@@ -189,7 +202,8 @@ impl Planner {
         if let Some(profile) = profiles.next() {
             let s0 = pending.s_start;
             let seeds = prep.seeds.iter().map(|(s, q)| (s - s0, *q)).collect();
-            let piece = Piece::Own { geom: prep.geom.clone(), s0 };
+            let ori_out = corner.and_then(|c| c.path.ori_zone());
+            let piece = Piece::Own { geom: prep.geom.clone(), s0, ori_in: pending.ori_in, ori_out };
             spans.push(Span { piece, t0: t, seeds, profile: profile.clone() });
             t += profile.duration;
         }

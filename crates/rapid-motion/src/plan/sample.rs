@@ -2,6 +2,7 @@
 //! TCP speed at any time, or on a fixed grid (the controller's 4 ms).
 
 use super::corner::{nearest_seed, CornerPath};
+use super::orient::OriZone;
 use super::path::{Geometry, Metric, Point};
 use super::profile::Profile;
 use super::segment::{solve_at, tcp_pose};
@@ -64,10 +65,14 @@ pub(crate) struct Span {
 /// What a span walks along.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) enum Piece {
-    /// The move's own path, from path parameter `s0` on.
+    /// The move's own path, from path parameter `s0` on, its orientation
+    /// blended with the previous and the next move's in their reorientation
+    /// zones.
     Own {
         geom: Geometry,
         s0: f64,
+        ori_in: Option<OriZone>,
+        ori_out: Option<OriZone>,
     },
     Corner(Box<CornerPath>),
 }
@@ -141,7 +146,17 @@ impl PlannedMove {
 impl Piece {
     fn at(&self, s: f64) -> Point {
         match self {
-            Piece::Own { geom, s0 } => geom.at(s0 + s),
+            Piece::Own { geom, s0, ori_in, ori_out } => {
+                let s = s0 + s;
+                match geom.at(s) {
+                    Point::Tcp(p, r) => {
+                        let out = ori_out.and_then(|z| Some(z.at(z.progress_before(s)?)));
+                        let into = ori_in.and_then(|z| Some(z.at(z.progress_after(s)?)));
+                        Point::Tcp(p, out.or(into).unwrap_or(r))
+                    }
+                    point => point,
+                }
+            }
             Piece::Corner(path) => path.at(s),
         }
     }
