@@ -211,7 +211,7 @@ impl Planner {
         let mut corner_time = 0.0;
         if let (Some(c), Some(profile)) = (corner, profiles.next()) {
             corner_time = profile.duration;
-            spans.push(Span { piece: Piece::Corner(Box::new(c.path.clone())), t0: t, seeds: c.seeds.clone(), profile });
+            spans.push(Span { piece: Piece::Corner(c.path.clone()), t0: t, seeds: c.seeds.clone(), profile });
             t += corner_time;
         }
         if corner.is_none() && prep.zone.finep {

@@ -63,6 +63,8 @@ pub(crate) struct Span {
 }
 
 /// What a span walks along.
+// A move holds at most two pieces, so their size does not matter.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) enum Piece {
     /// The move's own path, from path parameter `s0` on, its orientation
@@ -74,7 +76,7 @@ pub(crate) enum Piece {
         ori_in: Option<OriZone>,
         ori_out: Option<OriZone>,
     },
-    Corner(Box<CornerPath>),
+    Corner(CornerPath),
 }
 
 impl PlannedMove {
@@ -95,7 +97,7 @@ impl PlannedMove {
         let seed = nearest_seed(&span.seeds, s).unwrap_or(self.end_joints);
         let (joints, tcp) = self.locate(kin, span, s, &seed);
         let tcp_speed = match &span.piece {
-            Piece::Corner(path) => match &**path {
+            Piece::Corner(path) => match path {
                 CornerPath::Tcp { curve, .. } => v * curve.speed(s),
                 CornerPath::Joint { .. } => v * self.tcp_per_unit(kin, span, s, &seed),
             },
