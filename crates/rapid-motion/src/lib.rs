@@ -9,6 +9,7 @@
 pub mod confdata;
 pub mod frames;
 pub mod kinematics;
+pub mod plan;
 pub mod pose;
 pub mod robots;
 
@@ -31,6 +32,11 @@ pub enum MotionError {
     Configuration,
     /// The path passes (too close to) a singularity the move cannot cross.
     Singularity,
+    /// MoveC's start, circle point and end point are coincident or on one line.
+    DegenerateCircle,
+    /// The motion data cannot be moved with (a zero speed for a motion that
+    /// needs it, a non-finite value); what is wrong.
+    InvalidData(&'static str),
 }
 
 impl std::fmt::Display for MotionError {
@@ -40,6 +46,8 @@ impl std::fmt::Display for MotionError {
             MotionError::JointLimit { axis } => write!(f, "joint {axis} out of range"),
             MotionError::Configuration => write!(f, "the configuration asked for cannot be reached"),
             MotionError::Singularity => write!(f, "the path passes a singularity"),
+            MotionError::DegenerateCircle => write!(f, "the circle points do not define a circle"),
+            MotionError::InvalidData(what) => write!(f, "invalid motion data: {what}"),
         }
     }
 }

@@ -1,0 +1,250 @@
+//! Path planning and timing: a queue of moves (target, speed, zone) becomes
+//! moves on a time axis with corner paths at fly-by points, and a sampler gives
+//! joints, TCP pose and TCP speed at any time.
+//!
+//! The VM pushes each move instruction as it executes. A fly-by move's corner
+//! can only be planned once the next move is known, so [`Planner::push`] hands
+//! back the *previous* move, now final; [`Planner::flush`] ends the queue (the
+//! last move stops; if it was a fly-by point that is a corner path failure).
+//!
+//! Timing model (reference motion.md §4): each path gets one speed cap — the
+//! programmed TCP speed, the reorientation speed, and every axis's maximum
+//! speed found by sampling the path with inverse kinematics — and a trapezoid
+//! profile with constant acceleration. Joint moves are measured in a joint
+//! metric where each axis is divided by its maximum speed, so the limiting axis
+//! sets the pace and all axes start and stop together.
+//!
+//! ```
+//! # use rapid_motion::{Joints, Kinematics, Pose};
+//! # struct Gantry;
+//! # impl Kinematics for Gantry {
+//! #     fn forward(&self, q: &Joints) -> Pose { Pose::translation(q[0], q[1], q[2]) }
+//! #     fn inverse(&self, p: &Pose) -> Vec<Joints> {
+//! #         let t = p.translation.vector;
+//! #         vec![[t.x, t.y, t.z, 0.0, 0.0, 0.0]]
+//! #     }
+//! #     fn limits(&self) -> [(f64, f64); 6] { [(-1e4, 1e4); 6] }
+//! #     fn max_speeds(&self) -> [f64; 6] { [1e4; 6] }
+//! # }
+//! use rapid_motion::plan::{AccelLimits, MoveRequest, Planner, SpeedData, Target, ZoneData, DEFAULT_STEP};
+//! use rapid_motion::pose::pose;
+//!
+//! let robot = Gantry;
+//! let mut planner = Planner::new([0.0; 6], AccelLimits::nominal(&robot.max_speeds()));
+//! let v1000 = SpeedData::predefined("v1000").unwrap();
+//! let tool0 = Pose::identity();
+//! let mut moves = Vec::new();
+//! for (x, zone) in [(100.0, "z10"), (200.0, "fine")] {
+//!     let target = Target::Linear(pose([x, 50.0, 0.0], [1.0, 0.0, 0.0, 0.0]));
+//!     let zone = ZoneData::predefined(zone).unwrap();
+//!     moves.extend(planner.push(&robot, &MoveRequest { target, speed: v1000, zone, tool: tool0 })?);
+//! }
+//! moves.extend(planner.flush());
+//! let trace: Vec<_> = moves.iter().flat_map(|m| m.samples(&robot, DEFAULT_STEP)).collect();
+//! assert!(moves[1].end > 0.0 && trace.iter().all(|s| s.tcp_speed <= 1000.0 + 1e-9));
+//! # Ok::<(), rapid_motion::MotionError>(())
+//! ```
+
+mod corner;
+mod data;
+mod limits;
+mod orient;
+mod path;
+mod profile;
+mod sample;
+mod segment;
+
+pub use data::{MotionSettings, SpeedData, ZoneData};
+pub use limits::AccelLimits;
+pub use sample::{PlannedMove, Sample, DEFAULT_STEP};
+pub use segment::{MoveRequest, Target};
+
+use crate::{Joints, Kinematics, MotionError};
+use corner::Corner;
+use orient::OriZone;
+use profile::Profile;
+use sample::{Piece, Span};
+use segment::Prepared;
+
+/// Plans a robot's moves one at a time, in program order.
+pub struct Planner {
+    nominal: AccelLimits,
+    settings: MotionSettings,
+    /// Where the last pushed move ends (the start of the next).
+    joints: Joints,
+    /// When the pending move starts.
+    time: f64,
+    pending: Option<Pending>,
+}
+
+/// A move pushed but not yet final: it waits for the next move to plan its
+/// corner.
+struct Pending {
+    prep: Prepared,
+    /// Where on its path it starts (after the previous corner) and how fast.
+    s_start: f64,
+    v_start: f64,
+    /// The previous corner's reorientation zone, reaching into this move.
+    ori_in: Option<OriZone>,
+}
+
+/// Where the next move takes over after a corner.
+struct Handover {
+    s_out: f64,
+    v_out: f64,
+    ori: Option<OriZone>,
+}
+
+impl Planner {
+    /// A planner for a robot standing at `start` at time 0, with the robot's
+    /// nominal accelerations (see [`AccelLimits::nominal`]).
+    pub fn new(start: Joints, nominal: AccelLimits) -> Self {
+        Planner { nominal, settings: MotionSettings::default(), joints: start, time: 0.0, pending: None }
+    }
+
+    /// The settings (AccSet, VelSet, speed override) moves are planned with.
+    pub fn settings(&self) -> &MotionSettings {
+        &self.settings
+    }
+
+    /// Changes the settings for moves pushed from now on.
+    pub fn set_settings(&mut self, settings: MotionSettings) {
+        self.settings = settings;
+    }
+
+    /// The joint values the robot ends at once every pushed move has run.
+    pub fn end_joints(&self) -> Joints {
+        self.joints
+    }
+
+    /// When the move still waiting for its successor starts; with none waiting,
+    /// when the robot stands still at the end of the last move.
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// When the waiting move would stand still at its end point if no move
+    /// followed it: the latest a fly-by point's successor can be pushed before
+    /// the robot would have to stop (a corner path failure).
+    pub fn pending_stop_time(&self) -> Option<f64> {
+        let p = self.pending.as_ref()?;
+        let limits = &p.prep.limits;
+        let own = limits.length - p.s_start;
+        Some(self.time + Profile::trapezoid(p.v_start, 0.0, limits.cap, limits.acc, own).duration)
+    }
+
+    /// Whether a move waits for its successor.
+    pub fn has_pending(&self) -> bool {
+        self.pending.is_some()
+    }
+
+    /// Adds a move. Returns the previous move, now final, if there was one. On
+    /// an error (unreachable target, zero speed, degenerate circle) nothing
+    /// changes: the previous move still waits.
+    pub fn push<K: Kinematics + ?Sized>(
+        &mut self,
+        kin: &K,
+        request: &MoveRequest,
+    ) -> Result<Option<PlannedMove>, MotionError> {
+        let prep = segment::prepare(kin, request, &self.joints, &self.settings, &self.nominal)?;
+        self.joints = prep.end_joints;
+        let Some(pending) = self.pending.take() else {
+            self.pending = Some(Pending { prep, s_start: 0.0, v_start: 0.0, ori_in: None });
+            return Ok(None);
+        };
+        let blend = corner::corner(kin, &pending.prep, &prep).and_then(|c| corner_speeds(&pending, c, &prep));
+        let (planned, handover) = self.finalize(&pending, blend);
+        self.pending = Some(match handover {
+            Some(h) => Pending { prep, s_start: h.s_out, v_start: h.v_out, ori_in: h.ori },
+            None => Pending { prep, s_start: 0.0, v_start: 0.0, ori_in: None },
+        });
+        Ok(Some(planned))
+    }
+
+    /// Ends the queue: the waiting move, if any, stops at its end point.
+    pub fn flush(&mut self) -> Option<PlannedMove> {
+        let pending = self.pending.take()?;
+        let (mut planned, _) = self.finalize(&pending, None);
+        planned.corner_path_failure = !pending.prep.zone.is_stop();
+        Some(planned)
+    }
+
+    /// Times `pending`, ending in `blend` (a corner with its entry and exit
+    /// speeds) or in a stop. Returns the planned move and where on its path and
+    /// how fast the next move takes over.
+    fn finalize(&mut self, pending: &Pending, blend: Option<(Corner, f64, f64)>) -> (PlannedMove, Option<Handover>) {
+        let prep = &pending.prep;
+        let (profiles, handover) = match &blend {
+            Some((c, v_in, v_out)) => {
+                let own = prep.limits.length.min(c.s_in) - pending.s_start;
+                let (rate_in, rate_out) = c.path.rates(v_in * c.scale_in, v_out * c.scale_out);
+                let profiles = vec![
+                    Profile::trapezoid(pending.v_start, *v_in, prep.limits.cap, prep.limits.acc, own),
+                    Profile::blend(rate_in, rate_out),
+                ];
+                (profiles, Some(Handover { s_out: c.s_out, v_out: *v_out, ori: c.path.ori_zone() }))
+            }
+            None => {
+                let own = prep.limits.length - pending.s_start;
+                (vec![Profile::trapezoid(pending.v_start, 0.0, prep.limits.cap, prep.limits.acc, own)], None)
+            }
+        };
+        (self.place(pending, blend.as_ref().map(|b| &b.0), profiles), handover)
+    }
+
+    /// Lays the profiles out on the time axis from the planner's clock.
+    fn place(&mut self, pending: &Pending, corner: Option<&Corner>, profiles: Vec<Profile>) -> PlannedMove {
+        let prep = &pending.prep;
+        let start = self.time;
+        let mut t = start;
+        let mut spans = Vec::with_capacity(2);
+        let mut profiles = profiles.into_iter();
+        if let Some(profile) = profiles.next() {
+            let s0 = pending.s_start;
+            let seeds = prep.seeds.iter().map(|(s, q)| (s - s0, *q)).collect();
+            let ori_out = corner.and_then(|c| c.path.ori_zone());
+            let piece = Piece::Own { geom: prep.geom.clone(), s0, ori_in: pending.ori_in, ori_out };
+            spans.push(Span { piece, t0: t, seeds, profile: profile.clone() });
+            t += profile.duration;
+        }
+        let zone_entry = t;
+        let mut corner_time = 0.0;
+        if let (Some(c), Some(profile)) = (corner, profiles.next()) {
+            corner_time = profile.duration;
+            spans.push(Span { piece: Piece::Corner(c.path.clone()), t0: t, seeds: c.seeds.clone(), profile });
+            t += corner_time;
+        }
+        if corner.is_none() && prep.zone.finep {
+            t += prep.accel.settle;
+        }
+        self.time = t;
+        PlannedMove {
+            start,
+            zone_entry,
+            end: t,
+            corner_time,
+            zone: corner.map_or(0.0, |c| c.zone),
+            corner_path_failure: false,
+            end_joints: prep.end_joints,
+            spans,
+            tool: prep.tool,
+        }
+    }
+}
+
+/// The speeds at a corner's entry and exit, or `None` when the corner would be
+/// walked at no speed at all (the move then stops instead).
+fn corner_speeds(pending: &Pending, c: Corner, next: &Prepared) -> Option<(Corner, f64, f64)> {
+    let (cur, own) = (&pending.prep.limits, (c.s_in - pending.s_start).max(0.0));
+    let v0 = pending.v_start;
+    // Entry: as fast as this move's cap, the corner and acceleration allow,
+    // but never slower than braking at full deceleration from the start gives.
+    let reach = (v0 * v0 + 2.0 * cur.acc * own).sqrt();
+    let brake = (v0 * v0 - 2.0 * cur.acc * own).max(0.0).sqrt();
+    let v_in = cur.cap.min(c.cap / c.scale_in).min(reach).max(brake);
+    // Exit: the next move's own successor is not known yet, so it must still be
+    // able to stop within what is left of it.
+    let left = (next.limits.length - c.s_out).max(0.0);
+    let v_out = next.limits.cap.min(c.cap / c.scale_out).min((2.0 * next.limits.acc * left).sqrt());
+    (v_in + v_out > 1e-9).then_some((c, v_in, v_out))
+}

@@ -1,0 +1,144 @@
+//! Speed profiles along a path parameter: trapezoids (accelerate, cruise,
+//! decelerate) with given start and end speeds, and the single phase of
+//! constant acceleration that walks a corner's curve parameter.
+
+/// Smallest length (in the path's unit) we treat as a move at all.
+pub(crate) const EPS_LEN: f64 = 1e-9;
+
+/// A stretch of constant acceleration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Phase {
+    t0: f64,
+    s0: f64,
+    v0: f64,
+    acc: f64,
+    dur: f64,
+}
+
+/// The speed profile over one piece of path: up to three phases of constant
+/// acceleration, from `s = 0` at `t = 0` to `s = length` at `t = duration`.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Profile {
+    phases: Vec<Phase>,
+    pub(crate) length: f64,
+    pub(crate) duration: f64,
+    pub(crate) end_speed: f64,
+}
+
+/// What a path allows: its length, its speed cap and its acceleration, all in
+/// the path's own unit (mm, ° or the joint metric).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct PieceLimits {
+    pub(crate) length: f64,
+    pub(crate) cap: f64,
+    pub(crate) acc: f64,
+}
+
+impl Profile {
+    /// The fastest profile over `length` from speed `u` to speed `w` that stays
+    /// under `cap` with acceleration `acc`. When `u` and `w` cannot be joined at
+    /// `acc` (the caller's speeds were infeasible), the piece is one phase of
+    /// whatever constant acceleration joins them: bounded, never NaN.
+    pub(crate) fn trapezoid(u: f64, w: f64, cap: f64, acc: f64, length: f64) -> Profile {
+        let clean = |x: f64| if x.is_finite() { x.max(0.0) } else { 0.0 };
+        let (u, w, length) = (clean(u), clean(w), clean(length));
+        let acc = if acc.is_finite() && acc > 0.0 { acc } else { 1.0 };
+        let cap = clean(cap).max(u).max(w).max(1e-9);
+        if length <= EPS_LEN {
+            return Profile { phases: Vec::new(), length, duration: 0.0, end_speed: w };
+        }
+        let peak = ((2.0 * acc * length + u * u + w * w) / 2.0).sqrt().min(cap);
+        if peak < u.max(w) {
+            let dur = 2.0 * length / (u + w);
+            let phase = Phase { t0: 0.0, s0: 0.0, v0: u, acc: (w - u) / dur, dur };
+            return Profile { phases: vec![phase], length, duration: dur, end_speed: w };
+        }
+        let d_up = (peak * peak - u * u) / (2.0 * acc);
+        let d_down = (peak * peak - w * w) / (2.0 * acc);
+        let d_cruise = (length - d_up - d_down).max(0.0);
+        let durs = [(peak - u) / acc, d_cruise / peak, (peak - w) / acc];
+        let mut phases = Vec::with_capacity(3);
+        let (mut t, mut s) = (0.0, 0.0);
+        for (dur, (v0, a)) in durs.into_iter().zip([(u, acc), (peak, 0.0), (peak, -acc)]) {
+            if dur > 0.0 {
+                phases.push(Phase { t0: t, s0: s, v0, acc: a, dur });
+                t += dur;
+                s += v0 * dur + 0.5 * a * dur * dur;
+            }
+        }
+        Profile { phases, length, duration: t, end_speed: w }
+    }
+
+    /// The curve parameter of a corner (0 to 1) walked with its rate changing
+    /// linearly from `rate_in` to `rate_out` (1/s): the parabolic blend of
+    /// constant acceleration when the curve is a quadratic Bézier.
+    pub(crate) fn blend(rate_in: f64, rate_out: f64) -> Profile {
+        let clean = |x: f64| if x.is_finite() { x.max(0.0) } else { 0.0 };
+        let (r0, r1) = (clean(rate_in), clean(rate_out));
+        if r0 + r1 <= 1e-12 {
+            return Profile { phases: Vec::new(), length: 1.0, duration: 0.0, end_speed: r1 };
+        }
+        let dur = 2.0 / (r0 + r1);
+        let phase = Phase { t0: 0.0, s0: 0.0, v0: r0, acc: (r1 - r0) / dur, dur };
+        Profile { phases: vec![phase], length: 1.0, duration: dur, end_speed: r1 }
+    }
+
+    /// Path position and speed at time `t` (clamped to the profile).
+    pub(crate) fn at(&self, t: f64) -> (f64, f64) {
+        let t = if t.is_finite() { t.clamp(0.0, self.duration) } else { 0.0 };
+        let Some(phase) = self.phases.iter().rev().find(|p| p.t0 <= t).or(self.phases.first()) else {
+            return (self.length, self.end_speed);
+        };
+        let tau = (t - phase.t0).clamp(0.0, phase.dur);
+        let s = phase.s0 + phase.v0 * tau + 0.5 * phase.acc * tau * tau;
+        let v = phase.v0 + phase.acc * tau;
+        (s.clamp(0.0, self.length), v.max(0.0))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: f64, b: f64) -> bool {
+        (a - b).abs() < 1e-9
+    }
+
+    #[test]
+    fn long_move_reaches_cruise() {
+        // T = L/v + v/a = 1000/1000 + 1000/10000.
+        let p = Profile::trapezoid(0.0, 0.0, 1000.0, 10_000.0, 1000.0);
+        assert!(close(p.duration, 1.1));
+        assert!(close(p.at(0.55).0, 500.0));
+        assert!(close(p.at(0.55).1, 1000.0));
+        assert_eq!(p.at(5.0), (1000.0, 0.0));
+    }
+
+    #[test]
+    fn short_move_never_cruises() {
+        // L = 10 < v²/a = 100: T = 2·√(L/a).
+        let p = Profile::trapezoid(0.0, 0.0, 1000.0, 10_000.0, 10.0);
+        assert!(close(p.duration, 2.0 * (10.0f64 / 10_000.0).sqrt()));
+        assert!(close(p.at(p.duration / 2.0).0, 5.0));
+    }
+
+    #[test]
+    fn blend_walks_the_parameter_once() {
+        // Rates 2/s and 6/s: T = 2/(2 + 6) and the parameter reaches 1.
+        let p = Profile::blend(2.0, 6.0);
+        assert!(close(p.duration, 0.25));
+        assert!(close(p.at(0.25).0, 1.0));
+        assert!(close(p.at(0.125).1, 4.0));
+        assert_eq!(Profile::blend(0.0, f64::NAN).duration, 0.0);
+    }
+
+    #[test]
+    fn degenerate_inputs_stay_finite() {
+        let p = Profile::trapezoid(f64::NAN, 0.0, 0.0, 0.0, 0.0);
+        assert_eq!((p.duration, p.at(1.0).0), (0.0, 0.0));
+        // Start faster than the piece can shed: one phase of harder braking.
+        let p = Profile::trapezoid(1000.0, 0.0, 1000.0, 10_000.0, 1.0);
+        assert!(close(p.duration, 0.002));
+        assert!(p.at(0.001).0.is_finite());
+    }
+}

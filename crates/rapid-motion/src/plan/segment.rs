@@ -1,0 +1,270 @@
+//! One move made ready for timing: its path, its length, and the speed and
+//! acceleration it may use — programmed speeds, reorientation speed and the axis
+//! speeds found by sampling the path with inverse kinematics.
+
+use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
+
+use super::data::{MotionSettings, SpeedData, ZoneData};
+use super::limits::AccelLimits;
+use super::path::{Geometry, Metric, OriLerp, Point, EPS_DEG, EPS_TCP};
+use super::profile::{PieceLimits, EPS_LEN};
+use crate::{Joints, Kinematics, MotionError, Pose};
+
+/// Where a move goes and how it interpolates.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Target {
+    /// MoveJ / MoveAbsJ: joint interpolation to these axis values (the VM has
+    /// already chosen the IK branch by confdata for a MoveJ to a robtarget).
+    Joints(Joints),
+    /// MoveL: a straight TCP line to this TCP pose, in the robot base frame.
+    Linear(Pose),
+    /// MoveC: a circle through `via` to `to` (TCP poses, base frame). The
+    /// orientation goes from the start to `to`'s; `via`'s is not used.
+    Circular { via: Pose, to: Pose },
+}
+
+/// One move instruction as the planner needs it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MoveRequest {
+    pub target: Target,
+    pub speed: SpeedData,
+    pub zone: ZoneData,
+    /// The tool frame (`tframe`): the TCP in the flange (`tool0`) frame.
+    pub tool: Pose,
+}
+
+/// A move ready for timing.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Prepared {
+    pub(crate) geom: Geometry,
+    pub(crate) limits: PieceLimits,
+    pub(crate) zone: ZoneData,
+    pub(crate) tool: Pose,
+    pub(crate) end_joints: Joints,
+    /// Joint values along a Cartesian path (path parameter, joints), which seed
+    /// the inverse kinematics when the path is sampled.
+    pub(crate) seeds: Vec<(f64, Joints)>,
+    /// TCP distance to the nearest programmed neighbour along this move (mm):
+    /// zones at either end may use at most half of it.
+    pub(crate) room: f64,
+    /// The accelerations this move was planned with (AccSet applied).
+    pub(crate) accel: AccelLimits,
+    pub(crate) max_speeds: [f64; 6],
+}
+
+/// Most IK samples taken along one path to find its axis-speed limit.
+const MAX_SAMPLES: usize = 48;
+
+/// Makes `request` ready for timing, starting from `start` joints.
+pub(crate) fn prepare<K: Kinematics + ?Sized>(
+    kin: &K,
+    request: &MoveRequest,
+    start: &Joints,
+    settings: &MotionSettings,
+    nominal: &AccelLimits,
+) -> Result<Prepared, MotionError> {
+    check_finite(request, start)?;
+    let speed = settings.effective_speed(&request.speed);
+    let accel = nominal.sanitized().scaled(settings.acc_factor());
+    let max_speeds = kin.max_speeds().map(|v| if v.is_finite() && v > 0.0 { v } else { 1.0 });
+    let ctx = Ctx { kin, tool: request.tool, speed, accel, max_speeds };
+    let start_tcp = ctx.tcp(start);
+    let mut prepared = match request.target {
+        Target::Joints(q1) => ctx.joint_move(start, q1)?,
+        Target::Linear(to) => {
+            let ori = OriLerp { from: start_tcp.rotation, to: to.rotation };
+            let geom = Geometry::Line { p0: start_tcp.translation.vector, p1: to.translation.vector, ori };
+            let room = (to.translation.vector - start_tcp.translation.vector).norm();
+            ctx.cartesian_move(geom, start, room)?
+        }
+        Target::Circular { via, to } => {
+            let (p0, pc, p1) = (start_tcp.translation.vector, via.translation.vector, to.translation.vector);
+            let ori = OriLerp { from: start_tcp.rotation, to: to.rotation };
+            let geom = Geometry::arc(p0, pc, p1, ori)?;
+            ctx.cartesian_move(geom, start, (pc - p0).norm().min((p1 - pc).norm()))?
+        }
+    };
+    prepared.zone = request.zone;
+    Ok(prepared)
+}
+
+/// What every step of preparing a move needs.
+struct Ctx<'k, K: Kinematics + ?Sized> {
+    kin: &'k K,
+    tool: Pose,
+    speed: SpeedData,
+    accel: AccelLimits,
+    max_speeds: [f64; 6],
+}
+
+impl<K: Kinematics + ?Sized> Ctx<'_, K> {
+    fn tcp(&self, joints: &Joints) -> Pose {
+        self.kin.forward(joints) * self.tool
+    }
+
+    fn prepared(&self, geom: Geometry, limits: PieceLimits, end_joints: Joints, room: f64) -> Prepared {
+        Prepared {
+            geom,
+            limits,
+            zone: ZoneData::FINE,
+            tool: self.tool,
+            end_joints,
+            seeds: Vec::new(),
+            room,
+            accel: self.accel,
+            max_speeds: self.max_speeds,
+        }
+    }
+
+    /// MoveJ / MoveAbsJ: the limiting axis sets the pace, and the TCP's straight
+    /// distance and the reorientation at the programmed speeds bound it too.
+    fn joint_move(&self, q0: &Joints, q1: Joints) -> Result<Prepared, MotionError> {
+        check_limits(&self.kin.limits(), &q1)?;
+        let weights = self.max_speeds.map(|v| 1.0 / v);
+        let geom = Geometry::Joint { q0: *q0, q1, weights };
+        let length = geom.length();
+        let (tcp0, tcp1) = (self.tcp(q0), self.tcp(&q1));
+        let room = (tcp1.translation.vector - tcp0.translation.vector).norm();
+        if length <= EPS_LEN {
+            return Ok(self.prepared(geom, PieceLimits { length: 0.0, cap: 1.0, acc: 1.0 }, q1, room));
+        }
+        // Direction in the joint metric; |dir_j| · (ds/dt) is axis j's speed as a
+        // fraction of its maximum.
+        let dir: [f64; 6] = std::array::from_fn(|j| (q1[j] - q0[j]) * weights[j] / length);
+        let mut cap = 1.0 / dir.iter().fold(0.0f64, |m, d| m.max(d.abs()));
+        let angle = tcp0.rotation.angle_to(&tcp1.rotation).to_degrees();
+        cap = cap.min(time_cap(length, room, self.speed.v_tcp, EPS_TCP, "v_tcp is zero for a move of the TCP")?);
+        cap = cap.min(time_cap(length, angle, self.speed.v_ori, EPS_DEG, "v_ori is zero for a reorientation")?);
+        let acc = (0..6)
+            .filter(|&j| dir[j] != 0.0)
+            .map(|j| self.accel.joint[j] * weights[j] / dir[j].abs())
+            .fold(f64::INFINITY, f64::min);
+        Ok(self.prepared(geom, PieceLimits { length, cap, acc }, q1, room))
+    }
+
+    /// MoveL / MoveC: TCP speed, reorientation speed and every axis's speed
+    /// (sampled with IK along the path) bound the path speed.
+    fn cartesian_move(&self, geom: Geometry, q0: &Joints, room: f64) -> Result<Prepared, MotionError> {
+        let length = geom.length();
+        let angle = geom.ori().map_or(0.0, OriLerp::angle);
+        let seeds = ik_along(self.kin, &geom, &self.tool, q0)?;
+        let end_joints = seeds.last().map_or(*q0, |(_, q)| *q);
+        if length <= EPS_LEN {
+            let limits = PieceLimits { length: 0.0, cap: 1.0, acc: 1.0 };
+            return Ok(Prepared { seeds, ..self.prepared(geom, limits, end_joints, room) });
+        }
+        let (cap, acc) = match geom.metric() {
+            Metric::Deg => {
+                if self.speed.v_ori <= 0.0 {
+                    return Err(MotionError::InvalidData("v_ori is zero for a reorientation"));
+                }
+                (self.speed.v_ori, self.accel.ori)
+            }
+            _ => {
+                if self.speed.v_tcp <= 0.0 {
+                    return Err(MotionError::InvalidData("v_tcp is zero for a move of the TCP"));
+                }
+                // Reorientation at v_ori over the same time bounds the TCP speed.
+                let ori_cap = time_cap(length, angle, self.speed.v_ori, EPS_DEG, "v_ori is zero for a reorientation")?;
+                let ori_acc = if angle > EPS_DEG { self.accel.ori * length / angle } else { f64::INFINITY };
+                (self.speed.v_tcp.min(ori_cap), self.accel.tcp.min(ori_acc))
+            }
+        };
+        let cap = cap.min(axis_cap(&seeds, &self.max_speeds));
+        Ok(Prepared { seeds, ..self.prepared(geom, PieceLimits { length, cap, acc }, end_joints, room) })
+    }
+}
+
+/// The speed (in a path's own unit) at which `amount` (mm or °) is covered at
+/// `speed` over a path of `length`: no bound when nothing of it moves.
+fn time_cap(length: f64, amount: f64, speed: f64, eps: f64, zero: &'static str) -> Result<f64, MotionError> {
+    if amount <= eps {
+        return Ok(f64::INFINITY);
+    }
+    if speed.is_nan() || speed <= 0.0 {
+        return Err(MotionError::InvalidData(zero));
+    }
+    Ok(length * speed / amount)
+}
+
+/// Joint values at evenly spaced points along a Cartesian path, each solved
+/// near the one before; the first is `q0` itself.
+pub(crate) fn ik_along<K: Kinematics + ?Sized>(
+    kin: &K,
+    geom: &Geometry,
+    tool: &Pose,
+    q0: &Joints,
+) -> Result<Vec<(f64, Joints)>, MotionError> {
+    let length = geom.length();
+    let angle = geom.ori().map_or(0.0, OriLerp::angle);
+    let tcp_len = match geom.metric() {
+        Metric::Mm => length,
+        _ => 0.0,
+    };
+    // About one sample per 20 mm or 5°, within bounds.
+    let wanted = (tcp_len / 20.0).ceil() + (angle / 5.0).ceil();
+    let n = if wanted.is_finite() { (wanted as usize).clamp(2, MAX_SAMPLES) } else { 2 };
+    let mut seeds = Vec::with_capacity(n + 1);
+    seeds.push((0.0, *q0));
+    let mut seed = *q0;
+    for i in 1..=n {
+        let s = length * i as f64 / n as f64;
+        seed = solve_at(kin, &geom.at(s), tool, &seed)?;
+        seeds.push((s, seed));
+    }
+    Ok(seeds)
+}
+
+/// The joints that put the TCP at `point`, nearest to `seed`.
+pub(crate) fn solve_at<K: Kinematics + ?Sized>(
+    kin: &K,
+    point: &Point,
+    tool: &Pose,
+    seed: &Joints,
+) -> Result<Joints, MotionError> {
+    match point {
+        Point::Joints(q) => Ok(*q),
+        Point::Tcp(p, r) => kin.inverse_near(&(tcp_pose(p, r) * tool.inverse()), seed),
+    }
+}
+
+/// A pose from a position and a rotation.
+pub(crate) fn tcp_pose(p: &Vector3<f64>, r: &UnitQuaternion<f64>) -> Pose {
+    Isometry3::from_parts(Translation3::from(*p), *r)
+}
+
+/// The highest path speed at which no axis exceeds its maximum between
+/// consecutive samples.
+pub(crate) fn axis_cap(seeds: &[(f64, Joints)], max_speeds: &[f64; 6]) -> f64 {
+    let mut cap = f64::INFINITY;
+    for pair in seeds.windows(2) {
+        let ((s0, q0), (s1, q1)) = (pair[0], pair[1]);
+        for j in 0..6 {
+            let dq = (q1[j] - q0[j]).abs();
+            if dq > 1e-12 {
+                cap = cap.min(max_speeds[j] * (s1 - s0) / dq);
+            }
+        }
+    }
+    cap
+}
+
+fn check_limits(limits: &[(f64, f64); 6], q: &Joints) -> Result<(), MotionError> {
+    match (0..6).find(|&j| !(q[j] >= limits[j].0 - 1e-9 && q[j] <= limits[j].1 + 1e-9)) {
+        Some(j) => Err(MotionError::JointLimit { axis: j + 1 }),
+        None => Ok(()),
+    }
+}
+
+fn check_finite(request: &MoveRequest, start: &Joints) -> Result<(), MotionError> {
+    let pose_ok = |p: &Pose| p.translation.vector.iter().chain(p.rotation.coords.iter()).all(|x| x.is_finite());
+    let target_ok = match &request.target {
+        Target::Joints(q) => q.iter().all(|x| x.is_finite()),
+        Target::Linear(to) => pose_ok(to),
+        Target::Circular { via, to } => pose_ok(via) && pose_ok(to),
+    };
+    if !target_ok || !pose_ok(&request.tool) || !start.iter().all(|x| x.is_finite()) {
+        return Err(MotionError::InvalidData("a target, tool or joint value is not a finite number"));
+    }
+    Ok(())
+}
