@@ -80,6 +80,24 @@ pub(crate) struct RunArgs {
     #[arg(long, value_name = "FILE")]
     pub(crate) io_log: Option<PathBuf>,
 
+    /// The robot model (`IRB120`, `IRB 4600-60/2.05`, a MOC.cfg robot type such as
+    /// `ROB1_120_0.58`). Default: the backup's MOC.cfg robot type, else IRB 120-3/0.58.
+    #[arg(long, value_name = "MODEL")]
+    pub(crate) robot: Option<String>,
+
+    /// When the program ends, write the robot's trajectory to FILE as CSV: time, axis
+    /// values, TCP position and orientation in the base frame, TCP speed.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) trace: Option<PathBuf>,
+
+    /// The trace's sample period in milliseconds (the controller's is 4).
+    #[arg(long, value_name = "MS", default_value_t = 4.0)]
+    pub(crate) sample: f64,
+
+    /// Do not print the cycle time of a program that moved the robot.
+    #[arg(long)]
+    pub(crate) quiet: bool,
+
     /// Module files, program files (.pgf) or folders, loaded together as one task.
     #[arg(required = true, value_name = "PATH")]
     pub(crate) paths: Vec<PathBuf>,

@@ -5,6 +5,7 @@ mod args;
 mod commands;
 mod elog;
 mod inputs;
+mod motion_out;
 mod render;
 mod save;
 mod stimulus;

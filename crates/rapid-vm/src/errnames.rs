@@ -119,4 +119,6 @@ errors! {
     // Motion settings and position functions (§1.7, §1.8).
     SpeedRefreshLim = "ERR_SPEED_REFRESH_LIM",
     Frame = "ERR_FRAME",
+    OutsideReach = "ERR_OUTSIDE_REACH",
+    RobLimit = "ERR_ROBLIMIT",
 }

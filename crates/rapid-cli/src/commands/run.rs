@@ -48,6 +48,14 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         eprintln!("the system has errors; it was not run");
         return Ok(ExitStatus::Failure);
     }
+    let (model, model_note) = match crate::motion_out::choose_model(args, &inputs.syspar) {
+        Ok(chosen) => chosen,
+        Err(message) => {
+            eprintln!("error: {message}");
+            return Ok(ExitStatus::Error);
+        }
+    };
+    crate::motion_out::configure(&mut loaded.vm.resources_mut().robot, model, args);
     let answers = pendant_answers(args)?;
     let mut host = StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers };
     let status = loop {
@@ -100,6 +108,9 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         }
     };
     host.flush();
+    let program_end = loaded.vm.time;
+    let robot = &mut loaded.vm.resources_mut().robot;
+    crate::motion_out::finish(robot, program_end, "T_ROB1", model_note.as_deref(), args)?;
     if args.event_log {
         for event in loaded.vm.event_log() {
             eprintln!("event {event}");

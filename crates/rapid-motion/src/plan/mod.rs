@@ -47,6 +47,7 @@
 
 mod corner;
 mod data;
+mod idle;
 mod limits;
 mod orient;
 mod path;

@@ -122,6 +122,8 @@ pub struct Resources {
     pub motion: motion::MotionState,
     /// The task's side of the RAPID Message Queue.
     pub rmq: rmq::RmqState,
+    /// The task's robot: its model, its planned motion, where it is.
+    pub robot: motion::robot::RobotState,
 }
 
 /// What the tasks of one controller share: handed to the task that runs, so each

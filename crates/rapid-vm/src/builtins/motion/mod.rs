@@ -9,9 +9,13 @@
 //! by [`MotionState::reset`], the system data by their catalogue initial values,
 //! which equal [`Settings::default`].
 
+mod data;
 mod fit;
 mod frame;
+mod moves;
 mod position;
+mod readback;
+pub mod robot;
 mod settings;
 
 use std::rc::Rc;
@@ -46,6 +50,16 @@ pub(super) static ENTRIES: Entries = &[
     ("DefFrame", fit::def_frame),
     ("DefDFrame", fit::def_d_frame),
     ("DefAccFrame", fit::def_acc_frame),
+    ("MoveJ", moves::move_j),
+    ("MoveL", moves::move_l),
+    ("MoveC", moves::move_c),
+    ("MoveAbsJ", moves::move_abs_j),
+    ("WaitRob", moves::wait_rob),
+    ("CJointT", readback::c_joint_t),
+    ("CRobT", readback::c_rob_t),
+    ("CPos", readback::c_pos),
+    ("CalcRobT", readback::calc_rob_t),
+    ("CalcJointT", readback::calc_joint_t),
 ];
 
 /// Where the motion family's system data and types are in the loaded program (set

@@ -1,0 +1,153 @@
+//! Reading RAPID motion data values (speeddata, zonedata, tooldata, wobjdata,
+//! robtarget, jointtarget) into the motion library's types, and making robtarget,
+//! jointtarget, confdata and pos values from its results.
+
+use std::rc::Rc;
+
+use nalgebra::Isometry3;
+use rapid_motion::frames::FrameChain;
+use rapid_motion::plan::{SpeedData, ZoneData};
+use rapid_motion::Joints;
+
+use super::super::Ctx;
+use super::frame;
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::{Record, Value};
+
+/// External axis values at or above this mark an axis that is not used (9E9).
+pub(super) const UNUSED_AXIS: f64 = 9e9;
+
+fn record<'v>(ctx: &Ctx<'_>, value: &'v Value, n: usize, what: &str) -> Result<&'v [Value], RapidError> {
+    match value {
+        Value::Record(r) if r.fields.len() == n => Ok(&r.fields),
+        _ => Err(ctx.error(Err::ArgValue, format!("{what} was expected"))),
+    }
+}
+
+fn number(ctx: &Ctx<'_>, value: &Value, what: &str) -> Result<f64, RapidError> {
+    value.as_f64().ok_or_else(|| ctx.error(Err::ArgValue, format!("{what}: a number was expected")))
+}
+
+fn boolean(ctx: &Ctx<'_>, value: &Value, what: &str) -> Result<bool, RapidError> {
+    match value {
+        Value::Bool(b) => Ok(*b),
+        _ => Err(ctx.error(Err::ArgValue, format!("{what}: a bool was expected"))),
+    }
+}
+
+/// `speeddata [v_tcp, v_ori, v_leax, v_reax]`.
+pub(super) fn speed(ctx: &Ctx<'_>, value: &Value) -> Result<SpeedData, RapidError> {
+    let f = record(ctx, value, 4, "a speeddata")?;
+    Ok(SpeedData {
+        v_tcp: number(ctx, &f[0], "speeddata")?,
+        v_ori: number(ctx, &f[1], "speeddata")?,
+        v_leax: number(ctx, &f[2], "speeddata")?,
+        v_reax: number(ctx, &f[3], "speeddata")?,
+    })
+}
+
+/// `zonedata [finep, pzone_tcp, pzone_ori, pzone_eax, zone_ori, zone_leax, zone_reax]`.
+pub(super) fn zone(ctx: &Ctx<'_>, value: &Value) -> Result<ZoneData, RapidError> {
+    let f = record(ctx, value, 7, "a zonedata")?;
+    let n = |i: usize| number(ctx, &f[i], "zonedata");
+    Ok(ZoneData {
+        finep: boolean(ctx, &f[0], "zonedata")?,
+        pzone_tcp: n(1)?,
+        pzone_ori: n(2)?,
+        pzone_eax: n(3)?,
+        zone_ori: n(4)?,
+        zone_leax: n(5)?,
+        zone_reax: n(6)?,
+    })
+}
+
+/// The frames of a tool (`tooldata [robhold, tframe, tload]`) and a work object
+/// (`wobjdata [robhold, ufprog, ufmec, uframe, oframe]`; wobj0 when none), with the
+/// program displacement. A moving work object (`ufprog` FALSE, coordinated with a
+/// mechanical unit) is refused: no such unit exists here.
+pub(super) fn chain(
+    ctx: &Ctx<'_>,
+    tool: &Value,
+    wobj: Option<&Value>,
+    pdisp: Isometry3<f64>,
+) -> Result<FrameChain, RapidError> {
+    let t = record(ctx, tool, 3, "a tooldata")?;
+    let tool_held = boolean(ctx, &t[0], "tooldata")?;
+    let tframe = frame::frame(ctx, &t[1])?;
+    let mut chain = FrameChain { tframe, pdisp, ..FrameChain::default() };
+    let Some(wobj) = wobj else { return Ok(chain) };
+    let w = record(ctx, wobj, 5, "a wobjdata")?;
+    let wobj_held = boolean(ctx, &w[0], "wobjdata")?;
+    if !boolean(ctx, &w[1], "wobjdata")? {
+        return Err(RapidError::fatal("a work object moved by a mechanical unit (ufprog FALSE) is not supported yet"));
+    }
+    chain.uframe = frame::frame(ctx, &w[3])?;
+    chain.oframe = frame::frame(ctx, &w[4])?;
+    chain.stationary_tool = match (tool_held, wobj_held) {
+        (true, false) => false,
+        (false, true) => true,
+        // uncertain: the controller's error for a tool and work object both held (or
+        // both fixed) is not public; execution stops.
+        _ => return Err(RapidError::fatal("the tool and the work object cannot both be held (or both fixed)")),
+    };
+    Ok(chain)
+}
+
+/// A robtarget's pose (trans, rot) and configuration (cf1, cf4, cf6, cfx).
+pub(super) fn robtarget(ctx: &Ctx<'_>, value: &Value) -> Result<(Isometry3<f64>, [i32; 4]), RapidError> {
+    let f = record(ctx, value, 4, "a robtarget")?;
+    let pose = frame::frame(ctx, value)?;
+    let c = record(ctx, &f[2], 4, "a confdata")?;
+    let mut conf = [0; 4];
+    for (slot, field) in conf.iter_mut().zip(c) {
+        *slot = number(ctx, field, "confdata")? as i32;
+    }
+    Ok((pose, conf))
+}
+
+/// A jointtarget's robot axes.
+pub(super) fn jointtarget(ctx: &Ctx<'_>, value: &Value) -> Result<Joints, RapidError> {
+    let f = record(ctx, value, 2, "a jointtarget")?;
+    let r = record(ctx, &f[0], 6, "a robjoint")?;
+    let mut joints = [0.0; 6];
+    for (slot, field) in joints.iter_mut().zip(r) {
+        *slot = number(ctx, field, "robjoint")?;
+    }
+    Ok(joints)
+}
+
+/// A record of program type `name`.
+fn make(ctx: &Ctx<'_>, name: &str, fields: Vec<Value>) -> Result<Value, RapidError> {
+    let Some(&ty) = ctx.resources.rmq.names.by_name.get(name) else {
+        return Err(RapidError::fatal(format!("the program has no type {name}")));
+    };
+    Ok(Value::Record(Rc::new(Record { ty, fields })))
+}
+
+fn nums(values: &[f64]) -> Vec<Value> {
+    values.iter().map(|&x| Value::Num(if x == 0.0 { 0.0 } else { x as f32 })).collect()
+}
+
+/// `pos [x, y, z]`.
+pub(super) fn pos_value(ctx: &Ctx<'_>, pose: &Isometry3<f64>) -> Result<Value, RapidError> {
+    let t = pose.translation.vector;
+    make(ctx, "pos", nums(&[t.x, t.y, t.z]))
+}
+
+/// `robtarget [trans, rot, robconf, extax]` with unused external axes; the orient
+/// with q1 ≥ 0.
+pub(super) fn robtarget_value(ctx: &Ctx<'_>, pose: &Isometry3<f64>, conf: [i32; 4]) -> Result<Value, RapidError> {
+    let [q1, q2, q3, q4] = rapid_motion::pose::orient(pose);
+    let rot = make(ctx, "orient", nums(&[q1, q2, q3, q4]))?;
+    let robconf = make(ctx, "confdata", nums(&conf.map(f64::from)))?;
+    let extax = make(ctx, "extjoint", nums(&[UNUSED_AXIS; 6]))?;
+    make(ctx, "robtarget", vec![pos_value(ctx, pose)?, rot, robconf, extax])
+}
+
+/// `jointtarget [robax, extax]` with unused external axes.
+pub(super) fn jointtarget_value(ctx: &Ctx<'_>, joints: &Joints) -> Result<Value, RapidError> {
+    let robax = make(ctx, "robjoint", nums(joints))?;
+    let extax = make(ctx, "extjoint", nums(&[UNUSED_AXIS; 6]))?;
+    make(ctx, "jointtarget", vec![robax, extax])
+}

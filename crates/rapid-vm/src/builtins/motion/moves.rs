@@ -1,0 +1,206 @@
+//! The move instructions (§1.8, §2.2–2.3): MoveJ, MoveL, MoveC, MoveAbsJ, and WaitRob.
+//! Each computes where the robot goes (inverse kinematics by the programmed
+//! configuration for MoveJ, ConfJ\Off the closest solution), hands the move to the
+//! task's planner and makes the program wait as the controller would: until the
+//! robot stands at a stop point, until shortly before a fly-by point, not at all
+//! with `\Conc`. Unreachable targets stop execution with the controller's motion error.
+
+use rapid_motion::confdata::{inverse_nearest, ConfMatch};
+use rapid_motion::plan::{MotionSettings, MoveRequest, Target};
+use rapid_motion::MotionError;
+
+use super::super::{present, Ctx};
+use super::data;
+use crate::error::RapidError;
+use crate::value::Value;
+
+type Res = Result<Option<Value>, RapidError>;
+
+/// Where a move instruction's arguments are.
+struct Layout {
+    conc: usize,
+    cir: Option<usize>,
+    to: usize,
+    id: usize,
+    speed: usize,
+    v: usize,
+    t: usize,
+    zone: usize,
+    z: usize,
+    inpos: usize,
+    tool: usize,
+    wobj: usize,
+    corr: Option<usize>,
+}
+
+const MOVE_J: Layout =
+    Layout { conc: 0, cir: None, to: 1, id: 2, speed: 3, v: 4, t: 5, zone: 6, z: 7, inpos: 8, tool: 9, wobj: 10, corr: None };
+const MOVE_L: Layout = Layout { corr: Some(11), ..MOVE_J };
+const MOVE_C: Layout = Layout {
+    conc: 0,
+    cir: Some(1),
+    to: 2,
+    id: 3,
+    speed: 4,
+    v: 5,
+    t: 6,
+    zone: 7,
+    z: 8,
+    inpos: 9,
+    tool: 10,
+    wobj: 11,
+    corr: Some(12),
+};
+/// MoveAbsJ has `\NoEOffs` at 3 (no external axes here, so it changes nothing).
+const MOVE_ABS_J: Layout =
+    Layout { conc: 0, cir: None, to: 1, id: 2, speed: 4, v: 5, t: 6, zone: 7, z: 8, inpos: 9, tool: 10, wobj: 11, corr: None };
+
+/// The controller's motion errors: execution stops (they are not program errors an
+/// ERROR handler can take). Event numbers as RobotWare logs them.
+// uncertain: the event numbers are from memory of RobotWare's event log.
+fn motion_error(err: MotionError) -> RapidError {
+    let text = match err {
+        MotionError::OutOfReach => "50050 Position outside reach".to_string(),
+        MotionError::JointLimit { axis } => format!("50028 Joint {axis} out of range"),
+        MotionError::Configuration => "50080 Position not compatible (the programmed configuration)".to_string(),
+        MotionError::Singularity => "50026 Close to singularity".to_string(),
+        MotionError::DegenerateCircle => "50063 Circle uncertain (the circle points are too close or on a line)".to_string(),
+        MotionError::InvalidData(what) => format!("invalid motion data: {what}"),
+    };
+    RapidError::fatal(text)
+}
+
+/// Options we do not model yet stop the program, naming themselves.
+fn refuse_unmodelled(args: &[Value], layout: &Layout) -> Result<(), RapidError> {
+    let options = [(layout.id, "\\ID (synchronized moves)"), (layout.t, "\\T (move time)"), (layout.inpos, "\\Inpos")];
+    let corr = layout.corr.map(|c| (c, "\\Corr (path correction)"));
+    for (idx, name) in options.into_iter().chain(corr) {
+        if present(args.get(idx)) {
+            return Err(RapidError::fatal(format!("{name} on a move instruction is not supported by `rapid run` yet")));
+        }
+    }
+    Ok(())
+}
+
+/// The speed and zone of a move, with `\V` and `\Z`.
+fn speed_and_zone(
+    ctx: &Ctx<'_>,
+    args: &[Value],
+    layout: &Layout,
+) -> Result<(rapid_motion::plan::SpeedData, rapid_motion::plan::ZoneData), RapidError> {
+    let mut speed = data::speed(ctx, &ctx.value(&args[layout.speed])?)?;
+    if let Some(v) = ctx.opt_num(args.get(layout.v))? {
+        speed.v_tcp = v;
+    }
+    let mut zone = data::zone(ctx, &ctx.value(&args[layout.zone])?)?;
+    if let Some(z) = ctx.opt_num(args.get(layout.z))? {
+        zone.pzone_tcp = z;
+    }
+    Ok((speed, zone))
+}
+
+/// The settings moves are planned with (VelSet, AccSet, the speed overrides).
+fn planner_settings(ctx: &Ctx<'_>) -> MotionSettings {
+    let motion = &ctx.resources.motion;
+    let s = &motion.settings;
+    MotionSettings {
+        acc: s.acc,
+        ramp: s.ramp,
+        vel_override: s.vel_override,
+        vel_max: s.vel_max,
+        speed_override: motion.operator_override * s.speed_refresh / 100.0,
+    }
+}
+
+/// Plans the move and makes the program wait until it may go on.
+fn go(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, target: Target, chain: rapid_motion::frames::FrameChain) -> Res {
+    let (speed, zone) = speed_and_zone(ctx, args, layout)?;
+    let request = MoveRequest { target, speed, zone, tool: chain.tframe };
+    let settings = planner_settings(ctx);
+    let now = ctx.time;
+    let conc = present(args.get(layout.conc));
+    let robot = &mut ctx.resources.robot;
+    robot.set_settings(settings);
+    let resume = robot.push(now, &request, conc).map_err(motion_error)?;
+    robot.active = chain;
+    if resume > now {
+        ctx.wait = Some(resume - now);
+    }
+    Ok(None)
+}
+
+/// The frames of this move: its tool and work object, and the displacement.
+fn frames(ctx: &Ctx<'_>, args: &[Value], layout: &Layout, displaced: bool) -> Result<rapid_motion::frames::FrameChain, RapidError> {
+    let tool = ctx.value(&args[layout.tool])?;
+    let wobj = if present(args.get(layout.wobj)) { Some(ctx.value(&args[layout.wobj])?) } else { None };
+    let pdisp = if displaced { ctx.resources.motion.settings.pdisp } else { nalgebra::Isometry3::identity() };
+    data::chain(ctx, &tool, wobj.as_ref(), pdisp)
+}
+
+/// `MoveJ`: joint interpolation to a robtarget, reached in its programmed
+/// configuration (ConfJ\On) or the closest one (ConfJ\Off).
+pub(crate) fn move_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    refuse_unmodelled(args, &MOVE_J)?;
+    let chain = frames(ctx, args, &MOVE_J, true)?;
+    let (pose, conf) = data::robtarget(ctx, &ctx.value(&args[MOVE_J.to])?)?;
+    let robot = &ctx.resources.robot;
+    let seed = robot.end_joints();
+    let joints = if ctx.resources.motion.settings.conf_j {
+        chain.joints_for(&robot.kin, &pose, &conf, &seed, ConfMatch::Compliant)
+    } else {
+        inverse_nearest(&robot.kin, &chain.flange_goal(&pose), &seed)
+    }
+    .map_err(motion_error)?;
+    go(ctx, args, &MOVE_J, Target::Joints(joints), chain)
+}
+
+/// `MoveL`: a straight TCP line to a robtarget.
+// uncertain: ConfL\On's check of the configuration along the path is not modelled;
+// the path keeps the configuration it starts in.
+pub(crate) fn move_l(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    refuse_unmodelled(args, &MOVE_L)?;
+    let chain = frames(ctx, args, &MOVE_L, true)?;
+    let to = tcp_in_base(ctx, &chain, &ctx.value(&args[MOVE_L.to])?)?;
+    go(ctx, args, &MOVE_L, Target::Linear(to), chain)
+}
+
+/// `MoveC`: a circle through CirPoint to ToPoint.
+pub(crate) fn move_c(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    refuse_unmodelled(args, &MOVE_C)?;
+    let chain = frames(ctx, args, &MOVE_C, true)?;
+    let via = tcp_in_base(ctx, &chain, &ctx.value(&args[MOVE_C.cir.unwrap_or(1)])?)?;
+    let to = tcp_in_base(ctx, &chain, &ctx.value(&args[MOVE_C.to])?)?;
+    go(ctx, args, &MOVE_C, Target::Circular { via, to }, chain)
+}
+
+/// A robtarget's TCP in the robot base frame (what linear and circular paths are
+/// planned in). A stationary tool's path is the work object's, which the planner
+/// does not follow yet.
+fn tcp_in_base(ctx: &Ctx<'_>, chain: &rapid_motion::frames::FrameChain, target: &Value) -> Result<rapid_motion::Pose, RapidError> {
+    if chain.stationary_tool {
+        return Err(RapidError::fatal("linear and circular moves with a stationary tool are not supported yet"));
+    }
+    let (pose, _) = data::robtarget(ctx, target)?;
+    Ok(chain.flange_goal(&pose) * chain.tframe)
+}
+
+/// `MoveAbsJ`: joint interpolation to axis values (no displacement applies).
+pub(crate) fn move_abs_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    refuse_unmodelled(args, &MOVE_ABS_J)?;
+    let chain = frames(ctx, args, &MOVE_ABS_J, false)?;
+    let joints = data::jointtarget(ctx, &ctx.value(&args[MOVE_ABS_J.to])?)?;
+    if let Some(axis) = ctx.resources.robot.kin.limit_violation(&joints) {
+        return Err(motion_error(MotionError::JointLimit { axis }));
+    }
+    go(ctx, args, &MOVE_ABS_J, Target::Joints(joints), chain)
+}
+
+/// `WaitRob [\InPos] | [\ZeroSpeed]`: waits until the robot stands still at the end of
+/// its last move.
+pub(crate) fn wait_rob(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+    let end = ctx.resources.robot.flush();
+    if end > ctx.time {
+        ctx.wait = Some(end - ctx.time);
+    }
+    Ok(None)
+}

@@ -1,0 +1,125 @@
+//! Where the robot is (§1.8): CJointT, CRobT, CPos, and the kinematics functions
+//! CalcJointT and CalcRobT. Read-backs sample the planned motion at the controller's
+//! time; without `\Tool`/`\WObj` they use the last move's tool and work object.
+
+use rapid_motion::confdata::{confdata_of, ConfMatch};
+use rapid_motion::frames::FrameChain;
+use rapid_motion::{Kinematics, MotionError};
+
+use super::super::{present, Ctx};
+use super::data;
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::Value;
+
+type Res = Result<Option<Value>, RapidError>;
+
+/// A `\TaskRef | \TaskName` naming another task: its robot is not reachable yet.
+fn own_task_only(ctx: &Ctx<'_>, args: &[Value]) -> Result<(), RapidError> {
+    if let Some(name) = args.iter().take(2).find(|a| matches!(ctx.value(a), Ok(Value::Str(_)))) {
+        let name = ctx.string(name)?;
+        super::super::tasking::check_own_task(ctx, &name, "reading another task's robot")?;
+    }
+    Ok(())
+}
+
+/// The frames a read-back uses: the given tool and work object, else the active ones.
+fn read_frames(ctx: &Ctx<'_>, tool: Option<&Value>, wobj: Option<&Value>) -> Result<FrameChain, RapidError> {
+    let active = ctx.resources.robot.active;
+    let pdisp = ctx.resources.motion.settings.pdisp;
+    let tool_value = match tool.filter(|t| present(Some(t))) {
+        Some(t) => Some(ctx.value(t)?),
+        None => None,
+    };
+    let wobj_value = match wobj.filter(|w| present(Some(w))) {
+        Some(w) => Some(ctx.value(w)?),
+        None => None,
+    };
+    match (tool_value, wobj_value) {
+        (None, None) => Ok(FrameChain { pdisp, ..active }),
+        (Some(tool), wobj) => data::chain(ctx, &tool, wobj.as_ref(), pdisp),
+        (None, Some(wobj)) => {
+            // uncertain: \WObj without \Tool reads with the active tool.
+            let mut chain = data::chain(ctx, &tool0_like(ctx)?, Some(&wobj), pdisp)?;
+            chain.tframe = active.tframe;
+            Ok(chain)
+        }
+    }
+}
+
+/// A tool0-shaped value, to read a work object's frames with.
+fn tool0_like(ctx: &Ctx<'_>) -> Result<Value, RapidError> {
+    let name = "tool0";
+    ctx.data_by_name
+        .get(name)
+        .and_then(|d| ctx.storage.globals.get(d.global as usize).cloned())
+        .ok_or_else(|| RapidError::fatal("the program has no tool0"))
+}
+
+/// `CJointT([\TaskRef] | [\TaskName])`: the axis values now.
+pub(crate) fn c_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    own_task_only(ctx, args)?;
+    let now = ctx.time;
+    let joints = ctx.resources.robot.joints_at(now);
+    Ok(Some(data::jointtarget_value(ctx, &joints)?))
+}
+
+/// `CRobT([\TaskRef] | [\TaskName] [\Tool] [\WObj])`: the robtarget the robot is at.
+pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    own_task_only(ctx, args)?;
+    let chain = read_frames(ctx, args.get(2), args.get(3))?;
+    let now = ctx.time;
+    let robot = &mut ctx.resources.robot;
+    let joints = robot.joints_at(now);
+    let pose = chain.target_of(&robot.kin.forward(&joints));
+    let conf = confdata_of(&robot.kin, &joints);
+    Ok(Some(data::robtarget_value(ctx, &pose, conf)?))
+}
+
+/// `CPos([\Tool] [\WObj])`: the TCP's position now.
+pub(crate) fn c_pos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let chain = read_frames(ctx, args.first(), args.get(1))?;
+    let now = ctx.time;
+    let robot = &mut ctx.resources.robot;
+    let joints = robot.joints_at(now);
+    let pose = chain.target_of(&robot.kin.forward(&joints));
+    Ok(Some(data::pos_value(ctx, &pose)?))
+}
+
+/// `CalcRobT(Joint_target, Tool [\WObj])`: the robtarget of axis values.
+pub(crate) fn calc_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let joints = data::jointtarget(ctx, &ctx.value(&args[0])?)?;
+    let chain = read_frames(ctx, args.get(1), args.get(2))?;
+    let (pose, conf) = chain.robtarget_of(&ctx.resources.robot.kin, &joints);
+    Ok(Some(data::robtarget_value(ctx, &pose, conf)?))
+}
+
+/// `CalcJointT([\UseCurWObjPos] Rob_target, Tool [\WObj] [\ErrorNumber])`: the axis
+/// values that reach a robtarget in its configuration. ERR_OUTSIDE_REACH when no
+/// configuration reaches it, ERR_ROBLIMIT when an axis would leave its range or the
+/// configuration cannot; with `\ErrorNumber` the number goes there instead and the
+/// current axis values are returned.
+// uncertain: what CalcJointT returns when it stores the error in \ErrorNumber.
+pub(crate) fn calc_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (pose, conf) = data::robtarget(ctx, &ctx.value(&args[1])?)?;
+    let chain = read_frames(ctx, args.get(2), args.get(3))?;
+    let now = ctx.time;
+    let seed = ctx.resources.robot.joints_at(now);
+    let found = chain.joints_for(&ctx.resources.robot.kin, &pose, &conf, &seed, ConfMatch::Compliant);
+    let error_number = args.get(4).filter(|a| present(Some(a)));
+    if let Some(var) = error_number {
+        ctx.store(var, Value::Num(0.0))?;
+    }
+    let err = match found {
+        Ok(joints) => return Ok(Some(data::jointtarget_value(ctx, &joints)?)),
+        Err(MotionError::OutOfReach) => ctx.error(Err::OutsideReach, "the robtarget is outside the robot's reach"),
+        Err(other) => ctx.error(Err::RobLimit, format!("the robtarget cannot be reached: {other}")),
+    };
+    match error_number {
+        Some(var) => {
+            ctx.store(var, Value::Num(err.errno as f32))?;
+            Ok(Some(data::jointtarget_value(ctx, &seed)?))
+        }
+        None => Err(err),
+    }
+}
