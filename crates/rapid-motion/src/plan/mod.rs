@@ -14,6 +14,13 @@
 //! metric where each axis is divided by its maximum speed, so the limiting axis
 //! sets the pace and all axes start and stop together.
 //!
+//! For the VM: after a stop point the next instruction runs at the move's
+//! `end` (settle included). After a fly-by point execution runs on; the next
+//! move must be pushed before [`Planner::pending_stop_time`] or the VM flushes
+//! (the robot stops there and the move reports `corner_path_failure`). When the
+//! logic after a fly-by point runs (spec §2.3: about 0.1 s of planning plus the
+//! servo lag before the zone, `zone_entry`) is the VM's choice.
+//!
 //! ```
 //! # use rapid_motion::{Joints, Kinematics, Pose};
 //! # struct Gantry;
