@@ -159,6 +159,9 @@ fn tcp_corner(cur: &Prepared, next: &Prepared, zone: f64) -> Option<Ends> {
     let curve = Bezier::new(a.into(), p.into(), b.into(), [1.0; 3]);
     // The reorientation zone is never smaller than the position zone, and is
     // reduced to half the neighbour distances like it (motion.md §3.2).
+    // uncertain: that pzone_ori below pzone_tcp is raised to it; and the shape
+    // of the blend (OriZone) is ours, the manual only says the orientation
+    // heads for the next point's from the start of this zone.
     let reach = cur.zone.pzone_ori.max(zone).min(cur.room / 2.0).min(next.room / 2.0);
     let ori = OriZone {
         before: *cur.geom.ori()?,
@@ -174,7 +177,8 @@ fn tcp_corner(cur: &Prepared, next: &Prepared, zone: f64) -> Option<Ends> {
 /// A joint-space parabola through the programmed point's joints. On a joint
 /// move the entry (exit) is the fraction of the move that the TCP zone is of
 /// its TCP distance; on a Cartesian move it is `zone` mm along the path,
-/// solved with IK.
+/// solved with IK. uncertain: the manual says only that a joint move's real
+/// zone "may differ somewhat" from the programmed one.
 fn joint_corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared, zone: f64) -> Option<Ends> {
     let s_in = match cur.geom.metric() {
         Metric::Joint => cur.limits.length * (1.0 - zone / cur.room),

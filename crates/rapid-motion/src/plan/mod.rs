@@ -161,6 +161,9 @@ impl Planner {
             self.pending = Some(Pending { prep, s_start: 0.0, v_start: 0.0, ori_in: None });
             return Ok(None);
         };
+        // uncertain: the corner is walked as Paul's blend (constant acceleration
+        // between the entry and exit velocities, motion.md §4.2); the
+        // controller's own speed inside the corner is not published.
         let blend = corner::corner(kin, &pending.prep, &prep).and_then(|c| corner_speeds(&pending, c, &prep));
         let (planned, handover) = self.finalize(&pending, blend);
         self.pending = Some(match handover {
