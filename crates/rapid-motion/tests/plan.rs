@@ -24,7 +24,13 @@ impl Kinematics for Gantry {
     fn inverse(&self, flange: &Pose) -> Vec<Joints> {
         let t = flange.translation.vector;
         let (x, y, z) = flange.rotation.euler_angles();
-        vec![[t.x, t.y, t.z, z.to_degrees(), y.to_degrees(), x.to_degrees()]]
+        let q = [t.x, t.y, t.z, z.to_degrees(), y.to_degrees(), x.to_degrees()];
+        let inside = q.iter().zip(self.limits()).all(|(v, (lo, hi))| (lo..=hi).contains(v));
+        if inside {
+            vec![q]
+        } else {
+            Vec::new()
+        }
     }
 
     fn limits(&self) -> [(f64, f64); 6] {
@@ -299,6 +305,8 @@ fn degenerate_inputs_give_errors_or_zero_time() {
     ));
     let zero_quat = rapid_motion::pose::pose([0.0, 0.0, 0.0], [0.0, 0.0, 0.0, 0.0]);
     assert!(matches!(planner.push(&FAST, &linear(zero_quat, 100.0, ZoneData::FINE)), Err(MotionError::InvalidData(_))));
+    let far = linear(at(2e6, 0.0, 0.0), 100.0, ZoneData::FINE);
+    assert_eq!(planner.push(&FAST, &far), Err(MotionError::OutOfReach));
     let past = MoveRequest { target: Target::Joints([0.0, 0.0, 0.0, 0.0, 95.0, 0.0]), ..same };
     assert_eq!(planner.push(&FAST, &past), Err(MotionError::JointLimit { axis: 5 }));
     assert!(planner.flush().is_none());

@@ -1,7 +1,8 @@
 //! Corner paths at fly-by points: a parabola (quadratic Bézier) from the zone
 //! entry on the incoming path, with the programmed point as control point, to
-//! the zone exit on the outgoing path — in TCP space between Cartesian moves, per
-//! joint between joint moves.
+//! the zone exit on the outgoing path — in TCP space between Cartesian moves,
+//! per joint between joint moves and across a change of interpolation type or
+//! of tool.
 
 use super::orient::OriZone;
 use super::path::{weighted_distance, Bezier, Metric, Point, EPS_TCP};
@@ -100,7 +101,7 @@ struct Ends {
 
 /// The corner between `cur` and `next`, or `None` when `cur` ends in a stop
 /// point: a `fine` zone, a zone reduced to nothing, a pure reorientation on
-/// either side, or a reversal. Between Cartesian moves with one tool the
+/// either side, a reversal, or a TCP corner that leaves the robot's reach. Between Cartesian moves with one tool the
 /// corner is a TCP parabola; across a change of interpolation type or of tool
 /// it is a joint-space parabola (§2.2.3).
 pub(crate) fn corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared) -> Option<Corner> {
@@ -131,7 +132,7 @@ pub(crate) fn corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Pre
     // The blend has constant acceleration v² · sin(θ/2) / d (motion.md §4.2).
     let half = (turn / 2.0).to_radians().sin();
     let mut cap = if half > 1e-9 { (acc * leg / half).sqrt() } else { f64::INFINITY };
-    let seeds = corner_seeds(kin, &path, cur, s_in).unwrap_or_default();
+    let seeds = corner_seeds(kin, &path, cur, s_in)?;
     let by_length: Vec<(f64, Joints)> = seeds.iter().map(|(u, q)| (path.arc_length_to(*u), *q)).collect();
     cap = cap.min(axis_cap(&by_length, &cur.max_speeds));
     if let CornerPath::Joint { curve } = &path {
@@ -158,6 +159,9 @@ fn tcp_corner(cur: &Prepared, next: &Prepared, zone: f64) -> Option<Ends> {
     let curve = Bezier::new(a.into(), p.into(), b.into(), [1.0; 3]);
     // The reorientation zone is never smaller than the position zone, and is
     // reduced to half the neighbour distances like it (motion.md §3.2).
+    // uncertain: that pzone_ori below pzone_tcp is raised to it; and the shape
+    // of the blend (OriZone) is ours, the manual only says the orientation
+    // heads for the next point's from the start of this zone.
     let reach = cur.zone.pzone_ori.max(zone).min(cur.room / 2.0).min(next.room / 2.0);
     let ori = OriZone {
         before: *cur.geom.ori()?,
@@ -173,7 +177,8 @@ fn tcp_corner(cur: &Prepared, next: &Prepared, zone: f64) -> Option<Ends> {
 /// A joint-space parabola through the programmed point's joints. On a joint
 /// move the entry (exit) is the fraction of the move that the TCP zone is of
 /// its TCP distance; on a Cartesian move it is `zone` mm along the path,
-/// solved with IK.
+/// solved with IK. uncertain: the manual says only that a joint move's real
+/// zone "may differ somewhat" from the programmed one.
 fn joint_corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared, zone: f64) -> Option<Ends> {
     let s_in = match cur.geom.metric() {
         Metric::Joint => cur.limits.length * (1.0 - zone / cur.room),

@@ -14,6 +14,13 @@
 //! metric where each axis is divided by its maximum speed, so the limiting axis
 //! sets the pace and all axes start and stop together.
 //!
+//! For the VM: after a stop point the next instruction runs at the move's
+//! `end` (settle included). After a fly-by point execution runs on; the next
+//! move must be pushed before [`Planner::pending_stop_time`] or the VM flushes
+//! (the robot stops there and the move reports `corner_path_failure`). When the
+//! logic after a fly-by point runs (spec §2.3: about 0.1 s of planning plus the
+//! servo lag before the zone, `zone_entry`) is the VM's choice.
+//!
 //! ```
 //! # use rapid_motion::{Joints, Kinematics, Pose};
 //! # struct Gantry;
@@ -68,6 +75,7 @@ use sample::{Piece, Span};
 use segment::Prepared;
 
 /// Plans a robot's moves one at a time, in program order.
+#[derive(Debug, Clone)]
 pub struct Planner {
     nominal: AccelLimits,
     settings: MotionSettings,
@@ -80,6 +88,7 @@ pub struct Planner {
 
 /// A move pushed but not yet final: it waits for the next move to plan its
 /// corner.
+#[derive(Debug, Clone)]
 struct Pending {
     prep: Prepared,
     /// Where on its path it starts (after the previous corner) and how fast.
@@ -153,6 +162,9 @@ impl Planner {
             self.pending = Some(Pending { prep, s_start: 0.0, v_start: 0.0, ori_in: None });
             return Ok(None);
         };
+        // uncertain: the corner is walked as Paul's blend (constant acceleration
+        // between the entry and exit velocities, motion.md §4.2); the
+        // controller's own speed inside the corner is not published.
         let blend = corner::corner(kin, &pending.prep, &prep).and_then(|c| corner_speeds(&pending, c, &prep));
         let (planned, handover) = self.finalize(&pending, blend);
         self.pending = Some(match handover {
@@ -170,61 +182,49 @@ impl Planner {
         Some(planned)
     }
 
-    /// Times `pending`, ending in `blend` (a corner with its entry and exit
-    /// speeds) or in a stop. Returns the planned move and where on its path and
-    /// how fast the next move takes over.
-    fn finalize(&mut self, pending: &Pending, blend: Option<(Corner, f64, f64)>) -> (PlannedMove, Option<Handover>) {
-        let prep = &pending.prep;
-        let (profiles, handover) = match &blend {
-            Some((c, v_in, v_out)) => {
-                let own = prep.limits.length.min(c.s_in) - pending.s_start;
-                let (rate_in, rate_out) = c.path.rates(v_in * c.scale_in, v_out * c.scale_out);
-                let profiles = vec![
-                    Profile::trapezoid(pending.v_start, *v_in, prep.limits.cap, prep.limits.acc, own),
-                    Profile::blend(rate_in, rate_out),
-                ];
-                (profiles, Some(Handover { s_out: c.s_out, v_out: *v_out, ori: c.path.ori_zone() }))
-            }
-            None => {
-                let own = prep.limits.length - pending.s_start;
-                (vec![Profile::trapezoid(pending.v_start, 0.0, prep.limits.cap, prep.limits.acc, own)], None)
-            }
+    /// Times `pending`, ending in `blend` or in a stop. Returns the planned
+    /// move and where on its path and how fast the next move takes over.
+    fn finalize(&mut self, pending: &Pending, blend: Option<Blend>) -> (PlannedMove, Option<Handover>) {
+        let limits = &pending.prep.limits;
+        let Some(Blend { corner, v_in, v_out }) = blend else {
+            let own = Profile::trapezoid(pending.v_start, 0.0, limits.cap, limits.acc, limits.length - pending.s_start);
+            return (self.place(pending, own, None), None);
         };
-        (self.place(pending, blend.as_ref().map(|b| &b.0), profiles), handover)
+        let own_len = limits.length.min(corner.s_in) - pending.s_start;
+        let own = Profile::trapezoid(pending.v_start, v_in, limits.cap, limits.acc, own_len);
+        let (rate_in, rate_out) = corner.path.rates(v_in * corner.scale_in, v_out * corner.scale_out);
+        let handover = Handover { s_out: corner.s_out, v_out, ori: corner.path.ori_zone() };
+        (self.place(pending, own, Some((corner, Profile::blend(rate_in, rate_out)))), Some(handover))
     }
 
-    /// Lays the profiles out on the time axis from the planner's clock.
-    fn place(&mut self, pending: &Pending, corner: Option<&Corner>, profiles: Vec<Profile>) -> PlannedMove {
+    /// Lays the move's own profile and its corner's out on the time axis from
+    /// the planner's clock, which then moves on to the move's end.
+    fn place(&mut self, pending: &Pending, own: Profile, corner: Option<(Corner, Profile)>) -> PlannedMove {
         let prep = &pending.prep;
         let start = self.time;
-        let mut t = start;
-        let mut spans = Vec::with_capacity(2);
-        let mut profiles = profiles.into_iter();
-        if let Some(profile) = profiles.next() {
-            let s0 = pending.s_start;
-            let seeds = prep.seeds.iter().map(|(s, q)| (s - s0, *q)).collect();
-            let ori_out = corner.and_then(|c| c.path.ori_zone());
-            let piece = Piece::Own { geom: prep.geom.clone(), s0, ori_in: pending.ori_in, ori_out };
-            spans.push(Span { piece, t0: t, seeds, profile: profile.clone() });
-            t += profile.duration;
+        let s0 = pending.s_start;
+        let seeds = prep.seeds.iter().map(|(s, q)| (s - s0, *q)).collect();
+        let ori_out = corner.as_ref().and_then(|(c, _)| c.path.ori_zone());
+        let piece = Piece::Own { geom: prep.geom.clone(), s0, ori_in: pending.ori_in, ori_out };
+        let zone_entry = start + own.duration;
+        let mut spans = vec![Span { piece, t0: start, seeds, profile: own }];
+        let (mut end, mut corner_time, mut zone) = (zone_entry, 0.0, 0.0);
+        match corner {
+            Some((c, profile)) => {
+                (corner_time, zone) = (profile.duration, c.zone);
+                end += corner_time;
+                spans.push(Span { piece: Piece::Corner(c.path), t0: zone_entry, seeds: c.seeds, profile });
+            }
+            None if prep.zone.finep => end += prep.accel.settle,
+            None => {}
         }
-        let zone_entry = t;
-        let mut corner_time = 0.0;
-        if let (Some(c), Some(profile)) = (corner, profiles.next()) {
-            corner_time = profile.duration;
-            spans.push(Span { piece: Piece::Corner(c.path.clone()), t0: t, seeds: c.seeds.clone(), profile });
-            t += corner_time;
-        }
-        if corner.is_none() && prep.zone.finep {
-            t += prep.accel.settle;
-        }
-        self.time = t;
+        self.time = end;
         PlannedMove {
             start,
             zone_entry,
-            end: t,
+            end,
             corner_time,
-            zone: corner.map_or(0.0, |c| c.zone),
+            zone,
             corner_path_failure: false,
             end_joints: prep.end_joints,
             spans,
@@ -233,9 +233,17 @@ impl Planner {
     }
 }
 
+/// A corner with the path speeds at its entry (in the incoming move's unit)
+/// and its exit (in the outgoing move's).
+struct Blend {
+    corner: Corner,
+    v_in: f64,
+    v_out: f64,
+}
+
 /// The speeds at a corner's entry and exit, or `None` when the corner would be
 /// walked at no speed at all (the move then stops instead).
-fn corner_speeds(pending: &Pending, c: Corner, next: &Prepared) -> Option<(Corner, f64, f64)> {
+fn corner_speeds(pending: &Pending, c: Corner, next: &Prepared) -> Option<Blend> {
     let (cur, own) = (&pending.prep.limits, (c.s_in - pending.s_start).max(0.0));
     let v0 = pending.v_start;
     // Entry: as fast as this move's cap, the corner and acceleration allow,
@@ -247,5 +255,5 @@ fn corner_speeds(pending: &Pending, c: Corner, next: &Prepared) -> Option<(Corne
     // able to stop within what is left of it.
     let left = (next.limits.length - c.s_out).max(0.0);
     let v_out = next.limits.cap.min(c.cap / c.scale_out).min((2.0 * next.limits.acc * left).sqrt());
-    (v_in + v_out > 1e-9).then_some((c, v_in, v_out))
+    (v_in + v_out > 1e-9).then_some(Blend { corner: c, v_in, v_out })
 }

@@ -118,6 +118,9 @@ impl<K: Kinematics + ?Sized> Ctx<'_, K> {
 
     /// MoveJ / MoveAbsJ: the limiting axis sets the pace, and the TCP's straight
     /// distance and the reorientation at the programmed speeds bound it too.
+    /// uncertain: how the controller turns v_tcp into a joint move's pace (the
+    /// manual: the TCP speed "cannot be the programmed value"); we bound the
+    /// move's cruise time by chord / v_tcp and angle / v_ori.
     fn joint_move(&self, q0: &Joints, q1: Joints) -> Result<Prepared, MotionError> {
         check_limits(&self.kin.limits(), &q1)?;
         let weights = self.max_speeds.map(|v| 1.0 / v);
