@@ -16,8 +16,8 @@ pub(crate) struct Cli {
 pub(crate) enum Command {
     /// Parse and check RAPID modules and report every error.
     Check(CheckArgs),
-    /// Run a RAPID program on the virtual controller (task T_ROB1).
-    Run(RunArgs),
+    /// Run a RAPID program (or every task of a backup) on the virtual controller.
+    Run(Box<RunArgs>),
     /// List every diagnostic code with its severity and meaning.
     Codes,
 }

@@ -35,7 +35,13 @@ pub(crate) fn choose_model(
     Ok(match robot_type {
         Some(ty) => match rapid_motion::find_model(&ty) {
             Some(model) => (model, None),
-            None => (default, Some(format!("MOC.cfg's robot type `{ty}` is not a model we know; {} moved (use --robot)", default.name))),
+            None => (
+                default,
+                Some(format!(
+                    "MOC.cfg's robot type `{ty}` is not a model we know; {} moved (use --robot)",
+                    default.name
+                )),
+            ),
         },
         None => (default, None),
     })
@@ -51,7 +57,13 @@ pub(crate) fn configure(robot: &mut RobotState, model: &'static rapid_motion::Ro
 
 /// After the run: the robot finishes its last move; the cycle time (program and
 /// motion, whichever ends later) is printed unless `--quiet`, and the trace written.
-pub(crate) fn finish(robot: &mut RobotState, program_end: f64, task: &str, note: Option<&str>, args: &RunArgs) -> anyhow::Result<()> {
+pub(crate) fn finish(
+    robot: &mut RobotState,
+    program_end: f64,
+    task: &str,
+    note: Option<&str>,
+    args: &RunArgs,
+) -> anyhow::Result<()> {
     let motion_end = robot.flush();
     if robot.moves == 0 {
         return Ok(());

@@ -68,6 +68,18 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         Ok(io) => io,
         Err(message) => return refuse(&message),
     };
+    let (model, model_note) = match crate::motion_out::choose_model(args, &tasks[0].inputs.syspar) {
+        Ok(chosen) => chosen,
+        Err(message) => {
+            eprintln!("error: {message}");
+            return Ok(ExitStatus::Error);
+        }
+    };
+    for (spec, program) in &mut loaded {
+        if spec.motion {
+            crate::motion_out::configure(&mut program.vm.resources_mut().robot, model, args);
+        }
+    }
     let mut controller = match Controller::new(loaded, io) {
         Ok(controller) => controller,
         Err(message) => return refuse(&message),
@@ -79,6 +91,12 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers: single::pendant_answers(args)? };
     let bounded = drive(&mut controller, &mut host, args);
     host.flush();
+    let program_end = controller.time;
+    for task in &mut controller.tasks {
+        let name = task.spec.name.clone();
+        let robot = &mut task.loaded.vm.resources_mut().robot;
+        crate::motion_out::finish(robot, program_end, &name, model_note.as_deref(), args)?;
+    }
     let status = report(&controller, &tasks, bounded);
     finish(&controller, &tasks, args)?;
     Ok(status)

@@ -33,8 +33,21 @@ struct Layout {
     corr: Option<usize>,
 }
 
-const MOVE_J: Layout =
-    Layout { conc: 0, cir: None, to: 1, id: 2, speed: 3, v: 4, t: 5, zone: 6, z: 7, inpos: 8, tool: 9, wobj: 10, corr: None };
+const MOVE_J: Layout = Layout {
+    conc: 0,
+    cir: None,
+    to: 1,
+    id: 2,
+    speed: 3,
+    v: 4,
+    t: 5,
+    zone: 6,
+    z: 7,
+    inpos: 8,
+    tool: 9,
+    wobj: 10,
+    corr: None,
+};
 const MOVE_L: Layout = Layout { corr: Some(11), ..MOVE_J };
 const MOVE_C: Layout = Layout {
     conc: 0,
@@ -52,8 +65,21 @@ const MOVE_C: Layout = Layout {
     corr: Some(12),
 };
 /// MoveAbsJ has `\NoEOffs` at 3 (no external axes here, so it changes nothing).
-const MOVE_ABS_J: Layout =
-    Layout { conc: 0, cir: None, to: 1, id: 2, speed: 4, v: 5, t: 6, zone: 7, z: 8, inpos: 9, tool: 10, wobj: 11, corr: None };
+const MOVE_ABS_J: Layout = Layout {
+    conc: 0,
+    cir: None,
+    to: 1,
+    id: 2,
+    speed: 4,
+    v: 5,
+    t: 6,
+    zone: 7,
+    z: 8,
+    inpos: 9,
+    tool: 10,
+    wobj: 11,
+    corr: None,
+};
 
 /// The controller's motion errors: execution stops (they are not program errors an
 /// ERROR handler can take). Event numbers as RobotWare logs them.
@@ -64,7 +90,9 @@ fn motion_error(err: MotionError) -> RapidError {
         MotionError::JointLimit { axis } => format!("50028 Joint {axis} out of range"),
         MotionError::Configuration => "50080 Position not compatible (the programmed configuration)".to_string(),
         MotionError::Singularity => "50026 Close to singularity".to_string(),
-        MotionError::DegenerateCircle => "50063 Circle uncertain (the circle points are too close or on a line)".to_string(),
+        MotionError::DegenerateCircle => {
+            "50063 Circle uncertain (the circle points are too close or on a line)".to_string()
+        }
         MotionError::InvalidData(what) => format!("invalid motion data: {what}"),
     };
     RapidError::fatal(text)
@@ -112,8 +140,24 @@ fn planner_settings(ctx: &Ctx<'_>) -> MotionSettings {
     }
 }
 
+/// Only a motion task (`-MotionTask`) runs move instructions (§1.20).
+fn require_motion_task(ctx: &Ctx<'_>) -> Result<(), RapidError> {
+    let tasking = &ctx.resources.tasking;
+    let me = tasking.shared.tasks.iter().find(|t| t.name.eq_ignore_ascii_case(tasking.name()));
+    if me.is_none_or(|t| t.motion) {
+        return Ok(());
+    }
+    Err(RapidError::fatal(format!("task {} is no motion task (-MotionTask): it cannot move the robot", tasking.name())))
+}
+
 /// Plans the move and makes the program wait until it may go on.
-fn go(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, target: Target, chain: rapid_motion::frames::FrameChain) -> Res {
+fn go(
+    ctx: &mut Ctx<'_>,
+    args: &[Value],
+    layout: &Layout,
+    target: Target,
+    chain: rapid_motion::frames::FrameChain,
+) -> Res {
     let (speed, zone) = speed_and_zone(ctx, args, layout)?;
     let request = MoveRequest { target, speed, zone, tool: chain.tframe };
     let settings = planner_settings(ctx);
@@ -130,7 +174,12 @@ fn go(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, target: Target, chain:
 }
 
 /// The frames of this move: its tool and work object, and the displacement.
-fn frames(ctx: &Ctx<'_>, args: &[Value], layout: &Layout, displaced: bool) -> Result<rapid_motion::frames::FrameChain, RapidError> {
+fn frames(
+    ctx: &Ctx<'_>,
+    args: &[Value],
+    layout: &Layout,
+    displaced: bool,
+) -> Result<rapid_motion::frames::FrameChain, RapidError> {
     let tool = ctx.value(&args[layout.tool])?;
     let wobj = if present(args.get(layout.wobj)) { Some(ctx.value(&args[layout.wobj])?) } else { None };
     let pdisp = if displaced { ctx.resources.motion.settings.pdisp } else { nalgebra::Isometry3::identity() };
@@ -140,6 +189,7 @@ fn frames(ctx: &Ctx<'_>, args: &[Value], layout: &Layout, displaced: bool) -> Re
 /// `MoveJ`: joint interpolation to a robtarget, reached in its programmed
 /// configuration (ConfJ\On) or the closest one (ConfJ\Off).
 pub(crate) fn move_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    require_motion_task(ctx)?;
     refuse_unmodelled(args, &MOVE_J)?;
     let chain = frames(ctx, args, &MOVE_J, true)?;
     let (pose, conf) = data::robtarget(ctx, &ctx.value(&args[MOVE_J.to])?)?;
@@ -158,6 +208,7 @@ pub(crate) fn move_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // uncertain: ConfL\On's check of the configuration along the path is not modelled;
 // the path keeps the configuration it starts in.
 pub(crate) fn move_l(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    require_motion_task(ctx)?;
     refuse_unmodelled(args, &MOVE_L)?;
     let chain = frames(ctx, args, &MOVE_L, true)?;
     let to = tcp_in_base(ctx, &chain, &ctx.value(&args[MOVE_L.to])?)?;
@@ -166,6 +217,7 @@ pub(crate) fn move_l(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `MoveC`: a circle through CirPoint to ToPoint.
 pub(crate) fn move_c(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    require_motion_task(ctx)?;
     refuse_unmodelled(args, &MOVE_C)?;
     let chain = frames(ctx, args, &MOVE_C, true)?;
     let via = tcp_in_base(ctx, &chain, &ctx.value(&args[MOVE_C.cir.unwrap_or(1)])?)?;
@@ -176,7 +228,11 @@ pub(crate) fn move_c(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// A robtarget's TCP in the robot base frame (what linear and circular paths are
 /// planned in). A stationary tool's path is the work object's, which the planner
 /// does not follow yet.
-fn tcp_in_base(ctx: &Ctx<'_>, chain: &rapid_motion::frames::FrameChain, target: &Value) -> Result<rapid_motion::Pose, RapidError> {
+fn tcp_in_base(
+    ctx: &Ctx<'_>,
+    chain: &rapid_motion::frames::FrameChain,
+    target: &Value,
+) -> Result<rapid_motion::Pose, RapidError> {
     if chain.stationary_tool {
         return Err(RapidError::fatal("linear and circular moves with a stationary tool are not supported yet"));
     }
@@ -186,6 +242,7 @@ fn tcp_in_base(ctx: &Ctx<'_>, chain: &rapid_motion::frames::FrameChain, target: 
 
 /// `MoveAbsJ`: joint interpolation to axis values (no displacement applies).
 pub(crate) fn move_abs_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    require_motion_task(ctx)?;
     refuse_unmodelled(args, &MOVE_ABS_J)?;
     let chain = frames(ctx, args, &MOVE_ABS_J, false)?;
     let joints = data::jointtarget(ctx, &ctx.value(&args[MOVE_ABS_J.to])?)?;
