@@ -98,11 +98,27 @@ pub struct TaskModule {
     pub line: u32,
 }
 
+/// One `CAB_EXEC_HOOKS` instance: an event routine (`-Routine`) run when the system
+/// event `-Shelf` (POWER_ON, START, STOP, QSTOP, RESTART, RESET, STEP) happens, in
+/// `-Task` or in every task (`-AllTask`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ExecHook {
+    pub routine: String,
+    pub shelf: String,
+    pub task: Option<String>,
+    pub all_tasks: bool,
+    pub line: u32,
+}
+
+/// The system events an event routine may be hooked to.
+pub const SHELVES: &[&str] = &["POWER_ON", "START", "STOP", "QSTOP", "RESTART", "RESET", "STEP"];
+
 /// The typed view of a SYS configuration.
 #[derive(Debug, Clone, Default)]
 pub struct Sys {
     pub tasks: Vec<Task>,
     pub modules: Vec<TaskModule>,
+    pub hooks: Vec<ExecHook>,
     pub errors: Vec<CfgError>,
 }
 
@@ -158,7 +174,46 @@ pub fn read(file: &CfgFile) -> Sys {
             line: inst.line,
         });
     }
+    read_hooks(file, &mut sys);
     sys
+}
+
+/// The event routines of `CAB_EXEC_HOOKS`.
+fn read_hooks(file: &CfgFile, sys: &mut Sys) {
+    for inst in file.instances("CAB_EXEC_HOOKS") {
+        let (Some(routine), Some(shelf)) = (inst.value("Routine"), inst.value("Shelf")) else {
+            error(file, &mut sys.errors, inst, "an event routine needs `-Routine` and `-Shelf`".to_owned());
+            continue;
+        };
+        let shelf = shelf.to_ascii_uppercase();
+        if !SHELVES.contains(&shelf.as_str()) {
+            let message = format!("unknown system event `{shelf}` (one of {})", SHELVES.join(", "));
+            error(file, &mut sys.errors, inst, message);
+            continue;
+        }
+        let task = inst.value("Task").map(str::to_owned);
+        if let Some(name) = &task {
+            if sys.task(name).is_none() {
+                error(file, &mut sys.errors, inst, format!("event routine `{routine}` names task `{name}`, which is not configured"));
+                continue;
+            }
+        }
+        sys.hooks.push(ExecHook { routine: routine.to_owned(), shelf, task, all_tasks: inst.has("AllTask"), line: inst.line });
+    }
+}
+
+impl Sys {
+    /// The event routines of `shelf` for task `task`, in configuration order. A hook
+    /// naming no task and not `-AllTask` belongs to T_ROB1.
+    // uncertain: RobotWare's default task for a hook without `-Task`.
+    pub fn hooks_for(&self, task: &str, shelf: &str) -> Vec<&str> {
+        self.hooks
+            .iter()
+            .filter(|h| h.shelf == shelf)
+            .filter(|h| h.all_tasks || h.task.as_deref().unwrap_or("T_ROB1").eq_ignore_ascii_case(task))
+            .map(|h| h.routine.as_str())
+            .collect()
+    }
 }
 
 fn error(file: &CfgFile, errors: &mut Vec<CfgError>, inst: &Instance, message: String) {

@@ -51,7 +51,6 @@ const PRODUCTS: &[(&str, &str)] = &[("RobotWare", SW_VERSION)];
 // The values of the symnum and event_type constants (catalogue data.rs).
 const OP_AUTO: f32 = 1.0;
 const RUN_CONT_CYCLE: f32 = 1.0;
-const EVENT_NONE: f32 = 0.0;
 
 /// `GetSysInfo([\SerialNo] | [\SWVersion] | ... | [\SystemName])`: one item of
 /// system information, chosen by the switch.
@@ -97,9 +96,9 @@ fn prog_mem_free(_: &mut Ctx<'_>, _: &[Value]) -> Res {
     Ok(Some(Value::Num(PROG_MEM_FREE)))
 }
 
-/// `EventType()`: EVENT_NONE; the interpreter runs no event routines.
-fn event_type(_: &mut Ctx<'_>, _: &[Value]) -> Res {
-    Ok(Some(Value::Num(EVENT_NONE)))
+/// `EventType()`: the event routine running now (EVENT_NONE outside one).
+fn event_type(ctx: &mut Ctx<'_>, _: &[Value]) -> Res {
+    Ok(Some(Value::Num(f32::from(ctx.resources.tasking.event))))
 }
 
 /// `GetNextOption(ListNumber, Name)`: the option at ListNumber (from 0) in Name and

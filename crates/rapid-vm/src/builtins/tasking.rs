@@ -98,6 +98,8 @@ pub struct TaskingState {
     /// The WaitSyncTask under way: (sync point, round it arrived in, started at,
     /// call depth, pc).
     waiting: Option<(String, u64, f64, usize, u32)>,
+    /// The event routine running now (EventType: EVENT_POWERON 1 … EVENT_STEP 7; 0 none).
+    pub event: u8,
 }
 
 impl TaskingState {

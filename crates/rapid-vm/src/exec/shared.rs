@@ -1,5 +1,5 @@
-//! What a controller of several tasks reaches into a task for: the globals it shares
-//! with other tasks (persistents) and the hand-over of the state all tasks share.
+//! What a controller reaches into a task for: the globals it shares with other tasks
+//! (persistents), the hand-over of the state all tasks share, and event routines.
 
 use super::Vm;
 use crate::value::Value;
@@ -21,5 +21,34 @@ impl Vm {
     /// before the task runs, and back after.
     pub fn exchange_shared(&mut self, shared: &mut crate::builtins::Shared) {
         self.resources.exchange_shared(shared);
+    }
+
+    /// Runs the procedure `name` (an event routine of system event `event`, 1 for
+    /// POWER_ON … 7 for STEP) to its end, moving the task's clock over its waits; the
+    /// task then starts `entry` afresh. Err with the error no handler took; Ok(false)
+    /// when the task has no such procedure.
+    pub fn run_event_routine(
+        &mut self,
+        host: &mut dyn crate::host::Host,
+        name: &str,
+        event: u8,
+        entry: u32,
+    ) -> Result<bool, super::Unhandled> {
+        let Some(&idx) = self.procs_by_name.get(&name.to_lowercase()) else { return Ok(false) };
+        if !self.start_routine(idx) {
+            return Ok(false);
+        }
+        self.resources.tasking.event = event;
+        let outcome = loop {
+            match self.run(host, u64::MAX) {
+                super::Exit::Wait(seconds) => self.time += seconds,
+                super::Exit::Budget => {}
+                super::Exit::Unhandled(unhandled) => break Err(unhandled),
+                super::Exit::Done | super::Exit::Stopped | super::Exit::CycleEnded => break Ok(true),
+            }
+        };
+        self.resources.tasking.event = 0;
+        self.start_routine(entry);
+        outcome
     }
 }
