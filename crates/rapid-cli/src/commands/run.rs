@@ -39,9 +39,8 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         Ok(loaded) => loaded,
         Err(err) => return report_load_error(err, &inputs.modules),
     };
-    // A backup's own HOME folder is the controller's HOME: device.
-    let backup_root = inputs.task.as_ref().and_then(|task| Some(task.folder.parent()?.parent()?.to_path_buf()));
-    configure_files(&mut loaded, args, &inputs.modules, backup_root);
+    // A backup's (or a manifest's) own HOME folder is the controller's HOME: device.
+    configure_files(&mut loaded, args, &inputs.modules, inputs.root.clone());
     loaded.vm.resources_mut().cfgdata.set_config(inputs.syspar.clone());
     if let Err(message) = configure_io(&mut loaded, args, &inputs.syspar) {
         eprintln!("error: {message}");
@@ -253,7 +252,9 @@ fn configure_io(
     let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read the stimulus `{shown}`: {e}"))?;
     let io = &mut loaded.vm.resources_mut().io;
     let Some(system) = &io.system else {
-        return Err(format!("`{shown}`: a stimulus needs an I/O configuration (run a backup folder)"));
+        return Err(format!(
+            "`{shown}`: a stimulus needs an I/O configuration (a backup with SYSPAR/EIO.cfg, or a manifest with `io`)"
+        ));
     };
     let (orders, reactions) = crate::stimulus::parse(&shown, &text, system)?;
     io.stimulus = orders.into();

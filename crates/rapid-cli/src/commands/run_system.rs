@@ -59,8 +59,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
                 return single::report_load_error(err, &task.inputs.modules);
             }
         };
-        let backup_root = task.inputs.task.as_ref().and_then(|t| Some(t.folder.parent()?.parent()?.to_path_buf()));
-        single::configure_files(&mut program, args, &task.inputs.modules, backup_root);
+        single::configure_files(&mut program, args, &task.inputs.modules, task.inputs.root.clone());
         program.vm.resources_mut().cfgdata.set_config(task.inputs.syspar.clone());
         loaded.push((task.spec.clone(), program));
     }
@@ -132,7 +131,7 @@ fn install_stimulus(controller: &mut Controller, args: &RunArgs) -> Result<(), S
     let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read the stimulus `{shown}`: {e}"))?;
     let io = &mut controller.shared_mut().io;
     let Some(system) = &io.system else {
-        return Err(format!("`{shown}`: a stimulus needs an I/O configuration (the backup has no EIO.cfg)"));
+        return Err(format!("`{shown}`: a stimulus needs an I/O configuration (the system has none: SYSPAR/EIO.cfg in a backup, `io` in a manifest)"));
     };
     let (orders, reactions) = crate::stimulus::parse(&shown, &text, system)?;
     io.stimulus = orders.into();
