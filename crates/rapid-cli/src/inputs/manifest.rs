@@ -187,16 +187,16 @@ impl Reader<'_> {
         }
     }
 
-    /// `home`: the HOME: folder. The file devices are subfolders of one controller
-    /// folder (`HOME`, `TEMP`, …, any letter case), so the folder must be named HOME
-    /// and its parent becomes the controller root.
+    /// `home`: the HOME: folder. The file devices are the subfolders `HOME`, `TEMP`,
+    /// `RAMDISK` and `BACKUP` of one controller folder (spelt so), so the folder must
+    /// be named HOME and its parent becomes the controller root.
     fn home(&mut self, home: &Spanned<String>) {
         let path = self.dir.join(home.get_ref());
-        let named_home = path.file_name().and_then(|n| n.to_str()).is_some_and(|n| n.eq_ignore_ascii_case("HOME"));
+        let named_home = path.file_name().and_then(|n| n.to_str()) == Some("HOME");
         if !named_home {
             let message = format!(
-                "the HOME: folder `{}` must be named HOME (any letter case): the file devices HOME:, TEMP:, \
-                 RAMDISK: and BACKUP: are folders side by side",
+                "the HOME: folder `{}` must be named HOME: the file devices HOME:, TEMP:, RAMDISK: and \
+                 BACKUP: are the folders HOME, TEMP, RAMDISK and BACKUP side by side",
                 path.display()
             );
             self.find(home.span(), message);
