@@ -430,3 +430,70 @@ fn line_of(text: &str, offset: usize) -> u32 {
     let line = text.as_bytes()[..offset].iter().filter(|&&b| b == b'\n').count() + 1;
     u32::try_from(line).unwrap_or(u32::MAX)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn project(name: &str, toml: &str) -> (PathBuf, Manifest) {
+        let dir = std::env::temp_dir().join(format!("rapid-manifest-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(dir.join("src")).unwrap();
+        std::fs::write(dir.join("src/A.mod"), "MODULE A\nENDMODULE\n").unwrap();
+        std::fs::write(dir.join("src/B.sys"), "MODULE B(SYSMODULE)\nENDMODULE\n").unwrap();
+        let path = dir.join(FILE_NAME);
+        std::fs::write(&path, toml).unwrap();
+        let manifest = read(&path, toml);
+        (dir, manifest)
+    }
+
+    #[test]
+    fn defaults_follow_the_first_task() {
+        let toml = "[[task]]\nname = \"T_ROB1\"\nmodules = [\"src\"]\n\n\
+                    [[task]]\nname = \"T_BACK\"\nmodules = [\"src/*.sys\", \"src/A.mod\"]\n";
+        let (dir, manifest) = project("defaults", toml);
+        assert_eq!(manifest.findings, []);
+        let [first, second] = &manifest.sys.tasks[..] else { panic!("two tasks") };
+        assert_eq!((first.task_type, first.motion_task, first.entry.as_str()), (TaskType::Normal, true, "main"));
+        assert_eq!((second.task_type, second.motion_task), (TaskType::SemiStatic, false));
+        assert_eq!((first.line, second.line), (1, 5));
+        assert_eq!(second.rmq, Rmq::default());
+        assert_eq!(manifest.modules[0], [dir.join("src/A.mod"), dir.join("src/B.sys")]);
+        assert_eq!(manifest.modules[1], [dir.join("src/B.sys"), dir.join("src/A.mod")]);
+        assert_eq!(manifest.root, dir);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn every_key_is_read() {
+        let toml = "[system]\nname = \"cell\"\nrobot = \"IRB120-3/0.58\"\nhome = \"run/HOME\"\n\n\
+                    [[task]]\nname = \"T_MAIN\"\ntype = \"static\"\nentry = \"go\"\nmodules = [\"src/A.mod\"]\n\
+                    motion = false\ntrust_level = \"SysHalt\"\n\
+                    rmq = { type = \"Remote\", mode = \"Synchronous\", max_msg_size = 3000, max_no_of_msg = 10 }\n\n\
+                    [[task]]\nname = \"T_BG\"\nmodules = [\"src/B.sys\"]\nforeground = \"T_MAIN\"\n";
+        let (dir, manifest) = project("keys", toml);
+        assert_eq!(manifest.findings, []);
+        assert_eq!((manifest.name.as_deref(), manifest.robot.as_deref()), (Some("cell"), Some("IRB120-3/0.58")));
+        assert_eq!(manifest.root, dir.join("run"));
+        let task = &manifest.sys.tasks[0];
+        assert_eq!((task.task_type, task.entry.as_str(), task.motion_task), (TaskType::Static, "go", false));
+        assert_eq!(task.trust_level.as_deref(), Some("SysHalt"));
+        let rmq = Rmq { rmq_type: RmqType::Remote, synchronous: true, max_msg_size: 3000, max_no_of_msg: 10 };
+        assert_eq!(task.rmq, rmq);
+        assert_eq!(manifest.sys.tasks[1].foreground.as_deref(), Some("T_MAIN"));
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn names_must_be_rapid_names() {
+        assert_eq!(identifier_problem("T_ROB1"), None);
+        assert_eq!(identifier_problem(""), Some("is empty"));
+        assert_eq!(identifier_problem("_x"), Some("does not start with a letter"));
+        assert_eq!(identifier_problem("T-1"), Some("is not a RAPID name (letters, digits and _)"));
+        assert_eq!(identifier_problem(&"a".repeat(33)), Some("is longer than 32 characters"));
+        let (dir, manifest) = project("self", "[[task]]\nname = \"T\"\nmodules = [\"src\"]\nforeground = \"t\"\n");
+        assert_eq!(manifest.findings.len(), 1);
+        assert_eq!(manifest.findings[0].message, "task `T` cannot run in its own background");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
