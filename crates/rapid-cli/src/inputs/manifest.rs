@@ -120,7 +120,7 @@ pub(crate) fn read(path: &Path, text: &str) -> Manifest {
             reader.find(span, err.message().trim_end().to_owned());
         }
     }
-    // In the order of the text, as `check` shows them; `run` shows them unsorted.
+    // In the order of the text, which is how `check` and `run` show them.
     reader.manifest.findings.sort_by_key(|finding| finding.span.start);
     reader.manifest
 }
