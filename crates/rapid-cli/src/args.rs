@@ -25,7 +25,7 @@ pub(crate) enum Command {
 #[derive(Debug, Args)]
 pub(crate) struct RunArgs {
     /// The routine to start (a PROC without parameters). Default: the task's `-Entry`
-    /// in a backup's SYS.cfg, else `main`.
+    /// in a backup's SYS.cfg or its `entry` in a rapid.toml manifest, else `main`.
     #[arg(long)]
     pub(crate) entry: Option<String>,
 
@@ -65,13 +65,15 @@ pub(crate) struct RunArgs {
     /// The controller's root folder: the file devices HOME:, TEMP:, RAMDISK: and BACKUP:
     /// are its subfolders HOME, TEMP, RAMDISK and BACKUP (made when first used). The
     /// program's files never leave it. Default: the backup folder itself when PATH is a
-    /// backup (its HOME is the controller's HOME:), else a folder `rapid-controller`
+    /// backup (its HOME is the controller's HOME:), the folder holding a manifest's
+    /// `home` (default: the manifest's own folder), else a folder `rapid-controller`
     /// beside the first PATH.
     #[arg(long, value_name = "DIR")]
     pub(crate) home: Option<PathBuf>,
 
     /// Input changes at given controller times ("at 1.5 set di1 1" per line), so
-    /// programs waiting on inputs run unattended. Needs an I/O configuration (a backup).
+    /// programs waiting on inputs run unattended. Needs an I/O configuration (a backup's
+    /// EIO.cfg or a manifest's `io`).
     #[arg(long, value_name = "FILE")]
     pub(crate) stimulus: Option<PathBuf>,
 
@@ -98,7 +100,9 @@ pub(crate) struct RunArgs {
     #[arg(long)]
     pub(crate) quiet: bool,
 
-    /// Module files, program files (.pgf) or folders, loaded together as one task.
+    /// Module files, program files (.pgf) or folders, loaded together as one task; or a
+    /// controller backup folder, or a rapid.toml manifest (or a folder holding one),
+    /// whose tasks all run.
     #[arg(required = true, value_name = "PATH")]
     pub(crate) paths: Vec<PathBuf>,
 }
@@ -114,7 +118,8 @@ pub(crate) struct CheckArgs {
     pub(crate) format: Format,
 
     /// Module files (.mod .modx .sys .sysx .prg), program files (.pgf) or folders of
-    /// modules. Everything given is checked together as one task.
+    /// modules, checked together as one task; or a controller backup folder, or a
+    /// rapid.toml manifest (or a folder holding one), whose tasks are each checked.
     #[arg(required = true, value_name = "PATH")]
     pub(crate) paths: Vec<PathBuf>,
 }

@@ -1,6 +1,7 @@
 //! Turning the PATHs of the command line into the files of one task: module files,
-//! folders of modules, `.pgf` program files and controller backup folders (whose
-//! `SYSPAR/*.cfg` configuration is read too).
+//! folders of modules, `.pgf` program files, controller backup folders (whose
+//! `SYSPAR/*.cfg` configuration is read too) and `rapid.toml` project manifests (a
+//! folder holding one is a project).
 //!
 //! A PATH that cannot be used at all (missing, unreadable, an unknown extension, a
 //! folder without modules) is a tool failure. A module that a `.pgf` lists but that
@@ -8,6 +9,8 @@
 //! entry is.
 
 mod backup;
+mod glob;
+mod manifest;
 mod program_file;
 
 use std::fs;
@@ -42,8 +45,13 @@ pub(crate) struct Inputs {
     pub(crate) predefined: Vec<PredefinedData>,
     /// The task read from a backup, when a PATH was one.
     pub(crate) task: Option<TaskFolder>,
-    /// The backup's task configuration (SYS.cfg), when it has one.
+    /// The backup's task configuration (SYS.cfg), or the manifest's tasks.
     pub(crate) sys: Option<sys::Sys>,
+    /// The controller root of a backup (the backup folder) or a manifest (the folder
+    /// holding its HOME folder): the file devices are its subfolders.
+    pub(crate) root: Option<PathBuf>,
+    /// The robot model a manifest names (`[system] robot`).
+    pub(crate) robot: Option<String>,
     /// Diagnostics found while reading the inputs. Their `file` indexes [`Inputs::table`].
     pub(crate) diagnostics: Vec<Diagnostic>,
     /// For each file of [`Inputs::table`], its place in the order the files were found,
@@ -110,8 +118,10 @@ struct Collector {
     task: Option<TaskFolder>,
     /// The backup task to read (T_ROB1 when none is named).
     wanted_task: Option<String>,
-    /// The backup's SYS configuration.
+    /// The backup's SYS configuration, or the manifest's tasks.
     sys: Option<sys::Sys>,
+    root: Option<PathBuf>,
+    robot: Option<String>,
     /// Diagnostics whose `file` is an index into `configs`.
     config_diagnostics: Vec<Diagnostic>,
     /// Canonical paths already read, so a file named twice is checked once.
@@ -122,6 +132,9 @@ impl Collector {
     fn add_path(&mut self, path: &Path) -> anyhow::Result<()> {
         let shown = path.display();
         let meta = fs::metadata(path).with_context(|| format!("cannot read `{shown}`"))?;
+        if let Some(file) = manifest::manifest_path(path) {
+            return self.add_manifest(&file);
+        }
         if meta.is_dir() {
             let tasks = backup::task_folders(path);
             if !tasks.is_empty() {
@@ -165,41 +178,13 @@ impl Collector {
     fn add_backup(&mut self, folder: &Path, tasks: &[(u32, PathBuf)]) -> anyhow::Result<()> {
         let mut sys = None;
         for path in backup::config_files(folder) {
-            let shown = path.display();
-            let bytes = fs::read(&path).with_context(|| format!("cannot read `{shown}`"))?;
-            let config_idx = self.configs.len();
-            self.order.push(FileRef::Config(config_idx));
-            self.configs.push(SourceInput::from_bytes(shown.to_string(), bytes));
-            let parsed = rapid_config::parse(&self.configs[config_idx].text);
-            self.config_findings(config_idx, &parsed.errors);
-            let domain = domain(&parsed, &path);
-            match domain.as_str() {
-                "EIO" => {
-                    let eio = eio::read(&parsed);
-                    self.config_findings(config_idx, &eio.errors);
-                    self.predefined.extend(eio.signals.iter().map(|signal| PredefinedData {
-                        name: signal.name.clone(),
-                        type_name: signal.signal_type.rapid_type().to_owned(),
-                    }));
-                }
-                "SYS" => {
-                    let view = sys::read(&parsed);
-                    self.config_findings(config_idx, &view.errors);
-                    sys = Some(view);
-                }
-                _ => {}
+            if let (_, Some(view)) = self.add_config(&path)? {
+                sys = Some(view);
             }
-            self.syspar.push((domain, parsed));
         }
         let shown = folder.display();
-        // Every task of the system is known by a taskid `<name>Id` (GetTaskName, CRobT \\TaskRef).
         if let Some(sys) = &sys {
-            self.predefined.extend(
-                sys.tasks
-                    .iter()
-                    .filter(|t| !t.name.eq_ignore_ascii_case("T_ROB1"))
-                    .map(|t| PredefinedData { name: format!("{}Id", t.name), type_name: "taskid".to_owned() }),
-            );
+            self.add_task_ids(sys);
         }
         let Some(task) = backup::choose_task(folder, tasks, sys.as_ref(), self.wanted_task.as_deref()) else {
             bail!("backup `{shown}` holds no RAPID/TASKn folder");
@@ -214,6 +199,96 @@ impl Collector {
         }
         self.task = Some(task);
         self.sys = sys;
+        self.root = Some(folder.to_path_buf());
+        Ok(())
+    }
+
+    /// Reads one configuration file: its findings, its signals (EIO) or its tasks
+    /// (SYS, returned). Returns the file's domain too.
+    fn add_config(&mut self, path: &Path) -> anyhow::Result<(String, Option<sys::Sys>)> {
+        let shown = path.display();
+        let bytes = fs::read(path).with_context(|| format!("cannot read `{shown}`"))?;
+        let config_idx = self.configs.len();
+        self.order.push(FileRef::Config(config_idx));
+        self.configs.push(SourceInput::from_bytes(shown.to_string(), bytes));
+        let parsed = rapid_config::parse(&self.configs[config_idx].text);
+        self.config_findings(config_idx, &parsed.errors);
+        let domain = domain(&parsed, path);
+        let mut sys = None;
+        match domain.as_str() {
+            "EIO" => {
+                let eio = eio::read(&parsed);
+                self.config_findings(config_idx, &eio.errors);
+                self.predefined.extend(eio.signals.iter().map(|signal| PredefinedData {
+                    name: signal.name.clone(),
+                    type_name: signal.signal_type.rapid_type().to_owned(),
+                }));
+            }
+            "SYS" => {
+                let view = sys::read(&parsed);
+                self.config_findings(config_idx, &view.errors);
+                sys = Some(view);
+            }
+            _ => {}
+        }
+        self.syspar.push((domain.clone(), parsed));
+        Ok((domain, sys))
+    }
+
+    /// Every task of the system is known by a taskid `<name>Id` (GetTaskName, CRobT \\TaskRef).
+    fn add_task_ids(&mut self, sys: &sys::Sys) {
+        self.predefined.extend(
+            sys.tasks
+                .iter()
+                .filter(|t| !t.name.eq_ignore_ascii_case("T_ROB1"))
+                .map(|t| PredefinedData { name: format!("{}Id", t.name), type_name: "taskid".to_owned() }),
+        );
+    }
+
+    /// Adds a project manifest: its findings, its I/O configuration, then the modules
+    /// of the task asked for (the first task when none is named).
+    fn add_manifest(&mut self, path: &Path) -> anyhow::Result<()> {
+        let shown = path.display();
+        let bytes = fs::read(path).with_context(|| format!("cannot read `{shown}`"))?;
+        let config_idx = self.configs.len();
+        self.order.push(FileRef::Config(config_idx));
+        self.configs.push(SourceInput::from_bytes(shown.to_string(), bytes));
+        let manifest = manifest::read(path, &self.configs[config_idx].text);
+        let mut findings = manifest.findings.clone();
+        if let Some((io, span)) = &manifest.io {
+            let (domain, _) = self.add_config(io)?;
+            if domain != "EIO" {
+                let message = format!("`{}` is a {domain} configuration, not an I/O (EIO) one", io.display());
+                findings.push(manifest::Finding { span: span.clone(), message });
+            }
+        }
+        self.config_diagnostics.extend(findings.iter().map(|finding| {
+            let span = Span::new(finding.span.start, finding.span.end);
+            Diagnostic::new(config_idx, Code::ConfigFile, span, finding.message.clone())
+        }));
+        self.add_task_ids(&manifest.sys);
+        self.root = Some(manifest.root.clone());
+        self.robot = manifest.robot.clone();
+        let wanted = match &self.wanted_task {
+            Some(name) => manifest.sys.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(name)),
+            None => (!manifest.sys.tasks.is_empty()).then_some(0),
+        };
+        let Some(idx) = wanted else {
+            if let Some(name) = &self.wanted_task {
+                bail!("manifest `{shown}` has no task `{name}`");
+            }
+            // The manifest's findings say why it has no task.
+            self.sys = Some(manifest.sys);
+            return Ok(());
+        };
+        for module in manifest.modules.get(idx).into_iter().flatten() {
+            let shown = module.display();
+            self.add_module(module).with_context(|| format!("cannot read `{shown}`"))?;
+        }
+        let task = &manifest.sys.tasks[idx];
+        let folder = path.parent().map_or_else(|| PathBuf::from("."), Path::to_path_buf);
+        self.task = Some(TaskFolder { name: task.name.clone(), folder, entry: Some(task.entry.clone()) });
+        self.sys = Some(manifest.sys);
         Ok(())
     }
 
@@ -313,6 +388,8 @@ impl Collector {
             syspar: self.syspar,
             task: self.task,
             sys: self.sys,
+            root: self.root,
+            robot: self.robot,
             diagnostics,
             rank,
         }

@@ -16,14 +16,15 @@ use crate::args::RunArgs;
 /// Most trace rows written (a day at 4 ms): a bound on a mistaken `--sample`.
 const MAX_TRACE_ROWS: usize = 21_600_000;
 
-/// The robot model the run moves: `--robot` (an unknown name is a usage error), else
-/// the MOC.cfg robot type when it is a known model, else the default. The second
+/// The robot model the run moves: `--robot`, else a manifest's `robot` (an unknown
+/// name is an error), else the MOC.cfg robot type when it is a known model, else the default. The second
 /// value is a note for the user when MOC.cfg names a type we have no model of.
 pub(crate) fn choose_model(
     args: &RunArgs,
+    manifest_robot: Option<&str>,
     syspar: &[(String, rapid_config::CfgFile)],
 ) -> Result<(&'static rapid_motion::RobotModel, Option<String>), String> {
-    if let Some(name) = &args.robot {
+    if let Some(name) = args.robot.as_deref().or(manifest_robot) {
         let known: Vec<&str> = rapid_motion::models().iter().map(|m| m.name).collect();
         return rapid_motion::find_model(name)
             .map(|m| (m, None))

@@ -406,3 +406,59 @@ fn message_queue_errors_are_the_controllers() {
         "step 1: 1118\nRMQ_T_SINK\nstep 2: 1115\nstep 3: 1117\nstep 4: 1114\nstep 5: 1116\nstep 6: 1119\ndone\n"
     );
 }
+
+/// Adds CAB_EXEC_HOOKS lines to a test system's SYS.cfg.
+fn add_hooks(root: &Path, hooks: &str) {
+    let path = root.join("SYSPAR/SYS.cfg");
+    let mut sys = fs::read_to_string(&path).expect("SYS.cfg");
+    sys.push_str(&format!("#\nCAB_EXEC_HOOKS:\n{hooks}"));
+    fs::write(path, sys).expect("SYS.cfg");
+}
+
+#[test]
+fn event_routines_run_at_power_on_start_and_stop() {
+    let dir = scratch("hooks");
+    // POWER_ON in every task (-AllTask), then T_ROB1's START; T_ROB1 stops at once
+    // (its STOP routine runs then), T_B ends a second later. EventType: EVENT_POWERON
+    // 1, EVENT_START 2, EVENT_STOP 3, EVENT_NONE 0 outside event routines.
+    let a = "MODULE A\n  PROC on_power()\n    TPWrite \"power on \" \\Num:=EventType();\n  ENDPROC\n  \
+             PROC on_start()\n    TPWrite \"start \" \\Num:=EventType();\n  ENDPROC\n  PROC on_stop()\n    \
+             TPWrite \"stop \" \\Num:=EventType();\n  ENDPROC\n  PROC main()\n    TPWrite \"main \" \\Num:=EventType();\n    \
+             Stop;\n  ENDPROC\nENDMODULE\n";
+    let b = "MODULE B\n  PROC on_power()\n    TPWrite \"b power on\";\n  ENDPROC\n  PROC main()\n    WaitTime 1;\n    \
+             TPWrite \"b done\";\n  ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: a },
+        TaskDef { name: "T_B", attrs: "-Type \"NORMAL\"", module: b },
+    ];
+    let root = system(&dir, &tasks, "");
+    add_hooks(
+        &root,
+        "\n      -Routine \"on_power\" -Shelf \"POWER_ON\" -AllTask\n\n      -Routine \"on_start\" -Shelf \"START\" -Task \"T_ROB1\"\n\n      -Routine \"on_stop\" -Shelf \"STOP\" -Task \"T_ROB1\"\n",
+    );
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "power on 1\nb power on\nstart 2\nmain 0\nstop 3\nb done\n");
+
+    // One task alone runs the same way (the single-task path).
+    let root = system(&dir, &tasks[..1], "");
+    add_hooks(
+        &root,
+        "\n      -Routine \"on_start\" -Shelf \"START\" -Task \"T_ROB1\"\n\n      -Routine \"on_stop\" -Shelf \"STOP\"\n",
+    );
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "start 2\nmain 0\nstop 3\n");
+
+    // A hook naming a procedure the task does not have: the system does not start.
+    let root = system(&dir, &tasks, "");
+    add_hooks(&root, "\n      -Routine \"missing\" -Shelf \"START\" -Task \"T_B\"\n");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(text(&out.stdout), "");
+    assert!(
+        text(&out.stderr).contains("task T_B has no procedure `missing` for its START event routine"),
+        "{}",
+        text(&out.stderr)
+    );
+}

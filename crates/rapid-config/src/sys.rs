@@ -194,11 +194,22 @@ fn read_hooks(file: &CfgFile, sys: &mut Sys) {
         let task = inst.value("Task").map(str::to_owned);
         if let Some(name) = &task {
             if sys.task(name).is_none() {
-                error(file, &mut sys.errors, inst, format!("event routine `{routine}` names task `{name}`, which is not configured"));
+                error(
+                    file,
+                    &mut sys.errors,
+                    inst,
+                    format!("event routine `{routine}` names task `{name}`, which is not configured"),
+                );
                 continue;
             }
         }
-        sys.hooks.push(ExecHook { routine: routine.to_owned(), shelf, task, all_tasks: inst.has("AllTask"), line: inst.line });
+        sys.hooks.push(ExecHook {
+            routine: routine.to_owned(),
+            shelf,
+            task,
+            all_tasks: inst.has("AllTask"),
+            line: inst.line,
+        });
     }
 }
 

@@ -83,6 +83,8 @@ pub struct Controller {
     pub steps: u64,
     /// Set when a static task's stop stopped the NORMAL tasks.
     pub system_stop: Option<SystemStop>,
+    /// Each task's STOP event routines, run when it stops (by index).
+    pub stop_routines: Vec<Vec<String>>,
 }
 
 impl Controller {
@@ -126,7 +128,8 @@ impl Controller {
             };
             built[idx].foreground = Some(fg);
         }
-        Ok(Controller { tasks: built, shared, pers, maps, time: 0.0, steps: 0, system_stop: None })
+        let stop_routines = vec![Vec::new(); built.len()];
+        Ok(Controller { tasks: built, shared, pers, maps, time: 0.0, steps: 0, system_stop: None, stop_routines })
     }
 
     /// The I/O system the tasks share (its change log), if there is one.
@@ -142,6 +145,29 @@ impl Controller {
     /// Moves the clock on (after [`SystemExit::Wait`]).
     pub fn advance(&mut self, seconds: f64) {
         self.time += seconds;
+    }
+
+    /// Runs event routine `routine` (of system event `event`) in task `idx` to its end,
+    /// with the shared state handed in; the task then starts its entry afresh. Ok(false)
+    /// when the task has no such procedure.
+    pub fn run_event_routine(
+        &mut self,
+        idx: usize,
+        host: &mut dyn Host,
+        routine: &str,
+        event: u8,
+    ) -> Result<bool, rapid_vm::Unhandled> {
+        let time = self.time;
+        let task = &mut self.tasks[idx];
+        self.pers.copy_in(idx, &mut task.pers, &mut task.loaded.vm, &self.maps);
+        task.loaded.vm.time = time;
+        task.loaded.vm.exchange_shared(&mut self.shared);
+        let entry = task.loaded.entry;
+        let outcome = task.loaded.vm.run_event_routine(host, routine, event, entry);
+        task.loaded.vm.exchange_shared(&mut self.shared);
+        self.pers.copy_out(idx, &mut task.pers, &task.loaded.vm);
+        self.time = self.time.max(self.tasks[idx].loaded.vm.time);
+        outcome
     }
 
     /// Runs at most `budget` instructions, all tasks together.
@@ -201,6 +227,20 @@ impl Controller {
             Exit::Unhandled(unhandled) => State::Ended(TaskEnd::Failed(unhandled)),
         };
         self.tasks[idx].state = state;
+        if self.tasks[idx].state == State::Ended(TaskEnd::Stopped) {
+            self.run_stop_routines(idx, host);
+        }
+    }
+
+    /// The STOP event routines of a task that stopped (EVENT_STOP, 3); an error in
+    /// one is the task's failure.
+    fn run_stop_routines(&mut self, idx: usize, host: &mut dyn Host) {
+        for routine in self.stop_routines[idx].clone() {
+            if let Err(unhandled) = self.run_event_routine(idx, host, &routine, 3) {
+                self.tasks[idx].state = State::Ended(TaskEnd::Failed(unhandled));
+                return;
+            }
+        }
     }
 
     /// The end of a task's cycle: a NORMAL task has run its one cycle; a static task

@@ -39,16 +39,15 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         Ok(loaded) => loaded,
         Err(err) => return report_load_error(err, &inputs.modules),
     };
-    // A backup's own HOME folder is the controller's HOME: device.
-    let backup_root = inputs.task.as_ref().and_then(|task| Some(task.folder.parent()?.parent()?.to_path_buf()));
-    configure_files(&mut loaded, args, &inputs.modules, backup_root);
+    // A backup's (or a manifest's) own HOME folder is the controller's HOME: device.
+    configure_files(&mut loaded, args, &inputs.modules, inputs.root.clone());
     loaded.vm.resources_mut().cfgdata.set_config(inputs.syspar.clone());
     if let Err(message) = configure_io(&mut loaded, args, &inputs.syspar) {
         eprintln!("error: {message}");
         eprintln!("the system has errors; it was not run");
         return Ok(ExitStatus::Failure);
     }
-    let (model, model_note) = match crate::motion_out::choose_model(args, &inputs.syspar) {
+    let (model, model_note) = match crate::motion_out::choose_model(args, inputs.robot.as_deref(), &inputs.syspar) {
         Ok(chosen) => chosen,
         Err(message) => {
             eprintln!("error: {message}");
@@ -58,6 +57,15 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     crate::motion_out::configure(&mut loaded.vm.resources_mut().robot, model, args);
     let answers = pendant_answers(args)?;
     let mut host = StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers };
+    let task_name = inputs.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
+    // `rapid run` is power on and a start from main: the POWER_ON, then the START
+    // event routines run first.
+    for shelf in ["POWER_ON", "START"] {
+        if let Err(failure) = run_hooks(&mut loaded, &mut host, inputs.sys.as_ref(), &task_name, shelf) {
+            host.flush();
+            return report_hook_failure(failure, &loaded, &inputs.modules);
+        }
+    }
     let status = loop {
         // Defence in depth: an interpreter bug must not take the terminal down with a
         // panic trace; it is reported as what it is.
@@ -76,7 +84,15 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         }
         match exit {
             // One cycle is run: ExitCycle ends it like the end of main.
-            Exit::Done | Exit::Stopped | Exit::CycleEnded => break ExitStatus::Success,
+            Exit::Stopped => {
+                // The STOP event routines run when the program stops.
+                if let Err(failure) = run_hooks(&mut loaded, &mut host, inputs.sys.as_ref(), &task_name, "STOP") {
+                    host.flush();
+                    return report_hook_failure(failure, &loaded, &inputs.modules);
+                }
+                break ExitStatus::Success;
+            }
+            Exit::Done | Exit::CycleEnded => break ExitStatus::Success,
             Exit::Budget => {}
             Exit::Wait(seconds) => {
                 loaded.vm.time += seconds;
@@ -128,6 +144,60 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         write_io_log(loaded.vm.io_system(), path)?;
     }
     Ok(status)
+}
+
+/// Why event routines could not run.
+pub(crate) enum HookFailure {
+    /// The configuration names a routine the task does not have.
+    Missing(String),
+    Unhandled(rapid_vm::Unhandled),
+}
+
+/// Runs the event routines of system event `shelf` configured for `task`.
+pub(crate) fn run_hooks(
+    loaded: &mut rapid_vm::Loaded,
+    host: &mut dyn rapid_vm::Host,
+    sys: Option<&rapid_config::sys::Sys>,
+    task: &str,
+    shelf: &str,
+) -> Result<(), HookFailure> {
+    let Some(sys) = sys else { return Ok(()) };
+    let event = rapid_config::sys::SHELVES.iter().position(|s| *s == shelf).map_or(0, |i| i as u8 + 1);
+    for routine in sys.hooks_for(task, shelf) {
+        match loaded.vm.run_event_routine(host, routine, event, loaded.entry) {
+            Ok(true) => {}
+            Ok(false) => {
+                return Err(HookFailure::Missing(format!(
+                    "task {task} has no procedure `{routine}` for its {shelf} event routine"
+                )))
+            }
+            Err(unhandled) => return Err(HookFailure::Unhandled(unhandled)),
+        }
+    }
+    Ok(())
+}
+
+fn report_hook_failure(
+    failure: HookFailure,
+    loaded: &rapid_vm::Loaded,
+    files: &[SourceInput],
+) -> anyhow::Result<ExitStatus> {
+    match failure {
+        HookFailure::Missing(message) => {
+            eprintln!("error: {message}");
+            eprintln!("the system has errors; it was not run");
+        }
+        HookFailure::Unhandled(unhandled) => {
+            let source = files.get(unhandled.file).or(loaded.vm.program_source(unhandled.file));
+            let (path, line, column) = match source {
+                Some(input) => location(std::slice::from_ref(input), 0, unhandled.span.start),
+                None => location(&[], 0, 0),
+            };
+            eprintln!("error: {}", unhandled.error);
+            eprintln!("  in event routine {} at {path}:{line}:{column}", unhandled.routine);
+        }
+    }
+    Ok(ExitStatus::Failure)
 }
 
 /// The operator's answers of `--tp-input`, in order.
@@ -264,7 +334,9 @@ fn configure_io(
     let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read the stimulus `{shown}`: {e}"))?;
     let io = &mut loaded.vm.resources_mut().io;
     let Some(system) = &io.system else {
-        return Err(format!("`{shown}`: a stimulus needs an I/O configuration (run a backup folder)"));
+        return Err(format!(
+            "`{shown}`: a stimulus needs an I/O configuration (a backup with SYSPAR/EIO.cfg, or a manifest with `io`)"
+        ));
     };
     let (orders, reactions) = crate::stimulus::parse(&shown, &text, system)?;
     io.stimulus = orders.into();

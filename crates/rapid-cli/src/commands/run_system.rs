@@ -59,8 +59,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
                 return single::report_load_error(err, &task.inputs.modules);
             }
         };
-        let backup_root = task.inputs.task.as_ref().and_then(|t| Some(t.folder.parent()?.parent()?.to_path_buf()));
-        single::configure_files(&mut program, args, &task.inputs.modules, backup_root);
+        single::configure_files(&mut program, args, &task.inputs.modules, task.inputs.root.clone());
         program.vm.resources_mut().cfgdata.set_config(task.inputs.syspar.clone());
         loaded.push((task.spec.clone(), program));
     }
@@ -68,13 +67,14 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         Ok(io) => io,
         Err(message) => return refuse(&message),
     };
-    let (model, model_note) = match crate::motion_out::choose_model(args, &tasks[0].inputs.syspar) {
-        Ok(chosen) => chosen,
-        Err(message) => {
-            eprintln!("error: {message}");
-            return Ok(ExitStatus::Error);
-        }
-    };
+    let (model, model_note) =
+        match crate::motion_out::choose_model(args, tasks[0].inputs.robot.as_deref(), &tasks[0].inputs.syspar) {
+            Ok(chosen) => chosen,
+            Err(message) => {
+                eprintln!("error: {message}");
+                return Ok(ExitStatus::Error);
+            }
+        };
     for (spec, program) in &mut loaded {
         if spec.motion {
             crate::motion_out::configure(&mut program.vm.resources_mut().robot, model, args);
@@ -89,6 +89,22 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     }
     let mut host =
         StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers: single::pendant_answers(args)? };
+    // Power on and a start from main: every task's POWER_ON, then START event routines;
+    // STOP event routines run when a task stops.
+    if let Err(message) = check_hooks(&controller, &sys) {
+        return refuse(&message);
+    }
+    controller.stop_routines = controller
+        .tasks
+        .iter()
+        .map(|t| sys.hooks_for(&t.spec.name, "STOP").into_iter().map(str::to_owned).collect())
+        .collect();
+    for shelf in ["POWER_ON", "START"] {
+        if let Err(message) = run_hooks(&mut controller, &mut host, &sys, shelf, |_| true) {
+            host.flush();
+            return refuse(&message);
+        }
+    }
     let bounded = drive(&mut controller, &mut host, args);
     host.flush();
     let program_end = controller.time;
@@ -100,6 +116,52 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     let status = report(&controller, &tasks, bounded);
     finish(&controller, &tasks, args)?;
     Ok(status)
+}
+
+/// Every event routine the configuration names exists in its task.
+fn check_hooks(controller: &Controller, sys: &Sys) -> Result<(), String> {
+    for task in &controller.tasks {
+        for shelf in rapid_config::sys::SHELVES {
+            for routine in sys.hooks_for(&task.spec.name, shelf) {
+                if !task.loaded.vm.has_procedure(routine) {
+                    return Err(format!(
+                        "task {} has no procedure `{routine}` for its {shelf} event routine",
+                        task.spec.name
+                    ));
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Runs the `shelf` event routines of every task `which` selects.
+fn run_hooks(
+    controller: &mut Controller,
+    host: &mut StdoutHost<'_>,
+    sys: &Sys,
+    shelf: &str,
+    which: impl Fn(usize) -> bool,
+) -> Result<(), String> {
+    let event = rapid_config::sys::SHELVES.iter().position(|s| *s == shelf).map_or(0, |i| i as u8 + 1);
+    for idx in 0..controller.tasks.len() {
+        if !which(idx) {
+            continue;
+        }
+        let name = controller.tasks[idx].spec.name.clone();
+        for routine in sys.hooks_for(&name, shelf) {
+            match controller.run_event_routine(idx, host, routine, event) {
+                Ok(_) => {}
+                Err(unhandled) => {
+                    return Err(format!(
+                        "{} in the {shelf} event routine {} of task {name}",
+                        unhandled.error, unhandled.routine
+                    ))
+                }
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The tasks of SYS.cfg in configuration order.
@@ -151,7 +213,7 @@ fn install_stimulus(controller: &mut Controller, args: &RunArgs) -> Result<(), S
     let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read the stimulus `{shown}`: {e}"))?;
     let io = &mut controller.shared_mut().io;
     let Some(system) = &io.system else {
-        return Err(format!("`{shown}`: a stimulus needs an I/O configuration (the backup has no EIO.cfg)"));
+        return Err(format!("`{shown}`: a stimulus needs an I/O configuration (the system has none: SYSPAR/EIO.cfg in a backup, `io` in a manifest)"));
     };
     let (orders, reactions) = crate::stimulus::parse(&shown, &text, system)?;
     io.stimulus = orders.into();

@@ -23,6 +23,11 @@ impl Vm {
         self.resources.exchange_shared(shared);
     }
 
+    /// Whether the task has a procedure `name` (an event routine the configuration names).
+    pub fn has_procedure(&self, name: &str) -> bool {
+        self.procs_by_name.contains_key(&name.to_lowercase())
+    }
+
     /// Runs the procedure `name` (an event routine of system event `event`, 1 for
     /// POWER_ON … 7 for STEP) to its end, moving the task's clock over its waits; the
     /// task then starts `entry` afresh. Err with the error no handler took; Ok(false)

@@ -1,0 +1,270 @@
+//! `rapid.toml` project manifests (docs/manifest.md): a manifest describes a system as
+//! a backup does, so one task runs as a single program and several run as a system.
+//! Every problem of a manifest is reported at its line and the system is not run.
+//! Expected outputs are worked out by hand from the programs and the multitasking rules.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// A fresh, empty scratch folder for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("manifest").join(name);
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    dir
+}
+
+/// Writes `files` (path relative to `dir`, content) into `dir`.
+fn write(dir: &Path, files: &[(&str, &str)]) {
+    for (path, content) in files {
+        let path = dir.join(path);
+        fs::create_dir_all(path.parent().expect("parent")).expect("folder");
+        fs::write(path, content).expect("write");
+    }
+}
+
+fn rapid_in(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rapid")).current_dir(dir).args(args).output().expect("run rapid")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// Asserts that `report` has the finding `message` at `place` (`file:line:column`).
+fn finding_at(report: &str, message: &str, place: &str) {
+    let lines: Vec<&str> = report.lines().collect();
+    let Some(at) = lines.iter().position(|l| l.starts_with("error[E0701]: ") && l.contains(message)) else {
+        panic!("no finding `{message}` in:\n{report}");
+    };
+    let next = lines.get(at + 1).copied().unwrap_or("");
+    assert!(next.trim_start().starts_with(&format!("--> {place}")), "`{message}` is not at {place}:\n{report}");
+}
+
+#[test]
+fn a_one_task_manifest_runs_with_its_home() {
+    let dir = scratch("one_task");
+    write(
+        &dir,
+        &[
+            ("proj/rapid.toml", "[[task]]\nname = \"T_ROB1\"\nmodules = [\"src\"]\n"),
+            (
+                "proj/src/Main.mod",
+                "MODULE Main\n  PROC main()\n    VAR iodev f;\n    Open \"HOME:/note.txt\", f \\Write;\n    \
+                 Write f, \"hello\";\n    Close f;\n    TPWrite \"written\";\n  ENDPROC\nENDMODULE\n",
+            ),
+        ],
+    );
+    let out = rapid_in(&dir, &["run", "proj"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "written\n");
+    // HOME: is the HOME folder beside the manifest.
+    assert_eq!(fs::read_to_string(dir.join("proj/HOME/note.txt")).expect("HOME file"), "hello\n");
+
+    // `home` moves it; the manifest file itself is a PATH too.
+    let toml = "[system]\nhome = \"data/HOME\"\n\n[[task]]\nname = \"T_ROB1\"\nmodules = [\"src/*.mod\"]\n";
+    write(&dir, &[("proj/rapid.toml", toml)]);
+    let out = rapid_in(&dir, &["run", "proj/rapid.toml"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(fs::read_to_string(dir.join("proj/data/HOME/note.txt")).expect("home file"), "hello\n");
+}
+
+/// Three tasks sharing the persistent `counter` and meeting twice. T_ROB1 sets it to
+/// 10 before the first meeting; after it, T_A reads 10 and adds 1 at once, while T_B
+/// first waits 0.5 s, so reads 11 and makes it 12; after the second meeting T_ROB1
+/// reads 12. T_B has no `type`: SEMISTATIC, started with the system.
+#[test]
+fn a_three_task_manifest_shares_persistents_and_syncs() {
+    let dir = scratch("three_tasks");
+    let shared = "  PERS num counter := 0;\n  PERS tasks all{3} := [[\"T_ROB1\"], [\"T_A\"], [\"T_B\"]];\n  \
+                  VAR syncident s1;\n  VAR syncident s2;\n";
+    let rob = format!(
+        "MODULE Rob\n{shared}  PROC main()\n    counter := 10;\n    WaitSyncTask s1, all;\n    \
+         WaitSyncTask s2, all;\n    TPWrite \"rob: counter \" \\Num:=counter;\n  ENDPROC\nENDMODULE\n"
+    );
+    let a = format!(
+        "MODULE TaskA\n{shared}  PROC a_main()\n    WaitSyncTask s1, all;\n    \
+         TPWrite \"a: counter \" \\Num:=counter;\n    counter := counter + 1;\n    WaitSyncTask s2, all;\n  \
+         ENDPROC\nENDMODULE\n"
+    );
+    let b = format!(
+        "MODULE TaskB\n{shared}  PROC b_main()\n    WaitSyncTask s1, all;\n    WaitTime 0.5;\n    \
+         TPWrite \"b: counter \" \\Num:=counter;\n    counter := counter + 1;\n    WaitSyncTask s2, all;\n  \
+         ENDPROC\nENDMODULE\n"
+    );
+    let toml = "[system]\nname = \"three\"\n\n\
+                [[task]]\nname = \"T_ROB1\"\nmodules = [\"rob/Rob.mod\"]\n\n\
+                [[task]]\nname = \"T_A\"\ntype = \"NORMAL\"\nentry = \"a_main\"\nmodules = [\"a/*.mod\"]\n\n\
+                [[task]]\nname = \"T_B\"\nentry = \"b_main\"\nmodules = [\"b\"]\n";
+    write(&dir, &[("rapid.toml", toml), ("rob/Rob.mod", &rob), ("a/TaskA.mod", &a), ("b/TaskB.mod", &b)]);
+    let out = rapid_in(&dir, &["run", "."]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "a: counter 10\nb: counter 11\nrob: counter 12\n");
+}
+
+#[test]
+fn check_reports_the_module_errors_of_every_task() {
+    let dir = scratch("check_tasks");
+    let toml = "[[task]]\nname = \"T_ROB1\"\nmodules = [\"one/One.mod\"]\n\n\
+                [[task]]\nname = \"T_TWO\"\nmodules = [\"two/Two.mod\"]\n";
+    let one = "MODULE One\n  PROC main()\n    unknownOne := 1;\n  ENDPROC\nENDMODULE\n";
+    let two = "MODULE Two\n  PROC main()\n    TPWrite \"x\";\n    unknownTwo := 2;\n  ENDPROC\nENDMODULE\n";
+    write(&dir, &[("rapid.toml", toml), ("one/One.mod", one), ("two/Two.mod", two)]);
+    let out = rapid_in(&dir, &["check", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(1));
+    let report = text(&out.stdout);
+    assert!(report.contains("one/One.mod:3:5"), "{report}");
+    assert!(report.contains("two/Two.mod:4:5"), "{report}");
+    assert!(report.contains("unknownOne") && report.contains("unknownTwo"), "{report}");
+}
+
+/// One manifest with every kind of problem the reader finds together.
+#[test]
+fn manifest_problems_are_reported_at_their_lines() {
+    let dir = scratch("problems");
+    let toml = "\
+[system]
+robot = \"\"
+io = \"missing.cfg\"
+home = \"home\"
+
+[[task]]
+name = \"T_ROB1\"
+type = \"FAST\"
+modules = [\"src/Main.mod\", \"src/Gone.mod\", \"lib/*.sys\", \"src/notes.txt\"]
+foreground = \"T_NOBODY\"
+trust_level = \"Maybe\"
+rmq = { type = \"Internal\", max_msg_size = 5000 }
+
+[[task]]
+name = \"t_rob1\"
+modules = [\"empty\"]
+";
+    let main = "MODULE Main\n  PROC main()\n  ENDPROC\nENDMODULE\n";
+    write(&dir, &[("rapid.toml", toml), ("src/Main.mod", main), ("src/notes.txt", "notes"), ("empty/x.txt", "")]);
+    fs::create_dir_all(dir.join("lib")).expect("lib");
+    let out = rapid_in(&dir, &["check", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(1));
+    let report = text(&out.stdout);
+    finding_at(&report, "`robot` is empty", "rapid.toml:2:9");
+    finding_at(&report, "the HOME: folder `home` must be named HOME", "rapid.toml:4:8");
+    finding_at(&report, "no I/O configuration file `missing.cfg`", "rapid.toml:3:6");
+    finding_at(&report, "task `T_ROB1`: unknown type `FAST` (NORMAL, STATIC or SEMISTATIC)", "rapid.toml:8:8");
+    finding_at(&report, "no module file `src/Gone.mod`", "rapid.toml:9:28");
+    finding_at(&report, "`lib/*.sys` matches no file", "rapid.toml:9:44");
+    finding_at(&report, "`src/notes.txt` is not a RAPID module file", "rapid.toml:9:57");
+    finding_at(&report, "task `T_ROB1` runs in the background of `T_NOBODY`, which is not a task", "rapid.toml:10:14");
+    finding_at(&report, "unknown trust_level `Maybe`", "rapid.toml:11:15");
+    finding_at(&report, "rmq max_msg_size 5000 is not a number from 1 to 3000", "rapid.toml:12:43");
+    finding_at(&report, "task `t_rob1` is configured twice", "rapid.toml:15:8");
+    finding_at(&report, "folder `empty` holds no RAPID module files", "rapid.toml:16:12");
+    assert!(report.contains("found 12 errors"), "{report}");
+
+    // The controller refuses to start.
+    let out = rapid_in(&dir, &["run", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stdout).is_empty());
+    let report = text(&out.stderr);
+    finding_at(&report, "task `t_rob1` is configured twice", "rapid.toml:15:8");
+    assert!(report.ends_with("the system has errors; it was not run\n"), "{report}");
+}
+
+#[test]
+fn structural_problems_stop_the_reader_at_their_line() {
+    let dir = scratch("structure");
+    let module = "MODULE Main\n  PROC main()\n  ENDPROC\nENDMODULE\n";
+    let cases = [
+        ("[system]\nname = \"x\"\nspeed = 5\n", "unknown field `speed`", "rapid.toml:3:1"),
+        (
+            "[[task]]\nname = \"T_ROB1\"\nmodules = [\"Main.mod\"]\nmotion = \"yes\"\n",
+            "invalid type",
+            "rapid.toml:4:10",
+        ),
+        ("[[task]\nname = \"T_ROB1\"\n", "unclosed array table", "rapid.toml:1:8"),
+        ("[system]\nname = \"x\"\n", "the manifest configures no task", "rapid.toml:1:1"),
+    ];
+    for (toml, message, place) in cases {
+        write(&dir, &[("rapid.toml", toml), ("Main.mod", module)]);
+        let out = rapid_in(&dir, &["check", "."]);
+        assert_eq!(out.status.code(), Some(1), "{toml}");
+        finding_at(&text(&out.stdout).replace("./rapid.toml", "rapid.toml"), message, place);
+    }
+}
+
+#[test]
+fn more_than_twenty_tasks_are_refused_at_the_twenty_first() {
+    let dir = scratch("too_many");
+    let mut toml = String::new();
+    for n in 1..=21 {
+        toml.push_str(&format!("[[task]]\nname = \"T{n}\"\nmodules = [\"Main.mod\"]\n\n"));
+    }
+    write(&dir, &[("rapid.toml", &toml), ("Main.mod", "MODULE Main\n  PROC main()\n  ENDPROC\nENDMODULE\n")]);
+    let out = rapid_in(&dir, &["check", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(1));
+    // Four lines per task: the 21st starts at line 81.
+    finding_at(&text(&out.stdout), "at most 20 tasks; 1 more are configured", "rapid.toml:81:1");
+}
+
+#[test]
+fn a_manifest_with_an_io_file_takes_a_stimulus() {
+    let dir = scratch("io");
+    let toml = "[system]\nio = \"cell.cfg\"\n\n[[task]]\nname = \"T_ROB1\"\nmodules = [\"Main.mod\"]\n";
+    let eio = "EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n      -Name \"diStart\" -SignalType \"DI\"\n\n      \
+               -Name \"doLamp\" -SignalType \"DO\"\n";
+    let module = "MODULE Main\n  PROC main()\n    WaitDI diStart, 1;\n    SetDO doLamp, 1;\n    \
+                  TPWrite \"started\";\n  ENDPROC\nENDMODULE\n";
+    write(
+        &dir,
+        &[("rapid.toml", toml), ("cell.cfg", eio), ("Main.mod", module), ("go.stim", "at 1.5 s set diStart 1\n")],
+    );
+    let out = rapid_in(&dir, &["run", "--stimulus", "go.stim", "--io-log", "io.csv", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "started\n");
+    let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
+    assert!(log.contains("1.5,diStart,0,1,"), "{log}");
+    assert!(log.contains("1.5,doLamp,0,1,Order"), "{log}");
+
+    // A bad line of the I/O file is reported in that file; the system is not run.
+    let bad = format!("{eio}\n      -Name \"aiOdd\" -SignalType \"XI\"\n");
+    write(&dir, &[("cell.cfg", &bad)]);
+    let out = rapid_in(&dir, &["run", "--stimulus", "go.stim", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(1));
+    let report = text(&out.stderr);
+    assert!(report.contains("--> cell.cfg:9:33"), "{report}");
+    assert!(report.ends_with("the system has errors; it was not run\n"), "{report}");
+}
+
+fn copy_dir(from: &Path, to: &Path) {
+    fs::create_dir_all(to).expect("folder");
+    for entry in fs::read_dir(from).expect("read folder") {
+        let entry = entry.expect("entry");
+        let target = to.join(entry.file_name());
+        if entry.path().is_dir() {
+            copy_dir(&entry.path(), &target);
+        } else {
+            fs::copy(entry.path(), &target).expect("copy");
+        }
+    }
+}
+
+/// examples/press_cell_project is examples/press_cell written as a manifest: both
+/// give the same run, line for line, and the same signal log.
+#[test]
+fn the_press_cell_project_runs_like_the_backup() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let dir = scratch("press_cell");
+    copy_dir(&root.join("examples/press_cell"), &dir.join("backup"));
+    copy_dir(&root.join("examples/press_cell_project"), &dir.join("project"));
+    fs::copy(root.join("examples/press_cell.stimulus"), dir.join("cell.stim")).expect("stimulus");
+    let backup = rapid_in(&dir, &["run", "--stimulus", "cell.stim", "--io-log", "backup.csv", "backup"]);
+    let project = rapid_in(&dir, &["run", "--stimulus", "cell.stim", "--io-log", "project.csv", "project"]);
+    assert_eq!(backup.status.code(), Some(0), "{}", text(&backup.stderr));
+    assert_eq!(project.status.code(), Some(0), "{}", text(&project.stderr));
+    assert_eq!(text(&project.stdout), text(&backup.stdout));
+    assert!(text(&project.stdout).ends_with("press: 3 parts pressed\n"));
+    let read = |name: &str| fs::read_to_string(dir.join(name)).expect("io log");
+    assert_eq!(read("project.csv"), read("backup.csv"));
+    let check = rapid_in(&dir, &["check", "project"]);
+    assert_eq!(check.status.code(), Some(0), "{}", text(&check.stdout));
+}
