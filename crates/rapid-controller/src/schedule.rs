@@ -92,7 +92,13 @@ impl Controller {
     pub fn new(tasks: Vec<(TaskSpec, Loaded)>, io: Option<rapid_io::IoSystem>) -> Result<Controller, String> {
         let infos = tasks
             .iter()
-            .map(|(spec, _)| TaskInfo { name: spec.name.clone(), motion: spec.motion, active: true, executing: true })
+            .map(|(spec, _)| TaskInfo {
+                name: spec.name.clone(),
+                motion: spec.motion,
+                normal: spec.kind == TaskKind::Normal,
+                active: true,
+                executing: true,
+            })
             .collect();
         let mut shared = Shared { tasking: SharedTasking::new(infos), ..Shared::default() };
         shared.io.system = io;
@@ -195,6 +201,11 @@ impl Controller {
             Exit::Unhandled(unhandled) => State::Ended(TaskEnd::Failed(unhandled)),
         };
         self.tasks[idx].state = state;
+        // WarmStart restarts the whole controller: every task stops with the one that
+        // asked (the caller reports the restart and ends the run).
+        if self.tasks[idx].loaded.vm.resources_mut().controller.warm_start {
+            self.halt_the_rest();
+        }
     }
 
     /// The end of a task's cycle: a NORMAL task has run its one cycle; a static task

@@ -62,6 +62,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         let backup_root = task.inputs.task.as_ref().and_then(|t| Some(t.folder.parent()?.parent()?.to_path_buf()));
         single::configure_files(&mut program, args, &task.inputs.modules, backup_root);
         program.vm.resources_mut().cfgdata.set_config(task.inputs.syspar.clone());
+        program.vm.resources_mut().controller = args.controller_state();
         loaded.push((task.spec.clone(), program));
     }
     let io = match io_system(&tasks[0].inputs) {
@@ -79,6 +80,9 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers: single::pendant_answers(args)? };
     let bounded = drive(&mut controller, &mut host, args);
     host.flush();
+    if controller.tasks.iter_mut().any(|task| task.loaded.vm.resources_mut().controller.warm_start) {
+        eprintln!("{}", single::WARM_START);
+    }
     let status = report(&controller, &tasks, bounded);
     finish(&controller, &tasks, args)?;
     Ok(status)

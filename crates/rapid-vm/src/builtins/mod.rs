@@ -8,6 +8,7 @@ mod bits;
 mod calendar;
 pub mod cfgdata;
 mod clock;
+pub mod controller;
 mod dialogs;
 mod dnheader;
 mod events;
@@ -119,6 +120,8 @@ pub struct Resources {
     pub tasking: tasking::TaskingState,
     /// The motion settings (reset to their defaults at PP to Main).
     pub motion: motion::MotionState,
+    /// The operating mode, speed override and PP flags (kept at PP to Main).
+    pub controller: controller::ControllerState,
 }
 
 /// What the tasks of one controller share: handed to the task that runs, so each
@@ -291,6 +294,7 @@ static FAMILIES: &[Entries] = &[
     cfgdata::ENTRIES,
     tasking::ENTRIES,
     motion::ENTRIES,
+    controller::ENTRIES,
 ];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =

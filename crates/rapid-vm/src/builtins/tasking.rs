@@ -27,6 +27,8 @@ pub struct TaskInfo {
     pub name: String,
     /// Runs motion instructions (`-MotionTask`): TaskRunRob, TaskRunMec.
     pub motion: bool,
+    /// A NORMAL task (not STATIC or SEMISTATIC): GetTSPStatus.
+    pub normal: bool,
     /// Selected in the task selection panel (TaskIsActive); every configured task is.
     pub active: bool,
     /// Executing now (started, not stopped or ended): TaskIsExecuting.
@@ -53,7 +55,7 @@ pub struct SharedTasking {
 impl Default for SharedTasking {
     /// A system of one task, T_ROB1, moving the robot.
     fn default() -> Self {
-        let t_rob1 = TaskInfo { name: "T_ROB1".into(), motion: true, active: true, executing: true };
+        let t_rob1 = TaskInfo { name: "T_ROB1".into(), motion: true, normal: true, active: true, executing: true };
         SharedTasking { tasks: vec![t_rob1], sync: FxHashMap::default(), epoch: 0 }
     }
 }
@@ -280,7 +282,7 @@ fn task_run_mec(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 
 /// The task a `taskid | string` argument pair names: a taskid by its data name
 /// (`T_ROB2Id` is T_ROB2), a string as written.
-fn named_task(ctx: &Ctx<'_>, args: &[Value]) -> Result<TaskInfo, RapidError> {
+pub(crate) fn named_task(ctx: &Ctx<'_>, args: &[Value]) -> Result<TaskInfo, RapidError> {
     let text = args.iter().take(2).find(|arg| matches!(ctx.value(arg), Ok(Value::Str(_))));
     let name = if let Some(text) = text {
         ctx.string(text)?
