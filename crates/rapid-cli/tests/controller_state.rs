@@ -147,3 +147,66 @@ fn warm_start_in_one_task_stops_every_task() {
     assert_eq!(text(&out.stdout), "restart\n");
     assert!(text(&out.stderr).contains("warm start"), "{}", text(&out.stderr));
 }
+
+#[test]
+fn warm_start_in_a_static_task_is_no_task_failure() {
+    let dir = scratch("warm_static");
+    let rob = "MODULE Rob\n  PROC main()\n    WHILE TRUE DO\n      WaitTime 1;\n    ENDWHILE\n  \
+               ENDPROC\nENDMODULE\n";
+    let mon = "MODULE Mon\n  PROC main()\n    WaitTime 2;\n    WarmStart;\n  ENDPROC\nENDMODULE\n";
+    // A STATIC task that stops applies its trust level (SysFail by default); one that
+    // asked for a warm start only ends the run.
+    let sys = system(&dir, &[("T_ROB1", "-Type \"NORMAL\" -MotionTask", rob), ("T_MON", "-Type \"STATIC\"", mon)]);
+    let out = rapid_in(&dir, &["run", "--max-time", "100", sys.to_str().expect("path")]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("warm start") && !stderr.contains("TrustLevel"), "{stderr}");
+}
+
+/// A tooldata declaration with TCP z and mass, for the task modules below.
+fn tool(name: &str, z: u32) -> String {
+    format!("  PERS tooldata {name} := [TRUE, [[0, 0, {z}], [1, 0, 0, 0]], [1, [0, 0, 1], [1, 0, 0, 0], 0, 0, 0]];\n")
+}
+
+#[test]
+fn get_sys_data_reads_the_motion_tasks_active_tool_from_another_task() {
+    let dir = scratch("sysdata_tasks");
+    // T_ROB1 moves the robot and activates tWeld (a global PERS both tasks declare).
+    let rob = format!(
+        "MODULE Rob\n{}  PROC main()\n    SetSysData tWeld;\n    WaitTime 2;\n  ENDPROC\nENDMODULE\n",
+        tool("tWeld", 150)
+    );
+    // T_B has no robot: without \TaskName it reads its motion task's data.
+    let b = format!(
+        "MODULE B\n{}{}  VAR string name;\n  PROC main()\n    WaitTime 1;\n    \
+         GetSysData tRead \\ObjectName:=name;\n    TPWrite \"T_B: \" + name + \" z \" \\Num:=tRead.tframe.trans.z;\n    \
+         GetSysData \\TaskName:=\"T_ROB1\", tRead \\ObjectName:=name;\n    TPWrite \"T_ROB1: \" + name;\n    \
+         GetSysData \\TaskName:=\"T_NOSUCH\", tRead;\n  ERROR\n    \
+         IF ERRNO = ERR_TASKNAME TPWrite \"ERR_TASKNAME\";\n    TRYNEXT;\n  ENDPROC\nENDMODULE\n",
+        tool("tWeld", 150),
+        tool("tRead", 0)
+    );
+    let sys = system(&dir, &[("T_ROB1", "-Type \"NORMAL\" -MotionTask", &rob), ("T_B", "-Type \"NORMAL\"", &b)]);
+    let out = rapid_in(&dir, &["run", sys.to_str().expect("path")]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "T_B: tWeld z 150\nT_ROB1: tWeld\nERR_TASKNAME\n");
+}
+
+#[test]
+fn another_tasks_own_tool_is_refused_with_a_clear_message() {
+    let dir = scratch("sysdata_local");
+    let rob = format!(
+        "MODULE Rob\n{}  PROC main()\n    SetSysData tMine;\n    WaitTime 2;\n  ENDPROC\nENDMODULE\n",
+        tool("tMine", 10)
+    );
+    let b = format!(
+        "MODULE B\n{}  PROC main()\n    WaitTime 1;\n    GetSysData \\TaskName:=\"T_ROB1\", tRead;\n  \
+         ENDPROC\nENDMODULE\n",
+        tool("tRead", 0)
+    );
+    let sys = system(&dir, &[("T_ROB1", "-Type \"NORMAL\" -MotionTask", &rob), ("T_B", "-Type \"NORMAL\"", &b)]);
+    let out = rapid_in(&dir, &["run", sys.to_str().expect("path")]);
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("tMine") && stderr.contains("not supported"), "{stderr}");
+}

@@ -50,20 +50,24 @@ pub struct SharedTasking {
     sync: FxHashMap<String, SyncPoint>,
     /// Bumped on every change a waiting task could be waiting for.
     pub epoch: u64,
+    /// The names of the tool, work object and payload each task activated, by task
+    /// name in lower case (GetSysData \TaskName from another task); a task not listed
+    /// uses tool0, wobj0 and load0 (`controller::sysdata`).
+    pub sysdata: FxHashMap<String, [Option<std::rc::Rc<str>>; 3]>,
 }
 
 impl Default for SharedTasking {
     /// A system of one task, T_ROB1, moving the robot.
     fn default() -> Self {
         let t_rob1 = TaskInfo { name: "T_ROB1".into(), motion: true, normal: true, active: true, executing: true };
-        SharedTasking { tasks: vec![t_rob1], sync: FxHashMap::default(), epoch: 0 }
+        SharedTasking { tasks: vec![t_rob1], sync: FxHashMap::default(), epoch: 0, sysdata: FxHashMap::default() }
     }
 }
 
 impl SharedTasking {
     /// The system's tasks, in configuration order.
     pub fn new(tasks: Vec<TaskInfo>) -> SharedTasking {
-        SharedTasking { tasks, sync: FxHashMap::default(), epoch: 0 }
+        SharedTasking { tasks, sync: FxHashMap::default(), epoch: 0, sysdata: FxHashMap::default() }
     }
 
     fn task(&self, name: &str) -> Option<&TaskInfo> {

@@ -6,6 +6,11 @@
 //! the object's value at the time of the call, so a program that changes `tool1`
 //! after activating it gets the changed value. At PP to Main tool0, wobj0 and load0
 //! are active again ([`crate::builtins::motion::MotionState::reset`]).
+//!
+//! Each activation is also published, by name, in the state the tasks share, so
+//! GetSysData \TaskName in another task (or in a task without a robot, which reads
+//! its motion task's data) finds the object: a global PERS is one object in every
+//! task that declares it.
 
 use std::rc::Rc;
 
@@ -56,38 +61,72 @@ pub(crate) fn activate_arg(ctx: &mut Ctx<'_>, arg: &Value, param: usize, kind: u
         return;
     }
     let name = argname::original_name(ctx.chain, param).unwrap_or_else(|| "".into());
-    ctx.resources.motion.active[kind] = Some((name, (**place).clone()));
+    activate(ctx, kind, name, (**place).clone());
 }
 
-/// The task a `\TaskRef | \TaskName` pair names must be this one, and this one must
-/// move a robot: the active data of another task is not reachable yet.
-fn check_task(ctx: &Ctx<'_>, args: &[Value]) -> Result<(), RapidError> {
-    if present(args.first()) || present(args.get(1)) {
-        let task = tasking::named_task(ctx, args)?;
-        tasking::check_own_task(ctx, &task.name, "GetSysData")?;
-    }
+/// Makes `name` at `place` the active object of its kind, and tells the other tasks.
+fn activate(ctx: &mut Ctx<'_>, kind: usize, name: Rc<str>, place: Place) {
+    let tasking = &mut ctx.resources.tasking;
+    let me = tasking.name().to_ascii_lowercase();
+    tasking.shared.sysdata.entry(me).or_default()[kind] = Some(name.clone());
+    ctx.resources.motion.active[kind] = Some((name, place));
+}
+
+/// Whose active data GetSysData reads: `None` for this task's own, else the name of
+/// another task. `\TaskRef | \TaskName` name a task (ERR_TASKNAME when the system
+/// has none of that name); a task without a robot reads the data of the motion task
+/// it is connected to.
+// uncertain: a task without a robot is taken to be connected to the first motion
+// task (as GetTaskName \MecTaskNo does); in a system where no task is configured
+// with -MotionTask every task keeps its own data.
+fn data_owner(ctx: &Ctx<'_>, args: &[Value]) -> Result<Option<String>, RapidError> {
     let tasking = &ctx.resources.tasking;
-    let me = tasking.shared.tasks.iter().find(|t| t.name.eq_ignore_ascii_case(tasking.name()));
-    if me.is_some_and(|t| !t.motion) {
-        // uncertain: a task without a robot gets the data of its connected motion
-        // task on the controller; that task's state is not reachable here yet.
-        return Err(RapidError::fatal(
-            "GetSysData in a task without a robot (the motion task's data) is not supported by `rapid run` yet",
-        ));
-    }
-    Ok(())
+    let named = if present(args.first()) || present(args.get(1)) {
+        tasking::named_task(ctx, args)?.name
+    } else {
+        tasking.name().to_string()
+    };
+    let tasks = &tasking.shared.tasks;
+    let owner = match tasks.iter().find(|t| t.name.eq_ignore_ascii_case(&named)) {
+        Some(task) if !task.motion => tasks.iter().find(|t| t.motion).map_or(named, |t| t.name.clone()),
+        _ => named,
+    };
+    Ok(Some(owner).filter(|owner| !owner.eq_ignore_ascii_case(tasking.name())))
+}
+
+/// The active object of a kind in another task: its name there, and the global of
+/// this task that holds it. A global PERS is one object in every task that declares
+/// it, so this task reaches the other's object when it declares the same persistent
+/// (or it is the predefined default).
+fn active_in(ctx: &Ctx<'_>, task: &str, kind: usize) -> Result<Active, RapidError> {
+    let listed = ctx.resources.tasking.shared.sysdata.get(&task.to_ascii_lowercase());
+    let name = listed.and_then(|names| names[kind].clone()).unwrap_or_else(|| DEFAULT_NAMES[kind].into());
+    let global = ctx.data_by_name.get(&name.to_ascii_lowercase()).map(|d| d.global).or_else(|| {
+        let default = DEFAULT_NAMES.iter().position(|d| d.eq_ignore_ascii_case(&name))?;
+        ctx.resources.motion.links.sysdata[default]
+    });
+    let shared = global.filter(|&g| ctx.pers_globals.get(g as usize).copied().unwrap_or(false));
+    let Some(global) = shared else {
+        return Err(RapidError::fatal(format!(
+            "GetSysData: the active {} of task {task}, `{name}`, is no persistent of this task; \
+             reading another task's own data is not supported by `rapid run` yet",
+            type_name(kind)
+        )));
+    };
+    Ok((name, Place { root: Root::Global(global), path: Vec::new() }))
 }
 
 /// `GetSysData [\TaskRef | \TaskName] DestObject [\ObjectName]`: copies the active
 /// tool, work object or payload (the type of DestObject says which) into DestObject,
-/// and its name into ObjectName. A task name the system does not have is
-/// ERR_TASKNAME (as for every built-in that takes one).
+/// and its name into ObjectName.
 pub(crate) fn get_sys_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    check_task(ctx, args)?;
+    let owner = data_owner(ctx, args)?;
     let dest = ctx.value(&args[2])?;
     let kind = kind_of(ctx, &dest).ok_or_else(|| not_sysdata(ctx, "DestObject"))?;
-    let Some((name, place)) = active(ctx, kind) else {
-        return Err(ctx.error(Err::SymAccess, format!("the system has no {}", DEFAULT_NAMES[kind])));
+    let (name, place) = match owner {
+        Some(task) => active_in(ctx, &task, kind)?,
+        None => active(ctx, kind)
+            .ok_or_else(|| ctx.error(Err::SymAccess, format!("the system has no {}", DEFAULT_NAMES[kind])))?,
     };
     let value = ctx.storage.get(&place).map_err(|(e, m)| ctx.error(e, m))?.clone();
     ctx.store(&args[2], value)?;
@@ -123,7 +162,7 @@ pub(crate) fn set_sys_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         super::super::motion::set_payload(ctx, &value)?;
     }
     let place = Place { root: Root::Global(global), path: Vec::new() };
-    ctx.resources.motion.active[kind] = Some((name.into(), place));
+    activate(ctx, kind, name.into(), place);
     Ok(None)
 }
 
