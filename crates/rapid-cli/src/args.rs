@@ -100,11 +100,44 @@ pub(crate) struct RunArgs {
     #[arg(long)]
     pub(crate) quiet: bool,
 
+    /// The operating mode key: OpMode() answers it; manual reduced speed limits the
+    /// TCP to 250 mm/s.
+    #[arg(long, value_enum, default_value_t = Mode::Auto)]
+    pub(crate) mode: Mode,
+
+    /// The operator's speed override in percent, 1 to 100 (CSpeedOverride).
+    #[arg(long, value_name = "PERCENT", default_value_t = 100, value_parser = clap::value_parser!(u8).range(1..=100))]
+    pub(crate) speed_override: u8,
+
     /// Module files, program files (.pgf) or folders, loaded together as one task; or a
     /// controller backup folder, or a rapid.toml manifest (or a folder holding one),
     /// whose tasks all run.
     #[arg(required = true, value_name = "PATH")]
     pub(crate) paths: Vec<PathBuf>,
+}
+
+/// The positions of the operating mode key.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub(crate) enum Mode {
+    /// Automatic (OP_AUTO).
+    Auto,
+    /// Manual reduced speed (OP_MAN_PROG).
+    ManualReduced,
+    /// Manual full speed (OP_MAN_TEST).
+    ManualFull,
+}
+
+impl RunArgs {
+    /// The controller state the run starts in (`--mode`, `--speed-override`).
+    pub(crate) fn controller_state(&self) -> rapid_vm::builtins::controller::ControllerState {
+        use rapid_vm::builtins::controller::OpMode;
+        let mode = match self.mode {
+            Mode::Auto => OpMode::Auto,
+            Mode::ManualReduced => OpMode::ManualReduced,
+            Mode::ManualFull => OpMode::ManualFull,
+        };
+        rapid_vm::builtins::controller::ControllerState::new(mode, f64::from(self.speed_override))
+    }
 }
 
 #[derive(Debug, Args)]

@@ -97,6 +97,7 @@ impl Controller {
             .map(|(spec, _)| TaskInfo {
                 name: spec.name.clone(),
                 motion: spec.motion,
+                normal: spec.kind == TaskKind::Normal,
                 active: true,
                 executing: true,
                 rmq: spec.rmq,
@@ -227,6 +228,12 @@ impl Controller {
             Exit::Unhandled(unhandled) => State::Ended(TaskEnd::Failed(unhandled)),
         };
         self.tasks[idx].state = state;
+        // WarmStart restarts the whole controller: every task stops with the one that
+        // asked (the caller reports the restart and ends the run).
+        if self.tasks[idx].loaded.vm.resources_mut().controller.warm_start {
+            self.halt_the_rest();
+            return;
+        }
         if self.tasks[idx].state == State::Ended(TaskEnd::Stopped) {
             self.run_stop_routines(idx, host);
         }
@@ -265,8 +272,10 @@ impl Controller {
     fn after_end(&mut self, idx: usize) {
         let name = self.tasks[idx].spec.name.clone();
         self.shared.tasking.set_executing(&name, false);
+        // A task that asked for a warm start did not fail: its trust level is not applied.
+        let warm_start = self.tasks[idx].loaded.vm.resources_mut().controller.warm_start;
         let spec = &self.tasks[idx].spec;
-        if spec.kind == TaskKind::Normal || spec.trust == TrustLevel::NoSafety {
+        if spec.kind == TaskKind::Normal || spec.trust == TrustLevel::NoSafety || warm_start {
             return;
         }
         self.system_stop = Some(SystemStop { task: name, trust: spec.trust });

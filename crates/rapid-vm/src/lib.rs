@@ -151,6 +151,7 @@ pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Resul
         motset: global_named("C_MOTSET"),
         progdisp: global_named("C_PROGDISP"),
         pose: prog.types.find("pose"),
+        sysdata: [global_named("tool0"), global_named("wobj0"), global_named("load0")],
     };
     vm.resources_mut().io.kinds = signal_kinds(&prog);
     vm.resources_mut().io.configured = prog

@@ -22,6 +22,10 @@ use crate::render::{self, Files, Summary};
 /// Instructions executed between checks of the bounds and of output flushing.
 const SLICE: u64 = 1 << 16;
 
+/// What `rapid run` says when the program executed WarmStart (the run ends there).
+pub(crate) const WARM_START: &str =
+    "warm start: the program requested a restart of the controller (WarmStart); the run ends here";
+
 pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     let inputs = inputs::collect(&args.paths)?;
     if inputs.diagnostics.iter().any(|d| d.code == Code::ConfigFile && d.severity() == Severity::Error) {
@@ -42,6 +46,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     // A backup's (or a manifest's) own HOME folder is the controller's HOME: device.
     configure_files(&mut loaded, args, &inputs.modules, inputs.root.clone());
     loaded.vm.resources_mut().cfgdata.set_config(inputs.syspar.clone());
+    loaded.vm.resources_mut().controller = args.controller_state();
     if let Err(message) = configure_io(&mut loaded, args, &inputs.syspar) {
         eprintln!("error: {message}");
         eprintln!("the system has errors; it was not run");
@@ -127,6 +132,9 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     let program_end = loaded.vm.time;
     let robot = &mut loaded.vm.resources_mut().robot;
     crate::motion_out::finish(robot, program_end, "T_ROB1", model_note.as_deref(), args)?;
+    if loaded.vm.resources_mut().controller.warm_start {
+        eprintln!("{WARM_START}");
+    }
     if args.event_log {
         for event in loaded.vm.event_log() {
             eprintln!("event {event}");

@@ -61,6 +61,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         };
         single::configure_files(&mut program, args, &task.inputs.modules, task.inputs.root.clone());
         program.vm.resources_mut().cfgdata.set_config(task.inputs.syspar.clone());
+        program.vm.resources_mut().controller = args.controller_state();
         loaded.push((task.spec.clone(), program));
     }
     let io = match io_system(&tasks[0].inputs) {
@@ -112,6 +113,9 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         let name = task.spec.name.clone();
         let robot = &mut task.loaded.vm.resources_mut().robot;
         crate::motion_out::finish(robot, program_end, &name, model_note.as_deref(), args)?;
+    }
+    if controller.tasks.iter_mut().any(|task| task.loaded.vm.resources_mut().controller.warm_start) {
+        eprintln!("{}", single::WARM_START);
     }
     let status = report(&controller, &tasks, bounded);
     finish(&controller, &tasks, args)?;

@@ -8,6 +8,7 @@ mod bits;
 mod calendar;
 pub mod cfgdata;
 mod clock;
+pub mod controller;
 mod dialogs;
 mod dnheader;
 mod events;
@@ -124,6 +125,8 @@ pub struct Resources {
     pub rmq: rmq::RmqState,
     /// The task's robot: its model, its planned motion, where it is.
     pub robot: motion::robot::RobotState,
+    /// The operating mode, speed override and PP flags (kept at PP to Main).
+    pub controller: controller::ControllerState,
 }
 
 /// What the tasks of one controller share: handed to the task that runs, so each
@@ -298,6 +301,7 @@ static FAMILIES: &[Entries] = &[
     tasking::ENTRIES,
     motion::ENTRIES,
     rmq::ENTRIES,
+    controller::ENTRIES,
 ];
 
 static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =

@@ -1,6 +1,7 @@
 //! System information (§1.17) of our virtual controller: GetSysInfo, IsSysId, RobOS,
 //! OpMode, RunMode, NonMotionMode, ProgMemFree, GetNextOption, GetNextProduct and
-//! EventType. The controller is virtual, so every answer is a documented constant.
+//! EventType. The controller is virtual, so every answer is a documented constant,
+//! except OpMode's, which is the controller state `rapid run --mode` set.
 //!
 //! ExecHandler and ExecLevel are not here: they need to know whether the caller runs in
 //! an ERROR/BACKWARD/UNDO handler or a trap routine, which `Ctx` does not tell.
@@ -49,7 +50,6 @@ const OPTIONS: &[&str] = &["616-1 PC Interface", "623-1 Multitasking", "672-1 So
 const PRODUCTS: &[(&str, &str)] = &[("RobotWare", SW_VERSION)];
 
 // The values of the symnum and event_type constants (catalogue data.rs).
-const OP_AUTO: f32 = 1.0;
 const RUN_CONT_CYCLE: f32 = 1.0;
 
 /// `GetSysInfo([\SerialNo] | [\SWVersion] | ... | [\SystemName])`: one item of
@@ -76,9 +76,10 @@ fn rob_os(_: &mut Ctx<'_>, _: &[Value]) -> Res {
     Ok(Some(Value::Bool(false)))
 }
 
-/// `OpMode()`: OP_AUTO; the virtual controller runs in automatic mode.
-fn op_mode(_: &mut Ctx<'_>, _: &[Value]) -> Res {
-    Ok(Some(Value::Num(OP_AUTO)))
+/// `OpMode()`: the operating mode the run was started in (`rapid run --mode`,
+/// OP_AUTO unless told).
+fn op_mode(ctx: &mut Ctx<'_>, _: &[Value]) -> Res {
+    Ok(Some(Value::Num(ctx.resources.controller.mode.symnum())))
 }
 
 /// `RunMode([\Main])`: RUN_CONT_CYCLE; `rapid run` runs the program continuously.

@@ -31,6 +31,8 @@ pub struct TaskInfo {
     pub name: String,
     /// Runs motion instructions (`-MotionTask`): TaskRunRob, TaskRunMec.
     pub motion: bool,
+    /// A NORMAL task (not STATIC or SEMISTATIC): GetTSPStatus.
+    pub normal: bool,
     /// Selected in the task selection panel (TaskIsActive); every configured task is.
     pub active: bool,
     /// Executing now (started, not stopped or ended): TaskIsExecuting.
@@ -56,13 +58,17 @@ pub struct SharedTasking {
     pub queues: Vec<VecDeque<RmqMessage>>,
     /// Bumped on every change a waiting task could be waiting for.
     pub epoch: u64,
+    /// The names of the tool, work object and payload each task activated, by task
+    /// name in lower case (GetSysData \TaskName from another task); a task not listed
+    /// uses tool0, wobj0 and load0 (`controller::sysdata`).
+    pub sysdata: FxHashMap<String, [Option<std::rc::Rc<str>>; 3]>,
 }
 
 impl Default for SharedTasking {
     /// A system of one task, T_ROB1, moving the robot.
     fn default() -> Self {
         let rmq = rapid_config::sys::Rmq::default();
-        let t_rob1 = TaskInfo { name: "T_ROB1".into(), motion: true, active: true, executing: true, rmq };
+        let t_rob1 = TaskInfo { name: "T_ROB1".into(), motion: true, normal: true, active: true, executing: true, rmq };
         SharedTasking::new(vec![t_rob1])
     }
 }
@@ -71,7 +77,7 @@ impl SharedTasking {
     /// The system's tasks, in configuration order.
     pub fn new(tasks: Vec<TaskInfo>) -> SharedTasking {
         let queues = tasks.iter().map(|_| VecDeque::new()).collect();
-        SharedTasking { tasks, sync: FxHashMap::default(), queues, epoch: 0 }
+        SharedTasking { tasks, sync: FxHashMap::default(), queues, epoch: 0, sysdata: FxHashMap::default() }
     }
 
     fn task(&self, name: &str) -> Option<&TaskInfo> {
@@ -304,7 +310,7 @@ fn task_run_mec(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 
 /// The task a `taskid | string` argument pair names: a taskid by its data name
 /// (`T_ROB2Id` is T_ROB2), a string as written.
-fn named_task(ctx: &Ctx<'_>, args: &[Value]) -> Result<TaskInfo, RapidError> {
+pub(crate) fn named_task(ctx: &Ctx<'_>, args: &[Value]) -> Result<TaskInfo, RapidError> {
     let text = args.iter().take(2).find(|arg| matches!(ctx.value(arg), Ok(Value::Str(_))));
     let name = if let Some(text) = text {
         ctx.string(text)?

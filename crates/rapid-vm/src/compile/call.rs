@@ -14,7 +14,21 @@ use crate::ir::{ArgOrigin, ArgSpec, CallSite, Callee, Instr, LateArg};
 /// Built-ins whose `anytype` parameters take a signal itself rather than its value.
 /// Built-ins that know an argument by the name of the data passed: a syncident is the
 /// same sync point in every task by its name, a taskid names its task (`T_ROB2Id`).
-const NAME_TAKING: &[&str] = &["WaitSyncTask", "TaskIsActive", "TaskIsExecuting"];
+const NAME_TAKING: &[&str] = &[
+    "MoveJ",
+    "MoveL",
+    "MoveC",
+    "MoveAbsJ",
+    "WaitSyncTask",
+    "TaskIsActive",
+    "TaskIsExecuting",
+    "GetSysData",
+    "SetSysData",
+    "GripLoad",
+    "GetTSPStatus",
+    "GetMecUnitName",
+    "GetServiceInfo",
+];
 
 const SIGNAL_TAKING: &[&str] = &["AliasIO", "AliasIOReset", "ValidIO", "GetSignalOrigin"];
 

@@ -18,6 +18,8 @@ mod readback;
 pub mod robot;
 mod settings;
 
+pub(crate) use settings::set_payload;
+
 use std::rc::Rc;
 
 use nalgebra::Isometry3;
@@ -72,6 +74,9 @@ pub struct MotionLinks {
     pub progdisp: Option<u32>,
     /// The record type `pose` (results of DefFrame and its kin).
     pub pose: Option<TypeId>,
+    /// The globals of tool0, wobj0 and load0: the system data active at PP to Main
+    /// (see `controller::sysdata`).
+    pub sysdata: [Option<u32>; 3],
 }
 
 /// How the robot passes singular points (SingArea).
@@ -164,19 +169,13 @@ impl Default for Settings {
 }
 
 /// The motion family's part of the task's resources.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub struct MotionState {
     pub links: MotionLinks,
     pub settings: Settings,
-    /// The operator's speed override on the FlexPendant, in percent (not changed by
-    /// programs; kept at PP to Main).
-    pub operator_override: f64,
-}
-
-impl Default for MotionState {
-    fn default() -> MotionState {
-        MotionState { links: MotionLinks::default(), settings: Settings::default(), operator_override: 100.0 }
-    }
+    /// The active tool, work object and payload (GetSysData, SetSysData, GripLoad),
+    /// by `controller::sysdata` kind; `None` is the default tool0, wobj0, load0.
+    pub active: [Option<super::controller::sysdata::Active>; 3],
 }
 
 impl MotionState {
@@ -184,6 +183,7 @@ impl MotionState {
     /// (manual 1.7, SYS_RESET).
     pub fn reset(&mut self) {
         self.settings = Settings::default();
+        self.active = Default::default();
     }
 }
 

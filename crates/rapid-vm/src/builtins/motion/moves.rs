@@ -127,16 +127,18 @@ fn speed_and_zone(
     Ok((speed, zone))
 }
 
-/// The settings moves are planned with (VelSet, AccSet, the speed overrides).
+/// The settings moves are planned with (VelSet, AccSet, the operator's and the
+/// task's speed overrides; manual reduced speed caps the TCP at 250 mm/s).
 fn planner_settings(ctx: &Ctx<'_>) -> MotionSettings {
-    let motion = &ctx.resources.motion;
-    let s = &motion.settings;
+    let s = &ctx.resources.motion.settings;
+    let controller = &ctx.resources.controller;
+    let vel_max = controller.tcp_speed_limit().map_or(s.vel_max, |limit| s.vel_max.min(limit));
     MotionSettings {
         acc: s.acc,
         ramp: s.ramp,
         vel_override: s.vel_override,
-        vel_max: s.vel_max,
-        speed_override: motion.operator_override * s.speed_refresh / 100.0,
+        vel_max,
+        speed_override: controller.speed_override * s.speed_refresh / 100.0,
     }
 }
 
@@ -167,6 +169,11 @@ fn go(
     robot.set_settings(settings);
     let resume = robot.push(now, &request, conc).map_err(motion_error)?;
     robot.active = chain;
+    // The move's tool and work object become the active ones (CTool, CWObj, GetSysData).
+    crate::builtins::controller::sysdata::activate_arg(ctx, &args[layout.tool], layout.tool, 0);
+    if present(args.get(layout.wobj)) {
+        crate::builtins::controller::sysdata::activate_arg(ctx, &args[layout.wobj], layout.wobj, 1);
+    }
     if resume > now {
         ctx.wait = Some(resume - now);
     }

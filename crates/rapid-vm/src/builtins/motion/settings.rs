@@ -129,12 +129,21 @@ fn load(ctx: &Ctx<'_>, value: &Value) -> Result<Load, RapidError> {
 /// `GripLoad Load`: the payload now in the gripper (load0 when released).
 // uncertain: the controller checks load data when the robot moves; a negative mass
 // or negative moment of inertia raises ERR_ARGVALERR here at once.
+// The load becomes the active payload (GetSysData).
 pub(crate) fn grip_load(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let load = load(ctx, &ctx.value(&args[0])?)?;
+    set_payload(ctx, &ctx.value(&args[0])?)?;
+    super::super::controller::sysdata::activate_arg(ctx, &args[0], 0, super::super::controller::sysdata::LOAD);
+    Ok(None)
+}
+
+/// Makes a loaddata value the payload in the gripper (GripLoad, SetSysData).
+pub(crate) fn set_payload(ctx: &mut Ctx<'_>, value: &Value) -> Result<(), RapidError> {
+    let load = load(ctx, value)?;
     if load.mass < 0.0 || load.inertia.iter().any(|&i| i < 0.0) {
-        return Err(ctx.error(Err::ArgValue, "GripLoad needs a load with a mass and inertia of at least 0"));
+        return Err(ctx.error(Err::ArgValue, "the payload needs a mass and inertia of at least 0"));
     }
-    update(ctx, |s| s.grip_load = load)
+    update(ctx, |s| s.grip_load = load)?;
+    Ok(())
 }
 
 /// `PathResol PathSampleTime`: path resolution in percent of the configured one,
@@ -167,16 +176,14 @@ pub(crate) fn speed_refresh(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     update(ctx, |s| s.speed_refresh = percent)
 }
 
-/// `CSpeedOverride([\CTask])`: the operator's speed override (100 unless changed on
-/// the pendant); with \CTask the override of this task, which SpeedRefresh sets.
+/// `CSpeedOverride([\CTask])`: the operator's speed override (the controller state,
+/// `rapid run --speed-override`, 100 unless told); with \CTask the override of this
+/// task, which SpeedRefresh sets.
 // uncertain: the task's value is the operator's override scaled by SpeedRefresh.
 pub(crate) fn c_speed_override(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let state = &ctx.resources.motion;
-    let percent = if present(args.first()) {
-        state.operator_override * state.settings.speed_refresh / 100.0
-    } else {
-        state.operator_override
-    };
+    let operator = ctx.resources.controller.speed_override;
+    let percent =
+        if present(args.first()) { operator * ctx.resources.motion.settings.speed_refresh / 100.0 } else { operator };
     Ok(Some(Value::Num(percent as f32)))
 }
 
