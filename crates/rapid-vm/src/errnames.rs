@@ -109,4 +109,8 @@ errors! {
     // Motion settings and position functions (§1.7, §1.8).
     SpeedRefreshLim = "ERR_SPEED_REFRESH_LIM",
     Frame = "ERR_FRAME",
+    // I/O devices and networks (§1.9).
+    NoRunUnit = "ERR_NORUNUNIT",
+    IoDisable = "ERR_IODISABLE",
+    IoEnable = "ERR_IOENABLE",
 }

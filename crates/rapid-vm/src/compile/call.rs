@@ -16,7 +16,7 @@ use crate::ir::{ArgOrigin, ArgSpec, CallSite, Callee, Instr, LateArg};
 /// same sync point in every task by its name, a taskid names its task (`T_ROB2Id`).
 const NAME_TAKING: &[&str] = &["WaitSyncTask", "TaskIsActive", "TaskIsExecuting"];
 
-const SIGNAL_TAKING: &[&str] = &["AliasIO", "AliasIOReset", "ValidIO", "GetSignalOrigin"];
+const SIGNAL_TAKING: &[&str] = &["AliasIO", "AliasIOReset", "ValidIO", "GetSignalOrigin", "GetGroupSignalInfo"];
 
 impl RoutineCompiler<'_> {
     /// A call of `name` with `args`; `in_expr` for function calls (the result is pushed).
