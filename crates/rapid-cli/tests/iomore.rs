@@ -95,10 +95,11 @@ fn program(declarations: &str, body: &str, traps: &str) -> String {
 fn devices_are_enabled_and_disabled_and_their_signals_follow() {
     // Worked by hand (manual §1.9, the iounit_state numbers RUNNING 1, DISABLE 3):
     // d652 runs, d651 starts deactivated. doSpare on d651 is not valid and Set raises
-    // ERR_NORUNUNIT. Set doLamp works; after IODisable "d652" the lamp is not valid,
-    // reading it and Reset both raise ERR_NORUNUNIT, and the state is DISABLE, logically
-    // DISABLED and physically DEACTIVATED. IOEnable brings it back with the value it had
-    // (1). The virtual doVirtual is never affected. Unknown names: ERR_NAME_INVALID.
+    // ERR_NORUNUNIT. Set doLamp works; after IODisable "d652" the lamp is not valid;
+    // reading it, Reset, TestDI and WaitDI on the device raise ERR_NORUNUNIT; the state
+    // is DISABLE, logically DISABLED. IOEnable brings it back with the value it had (1).
+    // The virtual doVirtual is never affected. Unknown names: ERR_NAME_INVALID; a
+    // negative MaxTime: ERR_ARGVALERR.
     let dir = scratch("units");
     let body = "    TPWrite \"d652 \" \\Num:=IOUnitState(\"d652\");
     TPWrite \"d651 \" \\Num:=IOUnitState(\"d651\");
@@ -113,6 +114,7 @@ fn devices_are_enabled_and_disabled_and_their_signals_follow() {
     TPWrite \"lamp \" \\Num:=doLamp;
     Reset doLamp;
     TPWrite \"part \" \\Bool:=TestDI(diPart);
+    WaitDI diPart, 1 \\MaxTime:=1;
     IF IOUnitState(\"d652\") = IOUNIT_DISABLE TPWrite \"d652 disabled\";
     IF IOUnitState(\"d652\" \\Logic) = IOUNIT_LOG_STATE_DISABLED TPWrite \"d652 logically disabled\";
     Set doVirtual;
@@ -135,7 +137,8 @@ fn devices_are_enabled_and_disabled_and_their_signals_follow() {
     assert_eq!(
         text(&out.stdout),
         "d652 1\nd651 3\nd651 logically disabled\nd651 deactivated\nd652 running\nspare valid FALSE\n\
-         ERR_NORUNUNIT\nlamp valid FALSE\nERR_NORUNUNIT\nERR_NORUNUNIT\nERR_NORUNUNIT\nd652 disabled\n\
+         ERR_NORUNUNIT\nlamp valid FALSE\nERR_NORUNUNIT\nERR_NORUNUNIT\nERR_NORUNUNIT\nERR_NORUNUNIT\n\
+         d652 disabled\n\
          d652 logically disabled\nvirtual 1\nd652 logically enabled\nlamp valid TRUE\nlamp 1\nspare 1\n\
          ERR_NAME_INVALID\nERR_NAME_INVALID\nERR_NAME_INVALID\nERR_ARGVALERR\ndone\n"
     );
