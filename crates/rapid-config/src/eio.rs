@@ -1,4 +1,5 @@
-//! The I/O configuration (`EIO.cfg`): signals, devices and cross-connections.
+//! The I/O configuration (`EIO.cfg`): signals, devices (with their start-up state),
+//! networks and cross-connections.
 //!
 //! Sources for the attribute names: RobotWare 6 backups write `-Device`/`-DeviceMap`,
 //! RobotWare 5 backups `-Unit`/`-UnitMap` (both read, as public backups show). Analog
@@ -417,5 +418,45 @@ fn check_loops(file: &CfgFile, eio: &mut Eio) {
                 format!("cross-connections loop: `{}` is driven, through them, by itself", eio.cross[idx].result);
             push(&mut eio.errors, inst, value_span(inst, "Res"), message);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::read;
+
+    #[test]
+    fn networks_device_start_states_and_labels() {
+        let text = "EIO:CFG_1.0:6:1::
+#
+INDUSTRIAL_NETWORK:
+
+      -Name \"DeviceNet\" -Label \"DeviceNet Master/Slave Network\"
+#
+EIO_BUS:
+
+      -Name \"Virtual1\"
+#
+DEVICENET_DEVICE:
+
+      -Name \"d652\" -Network \"DeviceNet\" -Address 10
+
+      -Name \"d651\" -Network \"DeviceNet\" -StateWhenStartup \"Deactivated\"
+#
+EIO_UNIT:
+
+      -Name \"board9\" -UnitType \"d652\" -Bus \"Virtual1\" -Disabled
+#
+EIO_SIGNAL:
+
+      -Name \"goCode\" -SignalType \"GO\" -Device \"d652\" -DeviceMap \"8-13\" -Label \"Recipe code\"
+";
+        let eio = read(&crate::parse(text));
+        assert!(eio.errors.is_empty(), "{:?}", eio.errors);
+        let networks: Vec<&str> = eio.networks.iter().map(|n| n.name.as_str()).collect();
+        assert_eq!(networks, ["DeviceNet", "Virtual1"]);
+        let devices: Vec<(&str, bool)> = eio.devices.iter().map(|d| (d.name.as_str(), d.enabled)).collect();
+        assert_eq!(devices, [("d652", true), ("d651", false), ("board9", false)]);
+        assert_eq!(eio.signal("gocode").and_then(|s| s.label.as_deref()), Some("Recipe code"));
     }
 }
