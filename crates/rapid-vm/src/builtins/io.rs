@@ -1,12 +1,14 @@
 //! I/O signals (§1.9) on the task's I/O system (`crates/rapid-io`, in
 //! `Resources::io`): AliasIO, AliasIOReset, Set, Reset, SetDO, SetAO, SetGO, InvertDO,
-//! PulseDO, TestDI, ValidIO, and reading signals in expressions.
+//! PulseDO, TestDI, ValidIO, GetSignalOrigin, GetGroupSignalInfo, and reading signals in
+//! expressions.
 //!
-//! Signal data holds `OpaqueState::Handle(id)` once connected (AliasIO, or the I/O
-//! configuration for its own signals) and nothing before: using it then raises
-//! ERR_NO_ALIASIO_DEF (manual §1.9). Every access first brings the I/O system up to the
-//! controller's time, so delayed and pulsed orders take effect when they are due.
-//! `rapid run` has no I/O configuration yet (issue 5): there, AliasIO finds no signal.
+//! Signal data holds `OpaqueState::Handle(id)` once connected (the I/O configuration for
+//! its own signals; AliasIO, which also sets `ALIAS_BIT`) and nothing before: using it
+//! then raises ERR_NO_ALIASIO_DEF (manual §1.9). A signal on a disabled I/O device
+//! cannot be read or written: ERR_NORUNUNIT (§1.9), and ValidIO is FALSE. Every access
+//! first brings the I/O system up to the controller's time, so delayed and pulsed orders
+//! take effect when they are due.
 
 use rapid_io::{IoSystem, SignalKind};
 use rapid_sema::types::TypeId;
