@@ -43,7 +43,11 @@ fn device_name(ctx: &mut Ctx<'_>, arg: &Value) -> Result<String, RapidError> {
 /// (ERR_NAME_INVALID).
 fn network_name(ctx: &mut Ctx<'_>, arg: &Value) -> Result<String, RapidError> {
     let name = ctx.string(arg)?;
-    let known = ctx.resources.io.system.as_ref().is_some_and(|io| io.units().has_network(&name));
+    // Without an I/O configuration there is still the controller's own network.
+    let known = match ctx.resources.io.system.as_ref() {
+        Some(io) => io.units().has_network(&name),
+        None => name.eq_ignore_ascii_case(rapid_io::LOCAL_NETWORK),
+    };
     if !known {
         return Err(ctx.error(Err::NameInvalid, format!("no I/O network `{name}` is configured")));
     }
