@@ -14,7 +14,7 @@ use crate::value::Value;
 
 type Res = Result<Option<Value>, RapidError>;
 
-/// iounit_state values (the numbers the manual gives with the constants).
+/// iounit_state values, as the catalogue declares them (public programs confirm them).
 const IOUNIT_RUNNING: f32 = 1.0;
 const IOUNIT_DISABLE: f32 = 3.0;
 const IOUNIT_LOG_STATE_DISABLED: f32 = 10.0;
