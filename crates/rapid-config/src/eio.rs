@@ -171,6 +171,11 @@ pub fn read(file: &CfgFile) -> Eio {
         if kind == "EIO_UNIT" || kind.ends_with("_DEVICE") {
             for inst in &section.instances {
                 if let Some(name) = inst.name() {
+                    if eio.devices.iter().any(|d| d.name.eq_ignore_ascii_case(name)) {
+                        let message = format!("I/O device `{name}` is configured twice");
+                        push(&mut eio.errors, inst, value_span(inst, "Name"), message);
+                        continue;
+                    }
                     let network = inst.value("Network").or_else(|| inst.value("Bus")).map(str::to_owned);
                     eio.devices.push(Device {
                         name: name.to_owned(),
@@ -187,6 +192,11 @@ pub fn read(file: &CfgFile) -> Eio {
         if kind == "INDUSTRIAL_NETWORK" || kind == "EIO_BUS" {
             for inst in &section.instances {
                 if let Some(name) = inst.name() {
+                    if eio.networks.iter().any(|n| n.name.eq_ignore_ascii_case(name)) {
+                        let message = format!("I/O network `{name}` is configured twice");
+                        push(&mut eio.errors, inst, value_span(inst, "Name"), message);
+                        continue;
+                    }
                     eio.networks.push(Network { name: name.to_owned(), line: inst.line });
                 }
             }
@@ -458,5 +468,32 @@ EIO_SIGNAL:
         let devices: Vec<(&str, bool)> = eio.devices.iter().map(|d| (d.name.as_str(), d.enabled)).collect();
         assert_eq!(devices, [("d652", true), ("d651", false), ("board9", false)]);
         assert_eq!(eio.signal("gocode").and_then(|s| s.label.as_deref()), Some("Recipe code"));
+    }
+
+    #[test]
+    fn a_device_or_network_configured_twice_is_refused_with_its_line() {
+        let text = "EIO:CFG_1.0:6:1::
+#
+INDUSTRIAL_NETWORK:
+
+      -Name \"DeviceNet\"
+
+      -Name \"devicenet\"
+#
+DEVICENET_DEVICE:
+
+      -Name \"d652\" -Network \"DeviceNet\"
+#
+EIO_UNIT:
+
+      -Name \"D652\"
+";
+        let eio = read(&crate::parse(text));
+        let found: Vec<(u32, &str)> = eio.errors.iter().map(|e| (e.line, e.message.as_str())).collect();
+        assert_eq!(
+            found,
+            [(7, "I/O network `devicenet` is configured twice"), (15, "I/O device `D652` is configured twice")]
+        );
+        assert_eq!((eio.networks.len(), eio.devices.len()), (1, 1));
     }
 }
