@@ -111,6 +111,4 @@ errors! {
     Frame = "ERR_FRAME",
     // I/O devices and networks (§1.9).
     NoRunUnit = "ERR_NORUNUNIT",
-    IoDisable = "ERR_IODISABLE",
-    IoEnable = "ERR_IOENABLE",
 }
