@@ -99,12 +99,28 @@ pub struct SignalDef {
     pub analog: Option<AnalogRange>,
     /// Only for GI/GO: how many bits the group has (1..=32).
     pub group_bits: u8,
+    /// `-Device` (`-Unit`): the I/O device the signal is on; `None` for a virtual signal.
+    pub device: Option<String>,
+    /// `-Label`: the signal's label text (empty when not configured).
+    pub label: String,
+    /// The first bit of `-DeviceMap` (`-UnitMap`), if the signal is mapped.
+    pub start_bit: Option<u32>,
 }
 
 impl SignalDef {
     /// A signal with default 0, access Default, no analog range and no group width.
     pub fn new(name: &str, kind: SignalKind) -> SignalDef {
-        SignalDef { name: name.to_string(), kind, default: 0.0, access: Access::Default, analog: None, group_bits: 0 }
+        SignalDef {
+            name: name.to_string(),
+            kind,
+            default: 0.0,
+            access: Access::Default,
+            analog: None,
+            group_bits: 0,
+            device: None,
+            label: String::new(),
+            start_bit: None,
+        }
     }
 }
 
@@ -154,6 +170,8 @@ pub enum ConfigError {
         index: usize,
         path: Vec<String>,
     },
+    /// The devices and networks do not fit together (or with the signals).
+    Units(crate::units::UnitError),
 }
 
 impl fmt::Display for ConfigError {
@@ -172,6 +190,7 @@ impl fmt::Display for ConfigError {
             ConfigError::CrossLoop { index, path } => {
                 write!(f, "cross-connection {} closes a loop: {}", index + 1, path.join(" -> "))
             }
+            ConfigError::Units(err) => write!(f, "{err}"),
         }
     }
 }

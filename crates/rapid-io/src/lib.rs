@@ -38,17 +38,31 @@
 //! Every change is logged ([`Change`]: time, signal, old, new, cause) for `--io-log`; the
 //! caller drains it ([`IoSystem::drain_changes`]), or it grows with every change.
 //!
+//! # Devices and networks
+//! [`IoSystem::with_units`] adds the I/O devices and networks ([`Units`]): each signal's
+//! `device` must name a configured device. A disabled device's signals refuse orders and
+//! reads ([`IoError::NotRunning`], ERR_NORUNUNIT) and ignore the hardware; disabling
+//! cancels their pending pulse ends and delayed changes.
+//!
+//! # Analog interrupts
+//! [`AnalogTrigger`] is the `aiotrigg` condition of ISignalAI/ISignalAO with its DeltaValue
+//! and stored reference value; the VM samples it with every change of the signal.
+//!
 //! # Errors for RAPID
 //! [`IoError::rapid_error`] names the RAPID error each refusal becomes (`ERR_GO_LIM`,
 //! `ERR_AO_LIM`, …), or `None` where the controller stops with an event-log error.
 
+mod aio;
 mod cross;
 mod def;
 mod system;
+mod units;
 mod value;
 
+pub use aio::{AioCondition, AioDirection, AioError, AnalogTrigger};
 pub use def::{Access, AnalogRange, ConfigError, CrossConnection, CrossOp, SignalDef, SignalKind, MAX_CROSS_TERMS};
 pub use system::{Cause, Change, IoSystem, SignalId, DEFAULT_PULSE_LENGTH, MAX_DELAYED, MAX_PULSING};
+pub use units::{DeviceDef, UnitError, Units, LOCAL_NETWORK};
 pub use value::{group_max, quantise, to_bits, to_logical, to_physical, IoError, MAX_TIME};
 
 #[cfg(test)]

@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use crate::cross::CrossNet;
 use crate::def::{check_signal, ConfigError, CrossConnection, SignalDef, SignalKind};
+use crate::units::{DeviceDef, UnitError, Units};
 use crate::value::{check_time, check_value, to_physical, IoError};
 
 /// A signal's dense index: the order of the definitions given to [`IoSystem::new`].
@@ -76,6 +77,7 @@ pub struct IoSystem {
     seq: u64,
     now: f64,
     changes: Vec<Change>,
+    units: Units,
 }
 
 impl IoSystem {
@@ -105,6 +107,7 @@ impl IoSystem {
             seq: 0,
             now: 0.0,
             changes: Vec::new(),
+            units: Units::default(),
         };
         let mut order: Vec<usize> = (0..system.net.crosses.len()).collect();
         order.sort_by_key(|i| system.net.crosses[*i].key);
@@ -114,6 +117,62 @@ impl IoSystem {
             system.values[cross.result as usize] = value;
         }
         Ok(system)
+    }
+
+    /// Like [`IoSystem::new`], with the I/O devices and networks: every signal's `device`
+    /// must be one of `devices`.
+    pub fn with_units(
+        defs: Vec<SignalDef>,
+        crosses: Vec<CrossConnection>,
+        devices: Vec<DeviceDef>,
+        networks: Vec<String>,
+    ) -> Result<IoSystem, ConfigError> {
+        let signal_devices: Vec<(String, Option<String>)> =
+            defs.iter().map(|d| (d.name.clone(), d.device.clone())).collect();
+        let units = Units::new(devices, networks, &signal_devices).map_err(ConfigError::Units)?;
+        let mut system = IoSystem::new(defs, crosses)?;
+        system.units = units;
+        Ok(system)
+    }
+
+    /// The devices and networks.
+    pub fn units(&self) -> &Units {
+        &self.units
+    }
+
+    /// IOEnable / IODisable at `t`. Disabling cancels the pending pulse ends and delayed
+    /// changes of the device's signals: the controller loses contact with the device.
+    // uncertain: what happens to pending orders of a disabled device is not public; the
+    // signals keep their values and nothing more is carried out.
+    pub fn set_device_enabled(&mut self, name: &str, enabled: bool, t: f64) -> Result<(), UnitError> {
+        self.advance(t);
+        self.units.set_enabled(name, enabled)?;
+        if !enabled {
+            for id in self.units.signals_of(name) {
+                self.cancel(id);
+            }
+        }
+        Ok(())
+    }
+
+    /// Whether a signal can be reached now (virtual, or its device is enabled).
+    pub fn is_running(&self, id: SignalId) -> bool {
+        self.units.signal_running(id)
+    }
+
+    /// A program's read of a signal: its value, or [`IoError::NotRunning`] when its device
+    /// is disabled.
+    pub fn read(&self, id: SignalId) -> Result<f64, IoError> {
+        self.check_running(id)?;
+        self.value(id).ok_or(IoError::UnknownSignal(id))
+    }
+
+    fn check_running(&self, id: SignalId) -> Result<(), IoError> {
+        if self.units.signal_running(id) {
+            return Ok(());
+        }
+        let device = self.units.signal_device(id).map(|d| d.name.clone()).unwrap_or_default();
+        Err(IoError::NotRunning { signal: self.names[id as usize].to_string(), device })
     }
 
     /// How many signals the system has; ids are `0..len()`.
@@ -288,7 +347,8 @@ impl IoSystem {
             return Err(self.wrong_kind(id, "a hardware write"));
         }
         let value = check_value(def, value)?;
-        if self.is_cross_result(id) {
+        // A cross-connected input has no physical channel; a disabled device sends nothing.
+        if self.is_cross_result(id) || !self.units.signal_running(id) {
             return Ok(false);
         }
         self.change(id, value, Cause::Hardware);
@@ -314,7 +374,7 @@ impl IoSystem {
         if !def.access.rapid_may_write() {
             return Err(IoError::AccessDenied { signal: def.name.clone() });
         }
-        Ok(())
+        self.check_running(id)
     }
 
     /// Checks a program order's value. SetDO takes any value other than 0 as 1 (the SetDO

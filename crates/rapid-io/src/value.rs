@@ -72,6 +72,8 @@ pub enum IoError {
     TooManyPulses { signal: String },
     /// More than [`crate::MAX_DELAYED`] signals would have a delayed order at once.
     TooManyDelayed { signal: String },
+    /// The signal's device is disabled: the controller has no contact with it.
+    NotRunning { signal: String, device: String },
 }
 
 impl IoError {
@@ -80,6 +82,8 @@ impl IoError {
     pub fn rapid_error(&self) -> Option<&'static str> {
         match self {
             IoError::GroupLimit { .. } => Some("ERR_GO_LIM"),
+            // Manual §1.9: no contact with the I/O device.
+            IoError::NotRunning { .. } => Some("ERR_NORUNUNIT"),
             IoError::AnalogLimit { .. } => Some("ERR_AO_LIM"),
             // uncertain: the manuals list no recoverable error for a write refused by the
             // access level; ERR_SIG_NOT_VALID ("the signal cannot be accessed") is the closest.
@@ -120,6 +124,9 @@ impl fmt::Display for IoError {
             }
             IoError::TooManyPulses { signal } => {
                 write!(f, "cannot pulse `{signal}`: {} signals are pulsing already", crate::MAX_PULSING)
+            }
+            IoError::NotRunning { signal, device } => {
+                write!(f, "signal `{signal}` cannot be reached: its I/O device `{device}` is disabled")
             }
             IoError::TooManyDelayed { signal } => write!(
                 f,

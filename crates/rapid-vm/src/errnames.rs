@@ -121,4 +121,6 @@ errors! {
     Frame = "ERR_FRAME",
     OutsideReach = "ERR_OUTSIDE_REACH",
     RobLimit = "ERR_ROBLIMIT",
+    // I/O devices and networks (§1.9).
+    NoRunUnit = "ERR_NORUNUNIT",
 }

@@ -4,6 +4,7 @@
 mod config;
 mod cross;
 mod orders;
+mod units;
 mod values;
 
 use crate::{Cause, Change, CrossConnection, CrossOp, IoSystem, SignalDef, SignalId, SignalKind};

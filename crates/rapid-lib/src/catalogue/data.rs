@@ -457,7 +457,8 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST tpnum TP_LATEST := 2;", "The FlexPendant window used before the current one."),
     data("CONST tpnum TP_SCREENVIEWER := 3;", "FlexPendant ScreenViewer window."),
     // ---- iounit_state ------------------------------------------------------------------------
-    // uncertain: iounit_state values recalled (1.., 10.., 20.. ranges), not confirmed.
+    // The numbers agree with public RAPID programs that test IOUnitState's result by number
+    // (1-4 without a switch, 10-11 with \Logic, 20-26 with \Phys).
     data("CONST iounit_state IOUNIT_RUNNING := 1;", "I/O device running."),
     data("CONST iounit_state IOUNIT_RUNERROR := 2;", "I/O device in error."),
     data("CONST iounit_state IOUNIT_DISABLE := 3;", "I/O device disabled."),
@@ -472,7 +473,8 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST iounit_state IOUNIT_PHYS_STATE_STARTUP := 25;", "I/O device starting up."),
     data("CONST iounit_state IOUNIT_PHYS_STATE_INIT := 26;", "I/O device being initialized."),
     // ---- busstate ----------------------------------------------------------------------------
-    // uncertain: busstate values assumed.
+    // BUSSTATE_HALTED..BUSSTATE_INIT = 0..4 agree with public RAPID programs.
+    // uncertain: the IOBUS_LOG_STATE_* and IOBUS_PHYS_STATE_* numbers are assumed.
     data("CONST busstate BUSSTATE_HALTED := 0;", "I/O network halted."),
     data("CONST busstate BUSSTATE_RUN := 1;", "I/O network running."),
     data("CONST busstate BUSSTATE_ERROR := 2;", "I/O network in error."),

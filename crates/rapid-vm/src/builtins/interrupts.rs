@@ -1,5 +1,6 @@
 //! Interrupts (§1.11): the task's interrupt table and the instructions that order,
-//! deactivate and delete interrupts — ITimer, ISignalDI, ISignalDO, IDelete, ISleep,
+//! deactivate and delete interrupts — ITimer, ISignalDI, ISignalDO, ISignalGI,
+//! ISignalGO, ISignalAI, ISignalAO, IPers, IError, IDelete, ISleep,
 //! IWatch, IDisable, IEnable. CONNECT (compiled) gives an intnum its identity and trap;
 //! the executor (`exec/interrupts.rs`) notices events and runs the traps.
 //!
@@ -8,7 +9,7 @@
 //! most `MAX_QUEUED` (manual §1.11: interrupts are queued while disabled or while a trap
 //! runs).
 
-use super::io::signal;
+use super::io::connected;
 use super::{present, Ctx, Entries};
 use crate::errnames::Err;
 use crate::error::RapidError;
@@ -27,6 +28,8 @@ pub enum Source {
     Timer { period: f64, next: f64, single: bool },
     /// ISignalDI/ISignalDO: when signal `id` changes to `value` (2: any change).
     Signal { id: u32, value: f64, single: bool },
+    /// ISignalAI/ISignalAO: when a new value of analog signal `id` meets `trigger`.
+    Analog { id: u32, trigger: rapid_io::AnalogTrigger, single: bool },
     /// IPers: when the persistent at `place` gets a value other than `last`.
     Pers { place: crate::value::Place, last: Value, single: bool },
     /// IError: an event-log entry of `domain` (0: any), number `id` (any when `None`)
@@ -86,7 +89,7 @@ impl InterruptState {
 
     /// Whether any interrupt watches signals.
     pub fn watches_signals(&self) -> bool {
-        self.table.iter().flatten().any(|i| matches!(i.source, Some(Source::Signal { .. })))
+        self.table.iter().flatten().any(|i| matches!(i.source, Some(Source::Signal { .. } | Source::Analog { .. })))
     }
 
     /// A new interrupt for `trap`; its number.
@@ -155,7 +158,7 @@ fn itimer(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// TriggValue 0 (falling to 0), 1 (rising to 1) or 2 (any change).
 fn isignal_digital(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let single = present(args.first()) || present(args.get(1));
-    let id = signal(ctx, &args[2])?;
+    let id = connected(ctx, &args[2])?;
     let value = ctx.num(&args[3])?;
     if ![0.0, 1.0, 2.0].contains(&value) {
         return Err(ctx.error(Err::ArgValue, format!("TriggValue {value} is not 0, 1 or 2")));
@@ -169,9 +172,32 @@ fn isignal_digital(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// group's value.
 fn isignal_group(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let single = present(args.first()) || present(args.get(1));
-    let id = signal(ctx, &args[2])?;
+    let id = connected(ctx, &args[2])?;
     let n = interrupt_number(ctx, &args[3])?;
     watch_signal(ctx, n, Source::Signal { id, value: 2.0, single });
+    Ok(None)
+}
+
+/// `ISignalAI/ISignalAO [\Single] | [\SingleSafe] Signal Condition HighValue LowValue
+/// DeltaValue [\DPos] | [\DNeg] Interrupt`: new values of an analog signal that meet
+/// the condition (`rapid_io::AnalogTrigger`); the reference value is the signal's value now.
+fn isignal_analog(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let single = present(args.first()) || present(args.get(1));
+    let id = connected(ctx, &args[2])?;
+    let condition = ctx.num(&args[3])?;
+    let (high, low, delta) = (ctx.num(&args[4])?, ctx.num(&args[5])?, ctx.num(&args[6])?);
+    let direction = if present(args.get(7)) {
+        rapid_io::AioDirection::Pos
+    } else if present(args.get(8)) {
+        rapid_io::AioDirection::Neg
+    } else {
+        rapid_io::AioDirection::Both
+    };
+    let current = ctx.resources.io.system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0);
+    let trigger = rapid_io::AnalogTrigger::new(condition, high, low, delta, direction, current)
+        .map_err(|err| ctx.error(Err::ArgValue, err.to_string()))?;
+    let n = interrupt_number(ctx, &args[9])?;
+    watch_signal(ctx, n, Source::Analog { id, trigger, single });
     Ok(None)
 }
 
@@ -319,6 +345,8 @@ pub(super) static ENTRIES: Entries = &[
     ("GetTrapData", get_trap_data),
     ("ReadErrData", read_err_data),
     ("ISignalGO", isignal_group),
+    ("ISignalAI", isignal_analog),
+    ("ISignalAO", isignal_analog),
     ("IDelete", idelete),
     ("ISleep", isleep),
     ("IWatch", iwatch),

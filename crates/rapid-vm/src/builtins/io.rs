@@ -1,12 +1,14 @@
 //! I/O signals (§1.9) on the task's I/O system (`crates/rapid-io`, in
 //! `Resources::io`): AliasIO, AliasIOReset, Set, Reset, SetDO, SetAO, SetGO, InvertDO,
-//! PulseDO, TestDI, ValidIO, and reading signals in expressions.
+//! PulseDO, TestDI, ValidIO, GetSignalOrigin, GetGroupSignalInfo, and reading signals in
+//! expressions.
 //!
-//! Signal data holds `OpaqueState::Handle(id)` once connected (AliasIO, or the I/O
-//! configuration for its own signals) and nothing before: using it then raises
-//! ERR_NO_ALIASIO_DEF (manual §1.9). Every access first brings the I/O system up to the
-//! controller's time, so delayed and pulsed orders take effect when they are due.
-//! `rapid run` has no I/O configuration yet (issue 5): there, AliasIO finds no signal.
+//! Signal data holds `OpaqueState::Handle(id)` once connected (the I/O configuration for
+//! its own signals; AliasIO, which also sets `ALIAS_BIT`) and nothing before: using it
+//! then raises ERR_NO_ALIASIO_DEF (manual §1.9). A signal on a disabled I/O device
+//! cannot be read or written: ERR_NORUNUNIT (§1.9), and ValidIO is FALSE. Every access
+//! first brings the I/O system up to the controller's time, so delayed and pulsed orders
+//! take effect when they are due.
 
 use rapid_io::{IoSystem, SignalKind};
 use rapid_sema::types::TypeId;
@@ -153,25 +155,44 @@ fn react(
     *seen = changes.len();
 }
 
-/// The value of signal data, or `None` when it is not connected (ERR_NO_ALIASIO_DEF).
-pub(crate) fn read_signal(resources: &mut Resources, time: f64, data: &Value) -> Option<f64> {
+/// AliasIO marks the handle it stores with this bit, so GetSignalOrigin can tell a
+/// connection made by AliasIO (SIGORIG_ALIAS) from a configured signal (SIGORIG_CFG).
+const ALIAS_BIT: u32 = 1 << 31;
+
+/// The signal signal data is connected to, and whether AliasIO connected it; `None` when
+/// it is not connected.
+fn handle_of(data: &Value) -> Option<(u32, bool)> {
     let Value::Opaque(opaque) = data else { return None };
-    let OpaqueState::Handle(id) = opaque.state else { return None };
-    resources.io.advance(time);
-    resources.io.system.as_ref()?.value(id)
+    let OpaqueState::Handle(handle) = opaque.state else { return None };
+    Some((handle & !ALIAS_BIT, handle & ALIAS_BIT != 0))
 }
 
-/// The signal id signal data (an argument) is connected to.
+/// The value of signal data in an expression. `Err(None)`: not connected
+/// (ERR_NO_ALIASIO_DEF); `Err(Some(message))`: its I/O device is disabled
+/// (ERR_NORUNUNIT, manual §1.9).
+pub(crate) fn read_signal(resources: &mut Resources, time: f64, data: &Value) -> Result<f64, Option<String>> {
+    let (id, _) = handle_of(data).ok_or(None)?;
+    resources.io.advance(time);
+    let system = resources.io.system.as_ref().ok_or(None)?;
+    system.read(id).map_err(|fault| Some(fault.to_string()))
+}
+
+/// The signal id signal data (an argument) is connected to, checked to be reachable now:
+/// ERR_NO_ALIASIO_DEF when not connected, ERR_NORUNUNIT when its device is disabled.
 pub(super) fn signal(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
+    let id = connected(ctx, arg)?;
+    let fault = ctx.resources.io.system.as_ref().and_then(|io| io.read(id).err());
+    match fault {
+        Some(fault) => Err(io_error(ctx, &fault)),
+        None => Ok(id),
+    }
+}
+
+/// The signal id signal data (an argument) is connected to, whatever its device's state;
+/// ERR_NO_ALIASIO_DEF when not connected.
+pub(super) fn connected(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
     let data = ctx.value(arg)?;
-    let connected = match &data {
-        Value::Opaque(opaque) => match opaque.state {
-            OpaqueState::Handle(id) => Some(id),
-            _ => None,
-        },
-        _ => None,
-    };
-    let Some(id) = connected else {
+    let Some((id, _)) = handle_of(&data) else {
         return Err(ctx.error(Err::NoAliasIoDef, "the signal variable is not connected to an I/O signal (AliasIO)"));
     };
     ctx.resources.io.advance(ctx.time);
@@ -190,7 +211,7 @@ fn order(ctx: &mut Ctx<'_>, run: impl FnOnce(&mut IoSystem, f64) -> Result<(), r
     }
 }
 
-fn io_error(ctx: &Ctx<'_>, fault: &rapid_io::IoError) -> RapidError {
+pub(super) fn io_error(ctx: &Ctx<'_>, fault: &rapid_io::IoError) -> RapidError {
     let named = fault.rapid_error().and_then(|name| Err::ALL.iter().copied().find(|e| e.name() == name));
     match named {
         Some(err) => ctx.error(err, fault.to_string()),
@@ -254,39 +275,39 @@ fn pulse_do(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     order(ctx, |io, t| io.pulse(id, high, length, t))
 }
 
+/// The value of a signal argument, reachable now (see [`signal`]).
+fn read(ctx: &mut Ctx<'_>, arg: &Value) -> Result<f64, RapidError> {
+    let id = signal(ctx, arg)?;
+    Ok(ctx.resources.io.system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0))
+}
+
 /// `TestDI(Signal)`: whether a digital input is 1.
 fn test_di(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let id = signal(ctx, &args[0])?;
-    let value = ctx.resources.io.system.as_ref().and_then(|io| io.value(id));
-    Ok(Some(Value::Bool(value == Some(1.0))))
+    let value = read(ctx, &args[0])?;
+    Ok(Some(Value::Bool(value == 1.0)))
 }
 
 /// `GInputDnum(Signal)` / `GOutputDnum(Signal)`: a group's value as a dnum, exact for
 /// groups of up to 32 bits (a num holds integers exactly only to 23 bits, manual §1.9).
 fn group_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let id = signal(ctx, &args[0])?;
-    let value = ctx.resources.io.system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0);
+    let value = read(ctx, &args[0])?;
     Ok(Some(Value::Dnum(value)))
 }
 
 /// `DInput`, `DOutput`, `GInput`, `GOutput`, `AInput`, `AOutput` (older forms of reading
 /// a signal): the signal's value as a num.
 fn signal_value(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let id = signal(ctx, &args[0])?;
-    let value = ctx.resources.io.system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0);
+    let value = read(ctx, &args[0])?;
     Ok(Some(Value::Num(value as f32)))
 }
 
-/// `ValidIO(Signal)`: whether the signal can be used now: connected, on a running unit
-/// (every simulated unit runs).
+/// `ValidIO(Signal)`: whether the signal can be used now: connected, and virtual or on
+/// an enabled device.
 fn valid_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let valid = match ctx.value(&args[0])? {
-        Value::Opaque(opaque) => match opaque.state {
-            OpaqueState::Handle(id) => ctx.resources.io.system.as_ref().is_some_and(|io| io.def(id).is_some()),
-            _ => false,
-        },
-        _ => false,
-    };
+    let data = ctx.value(&args[0])?;
+    let valid = handle_of(&data).is_some_and(|(id, _)| {
+        ctx.resources.io.system.as_ref().is_some_and(|io| io.def(id).is_some() && io.is_running(id))
+    });
     Ok(Some(Value::Bool(valid)))
 }
 
@@ -301,7 +322,7 @@ fn alias_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
             let id = ctx.resources.io.system.as_ref().and_then(|io| io.id(&name));
             id.ok_or_else(|| ctx.error(Err::AliasIoDef, format!("no signal `{name}` in the I/O configuration")))?
         }
-        other => signal(ctx, &other)?,
+        other => connected(ctx, &other)?,
     };
     let Value::Ref(_) = &args[1] else { return Err(ctx.error(Err::ArgValue, "ToSignal must be signal data")) };
     let Value::Opaque(target) = ctx.value(&args[1])? else {
@@ -312,8 +333,51 @@ fn alias_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if from_kind.is_none() || from_kind != to_kind {
         return Err(ctx.error(Err::AliasIoType, "FromSignal and ToSignal are different kinds of signal"));
     }
-    let connected = Opaque { ty: target.ty, state: OpaqueState::Handle(from) };
+    let connected = Opaque { ty: target.ty, state: OpaqueState::Handle(from | ALIAS_BIT) };
     ctx.store(&args[1], Value::Opaque(Box::new(connected)))?;
+    Ok(None)
+}
+
+/// signalorigin values (manual §1.9 data type signalorigin).
+// uncertain: the numbers 0, 1, 2 follow the order the manual lists the constants in.
+const SIGORIG_NONE: f32 = 0.0;
+const SIGORIG_CFG: f32 = 1.0;
+const SIGORIG_ALIAS: f32 = 2.0;
+
+/// `GetSignalOrigin(Signal, SignalName)`: SIGORIG_NONE for signal data that is not
+/// connected (SignalName ""), SIGORIG_CFG for a signal of the I/O configuration,
+/// SIGORIG_ALIAS for signal data AliasIO connected; SignalName is then the configured
+/// signal's name.
+fn get_signal_origin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let data = ctx.value(&args[0])?;
+    let found = handle_of(&data).and_then(|(id, alias)| {
+        let name = ctx.resources.io.system.as_ref()?.name(id)?.to_string();
+        Some((if alias { SIGORIG_ALIAS } else { SIGORIG_CFG }, name))
+    });
+    let (origin, name) = found.unwrap_or((SIGORIG_NONE, String::new()));
+    ctx.store(&args[1], Value::Str(name.into()))?;
+    Ok(Some(Value::Num(origin)))
+}
+
+/// `GetGroupSignalInfo Signal [\MaxDvalue] [\Label] [\DeviceName]`: the largest value
+/// of a group signal (2^bits - 1), its configured label and its device ("" for a virtual
+/// signal). Configuration data, so a disabled device does not matter.
+// uncertain: a signal that is not a group is refused with ERR_ARGVALERR.
+fn get_group_signal_info(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let id = connected(ctx, &args[0])?;
+    let def = ctx.resources.io.system.as_ref().and_then(|io| io.def(id)).cloned();
+    let Some(def) = def.filter(|d| d.kind.is_group()) else {
+        return Err(ctx.error(Err::ArgValue, "GetGroupSignalInfo needs a group signal (GI or GO)"));
+    };
+    if present(args.get(1)) {
+        ctx.store(&args[1], Value::Dnum(rapid_io::group_max(def.group_bits)))?;
+    }
+    if present(args.get(2)) {
+        ctx.store(&args[2], Value::Str(def.label.as_str().into()))?;
+    }
+    if present(args.get(3)) {
+        ctx.store(&args[3], Value::Str(def.device.unwrap_or_default().into()))?;
+    }
     Ok(None)
 }
 
@@ -347,4 +411,6 @@ pub(super) static ENTRIES: Entries = &[
     ("AInput", signal_value),
     ("AOutput", signal_value),
     ("GOutputDnum", group_dnum),
+    ("GetSignalOrigin", get_signal_origin),
+    ("GetGroupSignalInfo", get_group_signal_info),
 ];

@@ -1,21 +1,44 @@
-//! The I/O system of a configuration: EIO.cfg's signals and cross-connections (read by
-//! `rapid-config`) turned into `rapid-io`'s definitions.
+//! The I/O system of a configuration: EIO.cfg's signals, devices, networks and
+//! cross-connections (read by `rapid-config`) turned into `rapid-io`'s definitions.
 
 use rapid_config::eio::{Eio, SignalType};
-use rapid_io::{Access, AnalogRange, CrossConnection, CrossOp, IoSystem, SignalDef, SignalKind};
+use rapid_io::{Access, AnalogRange, CrossConnection, CrossOp, DeviceDef, IoSystem, SignalDef, SignalKind};
 
 /// The I/O system EIO.cfg describes, or why it cannot start (the message names the
 /// signal or cross-connection and its line).
 pub fn io_system(eio: &Eio) -> Result<IoSystem, String> {
     let defs: Vec<SignalDef> = eio.signals.iter().map(signal_def).collect();
     let crosses: Vec<CrossConnection> = eio.cross.iter().map(cross_connection).collect();
-    IoSystem::new(defs, crosses).map_err(|err| format!("EIO.cfg: {err}"))
+    let networks = eio.networks.iter().map(|n| n.name.clone()).collect();
+    IoSystem::with_units(defs, crosses, devices(eio), networks).map_err(|err| format!("EIO.cfg: {err}"))
+}
+
+/// The configured devices, and one enabled device for every device name a signal uses
+/// without a device section.
+// uncertain: the controller refuses a signal on a device that is not configured; we keep
+// such configurations running (many hand-written EIO.cfg files list only signals).
+fn devices(eio: &Eio) -> Vec<DeviceDef> {
+    let mut devices: Vec<DeviceDef> = eio
+        .devices
+        .iter()
+        .map(|d| DeviceDef { name: d.name.clone(), network: d.network.clone(), enabled: d.enabled })
+        .collect();
+    for signal in &eio.signals {
+        let Some(name) = &signal.device else { continue };
+        if !devices.iter().any(|d| d.name.eq_ignore_ascii_case(name)) {
+            devices.push(DeviceDef::new(name, None));
+        }
+    }
+    devices
 }
 
 fn signal_def(signal: &rapid_config::eio::Signal) -> SignalDef {
     let mut def = SignalDef::new(&signal.name, kind(signal.signal_type));
     def.default = signal.default.unwrap_or(0.0);
     def.access = access(signal.access.as_deref());
+    def.device = signal.device.clone();
+    def.label = signal.label.clone().unwrap_or_default();
+    def.start_bit = signal.bits.first().copied();
     if matches!(def.kind, SignalKind::GI | SignalKind::GO) {
         def.group_bits = u8::try_from(signal.width()).unwrap_or(32).clamp(1, 32);
     }

@@ -17,6 +17,7 @@ mod geometry;
 pub mod interrupts;
 pub mod io;
 pub mod io_config;
+mod io_units;
 mod io_wait;
 mod math;
 mod matrix;
@@ -296,6 +297,7 @@ static FAMILIES: &[Entries] = &[
     io::ENTRIES,
     interrupts::ENTRIES,
     io_wait::ENTRIES,
+    io_units::ENTRIES,
     spy::ENTRIES,
     cfgdata::ENTRIES,
     tasking::ENTRIES,

@@ -30,7 +30,7 @@ const NAME_TAKING: &[&str] = &[
     "GetServiceInfo",
 ];
 
-const SIGNAL_TAKING: &[&str] = &["AliasIO", "AliasIOReset", "ValidIO", "GetSignalOrigin"];
+const SIGNAL_TAKING: &[&str] = &["AliasIO", "AliasIOReset", "ValidIO", "GetSignalOrigin", "GetGroupSignalInfo"];
 
 impl RoutineCompiler<'_> {
     /// A call of `name` with `args`; `in_expr` for function calls (the result is pushed).

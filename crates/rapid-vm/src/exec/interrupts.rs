@@ -48,8 +48,17 @@ impl Vm {
             for change in changes.get(interrupts.seen_changes..).unwrap_or(&[]) {
                 for (idx, slot) in interrupts.table.iter_mut().enumerate() {
                     let Some(interrupt) = slot else { continue };
-                    let Some(Source::Signal { id, value, single }) = interrupt.source else { continue };
-                    if id == change.id && (value == 2.0 || value == change.new) {
+                    let (fires, single) = match &mut interrupt.source {
+                        Some(Source::Signal { id, value, single }) if *id == change.id => {
+                            (*value == 2.0 || *value == change.new, *single)
+                        }
+                        // ISignalAI/AO: every new value is a sample of the analog signal.
+                        Some(Source::Analog { id, trigger, single }) if *id == change.id => {
+                            (trigger.sample(change.new), *single)
+                        }
+                        _ => continue,
+                    };
+                    if fires {
                         fired.push(idx as u32 + 1);
                         if single {
                             interrupt.source = None;

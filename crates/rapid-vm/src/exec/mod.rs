@@ -606,8 +606,10 @@ impl Vm {
                 let data = self.pop();
                 let value = crate::builtins::io::read_signal(&mut self.resources, self.time, &data);
                 match value {
-                    Some(value) => self.push(Value::Num(value as f32)),
-                    None => {
+                    Ok(value) => self.push(Value::Num(value as f32)),
+                    // The signal's I/O device is disabled (manual §1.9).
+                    Err(Some(message)) => return Err(self.error(Err::NoRunUnit, message)),
+                    Err(None) => {
                         let name = match code.consts.get(name as usize) {
                             Some(Value::Str(s)) => s.to_string(),
                             _ => String::new(),
