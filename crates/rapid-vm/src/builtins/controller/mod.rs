@@ -32,6 +32,8 @@ pub(super) static ENTRIES: Entries = &[
     ("MotionPlannerNo", units::motion_planner_no),
     ("GetMecUnitName", units::get_mec_unit_name),
     ("GetServiceInfo", units::get_service_info),
+    ("CTool", sysdata::c_tool),
+    ("CWObj", sysdata::c_wobj),
 ];
 
 /// The TCP speed limit of manual reduced speed mode, in mm/s (manual: in manual

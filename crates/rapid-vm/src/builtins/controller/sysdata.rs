@@ -181,3 +181,24 @@ fn named_global(ctx: &Ctx<'_>, name: &str, kind: usize) -> Result<u32, RapidErro
 fn type_name(kind: usize) -> &'static str {
     ["tooldata", "wobjdata", "loaddata"].get(kind).copied().unwrap_or("system data")
 }
+
+/// `CTool([\TaskRef] | [\TaskName])` and `CWObj(…)`: the value of the active tool or
+/// work object (of another task through a persistent both declare, as GetSysData).
+fn current(ctx: &mut Ctx<'_>, args: &[Value], kind: usize) -> Res {
+    let owner = data_owner(ctx, args)?;
+    let (_, place) = match owner {
+        Some(task) => active_in(ctx, &task, kind)?,
+        None => active(ctx, kind)
+            .ok_or_else(|| ctx.error(Err::SymAccess, format!("the system has no {}", DEFAULT_NAMES[kind])))?,
+    };
+    let value = ctx.storage.get(&place).map_err(|(e, m)| ctx.error(e, m))?.clone();
+    Ok(Some(value))
+}
+
+pub(crate) fn c_tool(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    current(ctx, args, 0)
+}
+
+pub(crate) fn c_wobj(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    current(ctx, args, 1)
+}

@@ -62,6 +62,8 @@ pub(super) static ENTRIES: Entries = &[
     ("CPos", readback::c_pos),
     ("CalcRobT", readback::calc_rob_t),
     ("CalcJointT", readback::calc_joint_t),
+    ("PDispOn", readback::pdisp_on),
+    ("EOffsOn", readback::eoffs_on),
 ];
 
 /// Where the motion family's system data and types are in the loaded program (set

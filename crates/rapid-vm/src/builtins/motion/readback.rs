@@ -123,3 +123,49 @@ pub(crate) fn calc_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         None => Err(err),
     }
 }
+
+/// `PDispOn [\Rot] [\ExeP] ProgPoint, Tool [\WObj]`: a program displacement that
+/// carries ProgPoint onto ExeP, or onto where the TCP is now (a stop point should
+/// come first); translation only, with the rotation too under `\Rot`; in the object
+/// frame.
+// uncertain: the robot's current position is taken without the displacement active
+// before (the displacement is replaced, not added to).
+pub(crate) fn pdisp_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (prog, _) = data::robtarget(ctx, &ctx.value(&args[2])?)?;
+    let actual = if present(args.get(1)) {
+        data::robtarget(ctx, &ctx.value(&args[1])?)?.0
+    } else {
+        let tool = ctx.value(&args[3])?;
+        let wobj = if present(args.get(4)) { Some(ctx.value(&args[4])?) } else { None };
+        let chain = data::chain(ctx, &tool, wobj.as_ref(), nalgebra::Isometry3::identity())?;
+        let now = ctx.time;
+        let robot = &mut ctx.resources.robot;
+        let joints = robot.joints_at(now);
+        chain.target_of(&robot.kin.forward(&joints))
+    };
+    let disp = rapid_motion::frames::pdisp_from(&prog, &actual, present(args.first()));
+    super::settings::set_pdisp(ctx, disp)
+}
+
+/// `EOffsOn [\ExeP] ProgPoint`: external axis offsets that carry ProgPoint's axes onto
+/// ExeP's (or the current ones); an axis unused in either (9E9) gets no offset. This
+/// robot has no external axes, so without ExeP every offset is 0.
+pub(crate) fn eoffs_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let prog = extax(ctx, &ctx.value(&args[1])?)?;
+    let actual = if present(args.first()) { extax(ctx, &ctx.value(&args[0])?)? } else { [data::UNUSED_AXIS; 6] };
+    let mut offsets = [0.0; 6];
+    for ((offset, p), a) in offsets.iter_mut().zip(prog).zip(actual) {
+        if p < 8.9e9 && a < 8.9e9 {
+            *offset = a - p;
+        }
+    }
+    super::settings::set_eoffs(ctx, offsets)
+}
+
+/// A robtarget's external axis values.
+fn extax(ctx: &Ctx<'_>, target: &Value) -> Result<[f64; 6], RapidError> {
+    match target {
+        Value::Record(r) if r.fields.len() == 4 => super::frame::extjoint(ctx, &r.fields[3]),
+        _ => Err(ctx.error(Err::ArgValue, "a robtarget was expected")),
+    }
+}

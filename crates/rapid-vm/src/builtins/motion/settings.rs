@@ -194,6 +194,16 @@ pub(crate) fn pdisp_set(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     update(ctx, |s| s.pdisp = disp)
 }
 
+/// Makes `disp` the program displacement (PDispOn).
+pub(super) fn set_pdisp(ctx: &mut Ctx<'_>, disp: Isometry3<f64>) -> Res {
+    update(ctx, |s| s.pdisp = disp)
+}
+
+/// Sets the external axis offsets (EOffsOn).
+pub(super) fn set_eoffs(ctx: &mut Ctx<'_>, offsets: [f64; 6]) -> Res {
+    update(ctx, |s| s.eoffs = offsets)
+}
+
 /// `PDispOff`: no program displacement.
 pub(crate) fn pdisp_off(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     update(ctx, |s| s.pdisp = Isometry3::from_parts(Translation3::identity(), nalgebra::UnitQuaternion::identity()))
