@@ -386,7 +386,12 @@ fn message_queue_errors_are_the_controllers() {
                 stage := 6;\n    RMQGetMessage empty;\n    TPWrite \"done\";\n  ERROR\n    \
                 TPWrite \"step \" + NumToStr(stage, 0) + \": \" \\Num:=ERRNO;\n    TRYNEXT;\n  \
                 ENDPROC\nENDMODULE\n";
-    let sink = "MODULE M2\n  PROC main()\n    WaitTime 1;\n  ENDPROC\nENDMODULE\n";
+    // At 0.5 s T_SINK empties its queue (the two messages T_ROB1 put there), so its
+    // RMQReadWait then waits in vain.
+    let sink = "MODULE M2\n  VAR rmqmessage msg;\n  PROC main()\n    WaitTime 0.5;\n    RMQEmptyQueue;\n    \
+                RMQReadWait msg \\TimeOut:=0.1;\n    TPWrite \"sink got one\";\n  ERROR\n    \
+                IF ERRNO = ERR_RMQ_TIMEOUT THEN\n      TPWrite \"sink: the queue was emptied\";\n      RETURN;\n    \
+                ENDIF\n  ENDPROC\nENDMODULE\n";
     let tasks = [
         TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: main },
         TaskDef {
@@ -403,7 +408,8 @@ fn message_queue_errors_are_the_controllers() {
     // message; ERR_RMQ_INVMSG 1116; T_ROB1 has no queue of its own: ERR_RMQ_NOMSG 1119.
     assert_eq!(
         text(&out.stdout),
-        "step 1: 1118\nRMQ_T_SINK\nstep 2: 1115\nstep 3: 1117\nstep 4: 1114\nstep 5: 1116\nstep 6: 1119\ndone\n"
+        "step 1: 1118\nRMQ_T_SINK\nstep 2: 1115\nstep 3: 1117\nstep 4: 1114\nstep 5: 1116\nstep 6: 1119\ndone\n\
+         sink: the queue was emptied\n"
     );
 }
 
