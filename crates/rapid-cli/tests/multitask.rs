@@ -468,3 +468,37 @@ fn event_routines_run_at_power_on_start_and_stop() {
         text(&out.stderr)
     );
 }
+
+#[test]
+fn searchl_finds_the_edge_from_the_stimulus() {
+    let dir = scratch("searchl");
+    // The probe input rises 0.5 s after doStart; the search runs at 100 mm/s with a
+    // 10 m/s^2 ramp (0.5 mm in its first 0.01 s), so the hit is 0.5 + 0.49 * 100 =
+    // 49.5 mm along x, where \Stop stops the robot. A second search for a rising edge
+    // starts with the input already high (ERR_SIGSUPSEARCH); a third, for a falling
+    // edge that never comes, reaches its ToPoint without a hit (ERR_WHLSEARCH).
+    let program = "MODULE S\n  CONST robtarget p0 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];\n  \
+                   VAR robtarget hit;\n  VAR pos at;\n  VAR clock c;\n  VAR num stage := 0;\n  PROC main()\n    \
+                   MoveJ p0, v1000, fine, tool0;\n    ClkStart c;\n    SetDO doStart, 1;\n    stage := 1;\n    \
+                   SearchL \\Stop, diProbe, hit, Offs(p0, 100, 0, 0), v100, tool0;\n    \
+                   TPWrite \"hit x \" + NumToStr(hit.trans.x, 1) + \" after \" + NumToStr(ClkRead(c), 2);\n    \
+                   at := CPos();\n    TPWrite \"robot at x \" + NumToStr(at.x, 1);\n    stage := 2;\n    \
+                   SearchL diProbe, hit, Offs(p0, 100, 0, 0), v100, tool0;\n    stage := 3;\n    \
+                   SearchL diProbe \\NegFlank, hit, Offs(p0, 100, 0, 0), v100, tool0;\n    TPWrite \"done\";\n  \
+                   ERROR\n    IF ERRNO = ERR_SIGSUPSEARCH TPWrite \"stage \" + NumToStr(stage, 0) + \": ERR_SIGSUPSEARCH\";\n    \
+                   at := CPos();\n    IF ERRNO = ERR_WHLSEARCH TPWrite \"stage \" + NumToStr(stage, 0) + \": ERR_WHLSEARCH, robot at x \" + NumToStr(at.x, 1);\n    \
+                   TRYNEXT;\n  ENDPROC\nENDMODULE\n";
+    let tasks = [TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: program }];
+    system(
+        &dir,
+        &tasks,
+        "\n      -Name \"doStart\" -SignalType \"DO\"\n\n      -Name \"diProbe\" -SignalType \"DI\"\n",
+    );
+    fs::write(dir.join("probe.stim"), "when doStart = 1 after 0.5 s set diProbe 1\n").expect("stimulus");
+    let out = rapid_in(&dir, &["run", "--quiet", "--stimulus", "probe.stim", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(
+        text(&out.stdout),
+        "hit x 349.5 after 0.50\nrobot at x 349.5\nstage 2: ERR_SIGSUPSEARCH\nstage 3: ERR_WHLSEARCH, robot at x 400.0\ndone\n"
+    );
+}

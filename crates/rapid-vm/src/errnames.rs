@@ -121,6 +121,8 @@ errors! {
     Frame = "ERR_FRAME",
     OutsideReach = "ERR_OUTSIDE_REACH",
     RobLimit = "ERR_ROBLIMIT",
+    WhlSearch = "ERR_WHLSEARCH",
+    SigSupSearch = "ERR_SIGSUPSEARCH",
     // I/O devices and networks (§1.9).
     NoRunUnit = "ERR_NORUNUNIT",
 }

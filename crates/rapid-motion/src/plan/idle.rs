@@ -1,7 +1,7 @@
 //! The controller's side of the planner's clock: a robot with nothing to do stands
 //! still until the program gives it its next move.
 
-use super::Planner;
+use super::{Joints, Planner};
 
 impl Planner {
     /// The robot stands still until `t`: a move pushed now starts no earlier. No
@@ -10,5 +10,32 @@ impl Planner {
         if self.pending.is_none() && t.is_finite() && t > self.time {
             self.time = t;
         }
+    }
+}
+
+impl Planner {
+    /// The robot was stopped at `joints` at time `t` (a search hit): what was planned
+    /// after is dropped, and the next move starts from there.
+    pub fn restart_from(&mut self, joints: Joints, t: f64) {
+        self.pending = None;
+        self.joints = joints;
+        if t.is_finite() {
+            self.time = t;
+        }
+    }
+}
+
+impl super::PlannedMove {
+    /// The move cut short at time `t` (the robot stopped there): it ends at `t`,
+    /// standing where it was then. No effect at or after its end.
+    pub fn cut_at<K: crate::Kinematics + ?Sized>(&mut self, kin: &K, t: f64) {
+        if t.is_nan() || t >= self.end {
+            return;
+        }
+        let t = t.max(self.start);
+        self.end_joints = self.sample(kin, t).joints;
+        self.end = t;
+        self.zone_entry = self.zone_entry.min(t);
+        self.corner_time = 0.0;
     }
 }

@@ -16,6 +16,7 @@ mod moves;
 mod position;
 mod readback;
 pub mod robot;
+mod search;
 mod settings;
 
 pub(crate) use settings::set_payload;
@@ -64,6 +65,7 @@ pub(super) static ENTRIES: Entries = &[
     ("CalcJointT", readback::calc_joint_t),
     ("PDispOn", readback::pdisp_on),
     ("EOffsOn", readback::eoffs_on),
+    ("SearchL", search::search_l),
 ];
 
 /// Where the motion family's system data and types are in the loaded program (set

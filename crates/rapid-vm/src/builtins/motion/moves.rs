@@ -84,7 +84,7 @@ const MOVE_ABS_J: Layout = Layout {
 /// The controller's motion errors: execution stops (they are not program errors an
 /// ERROR handler can take). Event numbers as RobotWare logs them.
 // uncertain: the event numbers are from memory of RobotWare's event log.
-fn motion_error(err: MotionError) -> RapidError {
+pub(super) fn motion_error(err: MotionError) -> RapidError {
     let text = match err {
         MotionError::OutOfReach => "50050 Position outside reach".to_string(),
         MotionError::JointLimit { axis } => format!("50028 Joint {axis} out of range"),
@@ -129,7 +129,7 @@ fn speed_and_zone(
 
 /// The settings moves are planned with (VelSet, AccSet, the operator's and the
 /// task's speed overrides; manual reduced speed caps the TCP at 250 mm/s).
-fn planner_settings(ctx: &Ctx<'_>) -> MotionSettings {
+pub(super) fn planner_settings(ctx: &Ctx<'_>) -> MotionSettings {
     let s = &ctx.resources.motion.settings;
     let controller = &ctx.resources.controller;
     let vel_max = controller.tcp_speed_limit().map_or(s.vel_max, |limit| s.vel_max.min(limit));
@@ -143,7 +143,7 @@ fn planner_settings(ctx: &Ctx<'_>) -> MotionSettings {
 }
 
 /// Only a motion task (`-MotionTask`) runs move instructions (§1.20).
-fn require_motion_task(ctx: &Ctx<'_>) -> Result<(), RapidError> {
+pub(super) fn require_motion_task(ctx: &Ctx<'_>) -> Result<(), RapidError> {
     let tasking = &ctx.resources.tasking;
     let me = tasking.shared.tasks.iter().find(|t| t.name.eq_ignore_ascii_case(tasking.name()));
     if me.is_none_or(|t| t.motion) {
@@ -187,8 +187,19 @@ fn frames(
     layout: &Layout,
     displaced: bool,
 ) -> Result<rapid_motion::frames::FrameChain, RapidError> {
-    let tool = ctx.value(&args[layout.tool])?;
-    let wobj = if present(args.get(layout.wobj)) { Some(ctx.value(&args[layout.wobj])?) } else { None };
+    frames_at(ctx, args, layout.tool, layout.wobj, displaced)
+}
+
+/// The frames of the tool and (optional) work object arguments at these places.
+pub(super) fn frames_at(
+    ctx: &Ctx<'_>,
+    args: &[Value],
+    tool: usize,
+    wobj: usize,
+    displaced: bool,
+) -> Result<rapid_motion::frames::FrameChain, RapidError> {
+    let tool = ctx.value(&args[tool])?;
+    let wobj = if present(args.get(wobj)) { Some(ctx.value(&args[wobj])?) } else { None };
     let pdisp = if displaced { ctx.resources.motion.settings.pdisp } else { nalgebra::Isometry3::identity() };
     data::chain(ctx, &tool, wobj.as_ref(), pdisp)
 }

@@ -39,6 +39,8 @@ pub struct RobotState {
     pub moves: u64,
     /// Fly-by points the robot had to stop at.
     pub corner_path_failures: u64,
+    /// The SearchL under way.
+    pub search: Option<super::search::Search>,
 }
 
 impl Default for RobotState {
@@ -64,6 +66,7 @@ impl RobotState {
             motion_end: 0.0,
             moves: 0,
             corner_path_failures: 0,
+            search: None,
         }
     }
 
@@ -141,5 +144,28 @@ impl RobotState {
             Some(m) => m.sample(&self.kin, m.start).joints,
             None => self.ahead.back().map_or_else(|| self.planner.end_joints(), |m| m.end_joints),
         }
+    }
+
+    /// The robot stops where it is at time `t` (a search hit with a stop): the move it
+    /// is on ends there and nothing planned after it is kept. Returns the joints.
+    pub fn stop_at(&mut self, t: f64) -> Joints {
+        while self.ahead.back().is_some_and(|m| m.start > t && self.ahead.len() > 1) {
+            self.ahead.pop_back();
+        }
+        if let Some(last) = self.ahead.back_mut() {
+            last.cut_at(&self.kin, t);
+        }
+        if let Some(recorded) = &mut self.recorded {
+            while recorded.last().is_some_and(|m| m.start > t && recorded.len() > 1) {
+                recorded.pop();
+            }
+            if let Some(last) = recorded.last_mut() {
+                last.cut_at(&self.kin, t);
+            }
+        }
+        let joints = self.ahead.back().map_or_else(|| self.planner.end_joints(), |m| m.end_joints);
+        self.motion_end = self.ahead.back().map_or(t, |m| m.end);
+        self.planner.restart_from(joints, self.motion_end);
+        joints
     }
 }

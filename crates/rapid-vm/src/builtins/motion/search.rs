@@ -1,0 +1,224 @@
+//! SearchL (§1.8): a linear move to ToPoint that records where a digital input (or a
+//! persistent bool) changes — by default on its rising edge, `\Flanks` on both,
+//! `\NegFlank` falling, `\HighLevel`/`\LowLevel` on a level. With `\Stop`, `\PStop` or
+//! `\SStop` the robot stops at the first hit; otherwise it goes on to ToPoint (`\Sup`:
+//! a second hit is an error). No hit: ERR_WHLSEARCH; the edge's level already there at
+//! the start: ERR_SIGSUPSEARCH.
+//!
+//! The move is planned as a stop point when the instruction starts; the instruction
+//! then waits (re-checking) until the move ends, looking at the signal's change log
+//! (or the persistent's value) at every wake, so a hit has its exact time for a
+//! signal, and the time of the wake for a persistent another task changed.
+
+use rapid_motion::plan::{MoveRequest, Target};
+
+use super::super::{present, Ctx, StopKind};
+use super::data;
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::Value;
+
+type Res = Result<Option<Value>, RapidError>;
+
+/// Arguments of SearchL.
+const STOP: usize = 0;
+const PSTOP: usize = 1;
+const SSTOP: usize = 2;
+const SUP: usize = 3;
+const SIGNAL: usize = 4;
+const PERS_BOOL: usize = 5;
+const FLANKS: usize = 6;
+const NEG_FLANK: usize = 8;
+const HIGH_LEVEL: usize = 9;
+const LOW_LEVEL: usize = 10;
+const SEARCH_POINT: usize = 11;
+const TO_POINT: usize = 12;
+const ID: usize = 13;
+const SPEED: usize = 14;
+const V: usize = 15;
+const T: usize = 16;
+const TOOL: usize = 17;
+const WOBJ: usize = 18;
+const CORR: usize = 19;
+
+/// What counts as a hit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Trigger {
+    Rising,
+    Falling,
+    Both,
+    High,
+    Low,
+}
+
+impl Trigger {
+    fn of(args: &[Value]) -> Trigger {
+        if present(args.get(FLANKS)) {
+            Trigger::Both
+        } else if present(args.get(NEG_FLANK)) {
+            Trigger::Falling
+        } else if present(args.get(HIGH_LEVEL)) {
+            Trigger::High
+        } else if present(args.get(LOW_LEVEL)) {
+            Trigger::Low
+        } else {
+            Trigger::Rising
+        }
+    }
+
+    /// Whether a change from `old` to `new` is a hit.
+    fn hit(self, old: bool, new: bool) -> bool {
+        match self {
+            Trigger::Rising => !old && new,
+            Trigger::Falling => old && !new,
+            Trigger::Both => old != new,
+            Trigger::High => new,
+            Trigger::Low => !new,
+        }
+    }
+}
+
+/// A search under way.
+#[derive(Debug, Clone)]
+pub struct Search {
+    /// The instruction (call depth, pc).
+    at: (usize, u32),
+    /// When the move ends (the robot at ToPoint).
+    end: f64,
+    /// How much of the signal change log was looked at; the persistent's last value.
+    seen: usize,
+    last: bool,
+    hits: u32,
+}
+
+/// `SearchL`.
+pub(crate) fn search_l(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    super::moves::require_motion_task(ctx)?;
+    for (idx, name) in [(ID, "\\ID"), (T, "\\T"), (CORR, "\\Corr")] {
+        if present(args.get(idx)) {
+            return Err(RapidError::fatal(format!("{name} on SearchL is not supported by `rapid run` yet")));
+        }
+    }
+    let here = (ctx.chain.len(), ctx.chain.last().map_or(0, |f| f.position().1));
+    let search = match ctx.resources.robot.search.take().filter(|s| s.at == here) {
+        Some(search) => search,
+        None => start(ctx, args, here)?,
+    };
+    look(ctx, args, search)
+}
+
+/// Checks the start condition and gives the robot the search move.
+fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32)) -> Result<Search, RapidError> {
+    let trigger = Trigger::of(args);
+    let (level, seen) = level_now(ctx, args)?;
+    let flank = matches!(trigger, Trigger::Rising | Trigger::Falling);
+    if flank && trigger.hit(!level, level) {
+        // uncertain: the manual raises this when the edge's level is there at the start.
+        return Err(ctx.error(Err::SigSupSearch, "the search signal already has its hit value at the start"));
+    }
+    let chain = super::moves::frames_at(ctx, args, TOOL, WOBJ, true)?;
+    let (target, _) = data::robtarget(ctx, &ctx.value(&args[TO_POINT])?)?;
+    let to = chain.flange_goal(&target) * chain.tframe;
+    let mut speed = data::speed(ctx, &ctx.value(&args[SPEED])?)?;
+    if let Some(v) = ctx.opt_num(args.get(V))? {
+        speed.v_tcp = v;
+    }
+    let request =
+        MoveRequest { target: Target::Linear(to), speed, zone: rapid_motion::plan::ZoneData::FINE, tool: chain.tframe };
+    let settings = super::moves::planner_settings(ctx);
+    let now = ctx.time;
+    let robot = &mut ctx.resources.robot;
+    robot.set_settings(settings);
+    let end = robot.push(now, &request, false).map_err(super::moves::motion_error)?;
+    robot.active = chain;
+    Ok(Search { at, end, seen, last: level, hits: 0 })
+}
+
+/// The signal's (or persistent's) level now, and how long the change log is.
+fn level_now(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<(bool, usize), RapidError> {
+    if present(args.get(PERS_BOOL)) {
+        return Ok((matches!(ctx.value(&args[PERS_BOOL])?, Value::Bool(true)), 0));
+    }
+    let id = super::super::io::signal(ctx, &args[SIGNAL])?;
+    ctx.resources.io.advance(ctx.time);
+    let io = ctx.resources.io.system.as_ref();
+    let level = io.and_then(|io| io.value(id)).unwrap_or(0.0) != 0.0;
+    Ok((level, io.map_or(0, |io| io.changes().len())))
+}
+
+/// Looks for hits since the last look; ends the search, or waits on.
+fn look(ctx: &mut Ctx<'_>, args: &[Value], mut search: Search) -> Res {
+    let trigger = Trigger::of(args);
+    let now = ctx.time;
+    let mut first_hit = None;
+    for (time, old, new) in events(ctx, args, &mut search)? {
+        if trigger.hit(old, new) {
+            search.hits += 1;
+            first_hit.get_or_insert(time);
+        }
+    }
+    let stops = [STOP, PSTOP, SSTOP].iter().any(|&i| present(args.get(i)));
+    if let Some(t) = first_hit {
+        if search.hits == 1 {
+            store_hit(ctx, args, t)?;
+        }
+        if stops {
+            // uncertain: the stop distance of \Stop, \PStop and \SStop is not modelled;
+            // the robot stands at the hit position.
+            ctx.resources.robot.stop_at(t);
+            return Ok(None);
+        }
+    }
+    if now < search.end {
+        let next = ctx.resources.io.next_event_time().map_or(search.end, |n| n.min(search.end));
+        ctx.wait = Some((next - now).max(1e-6));
+        ctx.stop = StopKind::Repeat;
+        ctx.resources.robot.search = Some(search);
+        return Ok(None);
+    }
+    finish(ctx, args, &search)
+}
+
+/// The robot is at ToPoint: no hit, or (`\Sup`) more than one, are errors.
+fn finish(ctx: &mut Ctx<'_>, args: &[Value], search: &Search) -> Res {
+    if search.hits == 0 {
+        return Err(ctx.error(Err::WhlSearch, "the search reached ToPoint without a hit"));
+    }
+    if present(args.get(SUP)) && search.hits > 1 {
+        return Err(ctx.error(Err::SigSupSearch, "more than one hit during a supervised search (\\Sup)"));
+    }
+    Ok(None)
+}
+
+/// The level changes since the last look: (time, old, new).
+fn events(ctx: &mut Ctx<'_>, args: &[Value], search: &mut Search) -> Result<Vec<(f64, bool, bool)>, RapidError> {
+    if present(args.get(PERS_BOOL)) {
+        let level = matches!(ctx.value(&args[PERS_BOOL])?, Value::Bool(true));
+        let old = std::mem::replace(&mut search.last, level);
+        return Ok(if old != level { vec![(ctx.time, old, level)] } else { Vec::new() });
+    }
+    let id = super::super::io::signal(ctx, &args[SIGNAL])?;
+    ctx.resources.io.advance(ctx.time);
+    let Some(io) = ctx.resources.io.system.as_ref() else { return Ok(Vec::new()) };
+    let changes = io.changes();
+    let found = changes
+        .get(search.seen..)
+        .unwrap_or(&[])
+        .iter()
+        .filter(|c| c.id == id && c.time <= search.end)
+        .map(|c| (c.time, c.old != 0.0, c.new != 0.0))
+        .collect();
+    search.seen = changes.len();
+    Ok(found)
+}
+
+/// SearchPoint: where the TCP was at time `t`, in the search's tool and work object.
+fn store_hit(ctx: &mut Ctx<'_>, args: &[Value], t: f64) -> Result<(), RapidError> {
+    let chain = ctx.resources.robot.active;
+    let robot = &mut ctx.resources.robot;
+    let joints = robot.joints_at(t);
+    let pose = chain.target_of(&rapid_motion::Kinematics::forward(&robot.kin, &joints));
+    let conf = rapid_motion::confdata::confdata_of(&robot.kin, &joints);
+    let value = data::robtarget_value(ctx, &pose, conf)?;
+    ctx.store(&args[SEARCH_POINT], value)
+}
