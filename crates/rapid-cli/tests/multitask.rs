@@ -502,3 +502,30 @@ fn searchl_finds_the_edge_from_the_stimulus() {
         "hit x 349.5 after 0.50\nrobot at x 349.5\nstage 2: ERR_SIGSUPSEARCH\nstage 3: ERR_WHLSEARCH, robot at x 400.0\ndone\n"
     );
 }
+
+#[test]
+fn ierror_in_one_task_sees_the_errors_of_another() {
+    let dir = scratch("ierror");
+    // T_REPORT (static) orders an interrupt for every error of any domain
+    // (COMMON_ERR, TYPE_ERR). T_ROB1 logs a user error at 0.5 s (ErrWrite: domain 8)
+    // and divides by zero at 1 s with no handler (the system error handler's entry:
+    // domain 4, program errors). The run ends with T_ROB1, after T_REPORT's trap for
+    // the last error has run.
+    let rob = "MODULE R\n  VAR num zero := 0;\n  PROC main()\n    WaitTime 0.5;\n    ErrWrite \"Gripper\", \"no part\";\n    \
+               WaitTime 0.5;\n    TPWrite \"ratio \" \\Num:=1 / zero;\n  ENDPROC\nENDMODULE\n";
+    let report = "MODULE E\n  VAR intnum errors;\n  VAR trapdata data;\n  PROC main()\n    CONNECT errors WITH on_error;\n    \
+                  IError COMMON_ERR, TYPE_ERR, errors;\n    WHILE TRUE DO\n      WaitTime 10;\n    ENDWHILE\n  ENDPROC\n  \
+                  TRAP on_error\n    VAR errdomain domain;\n    VAR num id;\n    VAR errtype kind;\n    VAR string title;\n    \
+                  GetTrapData data;\n    ReadErrData data, domain, id, kind \\Title:=title;\n    \
+                  TPWrite \"caught domain \" + NumToStr(domain, 0) + \" type \" + NumToStr(kind, 0);\n  ENDTRAP\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: rob },
+        TaskDef { name: "T_REPORT", attrs: "-Type \"STATIC\" -TrustLevel \"NoSafety\"", module: report },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
+    // ErrWrite also shows its message on the pendant.
+    assert_eq!(text(&out.stdout), "Gripper\nno part\ncaught domain 8 type 3\ncaught domain 4 type 3\n");
+    assert!(text(&out.stderr).contains("ERR_DIVZERO"), "{}", text(&out.stderr));
+}

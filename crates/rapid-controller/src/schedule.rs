@@ -17,6 +17,12 @@ use crate::types::{type_map, TypeMap};
 // without waiting.
 pub const INSTRUCTION_TIME: f64 = 1e-6;
 
+/// Instructions the remaining (static) tasks may run after the last NORMAL task ended.
+const MAX_DRAIN_STEPS: u64 = 100_000;
+
+/// Entries the controller-wide event log keeps for IError across tasks.
+const MAX_SHARED_EVENTS: usize = 100_000;
+
 /// Why [`Controller::run`] returned.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum SystemExit {
@@ -51,6 +57,9 @@ pub struct Task {
     pers: TaskPers,
     /// Index of the task this one stands behind.
     foreground: Option<usize>,
+    /// The sequence number of the first entry of its event log not yet in the
+    /// controller-wide log.
+    events_copied: u64,
 }
 
 impl Task {
@@ -85,6 +94,8 @@ pub struct Controller {
     pub system_stop: Option<SystemStop>,
     /// Each task's STOP event routines, run when it stops (by index).
     pub stop_routines: Vec<Vec<String>>,
+    /// Instructions run since the last NORMAL task ended.
+    drained: u64,
 }
 
 impl Controller {
@@ -117,7 +128,7 @@ impl Controller {
             loaded.vm.exchange_shared(&mut shared);
             loaded.vm.connect_configured_signals();
             loaded.vm.exchange_shared(&mut shared);
-            built.push(Task { spec, loaded, state: State::Ready, pers: view, foreground: None });
+            built.push(Task { spec, loaded, state: State::Ready, pers: view, foreground: None, events_copied: 0 });
         }
         for idx in 0..built.len() {
             let Some(name) = built[idx].spec.foreground.clone() else { continue };
@@ -130,7 +141,17 @@ impl Controller {
             built[idx].foreground = Some(fg);
         }
         let stop_routines = vec![Vec::new(); built.len()];
-        Ok(Controller { tasks: built, shared, pers, maps, time: 0.0, steps: 0, system_stop: None, stop_routines })
+        Ok(Controller {
+            tasks: built,
+            shared,
+            pers,
+            maps,
+            time: 0.0,
+            steps: 0,
+            system_stop: None,
+            stop_routines,
+            drained: 0,
+        })
     }
 
     /// The I/O system the tasks share (its change log), if there is one.
@@ -167,8 +188,27 @@ impl Controller {
         let outcome = task.loaded.vm.run_event_routine(host, routine, event, entry);
         task.loaded.vm.exchange_shared(&mut self.shared);
         self.pers.copy_out(idx, &mut task.pers, &task.loaded.vm);
+        self.publish_events(idx);
         self.time = self.time.max(self.tasks[idx].loaded.vm.time);
         outcome
+    }
+
+    /// Copies what task `idx` logged into the controller-wide log, where the other
+    /// tasks' IError interrupts see it (the controller has one event log).
+    // uncertain: the controller's log is bounded; past MAX_SHARED_EVENTS entries the
+    // other tasks see no more (each task's own log still keeps its newest entries).
+    fn publish_events(&mut self, idx: usize) {
+        let task = &mut self.tasks[idx];
+        let entries = task.loaded.vm.event_log();
+        let start = entries.partition_point(|e| e.seq < task.events_copied);
+        let Some(last) = entries.last() else { return };
+        if start == entries.len() {
+            return;
+        }
+        task.events_copied = last.seq + 1;
+        if self.shared.tasking.events.len() < MAX_SHARED_EVENTS {
+            self.shared.tasking.log_events(idx, &entries[start..]);
+        }
     }
 
     /// Runs at most `budget` instructions, all tasks together.
@@ -176,12 +216,20 @@ impl Controller {
         let mut remaining = budget;
         while remaining > 0 {
             self.wake();
+            let mut runnable = self.runnable();
             if self.is_over() {
-                self.halt_the_rest();
-                return SystemExit::Ended;
-            }
-            let runnable = self.runnable();
-            if runnable.is_empty() {
+                // The other tasks finish the interrupts under way now (a trap for the
+                // last error, say), without the clock moving on to their next wait:
+                // each looks once, then only those with a trap to run go on.
+                if self.drained > 0 {
+                    runnable.retain(|&idx| self.tasks[idx].loaded.vm.has_interrupt_work());
+                }
+                if runnable.is_empty() || self.drained >= MAX_DRAIN_STEPS {
+                    self.halt_the_rest();
+                    return SystemExit::Ended;
+                }
+                self.drained += runnable.len() as u64;
+            } else if runnable.is_empty() {
                 return match self.next_wake() {
                     Some(until) => SystemExit::Wait((until - self.time).max(0.0)),
                     None => {
@@ -214,6 +262,7 @@ impl Controller {
         let exit = task.loaded.vm.run(host, 1);
         task.loaded.vm.exchange_shared(&mut self.shared);
         self.pers.copy_out(idx, &mut task.pers, &task.loaded.vm);
+        self.publish_events(idx);
         self.steps += 1;
         // A built-in that waited on the outside world (a socket) moved the task's clock.
         self.time = self.time.max(self.tasks[idx].loaded.vm.time) + INSTRUCTION_TIME;

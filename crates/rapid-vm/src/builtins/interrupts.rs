@@ -67,7 +67,13 @@ pub struct InterruptState {
     pub events: Vec<(u32, u64)>,
     /// The event of the trap that runs now (GetTrapData).
     pub trap_event: Option<u64>,
+    /// How much of the controller-wide log (other tasks' entries) IError has seen.
+    pub next_foreign: usize,
 }
+
+/// A trapdata handle or an event number with this bit set names an entry of the
+/// controller-wide log (another task's), by its index there.
+pub const FOREIGN_EVENT: u64 = 1 << 31;
 
 impl InterruptState {
     /// Whether anything can fire (the executor then watches every instruction).
@@ -232,10 +238,12 @@ fn ierror(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let id = ctx.opt_num(args.get(1))?.map(|n| n as u32);
     let kind = ctx.num(&args[2])? as u32;
     let n = interrupt_number(ctx, &args[3])?;
-    // Only entries from now on count.
+    // Only entries from now on count (this task's and the other tasks').
     let next = ctx.events.entries().last().map_or(0, |e| e.seq + 1);
+    let foreign = ctx.resources.tasking.shared.events.len();
     let interrupts = &mut ctx.resources.interrupts;
     interrupts.next_event = interrupts.next_event.max(next);
+    interrupts.next_foreign = interrupts.next_foreign.max(foreign);
     if let Some(interrupt) = interrupts.get_mut(n) {
         interrupt.source = Some(Source::Error { domain, id, kind });
     }
@@ -265,7 +273,13 @@ fn read_err_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         },
         _ => None,
     };
-    let event = seq.and_then(|seq| ctx.events.entries().iter().find(|e| e.seq == seq).cloned());
+    let event = seq.and_then(|seq| {
+        if seq & FOREIGN_EVENT != 0 {
+            let index = (seq & !FOREIGN_EVENT) as usize;
+            return ctx.resources.tasking.shared.events.get(index).map(|(_, e)| e.clone());
+        }
+        ctx.events.entries().iter().find(|e| e.seq == seq).cloned()
+    });
     let Some(event) = event else {
         return Err(ctx.error(Err::ArgValue, "TrapEvent holds no event (GetTrapData first)"));
     };

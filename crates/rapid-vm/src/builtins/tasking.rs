@@ -56,6 +56,9 @@ pub struct SharedTasking {
     sync: FxHashMap<String, SyncPoint>,
     /// Each task's RAPID Message Queue, by task index.
     pub queues: Vec<VecDeque<RmqMessage>>,
+    /// The event-log entries of every task, as the controller's one event log holds
+    /// them (IError in one task sees another's errors): (task index, entry).
+    pub events: Vec<(usize, crate::events::Event)>,
     /// Bumped on every change a waiting task could be waiting for.
     pub epoch: u64,
     /// The names of the tool, work object and payload each task activated, by task
@@ -77,11 +80,27 @@ impl SharedTasking {
     /// The system's tasks, in configuration order.
     pub fn new(tasks: Vec<TaskInfo>) -> SharedTasking {
         let queues = tasks.iter().map(|_| VecDeque::new()).collect();
-        SharedTasking { tasks, sync: FxHashMap::default(), queues, epoch: 0, sysdata: FxHashMap::default() }
+        SharedTasking {
+            tasks,
+            sync: FxHashMap::default(),
+            queues,
+            events: Vec::new(),
+            epoch: 0,
+            sysdata: FxHashMap::default(),
+        }
     }
 
     fn task(&self, name: &str) -> Option<&TaskInfo> {
         self.tasks.iter().find(|t| t.name.eq_ignore_ascii_case(name))
+    }
+
+    /// Adds entries task `task` logged to the controller-wide log.
+    pub fn log_events(&mut self, task: usize, entries: &[crate::events::Event]) {
+        if entries.is_empty() {
+            return;
+        }
+        self.events.extend(entries.iter().map(|e| (task, e.clone())));
+        self.epoch += 1;
     }
 
     /// Marks a task executing or not (the controller, as tasks start and end).

@@ -4,7 +4,7 @@
 //! the next possible interrupt (`builtins::interrupts::next_due`) so traps run in time.
 
 use super::Vm;
-use crate::builtins::interrupts::Source;
+use crate::builtins::interrupts::{Source, FOREIGN_EVENT};
 use crate::value::Value;
 
 impl Vm {
@@ -129,6 +129,7 @@ impl Vm {
         if let Some(last) = self.events.entries().last() {
             self.resources.interrupts.next_event = first_unseen.max(last.seq + 1);
         }
+        fired.extend(self.foreign_error_events());
         for (number, seq) in fired {
             let before = self.resources.interrupts.queue.len();
             self.resources.interrupts.fire(number);
@@ -136,6 +137,33 @@ impl Vm {
                 self.resources.interrupts.events.push((number, seq));
             }
         }
+    }
+
+    /// IError on the other tasks' entries of the controller-wide log: (interrupt,
+    /// entry named with [`FOREIGN_EVENT`]).
+    fn foreign_error_events(&mut self) -> Vec<(u32, u64)> {
+        let me = self.resources.tasking.index();
+        let shared = &self.resources.tasking.shared.events;
+        let start = self.resources.interrupts.next_foreign.min(shared.len());
+        let mut fired = Vec::new();
+        for (offset, (task, event)) in shared[start..].iter().enumerate() {
+            if *task == me {
+                continue;
+            }
+            for (idx, slot) in self.resources.interrupts.table.iter().enumerate() {
+                let Some(Source::Error { domain, id, kind }) = slot.as_ref().and_then(|i| i.source.clone()) else {
+                    continue;
+                };
+                let domain_ok = domain == 0 || domain == event.domain;
+                let id_ok = id.is_none_or(|id| id == event.number);
+                let kind_ok = kind == 0 || kind == crate::builtins::interrupts::event_type(event.kind);
+                if domain_ok && id_ok && kind_ok {
+                    fired.push((idx as u32 + 1, FOREIGN_EVENT | (start + offset) as u64));
+                }
+            }
+        }
+        self.resources.interrupts.next_foreign = shared.len();
+        fired
     }
 
     /// Starts the trap of the first queued interrupt, when one may run now: interrupts

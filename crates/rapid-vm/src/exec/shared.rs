@@ -23,6 +23,11 @@ impl Vm {
         self.resources.exchange_shared(shared);
     }
 
+    /// Whether an interrupt waits for its trap or a trap is running.
+    pub fn has_interrupt_work(&self) -> bool {
+        !self.resources.interrupts.queue.is_empty() || self.frames.iter().any(|f| f.interrupted)
+    }
+
     /// Whether the task has a procedure `name` (an event routine the configuration names).
     pub fn has_procedure(&self, name: &str) -> bool {
         self.procs_by_name.contains_key(&name.to_lowercase())
