@@ -36,6 +36,12 @@ fn entries(dir: &Path) -> Vec<Value> {
     text.lines().map(|l| serde_json::from_str::<Value>(l).expect("a JSON object per line")).collect()
 }
 
+/// The entries the program logged: all but the controller's own state changes
+/// (operational domain 1: the program started and stopped, seq 0, 1 and the last).
+fn program_entries(dir: &Path) -> Vec<Value> {
+    entries(dir).into_iter().filter(|e| e["domain"] != 1).collect()
+}
+
 /// `entry` without its title (compared separately: the program domain's titles are
 /// the VM's error messages).
 fn without_title(entry: &Value) -> Value {
@@ -95,18 +101,19 @@ fn every_entry_with_time_task_routine_and_place() {
     };
     let expected = [
         // ErrWrite: user domain (8), number 1 for an error; header as title.
-        entry(0, 0.0, 8, 1, "error", json!(["no part", "line 2"]), place("main", 8)),
+        // (seq 0 and 1 are the controller's: program pointer reset, program started.)
+        entry(2, 0.0, 8, 1, "error", json!(["no part", "line 2"]), place("main", 8)),
         // ErrLog \I after 1.5 s: ERRSTR_TASK is the task's name, unused arguments dropped.
-        entry(1, 1.5, 8, 4800, "info", json!(["started", "T_ROB1"]), place("main", 10)),
+        entry(3, 1.5, 8, 4800, "info", json!(["started", "T_ROB1"]), place("main", 10)),
         // The division by zero check's handler takes: a warning in the program domain (4).
-        entry(2, 1.5, 4, divzero, "warning", json!(["routine check"]), place("check", 17)),
+        entry(4, 1.5, 4, divzero, "warning", json!(["routine check"]), place("check", 17)),
         // ErrRaise logs its message, then raises ERR_GRIP ...
-        entry(3, 1.5, 8, 4801, "error", json!(["at station 3"]), place("check", 18)),
-        // ... whose warning (seq 4) SkipWarn takes out of the log; then main's division
+        entry(5, 1.5, 8, 4801, "error", json!(["at station 3"]), place("check", 18)),
+        // ... whose warning (seq 6) SkipWarn takes out of the log; then main's division
         // by zero after another 0.25 s reaches the system error handler: an error.
-        entry(5, 1.75, 4, divzero, "error", json!(["routine main"]), place("main", 13)),
+        entry(7, 1.75, 4, divzero, "error", json!(["routine main"]), place("main", 13)),
     ];
-    let got = entries(&dir);
+    let got = program_entries(&dir);
     assert_eq!(got.len(), expected.len(), "{got:#?}");
     for (got, expected) in got.iter().zip(&expected) {
         assert_eq!(&without_title(got), expected);
@@ -129,18 +136,37 @@ fn written_when_the_run_is_stopped_by_max_steps() {
     let out = run(&dir, program, &["--max-steps", "1000"]);
     assert_eq!(out.status.code(), Some(1), "{}", String::from_utf8_lossy(&out.stderr));
     let expected = json!({
-        "seq": 0, "time": 0.0, "task": "T_ROB1", "domain": 8, "number": 2, "code": 80002, "type": "warning",
+        "seq": 2, "time": 0.0, "task": "T_ROB1", "domain": 8, "number": 2, "code": 80002, "type": "warning",
         "title": "Looping", "description": ["forever"], "routine": "main", "file": "m.mod", "line": 3, "column": 5,
     });
-    assert_eq!(entries(&dir), [expected]);
+    assert_eq!(program_entries(&dir), [expected]);
 }
 
 #[test]
-fn an_empty_log_is_an_empty_file_and_nothing_else_is_left() {
+fn a_quiet_run_logs_its_start_and_stop_and_nothing_else_is_left() {
     let dir = fresh_dir("empty");
     let out = run(&dir, "MODULE m\n  PROC main()\n    TPWrite \"quiet\";\n  ENDPROC\nENDMODULE\n", &[]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    assert!(entries(&dir).is_empty());
+    assert!(program_entries(&dir).is_empty());
+    // The controller's state changes (operational domain 1): PP to main, started, stopped.
+    let state = |seq: u64, number: u64, title: &str, line: &str| {
+        json!({"seq": seq, "time": 0.0, "task": "T_ROB1", "domain": 1, "number": number, "code": 10_000 + number,
+               "type": "info", "title": title, "description": [line], "routine": null, "file": null, "line": null,
+               "column": null})
+    };
+    assert_eq!(
+        entries(&dir),
+        [
+            state(
+                0,
+                2,
+                "Program pointer has been reset",
+                "The program pointer of task T_ROB1 was set to its entry routine."
+            ),
+            state(1, 150, "Program started", "Program execution in task T_ROB1 has been started."),
+            state(2, 151, "Program stopped", "Program execution in task T_ROB1 has stopped: the program ended."),
+        ]
+    );
     let mut names: Vec<String> = fs::read_dir(&dir)
         .expect("read")
         .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
@@ -163,9 +189,9 @@ fn an_entry_from_a_module_loaded_at_run_time_names_its_rapid_path() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     // ErrWrite \I: user domain, number 3, at line 4 of the loaded module, after 0.5 s.
     let expected = json!({
-        "seq": 0, "time": 0.5, "task": "T_ROB1", "domain": 8, "number": 3, "code": 80003, "type": "info",
+        "seq": 2, "time": 0.5, "task": "T_ROB1", "domain": 8, "number": 3, "code": 80003, "type": "info",
         "title": "Tool used", "description": ["again"], "routine": "tool_use", "file": "HOME:/tool.mod",
         "line": 4, "column": 5,
     });
-    assert_eq!(entries(&dir), [expected]);
+    assert_eq!(program_entries(&dir), [expected]);
 }

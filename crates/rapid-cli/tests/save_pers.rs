@@ -224,8 +224,11 @@ fn a_module_that_cannot_be_saved_costs_the_others_nothing() {
     assert!(stderr.contains("a.mod") && stderr.contains("read-only"), "{stderr}");
     assert_eq!(fs::read_to_string(&a).expect("read a"), a_text);
     assert_eq!(fs::read_to_string(&b).expect("read b"), "MODULE b\n  PERS num y := 3;\nENDMODULE\n");
-    // The event log is written all the same (empty: nothing was logged).
-    assert_eq!(fs::read_to_string(dir.join("log.jsonl")).expect("the log"), "");
+    // The event log is written all the same: the program logged nothing, so it holds
+    // the controller's three state changes (PP reset, started, stopped) only.
+    let log = fs::read_to_string(dir.join("log.jsonl")).expect("the log");
+    let codes: Vec<&str> = log.lines().filter_map(|l| l.split("\"code\":").nth(1)?.split(',').next()).collect();
+    assert_eq!(codes, ["10002", "10150", "10151"], "{log}");
     fs::set_permissions(&a, fs::Permissions::from_mode(0o644)).expect("chmod");
     fs::remove_dir_all(&dir).expect("clean up");
 }

@@ -10,6 +10,15 @@ use rapid_syntax::Span;
 pub const USER_DOMAIN: u32 = 8;
 /// The program domain (PROGRAM_ERR): errors stopped by the system error handler.
 pub const PROGRAM_DOMAIN: u32 = 4;
+/// The operational domain (OP_STATE): state changes of the controller and its tasks.
+pub const OPERATIONAL_DOMAIN: u32 = 1;
+
+/// Operational state changes `rapid run` logs, as (number, title): the event code is
+/// the domain × 10000 + the number (10002, 10150, 10151).
+// uncertain: numbers and titles as we remember RobotWare 6's event log.
+pub const PP_RESET: (u32, &str) = (2, "Program pointer has been reset");
+pub const PROGRAM_STARTED: (u32, &str) = (150, "Program started");
+pub const PROGRAM_STOPPED: (u32, &str) = (151, "Program stopped");
 
 /// How serious an event is (the `\W` and `\I` switches of ErrWrite and ErrLog).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -63,6 +63,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     let answers = pendant_answers(args)?;
     let mut host = StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers };
     let task_name = inputs.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
+    log_start(&mut loaded.vm, &task_name);
     // `rapid run` is power on and a start from main: the POWER_ON, then the START
     // event routines run first.
     for shelf in ["POWER_ON", "START"] {
@@ -129,6 +130,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         }
     };
     host.flush();
+    log_stop(&mut loaded.vm, &task_name, status);
     let program_end = loaded.vm.time;
     let robot = &mut loaded.vm.resources_mut().robot;
     crate::motion_out::finish(robot, program_end, "T_ROB1", model_note.as_deref(), args)?;
@@ -152,6 +154,23 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         write_io_log(loaded.vm.io_system(), path)?;
     }
     Ok(status)
+}
+
+/// The event log's entries for a start from main: the program pointer reset, the
+/// program started.
+pub(crate) fn log_start(vm: &mut rapid_vm::Vm, task: &str) {
+    use rapid_vm::events::{PP_RESET, PROGRAM_STARTED};
+    vm.log_state(PP_RESET, format!("The program pointer of task {task} was set to its entry routine."));
+    vm.log_state(PROGRAM_STARTED, format!("Program execution in task {task} has been started."));
+}
+
+/// The event log's entry for the program's stop, with why it stopped.
+pub(crate) fn log_stop(vm: &mut rapid_vm::Vm, task: &str, status: ExitStatus) {
+    let why = match status {
+        ExitStatus::Success => "the program ended",
+        _ => "an error or a bound of the run stopped it",
+    };
+    vm.log_state(rapid_vm::events::PROGRAM_STOPPED, format!("Program execution in task {task} has stopped: {why}."));
 }
 
 /// Why event routines could not run.

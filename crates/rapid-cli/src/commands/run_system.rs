@@ -90,6 +90,10 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     }
     let mut host =
         StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers: single::pendant_answers(args)? };
+    for task in &mut controller.tasks {
+        let name = task.spec.name.clone();
+        single::log_start(&mut task.loaded.vm, &name);
+    }
     // Power on and a start from main: every task's POWER_ON, then START event routines;
     // STOP event routines run when a task stops.
     if let Err(message) = check_hooks(&controller, &sys) {
@@ -109,6 +113,13 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     let bounded = drive(&mut controller, &mut host, args);
     host.flush();
     let program_end = controller.time;
+    for task in &mut controller.tasks {
+        let name = task.spec.name.clone();
+        let failed = matches!(task.end(), Some(TaskEnd::Failed(_))) || bounded.is_some();
+        let status = if failed { ExitStatus::Failure } else { ExitStatus::Success };
+        task.loaded.vm.time = program_end;
+        single::log_stop(&mut task.loaded.vm, &name, status);
+    }
     for task in &mut controller.tasks {
         let name = task.spec.name.clone();
         let robot = &mut task.loaded.vm.resources_mut().robot;

@@ -23,6 +23,21 @@ impl Vm {
         self.resources.exchange_shared(shared);
     }
 
+    /// Logs a state change of the task (operational domain, information), as the
+    /// controller does when a program starts or stops.
+    pub fn log_state(&mut self, (number, title): (u32, &str), line: String) {
+        self.events.push(crate::events::Event {
+            seq: 0,
+            domain: crate::events::OPERATIONAL_DOMAIN,
+            number,
+            kind: crate::events::EventKind::Info,
+            time: self.time,
+            title: title.to_string(),
+            lines: vec![line],
+            place: None,
+        });
+    }
+
     /// Whether an interrupt waits for its trap or a trap is running.
     pub fn has_interrupt_work(&self) -> bool {
         !self.resources.interrupts.queue.is_empty() || self.frames.iter().any(|f| f.interrupted)
