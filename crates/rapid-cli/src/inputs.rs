@@ -52,6 +52,8 @@ pub(crate) struct Inputs {
     pub(crate) root: Option<PathBuf>,
     /// The robot model a manifest names (`[system] robot`).
     pub(crate) robot: Option<String>,
+    /// Which of `modules` are installed shared (one instance for every task).
+    pub(crate) shared_modules: Vec<usize>,
     /// Diagnostics found while reading the inputs. Their `file` indexes [`Inputs::table`].
     pub(crate) diagnostics: Vec<Diagnostic>,
     /// For each file of [`Inputs::table`], its place in the order the files were found,
@@ -122,6 +124,7 @@ struct Collector {
     sys: Option<sys::Sys>,
     root: Option<PathBuf>,
     robot: Option<String>,
+    shared_modules: Vec<usize>,
     /// Diagnostics whose `file` is an index into `configs`.
     config_diagnostics: Vec<Diagnostic>,
     /// Canonical paths already read, so a file named twice is checked once.
@@ -193,14 +196,58 @@ impl Collector {
         if modules.is_empty() {
             bail!("backup `{shown}`: task folder `{}` holds no modules in PROGMOD or SYSMOD", task.folder.display());
         }
-        for path in modules {
+        for path in &modules {
             let shown = path.display();
-            self.add_module(&path).with_context(|| format!("cannot read `{shown}`"))?;
+            self.add_module(path).with_context(|| format!("cannot read `{shown}`"))?;
+        }
+        if let Some(sys) = &sys {
+            self.add_shared_modules(folder, sys, &modules);
         }
         self.task = Some(task);
         self.sys = sys;
         self.root = Some(folder.to_path_buf());
         Ok(())
+    }
+
+    /// The modules SYS.cfg installs shared (`CAB_TASK_MODULES -Shared`): one module
+    /// every task sees, read from the backup's HOME folder (a backup does not keep it
+    /// in a task folder). A shared module of HOME that is missing is a finding in
+    /// SYS.cfg; one on another device (RobotWare's own, `RELEASE:/…`) is not in a
+    /// backup and is left out.
+    // uncertain: shared modules of RobotWare itself (BASE_SHARED and the like) are not
+    // modelled; their routines are in the catalogue.
+    fn add_shared_modules(&mut self, folder: &Path, sys: &sys::Sys, task_files: &[PathBuf]) {
+        for module in sys.modules.iter().filter(|m| m.shared) {
+            let Some(rest) =
+                module.file.get(..5).filter(|d| d.eq_ignore_ascii_case("HOME:")).map(|_| &module.file[5..])
+            else {
+                continue;
+            };
+            let rest = rest.trim_start_matches(['/', '\\']);
+            let file_name = Path::new(rest).file_name().and_then(|n| n.to_str()).unwrap_or(rest).to_owned();
+            let in_task = task_files
+                .iter()
+                .any(|p| p.file_name().and_then(|n| n.to_str()).is_some_and(|n| n.eq_ignore_ascii_case(&file_name)));
+            if in_task {
+                continue;
+            }
+            let path = backup::child(folder, "HOME").map(|home| {
+                rest.split(['/', '\\'])
+                    .fold(home, |dir, part| backup::child(&dir, part).unwrap_or_else(|| dir.join(part)))
+            });
+            match path.filter(|p| p.is_file()) {
+                Some(path) => {
+                    let index = self.modules.len();
+                    if self.add_module(&path).is_ok() && self.modules.len() > index {
+                        self.shared_modules.push(index);
+                    }
+                }
+                None => self.sys_finding(
+                    module.line,
+                    format!("shared module `{}` is not in the backup's HOME folder", module.file),
+                ),
+            }
+        }
     }
 
     /// Reads one configuration file: its findings, its signals (EIO) or its tasks
@@ -290,6 +337,16 @@ impl Collector {
         self.task = Some(TaskFolder { name: task.name.clone(), folder, entry: Some(task.entry.clone()) });
         self.sys = Some(manifest.sys);
         Ok(())
+    }
+
+    /// A finding at line `line` of the backup's SYS.cfg.
+    fn sys_finding(&mut self, line: u32, message: String) {
+        let Some(idx) = self.syspar.iter().position(|(domain, _)| domain == "SYS") else { return };
+        let text = &self.configs[idx].text;
+        let start: usize = text.split_inclusive('\n').take(line.saturating_sub(1) as usize).map(str::len).sum();
+        let end = text[start.min(text.len())..].find('\n').map_or(text.len(), |n| start + n);
+        let span = Span::new(start.min(text.len()), end);
+        self.config_diagnostics.push(Diagnostic::new(idx, Code::ConfigFile, span, message));
     }
 
     fn config_findings(&mut self, config_idx: usize, errors: &[CfgError]) {
@@ -390,6 +447,7 @@ impl Collector {
             sys: self.sys,
             root: self.root,
             robot: self.robot,
+            shared_modules: self.shared_modules,
             diagnostics,
             rank,
         }

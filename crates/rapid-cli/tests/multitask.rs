@@ -529,3 +529,39 @@ fn ierror_in_one_task_sees_the_errors_of_another() {
     assert_eq!(text(&out.stdout), "Gripper\nno part\ncaught domain 8 type 3\ncaught domain 4 type 3\n");
     assert!(text(&out.stderr).contains("ERR_DIVZERO"), "{}", text(&out.stderr));
 }
+
+#[test]
+fn a_shared_module_has_one_variable_for_all_tasks_and_task_var_one_each() {
+    let dir = scratch("shared_module");
+    // HOME:/shared.sys is installed shared: `counter` is one variable every task
+    // changes; `mine` (TASK VAR) has a value per task. T_ROB1 bumps at 0, T_B at 0.1.
+    let shared = "MODULE shared(SYSMODULE)\n  VAR num counter := 0;\n  TASK VAR num mine := 0;\n  PROC bump()\n    \
+                  counter := counter + 1;\n    mine := mine + 1;\n  ENDPROC\nENDMODULE\n";
+    let rob =
+        "MODULE R\n  PROC main()\n    bump;\n    WaitTime 0.2;\n    TPWrite \"rob counter \" \\Num:=counter;\n    \
+               TPWrite \"rob mine \" \\Num:=mine;\n  ENDPROC\nENDMODULE\n";
+    let b = "MODULE B\n  PROC main()\n    WaitTime 0.1;\n    bump;\n    WaitTime 0.2;\n    \
+             TPWrite \"b counter \" \\Num:=counter;\n    TPWrite \"b mine \" \\Num:=mine;\n  ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: rob },
+        TaskDef { name: "T_B", attrs: "-Type \"NORMAL\"", module: b },
+    ];
+    let root = system(&dir, &tasks, "");
+    fs::create_dir_all(root.join("HOME")).expect("HOME");
+    fs::write(root.join("HOME/shared.sys"), shared).expect("shared module");
+    let path = root.join("SYSPAR/SYS.cfg");
+    let sys = fs::read_to_string(&path).expect("SYS.cfg");
+    fs::write(&path, format!("{sys}#\nCAB_TASK_MODULES:\n\n      -File \"HOME:/shared.sys\" -Shared\n"))
+        .expect("SYS.cfg");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "rob counter 2\nrob mine 1\nb counter 2\nb mine 1\n");
+
+    // A shared module the backup's HOME does not hold: SYS.cfg's line is the finding.
+    fs::remove_file(root.join("HOME/shared.sys")).expect("remove");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = text(&out.stderr);
+    assert!(err.contains("shared module `HOME:/shared.sys` is not in the backup's HOME folder"), "{err}");
+    assert!(err.contains("SYS.cfg:"), "{err}");
+}

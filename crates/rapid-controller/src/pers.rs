@@ -32,7 +32,7 @@ pub(crate) struct TaskPers {
     seen: u64,
 }
 
-/// Every global persistent of the system.
+/// Every global persistent of the system, and the variables of shared modules.
 #[derive(Debug, Default)]
 pub struct PersStore {
     entries: Vec<Entry>,
@@ -45,10 +45,23 @@ impl PersStore {
     /// Registers task `task`'s global persistents. A persistent another task declared
     /// already keeps its value (the first declaration creates the object); one with
     /// another type or size is the error of §1.20.
-    pub(crate) fn register(&mut self, task: usize, task_name: &str, loaded: &Loaded) -> Result<TaskPers, String> {
+    pub(crate) fn register(
+        &mut self,
+        task: usize,
+        task_name: &str,
+        loaded: &Loaded,
+        shared_files: &[usize],
+    ) -> Result<TaskPers, String> {
         let mut view = TaskPers::default();
-        for pers in &loaded.shared_pers {
-            let key = pers.name.to_ascii_lowercase();
+        // The variables of a module installed shared are one object too (TASK VAR
+        // gives each task its own), kept apart from the persistents by their key.
+        let shared_vars = loaded
+            .module_vars
+            .iter()
+            .filter(|v| !v.task_scoped && shared_files.contains(&v.file))
+            .map(|v| (format!("var {}", v.data.name.to_ascii_lowercase()), &v.data));
+        let persistents = loaded.shared_pers.iter().map(|p| (p.name.to_ascii_lowercase(), p));
+        for (key, pers) in persistents.chain(shared_vars) {
             let value = loaded.vm.global(pers.global).cloned().unwrap_or(Value::Absent);
             let idx = match self.by_name.get(&key) {
                 Some(&idx) => {

@@ -123,7 +123,7 @@ impl Controller {
         let mut pers = PersStore::default();
         let mut built = Vec::with_capacity(tasks.len());
         for (idx, (spec, mut loaded)) in tasks.into_iter().enumerate() {
-            let view = pers.register(idx, &spec.name, &loaded)?;
+            let view = pers.register(idx, &spec.name, &loaded, &spec.shared_files)?;
             loaded.vm.resources_mut().tasking.me = spec.name.clone();
             loaded.vm.exchange_shared(&mut shared);
             loaded.vm.connect_configured_signals();

@@ -63,6 +63,9 @@ pub struct TaskSpec {
     pub motion: bool,
     /// Its RAPID Message Queue (`-RmqType` …).
     pub rmq: rapid_config::sys::Rmq,
+    /// Which of its files are modules installed shared (their variables are one
+    /// object for every task, except TASK VAR).
+    pub shared_files: Vec<usize>,
 }
 
 /// Why a task is no longer running.

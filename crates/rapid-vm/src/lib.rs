@@ -50,9 +50,22 @@ pub struct Loaded {
     pub entry: u32,
     /// The global persistents other tasks share by name (§1.20).
     pub shared_pers: Vec<SharedPers>,
+    /// Module-level variables (VAR) with their files: those of a module installed
+    /// shared are one object for every task unless declared TASK VAR (§1.2.2).
+    pub module_vars: Vec<ModuleVar>,
     /// Every type of the program by lower-case name: values passed between tasks have
     /// their record types renumbered through it.
     pub types_by_name: FxHashMap<String, rapid_sema::types::TypeId>,
+}
+
+/// A module-level variable and the file its module is in.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ModuleVar {
+    pub data: SharedPers,
+    /// Index of the module's file among the files loaded.
+    pub file: usize,
+    /// Declared `TASK VAR`: every task has its own value.
+    pub task_scoped: bool,
 }
 
 /// A module-level persistent declared neither LOCAL nor TASK: one object for every
@@ -179,9 +192,10 @@ pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Resul
     vm.steps = 0;
     let persistents = pers_sites(&prog, &modules);
     let shared_pers = shared_pers(&prog, &modules);
+    let module_vars = module_vars(&prog, &modules);
     let types_by_name = prog.types.named().map(|(id, name)| (name.to_ascii_lowercase(), id)).collect();
     let warnings = analysis.diagnostics;
-    Ok(Loaded { vm, warnings, persistents, entry: entry_routine, shared_pers, types_by_name })
+    Ok(Loaded { vm, warnings, persistents, entry: entry_routine, shared_pers, module_vars, types_by_name })
 }
 
 /// Late binding by `"module:procedure"` (public programs call loaded code as
@@ -238,6 +252,29 @@ fn shared_pers(prog: &Program, modules: &[compile::ModuleSource<'_>]) -> Vec<Sha
         });
     }
     shared
+}
+
+/// The module-level variables (VAR), with their files.
+fn module_vars(prog: &Program, modules: &[compile::ModuleSource<'_>]) -> Vec<ModuleVar> {
+    use rapid_sema::symbols::DataKind;
+    let mut vars = Vec::new();
+    for (global, data) in prog.datas.iter().enumerate() {
+        let DeclOrigin::Module { module, item } = data.origin else { continue };
+        let Some(source) = modules.get(module) else { continue };
+        let Some(rapid_syntax::ast::Item::Data(decl)) = source.module.items.get(item) else { continue };
+        if data.kind != DataKind::Var {
+            continue;
+        }
+        let shared = SharedPers {
+            global: global as u32,
+            name: data.display.clone(),
+            type_name: prog.types.name(data.ty).to_string(),
+            dims: data.dims,
+        };
+        let task_scoped = decl.scope == rapid_syntax::ast::DeclScope::Task;
+        vars.push(ModuleVar { data: shared, file: source.file, task_scoped });
+    }
+    vars
 }
 
 /// The program's types for the six signal kinds (AliasIO checks kinds by them).

@@ -42,6 +42,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             Some(inputs) => inputs,
             None => inputs::collect_task(&args.paths, Some(&spec.name))?,
         };
+        let spec = TaskSpec { shared_files: inputs.shared_modules.clone(), ..spec };
         tasks.push(LoadedTask { inputs, spec });
     }
     let mut loaded = Vec::new();
@@ -202,6 +203,7 @@ fn task_specs(sys: &Sys) -> Result<Vec<TaskSpec>, String> {
                 foreground: task.foreground.clone(),
                 motion: task.motion_task,
                 rmq: task.rmq,
+                shared_files: Vec::new(),
             })
         })
         .collect()
