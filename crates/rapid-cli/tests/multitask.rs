@@ -565,3 +565,28 @@ fn a_shared_module_has_one_variable_for_all_tasks_and_task_var_one_each() {
     assert!(err.contains("shared module `HOME:/shared.sys` is not in the backup's HOME folder"), "{err}");
     assert!(err.contains("SYS.cfg:"), "{err}");
 }
+
+#[test]
+fn one_task_reads_and_writes_anothers_data_and_robot() {
+    let dir = scratch("remote_data");
+    // T_LOG reads T_ROB1's module data by name (\TaskName and \TaskRef), writes one
+    // of its variables, and reads its robot's axes (CJointT \TaskRef), as a logger
+    // task does; T_ROB1 moved axis 5 to 30 degrees first.
+    let rob = "MODULE R\n  VAR num count := 7;\n  CONST num limit := 9;\n  PROC main()\n    \
+               MoveAbsJ [[0, 0, 0, 0, 30, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]], v1000, fine, tool0;\n    \
+               WaitTime 1;\n    TPWrite \"rob count \" \\Num:=count;\n  ENDPROC\nENDMODULE\n";
+    let log = "MODULE L\n  PROC main()\n    VAR num n;\n    VAR jointtarget jt;\n    WaitTime 0.5;\n    \
+               GetDataVal \"count\" \\TaskName:=\"T_ROB1\", n;\n    TPWrite \"log read \" \\Num:=n;\n    \
+               SetDataVal \"count\" \\TaskRef:=T_ROB1Id, n + 1;\n    jt := CJointT(\\TaskRef:=T_ROB1Id);\n    \
+               TPWrite \"rob axis 5 \" \\Num:=jt.robax.rax_5;\n    SetDataVal \"limit\" \\TaskName:=\"T_ROB1\", 1;\n  \
+               ERROR\n    IF ERRNO = ERR_SYM_ACCESS THEN\n      TPWrite \"limit is a constant\";\n      RETURN;\n    ENDIF\n  \
+               ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: rob },
+        TaskDef { name: "T_LOG", attrs: "-Type \"NORMAL\"", module: log },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "--quiet", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "log read 7\nrob axis 5 30\nlimit is a constant\nrob count 8\n");
+}

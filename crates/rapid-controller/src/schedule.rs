@@ -193,6 +193,60 @@ impl Controller {
         outcome
     }
 
+    /// Answers the request a task made of the controller (another task's data or
+    /// robot), if one waits; the asking task is woken to read the reply.
+    fn serve_request(&mut self) {
+        use rapid_vm::builtins::tasking::{Reply, Request};
+        let Some((who, request)) = self.shared.tasking.request.take() else { return };
+        let reply = match request {
+            Request::ReadData { task, name } => self.read_data(who, task, &name),
+            Request::WriteData { task, name, value } => self.write_data(who, task, &name, &value),
+            Request::Robot { task } => {
+                let time = self.time;
+                let robot = &mut self.tasks[task].loaded.vm.resources_mut().robot;
+                Reply::Robot(robot.joints_at(time), Box::new(robot.active))
+            }
+        };
+        self.shared.tasking.reply = Some((who, reply));
+        self.shared.tasking.epoch += 1;
+    }
+
+    /// GetDataVal from task `who` of task `task`'s module data `name`.
+    fn read_data(&self, who: usize, task: usize, name: &str) -> rapid_vm::builtins::tasking::Reply {
+        use rapid_vm::builtins::tasking::Reply;
+        let vm = &self.tasks[task].loaded.vm;
+        match vm.global_by_name(name).and_then(|(global, _)| vm.global(global)) {
+            Some(value) => Reply::Value(crate::types::renumber(value, &self.maps[task][who])),
+            None => Reply::Missing,
+        }
+    }
+
+    /// SetDataVal from task `who` into task `task`'s module data `name`; a shared
+    /// persistent goes to the store at once.
+    fn write_data(
+        &mut self,
+        who: usize,
+        task: usize,
+        name: &str,
+        value: &rapid_vm::value::Value,
+    ) -> rapid_vm::builtins::tasking::Reply {
+        use rapid_vm::builtins::tasking::Reply;
+        let value = crate::types::renumber(value, &self.maps[who][task]);
+        let target = &mut self.tasks[task];
+        // Up to date first, so that marking the store seen below skips nothing.
+        self.pers.copy_in(task, &mut target.pers, &mut target.loaded.vm, &self.maps);
+        let Some((global, constant)) = target.loaded.vm.global_by_name(name) else { return Reply::Missing };
+        if constant {
+            return Reply::Constant;
+        }
+        if !target.loaded.vm.global(global).is_some_and(|old| rapid_vm::builtins::same_type(old, &value)) {
+            return Reply::WrongType;
+        }
+        target.loaded.vm.set_global(global, value);
+        self.pers.copy_out(task, &mut target.pers, &target.loaded.vm);
+        Reply::Done
+    }
+
     /// Copies what task `idx` logged into the controller-wide log, where the other
     /// tasks' IError interrupts see it (the controller has one event log).
     // uncertain: the controller's log is bounded; past MAX_SHARED_EVENTS entries the
@@ -263,6 +317,7 @@ impl Controller {
         task.loaded.vm.exchange_shared(&mut self.shared);
         self.pers.copy_out(idx, &mut task.pers, &task.loaded.vm);
         self.publish_events(idx);
+        self.serve_request();
         self.steps += 1;
         // A built-in that waited on the outside world (a socket) moved the task's clock.
         self.time = self.time.max(self.tasks[idx].loaded.vm.time) + INSTRUCTION_TIME;

@@ -33,6 +33,7 @@ mod strdig;
 mod strformat;
 mod strings;
 mod symbols;
+pub use symbols::same_type;
 pub mod symsearch;
 mod sysinfo;
 mod system;

@@ -4,6 +4,7 @@
 //! routine's own data is not in the public record: uncertain). With `\Block` (a datapos
 //! from GetNextSym) the name is looked up as seen from that module: its LOCAL data too.
 
+use super::tasking::{Reply, Request};
 use super::{present, Ctx, NamedData};
 use crate::errnames::Err;
 use crate::error::RapidError;
@@ -11,14 +12,10 @@ use crate::value::{OpaqueState, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
-/// Finds `Object` after checking the task options (`\Block | \TaskRef | \TaskName`).
+/// Finds `Object` in this task (with `\Block`, as seen from that module).
 fn lookup(ctx: &Ctx<'_>, args: &[Value]) -> Result<NamedData, RapidError> {
     if present(args.get(1)) {
         return in_block(ctx, &args[0], &args[1]);
-    }
-    if present(args.get(3)) {
-        let task = ctx.string(&args[3])?;
-        super::tasking::check_own_task(ctx, &task, "reading or writing another task's data")?;
     }
     let name = ctx.string(&args[0])?;
     ctx.data_by_name
@@ -44,7 +41,7 @@ fn in_block(ctx: &Ctx<'_>, object: &Value, block: &Value) -> Result<NamedData, R
 }
 
 /// Whether two values have the same data type and shape (array sizes included).
-pub(super) fn same_type(a: &Value, b: &Value) -> bool {
+pub fn same_type(a: &Value, b: &Value) -> bool {
     match (a, b) {
         (Value::Num(_), Value::Num(_))
         | (Value::Dnum(_), Value::Dnum(_))
@@ -65,8 +62,20 @@ fn type_error(ctx: &Ctx<'_>, name: &str) -> RapidError {
 /// `GetDataVal Object [\Block]|[\TaskRef]|[\TaskName] Value`: copies the named data
 /// into Value, which must be of the same type (else ERR_SYMBOL_TYPE).
 pub(super) fn get_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let named = lookup(ctx, args)?;
-    let found = ctx.storage.globals[named.global as usize].clone();
+    let found = match super::tasking::other_task(ctx, args, 2)? {
+        Some(task) => {
+            let name = ctx.string(&args[0])?;
+            match super::tasking::ask(ctx, Request::ReadData { task, name: name.clone() }) {
+                None => return Ok(None),
+                Some(Reply::Value(value)) => value,
+                Some(_) => return Err(ctx.error(Err::SymAccess, format!("the task has no module data named `{name}`"))),
+            }
+        }
+        None => {
+            let named = lookup(ctx, args)?;
+            ctx.storage.globals[named.global as usize].clone()
+        }
+    };
     let target = &args[4];
     if !same_type(&found, &ctx.value(target)?) {
         return Err(type_error(ctx, &ctx.string(&args[0])?));
@@ -78,6 +87,9 @@ pub(super) fn get_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `SetDataVal Object [\Block]|[\TaskRef]|[\TaskName] Value`: writes Value into the
 /// named data. A constant cannot be written (ERR_SYM_ACCESS).
 pub(super) fn set_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    if let Some(task) = super::tasking::other_task(ctx, args, 2)? {
+        return set_in_other_task(ctx, args, task);
+    }
     let named = lookup(ctx, args)?;
     let name = ctx.string(&args[0])?;
     if named.constant {
@@ -89,4 +101,16 @@ pub(super) fn set_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     }
     ctx.storage.globals[named.global as usize] = value;
     Ok(None)
+}
+
+/// SetDataVal in another task, through the controller.
+fn set_in_other_task(ctx: &mut Ctx<'_>, args: &[Value], task: usize) -> Res {
+    let name = ctx.string(&args[0])?;
+    let value = ctx.value(&args[4])?;
+    match super::tasking::ask(ctx, Request::WriteData { task, name: name.clone(), value }) {
+        None | Some(Reply::Done) => Ok(None),
+        Some(Reply::Constant) => Err(ctx.error(Err::SymAccess, format!("`{name}` is a constant"))),
+        Some(Reply::WrongType) => Err(type_error(ctx, &name)),
+        Some(_) => Err(ctx.error(Err::SymAccess, format!("the task has no module data named `{name}`"))),
+    }
 }

@@ -49,6 +49,34 @@ struct SyncPoint {
     arrived: Vec<String>,
 }
 
+/// A service a task asks of the controller: another task's data or robot. The task
+/// waits (re-checking) until the controller has put the reply in the shared state.
+#[derive(Debug, Clone)]
+pub enum Request {
+    /// GetDataVal with `\TaskName`/`\TaskRef`: module data `name` of task `task`.
+    ReadData { task: usize, name: String },
+    /// SetDataVal with `\TaskName`/`\TaskRef`: `value` (in the asking task's types).
+    WriteData { task: usize, name: String, value: crate::value::Value },
+    /// CJointT/CRobT with `\TaskName`/`\TaskRef`: where task `task`'s robot is.
+    Robot { task: usize },
+}
+
+/// The controller's answer to a [`Request`].
+#[derive(Debug, Clone)]
+pub enum Reply {
+    /// The data's value, in the asking task's types.
+    Value(crate::value::Value),
+    /// Written.
+    Done,
+    /// No module data of that name; or it is a constant (for a write); or of
+    /// another type than the value written.
+    Missing,
+    Constant,
+    WrongType,
+    /// The robot's axes and its active frames.
+    Robot(rapid_motion::Joints, Box<rapid_motion::frames::FrameChain>),
+}
+
 /// The multitasking state all tasks share.
 #[derive(Debug, Clone)]
 pub struct SharedTasking {
@@ -59,6 +87,9 @@ pub struct SharedTasking {
     /// The event-log entries of every task, as the controller's one event log holds
     /// them (IError in one task sees another's errors): (task index, entry).
     pub events: Vec<(usize, crate::events::Event)>,
+    /// A request a task made of the controller, and the reply: (asking task, …).
+    pub request: Option<(usize, Request)>,
+    pub reply: Option<(usize, Reply)>,
     /// Bumped on every change a waiting task could be waiting for.
     pub epoch: u64,
     /// The names of the tool, work object and payload each task activated, by task
@@ -85,6 +116,8 @@ impl SharedTasking {
             sync: FxHashMap::default(),
             queues,
             events: Vec::new(),
+            request: None,
+            reply: None,
             epoch: 0,
             sysdata: FxHashMap::default(),
         }
@@ -297,6 +330,41 @@ fn get_task_name(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(Value::Str(name.into())))
 }
 
+/// The controller's reply to this task's request, or (first time) the request made:
+/// `None` means wait and look again (the instruction is re-run).
+pub(crate) fn ask(ctx: &mut Ctx<'_>, request: Request) -> Option<Reply> {
+    let me = ctx.resources.tasking.index();
+    let shared = &mut ctx.resources.tasking.shared;
+    if let Some((who, _)) = &shared.reply {
+        if *who == me {
+            return shared.reply.take().map(|(_, reply)| reply);
+        }
+    }
+    if shared.request.is_none() {
+        shared.request = Some((me, request));
+    }
+    // The controller serves the request after this instruction; a short wait that
+    // re-checks lets it (and gives way to a task holding the request slot).
+    ctx.wait = Some(1e-6);
+    ctx.stop = StopKind::Repeat;
+    None
+}
+
+/// The index of another task of the system a `taskid | string` pair names, or `None`
+/// for the task itself (or no such argument). ERR_TASKNAME for a name the system
+/// does not have.
+pub(crate) fn other_task(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<Option<usize>, RapidError> {
+    if !present(args.get(first)) && !present(args.get(first + 1)) {
+        return Ok(None);
+    }
+    let task = named_task_at(ctx, args, first)?;
+    let tasking = &ctx.resources.tasking;
+    if task.name.eq_ignore_ascii_case(tasking.name()) {
+        return Ok(None);
+    }
+    Ok(tasking.shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(&task.name)))
+}
+
 /// A built-in given a task name (`\TaskName`) works on its own task: another task of
 /// the system is not reachable yet (a clear refusal), a name the system does not have
 /// is ERR_TASKNAME.
@@ -330,11 +398,17 @@ fn task_run_mec(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 /// The task a `taskid | string` argument pair names: a taskid by its data name
 /// (`T_ROB2Id` is T_ROB2), a string as written.
 pub(crate) fn named_task(ctx: &Ctx<'_>, args: &[Value]) -> Result<TaskInfo, RapidError> {
-    let text = args.iter().take(2).find(|arg| matches!(ctx.value(arg), Ok(Value::Str(_))));
+    named_task_at(ctx, args, 0)
+}
+
+/// [`named_task`] for the `taskid | string` pair at parameters `first`, `first + 1`.
+pub(crate) fn named_task_at(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<TaskInfo, RapidError> {
+    let pair = args.get(first..).unwrap_or(&[]);
+    let text = pair.iter().take(2).find(|arg| matches!(ctx.value(arg), Ok(Value::Str(_))));
     let name = if let Some(text) = text {
         ctx.string(text)?
     } else {
-        let data = super::argname::original_name(ctx.chain, 0).unwrap_or_default();
+        let data = super::argname::original_name(ctx.chain, first).unwrap_or_default();
         let lower = data.to_ascii_lowercase();
         lower.strip_suffix("id").map_or(data.to_string(), |stem| data[..stem.len()].to_string())
     };

@@ -15,6 +15,10 @@ use crate::ir::{ArgOrigin, ArgSpec, CallSite, Callee, Instr, LateArg};
 /// Built-ins that know an argument by the name of the data passed: a syncident is the
 /// same sync point in every task by its name, a taskid names its task (`T_ROB2Id`).
 const NAME_TAKING: &[&str] = &[
+    "GetDataVal",
+    "SetDataVal",
+    "CJointT",
+    "CRobT",
     "MoveJ",
     "MoveL",
     "MoveC",

@@ -10,6 +10,12 @@ impl Vm {
         self.storage.globals.get(idx as usize)
     }
 
+    /// The module-level data of a name (GetDataVal from another task): its global and
+    /// whether it is a constant.
+    pub fn global_by_name(&self, name: &str) -> Option<(u32, bool)> {
+        self.data_by_name.get(&name.to_lowercase()).map(|d| (d.global, d.constant))
+    }
+
     /// Gives global `idx` a value (the controller, sharing persistents between tasks).
     pub fn set_global(&mut self, idx: u32, value: Value) {
         if let Some(slot) = self.storage.globals.get_mut(idx as usize) {

@@ -14,13 +14,20 @@ use crate::value::Value;
 
 type Res = Result<Option<Value>, RapidError>;
 
-/// A `\TaskRef | \TaskName` naming another task: its robot is not reachable yet.
-fn own_task_only(ctx: &Ctx<'_>, args: &[Value]) -> Result<(), RapidError> {
-    if let Some(name) = args.iter().take(2).find(|a| matches!(ctx.value(a), Ok(Value::Str(_)))) {
-        let name = ctx.string(name)?;
-        super::super::tasking::check_own_task(ctx, &name, "reading another task's robot")?;
-    }
-    Ok(())
+/// The robot a read-back is about: this task's (None), or another task's axes and
+/// active frames as the controller reports them (`Some(None)`: wait for the reply).
+#[allow(clippy::type_complexity)]
+fn robot_of(
+    ctx: &mut Ctx<'_>,
+    args: &[Value],
+) -> Result<Option<Option<(rapid_motion::Joints, FrameChain)>>, RapidError> {
+    use super::super::tasking::{ask, other_task, Reply, Request};
+    let Some(task) = other_task(ctx, args, 0)? else { return Ok(None) };
+    Ok(Some(match ask(ctx, Request::Robot { task }) {
+        Some(Reply::Robot(joints, frames)) => Some((joints, *frames)),
+        Some(_) => return Err(RapidError::fatal("the task has no robot")),
+        None => None,
+    }))
 }
 
 /// The frames a read-back uses: the given tool and work object, else the active ones.
@@ -58,19 +65,34 @@ fn tool0_like(ctx: &Ctx<'_>) -> Result<Value, RapidError> {
 
 /// `CJointT([\TaskRef] | [\TaskName])`: the axis values now.
 pub(crate) fn c_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    own_task_only(ctx, args)?;
-    let now = ctx.time;
-    let joints = ctx.resources.robot.joints_at(now);
+    let joints = match robot_of(ctx, args)? {
+        Some(Some((joints, _))) => joints,
+        Some(None) => return Ok(Some(data::jointtarget_value(ctx, &[0.0; 6])?)),
+        None => {
+            let now = ctx.time;
+            ctx.resources.robot.joints_at(now)
+        }
+    };
     Ok(Some(data::jointtarget_value(ctx, &joints)?))
 }
 
 /// `CRobT([\TaskRef] | [\TaskName] [\Tool] [\WObj])`: the robtarget the robot is at.
 pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    own_task_only(ctx, args)?;
-    let chain = read_frames(ctx, args.get(2), args.get(3))?;
+    let other = robot_of(ctx, args)?;
+    let mut chain = read_frames(ctx, args.get(2), args.get(3))?;
     let now = ctx.time;
+    let joints = match other {
+        // The other task's active frames stand in for the arguments not given.
+        Some(Some((joints, frames))) => {
+            if !present(args.get(2)) && !present(args.get(3)) {
+                chain = frames;
+            }
+            joints
+        }
+        Some(None) => return Ok(Some(data::robtarget_value(ctx, &nalgebra::Isometry3::identity(), [0; 4])?)),
+        None => ctx.resources.robot.joints_at(now),
+    };
     let robot = &mut ctx.resources.robot;
-    let joints = robot.joints_at(now);
     let pose = chain.target_of(&robot.kin.forward(&joints));
     let conf = confdata_of(&robot.kin, &joints);
     Ok(Some(data::robtarget_value(ctx, &pose, conf)?))
