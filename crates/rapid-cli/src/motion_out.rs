@@ -59,13 +59,26 @@ pub(crate) fn configure(robot: &mut RobotState, model: &'static rapid_motion::Ro
 /// After the run: the robot finishes its last move; the cycle time (program and
 /// motion, whichever ends later) is printed unless `--quiet`, and the trace written.
 pub(crate) fn finish(
-    robot: &mut RobotState,
+    resources: &mut rapid_vm::builtins::Resources,
     program_end: f64,
     task: &str,
     note: Option<&str>,
     args: &RunArgs,
 ) -> anyhow::Result<()> {
-    let motion_end = robot.flush();
+    let motion_end = resources.robot.flush();
+    // Outputs the last moves set as the robot passed their points (Move*DO …).
+    for (time, event) in std::mem::take(&mut resources.robot.due) {
+        if let Some(io) = resources.io.system.as_mut() {
+            let _ = io.set_delayed(event.signal, event.value, program_end, (time - program_end).max(0.0));
+            io.advance(time.max(program_end));
+        }
+    }
+    // The controller's clock has reached the end of the program and of the motion:
+    // orders due by then (delayed sets, pulse ends, path events) have happened.
+    if let Some(io) = resources.io.system.as_mut() {
+        io.advance(program_end.max(motion_end));
+    }
+    let robot = &mut resources.robot;
     if robot.moves == 0 {
         return Ok(());
     }

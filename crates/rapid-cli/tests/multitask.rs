@@ -590,3 +590,32 @@ fn one_task_reads_and_writes_anothers_data_and_robot() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "log read 7\nrob axis 5 30\nlimit is a constant\nrob count 8\n");
 }
+
+#[test]
+fn move_do_sets_its_output_where_the_robot_passes_the_point() {
+    let dir = scratch("movedo");
+    // doStart marks when each move starts. A MoveLDO to a stop point 100 mm away at
+    // 100 mm/s (10 m/s^2 ramps) sets doGlue when the robot stands there: 1.01 s later.
+    // A MoveLDO to a fly-by point (z10, then a 90 degree turn) sets doFly in the middle
+    // of the corner path: the zone is entered after 0.005 + 89.5/100 = 0.905 s, the
+    // corner takes 20/100 = 0.2 s at full speed, so 1.005 s after the start.
+    let program = "MODULE S\n  CONST robtarget p0 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];\n  \
+                   PROC main()\n    MoveJ p0, v1000, fine, tool0;\n    SetDO doStart, 1;\n    \
+                   MoveLDO Offs(p0, 100, 0, 0), v100, fine, tool0, doGlue, 1;\n    SetDO doStart, 0;\n    \
+                   MoveLDO Offs(p0, 100, 100, 0), v100, z10, tool0, doFly, 1;\n    \
+                   MoveL Offs(p0, 100, 200, 0), v100, fine, tool0;\n  ENDPROC\nENDMODULE\n";
+    let tasks = [TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: program }];
+    let signals = "\n      -Name \"doStart\" -SignalType \"DO\"\n\n      -Name \"doGlue\" -SignalType \"DO\"\n\n      -Name \"doFly\" -SignalType \"DO\"\n";
+    system(&dir, &tasks, signals);
+    let out = rapid_in(&dir, &["run", "--quiet", "--io-log", "io.csv", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
+    let time_of = |signal: &str, new: &str| -> f64 {
+        let line = log.lines().find(|l| l.split(',').nth(1) == Some(signal) && l.split(',').nth(3) == Some(new));
+        line.and_then(|l| l.split(',').next()).and_then(|t| t.parse().ok()).unwrap_or_else(|| panic!("{signal}: {log}"))
+    };
+    let glue = time_of("doGlue", "1") - time_of("doStart", "1");
+    let fly = time_of("doFly", "1") - time_of("doStart", "0");
+    assert!((glue - 1.01).abs() < 0.0015, "doGlue after {glue} s: {log}");
+    assert!((fly - 1.005).abs() < 0.0015, "doFly after {fly} s: {log}");
+}

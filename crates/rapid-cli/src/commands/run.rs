@@ -132,8 +132,8 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     host.flush();
     log_stop(&mut loaded.vm, &task_name, status);
     let program_end = loaded.vm.time;
-    let robot = &mut loaded.vm.resources_mut().robot;
-    crate::motion_out::finish(robot, program_end, "T_ROB1", model_note.as_deref(), args)?;
+    let resources = loaded.vm.resources_mut();
+    crate::motion_out::finish(resources, program_end, "T_ROB1", model_note.as_deref(), args)?;
     if loaded.vm.resources_mut().controller.warm_start {
         eprintln!("{WARM_START}");
     }

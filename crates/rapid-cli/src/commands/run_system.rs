@@ -123,8 +123,8 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     }
     for task in &mut controller.tasks {
         let name = task.spec.name.clone();
-        let robot = &mut task.loaded.vm.resources_mut().robot;
-        crate::motion_out::finish(robot, program_end, &name, model_note.as_deref(), args)?;
+        let resources = task.loaded.vm.resources_mut();
+        crate::motion_out::finish(resources, program_end, &name, model_note.as_deref(), args)?;
     }
     if controller.tasks.iter_mut().any(|task| task.loaded.vm.resources_mut().controller.warm_start) {
         eprintln!("{}", single::WARM_START);

@@ -200,7 +200,7 @@ pub(super) fn connected(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidErro
 }
 
 /// Runs an order on the I/O system and turns its failure into the RAPID error.
-fn order(ctx: &mut Ctx<'_>, run: impl FnOnce(&mut IoSystem, f64) -> Result<(), rapid_io::IoError>) -> Res {
+pub(super) fn order(ctx: &mut Ctx<'_>, run: impl FnOnce(&mut IoSystem, f64) -> Result<(), rapid_io::IoError>) -> Res {
     let time = ctx.time;
     let Some(system) = ctx.resources.io.system.as_mut() else {
         return Err(ctx.error(Err::NoAliasIoDef, "this task has no I/O system"));

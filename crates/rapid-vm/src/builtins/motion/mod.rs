@@ -66,6 +66,15 @@ pub(super) static ENTRIES: Entries = &[
     ("PDispOn", readback::pdisp_on),
     ("EOffsOn", readback::eoffs_on),
     ("SearchL", search::search_l),
+    ("MoveJDO", moves::move_j_io),
+    ("MoveJAO", moves::move_j_io),
+    ("MoveJGO", moves::move_j_io),
+    ("MoveLDO", moves::move_l_io),
+    ("MoveLAO", moves::move_l_io),
+    ("MoveLGO", moves::move_l_io),
+    ("MoveCDO", moves::move_c_io),
+    ("MoveCAO", moves::move_c_io),
+    ("MoveCGO", moves::move_c_io),
 ];
 
 /// Where the motion family's system data and types are in the loaded program (set

@@ -64,6 +64,27 @@ const MOVE_C: Layout = Layout {
     wobj: 11,
     corr: Some(12),
 };
+/// No such argument (the `Move*DO/AO/GO` family has no `\Conc`, `\V`, `\Z`, `\Inpos`).
+const NONE: usize = usize::MAX;
+/// MoveJDO/MoveLDO/MoveJAO/…: ToPoint, \ID, Speed, \T, Zone, Tool, \WObj, Signal, Value.
+const MOVE_X_IO: Layout = Layout {
+    conc: NONE,
+    cir: None,
+    to: 0,
+    id: 1,
+    speed: 2,
+    v: NONE,
+    t: 3,
+    zone: 4,
+    z: NONE,
+    inpos: NONE,
+    tool: 5,
+    wobj: 6,
+    corr: None,
+};
+/// MoveCDO/MoveCAO/MoveCGO: CirPoint first.
+const MOVE_C_IO: Layout = Layout { cir: Some(0), to: 1, id: 2, speed: 3, t: 4, zone: 5, tool: 6, wobj: 7, ..MOVE_X_IO };
+
 /// MoveAbsJ has `\NoEOffs` at 3 (no external axes here, so it changes nothing).
 const MOVE_ABS_J: Layout = Layout {
     conc: 0,
@@ -160,6 +181,18 @@ fn go(
     target: Target,
     chain: rapid_motion::frames::FrameChain,
 ) -> Res {
+    go_with(ctx, args, layout, target, chain, None)
+}
+
+/// [`go`] with an output set as the robot passes the point.
+fn go_with(
+    ctx: &mut Ctx<'_>,
+    args: &[Value],
+    layout: &Layout,
+    target: Target,
+    chain: rapid_motion::frames::FrameChain,
+    event: Option<super::robot::PathEvent>,
+) -> Res {
     let (speed, zone) = speed_and_zone(ctx, args, layout)?;
     let request = MoveRequest { target, speed, zone, tool: chain.tframe };
     let settings = planner_settings(ctx);
@@ -167,8 +200,9 @@ fn go(
     let conc = present(args.get(layout.conc));
     let robot = &mut ctx.resources.robot;
     robot.set_settings(settings);
-    let resume = robot.push(now, &request, conc).map_err(motion_error)?;
+    let resume = robot.push(now, &request, conc, event).map_err(motion_error)?;
     robot.active = chain;
+    apply_due_events(ctx)?;
     // The move's tool and work object become the active ones (CTool, CWObj, GetSysData).
     crate::builtins::controller::sysdata::activate_arg(ctx, &args[layout.tool], layout.tool, 0);
     if present(args.get(layout.wobj)) {
@@ -207,10 +241,15 @@ pub(super) fn frames_at(
 /// `MoveJ`: joint interpolation to a robtarget, reached in its programmed
 /// configuration (ConfJ\On) or the closest one (ConfJ\Off).
 pub(crate) fn move_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    joint_move(ctx, args, &MOVE_J, None)
+}
+
+/// MoveJ and MoveJDO/AO/GO: joint interpolation to a robtarget.
+fn joint_move(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, event: Option<super::robot::PathEvent>) -> Res {
     require_motion_task(ctx)?;
-    refuse_unmodelled(args, &MOVE_J)?;
-    let chain = frames(ctx, args, &MOVE_J, true)?;
-    let (pose, conf) = data::robtarget(ctx, &ctx.value(&args[MOVE_J.to])?)?;
+    refuse_unmodelled(args, layout)?;
+    let chain = frames(ctx, args, layout, true)?;
+    let (pose, conf) = data::robtarget(ctx, &ctx.value(&args[layout.to])?)?;
     let robot = &ctx.resources.robot;
     let seed = robot.end_joints();
     let joints = if ctx.resources.motion.settings.conf_j {
@@ -219,28 +258,85 @@ pub(crate) fn move_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         inverse_nearest(&robot.kin, &chain.flange_goal(&pose), &seed)
     }
     .map_err(motion_error)?;
-    go(ctx, args, &MOVE_J, Target::Joints(joints), chain)
+    go_with(ctx, args, layout, Target::Joints(joints), chain, event)
 }
 
 /// `MoveL`: a straight TCP line to a robtarget.
 // uncertain: ConfL\On's check of the configuration along the path is not modelled;
 // the path keeps the configuration it starts in.
 pub(crate) fn move_l(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    linear_move(ctx, args, &MOVE_L, None)
+}
+
+/// MoveL and MoveLDO/AO/GO.
+fn linear_move(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, event: Option<super::robot::PathEvent>) -> Res {
     require_motion_task(ctx)?;
-    refuse_unmodelled(args, &MOVE_L)?;
-    let chain = frames(ctx, args, &MOVE_L, true)?;
-    let to = tcp_in_base(ctx, &chain, &ctx.value(&args[MOVE_L.to])?)?;
-    go(ctx, args, &MOVE_L, Target::Linear(to), chain)
+    refuse_unmodelled(args, layout)?;
+    let chain = frames(ctx, args, layout, true)?;
+    let to = tcp_in_base(ctx, &chain, &ctx.value(&args[layout.to])?)?;
+    go_with(ctx, args, layout, Target::Linear(to), chain, event)
 }
 
 /// `MoveC`: a circle through CirPoint to ToPoint.
 pub(crate) fn move_c(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    circular_move(ctx, args, &MOVE_C, None)
+}
+
+/// MoveC and MoveCDO/AO/GO.
+fn circular_move(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, event: Option<super::robot::PathEvent>) -> Res {
     require_motion_task(ctx)?;
-    refuse_unmodelled(args, &MOVE_C)?;
-    let chain = frames(ctx, args, &MOVE_C, true)?;
-    let via = tcp_in_base(ctx, &chain, &ctx.value(&args[MOVE_C.cir.unwrap_or(1)])?)?;
-    let to = tcp_in_base(ctx, &chain, &ctx.value(&args[MOVE_C.to])?)?;
-    go(ctx, args, &MOVE_C, Target::Circular { via, to }, chain)
+    refuse_unmodelled(args, layout)?;
+    let chain = frames(ctx, args, layout, true)?;
+    let via = tcp_in_base(ctx, &chain, &ctx.value(&args[layout.cir.unwrap_or(1)])?)?;
+    let to = tcp_in_base(ctx, &chain, &ctx.value(&args[layout.to])?)?;
+    go_with(ctx, args, layout, Target::Circular { via, to }, chain, event)
+}
+
+/// The output a Move*DO/AO/GO sets: its signal and value (a group's `\Dvalue` too).
+fn path_event(ctx: &mut Ctx<'_>, args: &[Value], signal: usize) -> Result<Option<super::robot::PathEvent>, RapidError> {
+    let id = super::super::io::signal(ctx, &args[signal])?;
+    let value = match args.get(signal + 2) {
+        Some(dvalue) if present(Some(dvalue)) => ctx.num(dvalue)?,
+        _ => ctx.num(&args[signal + 1])?,
+    };
+    Ok(Some(super::robot::PathEvent { signal: id, value }))
+}
+
+/// `MoveJDO`, `MoveJAO`, `MoveJGO`: MoveJ setting an output in the middle of the
+/// corner path (at a stop point, when the robot stands there).
+pub(crate) fn move_j_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let event = path_event(ctx, args, 7)?;
+    joint_move(ctx, args, &MOVE_X_IO, event)
+}
+
+/// `MoveLDO`, `MoveLAO`, `MoveLGO`.
+pub(crate) fn move_l_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let event = path_event(ctx, args, 7)?;
+    linear_move(ctx, args, &MOVE_X_IO, event)
+}
+
+/// `MoveCDO`, `MoveCAO`, `MoveCGO`.
+pub(crate) fn move_c_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let event = path_event(ctx, args, 8)?;
+    circular_move(ctx, args, &MOVE_C_IO, event)
+}
+
+/// Gives the I/O system the outputs of path events whose time is now known: at their
+/// time, or now when that has passed (the program came to the next move late).
+// uncertain: an event whose time has passed is set at once, not at its exact time.
+pub(crate) fn apply_due_events(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
+    let due = std::mem::take(&mut ctx.resources.robot.due);
+    for (time, event) in due {
+        let (id, value) = (event.signal, event.value);
+        super::super::io::order(ctx, |io, t| {
+            if time > t {
+                io.set_delayed(id, value, t, time - t)
+            } else {
+                io.set(id, value, t)
+            }
+        })?;
+    }
+    Ok(())
 }
 
 /// A robtarget's TCP in the robot base frame (what linear and circular paths are
@@ -274,6 +370,7 @@ pub(crate) fn move_abs_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// its last move.
 pub(crate) fn wait_rob(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     let end = ctx.resources.robot.flush();
+    apply_due_events(ctx)?;
     if end > ctx.time {
         ctx.wait = Some(end - ctx.time);
     }

@@ -21,6 +21,14 @@ use rapid_motion::{Joints, MotionError};
 // modelled.
 pub const PREFETCH: f64 = 0.1;
 
+/// An output a move sets as the robot passes its point (MoveJDO, MoveLAO, …): in the
+/// middle of the corner path, or at the stop point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PathEvent {
+    pub signal: u32,
+    pub value: f64,
+}
+
 /// The robot of a motion task.
 pub struct RobotState {
     pub model: &'static RobotModel,
@@ -41,6 +49,10 @@ pub struct RobotState {
     pub corner_path_failures: u64,
     /// The SearchL under way.
     pub search: Option<super::search::Search>,
+    /// The path event of each move given and not yet final, oldest first.
+    events: VecDeque<Option<PathEvent>>,
+    /// Path events whose time is known: (controller time, event).
+    pub due: Vec<(f64, PathEvent)>,
 }
 
 impl Default for RobotState {
@@ -67,6 +79,8 @@ impl RobotState {
             moves: 0,
             corner_path_failures: 0,
             search: None,
+            events: VecDeque::new(),
+            due: Vec::new(),
         }
     }
 
@@ -87,13 +101,21 @@ impl RobotState {
 
     /// Gives the robot its next move at controller time `now`; returns when the
     /// program may go on. On an error nothing changes.
-    pub fn push(&mut self, now: f64, request: &MoveRequest, conc: bool) -> Result<f64, MotionError> {
+    pub fn push(
+        &mut self,
+        now: f64,
+        request: &MoveRequest,
+        conc: bool,
+        event: Option<PathEvent>,
+    ) -> Result<f64, MotionError> {
         if self.planner.pending_stop_time().is_some_and(|stop| now > stop) {
             // The program came too late: the waiting fly-by point became a stop point.
             self.flush();
         }
         self.planner.idle_until(now);
-        if let Some(done) = self.planner.push(&self.kin, request)? {
+        let done = self.planner.push(&self.kin, request)?;
+        self.events.push_back(event);
+        if let Some(done) = done {
             self.finish(done);
         }
         self.moves += 1;
@@ -103,8 +125,11 @@ impl RobotState {
         if request.zone.is_stop() {
             return Ok(self.flush().max(now));
         }
+        // The program goes on before the robot reaches the zone (§2.3): the zone's
+        // length at the programmed speed ahead of where it would brake.
         let stop = self.planner.pending_stop_time().unwrap_or(now);
-        Ok((stop - PREFETCH).max(now))
+        let zone_time = if request.speed.v_tcp > 0.0 { request.zone.pzone_tcp / request.speed.v_tcp } else { 0.0 };
+        Ok((stop - PREFETCH - zone_time).max(now))
     }
 
     /// Ends the queue: a waiting move stops at its point. Returns when the robot
@@ -119,6 +144,10 @@ impl RobotState {
     fn finish(&mut self, planned: PlannedMove) {
         if planned.corner_path_failure {
             self.corner_path_failures += 1;
+        }
+        if let Some(event) = self.events.pop_front().flatten() {
+            // The middle of the corner path; at a stop point, when the robot stands there.
+            self.due.push((planned.zone_entry + planned.corner_time / 2.0, event));
         }
         self.motion_end = self.motion_end.max(planned.end);
         if let Some(recorded) = &mut self.recorded {
