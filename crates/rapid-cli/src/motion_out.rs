@@ -67,17 +67,13 @@ pub(crate) fn finish(
 ) -> anyhow::Result<()> {
     let motion_end = resources.robot.flush();
     // Outputs the last moves set as the robot passed their points (Move*DO …).
-    for (time, event) in std::mem::take(&mut resources.robot.due) {
-        if let Some(io) = resources.io.system.as_mut() {
-            let _ = io.set_delayed(event.signal, event.value, program_end, (time - program_end).max(0.0));
-            io.advance(time.max(program_end));
-        }
+    for (time, action) in std::mem::take(&mut resources.robot.due) {
+        let rapid_vm::builtins::motion::robot::Action::Set { signal, value } = action else { continue };
+        resources.io.order_on_path(time.max(program_end), signal, value);
     }
     // The controller's clock has reached the end of the program and of the motion:
     // orders due by then (delayed sets, pulse ends, path events) have happened.
-    if let Some(io) = resources.io.system.as_mut() {
-        io.advance(program_end.max(motion_end));
-    }
+    resources.io.advance(program_end.max(motion_end));
     let robot = &mut resources.robot;
     if robot.moves == 0 {
         return Ok(());

@@ -619,3 +619,35 @@ fn move_do_sets_its_output_where_the_robot_passes_the_point() {
     assert!((glue - 1.01).abs() < 0.0015, "doGlue after {glue} s: {log}");
     assert!((fly - 1.005).abs() < 0.0015, "doFly after {fly} s: {log}");
 }
+
+#[test]
+fn triggers_fire_at_their_places_on_the_path() {
+    let dir = scratch("trigg");
+    // TriggL 100 mm at 100 mm/s (10 m/s^2 ramps: 0.5 mm in the first 0.01 s) from
+    // doStart: doGun on 10 mm after the start (0.01 + 9.5/100 = 0.105 s), off 20 mm
+    // before the point (80 mm: 0.805 s), and an interrupt at 50 mm (0.505 s) whose
+    // trap runs while the robot moves, before the move's end at 1.01 s.
+    let program = "MODULE S\n  CONST robtarget p0 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];\n  \
+                   VAR triggdata gunOn;\n  VAR triggdata gunOff;\n  VAR triggdata half;\n  VAR intnum hit;\n  \
+                   PROC main()\n    MoveJ p0, v1000, fine, tool0;\n    TriggIO gunOn, 10 \\Start \\DOp:=doGun, 1;\n    \
+                   TriggIO gunOff, 20 \\DOp:=doGun, 0;\n    CONNECT hit WITH at_half;\n    TriggInt half, 50 \\Start, hit;\n    \
+                   SetDO doStart, 1;\n    TriggL Offs(p0, 100, 0, 0), v100, gunOn \\T2:=gunOff \\T3:=half, fine, tool0;\n    \
+                   TPWrite \"arrived\";\n    IDelete hit;\n  ENDPROC\n  TRAP at_half\n    SetDO doHalf, 1;\n    \
+                   TPWrite \"half way\";\n  ENDTRAP\nENDMODULE\n";
+    let tasks = [TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: program }];
+    let signals = "\n      -Name \"doStart\" -SignalType \"DO\"\n\n      -Name \"doGun\" -SignalType \"DO\"\n\n      -Name \"doHalf\" -SignalType \"DO\"\n";
+    system(&dir, &tasks, signals);
+    let out = rapid_in(&dir, &["run", "--quiet", "--io-log", "io.csv", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "half way\narrived\n");
+    let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
+    let time_of = |signal: &str, new: &str| -> f64 {
+        let line = log.lines().find(|l| l.split(',').nth(1) == Some(signal) && l.split(',').nth(3) == Some(new));
+        line.and_then(|l| l.split(',').next()).and_then(|t| t.parse().ok()).unwrap_or_else(|| panic!("{signal}: {log}"))
+    };
+    let start = time_of("doStart", "1");
+    for (signal, value, expected) in [("doGun", "1", 0.105), ("doHalf", "1", 0.505), ("doGun", "0", 0.805)] {
+        let after = time_of(signal, value) - start;
+        assert!((after - expected).abs() < 0.0025, "{signal} = {value} after {after} s, expected {expected}: {log}");
+    }
+}

@@ -69,6 +69,8 @@ pub struct InterruptState {
     pub trap_event: Option<u64>,
     /// How much of the controller-wide log (other tasks' entries) IError has seen.
     pub next_foreign: usize,
+    /// Interrupts to fire at a controller time (TriggInt): (time, number).
+    pub scheduled: Vec<(f64, u32)>,
 }
 
 /// A trapdata handle or an event number with this bit set names an entry of the
@@ -78,10 +80,15 @@ pub const FOREIGN_EVENT: u64 = 1 << 31;
 impl InterruptState {
     /// Whether anything can fire (the executor then watches every instruction).
     pub fn active(&self) -> bool {
-        !self.queue.is_empty() || self.table.iter().flatten().any(|i| i.source.is_some())
+        !self.queue.is_empty() || !self.scheduled.is_empty() || self.table.iter().flatten().any(|i| i.source.is_some())
     }
 
-    /// When the next timer is due.
+    /// Fires interrupt `number` at `time` (a trigger on the robot's path).
+    pub fn schedule(&mut self, time: f64, number: u32) {
+        self.scheduled.push((time, number));
+    }
+
+    /// When the next timer (or scheduled interrupt) is due.
     pub fn next_timer(&self) -> Option<f64> {
         self.table
             .iter()
@@ -90,6 +97,7 @@ impl InterruptState {
                 Some(Source::Timer { next, .. }) => Some(next),
                 _ => None,
             })
+            .chain(self.scheduled.iter().map(|&(t, _)| t))
             .min_by(f64::total_cmp)
     }
 

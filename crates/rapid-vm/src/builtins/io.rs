@@ -33,6 +33,9 @@ pub struct IoState {
     pub stimulus: std::collections::VecDeque<(f64, u32, f64)>,
     /// Stimulus reactions: when a signal changes to a value, an input follows.
     pub reactions: Vec<Reaction>,
+    /// Outputs the robot's path sets at a time (triggers, Move*DO): (time, signal,
+    /// value), in time order.
+    pub path_orders: std::collections::VecDeque<(f64, u32, f64)>,
     /// How many entries of the change log the reactions have seen.
     seen_changes: usize,
     /// The waiting instruction under way (WaitDI …): (call depth, pc, started at).
@@ -46,6 +49,7 @@ pub struct SharedIo {
     pub system: Option<IoSystem>,
     pub stimulus: std::collections::VecDeque<(f64, u32, f64)>,
     pub reactions: Vec<Reaction>,
+    pub path_orders: std::collections::VecDeque<(f64, u32, f64)>,
     seen_changes: usize,
 }
 
@@ -58,11 +62,18 @@ impl SharedIo {
 }
 
 impl IoState {
+    /// An output the robot's path sets at `time` (kept in time order).
+    pub fn order_on_path(&mut self, time: f64, signal: u32, value: f64) {
+        let at = self.path_orders.partition_point(|&(t, _, _)| t <= time);
+        self.path_orders.insert(at, (time, signal, value));
+    }
+
     /// Swaps the shared part with the controller's (see `Resources::exchange_shared`).
     pub fn exchange_shared(&mut self, shared: &mut SharedIo) {
         std::mem::swap(&mut self.system, &mut shared.system);
         std::mem::swap(&mut self.stimulus, &mut shared.stimulus);
         std::mem::swap(&mut self.reactions, &mut shared.reactions);
+        std::mem::swap(&mut self.path_orders, &mut shared.path_orders);
         std::mem::swap(&mut self.seen_changes, &mut shared.seen_changes);
     }
 }
@@ -89,6 +100,20 @@ impl IoState {
         let Some(system) = self.system.as_mut() else { return };
         for _ in 0..MAX_REACTIONS_PER_ADVANCE {
             react(system, &self.reactions, &mut self.seen_changes, &mut self.stimulus);
+            // Outputs the robot's path sets (triggers, Move*DO) at their time: the motion
+            // system's own orders, which no program order cancels.
+            let path = self.path_orders.front().map(|&(at, _, _)| at).filter(|&at| at <= t);
+            let earliest_other = [self.stimulus.front().map(|&(at, _, _)| at), system.next_event_time()]
+                .into_iter()
+                .flatten()
+                .fold(f64::INFINITY, f64::min);
+            if let Some(at) = path.filter(|&at| at <= earliest_other) {
+                system.advance(at);
+                if let Some((at, id, value)) = self.path_orders.pop_front() {
+                    let _ = system.set(id, value, at);
+                }
+                continue;
+            }
             let stimulus = self.stimulus.front().map(|&(at, _, _)| at).filter(|&at| at <= t);
             let scheduled = system.next_event_time().filter(|&at| at <= t);
             match (stimulus, scheduled) {
@@ -115,6 +140,8 @@ impl IoState {
         react(system, &self.reactions, &mut self.seen_changes, &mut self.stimulus);
         let scheduled = system.next_event_time();
         let stimulus = self.stimulus.front().map(|&(at, _, _)| at);
+        let path = self.path_orders.front().map(|&(at, _, _)| at);
+        let scheduled = [scheduled, path].into_iter().flatten().min_by(f64::total_cmp);
         match (scheduled, stimulus) {
             (Some(a), Some(b)) => Some(a.min(b)),
             (a, b) => a.or(b),

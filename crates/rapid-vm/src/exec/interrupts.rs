@@ -13,6 +13,14 @@ impl Vm {
         let now = self.time;
         let interrupts = &mut self.resources.interrupts;
         let mut fired = Vec::new();
+        // Interrupts the robot's path triggers (TriggInt) at their time.
+        interrupts.scheduled.retain(|&(t, number)| {
+            let due = t <= now;
+            if due {
+                fired.push(number);
+            }
+            !due
+        });
         for (idx, slot) in interrupts.table.iter_mut().enumerate() {
             let Some(interrupt) = slot else { continue };
             if let Some(Source::Timer { period, next, single }) = &mut interrupt.source {
@@ -164,6 +172,26 @@ impl Vm {
         }
         self.resources.interrupts.next_foreign = shared.len();
         fired
+    }
+
+    /// While the program waits for the robot (a move with interrupts ordered), the wait
+    /// is cut at the next interrupt that may come, so its trap runs while the robot
+    /// moves (§1.11); the rest of the wait follows here, before the next instruction.
+    /// None once the robot's time has come, or while a trap runs.
+    pub(super) fn motion_hold(&mut self) -> Option<f64> {
+        let until = self.resources.robot.hold_until?;
+        if until <= self.time {
+            self.resources.robot.hold_until = None;
+            return None;
+        }
+        if self.frames.iter().any(|f| f.interrupted) {
+            return None;
+        }
+        let interrupts = &self.resources.interrupts;
+        let signals = if interrupts.watches_signals() { self.resources.io.next_event_time() } else { None };
+        let next = [interrupts.next_timer(), signals].into_iter().flatten().fold(until, f64::min);
+        self.wait_rechecks = true;
+        Some((next - self.time).max(1e-6))
     }
 
     /// Starts the trap of the first queued interrupt, when one may run now: interrupts

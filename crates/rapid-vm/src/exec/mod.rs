@@ -333,6 +333,11 @@ impl Vm {
                 return Exit::Done;
             }
             let watched = self.resources.interrupts.active();
+            if !watched && self.resources.robot.hold_until.is_some() {
+                if let Some(wait) = self.motion_hold() {
+                    return Exit::Wait(wait);
+                }
+            }
             let outcome = if self.resources.spy.is_active() || watched {
                 // The execution log sees every statement, and interrupts are looked for
                 // before every instruction: one instruction at a time.
@@ -341,6 +346,9 @@ impl Vm {
                 if watched {
                     self.poll_interrupts();
                     self.enter_trap_if_due();
+                    if let Some(wait) = self.motion_hold() {
+                        return Exit::Wait(wait);
+                    }
                 }
                 let outcome = if self.resources.spy.is_active() { self.spy_step(host) } else { self.step(host) };
                 self.spy_forget_if_stopped();

@@ -18,6 +18,7 @@ mod readback;
 pub mod robot;
 mod search;
 mod settings;
+mod trigg;
 
 pub(crate) use settings::set_payload;
 
@@ -75,6 +76,12 @@ pub(super) static ENTRIES: Entries = &[
     ("MoveCDO", moves::move_c_io),
     ("MoveCAO", moves::move_c_io),
     ("MoveCGO", moves::move_c_io),
+    ("TriggIO", trigg::trigg_io),
+    ("TriggEquip", trigg::trigg_equip),
+    ("TriggInt", trigg::trigg_int),
+    ("TriggL", trigg::trigg_l),
+    ("TriggJ", trigg::trigg_j),
+    ("TriggC", trigg::trigg_c),
 ];
 
 /// Where the motion family's system data and types are in the loaded program (set

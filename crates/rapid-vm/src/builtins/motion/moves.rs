@@ -17,20 +17,20 @@ use crate::value::Value;
 type Res = Result<Option<Value>, RapidError>;
 
 /// Where a move instruction's arguments are.
-struct Layout {
-    conc: usize,
-    cir: Option<usize>,
-    to: usize,
-    id: usize,
-    speed: usize,
-    v: usize,
-    t: usize,
-    zone: usize,
-    z: usize,
-    inpos: usize,
-    tool: usize,
-    wobj: usize,
-    corr: Option<usize>,
+pub(super) struct Layout {
+    pub(super) conc: usize,
+    pub(super) cir: Option<usize>,
+    pub(super) to: usize,
+    pub(super) id: usize,
+    pub(super) speed: usize,
+    pub(super) v: usize,
+    pub(super) t: usize,
+    pub(super) zone: usize,
+    pub(super) z: usize,
+    pub(super) inpos: usize,
+    pub(super) tool: usize,
+    pub(super) wobj: usize,
+    pub(super) corr: Option<usize>,
 }
 
 const MOVE_J: Layout = Layout {
@@ -65,7 +65,7 @@ const MOVE_C: Layout = Layout {
     corr: Some(12),
 };
 /// No such argument (the `Move*DO/AO/GO` family has no `\Conc`, `\V`, `\Z`, `\Inpos`).
-const NONE: usize = usize::MAX;
+pub(super) const NONE: usize = usize::MAX;
 /// MoveJDO/MoveLDO/MoveJAO/…: ToPoint, \ID, Speed, \T, Zone, Tool, \WObj, Signal, Value.
 const MOVE_X_IO: Layout = Layout {
     conc: NONE,
@@ -181,7 +181,7 @@ fn go(
     target: Target,
     chain: rapid_motion::frames::FrameChain,
 ) -> Res {
-    go_with(ctx, args, layout, target, chain, None)
+    go_with(ctx, args, layout, target, chain, Vec::new())
 }
 
 /// [`go`] with an output set as the robot passes the point.
@@ -191,7 +191,7 @@ fn go_with(
     layout: &Layout,
     target: Target,
     chain: rapid_motion::frames::FrameChain,
-    event: Option<super::robot::PathEvent>,
+    events: Vec<super::robot::PathEvent>,
 ) -> Res {
     let (speed, zone) = speed_and_zone(ctx, args, layout)?;
     let request = MoveRequest { target, speed, zone, tool: chain.tframe };
@@ -200,7 +200,7 @@ fn go_with(
     let conc = present(args.get(layout.conc));
     let robot = &mut ctx.resources.robot;
     robot.set_settings(settings);
-    let resume = robot.push(now, &request, conc, event).map_err(motion_error)?;
+    let resume = robot.push(now, &request, conc, events).map_err(motion_error)?;
     robot.active = chain;
     apply_due_events(ctx)?;
     // The move's tool and work object become the active ones (CTool, CWObj, GetSysData).
@@ -209,7 +209,15 @@ fn go_with(
         crate::builtins::controller::sysdata::activate_arg(ctx, &args[layout.wobj], layout.wobj, 1);
     }
     if resume > now {
-        ctx.wait = Some(resume - now);
+        if ctx.resources.interrupts.active() {
+            // Interrupts may come while the robot moves: wait until the next one may,
+            // and hold the rest of the wait before the next instruction (the VM).
+            ctx.resources.robot.hold_until = Some(resume);
+            let next = super::super::interrupts::next_due(ctx).map_or(resume, |due| due.min(resume));
+            ctx.wait = Some((next - now).max(1e-6));
+        } else {
+            ctx.wait = Some(resume - now);
+        }
     }
     Ok(None)
 }
@@ -241,11 +249,16 @@ pub(super) fn frames_at(
 /// `MoveJ`: joint interpolation to a robtarget, reached in its programmed
 /// configuration (ConfJ\On) or the closest one (ConfJ\Off).
 pub(crate) fn move_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    joint_move(ctx, args, &MOVE_J, None)
+    joint_move(ctx, args, &MOVE_J, Vec::new())
 }
 
 /// MoveJ and MoveJDO/AO/GO: joint interpolation to a robtarget.
-fn joint_move(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, event: Option<super::robot::PathEvent>) -> Res {
+pub(super) fn joint_move(
+    ctx: &mut Ctx<'_>,
+    args: &[Value],
+    layout: &Layout,
+    events: Vec<super::robot::PathEvent>,
+) -> Res {
     require_motion_task(ctx)?;
     refuse_unmodelled(args, layout)?;
     let chain = frames(ctx, args, layout, true)?;
@@ -258,48 +271,59 @@ fn joint_move(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, event: Option<
         inverse_nearest(&robot.kin, &chain.flange_goal(&pose), &seed)
     }
     .map_err(motion_error)?;
-    go_with(ctx, args, layout, Target::Joints(joints), chain, event)
+    go_with(ctx, args, layout, Target::Joints(joints), chain, events)
 }
 
 /// `MoveL`: a straight TCP line to a robtarget.
 // uncertain: ConfL\On's check of the configuration along the path is not modelled;
 // the path keeps the configuration it starts in.
 pub(crate) fn move_l(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    linear_move(ctx, args, &MOVE_L, None)
+    linear_move(ctx, args, &MOVE_L, Vec::new())
 }
 
 /// MoveL and MoveLDO/AO/GO.
-fn linear_move(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, event: Option<super::robot::PathEvent>) -> Res {
+pub(super) fn linear_move(
+    ctx: &mut Ctx<'_>,
+    args: &[Value],
+    layout: &Layout,
+    events: Vec<super::robot::PathEvent>,
+) -> Res {
     require_motion_task(ctx)?;
     refuse_unmodelled(args, layout)?;
     let chain = frames(ctx, args, layout, true)?;
     let to = tcp_in_base(ctx, &chain, &ctx.value(&args[layout.to])?)?;
-    go_with(ctx, args, layout, Target::Linear(to), chain, event)
+    go_with(ctx, args, layout, Target::Linear(to), chain, events)
 }
 
 /// `MoveC`: a circle through CirPoint to ToPoint.
 pub(crate) fn move_c(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    circular_move(ctx, args, &MOVE_C, None)
+    circular_move(ctx, args, &MOVE_C, Vec::new())
 }
 
 /// MoveC and MoveCDO/AO/GO.
-fn circular_move(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, event: Option<super::robot::PathEvent>) -> Res {
+pub(super) fn circular_move(
+    ctx: &mut Ctx<'_>,
+    args: &[Value],
+    layout: &Layout,
+    events: Vec<super::robot::PathEvent>,
+) -> Res {
     require_motion_task(ctx)?;
     refuse_unmodelled(args, layout)?;
     let chain = frames(ctx, args, layout, true)?;
     let via = tcp_in_base(ctx, &chain, &ctx.value(&args[layout.cir.unwrap_or(1)])?)?;
     let to = tcp_in_base(ctx, &chain, &ctx.value(&args[layout.to])?)?;
-    go_with(ctx, args, layout, Target::Circular { via, to }, chain, event)
+    go_with(ctx, args, layout, Target::Circular { via, to }, chain, events)
 }
 
 /// The output a Move*DO/AO/GO sets: its signal and value (a group's `\Dvalue` too).
-fn path_event(ctx: &mut Ctx<'_>, args: &[Value], signal: usize) -> Result<Option<super::robot::PathEvent>, RapidError> {
+fn path_event(ctx: &mut Ctx<'_>, args: &[Value], signal: usize) -> Result<Vec<super::robot::PathEvent>, RapidError> {
+    use super::robot::{Action, At, PathEvent};
     let id = super::super::io::signal(ctx, &args[signal])?;
     let value = match args.get(signal + 2) {
         Some(dvalue) if present(Some(dvalue)) => ctx.num(dvalue)?,
         _ => ctx.num(&args[signal + 1])?,
     };
-    Ok(Some(super::robot::PathEvent { signal: id, value }))
+    Ok(vec![PathEvent { at: At::Point, shift: 0.0, action: Action::Set { signal: id, value } }])
 }
 
 /// `MoveJDO`, `MoveJAO`, `MoveJGO`: MoveJ setting an output in the middle of the
@@ -326,15 +350,17 @@ pub(crate) fn move_c_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // uncertain: an event whose time has passed is set at once, not at its exact time.
 pub(crate) fn apply_due_events(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
     let due = std::mem::take(&mut ctx.resources.robot.due);
-    for (time, event) in due {
-        let (id, value) = (event.signal, event.value);
-        super::super::io::order(ctx, |io, t| {
-            if time > t {
-                io.set_delayed(id, value, t, time - t)
-            } else {
-                io.set(id, value, t)
+    for (time, action) in due {
+        match action {
+            super::robot::Action::Set { signal: id, value } => {
+                if time > ctx.time {
+                    ctx.resources.io.order_on_path(time, id, value);
+                } else {
+                    super::super::io::order(ctx, |io, t| io.set(id, value, t))?;
+                }
             }
-        })?;
+            super::robot::Action::Interrupt(number) => ctx.resources.interrupts.schedule(time, number),
+        }
     }
     Ok(())
 }

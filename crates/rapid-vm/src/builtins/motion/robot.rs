@@ -21,13 +21,41 @@ use rapid_motion::{Joints, MotionError};
 // modelled.
 pub const PREFETCH: f64 = 0.1;
 
-/// An output a move sets as the robot passes its point (MoveJDO, MoveLAO, …): in the
-/// middle of the corner path, or at the stop point.
+/// Where on a move's path an event happens.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum At {
+    /// Where the robot passes the programmed point: the middle of the corner path, or
+    /// the stop point (Move*DO, Trigg* distance 0).
+    Point,
+    /// This many mm of path before the point (TriggIO Distance).
+    BeforePoint(f64),
+    /// This many mm of path after the move's start (`\Start`).
+    AfterStart(f64),
+    /// This many seconds before the point (`\Time`).
+    SecondsBefore(f64),
+}
+
+/// What an event does.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Action {
+    /// Sets an output to a value.
+    Set { signal: u32, value: f64 },
+    /// Fires an interrupt (TriggInt).
+    Interrupt(u32),
+}
+
+/// An event a move fires as the robot passes a place on its path: Move*DO/AO/GO's
+/// output, a trigger of TriggL/J/C. `shift` moves it in time (TriggIO's DODelay
+/// later, TriggEquip's equipment lag earlier).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PathEvent {
-    pub signal: u32,
-    pub value: f64,
+    pub at: At,
+    pub shift: f64,
+    pub action: Action,
 }
+
+/// The step path distances are measured at, s.
+const DISTANCE_STEP: f64 = 0.001;
 
 /// The robot of a motion task.
 pub struct RobotState {
@@ -49,10 +77,15 @@ pub struct RobotState {
     pub corner_path_failures: u64,
     /// The SearchL under way.
     pub search: Option<super::search::Search>,
-    /// The path event of each move given and not yet final, oldest first.
-    events: VecDeque<Option<PathEvent>>,
-    /// Path events whose time is known: (controller time, event).
-    pub due: Vec<(f64, PathEvent)>,
+    /// The path events of each move given and not yet final, oldest first.
+    events: VecDeque<Vec<PathEvent>>,
+    /// Path events whose time is known: (controller time, action).
+    pub due: Vec<(f64, Action)>,
+    /// The triggers TriggIO, TriggEquip and TriggInt defined (triggdata holds an index).
+    pub triggers: Vec<PathEvent>,
+    /// The program waits for the robot until then, with interrupts ordered (traps run
+    /// meanwhile).
+    pub hold_until: Option<f64>,
 }
 
 impl Default for RobotState {
@@ -81,6 +114,8 @@ impl RobotState {
             search: None,
             events: VecDeque::new(),
             due: Vec::new(),
+            triggers: Vec::new(),
+            hold_until: None,
         }
     }
 
@@ -106,7 +141,7 @@ impl RobotState {
         now: f64,
         request: &MoveRequest,
         conc: bool,
-        event: Option<PathEvent>,
+        events: Vec<PathEvent>,
     ) -> Result<f64, MotionError> {
         if self.planner.pending_stop_time().is_some_and(|stop| now > stop) {
             // The program came too late: the waiting fly-by point became a stop point.
@@ -114,7 +149,7 @@ impl RobotState {
         }
         self.planner.idle_until(now);
         let done = self.planner.push(&self.kin, request)?;
-        self.events.push_back(event);
+        self.events.push_back(events);
         if let Some(done) = done {
             self.finish(done);
         }
@@ -145,9 +180,20 @@ impl RobotState {
         if planned.corner_path_failure {
             self.corner_path_failures += 1;
         }
-        if let Some(event) = self.events.pop_front().flatten() {
-            // The middle of the corner path; at a stop point, when the robot stands there.
-            self.due.push((planned.zone_entry + planned.corner_time / 2.0, event));
+        let events = self.events.pop_front().unwrap_or_default();
+        if !events.is_empty() {
+            // The point: the middle of the corner path; at a stop point, when the robot
+            // stands there.
+            let point = planned.zone_entry + planned.corner_time / 2.0;
+            for event in events {
+                let at = match event.at {
+                    At::Point => point,
+                    At::SecondsBefore(s) => point - s,
+                    At::BeforePoint(d) => self.time_at_distance(&planned, point, d, false),
+                    At::AfterStart(d) => self.time_at_distance(&planned, point, d, true),
+                };
+                self.due.push(((at + event.shift).max(planned.start), event.action));
+            }
         }
         self.motion_end = self.motion_end.max(planned.end);
         if let Some(recorded) = &mut self.recorded {
@@ -196,5 +242,24 @@ impl RobotState {
         self.motion_end = self.ahead.back().map_or(t, |m| m.end);
         self.planner.restart_from(joints, self.motion_end);
         joints
+    }
+
+    /// When the TCP is `d` mm of path after the move's start (`from_start`), or before
+    /// its point (at time `point`), measured along the sampled path.
+    fn time_at_distance(&self, planned: &PlannedMove, point: f64, d: f64, from_start: bool) -> f64 {
+        let steps = (((point - planned.start) / DISTANCE_STEP).ceil() as usize).min(1_000_000);
+        let mut marks = Vec::with_capacity(steps + 1);
+        let mut last = planned.sample(&self.kin, planned.start).tcp.translation.vector;
+        let mut travelled = 0.0;
+        marks.push((planned.start, 0.0));
+        for i in 1..=steps {
+            let t = (planned.start + i as f64 * DISTANCE_STEP).min(point);
+            let here = planned.sample(&self.kin, t).tcp.translation.vector;
+            travelled += (here - last).norm();
+            last = here;
+            marks.push((t, travelled));
+        }
+        let target = if from_start { d } else { travelled - d }.clamp(0.0, travelled);
+        marks.iter().find(|&&(_, s)| s >= target).map_or(point, |&(t, _)| t)
     }
 }

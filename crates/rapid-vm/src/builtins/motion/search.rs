@@ -129,7 +129,7 @@ fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32)) -> Result<Search, 
     let now = ctx.time;
     let robot = &mut ctx.resources.robot;
     robot.set_settings(settings);
-    let end = robot.push(now, &request, false, None).map_err(super::moves::motion_error)?;
+    let end = robot.push(now, &request, false, Vec::new()).map_err(super::moves::motion_error)?;
     robot.active = chain;
     Ok(Search { at, end, seen, last: level, hits: 0 })
 }
