@@ -651,3 +651,31 @@ fn triggers_fire_at_their_places_on_the_path() {
         assert!((after - expected).abs() < 0.0025, "{signal} = {value} after {after} s, expected {expected}: {log}");
     }
 }
+
+#[test]
+fn stopmove_in_a_trap_holds_the_robot_until_startmove() {
+    let dir = scratch("stopmove");
+    // A 100 mm MoveL at 100 mm/s to a stop point takes 1.06 s (1.01 s and 0.05 s
+    // settle). 0.3 s into it diStop rises: the trap stops the robot and waits for
+    // diGo, which rises at 0.8 s, then restarts it; the robot stood 0.5 s, so the move
+    // ends at 1.56 s.
+    let program = "MODULE S\n  CONST robtarget p0 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];\n  \
+                   VAR intnum stopint;\n  VAR clock c;\n  PROC main()\n    MoveJ p0, v1000, fine, tool0;\n    \
+                   CONNECT stopint WITH on_stop;\n    ISignalDI diStop, 1, stopint;\n    ClkStart c;\n    SetDO doStart, 1;\n    \
+                   MoveL Offs(p0, 100, 0, 0), v100, fine, tool0;\n    \
+                   TPWrite \"arrived after \" + NumToStr(ClkRead(c), 2);\n    IDelete stopint;\n  ENDPROC\n  \
+                   TRAP on_stop\n    StopMove;\n    IF IsStopMoveAct(\\FromMoveTask) TPWrite \"stopped\";\n    \
+                   WaitDI diGo, 1;\n    StartMove;\n    IF NOT IsStopMoveAct(\\FromMoveTask) TPWrite \"moving again\";\n  \
+                   ENDTRAP\nENDMODULE\n";
+    let tasks = [TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: program }];
+    let signals = "\n      -Name \"doStart\" -SignalType \"DO\"\n\n      -Name \"diStop\" -SignalType \"DI\"\n\n      -Name \"diGo\" -SignalType \"DI\"\n";
+    system(&dir, &tasks, signals);
+    fs::write(
+        dir.join("stop.stim"),
+        "when doStart = 1 after 0.3 s set diStop 1\nwhen doStart = 1 after 0.8 s set diGo 1\n",
+    )
+    .expect("stimulus");
+    let out = rapid_in(&dir, &["run", "--quiet", "--stimulus", "stop.stim", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "stopped\nmoving again\narrived after 1.56\n");
+}

@@ -39,3 +39,45 @@ impl super::PlannedMove {
         self.corner_time = 0.0;
     }
 }
+
+impl Planner {
+    /// The robot stood still `dt` seconds (StopMove … StartMove): what was planned
+    /// from `from` on happens that much later.
+    pub fn delay_from(&mut self, from: f64, dt: f64) {
+        if self.time >= from && dt.is_finite() {
+            self.time += dt;
+        }
+    }
+}
+
+impl super::PlannedMove {
+    /// The robot standing at `joints` from `start` to `end` (a pause of the path).
+    pub fn standing(joints: Joints, tool: crate::Pose, start: f64, end: f64) -> super::PlannedMove {
+        super::PlannedMove {
+            start,
+            zone_entry: end,
+            end,
+            corner_time: 0.0,
+            zone: 0.0,
+            corner_path_failure: false,
+            end_joints: joints,
+            spans: Vec::new(),
+            tool,
+        }
+    }
+
+    /// The same move `dt` seconds later.
+    pub fn shift(&mut self, dt: f64) {
+        self.start += dt;
+        self.zone_entry += dt;
+        self.end += dt;
+        for span in &mut self.spans {
+            span.t0 += dt;
+        }
+    }
+
+    /// The tool frame the move was planned with.
+    pub fn tool(&self) -> crate::Pose {
+        self.tool
+    }
+}

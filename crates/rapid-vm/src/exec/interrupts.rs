@@ -191,7 +191,8 @@ impl Vm {
         let signals = if interrupts.watches_signals() { self.resources.io.next_event_time() } else { None };
         let next = [interrupts.next_timer(), signals].into_iter().flatten().fold(until, f64::min);
         self.wait_rechecks = true;
-        Some((next - self.time).max(1e-6))
+        // A robot held by StopMove waits for ever: look again within the hour.
+        Some((next - self.time).clamp(1e-6, 3600.0))
     }
 
     /// Starts the trap of the first queued interrupt, when one may run now: interrupts

@@ -13,6 +13,7 @@ mod data;
 mod fit;
 mod frame;
 mod moves;
+pub mod pause;
 mod position;
 mod readback;
 pub mod robot;
@@ -82,6 +83,9 @@ pub(super) static ENTRIES: Entries = &[
     ("TriggL", trigg::trigg_l),
     ("TriggJ", trigg::trigg_j),
     ("TriggC", trigg::trigg_c),
+    ("StopMove", pause::stop_move),
+    ("StartMove", pause::start_move),
+    ("IsStopMoveAct", pause::is_stop_move_act),
 ];
 
 /// Where the motion family's system data and types are in the loaded program (set

@@ -86,6 +86,8 @@ pub struct RobotState {
     /// The program waits for the robot until then, with interrupts ordered (traps run
     /// meanwhile).
     pub hold_until: Option<f64>,
+    /// StopMove holds the robot.
+    pub pause: Option<super::pause::Pause>,
 }
 
 impl Default for RobotState {
@@ -116,6 +118,7 @@ impl RobotState {
             due: Vec::new(),
             triggers: Vec::new(),
             hold_until: None,
+            pause: None,
         }
     }
 
@@ -208,6 +211,8 @@ impl RobotState {
     // until its corner is planned; its end point stands for it (a stop point before a
     // read-back, as the manual recommends, makes it exact).
     pub fn joints_at(&mut self, t: f64) -> Joints {
+        // A stopped robot stands where it stopped.
+        let t = self.pause.as_ref().map_or(t, |p| t.min(p.since));
         while self.ahead.len() > 1 && self.ahead.front().is_some_and(|m| m.end < t) {
             self.ahead.pop_front();
         }
@@ -261,5 +266,43 @@ impl RobotState {
         }
         let target = if from_start { d } else { travelled - d }.clamp(0.0, travelled);
         marks.iter().find(|&&(_, s)| s >= target).map_or(point, |&(t, _)| t)
+    }
+
+    /// StartMove: the robot stood still from `since` for `dt` seconds, so what was
+    /// planned after `since` comes that much later; the move it was on is split into
+    /// the part done, the standstill and the rest.
+    pub fn resume_after(&mut self, since: f64, dt: f64) {
+        let kin = &self.kin;
+        let pause = |moves: Vec<PlannedMove>| -> Vec<PlannedMove> {
+            let mut out = Vec::with_capacity(moves.len() + 2);
+            for mut planned in moves {
+                if planned.end <= since {
+                    out.push(planned);
+                } else if planned.start >= since {
+                    planned.shift(dt);
+                    out.push(planned);
+                } else {
+                    let mut done = planned.clone();
+                    done.cut_at(kin, since);
+                    let stand = PlannedMove::standing(done.end_joints, planned.tool(), since, since + dt);
+                    planned.shift(dt);
+                    out.extend([done, stand, planned]);
+                }
+            }
+            out
+        };
+        self.ahead = pause(self.ahead.drain(..).collect()).into();
+        if let Some(recorded) = self.recorded.take() {
+            self.recorded = Some(pause(recorded));
+        }
+        self.planner.delay_from(since, dt);
+        if self.motion_end > since {
+            self.motion_end += dt;
+        }
+        for (t, _) in &mut self.due {
+            if *t > since {
+                *t += dt;
+            }
+        }
     }
 }

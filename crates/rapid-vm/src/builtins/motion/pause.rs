@@ -1,0 +1,74 @@
+//! StopMove, StartMove and IsStopMoveAct (§1.8, §2.2.6): the robot stops on its path
+//! and later goes on with the rest of it. While it stands, what was planned after the
+//! stop (moves, path outputs, trigger interrupts, the program's wait for the robot)
+//! is held, and on StartMove everything is moved on by the time it stood.
+
+use super::super::{present, Ctx};
+use crate::error::RapidError;
+use crate::value::Value;
+
+type Res = Result<Option<Value>, RapidError>;
+
+/// What StopMove set aside until StartMove.
+#[derive(Debug, Default, Clone)]
+pub struct Pause {
+    /// When the robot stopped.
+    pub since: f64,
+    /// The program's wait for the robot when it stopped.
+    held_wait: Option<f64>,
+    /// Path outputs and trigger interrupts after the stop: (time, …).
+    held_orders: Vec<(f64, u32, f64)>,
+    held_interrupts: Vec<(f64, u32)>,
+}
+
+fn refuse_all_tasks(args: &[Value], idx: usize) -> Result<(), RapidError> {
+    if present(args.get(idx)) {
+        return Err(RapidError::fatal("\\AllMotionTasks is not supported by `rapid run` yet"));
+    }
+    Ok(())
+}
+
+/// `StopMove [\Quick] [\AllMotionTasks]`: the robot stops where it is.
+// uncertain: the stopping distance (a path stop decelerates, \Quick faster) is not
+// modelled: the robot stands at the place it was at the instant of StopMove.
+pub(crate) fn stop_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    refuse_all_tasks(args, 1)?;
+    if ctx.resources.robot.pause.is_some() {
+        return Ok(None);
+    }
+    let now = ctx.time;
+    let held_wait = ctx.resources.robot.hold_until.map(|_| f64::INFINITY);
+    let held_wait = std::mem::replace(&mut ctx.resources.robot.hold_until, held_wait);
+    let orders = &mut ctx.resources.io.path_orders;
+    let split = orders.partition_point(|&(t, _, _)| t <= now);
+    let held_orders = orders.split_off(split).into_iter().collect();
+    let scheduled = &mut ctx.resources.interrupts.scheduled;
+    let held_interrupts = scheduled.iter().copied().filter(|&(t, _)| t > now).collect();
+    scheduled.retain(|&(t, _)| t <= now);
+    ctx.resources.robot.pause = Some(Pause { since: now, held_wait, held_orders, held_interrupts });
+    Ok(None)
+}
+
+/// `StartMove [\AllMotionTasks]`: the robot goes on along its path.
+pub(crate) fn start_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    refuse_all_tasks(args, 0)?;
+    let Some(pause) = ctx.resources.robot.pause.take() else { return Ok(None) };
+    let now = ctx.time;
+    let dt = (now - pause.since).max(0.0);
+    ctx.resources.robot.resume_after(pause.since, dt);
+    ctx.resources.robot.hold_until = pause.held_wait.map(|t| t + dt);
+    for (t, signal, value) in pause.held_orders {
+        ctx.resources.io.order_on_path(t + dt, signal, value);
+    }
+    for (t, number) in pause.held_interrupts {
+        ctx.resources.interrupts.schedule(t + dt, number);
+    }
+    Ok(None)
+}
+
+/// `IsStopMoveAct([\FromMoveTask] | [\FromNonMoveTask])`: whether StopMove holds the
+/// robot.
+// uncertain: both flags answer the one stop state of the task's robot.
+pub(crate) fn is_stop_move_act(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+    Ok(Some(Value::Bool(ctx.resources.robot.pause.is_some())))
+}
