@@ -679,3 +679,37 @@ fn stopmove_in_a_trap_holds_the_robot_until_startmove() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "stopped\nmoving again\narrived after 1.56\n");
 }
+
+#[test]
+fn world_zones_set_outputs_and_stop_the_robot() {
+    let dir = scratch("zones");
+    // A slab zone from x = 340 to 360 mm: the TCP, moving from x = 300 at 100 mm/s
+    // (0.5 mm in the first 0.01 s), enters it after 0.01 + 39.5/100 = 0.405 s and
+    // leaves after 0.605 s; doInZone follows (to the 4 ms path resolution). Then a
+    // sphere the robot may not enter (WZLimSup) lies on the next path: it stops.
+    let program = "MODULE S\n  CONST robtarget p0 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];\n  \
+                   VAR shapedata slab;\n  VAR shapedata ball;\n  VAR wztemporary wzSlab;\n  VAR wztemporary wzBall;\n  \
+                   PROC main()\n    MoveJ p0, v1000, fine, tool0;\n    \
+                   WZBoxDef \\Inside, slab, [340, -50, 350], [360, 50, 450];\n    \
+                   WZDOSet \\Temp, wzSlab \\Inside, slab, doInZone, 1;\n    SetDO doStart, 1;\n    \
+                   MoveL Offs(p0, 100, 0, 0), v100, fine, tool0;\n    WZFree wzSlab;\n    TPWrite \"slab zone \" \\Num:=wzSlab.wz;\n    \
+                   WZSphDef \\Inside, ball, [450, 0, 400], 20;\n    WZLimSup \\Temp, wzBall, ball;\n    \
+                   MoveL Offs(p0, 200, 0, 0), v100, fine, tool0;\n    TPWrite \"not reached\";\n  ENDPROC\nENDMODULE\n";
+    let tasks = [TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: program }];
+    let signals = "\n      -Name \"doStart\" -SignalType \"DO\"\n\n      -Name \"doInZone\" -SignalType \"DO\"\n";
+    system(&dir, &tasks, signals);
+    let out = rapid_in(&dir, &["run", "--quiet", "--io-log", "io.csv", "sys"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "slab zone 0\n");
+    assert!(text(&out.stderr).contains("WZLimSup"), "{}", text(&out.stderr));
+    let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
+    let time_of = |signal: &str, new: &str| -> f64 {
+        let line = log.lines().find(|l| l.split(',').nth(1) == Some(signal) && l.split(',').nth(3) == Some(new));
+        line.and_then(|l| l.split(',').next()).and_then(|t| t.parse().ok()).unwrap_or_else(|| panic!("{signal}: {log}"))
+    };
+    let start = time_of("doStart", "1");
+    for (value, expected) in [("1", 0.405), ("0", 0.605)] {
+        let after = time_of("doInZone", value) - start;
+        assert!((after - expected).abs() <= 0.0055, "doInZone = {value} after {after} s, expected {expected}: {log}");
+    }
+}

@@ -20,6 +20,7 @@ pub mod robot;
 mod search;
 mod settings;
 mod trigg;
+pub mod zones;
 
 pub(crate) use settings::set_payload;
 
@@ -86,6 +87,16 @@ pub(super) static ENTRIES: Entries = &[
     ("StopMove", pause::stop_move),
     ("StartMove", pause::start_move),
     ("IsStopMoveAct", pause::is_stop_move_act),
+    ("WZBoxDef", zones::wz_box_def),
+    ("WZCylDef", zones::wz_cyl_def),
+    ("WZSphDef", zones::wz_sph_def),
+    ("WZHomeJointDef", zones::wz_home_joint_def),
+    ("WZLimJointDef", zones::wz_lim_joint_def),
+    ("WZDOSet", zones::wz_do_set),
+    ("WZLimSup", zones::wz_lim_sup),
+    ("WZEnable", zones::wz_enable),
+    ("WZDisable", zones::wz_disable),
+    ("WZFree", zones::wz_free),
 ];
 
 /// Where the motion family's system data and types are in the loaded program (set

@@ -203,6 +203,10 @@ fn go_with(
     let resume = robot.push(now, &request, conc, events).map_err(motion_error)?;
     robot.active = chain;
     apply_due_events(ctx)?;
+    if ctx.resources.robot.zone_violation.take().is_some() {
+        // uncertain: RobotWare's event number for a WZLimSup stop is not in our notes.
+        return Err(RapidError::fatal("world zone: the robot would enter a WZLimSup zone; it stops before it"));
+    }
     // The move's tool and work object become the active ones (CTool, CWObj, GetSysData).
     crate::builtins::controller::sysdata::activate_arg(ctx, &args[layout.tool], layout.tool, 0);
     if present(args.get(layout.wobj)) {

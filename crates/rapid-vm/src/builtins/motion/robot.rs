@@ -13,7 +13,7 @@ use rapid_motion::frames::FrameChain;
 use rapid_motion::kinematics::Opw;
 use rapid_motion::plan::{AccelLimits, MoveRequest, PlannedMove, Planner};
 use rapid_motion::robots::{default_model, RobotModel};
-use rapid_motion::{Joints, MotionError};
+use rapid_motion::{Joints, Kinematics, MotionError};
 
 /// How long before the robot would brake for a fly-by point the program goes on to
 /// plan the next move (§2.3: "about 0.1 s" to plan the next move).
@@ -88,6 +88,13 @@ pub struct RobotState {
     pub hold_until: Option<f64>,
     /// StopMove holds the robot.
     pub pause: Option<super::pause::Pause>,
+    /// The shapes WZ*Def defined (shapedata holds an index) and the active world zones
+    /// with whether the robot was last inside each.
+    pub shapes: Vec<super::zones::ShapeData>,
+    pub zones: Vec<Option<super::zones::Zone>>,
+    zone_inside: Vec<bool>,
+    /// When the robot would enter a WZLimSup zone (execution stops).
+    pub zone_violation: Option<f64>,
 }
 
 impl Default for RobotState {
@@ -119,6 +126,10 @@ impl RobotState {
             triggers: Vec::new(),
             hold_until: None,
             pause: None,
+            shapes: Vec::new(),
+            zones: Vec::new(),
+            zone_inside: Vec::new(),
+            zone_violation: None,
         }
     }
 
@@ -198,6 +209,7 @@ impl RobotState {
                 self.due.push(((at + event.shift).max(planned.start), event.action));
             }
         }
+        self.supervise_zones(&planned);
         self.motion_end = self.motion_end.max(planned.end);
         if let Some(recorded) = &mut self.recorded {
             recorded.push(planned.clone());
@@ -302,6 +314,61 @@ impl RobotState {
         for (t, _) in &mut self.due {
             if *t > since {
                 *t += dt;
+            }
+        }
+    }
+
+    /// Whether the robot at `joints` (TCP of the active tool) is in zone `i`.
+    fn in_zone(&self, i: usize, joints: &Joints, tcp: &nalgebra::Vector3<f64>) -> bool {
+        self.zones.get(i).copied().flatten().is_some_and(|z| z.shape.contains(tcp, joints))
+    }
+
+    /// A zone just activated (or enabled): its output follows where the robot is now.
+    pub fn start_zone(&mut self, i: usize, now: f64) {
+        let joints = self.joints_at(now);
+        let tcp = (self.kin.forward(&joints) * self.active.tframe).translation.vector;
+        let inside = self.in_zone(i, &joints, &tcp);
+        if self.zone_inside.len() <= i {
+            self.zone_inside.resize(i + 1, false);
+        }
+        self.zone_inside[i] = inside;
+        match self.zones[i].map(|z| z.kind) {
+            Some(super::zones::ZoneKind::DoSet { signal, value }) => {
+                self.due.push((now, Action::Set { signal, value: if inside { value } else { 1.0 - value } }));
+            }
+            Some(super::zones::ZoneKind::LimSup) if inside => self.zone_violation = Some(now),
+            _ => {}
+        }
+    }
+
+    /// World zones along a final move, at the 4 ms path resolution: outputs where the
+    /// TCP (or the axes) go in or out, a WZLimSup zone entered.
+    fn supervise_zones(&mut self, planned: &PlannedMove) {
+        let active: Vec<usize> = (0..self.zones.len()).filter(|&i| self.zones[i].is_some_and(|z| z.enabled)).collect();
+        if active.is_empty() {
+            return;
+        }
+        if self.zone_inside.len() < self.zones.len() {
+            self.zone_inside.resize(self.zones.len(), false);
+        }
+        for sample in planned.samples(&self.kin, rapid_motion::plan::DEFAULT_STEP) {
+            let tcp = sample.tcp.translation.vector;
+            for &i in &active {
+                let inside = self.in_zone(i, &sample.joints, &tcp);
+                if inside == self.zone_inside[i] {
+                    continue;
+                }
+                self.zone_inside[i] = inside;
+                match self.zones[i].map(|z| z.kind) {
+                    Some(super::zones::ZoneKind::DoSet { signal, value }) => {
+                        let value = if inside { value } else { 1.0 - value };
+                        self.due.push((sample.time, Action::Set { signal, value }));
+                    }
+                    Some(super::zones::ZoneKind::LimSup) if inside => {
+                        self.zone_violation.get_or_insert(sample.time);
+                    }
+                    _ => {}
+                }
             }
         }
     }

@@ -1,0 +1,251 @@
+//! World zones (§2.9): WZBoxDef, WZCylDef, WZSphDef, WZHomeJointDef, WZLimJointDef
+//! define a shape; WZDOSet makes a zone that sets an output while the TCP (or the
+//! axes) is inside, WZLimSup one the robot may not enter; WZEnable, WZDisable and
+//! WZFree act on temporary zones. Zones are supervised along every planned move at
+//! the controller's 4 ms path resolution (`robot.rs`), at most 20 at a time.
+
+use nalgebra::Vector3;
+
+use super::super::{present, Ctx};
+use super::data;
+use super::frame;
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::{Opaque, OpaqueState, Record, Value};
+
+type Res = Result<Option<Value>, RapidError>;
+
+/// At most this many world zones at a time.
+const MAX_ZONES: usize = 20;
+
+/// A zone's volume: in world coordinates (mm) or in axis values (degrees).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Shape {
+    Box { low: [f64; 3], high: [f64; 3] },
+    Cylinder { centre: [f64; 3], radius: f64, height: f64 },
+    Sphere { centre: [f64; 3], radius: f64 },
+    Joints { low: [f64; 6], high: [f64; 6] },
+}
+
+/// A shape and whether the zone is its inside or its outside.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShapeData {
+    pub shape: Shape,
+    pub outside: bool,
+}
+
+impl ShapeData {
+    /// Whether the TCP at `tcp` (world, mm) with axes `joints` is in the zone.
+    pub fn contains(&self, tcp: &Vector3<f64>, joints: &[f64; 6]) -> bool {
+        let within = |v: f64, lo: f64, hi: f64| v >= lo.min(hi) && v <= hi.max(lo);
+        let inside = match self.shape {
+            Shape::Box { low, high } => (0..3).all(|i| within(tcp[i], low[i], high[i])),
+            Shape::Cylinder { centre, radius, height } => {
+                let (dx, dy) = (tcp.x - centre[0], tcp.y - centre[1]);
+                dx.hypot(dy) <= radius && within(tcp.z, centre[2], centre[2] + height)
+            }
+            Shape::Sphere { centre, radius } => (tcp - Vector3::from(centre)).norm() <= radius,
+            Shape::Joints { low, high } => (0..6).all(|i| within(joints[i], low[i], high[i])),
+        };
+        inside != self.outside
+    }
+}
+
+/// What an active zone does.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ZoneKind {
+    /// WZDOSet: the output is `value` inside the zone, the other value outside.
+    DoSet { signal: u32, value: f64 },
+    /// WZLimSup: entering the zone stops the robot.
+    LimSup,
+}
+
+/// An active world zone.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Zone {
+    pub shape: ShapeData,
+    pub kind: ZoneKind,
+    pub enabled: bool,
+    /// Temporary (WZFree, WZDisable and WZEnable apply) or stationary.
+    pub temporary: bool,
+}
+
+fn pos(ctx: &Ctx<'_>, arg: &Value) -> Result<[f64; 3], RapidError> {
+    let v = frame::vector(ctx, &ctx.value(arg)?)?;
+    Ok([v.x, v.y, v.z])
+}
+
+fn define(ctx: &mut Ctx<'_>, args: &[Value], shape: Shape) -> Res {
+    let data = ShapeData { shape, outside: present(args.get(1)) };
+    let (opaque, handle) = ctx.handle_arg(&args[2], "a shapedata")?;
+    let shapes = &mut ctx.resources.robot.shapes;
+    let index = match handle.map(|h| h as usize).filter(|&h| h < shapes.len()) {
+        Some(h) => {
+            shapes[h] = data;
+            h
+        }
+        None => {
+            shapes.push(data);
+            shapes.len() - 1
+        }
+    };
+    let stored = Opaque { ty: opaque.ty, state: OpaqueState::Handle(index as u32) };
+    ctx.store(&args[2], Value::Opaque(Box::new(stored)))?;
+    Ok(None)
+}
+
+/// `WZBoxDef [\Inside] | [\Outside] Shape, LowPoint, HighPoint`.
+pub(crate) fn wz_box_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let (low, high) = (pos(ctx, &args[3])?, pos(ctx, &args[4])?);
+    if (0..3).any(|i| low[i] == high[i]) {
+        return Err(ctx.error(Err::ArgValue, "a box zone needs a size along every axis"));
+    }
+    define(ctx, args, Shape::Box { low, high })
+}
+
+/// `WZCylDef [\Inside] | [\Outside] Shape, CentrePoint, Radius, Height` (a cylinder
+/// along the world z axis from its centre point's height).
+pub(crate) fn wz_cyl_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let centre = pos(ctx, &args[3])?;
+    let (radius, height) = (ctx.num(&args[4])?, ctx.num(&args[5])?);
+    if radius <= 0.0 {
+        return Err(ctx.error(Err::ArgValue, "a cylinder zone needs a radius above 0"));
+    }
+    // uncertain: a negative height extends the cylinder downwards.
+    define(ctx, args, Shape::Cylinder { centre, radius, height })
+}
+
+/// `WZSphDef [\Inside] | [\Outside] Shape, CentrePoint, Radius`.
+pub(crate) fn wz_sph_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let centre = pos(ctx, &args[3])?;
+    let radius = ctx.num(&args[4])?;
+    if radius <= 0.0 {
+        return Err(ctx.error(Err::ArgValue, "a sphere zone needs a radius above 0"));
+    }
+    define(ctx, args, Shape::Sphere { centre, radius })
+}
+
+/// `WZHomeJointDef [\Inside] | [\Outside] Shape, MiddleJointVal, DeltaJointVal`: the
+/// axes within Delta of Middle.
+pub(crate) fn wz_home_joint_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let middle = data::jointtarget(ctx, &ctx.value(&args[3])?)?;
+    let delta = data::jointtarget(ctx, &ctx.value(&args[4])?)?;
+    let low = std::array::from_fn(|i| middle[i] - delta[i].abs());
+    let high = std::array::from_fn(|i| middle[i] + delta[i].abs());
+    define(ctx, args, Shape::Joints { low, high })
+}
+
+/// `WZLimJointDef [\Inside] | [\Outside] Shape, LowJointVal, HighJointVal`.
+// uncertain: an axis whose low and high are both 9E9 is not limited.
+pub(crate) fn wz_lim_joint_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let mut low = data::jointtarget(ctx, &ctx.value(&args[3])?)?;
+    let mut high = data::jointtarget(ctx, &ctx.value(&args[4])?)?;
+    for i in 0..6 {
+        if low[i] >= 8.9e9 {
+            low[i] = f64::NEG_INFINITY;
+        }
+        if high[i] >= 8.9e9 {
+            high[i] = f64::INFINITY;
+        }
+    }
+    define(ctx, args, Shape::Joints { low, high })
+}
+
+fn shape_of(ctx: &Ctx<'_>, arg: &Value) -> Result<ShapeData, RapidError> {
+    let (_, handle) = ctx.handle_arg(arg, "a shapedata")?;
+    handle
+        .and_then(|h| ctx.resources.robot.shapes.get(h as usize).copied())
+        .ok_or_else(|| ctx.error(Err::ArgValue, "the shapedata was never defined (WZBoxDef …)"))
+}
+
+/// Activates a zone and gives its number to the WorldZone record.
+fn activate(ctx: &mut Ctx<'_>, args: &[Value], shape: ShapeData, kind: ZoneKind) -> Res {
+    let temporary = !present(args.get(1));
+    let zones = &mut ctx.resources.robot.zones;
+    if zones.iter().flatten().count() >= MAX_ZONES {
+        return Err(ctx.error(Err::ArgValue, "at most 20 world zones can be active"));
+    }
+    let zone = Zone { shape, kind, enabled: true, temporary };
+    let number = match zones.iter().position(Option::is_none) {
+        Some(free) => {
+            zones[free] = Some(zone);
+            free + 1
+        }
+        None => {
+            zones.push(Some(zone));
+            zones.len()
+        }
+    };
+    let Value::Record(record) = ctx.value(&args[2])? else {
+        return Err(ctx.error(Err::ArgValue, "WorldZone must be a wztemporary or wzstationary"));
+    };
+    let record = Record { ty: record.ty, fields: vec![Value::Num(number as f32)] };
+    ctx.store(&args[2], Value::Record(std::rc::Rc::new(record)))?;
+    let now = ctx.time;
+    ctx.resources.robot.start_zone(number - 1, now);
+    super::moves::apply_due_events(ctx)?;
+    Ok(None)
+}
+
+/// `WZDOSet [\Temp] | [\Stat] WorldZone [\Inside] | [\Before] Shape, Signal, SetValue`.
+pub(crate) fn wz_do_set(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    if present(args.get(4)) {
+        return Err(RapidError::fatal("WZDOSet \\Before is not supported by `rapid run` yet"));
+    }
+    let shape = shape_of(ctx, &args[5])?;
+    let signal = super::super::io::signal(ctx, &args[6])?;
+    let value = ctx.num(&args[7])?;
+    activate(ctx, args, shape, ZoneKind::DoSet { signal, value })
+}
+
+/// `WZLimSup [\Temp] | [\Stat] WorldZone, Shape`.
+pub(crate) fn wz_lim_sup(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let shape = shape_of(ctx, &args[3])?;
+    activate(ctx, args, shape, ZoneKind::LimSup)
+}
+
+/// The active temporary zone a wztemporary names.
+fn temporary(ctx: &Ctx<'_>, arg: &Value) -> Result<usize, RapidError> {
+    let number = match ctx.value(arg)? {
+        Value::Record(r) => r.fields.first().and_then(Value::as_f64).unwrap_or(0.0),
+        _ => 0.0,
+    };
+    let index = (number as usize).checked_sub(1);
+    match index.and_then(|i| ctx.resources.robot.zones.get(i).copied().flatten().map(|z| (i, z))) {
+        Some((i, zone)) if zone.temporary => Ok(i),
+        // uncertain: the controller's error for a zone that is not active.
+        _ => Err(ctx.error(Err::ArgValue, "the world zone is not an active temporary zone")),
+    }
+}
+
+/// `WZEnable WorldZone`.
+pub(crate) fn wz_enable(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let i = temporary(ctx, &args[0])?;
+    if let Some(zone) = ctx.resources.robot.zones[i].as_mut() {
+        zone.enabled = true;
+    }
+    let now = ctx.time;
+    ctx.resources.robot.start_zone(i, now);
+    super::moves::apply_due_events(ctx)?;
+    Ok(None)
+}
+
+/// `WZDisable WorldZone`.
+pub(crate) fn wz_disable(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let i = temporary(ctx, &args[0])?;
+    if let Some(zone) = ctx.resources.robot.zones[i].as_mut() {
+        zone.enabled = false;
+    }
+    Ok(None)
+}
+
+/// `WZFree WorldZone`: the zone is gone (its number 0 again).
+pub(crate) fn wz_free(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let i = temporary(ctx, &args[0])?;
+    ctx.resources.robot.zones[i] = None;
+    if let Value::Record(record) = ctx.value(&args[0])? {
+        let record = Record { ty: record.ty, fields: vec![Value::Num(0.0)] };
+        ctx.store(&args[0], Value::Record(std::rc::Rc::new(record)))?;
+    }
+    Ok(None)
+}
