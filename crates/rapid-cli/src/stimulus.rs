@@ -8,22 +8,40 @@
 //! at 4 s set giRecipe 12         # an `s` after the time is allowed
 //! when doGrip = 1 after 0.2 s set diGripClosed 1   # every time doGrip becomes 1
 //! when doGrip = 0 set diGripClosed 0               # at once
+//! at 4 s answer TPReadNum 7     # the operator answers the next pendant dialog at 4 s
 //! ```
 //!
 //! `set` names inputs (DI, GI, AI) of the I/O configuration; a digital input takes 0
-//! or 1; `when` watches any signal. Pendant answers in the stimulus are not supported
-//! yet (use `--tp-input`); any other line is reported with its line number.
+//! or 1; `when` watches any signal. `answer [DIALOG] TEXT` is the operator's answer to
+//! the next pendant dialog (TPReadNum, TPReadFK, UINumEntry, …; the dialog's name is
+//! optional and only checked to be one): a dialog shown earlier waits for it. Any other
+//! line is reported with its line number.
 
 use rapid_io::{IoSystem, SignalKind};
 use rapid_vm::builtins::io::Reaction;
 
-/// A stimulus: timed input changes (time, signal id, value) in time order, and
-/// reactions.
-pub(crate) type Stimulus = (Vec<(f64, u32, f64)>, Vec<Reaction>);
+/// A stimulus: timed input changes (time, signal id, value) in time order, reactions,
+/// and timed operator answers (time, text) in time order.
+pub(crate) type Stimulus = (Vec<(f64, u32, f64)>, Vec<Reaction>, Vec<(f64, String)>);
+
+/// The pendant dialogs an `answer` line may name.
+const DIALOGS: &[&str] = &[
+    "TPReadNum",
+    "TPReadDnum",
+    "TPReadFK",
+    "UINumEntry",
+    "UIDnumEntry",
+    "UIAlphaEntry",
+    "UIMsgBox",
+    "UIMessageBox",
+    "UIListView",
+    "UINumTune",
+    "UIDnumTune",
+];
 
 /// The stimulus of `text` (from file `path`).
 pub(crate) fn parse(path: &str, text: &str, io: &IoSystem) -> Result<Stimulus, String> {
-    let (mut orders, mut reactions) = (Vec::new(), Vec::new());
+    let (mut orders, mut reactions, mut answers) = (Vec::new(), Vec::new(), Vec::new());
     for (n, line) in text.lines().enumerate() {
         let line = line.split('#').next().unwrap_or("").trim();
         if line.is_empty() {
@@ -32,13 +50,33 @@ pub(crate) fn parse(path: &str, text: &str, io: &IoSystem) -> Result<Stimulus, S
         let at_line = |message: String| format!("{path}:{}: {message}", n + 1);
         if line.starts_with("when ") {
             reactions.push(parse_reaction(line, io).map_err(at_line)?);
+        } else if line.split_whitespace().any(|w| w == "answer") {
+            answers.push(parse_answer(line).map_err(at_line)?);
         } else {
             orders.push(parse_order(line, io).map_err(at_line)?);
         }
     }
     // Stable: orders at the same time apply in the order written.
     orders.sort_by(|a, b| a.0.total_cmp(&b.0));
-    Ok((orders, reactions))
+    answers.sort_by(|a, b| a.0.total_cmp(&b.0));
+    Ok((orders, reactions, answers))
+}
+
+/// `at SECONDS [s] answer [DIALOG] TEXT`.
+fn parse_answer(line: &str) -> Result<(f64, String), String> {
+    let words = without_units(line);
+    let ["at", time, "answer", rest @ ..] = words.as_slice() else {
+        return Err(format!("expected `at SECONDS answer [DIALOG] TEXT`, found `{line}`"));
+    };
+    let time = seconds(time)?;
+    let rest = match rest.first() {
+        Some(first) if DIALOGS.iter().any(|d| d.eq_ignore_ascii_case(first)) => &rest[1..],
+        _ => rest,
+    };
+    if rest.is_empty() {
+        return Err(format!("an answer needs a text, found `{line}`"));
+    }
+    Ok((time, rest.join(" ")))
 }
 
 /// `at SECONDS [s] set INPUT VALUE`.
@@ -116,7 +154,10 @@ mod tests {
     #[test]
     fn orders_are_read_in_time_order_with_comments_and_units() {
         let text = "# start\nat 2 set di1 0\n\nat 1.5 s set DI1 1   # case ignored\n";
-        assert_eq!(super::parse("s.txt", text, &io()), Ok((vec![(1.5, 0, 1.0), (2.0, 0, 0.0)], Vec::new())));
+        assert_eq!(
+            super::parse("s.txt", text, &io()),
+            Ok((vec![(1.5, 0, 1.0), (2.0, 0, 0.0)], Vec::new(), Vec::new()))
+        );
     }
 
     #[test]
@@ -124,7 +165,7 @@ mod tests {
         let text = "when do1 = 1 after 0.2 s set di1 1\nwhen do1 = 0 set di1 0\n";
         let reaction = |value, delay, set| rapid_vm::builtins::io::Reaction { watch: 1, value, delay, target: 0, set };
         let expected = vec![reaction(1.0, 0.2, 1.0), reaction(0.0, 0.0, 0.0)];
-        assert_eq!(super::parse("s.txt", text, &io()), Ok((Vec::new(), expected)));
+        assert_eq!(super::parse("s.txt", text, &io()), Ok((Vec::new(), expected, Vec::new())));
     }
 
     #[test]
@@ -135,15 +176,22 @@ mod tests {
             ("at 1 set nosuch 1", "s.txt:1: no signal `nosuch` in the I/O configuration"),
             ("at 1 set do1 1", "s.txt:1: `do1` is an output; a stimulus sets inputs only"),
             ("at 1 set di1 2", "s.txt:1: digital input `di1` takes 0 or 1, not 2"),
-            (
-                "at 1 answer TPReadNum 7",
-                "s.txt:1: expected `at SECONDS set SIGNAL VALUE` or `when …`, found `at 1 answer TPReadNum 7`",
-            ),
+            ("answer 7 at 1", "s.txt:1: expected `at SECONDS answer [DIALOG] TEXT`, found `answer 7 at 1`"),
+            ("at 1 jump di1 1", "s.txt:1: expected `at SECONDS set SIGNAL VALUE` or `when …`, found `at 1 jump di1 1`"),
             ("when do1 = 1 set do1 1", "s.txt:1: `do1` is an output; a stimulus sets inputs only"),
             ("when di1 = 1 after -1 set di1 0", "s.txt:1: the time -1 is not 0 or later"),
         ];
         for (text, message) in cases {
             assert_eq!(super::parse("s.txt", text, &io), Err(message.to_string()));
         }
+    }
+
+    #[test]
+    fn answers_at_their_times_with_or_without_the_dialog_name() {
+        let text = "at 4 s answer TPReadNum 7\nat 1 answer yes please\n";
+        let (_, _, answers) = super::parse("s.txt", text, &io()).expect("parses");
+        assert_eq!(answers, [(1.0, "yes please".to_string()), (4.0, "7".to_string())]);
+        let err = super::parse("s.txt", "at 2 answer TPReadFK\n", &io()).expect_err("no text");
+        assert!(err.starts_with("s.txt:1: an answer needs a text"), "{err}");
     }
 }

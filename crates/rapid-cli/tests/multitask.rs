@@ -713,3 +713,18 @@ fn world_zones_set_outputs_and_stop_the_robot() {
         assert!((after - expected).abs() <= 0.0055, "doInZone = {value} after {after} s, expected {expected}: {log}");
     }
 }
+
+#[test]
+fn a_stimulus_answers_a_pendant_dialog_at_its_time() {
+    let dir = scratch("answer");
+    // The dialog is shown at 0; the operator answers 7 at 4 s (the issue's example line).
+    let program = "MODULE S\n  VAR clock c;\n  PROC main()\n    VAR num n;\n    ClkStart c;\n    \
+                   TPReadNum n, \"How many parts?\";\n    TPWrite \"got \" + NumToStr(n, 0) + \" at \" + NumToStr(ClkRead(c), 1);\n  \
+                   ENDPROC\nENDMODULE\n";
+    let tasks = [TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: program }];
+    system(&dir, &tasks, "\n      -Name \"diUnused\" -SignalType \"DI\"\n");
+    fs::write(dir.join("op.stim"), "at 4 s answer TPReadNum 7\n").expect("stimulus");
+    let out = rapid_in(&dir, &["run", "--stimulus", "op.stim", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(text(&out.stdout).ends_with("got 7 at 4.0\n"), "{}", text(&out.stdout));
+}

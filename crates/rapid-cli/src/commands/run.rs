@@ -365,9 +365,10 @@ fn configure_io(
             "`{shown}`: a stimulus needs an I/O configuration (a backup with SYSPAR/EIO.cfg, or a manifest with `io`)"
         ));
     };
-    let (orders, reactions) = crate::stimulus::parse(&shown, &text, system)?;
+    let (orders, reactions, answers) = crate::stimulus::parse(&shown, &text, system)?;
     io.stimulus = orders.into();
     io.reactions = reactions;
+    io.answers = answers.into();
     Ok(())
 }
 

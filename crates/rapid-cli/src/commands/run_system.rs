@@ -232,9 +232,10 @@ fn install_stimulus(controller: &mut Controller, args: &RunArgs) -> Result<(), S
     let Some(system) = &io.system else {
         return Err(format!("`{shown}`: a stimulus needs an I/O configuration (the system has none: SYSPAR/EIO.cfg in a backup, `io` in a manifest)"));
     };
-    let (orders, reactions) = crate::stimulus::parse(&shown, &text, system)?;
+    let (orders, reactions, answers) = crate::stimulus::parse(&shown, &text, system)?;
     io.stimulus = orders.into();
     io.reactions = reactions;
+    io.answers = answers.into();
     Ok(())
 }
 

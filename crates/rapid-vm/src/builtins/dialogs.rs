@@ -232,6 +232,17 @@ fn answer(
     max_time: Option<&Value>,
     break_flag: Option<&Value>,
 ) -> Result<Option<String>, RapidError> {
+    // The operator's timed answers (a stimulus) come first: a dialog shown before the
+    // answer's time waits for it (re-run when the time comes).
+    if let Some(&(at, _)) = ctx.resources.io.answers.front() {
+        if at > ctx.time {
+            ctx.wait = Some(at - ctx.time);
+            ctx.stop = super::StopKind::Repeat;
+            return Ok(None);
+        }
+        let text = ctx.resources.io.answers.pop_front().map(|(_, text)| text).unwrap_or_default();
+        return Ok(Some(text.trim().to_string()));
+    }
     if let Some(text) = ctx.host.tp_answer(prompt) {
         return Ok(Some(text.trim().to_string()));
     }

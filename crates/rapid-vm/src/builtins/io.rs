@@ -36,6 +36,9 @@ pub struct IoState {
     /// Outputs the robot's path sets at a time (triggers, Move*DO): (time, signal,
     /// value), in time order.
     pub path_orders: std::collections::VecDeque<(f64, u32, f64)>,
+    /// The operator's answers to pendant dialogs at given times (a stimulus), in
+    /// time order.
+    pub answers: std::collections::VecDeque<(f64, String)>,
     /// How many entries of the change log the reactions have seen.
     seen_changes: usize,
     /// The waiting instruction under way (WaitDI …): (call depth, pc, started at).
@@ -50,6 +53,7 @@ pub struct SharedIo {
     pub stimulus: std::collections::VecDeque<(f64, u32, f64)>,
     pub reactions: Vec<Reaction>,
     pub path_orders: std::collections::VecDeque<(f64, u32, f64)>,
+    pub answers: std::collections::VecDeque<(f64, String)>,
     seen_changes: usize,
 }
 
@@ -74,6 +78,7 @@ impl IoState {
         std::mem::swap(&mut self.stimulus, &mut shared.stimulus);
         std::mem::swap(&mut self.reactions, &mut shared.reactions);
         std::mem::swap(&mut self.path_orders, &mut shared.path_orders);
+        std::mem::swap(&mut self.answers, &mut shared.answers);
         std::mem::swap(&mut self.seen_changes, &mut shared.seen_changes);
     }
 }
