@@ -82,6 +82,12 @@ pub(crate) struct RunArgs {
     #[arg(long, value_name = "FILE")]
     pub(crate) io_log: Option<PathBuf>,
 
+    /// Every signal an `AliasIO "NAME", var` names that the I/O configuration lacks is
+    /// made a virtual signal of the variable's kind (a simulation aid for modules run
+    /// without their cell's EIO.cfg; a real controller raises ERR_ALIASIO_DEF).
+    #[arg(long)]
+    pub(crate) virtual_io: bool,
+
     /// The robot model (`IRB120`, `IRB 4600-60/2.05`, a MOC.cfg robot type such as
     /// `ROB1_120_0.58`). Default: the backup's MOC.cfg robot type, else IRB 120-3/0.58.
     #[arg(long, value_name = "MODEL")]

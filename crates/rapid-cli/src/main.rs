@@ -9,6 +9,7 @@ mod motion_out;
 mod render;
 mod save;
 mod stimulus;
+mod virtual_io;
 
 use std::io::{self, Write};
 use std::process::ExitCode;

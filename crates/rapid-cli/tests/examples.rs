@@ -50,3 +50,25 @@ fn the_press_cell_project_and_backup_run_the_same() {
     assert_eq!(backup.status.code(), Some(0), "{}", text(&backup.stderr));
     assert_eq!(text(&backup.stdout), text(&project.stdout));
 }
+
+#[test]
+fn a_module_alone_runs_with_virtual_io_like_its_cell() {
+    // The same module, robot and stimulus as the cell, with the two signals made
+    // virtual from its AliasIO calls instead of configured: the same run.
+    let cell = rapid(&["--stimulus", "examples/pick_and_place_cell/parts.stim", "examples/pick_and_place_cell"]);
+    let alone = rapid(&[
+        "--virtual-io",
+        "--robot",
+        "IRB 2600-12/1.65",
+        "--stimulus",
+        "examples/pick_and_place_cell/parts.stim",
+        "examples/pick_and_place.mod",
+    ]);
+    assert_eq!(alone.status.code(), Some(0), "{}", text(&alone.stderr));
+    assert_eq!(text(&alone.stdout), "Parts placed: 4\n");
+    assert_eq!(cycle_time(&text(&alone.stderr)), cycle_time(&text(&cell.stderr)));
+    // Without the option the signals do not exist: the controller's error.
+    let refused = rapid(&["examples/pick_and_place.mod"]);
+    assert_eq!(refused.status.code(), Some(1));
+    assert!(text(&refused.stderr).contains("ERR_ALIASIO_DEF"), "{}", text(&refused.stderr));
+}

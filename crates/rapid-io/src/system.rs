@@ -119,6 +119,25 @@ impl IoSystem {
         Ok(system)
     }
 
+    /// Adds a virtual signal (on no device) after start-up, at its default value: a
+    /// simulation aid for programs whose I/O configuration is not at hand.
+    pub fn add_virtual(&mut self, def: SignalDef) -> Result<SignalId, ConfigError> {
+        let index = self.defs.len();
+        check_signal(index, &def)?;
+        let key = def.name.to_ascii_lowercase();
+        if self.ids.contains_key(&key) {
+            return Err(ConfigError::DuplicateSignal { index, name: def.name.clone() });
+        }
+        let id = index as SignalId;
+        self.ids.insert(key, id);
+        self.names.push(Arc::from(def.name.as_str()));
+        self.values.push(def.default);
+        self.net.readers.push(Vec::new());
+        self.net.is_result.push(false);
+        self.defs.push(def);
+        Ok(id)
+    }
+
     /// Like [`IoSystem::new`], with the I/O devices and networks: every signal's `device`
     /// must be one of `devices`.
     pub fn with_units(

@@ -47,7 +47,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     configure_files(&mut loaded, args, &inputs.modules, inputs.root.clone());
     loaded.vm.resources_mut().cfgdata.set_config(inputs.syspar.clone());
     loaded.vm.resources_mut().controller = args.controller_state();
-    if let Err(message) = configure_io(&mut loaded, args, &inputs.syspar) {
+    if let Err(message) = configure_io(&mut loaded, args, &inputs.syspar, &inputs.modules) {
         eprintln!("error: {message}");
         eprintln!("the system has errors; it was not run");
         return Ok(ExitStatus::Failure);
@@ -351,10 +351,18 @@ fn configure_io(
     loaded: &mut rapid_vm::Loaded,
     args: &RunArgs,
     syspar: &[(String, rapid_config::CfgFile)],
+    modules: &[SourceInput],
 ) -> Result<(), String> {
     let eio = syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("EIO"));
-    if let Some((_, eio)) = eio {
-        loaded.vm.install_io(rapid_vm::builtins::io_config::io_system(&rapid_config::eio::read(eio))?);
+    let mut system = match eio {
+        Some((_, eio)) => Some(rapid_vm::builtins::io_config::io_system(&rapid_config::eio::read(eio))?),
+        None => None,
+    };
+    if args.virtual_io {
+        with_virtual_signals(&mut system, modules)?;
+    }
+    if let Some(system) = system {
+        loaded.vm.install_io(system);
     }
     let Some(path) = &args.stimulus else { return Ok(()) };
     let shown = path.display().to_string();
@@ -370,6 +378,22 @@ fn configure_io(
     io.reactions = reactions;
     io.answers = answers.into();
     Ok(())
+}
+
+/// `--virtual-io`: the signals AliasIO names that the configuration lacks, as virtual
+/// signals (an I/O system is made when there is none).
+pub(crate) fn with_virtual_signals(
+    system: &mut Option<rapid_io::IoSystem>,
+    modules: &[SourceInput],
+) -> Result<(), String> {
+    let signals = crate::virtual_io::aliased_signals(modules);
+    if system.is_none() {
+        *system = Some(rapid_io::IoSystem::new(Vec::new(), Vec::new()).map_err(|e| e.to_string())?);
+    }
+    match system {
+        Some(system) => crate::virtual_io::add_to(system, &signals),
+        None => Ok(()),
+    }
 }
 
 /// `x` with at most `places` decimals, trailing zeros dropped (times to the

@@ -65,10 +65,16 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         program.vm.resources_mut().controller = args.controller_state();
         loaded.push((task.spec.clone(), program));
     }
-    let io = match io_system(&tasks[0].inputs) {
+    let mut io = match io_system(&tasks[0].inputs) {
         Ok(io) => io,
         Err(message) => return refuse(&message),
     };
+    if args.virtual_io {
+        let modules: Vec<SourceInput> = tasks.iter().flat_map(|t| t.inputs.modules.iter().cloned()).collect();
+        if let Err(message) = single::with_virtual_signals(&mut io, &modules) {
+            return refuse(&message);
+        }
+    }
     let (model, model_note) =
         match crate::motion_out::choose_model(args, tasks[0].inputs.robot.as_deref(), &tasks[0].inputs.syspar) {
             Ok(chosen) => chosen,
