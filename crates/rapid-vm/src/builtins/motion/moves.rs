@@ -295,10 +295,32 @@ pub(super) fn linear_move(
     require_motion_task(ctx)?;
     refuse_unmodelled(args, layout)?;
     let chain = frames(ctx, args, layout, true)?;
-    let to = tcp_in_base(ctx, &chain, &ctx.value(&args[layout.to])?)?;
-    go_with(ctx, args, layout, Target::Linear(to), chain, events)
+    let target = ctx.value(&args[layout.to])?;
+    let to = tcp_in_base(ctx, &chain, &target)?;
+    let result = go_with(ctx, args, layout, Target::Linear(to), chain, events)?;
+    check_conf_l(ctx, &target)?;
+    Ok(result)
 }
 
+/// ConfL\On: a linear move keeps the configuration it starts in; it must end in the
+/// programmed one (cf1, cf4, cf6 within a quadrant, cfx equal), else execution stops.
+// uncertain: the controller also watches axes 1, 4, 6 along the path; only the end is
+// checked here, with the same neighbours ConfJ accepts.
+fn check_conf_l(ctx: &Ctx<'_>, target: &Value) -> Result<(), RapidError> {
+    if !ctx.resources.motion.settings.conf_l {
+        return Ok(());
+    }
+    let (_, programmed) = data::robtarget(ctx, target)?;
+    let robot = &ctx.resources.robot;
+    let reached = rapid_motion::confdata::confdata_of(&robot.kin, &robot.end_joints());
+    let near = (0..3).all(|i| (reached[i] - programmed[i]).abs() <= 1) && reached[3] == programmed[3];
+    if near {
+        return Ok(());
+    }
+    Err(RapidError::fatal(format!(
+        "50080 Position not compatible: the linear move ends in configuration {reached:?}, not the programmed {programmed:?} (ConfL\\On; ConfL\\Off follows the path's)"
+    )))
+}
 /// `MoveC`: a circle through CirPoint to ToPoint.
 pub(crate) fn move_c(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     circular_move(ctx, args, &MOVE_C, Vec::new())
