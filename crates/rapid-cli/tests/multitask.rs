@@ -728,3 +728,25 @@ fn a_stimulus_answers_a_pendant_dialog_at_its_time() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert!(text(&out.stdout).ends_with("got 7 at 4.0\n"), "{}", text(&out.stdout));
 }
+
+#[test]
+fn searchc_finds_the_edge_on_its_circle() {
+    let dir = scratch("searchc");
+    // A half circle from [300, 0] through [350, 50] to [400, 0] (centre [350, 0], r 50)
+    // at 100 mm/s: the probe rises after 0.5 s, 49.5 mm along the arc, i.e. 0.99 rad
+    // from the start: [350 - 50 cos 0.99, 50 sin 0.99] = [322.6, 41.8].
+    let program = "MODULE S\n  CONST robtarget p0 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];\n  \
+                   VAR robtarget hit;\n  PROC main()\n    MoveJ p0, v1000, fine, tool0;\n    SetDO doStart, 1;\n    \
+                   SearchC \\Stop, diProbe, hit, Offs(p0, 50, 50, 0), Offs(p0, 100, 0, 0), v100, tool0;\n    \
+                   TPWrite \"hit \" + NumToStr(hit.trans.x, 1) + \", \" + NumToStr(hit.trans.y, 1);\n  ENDPROC\nENDMODULE\n";
+    let tasks = [TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: program }];
+    system(
+        &dir,
+        &tasks,
+        "\n      -Name \"doStart\" -SignalType \"DO\"\n\n      -Name \"diProbe\" -SignalType \"DI\"\n",
+    );
+    fs::write(dir.join("probe.stim"), "when doStart = 1 after 0.5 s set diProbe 1\n").expect("stimulus");
+    let out = rapid_in(&dir, &["run", "--quiet", "--stimulus", "probe.stim", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "hit 322.6, 41.8\n");
+}

@@ -69,6 +69,7 @@ pub(super) static ENTRIES: Entries = &[
     ("PDispOn", readback::pdisp_on),
     ("EOffsOn", readback::eoffs_on),
     ("SearchL", search::search_l),
+    ("SearchC", search::search_c),
     ("MoveJDO", moves::move_j_io),
     ("MoveJAO", moves::move_j_io),
     ("MoveJGO", moves::move_j_io),

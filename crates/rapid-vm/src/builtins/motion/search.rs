@@ -1,4 +1,4 @@
-//! SearchL (§1.8): a linear move to ToPoint that records where a digital input (or a
+//! SearchL and SearchC (§1.8): a linear (circular) move to ToPoint that records where a digital input (or a
 //! persistent bool) changes — by default on its rising edge, `\Flanks` on both,
 //! `\NegFlank` falling, `\HighLevel`/`\LowLevel` on a level. With `\Stop`, `\PStop` or
 //! `\SStop` the robot stops at the first hit; otherwise it goes on to ToPoint (`\Sup`:
@@ -32,14 +32,23 @@ const NEG_FLANK: usize = 8;
 const HIGH_LEVEL: usize = 9;
 const LOW_LEVEL: usize = 10;
 const SEARCH_POINT: usize = 11;
-const TO_POINT: usize = 12;
-const ID: usize = 13;
-const SPEED: usize = 14;
-const V: usize = 15;
-const T: usize = 16;
-const TOOL: usize = 17;
-const WOBJ: usize = 18;
-const CORR: usize = 19;
+
+/// Where the arguments after SearchPoint are (SearchC has CirPoint first).
+struct Places {
+    cir: Option<usize>,
+    to: usize,
+    id: usize,
+    speed: usize,
+    v: usize,
+    t: usize,
+    tool: usize,
+    wobj: usize,
+    corr: usize,
+}
+
+const SEARCH_L: Places = Places { cir: None, to: 12, id: 13, speed: 14, v: 15, t: 16, tool: 17, wobj: 18, corr: 19 };
+const SEARCH_C: Places =
+    Places { cir: Some(12), to: 13, id: 14, speed: 15, v: 16, t: 17, tool: 18, wobj: 19, corr: 20 };
 
 /// What counts as a hit.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -93,22 +102,31 @@ pub struct Search {
 
 /// `SearchL`.
 pub(crate) fn search_l(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    search(ctx, args, &SEARCH_L)
+}
+
+/// `SearchC`: the same along a circle through CirPoint.
+pub(crate) fn search_c(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    search(ctx, args, &SEARCH_C)
+}
+
+fn search(ctx: &mut Ctx<'_>, args: &[Value], places: &Places) -> Res {
     super::moves::require_motion_task(ctx)?;
-    for (idx, name) in [(ID, "\\ID"), (T, "\\T"), (CORR, "\\Corr")] {
+    for (idx, name) in [(places.id, "\\ID"), (places.t, "\\T"), (places.corr, "\\Corr")] {
         if present(args.get(idx)) {
-            return Err(RapidError::fatal(format!("{name} on SearchL is not supported by `rapid run` yet")));
+            return Err(RapidError::fatal(format!("{name} on a search is not supported by `rapid run` yet")));
         }
     }
     let here = (ctx.chain.len(), ctx.chain.last().map_or(0, |f| f.position().1));
     let search = match ctx.resources.robot.search.take().filter(|s| s.at == here) {
         Some(search) => search,
-        None => start(ctx, args, here)?,
+        None => start(ctx, args, here, places)?,
     };
     look(ctx, args, search)
 }
 
 /// Checks the start condition and gives the robot the search move.
-fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32)) -> Result<Search, RapidError> {
+fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32), places: &Places) -> Result<Search, RapidError> {
     let trigger = Trigger::of(args);
     let (level, seen) = level_now(ctx, args)?;
     let flank = matches!(trigger, Trigger::Rising | Trigger::Falling);
@@ -116,15 +134,21 @@ fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32)) -> Result<Search, 
         // uncertain: the manual raises this when the edge's level is there at the start.
         return Err(ctx.error(Err::SigSupSearch, "the search signal already has its hit value at the start"));
     }
-    let chain = super::moves::frames_at(ctx, args, TOOL, WOBJ, true)?;
-    let (target, _) = data::robtarget(ctx, &ctx.value(&args[TO_POINT])?)?;
-    let to = chain.flange_goal(&target) * chain.tframe;
-    let mut speed = data::speed(ctx, &ctx.value(&args[SPEED])?)?;
-    if let Some(v) = ctx.opt_num(args.get(V))? {
+    let chain = super::moves::frames_at(ctx, args, places.tool, places.wobj, true)?;
+    let tcp_of = |ctx: &Ctx<'_>, idx: usize| -> Result<rapid_motion::Pose, RapidError> {
+        let (target, _) = data::robtarget(ctx, &ctx.value(&args[idx])?)?;
+        Ok(chain.flange_goal(&target) * chain.tframe)
+    };
+    let to = tcp_of(ctx, places.to)?;
+    let target = match places.cir {
+        Some(cir) => Target::Circular { via: tcp_of(ctx, cir)?, to },
+        None => Target::Linear(to),
+    };
+    let mut speed = data::speed(ctx, &ctx.value(&args[places.speed])?)?;
+    if let Some(v) = ctx.opt_num(args.get(places.v))? {
         speed.v_tcp = v;
     }
-    let request =
-        MoveRequest { target: Target::Linear(to), speed, zone: rapid_motion::plan::ZoneData::FINE, tool: chain.tframe };
+    let request = MoveRequest { target, speed, zone: rapid_motion::plan::ZoneData::FINE, tool: chain.tframe };
     let settings = super::moves::planner_settings(ctx);
     let now = ctx.time;
     let robot = &mut ctx.resources.robot;
