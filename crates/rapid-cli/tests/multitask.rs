@@ -750,3 +750,30 @@ fn searchc_finds_the_edge_on_its_circle() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "hit 322.6, 41.8\n");
 }
+
+#[test]
+fn clearpath_drops_the_rest_of_the_path() {
+    let dir = scratch("clearpath");
+    // As in the StopMove test, the robot stops 0.3 s into a 100 mm move at 100 mm/s
+    // (0.5 + 0.29 * 100 = 29.5 mm along); the trap clears the path, so when StartMove
+    // comes at 0.8 s the move instruction ends there: the program goes on at 0.8 s
+    // with the robot at x = 329.5.
+    let program = "MODULE S\n  CONST robtarget p0 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];\n  \
+                   VAR intnum stopint;\n  VAR clock c;\n  PROC main()\n    VAR pos at;\n    MoveJ p0, v1000, fine, tool0;\n    \
+                   CONNECT stopint WITH on_stop;\n    ISignalDI diStop, 1, stopint;\n    ClkStart c;\n    SetDO doStart, 1;\n    \
+                   MoveL Offs(p0, 100, 0, 0), v100, fine, tool0;\n    at := CPos();\n    \
+                   TPWrite \"went on after \" + NumToStr(ClkRead(c), 2) + \" at x \" + NumToStr(at.x, 1);\n    \
+                   TPWrite \"path level \" \\Num:=PathLevel();\n    IDelete stopint;\n  ENDPROC\n  \
+                   TRAP on_stop\n    StopMove;\n    ClearPath;\n    WaitDI diGo, 1;\n    StartMove;\n  ENDTRAP\nENDMODULE\n";
+    let tasks = [TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: program }];
+    let signals = "\n      -Name \"doStart\" -SignalType \"DO\"\n\n      -Name \"diStop\" -SignalType \"DI\"\n\n      -Name \"diGo\" -SignalType \"DI\"\n";
+    system(&dir, &tasks, signals);
+    fs::write(
+        dir.join("stop.stim"),
+        "when doStart = 1 after 0.3 s set diStop 1\nwhen doStart = 1 after 0.8 s set diGo 1\n",
+    )
+    .expect("stimulus");
+    let out = rapid_in(&dir, &["run", "--quiet", "--stimulus", "stop.stim", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "went on after 0.80 at x 329.5\npath level 1\n");
+}

@@ -88,6 +88,8 @@ pub(super) static ENTRIES: Entries = &[
     ("StopMove", pause::stop_move),
     ("StartMove", pause::start_move),
     ("IsStopMoveAct", pause::is_stop_move_act),
+    ("ClearPath", pause::clear_path),
+    ("PathLevel", pause::path_level),
     ("WZBoxDef", zones::wz_box_def),
     ("WZCylDef", zones::wz_cyl_def),
     ("WZSphDef", zones::wz_sph_def),

@@ -1,5 +1,6 @@
-//! StopMove, StartMove and IsStopMoveAct (§1.8, §2.2.6): the robot stops on its path
-//! and later goes on with the rest of it. While it stands, what was planned after the
+//! StopMove, StartMove, IsStopMoveAct, ClearPath and PathLevel (§1.8, §2.2.6): the
+//! robot stops on its path and later goes on with the rest of it (or ClearPath drops
+//! the rest). While it stands, what was planned after the
 //! stop (moves, path outputs, trigger interrupts, the program's wait for the robot)
 //! is held, and on StartMove everything is moved on by the time it stood.
 
@@ -71,4 +72,34 @@ pub(crate) fn start_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // uncertain: both flags answer the one stop state of the task's robot.
 pub(crate) fn is_stop_move_act(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     Ok(Some(Value::Bool(ctx.resources.robot.pause.is_some())))
+}
+
+/// `ClearPath`: the rest of the robot's path is dropped: it stays where it is (where
+/// StopMove stopped it); the move instruction the program waits on ends, and its path
+/// outputs and trigger interrupts not yet due never come.
+// uncertain: with the robot moving (no StopMove first) the path is cleared at once,
+// without a braking distance.
+pub(crate) fn clear_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+    let now = ctx.time;
+    let since = ctx.resources.robot.pause.as_ref().map_or(now, |p| p.since);
+    ctx.resources.robot.stop_at(since);
+    ctx.resources.robot.due.retain(|&(t, _)| t <= since);
+    if let Some(pause) = ctx.resources.robot.pause.as_mut() {
+        pause.held_orders.clear();
+        pause.held_interrupts.clear();
+        // The program's wait for the dropped move ends as soon as the robot may move.
+        pause.held_wait = pause.held_wait.map(|_| since);
+    } else {
+        ctx.resources.robot.hold_until = None;
+        let orders = &mut ctx.resources.io.path_orders;
+        orders.retain(|&(t, _, _)| t <= now);
+        ctx.resources.interrupts.scheduled.retain(|&(t, _)| t <= now);
+    }
+    Ok(None)
+}
+
+/// `PathLevel()`: 1, the base level; StorePath (level 2) is not run yet (a program
+/// using it is refused at load), so no other level exists.
+pub(crate) fn path_level(_ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+    Ok(Some(Value::Num(1.0)))
 }
