@@ -54,6 +54,12 @@ fn system(dir: &Path, tasks: &[TaskDef<'_>], eio_signals: &str) -> PathBuf {
     root
 }
 
+/// When `signal` first became `new` in an `--io-log` CSV (time,signal,old,new,cause).
+fn change_time(log: &str, signal: &str, new: &str) -> f64 {
+    let line = log.lines().find(|l| l.split(',').nth(1) == Some(signal) && l.split(',').nth(3) == Some(new));
+    line.and_then(|l| l.split(',').next()).and_then(|t| t.parse().ok()).unwrap_or_else(|| panic!("{signal}: {log}"))
+}
+
 fn copy_dir(from: &Path, to: &Path) {
     fs::create_dir_all(to).expect("folder");
     for entry in fs::read_dir(from).expect("read folder") {
@@ -610,10 +616,7 @@ fn move_do_sets_its_output_where_the_robot_passes_the_point() {
     let out = rapid_in(&dir, &["run", "--quiet", "--io-log", "io.csv", "sys"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
-    let time_of = |signal: &str, new: &str| -> f64 {
-        let line = log.lines().find(|l| l.split(',').nth(1) == Some(signal) && l.split(',').nth(3) == Some(new));
-        line.and_then(|l| l.split(',').next()).and_then(|t| t.parse().ok()).unwrap_or_else(|| panic!("{signal}: {log}"))
-    };
+    let time_of = |signal: &str, new: &str| change_time(&log, signal, new);
     let glue = time_of("doGlue", "1") - time_of("doStart", "1");
     let fly = time_of("doFly", "1") - time_of("doStart", "0");
     assert!((glue - 1.01).abs() < 0.0015, "doGlue after {glue} s: {log}");
@@ -641,10 +644,7 @@ fn triggers_fire_at_their_places_on_the_path() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "half way\narrived\n");
     let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
-    let time_of = |signal: &str, new: &str| -> f64 {
-        let line = log.lines().find(|l| l.split(',').nth(1) == Some(signal) && l.split(',').nth(3) == Some(new));
-        line.and_then(|l| l.split(',').next()).and_then(|t| t.parse().ok()).unwrap_or_else(|| panic!("{signal}: {log}"))
-    };
+    let time_of = |signal: &str, new: &str| change_time(&log, signal, new);
     let start = time_of("doStart", "1");
     for (signal, value, expected) in [("doGun", "1", 0.105), ("doHalf", "1", 0.505), ("doGun", "0", 0.805)] {
         let after = time_of(signal, value) - start;
@@ -703,10 +703,7 @@ fn world_zones_set_outputs_and_stop_the_robot() {
     assert_eq!(text(&out.stdout), "slab zone 0\n");
     assert!(text(&out.stderr).contains("WZLimSup"), "{}", text(&out.stderr));
     let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
-    let time_of = |signal: &str, new: &str| -> f64 {
-        let line = log.lines().find(|l| l.split(',').nth(1) == Some(signal) && l.split(',').nth(3) == Some(new));
-        line.and_then(|l| l.split(',').next()).and_then(|t| t.parse().ok()).unwrap_or_else(|| panic!("{signal}: {log}"))
-    };
+    let time_of = |signal: &str, new: &str| change_time(&log, signal, new);
     let start = time_of("doStart", "1");
     for (value, expected) in [("1", 0.405), ("0", 0.605)] {
         let after = time_of("doInZone", value) - start;

@@ -83,6 +83,23 @@ impl InterruptState {
         !self.queue.is_empty() || !self.scheduled.is_empty() || self.table.iter().flatten().any(|i| i.source.is_some())
     }
 
+    /// The interrupts IError ordered for an event-log entry like `event` (its domain,
+    /// number and type), by number.
+    pub(crate) fn error_interrupts_for<'a>(
+        &'a self,
+        event: &'a crate::events::Event,
+    ) -> impl Iterator<Item = u32> + 'a {
+        self.table.iter().enumerate().filter_map(move |(idx, slot)| {
+            let Some(Source::Error { domain, id, kind }) = slot.as_ref().and_then(|i| i.source.as_ref()) else {
+                return None;
+            };
+            let domain_ok = *domain == 0 || *domain == event.domain;
+            let id_ok = id.is_none_or(|id| id == event.number);
+            let kind_ok = *kind == 0 || *kind == event_type(event.kind);
+            (domain_ok && id_ok && kind_ok).then_some(idx as u32 + 1)
+        })
+    }
+
     /// Fires interrupt `number` at `time` (a trigger on the robot's path).
     pub fn schedule(&mut self, time: f64, number: u32) {
         self.scheduled.push((time, number));

@@ -187,6 +187,11 @@ impl TaskingState {
 
     /// Messages in the task's queue no trap has been looked for yet (interrupt mode).
     pub(crate) fn has_undispatched(&self) -> bool {
+        // Checked before every run of the task: the common case (no message anywhere)
+        // costs no search for the task's own index.
+        if self.shared.queues.iter().all(|q| q.is_empty()) {
+            return false;
+        }
         let me = self.index();
         let synchronous = self.shared.tasks.get(me).is_some_and(|t| t.rmq.synchronous);
         !synchronous && self.shared.queues.get(me).is_some_and(|q| q.iter().any(|m| !m.dispatched))

@@ -122,17 +122,7 @@ impl Vm {
         let first_unseen = self.resources.interrupts.next_event;
         let mut fired = Vec::new();
         for event in self.events.entries().iter().filter(|e| e.seq >= first_unseen) {
-            for (idx, slot) in self.resources.interrupts.table.iter().enumerate() {
-                let Some(Source::Error { domain, id, kind }) = slot.as_ref().and_then(|i| i.source.clone()) else {
-                    continue;
-                };
-                let domain_ok = domain == 0 || domain == event.domain;
-                let id_ok = id.is_none_or(|id| id == event.number);
-                let kind_ok = kind == 0 || kind == crate::builtins::interrupts::event_type(event.kind);
-                if domain_ok && id_ok && kind_ok {
-                    fired.push((idx as u32 + 1, event.seq));
-                }
-            }
+            fired.extend(self.resources.interrupts.error_interrupts_for(event).map(|number| (number, event.seq)));
         }
         if let Some(last) = self.events.entries().last() {
             self.resources.interrupts.next_event = first_unseen.max(last.seq + 1);
@@ -158,17 +148,8 @@ impl Vm {
             if *task == me {
                 continue;
             }
-            for (idx, slot) in self.resources.interrupts.table.iter().enumerate() {
-                let Some(Source::Error { domain, id, kind }) = slot.as_ref().and_then(|i| i.source.clone()) else {
-                    continue;
-                };
-                let domain_ok = domain == 0 || domain == event.domain;
-                let id_ok = id.is_none_or(|id| id == event.number);
-                let kind_ok = kind == 0 || kind == crate::builtins::interrupts::event_type(event.kind);
-                if domain_ok && id_ok && kind_ok {
-                    fired.push((idx as u32 + 1, FOREIGN_EVENT | (start + offset) as u64));
-                }
-            }
+            let entry = FOREIGN_EVENT | (start + offset) as u64;
+            fired.extend(self.resources.interrupts.error_interrupts_for(event).map(|number| (number, entry)));
         }
         self.resources.interrupts.next_foreign = shared.len();
         fired

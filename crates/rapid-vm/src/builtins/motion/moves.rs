@@ -278,9 +278,7 @@ pub(super) fn joint_move(
     go_with(ctx, args, layout, Target::Joints(joints), chain, events)
 }
 
-/// `MoveL`: a straight TCP line to a robtarget.
-// uncertain: ConfL\On's check of the configuration along the path is not modelled;
-// the path keeps the configuration it starts in.
+/// `MoveL`: a straight TCP line to a robtarget (ConfL\On: see `check_conf_l`).
 pub(crate) fn move_l(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     linear_move(ctx, args, &MOVE_L, Vec::new())
 }

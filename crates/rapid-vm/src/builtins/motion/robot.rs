@@ -332,11 +332,19 @@ impl RobotState {
             self.zone_inside.resize(i + 1, false);
         }
         self.zone_inside[i] = inside;
+        self.zone_event(i, inside, now);
+    }
+
+    /// What zone `i` does when the robot is found in it (or out of it) at `time`: a
+    /// WZDOSet output follows, a WZLimSup zone entered stops the robot.
+    fn zone_event(&mut self, i: usize, inside: bool, time: f64) {
         match self.zones[i].map(|z| z.kind) {
             Some(super::zones::ZoneKind::DoSet { signal, value }) => {
-                self.due.push((now, Action::Set { signal, value: if inside { value } else { 1.0 - value } }));
+                self.due.push((time, Action::Set { signal, value: if inside { value } else { 1.0 - value } }));
             }
-            Some(super::zones::ZoneKind::LimSup) if inside => self.zone_violation = Some(now),
+            Some(super::zones::ZoneKind::LimSup) if inside => {
+                self.zone_violation.get_or_insert(time);
+            }
             _ => {}
         }
     }
@@ -351,25 +359,19 @@ impl RobotState {
         if self.zone_inside.len() < self.zones.len() {
             self.zone_inside.resize(self.zones.len(), false);
         }
+        let mut crossings = Vec::new();
         for sample in planned.samples(&self.kin, rapid_motion::plan::DEFAULT_STEP) {
             let tcp = sample.tcp.translation.vector;
             for &i in &active {
                 let inside = self.in_zone(i, &sample.joints, &tcp);
-                if inside == self.zone_inside[i] {
-                    continue;
-                }
-                self.zone_inside[i] = inside;
-                match self.zones[i].map(|z| z.kind) {
-                    Some(super::zones::ZoneKind::DoSet { signal, value }) => {
-                        let value = if inside { value } else { 1.0 - value };
-                        self.due.push((sample.time, Action::Set { signal, value }));
-                    }
-                    Some(super::zones::ZoneKind::LimSup) if inside => {
-                        self.zone_violation.get_or_insert(sample.time);
-                    }
-                    _ => {}
+                if inside != self.zone_inside[i] {
+                    self.zone_inside[i] = inside;
+                    crossings.push((i, inside, sample.time));
                 }
             }
+        }
+        for (i, inside, time) in crossings {
+            self.zone_event(i, inside, time);
         }
     }
 }
