@@ -72,3 +72,122 @@ fn a_module_alone_runs_with_virtual_io_like_its_cell() {
     assert_eq!(refused.status.code(), Some(1));
     assert!(text(&refused.stderr).contains("ERR_ALIASIO_DEF"), "{}", text(&refused.stderr));
 }
+
+/// The `(time, signal, new value)` rows of an `--io-log` file.
+fn io_changes(path: &Path) -> Vec<(f64, String, String)> {
+    let log = std::fs::read_to_string(path).expect("the I/O log");
+    log.lines()
+        .skip(1)
+        .map(|line| {
+            let fields: Vec<&str> = line.split(',').collect();
+            (fields[0].parse().expect("a time"), fields[1].to_owned(), fields[3].to_owned())
+        })
+        .collect()
+}
+
+fn assert_near(actual: f64, expected: f64, tolerance: f64, what: &str) {
+    assert!((actual - expected).abs() <= tolerance, "{what}: {actual} s, expected {expected} ± {tolerance} s");
+}
+
+/// A stop-point MoveL of `length` mm at `v` mm/s on the IRB 120: the trapezoid of the
+/// timing model (path acceleration 10 m/s², `crates/rapid-motion/src/plan/limits.rs`),
+/// L/v + v/a when the move reaches its speed, plus the 0.05 s a `fine` point settles.
+fn fine_move_l(length: f64, v: f64) -> f64 {
+    const ACC: f64 = 10_000.0;
+    let ramps = if length >= v * v / ACC { length / v + v / ACC } else { 2.0 * (length / ACC).sqrt() };
+    ramps + 0.05
+}
+
+#[test]
+fn the_welding_example_welds_its_seam_in_the_time_the_timing_model_gives() {
+    let io_log = Path::new(env!("CARGO_TARGET_TMPDIR")).join("welding_io.csv");
+    let out = rapid(&["--io-log", io_log.to_str().expect("utf-8"), "examples/welding"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    // Worked out by hand (IRB 120, tTorch 150 mm along the flange's z):
+    // 1. MoveAbsJ [0,0,0,0,0,0] → jHome turns axis 5 by 90° (max 320 °/s: 0.28125 s
+    //    at full speed, ramps of 0.15 s); the TCP swings on a 222 mm radius (72 mm
+    //    wrist + 150 mm tool), a 313.96 mm chord, so v1000 caps the pace at
+    //    0.28125 · 1000 / 313.96 = 0.8958 of full speed: 0.28125/0.8958 + 0.8958 · 0.15
+    //    = 0.44833 s, + 0.05 s settle.
+    let home = 0.28125 / 0.8958 + 0.8958 * 0.15 + 0.05;
+    // 2. From home's TCP [302,0,408] to 50 mm above the seam start [300,-100,250]:
+    //    √(2² + 100² + 158²) = 186.997 mm at v500; 3. down 50 mm at v100.
+    let approach = fine_move_l(186.997, 500.0) + fine_move_l(50.0, 100.0);
+    // 4. The seam: 200 mm straight, then the half circle of radius 40 mm (125.664 mm),
+    //    tangent to it, at 20 mm/s as one stretch (the z1 corner between them is
+    //    tangent: no time of its own).
+    let seam = fine_move_l(200.0 + std::f64::consts::PI * 40.0, 20.0);
+    // 5. Up 50 mm at v200; 6. to the cleaner [200,250,300] from [380,100,250]:
+    //    √(180² + 150² + 50²) = 239.583 mm at v500; WaitTime 1; 7. home's TCP from
+    //    the cleaner: √(102² + 250² + 108²) = 290.806 mm at v500.
+    let rest = fine_move_l(50.0, 200.0) + fine_move_l(239.583, 500.0) + 1.0 + fine_move_l(290.806, 500.0);
+    let seam_start = home + approach;
+    let expected = seam_start + seam + rest;
+    assert_near(cycle_time(&text(&out.stderr)), expected, 0.01, "cycle time");
+    // ClkRead from the seam's start to its stop (after the settle), to the ms.
+    let seam_time: f64 = text(&out.stdout).trim().trim_start_matches("Seam welded in ").parse().expect("a time");
+    assert_near(seam_time, seam, 0.0015, "seam time");
+    let changes = io_changes(&io_log);
+    let times = |signal: &str, value: &str| -> Vec<f64> {
+        changes.iter().filter(|(_, s, v)| s == signal && v == value).map(|(t, _, _)| *t).collect()
+    };
+    // The arc: on where the seam starts (TriggIO \Start 0), off where the robot stops
+    // at its end (before the settle time).
+    assert_eq!(times("doArcOn", "1").len(), 1, "{changes:?}");
+    assert_near(times("doArcOn", "1")[0], seam_start, 0.002, "arc on");
+    assert_near(times("doArcOn", "0")[0], seam_start + seam - 0.05, 0.002, "arc off");
+    // The cleaner's zone (x 150..250, y 200..300, z 250..350): move 6 enters it where
+    // x falls to 250, 72.22 % of the way (173.03 mm): 0.05 s to reach 500 mm/s over
+    // 12.5 mm, then 160.53 mm at 500 mm/s; move 7 leaves it where y falls to 200, 20 %
+    // of the way (58.16 mm). The zone is checked every 4 ms.
+    let to_cleaner = seam_start + seam + fine_move_l(50.0, 200.0);
+    assert_near(times("doAtCleaner", "1")[0], to_cleaner + 0.05 + 160.53 / 500.0, 0.005, "into the cleaner zone");
+    let from_cleaner = to_cleaner + fine_move_l(239.583, 500.0) + 1.0;
+    assert_near(times("doAtCleaner", "0")[0], from_cleaner + 0.05 + 45.66 / 500.0, 0.005, "out of the cleaner zone");
+}
+
+#[test]
+fn the_palletizing_example_stacks_twelve_boxes_in_the_time_the_timing_model_gives() {
+    let io_log = Path::new(env!("CARGO_TARGET_TMPDIR")).join("palletizing_io.csv");
+    let out = rapid(&["--io-log", io_log.to_str().expect("utf-8"), "examples/palletizing"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "Layer 1\nLayer 2\nBoxes on the pallet: 12\n");
+    // Worked out by hand (IRB 120, tGripper 100 mm): MoveAbsJ to jHome turns axis 5
+    // by 90° at full speed (the TCP's 243.24 mm chord at v1000 does not limit it):
+    // 0.28125 + 0.15 ramps + 0.05 settle; then MoveL to the pick place
+    // √(52² + 250² + 308²) = 400.085 mm at 400 mm/s.
+    let first_grip = 0.28125 + 0.15 + 0.05 + fine_move_l(400.085, 400.0);
+    // Each transfer is up 100 mm, across, down 100 mm at 400 mm/s through two z20
+    // corners (at 400 mm/s the corners need no slow-down: 90° at 20 mm allows
+    // √(10000 · 20 / sin 45°) = 532 mm/s), so it takes as long as one straight move
+    // of the same length. Across: from above the pick place [250,-250,250] to above
+    // the place [200 + x, 100 + y, 250 + 50 · (layer - 1)].
+    let places = [(0.0, 0.0), (80.0, 0.0), (0.0, 80.0), (80.0, 80.0), (0.0, 160.0), (80.0, 160.0)];
+    let transfer = |layer: f64, (x, y): (f64, f64)| {
+        let across = ((x - 50.0f64).powi(2) + (y + 350.0f64).powi(2) + (50.0 * (layer - 1.0)).powi(2)).sqrt();
+        fine_move_l(200.0 + across, 400.0)
+    };
+    let mut t = first_grip;
+    let mut expected_changes = Vec::new();
+    for (k, (layer, place)) in [1.0, 2.0].iter().flat_map(|&l| places.iter().map(move |&p| (l, p))).enumerate() {
+        expected_changes.push((t, "1"));
+        t += 0.2 + transfer(layer, place);
+        expected_changes.push((t, "0"));
+        t += 0.2;
+        if k < 11 {
+            t += transfer(layer, place);
+        }
+    }
+    // After the last box: up 100 mm (fine), then across to above the pick place
+    // (513.323 mm) and on to home's TCP [302,0,458] (329.345 mm) through a z20
+    // corner of 146° (allows 458 mm/s).
+    t += fine_move_l(100.0, 400.0) + fine_move_l(513.323 + 329.345, 400.0);
+    assert_near(cycle_time(&text(&out.stderr)), t, 0.02, "cycle time");
+    let grips: Vec<(f64, String)> =
+        io_changes(&io_log).into_iter().filter(|(_, s, _)| s == "doGrip").map(|(t, _, v)| (t, v)).collect();
+    assert_eq!(grips.len(), expected_changes.len(), "{grips:?}");
+    for ((actual, value), (expected, expected_value)) in grips.iter().zip(&expected_changes) {
+        assert_eq!(value, expected_value);
+        assert_near(*actual, *expected, 0.01, "doGrip change");
+    }
+}

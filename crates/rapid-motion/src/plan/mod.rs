@@ -197,9 +197,29 @@ impl Planner {
         (self.place(pending, own, Some((corner, Profile::blend(rate_in, rate_out)))), Some(handover))
     }
 
+    /// The waiting move as it would be if it stopped at its point: until it starts
+    /// braking, the robot moves exactly as it will once its successor is known (the
+    /// fly-by profile accelerates and cruises the same way and brakes later), so
+    /// events placed from the move's start can be timed before the move is final.
+    /// Returns the move and the time it starts braking.
+    pub fn provisional(&self) -> Option<(PlannedMove, f64)> {
+        let pending = self.pending.as_ref()?;
+        let limits = &pending.prep.limits;
+        let own = Profile::trapezoid(pending.v_start, 0.0, limits.cap, limits.acc, limits.length - pending.s_start);
+        let braking = self.time + own.braking_start();
+        Some((self.lay_out(pending, own, None), braking))
+    }
+
     /// Lays the move's own profile and its corner's out on the time axis from
     /// the planner's clock, which then moves on to the move's end.
     fn place(&mut self, pending: &Pending, own: Profile, corner: Option<(Corner, Profile)>) -> PlannedMove {
+        let planned = self.lay_out(pending, own, corner);
+        self.time = planned.end;
+        planned
+    }
+
+    /// The move laid out on the time axis from the planner's clock.
+    fn lay_out(&self, pending: &Pending, own: Profile, corner: Option<(Corner, Profile)>) -> PlannedMove {
         let prep = &pending.prep;
         let start = self.time;
         let s0 = pending.s_start;
@@ -218,7 +238,6 @@ impl Planner {
             None if prep.zone.finep => end += prep.accel.settle,
             None => {}
         }
-        self.time = end;
         PlannedMove {
             start,
             zone_entry,

@@ -35,6 +35,15 @@ pub(crate) struct PieceLimits {
 }
 
 impl Profile {
+    /// When the profile starts its final deceleration (its duration when it
+    /// never decelerates).
+    pub(crate) fn braking_start(&self) -> f64 {
+        match self.phases.last() {
+            Some(last) if last.acc < 0.0 => last.t0,
+            _ => self.duration,
+        }
+    }
+
     /// The fastest profile over `length` from speed `u` to speed `w` that stays
     /// under `cap` with acceleration `acc`. When `u` and `w` cannot be joined at
     /// `acc` (the caller's speeds were infeasible), the piece is one phase of

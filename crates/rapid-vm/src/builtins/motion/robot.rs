@@ -167,6 +167,7 @@ impl RobotState {
         if let Some(done) = done {
             self.finish(done);
         }
+        self.place_early_events();
         self.moves += 1;
         if conc {
             return Ok(now);
@@ -188,6 +189,34 @@ impl RobotState {
             self.finish(last);
         }
         self.motion_end
+    }
+
+    /// The events of the waiting (fly-by) move placed from its start that come before
+    /// it could start braking: their time is already exact, so the I/O system gets
+    /// them now rather than when the move becomes final, which may be long after
+    /// (TriggL \Start on a slow weld seam).
+    fn place_early_events(&mut self) {
+        let Some((provisional, braking)) = self.planner.provisional() else { return };
+        let Some(events) = self.events.back_mut() else { return };
+        if !events.iter().any(|e| matches!(e.at, At::AfterStart(_))) {
+            return;
+        }
+        let mut later = Vec::with_capacity(events.len());
+        for event in std::mem::take(events) {
+            let At::AfterStart(d) = event.at else {
+                later.push(event);
+                continue;
+            };
+            let at = self.time_at_distance(&provisional, provisional.zone_entry, d, true);
+            if at <= braking {
+                self.due.push(((at + event.shift).max(provisional.start), event.action));
+            } else {
+                later.push(event);
+            }
+        }
+        if let Some(events) = self.events.back_mut() {
+            *events = later;
+        }
     }
 
     fn finish(&mut self, planned: PlannedMove) {
