@@ -123,6 +123,9 @@ impl Kinematics for Opw {
     /// all, `JointLimit` when every solution leaves the limits.
     fn inverse_near(&self, flange: &Pose, seed: &Joints) -> Result<Joints, MotionError> {
         let seed = finite_seed(seed);
+        if let Some(joints) = solve::seeded(&self.params, flange, &seed, &self.limits) {
+            return Ok(joints);
+        }
         let branches = self.branches(flange, Some(&seed));
         nearest_within_limits(&branches, &seed, &self.limits)
     }
@@ -172,5 +175,41 @@ mod tests {
                 assert!(back.rotation.angle_to(&flange.rotation) < 1e-9);
             }
         }
+    }
+
+    /// The seeded shortcut must answer exactly what the search over all branches does,
+    /// for seeds near and far from the solution and near every singularity.
+    #[test]
+    fn the_seeded_branch_answers_as_the_full_search_does() {
+        let arms =
+            [offset_arm(), crate::default_model().kinematics(), crate::find_model("IRB 6700").unwrap().kinematics()];
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut shortcuts = 0;
+        for kin in &arms {
+            let limits = kin.limits();
+            for k in 0..20_000 {
+                let mut joints: Joints = std::array::from_fn(|i| limits[i].0 + next() * (limits[i].1 - limits[i].0));
+                // Every fourth set sits near the wrist singularity (axis 5 near 0).
+                if k % 4 == 0 {
+                    joints[4] = (next() - 0.5) * 1e-3;
+                }
+                let spread = [0.01, 1.0, 10.0, 90.0][k % 4];
+                let seed: Joints = std::array::from_fn(|i| joints[i] + (next() - 0.5) * spread);
+                let flange = kin.forward(&joints);
+                let full = nearest_within_limits(&kin.branches(&flange, Some(&seed)), &seed, &limits);
+                if solve::seeded(&kin.params, &flange, &seed, &limits).is_some() {
+                    shortcuts += 1;
+                }
+                assert_eq!(kin.inverse_near(&flange, &seed), full, "joints {joints:?} seed {seed:?}");
+            }
+        }
+        // The shortcut must actually be taken on most close seeds.
+        assert!(shortcuts > 30_000, "{shortcuts}");
     }
 }

@@ -49,6 +49,49 @@ pub(super) fn branches(p: &OpwParams, flange: &Pose, seed: Option<&Joints>) -> B
     res
 }
 
+/// The solution nearest to `seed` (degrees), computed on the seed's own branch only,
+/// when that is provably the answer the search over all eight branches gives: its
+/// largest axis move is smaller than a lower bound of every other branch's (the other
+/// shoulder's axis 1, the other elbow's axes 2–3, the other wrist flip's axes 4–6,
+/// each taken modulo a turn). `None` near a singularity, when a bound is too close, or
+/// when the branch leaves the limits: the caller then searches all branches. Following
+/// a path with a close seed, this is one branch's trigonometry instead of eight.
+pub(super) fn seeded(p: &OpwParams, flange: &Pose, seed: &Joints, limits: &[(f64, f64); 6]) -> Option<Joints> {
+    let rotation: Matrix3<f64> = *flange.rotation.to_rotation_matrix().matrix();
+    let position = flange.translation.vector;
+    let wrist = position - p.c4 * rotation.column(2);
+    if !wrist.iter().all(|v| v.is_finite()) || wrist.x.hypot(wrist.y) < SHOULDER_SINGULAR {
+        return None;
+    }
+    let seed_rad = seed.map(f64::to_radians);
+    let [front, behind] = axis1(p, &wrist, None)?;
+    let gap1 = |q1: f64| wrapped_deg(q1, seed[0]);
+    let ((_, q1, x1), (_, q1_alt, _)) = if gap1(front.1) <= gap1(behind.1) { (front, behind) } else { (behind, front) };
+    let [first, second] = elbow(p, x1 - p.a1, wrist.z - p.c1)?;
+    let gap23 = |(_, q2, q3): (bool, f64, f64)| wrapped_deg(q2, seed[1]).max(wrapped_deg(q3, seed[2]));
+    let (near, far) = if gap23(first) <= gap23(second) { (first, second) } else { (second, first) };
+    let (_, q2, q3) = near;
+    let w = wrist_rotation(q1, q2 + q3, &rotation);
+    if w[(0, 2)].hypot(w[(1, 2)]) <= WRIST_SINGULAR {
+        return None;
+    }
+    let [(_, up), (_, down)] = wrist_angles(&w, Some(&seed_rad));
+    let gap456 = |q: [f64; 3]| (0..3).map(|i| wrapped_deg(q[i], seed[3 + i])).fold(0.0, f64::max);
+    let (wrist_near, wrist_far) = if gap456(up) <= gap456(down) { (up, down) } else { (down, up) };
+    let solution = [q1, q2, q3, wrist_near[0], wrist_near[1], wrist_near[2]].map(|q| principal(q).to_degrees());
+    let joints = super::turns::nearest_turns(&solution, seed, limits).ok()?;
+    let moved = super::turns::distance(&joints, seed);
+    let others = gap1(q1_alt).min(gap23(far)).min(gap456(wrist_far));
+    (moved < others).then_some(joints)
+}
+
+/// How far angle `q` (radians) is from `seed` (degrees), modulo a turn: a lower bound
+/// of the move to any turn of `q`.
+fn wrapped_deg(q: f64, seed: f64) -> f64 {
+    let d = (q.to_degrees() - seed).rem_euclid(360.0);
+    d.min(360.0 - d)
+}
+
 /// Axis 1 for the wrist centre in front of and behind axis 1: (behind, q1, x1) with x1
 /// the wrist centre's distance along the arm's plane.
 fn axis1(p: &OpwParams, wrist: &Vector3<f64>, seed: Option<&Joints>) -> Option<[(bool, f64, f64); 2]> {

@@ -54,6 +54,10 @@ pub struct PathEvent {
     pub action: Action,
 }
 
+/// How long the robot's past path is kept, s: questions about where it was (a search
+/// hit found when the task next looks, a stop) reach back at most this far.
+const KEEP_PAST: f64 = 1.0;
+
 /// The step path distances are measured at, s.
 const DISTANCE_STEP: f64 = 0.001;
 
@@ -162,6 +166,7 @@ impl RobotState {
             self.flush();
         }
         self.planner.idle_until(now);
+        self.forget_before(now - KEEP_PAST);
         let done = self.planner.push(&self.kin, request)?;
         self.events.push_back(events);
         if let Some(done) = done {
@@ -246,6 +251,14 @@ impl RobotState {
         self.ahead.push_back(planned);
     }
 
+    /// Drops the moves that ended before `t` (the last one stays: the robot stands at
+    /// its end), so a long program does not keep its whole path.
+    fn forget_before(&mut self, t: f64) {
+        while self.ahead.len() > 1 && self.ahead.front().is_some_and(|m| m.end < t) {
+            self.ahead.pop_front();
+        }
+    }
+
     /// The axis values at controller time `t`. On a move still waiting for its
     /// successor the robot is taken to be at that move's end.
     // uncertain: the position along a fly-by move that is not final yet is not known
@@ -254,9 +267,7 @@ impl RobotState {
     pub fn joints_at(&mut self, t: f64) -> Joints {
         // A stopped robot stands where it stopped.
         let t = self.pause.as_ref().map_or(t, |p| t.min(p.since));
-        while self.ahead.len() > 1 && self.ahead.front().is_some_and(|m| m.end < t) {
-            self.ahead.pop_front();
-        }
+        self.forget_before(t);
         if self.planner.has_pending() && t > self.planner.time() {
             return self.planner.end_joints();
         }
