@@ -328,9 +328,19 @@ impl Collector {
             self.sys = Some(manifest.sys);
             return Ok(());
         };
-        for module in manifest.modules.get(idx).into_iter().flatten() {
+        let task_modules = manifest.modules.get(idx).map_or(&[][..], Vec::as_slice);
+        for module in task_modules {
             let shown = module.display();
             self.add_module(module).with_context(|| format!("cannot read `{shown}`"))?;
+        }
+        // Shared modules come after the task's own; one the task lists itself is its own.
+        for module in manifest.shared.iter().filter(|m| !task_modules.contains(m)) {
+            let shown = module.display();
+            let index = self.modules.len();
+            self.add_module(module).with_context(|| format!("cannot read `{shown}`"))?;
+            if self.modules.len() > index {
+                self.shared_modules.push(index);
+            }
         }
         let task = &manifest.sys.tasks[idx];
         let folder = path.parent().map_or_else(|| PathBuf::from("."), Path::to_path_buf);

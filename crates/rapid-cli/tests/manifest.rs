@@ -268,3 +268,36 @@ fn the_press_cell_project_runs_like_the_backup() {
     let check = rapid_in(&dir, &["check", "project"]);
     assert_eq!(check.status.code(), Some(0), "{}", text(&check.stdout));
 }
+
+#[test]
+fn shared_modules_of_a_manifest_are_one_module_for_every_task() {
+    let dir = scratch("shared_modules");
+    // lib/shared.sys is installed shared: `counter` is one variable both tasks change,
+    // `mine` (TASK VAR) one per task. T_ROB1 bumps at 0, T_B at 0.1; both print at 0.2+.
+    let shared = "MODULE shared(SYSMODULE)\n  VAR num counter := 0;\n  TASK VAR num mine := 0;\n  PROC bump()\n    \
+                  counter := counter + 1;\n    mine := mine + 1;\n  ENDPROC\nENDMODULE\n";
+    let rob =
+        "MODULE R\n  PROC main()\n    bump;\n    WaitTime 0.2;\n    TPWrite \"rob counter \" \\Num:=counter;\n    \
+               TPWrite \"rob mine \" \\Num:=mine;\n  ENDPROC\nENDMODULE\n";
+    let b = "MODULE B\n  PROC main()\n    WaitTime 0.1;\n    bump;\n    WaitTime 0.2;\n    \
+             TPWrite \"b counter \" \\Num:=counter;\n    TPWrite \"b mine \" \\Num:=mine;\n  ENDPROC\nENDMODULE\n";
+    let toml = "[system]\nshared = [\"lib/shared.sys\"]\n\n[[task]]\nname = \"T_ROB1\"\nmodules = [\"rob\"]\n\n\
+                [[task]]\nname = \"T_B\"\ntype = \"NORMAL\"\nmodules = [\"b\"]\n";
+    write(
+        &dir,
+        &[("proj/rapid.toml", toml), ("proj/lib/shared.sys", shared), ("proj/rob/R.mod", rob), ("proj/b/B.mod", b)],
+    );
+    let out = rapid_in(&dir, &["run", "proj"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "rob counter 2\nrob mine 1\nb counter 2\nb mine 1\n");
+    // `rapid check` sees the shared module in every task.
+    let out = rapid_in(&dir, &["check", "proj"]);
+    assert_eq!(out.status.code(), Some(0), "{}{}", text(&out.stdout), text(&out.stderr));
+
+    // A shared module that does not exist is a finding at its place in the manifest.
+    let toml = toml.replace("lib/shared.sys", "lib/gone.sys");
+    write(&dir, &[("proj/rapid.toml", &toml)]);
+    let out = rapid_in(&dir, &["run", "proj"]);
+    assert_eq!(out.status.code(), Some(1));
+    finding_at(&text(&out.stderr), "no module file", "proj/rapid.toml:2:11");
+}

@@ -57,6 +57,9 @@ pub(crate) struct Manifest {
     pub(crate) sys: Sys,
     /// For each task of [`Manifest::sys`], its module files in load order.
     pub(crate) modules: Vec<Vec<PathBuf>>,
+    /// `[system] shared`: modules installed shared (SYS.cfg `CAB_TASK_MODULES -Shared`),
+    /// one instance every task sees.
+    pub(crate) shared: Vec<PathBuf>,
     /// The EIO.cfg-format file of the I/O configuration, and where the manifest names it.
     pub(crate) io: Option<(PathBuf, Range<usize>)>,
     /// The controller root: the folder whose `HOME` subfolder is the HOME: device.
@@ -82,6 +85,7 @@ struct RawSystem {
     robot: Option<Spanned<String>>,
     io: Option<Spanned<String>>,
     home: Option<Spanned<String>>,
+    shared: Option<Spanned<Vec<Spanned<String>>>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -178,6 +182,9 @@ impl Reader<'_> {
         }
         if let Some(home) = system.home {
             self.home(&home);
+        }
+        if let Some(shared) = system.shared {
+            self.manifest.shared = self.modules("the shared modules", &shared);
         }
     }
 
@@ -307,11 +314,12 @@ impl Reader<'_> {
         None
     }
 
-    /// The files of a task's `modules` list, each entry a file, a folder (its module
-    /// files, sorted) or a pattern.
+    /// The files of a task's `modules` list (or of `[system] shared`, when `task` is
+    /// "the shared modules"), each entry a file, a folder (its module files, sorted) or
+    /// a pattern.
     fn modules(&mut self, task: &str, list: &Spanned<Vec<Spanned<String>>>) -> Vec<PathBuf> {
         if list.get_ref().is_empty() {
-            self.find(list.span(), format!("task `{task}` has no modules"));
+            self.find(list.span(), format!("{owner} has no modules", owner = owner_name(task)));
         }
         let mut files = Vec::new();
         for entry in list.get_ref() {
@@ -382,6 +390,15 @@ impl Reader<'_> {
                 self.find(foreground.span(), message);
             }
         }
+    }
+}
+
+/// How a module list's owner is named in a finding: `task T_ROB1`, or the shared list.
+fn owner_name(task: &str) -> String {
+    if task == "the shared modules" {
+        "`shared`".to_owned()
+    } else {
+        format!("task `{task}`")
     }
 }
 
