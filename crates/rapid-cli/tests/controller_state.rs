@@ -193,20 +193,24 @@ fn get_sys_data_reads_the_motion_tasks_active_tool_from_another_task() {
 }
 
 #[test]
-fn another_tasks_own_tool_is_refused_with_a_clear_message() {
+fn another_tasks_own_tool_is_read_through_the_controller() {
     let dir = scratch("sysdata_local");
+    // tMine is T_ROB1's own persistent (T_B declares no tMine): GetSysData and CTool
+    // in T_B ask T_ROB1 for its value; the name comes with it.
     let rob = format!(
         "MODULE Rob\n{}  PROC main()\n    SetSysData tMine;\n    WaitTime 2;\n  ENDPROC\nENDMODULE\n",
         tool("tMine", 10)
     );
     let b = format!(
-        "MODULE B\n{}  PROC main()\n    WaitTime 1;\n    GetSysData \\TaskName:=\"T_ROB1\", tRead;\n  \
-         ENDPROC\nENDMODULE\n",
+        "MODULE B\n{}  VAR string name;\n  PROC main()\n    WaitTime 1;\n    \
+         GetSysData \\TaskName:=\"T_ROB1\", tRead \\ObjectName:=name;\n    \
+         TPWrite name + \" z \" \\Num:=tRead.tframe.trans.z;\n    \
+         tRead := tool0;\n    tRead := CTool(\\TaskName:=\"T_ROB1\");\n    \
+         TPWrite \"CTool z \" \\Num:=tRead.tframe.trans.z;\n  ENDPROC\nENDMODULE\n",
         tool("tRead", 0)
     );
     let sys = system(&dir, &[("T_ROB1", "-Type \"NORMAL\" -MotionTask", &rob), ("T_B", "-Type \"NORMAL\"", &b)]);
     let out = rapid_in(&dir, &["run", sys.to_str().expect("path")]);
-    assert_eq!(out.status.code(), Some(1));
-    let stderr = text(&out.stderr);
-    assert!(stderr.contains("tMine") && stderr.contains("not supported"), "{stderr}");
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "tMine z 10\nCTool z 10\n");
 }

@@ -774,3 +774,26 @@ fn clearpath_drops_the_rest_of_the_path() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "went on after 0.80 at x 329.5\npath level 1\n");
 }
+
+#[test]
+fn save_with_a_task_name_saves_the_other_tasks_module() {
+    let dir = scratch("save_other");
+    // T_ROB1 counts to 3 in its persistent; T_B then saves T_ROB1's module R to HOME:
+    // (its persistent written with its value, the rest of the text as loaded), and
+    // asks for a module T_ROB1 does not have (ERR_MODULE, handled in T_B).
+    let rob =
+        "MODULE R\n  PERS num count := 0;\n  PROC main()\n    count := 3;\n    WaitTime 1;\n  ENDPROC\nENDMODULE\n";
+    let b = "MODULE B\n  PROC main()\n    WaitTime 0.5;\n    Save \\TaskName:=\"T_ROB1\", \"R\" \\FilePath:=\"HOME:/R_saved.mod\";\n    \
+             TPWrite \"saved\";\n    Save \\TaskName:=\"T_ROB1\", \"NoSuch\" \\FilePath:=\"HOME:/x.mod\";\n  \
+             ERROR\n    IF ERRNO = ERR_MODULE TPWrite \"ERR_MODULE\";\n    TRYNEXT;\n  ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: rob },
+        TaskDef { name: "T_B", attrs: "-Type \"NORMAL\"", module: b },
+    ];
+    let root = system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "saved\nERR_MODULE\n");
+    let saved = fs::read_to_string(root.join("HOME/R_saved.mod")).expect("the saved module");
+    assert_eq!(saved, rob.replace("count := 0", "count := 3"));
+}

@@ -206,6 +206,12 @@ impl Controller {
                 let robot = &mut self.tasks[task].loaded.vm.resources_mut().robot;
                 Reply::Robot(robot.joints_at(time), Box::new(robot.active))
             }
+            Request::SaveModule { task, module, dest } => {
+                match self.tasks[task].loaded.vm.save_module_for_another_task(&module, dest) {
+                    Ok(()) => Reply::Done,
+                    Err(error) => Reply::Failed(Box::new(error)),
+                }
+            }
         };
         self.shared.tasking.reply = Some((who, reply));
         self.shared.tasking.epoch += 1;

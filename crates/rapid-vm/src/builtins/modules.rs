@@ -216,9 +216,7 @@ fn check_prog_ref(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 
 /// `Save [\TaskRef] | [\TaskName] ModuleName [\FilePath] [\File]`.
 fn save(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    if let Some(task) = opt_string(ctx, args.get(1))? {
-        super::tasking::check_own_task(ctx, &task, "saving another task's module")?;
-    }
+    let other = super::tasking::other_task(ctx, args, 0)?;
     let module = ctx.string(&args[2])?;
     let dest = match args.get(3) {
         Some(path) if present(Some(path)) => {
@@ -228,6 +226,14 @@ fn save(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         // uncertain: \File without \FilePath names a file beside the module's own.
         _ => None,
     };
+    if let Some(task) = other {
+        // Another task saves its own module; this one waits for it (the controller).
+        use super::tasking::{ask, Reply, Request};
+        return match ask(ctx, Request::SaveModule { task, module, dest }) {
+            Some(Reply::Failed(error)) => Err(*error),
+            _ => Ok(None),
+        };
+    }
     ctx.resources.modules.request = Some(ModuleRequest::Save { module, dest });
     Ok(None)
 }

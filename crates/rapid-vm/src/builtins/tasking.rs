@@ -59,6 +59,9 @@ pub enum Request {
     WriteData { task: usize, name: String, value: crate::value::Value },
     /// CJointT/CRobT with `\TaskName`/`\TaskRef`: where task `task`'s robot is.
     Robot { task: usize },
+    /// Save with `\TaskName`/`\TaskRef`: task `task` saves its module `module`, to
+    /// `dest` (host path, path as the program wrote it) or to its own file.
+    SaveModule { task: usize, module: String, dest: Option<(std::path::PathBuf, String)> },
 }
 
 /// The controller's answer to a [`Request`].
@@ -75,6 +78,8 @@ pub enum Reply {
     WrongType,
     /// The robot's axes and its active frames.
     Robot(rapid_motion::Joints, Box<rapid_motion::frames::FrameChain>),
+    /// The other task could not do it: the error to raise in the asking task.
+    Failed(Box<crate::error::RapidError>),
 }
 
 /// The multitasking state all tasks share.
@@ -368,20 +373,6 @@ pub(crate) fn other_task(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<
         return Ok(None);
     }
     Ok(tasking.shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(&task.name)))
-}
-
-/// A built-in given a task name (`\TaskName`) works on its own task: another task of
-/// the system is not reachable yet (a clear refusal), a name the system does not have
-/// is ERR_TASKNAME.
-pub(crate) fn check_own_task(ctx: &Ctx<'_>, task: &str, what: &str) -> Result<(), RapidError> {
-    let tasking = &ctx.resources.tasking;
-    if task.eq_ignore_ascii_case(tasking.name()) {
-        return Ok(());
-    }
-    if tasking.shared.task(task).is_some() {
-        return Err(RapidError::fatal(format!("{what} (task {task}) is not supported by `rapid run` yet")));
-    }
-    Err(ctx.error(Err::TaskName, format!("the system has no task `{task}`")))
 }
 
 fn my_task<'c>(ctx: &'c Ctx<'_>) -> Option<&'c TaskInfo> {

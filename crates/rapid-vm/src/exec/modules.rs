@@ -616,6 +616,16 @@ impl Vm {
     /// `Save`: writes module `name` with its persistents' current values (§1.2.2: the
     /// initial value of a persistent is updated when its module is saved) to `dest`, or
     /// to the file it came from.
+    /// Save of module `name` asked by another task (Save `\TaskName`), through the
+    /// controller.
+    pub fn save_module_for_another_task(
+        &mut self,
+        name: &str,
+        dest: Option<(PathBuf, String)>,
+    ) -> Result<(), RapidError> {
+        self.save_module(name, dest)
+    }
+
     fn save_module(&mut self, name: &str, dest: Option<(PathBuf, String)>) -> Result<(), RapidError> {
         let n_base = self.modules.base.len();
         let unit = self.modules.units.iter().position(|u| u.live && u.name.eq_ignore_ascii_case(name));

@@ -94,26 +94,41 @@ fn data_owner(ctx: &Ctx<'_>, args: &[Value]) -> Result<Option<String>, RapidErro
     Ok(Some(owner).filter(|owner| !owner.eq_ignore_ascii_case(tasking.name())))
 }
 
-/// The active object of a kind in another task: its name there, and the global of
-/// this task that holds it. A global PERS is one object in every task that declares
-/// it, so this task reaches the other's object when it declares the same persistent
-/// (or it is the predefined default).
-fn active_in(ctx: &Ctx<'_>, task: &str, kind: usize) -> Result<Active, RapidError> {
+/// The name of the active object of a kind in another task.
+fn active_name_in(ctx: &Ctx<'_>, task: &str, kind: usize) -> Rc<str> {
     let listed = ctx.resources.tasking.shared.sysdata.get(&task.to_ascii_lowercase());
-    let name = listed.and_then(|names| names[kind].clone()).unwrap_or_else(|| DEFAULT_NAMES[kind].into());
+    listed.and_then(|names| names[kind].clone()).unwrap_or_else(|| DEFAULT_NAMES[kind].into())
+}
+
+/// The global of this task that is the object `name` of another task: a global PERS
+/// is one object in every task that declares it (or it is the predefined default).
+fn shared_global(ctx: &Ctx<'_>, name: &str) -> Option<u32> {
     let global = ctx.data_by_name.get(&name.to_ascii_lowercase()).map(|d| d.global).or_else(|| {
-        let default = DEFAULT_NAMES.iter().position(|d| d.eq_ignore_ascii_case(&name))?;
+        let default = DEFAULT_NAMES.iter().position(|d| d.eq_ignore_ascii_case(name))?;
         ctx.resources.motion.links.sysdata[default]
     });
-    let shared = global.filter(|&g| ctx.pers_globals.get(g as usize).copied().unwrap_or(false));
-    let Some(global) = shared else {
-        return Err(RapidError::fatal(format!(
-            "GetSysData: the active {} of task {task}, `{name}`, is no persistent of this task; \
-             reading another task's own data is not supported by `rapid run` yet",
-            type_name(kind)
-        )));
+    global.filter(|&g| ctx.pers_globals.get(g as usize).copied().unwrap_or(false))
+}
+
+/// The value of the active object of a kind in another task: read here when it is a
+/// persistent this task shares, else asked of that task through the controller
+/// (`None`: the answer comes when the instruction runs again).
+fn value_in(ctx: &mut Ctx<'_>, task: &str, kind: usize) -> Result<Option<(Rc<str>, Value)>, RapidError> {
+    let name = active_name_in(ctx, task, kind);
+    if let Some(global) = shared_global(ctx, &name) {
+        let place = Place { root: Root::Global(global), path: Vec::new() };
+        let value = ctx.storage.get(&place).map_err(|(e, m)| ctx.error(e, m))?.clone();
+        return Ok(Some((name, value)));
+    }
+    let tasks = &ctx.resources.tasking.shared.tasks;
+    let Some(index) = tasks.iter().position(|t| t.name.eq_ignore_ascii_case(task)) else {
+        return Err(ctx.error(Err::TaskName, format!("the system has no task {task}")));
     };
-    Ok((name, Place { root: Root::Global(global), path: Vec::new() }))
+    match tasking::ask(ctx, tasking::Request::ReadData { task: index, name: name.to_string() }) {
+        None => Ok(None),
+        Some(tasking::Reply::Value(value)) => Ok(Some((name, value))),
+        Some(_) => Err(ctx.error(Err::SymAccess, format!("task {task} has no data `{name}` to read"))),
+    }
 }
 
 /// `GetSysData [\TaskRef | \TaskName] DestObject [\ObjectName]`: copies the active
@@ -123,12 +138,17 @@ pub(crate) fn get_sys_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let owner = data_owner(ctx, args)?;
     let dest = ctx.value(&args[2])?;
     let kind = kind_of(ctx, &dest).ok_or_else(|| not_sysdata(ctx, "DestObject"))?;
-    let (name, place) = match owner {
-        Some(task) => active_in(ctx, &task, kind)?,
-        None => active(ctx, kind)
-            .ok_or_else(|| ctx.error(Err::SymAccess, format!("the system has no {}", DEFAULT_NAMES[kind])))?,
+    let (name, value) = match owner {
+        Some(task) => match value_in(ctx, &task, kind)? {
+            Some(found) => found,
+            None => return Ok(None),
+        },
+        None => {
+            let (name, place) = active(ctx, kind)
+                .ok_or_else(|| ctx.error(Err::SymAccess, format!("the system has no {}", DEFAULT_NAMES[kind])))?;
+            (name, ctx.storage.get(&place).map_err(|(e, m)| ctx.error(e, m))?.clone())
+        }
     };
-    let value = ctx.storage.get(&place).map_err(|(e, m)| ctx.error(e, m))?.clone();
     ctx.store(&args[2], value)?;
     if present(args.get(3)) {
         ctx.store(&args[3], Value::Str(name))?;
@@ -183,14 +203,18 @@ fn type_name(kind: usize) -> &'static str {
 }
 
 /// `CTool([\TaskRef] | [\TaskName])` and `CWObj(…)`: the value of the active tool or
-/// work object (of another task through a persistent both declare, as GetSysData).
+/// work object (of another task as GetSysData reads it).
 fn current(ctx: &mut Ctx<'_>, args: &[Value], kind: usize) -> Res {
     let owner = data_owner(ctx, args)?;
-    let (_, place) = match owner {
-        Some(task) => active_in(ctx, &task, kind)?,
-        None => active(ctx, kind)
-            .ok_or_else(|| ctx.error(Err::SymAccess, format!("the system has no {}", DEFAULT_NAMES[kind])))?,
-    };
+    if let Some(task) = owner {
+        if let Some((_, value)) = value_in(ctx, &task, kind)? {
+            return Ok(Some(value));
+        }
+        // No answer yet: the instruction runs again and this task's own value, of the
+        // right type, is not used.
+    }
+    let (_, place) = active(ctx, kind)
+        .ok_or_else(|| ctx.error(Err::SymAccess, format!("the system has no {}", DEFAULT_NAMES[kind])))?;
     let value = ctx.storage.get(&place).map_err(|(e, m)| ctx.error(e, m))?.clone();
     Ok(Some(value))
 }
