@@ -9,13 +9,17 @@
 //! when doGrip = 1 after 0.2 s set diGripClosed 1   # every time doGrip becomes 1
 //! when doGrip = 0 set diGripClosed 0               # at once
 //! at 4 s answer TPReadNum 7     # the operator answers the next pendant dialog at 4 s
+//! at 6 disconnect dToolIO        # the I/O device stops answering (a tool is uncoupled)
+//! at 9 connect dToolIO           # and answers again
 //! ```
 //!
 //! `set` names inputs (DI, GI, AI) of the I/O configuration; a digital input takes 0
 //! or 1; `when` watches any signal. `answer [DIALOG] TEXT` is the operator's answer to
 //! the next pendant dialog (TPReadNum, TPReadFK, UINumEntry, …; the dialog's name is
-//! optional and only checked to be one): a dialog shown earlier waits for it. Any other
-//! line is reported with its line number.
+//! optional and only checked to be one): a dialog shown earlier waits for it.
+//! `connect`/`disconnect` name a device of the I/O configuration: while it does not
+//! answer, its signals cannot be reached (ERR_NORUNUNIT) and IOEnable waits for it (at
+//! most its MaxTime: ERR_IOENABLE). Any other line is reported with its line number.
 
 use rapid_io::{IoSystem, SignalKind};
 use rapid_vm::builtins::io::Reaction;
@@ -82,12 +86,24 @@ fn parse_answer(line: &str) -> Result<(f64, String), String> {
 /// `at SECONDS [s] set INPUT VALUE`.
 fn parse_order(line: &str, io: &IoSystem) -> Result<(f64, u32, f64), String> {
     let words = without_units(line);
-    let ["at", time, "set", name, value] = words.as_slice() else {
-        return Err(format!("expected `at SECONDS set SIGNAL VALUE` or `when …`, found `{line}`"));
+    let (time, id, value) = match words.as_slice() {
+        ["at", time, "set", name, value] => {
+            let (id, value) = input(io, name, value)?;
+            (time, id, value)
+        }
+        ["at", time, verb @ ("connect" | "disconnect"), device] => {
+            let index = io.units().index_of(device).ok_or_else(|| format!("no I/O device `{device}` is configured"))?;
+            let id = u32::try_from(index).ok().filter(|&i| i < rapid_io::DEVICE_EVENT).ok_or("too many devices")?;
+            (time, rapid_io::DEVICE_EVENT | id, if *verb == "connect" { 1.0 } else { 0.0 })
+        }
+        _ => {
+            return Err(format!(
+                "expected `at SECONDS set SIGNAL VALUE`, `at SECONDS connect|disconnect DEVICE` or `when …`, \
+                 found `{line}`"
+            ))
+        }
     };
-    let time = seconds(time)?;
-    let (id, value) = input(io, name, value)?;
-    Ok((time, id, value))
+    Ok((seconds(time)?, id, value))
 }
 
 /// `when SIGNAL = VALUE [after SECONDS [s]] set INPUT VALUE`.
@@ -177,7 +193,12 @@ mod tests {
             ("at 1 set do1 1", "s.txt:1: `do1` is an output; a stimulus sets inputs only"),
             ("at 1 set di1 2", "s.txt:1: digital input `di1` takes 0 or 1, not 2"),
             ("answer 7 at 1", "s.txt:1: expected `at SECONDS answer [DIALOG] TEXT`, found `answer 7 at 1`"),
-            ("at 1 jump di1 1", "s.txt:1: expected `at SECONDS set SIGNAL VALUE` or `when …`, found `at 1 jump di1 1`"),
+            (
+                "at 1 jump di1 1",
+                "s.txt:1: expected `at SECONDS set SIGNAL VALUE`, `at SECONDS connect|disconnect DEVICE` or \
+                 `when …`, found `at 1 jump di1 1`",
+            ),
+            ("at 1 connect nodevice", "s.txt:1: no I/O device `nodevice` is configured"),
             ("when do1 = 1 set do1 1", "s.txt:1: `do1` is an output; a stimulus sets inputs only"),
             ("when di1 = 1 after -1 set di1 0", "s.txt:1: the time -1 is not 0 or later"),
         ];

@@ -145,6 +145,46 @@ fn devices_are_enabled_and_disabled_and_their_signals_follow() {
 }
 
 #[test]
+fn a_disconnected_device_is_waited_for_by_ioenable_up_to_its_max_time() {
+    // The stimulus uncouples d652 at 1 s and couples it again at 4 s (a tool changer).
+    // At 2 s its signals cannot be reached (ERR_NORUNUNIT) and it is in error, still
+    // logically enabled. IODisable needs no answer; IOEnable with MaxTime 1 from 2 s
+    // runs out at 3 s (ERR_IOENABLE); IOEnable with MaxTime 5 from 3 s waits until the
+    // device answers at 4 s, then the lamp keeps the value it had (1).
+    let dir = scratch("units_connect");
+    let body = "    Set doLamp;
+    WaitTime 2;
+    TPWrite \"lamp valid \" \\Bool:=ValidIO(doLamp);
+    TPWrite \"lamp \" \\Num:=doLamp;
+    IF IOUnitState(\"d652\") = IOUNIT_RUNERROR TPWrite \"d652 in error\";
+    IF IOUnitState(\"d652\" \\Phys) = IOUNIT_PHYS_STATE_ERROR TPWrite \"d652 physically in error\";
+    IF IOUnitState(\"d652\" \\Logic) = IOUNIT_LOG_STATE_ENABLED TPWrite \"d652 logically enabled\";
+    IODisable \"d652\", 1;
+    TPWrite \"disabled at \" \\Num:=ClkRead(clock1);
+    IOEnable \"d652\", 1;
+    TPWrite \"timed out at \" \\Num:=ClkRead(clock1);
+    IOEnable \"d652\", 5;
+    TPWrite \"enabled at \" \\Num:=ClkRead(clock1);
+    TPWrite \"lamp \" \\Num:=doLamp;
+";
+    let handler = "    IF ERRNO = ERR_IOENABLE THEN
+      TPWrite \"ERR_IOENABLE\";
+      TRYNEXT;
+    ENDIF
+";
+    let program =
+        program("", &format!("    ClkStart clock1;\n{body}"), "").replace("  ERROR\n", &format!("  ERROR\n{handler}"));
+    let stimulus = "at 1 disconnect d652\nat 4 connect d652\n";
+    let out = run_cell(&dir, UNITS_EIO, &program, Some(stimulus));
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(
+        text(&out.stdout),
+        "lamp valid FALSE\nERR_NORUNUNIT\nd652 in error\nd652 physically in error\nd652 logically enabled\n\
+         disabled at 2\nERR_IOENABLE\ntimed out at 3\nenabled at 4\nlamp 1\n"
+    );
+}
+
+#[test]
 fn an_unhandled_read_on_a_disabled_device_stops_with_err_norununit() {
     let dir = scratch("norununit");
     let program = "MODULE MainModule\n  PROC main()\n    IODisable \"d652\", 5;\n\

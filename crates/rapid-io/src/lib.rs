@@ -62,7 +62,7 @@ mod value;
 pub use aio::{AioCondition, AioDirection, AioError, AnalogTrigger};
 pub use def::{Access, AnalogRange, ConfigError, CrossConnection, CrossOp, SignalDef, SignalKind, MAX_CROSS_TERMS};
 pub use system::{Cause, Change, IoSystem, SignalId, DEFAULT_PULSE_LENGTH, MAX_DELAYED, MAX_PULSING};
-pub use units::{DeviceDef, UnitError, Units, LOCAL_NETWORK};
+pub use units::{DeviceDef, UnitError, Units, DEVICE_EVENT, LOCAL_NETWORK};
 pub use value::{group_max, quantise, to_bits, to_logical, to_physical, IoError, MAX_TIME};
 
 #[cfg(test)]

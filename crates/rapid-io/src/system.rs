@@ -174,6 +174,18 @@ impl IoSystem {
         Ok(())
     }
 
+    /// The device at `index` stops or starts answering at `t` (a stimulus): orders
+    /// pending on its signals are dropped when it goes.
+    pub fn set_device_connected(&mut self, index: usize, connected: bool, t: f64) {
+        self.advance(t);
+        let Some(name) = self.units.set_connected(index, connected).map(str::to_owned) else { return };
+        if !connected {
+            for id in self.units.signals_of(&name) {
+                self.cancel(id);
+            }
+        }
+    }
+
     /// Whether a signal can be reached now (virtual, or its device is enabled).
     pub fn is_running(&self, id: SignalId) -> bool {
         self.units.signal_running(id)

@@ -61,12 +61,19 @@ impl fmt::Display for UnitError {
 
 impl std::error::Error for UnitError {}
 
+/// A stimulus order whose signal id has this bit set connects (value 1) or
+/// disconnects (value 0) the device whose index is in the other bits.
+pub const DEVICE_EVENT: u32 = 1 << 30;
+
 /// The devices and networks of one controller and the device of every signal.
 #[derive(Debug, Clone, Default)]
 pub struct Units {
     devices: Vec<DeviceDef>,
     by_name: HashMap<String, usize>,
     enabled: Vec<bool>,
+    /// Whether each device answers on its network (a stimulus disconnects and
+    /// reconnects it, as a tool changer does).
+    connected: Vec<bool>,
     networks: Vec<String>,
     /// By signal id: the index of its device, `None` for a virtual signal.
     signal_device: Vec<Option<usize>>,
@@ -86,7 +93,12 @@ impl Units {
                 return Err(UnitError::Duplicate(device.name.clone()));
             }
         }
-        let mut units = Units { enabled: devices.iter().map(|d| d.enabled).collect(), by_name, ..Units::default() };
+        let mut units = Units {
+            enabled: devices.iter().map(|d| d.enabled).collect(),
+            connected: vec![true; devices.len()],
+            by_name,
+            ..Units::default()
+        };
         for name in networks {
             if units.network_index(&name).is_some() {
                 return Err(UnitError::Duplicate(name));
@@ -148,6 +160,23 @@ impl Units {
         Ok(())
     }
 
+    /// Whether device `name` answers on its network.
+    pub fn is_connected(&self, name: &str) -> Result<bool, UnitError> {
+        let index = self.device_index(name).ok_or_else(|| UnitError::UnknownDevice(name.to_string()))?;
+        Ok(self.connected[index])
+    }
+
+    /// The index of device `name` (stimulus orders name a device by it).
+    pub fn index_of(&self, name: &str) -> Option<usize> {
+        self.device_index(name)
+    }
+
+    /// Connects or disconnects the device at `index`; its name when there is one.
+    pub fn set_connected(&mut self, index: usize, connected: bool) -> Option<&str> {
+        *self.connected.get_mut(index)? = connected;
+        self.devices.get(index).map(|d| d.name.as_str())
+    }
+
     /// Whether network `name` exists (every existing network runs).
     pub fn has_network(&self, name: &str) -> bool {
         self.network_index(name).is_some()
@@ -159,11 +188,13 @@ impl Units {
         self.devices.get(index)
     }
 
-    /// Whether a signal can be reached: virtual, or on an enabled device.
+    /// Whether a signal can be reached: virtual, or on an enabled device that answers.
     pub fn signal_running(&self, id: u32) -> bool {
         match self.signal_device.get(id as usize).copied().flatten() {
             None => true,
-            Some(index) => self.enabled.get(index).copied().unwrap_or(true),
+            Some(index) => {
+                self.enabled.get(index).copied().unwrap_or(true) && self.connected.get(index).copied().unwrap_or(true)
+            }
         }
     }
 

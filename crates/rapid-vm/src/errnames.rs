@@ -125,4 +125,5 @@ errors! {
     SigSupSearch = "ERR_SIGSUPSEARCH",
     // I/O devices and networks (§1.9).
     NoRunUnit = "ERR_NORUNUNIT",
+    IoEnable = "ERR_IOENABLE",
 }

@@ -125,6 +125,10 @@ impl IoState {
                 (Some(at), order) if order.is_none_or(|o| at <= o) => {
                     system.advance(at);
                     if let Some((at, id, value)) = self.stimulus.pop_front() {
+                        if id & rapid_io::DEVICE_EVENT != 0 {
+                            system.set_device_connected((id & !rapid_io::DEVICE_EVENT) as usize, value != 0.0, at);
+                            continue;
+                        }
                         // A stimulus names inputs only (checked when it is read); an input
                         // a cross-connection drives ignores it, as its physical channel
                         // is off.
@@ -337,6 +341,9 @@ fn signal_value(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// an enabled device.
 fn valid_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let data = ctx.value(&args[0])?;
+    // What the stimulus changed by now (a device disconnected) counts.
+    let now = ctx.time;
+    ctx.resources.io.advance(now);
     let valid = handle_of(&data).is_some_and(|(id, _)| {
         ctx.resources.io.system.as_ref().is_some_and(|io| io.def(id).is_some() && io.is_running(id))
     });

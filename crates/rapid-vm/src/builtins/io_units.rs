@@ -3,11 +3,14 @@
 //! IOEventMessage.
 //!
 //! The devices and networks are those of EIO.cfg, kept in the I/O system every task
-//! shares. Simulated devices switch at once and never fail, and every network runs, so
-//! IODisable and IOEnable never run out of MaxTime (ERR_IODISABLE, ERR_IOENABLE) and
-//! IOBusStart has nothing to start. Unknown names raise ERR_NAME_INVALID.
+//! shares. A simulated device switches at once while it answers on its network; the
+//! stimulus can disconnect it (`at T disconnect DEVICE`, a tool uncoupled) and connect
+//! it again: IOEnable then waits for it, at most MaxTime (ERR_IOENABLE). Disabling
+//! needs no answer from the device, so IODisable never runs out of MaxTime
+//! (ERR_IODISABLE cannot happen; uncertain). Every network runs, so IOBusStart has
+//! nothing to start. Unknown names raise ERR_NAME_INVALID.
 
-use super::{present, Ctx, Entries};
+use super::{present, Ctx, Entries, StopKind};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
@@ -16,11 +19,13 @@ type Res = Result<Option<Value>, RapidError>;
 
 /// iounit_state values, as the catalogue declares them (public programs confirm them).
 const IOUNIT_RUNNING: f32 = 1.0;
+const IOUNIT_RUNERROR: f32 = 2.0;
 const IOUNIT_DISABLE: f32 = 3.0;
 const IOUNIT_LOG_STATE_DISABLED: f32 = 10.0;
 const IOUNIT_LOG_STATE_ENABLED: f32 = 11.0;
 const IOUNIT_PHYS_STATE_DEACTIVATED: f32 = 20.0;
 const IOUNIT_PHYS_STATE_RUNNING: f32 = 21.0;
+const IOUNIT_PHYS_STATE_ERROR: f32 = 22.0;
 
 /// busstate values, as the catalogue declares them.
 // uncertain: BUSSTATE_RUN = 1 is what public programs quote; the numbers of the
@@ -70,14 +75,43 @@ fn max_time(ctx: &mut Ctx<'_>, arg: &Value) -> Result<f64, RapidError> {
 /// nothing.
 fn switch_device(ctx: &mut Ctx<'_>, args: &[Value], enabled: bool) -> Res {
     let name = device_name(ctx, &args[0])?;
-    max_time(ctx, &args[1])?;
+    let max = max_time(ctx, &args[1])?;
     let time = ctx.time;
     ctx.resources.io.advance(time);
+    if enabled && !connected(ctx, &name) {
+        return wait_for_device(ctx, &name, max);
+    }
+    ctx.resources.io.waiting = None;
     let result = match ctx.resources.io.system.as_mut() {
         Some(io) => io.set_device_enabled(&name, enabled, time).map_err(|e| e.to_string()),
         None => Err(format!("no I/O device `{name}` is configured")),
     };
     result.map_err(|message| ctx.error(Err::NameInvalid, message))?;
+    Ok(None)
+}
+
+fn connected(ctx: &Ctx<'_>, name: &str) -> bool {
+    ctx.resources.io.system.as_ref().is_none_or(|io| io.units().is_connected(name).unwrap_or(true))
+}
+
+/// IOEnable of a device that does not answer: waits for the stimulus to connect it
+/// (the instruction runs again then), at most `max` seconds from the first try.
+fn wait_for_device(ctx: &mut Ctx<'_>, name: &str, max: f64) -> Res {
+    let here = (ctx.chain.len(), ctx.chain.last().map_or(0, |frame| frame.position().1));
+    let now = ctx.time;
+    let started = match ctx.resources.io.waiting {
+        Some((depth, pc, at)) if (depth, pc) == here => at,
+        _ => now,
+    };
+    let deadline = started + max;
+    if now >= deadline {
+        ctx.resources.io.waiting = None;
+        return Err(ctx.error(Err::IoEnable, format!("I/O device `{name}` did not answer within MaxTime {max} s")));
+    }
+    ctx.resources.io.waiting = Some((here.0, here.1, started));
+    let next = ctx.resources.io.next_event_time().map_or(deadline, |t| t.min(deadline));
+    ctx.wait = Some((next - now).max(1e-6));
+    ctx.stop = StopKind::Repeat;
     Ok(None)
 }
 
@@ -94,13 +128,20 @@ fn io_enable(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// IOUNIT_PHYS_STATE_RUNNING/DEACTIVATED.
 fn io_unit_state(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let name = device_name(ctx, &args[0])?;
+    let now = ctx.time;
+    ctx.resources.io.advance(now);
     let enabled = ctx.resources.io.system.as_ref().and_then(|io| io.units().is_enabled(&name).ok()).unwrap_or(false);
+    // uncertain: an enabled device that does not answer is taken to be in error
+    // (IOUNIT_RUNERROR, physically IOUNIT_PHYS_STATE_ERROR); logically still enabled.
+    let answers = connected(ctx, &name);
     let state = match (present(args.get(1)), present(args.get(2)), enabled) {
-        (true, _, true) => IOUNIT_PHYS_STATE_RUNNING,
+        (true, _, true) if answers => IOUNIT_PHYS_STATE_RUNNING,
+        (true, _, true) => IOUNIT_PHYS_STATE_ERROR,
         (true, _, false) => IOUNIT_PHYS_STATE_DEACTIVATED,
         (_, true, true) => IOUNIT_LOG_STATE_ENABLED,
         (_, true, false) => IOUNIT_LOG_STATE_DISABLED,
-        (_, _, true) => IOUNIT_RUNNING,
+        (_, _, true) if answers => IOUNIT_RUNNING,
+        (_, _, true) => IOUNIT_RUNERROR,
         (_, _, false) => IOUNIT_DISABLE,
     };
     Ok(Some(Value::Num(state)))
