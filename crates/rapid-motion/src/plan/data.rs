@@ -38,13 +38,35 @@ pub struct MotionSettings {
     pub vel_max: f64,
     /// The operator's speed override (FlexPendant), %.
     pub speed_override: f64,
+    /// How circles reorient the tool (CirPathMode).
+    pub circle_ori: CircleOri,
+}
+
+/// How a circular move reorients the tool (CirPathMode; the wrist modes are not
+/// planned: the VM refuses them).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum CircleOri {
+    /// `\PathFrame` (the default): relative to the path's tangent.
+    #[default]
+    PathFrame,
+    /// `\ObjectFrame`: in the work object, from the start's orientation to the end's.
+    ObjectFrame,
+    /// `\CirPointOri`: through the circle point's orientation.
+    CirPointOri,
 }
 
 impl Default for MotionSettings {
     fn default() -> Self {
         // uncertain: VelSet's default Max; older manuals say 5000 mm/s, newer ones
         // the robot's maximum TCP speed (motion.md §3.1). 5000 is the documented one.
-        MotionSettings { acc: 100.0, ramp: 100.0, vel_override: 100.0, vel_max: 5000.0, speed_override: 100.0 }
+        MotionSettings {
+            acc: 100.0,
+            ramp: 100.0,
+            vel_override: 100.0,
+            vel_max: 5000.0,
+            speed_override: 100.0,
+            circle_ori: CircleOri::PathFrame,
+        }
     }
 }
 

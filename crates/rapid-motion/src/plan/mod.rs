@@ -62,7 +62,7 @@ mod profile;
 mod sample;
 mod segment;
 
-pub use data::{MotionSettings, SpeedData, ZoneData};
+pub use data::{CircleOri, MotionSettings, SpeedData, ZoneData};
 pub use limits::AccelLimits;
 pub use sample::{PlannedMove, Sample, DEFAULT_STEP};
 pub use segment::{MoveRequest, Target};

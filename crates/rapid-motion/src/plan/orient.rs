@@ -67,9 +67,9 @@ mod tests {
     fn blend_meets_both_moves() {
         // In: 0° → 0° over 100 mm. Out: 0° → 90° over 100 mm. Reach 20 mm.
         let zone = OriZone {
-            before: OriLerp { from: about_z(0.0), to: about_z(0.0) },
+            before: OriLerp::fixed(about_z(0.0), about_z(0.0)),
             before_len: 100.0,
-            after: OriLerp { from: about_z(0.0), to: about_z(90.0) },
+            after: OriLerp::fixed(about_z(0.0), about_z(90.0)),
             after_len: 100.0,
             reach: 20.0,
         };

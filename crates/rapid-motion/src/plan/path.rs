@@ -25,24 +25,84 @@ pub(crate) enum Metric {
 }
 
 /// The orientation interpolation of a Cartesian move: slerp from `from` to
-/// `to` over the move's fraction.
+/// `to` over the move's fraction, in one of the ways CirPathMode chooses for a
+/// circle (a line always slerps).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct OriLerp {
     pub(crate) from: UnitQuaternion<f64>,
     pub(crate) to: UnitQuaternion<f64>,
+    pub(crate) mode: OriMode,
 }
 
+/// How a circle's orientation is interpolated (CirPathMode).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum OriMode {
+    /// In the fixed (object) frame: `\ObjectFrame`, and every straight line.
+    Fixed,
+    /// In the path frame, which turns with the circle's tangent by `sweep`
+    /// radians about the circle's `normal` (`\PathFrame`, the default): the tool's
+    /// orientation relative to the path goes from the start's to the end's.
+    PathFrame { normal: nalgebra::Unit<Vector3<f64>>, sweep: f64 },
+    /// Through the circle point's orientation `via`, reached at fraction `at`
+    /// (`\CirPointOri`).
+    ViaPoint { via: UnitQuaternion<f64>, at: f64 },
+}
+
+/// Samples of a non-linear interpolation used to measure its rotation.
+const ORI_STEPS: usize = 16;
+
 impl OriLerp {
-    pub(crate) fn at(&self, fraction: f64) -> UnitQuaternion<f64> {
-        // try_slerp returns None only for opposite quaternions at half way; the
-        // start orientation is then as good an answer as any.
-        self.from.try_slerp(&self.to, fraction.clamp(0.0, 1.0), 1e-12).unwrap_or(self.from)
+    /// Slerp from `from` to `to` in the fixed frame.
+    pub(crate) fn fixed(from: UnitQuaternion<f64>, to: UnitQuaternion<f64>) -> OriLerp {
+        OriLerp { from, to, mode: OriMode::Fixed }
     }
 
-    /// The reorientation angle, degrees.
-    pub(crate) fn angle(&self) -> f64 {
-        self.from.angle_to(&self.to).to_degrees()
+    pub(crate) fn at(&self, fraction: f64) -> UnitQuaternion<f64> {
+        let f = if fraction.is_finite() { fraction.clamp(0.0, 1.0) } else { 0.0 };
+        match self.mode {
+            OriMode::Fixed => slerp(&self.from, &self.to, f),
+            OriMode::PathFrame { normal, sweep } => {
+                // R(f) = Rn(sweep·f) · slerp(R0, Rn(−sweep)·R1, f): at f = 1 the
+                // turns cancel, and a tool that turns with the path keeps its
+                // orientation relative to the tangent all the way.
+                let turn = |angle: f64| UnitQuaternion::from_axis_angle(&normal, angle);
+                turn(sweep * f) * slerp(&self.from, &(turn(-sweep) * self.to), f)
+            }
+            OriMode::ViaPoint { via, at } if at > 0.0 && at < 1.0 => {
+                if f <= at {
+                    slerp(&self.from, &via, f / at)
+                } else {
+                    slerp(&via, &self.to, (f - at) / (1.0 - at))
+                }
+            }
+            OriMode::ViaPoint { .. } => slerp(&self.from, &self.to, f),
+        }
     }
+
+    /// The reorientation angle, degrees: for a slerp the angle between the ends;
+    /// otherwise the rotation summed over small steps (the planner bounds the
+    /// move's time by it and v_ori).
+    pub(crate) fn angle(&self) -> f64 {
+        match self.mode {
+            OriMode::Fixed => self.from.angle_to(&self.to).to_degrees(),
+            _ => {
+                let mut total = 0.0;
+                let mut last = self.at(0.0);
+                for k in 1..=ORI_STEPS {
+                    let next = self.at(k as f64 / ORI_STEPS as f64);
+                    total += last.angle_to(&next);
+                    last = next;
+                }
+                total.to_degrees()
+            }
+        }
+    }
+}
+
+/// Slerp that never fails: for opposite quaternions at half way the start is as
+/// good an answer as any.
+fn slerp(a: &UnitQuaternion<f64>, b: &UnitQuaternion<f64>, f: f64) -> UnitQuaternion<f64> {
+    a.try_slerp(b, f, 1e-12).unwrap_or(*a)
 }
 
 /// One move's path.
@@ -130,6 +190,29 @@ impl Geometry {
         }
     }
 
+    /// For a circle: its unit normal (the turning direction) and its sweep, radians.
+    pub(crate) fn arc_turn(&self) -> Option<(nalgebra::Unit<Vector3<f64>>, f64)> {
+        match self {
+            Geometry::Arc { e1, e2, sweep, .. } => Some((nalgebra::Unit::new_normalize(e1.cross(e2)), *sweep)),
+            _ => None,
+        }
+    }
+
+    /// The fraction of a circle at which it passes `point` (a point on it).
+    pub(crate) fn arc_fraction(&self, point: &Vector3<f64>) -> Option<f64> {
+        let Geometry::Arc { center, e1, e2, sweep, .. } = self else { return None };
+        let rel = point - center;
+        let angle = rel.dot(e2).atan2(rel.dot(e1)).rem_euclid(std::f64::consts::TAU);
+        (*sweep > 0.0).then(|| (angle / sweep).clamp(0.0, 1.0))
+    }
+
+    /// Sets the orientation interpolation (a circle's, by CirPathMode).
+    pub(crate) fn set_ori(&mut self, new: OriLerp) {
+        if let Geometry::Line { ori, .. } | Geometry::Arc { ori, .. } = self {
+            *ori = new;
+        }
+    }
+
     /// The orientation interpolation, for Cartesian paths.
     pub(crate) fn ori(&self) -> Option<&OriLerp> {
         match self {
@@ -204,7 +287,7 @@ mod tests {
     use super::*;
 
     fn ori() -> OriLerp {
-        OriLerp { from: UnitQuaternion::identity(), to: UnitQuaternion::identity() }
+        OriLerp::fixed(UnitQuaternion::identity(), UnitQuaternion::identity())
     }
 
     #[test]
@@ -226,6 +309,72 @@ mod tests {
             Geometry::arc(Vector3::new(r, 0.0, 0.0), Vector3::new(0.0, -r, 0.0), Vector3::new(0.0, r, 0.0), ori())
                 .unwrap();
         assert!((arc.length() - 1.5 * std::f64::consts::PI * r).abs() < 1e-9);
+    }
+
+    /// A quarter circle from (r, 0, 0) to (0, r, 0) about +z (sweep 90°).
+    fn quarter(from: UnitQuaternion<f64>, to: UnitQuaternion<f64>) -> Geometry {
+        let r = 100.0;
+        let h = r * std::f64::consts::FRAC_1_SQRT_2;
+        let fixed = OriLerp::fixed(from, to);
+        let mut arc =
+            Geometry::arc(Vector3::new(r, 0.0, 0.0), Vector3::new(h, h, 0.0), Vector3::new(0.0, r, 0.0), fixed)
+                .unwrap();
+        let (normal, sweep) = arc.arc_turn().unwrap();
+        arc.set_ori(OriLerp { mode: OriMode::PathFrame { normal, sweep }, ..fixed });
+        arc
+    }
+
+    fn ori_at(geom: &Geometry, fraction: f64) -> UnitQuaternion<f64> {
+        geom.ori().unwrap().at(fraction)
+    }
+
+    #[test]
+    fn path_frame_keeps_a_tool_that_turns_with_the_path_turning_with_it() {
+        let deg = f64::to_radians;
+        let tilt = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), deg(30.0));
+        let turned = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), deg(90.0)) * tilt;
+        let arc = quarter(tilt, turned);
+        // Half way round, the tool has turned half of the path's 90° about z.
+        let half = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), deg(45.0)) * tilt;
+        assert!(ori_at(&arc, 0.5).angle_to(&half) < 1e-12);
+        assert!(ori_at(&arc, 1.0).angle_to(&turned) < 1e-12);
+    }
+
+    #[test]
+    fn path_frame_interpolates_relative_to_the_tangent() {
+        // From no rotation to Rx(90°) on a quarter circle about z. Relative to the
+        // path frame the end is Rz(-90°)·Rx(90°) = [[0,0,-1],[-1,0,0],[0,1,0]]: trace
+        // 0, so 120° about (1,-1,-1)/√3. Half way: the path frame turned 45°, the
+        // relative rotation 60° about the same axis.
+        let deg = f64::to_radians;
+        let arc = quarter(UnitQuaternion::identity(), UnitQuaternion::from_axis_angle(&Vector3::x_axis(), deg(90.0)));
+        let axis = nalgebra::Unit::new_normalize(Vector3::new(1.0, -1.0, -1.0));
+        let expected = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), deg(45.0))
+            * UnitQuaternion::from_axis_angle(&axis, deg(60.0));
+        assert!(ori_at(&arc, 0.5).angle_to(&expected) < 1e-12);
+        // \ObjectFrame would be half of Rx(90°): a different orientation.
+        let object = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), deg(45.0));
+        assert!(ori_at(&arc, 0.5).angle_to(&object) > deg(10.0));
+    }
+
+    #[test]
+    fn cir_point_ori_passes_through_the_circle_points_orientation() {
+        let deg = f64::to_radians;
+        let r = 100.0;
+        let fixed = OriLerp::fixed(UnitQuaternion::identity(), UnitQuaternion::identity());
+        // A half circle through its top: the circle point is half way.
+        let mut arc =
+            Geometry::arc(Vector3::new(r, 0.0, 0.0), Vector3::new(0.0, r, 0.0), Vector3::new(-r, 0.0, 0.0), fixed)
+                .unwrap();
+        let at = arc.arc_fraction(&Vector3::new(0.0, r, 0.0)).unwrap();
+        assert!((at - 0.5).abs() < 1e-12);
+        let via = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), deg(40.0));
+        arc.set_ori(OriLerp { mode: OriMode::ViaPoint { via, at }, ..fixed });
+        assert!(ori_at(&arc, 0.5).angle_to(&via) < 1e-12);
+        let quarter_way = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), deg(20.0));
+        assert!(ori_at(&arc, 0.25).angle_to(&quarter_way) < 1e-12);
+        // Up 40° and back down: 80° of reorientation in all.
+        assert!((arc.ori().unwrap().angle() - 80.0).abs() < 1e-9);
     }
 
     #[test]

@@ -4,9 +4,9 @@
 
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
 
-use super::data::{MotionSettings, SpeedData, ZoneData};
+use super::data::{CircleOri, MotionSettings, SpeedData, ZoneData};
 use super::limits::AccelLimits;
-use super::path::{Geometry, Metric, OriLerp, Point, EPS_DEG, EPS_TCP};
+use super::path::{Geometry, Metric, OriLerp, OriMode, Point, EPS_DEG, EPS_TCP};
 use super::profile::{PieceLimits, EPS_LEN};
 use crate::{Joints, Kinematics, MotionError, Pose};
 
@@ -72,20 +72,37 @@ pub(crate) fn prepare<K: Kinematics + ?Sized>(
     let mut prepared = match request.target {
         Target::Joints(q1) => ctx.joint_move(start, q1)?,
         Target::Linear(to) => {
-            let ori = OriLerp { from: start_tcp.rotation, to: to.rotation };
+            let ori = OriLerp::fixed(start_tcp.rotation, to.rotation);
             let geom = Geometry::Line { p0: start_tcp.translation.vector, p1: to.translation.vector, ori };
             let room = (to.translation.vector - start_tcp.translation.vector).norm();
             ctx.cartesian_move(geom, start, room)?
         }
         Target::Circular { via, to } => {
             let (p0, pc, p1) = (start_tcp.translation.vector, via.translation.vector, to.translation.vector);
-            let ori = OriLerp { from: start_tcp.rotation, to: to.rotation };
-            let geom = Geometry::arc(p0, pc, p1, ori)?;
+            let ori = OriLerp::fixed(start_tcp.rotation, to.rotation);
+            let mut geom = Geometry::arc(p0, pc, p1, ori)?;
+            circle_orientation(&mut geom, ori, &via, settings.circle_ori);
             ctx.cartesian_move(geom, start, (pc - p0).norm().min((p1 - pc).norm()))?
         }
     };
     prepared.zone = request.zone;
     Ok(prepared)
+}
+
+/// A circle's orientation interpolation by CirPathMode.
+fn circle_orientation(geom: &mut Geometry, fixed: OriLerp, via: &Pose, mode: CircleOri) {
+    let ori = match mode {
+        CircleOri::ObjectFrame => return,
+        CircleOri::PathFrame => match geom.arc_turn() {
+            Some((normal, sweep)) => OriLerp { mode: OriMode::PathFrame { normal, sweep }, ..fixed },
+            None => return,
+        },
+        CircleOri::CirPointOri => {
+            let Some(at) = geom.arc_fraction(&via.translation.vector) else { return };
+            OriLerp { mode: OriMode::ViaPoint { via: via.rotation, at }, ..fixed }
+        }
+    };
+    geom.set_ori(ori);
 }
 
 /// What every step of preparing a move needs.

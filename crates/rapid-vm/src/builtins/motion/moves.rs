@@ -6,7 +6,7 @@
 //! with `\Conc`. Unreachable targets stop execution with the controller's motion error.
 
 use rapid_motion::confdata::{inverse_nearest, ConfMatch};
-use rapid_motion::plan::{MotionSettings, MoveRequest, Target};
+use rapid_motion::plan::{CircleOri, MotionSettings, MoveRequest, Target};
 use rapid_motion::MotionError;
 
 use super::super::{present, Ctx};
@@ -160,7 +160,25 @@ pub(super) fn planner_settings(ctx: &Ctx<'_>) -> MotionSettings {
         vel_override: s.vel_override,
         vel_max,
         speed_override: controller.speed_override * s.speed_refresh / 100.0,
+        circle_ori: match s.cir_path_mode {
+            super::CirPathMode::ObjectFrame => CircleOri::ObjectFrame,
+            super::CirPathMode::CirPointOri => CircleOri::CirPointOri,
+            // The wrist modes are refused before a circle is planned.
+            _ => CircleOri::PathFrame,
+        },
     }
+}
+
+/// A circle is planned only with the CirPathMode orientations the planner models.
+pub(super) fn check_circle_mode(ctx: &Ctx<'_>) -> Result<(), RapidError> {
+    use super::CirPathMode::{Wrist45, Wrist46, Wrist56};
+    let mode = ctx.resources.motion.settings.cir_path_mode;
+    if matches!(mode, Wrist45 | Wrist46 | Wrist56) {
+        return Err(RapidError::fatal(format!(
+            "circular moves with CirPathMode \\{mode:?} are not supported by `rapid run` yet"
+        )));
+    }
+    Ok(())
 }
 
 /// Only a motion task (`-MotionTask`) runs move instructions (§1.20).
@@ -333,6 +351,7 @@ pub(super) fn circular_move(
 ) -> Res {
     require_motion_task(ctx)?;
     refuse_unmodelled(args, layout)?;
+    check_circle_mode(ctx)?;
     let chain = frames(ctx, args, layout, true)?;
     let via = tcp_in_base(ctx, &chain, &ctx.value(&args[layout.cir.unwrap_or(1)])?)?;
     let to = tcp_in_base(ctx, &chain, &ctx.value(&args[layout.to])?)?;

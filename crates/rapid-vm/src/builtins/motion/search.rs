@@ -141,7 +141,10 @@ fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32), places: &Places) -
     };
     let to = tcp_of(ctx, places.to)?;
     let target = match places.cir {
-        Some(cir) => Target::Circular { via: tcp_of(ctx, cir)?, to },
+        Some(cir) => {
+            super::moves::check_circle_mode(ctx)?;
+            Target::Circular { via: tcp_of(ctx, cir)?, to }
+        }
         None => Target::Linear(to),
     };
     let mut speed = data::speed(ctx, &ctx.value(&args[places.speed])?)?;
