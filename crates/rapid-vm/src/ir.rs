@@ -161,8 +161,20 @@ pub enum KernelOp {
     },
     /// Arithmetic and comparisons on nums; AND, OR, XOR on bools (1 or 0).
     Binary(BinaryOp),
+    /// `Binary` whose right operand is read in place instead of pushed: the top
+    /// becomes `top op operand` (a push followed by `Binary`, fused at compile time
+    /// to halve the dispatches of typical expressions such as `acc * 7 + j`).
+    BinaryWith(BinaryOp, KernelOperand),
     Neg,
     Not,
+}
+
+/// The right operand of a fused kernel operation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum KernelOperand {
+    Local(u32),
+    Global(u32),
+    Const(f32),
 }
 
 /// Where a `KernelStore` writes. For `Elem` the kernel leaves two values: the index

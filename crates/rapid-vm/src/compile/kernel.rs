@@ -14,7 +14,7 @@ use rapid_syntax::ast::{Arena, BinaryOp, ExprId, ExprKind, ParamMode, UnaryOp};
 use rapid_syntax::literal::num_value;
 
 use super::{LocalKind, Resolved, RoutineCompiler};
-use crate::ir::{Instr, Kernel, KernelOp, KernelTarget, KERNEL_DEPTH};
+use crate::ir::{Instr, Kernel, KernelOp, KernelOperand, KernelTarget, KERNEL_DEPTH};
 
 /// What a kernel sub-expression gives.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -43,10 +43,11 @@ impl RoutineCompiler<'_> {
         self.emit_kernel(Kernel { ops, target: None }, |kernel| Instr::KernelBranch { kernel, on_false: 0, skip: 0 })
     }
 
-    fn emit_kernel(&mut self, kernel: Kernel, instr: impl FnOnce(u32) -> Instr) -> Option<u32> {
+    fn emit_kernel(&mut self, mut kernel: Kernel, instr: impl FnOnce(u32) -> Instr) -> Option<u32> {
         if max_depth(&kernel.ops)? > KERNEL_DEPTH {
             return None;
         }
+        kernel.ops = fuse_operands(&kernel.ops);
         self.code.kernels.push(kernel);
         let idx = self.code.kernels.len() as u32 - 1;
         Some(self.code.emit(instr(idx)))
@@ -185,15 +186,96 @@ fn has_operator(arena: &Arena, id: ExprId) -> bool {
 }
 
 /// The most values the ops hold at once; `None` for a malformed sequence.
+/// Fuses each operand push that a binary operation consumes at once into that
+/// operation (`Local(j), Binary(+)` → `BinaryWith(+, Local(j))`): same results, one
+/// dispatch instead of two.
+fn fuse_operands(ops: &[KernelOp]) -> Vec<KernelOp> {
+    let mut out = Vec::with_capacity(ops.len());
+    let mut i = 0;
+    while i < ops.len() {
+        let operand = match ops[i] {
+            KernelOp::Local(slot) => Some(KernelOperand::Local(slot)),
+            KernelOp::Global(idx) => Some(KernelOperand::Global(idx)),
+            KernelOp::Const(n) => Some(KernelOperand::Const(n)),
+            _ => None,
+        };
+        // The first op pushes the first operand: only a later push can be fused.
+        match (operand, ops.get(i + 1)) {
+            (Some(operand), Some(&KernelOp::Binary(op))) if !out.is_empty() => {
+                out.push(KernelOp::BinaryWith(op, operand));
+                i += 2;
+            }
+            _ => {
+                out.push(ops[i]);
+                i += 1;
+            }
+        }
+    }
+    out
+}
+
 fn max_depth(ops: &[KernelOp]) -> Option<usize> {
     let (mut depth, mut max) = (0usize, 0usize);
     for op in ops {
         match op {
             KernelOp::Local(_) | KernelOp::Global(_) | KernelOp::Const(_) => depth += 1,
-            KernelOp::Elem { .. } | KernelOp::Neg | KernelOp::Not => depth.checked_sub(1).map(|_| ())?,
+            KernelOp::Elem { .. } | KernelOp::Neg | KernelOp::Not | KernelOp::BinaryWith(..) => {
+                depth.checked_sub(1).map(|_| ())?
+            }
             KernelOp::Binary(_) => depth = depth.checked_sub(1)?,
         }
         max = max.max(depth);
     }
     Some(max)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rapid_syntax::ast::BinaryOp::{Add, Mul};
+
+    #[test]
+    fn operand_pushes_fuse_into_the_operation_that_takes_them() {
+        // acc * 7 + j: the first operand stays a push, the others are read in place.
+        let ops = [
+            KernelOp::Local(0),
+            KernelOp::Const(7.0),
+            KernelOp::Binary(Mul),
+            KernelOp::Local(1),
+            KernelOp::Binary(Add),
+        ];
+        assert_eq!(
+            fuse_operands(&ops),
+            [
+                KernelOp::Local(0),
+                KernelOp::BinaryWith(Mul, KernelOperand::Const(7.0)),
+                KernelOp::BinaryWith(Add, KernelOperand::Local(1)),
+            ]
+        );
+        // An index pushed for an element read is not an operand: nothing fuses.
+        let ops =
+            [KernelOp::Global(3), KernelOp::Local(1), KernelOp::Elem { global: true, slot: 2 }, KernelOp::Binary(Add)];
+        assert_eq!(fuse_operands(&ops), ops);
+        // (a + b) * (c + d): the second group's first push stays.
+        let ops = [
+            KernelOp::Local(0),
+            KernelOp::Local(1),
+            KernelOp::Binary(Add),
+            KernelOp::Local(2),
+            KernelOp::Local(3),
+            KernelOp::Binary(Add),
+            KernelOp::Binary(Mul),
+        ];
+        assert_eq!(
+            fuse_operands(&ops),
+            [
+                KernelOp::Local(0),
+                KernelOp::BinaryWith(Add, KernelOperand::Local(1)),
+                KernelOp::Local(2),
+                KernelOp::BinaryWith(Add, KernelOperand::Local(3)),
+                KernelOp::Binary(Mul),
+            ]
+        );
+        assert_eq!(max_depth(&fuse_operands(&ops)), Some(2));
+    }
 }

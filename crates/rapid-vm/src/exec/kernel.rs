@@ -9,7 +9,7 @@
 //! a kernel moves bare f32s.
 
 use super::fast::{element_1d, element_1d_mut, fast_num_op, FastResult};
-use crate::ir::{Kernel, KernelOp, KernelTarget, KERNEL_DEPTH};
+use crate::ir::{Kernel, KernelOp, KernelOperand, KernelTarget, KERNEL_DEPTH};
 use crate::value::{Root, Value};
 
 /// What a kernel left: its top value and, for an element target, the index below it.
@@ -59,6 +59,18 @@ pub(super) fn eval(kernel: &Kernel, stack: &[Value], base: usize, globals: &[Val
                 len = len.checked_sub(1)?;
                 let (a, b) = (*regs.get(len.checked_sub(1)?)?, regs[len]);
                 *regs.get_mut(len - 1)? = binary(op, a, b)?;
+            }
+            KernelOp::BinaryWith(op, operand) => {
+                let b = match operand {
+                    KernelOperand::Local(slot) => local_num(stack, globals, base + slot as usize)?,
+                    KernelOperand::Global(idx) => match globals.get(idx as usize) {
+                        Some(&Value::Num(n)) => n,
+                        _ => return None,
+                    },
+                    KernelOperand::Const(n) => n,
+                };
+                let top = regs.get_mut(len.checked_sub(1)?)?;
+                *top = binary(op, *top, b)?;
             }
         }
     }
