@@ -64,7 +64,7 @@ fn speed(v_tcp: f64, v_ori: f64) -> SpeedData {
 }
 
 fn linear(to: Pose, v: f64, zone: ZoneData) -> MoveRequest {
-    MoveRequest { target: Target::Linear(to), speed: speed(v, 500.0), zone, tool: Pose::identity() }
+    MoveRequest { target: Target::Linear(to), speed: speed(v, 500.0), zone, tool: Pose::identity(), held_object: None }
 }
 
 /// Plans `moves` in order and flushes.
@@ -344,6 +344,7 @@ fn joint_moves_blend_per_joint() {
         speed: speed(5000.0, 500.0),
         zone,
         tool: Pose::identity(),
+        held_object: None,
     };
     let z10 = ZoneData::predefined("z10").unwrap();
     let via = [100.0, 0.0, 0.0, 0.0, 0.0, 0.0];

@@ -142,8 +142,7 @@ pub(crate) fn corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Pre
 }
 
 fn same_tool(cur: &Prepared, next: &Prepared) -> bool {
-    let moved = (cur.tool.translation.vector - next.tool.translation.vector).norm();
-    moved < 1e-9 && cur.tool.rotation.angle_to(&next.tool.rotation) < 1e-9
+    cur.mount.same_as(&next.mount)
 }
 
 /// A TCP parabola: entry `zone` mm of path before the programmed point, exit
@@ -205,7 +204,7 @@ fn joints_and_scale<K: Kinematics + ?Sized>(
     side: f64,
     weights: &[f64; 6],
 ) -> Option<(Joints, f64)> {
-    let solve = |s: f64, seed: &Joints| solve_at(kin, &m.geom.at(s), &m.tool, seed).ok();
+    let solve = |s: f64, seed: &Joints| solve_at(kin, &m.geom.at(s), &m.mount, seed).ok();
     match m.geom.at(s) {
         Point::Joints(q) => Some((q, 1.0)),
         Point::Tcp(..) => {
@@ -250,11 +249,11 @@ fn corner_seeds<K: Kinematics + ?Sized>(
         return Some(Vec::new());
     }
     let mut seed = nearest_seed(&cur.seeds, s_in)?;
-    seed = solve_at(kin, &cur.geom.at(s_in), &cur.tool, &seed).ok()?;
+    seed = solve_at(kin, &cur.geom.at(s_in), &cur.mount, &seed).ok()?;
     let mut seeds = vec![(0.0, seed)];
     for i in 1..=CORNER_SAMPLES {
         let u = i as f64 / CORNER_SAMPLES as f64;
-        seed = solve_at(kin, &path.at(u), &cur.tool, &seed).ok()?;
+        seed = solve_at(kin, &path.at(u), &cur.mount, &seed).ok()?;
         seeds.push((u, seed));
     }
     Some(seeds)

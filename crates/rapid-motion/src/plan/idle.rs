@@ -52,7 +52,7 @@ impl Planner {
 
 impl super::PlannedMove {
     /// The robot standing at `joints` from `start` to `end` (a pause of the path).
-    pub fn standing(joints: Joints, tool: crate::Pose, start: f64, end: f64) -> super::PlannedMove {
+    pub fn standing(joints: Joints, mount: super::Mount, start: f64, end: f64) -> super::PlannedMove {
         super::PlannedMove {
             start,
             zone_entry: end,
@@ -62,7 +62,7 @@ impl super::PlannedMove {
             corner_path_failure: false,
             end_joints: joints,
             spans: Vec::new(),
-            tool,
+            mount,
         }
     }
 
@@ -77,7 +77,7 @@ impl super::PlannedMove {
     }
 
     /// The tool frame the move was planned with.
-    pub fn tool(&self) -> crate::Pose {
-        self.tool
+    pub fn tool(&self) -> super::Mount {
+        self.mount
     }
 }

@@ -44,7 +44,7 @@
 //! for (x, zone) in [(100.0, "z10"), (200.0, "fine")] {
 //!     let target = Target::Linear(pose([x, 50.0, 0.0], [1.0, 0.0, 0.0, 0.0]));
 //!     let zone = ZoneData::predefined(zone).unwrap();
-//!     moves.extend(planner.push(&robot, &MoveRequest { target, speed: v1000, zone, tool: tool0 })?);
+//!     moves.extend(planner.push(&robot, &MoveRequest { target, speed: v1000, zone, tool: tool0, held_object: None })?);
 //! }
 //! moves.extend(planner.flush());
 //! let trace: Vec<_> = moves.iter().flat_map(|m| m.samples(&robot, DEFAULT_STEP)).collect();
@@ -56,6 +56,7 @@ mod corner;
 mod data;
 mod idle;
 mod limits;
+mod mount;
 mod orient;
 mod path;
 mod profile;
@@ -64,6 +65,7 @@ mod segment;
 
 pub use data::{CircleOri, MotionSettings, SpeedData, ZoneData};
 pub use limits::AccelLimits;
+pub use mount::Mount;
 pub use sample::{PlannedMove, Sample, DEFAULT_STEP};
 pub use segment::{MoveRequest, Target};
 
@@ -247,7 +249,7 @@ impl Planner {
             corner_path_failure: false,
             end_joints: prep.end_joints,
             spans,
-            tool: prep.tool,
+            mount: prep.mount,
         }
     }
 }

@@ -38,7 +38,7 @@ pub struct PlannedMove {
     /// Joint values at the programmed end point.
     pub end_joints: Joints,
     pub(crate) spans: Vec<Span>,
-    pub(crate) tool: Pose,
+    pub(crate) mount: super::Mount,
 }
 
 /// The robot at one instant.
@@ -90,7 +90,7 @@ impl PlannedMove {
         let t = if t.is_finite() { t.clamp(self.start, self.end) } else { self.start };
         let span = self.spans.iter().rev().find(|s| s.t0 <= t).or(self.spans.first());
         let Some(span) = span else {
-            let tcp = kin.forward(&self.end_joints) * self.tool;
+            let tcp = self.mount.tcp(&kin.forward(&self.end_joints));
             return Sample { time: t, joints: self.end_joints, tcp, tcp_speed: 0.0 };
         };
         let (s, v) = span.profile.at(t - span.t0);
@@ -122,10 +122,14 @@ impl PlannedMove {
     /// Joints and TCP at path parameter `s` of `span`.
     fn locate<K: Kinematics + ?Sized>(&self, kin: &K, span: &Span, s: f64, seed: &Joints) -> (Joints, Pose) {
         match span.piece.at(s) {
-            Point::Joints(q) => (q, kin.forward(&q) * self.tool),
+            Point::Joints(q) => (q, self.mount.tcp(&kin.forward(&q))),
             point @ Point::Tcp(p, r) => {
-                let joints = solve_at(kin, &point, &self.tool, seed).unwrap_or(*seed);
-                (joints, tcp_pose(&p, &r))
+                let joints = solve_at(kin, &point, &self.mount, seed).unwrap_or(*seed);
+                let tcp = match self.mount {
+                    super::Mount::Held(_) => tcp_pose(&p, &r),
+                    super::Mount::Stationary { .. } => self.mount.tcp(&kin.forward(&joints)),
+                };
+                (joints, tcp)
             }
         }
     }

@@ -6,6 +6,7 @@ use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
 
 use super::data::{CircleOri, MotionSettings, SpeedData, ZoneData};
 use super::limits::AccelLimits;
+use super::mount::Mount;
 use super::path::{Geometry, Metric, OriLerp, OriMode, Point, EPS_DEG, EPS_TCP};
 use super::profile::{PieceLimits, EPS_LEN};
 use crate::{Joints, Kinematics, MotionError, Pose};
@@ -29,8 +30,22 @@ pub struct MoveRequest {
     pub target: Target,
     pub speed: SpeedData,
     pub zone: ZoneData,
-    /// The tool frame (`tframe`): the TCP in the flange (`tool0`) frame.
+    /// The tool frame (`tframe`): the TCP in the flange (`tool0`) frame; for a
+    /// stationary tool (`held_object` given), the fixed TCP in the base frame.
     pub tool: Pose,
+    /// A stationary tool: the work object the robot holds, its frame in the flange
+    /// frame. Linear and circular targets are then TCP poses in that object frame.
+    pub held_object: Option<Pose>,
+}
+
+impl MoveRequest {
+    /// How this move's path relates to the flange.
+    pub fn mount(&self) -> Mount {
+        match self.held_object {
+            Some(object) => Mount::Stationary { tcp: self.tool, object },
+            None => Mount::Held(self.tool),
+        }
+    }
 }
 
 /// A move ready for timing.
@@ -39,7 +54,7 @@ pub(crate) struct Prepared {
     pub(crate) geom: Geometry,
     pub(crate) limits: PieceLimits,
     pub(crate) zone: ZoneData,
-    pub(crate) tool: Pose,
+    pub(crate) mount: Mount,
     pub(crate) end_joints: Joints,
     /// Joint values along a Cartesian path (path parameter, joints), which seed
     /// the inverse kinematics when the path is sampled.
@@ -67,7 +82,7 @@ pub(crate) fn prepare<K: Kinematics + ?Sized>(
     let speed = settings.effective_speed(&request.speed);
     let accel = nominal.sanitized().scaled(settings.acc_factor());
     let max_speeds = kin.max_speeds().map(|v| if v.is_finite() && v > 0.0 { v } else { 1.0 });
-    let ctx = Ctx { kin, tool: request.tool, speed, accel, max_speeds };
+    let ctx = Ctx { kin, mount: request.mount(), speed, accel, max_speeds };
     let start_tcp = ctx.tcp(start);
     let mut prepared = match request.target {
         Target::Joints(q1) => ctx.joint_move(start, q1)?,
@@ -108,7 +123,7 @@ fn circle_orientation(geom: &mut Geometry, fixed: OriLerp, via: &Pose, mode: Cir
 /// What every step of preparing a move needs.
 struct Ctx<'k, K: Kinematics + ?Sized> {
     kin: &'k K,
-    tool: Pose,
+    mount: Mount,
     speed: SpeedData,
     accel: AccelLimits,
     max_speeds: [f64; 6],
@@ -116,7 +131,7 @@ struct Ctx<'k, K: Kinematics + ?Sized> {
 
 impl<K: Kinematics + ?Sized> Ctx<'_, K> {
     fn tcp(&self, joints: &Joints) -> Pose {
-        self.kin.forward(joints) * self.tool
+        self.mount.path_pose(&self.kin.forward(joints))
     }
 
     fn prepared(&self, geom: Geometry, limits: PieceLimits, end_joints: Joints, room: f64) -> Prepared {
@@ -124,7 +139,7 @@ impl<K: Kinematics + ?Sized> Ctx<'_, K> {
             geom,
             limits,
             zone: ZoneData::FINE,
-            tool: self.tool,
+            mount: self.mount,
             end_joints,
             seeds: Vec::new(),
             room,
@@ -167,7 +182,7 @@ impl<K: Kinematics + ?Sized> Ctx<'_, K> {
     fn cartesian_move(&self, geom: Geometry, q0: &Joints, room: f64) -> Result<Prepared, MotionError> {
         let length = geom.length();
         let angle = geom.ori().map_or(0.0, OriLerp::angle);
-        let seeds = ik_along(self.kin, &geom, &self.tool, q0)?;
+        let seeds = ik_along(self.kin, &geom, &self.mount, q0)?;
         let end_joints = seeds.last().map_or(*q0, |(_, q)| *q);
         if length <= EPS_LEN {
             let limits = PieceLimits { length: 0.0, cap: 1.0, acc: 1.0 };
@@ -212,7 +227,7 @@ fn time_cap(length: f64, amount: f64, speed: f64, eps: f64, zero: &'static str) 
 pub(crate) fn ik_along<K: Kinematics + ?Sized>(
     kin: &K,
     geom: &Geometry,
-    tool: &Pose,
+    mount: &Mount,
     q0: &Joints,
 ) -> Result<Vec<(f64, Joints)>, MotionError> {
     let length = geom.length();
@@ -229,7 +244,7 @@ pub(crate) fn ik_along<K: Kinematics + ?Sized>(
     let mut seed = *q0;
     for i in 1..=n {
         let s = length * i as f64 / n as f64;
-        seed = solve_at(kin, &geom.at(s), tool, &seed)?;
+        seed = solve_at(kin, &geom.at(s), mount, &seed)?;
         seeds.push((s, seed));
     }
     Ok(seeds)
@@ -239,12 +254,12 @@ pub(crate) fn ik_along<K: Kinematics + ?Sized>(
 pub(crate) fn solve_at<K: Kinematics + ?Sized>(
     kin: &K,
     point: &Point,
-    tool: &Pose,
+    mount: &Mount,
     seed: &Joints,
 ) -> Result<Joints, MotionError> {
     match point {
         Point::Joints(q) => Ok(*q),
-        Point::Tcp(p, r) => kin.inverse_near(&(tcp_pose(p, r) * tool.inverse()), seed),
+        Point::Tcp(p, r) => kin.inverse_near(&mount.flange(&tcp_pose(p, r)), seed),
     }
 }
 
@@ -283,7 +298,7 @@ fn check_finite(request: &MoveRequest, start: &Joints) -> Result<(), MotionError
         Target::Linear(to) => pose_ok(to),
         Target::Circular { via, to } => pose_ok(via) && pose_ok(to),
     };
-    if !target_ok || !pose_ok(&request.tool) || !start.iter().all(|x| x.is_finite()) {
+    if !target_ok || !request.mount().is_finite() || !start.iter().all(|x| x.is_finite()) {
         return Err(MotionError::InvalidData("a target, tool or joint value is not a finite number"));
     }
     Ok(())

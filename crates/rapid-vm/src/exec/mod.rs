@@ -332,12 +332,10 @@ impl Vm {
             if self.frames.is_empty() {
                 return Exit::Done;
             }
-            let watched = self.resources.interrupts.active();
-            if !watched && self.resources.robot.hold_until.is_some() {
-                if let Some(wait) = self.motion_hold() {
-                    return Exit::Wait(wait);
-                }
-            }
+            // While the program owes the robot the rest of a move's wait (a trap cut
+            // it short), it runs one instruction at a time too, so the wait resumes as
+            // soon as the trap has returned (the fast loop would run on past it).
+            let watched = self.resources.interrupts.active() || self.resources.robot.hold_until.is_some();
             let outcome = if self.resources.spy.is_active() || watched {
                 // The execution log sees every statement, and interrupts are looked for
                 // before every instruction: one instruction at a time.

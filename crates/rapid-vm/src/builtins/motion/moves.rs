@@ -212,7 +212,8 @@ fn go_with(
     events: Vec<super::robot::PathEvent>,
 ) -> Res {
     let (speed, zone) = speed_and_zone(ctx, args, layout)?;
-    let request = MoveRequest { target, speed, zone, tool: chain.tframe };
+    let (tool, held_object) = mount_of(&chain);
+    let request = MoveRequest { target, speed, zone, tool, held_object };
     let settings = planner_settings(ctx);
     let now = ctx.time;
     let conc = present(args.get(layout.conc));
@@ -408,19 +409,37 @@ pub(crate) fn apply_due_events(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
     Ok(())
 }
 
-/// A robtarget's TCP in the robot base frame (what linear and circular paths are
-/// planned in). A stationary tool's path is the work object's, which the planner
-/// does not follow yet.
+/// A robtarget's path pose (what linear and circular paths are planned in, see
+/// `rapid_motion::plan::Mount`): the TCP in the robot base frame for a robot-held
+/// tool; for a stationary tool the TCP in the held work object's (displaced) frame,
+/// which is the robtarget itself.
 fn tcp_in_base(
     ctx: &Ctx<'_>,
     chain: &rapid_motion::frames::FrameChain,
     target: &Value,
 ) -> Result<rapid_motion::Pose, RapidError> {
-    if chain.stationary_tool {
-        return Err(RapidError::fatal("linear and circular moves with a stationary tool are not supported yet"));
-    }
     let (pose, _) = data::robtarget(ctx, target)?;
-    Ok(chain.flange_goal(&pose) * chain.tframe)
+    Ok(path_pose(chain, &pose))
+}
+
+/// The path pose of a robtarget pose (see [`tcp_in_base`]).
+pub(super) fn path_pose(chain: &rapid_motion::frames::FrameChain, target: &rapid_motion::Pose) -> rapid_motion::Pose {
+    if chain.stationary_tool {
+        *target
+    } else {
+        chain.flange_goal(target) * chain.tframe
+    }
+}
+
+/// A move request's `tool` and `held_object` for these frames: the tool frame, or for
+/// a stationary tool its TCP in the base frame and the held work object's frame
+/// (user, object, displacement) in the flange frame.
+pub(super) fn mount_of(chain: &rapid_motion::frames::FrameChain) -> (rapid_motion::Pose, Option<rapid_motion::Pose>) {
+    if chain.stationary_tool {
+        (chain.base.inverse() * chain.tframe, Some(chain.uframe * chain.oframe * chain.pdisp))
+    } else {
+        (chain.tframe, None)
+    }
 }
 
 /// `MoveAbsJ`: joint interpolation to axis values (no displacement applies).

@@ -137,7 +137,7 @@ fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32), places: &Places) -
     let chain = super::moves::frames_at(ctx, args, places.tool, places.wobj, true)?;
     let tcp_of = |ctx: &Ctx<'_>, idx: usize| -> Result<rapid_motion::Pose, RapidError> {
         let (target, _) = data::robtarget(ctx, &ctx.value(&args[idx])?)?;
-        Ok(chain.flange_goal(&target) * chain.tframe)
+        Ok(super::moves::path_pose(&chain, &target))
     };
     let to = tcp_of(ctx, places.to)?;
     let target = match places.cir {
@@ -151,7 +151,8 @@ fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32), places: &Places) -
     if let Some(v) = ctx.opt_num(args.get(places.v))? {
         speed.v_tcp = v;
     }
-    let request = MoveRequest { target, speed, zone: rapid_motion::plan::ZoneData::FINE, tool: chain.tframe };
+    let (tool, held_object) = super::moves::mount_of(&chain);
+    let request = MoveRequest { target, speed, zone: rapid_motion::plan::ZoneData::FINE, tool, held_object };
     let settings = super::moves::planner_settings(ctx);
     let now = ctx.time;
     let robot = &mut ctx.resources.robot;
