@@ -125,4 +125,6 @@ errors! {
     SigSupSearch = "ERR_SIGSUPSEARCH",
     // I/O devices and networks (§1.9).
     NoRunUnit = "ERR_NORUNUNIT",
+    AxisPar = "ERR_AXIS_PAR",
+    SpeedLimValue = "ERR_SPEEDLIM_VALUE",
 }
