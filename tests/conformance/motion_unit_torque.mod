@@ -61,6 +61,11 @@ MODULE motion_unit_torque
         TestSignReset;
         TPWrite "after TestSignReset " \Num:=TestSignRead(1);
         GripLoad load0;
+        ! Load identification: valid for the robot's tool and payload, not for the
+        ! positioner kinds (the unit is a TCP robot).
+        TPWrite "tool load id valid " \Bool:=ParIdRobValid(TOOL_LOAD_ID) = ROB_LOAD_VAL;
+        TPWrite "payload id valid " \Bool:=ParIdRobValid(PAY_LOAD_ID \MechUnit:=ROB_1) = ROB_LOAD_VAL;
+        TPWrite "positioner id not valid " \Bool:=ParIdRobValid(IRBP_K) = ROB_NOT_LOAD_VAL;
         TestSignDefine 13, speed, ROB_1, 1, 0.1;
         TPWrite "not reached";
     ERROR

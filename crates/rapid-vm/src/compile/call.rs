@@ -39,6 +39,7 @@ const NAME_TAKING: &[&str] = &[
     "MechUnitLoad",
     "ReadMotor",
     "GetMotorTorque",
+    "ParIdRobValid",
     "SoftAct",
     "TuneServo",
     "SpeedLimAxis",

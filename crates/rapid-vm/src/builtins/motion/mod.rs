@@ -127,6 +127,7 @@ pub(super) static ENTRIES: Entries = &[
     ("TestSignReset", testsign::test_sign_reset),
     ("TestSignRead", testsign::test_sign_read),
     ("GetMotorTorque", torque::get_motor_torque),
+    ("ParIdRobValid", torque::par_id_rob_valid),
     ("MToolTCPCalib", calib::m_tool_tcp_calib),
     ("MToolRotCalib", calib::m_tool_rot_calib),
     ("SToolTCPCalib", calib::s_tool_tcp_calib),

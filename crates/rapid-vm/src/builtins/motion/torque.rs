@@ -1,11 +1,12 @@
-//! Axis torques (§1.8): GetMotorTorque, from the static model of
+//! Axis torques and load identification (§1.8): GetMotorTorque, from the static model of
 //! `rapid_motion::dynamics`: the torque each axis needs to hold the tool's load and
 //! the payload still against gravity, where the robot is now.
 //!
 //! Not modelled (not public, or not simulated): the arm's own link masses, friction,
 //! acceleration torques, and the gear ratios (a ratio of 1 is used, so a motor torque
 //! is the axis torque). GetTorqueMargin and ResetTorqueMargin need the motors' torque
-//! limits, which are not public either; they stay unregistered.
+//! limits, which are not public either; they stay unregistered. ParIdRobValid tells
+//! which identifications the robot allows.
 
 use nalgebra::{Point3, Vector3};
 use rapid_motion::dynamics::{holding_torques, PointLoad};
@@ -81,4 +82,34 @@ pub(crate) fn get_motor_torque(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let axis = axis_arg(ctx, ctx.num(&args[1])?, Err::ArgValue)?;
     let torques = axis_torques(ctx);
     Ok(Some(Value::Num(torques[axis - 1] as f32)))
+}
+
+// The paridnum and paridvalidnum values of the catalogue.
+const TOOL_LOAD_ID: f64 = 1.0;
+const PAY_LOAD_ID: f64 = 2.0;
+const IRBP_FIRST: f64 = 3.0;
+const IRBP_LAST: f64 = 6.0;
+const ROB_LOAD_VAL: f32 = 1.0;
+const ROB_NOT_LOAD_VAL: f32 = 10.0;
+
+/// `ParIdRobValid(ParIdType [\MechUnit] [\AxisNo])`: whether the unit's type allows
+/// the identification: tool and payload identification on a TCP robot are valid
+/// (ROB_LOAD_VAL); the positioner kinds (IRBP_*) are not, since every unit here is a
+/// TCP robot (ROB_NOT_LOAD_VAL). Another ParIdType is ERR_ARGVALERR.
+// uncertain: every built-in robot model is taken to support load identification (the
+// list of models that do not, or only with a limited mass, is not public to us).
+pub(crate) fn par_id_rob_valid(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let kind = ctx.num(&args[0])?;
+    opt_unit_arg(ctx, args, 1)?;
+    if let Some(axis) = ctx.opt_num(args.get(2))? {
+        axis_arg(ctx, axis, Err::ArgValue)?;
+    }
+    let valid = if kind == TOOL_LOAD_ID || kind == PAY_LOAD_ID {
+        ROB_LOAD_VAL
+    } else if (IRBP_FIRST..=IRBP_LAST).contains(&kind) && kind.fract() == 0.0 {
+        ROB_NOT_LOAD_VAL
+    } else {
+        return Err(ctx.error(Err::ArgValue, format!("{kind} is not a paridnum")));
+    };
+    Ok(Some(Value::Num(valid)))
 }
