@@ -20,14 +20,22 @@ MODULE motion_servo_settings
         ClkStop c;
         plain := ClkRead(c);
         MoveAbsJ a, v1000, fine, tool0;
+        ! C_MOTSET shows motion supervision and the event buffer (motsetdata:
+        ! motionsup, tunevalue, evtbufferact).
+        TPWrite "default " + ValToStr(C_MOTSET.motionsup) + " " + ValToStr(C_MOTSET.tunevalue) + " " + ValToStr(C_MOTSET.evtbufferact);
         MotionSup \On \TuneValue:=200;
+        TPWrite "tuned " + ValToStr(C_MOTSET.motionsup) + " " + ValToStr(C_MOTSET.tunevalue);
         MotionSup \Off;
+        TPWrite "off " + ValToStr(C_MOTSET.motionsup) + " " + ValToStr(C_MOTSET.tunevalue);
+        ! With no switch, \On; without \TuneValue, the configured level (100 %).
         MotionSup;
+        TPWrite "on again " + ValToStr(C_MOTSET.motionsup) + " " + ValToStr(C_MOTSET.tunevalue);
         SoftAct 3, 20;
         SoftAct \MechUnit:=ROB_1, 5, 100 \Ramp:=150;
         TuneServo ROB_1, 1, 110;
         TuneServo ROB_1, 2, 90 \Type:=TUNE_KP;
         DeactEventBuffer;
+        TPWrite "event buffer " \Bool:=C_MOTSET.evtbufferact;
         SpeedLimAxis ROB_1, 1, 30;
         SpeedLimCheckPoint 250;
         ClkReset c;
@@ -40,6 +48,7 @@ MODULE motion_servo_settings
         SoftDeact \Ramp:=200;
         TuneReset;
         ActEventBuffer;
+        TPWrite "event buffer " \Bool:=C_MOTSET.evtbufferact;
         TPWrite "power failure " \Bool:=PFRestart();
         TPWrite "power failure, base level " \Bool:=PFRestart(\Base);
         ! The error paths, each handled and skipped.

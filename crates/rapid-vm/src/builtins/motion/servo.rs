@@ -24,14 +24,15 @@ const TUNE_TYPES: usize = 11;
 /// The servo and supervision state of the task's robot.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ServoState {
-    /// MotionSup: collision supervision on, and its level in percent.
+    /// MotionSup: collision supervision on, and its level in percent (C_MOTSET
+    /// motionsup, tunevalue).
     pub motion_sup: bool,
     pub sup_level: f64,
     /// SoftAct: softness and ramp (percent) of each soft axis.
     pub soft: [Option<(f64, f64)>; ROBOT_AXES],
     /// TuneServo: each axis's tuning in percent, by tunetype.
     pub tune: [[f64; TUNE_TYPES]; ROBOT_AXES],
-    /// ActEventBuffer / DeactEventBuffer.
+    /// ActEventBuffer / DeactEventBuffer (C_MOTSET evtbufferact).
     pub event_buffer: bool,
     /// SpeedLimAxis: each axis's limit (deg/s) while LimitSpeed is set.
     pub axis_speed_limit: [Option<f64>; ROBOT_AXES],
@@ -43,9 +44,8 @@ pub struct ServoState {
 
 impl Default for ServoState {
     /// Supervision on at 100 %, no soft axes, every tuning 100 %, the event buffer
-    /// on, no speed limits, no test signals.
-    // uncertain: that the event buffer is on by default and comes back on at PP to
-    // Main.
+    /// on, no speed limits, no test signals. The first three match C_MOTSET's
+    /// initial motionsup TRUE, tunevalue 100, evtbufferact TRUE.
     fn default() -> ServoState {
         ServoState {
             motion_sup: true,
@@ -62,6 +62,16 @@ impl Default for ServoState {
 
 fn servo<'c>(ctx: &'c mut Ctx<'_>) -> &'c mut ServoState {
     &mut ctx.resources.motion.servo
+}
+
+/// Writes the settings C_MOTSET shows (motionsup, tunevalue, evtbufferact) into it.
+fn mirror(ctx: &mut Ctx<'_>) {
+    let s = &ctx.resources.motion.servo;
+    let leaves =
+        [(&[5][..], Value::Bool(s.motion_sup)), (&[6], super::num(s.sup_level)), (&[14], Value::Bool(s.event_buffer))];
+    if let Some(global) = ctx.resources.motion.links.motset {
+        super::write_leaves(ctx.storage.globals.get_mut(global as usize), &leaves);
+    }
 }
 
 /// A percentage argument within `lo..=hi`, else ERR_ARGVALERR.
@@ -90,6 +100,7 @@ pub(crate) fn motion_sup(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     } else if !off {
         state.sup_level = 100.0;
     }
+    mirror(ctx);
     Ok(None)
 }
 
@@ -145,12 +156,14 @@ pub(crate) fn tune_reset(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 /// `ActEventBuffer`: the configured event buffer is used again.
 pub(crate) fn act_event_buffer(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     servo(ctx).event_buffer = true;
+    mirror(ctx);
     Ok(None)
 }
 
 /// `DeactEventBuffer`: moves run without the event buffer.
 pub(crate) fn deact_event_buffer(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     servo(ctx).event_buffer = false;
+    mirror(ctx);
     Ok(None)
 }
 
