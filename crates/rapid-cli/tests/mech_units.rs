@@ -50,17 +50,15 @@ fn every_motion_task_has_its_robot_and_every_task_sees_them_all() {
     let rob1 =
         format!("MODULE R1\n  PROC main()\n{LIST}    TPWrite \"T_ROB1 is \" + RobName();\n  ENDPROC\nENDMODULE\n");
     // T_PLC waits so that the tasks print one after another.
-    let plc = format!(
-        "MODULE P\n  PROC main()\n    WaitTime 0.1;\n    TPWrite \"T_PLC is \" + RobName();\n    \
-         TPWrite \"ROB_1 seen from T_PLC \" \\Bool:=IsMechUnitActive(ROB_1);\n  ENDPROC\nENDMODULE\n"
-    );
+    let plc = "MODULE P\n  PROC main()\n    WaitTime 0.1;\n    TPWrite \"T_PLC is \" + RobName();\n    \
+               TPWrite \"ROB_1 seen from T_PLC \" \\Bool:=IsMechUnitActive(ROB_1);\n  ENDPROC\nENDMODULE\n";
     let rob2 = "MODULE R2\n  PROC main()\n    WaitTime 0.2;\n    TPWrite \"T_ROB2 is \" + RobName();\n    \
                 TPWrite \"its own \" \\Bool:=IsMechUnitActive(ROB_ID);\n  ENDPROC\nENDMODULE\n";
     system(
         &dir,
         &[
             ("T_ROB1", "-Type \"NORMAL\" -MotionTask", &rob1),
-            ("T_PLC", "-Type \"NORMAL\"", &plc),
+            ("T_PLC", "-Type \"NORMAL\"", plc),
             ("T_ROB2", "-Type \"NORMAL\" -MotionTask", rob2),
         ],
     );
