@@ -6,7 +6,9 @@
 //! with the scalar first (`orient = [q1, q2, q3, q4]`). Conversions to whatever a
 //! solver uses internally happen inside the module that calls it.
 
+pub mod calib;
 pub mod confdata;
+pub mod dynamics;
 pub mod frames;
 pub mod kinematics;
 pub mod plan;

@@ -126,4 +126,6 @@ errors! {
     // I/O devices and networks (§1.9).
     NoRunUnit = "ERR_NORUNUNIT",
     IoEnable = "ERR_IOENABLE",
+    AxisPar = "ERR_AXIS_PAR",
+    SpeedLimValue = "ERR_SPEEDLIM_VALUE",
 }

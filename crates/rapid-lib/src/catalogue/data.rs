@@ -536,6 +536,14 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST tunetype TUNE_DI := 8;", "Tune damping (DI)."),
     data("CONST tunetype TUNE_DK := 9;", "Tune damping (DK)."),
     data("CONST tunetype TUNE_DL := 10;", "Tune damping (DL)."),
+    // ---- testsignal --------------------------------------------------------------------------
+    // uncertain: the numbers are the testsignal page's as we remember them (not re-read).
+    data("CONST testsignal resolver_angle := 1;", "Test signal: the motor's angle, rad."),
+    data("CONST testsignal speed_ref := 4;", "Test signal: the motor's speed reference, rad/s."),
+    data("CONST testsignal speed := 6;", "Test signal: the motor's speed, rad/s."),
+    data("CONST testsignal torque_ref := 9;", "Test signal: the motor's torque reference, Nm."),
+    data("CONST testsignal dig_input1 := 102;", "Test signal: digital input 1."),
+    data("CONST testsignal dig_input2 := 103;", "Test signal: digital input 2."),
     // ---- Load identification -----------------------------------------------------------------
     data("CONST paridnum TOOL_LOAD_ID := 1;", "Identify the tool load."),
     data("CONST paridnum PAY_LOAD_ID := 2;", "Identify the payload."),

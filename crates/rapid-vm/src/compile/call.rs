@@ -32,6 +32,19 @@ const NAME_TAKING: &[&str] = &[
     "GetTSPStatus",
     "GetMecUnitName",
     "GetServiceInfo",
+    // The mechanical-unit family: a mecunit is known by the data object passed.
+    "IsMechUnitActive",
+    "ActUnit",
+    "DeactUnit",
+    "MechUnitLoad",
+    "ReadMotor",
+    "GetMotorTorque",
+    "ParIdRobValid",
+    "SoftAct",
+    "TuneServo",
+    "SpeedLimAxis",
+    "TestSignDefine",
+    "CalcRotAxisFrame",
 ];
 
 const SIGNAL_TAKING: &[&str] = &["AliasIO", "AliasIOReset", "ValidIO", "GetSignalOrigin", "GetGroupSignalInfo"];

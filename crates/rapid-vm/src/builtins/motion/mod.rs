@@ -9,6 +9,7 @@
 //! by [`MotionState::reset`], the system data by their catalogue initial values,
 //! which equal [`Settings::default`].
 
+mod calib;
 mod data;
 mod fit;
 mod frame;
@@ -18,8 +19,12 @@ mod position;
 mod readback;
 pub mod robot;
 mod search;
+pub mod servo;
 mod settings;
+pub mod testsign;
+mod torque;
 mod trigg;
+mod units;
 pub mod zones;
 
 pub(crate) use settings::set_payload;
@@ -100,6 +105,35 @@ pub(super) static ENTRIES: Entries = &[
     ("WZEnable", zones::wz_enable),
     ("WZDisable", zones::wz_disable),
     ("WZFree", zones::wz_free),
+    ("RobName", units::rob_name),
+    ("MaxRobSpeed", units::max_rob_speed),
+    ("GetNextMechUnit", units::get_next_mech_unit),
+    ("IsMechUnitActive", units::is_mech_unit_active),
+    ("ActUnit", units::act_unit),
+    ("DeactUnit", units::deact_unit),
+    ("MechUnitLoad", units::mech_unit_load),
+    ("ReadMotor", units::read_motor),
+    ("MotionSup", servo::motion_sup),
+    ("SoftAct", servo::soft_act),
+    ("SoftDeact", servo::soft_deact),
+    ("TuneServo", servo::tune_servo),
+    ("TuneReset", servo::tune_reset),
+    ("ActEventBuffer", servo::act_event_buffer),
+    ("DeactEventBuffer", servo::deact_event_buffer),
+    ("SpeedLimAxis", servo::speed_lim_axis),
+    ("SpeedLimCheckPoint", servo::speed_lim_check_point),
+    ("PFRestart", servo::pf_restart),
+    ("TestSignDefine", testsign::test_sign_define),
+    ("TestSignReset", testsign::test_sign_reset),
+    ("TestSignRead", testsign::test_sign_read),
+    ("GetMotorTorque", torque::get_motor_torque),
+    ("ParIdRobValid", torque::par_id_rob_valid),
+    ("MToolTCPCalib", calib::m_tool_tcp_calib),
+    ("MToolRotCalib", calib::m_tool_rot_calib),
+    ("SToolTCPCalib", calib::s_tool_tcp_calib),
+    ("SToolRotCalib", calib::s_tool_rot_calib),
+    ("CalcRotAxisFrame", calib::calc_rot_axis_frame),
+    ("CalcRotAxFrameZ", calib::calc_rot_ax_frame_z),
 ];
 
 /// Where the motion family's system data and types are in the loaded program (set
@@ -214,6 +248,8 @@ pub struct MotionState {
     /// The active tool, work object and payload (GetSysData, SetSysData, GripLoad),
     /// by `controller::sysdata` kind; `None` is the default tool0, wobj0, load0.
     pub active: [Option<super::controller::sysdata::Active>; 3],
+    /// Servo tuning, soft servo, supervision, speed limits, test signals.
+    pub servo: servo::ServoState,
 }
 
 impl MotionState {
@@ -222,6 +258,9 @@ impl MotionState {
     pub fn reset(&mut self) {
         self.settings = Settings::default();
         self.active = Default::default();
+        // uncertain: that every servo and supervision setting (test signals included)
+        // goes back to its default at PP to Main, as TuneServo's and SoftAct's do.
+        self.servo = servo::ServoState::default();
     }
 }
 

@@ -1,0 +1,191 @@
+//! Mechanical units (§1.8, §1.20): RobName, MaxRobSpeed, GetNextMechUnit,
+//! IsMechUnitActive, ActUnit, DeactUnit, MechUnitLoad, ReadMotor.
+//!
+//! A `rapid run` system has one mechanical unit per motion task: the TCP robot
+//! ROB_n of the n-th motion task, in configuration order, with six axes and motion
+//! planner n (a program run alone is T_ROB1 with ROB_1). There are no external axes.
+//! A mecunit argument is known by the data object passed (ROB_1, ROB_ID), or by the
+//! unit number a GetNextMechUnit `\MecRef` wrote into it.
+
+use super::super::{argname, present, Ctx};
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::{Opaque, OpaqueState, Value};
+
+type Res = Result<Option<Value>, RapidError>;
+
+/// Axes of every unit (the six of a robot arm).
+pub(super) const ROBOT_AXES: usize = 6;
+
+/// The motion tasks of the system in configuration order: (task number from 1 among
+/// all tasks, task name). A program run alone is the motion task T_ROB1.
+fn robot_tasks(ctx: &Ctx<'_>) -> Vec<(usize, String)> {
+    let tasks = &ctx.resources.tasking.shared.tasks;
+    if tasks.is_empty() {
+        return vec![(1, ctx.resources.tasking.name().to_string())];
+    }
+    tasks.iter().enumerate().filter(|(_, t)| t.motion).map(|(i, t)| (i + 1, t.name.clone())).collect()
+}
+
+/// The unit number (from 1) of this task's robot, if it has one.
+pub(super) fn own_unit(ctx: &Ctx<'_>) -> Option<usize> {
+    let me = ctx.resources.tasking.name();
+    robot_tasks(ctx).iter().position(|(_, name)| name.eq_ignore_ascii_case(me)).map(|i| i + 1)
+}
+
+/// The unit number of `ROB_n`, if the system has it.
+fn unit_named(ctx: &Ctx<'_>, name: &str) -> Option<usize> {
+    let upper = name.to_ascii_uppercase();
+    let n: usize = upper.strip_prefix("ROB_")?.parse().ok()?;
+    (1..=robot_tasks(ctx).len()).contains(&n).then_some(n)
+}
+
+/// The unit the mecunit argument `param` stands for (its number from 1).
+// uncertain: a mecunit the system does not have (an unset variable, ROB_ID in a task
+// without a robot) raises ERR_ARGVALERR; the controller refuses such programs at
+// load time.
+pub(super) fn unit_arg(ctx: &Ctx<'_>, args: &[Value], param: usize) -> Result<usize, RapidError> {
+    if let Some(name) = argname::original_name(ctx.chain, param) {
+        if name.eq_ignore_ascii_case("ROB_ID") {
+            return own_unit(ctx).ok_or_else(|| ctx.error(Err::ArgValue, "ROB_ID: this task controls no robot"));
+        }
+        if let Some(n) = unit_named(ctx, &name) {
+            return Ok(n);
+        }
+    }
+    let handle = match args.get(param).map(|a| ctx.value(a)).transpose()? {
+        Some(Value::Opaque(opaque)) => match opaque.state {
+            OpaqueState::Handle(h) => Some(h as usize),
+            _ => None,
+        },
+        _ => None,
+    };
+    match handle {
+        Some(n) if (1..=robot_tasks(ctx).len()).contains(&n) => Ok(n),
+        _ => Err(ctx.error(Err::ArgValue, "the mechanical unit is not in the system")),
+    }
+}
+
+/// The unit of an optional `\MecUnit` argument: this task's robot when absent.
+pub(super) fn opt_unit_arg(ctx: &Ctx<'_>, args: &[Value], param: usize) -> Result<usize, RapidError> {
+    if present(args.get(param)) {
+        return unit_arg(ctx, args, param);
+    }
+    own_unit(ctx).ok_or_else(|| ctx.error(Err::ArgValue, "this task controls no robot: \\MecUnit is needed"))
+}
+
+/// Fails unless `unit` is this task's robot: the state of other tasks' robots is
+/// theirs to keep.
+pub(super) fn own_only(ctx: &Ctx<'_>, unit: usize) -> Result<(), RapidError> {
+    if own_unit(ctx) == Some(unit) {
+        return Ok(());
+    }
+    Err(RapidError::fatal(format!(
+        "ROB_{unit} belongs to another task: reading or changing it from here is not supported yet"
+    )))
+}
+
+/// An axis number 1..=6 of a robot.
+// uncertain: an axis the unit does not have raises ERR_ARGVALERR (some instructions
+// document ERR_AXIS_PAR; those check with their own error).
+pub(super) fn axis_arg(ctx: &Ctx<'_>, value: f64, err: Err) -> Result<usize, RapidError> {
+    if value.fract() == 0.0 && (1.0..=ROBOT_AXES as f64).contains(&value) {
+        return Ok(value as usize);
+    }
+    Err(ctx.error(err, format!("axis {value} is not an axis of the robot (1..6)")))
+}
+
+/// `RobName()`: the name of the TCP robot this task controls ("ROB_1"), or "" in a
+/// task without a robot (manual: RobName).
+pub(crate) fn rob_name(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+    let name = own_unit(ctx).map(|n| format!("ROB_{n}")).unwrap_or_default();
+    Ok(Some(Value::Str(name.into())))
+}
+
+/// `MaxRobSpeed()`: the highest TCP speed of the robot type, mm/s.
+pub(crate) fn max_rob_speed(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+    Ok(Some(Value::Num(ctx.resources.robot.model.tcp_speed() as f32)))
+}
+
+/// `GetNextMechUnit(ListNumber, UnitName [\MecRef] [\TCPRob] [\NoOfAxes] [\MecTaskNo]
+/// [\MotPlanNo] [\Active] [\DriveModule] [\OKToDeact])`: the unit at ListNumber (from
+/// 0) with its data, ListNumber moved on by one; FALSE (nothing written) after the
+/// last unit.
+// uncertain: each robot is taken to sit on its own drive module (number n), and a TCP
+// robot is never OK to deactivate (DeactUnit refuses it).
+pub(crate) fn get_next_mech_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let list = ctx.num(&args[0])?;
+    let robots = robot_tasks(ctx);
+    if list < 0.0 || list.fract() != 0.0 || list >= robots.len() as f64 {
+        return Ok(Some(Value::Bool(false)));
+    }
+    let n = list as usize + 1;
+    let task_no = robots[n - 1].0;
+    ctx.store(&args[0], Value::Num((list + 1.0) as f32))?;
+    ctx.store(&args[1], Value::Str(format!("ROB_{n}").into()))?;
+    if let Some(mec_ref) = args.get(2).filter(|a| present(Some(a))) {
+        let (shell, _) = ctx.handle_arg(mec_ref, "a mecunit")?;
+        let unit = Opaque { ty: shell.ty, state: OpaqueState::Handle(n as u32) };
+        ctx.store(mec_ref, Value::Opaque(Box::new(unit)))?;
+    }
+    let outputs = [
+        Value::Bool(true),
+        Value::Num(ROBOT_AXES as f32),
+        Value::Num(task_no as f32),
+        Value::Num(n as f32),
+        Value::Bool(true),
+        Value::Num(n as f32),
+        Value::Bool(false),
+    ];
+    for (arg, value) in args.iter().skip(3).zip(outputs) {
+        if present(Some(arg)) {
+            ctx.store(arg, value)?;
+        }
+    }
+    Ok(Some(Value::Bool(true)))
+}
+
+/// `IsMechUnitActive(MechUnit)`: TRUE; every unit here is a TCP robot, and those are
+/// always active.
+pub(crate) fn is_mech_unit_active(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    unit_arg(ctx, args, 0)?;
+    Ok(Some(Value::Bool(true)))
+}
+
+/// `ActUnit MechUnit`: the unit becomes active; a TCP robot already is.
+// uncertain: ActUnit of a TCP robot is taken to be allowed and change nothing.
+pub(crate) fn act_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    unit_arg(ctx, args, 0)?;
+    Ok(None)
+}
+
+/// `DeactUnit MechUnit`: a TCP robot cannot be deactivated (manual: DeactUnit), and
+/// the system has no other units; execution stops.
+pub(crate) fn deact_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let n = unit_arg(ctx, args, 0)?;
+    Err(RapidError::fatal(format!("DeactUnit: ROB_{n} is a TCP robot, which cannot be deactivated")))
+}
+
+/// `MechUnitLoad MechUnit, AxisNo, Load`: the payload of an external mechanical
+/// unit. The only units here are TCP robots, whose payload GripLoad sets: execution
+/// stops.
+// uncertain: the controller's reaction to MechUnitLoad on a TCP robot is not public.
+pub(crate) fn mech_unit_load(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let n = unit_arg(ctx, args, 0)?;
+    axis_arg(ctx, ctx.num(&args[1])?, Err::ArgValue)?;
+    Err(RapidError::fatal(format!(
+        "MechUnitLoad: ROB_{n} is a TCP robot; its payload is set with GripLoad (no external units here)"
+    )))
+}
+
+/// `ReadMotor([\MecUnit,] Axis)`: the motor angle of an axis, radians.
+// uncertain: ABB's gear ratios are not public; a ratio of 1 is used for every axis,
+// so the motor angle is the axis angle in radians (also in GetMotorTorque).
+pub(crate) fn read_motor(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let unit = opt_unit_arg(ctx, args, 0)?;
+    own_only(ctx, unit)?;
+    let axis = axis_arg(ctx, ctx.num(&args[1])?, Err::ArgValue)?;
+    let now = ctx.time;
+    let joints = ctx.resources.robot.joints_at(now);
+    Ok(Some(Value::Num(joints[axis - 1].to_radians() as f32)))
+}
