@@ -149,6 +149,7 @@ fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32), places: &Places) -
         speed.v_tcp = v;
     }
     let request = MoveRequest { target, speed, zone: rapid_motion::plan::ZoneData::FINE, tool: chain.tframe };
+    super::moves::note_facts(ctx, &request, &chain);
     let settings = super::moves::planner_settings(ctx);
     let now = ctx.time;
     let robot = &mut ctx.resources.robot;
