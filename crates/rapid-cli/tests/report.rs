@@ -202,3 +202,88 @@ fn the_report_draws_in_a_headless_browser() {
     assert!(body.contains("data-drawn=\"yes\""), "the page did not draw: {body}");
     assert!(!body.contains("data-errors") || body.contains("data-errors=\"0\""), "script errors: {body}");
 }
+
+/// The cells of the table row of move `n` (1-based) in a report page.
+fn table_row(page: &str, n: usize) -> Vec<String> {
+    let row = page.split("<tr class=\"move\"").nth(n).expect("the row");
+    let row = &row[..row.find("</tr>").expect("the row's end")];
+    row.split("<td").skip(1).map(|cell| cell[cell.find('>').map_or(0, |i| i + 1)..].replace("</td>", "")).collect()
+}
+
+#[test]
+fn a_paused_move_and_a_search_stopped_at_its_hit_keep_their_lines() {
+    let dir = scratch("pause");
+    // A one-task backup: a MoveL that a trap stops for 0.5 s (StopMove … StartMove),
+    // then a SearchL \Stop that the probe input stops 0.5 s after it starts.
+    let module = "MODULE S\n\
+        CONST robtarget p0 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];\n\
+        VAR intnum stopint;\n\
+        VAR robtarget hit;\n\
+        PROC main()\n\
+        MoveJ p0, v1000, fine, tool0;\n\
+        CONNECT stopint WITH on_stop;\n\
+        ISignalDI diStop, 1, stopint;\n\
+        SetDO doStart, 1;\n\
+        MoveL Offs(p0, 100, 0, 0), v100, fine, tool0;\n\
+        IDelete stopint;\n\
+        SetDO doSearch, 1;\n\
+        SearchL \\Stop, diProbe, hit, p0, v100, tool0;\n\
+        ENDPROC\n\
+        TRAP on_stop\n\
+        StopMove;\n\
+        WaitDI diGo, 1;\n\
+        StartMove;\n\
+        ENDTRAP\n\
+        ENDMODULE\n";
+    let sys = dir.join("sys");
+    std::fs::create_dir_all(sys.join("RAPID/TASK1/PROGMOD")).expect("task folder");
+    std::fs::create_dir_all(sys.join("SYSPAR")).expect("syspar");
+    std::fs::write(sys.join("RAPID/TASK1/PROGMOD/Main.mod"), module).expect("module");
+    std::fs::write(
+        sys.join("SYSPAR/SYS.cfg"),
+        "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n",
+    )
+    .expect("SYS.cfg");
+    let signals: String = ["doStart\" -SignalType \"DO", "doSearch\" -SignalType \"DO", "diStop\" -SignalType \"DI"]
+        .iter()
+        .chain(&["diGo\" -SignalType \"DI", "diProbe\" -SignalType \"DI"])
+        .map(|s| format!("\n      -Name \"{s}\"\n"))
+        .collect();
+    std::fs::write(sys.join("SYSPAR/EIO.cfg"), format!("EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n{signals}")).expect("EIO");
+    std::fs::write(
+        dir.join("stim"),
+        "when doStart = 1 after 0.3 s set diStop 1\nwhen doStart = 1 after 0.8 s set diGo 1\n\
+         when doSearch = 1 after 0.5 s set diProbe 1\n",
+    )
+    .expect("stimulus");
+    let out = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .current_dir(&dir)
+        .args(["run", "--quiet", "--stimulus", "stim", "--trace", "t.csv", "--report", "r.html", "sys"])
+        .output()
+        .expect("run rapid");
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let page = std::fs::read_to_string(dir.join("r.html")).expect("the report");
+    assert_eq!(page.matches("<tr class=\"move\"").count(), 3);
+    let duration = |n: usize| -> f64 { table_row(&page, n)[5].parse().expect("a duration") };
+    // The MoveL: 100 mm at 100 mm/s to a stop point, 1.06 s (1.01 s and the 0.05 s
+    // settle), and the 0.5 s it stood between StopMove (0.3 s) and StartMove (0.8 s).
+    assert_eq!(table_row(&page, 2)[1], "MoveL");
+    assert!((duration(2) - 1.56).abs() < 0.01, "{}", duration(2));
+    // The search stops at its hit, 0.5 s after it started.
+    assert_eq!(table_row(&page, 3)[1], "SearchL");
+    assert!((duration(3) - 0.5).abs() < 0.01, "{}", duration(3));
+
+    let csv = std::fs::read_to_string(dir.join("t.csv")).expect("the trace");
+    let rows: Vec<Vec<&str>> = csv.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    let on =
+        |line: usize| -> Vec<&Vec<&str>> { rows.iter().filter(|r| r[22].ends_with(&format!(":{line}"))).collect() };
+    // The MoveL is line 10 of the module: while it stood (0.5 s, 125 samples at 4 ms)
+    // its rows name it with the TCP at rest.
+    let standing = on(10).iter().filter(|r| r[21] == "0.00").count();
+    assert!(standing >= 124, "{standing} standing rows of the MoveL");
+    // The SearchL (line 13) from x = 400 back to 300 at 100 mm/s, stopped at the hit
+    // after 0.5 s: 0.5 mm in its first 0.01 s of ramp, then 100 mm/s, so x = 400 - 49.5.
+    let last = on(13).last().copied().expect("rows of the search").clone();
+    let x: f64 = last[7].parse().expect("x");
+    assert!((x - 350.5).abs() < 0.5, "{x}");
+}
