@@ -157,36 +157,51 @@ pub(crate) struct Point {
     pub(crate) facts: Option<usize>,
 }
 
-/// Finds the facts of the move a time falls in, for times that only grow.
+/// Finds the facts of the move a time falls in, for times that only grow, and places
+/// the robot in that move's frames.
 pub(crate) struct FactsCursor<'a> {
     facts: &'a [MoveFacts],
     at: usize,
+    /// The world frame to the work object of move `at` (computed once per move).
+    to_object: Pose,
 }
 
 impl<'a> FactsCursor<'a> {
     pub(crate) fn new(facts: &'a [MoveFacts]) -> FactsCursor<'a> {
-        FactsCursor { facts, at: 0 }
+        FactsCursor { facts, at: 0, to_object: facts.first().map_or(Pose::identity(), object_frame_inverse) }
     }
 
     /// The robot at `sample`, placed in the frames of the move it is on.
     pub(crate) fn locate(&mut self, sample: Sample) -> Point {
         let t = sample.time;
+        let moved = self.at;
         while self.at + 1 < self.facts.len() && t >= self.facts[self.at].end && t >= self.facts[self.at + 1].start {
             self.at += 1;
         }
         let Some(facts) = self.facts.get(self.at) else {
             return Point { sample, world: sample.tcp, object: sample.tcp, facts: None };
         };
-        // The planner's TCP is the flange carrying the move's tool frame.
-        let frames = &facts.frames;
-        let flange = sample.tcp * frames.tframe.inverse();
-        Point {
-            sample,
-            world: frames.tcp_in_world(&flange),
-            object: frames.tcp_in_object(&flange),
-            facts: Some(self.at),
+        if self.at != moved {
+            self.to_object = object_frame_inverse(facts);
         }
+        let frames = &facts.frames;
+        let (world, object) = if frames.stationary_tool {
+            // The planner's TCP is the flange carrying the tool frame.
+            let flange = sample.tcp * frames.tframe.inverse();
+            (frames.tcp_in_world(&flange), frames.tcp_in_object(&flange))
+        } else {
+            // The planner's TCP is the tool's, in the base frame; the work object is
+            // fixed in the world.
+            let world = frames.base * sample.tcp;
+            (world, self.to_object * world)
+        };
+        Point { sample, world, object, facts: Some(self.at) }
     }
+}
+
+/// The world frame seen from a move's work object: (user frame · object frame)⁻¹.
+fn object_frame_inverse(facts: &MoveFacts) -> Pose {
+    (facts.frames.uframe * facts.frames.oframe).inverse()
 }
 
 /// The trace's columns, in order.
@@ -217,14 +232,14 @@ pub(crate) const TRACE_COLUMNS: [&str; 23] = [
 ];
 
 /// The numbers of a trace row with their decimals (all columns but `line`).
-fn row_numbers(p: &Point) -> [(f64, u32); 22] {
+fn row_numbers(p: &Point, time_decimals: u32) -> [(f64, u32); 22] {
     let s = &p.sample;
     let w = p.world.translation.vector;
     let o = p.object.translation.vector;
     let [q1, q2, q3, q4] = rapid_motion::pose::orient(&p.world);
     let [r1, r2, r3, r4] = rapid_motion::pose::orient(&p.object);
     [
-        (s.time, 3),
+        (s.time, time_decimals),
         (s.joints[0], 4),
         (s.joints[1], 4),
         (s.joints[2], 4),
@@ -257,6 +272,8 @@ fn write_trace(robot: &RobotState, places: &[String], path: &Path, sample_ms: f6
     }
     let json = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"));
     let step = sample_ms / 1000.0;
+    // Milliseconds while the period is whole milliseconds, else tenths of them.
+    let time_decimals = if sample_ms.fract() == 0.0 { 3 } else { 4 };
     // Each move's place once, quoted for the format.
     let quoted: Vec<String> = places.iter().map(|p| if json { json_string(p) } else { csv_field(p) }).collect();
     let empty = if json { "\"\"".to_string() } else { String::new() };
@@ -273,7 +290,7 @@ fn write_trace(robot: &RobotState, places: &[String], path: &Path, sample_ms: f6
             if json {
                 out.push_str(if rows == 0 { "\n[" } else { ",\n[" });
             }
-            for (value, decimals) in row_numbers(&point) {
+            for (value, decimals) in row_numbers(&point, time_decimals) {
                 push_number(&mut out, value, decimals, json);
                 out.push(',');
             }

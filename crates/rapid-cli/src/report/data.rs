@@ -84,7 +84,7 @@ fn round(x: f64, decimals: i32) -> f64 {
 }
 
 /// The page's data for a run.
-pub(super) fn collect(out: &RunOutputs<'_>, _places: &[String]) -> Data {
+pub(super) fn collect(out: &RunOutputs<'_>) -> Data {
     let robot = out.robot;
     let model = robot.model;
     let facts = &robot.recorded_facts;
@@ -176,16 +176,14 @@ fn push_point(
 fn signals(io: Option<&rapid_io::IoSystem>) -> (Vec<SignalView>, usize) {
     let mut views: Vec<SignalView> = Vec::new();
     let Some(io) = io else { return (views, 0) };
+    let mut rows: rustc_hash::FxHashMap<&str, usize> = rustc_hash::FxHashMap::default();
     let changes = io.changes();
     for change in changes.iter().take(MAX_CHANGES) {
         let name = change.signal.as_ref();
-        let at = match views.iter().position(|v| v.name == name) {
-            Some(at) => at,
-            None => {
-                views.push(SignalView { name: name.to_string(), first: round(change.old, 6), steps: Vec::new() });
-                views.len() - 1
-            }
-        };
+        let at = *rows.entry(name).or_insert_with(|| {
+            views.push(SignalView { name: name.to_string(), first: round(change.old, 6), steps: Vec::new() });
+            views.len() - 1
+        });
         views[at].steps.push([round(change.time, 4), round(change.new, 6)]);
     }
     (views, changes.len().saturating_sub(MAX_CHANGES))

@@ -17,7 +17,7 @@ use crate::motion_out::RunOutputs;
 
 /// Writes the report page of a run, atomically.
 pub(crate) fn write(path: &Path, out: &RunOutputs<'_>, places: &[String]) -> anyhow::Result<()> {
-    let data = data::collect(out, places);
+    let data = data::collect(out);
     let page = html::page(out, places, &data)?;
     crate::save::write_new(path, page.as_bytes())
 }

@@ -80,6 +80,25 @@ pub struct MoveFacts {
     pub corner_path_failure: bool,
 }
 
+impl MoveFacts {
+    /// The facts of a move no instruction described: where it ends, nothing else.
+    fn unknown(point: rapid_motion::Pose) -> MoveFacts {
+        MoveFacts {
+            instruction: "",
+            file: usize::MAX,
+            span: rapid_syntax::Span::default(),
+            point,
+            zone: 0.0,
+            fine: true,
+            frames: FrameChain::default(),
+            start: 0.0,
+            end: 0.0,
+            zone_used: 0.0,
+            corner_path_failure: false,
+        }
+    }
+}
+
 /// The step path distances are measured at, s.
 const DISTANCE_STEP: f64 = 0.001;
 
@@ -254,13 +273,17 @@ impl RobotState {
         self.motion_end = self.motion_end.max(planned.end);
         if let Some(recorded) = &mut self.recorded {
             recorded.push(planned.clone());
-            if let Some(mut facts) = self.pending_facts.pop_front().flatten() {
-                facts.start = planned.start;
-                facts.end = planned.end;
-                facts.zone_used = planned.zone;
-                facts.corner_path_failure = planned.corner_path_failure;
-                self.recorded_facts.push(facts);
-            }
+            // A move given without its facts still gets a record, so that every
+            // recorded move has one and the times line up.
+            let mut facts = match self.pending_facts.pop_front().flatten() {
+                Some(facts) => facts,
+                None => MoveFacts::unknown(self.kin.forward(&planned.end_joints) * planned.tool()),
+            };
+            facts.start = planned.start;
+            facts.end = planned.end;
+            facts.zone_used = planned.zone;
+            facts.corner_path_failure = planned.corner_path_failure;
+            self.recorded_facts.push(facts);
         }
         self.ahead.push_back(planned);
     }
