@@ -25,6 +25,9 @@
   var BAD = "#c62828";
   var AXIS_COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b", "#d62728"];
   var FONT = "13px 'Segoe UI', 'Helvetica Neue', Arial, sans-serif";
+  // The plots' margins left and right of the time axis, CSS pixels.
+  var PLOT_LEFT = 58;
+  var PLOT_RIGHT = 12;
   var SMALL = "12px 'Segoe UI', 'Helvetica Neue', Arial, sans-serif";
 
   var data;
@@ -36,6 +39,26 @@
   }
   var path = data.path;
   var selected = -1;
+  // The time the pointer is at in a plot (s), shown in every plot and on the path.
+  var hoverT = null;
+
+  // The index of the path point nearest time `t` (the times grow).
+  function nearestIndex(t) {
+    var lo = 0;
+    var hi = path.t.length - 1;
+    if (hi < 0) {
+      return -1;
+    }
+    while (hi - lo > 1) {
+      var mid = (lo + hi) >> 1;
+      if (path.t[mid] <= t) {
+        lo = mid;
+      } else {
+        hi = mid;
+      }
+    }
+    return Math.abs(path.t[hi] - t) < Math.abs(path.t[lo] - t) ? hi : lo;
+  }
 
   // ---- helpers -------------------------------------------------------------
 
@@ -307,6 +330,25 @@
     });
   }
 
+  // Where the robot was at the time the pointer is at in a plot.
+  function drawHoverPoint(ctx, project) {
+    var i = hoverT === null ? -1 : nearestIndex(hoverT);
+    if (i < 0) {
+      return;
+    }
+    var p = project(path.x[i], path.y[i], path.z[i]);
+    ctx.fillStyle = "#ffffff";
+    ctx.strokeStyle = INK;
+    ctx.lineWidth = 2.5;
+    ctx.beginPath();
+    ctx.arc(p.x, p.y, 7, 0, 2 * Math.PI);
+    ctx.fill();
+    ctx.stroke();
+    ctx.font = FONT;
+    ctx.fillStyle = INK;
+    ctx.fillText("t = " + path.t[i].toFixed(3) + " s · " + path.v[i].toFixed(0) + " mm/s", p.x + 12, p.y + 18);
+  }
+
   function draw3d() {
     var canvas = view3d.canvas;
     var width = canvas.clientWidth || 960;
@@ -319,6 +361,7 @@
     drawBase(ctx, project);
     drawPath(ctx, project);
     drawPoints(ctx, project);
+    drawHoverPoint(ctx, project);
     ctx.fillStyle = MUTED;
     ctx.font = SMALL;
     ctx.fillText("floor grid: " + grid + " mm · world frame, mm", 10, height - 10);
@@ -407,8 +450,8 @@
       var width = canvas.clientWidth || 400;
       var height = spec.height || 190;
       var ctx = prepare(canvas, width, height);
-      var left = 58;
-      var right = 12;
+      var left = PLOT_LEFT;
+      var right = PLOT_RIGHT;
       var top = 24;
       var bottom = 38;
       var tEnd = Math.max(data.cycle, path.t.length ? path.t[path.t.length - 1] : 0, 1e-3);
@@ -507,6 +550,28 @@
         ctx.stroke();
       });
       ctx.restore();
+      var at = hoverT === null ? -1 : nearestIndex(hoverT);
+      if (at >= 0) {
+        var hx = Math.round(px(path.t[at])) + 0.5;
+        ctx.strokeStyle = INK;
+        ctx.lineWidth = 1;
+        ctx.beginPath();
+        ctx.moveTo(hx, top);
+        ctx.lineTo(hx, height - bottom);
+        ctx.stroke();
+        ctx.font = SMALL;
+        var readout = spec.series.map(function (s) {
+          return s.y[at].toFixed(1);
+        }).join(", ");
+        var text = readout + " " + spec.unit + " at " + path.t[at].toFixed(3) + " s";
+        var textWidth = ctx.measureText(text).width;
+        var tx = hx > width / 2 ? hx - 6 - textWidth : hx + 6;
+        ctx.textAlign = "left";
+        ctx.fillStyle = "rgba(255,255,255,0.9)";
+        ctx.fillRect(tx - 3, top + 3, textWidth + 6, 16);
+        ctx.fillStyle = INK;
+        ctx.fillText(text, tx, top + 15);
+      }
       ctx.fillStyle = INK;
       ctx.font = "600 " + FONT;
       ctx.fillText(spec.title, left, 16);
@@ -519,7 +584,35 @@
       ctx.textAlign = "left";
     };
     draw();
+    // The pointer's time, shown in every plot and on the path.
+    canvas.addEventListener("pointermove", function (e) {
+      var box = canvas.getBoundingClientRect();
+      var tEnd = Math.max(data.cycle, path.t.length ? path.t[path.t.length - 1] : 0, 1e-3);
+      var f = (e.clientX - box.left - PLOT_LEFT) / Math.max(1, box.width - PLOT_LEFT - PLOT_RIGHT);
+      hoverT = f >= 0 && f <= 1 ? f * tEnd : null;
+      scheduleRedraw();
+    });
+    canvas.addEventListener("pointerleave", function () {
+      hoverT = null;
+      scheduleRedraw();
+    });
     return draw;
+  }
+
+  // Redraws every view once per frame at most.
+  var pending = false;
+  function scheduleRedraw() {
+    if (pending) {
+      return;
+    }
+    pending = true;
+    window.requestAnimationFrame(function () {
+      pending = false;
+      draw3d();
+      redrawPlots.forEach(function (redraw) {
+        redraw();
+      });
+    });
   }
 
   var redrawPlots = [];
