@@ -463,7 +463,11 @@ fn instruction_here(ctx: &Ctx<'_>) -> (&'static str, usize, rapid_syntax::Span) 
     use crate::ir::{Callee, Instr};
     let Some(frame) = ctx.chain.last() else { return ("", usize::MAX, rapid_syntax::Span::default()) };
     let (code, pc) = frame.position();
-    let span = code.stmt_at(pc).map_or(code.span, |s| s.span);
+    // The innermost statement holding `pc` (as `Code::stmt_at`), found by halving:
+    // statements are in order of their start, and a generated module of 100,000
+    // moves in one routine must not cost a scan per move.
+    let upto = code.stmts.partition_point(|s| s.start <= pc);
+    let span = code.stmts[..upto].iter().rev().find(|s| pc < s.end).map_or(code.span, |s| s.span);
     let name = match code.instrs.get(pc as usize) {
         Some(Instr::Call(site)) => match code.sites.get(*site as usize).map(|s| s.callee) {
             Some(Callee::Builtin(id)) => crate::builtins::name(id),
