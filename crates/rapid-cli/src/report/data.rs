@@ -135,10 +135,11 @@ fn series(out: &RunOutputs<'_>) -> Series {
         let grid = planned.samples(&robot.kin, step).map(|s| s.time);
         let times = ends.then_some(planned.start).into_iter().chain(grid).chain(ends.then_some(planned.end));
         for t in times {
-            if t <= last_t || series.t.len() >= MAX_POINTS {
+            // Compared as the page holds them (to 0.1 ms), so its times strictly grow.
+            if round(t, 4) <= last_t || series.t.len() >= MAX_POINTS {
                 continue;
             }
-            last_t = t;
+            last_t = round(t, 4);
             push_point(&mut series, &mut cursor, robot, planned, t);
         }
     }
@@ -187,4 +188,54 @@ fn signals(io: Option<&rapid_io::IoSystem>) -> (Vec<SignalView>, usize) {
         views[at].steps.push([round(change.time, 4), round(change.new, 6)]);
     }
     (views, changes.len().saturating_sub(MAX_CHANGES))
+}
+
+#[cfg(test)]
+mod tests {
+    use rapid_motion::plan::{MoveRequest, SpeedData, Target, ZoneData};
+    use rapid_vm::builtins::motion::robot::RobotState;
+
+    use super::{MAX_MOVES, MAX_POINTS};
+    use crate::motion_out::RunOutputs;
+
+    /// A robot that made `n` small joint moves to stop points (axis 1 to ±1°).
+    fn robot_with_moves(n: usize) -> RobotState {
+        let mut robot = RobotState::new(rapid_motion::default_model());
+        robot.record();
+        let mut now = 0.0;
+        for i in 0..n {
+            let a1 = if i % 2 == 0 { 1.0 } else { -1.0 };
+            let request = MoveRequest {
+                target: Target::Joints([a1, 0.0, 0.0, 0.0, 30.0, 0.0]),
+                speed: SpeedData::VMAX,
+                zone: ZoneData::FINE,
+                tool: rapid_motion::Pose::identity(),
+            };
+            now = robot.push(now, &request, false, Vec::new()).expect("a reachable move");
+        }
+        robot
+    }
+
+    #[test]
+    fn the_page_keeps_its_bounds_for_many_moves() {
+        let robot = robot_with_moves(MAX_MOVES + 5);
+        let sources = |_: usize| None;
+        let out = RunOutputs {
+            robot: &robot,
+            sources: &sources,
+            io: None,
+            program: "many.mod".into(),
+            task: "T_ROB1",
+            cycle: robot.motion_end,
+        };
+        let data = super::collect(&out);
+        let t = &data.path.t;
+        assert!(t.len() <= MAX_POINTS && t.len() > MAX_POINTS / 2, "{} points", t.len());
+        assert!(t.windows(2).all(|w| w[0] < w[1]), "times grow");
+        assert_eq!(data.moves.len(), MAX_MOVES);
+        let places = vec![String::new(); robot.recorded_facts.len()];
+        let page = super::super::html::page(&out, &places, &data).expect("a page");
+        assert_eq!(page.matches("<tr class=\"move\"").count(), MAX_MOVES);
+        assert!(page.contains("… 5 more moves not listed"));
+    }
 }
