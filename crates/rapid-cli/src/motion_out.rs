@@ -200,6 +200,9 @@ impl<'a> FactsCursor<'a> {
 }
 
 /// The world frame seen from a move's work object: (user frame · object frame)⁻¹.
+// uncertain: the trace's work-object pose is in the object frame without the program
+// displacement (PDispOn/EOffsOn not applied), unlike CRobT, which we take to report in
+// the displaced frame (FrameChain::target_of).
 fn object_frame_inverse(facts: &MoveFacts) -> Pose {
     (facts.frames.uframe * facts.frames.oframe).inverse()
 }
