@@ -93,10 +93,18 @@ pub(crate) struct RunArgs {
     #[arg(long, value_name = "MODEL")]
     pub(crate) robot: Option<String>,
 
-    /// When the program ends, write the robot's trajectory to FILE as CSV: time, axis
-    /// values, TCP position and orientation in the base frame, TCP speed.
+    /// When the program ends, write the robot's trajectory to FILE, as JSON when FILE
+    /// ends in `.json`, else CSV: time, axis values, TCP pose in the world frame and in
+    /// the active work object, TCP speed, and the program line of the move (see
+    /// docs/trace.md).
     #[arg(long, value_name = "FILE")]
     pub(crate) trace: Option<PathBuf>,
+
+    /// When the program ends, write a run report to FILE: one self-contained HTML page
+    /// with the 3D TCP path, joint and I/O plots and the table of moves (see
+    /// docs/report.md).
+    #[arg(long, value_name = "FILE.html")]
+    pub(crate) report: Option<PathBuf>,
 
     /// The trace's sample period in milliseconds (the controller's is 4).
     #[arg(long, value_name = "MS", default_value_t = 4.0)]

@@ -7,6 +7,7 @@ mod elog;
 mod inputs;
 mod motion_out;
 mod render;
+mod report;
 mod save;
 mod stimulus;
 mod virtual_io;

@@ -1,6 +1,7 @@
 //! The robot around a run: which model moves (`--robot`, else the backup's MOC.cfg
 //! robot type, else the default), and what a run that moved it reports: the cycle
-//! time on stderr and, with `--trace`, the trajectory as CSV.
+//! time on stderr, with `--trace` the trajectory as CSV or JSON (docs/trace.md), with
+//! `--report` a page of it (`crate::report`).
 
 // The CLI is the one crate that talks to the terminal.
 #![allow(clippy::print_stderr)]
@@ -8,8 +9,12 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use rapid_motion::plan::PlannedMove;
-use rapid_vm::builtins::motion::robot::RobotState;
+use rapid_motion::plan::{PlannedMove, Sample};
+use rapid_motion::Pose;
+use rapid_sema::SourceInput;
+use rapid_syntax::LineIndex;
+use rapid_vm::builtins::motion::robot::{MoveFacts, RobotState};
+use rustc_hash::FxHashMap;
 
 use crate::args::RunArgs;
 
@@ -48,23 +53,23 @@ pub(crate) fn choose_model(
     })
 }
 
-/// Sets the task's robot up for the run.
+/// Sets the task's robot up for the run: a trace or a report records every move.
 pub(crate) fn configure(robot: &mut RobotState, model: &'static rapid_motion::RobotModel, args: &RunArgs) {
     *robot = RobotState::new(model);
-    if args.trace.is_some() {
+    if args.trace.is_some() || args.report.is_some() {
         robot.record();
     }
 }
 
 /// After the run: the robot finishes its last move; the cycle time (program and
-/// motion, whichever ends later) is printed unless `--quiet`, and the trace written.
+/// motion, whichever ends later) is printed unless `--quiet`, and returned.
 pub(crate) fn finish(
     resources: &mut rapid_vm::builtins::Resources,
     program_end: f64,
     task: &str,
     note: Option<&str>,
     args: &RunArgs,
-) -> anyhow::Result<()> {
+) -> anyhow::Result<f64> {
     let motion_end = resources.robot.flush();
     // Outputs the last moves set as the robot passed their points (Move*DO …).
     for (time, action) in std::mem::take(&mut resources.robot.due) {
@@ -75,70 +80,266 @@ pub(crate) fn finish(
     // orders due by then (delayed sets, pulse ends, path events) have happened.
     resources.io.advance(program_end.max(motion_end));
     let robot = &mut resources.robot;
+    let cycle = program_end.max(motion_end);
     if robot.moves == 0 {
-        return Ok(());
+        return Ok(cycle);
     }
     if !args.quiet {
         if let Some(note) = note {
             eprintln!("note: {note}");
         }
-        let cycle = program_end.max(motion_end);
         let failures = match robot.corner_path_failures {
             0 => String::new(),
             n => format!(", {n} corner path failure(s): a fly-by point became a stop point"),
         };
         eprintln!("cycle time {task}: {cycle:.3} s ({} moves, {}{failures})", robot.moves, robot.model.name);
     }
+    Ok(cycle)
+}
+
+/// What a run's trace and report are made of: the motion task's robot (taken out of
+/// the finished task) and where its moves' instructions are.
+pub(crate) struct RunOutputs<'a> {
+    pub(crate) robot: &'a RobotState,
+    /// The program file of a VM file index (the task's files, then modules loaded at
+    /// run time).
+    pub(crate) sources: &'a dyn Fn(usize) -> Option<&'a SourceInput>,
+    /// The I/O system whose change log the report shows.
+    pub(crate) io: Option<&'a rapid_io::IoSystem>,
+    /// The program's name (its first file or folder), the task and the cycle time.
+    pub(crate) program: String,
+    pub(crate) task: &'a str,
+    pub(crate) cycle: f64,
+}
+
+/// Writes `--trace` and `--report`, when asked for.
+pub(crate) fn write_outputs(out: &RunOutputs<'_>, args: &RunArgs) -> anyhow::Result<()> {
+    if args.trace.is_none() && args.report.is_none() {
+        return Ok(());
+    }
+    let places = move_places(out);
     if let Some(path) = &args.trace {
-        write_trace(robot, path, args.sample)?;
+        write_trace(out.robot, &places, path, args.sample)?;
+    }
+    if let Some(path) = &args.report {
+        crate::report::write(path, out, &places)?;
     }
     Ok(())
 }
 
-/// The trajectory sampled every `sample_ms`, as CSV, written atomically.
-fn write_trace(robot: &RobotState, path: &Path, sample_ms: f64) -> anyhow::Result<()> {
+/// The program's name for the report: the first path's file or folder name.
+pub(crate) fn program_name(args: &RunArgs) -> String {
+    let first = args.paths.first().and_then(|p| p.file_name());
+    first.map_or_else(|| "program".to_string(), |name| name.to_string_lossy().into_owned())
+}
+
+/// `path:line` of each recorded move's instruction (empty when unknown), made once
+/// per move rather than per sample.
+fn move_places(out: &RunOutputs<'_>) -> Vec<String> {
+    let mut indexes: FxHashMap<usize, LineIndex> = FxHashMap::default();
+    let facts = &out.robot.recorded_facts;
+    facts
+        .iter()
+        .map(|f| {
+            let Some(input) = (out.sources)(f.file) else { return String::new() };
+            let index = indexes.entry(f.file).or_insert_with(|| LineIndex::new(&input.text));
+            format!("{}:{}", input.path, index.line_col(&input.text, f.span.start).line)
+        })
+        .collect()
+}
+
+/// A sample of the recorded trajectory with the TCP in the world frame and in the
+/// move's work object, and the index of the move's facts.
+pub(crate) struct Point {
+    pub(crate) sample: Sample,
+    pub(crate) world: Pose,
+    pub(crate) object: Pose,
+    pub(crate) facts: Option<usize>,
+}
+
+/// Finds the facts of the move a time falls in, for times that only grow, and places
+/// the robot in that move's frames.
+pub(crate) struct FactsCursor<'a> {
+    facts: &'a [MoveFacts],
+    at: usize,
+    /// The world frame to the work object of move `at` (computed once per move).
+    to_object: Pose,
+}
+
+impl<'a> FactsCursor<'a> {
+    pub(crate) fn new(facts: &'a [MoveFacts]) -> FactsCursor<'a> {
+        FactsCursor { facts, at: 0, to_object: facts.first().map_or(Pose::identity(), object_frame_inverse) }
+    }
+
+    /// The robot at `sample`, placed in the frames of the move it is on.
+    pub(crate) fn locate(&mut self, sample: Sample) -> Point {
+        let t = sample.time;
+        let moved = self.at;
+        while self.at + 1 < self.facts.len() && t >= self.facts[self.at].end && t >= self.facts[self.at + 1].start {
+            self.at += 1;
+        }
+        let Some(facts) = self.facts.get(self.at) else {
+            return Point { sample, world: sample.tcp, object: sample.tcp, facts: None };
+        };
+        if self.at != moved {
+            self.to_object = object_frame_inverse(facts);
+        }
+        let frames = &facts.frames;
+        let (world, object) = if frames.stationary_tool {
+            // The TCP stands still; the robot carries the work object past it.
+            (frames.tcp_in_world(&sample.flange), frames.tcp_in_object(&sample.flange))
+        } else {
+            // The planner's TCP is the tool's, in the base frame; the work object is
+            // fixed in the world.
+            let world = frames.base * sample.tcp;
+            (world, self.to_object * world)
+        };
+        Point { sample, world, object, facts: Some(self.at) }
+    }
+}
+
+/// The world frame seen from a move's work object: (user frame · object frame)⁻¹.
+// uncertain: the trace's work-object pose is in the object frame without the program
+// displacement (PDispOn/EOffsOn not applied), unlike CRobT, which we take to report in
+// the displaced frame (FrameChain::target_of).
+fn object_frame_inverse(facts: &MoveFacts) -> Pose {
+    (facts.frames.uframe * facts.frames.oframe).inverse()
+}
+
+/// The trace's columns, in order.
+pub(crate) const TRACE_COLUMNS: [&str; 23] = [
+    "time",
+    "j1",
+    "j2",
+    "j3",
+    "j4",
+    "j5",
+    "j6",
+    "x",
+    "y",
+    "z",
+    "q1",
+    "q2",
+    "q3",
+    "q4",
+    "wx",
+    "wy",
+    "wz",
+    "wq1",
+    "wq2",
+    "wq3",
+    "wq4",
+    "tcp_speed",
+    "line",
+];
+
+/// The numbers of a trace row with their decimals (all columns but `line`).
+fn row_numbers(p: &Point, time_decimals: u32) -> [(f64, u32); 22] {
+    let s = &p.sample;
+    let w = p.world.translation.vector;
+    let o = p.object.translation.vector;
+    let [q1, q2, q3, q4] = rapid_motion::pose::orient(&p.world);
+    let [r1, r2, r3, r4] = rapid_motion::pose::orient(&p.object);
+    [
+        (s.time, time_decimals),
+        (s.joints[0], 4),
+        (s.joints[1], 4),
+        (s.joints[2], 4),
+        (s.joints[3], 4),
+        (s.joints[4], 4),
+        (s.joints[5], 4),
+        (w.x, 3),
+        (w.y, 3),
+        (w.z, 3),
+        (q1, 6),
+        (q2, 6),
+        (q3, 6),
+        (q4, 6),
+        (o.x, 3),
+        (o.y, 3),
+        (o.z, 3),
+        (r1, 6),
+        (r2, 6),
+        (r3, 6),
+        (r4, 6),
+        (s.tcp_speed, 2),
+    ]
+}
+
+/// The trajectory sampled every `sample_ms`, as CSV or (for a `.json` path) JSON,
+/// written atomically (the format: docs/trace.md).
+fn write_trace(robot: &RobotState, places: &[String], path: &Path, sample_ms: f64) -> anyhow::Result<()> {
     if !(sample_ms.is_finite() && sample_ms >= 0.1) {
         anyhow::bail!("--sample must be at least 0.1 ms");
     }
+    let json = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"));
     let step = sample_ms / 1000.0;
-    let mut csv = String::from("time,j1,j2,j3,j4,j5,j6,x,y,z,q1,q2,q3,q4,tcp_speed\n");
+    // Milliseconds while the period is whole milliseconds, else tenths of them.
+    let time_decimals = if sample_ms.fract() == 0.0 { 3 } else { 4 };
+    // Each move's place once, quoted for the format.
+    let quoted: Vec<String> = places.iter().map(|p| if json { json_string(p) } else { csv_field(p) }).collect();
+    let empty = if json { "\"\"".to_string() } else { String::new() };
+    let mut out = if json { json_head(robot, sample_ms) } else { TRACE_COLUMNS.join(",") + "\n" };
     let moves: &[PlannedMove] = robot.recorded.as_deref().unwrap_or(&[]);
+    let mut cursor = FactsCursor::new(&robot.recorded_facts);
     let mut rows = 0;
-    for planned in moves {
-        for s in planned.samples(&robot.kin, step) {
+    'moves: for planned in moves {
+        for sample in planned.samples(&robot.kin, step) {
             if rows >= MAX_TRACE_ROWS {
-                break;
+                break 'moves;
             }
-            let t = s.tcp.translation.vector;
-            let [q1, q2, q3, q4] = rapid_motion::pose::orient(&s.tcp);
-            let fields = [
-                (s.time, 3),
-                (s.joints[0], 4),
-                (s.joints[1], 4),
-                (s.joints[2], 4),
-                (s.joints[3], 4),
-                (s.joints[4], 4),
-                (s.joints[5], 4),
-                (t.x, 3),
-                (t.y, 3),
-                (t.z, 3),
-                (q1, 6),
-                (q2, 6),
-                (q3, 6),
-                (q4, 6),
-                (s.tcp_speed, 2),
-            ];
-            for (k, (value, decimals)) in fields.into_iter().enumerate() {
-                if k > 0 {
-                    csv.push(',');
-                }
-                push_fixed(&mut csv, value, decimals);
+            let point = cursor.locate(sample);
+            if json {
+                out.push_str(if rows == 0 { "\n[" } else { ",\n[" });
             }
-            csv.push('\n');
+            for (value, decimals) in row_numbers(&point, time_decimals) {
+                push_number(&mut out, value, decimals, json);
+                out.push(',');
+            }
+            out.push_str(point.facts.and_then(|i| quoted.get(i)).unwrap_or(&empty));
+            out.push_str(if json { "]" } else { "\n" });
             rows += 1;
         }
     }
-    crate::save::write_new(path, csv.as_bytes())
+    if json {
+        out.push_str("\n]}\n");
+    }
+    crate::save::write_new(path, out.as_bytes())
+}
+
+/// The JSON trace up to its first row: what was traced, and the columns.
+fn json_head(robot: &RobotState, sample_ms: f64) -> String {
+    let columns: Vec<String> = TRACE_COLUMNS.iter().map(|c| json_string(c)).collect();
+    format!(
+        "{{\"robot\":{},\"sample_ms\":{},\"columns\":[{}],\"rows\":[",
+        json_string(robot.model.name),
+        serde_json::Number::from_f64(sample_ms).map_or("4".into(), |n| n.to_string()),
+        columns.join(",")
+    )
+}
+
+/// A number for the trace: fixed decimals; in JSON a value that is not a number is
+/// `null` (JSON has no NaN).
+fn push_number(out: &mut String, value: f64, decimals: u32, json: bool) {
+    if json && !value.is_finite() {
+        out.push_str("null");
+    } else {
+        push_fixed(out, value, decimals);
+    }
+}
+
+/// `text` as a JSON string literal.
+fn json_string(text: &str) -> String {
+    serde_json::to_string(text).unwrap_or_else(|_| "\"\"".into())
+}
+
+/// `text` as a CSV field: quoted when it holds a comma, a quote or a line break.
+fn csv_field(text: &str) -> String {
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_string()
+    }
 }
 
 /// `x` with `decimals` decimals, rounded, without a minus sign on zero: integer

@@ -133,7 +133,19 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     log_stop(&mut loaded.vm, &task_name, status);
     let program_end = loaded.vm.time;
     let resources = loaded.vm.resources_mut();
-    crate::motion_out::finish(resources, program_end, "T_ROB1", model_note.as_deref(), args)?;
+    let cycle = crate::motion_out::finish(resources, program_end, "T_ROB1", model_note.as_deref(), args)?;
+    // The run is over: the robot leaves the task for the trace and the report.
+    let robot = std::mem::take(&mut loaded.vm.resources_mut().robot);
+    let sources = |file: usize| inputs.modules.get(file).or_else(|| loaded.vm.program_source(file));
+    let outputs = crate::motion_out::RunOutputs {
+        robot: &robot,
+        sources: &sources,
+        io: loaded.vm.io_system(),
+        program: crate::motion_out::program_name(args),
+        task: &task_name,
+        cycle,
+    };
+    crate::motion_out::write_outputs(&outputs, args)?;
     if loaded.vm.resources_mut().controller.warm_start {
         eprintln!("{WARM_START}");
     }

@@ -127,11 +127,13 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         task.loaded.vm.time = program_end;
         single::log_stop(&mut task.loaded.vm, &name, status);
     }
+    let mut cycle = program_end;
     for task in &mut controller.tasks {
         let name = task.spec.name.clone();
         let resources = task.loaded.vm.resources_mut();
-        crate::motion_out::finish(resources, program_end, &name, model_note.as_deref(), args)?;
+        cycle = cycle.max(crate::motion_out::finish(resources, program_end, &name, model_note.as_deref(), args)?);
     }
+    write_motion_outputs(&mut controller, &tasks, cycle, args)?;
     if controller.tasks.iter_mut().any(|task| task.loaded.vm.resources_mut().controller.warm_start) {
         eprintln!("{}", single::WARM_START);
     }
@@ -327,6 +329,31 @@ fn report(controller: &Controller, tasks: &[LoadedTask], bound: Option<Bound>) -
         status = ExitStatus::Failure;
     }
     status
+}
+
+/// `--trace` and `--report` of the first motion task's robot (with MultiMove the
+/// other robots are not shown).
+fn write_motion_outputs(
+    controller: &mut Controller,
+    tasks: &[LoadedTask],
+    cycle: f64,
+    args: &RunArgs,
+) -> anyhow::Result<()> {
+    let motion = controller.tasks.iter_mut().position(|t| t.loaded.vm.resources_mut().robot.recorded.is_some());
+    let Some(at) = motion else { return Ok(()) };
+    let robot = std::mem::take(&mut controller.tasks[at].loaded.vm.resources_mut().robot);
+    let vm = &controller.tasks[at].loaded.vm;
+    let files: &[SourceInput] = tasks.get(at).map_or(&[], |t| &t.inputs.modules);
+    let sources = |file: usize| files.get(file).or_else(|| vm.program_source(file));
+    let outputs = crate::motion_out::RunOutputs {
+        robot: &robot,
+        sources: &sources,
+        io: controller.io_system(),
+        program: crate::motion_out::program_name(args),
+        task: &controller.tasks[at].spec.name,
+        cycle,
+    };
+    crate::motion_out::write_outputs(&outputs, args)
 }
 
 /// The logs and saves asked for, after the run.

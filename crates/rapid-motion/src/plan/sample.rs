@@ -48,7 +48,9 @@ pub struct Sample {
     pub joints: Joints,
     /// The TCP in the robot base frame.
     pub tcp: Pose,
-    /// TCP speed, mm/s.
+    /// The flange (`tool0`) in the robot base frame.
+    pub flange: Pose,
+    /// TCP speed, mm/s (for a stationary tool: of the TCP over the held work object).
     pub tcp_speed: f64,
 }
 
@@ -90,12 +92,13 @@ impl PlannedMove {
         let t = if t.is_finite() { t.clamp(self.start, self.end) } else { self.start };
         let span = self.spans.iter().rev().find(|s| s.t0 <= t).or(self.spans.first());
         let Some(span) = span else {
-            let tcp = self.mount.tcp(&kin.forward(&self.end_joints));
-            return Sample { time: t, joints: self.end_joints, tcp, tcp_speed: 0.0 };
+            let flange = kin.forward(&self.end_joints);
+            let tcp = self.mount.tcp(&flange);
+            return Sample { time: t, joints: self.end_joints, tcp, flange, tcp_speed: 0.0 };
         };
         let (s, v) = span.profile.at(t - span.t0);
         let seed = nearest_seed(&span.seeds, s).unwrap_or(self.end_joints);
-        let (joints, tcp) = self.locate(kin, span, s, &seed);
+        let (joints, flange, tcp) = self.locate(kin, span, s, &seed);
         let tcp_speed = match &span.piece {
             Piece::Corner(path) => match path {
                 CornerPath::Tcp { curve, .. } => v * curve.speed(s),
@@ -107,7 +110,7 @@ impl PlannedMove {
                 Metric::Joint => v * self.tcp_per_unit(kin, span, s, &seed),
             },
         };
-        Sample { time: t, joints, tcp, tcp_speed }
+        Sample { time: t, joints, tcp, flange, tcp_speed }
     }
 
     /// Samples at every multiple of `step` in `start..end`, so consecutive moves
@@ -119,17 +122,23 @@ impl PlannedMove {
         (0..count).map(move |k| self.sample(kin, (first + k as f64) * step))
     }
 
-    /// Joints and TCP at path parameter `s` of `span`.
-    fn locate<K: Kinematics + ?Sized>(&self, kin: &K, span: &Span, s: f64, seed: &Joints) -> (Joints, Pose) {
+    /// Joints, flange and TCP (base frame) at path parameter `s` of `span`.
+    fn locate<K: Kinematics + ?Sized>(&self, kin: &K, span: &Span, s: f64, seed: &Joints) -> (Joints, Pose, Pose) {
         match span.piece.at(s) {
-            Point::Joints(q) => (q, self.mount.tcp(&kin.forward(&q))),
+            Point::Joints(q) => {
+                let flange = kin.forward(&q);
+                (q, flange, self.mount.tcp(&flange))
+            }
             point @ Point::Tcp(p, r) => {
                 let joints = solve_at(kin, &point, &self.mount, seed).unwrap_or(*seed);
+                let path = tcp_pose(&p, &r);
+                let flange = self.mount.flange(&path);
+                // With a held tool the path point is the TCP itself.
                 let tcp = match self.mount {
-                    super::Mount::Held(_) => tcp_pose(&p, &r),
-                    super::Mount::Stationary { .. } => self.mount.tcp(&kin.forward(&joints)),
+                    super::Mount::Held(_) => path,
+                    super::Mount::Stationary { tcp, .. } => tcp,
                 };
-                (joints, tcp)
+                (joints, flange, tcp)
             }
         }
     }
@@ -143,8 +152,10 @@ impl PlannedMove {
         if hi <= lo {
             return 0.0;
         }
-        let (_, a) = self.locate(kin, span, lo, seed);
-        let (_, b) = self.locate(kin, span, hi, seed);
+        // The path pose: the TCP, or for a stationary tool the TCP over the object.
+        let (_, a, _) = self.locate(kin, span, lo, seed);
+        let (_, b, _) = self.locate(kin, span, hi, seed);
+        let (a, b) = (self.mount.path_pose(&a), self.mount.path_pose(&b));
         (b.translation.vector - a.translation.vector).norm() / (hi - lo)
     }
 }

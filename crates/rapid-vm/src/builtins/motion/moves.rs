@@ -214,6 +214,7 @@ fn go_with(
     let (speed, zone) = speed_and_zone(ctx, args, layout)?;
     let (tool, held_object) = mount_of(&chain);
     let request = MoveRequest { target, speed, zone, tool, held_object };
+    note_facts(ctx, &request, &chain);
     let settings = planner_settings(ctx);
     let now = ctx.time;
     let conc = present(args.get(layout.conc));
@@ -463,4 +464,54 @@ pub(crate) fn wait_rob(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
         ctx.wait = Some(end - ctx.time);
     }
     Ok(None)
+}
+
+/// While a trace or report is recorded: what the move about to be given is (its
+/// instruction and place, programmed point, zone, frames), for the outputs. Nothing
+/// is computed or allocated otherwise.
+pub(super) fn note_facts(ctx: &mut Ctx<'_>, request: &MoveRequest, chain: &rapid_motion::frames::FrameChain) {
+    use rapid_motion::Kinematics as _;
+    if ctx.resources.robot.recorded.is_none() {
+        return;
+    }
+    let (instruction, file, span) = instruction_here(ctx);
+    let robot = &mut ctx.resources.robot;
+    let point = match request.target {
+        Target::Joints(joints) => chain.tcp_in_world(&robot.kin.forward(&joints)),
+        Target::Linear(to) | Target::Circular { to, .. } => chain.base * to,
+    };
+    robot.next_facts = Some(super::robot::MoveFacts {
+        instruction,
+        file,
+        span,
+        point,
+        zone: if request.zone.is_stop() { 0.0 } else { request.zone.pzone_tcp },
+        fine: request.zone.is_stop(),
+        frames: *chain,
+        start: 0.0,
+        end: 0.0,
+        zone_used: 0.0,
+        corner_path_failure: false,
+    });
+}
+
+/// The built-in the running routine is calling and its statement: (name, file, span),
+/// as the event log places what a built-in logs.
+fn instruction_here(ctx: &Ctx<'_>) -> (&'static str, usize, rapid_syntax::Span) {
+    use crate::ir::{Callee, Instr};
+    let Some(frame) = ctx.chain.last() else { return ("", usize::MAX, rapid_syntax::Span::default()) };
+    let (code, pc) = frame.position();
+    // The innermost statement holding `pc` (as `Code::stmt_at`), found by halving:
+    // statements are in order of their start, and a generated module of 100,000
+    // moves in one routine must not cost a scan per move.
+    let upto = code.stmts.partition_point(|s| s.start <= pc);
+    let span = code.stmts[..upto].iter().rev().find(|s| pc < s.end).map_or(code.span, |s| s.span);
+    let name = match code.instrs.get(pc as usize) {
+        Some(Instr::Call(site)) => match code.sites.get(*site as usize).map(|s| s.callee) {
+            Some(Callee::Builtin(id)) => crate::builtins::name(id),
+            _ => "",
+        },
+        _ => "",
+    };
+    (name, code.file, span)
 }

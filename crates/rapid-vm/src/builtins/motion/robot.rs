@@ -58,6 +58,51 @@ pub struct PathEvent {
 /// hit found when the task next looks, a stop) reach back at most this far.
 const KEEP_PAST: f64 = 1.0;
 
+/// What a recorded move was, for `--trace` and `--report`: which instruction gave it
+/// and where, its programmed point, zone and frames; once final, its times.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MoveFacts {
+    /// The instruction's name as the catalogue spells it (`MoveL`, `TriggL`, …); empty
+    /// when the call was late-bound.
+    pub instruction: &'static str,
+    /// The program file (an index of the VM's sources, as in the event log) and the
+    /// instruction's statement in it.
+    pub file: usize,
+    pub span: rapid_syntax::Span,
+    /// The programmed TCP in the world frame (for MoveAbsJ, where its axis values put it).
+    pub point: rapid_motion::Pose,
+    /// The programmed zone radius, mm (`pzone_tcp`, `\Z`), and whether it is a stop point.
+    pub zone: f64,
+    pub fine: bool,
+    /// The move's tool, work object and base frames.
+    pub frames: FrameChain,
+    /// From the planned move once final: its times, the zone it used (mm) and whether
+    /// its fly-by point became a stop point.
+    pub start: f64,
+    pub end: f64,
+    pub zone_used: f64,
+    pub corner_path_failure: bool,
+}
+
+impl MoveFacts {
+    /// The facts of a move no instruction described: where it ends, nothing else.
+    fn unknown(point: rapid_motion::Pose) -> MoveFacts {
+        MoveFacts {
+            instruction: "",
+            file: usize::MAX,
+            span: rapid_syntax::Span::default(),
+            point,
+            zone: 0.0,
+            fine: true,
+            frames: FrameChain::default(),
+            start: 0.0,
+            end: 0.0,
+            zone_used: 0.0,
+            corner_path_failure: false,
+        }
+    }
+}
+
 /// The step path distances are measured at, s.
 const DISTANCE_STEP: f64 = 0.001;
 
@@ -70,6 +115,14 @@ pub struct RobotState {
     ahead: VecDeque<PlannedMove>,
     /// Every final move, kept when a trace is asked for.
     pub recorded: Option<Vec<PlannedMove>>,
+    /// The facts of the next move given (set by the move instruction just before
+    /// [`RobotState::push`], only while recording).
+    pub next_facts: Option<MoveFacts>,
+    /// The facts of each move given and not yet final (while recording), oldest first.
+    pending_facts: VecDeque<Option<MoveFacts>>,
+    /// The facts of the final moves (while recording), in time order: each covers
+    /// `start..end` of the recorded moves (a StopMove pause inside it included).
+    pub recorded_facts: Vec<MoveFacts>,
     /// The tool and work object frames of the last move (the active ones, for CRobT
     /// without arguments).
     pub active: FrameChain,
@@ -120,6 +173,9 @@ impl RobotState {
             planner,
             ahead: VecDeque::new(),
             recorded: None,
+            next_facts: None,
+            pending_facts: VecDeque::new(),
+            recorded_facts: Vec::new(),
             active: FrameChain::default(),
             motion_end: 0.0,
             moves: 0,
@@ -167,8 +223,12 @@ impl RobotState {
         }
         self.planner.idle_until(now);
         self.forget_before(now - KEEP_PAST);
+        let facts = self.next_facts.take();
         let done = self.planner.push(&self.kin, request)?;
         self.events.push_back(events);
+        if self.recorded.is_some() {
+            self.pending_facts.push_back(facts);
+        }
         if let Some(done) = done {
             self.finish(done);
         }
@@ -247,6 +307,17 @@ impl RobotState {
         self.motion_end = self.motion_end.max(planned.end);
         if let Some(recorded) = &mut self.recorded {
             recorded.push(planned.clone());
+            // A move given without its facts still gets a record, so that every
+            // recorded move has one and the times line up.
+            let mut facts = match self.pending_facts.pop_front().flatten() {
+                Some(facts) => facts,
+                None => MoveFacts::unknown(planned.tool().tcp(&self.kin.forward(&planned.end_joints))),
+            };
+            facts.start = planned.start;
+            facts.end = planned.end;
+            facts.zone_used = planned.zone;
+            facts.corner_path_failure = planned.corner_path_failure;
+            self.recorded_facts.push(facts);
         }
         self.ahead.push_back(planned);
     }
@@ -293,6 +364,15 @@ impl RobotState {
             }
             if let Some(last) = recorded.last_mut() {
                 last.cut_at(&self.kin, t);
+            }
+            // The move that was waiting for its successor is gone with the planner's queue.
+            self.pending_facts.clear();
+            let facts = &mut self.recorded_facts;
+            while facts.last().is_some_and(|f| f.start > t && facts.len() > 1) {
+                facts.pop();
+            }
+            if let Some(last) = facts.last_mut() {
+                last.end = last.end.min(t);
             }
         }
         let joints = self.ahead.back().map_or_else(|| self.planner.end_joints(), |m| m.end_joints);
@@ -346,6 +426,14 @@ impl RobotState {
         self.ahead = pause(self.ahead.drain(..).collect()).into();
         if let Some(recorded) = self.recorded.take() {
             self.recorded = Some(pause(recorded));
+        }
+        for facts in &mut self.recorded_facts {
+            if facts.start >= since {
+                facts.start += dt;
+            }
+            if facts.end > since {
+                facts.end += dt;
+            }
         }
         self.planner.delay_from(since, dt);
         if self.motion_end > since {

@@ -153,6 +153,7 @@ fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32), places: &Places) -
     }
     let (tool, held_object) = super::moves::mount_of(&chain);
     let request = MoveRequest { target, speed, zone: rapid_motion::plan::ZoneData::FINE, tool, held_object };
+    super::moves::note_facts(ctx, &request, &chain);
     let settings = super::moves::planner_settings(ctx);
     let now = ctx.time;
     let robot = &mut ctx.resources.robot;
