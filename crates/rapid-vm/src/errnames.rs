@@ -125,4 +125,7 @@ errors! {
     SigSupSearch = "ERR_SIGSUPSEARCH",
     // I/O devices and networks (§1.9).
     NoRunUnit = "ERR_NORUNUNIT",
+    // Path stop and restart (§2.2.6).
+    AlreadyMoving = "ERR_ALRDY_MOVING",
+    PathDist = "ERR_PATHDIST",
 }

@@ -38,13 +38,27 @@ pub struct MotionSettings {
     pub vel_max: f64,
     /// The operator's speed override (FlexPendant), %.
     pub speed_override: f64,
+    /// `\T` of the move being pushed: it takes this many seconds (the programmed
+    /// speeds give way; axis limits still hold). `None`: the speeddata rules.
+    pub move_time: Option<f64>,
+    /// `\Inpos` of the move being pushed: the time it stands at its stop point
+    /// before it is done (in place of the `fine` settle time), s.
+    pub stop_time: Option<f64>,
 }
 
 impl Default for MotionSettings {
     fn default() -> Self {
         // uncertain: VelSet's default Max; older manuals say 5000 mm/s, newer ones
         // the robot's maximum TCP speed (motion.md §3.1). 5000 is the documented one.
-        MotionSettings { acc: 100.0, ramp: 100.0, vel_override: 100.0, vel_max: 5000.0, speed_override: 100.0 }
+        MotionSettings {
+            acc: 100.0,
+            ramp: 100.0,
+            vel_override: 100.0,
+            vel_max: 5000.0,
+            speed_override: 100.0,
+            move_time: None,
+            stop_time: None,
+        }
     }
 }
 
@@ -57,11 +71,16 @@ impl MotionSettings {
         acc.clamp(20.0, 100.0) / 100.0
     }
 
+    /// The factor VelSet's override and the speed override scale speeds by (0 ..= 1).
+    pub fn speed_factor(&self) -> f64 {
+        let percent = |p: f64| if p.is_finite() { p.clamp(0.0, 100.0) / 100.0 } else { 1.0 };
+        percent(self.vel_override) * percent(self.speed_override)
+    }
+
     /// The programmed speeds after VelSet and the speed override: every speed is
     /// scaled, and the TCP speed is capped at VelSet's Max.
     pub fn effective_speed(&self, speed: &SpeedData) -> SpeedData {
-        let percent = |p: f64| if p.is_finite() { p.clamp(0.0, 100.0) / 100.0 } else { 1.0 };
-        let k = percent(self.vel_override) * percent(self.speed_override);
+        let k = self.speed_factor();
         let clean = |v: f64| if v.is_finite() { v.max(0.0) } else { 0.0 };
         let vel_max = if self.vel_max.is_finite() && self.vel_max > 0.0 { self.vel_max } else { f64::INFINITY };
         SpeedData {

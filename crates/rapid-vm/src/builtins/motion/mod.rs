@@ -12,6 +12,7 @@
 mod data;
 mod fit;
 mod frame;
+mod inpos;
 mod moves;
 pub mod pause;
 mod position;
@@ -19,6 +20,7 @@ mod readback;
 pub mod robot;
 mod search;
 mod settings;
+pub mod store;
 mod trigg;
 pub mod zones;
 
@@ -90,6 +92,10 @@ pub(super) static ENTRIES: Entries = &[
     ("IsStopMoveAct", pause::is_stop_move_act),
     ("ClearPath", pause::clear_path),
     ("PathLevel", pause::path_level),
+    ("StartMoveRetry", pause::start_move_retry),
+    ("StopMoveReset", pause::stop_move_reset),
+    ("StorePath", store::store_path),
+    ("RestoPath", store::resto_path),
     ("WZBoxDef", zones::wz_box_def),
     ("WZCylDef", zones::wz_cyl_def),
     ("WZSphDef", zones::wz_sph_def),

@@ -61,9 +61,9 @@ const DISTANCE_STEP: f64 = 0.001;
 pub struct RobotState {
     pub model: &'static RobotModel,
     pub kin: Opw,
-    planner: Planner,
+    pub(super) planner: Planner,
     /// Final moves the robot may still be on, oldest first.
-    ahead: VecDeque<PlannedMove>,
+    pub(super) ahead: VecDeque<PlannedMove>,
     /// Every final move, kept when a trace is asked for.
     pub recorded: Option<Vec<PlannedMove>>,
     /// The tool and work object frames of the last move (the active ones, for CRobT
@@ -78,7 +78,7 @@ pub struct RobotState {
     /// The SearchL under way.
     pub search: Option<super::search::Search>,
     /// The path events of each move given and not yet final, oldest first.
-    events: VecDeque<Vec<PathEvent>>,
+    pub(super) events: VecDeque<Vec<PathEvent>>,
     /// Path events whose time is known: (controller time, action).
     pub due: Vec<(f64, Action)>,
     /// The triggers TriggIO, TriggEquip and TriggInt defined (triggdata holds an index).
@@ -95,6 +95,8 @@ pub struct RobotState {
     zone_inside: Vec<bool>,
     /// When the robot would enter a WZLimSup zone (execution stops).
     pub zone_violation: Option<f64>,
+    /// The base path StorePath set aside (path level 2 while it is there).
+    pub stored: Option<Box<super::store::Stored>>,
 }
 
 impl Default for RobotState {
@@ -130,6 +132,7 @@ impl RobotState {
             zones: Vec::new(),
             zone_inside: Vec::new(),
             zone_violation: None,
+            stored: None,
         }
     }
 
