@@ -84,3 +84,42 @@ fn storepath_moves_on_level_2_and_the_base_path_goes_on_after_restopath() {
         "stored, level 2\nstopped at x 329.5\nback after 1.42\nrestored, level 1\narrived after 2.18 at level 1\n"
     );
 }
+
+#[test]
+fn storepath_without_stopmove_lets_the_robot_finish_its_move_first() {
+    // No StopMove: StorePath stops the base path at the end of the move the robot is
+    // on, and waits there (1.06 s). Level 2 goes 50 mm up and back (0.56 s each) and
+    // is back at 2.18 s; the base path has nothing left, so the move instruction main
+    // waits on is done then.
+    let trap = "    StorePath;\n    here := CRobT(\\Tool:=tool0);\n    \
+                TPWrite \"stored at x \" \\Num:=here.trans.x;\n    \
+                TPWrite \"after \" + NumToStr(ClkRead(c), 2);\n    \
+                MoveL Offs(here, 0, 0, 50), v100, fine, tool0;\n    MoveL here, v100, fine, tool0;\n    \
+                RestoPath;\n    StartMove;\n";
+    let (code, out, err) = run_stopped("storepath_no_stop", &interrupted_move(trap), 0.3);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(out, "stored at x 400\nafter 1.06\narrived after 2.18 at level 1\n");
+}
+
+#[test]
+fn startmove_takes_the_robot_back_to_its_path_first() {
+    // Stopped at 0.3 s at x = 329.5, level 2 goes 50 mm up (0.56 s, at 0.86 s) and 45
+    // mm down (0.45 + 0.01 + 0.05 = 0.51 s, at 1.37 s): 5 mm above the path, within
+    // the 10 mm StartMove takes the robot back. The move back is a joint move at
+    // 100 mm/s: 5/100 s cruising, a few ms to ramp its axes (about 1°, at most 250°/s
+    // reached in 0.15 s: under 0.02 s) and the 0.05 s settle. The base path stood
+    // 1.07 s plus that move: it ends between 1.06 + 1.07 + 0.10 = 2.23 s and 2.25 s.
+    let trap = "    StopMove;\n    StorePath;\n    here := CRobT(\\Tool:=tool0);\n    \
+                MoveL Offs(here, 0, 0, 50), v100, fine, tool0;\n    MoveL Offs(here, 0, 0, 5), v100, fine, tool0;\n    \
+                RestoPath;\n    StartMove;\n";
+    let module = interrupted_move(trap).replace("NumToStr(ClkRead(c), 2)", "NumToStr(ClkRead(c), 3)");
+    let (code, out, err) = run_stopped("regain", &module, 0.3);
+    assert_eq!(code, Some(0), "{err}");
+    let time: f64 = out
+        .strip_prefix("arrived after ")
+        .and_then(|rest| rest.split(' ').next())
+        .and_then(|t| t.parse().ok())
+        .unwrap_or_else(|| panic!("{out}"));
+    assert!((2.23..=2.25).contains(&time), "{out}");
+    assert!(out.ends_with(" at level 1\n"), "{out}");
+}

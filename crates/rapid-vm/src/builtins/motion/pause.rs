@@ -63,7 +63,16 @@ fn refuse_all_tasks(args: &[Value], idx: usize) -> Result<(), RapidError> {
 /// The robot's path stops at `since` (now for StopMove; the end of the move it is on
 /// for a StorePath without StopMove): path outputs and trigger interrupts after it
 /// and the program's wait for the robot are held.
-pub(super) fn pause_at(ctx: &mut Ctx<'_>, since: f64) -> Pause {
+pub(super) fn pause_at(ctx: &mut Ctx<'_>, since: f64) -> Result<Pause, RapidError> {
+    let robot = &mut ctx.resources.robot;
+    if robot.planner.has_pending() && robot.planner.time() <= since {
+        // The robot is on a move still waiting for its successor (after \Conc): it
+        // becomes final, ending in a stop point, so it can be stopped on.
+        // uncertain: a fly-by point there becomes a stop point (the path is stopped).
+        robot.flush();
+        // Its path outputs become orders, which are held below like the others.
+        super::moves::apply_due_events(ctx)?;
+    }
     let held_wait = ctx.resources.robot.hold_until.map(|_| f64::INFINITY);
     let held_wait = std::mem::replace(&mut ctx.resources.robot.hold_until, held_wait);
     let orders = &mut ctx.resources.io.path_orders;
@@ -72,7 +81,7 @@ pub(super) fn pause_at(ctx: &mut Ctx<'_>, since: f64) -> Pause {
     let scheduled = &mut ctx.resources.interrupts.scheduled;
     let held_interrupts = scheduled.iter().copied().filter(|&(t, _)| t > since).collect();
     scheduled.retain(|&(t, _)| t <= since);
-    Pause { since, held_wait, held_orders, held_interrupts, regain: None }
+    Ok(Pause { since, held_wait, held_orders, held_interrupts, regain: None })
 }
 
 /// `StopMove [\Quick] [\AllMotionTasks]`: the robot stops where it is.
@@ -83,7 +92,7 @@ pub(crate) fn stop_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if ctx.resources.robot.pause.is_some() {
         return Ok(None);
     }
-    let pause = pause_at(ctx, ctx.time);
+    let pause = pause_at(ctx, ctx.time)?;
     ctx.resources.robot.pause = Some(pause);
     Ok(None)
 }

@@ -52,13 +52,15 @@ pub(crate) fn store_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     let now = ctx.time;
     if ctx.resources.robot.pause.is_none() {
         let since = end_of_current_move(&mut ctx.resources.robot, now);
-        let pause = pause_at(ctx, since);
+        let pause = pause_at(ctx, since)?;
         ctx.resources.robot.pause = Some(pause);
     }
     let robot = &mut ctx.resources.robot;
     let Some(pause) = robot.pause.take() else { return Ok(None) };
     let since = pause.since;
-    let stop_joints = robot.joints_at(since);
+    let here = robot.joints_at(since);
+    // Stored again after a RestoPath, the path still goes on where it first stopped.
+    let stop_joints = pause.regain.unwrap_or(here);
     let ahead = robot.ahead.drain(..).collect();
     let (keep, rest) = split_at(robot, ahead, since);
     robot.ahead = keep.into();
@@ -73,7 +75,7 @@ pub(crate) fn store_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     let (due, later): (Vec<_>, Vec<_>) = robot.due.drain(..).partition(|&(t, _)| t <= since);
     robot.due = due;
     let mut planner = robot.planner.clone();
-    planner.restart_from(stop_joints, since.max(now));
+    planner.restart_from(here, since.max(now));
     let stored = Stored {
         since,
         stop_joints,
@@ -87,6 +89,11 @@ pub(crate) fn store_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
         hold_until: robot.hold_until.take(),
     };
     robot.stored = Some(Box::new(stored));
+    if since > now {
+        // uncertain: StorePath waits until the robot stands at the end of its move,
+        // so CRobT after it (as the manual's examples do) reads the stop position.
+        ctx.wait = Some(since - now);
+    }
     Ok(None)
 }
 
@@ -138,7 +145,12 @@ pub(crate) fn resto_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
         *stored;
     let shift = (level2_end - since).max(0.0);
     pause.delay(shift);
+    pause.since = level2_end;
     pause.regain = Some(stop_joints);
+    // Where level 2 left the robot, as the base path's pause begins (the robot stands
+    // there until StartMove, whenever level 2's last move ended).
+    let here = robot.planner.end_joints();
+    robot.ahead.push_back(PlannedMove::standing(here, robot.active.tframe, level2_end, level2_end));
     let later = |moves: Vec<PlannedMove>| {
         moves.into_iter().map(move |mut m| {
             m.shift(shift);
