@@ -17,6 +17,7 @@ mod moves;
 pub mod pause;
 mod position;
 mod readback;
+pub mod recorder;
 pub mod robot;
 mod search;
 mod settings;
@@ -96,6 +97,12 @@ pub(super) static ENTRIES: Entries = &[
     ("StopMoveReset", pause::stop_move_reset),
     ("StorePath", store::store_path),
     ("RestoPath", store::resto_path),
+    ("PathRecStart", recorder::path_rec_start),
+    ("PathRecStop", recorder::path_rec_stop),
+    ("PathRecValidBwd", recorder::path_rec_valid_bwd),
+    ("PathRecValidFwd", recorder::path_rec_valid_fwd),
+    ("PathRecMoveBwd", recorder::path_rec_move_bwd),
+    ("PathRecMoveFwd", recorder::path_rec_move_fwd),
     ("WZBoxDef", zones::wz_box_def),
     ("WZCylDef", zones::wz_cyl_def),
     ("WZSphDef", zones::wz_sph_def),

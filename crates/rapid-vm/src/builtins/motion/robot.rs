@@ -97,6 +97,8 @@ pub struct RobotState {
     pub zone_violation: Option<f64>,
     /// The base path StorePath set aside (path level 2 while it is there).
     pub stored: Option<Box<super::store::Stored>>,
+    /// The path recorder (PathRecStart …): the moves of the base path it recorded.
+    pub path_rec: super::recorder::Recorder,
 }
 
 impl Default for RobotState {
@@ -133,6 +135,7 @@ impl RobotState {
             zone_inside: Vec::new(),
             zone_violation: None,
             stored: None,
+            path_rec: super::recorder::Recorder::default(),
         }
     }
 
@@ -165,7 +168,12 @@ impl RobotState {
             self.flush();
         }
         self.planner.idle_until(now);
+        let from = self.planner.end_joints();
         let done = self.planner.push(&self.kin, request)?;
+        if self.stored.is_none() {
+            // Only the base path is recorded; level 2's moves (and the recorder's own) are not.
+            self.path_rec.note(from, request);
+        }
         self.events.push_back(events);
         if let Some(done) = done {
             self.finish(done);

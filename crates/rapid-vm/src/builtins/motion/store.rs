@@ -187,3 +187,12 @@ pub(super) fn drop_from(robot: &mut RobotState, t: f64) {
         }
     }
 }
+
+impl Stored {
+    /// How many of the base path's moves the robot had not started when it stopped:
+    /// the path recorder's moves after the stop.
+    pub(super) fn unstarted(&self) -> usize {
+        let queued = self.rest.iter().filter(|m| m.start >= self.since && m.duration() > 0.0).count();
+        queued + usize::from(self.planner.has_pending() && self.planner.time() >= self.since)
+    }
+}
