@@ -65,10 +65,17 @@ MODULE motion_path_errors
         WaitTime 0.3;
         StopMove;
         TPWrite "stopped " \Bool:=IsStopMoveAct(\FromMoveTask);
-        WaitTime 0.2;
+        ! StopMoveReset resets the stop-move state without starting any movement
+        ! (it would go on at the next program start): the robot still stands.
         StopMoveReset;
         TPWrite "after StopMoveReset " \Bool:=IsStopMoveAct(\FromMoveTask);
-        ! It stood 0.2 s: 1.06 + 0.2 = 1.26 s.
+        WaitTime 0.2;
+        StorePath;
+        here := CRobT(\Tool:=tool0);
+        TPWrite "stored at x " \Num:=here.trans.x;
+        RestoPath;
+        StartMove;
+        ! It stood 0.3 s to 0.5 s: 1.06 + 0.2 = 1.26 s.
         WaitRob \InPos;
         TPWrite "arrived after " + NumToStr(ClkRead(c), 2);
     ENDPROC

@@ -30,6 +30,9 @@ pub struct Pause {
     /// Where the stopped path goes on, when the robot may stand elsewhere (after
     /// RestoPath): StartMove takes it back there first.
     pub(super) regain: Option<Joints>,
+    /// StopMoveReset cleared the stop-move state: the path stays stopped until a
+    /// program start (or StartMove), but IsStopMoveAct is FALSE.
+    reset: bool,
 }
 
 impl Pause {
@@ -81,7 +84,7 @@ pub(super) fn pause_at(ctx: &mut Ctx<'_>, since: f64) -> Result<Pause, RapidErro
     let scheduled = &mut ctx.resources.interrupts.scheduled;
     let held_interrupts = scheduled.iter().copied().filter(|&(t, _)| t > since).collect();
     scheduled.retain(|&(t, _)| t <= since);
-    Ok(Pause { since, held_wait, held_orders, held_interrupts, regain: None })
+    Ok(Pause { since, held_wait, held_orders, held_interrupts, regain: None, reset: false })
 }
 
 /// `StopMove [\Quick] [\AllMotionTasks]`: the robot stops where it is.
@@ -89,7 +92,9 @@ pub(super) fn pause_at(ctx: &mut Ctx<'_>, since: f64) -> Result<Pause, RapidErro
 // modelled: the robot stands at the place it was at the instant of StopMove.
 pub(crate) fn stop_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     refuse_all_tasks(args, 1)?;
-    if ctx.resources.robot.pause.is_some() {
+    if let Some(pause) = ctx.resources.robot.pause.as_mut() {
+        // Stopped already: the stop-move state is set again (after StopMoveReset).
+        pause.reset = false;
         return Ok(None);
     }
     let pause = pause_at(ctx, ctx.time)?;
@@ -100,44 +105,48 @@ pub(crate) fn stop_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `StartMove [\AllMotionTasks]`: the robot goes on along its path.
 pub(crate) fn start_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     refuse_all_tasks(args, 0)?;
-    restart(ctx, true)?;
+    restart(ctx)?;
     Ok(None)
 }
 
 /// `StartMoveRetry`: StartMove, then RETRY of the instruction whose error the ERROR
 /// handler takes (outside an ERROR handler RETRY's own error stops the program).
 pub(crate) fn start_move_retry(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    restart(ctx, true)?;
+    restart(ctx)?;
     ctx.stop = StopKind::Retry;
     Ok(None)
 }
 
-/// `StopMoveReset [\AllMotionTasks]`: the stop state ends without StartMove's checks.
-// uncertain: the manual resets the state "without starting any movement", the
-// movement then going on when the program runs on; `rapid run` never stops the
-// program in between, so the path goes on from here as after StartMove.
+/// `StopMoveReset [\AllMotionTasks]`: the stop-move state is reset without starting
+/// any movement (the manual): the stopped path goes on at the next program start, or
+/// with StartMove. `rapid run` starts the program once, so until StartMove the robot
+/// stands; what StopMoveReset changes is IsStopMoveAct, and that StorePath, level 2
+/// and ClearPath work from the stopped state as after StopMove.
+// uncertain: the manual's "restart at the next program start" read for a run that
+// is never stopped and started again.
 pub(crate) fn stop_move_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     refuse_all_tasks(args, 0)?;
-    restart(ctx, false)?;
+    if let Some(pause) = ctx.resources.robot.pause.as_mut() {
+        pause.reset = true;
+    }
     Ok(None)
 }
 
 /// Ends the stop: the path goes on now (after a move back to it if the robot
-/// stands elsewhere). `checked`: StartMove's errors (ERR_ALRDY_MOVING when the robot
-/// moves and was not stopped, ERR_PATHDIST when it stands too far from its path).
-fn restart(ctx: &mut Ctx<'_>, checked: bool) -> Result<(), RapidError> {
+/// stands elsewhere). Errors: ERR_ALRDY_MOVING when the robot moves and was not
+/// stopped, ERR_PATHDIST when it stands too far from its path.
+fn restart(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
     let now = ctx.time;
     let Some(pause) = ctx.resources.robot.pause.take() else {
         // uncertain: "moving" is taken as having planned motion not yet done.
         let robot = &ctx.resources.robot;
-        if checked && (robot.motion_end > now || robot.planner.has_pending()) {
+        if robot.motion_end > now || robot.planner.has_pending() {
             return Err(ctx.error(Err::AlreadyMoving, "the robot is already moving (no StopMove to undo)"));
         }
         return Ok(());
     };
     let regain = match pause.regain {
-        Some(path) if checked => regain_move(ctx, &pause, path),
-        Some(path) => regain_move(ctx, &pause, path).or(Ok(None)),
+        Some(path) => regain_move(ctx, &pause, path),
         None => Ok(None),
     };
     let regain = match regain {
@@ -207,7 +216,7 @@ pub(super) fn insert_in_time(robot: &mut super::robot::RobotState, planned: Plan
 /// robot.
 // uncertain: both flags answer the one stop state of the task's robot.
 pub(crate) fn is_stop_move_act(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    Ok(Some(Value::Bool(ctx.resources.robot.pause.is_some())))
+    Ok(Some(Value::Bool(ctx.resources.robot.pause.as_ref().is_some_and(|p| !p.reset))))
 }
 
 /// `ClearPath`: the rest of the robot's path is dropped: it stays where it is (where
