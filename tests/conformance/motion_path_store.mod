@@ -17,6 +17,8 @@ MODULE motion_path_store
         StopMove;
         StorePath;
         TPWrite "stored, level " \Num:=PathLevel();
+        ! The stop-move state of the stored path stays set on level 2.
+        TPWrite "stop-move state " \Bool:=IsStopMoveAct(\FromMoveTask);
         here := CRobT(\Tool:=tool0);
         TPWrite "stopped at x " \Num:=here.trans.x;
         ! Level 2: 50 mm up and back, 0.5 + 0.01 + 0.05 = 0.56 s each: back at 1.42 s.

@@ -88,17 +88,18 @@ fn storepath_moves_on_level_2_and_the_base_path_goes_on_after_restopath() {
 #[test]
 fn storepath_without_stopmove_lets_the_robot_finish_its_move_first() {
     // No StopMove: StorePath stops the base path at the end of the move the robot is
-    // on, and waits there (1.06 s). Level 2 goes 50 mm up and back (0.56 s each) and
+    // on, and waits there (1.06 s); the stop-move state is not set. Level 2 goes 50 mm up and back (0.56 s each) and
     // is back at 2.18 s; the base path has nothing left, so the move instruction main
     // waits on is done then.
     let trap = "    StorePath;\n    here := CRobT(\\Tool:=tool0);\n    \
+                TPWrite \"stop-move state \" \\Bool:=IsStopMoveAct(\\FromMoveTask);\n    \
                 TPWrite \"stored at x \" \\Num:=here.trans.x;\n    \
                 TPWrite \"after \" + NumToStr(ClkRead(c), 2);\n    \
                 MoveL Offs(here, 0, 0, 50), v100, fine, tool0;\n    MoveL here, v100, fine, tool0;\n    \
                 RestoPath;\n    StartMove;\n";
     let (code, out, err) = run_stopped("storepath_no_stop", &interrupted_move(trap), 0.3);
     assert_eq!(code, Some(0), "{err}");
-    assert_eq!(out, "stored at x 400\nafter 1.06\narrived after 2.18 at level 1\n");
+    assert_eq!(out, "stop-move state FALSE\nstored at x 400\nafter 1.06\narrived after 2.18 at level 1\n");
 }
 
 #[test]

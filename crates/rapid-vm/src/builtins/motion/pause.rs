@@ -36,6 +36,16 @@ pub struct Pause {
 }
 
 impl Pause {
+    /// Whether the stop-move state is set (StopMove, not reset by StopMoveReset).
+    pub(super) fn flagged(&self) -> bool {
+        !self.reset
+    }
+
+    /// The path stopped without the stop-move state (StorePath without StopMove).
+    pub(super) fn unflagged(self) -> Pause {
+        Pause { reset: true, ..self }
+    }
+
     /// The same stop `dt` seconds later: RestoPath holds the base path until the
     /// moves of path level 2 are done.
     pub(super) fn delay(&mut self, dt: f64) {
@@ -212,11 +222,15 @@ pub(super) fn insert_in_time(robot: &mut super::robot::RobotState, planned: Plan
     robot.ahead.insert(at, planned);
 }
 
-/// `IsStopMoveAct([\FromMoveTask] | [\FromNonMoveTask])`: whether StopMove holds the
-/// robot.
-// uncertain: both flags answer the one stop state of the task's robot.
+/// `IsStopMoveAct([\FromMoveTask] | [\FromNonMoveTask])`: whether the stop-move
+/// state is set: StopMove, not yet undone by StartMove or StopMoveReset (on path
+/// level 2 the stored base path's state).
+// uncertain: both flags answer the one stop state of the task's robot, and the
+// state of the stored path counts on level 2.
 pub(crate) fn is_stop_move_act(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    Ok(Some(Value::Bool(ctx.resources.robot.pause.as_ref().is_some_and(|p| !p.reset))))
+    let robot = &ctx.resources.robot;
+    let stored = robot.stored.as_ref().is_some_and(|s| s.stop_move_act());
+    Ok(Some(Value::Bool(robot.pause.as_ref().is_some_and(Pause::flagged) || stored)))
 }
 
 /// `ClearPath`: the rest of the robot's path is dropped: it stays where it is (where

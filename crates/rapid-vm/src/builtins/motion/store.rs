@@ -53,7 +53,7 @@ pub(crate) fn store_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     if ctx.resources.robot.pause.is_none() {
         let since = end_of_current_move(&mut ctx.resources.robot, now);
         let pause = pause_at(ctx, since)?;
-        ctx.resources.robot.pause = Some(pause);
+        ctx.resources.robot.pause = Some(pause.unflagged());
     }
     let robot = &mut ctx.resources.robot;
     let Some(pause) = robot.pause.take() else { return Ok(None) };
@@ -189,6 +189,11 @@ pub(super) fn drop_from(robot: &mut RobotState, t: f64) {
 }
 
 impl Stored {
+    /// Whether the base path was stopped by StopMove (the stop-move state).
+    pub(super) fn stop_move_act(&self) -> bool {
+        self.pause.flagged()
+    }
+
     /// How many of the base path's moves the robot had not started when it stopped:
     /// the path recorder's moves after the stop.
     pub(super) fn unstarted(&self) -> usize {
