@@ -124,3 +124,24 @@ fn startmove_takes_the_robot_back_to_its_path_first() {
     assert!((2.23..=2.25).contains(&time), "{out}");
     assert!(out.ends_with(" at level 1\n"), "{out}");
 }
+
+#[test]
+fn the_path_recorder_backs_out_and_returns_in_a_trap() {
+    // Recording from p0, the robot is stopped 0.3 s into the 100 mm move (x = 329.5).
+    // On level 2 it goes back along the recorded line to p0 (29.5 mm: 0.295 + 0.01 +
+    // 0.05 = 0.355 s, at 0.655 s) and forward again (at 1.01 s); the base path stood
+    // 0.71 s, so the move main waits on ends at 1.06 + 0.71 = 1.77 s.
+    let trap = "    VAR pos at;\n    StopMove;\n    StorePath;\n    IF PathRecValidBwd(\\ID:=start_id) THEN\n      \
+                PathRecMoveBwd \\ID:=start_id;\n      at := CPos(\\Tool:=tool0);\n      \
+                TPWrite \"back at \" + NumToStr(ClkRead(c), 3) + \" x \" \\Num:=at.x;\n      \
+                PathRecMoveFwd;\n      at := CPos(\\Tool:=tool0);\n      \
+                TPWrite \"forward at \" + NumToStr(ClkRead(c), 3) + \" x \" \\Num:=at.x;\n    ENDIF\n    \
+                RestoPath;\n    StartMove;\n";
+    let module = interrupted_move(trap)
+        .replace("  VAR clock c;\n", "  VAR clock c;\n  VAR pathrecid start_id;\n")
+        .replace("    ClkStart c;\n", "    PathRecStart start_id;\n    ClkStart c;\n")
+        .replace("    VAR robtarget here;\n    VAR pos at;\n", "    VAR pos at;\n");
+    let (code, out, err) = run_stopped("recorder", &module, 0.3);
+    assert_eq!(code, Some(0), "{err}\n{module}");
+    assert_eq!(out, "back at 0.655 x 300\nforward at 1.010 x 329.5\narrived after 1.77 at level 1\n");
+}
