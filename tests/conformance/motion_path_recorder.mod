@@ -31,14 +31,24 @@ MODULE motion_path_recorder
         at := CPos(\Tool:=tool0);
         TPWrite "back at " + NumToStr(ClkRead(c), 3) \Pos:=at;
         TPWrite "valid forward " \Bool:=PathRecValidFwd();
-        ! Forward the same way to where the robot stopped: 2.83 s.
+        TPWrite "valid back to the corner " \Bool:=PathRecValidBwd(\ID:=corner_id);
+        TPWrite "valid back " \Bool:=PathRecValidBwd();
+        ! On back along the first leg to where recording began (1.06 s): 2.475 s.
+        PathRecMoveBwd;
+        at := CPos(\Tool:=tool0);
+        TPWrite "at the start at " + NumToStr(ClkRead(c), 3) \Pos:=at;
+        ! Forward only to the corner mark (1.06 s): 3.535 s.
+        PathRecMoveFwd \ID:=corner_id;
+        at := CPos(\Tool:=tool0);
+        TPWrite "at the corner at " + NumToStr(ClkRead(c), 3) \Pos:=at;
+        ! And on to where the robot stopped (1.06 + 0.355 s): 4.95 s.
         PathRecMoveFwd;
         at := CPos(\Tool:=tool0);
         TPWrite "forward at " + NumToStr(ClkRead(c), 3) \Pos:=at;
         TPWrite "valid forward " \Bool:=PathRecValidFwd();
         RestoPath;
         StartMove;
-        ! The rest of the third leg: 1.06 - 0.3 = 0.76 s more, 3.59 s.
+        ! The rest of the third leg: 1.06 - 0.3 = 0.76 s more, 5.71 s.
         WaitRob \InPos;
         TPWrite "done at " + NumToStr(ClkRead(c), 3);
         PathRecStop \Clear;

@@ -60,6 +60,11 @@ impl Recorder {
             self.steps.push(Step { from, request: *request });
         }
     }
+
+    /// RestoPath: the base path takes over, PathRecMoveFwd has nothing to return to.
+    pub(super) fn forget_back(&mut self) {
+        self.back = None;
+    }
 }
 
 /// `PathRecStart ID`: recording starts (or goes on), and ID marks the place the
@@ -114,13 +119,21 @@ fn executed(robot: &RobotState, now: f64) -> usize {
     robot.path_rec.steps.len().saturating_sub(unstarted)
 }
 
+/// How far along the recorded moves the robot is: the moves it has started, or,
+/// after PathRecMoveBwd, the place that took it back to.
+fn behind(robot: &RobotState, now: f64) -> usize {
+    match robot.path_rec.back {
+        Some(back) => back.to,
+        None => executed(robot, now),
+    }
+}
+
 /// `PathRecValidBwd([\ID])`: whether the recorder is on and the robot has a recorded
 /// path behind it (back to ID).
 pub(crate) fn path_rec_valid_bwd(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let to = mark(ctx, args.first())?;
     let robot = &ctx.resources.robot;
-    let done = executed(robot, ctx.time);
-    let valid = robot.path_rec.on && done > to.unwrap_or(0);
+    let valid = robot.path_rec.on && behind(robot, ctx.time) > to.unwrap_or(0);
     Ok(Some(Value::Bool(valid)))
 }
 
@@ -236,11 +249,14 @@ pub(crate) fn path_rec_move_bwd(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let now = ctx.time;
     let robot = &mut ctx.resources.robot;
     robot.flush();
-    let done = executed(robot, now);
+    let done = behind(robot, now);
     if !robot.path_rec.on || done <= to {
         return Err(RapidError::fatal("PathRecMoveBwd: no recorded path behind the robot (PathRecValidBwd is FALSE)"));
     }
     let at = robot.end_joints();
+    // Back again from a place PathRecMoveBwd took it to: whole moves only, and
+    // forward still returns to where the first one started.
+    let earlier = robot.path_rec.back;
     let steps = &robot.path_rec.steps;
     let mut requests = Vec::new();
     if let Some(offs) = offs {
@@ -249,13 +265,13 @@ pub(crate) fn path_rec_move_bwd(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     }
     for i in (to..done).rev() {
         let step = &steps[i];
-        let whole = i + 1 < done || at_end(robot, step, &at);
+        let whole = i + 1 < done || earlier.is_some() || at_end(robot, step, &at);
         let zone = if i == to { ZoneData::FINE } else { steps[i - 1].request.zone };
         let target = target(robot, step, step.from, whole, offs)?;
         let speed = speed.unwrap_or(step.request.speed);
         requests.push(MoveRequest { target, speed, zone, tool: step.request.tool });
     }
-    robot.path_rec.back = Some(Back { to, from: done, at });
+    robot.path_rec.back = Some(earlier.map_or(Back { to, from: done, at }, |b| Back { to, ..b }));
     run(ctx, &requests)?;
     Ok(None)
 }

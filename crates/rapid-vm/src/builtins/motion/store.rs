@@ -170,6 +170,7 @@ pub(crate) fn resto_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     robot.motion_end = if motion_end > since { motion_end + shift } else { level2_end };
     robot.hold_until = hold_until;
     robot.pause = Some(pause);
+    robot.path_rec.forget_back();
     if level2_end > now {
         ctx.wait = Some(level2_end - now);
     }
