@@ -128,4 +128,7 @@ errors! {
     IoEnable = "ERR_IOENABLE",
     AxisPar = "ERR_AXIS_PAR",
     SpeedLimValue = "ERR_SPEEDLIM_VALUE",
+    // Path stop and restart (§2.2.6).
+    AlreadyMoving = "ERR_ALRDY_MOVING",
+    PathDist = "ERR_PATHDIST",
 }

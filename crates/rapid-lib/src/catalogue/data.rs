@@ -73,7 +73,8 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("CONST zonedata z150 := [FALSE, 150, 225, 225, 23, 225, 23];", "Fly-by point with a 150 mm TCP zone."),
     data("CONST zonedata z200 := [FALSE, 200, 300, 300, 30, 300, 30];", "Fly-by point with a 200 mm TCP zone."),
     // ---- Stop point data ---------------------------------------------------------------------
-    // uncertain: stoppoint values 1..3 assumed.
+    // The stoppoint values 1 inpos, 2 stoptime, 3 fllwtime agree with public code that
+    // writes RAPID stoppointdata (a C# library: "1 = inpos; 2 = stoptime; 3 = followtime").
     data("CONST stoppoint inpos := 1;", "Stop point kind: wait until in position."),
     data("CONST stoppoint stoptime := 2;", "Stop point kind: wait a fixed time after stopping."),
     data("CONST stoppoint fllwtime := 3;", "Stop point kind: fine point with a follow time (for conveyors)."),

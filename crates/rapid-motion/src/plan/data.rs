@@ -40,6 +40,12 @@ pub struct MotionSettings {
     pub speed_override: f64,
     /// How circles reorient the tool (CirPathMode).
     pub circle_ori: CircleOri,
+    /// `\T` of the move being pushed: it takes this many seconds (the programmed
+    /// speeds give way; axis limits still hold). `None`: the speeddata rules.
+    pub move_time: Option<f64>,
+    /// `\Inpos` of the move being pushed: the time it stands at its stop point
+    /// before it is done (in place of the `fine` settle time), s.
+    pub stop_time: Option<f64>,
 }
 
 /// How a circular move reorients the tool (CirPathMode; the wrist modes are not
@@ -66,6 +72,8 @@ impl Default for MotionSettings {
             vel_max: 5000.0,
             speed_override: 100.0,
             circle_ori: CircleOri::PathFrame,
+            move_time: None,
+            stop_time: None,
         }
     }
 }
@@ -79,11 +87,16 @@ impl MotionSettings {
         acc.clamp(20.0, 100.0) / 100.0
     }
 
+    /// The factor VelSet's override and the speed override scale speeds by (0 ..= 1).
+    pub fn speed_factor(&self) -> f64 {
+        let percent = |p: f64| if p.is_finite() { p.clamp(0.0, 100.0) / 100.0 } else { 1.0 };
+        percent(self.vel_override) * percent(self.speed_override)
+    }
+
     /// The programmed speeds after VelSet and the speed override: every speed is
     /// scaled, and the TCP speed is capped at VelSet's Max.
     pub fn effective_speed(&self, speed: &SpeedData) -> SpeedData {
-        let percent = |p: f64| if p.is_finite() { p.clamp(0.0, 100.0) / 100.0 } else { 1.0 };
-        let k = percent(self.vel_override) * percent(self.speed_override);
+        let k = self.speed_factor();
         let clean = |v: f64| if v.is_finite() { v.max(0.0) } else { 0.0 };
         let vel_max = if self.vel_max.is_finite() && self.vel_max > 0.0 { self.vel_max } else { f64::INFINITY };
         SpeedData {

@@ -79,8 +79,17 @@ pub(crate) fn prepare<K: Kinematics + ?Sized>(
     nominal: &AccelLimits,
 ) -> Result<Prepared, MotionError> {
     check_finite(request, start)?;
-    let speed = settings.effective_speed(&request.speed);
-    let accel = nominal.sanitized().scaled(settings.acc_factor());
+    // With `\T` the move's time takes the place of the programmed speeds.
+    let speed = match settings.move_time {
+        Some(_) => {
+            SpeedData { v_tcp: f64::INFINITY, v_ori: f64::INFINITY, v_leax: f64::INFINITY, v_reax: f64::INFINITY }
+        }
+        None => settings.effective_speed(&request.speed),
+    };
+    let mut accel = nominal.sanitized().scaled(settings.acc_factor());
+    if let Some(stop) = settings.stop_time.filter(|t| t.is_finite() && *t >= 0.0) {
+        accel.settle = stop;
+    }
     let max_speeds = kin.max_speeds().map(|v| if v.is_finite() && v > 0.0 { v } else { 1.0 });
     let ctx = Ctx { kin, mount: request.mount(), speed, accel, max_speeds };
     let start_tcp = ctx.tcp(start);
@@ -101,6 +110,15 @@ pub(crate) fn prepare<K: Kinematics + ?Sized>(
         }
     };
     prepared.zone = request.zone;
+    if let Some(time) = settings.move_time {
+        let k = settings.speed_factor();
+        if !(time.is_finite() && time > 0.0) || k <= 0.0 {
+            return Err(MotionError::InvalidData("\\T is not a positive time"));
+        }
+        // The speed overrides stretch the time as they would slow the speeds.
+        let timed = timed_speed(&prepared.limits, time / k);
+        prepared.limits.cap = prepared.limits.cap.min(timed);
+    }
     Ok(prepared)
 }
 
@@ -118,6 +136,23 @@ fn circle_orientation(geom: &mut Geometry, fixed: OriLerp, via: &Pose, mode: Cir
         }
     };
     geom.set_ori(ori);
+}
+
+/// The cruise speed at which a stop-to-stop trapezoid over the path takes `time`
+/// seconds: `time = L/v + v/a`, the smaller root. A time shorter than the fastest
+/// triangle profile (2·√(L/a)) gives that profile's peak: the move takes longer.
+// uncertain: `\T` is met for the move as if it stopped at both ends; a corner path
+// at a fly-by end shortens it a little, as it does any move.
+pub(crate) fn timed_speed(limits: &PieceLimits, time: f64) -> f64 {
+    let (l, a) = (limits.length, limits.acc);
+    if l <= EPS_LEN {
+        return limits.cap;
+    }
+    let disc = a * a * time * time - 4.0 * a * l;
+    if disc <= 0.0 {
+        return (a * l).sqrt();
+    }
+    (a * time - disc.sqrt()) / 2.0
 }
 
 /// What every step of preparing a move needs.

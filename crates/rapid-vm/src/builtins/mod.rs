@@ -270,6 +270,8 @@ pub enum StopKind {
     /// A waiting instruction whose condition does not hold yet (WaitDI …): wait for
     /// `Ctx::wait`, then run the statement again from its start.
     Repeat,
+    /// StartMoveRetry: RETRY from the ERROR handler the call is in.
+    Retry,
 }
 
 /// Present means passed: not absent.

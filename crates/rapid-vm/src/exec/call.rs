@@ -112,6 +112,7 @@ impl Vm {
                 Ok(wait.map(Exit::Wait))
             }
             crate::builtins::StopKind::Stop => Ok(Some(Exit::Stopped)),
+            crate::builtins::StopKind::Retry => self.retry(),
             crate::builtins::StopKind::ExitCycle => {
                 self.cycle_exit = true;
                 Ok(self.exit())

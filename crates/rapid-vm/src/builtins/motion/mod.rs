@@ -13,14 +13,17 @@ mod calib;
 mod data;
 mod fit;
 mod frame;
+mod inpos;
 mod moves;
 pub mod pause;
 mod position;
 mod readback;
+pub mod recorder;
 pub mod robot;
 mod search;
 pub mod servo;
 mod settings;
+pub mod store;
 pub mod testsign;
 mod torque;
 mod trigg;
@@ -95,6 +98,16 @@ pub(super) static ENTRIES: Entries = &[
     ("IsStopMoveAct", pause::is_stop_move_act),
     ("ClearPath", pause::clear_path),
     ("PathLevel", pause::path_level),
+    ("StartMoveRetry", pause::start_move_retry),
+    ("StopMoveReset", pause::stop_move_reset),
+    ("StorePath", store::store_path),
+    ("RestoPath", store::resto_path),
+    ("PathRecStart", recorder::path_rec_start),
+    ("PathRecStop", recorder::path_rec_stop),
+    ("PathRecValidBwd", recorder::path_rec_valid_bwd),
+    ("PathRecValidFwd", recorder::path_rec_valid_fwd),
+    ("PathRecMoveBwd", recorder::path_rec_move_bwd),
+    ("PathRecMoveFwd", recorder::path_rec_move_fwd),
     ("WZBoxDef", zones::wz_box_def),
     ("WZCylDef", zones::wz_cyl_def),
     ("WZSphDef", zones::wz_sph_def),

@@ -121,7 +121,7 @@ pub(super) fn motion_error(err: MotionError) -> RapidError {
 
 /// Options we do not model yet stop the program, naming themselves.
 fn refuse_unmodelled(args: &[Value], layout: &Layout) -> Result<(), RapidError> {
-    let options = [(layout.id, "\\ID (synchronized moves)"), (layout.t, "\\T (move time)"), (layout.inpos, "\\Inpos")];
+    let options = [(layout.id, "\\ID (synchronized moves)")];
     let corr = layout.corr.map(|c| (c, "\\Corr (path correction)"));
     for (idx, name) in options.into_iter().chain(corr) {
         if present(args.get(idx)) {
@@ -166,6 +166,8 @@ pub(super) fn planner_settings(ctx: &Ctx<'_>) -> MotionSettings {
             // The wrist modes are refused before a circle is planned.
             _ => CircleOri::PathFrame,
         },
+        move_time: None,
+        stop_time: None,
     }
 }
 
@@ -211,16 +213,33 @@ fn go_with(
     chain: rapid_motion::frames::FrameChain,
     events: Vec<super::robot::PathEvent>,
 ) -> Res {
-    let (speed, zone) = speed_and_zone(ctx, args, layout)?;
+    let (speed, mut zone) = speed_and_zone(ctx, args, layout)?;
+    let mut settings = planner_settings(ctx);
+    // `\T`: the move's time; `\Inpos`: a stop point of its own in place of the zone.
+    settings.move_time = ctx.opt_num(args.get(layout.t))?;
+    let stop = match args.get(layout.inpos) {
+        Some(inpos) if present(Some(inpos)) => {
+            let settle = rapid_motion::plan::AccelLimits::nominal(&ctx.resources.robot.model.max_speeds).settle;
+            Some(super::inpos::stop_point(ctx, &ctx.value(inpos)?, settle)?)
+        }
+        _ => None,
+    };
+    if let Some(stop) = stop {
+        zone = rapid_motion::plan::ZoneData::FINE;
+        settings.stop_time = Some(stop.time);
+    }
     let (tool, held_object) = mount_of(&chain);
     let request = MoveRequest { target, speed, zone, tool, held_object };
     note_facts(ctx, &request, &chain);
-    let settings = planner_settings(ctx);
     let now = ctx.time;
     let conc = present(args.get(layout.conc));
     let robot = &mut ctx.resources.robot;
     robot.set_settings(settings);
-    let resume = robot.push(now, &request, conc, events).map_err(motion_error)?;
+    let mut resume = robot.push(now, &request, conc, events).map_err(motion_error)?;
+    if let Some(stop) = stop.filter(|s| !s.progsynch && !conc) {
+        // progsynch FALSE: the program goes on once the robot stands at the point.
+        resume = (resume - stop.time).max(now);
+    }
     robot.active = chain;
     apply_due_events(ctx)?;
     if ctx.resources.robot.zone_violation.take().is_some() {
@@ -232,8 +251,10 @@ fn go_with(
     if present(args.get(layout.wobj)) {
         crate::builtins::controller::sysdata::activate_arg(ctx, &args[layout.wobj], layout.wobj, 1);
     }
+    // Inside a TRAP no other trap can start (interrupts queue): the move waits whole.
+    let in_trap = ctx.chain.iter().any(|f| f.is_trap());
     if resume > now {
-        if ctx.resources.interrupts.active() {
+        if ctx.resources.interrupts.active() && !in_trap {
             // Interrupts may come while the robot moves: wait until the next one may,
             // and hold the rest of the wait before the next instruction (the VM).
             ctx.resources.robot.hold_until = Some(resume);

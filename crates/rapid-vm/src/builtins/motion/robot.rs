@@ -110,9 +110,9 @@ const DISTANCE_STEP: f64 = 0.001;
 pub struct RobotState {
     pub model: &'static RobotModel,
     pub kin: Opw,
-    planner: Planner,
+    pub(super) planner: Planner,
     /// Final moves the robot may still be on, oldest first.
-    ahead: VecDeque<PlannedMove>,
+    pub(super) ahead: VecDeque<PlannedMove>,
     /// Every final move, kept when a trace is asked for.
     pub recorded: Option<Vec<PlannedMove>>,
     /// The facts of the next move given (set by the move instruction just before
@@ -135,7 +135,7 @@ pub struct RobotState {
     /// The SearchL under way.
     pub search: Option<super::search::Search>,
     /// The path events of each move given and not yet final, oldest first.
-    events: VecDeque<Vec<PathEvent>>,
+    pub(super) events: VecDeque<Vec<PathEvent>>,
     /// Path events whose time is known: (controller time, action).
     pub due: Vec<(f64, Action)>,
     /// The triggers TriggIO, TriggEquip and TriggInt defined (triggdata holds an index).
@@ -152,6 +152,10 @@ pub struct RobotState {
     zone_inside: Vec<bool>,
     /// When the robot would enter a WZLimSup zone (execution stops).
     pub zone_violation: Option<f64>,
+    /// The base path StorePath set aside (path level 2 while it is there).
+    pub stored: Option<Box<super::store::Stored>>,
+    /// The path recorder (PathRecStart …): the moves of the base path it recorded.
+    pub path_rec: super::recorder::Recorder,
 }
 
 impl Default for RobotState {
@@ -190,6 +194,8 @@ impl RobotState {
             zones: Vec::new(),
             zone_inside: Vec::new(),
             zone_violation: None,
+            stored: None,
+            path_rec: super::recorder::Recorder::default(),
         }
     }
 
@@ -224,7 +230,12 @@ impl RobotState {
         self.planner.idle_until(now);
         self.forget_before(now - KEEP_PAST);
         let facts = self.next_facts.take();
+        let from = self.planner.end_joints();
         let done = self.planner.push(&self.kin, request)?;
+        if self.stored.is_none() {
+            // Only the base path is recorded; level 2's moves (and the recorder's own) are not.
+            self.path_rec.note(from, request);
+        }
         self.events.push_back(events);
         if self.recorded.is_some() {
             self.pending_facts.push_back(facts);
