@@ -250,6 +250,9 @@ enum Bound {
     Steps(u64),
     Time(f64),
     InternalError,
+    /// The program was stopped (a system input) and nothing in the stimulus starts it
+    /// again.
+    Stopped,
 }
 
 /// Runs the system to its end or to a bound.
@@ -264,6 +267,7 @@ fn drive(controller: &mut Controller, host: &mut StdoutHost<'_>, args: &RunArgs)
         }
         match exit {
             SystemExit::Ended => return None,
+            SystemExit::Stopped => return Some(Bound::Stopped),
             SystemExit::Budget => {}
             SystemExit::Wait(seconds) => {
                 controller.advance(seconds);
@@ -293,6 +297,12 @@ fn report(controller: &Controller, tasks: &[LoadedTask], bound: Option<Bound>) -
         Some(Bound::Time(max)) => {
             eprintln!("error: stopped at {max} s of controller time (--max-time); the program did not end");
             status = ExitStatus::Failure;
+        }
+        Some(Bound::Stopped) => {
+            eprintln!(
+                "the program is stopped at {} s of controller time and nothing in the stimulus starts it again; the run ends here",
+                controller.time
+            );
         }
         Some(Bound::InternalError) => {
             eprintln!("internal error: the interpreter failed; please report this program");

@@ -1,0 +1,162 @@
+//! Program stop and start through the controller's API: waits keep their remaining
+//! time, safe interrupts survive the stop, the others do not (§1.11).
+
+use rapid_sema::SourceInput;
+use rapid_vm::RecordingHost;
+
+use crate::{Controller, ProgramState, StartMode, StopKind, SystemExit, TaskKind, TaskSpec, TrustLevel};
+
+fn controller(program: &str) -> Controller {
+    let files = [SourceInput::from_text("T_ROB1.mod", program)];
+    let loaded = match rapid_vm::load(&files, "main") {
+        Ok(loaded) => loaded,
+        Err(err) => panic!("the test program does not load: {err:?}"),
+    };
+    let spec = TaskSpec {
+        name: "T_ROB1".to_owned(),
+        kind: TaskKind::Normal,
+        trust: TrustLevel::SysFail,
+        foreground: None,
+        motion: true,
+        rmq: rapid_config::sys::Rmq::default(),
+        shared_files: Vec::new(),
+    };
+    match Controller::new(vec![(spec, loaded)], None) {
+        Ok(controller) => controller,
+        Err(message) => panic!("{message}"),
+    }
+}
+
+/// Runs until the clock reaches `until` (or the run ends); a stopped program stands
+/// until then.
+fn run_until(controller: &mut Controller, host: &mut RecordingHost, until: f64) -> SystemExit {
+    for _ in 0..100_000 {
+        match controller.run(host, 1000) {
+            SystemExit::Budget => {}
+            SystemExit::Wait(seconds) => {
+                if controller.time >= until {
+                    return SystemExit::Wait(seconds);
+                }
+                controller.advance(seconds.min(until - controller.time));
+            }
+            SystemExit::Stopped => {
+                controller.advance((until - controller.time).max(0.0));
+                return SystemExit::Stopped;
+            }
+            SystemExit::Ended => return SystemExit::Ended,
+        }
+    }
+    panic!("the run did not settle");
+}
+
+#[test]
+fn a_wait_keeps_its_remaining_time_across_a_stop() {
+    let mut c = controller(
+        "MODULE M
+  PROC main()
+    VAR clock k;
+    ClkStart k;
+    WaitTime 2;
+    TPWrite \"waited \" \\Num:=ClkRead(k);
+  ENDPROC
+ENDMODULE",
+    );
+    let mut host = RecordingHost::default();
+    run_until(&mut c, &mut host, 0.5);
+    c.stop(StopKind::Stop);
+    run_until(&mut c, &mut host, 1.5);
+    assert_eq!(c.program_state(), ProgramState::Stopped);
+    assert!(c.start(&mut host, StartMode::Continuous));
+    assert_eq!(run_until(&mut c, &mut host, 100.0), SystemExit::Ended);
+    // 2 s of wait plus the 1 s the program stood.
+    assert_eq!(host.lines, ["waited 3"]);
+    assert!((c.time - 3.0).abs() < 1e-3, "{}", c.time);
+}
+
+#[test]
+fn a_stopped_program_nothing_restarts_reports_stopped() {
+    let mut c = controller("MODULE M\n  PROC main()\n    WaitTime 1;\n    TPWrite \"end\";\n  ENDPROC\nENDMODULE");
+    let mut host = RecordingHost::default();
+    run_until(&mut c, &mut host, 0.2);
+    c.stop(StopKind::Quick);
+    assert_eq!(run_until(&mut c, &mut host, 10.0), SystemExit::Stopped);
+    assert!(host.lines.is_empty());
+    // A start of a running program does nothing; of the stopped one, it goes on.
+    assert!(c.start(&mut host, StartMode::Cycle));
+    assert!(!c.start(&mut host, StartMode::Cycle));
+    assert_eq!(run_until(&mut c, &mut host, 100.0), SystemExit::Ended);
+    assert_eq!(host.lines, ["end"]);
+    let events: Vec<u32> = c.tasks[0].loaded.vm.event_log().iter().map(|e| e.number).collect();
+    assert_eq!(events, [151, 150]);
+}
+
+#[test]
+fn only_safe_interrupts_outlive_a_stop() {
+    // Timers of 0.5 s (safe) and 0.6 s (plain) come due while the program stands
+    // (0.2 .. 1.0): the safe one's trap runs first at the start, the plain one's never.
+    let mut c = controller(
+        "MODULE M
+  VAR intnum safe;
+  VAR intnum plain;
+  PROC main()
+    CONNECT safe WITH tSafe;
+    CONNECT plain WITH tPlain;
+    ITimer \\SingleSafe, 0.5, safe;
+    ITimer \\Single, 0.6, plain;
+    WaitTime 2;
+    TPWrite \"end\";
+  ENDPROC
+  TRAP tSafe
+    TPWrite \"safe\";
+  ENDTRAP
+  TRAP tPlain
+    TPWrite \"plain\";
+  ENDTRAP
+ENDMODULE",
+    );
+    let mut host = RecordingHost::default();
+    run_until(&mut c, &mut host, 0.2);
+    c.stop(StopKind::Stop);
+    run_until(&mut c, &mut host, 1.0);
+    assert!(host.lines.is_empty());
+    c.start(&mut host, StartMode::Continuous);
+    assert_eq!(run_until(&mut c, &mut host, 100.0), SystemExit::Ended);
+    assert_eq!(host.lines, ["safe", "end"]);
+    assert!((c.time - 2.8).abs() < 1e-3, "{}", c.time);
+}
+
+#[test]
+fn the_queue_keeps_only_safe_interrupts_at_a_stop() {
+    // Both timers fire at 0.1 while interrupts are disabled: queued. The stop at 0.3
+    // discards the plain one; after the start, IEnable lets the safe one's trap run.
+    let mut c = controller(
+        "MODULE M
+  VAR intnum safe;
+  VAR intnum plain;
+  PROC main()
+    CONNECT safe WITH tSafe;
+    CONNECT plain WITH tPlain;
+    IDisable;
+    ITimer \\Single, 0.1, plain;
+    ITimer \\SingleSafe, 0.1, safe;
+    WaitTime 0.5;
+    IEnable;
+    WaitTime 0.1;
+    TPWrite \"end\";
+  ENDPROC
+  TRAP tSafe
+    TPWrite \"safe\";
+  ENDTRAP
+  TRAP tPlain
+    TPWrite \"plain\";
+  ENDTRAP
+ENDMODULE",
+    );
+    let mut host = RecordingHost::default();
+    run_until(&mut c, &mut host, 0.3);
+    c.stop(StopKind::Stop);
+    run_until(&mut c, &mut host, 0.4);
+    c.start(&mut host, StartMode::Continuous);
+    assert_eq!(run_until(&mut c, &mut host, 100.0), SystemExit::Ended);
+    assert_eq!(host.lines, ["safe", "end"]);
+}
