@@ -99,6 +99,8 @@ pub struct Operations {
     hooks: Vec<(String, Vec<Vec<String>>)>,
     /// What the operations did, for the run's report: (time, text).
     pub journal: Vec<(f64, String)>,
+    /// The outputs may show something else now (set at each change of state).
+    pub(crate) outputs_stale: bool,
 }
 
 impl Operations {
@@ -158,6 +160,7 @@ impl Controller {
         self.ops.seen_changes = self.shared.io.change_count();
         self.ops.inputs = inputs;
         self.ops.outputs = outputs;
+        self.ops.outputs_stale = true;
         Ok(())
     }
 
@@ -254,7 +257,7 @@ impl Controller {
     /// Between instructions of [`Controller::run`]: the system inputs' rising edges,
     /// a stop under way, the system outputs.
     pub(crate) fn operate(&mut self, host: &mut dyn Host) {
-        if !self.ops.inputs.is_empty() {
+        if !self.ops.inputs.is_empty() && self.io_event_due() {
             self.follow_inputs(host);
         }
         if let ProgramState::Stopping { kind, steps } = self.ops.state() {
@@ -265,9 +268,22 @@ impl Controller {
                 self.ops.state = Some(ProgramState::Stopping { kind, steps: steps + 1 });
             }
         }
-        if !self.ops.outputs.is_empty() {
+        if self.ops.outputs_stale && !self.ops.outputs.is_empty() {
             self.show_outputs();
         }
+    }
+
+    /// Whether the I/O system has something to do by now (a stimulus line, an order
+    /// come due, a change the system inputs have not seen): only then is it advanced,
+    /// as this is looked at between any two instructions.
+    fn io_event_due(&self) -> bool {
+        let io = &self.shared.io;
+        let now = self.time;
+        let at = |front: Option<&(f64, u32, f64)>| front.is_some_and(|&(t, _, _)| t <= now);
+        at(io.stimulus.front())
+            || at(io.path_orders.front())
+            || io.system.as_ref().and_then(|s| s.next_event_time()).is_some_and(|t| t <= now)
+            || io.change_count() != self.ops.seen_changes
     }
 
     /// Whether NORMAL task `idx` may run an instruction now (not while the program is
@@ -420,13 +436,17 @@ impl Controller {
                 self.set_motors(true);
                 self.start(host, mode);
             }
-            SysAction::ResetError => self.ops.errors_shown.iter_mut().for_each(|e| *e = false),
+            SysAction::ResetError => {
+                self.ops.errors_shown.iter_mut().for_each(|e| *e = false);
+                self.ops.outputs_stale = true;
+            }
             SysAction::PpToMain => self.note("PP to Main by a system input is not run by `rapid run` yet".to_owned()),
         }
     }
 
     /// Sets each system output to what it shows now.
     fn show_outputs(&mut self) {
+        self.ops.outputs_stale = false;
         for (idx, task) in self.tasks.iter().enumerate() {
             // Shown when the task fails; ResetError clears it.
             if matches!(task.state, State::Ended(TaskEnd::Failed(_))) && !self.ops.errors_seen[idx] {
@@ -475,8 +495,10 @@ impl Controller {
         task.spec.kind != TaskKind::Normal || self.ops.state() != ProgramState::Stopped
     }
 
+    /// Records what an operation did; the outputs show the new state.
     fn note(&mut self, text: String) {
         self.ops.journal.push((self.time, text));
+        self.ops.outputs_stale = true;
     }
 }
 

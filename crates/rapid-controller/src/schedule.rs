@@ -411,6 +411,7 @@ impl Controller {
     /// A task ended: the others see it no longer executing; a static task's stop
     /// applies its trust level.
     fn after_end(&mut self, idx: usize) {
+        self.ops.outputs_stale = true;
         let name = self.tasks[idx].spec.name.clone();
         self.shared.tasking.set_executing(&name, false);
         // A task that asked for a warm start did not fail: its trust level is not applied.
