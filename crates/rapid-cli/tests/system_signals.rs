@@ -105,8 +105,82 @@ fn a_program_nothing_starts_again_ends_the_run_without_failure() {
     );
 }
 
-/// A one-task backup (no SYS.cfg: the single-task path) whose robot makes a 100 mm
-/// MoveL at v100; `doMoving` goes to 1 just before it.
+/// A one-task backup `cell` in `dir`: T_ROB1 of `module`, and an EIO.cfg of `eio`.
+fn one_task_cell(dir: &Path, module: &str, eio: &str) -> PathBuf {
+    let root = dir.join("cell");
+    fs::create_dir_all(root.join("RAPID/TASK1/PROGMOD")).expect("task folder");
+    fs::create_dir_all(root.join("SYSPAR")).expect("syspar");
+    fs::write(root.join("RAPID/TASK1/PROGMOD/Main.mod"), module).expect("module");
+    fs::write(root.join("SYSPAR/EIO.cfg"), eio).expect("EIO.cfg");
+    let sys = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n";
+    fs::write(root.join("SYSPAR/SYS.cfg"), sys).expect("SYS.cfg");
+    root
+}
+
+const PLC_EIO: &str = "EIO:CFG_1.0:6:0::
+#
+EIO_SIGNAL:
+
+      -Name \"diStart\" -SignalType \"DI\"
+
+      -Name \"doCycleOn\" -SignalType \"DO\"
+
+      -Name \"doError\" -SignalType \"DO\"
+#
+SYSSIG_IN:
+
+      -Signal \"diStart\" -Action \"Start\"
+#
+SYSSIG_OUT:
+
+      -Status \"CycleOn\" -Signal \"doCycleOn\"
+
+      -Status \"Error\" -Signal \"doError\" -Arg2 \"T_ROB1\"
+";
+
+#[test]
+fn a_stop_instruction_waits_for_the_plc_to_start_the_program_again() {
+    let dir = scratch("stop_instruction");
+    let module = "MODULE Main
+  VAR clock c;
+  PROC main()
+    ClkStart c;
+    TPWrite \"before\";
+    Stop;
+    TPWrite \"after \" \\Num:=Round(ClkRead(c) \\Dec:=2);
+  ENDPROC
+ENDMODULE
+";
+    one_task_cell(&dir, module, PLC_EIO);
+    fs::write(dir.join("plc.stim"), "at 2 set diStart 1\n").expect("stimulus");
+    let out = rapid_in(&dir, &["run", "--stimulus", "plc.stim", "--io-log", "io.csv", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "before\nafter 2\n");
+    let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
+    assert_eq!(changes(&log, "doCycleOn"), [("0", "1"), ("0", "0"), ("2", "1"), ("2", "0")], "{log}");
+}
+
+#[test]
+fn a_task_stopped_by_an_error_shows_it_on_the_error_output() {
+    let dir = scratch("error_output");
+    let module = "MODULE Main
+  PROC main()
+    VAR num zero := 0;
+    WaitTime 1;
+    TPWrite \"\" \\Num:=1 / zero;
+  ENDPROC
+ENDMODULE
+";
+    one_task_cell(&dir, module, PLC_EIO);
+    let out = rapid_in(&dir, &["run", "--io-log", "io.csv", "cell"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
+    let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
+    assert_eq!(changes(&log, "doError"), [("1", "1")], "{log}");
+    assert_eq!(changes(&log, "doCycleOn"), [("0", "1"), ("1", "0")], "{log}");
+}
+
+/// A one-task backup without SYS.cfg (its task is that of the folder) whose robot
+/// makes a 100 mm MoveL at v100; `doMoving` goes to 1 just before it.
 fn moving_cell(dir: &Path) -> PathBuf {
     let root = dir.join("cell");
     let module = "MODULE Move

@@ -170,6 +170,23 @@ impl Controller {
         !self.ops.inputs.is_empty()
     }
 
+    /// Whether a Stop instruction in task `idx` stops the program, to be started again
+    /// where it stands, rather than ending the task: system inputs may start it, and it
+    /// is the only NORMAL task still running.
+    // uncertain: Stop without \AllMoveTasks stops its own task only; with other NORMAL
+    // tasks running the task ends as it does without system inputs.
+    pub(crate) fn stop_instruction_holds(&self, idx: usize) -> bool {
+        self.has_system_inputs()
+            && self.tasks[idx].spec.kind == TaskKind::Normal
+            && self.ops.state() == ProgramState::Running
+            && self.stopped_tasks() == [idx]
+    }
+
+    /// A Stop instruction stopped the program ([`Controller::stop_instruction_holds`]).
+    pub(crate) fn stopped_by_instruction(&mut self, host: &mut dyn Host) {
+        self.complete_stop(host, StopKind::Stop);
+    }
+
     /// Asks the program to stop; it stops at the next instruction boundary of each
     /// NORMAL task, during [`Controller::run`].
     pub fn stop(&mut self, kind: StopKind) {
@@ -191,7 +208,9 @@ impl Controller {
             return false;
         }
         // uncertain: `rapid run` runs one cycle; CYCLE and CONT differ only in what
-        // happens at the end of main, which ends the run either way.
+        // happens at the end of main, which ends the run either way. A start from the
+        // stop position runs the RESTART event routines (START is for a start from
+        // main), as we remember the system parameters manual's table of events.
         let _ = mode;
         self.ops.state = Some(ProgramState::Running);
         let stood = self.time - self.ops.stopped_at;

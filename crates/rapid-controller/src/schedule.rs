@@ -360,7 +360,9 @@ impl Controller {
         self.time = self.time.max(self.tasks[idx].loaded.vm.time) + INSTRUCTION_TIME;
         let epoch = self.epoch();
         let rechecks = self.tasks[idx].loaded.vm.wait_rechecks;
+        let held = exit == Exit::Stopped && self.stop_instruction_holds(idx);
         let state = match exit {
+            Exit::Stopped if held => State::Ready,
             Exit::Budget => State::Ready,
             Exit::Wait(seconds) => State::Waiting { until: time + seconds, rechecks, epoch },
             Exit::Done => self.cycle_end(idx, TaskEnd::Done),
@@ -374,6 +376,9 @@ impl Controller {
         if self.tasks[idx].loaded.vm.resources_mut().controller.warm_start {
             self.halt_the_rest();
             return;
+        }
+        if held {
+            self.stopped_by_instruction(host);
         }
         if self.tasks[idx].state == State::Ended(TaskEnd::Stopped) {
             self.run_stop_routines(idx, host);

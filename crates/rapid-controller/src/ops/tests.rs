@@ -292,3 +292,35 @@ fn motors_off_stops_the_program_and_a_start_needs_them_on() {
     assert_eq!(run_until(&mut c, &mut host, 100.0), SystemExit::Ended);
     assert_eq!(host.lines, ["end"]);
 }
+
+#[test]
+fn a_quick_stop_runs_the_qstop_event_routines_and_a_restart_the_restart_ones() {
+    let mut c = controller(
+        "MODULE M
+  PROC main()
+    WaitTime 1;
+    TPWrite \"end\";
+  ENDPROC
+  PROC on_stop()
+    TPWrite \"STOP\";
+  ENDPROC
+  PROC on_qstop()
+    TPWrite \"QSTOP \" \\Num:=EventType();
+  ENDPROC
+  PROC on_restart()
+    TPWrite \"RESTART \" \\Num:=EventType();
+  ENDPROC
+ENDMODULE",
+    );
+    c.set_event_routines("STOP", vec![vec!["on_stop".to_owned()]]);
+    c.set_event_routines("QSTOP", vec![vec!["on_qstop".to_owned()]]);
+    c.set_event_routines("RESTART", vec![vec!["on_restart".to_owned()]]);
+    let mut host = RecordingHost::default();
+    run_until(&mut c, &mut host, 0.5);
+    c.stop(StopKind::Quick);
+    run_until(&mut c, &mut host, 0.6);
+    assert!(c.start(&mut host, StartMode::Continuous));
+    assert_eq!(run_until(&mut c, &mut host, 100.0), SystemExit::Ended);
+    // EventType: EVENT_QSTOP 4, EVENT_RESTART 5 (the order of SYS.cfg's shelves).
+    assert_eq!(host.lines, ["QSTOP 4", "RESTART 5", "end"]);
+}
