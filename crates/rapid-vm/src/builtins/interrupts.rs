@@ -178,8 +178,9 @@ impl InterruptState {
     }
 
     /// The timers that came due while the program stood, up to `now`: each period that
-    /// ended is an event (a safe timer queues it, at most `MAX_QUEUED`; the others are
-    /// dropped), and the timer goes on from its next period after `now`.
+    /// ended is an event (a safe timer, single by `\SingleSafe`, queues its one event;
+    /// the others are dropped), and a periodic timer goes on from its next period
+    /// after `now`.
     // uncertain: the manual does not say whether a timer goes on counting while the
     // program is stopped; we take it that it does (its events are what a safe interrupt
     // keeps).
@@ -466,3 +467,48 @@ pub(super) static ENTRIES: Entries = &[
     ("IDisable", idisable),
     ("IEnable", ienable),
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::{InterruptState, Source};
+
+    /// Interrupts 1 (plain) and 2 (safe), both timers of 1 s due at 1.
+    fn two_timers() -> InterruptState {
+        let mut state = InterruptState::default();
+        for safe in [false, true] {
+            let n = state.connect(0);
+            let interrupt = state.get_mut(n).expect("connected");
+            interrupt.source = Some(Source::Timer { period: 1.0, next: 1.0, single: safe });
+            interrupt.safe = safe;
+        }
+        state
+    }
+
+    #[test]
+    fn a_stop_keeps_only_safe_interrupts_queued_and_queues_only_safe_events() {
+        let mut state = two_timers();
+        state.fire(1);
+        state.fire(2);
+        state.fire(1);
+        state.program_stopped(0.5, false);
+        assert_eq!(state.queue, [2]);
+        state.fire(1);
+        state.fire(2);
+        assert_eq!(state.queue, [2, 2]);
+        assert_eq!(state.program_started().map(|s| s.since), Some(0.5));
+        state.fire(1);
+        assert_eq!(state.queue, [2, 2, 1]);
+    }
+
+    #[test]
+    fn timers_due_while_stopped_fire_once_and_go_on_from_their_next_period() {
+        let mut state = two_timers();
+        state.program_stopped(0.5, false);
+        state.catch_up_timers(3.5);
+        // The plain periodic timer's events (1, 2, 3) are dropped; it is next due at 4.
+        // The safe single timer queued its one event and is spent.
+        assert_eq!(state.queue, [2]);
+        assert_eq!(state.next_timer(), Some(4.0));
+        assert!(state.get_mut(2).is_some_and(|i| i.source.is_none()));
+    }
+}
