@@ -1,5 +1,5 @@
 //! The I/O configuration (`EIO.cfg`): signals, devices (with their start-up state),
-//! networks and cross-connections.
+//! networks and cross-connections, system inputs and outputs (`syssig`).
 //!
 //! Sources for the attribute names: RobotWare 6 backups write `-Device`/`-DeviceMap`,
 //! RobotWare 5 backups `-Unit`/`-UnitMap` (both read, as public backups show). Analog
@@ -8,6 +8,10 @@
 use std::ops::Range;
 
 use crate::{CfgError, CfgFile, Instance};
+
+pub mod syssig;
+
+pub use syssig::{SysAction, SysInput, SysOutput, SysStatus};
 
 /// The six signal types of `-SignalType`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -144,6 +148,10 @@ pub struct Eio {
     pub devices: Vec<Device>,
     pub networks: Vec<Network>,
     pub cross: Vec<CrossConnection>,
+    /// `SYSSIG_IN`: inputs that operate the controller.
+    pub sys_inputs: Vec<SysInput>,
+    /// `SYSSIG_OUT`: outputs that show the controller's state.
+    pub sys_outputs: Vec<SysOutput>,
     /// What the view refuses (the parser's errors are in the file).
     pub errors: Vec<CfgError>,
 }
@@ -219,6 +227,7 @@ pub fn read(file: &CfgFile) -> Eio {
     }
     eio.errors.append(&mut cross_errors);
     check_loops(file, &mut eio);
+    syssig::read(file, &mut eio);
     // Findings carry the line of their own span (a value may sit on a continuation line).
     for error in &mut eio.errors {
         error.line = file.line_of(error.span.start);

@@ -7,10 +7,12 @@
 //!
 //! No IO of its own: output and operator input go through the `Host` the caller gives.
 
+pub mod ops;
 pub mod pers;
 pub mod schedule;
 pub mod task;
 mod types;
 
+pub use ops::{ProgramState, StartMode, StopKind};
 pub use schedule::{Controller, SystemExit};
 pub use task::{TaskEnd, TaskKind, TaskSpec, TrustLevel};

@@ -33,11 +33,14 @@ pub enum SystemExit {
     /// The run is over: every NORMAL task has ended (or, in a system of static tasks
     /// only, every task), or the system stopped them (trust level).
     Ended,
+    /// The program is stopped (a controller operation) and nothing scheduled can
+    /// start it again: [`Controller::start`] would.
+    Stopped,
 }
 
 /// Where a task stands.
 #[derive(Debug, Clone, PartialEq)]
-enum State {
+pub(crate) enum State {
     Ready,
     /// Waiting until the clock reaches `until`; a wait that `rechecks` may be woken
     /// early when the shared state changes past `epoch`.
@@ -53,7 +56,7 @@ enum State {
 pub struct Task {
     pub spec: TaskSpec,
     pub loaded: Loaded,
-    state: State,
+    pub(crate) state: State,
     pers: TaskPers,
     /// Index of the task this one stands behind.
     foreground: Option<usize>,
@@ -82,7 +85,7 @@ pub struct SystemStop {
 /// The tasks of one controller and what they share.
 pub struct Controller {
     pub tasks: Vec<Task>,
-    shared: Shared,
+    pub(crate) shared: Shared,
     pers: PersStore,
     /// `maps[a][b]`: renumbering of task a's record types into task b's.
     maps: Vec<Vec<TypeMap>>,
@@ -96,6 +99,8 @@ pub struct Controller {
     pub stop_routines: Vec<Vec<String>>,
     /// Instructions run since the last NORMAL task ended.
     drained: u64,
+    /// Program stop and start, system inputs and outputs (`ops.rs`).
+    pub(crate) ops: crate::ops::Operations,
 }
 
 impl Controller {
@@ -151,6 +156,7 @@ impl Controller {
             system_stop: None,
             stop_routines,
             drained: 0,
+            ops: crate::ops::Operations::default(),
         })
     }
 
@@ -179,13 +185,24 @@ impl Controller {
         routine: &str,
         event: u8,
     ) -> Result<bool, rapid_vm::Unhandled> {
+        let entry = self.tasks[idx].loaded.entry;
+        self.with_task(idx, host, |vm, host| vm.run_event_routine(host, routine, event, entry))
+    }
+
+    /// Runs `f` on task `idx`'s VM at the controller's time with the shared state and
+    /// the persistents handed in, and takes them (and the clock) back after.
+    pub(crate) fn with_task<R>(
+        &mut self,
+        idx: usize,
+        host: &mut dyn Host,
+        f: impl FnOnce(&mut rapid_vm::Vm, &mut dyn Host) -> R,
+    ) -> R {
         let time = self.time;
         let task = &mut self.tasks[idx];
         self.pers.copy_in(idx, &mut task.pers, &mut task.loaded.vm, &self.maps);
         task.loaded.vm.time = time;
         task.loaded.vm.exchange_shared(&mut self.shared);
-        let entry = task.loaded.entry;
-        let outcome = task.loaded.vm.run_event_routine(host, routine, event, entry);
+        let outcome = f(&mut task.loaded.vm, host);
         task.loaded.vm.exchange_shared(&mut self.shared);
         self.pers.copy_out(idx, &mut task.pers, &task.loaded.vm);
         self.publish_events(idx);
@@ -275,6 +292,7 @@ impl Controller {
     pub fn run(&mut self, host: &mut dyn Host, budget: u64) -> SystemExit {
         let mut remaining = budget;
         while remaining > 0 {
+            self.operate(host);
             self.wake();
             let mut runnable = self.runnable();
             if self.is_over() {
@@ -290,13 +308,7 @@ impl Controller {
                 }
                 self.drained += runnable.len() as u64;
             } else if runnable.is_empty() {
-                return match self.next_wake() {
-                    Some(until) => SystemExit::Wait((until - self.time).max(0.0)),
-                    None => {
-                        self.halt_the_rest();
-                        SystemExit::Ended
-                    }
-                };
+                return self.idle();
             }
             for idx in runnable {
                 if remaining == 0 {
@@ -310,6 +322,31 @@ impl Controller {
             }
         }
         SystemExit::Budget
+    }
+
+    /// Nothing can run now: wait for the next task to wake or (with system inputs) the
+    /// next I/O event. A stopped program waits only for what may start it again (static
+    /// tasks run meanwhile); when nothing can, `Stopped`.
+    fn idle(&mut self) -> SystemExit {
+        let operation = self.next_operation();
+        let earliest = |times: &mut dyn Iterator<Item = f64>| times.min_by(f64::total_cmp);
+        let next = if self.program_state() == crate::ops::ProgramState::Stopped {
+            let Some(operation) = operation else { return SystemExit::Stopped };
+            let statics = self.tasks.iter().filter(|t| t.spec.kind != TaskKind::Normal).filter_map(|t| match t.state {
+                State::Waiting { until, .. } => Some(until),
+                _ => None,
+            });
+            earliest(&mut statics.chain(Some(operation)))
+        } else {
+            earliest(&mut [self.next_wake(), operation].into_iter().flatten())
+        };
+        match next {
+            Some(until) => SystemExit::Wait((until - self.time).max(0.0)),
+            None => {
+                self.halt_the_rest();
+                SystemExit::Ended
+            }
+        }
     }
 
     /// Runs one instruction of task `idx` with the shared state handed in.
@@ -329,7 +366,9 @@ impl Controller {
         self.time = self.time.max(self.tasks[idx].loaded.vm.time) + INSTRUCTION_TIME;
         let epoch = self.epoch();
         let rechecks = self.tasks[idx].loaded.vm.wait_rechecks;
+        let held = exit == Exit::Stopped && self.stop_instruction_holds(idx);
         let state = match exit {
+            Exit::Stopped if held => State::Ready,
             Exit::Budget => State::Ready,
             Exit::Wait(seconds) => State::Waiting { until: time + seconds, rechecks, epoch },
             Exit::Done => self.cycle_end(idx, TaskEnd::Done),
@@ -343,6 +382,9 @@ impl Controller {
         if self.tasks[idx].loaded.vm.resources_mut().controller.warm_start {
             self.halt_the_rest();
             return;
+        }
+        if held {
+            self.stopped_by_instruction(host);
         }
         if self.tasks[idx].state == State::Ended(TaskEnd::Stopped) {
             self.run_stop_routines(idx, host);
@@ -380,6 +422,7 @@ impl Controller {
     /// A task ended: the others see it no longer executing; a static task's stop
     /// applies its trust level.
     fn after_end(&mut self, idx: usize) {
+        self.ops.outputs_stale = true;
         let name = self.tasks[idx].spec.name.clone();
         self.shared.tasking.set_executing(&name, false);
         // A task that asked for a warm start did not fail: its trust level is not applied.
@@ -419,7 +462,7 @@ impl Controller {
     /// Ready tasks none of whose foreground tasks is busy, in configuration order.
     fn runnable(&self) -> Vec<usize> {
         (0..self.tasks.len())
-            .filter(|&idx| self.tasks[idx].state == State::Ready && self.foreground_idle(idx))
+            .filter(|&idx| self.tasks[idx].state == State::Ready && self.foreground_idle(idx) && self.may_run(idx))
             .collect()
     }
 

@@ -314,6 +314,24 @@ impl IoSystem {
         Ok(())
     }
 
+    /// The controller sets one of its system outputs (SYSSIG_OUT) now: any access
+    /// level (a read-only output is read-only for programs, not for the system); a
+    /// pending order of the signal is cancelled as by a program order.
+    pub fn set_by_system(&mut self, id: SignalId, value: f64, t: f64) -> Result<(), IoError> {
+        self.advance(t);
+        let def = self.def_of(id)?;
+        if def.kind.is_input() {
+            return Err(self.wrong_kind(id, "a system output"));
+        }
+        let value = check_value(def, value)?;
+        if self.values.get(id as usize) == Some(&value) {
+            return Ok(());
+        }
+        self.cancel(id);
+        self.change(id, value, Cause::Order);
+        Ok(())
+    }
+
     /// SetDO/SetGO `\SDelay`: the change happens `delay` seconds after `t`; the program goes on.
     /// The value is checked now. The order replaces any earlier pending order of the signal.
     pub fn set_delayed(&mut self, id: SignalId, value: f64, t: f64, delay: f64) -> Result<(), IoError> {

@@ -31,7 +31,9 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     if inputs.diagnostics.iter().any(|d| d.code == Code::ConfigFile && d.severity() == Severity::Error) {
         return report_input_errors(&inputs);
     }
-    if inputs.sys.as_ref().is_some_and(|sys| sys.tasks.len() > 1) {
+    // Several tasks, or system inputs and outputs (the controller operates the program
+    // on their behalf), run under the controller.
+    if inputs.sys.as_ref().is_some_and(|sys| sys.tasks.len() > 1) || super::run_system::has_system_signals(&inputs) {
         return super::run_system::run(args, inputs);
     }
     let entry = match (&args.entry, inputs.task.as_ref().and_then(|t| t.entry.as_ref())) {

@@ -3,6 +3,11 @@
 //! pseudo-parallel (`rapid_controller`), sharing the I/O system and the global
 //! persistents. The run ends when every NORMAL task has ended; each task's unhandled
 //! error is reported with the task's name.
+//!
+//! A single task runs here too when the I/O configuration has system inputs or
+//! outputs (`SYSSIG_IN`, `SYSSIG_OUT`): the controller stops and starts the program
+//! on their rising edges and sets the outputs (`rapid_controller::ops`). A program
+//! stopped that nothing in the stimulus starts again ends the run (exit 0).
 
 // The CLI is the one crate that talks to the terminal; run reports on stderr.
 #![allow(clippy::print_stderr)]
@@ -30,7 +35,11 @@ struct LoadedTask {
 }
 
 pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
-    let Some(sys) = first.sys.clone() else { return single::run(args) };
+    let sys = match first.sys.clone() {
+        Some(sys) => sys,
+        None if has_system_signals(&first) => one_task_system(&first),
+        None => return single::run(args),
+    };
     let specs = match task_specs(&sys) {
         Ok(specs) => specs,
         Err(message) => return refuse(&message),
@@ -38,7 +47,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     let mut tasks = Vec::new();
     let mut first = Some(first);
     for spec in specs {
-        let inputs = match first.take().filter(|f| f.task.as_ref().is_some_and(|t| t.name == spec.name)) {
+        let inputs = match first.take().filter(|f| f.task.as_ref().is_none_or(|t| t.name == spec.name)) {
             Some(inputs) => inputs,
             None => inputs::collect_task(&args.paths, Some(&spec.name))?,
         };
@@ -95,6 +104,9 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     if let Err(message) = install_stimulus(&mut controller, args) {
         return refuse(&message);
     }
+    if let Err(message) = configure_operations(&mut controller, &tasks[0].inputs, &sys, args) {
+        return refuse(&message);
+    }
     let mut host =
         StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers: single::pendant_answers(args)? };
     for task in &mut controller.tasks {
@@ -122,7 +134,8 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     let program_end = controller.time;
     for task in &mut controller.tasks {
         let name = task.spec.name.clone();
-        let failed = matches!(task.end(), Some(TaskEnd::Failed(_))) || bounded.is_some();
+        let bound = bounded.as_ref().is_some_and(|b| !matches!(b, Bound::Stopped));
+        let failed = matches!(task.end(), Some(TaskEnd::Failed(_))) || bound;
         let status = if failed { ExitStatus::Failure } else { ExitStatus::Success };
         task.loaded.vm.time = program_end;
         single::log_stop(&mut task.loaded.vm, &name, status);
@@ -140,6 +153,53 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     let status = report(&controller, &tasks, bounded);
     finish(&controller, &tasks, args)?;
     Ok(status)
+}
+
+/// Whether the inputs' I/O configuration has system inputs or outputs.
+pub(crate) fn has_system_signals(inputs: &Inputs) -> bool {
+    eio_of(inputs).is_some_and(|eio| !eio.sys_inputs.is_empty() || !eio.sys_outputs.is_empty())
+}
+
+/// The typed view of the inputs' EIO configuration, if they have one.
+fn eio_of(inputs: &Inputs) -> Option<rapid_config::eio::Eio> {
+    let eio = inputs.syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("EIO"))?;
+    Some(rapid_config::eio::read(&eio.1))
+}
+
+/// The system of a single task without a task configuration: one NORMAL motion task.
+fn one_task_system(inputs: &Inputs) -> Sys {
+    let name = inputs.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
+    let entry = inputs.task.as_ref().and_then(|t| t.entry.clone()).unwrap_or_else(|| "main".to_owned());
+    let task = rapid_config::sys::Task {
+        name,
+        task_type: TaskType::Normal,
+        entry,
+        trust_level: None,
+        motion_task: true,
+        mechanical_unit_group: None,
+        hidden: false,
+        foreground: None,
+        rmq: rapid_config::sys::Rmq::default(),
+        line: 0,
+    };
+    Sys { tasks: vec![task], ..Sys::default() }
+}
+
+/// The system inputs and outputs and the event routines the operations run.
+fn configure_operations(controller: &mut Controller, inputs: &Inputs, sys: &Sys, args: &RunArgs) -> Result<(), String> {
+    let auto = args.controller_state().mode == rapid_vm::builtins::controller::OpMode::Auto;
+    if let Some(eio) = eio_of(inputs) {
+        controller.configure_system_signals(&eio, auto)?;
+    }
+    for shelf in ["STOP", "QSTOP", "RESTART", "START"] {
+        let routines = controller
+            .tasks
+            .iter()
+            .map(|t| sys.hooks_for(&t.spec.name, shelf).into_iter().map(str::to_owned).collect())
+            .collect();
+        controller.set_event_routines(shelf, routines);
+    }
+    Ok(())
 }
 
 /// Every event routine the configuration names exists in its task.
@@ -252,6 +312,9 @@ enum Bound {
     Steps(u64),
     Time(f64),
     InternalError,
+    /// The program was stopped (a system input) and nothing in the stimulus starts it
+    /// again.
+    Stopped,
 }
 
 /// Runs the system to its end or to a bound.
@@ -266,6 +329,7 @@ fn drive(controller: &mut Controller, host: &mut StdoutHost<'_>, args: &RunArgs)
         }
         match exit {
             SystemExit::Ended => return None,
+            SystemExit::Stopped => return Some(Bound::Stopped),
             SystemExit::Budget => {}
             SystemExit::Wait(seconds) => {
                 controller.advance(seconds);
@@ -295,6 +359,12 @@ fn report(controller: &Controller, tasks: &[LoadedTask], bound: Option<Bound>) -
         Some(Bound::Time(max)) => {
             eprintln!("error: stopped at {max} s of controller time (--max-time); the program did not end");
             status = ExitStatus::Failure;
+        }
+        Some(Bound::Stopped) => {
+            eprintln!(
+                "the program is stopped at {:.3} s of controller time and nothing in the stimulus starts it again; the run ends here",
+                controller.time
+            );
         }
         Some(Bound::InternalError) => {
             eprintln!("internal error: the interpreter failed; please report this program");

@@ -8,6 +8,11 @@
 //! asleep are dropped; while interrupts are disabled they queue, first in first out, at
 //! most `MAX_QUEUED` (manual §1.11: interrupts are queued while disabled or while a trap
 //! runs).
+//!
+//! Safe interrupts (§1.11 安全中断, ordered with `\SingleSafe`): while the program is
+//! stopped ([`InterruptState::program_stopped`]) the queue keeps only safe interrupts
+//! and only their events are queued; the others are dropped. When the program starts
+//! again the queued safe interrupts run first, in the order they came.
 
 use super::io::connected;
 use super::{present, Ctx, Entries};
@@ -48,6 +53,17 @@ pub struct Interrupt {
     pub source: Option<Source>,
     /// ISleep: events are dropped until IWatch.
     pub asleep: bool,
+    /// Ordered with `\SingleSafe`: its events are kept across a program stop.
+    pub safe: bool,
+}
+
+/// A program stop under way (the controller's stop, not the Stop instruction).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ProgramStop {
+    /// The controller time of the stop.
+    pub since: f64,
+    /// Whether the stop stopped the robot on its path (it is moved on at the start).
+    pub paused_robot: bool,
 }
 
 /// The task's interrupts.
@@ -71,6 +87,8 @@ pub struct InterruptState {
     pub next_foreign: usize,
     /// Interrupts to fire at a controller time (TriggInt): (time, number).
     pub scheduled: Vec<(f64, u32)>,
+    /// The program is stopped: only safe interrupts queue.
+    pub stop: Option<ProgramStop>,
 }
 
 /// A trapdata handle or an event number with this bit set names an entry of the
@@ -125,7 +143,7 @@ impl InterruptState {
 
     /// A new interrupt for `trap`; its number.
     pub fn connect(&mut self, trap: u32) -> u32 {
-        self.table.push(Some(Interrupt { trap, source: None, asleep: false }));
+        self.table.push(Some(Interrupt { trap, source: None, asleep: false, safe: false }));
         self.table.len() as u32
     }
 
@@ -133,12 +151,65 @@ impl InterruptState {
         self.table.get_mut((number as usize).checked_sub(1)?)?.as_mut()
     }
 
-    /// An event of interrupt `number`: queued unless it sleeps (or the queue is full).
+    /// An event of interrupt `number`: queued unless it sleeps (or the queue is full),
+    /// or the program is stopped and the interrupt is not safe (§1.11).
     pub fn fire(&mut self, number: u32) {
-        let awake = self.get_mut(number).is_some_and(|i| !i.asleep);
-        if awake && self.queue.len() < MAX_QUEUED {
+        let stopped = self.stop.is_some();
+        let wanted = self.get_mut(number).is_some_and(|i| !i.asleep && (i.safe || !stopped));
+        if wanted && self.queue.len() < MAX_QUEUED {
             self.queue.push_back(number);
         }
+    }
+
+    /// Whether interrupt `number` was ordered with `\SingleSafe`.
+    pub fn is_safe(&self, number: u32) -> bool {
+        let slot = (number as usize).checked_sub(1).and_then(|i| self.table.get(i));
+        slot.and_then(Option::as_ref).is_some_and(|i| i.safe)
+    }
+
+    /// The program stops at `time` (§1.11): the queue keeps only its safe interrupts,
+    /// and until [`InterruptState::program_started`] only safe ones queue.
+    pub fn program_stopped(&mut self, time: f64, paused_robot: bool) {
+        let queue = std::mem::take(&mut self.queue);
+        self.queue = queue.into_iter().filter(|&n| self.is_safe(n)).collect();
+        let queue = &self.queue;
+        self.events.retain(|(n, _)| queue.contains(n));
+        self.stop = Some(ProgramStop { since: time, paused_robot });
+    }
+
+    /// The timers that came due while the program stood, up to `now`: each period that
+    /// ended is an event (a safe timer, single by `\SingleSafe`, queues its one event;
+    /// the others are dropped), and a periodic timer goes on from its next period
+    /// after `now`.
+    // uncertain: the manual does not say whether a timer goes on counting while the
+    // program is stopped; we take it that it does (its events are what a safe interrupt
+    // keeps).
+    pub fn catch_up_timers(&mut self, now: f64) {
+        let mut fired = Vec::new();
+        for (idx, slot) in self.table.iter_mut().enumerate() {
+            let Some(interrupt) = slot else { continue };
+            let Some(Source::Timer { period, next, single }) = &mut interrupt.source else { continue };
+            if *next > now {
+                continue;
+            }
+            let periods = ((now - *next) / *period).floor() + 1.0;
+            let events = if *single { 1 } else { periods.min(MAX_QUEUED as f64) as usize };
+            fired.extend(std::iter::repeat_n(idx as u32 + 1, events));
+            if *single {
+                interrupt.source = None;
+            } else {
+                *next += periods * *period;
+            }
+        }
+        for number in fired {
+            self.fire(number);
+        }
+    }
+
+    /// The program starts again: the stop ends (what it was, for the caller). The safe
+    /// interrupts queued meanwhile are first in the queue, in the order they came.
+    pub fn program_started(&mut self) -> Option<ProgramStop> {
+        self.stop.take()
     }
 
     /// PP to Main: interrupts are deleted (§1.2.2 start-up table).
@@ -181,6 +252,7 @@ fn itimer(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let next = ctx.time + period;
     if let Some(interrupt) = ctx.resources.interrupts.get_mut(n) {
         interrupt.source = Some(super::interrupts::Source::Timer { period, next, single });
+        interrupt.safe = present(args.get(1));
     }
     Ok(None)
 }
@@ -195,7 +267,7 @@ fn isignal_digital(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         return Err(ctx.error(Err::ArgValue, format!("TriggValue {value} is not 0, 1 or 2")));
     }
     let n = interrupt_number(ctx, &args[4])?;
-    watch_signal(ctx, n, Source::Signal { id, value, single });
+    watch_signal(ctx, n, Source::Signal { id, value, single }, present(args.get(1)));
     Ok(None)
 }
 
@@ -205,7 +277,7 @@ fn isignal_group(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let single = present(args.first()) || present(args.get(1));
     let id = connected(ctx, &args[2])?;
     let n = interrupt_number(ctx, &args[3])?;
-    watch_signal(ctx, n, Source::Signal { id, value: 2.0, single });
+    watch_signal(ctx, n, Source::Signal { id, value: 2.0, single }, present(args.get(1)));
     Ok(None)
 }
 
@@ -228,17 +300,19 @@ fn isignal_analog(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let trigger = rapid_io::AnalogTrigger::new(condition, high, low, delta, direction, current)
         .map_err(|err| ctx.error(Err::ArgValue, err.to_string()))?;
     let n = interrupt_number(ctx, &args[9])?;
-    watch_signal(ctx, n, Source::Analog { id, trigger, single });
+    watch_signal(ctx, n, Source::Analog { id, trigger, single }, present(args.get(1)));
     Ok(None)
 }
 
-/// Orders interrupt `n` on a signal: only changes from now on count.
-fn watch_signal(ctx: &mut Ctx<'_>, n: u32, source: Source) {
+/// Orders interrupt `n` on a signal (`safe`: `\SingleSafe`): only changes from now on
+/// count.
+fn watch_signal(ctx: &mut Ctx<'_>, n: u32, source: Source, safe: bool) {
     let logged = ctx.resources.io.system.as_ref().map_or(0, |io| io.changes().len());
     let interrupts = &mut ctx.resources.interrupts;
     interrupts.seen_changes = interrupts.seen_changes.max(logged);
     if let Some(interrupt) = interrupts.get_mut(n) {
         interrupt.source = Some(source);
+        interrupt.safe = safe;
     }
 }
 
@@ -252,6 +326,7 @@ fn ipers(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let n = interrupt_number(ctx, &args[3])?;
     if let Some(interrupt) = ctx.resources.interrupts.get_mut(n) {
         interrupt.source = Some(Source::Pers { place, last, single });
+        interrupt.safe = present(args.get(1));
     }
     Ok(None)
 }
@@ -392,3 +467,48 @@ pub(super) static ENTRIES: Entries = &[
     ("IDisable", idisable),
     ("IEnable", ienable),
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::{InterruptState, Source};
+
+    /// Interrupts 1 (plain) and 2 (safe), both timers of 1 s due at 1.
+    fn two_timers() -> InterruptState {
+        let mut state = InterruptState::default();
+        for safe in [false, true] {
+            let n = state.connect(0);
+            let interrupt = state.get_mut(n).expect("connected");
+            interrupt.source = Some(Source::Timer { period: 1.0, next: 1.0, single: safe });
+            interrupt.safe = safe;
+        }
+        state
+    }
+
+    #[test]
+    fn a_stop_keeps_only_safe_interrupts_queued_and_queues_only_safe_events() {
+        let mut state = two_timers();
+        state.fire(1);
+        state.fire(2);
+        state.fire(1);
+        state.program_stopped(0.5, false);
+        assert_eq!(state.queue, [2]);
+        state.fire(1);
+        state.fire(2);
+        assert_eq!(state.queue, [2, 2]);
+        assert_eq!(state.program_started().map(|s| s.since), Some(0.5));
+        state.fire(1);
+        assert_eq!(state.queue, [2, 2, 1]);
+    }
+
+    #[test]
+    fn timers_due_while_stopped_fire_once_and_go_on_from_their_next_period() {
+        let mut state = two_timers();
+        state.program_stopped(0.5, false);
+        state.catch_up_timers(3.5);
+        // The plain periodic timer's events (1, 2, 3) are dropped; it is next due at 4.
+        // The safe single timer queued its one event and is spent.
+        assert_eq!(state.queue, [2]);
+        assert_eq!(state.next_timer(), Some(4.0));
+        assert!(state.get_mut(2).is_some_and(|i| i.source.is_none()));
+    }
+}

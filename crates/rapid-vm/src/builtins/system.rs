@@ -17,15 +17,21 @@ pub(super) fn wait_time(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
     // another task causes (a persistent, a message) has no time: the wait re-checks, so
     // the controller resumes it when that task changes something.
     let due = super::interrupts::next_due(ctx);
+    let here = (ctx.chain.len(), ctx.chain.last().map_or(0, |f| f.position().1));
+    let resumed = match ctx.resources.io.waiting {
+        Some((depth, pc, at)) if (depth, pc) == here => Some(at),
+        _ => None,
+    };
     if due.is_none() && !ctx.resources.interrupts.active() {
-        ctx.wait = Some(seconds);
+        // A wait a trap cut short goes on for the rest of its time, not afresh.
+        ctx.resources.io.waiting = None;
+        let rest = resumed.map_or(seconds, |at| at + seconds - ctx.time);
+        if rest > 0.0 {
+            ctx.wait = Some(rest);
+        }
         return Ok(None);
     }
-    let here = (ctx.chain.len(), ctx.chain.last().map_or(0, |f| f.position().1));
-    let started = match ctx.resources.io.waiting {
-        Some((depth, pc, at)) if (depth, pc) == here => at,
-        _ => ctx.time,
-    };
+    let started = resumed.unwrap_or(ctx.time);
     let end = started + seconds;
     if ctx.time >= end {
         ctx.resources.io.waiting = None;

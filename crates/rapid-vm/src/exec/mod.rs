@@ -18,6 +18,7 @@ mod log;
 pub mod modules;
 mod shared;
 mod spy;
+mod stop;
 pub mod storage;
 
 use std::rc::Rc;

@@ -1,0 +1,304 @@
+//! System inputs and outputs of the I/O configuration (`SYSSIG_IN`, `SYSSIG_OUT`): a
+//! digital input that starts, stops or otherwise operates the controller on its
+//! rising edge, and a digital output the controller sets to show its state.
+//!
+//! Sources: the types and attributes (`-Signal -Action -Arg1`, `-Status -Signal
+//! -Arg2`) are those RobotStudio writes in EIO.cfg, as public tools that read and
+//! write these sections show. The action and status names are those of ABB's
+//! *Technical reference manual – System parameters* (topic I/O System, types System
+//! Input and System Output) as we remember them; we could not confirm them from a
+//! public copy.
+// uncertain: every action and status name below, and the arguments each takes.
+
+use std::ops::Range;
+
+use super::{push, value_span, Eio, SignalType};
+use crate::{CfgError, CfgFile, Instance};
+
+/// What a system input does on its rising edge (`-Action`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SysAction {
+    /// Start (restart) the NORMAL tasks where they stand.
+    Start,
+    /// PP to Main, then start.
+    StartMain,
+    /// Stop at the next instruction.
+    Stop,
+    /// Stop at once, the robot braking hard (modelled as Stop).
+    QuickStop,
+    /// Stop with a softer brake (modelled as Stop).
+    SoftStop,
+    /// Stop when the cycle (main) ends.
+    StopCycle,
+    /// Stop when the instruction under way ends (modelled as Stop: tasks always stop
+    /// between instructions).
+    StopInstr,
+    MotorOn,
+    MotorOff,
+    /// Motors on, then start.
+    MotorOnStart,
+    /// Reset the execution error output.
+    ResetError,
+    /// PP to Main without starting.
+    PpToMain,
+}
+
+/// The `-Action` spellings, in EIO.cfg and ours.
+const ACTIONS: &[(&str, SysAction)] = &[
+    ("Start", SysAction::Start),
+    ("StartMain", SysAction::StartMain),
+    ("Stop", SysAction::Stop),
+    ("QuickStop", SysAction::QuickStop),
+    ("SoftStop", SysAction::SoftStop),
+    ("StopCycle", SysAction::StopCycle),
+    ("StopInstr", SysAction::StopInstr),
+    ("MotorOn", SysAction::MotorOn),
+    ("MotorOff", SysAction::MotorOff),
+    ("MotOnStart", SysAction::MotorOnStart),
+    ("ResetError", SysAction::ResetError),
+    ("PpToMain", SysAction::PpToMain),
+];
+
+/// What a system output shows (`-Status`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SysStatus {
+    /// 1 while the program runs.
+    CycleOn,
+    /// 1 while the motors are on.
+    MotorOn,
+    /// 1 while the motors are off.
+    MotorOff,
+    /// As MotorOn and MotorOff, steady (no flashing states are modelled).
+    MotOnState,
+    MotOffState,
+    /// 1 in automatic mode.
+    AutoOn,
+    /// 1 while the task `-Arg2` executes.
+    TaskExecuting,
+    /// Execution error: 1 when a task (`-Arg2`, all when not given) stopped on an error.
+    Error,
+    /// The run chain is closed (no emergency stop): 1 from power on.
+    RunchOk,
+    /// Emergency stop: 0 (never pressed in a virtual run).
+    EmStop,
+}
+
+const STATUSES: &[(&str, SysStatus)] = &[
+    ("CycleOn", SysStatus::CycleOn),
+    ("MotorOn", SysStatus::MotorOn),
+    ("MotorOff", SysStatus::MotorOff),
+    ("MotOnState", SysStatus::MotOnState),
+    ("MotOffState", SysStatus::MotOffState),
+    ("AutoOn", SysStatus::AutoOn),
+    ("TaskExecuting", SysStatus::TaskExecuting),
+    ("Error", SysStatus::Error),
+    ("RunchOk", SysStatus::RunchOk),
+    ("EmStop", SysStatus::EmStop),
+];
+
+/// One `SYSSIG_IN` instance.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SysInput {
+    pub signal: String,
+    pub action: SysAction,
+    /// Start's `-Arg1`: `CONT` (continuous) or `CYCLE` (one cycle).
+    pub arg1: Option<String>,
+    pub line: u32,
+}
+
+/// One `SYSSIG_OUT` instance.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SysOutput {
+    pub signal: String,
+    pub status: SysStatus,
+    /// `-Arg2`: the task (TaskExecuting, Error).
+    pub task: Option<String>,
+    pub line: u32,
+}
+
+/// The spelling of an action as the configuration writes it.
+pub fn action_name(action: SysAction) -> &'static str {
+    ACTIONS.iter().find(|(_, a)| *a == action).map_or("?", |(n, _)| n)
+}
+
+/// The spelling of a status as the configuration writes it.
+pub fn status_name(status: SysStatus) -> &'static str {
+    STATUSES.iter().find(|(_, s)| *s == status).map_or("?", |(n, _)| n)
+}
+
+/// Reads the system inputs and outputs into `eio` (its signals read already).
+pub(super) fn read(file: &CfgFile, eio: &mut Eio) {
+    let mut errors = Vec::new();
+    for inst in file.instances("SYSSIG_IN") {
+        let Some(signal) = checked_signal(inst, eio, SignalType::Di, "SYSSIG_IN", &mut errors) else { continue };
+        let Some(text) = inst.value("Action") else {
+            push(&mut errors, inst, None, format!("system input `{signal}` has no `-Action`"));
+            continue;
+        };
+        let Some(action) = ACTIONS.iter().find(|(n, _)| n.eq_ignore_ascii_case(text)).map(|(_, a)| *a) else {
+            let names: Vec<&str> = ACTIONS.iter().map(|(n, _)| *n).collect();
+            let message = format!("system input `{signal}`: unknown action `{text}` (one of {})", names.join(", "));
+            push(&mut errors, inst, value_span(inst, "Action"), message);
+            continue;
+        };
+        let arg1 = inst.value("Arg1").map(str::to_owned);
+        // uncertain: Start, StartMain and MotOnStart take CONT or CYCLE as -Arg1.
+        if let Some(arg) = &arg1 {
+            let takes_mode = matches!(action, SysAction::Start | SysAction::StartMain | SysAction::MotorOnStart);
+            if takes_mode && !["CONT", "CYCLE"].contains(&arg.to_ascii_uppercase().as_str()) {
+                let message = format!("system input `{signal}`: `-Arg1 {arg}` is neither CONT nor CYCLE");
+                push(&mut errors, inst, value_span(inst, "Arg1"), message);
+                continue;
+            }
+        }
+        if eio.sys_inputs.iter().any(|i| i.signal.eq_ignore_ascii_case(&signal)) {
+            let message = format!("signal `{signal}` is a system input twice");
+            push(&mut errors, inst, value_span(inst, "Signal"), message);
+            continue;
+        }
+        eio.sys_inputs.push(SysInput { signal, action, arg1, line: inst.line });
+    }
+    for inst in file.instances("SYSSIG_OUT") {
+        let Some(signal) = checked_signal(inst, eio, SignalType::Do, "SYSSIG_OUT", &mut errors) else { continue };
+        let Some(text) = inst.value("Status") else {
+            push(&mut errors, inst, None, format!("system output `{signal}` has no `-Status`"));
+            continue;
+        };
+        let Some(status) = STATUSES.iter().find(|(n, _)| n.eq_ignore_ascii_case(text)).map(|(_, s)| *s) else {
+            let names: Vec<&str> = STATUSES.iter().map(|(n, _)| *n).collect();
+            let message = format!("system output `{signal}`: unknown status `{text}` (one of {})", names.join(", "));
+            push(&mut errors, inst, value_span(inst, "Status"), message);
+            continue;
+        };
+        let task = inst.value("Arg2").map(str::to_owned);
+        if status == SysStatus::TaskExecuting && task.is_none() {
+            let message = format!("system output `{signal}`: TaskExecuting needs the task as `-Arg2`");
+            push(&mut errors, inst, None, message);
+            continue;
+        }
+        // One output shows one status: a second would fight the first.
+        if eio.sys_outputs.iter().any(|o| o.signal.eq_ignore_ascii_case(&signal)) {
+            let message = format!("signal `{signal}` is a system output twice");
+            push(&mut errors, inst, value_span(inst, "Signal"), message);
+            continue;
+        }
+        eio.sys_outputs.push(SysOutput { signal, status, task, line: inst.line });
+    }
+    eio.errors.append(&mut errors);
+}
+
+/// The instance's `-Signal`, when it names a configured signal of type `wanted`.
+fn checked_signal(
+    inst: &Instance,
+    eio: &Eio,
+    wanted: SignalType,
+    section: &str,
+    errors: &mut Vec<CfgError>,
+) -> Option<String> {
+    let Some(name) = inst.value("Signal") else {
+        push(errors, inst, None, format!("a {section} instance without `-Signal`"));
+        return None;
+    };
+    let span: Option<Range<usize>> = value_span(inst, "Signal");
+    let Some(signal) = eio.signal(name) else {
+        push(errors, inst, span, format!("{section} names `{name}`, which is not a configured signal"));
+        return None;
+    };
+    if signal.signal_type != wanted {
+        let message = format!(
+            "{section} names `{name}`, a {} signal; it must be a {} signal",
+            upper(signal.signal_type.rapid_type()),
+            upper(wanted.rapid_type())
+        );
+        push(errors, inst, span, message);
+        return None;
+    }
+    Some(signal.name.clone())
+}
+
+/// `signaldi` → `DI`.
+fn upper(rapid_type: &str) -> String {
+    rapid_type.trim_start_matches("signal").to_ascii_uppercase()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::read;
+    use super::{SysAction, SysStatus};
+
+    const SIGNALS: &str = "EIO:CFG_1.0:6:1::
+#
+EIO_SIGNAL:
+
+      -Name \"diStart\" -SignalType \"DI\"
+
+      -Name \"diStop\" -SignalType \"DI\"
+
+      -Name \"doCycleOn\" -SignalType \"DO\"
+
+      -Name \"doExec\" -SignalType \"DO\"
+";
+
+    #[test]
+    fn system_inputs_and_outputs_are_read() {
+        let text = format!(
+            "{SIGNALS}#
+SYSSIG_IN:
+
+      -Signal \"diStart\" -Action \"Start\" -Arg1 \"CONT\"
+
+      -Signal \"diStop\" -Action \"stop\"
+#
+SYSSIG_OUT:
+
+      -Status \"CycleOn\" -Signal \"doCycleOn\"
+
+      -Status \"TaskExecuting\" -Signal \"doExec\" -Arg2 \"T_ROB1\"
+"
+        );
+        let eio = read(&crate::parse(&text));
+        assert!(eio.errors.is_empty(), "{:?}", eio.errors);
+        let inputs: Vec<(&str, SysAction)> = eio.sys_inputs.iter().map(|i| (i.signal.as_str(), i.action)).collect();
+        assert_eq!(inputs, [("diStart", SysAction::Start), ("diStop", SysAction::Stop)]);
+        assert_eq!(eio.sys_inputs[0].arg1.as_deref(), Some("CONT"));
+        let outputs: Vec<(SysStatus, Option<&str>)> =
+            eio.sys_outputs.iter().map(|o| (o.status, o.task.as_deref())).collect();
+        assert_eq!(outputs, [(SysStatus::CycleOn, None), (SysStatus::TaskExecuting, Some("T_ROB1"))]);
+    }
+
+    #[test]
+    fn bad_system_signal_lines_are_findings_with_their_lines() {
+        let text = format!(
+            "{SIGNALS}#
+SYSSIG_IN:
+
+      -Signal \"diStart\" -Action \"Jump\"
+
+      -Signal \"doExec\" -Action \"Stop\"
+
+      -Signal \"diMissing\" -Action \"Stop\"
+
+      -Signal \"diStop\" -Action \"Stop\"
+
+      -Signal \"diStop\" -Action \"Start\"
+
+      -Action \"Start\"
+#
+SYSSIG_OUT:
+
+      -Status \"Dancing\" -Signal \"doCycleOn\"
+
+      -Status \"CycleOn\" -Signal \"diStart\"
+
+      -Status \"TaskExecuting\" -Signal \"doExec\"
+"
+        );
+        let eio = read(&crate::parse(&text));
+        let found: Vec<u32> = eio.errors.iter().map(|e| e.line).collect();
+        assert_eq!(found, [15, 17, 19, 23, 25, 29, 31, 33], "{:?}", eio.errors);
+        assert!(eio.errors[0].message.contains("unknown action `Jump`"));
+        assert!(eio.errors[1].message.contains("a DO signal; it must be a DI signal"));
+        assert!(eio.errors[3].message.contains("a system input twice"));
+        assert_eq!(eio.sys_inputs.len(), 1);
+    }
+}
