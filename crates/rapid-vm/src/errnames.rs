@@ -125,4 +125,6 @@ errors! {
     SigSupSearch = "ERR_SIGSUPSEARCH",
     // I/O devices and networks (§1.9).
     NoRunUnit = "ERR_NORUNUNIT",
+    // Triggers (TriggLIOs/TriggJIOs name their signals).
+    SigName = "ERR_SIG_NAME",
 }

@@ -173,18 +173,8 @@ pub(super) fn require_motion_task(ctx: &Ctx<'_>) -> Result<(), RapidError> {
     Err(RapidError::fatal(format!("task {} is no motion task (-MotionTask): it cannot move the robot", tasking.name())))
 }
 
-/// Plans the move and makes the program wait until it may go on.
-fn go(
-    ctx: &mut Ctx<'_>,
-    args: &[Value],
-    layout: &Layout,
-    target: Target,
-    chain: rapid_motion::frames::FrameChain,
-) -> Res {
-    go_with(ctx, args, layout, target, chain, Vec::new())
-}
-
-/// [`go`] with an output set as the robot passes the point.
+/// Plans the move (with the events it fires on its path) and makes the program wait
+/// until it may go on.
 fn go_with(
     ctx: &mut Ctx<'_>,
     args: &[Value],
@@ -384,6 +374,7 @@ pub(crate) fn apply_due_events(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
                 }
             }
             super::robot::Action::Interrupt(number) => ctx.resources.interrupts.schedule(time, number),
+            super::robot::Action::Special(key) => super::trigg::defer(ctx, time, key),
         }
     }
     Ok(())
@@ -406,14 +397,24 @@ fn tcp_in_base(
 
 /// `MoveAbsJ`: joint interpolation to axis values (no displacement applies).
 pub(crate) fn move_abs_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    abs_joint_move(ctx, args, &MOVE_ABS_J, Vec::new())
+}
+
+/// MoveAbsJ and TriggAbsJ.
+pub(super) fn abs_joint_move(
+    ctx: &mut Ctx<'_>,
+    args: &[Value],
+    layout: &Layout,
+    events: Vec<super::robot::PathEvent>,
+) -> Res {
     require_motion_task(ctx)?;
-    refuse_unmodelled(args, &MOVE_ABS_J)?;
-    let chain = frames(ctx, args, &MOVE_ABS_J, false)?;
-    let joints = data::jointtarget(ctx, &ctx.value(&args[MOVE_ABS_J.to])?)?;
+    refuse_unmodelled(args, layout)?;
+    let chain = frames(ctx, args, layout, false)?;
+    let joints = data::jointtarget(ctx, &ctx.value(&args[layout.to])?)?;
     if let Some(axis) = ctx.resources.robot.kin.limit_violation(&joints) {
         return Err(motion_error(MotionError::JointLimit { axis }));
     }
-    go(ctx, args, &MOVE_ABS_J, Target::Joints(joints), chain)
+    go_with(ctx, args, layout, Target::Joints(joints), chain, events)
 }
 
 /// `WaitRob [\InPos] | [\ZeroSpeed]`: waits until the robot stands still at the end of

@@ -4,7 +4,7 @@
 //! stop (moves, path outputs, trigger interrupts, the program's wait for the robot)
 //! is held, and on StartMove everything is moved on by the time it stood.
 
-use super::super::{present, Ctx};
+use super::super::{present, Ctx, Resources};
 use crate::error::RapidError;
 use crate::value::Value;
 
@@ -34,20 +34,25 @@ fn refuse_all_tasks(args: &[Value], idx: usize) -> Result<(), RapidError> {
 // modelled: the robot stands at the place it was at the instant of StopMove.
 pub(crate) fn stop_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     refuse_all_tasks(args, 1)?;
-    if ctx.resources.robot.pause.is_some() {
-        return Ok(None);
+    hold(ctx.resources, ctx.time);
+    Ok(None)
+}
+
+/// The robot stops on its path at `now` (StopMove, TriggCheckIO `\StopMove`): what was
+/// planned after it is held until StartMove. Nothing changes when it is stopped already.
+pub(crate) fn hold(resources: &mut Resources, now: f64) {
+    if resources.robot.pause.is_some() {
+        return;
     }
-    let now = ctx.time;
-    let held_wait = ctx.resources.robot.hold_until.map(|_| f64::INFINITY);
-    let held_wait = std::mem::replace(&mut ctx.resources.robot.hold_until, held_wait);
-    let orders = &mut ctx.resources.io.path_orders;
+    let held_wait = resources.robot.hold_until.map(|_| f64::INFINITY);
+    let held_wait = std::mem::replace(&mut resources.robot.hold_until, held_wait);
+    let orders = &mut resources.io.path_orders;
     let split = orders.partition_point(|&(t, _, _)| t <= now);
     let held_orders = orders.split_off(split).into_iter().collect();
-    let scheduled = &mut ctx.resources.interrupts.scheduled;
+    let scheduled = &mut resources.interrupts.scheduled;
     let held_interrupts = scheduled.iter().copied().filter(|&(t, _)| t > now).collect();
     scheduled.retain(|&(t, _)| t <= now);
-    ctx.resources.robot.pause = Some(Pause { since: now, held_wait, held_orders, held_interrupts });
-    Ok(None)
+    resources.robot.pause = Some(Pause { since: now, held_wait, held_orders, held_interrupts });
 }
 
 /// `StartMove [\AllMotionTasks]`: the robot goes on along its path.
@@ -58,6 +63,13 @@ pub(crate) fn start_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let dt = (now - pause.since).max(0.0);
     ctx.resources.robot.resume_after(pause.since, dt);
     ctx.resources.robot.hold_until = pause.held_wait.map(|t| t + dt);
+    if let Some(until) = ctx.resources.robot.hold_until {
+        // The executor looks at the program's wait for the robot before each
+        // instruction only while an interrupt may come: a scheduled interrupt of number
+        // 0 (none has it) keeps it looking until the wait ends, also when StartMove ran
+        // in a trap of an interrupt that has no source (TriggInt, TriggCheckIO).
+        ctx.resources.interrupts.schedule(until, 0);
+    }
     for (t, signal, value) in pause.held_orders {
         ctx.resources.io.order_on_path(t + dt, signal, value);
     }
@@ -84,6 +96,8 @@ pub(crate) fn clear_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     let since = ctx.resources.robot.pause.as_ref().map_or(now, |p| p.since);
     ctx.resources.robot.stop_at(since);
     ctx.resources.robot.due.retain(|&(t, _)| t <= since);
+    ctx.resources.robot.trigg.pending.retain(|&(t, _)| t <= since);
+    ctx.resources.robot.trigg.runs.clear();
     if let Some(pause) = ctx.resources.robot.pause.as_mut() {
         pause.held_orders.clear();
         pause.held_interrupts.clear();

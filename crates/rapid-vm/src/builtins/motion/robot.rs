@@ -42,6 +42,9 @@ pub enum Action {
     Set { signal: u32, value: f64 },
     /// Fires an interrupt (TriggInt).
     Interrupt(u32),
+    /// A trigger laid out or decided by the trigger family (TriggCheckIO, TriggRampAO,
+    /// TriggSpeed, `\Inhib`): its key in `RobotState::trigg`.
+    Special(u32),
 }
 
 /// An event a move fires as the robot passes a place on its path: Move*DO/AO/GO's
@@ -95,6 +98,8 @@ pub struct RobotState {
     zone_inside: Vec<bool>,
     /// When the robot would enter a WZLimSup zone (execution stops).
     pub zone_violation: Option<f64>,
+    /// The trigger family's definitions, deferred actions and runs (ramps, TriggSpeed).
+    pub trigg: super::trigg::TriggState,
 }
 
 impl Default for RobotState {
@@ -130,6 +135,7 @@ impl RobotState {
             zones: Vec::new(),
             zone_inside: Vec::new(),
             zone_violation: None,
+            trigg: Default::default(),
         }
     }
 
@@ -195,6 +201,7 @@ impl RobotState {
             self.corner_path_failures += 1;
         }
         let events = self.events.pop_front().unwrap_or_default();
+        let mut specials = Vec::new();
         if !events.is_empty() {
             // The point: the middle of the corner path; at a stop point, when the robot
             // stands there.
@@ -206,9 +213,14 @@ impl RobotState {
                     At::BeforePoint(d) => self.time_at_distance(&planned, point, d, false),
                     At::AfterStart(d) => self.time_at_distance(&planned, point, d, true),
                 };
+                if let Action::Special(key) = event.action {
+                    specials.push((at, event.shift, key));
+                    continue;
+                }
                 self.due.push(((at + event.shift).max(planned.start), event.action));
             }
         }
+        self.trigg.on_move(&self.kin, &planned, &specials, &mut self.due);
         self.supervise_zones(&planned);
         self.motion_end = self.motion_end.max(planned.end);
         if let Some(recorded) = &mut self.recorded {
@@ -316,6 +328,7 @@ impl RobotState {
                 *t += dt;
             }
         }
+        self.trigg.delay_from(since, dt);
     }
 
     /// Whether the robot at `joints` (TCP of the active tool) is in zone `i`.
