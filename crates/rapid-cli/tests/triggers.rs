@@ -75,11 +75,29 @@ const P0: &str = "CONST robtarget p0 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 
 
 /// Runs `body` (the statements of main after a MoveJ to p0) with `decls` and `traps`.
 fn run(name: &str, decls: &str, body: &str, traps: &str, sigs: &[(&str, &str)], stim: &str) -> (Output, String) {
+    run_hooked(name, decls, body, traps, sigs, stim, "")
+}
+
+/// [`run`] with event routines (CAB_EXEC_HOOKS lines) in SYS.cfg.
+fn run_hooked(
+    name: &str,
+    decls: &str,
+    body: &str,
+    traps: &str,
+    sigs: &[(&str, &str)],
+    stim: &str,
+    hooks: &str,
+) -> (Output, String) {
     let dir = scratch(name);
     let module = format!(
         "MODULE S\n  {P0}\n{decls}\n  PROC main()\n    MoveJ p0, v1000, fine, tool0;\n{body}\n  ENDPROC\n{traps}\nENDMODULE\n"
     );
     system(&dir, &module, &signals(sigs));
+    if !hooks.is_empty() {
+        let path = dir.join("sys/SYSPAR/SYS.cfg");
+        let sys = fs::read_to_string(&path).expect("SYS.cfg") + "#\nCAB_EXEC_HOOKS:\n" + hooks;
+        fs::write(path, sys).expect("SYS.cfg");
+    }
     let mut args = vec!["run", "--quiet", "--io-log", "io.csv"];
     if !stim.is_empty() {
         fs::write(dir.join("s.stim"), stim).expect("stimulus");
@@ -229,4 +247,45 @@ fn trigg_abs_j_fires_at_its_stop_point() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     let settle = change_time(&log, "doAfter", 1.0) - change_time(&log, "doDone", 1.0);
     assert!((settle - 0.05).abs() < 0.0015, "the program went on {settle} s after doDone: {log}");
+}
+
+#[test]
+fn trigg_stop_proc_zeroes_the_process_outputs_at_a_program_stop() {
+    // The process starts 10 mm into a \\Conc move (0.105 s): doProc 1, goProc 5 and the
+    // shadow doShadow 1. The program stops 0.5 s after the move started, with the robot
+    // moving: doProc and goProc go to 0 then, doShadow stays, the robot stops on its
+    // path (so doProc's off trigger 20 mm before the point never comes), and the STOP
+    // event routine finds the restart data: stopped during motion, on the path, the
+    // values before the stop (equal at standstill: the robot stands at once).
+    let decls = "  PERS restartdata rd := [FALSE, FALSE, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0];\n  \
+                 VAR triggdata on;\n  VAR triggdata off;\n  VAR triggdata code;\n  VAR triggdata shadow;";
+    let body = "    TriggStopProc rd \\DO1:=doProc \\GO1:=goProc, doShadow;\n    \
+                TriggIO on, 10 \\Start \\DOp:=doProc, 1;\n    TriggIO off, 20 \\DOp:=doProc, 0;\n    \
+                TriggIO code, 10 \\Start \\GOp:=goProc, 5;\n    TriggIO shadow, 10 \\Start \\DOp:=doShadow, 1;\n    \
+                SetDO doStart, 1;\n    \
+                TriggL \\Conc, Offs(p0, 100, 0, 0), v100, on \\T2:=off \\T3:=code \\T4:=shadow, fine, tool0;\n    \
+                WaitTime 0.5;\n    Stop;\n    TPWrite \"not reached\";";
+    let traps = "  PROC on_stop()\n    TPWrite \"restartstop \" \\Bool:=rd.restartstop;\n    \
+                 TPWrite \"stoponpath \" \\Bool:=rd.stoponpath;\n    TPWrite \"predo1val \" \\Num:=rd.predo1val;\n    \
+                 TPWrite \"prego1val \" \\Num:=rd.prego1val;\n    TPWrite \"postgo1val \" \\Num:=rd.postgo1val;\n    \
+                 TPWrite \"preshadowval \" \\Num:=rd.preshadowval;\n    TPWrite \"shadowflanks \" \\Num:=rd.shadowflanks;\n  ENDPROC";
+    let sigs =
+        [("doStart", "\"DO\""), ("doProc", "\"DO\""), ("doShadow", "\"DO\""), ("goProc", "\"GO\" -DeviceMap \"0-7\"")];
+    let hooks = "\n      -Routine \"on_stop\" -Shelf \"STOP\" -Task \"T_ROB1\"\n";
+    let (out, log) = run_hooked("stopproc", decls, body, traps, &sigs, "", hooks);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(
+        text(&out.stdout),
+        "restartstop TRUE\nstoponpath TRUE\npredo1val 1\nprego1val 5\npostgo1val 5\npreshadowval 1\nshadowflanks 0\n"
+    );
+    let start = change_time(&log, "doStart", 1.0);
+    let on = change_time(&log, "doProc", 1.0) - start;
+    assert!((on - 0.105).abs() < 0.0025, "doProc on after {on} s: {log}");
+    for signal in ["doProc", "goProc"] {
+        let zero = change_time(&log, signal, 0.0) - start;
+        assert!((zero - 0.5).abs() < 0.0015, "{signal} 0 after {zero} s: {log}");
+        assert_eq!(changes(&log, signal).len(), 2, "{signal}: {log}");
+    }
+    let shadow: Vec<f64> = changes(&log, "doShadow").into_iter().map(|(_, v)| v).collect();
+    assert_eq!(shadow, [1.0], "doShadow: {log}");
 }

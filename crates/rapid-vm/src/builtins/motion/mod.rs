@@ -23,7 +23,7 @@ mod trigg;
 pub mod zones;
 
 pub(crate) use settings::set_payload;
-pub(crate) use trigg::poll as poll_triggers;
+pub(crate) use trigg::{poll as poll_triggers, program_stopped};
 
 use std::rc::Rc;
 
@@ -95,6 +95,7 @@ pub(super) static ENTRIES: Entries = &[
     ("TriggDataCopy", trigg::trigg_data_copy),
     ("TriggDataReset", trigg::trigg_data_reset),
     ("TriggDataValid", trigg::trigg_data_valid),
+    ("TriggStopProc", trigg::trigg_stop_proc),
     ("StopMove", pause::stop_move),
     ("StartMove", pause::start_move),
     ("IsStopMoveAct", pause::is_stop_move_act),

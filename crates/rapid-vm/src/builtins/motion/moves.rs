@@ -202,18 +202,25 @@ fn go_with(
     if present(args.get(layout.wobj)) {
         crate::builtins::controller::sysdata::activate_arg(ctx, &args[layout.wobj], layout.wobj, 1);
     }
-    if resume > now {
-        if ctx.resources.interrupts.active() {
-            // Interrupts may come while the robot moves: wait until the next one may,
-            // and hold the rest of the wait before the next instruction (the VM).
-            ctx.resources.robot.hold_until = Some(resume);
-            let next = super::super::interrupts::next_due(ctx).map_or(resume, |due| due.min(resume));
-            ctx.wait = Some((next - now).max(1e-6));
-        } else {
-            ctx.wait = Some(resume - now);
-        }
-    }
+    wait_for_robot(ctx, resume);
     Ok(None)
+}
+
+/// The program waits for the robot until `resume`.
+fn wait_for_robot(ctx: &mut Ctx<'_>, resume: f64) {
+    let now = ctx.time;
+    if resume <= now {
+        return;
+    }
+    if ctx.resources.interrupts.active() {
+        // Interrupts may come while the robot moves: wait until the next one may,
+        // and hold the rest of the wait before the next instruction (the VM).
+        ctx.resources.robot.hold_until = Some(resume);
+        let next = super::super::interrupts::next_due(ctx).map_or(resume, |due| due.min(resume));
+        ctx.wait = Some((next - now).max(1e-6));
+    } else {
+        ctx.wait = Some(resume - now);
+    }
 }
 
 /// The frames of this move: its tool and work object, and the displacement.
@@ -418,12 +425,10 @@ pub(super) fn abs_joint_move(
 }
 
 /// `WaitRob [\InPos] | [\ZeroSpeed]`: waits until the robot stands still at the end of
-/// its last move.
+/// its last move (traps of path interrupts run meanwhile, as during a move).
 pub(crate) fn wait_rob(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     let end = ctx.resources.robot.flush();
     apply_due_events(ctx)?;
-    if end > ctx.time {
-        ctx.wait = Some(end - ctx.time);
-    }
+    wait_for_robot(ctx, end);
     Ok(None)
 }

@@ -149,6 +149,11 @@ impl RobotState {
         self.planner.set_settings(settings);
     }
 
+    /// Whether the robot moves at `t` (or has a move given that is not final yet).
+    pub fn moving_at(&self, t: f64) -> bool {
+        self.motion_end > t || self.planner.has_pending()
+    }
+
     /// Where the last move given ends (the start of the next).
     pub fn end_joints(&self) -> Joints {
         self.planner.end_joints()
@@ -175,6 +180,10 @@ impl RobotState {
         }
         self.moves += 1;
         if conc {
+            // A stop point needs no successor to be planned: the robot is on its way.
+            if request.zone.is_stop() {
+                self.flush();
+            }
             return Ok(now);
         }
         if request.zone.is_stop() {

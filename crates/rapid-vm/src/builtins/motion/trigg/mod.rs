@@ -4,7 +4,8 @@
 //! following the TCP speed), at a distance before the move's point, after its start,
 //! or a time before it. TriggL, TriggJ, TriggC and TriggAbsJ are moves that fire up to
 //! eight of them; TriggLIOs and TriggJIOs fire the outputs of triggios arrays.
-//! TriggDataCopy, TriggDataReset and TriggDataValid handle triggdata.
+//! TriggDataCopy, TriggDataReset and TriggDataValid handle triggdata; TriggStopProc
+//! supervises program stops.
 //!
 //! A triggdata holds the index of its definition in the robot's trigger table; the
 //! definitions that are more than one action at one time live in [`TriggState`].
@@ -17,6 +18,7 @@ mod moves;
 mod path;
 mod process;
 mod state;
+mod stopproc;
 
 pub(crate) use check::{defer, poll, trigg_check_io};
 pub(crate) use data::{trigg_data_copy, trigg_data_reset, trigg_data_valid};
@@ -25,6 +27,7 @@ pub(crate) use ios::{trigg_j_ios, trigg_l_ios};
 pub(crate) use moves::{trigg_abs_j, trigg_c, trigg_j, trigg_l};
 pub(crate) use process::{trigg_ramp_ao, trigg_speed};
 pub(crate) use state::{Relation, Special, TriggState};
+pub(crate) use stopproc::{program_stopped, trigg_stop_proc};
 
 use super::super::{present, Ctx};
 use super::robot::{At, PathEvent};

@@ -95,6 +95,8 @@ pub struct TriggState {
     pub pending: Vec<(f64, Special)>,
     /// Ramps and TriggSpeed going on over the next move.
     pub runs: Vec<Run>,
+    /// TriggStopProc's supervision of program stops.
+    pub stop_proc: Option<super::stopproc::StopProc>,
 }
 
 impl TriggState {
