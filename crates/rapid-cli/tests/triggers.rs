@@ -187,18 +187,22 @@ fn trigg_check_io_interrupts_and_stops_the_robot_when_the_check_fails() {
 fn inhib_flags_are_read_when_the_robot_gets_there() {
     // First move: noGlue FALSE, so doGlue goes to 1 and aoFlow to 8 at 10 mm (0.105 s)
     // and the interrupt at 20 mm fires. Second move: noGlue TRUE, so doGlue is set to 0
-    // (it stays 0), aoFlow to InhibSetValue 2.5, and no interrupt.
+    // (it stays 0), aoFlow to InhibSetValue 2.5, and no interrupt. A check at 30 mm that
+    // doGlue is 1 holds on the first move and is inhibited on the second (where it
+    // would fail): its trap never runs.
     let decls =
         "  PERS bool noGlue := FALSE;\n  PERS num lowFlow := 2.5;\n  VAR triggdata glue;\n  VAR triggdata flow;\n  \
-                 VAR triggdata mark;\n  VAR intnum marked;";
+                 VAR triggdata mark;\n  VAR intnum marked;\n  VAR triggdata chk;\n  VAR intnum failed;";
     let body = "    CONNECT marked WITH on_mark;\n    TriggIO glue, 10 \\Start \\DOp:=doGlue, 1 \\Inhib:=noGlue;\n    \
                 TriggIO flow, 10 \\Start \\AOp:=aoFlow, 8 \\Inhib:=noGlue \\InhibSetValue:=lowFlow;\n    \
-                TriggInt mark, 20 \\Start, marked \\Inhib:=noGlue;\n    \
-                SetDO doStart, 1;\n    TriggL Offs(p0, 100, 0, 0), v100, glue \\T2:=flow \\T3:=mark, fine, tool0;\n    \
+                TriggInt mark, 20 \\Start, marked \\Inhib:=noGlue;\n    CONNECT failed WITH on_fail;\n    \
+                TriggCheckIO chk, 30 \\Start, doGlue, EQ, 1, failed \\Inhib:=noGlue;\n    \
+                SetDO doStart, 1;\n    TriggL Offs(p0, 100, 0, 0), v100, glue \\T2:=flow \\T3:=mark \\T4:=chk, fine, tool0;\n    \
                 noGlue := TRUE;\n    SetDO doGlue, 0;\n    SetDO doStart, 0;\n    \
-                TriggL p0, v100, glue \\T2:=flow \\T3:=mark, fine, tool0;\n    noGlue := FALSE;\n    TPWrite \"done\";\n    \
-                IDelete marked;";
-    let traps = "  TRAP on_mark\n    TPWrite \"mark\";\n  ENDTRAP";
+                TriggL p0, v100, glue \\T2:=flow \\T3:=mark \\T4:=chk, fine, tool0;\n    noGlue := FALSE;\n    TPWrite \"done\";\n    \
+                IDelete marked;\n    IDelete failed;";
+    let traps =
+        "  TRAP on_mark\n    TPWrite \"mark\";\n  ENDTRAP\n  TRAP on_fail\n    TPWrite \"check failed\";\n  ENDTRAP";
     let sigs = [("doStart", "\"DO\""), ("doGlue", "\"DO\""), ("aoFlow", "\"AO\" -MinLog 0 -MaxLog 10")];
     let (out, log) = run("inhib", decls, body, traps, &sigs, "");
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
@@ -215,12 +219,16 @@ fn inhib_flags_are_read_when_the_robot_gets_there() {
 #[test]
 fn trigg_l_ios_sets_the_outputs_of_its_arrays() {
     // doGun on 10 mm after the start (0.105 s), off 20 mm before the point (80 mm:
-    // 0.805 s) with 0.05 s equipment lag (0.755 s); goCode 300 at 50 mm (0.505 s). An
-    // array naming an unknown signal is ERR_SIG_NAME.
+    // 0.805 s) with 0.05 s equipment lag (0.755 s); goCode 300 at 50 mm (0.505 s).
+    // Then a TriggJIOs back sets goCode to the digit string "4095" at its stop point,
+    // where the robot stands 0.05 s before the program goes on (doStart 0). An array
+    // naming an unknown signal is ERR_SIG_NAME.
     let decls = "  VAR triggios gun{2} := [[TRUE, 10, TRUE, 0, \"doGun\", 1, 0], [TRUE, 20, FALSE, 0.05, \"doGun\", 0, 0]];\n  \
                  VAR triggiosdnum code{2} := [[TRUE, 50, TRUE, 0, \"goCode\", 300, 0], [FALSE, 0, TRUE, 0, \"nothing\", 1, 0]];\n  \
+                 VAR triggstrgo top{1} := [[TRUE, 0, FALSE, 0, \"goCode\", \"4095\", 0]];\n  \
                  VAR triggios bad{1} := [[TRUE, 0, TRUE, 0, \"doNone\", 1, 0]];";
     let body = "    SetDO doStart, 1;\n    TriggLIOs Offs(p0, 100, 0, 0), v100 \\TriggData1:=gun \\TriggData3:=code, fine, tool0;\n    \
+                TriggJIOs p0, v1000 \\TriggData2:=top, fine, tool0;\n    SetDO doStart, 0;\n    \
                 TriggLIOs p0, v100 \\TriggData1:=bad, fine, tool0;\n    TPWrite \"not refused\";\n  \
                 ERROR\n    IF ERRNO = ERR_SIG_NAME TPWrite \"ERR_SIG_NAME\";\n    RETURN;";
     let sigs = [("doStart", "\"DO\""), ("doGun", "\"DO\""), ("goCode", "\"GO\" -DeviceMap \"0-15\"")];
@@ -232,6 +240,8 @@ fn trigg_l_ios_sets_the_outputs_of_its_arrays() {
         let after = change_time(&log, signal, value) - start;
         assert!((after - expected).abs() < 0.0025, "{signal} = {value} after {after} s, expected {expected}: {log}");
     }
+    let settle = change_time(&log, "doStart", 0.0) - change_time(&log, "goCode", 4095.0);
+    assert!((settle - 0.05).abs() < 0.0015, "goCode 4095 {settle} s before the program went on: {log}");
 }
 
 #[test]
