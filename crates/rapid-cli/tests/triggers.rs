@@ -299,3 +299,25 @@ fn trigg_stop_proc_zeroes_the_process_outputs_at_a_program_stop() {
     let shadow: Vec<f64> = changes(&log, "doShadow").into_iter().map(|(_, v)| v).collect();
     assert_eq!(shadow, [1.0], "doShadow: {log}");
 }
+
+#[test]
+fn values_outside_a_signals_range_are_refused_when_the_trigger_is_defined() {
+    // aoFlow's logical range is 0..10 and goSmall has 3 bits (0..7): a ramp to 20 and
+    // a TriggIO of 20 are ERR_AO_LIM, a group value of 8 ERR_GO_LIM; opnum 7 names no
+    // relation (ERR_ARGVALERR). Each is handled and skipped.
+    let decls = "  VAR triggdata t;\n  VAR intnum never;\n  VAR num stage := 0;";
+    let body = "    CONNECT never WITH on_never;\n    stage := 1;\n    TriggRampAO t, 0 \\Start, 0, aoFlow, 20, 10;\n    \
+                stage := 2;\n    TriggIO t, 0 \\AOp:=aoFlow, 20;\n    stage := 3;\n    TriggIO t, 0 \\GOp:=goSmall, 8;\n    \
+                stage := 4;\n    TriggCheckIO t, 0, aoFlow, 7, 1, never;\n    TPWrite \"done\";\n    IDelete never;\n  \
+                ERROR\n    IF ERRNO = ERR_AO_LIM TPWrite \"stage \" + NumToStr(stage, 0) + \": ERR_AO_LIM\";\n    \
+                IF ERRNO = ERR_GO_LIM TPWrite \"stage \" + NumToStr(stage, 0) + \": ERR_GO_LIM\";\n    \
+                IF ERRNO = ERR_ARGVALERR TPWrite \"stage \" + NumToStr(stage, 0) + \": ERR_ARGVALERR\";\n    TRYNEXT;";
+    let traps = "  TRAP on_never\n    TPWrite \"never\";\n  ENDTRAP";
+    let sigs = [("aoFlow", "\"AO\" -MinLog 0 -MaxLog 10"), ("goSmall", "\"GO\" -DeviceMap \"0-2\"")];
+    let (out, _) = run("limits", decls, body, traps, &sigs, "");
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(
+        text(&out.stdout),
+        "stage 1: ERR_AO_LIM\nstage 2: ERR_AO_LIM\nstage 3: ERR_GO_LIM\nstage 4: ERR_ARGVALERR\ndone\n"
+    );
+}
