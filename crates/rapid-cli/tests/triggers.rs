@@ -321,3 +321,27 @@ fn values_outside_a_signals_range_are_refused_when_the_trigger_is_defined() {
         "stage 1: ERR_AO_LIM\nstage 2: ERR_AO_LIM\nstage 3: ERR_GO_LIM\nstage 4: ERR_ARGVALERR\ndone\n"
     );
 }
+
+#[test]
+fn a_trigg_speed_output_is_0_while_the_robot_is_stopped_on_its_path() {
+    // aoSpeed = 0.01 × TCP speed, 1 at 100 mm/s. A failing check at 50 mm (0.505 s)
+    // stops the robot there: aoSpeed falls to 0 with it; the trap restarts it 0.5 s
+    // later (1.005 s), aoSpeed is 1 again, and 0 where the robot stands at the point,
+    // 0.5 s late (1.51 s).
+    let decls = "  VAR triggdata spd;\n  VAR triggdata gate;\n  VAR intnum closed;";
+    let body = "    CONNECT closed WITH on_closed;\n    TriggSpeed spd, 0 \\Start, 0, aoSpeed, 0.01;\n    \
+                TriggCheckIO gate, 50 \\Start, diGate, EQ, 1 \\StopMove, closed;\n    SetDO doStart, 1;\n    \
+                TriggL Offs(p0, 100, 0, 0), v100, spd \\T2:=gate, fine, tool0;\n    IDelete closed;";
+    let traps = "  TRAP on_closed\n    WaitTime 0.5;\n    StartMove;\n  ENDTRAP";
+    let sigs = [("doStart", "\"DO\""), ("diGate", "\"DI\""), ("aoSpeed", "\"AO\" -MinLog 0 -MaxLog 10")];
+    let (out, log) = run("speedstop", decls, body, traps, &sigs, "");
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let start = change_time(&log, "doStart", 1.0);
+    let seen: Vec<(f64, f64)> = changes(&log, "aoSpeed").into_iter().map(|(t, v)| (t - start, v)).collect();
+    let at = |t: f64| value_at(&log, "aoSpeed", start + t);
+    assert_eq!((at(0.4), at(0.6), at(0.9), at(1.1), at(1.6)), (1.0, 0.0, 0.0, 1.0, 0.0), "{seen:?}");
+    let stop = seen.iter().find(|&&(t, v)| t > 0.1 && v == 0.0).map_or(0.0, |&(t, _)| t);
+    assert!((stop - 0.505).abs() < 0.0025, "aoSpeed 0 after {stop} s: {seen:?}");
+    let again = seen.iter().find(|&&(t, v)| t > 0.6 && v == 1.0).map_or(0.0, |&(t, _)| t);
+    assert!((again - 1.005).abs() < 0.0025, "aoSpeed 1 again after {again} s: {seen:?}");
+}

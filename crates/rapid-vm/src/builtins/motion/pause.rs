@@ -20,6 +20,8 @@ pub struct Pause {
     /// Path outputs and trigger interrupts after the stop: (time, …).
     held_orders: Vec<(f64, u32, f64)>,
     held_interrupts: Vec<(f64, u32)>,
+    /// TriggSpeed outputs set to 0 while the robot stands, with their values.
+    speed_outputs: Vec<(u32, f64)>,
 }
 
 fn refuse_all_tasks(args: &[Value], idx: usize) -> Result<(), RapidError> {
@@ -52,7 +54,16 @@ pub(crate) fn hold(resources: &mut Resources, now: f64) {
     let scheduled = &mut resources.interrupts.scheduled;
     let held_interrupts = scheduled.iter().copied().filter(|&(t, _)| t > now).collect();
     scheduled.retain(|&(t, _)| t <= now);
-    resources.robot.pause = Some(Pause { since: now, held_wait, held_orders, held_interrupts });
+    // A TriggSpeed output follows the TCP speed: 0 while the robot stands.
+    let mut speed_outputs = Vec::new();
+    resources.io.advance(now);
+    if let Some(io) = resources.io.system.as_mut() {
+        for signal in resources.robot.trigg.speed_outputs_after(now) {
+            speed_outputs.push((signal, io.value(signal).unwrap_or(0.0)));
+            let _ = io.set(signal, 0.0, now);
+        }
+    }
+    resources.robot.pause = Some(Pause { since: now, held_wait, held_orders, held_interrupts, speed_outputs });
 }
 
 /// `StartMove [\AllMotionTasks]`: the robot goes on along its path.
@@ -69,6 +80,9 @@ pub(crate) fn start_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         // 0 (none has it) keeps it looking until the wait ends, also when StartMove ran
         // in a trap of an interrupt that has no source (TriggInt, TriggCheckIO).
         ctx.resources.interrupts.schedule(until, 0);
+    }
+    for (signal, value) in pause.speed_outputs {
+        ctx.resources.io.order_on_path(now, signal, value);
     }
     for (t, signal, value) in pause.held_orders {
         ctx.resources.io.order_on_path(t + dt, signal, value);
@@ -98,9 +112,19 @@ pub(crate) fn clear_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     ctx.resources.robot.due.retain(|&(t, _)| t <= since);
     ctx.resources.robot.trigg.pending.retain(|&(t, _)| t <= since);
     ctx.resources.robot.trigg.runs.clear();
+    // TriggSpeed outputs end with the path: 0, as the robot stands.
+    let speed_outputs = ctx.resources.robot.trigg.speed_outputs_after(since);
+    ctx.resources.robot.trigg.speed_outputs.clear();
+    ctx.resources.io.advance(now);
+    if let Some(io) = ctx.resources.io.system.as_mut() {
+        for signal in speed_outputs {
+            let _ = io.set(signal, 0.0, now);
+        }
+    }
     if let Some(pause) = ctx.resources.robot.pause.as_mut() {
         pause.held_orders.clear();
         pause.held_interrupts.clear();
+        pause.speed_outputs.clear();
         // The program's wait for the dropped move ends as soon as the robot may move.
         pause.held_wait = pause.held_wait.map(|_| since);
     } else {

@@ -180,13 +180,18 @@ impl TriggState {
                 last = value;
             }
         }
-        if until <= planned.end {
-            return;
-        }
-        if planned.corner_time > 0.0 {
+        let driven_until = if until <= planned.end {
+            until - lag
+        } else if planned.corner_time > 0.0 {
             self.runs.push(Run::Speed(special));
-        } else if last != 0.0 {
-            due.push((planned.zone_entry - lag, Action::Set { signal, value: 0.0 }));
-        }
+            f64::INFINITY
+        } else {
+            if last != 0.0 {
+                due.push((planned.zone_entry - lag, Action::Set { signal, value: 0.0 }));
+            }
+            planned.zone_entry - lag
+        };
+        self.speed_outputs.retain(|&(s, _)| s != signal);
+        self.speed_outputs.push((signal, driven_until));
     }
 }

@@ -95,6 +95,9 @@ pub struct TriggState {
     pub pending: Vec<(f64, Special)>,
     /// Ramps and TriggSpeed going on over the next move.
     pub runs: Vec<Run>,
+    /// The outputs TriggSpeed drives and until when (infinity: into the next move); a
+    /// robot stopped on its path sets them to 0 while it stands.
+    pub speed_outputs: Vec<(u32, f64)>,
     /// TriggStopProc's supervision of program stops.
     pub stop_proc: Option<super::stopproc::StopProc>,
 }
@@ -128,5 +131,15 @@ impl TriggState {
                 *t += dt;
             }
         }
+        for (_, t) in &mut self.speed_outputs {
+            if *t > since {
+                *t += dt;
+            }
+        }
+    }
+
+    /// The TriggSpeed outputs still driven after `t`.
+    pub fn speed_outputs_after(&self, t: f64) -> Vec<u32> {
+        self.speed_outputs.iter().filter(|&&(_, until)| until > t).map(|&(s, _)| s).collect()
     }
 }
