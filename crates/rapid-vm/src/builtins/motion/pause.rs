@@ -2,7 +2,9 @@
 //! robot stops on its path and later goes on with the rest of it (or ClearPath drops
 //! the rest). While it stands, what was planned after the
 //! stop (moves, path outputs, trigger interrupts, the program's wait for the robot)
-//! is held, and on StartMove everything is moved on by the time it stood.
+//! is held, and on StartMove everything is moved on by the time it stood. TriggCheckIO
+//! `\StopMove` and TriggStopProc stop the robot the same way ([`hold`]); TriggSpeed
+//! outputs read 0 while it stands.
 
 use super::super::{present, Ctx, Resources};
 use crate::error::RapidError;
