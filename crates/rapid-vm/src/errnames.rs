@@ -131,4 +131,6 @@ errors! {
     // Path stop and restart (§2.2.6).
     AlreadyMoving = "ERR_ALRDY_MOVING",
     PathDist = "ERR_PATHDIST",
+    // Triggers (TriggLIOs/TriggJIOs name their signals).
+    SigName = "ERR_SIG_NAME",
 }

@@ -47,7 +47,8 @@ const NAME_TAKING: &[&str] = &[
     "CalcRotAxisFrame",
 ];
 
-const SIGNAL_TAKING: &[&str] = &["AliasIO", "AliasIOReset", "ValidIO", "GetSignalOrigin", "GetGroupSignalInfo"];
+const SIGNAL_TAKING: &[&str] =
+    &["AliasIO", "AliasIOReset", "ValidIO", "GetSignalOrigin", "GetGroupSignalInfo", "TriggCheckIO"];
 
 impl RoutineCompiler<'_> {
     /// A call of `name` with `args`; `in_expr` for function calls (the result is pushed).

@@ -111,7 +111,11 @@ impl Vm {
                 self.wait_rechecks = false;
                 Ok(wait.map(Exit::Wait))
             }
-            crate::builtins::StopKind::Stop => Ok(Some(Exit::Stopped)),
+            crate::builtins::StopKind::Stop => {
+                // TriggStopProc's supervision sees the program stop.
+                crate::builtins::motion::program_stopped(&mut self.resources, &mut self.storage, self.time);
+                Ok(Some(Exit::Stopped))
+            }
             crate::builtins::StopKind::Retry => self.retry(),
             crate::builtins::StopKind::ExitCycle => {
                 self.cycle_exit = true;

@@ -11,6 +11,8 @@ impl Vm {
     /// Queues the interrupts whose events have happened by now.
     pub(super) fn poll_interrupts(&mut self) {
         let now = self.time;
+        // Trigger actions decided at the robot's place (TriggCheckIO, `\Inhib`).
+        crate::builtins::motion::poll_triggers(&mut self.resources, &self.storage, now);
         let interrupts = &mut self.resources.interrupts;
         let mut fired = Vec::new();
         // Interrupts the robot's path triggers (TriggInt) at their time.

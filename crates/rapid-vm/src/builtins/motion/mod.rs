@@ -31,6 +31,7 @@ mod units;
 pub mod zones;
 
 pub(crate) use settings::set_payload;
+pub(crate) use trigg::{poll as poll_triggers, program_stopped};
 
 use std::rc::Rc;
 
@@ -93,6 +94,16 @@ pub(super) static ENTRIES: Entries = &[
     ("TriggL", trigg::trigg_l),
     ("TriggJ", trigg::trigg_j),
     ("TriggC", trigg::trigg_c),
+    ("TriggAbsJ", trigg::trigg_abs_j),
+    ("TriggLIOs", trigg::trigg_l_ios),
+    ("TriggJIOs", trigg::trigg_j_ios),
+    ("TriggCheckIO", trigg::trigg_check_io),
+    ("TriggRampAO", trigg::trigg_ramp_ao),
+    ("TriggSpeed", trigg::trigg_speed),
+    ("TriggDataCopy", trigg::trigg_data_copy),
+    ("TriggDataReset", trigg::trigg_data_reset),
+    ("TriggDataValid", trigg::trigg_data_valid),
+    ("TriggStopProc", trigg::trigg_stop_proc),
     ("StopMove", pause::stop_move),
     ("StartMove", pause::start_move),
     ("IsStopMoveAct", pause::is_stop_move_act),

@@ -193,18 +193,8 @@ pub(super) fn require_motion_task(ctx: &Ctx<'_>) -> Result<(), RapidError> {
     Err(RapidError::fatal(format!("task {} is no motion task (-MotionTask): it cannot move the robot", tasking.name())))
 }
 
-/// Plans the move and makes the program wait until it may go on.
-fn go(
-    ctx: &mut Ctx<'_>,
-    args: &[Value],
-    layout: &Layout,
-    target: Target,
-    chain: rapid_motion::frames::FrameChain,
-) -> Res {
-    go_with(ctx, args, layout, target, chain, Vec::new())
-}
-
-/// [`go`] with an output set as the robot passes the point.
+/// Plans the move (with the events it fires on its path) and makes the program wait
+/// until it may go on.
 fn go_with(
     ctx: &mut Ctx<'_>,
     args: &[Value],
@@ -251,20 +241,27 @@ fn go_with(
     if present(args.get(layout.wobj)) {
         crate::builtins::controller::sysdata::activate_arg(ctx, &args[layout.wobj], layout.wobj, 1);
     }
+    wait_for_robot(ctx, resume);
+    Ok(None)
+}
+
+/// The program waits for the robot until `resume`.
+fn wait_for_robot(ctx: &mut Ctx<'_>, resume: f64) {
+    let now = ctx.time;
+    if resume <= now {
+        return;
+    }
     // Inside a TRAP no other trap can start (interrupts queue): the move waits whole.
     let in_trap = ctx.chain.iter().any(|f| f.is_trap());
-    if resume > now {
-        if ctx.resources.interrupts.active() && !in_trap {
-            // Interrupts may come while the robot moves: wait until the next one may,
-            // and hold the rest of the wait before the next instruction (the VM).
-            ctx.resources.robot.hold_until = Some(resume);
-            let next = super::super::interrupts::next_due(ctx).map_or(resume, |due| due.min(resume));
-            ctx.wait = Some((next - now).max(1e-6));
-        } else {
-            ctx.wait = Some(resume - now);
-        }
+    if ctx.resources.interrupts.active() && !in_trap {
+        // Interrupts may come while the robot moves: wait until the next one may,
+        // and hold the rest of the wait before the next instruction (the VM).
+        ctx.resources.robot.hold_until = Some(resume);
+        let next = super::super::interrupts::next_due(ctx).map_or(resume, |due| due.min(resume));
+        ctx.wait = Some((next - now).max(1e-6));
+    } else {
+        ctx.wait = Some(resume - now);
     }
-    Ok(None)
 }
 
 /// The frames of this move: its tool and work object, and the displacement.
@@ -426,6 +423,7 @@ pub(crate) fn apply_due_events(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
                 }
             }
             super::robot::Action::Interrupt(number) => ctx.resources.interrupts.schedule(time, number),
+            super::robot::Action::Special(key) => super::trigg::defer(ctx, time, key),
         }
     }
     Ok(())
@@ -466,24 +464,32 @@ pub(super) fn mount_of(chain: &rapid_motion::frames::FrameChain) -> (rapid_motio
 
 /// `MoveAbsJ`: joint interpolation to axis values (no displacement applies).
 pub(crate) fn move_abs_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    abs_joint_move(ctx, args, &MOVE_ABS_J, Vec::new())
+}
+
+/// MoveAbsJ and TriggAbsJ.
+pub(super) fn abs_joint_move(
+    ctx: &mut Ctx<'_>,
+    args: &[Value],
+    layout: &Layout,
+    events: Vec<super::robot::PathEvent>,
+) -> Res {
     require_motion_task(ctx)?;
-    refuse_unmodelled(args, &MOVE_ABS_J)?;
-    let chain = frames(ctx, args, &MOVE_ABS_J, false)?;
-    let joints = data::jointtarget(ctx, &ctx.value(&args[MOVE_ABS_J.to])?)?;
+    refuse_unmodelled(args, layout)?;
+    let chain = frames(ctx, args, layout, false)?;
+    let joints = data::jointtarget(ctx, &ctx.value(&args[layout.to])?)?;
     if let Some(axis) = ctx.resources.robot.kin.limit_violation(&joints) {
         return Err(motion_error(MotionError::JointLimit { axis }));
     }
-    go(ctx, args, &MOVE_ABS_J, Target::Joints(joints), chain)
+    go_with(ctx, args, layout, Target::Joints(joints), chain, events)
 }
 
 /// `WaitRob [\InPos] | [\ZeroSpeed]`: waits until the robot stands still at the end of
-/// its last move.
+/// its last move (traps of path interrupts run meanwhile, as during a move).
 pub(crate) fn wait_rob(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     let end = ctx.resources.robot.flush();
     apply_due_events(ctx)?;
-    if end > ctx.time {
-        ctx.wait = Some(end - ctx.time);
-    }
+    wait_for_robot(ctx, end);
     Ok(None)
 }
 

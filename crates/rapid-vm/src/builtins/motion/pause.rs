@@ -5,12 +5,13 @@
 //! robot) is held, and on StartMove everything is moved on by the time it stood.
 //! After StorePath/RestoPath (store.rs) the robot may stand elsewhere: StartMove
 //! first takes it back to where the path stopped (regain), or refuses when that is
-//! too far.
+//! too far. TriggCheckIO `\StopMove` and TriggStopProc stop the robot the same way
+//! ([`hold`]); TriggSpeed outputs read 0 while it stands.
 
 use rapid_motion::plan::{AccelLimits, MoveRequest, PlannedMove, Planner, SpeedData, Target, ZoneData};
 use rapid_motion::{Joints, Kinematics};
 
-use super::super::{present, Ctx, StopKind};
+use super::super::{present, Ctx, Resources, StopKind};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
@@ -33,6 +34,8 @@ pub struct Pause {
     /// StopMoveReset cleared the stop-move state: the path stays stopped until a
     /// program start (or StartMove), but IsStopMoveAct is FALSE.
     reset: bool,
+    /// TriggSpeed outputs set to 0 while the robot stands, with their values.
+    speed_outputs: Vec<(u32, f64)>,
 }
 
 impl Pause {
@@ -86,15 +89,29 @@ pub(super) fn pause_at(ctx: &mut Ctx<'_>, since: f64) -> Result<Pause, RapidErro
         // Its path outputs become orders, which are held below like the others.
         super::moves::apply_due_events(ctx)?;
     }
-    let held_wait = ctx.resources.robot.hold_until.map(|_| f64::INFINITY);
-    let held_wait = std::mem::replace(&mut ctx.resources.robot.hold_until, held_wait);
-    let orders = &mut ctx.resources.io.path_orders;
+    Ok(hold_after(ctx.resources, since))
+}
+
+/// Holds what was planned after `since`: path outputs and trigger interrupts, the
+/// program's wait for the robot; TriggSpeed outputs go to 0 (the robot stands).
+fn hold_after(resources: &mut Resources, since: f64) -> Pause {
+    let held_wait = resources.robot.hold_until.map(|_| f64::INFINITY);
+    let held_wait = std::mem::replace(&mut resources.robot.hold_until, held_wait);
+    let orders = &mut resources.io.path_orders;
     let split = orders.partition_point(|&(t, _, _)| t <= since);
     let held_orders = orders.split_off(split).into_iter().collect();
-    let scheduled = &mut ctx.resources.interrupts.scheduled;
+    let scheduled = &mut resources.interrupts.scheduled;
     let held_interrupts = scheduled.iter().copied().filter(|&(t, _)| t > since).collect();
     scheduled.retain(|&(t, _)| t <= since);
-    Ok(Pause { since, held_wait, held_orders, held_interrupts, regain: None, reset: false })
+    let mut speed_outputs = Vec::new();
+    resources.io.advance(since);
+    if let Some(io) = resources.io.system.as_mut() {
+        for signal in resources.robot.trigg.speed_outputs_after(since) {
+            speed_outputs.push((signal, io.value(signal).unwrap_or(0.0)));
+            let _ = io.set(signal, 0.0, since);
+        }
+    }
+    Pause { since, held_wait, held_orders, held_interrupts, regain: None, reset: false, speed_outputs }
 }
 
 /// `StopMove [\Quick] [\AllMotionTasks]`: the robot stops where it is.
@@ -110,6 +127,15 @@ pub(crate) fn stop_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let pause = pause_at(ctx, ctx.time)?;
     ctx.resources.robot.pause = Some(pause);
     Ok(None)
+}
+
+/// The robot stops on its path at `now` (TriggCheckIO `\StopMove`, TriggStopProc): what
+/// was planned after it is held until StartMove. Nothing changes when it is stopped
+/// already.
+pub(crate) fn hold(resources: &mut Resources, now: f64) {
+    if resources.robot.pause.is_none() {
+        resources.robot.pause = Some(hold_after(resources, now));
+    }
 }
 
 /// `StartMove [\AllMotionTasks]`: the robot goes on along its path.
@@ -174,6 +200,9 @@ fn restart(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
         insert_in_time(robot, regain);
     }
     robot.hold_until = pause.held_wait.map(|t| t + dt);
+    for (signal, value) in pause.speed_outputs {
+        ctx.resources.io.order_on_path(now, signal, value);
+    }
     for (t, signal, value) in pause.held_orders {
         ctx.resources.io.order_on_path(t + dt, signal, value);
     }
@@ -248,9 +277,21 @@ pub(crate) fn clear_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     }
     ctx.resources.robot.stop_at(since);
     ctx.resources.robot.due.retain(|&(t, _)| t <= since);
+    ctx.resources.robot.trigg.pending.retain(|&(t, _)| t <= since);
+    ctx.resources.robot.trigg.runs.clear();
+    // TriggSpeed outputs end with the path: 0, as the robot stands.
+    let speed_outputs = ctx.resources.robot.trigg.speed_outputs_after(since);
+    ctx.resources.robot.trigg.speed_outputs.clear();
+    ctx.resources.io.advance(now);
+    if let Some(io) = ctx.resources.io.system.as_mut() {
+        for signal in speed_outputs {
+            let _ = io.set(signal, 0.0, now);
+        }
+    }
     if let Some(pause) = ctx.resources.robot.pause.as_mut() {
         pause.held_orders.clear();
         pause.held_interrupts.clear();
+        pause.speed_outputs.clear();
         // The program's wait for the dropped move ends as soon as the robot may move.
         pause.held_wait = pause.held_wait.map(|_| since);
         // Nothing is left to go back to.

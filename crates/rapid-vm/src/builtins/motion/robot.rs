@@ -42,6 +42,9 @@ pub enum Action {
     Set { signal: u32, value: f64 },
     /// Fires an interrupt (TriggInt).
     Interrupt(u32),
+    /// A trigger laid out or decided by the trigger family (TriggCheckIO, TriggRampAO,
+    /// TriggSpeed, `\Inhib`): its key in `RobotState::trigg`.
+    Special(u32),
 }
 
 /// An event a move fires as the robot passes a place on its path: Move*DO/AO/GO's
@@ -156,6 +159,8 @@ pub struct RobotState {
     pub stored: Option<Box<super::store::Stored>>,
     /// The path recorder (PathRecStart …): the moves of the base path it recorded.
     pub path_rec: super::recorder::Recorder,
+    /// The trigger family's definitions, deferred actions and runs (ramps, TriggSpeed).
+    pub trigg: super::trigg::TriggState,
 }
 
 impl Default for RobotState {
@@ -196,6 +201,7 @@ impl RobotState {
             zone_violation: None,
             stored: None,
             path_rec: super::recorder::Recorder::default(),
+            trigg: Default::default(),
         }
     }
 
@@ -207,6 +213,11 @@ impl RobotState {
     /// The settings moves are planned with from now on.
     pub fn set_settings(&mut self, settings: rapid_motion::plan::MotionSettings) {
         self.planner.set_settings(settings);
+    }
+
+    /// Whether the robot moves at `t` (or has a move given that is not final yet).
+    pub fn moving_at(&self, t: f64) -> bool {
+        self.motion_end > t || self.planner.has_pending()
     }
 
     /// Where the last move given ends (the start of the next).
@@ -246,6 +257,10 @@ impl RobotState {
         self.place_early_events();
         self.moves += 1;
         if conc {
+            // A stop point needs no successor to be planned: the robot is on its way.
+            if request.zone.is_stop() {
+                self.flush();
+            }
             return Ok(now);
         }
         if request.zone.is_stop() {
@@ -274,12 +289,15 @@ impl RobotState {
     fn place_early_events(&mut self) {
         let Some((provisional, braking)) = self.planner.provisional() else { return };
         let Some(events) = self.events.back_mut() else { return };
-        if !events.iter().any(|e| matches!(e.at, At::AfterStart(_))) {
+        // The trigger family lays its own events (ramps, TriggSpeed, checks) out on the
+        // final move: those wait for it.
+        let early = |e: &PathEvent| matches!(e.at, At::AfterStart(_)) && !matches!(e.action, Action::Special(_));
+        if !events.iter().any(early) {
             return;
         }
         let mut later = Vec::with_capacity(events.len());
         for event in std::mem::take(events) {
-            let At::AfterStart(d) = event.at else {
+            let (At::AfterStart(d), false) = (event.at, matches!(event.action, Action::Special(_))) else {
                 later.push(event);
                 continue;
             };
@@ -300,6 +318,7 @@ impl RobotState {
             self.corner_path_failures += 1;
         }
         let events = self.events.pop_front().unwrap_or_default();
+        let mut specials = Vec::new();
         if !events.is_empty() {
             // The point: the middle of the corner path; at a stop point, when the robot
             // stands there.
@@ -311,9 +330,14 @@ impl RobotState {
                     At::BeforePoint(d) => self.time_at_distance(&planned, point, d, false),
                     At::AfterStart(d) => self.time_at_distance(&planned, point, d, true),
                 };
+                if let Action::Special(key) = event.action {
+                    specials.push((at, event.shift, key));
+                    continue;
+                }
                 self.due.push(((at + event.shift).max(planned.start), event.action));
             }
         }
+        self.trigg.on_move(&self.kin, &planned, &specials, &mut self.due);
         self.supervise_zones(&planned);
         self.motion_end = self.motion_end.max(planned.end);
         if let Some(recorded) = &mut self.recorded {
@@ -455,6 +479,7 @@ impl RobotState {
                 *t += dt;
             }
         }
+        self.trigg.delay_from(since, dt);
     }
 
     /// Whether the robot at `joints` (TCP of the active tool) is in zone `i`.

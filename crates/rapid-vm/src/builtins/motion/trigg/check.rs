@@ -1,0 +1,105 @@
+//! TriggCheckIO, and the actions decided when the robot gets to their place (a check,
+//! an output or interrupt with `\Inhib`): once the move is final their time is known;
+//! they wait in [`super::TriggState::pending`] and the executor, woken at that time,
+//! runs them through [`poll`] before it looks for interrupts.
+
+use super::super::super::{present, Ctx, Resources};
+use super::super::robot::{Action, PathEvent};
+use super::{check_value, define, inhib_place, place, refuse, Relation, Res, Special};
+use crate::errnames::Err;
+use crate::exec::storage::Storage;
+use crate::value::{Place, Value};
+
+/// `TriggCheckIO TriggData, Distance [\Start] | [\Time], Signal, Relation, CheckValue |
+/// CheckDvalue [\StopMove], Interrupt [\Inhib]`: at the place the signal is compared
+/// with the value; when the comparison fails the interrupt fires, and with
+/// `\StopMove` the robot stops on its path (StartMove goes on).
+pub(crate) fn trigg_check_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    refuse(args, &[(3, "\\Next"), (12, "\\Mode")])?;
+    let at = place(ctx, args, 2, Some(4))?;
+    let data = ctx.value(&args[5])?;
+    if !matches!(data, Value::Opaque(_)) {
+        return Err(ctx.error(Err::ArgValue, "TriggCheckIO's Signal must be signal data (signaldi … signalgo)"));
+    }
+    let signal = super::super::super::io::signal(ctx, &args[5])?;
+    let relation = ctx.num(&args[6])?;
+    let Some(relation) = Relation::from_opnum(relation) else {
+        return Err(ctx.error(Err::ArgValue, format!("Relation {relation} is not an opnum (LT … GT)")));
+    };
+    let value = if present(args.get(8)) { ctx.num(&args[8])? } else { ctx.num(&args[7])? };
+    check_value(ctx, signal, value)?;
+    let interrupt = super::super::super::interrupts::interrupt_number(ctx, &args[10])?;
+    let stop = present(args.get(9));
+    let special = Special::Check { signal, relation, value, stop, interrupt, inhib: inhib_place(args, 11) };
+    define(ctx, &args[0], PathEvent { at, shift: 0.0, action: Action::Special(0) }, Some(special))
+}
+
+/// A deferred action's time is known: it waits for the executor, which a scheduled
+/// interrupt of number 0 (no interrupt has it, so none fires) wakes at that time.
+pub(crate) fn defer(ctx: &mut Ctx<'_>, time: f64, key: u32) {
+    let Some(special) = ctx.resources.robot.trigg.live.remove(&key) else { return };
+    ctx.resources.robot.trigg.pending.push((time, special));
+    ctx.resources.interrupts.schedule(time, 0);
+}
+
+/// Runs the deferred actions due by `now` (not those after a StopMove's stop: they
+/// come later by the time the robot stood).
+pub(crate) fn poll(resources: &mut Resources, storage: &Storage, now: f64) {
+    if resources.robot.trigg.pending.is_empty() {
+        return;
+    }
+    let held_after = resources.robot.pause.as_ref().map_or(f64::INFINITY, |p| p.since);
+    let mut due = Vec::new();
+    resources.robot.trigg.pending.retain(|(t, special)| {
+        let ready = *t <= now && *t <= held_after;
+        if ready {
+            due.push((*t, special.clone()));
+        }
+        !ready
+    });
+    due.sort_by(|a, b| a.0.total_cmp(&b.0));
+    for (_, special) in due {
+        act(resources, storage, now, special);
+    }
+}
+
+/// Whether an `\Inhib` flag is TRUE now.
+fn inhibited(storage: &Storage, flag: Option<&Place>) -> bool {
+    flag.is_some_and(|p| matches!(storage.get(p), Ok(Value::Bool(true))))
+}
+
+/// A deferred action at the robot's place, now.
+// uncertain: the signal is read when the executor wakes, within the 4 ms path
+// resolution of the place; a signal on a stopped device fails no check (the
+// controller reports the device itself).
+fn act(resources: &mut Resources, storage: &Storage, now: f64, special: Special) {
+    match special {
+        Special::Check { signal, relation, value, stop, interrupt, inhib } => {
+            if inhibited(storage, inhib.as_ref()) {
+                return;
+            }
+            resources.io.advance(now);
+            let Some(actual) = resources.io.system.as_ref().and_then(|io| io.read(signal).ok()) else { return };
+            if relation.holds(actual, value) {
+                return;
+            }
+            resources.interrupts.fire(interrupt);
+            if stop {
+                super::super::pause::hold(resources, now);
+            }
+        }
+        Special::Inhibited { signal, value, inhib, inhib_value } => {
+            let value = if inhibited(storage, Some(&inhib)) { inhib_value } else { value };
+            resources.io.advance(now);
+            if let Some(io) = resources.io.system.as_mut() {
+                let _ = io.set(signal, value, now);
+            }
+        }
+        Special::InhibitedInterrupt { interrupt, inhib } => {
+            if !inhibited(storage, Some(&inhib)) {
+                resources.interrupts.fire(interrupt);
+            }
+        }
+        Special::Ramp { .. } | Special::Speed { .. } => {}
+    }
+}

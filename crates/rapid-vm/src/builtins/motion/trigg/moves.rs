@@ -1,0 +1,129 @@
+//! TriggL, TriggJ, TriggC and TriggAbsJ: moves that fire the triggers they name
+//! (Trigg_1 or every element of TriggArray, and T2 … T8).
+
+use super::super::super::{present, Ctx};
+use super::super::moves::{abs_joint_move, circular_move, joint_move, linear_move, Layout, NONE};
+use super::super::robot::{Action, PathEvent};
+use super::{value_after_orders, Res, Special};
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::{OpaqueState, Value};
+
+/// The trigger handles of the triggdata arguments from `first` on (Trigg_1,
+/// TriggArray, T2 … T8).
+fn handles(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<Vec<usize>, RapidError> {
+    let mut handles = Vec::new();
+    let mut add = |value: &Value| {
+        if let Value::Opaque(o) = value {
+            if let OpaqueState::Handle(h) = o.state {
+                handles.push(h as usize);
+            }
+        }
+    };
+    for idx in first..first + 9 {
+        if !present(args.get(idx)) {
+            continue;
+        }
+        match ctx.value(&args[idx])? {
+            Value::Array(array) => array.elems.iter().for_each(&mut add),
+            value => add(&value),
+        }
+    }
+    Ok(handles)
+}
+
+/// The events of the triggers a move names; the move takes its own copy of each
+/// special definition (a ramp's start value resolved now). A TriggSpeed whose value
+/// at the programmed speed exceeds its output's limit is ERR_AO_LIM.
+fn triggers_of(ctx: &mut Ctx<'_>, args: &[Value], first: usize, speed: usize) -> Result<Vec<PathEvent>, RapidError> {
+    let mut events = Vec::new();
+    for h in handles(ctx, args, first)? {
+        let Some(&event) = ctx.resources.robot.triggers.get(h) else {
+            return Err(ctx.error(Err::ArgValue, "a triggdata was never defined (TriggIO)"));
+        };
+        let Some(special) = ctx.resources.robot.trigg.def(h).cloned() else {
+            events.push(event);
+            continue;
+        };
+        let special = match special {
+            Special::Ramp { signal, to, length, by_time, lag, .. } => {
+                Special::Ramp { signal, from: value_after_orders(ctx, signal), to, length, by_time, lag }
+            }
+            Special::Speed { scale, max: Some(max), .. } => {
+                let v = super::super::data::speed(ctx, &ctx.value(&args[speed])?)?.v_tcp;
+                if scale * v > max {
+                    return Err(ctx.error(
+                        Err::AoLim,
+                        format!("TriggSpeed: {scale} × {v} mm/s is above the analog output's limit {max}"),
+                    ));
+                }
+                special
+            }
+            other => other,
+        };
+        let key = ctx.resources.robot.trigg.take_copy(special);
+        events.push(PathEvent { action: Action::Special(key), ..event });
+    }
+    Ok(events)
+}
+
+const TRIGG_L: Layout = Layout {
+    conc: 0,
+    cir: None,
+    to: 1,
+    id: 2,
+    speed: 3,
+    v: NONE,
+    t: 4,
+    zone: 14,
+    z: NONE,
+    inpos: 15,
+    tool: 16,
+    wobj: 17,
+    corr: Some(18),
+};
+const TRIGG_J: Layout = Layout { corr: None, ..TRIGG_L };
+const TRIGG_C: Layout = Layout {
+    cir: Some(1),
+    to: 2,
+    id: 3,
+    speed: 4,
+    t: 5,
+    zone: 15,
+    inpos: 16,
+    tool: 17,
+    wobj: 18,
+    corr: Some(19),
+    ..TRIGG_L
+};
+/// TriggAbsJ: `\NoEOffs` at 3 (no external axes here, so it changes nothing).
+const TRIGG_ABS_J: Layout =
+    Layout { to: 1, id: 2, speed: 4, t: 5, zone: 15, inpos: 16, tool: 17, wobj: 18, corr: None, ..TRIGG_L };
+
+/// `TriggL`: MoveL firing its triggers.
+pub(crate) fn trigg_l(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let events = triggers_of(ctx, args, 5, TRIGG_L.speed)?;
+    linear_move(ctx, args, &TRIGG_L, events)
+}
+
+/// `TriggJ`: MoveJ firing its triggers.
+pub(crate) fn trigg_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let events = triggers_of(ctx, args, 5, TRIGG_J.speed)?;
+    joint_move(ctx, args, &TRIGG_J, events)
+}
+
+/// `TriggC`: MoveC firing its triggers.
+pub(crate) fn trigg_c(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let events = triggers_of(ctx, args, 6, TRIGG_C.speed)?;
+    circular_move(ctx, args, &TRIGG_C, events)
+}
+
+/// `TriggAbsJ`: MoveAbsJ firing its triggers.
+pub(crate) fn trigg_abs_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let events = triggers_of(ctx, args, 6, TRIGG_ABS_J.speed)?;
+    abs_joint_move(ctx, args, &TRIGG_ABS_J, events)
+}
+
+/// The layouts of TriggLIOs and TriggJIOs (for `ios.rs`).
+pub(super) const TRIGG_L_IOS: Layout = Layout { zone: 8, inpos: 9, tool: 10, wobj: 11, corr: Some(12), ..TRIGG_L };
+pub(super) const TRIGG_J_IOS: Layout = Layout { corr: None, ..TRIGG_L_IOS };
