@@ -410,6 +410,9 @@ impl RobotState {
                 last.end = last.end.min(t);
             }
         }
+        // The path events of the move that waited for its successor go with it: the
+        // next move to become final must not fire them.
+        self.events.clear();
         let joints = self.ahead.back().map_or_else(|| self.planner.end_joints(), |m| m.end_joints);
         self.motion_end = self.ahead.back().map_or(t, |m| m.end);
         self.planner.restart_from(joints, self.motion_end);
