@@ -279,33 +279,44 @@ fn write_trace(robot: &RobotState, places: &[String], path: &Path, sample_ms: f6
     // Each move's place once, quoted for the format.
     let quoted: Vec<String> = places.iter().map(|p| if json { json_string(p) } else { csv_field(p) }).collect();
     let empty = if json { "\"\"".to_string() } else { String::new() };
-    let mut out = if json { json_head(robot, sample_ms) } else { TRACE_COLUMNS.join(",") + "\n" };
-    let moves: &[PlannedMove] = robot.recorded.as_deref().unwrap_or(&[]);
-    let mut cursor = FactsCursor::new(&robot.recorded_facts);
-    let mut rows = 0;
-    'moves: for planned in moves {
-        for sample in planned.samples(&robot.kin, step) {
-            if rows >= MAX_TRACE_ROWS {
-                break 'moves;
+    let head = if json { json_head(robot, sample_ms) } else { TRACE_COLUMNS.join(",") + "\n" };
+    crate::save::write_new_with(path, |file| {
+        let mut out = head;
+        let moves: &[PlannedMove] = robot.recorded.as_deref().unwrap_or(&[]);
+        let mut cursor = FactsCursor::new(&robot.recorded_facts);
+        let mut rows = 0;
+        for planned in moves {
+            for sample in planned.samples(&robot.kin, step) {
+                if rows >= MAX_TRACE_ROWS {
+                    break;
+                }
+                let point = cursor.locate(sample);
+                if json {
+                    out.push_str(if rows == 0 { "\n[" } else { ",\n[" });
+                }
+                for (value, decimals) in row_numbers(&point, time_decimals) {
+                    push_number(&mut out, value, decimals, json);
+                    out.push(',');
+                }
+                out.push_str(point.facts.and_then(|i| quoted.get(i)).unwrap_or(&empty));
+                out.push_str(if json { "]" } else { "\n" });
+                rows += 1;
+                // Written in slices: a long trace is never held in memory whole.
+                if out.len() >= TRACE_CHUNK {
+                    file.write_all(out.as_bytes())?;
+                    out.clear();
+                }
             }
-            let point = cursor.locate(sample);
-            if json {
-                out.push_str(if rows == 0 { "\n[" } else { ",\n[" });
-            }
-            for (value, decimals) in row_numbers(&point, time_decimals) {
-                push_number(&mut out, value, decimals, json);
-                out.push(',');
-            }
-            out.push_str(point.facts.and_then(|i| quoted.get(i)).unwrap_or(&empty));
-            out.push_str(if json { "]" } else { "\n" });
-            rows += 1;
         }
-    }
-    if json {
-        out.push_str("\n]}\n");
-    }
-    crate::save::write_new(path, out.as_bytes())
+        if json {
+            out.push_str("\n]}\n");
+        }
+        file.write_all(out.as_bytes())
+    })
 }
+
+/// Bytes of trace text gathered before they go to the file.
+const TRACE_CHUNK: usize = 1 << 16;
 
 /// The JSON trace up to its first row: what was traced, and the columns.
 fn json_head(robot: &RobotState, sample_ms: f64) -> String {
@@ -356,11 +367,30 @@ fn push_fixed(out: &mut String, x: f64, decimals: u32) {
     if n < 0 {
         out.push('-');
     }
-    let n = n.unsigned_abs();
-    let _ = write!(out, "{}", n / scale);
-    if decimals > 0 {
-        let _ = write!(out, ".{:0width$}", n % scale, width = decimals as usize);
+    // Digits written by hand, least significant first into a buffer: the standard
+    // integer formatting costs more than the rest of a trace row.
+    let mut n = n.unsigned_abs();
+    let mut digits = [0u8; 24];
+    let mut at = digits.len();
+    for _ in 0..decimals {
+        at -= 1;
+        digits[at] = b'0' + (n % 10) as u8;
+        n /= 10;
     }
+    if decimals > 0 {
+        at -= 1;
+        digits[at] = b'.';
+    }
+    loop {
+        at -= 1;
+        digits[at] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
+    }
+    // Only ASCII digits and a point were written.
+    out.push_str(std::str::from_utf8(&digits[at..]).unwrap_or_default());
 }
 
 #[cfg(test)]

@@ -62,3 +62,11 @@ pub(crate) fn write_module(path: &Path, loaded_text: &str, new_text: &str) -> an
 pub(crate) fn write_new(path: &Path, bytes: &[u8]) -> anyhow::Result<()> {
     rapid_vm::persist::write_atomic(path, bytes).with_context(|| format!("cannot write `{}`", path.display()))
 }
+
+/// [`write_new`] with the content streamed by `fill`.
+pub(crate) fn write_new_with(
+    path: &Path,
+    fill: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>,
+) -> anyhow::Result<()> {
+    rapid_vm::persist::write_atomic_with(path, fill).with_context(|| format!("cannot write `{}`", path.display()))
+}

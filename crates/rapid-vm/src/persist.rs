@@ -6,7 +6,7 @@
 
 pub mod atomic;
 
-pub use atomic::write_atomic;
+pub use atomic::{write_atomic, write_atomic_with};
 
 use rapid_syntax::Span;
 

@@ -28,6 +28,12 @@ pub const STALE_AFTER: Duration = Duration::from_secs(600);
 /// rather than silently replaced. A symbolic link is followed: the file it points to
 /// is replaced and the link stays a link.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
+    write_atomic_with(path, |file| file.write_all(bytes))
+}
+
+/// [`write_atomic`] with the content written by `fill` (buffered), so a large output
+/// need not be held in memory whole.
+pub fn write_atomic_with(path: &Path, fill: impl FnOnce(&mut dyn Write) -> io::Result<()>) -> io::Result<()> {
     let target = follow_link(path)?;
     let old = match fs::metadata(&target) {
         Ok(meta) if meta.is_file() => Some(meta),
@@ -46,7 +52,10 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
     if let Some(meta) = &old {
         keep_permissions(&file, meta)?;
     }
-    file.write_all(bytes)?;
+    let mut buffered = io::BufWriter::with_capacity(1 << 16, &mut file);
+    fill(&mut buffered)?;
+    buffered.flush()?;
+    drop(buffered);
     file.sync_all()?;
     drop(file);
     let tmp = guard.path();
