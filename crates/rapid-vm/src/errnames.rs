@@ -133,4 +133,7 @@ errors! {
     PathDist = "ERR_PATHDIST",
     // Triggers (TriggLIOs/TriggJIOs name their signals).
     SigName = "ERR_SIG_NAME",
+    // Synchronized movement (MultiMove).
+    SyncMoveOn = "ERR_SYNCMOVEON",
+    SyncMoveOff = "ERR_SYNCMOVEOFF",
 }

@@ -35,6 +35,7 @@ mod strings;
 mod symbols;
 pub use symbols::same_type;
 pub mod symsearch;
+pub(crate) mod syncmove;
 mod sysinfo;
 mod system;
 pub mod tasking;
@@ -304,6 +305,7 @@ static FAMILIES: &[Entries] = &[
     spy::ENTRIES,
     cfgdata::ENTRIES,
     tasking::ENTRIES,
+    syncmove::ENTRIES,
     motion::ENTRIES,
     rmq::ENTRIES,
     controller::ENTRIES,

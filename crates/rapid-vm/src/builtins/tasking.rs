@@ -17,7 +17,7 @@ use super::rmq::RmqMessage;
 use super::{present, Ctx, Entries, StopKind};
 use crate::errnames::Err;
 use crate::error::RapidError;
-use crate::value::{Record, Value};
+use crate::value::Value;
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -101,6 +101,10 @@ pub struct SharedTasking {
     /// name in lower case (GetSysData \TaskName from another task); a task not listed
     /// uses tool0, wobj0 and load0 (`controller::sysdata`).
     pub sysdata: FxHashMap<String, [Option<std::rc::Rc<str>>; 3]>,
+    /// The tasks in synchronized movement (SyncMoveOn … SyncMoveOff), by name.
+    pub in_sync: Vec<String>,
+    /// The coordinated moves under way, by the sync point of their SyncMoveOn.
+    pub(crate) move_meets: FxHashMap<String, super::syncmove::MoveMeet>,
 }
 
 impl Default for SharedTasking {
@@ -125,6 +129,8 @@ impl SharedTasking {
             reply: None,
             epoch: 0,
             sysdata: FxHashMap::default(),
+            in_sync: Vec::new(),
+            move_meets: FxHashMap::default(),
         }
     }
 
@@ -163,6 +169,10 @@ pub struct TaskingState {
     waiting: Option<(String, u64, f64, usize, u32)>,
     /// The event routine running now (EventType: EVENT_POWERON 1 … EVENT_STEP 7; 0 none).
     pub event: u8,
+    /// Synchronized movement (SyncMoveOn): its sync point and the tasks moving together.
+    pub sync_move: Option<super::syncmove::SyncMode>,
+    /// The coordinated move this task waits at: the round of its meeting it joined.
+    pub(crate) move_round: Option<u64>,
 }
 
 impl TaskingState {
@@ -178,6 +188,12 @@ impl TaskingState {
     /// Forgets a wait under way (PP to Main).
     pub(crate) fn end_waits(&mut self) {
         self.waiting = None;
+        self.move_round = None;
+        // PP to Main ends synchronized movement, as SyncMoveUndo does.
+        if self.sync_move.take().is_some() {
+            let me = self.name().to_string();
+            self.shared.in_sync.retain(|t| !t.eq_ignore_ascii_case(&me));
+        }
     }
 
     /// Its number: its place in the configuration, from 1.
@@ -210,13 +226,40 @@ impl TaskingState {
 // always does.
 // uncertain: a task in the list the system does not have raises ERR_TASKNAME.
 fn wait_sync_task(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let Some(point) = super::argname::original_name(ctx.chain, 1) else {
-        return Err(ctx.error(Err::ArgValue, "the sync point must be a syncident variable"));
-    };
-    let point = point.to_ascii_lowercase();
+    let point = sync_point(ctx, 1)?;
     let list = task_list(ctx, &args[2])?;
+    let timeout = ctx.opt_num(args.get(3))?;
+    meet(
+        ctx,
+        &point,
+        &list,
+        timeout,
+        (Err::WaitSyncTask, "the other tasks did not reach the sync point within \\TimeOut"),
+    )?;
+    Ok(None)
+}
+
+/// The name of the syncident argument at `index` (its identity across tasks).
+pub(crate) fn sync_point(ctx: &Ctx<'_>, index: usize) -> Result<String, RapidError> {
+    match super::argname::original_name(ctx.chain, index) {
+        Some(point) => Ok(point.to_ascii_lowercase()),
+        None => Err(ctx.error(Err::ArgValue, "the sync point must be a syncident variable")),
+    }
+}
+
+/// Meets the tasks of `list` at sync point `point` (WaitSyncTask, SyncMoveOn,
+/// SyncMoveOff): `true` once every executing task of the list has arrived; `false`
+/// while the task waits (the instruction runs again). Past `timeout` seconds the
+/// error `on_timeout` names.
+pub(crate) fn meet(
+    ctx: &mut Ctx<'_>,
+    point: &str,
+    list: &[String],
+    timeout: Option<f64>,
+    on_timeout: (Err, &str),
+) -> Result<bool, RapidError> {
     let me = ctx.resources.tasking.name().to_string();
-    for name in &list {
+    for name in list {
         if ctx.resources.tasking.shared.task(name).is_none() {
             return Err(ctx.error(Err::TaskName, format!("the system has no task `{name}`")));
         }
@@ -228,7 +271,7 @@ fn wait_sync_task(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (round, started) = match waiting {
         Some((_, round, started, _, _)) => (round, started),
         None => {
-            let sync = tasking.shared.sync.entry(point.clone()).or_default();
+            let sync = tasking.shared.sync.entry(point.to_string()).or_default();
             if !sync.arrived.iter().any(|t| t.eq_ignore_ascii_case(&me)) {
                 sync.arrived.push(me.clone());
             }
@@ -236,25 +279,24 @@ fn wait_sync_task(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
             (sync.round, now)
         }
     };
-    complete_round_if_all_arrived(tasking, &point, &list);
-    if tasking.shared.sync.get(&point).is_some_and(|s| s.round > round) {
+    complete_round_if_all_arrived(tasking, point, list);
+    if tasking.shared.sync.get(point).is_some_and(|s| s.round > round) {
         tasking.waiting = None;
-        return Ok(None);
+        return Ok(true);
     }
-    let deadline = ctx.opt_num(args.get(3))?.map(|t| started + t);
-    let tasking = &mut ctx.resources.tasking;
+    let deadline = timeout.map(|t| started + t);
     if deadline.is_some_and(|d| now >= d) {
         tasking.waiting = None;
-        if let Some(sync) = tasking.shared.sync.get_mut(&point) {
+        if let Some(sync) = tasking.shared.sync.get_mut(point) {
             sync.arrived.retain(|t| !t.eq_ignore_ascii_case(&me));
         }
-        return Err(ctx.error(Err::WaitSyncTask, "the other tasks did not reach the sync point within \\TimeOut"));
+        return Err(ctx.error(on_timeout.0, on_timeout.1));
     }
-    tasking.waiting = Some((point, round, started, here.0, here.1));
+    tasking.waiting = Some((point.to_string(), round, started, here.0, here.1));
     let next = [deadline, super::interrupts::next_due(ctx)].into_iter().flatten().min_by(f64::total_cmp);
     ctx.wait = Some(next.map_or(IDLE_POLL, |t| (t - now).max(1e-6)));
     ctx.stop = StopKind::Repeat;
-    Ok(None)
+    Ok(false)
 }
 
 /// Ends the round of a sync point once every executing task of the list is there.
@@ -275,7 +317,7 @@ fn complete_round_if_all_arrived(tasking: &mut TaskingState, point: &str, list: 
 }
 
 /// The task names of a `tasks` array (empty names are skipped).
-fn task_list(ctx: &Ctx<'_>, arg: &Value) -> Result<Vec<String>, RapidError> {
+pub(crate) fn task_list(ctx: &Ctx<'_>, arg: &Value) -> Result<Vec<String>, RapidError> {
     let Value::Array(array) = ctx.value(arg)? else {
         return Err(ctx.error(Err::ArgValue, "the task list must be an array of tasks"));
     };
@@ -427,29 +469,6 @@ fn task_is_executing(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(Value::Bool(named_task(ctx, args)?.executing)))
 }
 
-/// `IsSyncMoveOn()`: the task is in synchronized movement. SyncMoveOn is not run yet
-/// (a program using it is refused at load), so no task ever is.
-fn is_sync_move_on(_ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    Ok(Some(Value::Bool(false)))
-}
-
-/// `TasksInSync(TaskList)`: how many tasks move synchronized, their names in the list
-/// (the rest emptied). None do (see IsSyncMoveOn).
-fn tasks_in_sync(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    if let Value::Array(mut array) = ctx.value(&args[0])? {
-        for elem in &mut array.elems {
-            if let Value::Record(record) = elem {
-                let record: &mut Record = std::rc::Rc::make_mut(record);
-                if let Some(name) = record.fields.first_mut() {
-                    *name = Value::Str("".into());
-                }
-            }
-        }
-        ctx.store(&args[0], Value::Array(array))?;
-    }
-    Ok(Some(Value::Num(0.0)))
-}
-
 pub(super) static ENTRIES: Entries = &[
     ("WaitSyncTask", wait_sync_task),
     ("TestAndSet", test_and_set),
@@ -459,6 +478,4 @@ pub(super) static ENTRIES: Entries = &[
     ("TaskRunMec", task_run_mec),
     ("TaskIsActive", task_is_active),
     ("TaskIsExecuting", task_is_executing),
-    ("IsSyncMoveOn", is_sync_move_on),
-    ("TasksInSync", tasks_in_sync),
 ];

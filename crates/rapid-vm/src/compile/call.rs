@@ -24,6 +24,8 @@ const NAME_TAKING: &[&str] = &[
     "MoveC",
     "MoveAbsJ",
     "WaitSyncTask",
+    "SyncMoveOn",
+    "SyncMoveOff",
     "TaskIsActive",
     "TaskIsExecuting",
     "GetSysData",

@@ -30,6 +30,7 @@ mod trigg;
 mod units;
 pub mod zones;
 
+pub(crate) use moves::{apply_due_events, motion_error};
 pub(crate) use settings::set_payload;
 pub(crate) use trigg::{poll as poll_triggers, program_stopped};
 

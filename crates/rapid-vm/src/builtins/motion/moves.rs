@@ -105,7 +105,7 @@ const MOVE_ABS_J: Layout = Layout {
 /// The controller's motion errors: execution stops (they are not program errors an
 /// ERROR handler can take). Event numbers as RobotWare logs them.
 // uncertain: the event numbers are from memory of RobotWare's event log.
-pub(super) fn motion_error(err: MotionError) -> RapidError {
+pub(crate) fn motion_error(err: MotionError) -> RapidError {
     let text = match err {
         MotionError::OutOfReach => "50050 Position outside reach".to_string(),
         MotionError::JointLimit { axis } => format!("50028 Joint {axis} out of range"),
@@ -121,12 +121,11 @@ pub(super) fn motion_error(err: MotionError) -> RapidError {
 
 /// Options we do not model yet stop the program, naming themselves.
 fn refuse_unmodelled(args: &[Value], layout: &Layout) -> Result<(), RapidError> {
-    let options = [(layout.id, "\\ID (synchronized moves)")];
-    let corr = layout.corr.map(|c| (c, "\\Corr (path correction)"));
-    for (idx, name) in options.into_iter().chain(corr) {
-        if present(args.get(idx)) {
-            return Err(RapidError::fatal(format!("{name} on a move instruction is not supported by `rapid run` yet")));
-        }
+    // `\ID` is synchronized movement's (`builtins/syncmove.rs`).
+    if layout.corr.is_some_and(|c| present(args.get(c))) {
+        return Err(RapidError::fatal(
+            "\\Corr (path correction) on a move instruction is not supported by `rapid run` yet",
+        ));
     }
     Ok(())
 }
@@ -220,6 +219,12 @@ fn go_with(
     }
     let (tool, held_object) = mount_of(&chain);
     let request = MoveRequest { target, speed, zone, tool, held_object };
+    // Synchronized movement: the moves of one `\ID` in all tasks take the same time.
+    match crate::builtins::syncmove::coordinate(ctx, args.get(layout.id), &request, &settings)? {
+        crate::builtins::syncmove::Coordination::Alone => {}
+        crate::builtins::syncmove::Coordination::Wait => return Ok(None),
+        crate::builtins::syncmove::Coordination::Time(time) => settings.move_time = Some(time),
+    }
     note_facts(ctx, &request, &chain);
     let now = ctx.time;
     let conc = present(args.get(layout.conc));
