@@ -46,6 +46,10 @@ pub struct MotionSettings {
     /// `\Inpos` of the move being pushed: the time it stands at its stop point
     /// before it is done (in place of the `fine` settle time), s.
     pub stop_time: Option<f64>,
+    /// PathAccLim and WorldAccLim together: the most the TCP may accelerate and brake
+    /// along a linear or circular path, mm/s² (`None`: no limit).
+    pub tcp_acc_max: Option<f64>,
+    pub tcp_dec_max: Option<f64>,
 }
 
 /// How a circular move reorients the tool (CirPathMode; the wrist modes are not
@@ -74,6 +78,8 @@ impl Default for MotionSettings {
             circle_ori: CircleOri::PathFrame,
             move_time: None,
             stop_time: None,
+            tcp_acc_max: None,
+            tcp_dec_max: None,
         }
     }
 }

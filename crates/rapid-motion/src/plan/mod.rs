@@ -142,7 +142,7 @@ impl Planner {
         let p = self.pending.as_ref()?;
         let limits = &p.prep.limits;
         let own = limits.length - p.s_start;
-        Some(self.time + Profile::trapezoid(p.v_start, 0.0, limits.cap, limits.acc, own).duration)
+        Some(self.time + limits.profile(p.v_start, 0.0, own).duration)
     }
 
     /// Whether a move waits for its successor.
@@ -189,11 +189,11 @@ impl Planner {
     fn finalize(&mut self, pending: &Pending, blend: Option<Blend>) -> (PlannedMove, Option<Handover>) {
         let limits = &pending.prep.limits;
         let Some(Blend { corner, v_in, v_out }) = blend else {
-            let own = Profile::trapezoid(pending.v_start, 0.0, limits.cap, limits.acc, limits.length - pending.s_start);
+            let own = limits.profile(pending.v_start, 0.0, limits.length - pending.s_start);
             return (self.place(pending, own, None), None);
         };
         let own_len = limits.length.min(corner.s_in) - pending.s_start;
-        let own = Profile::trapezoid(pending.v_start, v_in, limits.cap, limits.acc, own_len);
+        let own = limits.profile(pending.v_start, v_in, own_len);
         let (rate_in, rate_out) = corner.path.rates(v_in * corner.scale_in, v_out * corner.scale_out);
         let handover = Handover { s_out: corner.s_out, v_out, ori: corner.path.ori_zone() };
         (self.place(pending, own, Some((corner, Profile::blend(rate_in, rate_out)))), Some(handover))
@@ -207,7 +207,7 @@ impl Planner {
     pub fn provisional(&self) -> Option<(PlannedMove, f64)> {
         let pending = self.pending.as_ref()?;
         let limits = &pending.prep.limits;
-        let own = Profile::trapezoid(pending.v_start, 0.0, limits.cap, limits.acc, limits.length - pending.s_start);
+        let own = limits.profile(pending.v_start, 0.0, limits.length - pending.s_start);
         let braking = self.time + own.braking_start();
         Some((self.lay_out(pending, own, None), braking))
     }
@@ -270,11 +270,11 @@ fn corner_speeds(pending: &Pending, c: Corner, next: &Prepared) -> Option<Blend>
     // Entry: as fast as this move's cap, the corner and acceleration allow,
     // but never slower than braking at full deceleration from the start gives.
     let reach = (v0 * v0 + 2.0 * cur.acc * own).sqrt();
-    let brake = (v0 * v0 - 2.0 * cur.acc * own).max(0.0).sqrt();
+    let brake = (v0 * v0 - 2.0 * cur.dec * own).max(0.0).sqrt();
     let v_in = cur.cap.min(c.cap / c.scale_in).min(reach).max(brake);
     // Exit: the next move's own successor is not known yet, so it must still be
     // able to stop within what is left of it.
     let left = (next.limits.length - c.s_out).max(0.0);
-    let v_out = next.limits.cap.min(c.cap / c.scale_out).min((2.0 * next.limits.acc * left).sqrt());
+    let v_out = next.limits.cap.min(c.cap / c.scale_out).min((2.0 * next.limits.dec * left).sqrt());
     (v_in + v_out > 1e-9).then_some(Blend { corner: c, v_in, v_out })
 }

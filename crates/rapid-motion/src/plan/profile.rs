@@ -32,6 +32,15 @@ pub(crate) struct PieceLimits {
     pub(crate) length: f64,
     pub(crate) cap: f64,
     pub(crate) acc: f64,
+    /// Deceleration: the acceleration unless PathAccLim limits braking apart.
+    pub(crate) dec: f64,
+}
+
+impl PieceLimits {
+    /// The fastest profile over `length` of this piece from speed `u` to `w`.
+    pub(crate) fn profile(&self, u: f64, w: f64, length: f64) -> Profile {
+        Profile::trapezoid_ad(u, w, self.cap, self.acc, self.dec, length)
+    }
 }
 
 impl Profile {
@@ -48,27 +57,40 @@ impl Profile {
     /// under `cap` with acceleration `acc`. When `u` and `w` cannot be joined at
     /// `acc` (the caller's speeds were infeasible), the piece is one phase of
     /// whatever constant acceleration joins them: bounded, never NaN.
+    #[cfg(test)]
     pub(crate) fn trapezoid(u: f64, w: f64, cap: f64, acc: f64, length: f64) -> Profile {
+        Profile::trapezoid_ad(u, w, cap, acc, acc, length)
+    }
+
+    /// [`Profile::trapezoid`] with its own deceleration `dec` (PathAccLim).
+    pub(crate) fn trapezoid_ad(u: f64, w: f64, cap: f64, acc: f64, dec: f64, length: f64) -> Profile {
         let clean = |x: f64| if x.is_finite() { x.max(0.0) } else { 0.0 };
         let (u, w, length) = (clean(u), clean(w), clean(length));
         let acc = if acc.is_finite() && acc > 0.0 { acc } else { 1.0 };
+        let dec = if dec.is_finite() && dec > 0.0 { dec } else { acc };
         let cap = clean(cap).max(u).max(w).max(1e-9);
         if length <= EPS_LEN {
             return Profile { phases: Vec::new(), length, duration: 0.0, end_speed: w };
         }
-        let peak = ((2.0 * acc * length + u * u + w * w) / 2.0).sqrt().min(cap);
+        // The peak where accelerating from u and braking to w meet over the length.
+        let peak = if acc == dec {
+            ((2.0 * acc * length + u * u + w * w) / 2.0).sqrt()
+        } else {
+            ((2.0 * acc * dec * length + dec * u * u + acc * w * w) / (acc + dec)).sqrt()
+        };
+        let peak = peak.min(cap);
         if peak < u.max(w) {
             let dur = 2.0 * length / (u + w);
             let phase = Phase { t0: 0.0, s0: 0.0, v0: u, acc: (w - u) / dur, dur };
             return Profile { phases: vec![phase], length, duration: dur, end_speed: w };
         }
         let d_up = (peak * peak - u * u) / (2.0 * acc);
-        let d_down = (peak * peak - w * w) / (2.0 * acc);
+        let d_down = (peak * peak - w * w) / (2.0 * dec);
         let d_cruise = (length - d_up - d_down).max(0.0);
-        let durs = [(peak - u) / acc, d_cruise / peak, (peak - w) / acc];
+        let durs = [(peak - u) / acc, d_cruise / peak, (peak - w) / dec];
         let mut phases = Vec::with_capacity(3);
         let (mut t, mut s) = (0.0, 0.0);
-        for (dur, (v0, a)) in durs.into_iter().zip([(u, acc), (peak, 0.0), (peak, -acc)]) {
+        for (dur, (v0, a)) in durs.into_iter().zip([(u, acc), (peak, 0.0), (peak, -dec)]) {
             if dur > 0.0 {
                 phases.push(Phase { t0: t, s0: s, v0, acc: a, dur });
                 t += dur;

@@ -91,7 +91,9 @@ pub(crate) fn prepare<K: Kinematics + ?Sized>(
         accel.settle = stop;
     }
     let max_speeds = kin.max_speeds().map(|v| if v.is_finite() && v > 0.0 { v } else { 1.0 });
-    let ctx = Ctx { kin, mount: request.mount(), speed, accel, max_speeds };
+    let limit = |l: Option<f64>| l.filter(|a| a.is_finite() && *a > 0.0).unwrap_or(f64::INFINITY);
+    let (tcp_acc_max, tcp_dec_max) = (limit(settings.tcp_acc_max), limit(settings.tcp_dec_max));
+    let ctx = Ctx { kin, mount: request.mount(), speed, accel, max_speeds, tcp_acc_max, tcp_dec_max };
     let start_tcp = ctx.tcp(start);
     let mut prepared = match request.target {
         Target::Joints(q1) => ctx.joint_move(start, q1)?,
@@ -144,15 +146,24 @@ fn circle_orientation(geom: &mut Geometry, fixed: OriLerp, via: &Pose, mode: Cir
 // uncertain: `\T` is met for the move as if it stopped at both ends; a corner path
 // at a fly-by end shortens it a little, as it does any move.
 pub(crate) fn timed_speed(limits: &PieceLimits, time: f64) -> f64 {
-    let (l, a) = (limits.length, limits.acc);
+    let (l, a, d) = (limits.length, limits.acc, limits.dec);
     if l <= EPS_LEN {
         return limits.cap;
     }
-    let disc = a * a * time * time - 4.0 * a * l;
-    if disc <= 0.0 {
-        return (a * l).sqrt();
+    if a == d {
+        let disc = a * a * time * time - 4.0 * a * l;
+        if disc <= 0.0 {
+            return (a * l).sqrt();
+        }
+        return (a * time - disc.sqrt()) / 2.0;
     }
-    (a * time - disc.sqrt()) / 2.0
+    // time = L/v + v/(2a) + v/(2d): k·v² − time·v + L = 0 with k = 1/(2a) + 1/(2d).
+    let k = 0.5 / a + 0.5 / d;
+    let disc = time * time - 4.0 * k * l;
+    if disc <= 0.0 {
+        return (l / k).sqrt();
+    }
+    (time - disc.sqrt()) / (2.0 * k)
 }
 
 /// What every step of preparing a move needs.
@@ -162,6 +173,9 @@ struct Ctx<'k, K: Kinematics + ?Sized> {
     speed: SpeedData,
     accel: AccelLimits,
     max_speeds: [f64; 6],
+    /// PathAccLim/WorldAccLim: the TCP's acceleration and braking on the path, mm/s².
+    tcp_acc_max: f64,
+    tcp_dec_max: f64,
 }
 
 impl<K: Kinematics + ?Sized> Ctx<'_, K> {
@@ -196,7 +210,7 @@ impl<K: Kinematics + ?Sized> Ctx<'_, K> {
         let (tcp0, tcp1) = (self.tcp(q0), self.tcp(&q1));
         let room = (tcp1.translation.vector - tcp0.translation.vector).norm();
         if length <= EPS_LEN {
-            return Ok(self.prepared(geom, PieceLimits { length: 0.0, cap: 1.0, acc: 1.0 }, q1, room));
+            return Ok(self.prepared(geom, PieceLimits { length: 0.0, cap: 1.0, acc: 1.0, dec: 1.0 }, q1, room));
         }
         // Direction in the joint metric; |dir_j| · (ds/dt) is axis j's speed as a
         // fraction of its maximum.
@@ -209,7 +223,7 @@ impl<K: Kinematics + ?Sized> Ctx<'_, K> {
             .filter(|&j| dir[j] != 0.0)
             .map(|j| self.accel.joint[j] * weights[j] / dir[j].abs())
             .fold(f64::INFINITY, f64::min);
-        Ok(self.prepared(geom, PieceLimits { length, cap, acc }, q1, room))
+        Ok(self.prepared(geom, PieceLimits { length, cap, acc, dec: acc }, q1, room))
     }
 
     /// MoveL / MoveC: TCP speed, reorientation speed and every axis's speed
@@ -220,7 +234,7 @@ impl<K: Kinematics + ?Sized> Ctx<'_, K> {
         let seeds = ik_along(self.kin, &geom, &self.mount, q0)?;
         let end_joints = seeds.last().map_or(*q0, |(_, q)| *q);
         if length <= EPS_LEN {
-            let limits = PieceLimits { length: 0.0, cap: 1.0, acc: 1.0 };
+            let limits = PieceLimits { length: 0.0, cap: 1.0, acc: 1.0, dec: 1.0 };
             return Ok(Prepared { seeds, ..self.prepared(geom, limits, end_joints, room) });
         }
         let (cap, acc) = match geom.metric() {
@@ -241,7 +255,12 @@ impl<K: Kinematics + ?Sized> Ctx<'_, K> {
             }
         };
         let cap = cap.min(axis_cap(&seeds, &self.max_speeds));
-        Ok(Prepared { seeds, ..self.prepared(geom, PieceLimits { length, cap, acc }, end_joints, room) })
+        // PathAccLim/WorldAccLim bound the TCP's acceleration and braking on the path.
+        let (dec, acc) = match geom.metric() {
+            Metric::Mm => (acc.min(self.tcp_dec_max), acc.min(self.tcp_acc_max)),
+            _ => (acc, acc),
+        };
+        Ok(Prepared { seeds, ..self.prepared(geom, PieceLimits { length, cap, acc, dec }, end_joints, room) })
     }
 }
 

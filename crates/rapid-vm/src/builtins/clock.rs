@@ -58,5 +58,8 @@ pub(super) fn clk_read(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         return Err(ctx.error(Err::Overflow, "the clock ran past 4294967 seconds"));
     }
     let scale = if super::present(args.get(1)) { 1e6 } else { 1e3 };
-    Ok(Some(Value::Num(((total * scale).floor() / scale) as f32)))
+    // The clock counts whole ticks; a difference of two controller times a rounding
+    // error below a tick boundary (0.2999999999 s for a 0.3 s move) is that tick.
+    let ticks = (total * scale + 1e-6).floor();
+    Ok(Some(Value::Num((ticks / scale) as f32)))
 }

@@ -49,6 +49,8 @@ pub(super) static ENTRIES: Entries = &[
     ("ConfL", settings::conf_l),
     ("SingArea", settings::sing_area),
     ("CirPathMode", settings::cir_path_mode),
+    ("PathAccLim", settings::path_acc_lim),
+    ("WorldAccLim", settings::world_acc_lim),
     ("GripLoad", settings::grip_load),
     ("PathResol", settings::path_resol),
     ("CornerPathWarning", settings::corner_path_warning),
@@ -238,6 +240,11 @@ pub struct Settings {
     pub pdisp: Isometry3<f64>,
     /// EOffsSet/EOffsOff: the external axis offsets.
     pub eoffs: [f64; 6],
+    /// PathAccLim: the TCP's acceleration and deceleration limits along the path, m/s².
+    pub acc_max: Option<f64>,
+    pub decel_max: Option<f64>,
+    /// WorldAccLim `\On`: the tool's acceleration limit in the world frame, m/s².
+    pub world_acc_max: Option<f64>,
 }
 
 impl Default for Settings {
@@ -261,6 +268,9 @@ impl Default for Settings {
             speed_refresh: 100.0,
             pdisp: Isometry3::identity(),
             eoffs: [0.0; 6],
+            acc_max: None,
+            decel_max: None,
+            world_acc_max: None,
         }
     }
 }
@@ -305,7 +315,13 @@ fn mirror(ctx: &mut Ctx<'_>) {
             (&[3, 0], Value::Bool(s.conf_j)),
             (&[3, 1], Value::Bool(s.conf_l)),
             (&[4], num(s.path_resol)),
+            (&[7], Value::Bool(s.acc_max.is_some())),
+            (&[8], num(s.acc_max.unwrap_or(-1.0))),
+            (&[9], Value::Bool(s.decel_max.is_some())),
+            (&[10], num(s.decel_max.unwrap_or(-1.0))),
             (&[11], num(s.cir_path_mode as i32 as f64)),
+            (&[12], Value::Bool(s.world_acc_max.is_some())),
+            (&[13], num(s.world_acc_max.unwrap_or(-1.0))),
         ];
         write_leaves(ctx.storage.globals.get_mut(global as usize), &leaves);
     }

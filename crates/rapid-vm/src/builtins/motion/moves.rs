@@ -167,6 +167,17 @@ pub(super) fn planner_settings(ctx: &Ctx<'_>) -> MotionSettings {
         },
         move_time: None,
         stop_time: None,
+        // m/s² to mm/s²; a world-frame limit bounds the path's too.
+        tcp_acc_max: min_limit(s.acc_max, s.world_acc_max).map(|a| a * 1000.0),
+        tcp_dec_max: min_limit(s.decel_max, s.world_acc_max).map(|a| a * 1000.0),
+    }
+}
+
+/// The smaller of two optional limits.
+fn min_limit(a: Option<f64>, b: Option<f64>) -> Option<f64> {
+    match (a, b) {
+        (Some(a), Some(b)) => Some(a.min(b)),
+        (a, b) => a.or(b),
     }
 }
 

@@ -219,3 +219,51 @@ pub(crate) fn eoffs_set(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 pub(crate) fn eoffs_off(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     update(ctx, |s| s.eoffs = [0.0; 6])
 }
+
+/// The least acceleration limit PathAccLim and WorldAccLim take, m/s².
+// uncertain: the manual's minimum as we remember it; a smaller positive value is
+// raised to it, zero or less is ERR_ARGVALERR.
+const MIN_ACC_LIMIT: f64 = 0.1;
+
+/// An acceleration limit argument (m/s²), or ERR_ARGVALERR.
+fn acc_limit(ctx: &Ctx<'_>, value: f64, what: &str) -> Result<f64, RapidError> {
+    if !value.is_finite() || value <= 0.0 {
+        return Err(ctx.error(Err::ArgValue, format!("{what} must be a positive acceleration in m/s²")));
+    }
+    Ok(value.max(MIN_ACC_LIMIT))
+}
+
+/// `PathAccLim AccLim [\AccMax] DecelLim [\DecelMax]`: limits (or frees) the TCP's
+/// acceleration and deceleration along the path, in m/s². A limit switched on needs
+/// its value.
+// uncertain: AccLim TRUE without \AccMax (and DecelLim without \DecelMax) raises
+// ERR_ARGVALERR; the limits bound linear and circular moves (the path of a joint
+// move is not the TCP's).
+pub(crate) fn path_acc_lim(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let limit = |ctx: &Ctx<'_>, on: usize, value: usize, what: &str| -> Result<Option<f64>, RapidError> {
+        if !matches!(ctx.value(&args[on])?, Value::Bool(true)) {
+            return Ok(None);
+        }
+        match ctx.opt_num(args.get(value))? {
+            Some(v) => Ok(Some(acc_limit(ctx, v, what)?)),
+            None => Err(ctx.error(Err::ArgValue, format!("a limit switched on needs \\{what}"))),
+        }
+    };
+    let acc = limit(ctx, 0, 1, "AccMax")?;
+    let decel = limit(ctx, 2, 3, "DecelMax")?;
+    update(ctx, |s| {
+        s.acc_max = acc;
+        s.decel_max = decel;
+    })
+}
+
+/// `WorldAccLim [\On] | [\Off]`: limits the tool's acceleration in the world frame to
+/// On m/s² (it bounds both the path's acceleration and its braking), or frees it.
+// uncertain: neither switch given frees it, as \Off does.
+pub(crate) fn world_acc_lim(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let limit = match ctx.opt_num(args.first())? {
+        Some(v) => Some(acc_limit(ctx, v, "On")?),
+        None => None,
+    };
+    update(ctx, |s| s.world_acc_max = limit)
+}
