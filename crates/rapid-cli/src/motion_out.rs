@@ -286,10 +286,12 @@ fn write_trace(robot: &RobotState, places: &[String], path: &Path, sample_ms: f6
         let mut cursor = FactsCursor::new(&robot.recorded_facts);
         let mut rows = 0;
         for planned in moves {
+            let mount = planned.tool();
             for sample in planned.samples(&robot.kin, step) {
                 if rows >= MAX_TRACE_ROWS {
                     break;
                 }
+                let sample = robot.with_independent(sample, &mount);
                 let point = cursor.locate(sample);
                 if json {
                     out.push_str(if rows == 0 { "\n[" } else { ",\n[" });

@@ -13,6 +13,7 @@ mod calib;
 mod data;
 mod fit;
 mod frame;
+pub mod indep;
 mod inpos;
 mod moves;
 pub mod pause;
@@ -50,6 +51,13 @@ pub(super) static ENTRIES: Entries = &[
     ("SingArea", settings::sing_area),
     ("CirPathMode", settings::cir_path_mode),
     ("PathAccLim", settings::path_acc_lim),
+    ("IndAMove", indep::ind_a_move),
+    ("IndCMove", indep::ind_c_move),
+    ("IndDMove", indep::ind_d_move),
+    ("IndRMove", indep::ind_r_move),
+    ("IndReset", indep::ind_reset),
+    ("IndInpos", indep::ind_inpos),
+    ("IndSpeed", indep::ind_speed),
     ("WorldAccLim", settings::world_acc_lim),
     ("GripLoad", settings::grip_load),
     ("PathResol", settings::path_resol),

@@ -155,6 +155,8 @@ pub struct RobotState {
     zone_inside: Vec<bool>,
     /// When the robot would enter a WZLimSup zone (execution stops).
     pub zone_violation: Option<f64>,
+    /// The axes in independent mode (IndAMove …).
+    pub independent: super::indep::Independent,
     /// The base path StorePath set aside (path level 2 while it is there).
     pub stored: Option<Box<super::store::Stored>>,
     /// The path recorder (PathRecStart …): the moves of the base path it recorded.
@@ -199,6 +201,7 @@ impl RobotState {
             zones: Vec::new(),
             zone_inside: Vec::new(),
             zone_violation: None,
+            independent: Default::default(),
             stored: None,
             path_rec: super::recorder::Recorder::default(),
             trigg: Default::default(),
@@ -371,6 +374,37 @@ impl RobotState {
     // until its corner is planned; its end point stands for it (a stop point before a
     // read-back, as the manual recommends, makes it exact).
     pub fn joints_at(&mut self, t: f64) -> Joints {
+        let mut joints = self.planned_joints_at(t);
+        // Axes in independent mode are where their own motion has taken them.
+        self.independent.apply(&mut joints, t);
+        joints
+    }
+
+    /// An axis leaves independent mode at `position` (IndReset): the planner takes it
+    /// on from there once the robot stands still.
+    pub fn take_over_axis(&mut self, axis: usize, position: f64, now: f64) {
+        let end = self.flush().max(now);
+        let mut joints = self.planned_joints_at(end);
+        joints[axis] = position;
+        self.planner.restart_from(joints, end);
+    }
+
+    /// A sample of the trace with the independent axes put in, its TCP and flange
+    /// following them.
+    pub fn with_independent(
+        &self,
+        mut sample: rapid_motion::plan::Sample,
+        mount: &rapid_motion::plan::Mount,
+    ) -> rapid_motion::plan::Sample {
+        if self.independent.apply(&mut sample.joints, sample.time) {
+            sample.flange = self.kin.forward(&sample.joints);
+            sample.tcp = mount.tcp(&sample.flange);
+        }
+        sample
+    }
+
+    /// The axis values the planned moves give at time `t`.
+    fn planned_joints_at(&mut self, t: f64) -> Joints {
         // A stopped robot stands where it stopped.
         let t = self.pause.as_ref().map_or(t, |p| t.min(p.since));
         self.forget_before(t);

@@ -1,0 +1,308 @@
+//! Independent axes (manual §1.8 "独立轴"): IndAMove, IndCMove, IndDMove, IndRMove,
+//! IndReset, IndInpos, IndSpeed. An axis in independent mode leaves the path planner:
+//! it moves on its own (to a position, by a distance, or turning continuously) at its
+//! own speed, while the other axes follow the program's moves; where the robot is at
+//! any time (read-backs, the trace) has the independent axis's own position.
+//!
+//! Modelled: the robot's wrist axes 4 and 6 (the axes robots carry the independent
+//! option for), positions given as numbers (degrees).
+
+use super::super::{present, Ctx};
+use super::units::{own_only, unit_arg};
+use crate::errnames::Err;
+use crate::error::RapidError;
+use crate::value::Value;
+use rapid_motion::{Joints, Kinematics};
+
+type Res = Result<Option<Value>, RapidError>;
+
+/// The time every axis takes to reach full speed at a ramp of 100 %, s (the timing
+/// model's, `rapid-motion/src/plan/limits.rs`).
+// uncertain: the controller's independent-axis acceleration is not published.
+const RAMP_TIME: f64 = 0.15;
+
+/// Earlier independent motions kept for the trace.
+const MAX_HISTORY: usize = 100_000;
+
+/// How far from its target an axis counts as in position, degrees.
+const INPOS_DEG: f64 = 1e-6;
+
+/// What an independent axis does.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Goal {
+    /// Moves to this position and stops.
+    To(f64),
+    /// Turns at this signed speed (deg/s) until told otherwise.
+    Turn(f64),
+}
+
+/// One axis in independent mode: where and when its present motion began.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct IndAxis {
+    t0: f64,
+    p0: f64,
+    goal: Goal,
+    /// Cruise speed (deg/s, positive) and acceleration (deg/s²).
+    speed: f64,
+    acc: f64,
+}
+
+impl IndAxis {
+    /// Position and speed (signed) at time `t`.
+    fn at(&self, t: f64) -> (f64, f64) {
+        let tau = (t - self.t0).max(0.0);
+        match self.goal {
+            Goal::Turn(v) => {
+                let (s, t_acc) = (v.signum(), v.abs() / self.acc);
+                if tau < t_acc {
+                    (self.p0 + s * 0.5 * self.acc * tau * tau, s * self.acc * tau)
+                } else {
+                    (self.p0 + s * (0.5 * self.acc * t_acc * t_acc + v.abs() * (tau - t_acc)), v)
+                }
+            }
+            Goal::To(target) => {
+                let (d, s) = ((target - self.p0).abs(), (target - self.p0).signum());
+                let peak = self.speed.min((self.acc * d).sqrt());
+                let t_acc = peak / self.acc;
+                let cruise = if peak > 0.0 { (d - peak * t_acc) / peak } else { 0.0 };
+                let total = 2.0 * t_acc + cruise;
+                if tau >= total {
+                    (target, 0.0)
+                } else if tau < t_acc {
+                    (self.p0 + s * 0.5 * self.acc * tau * tau, s * self.acc * tau)
+                } else if tau < t_acc + cruise {
+                    (self.p0 + s * (0.5 * peak * t_acc + peak * (tau - t_acc)), s * peak)
+                } else {
+                    let left = total - tau;
+                    (target - s * 0.5 * self.acc * left * left, s * self.acc * left)
+                }
+            }
+        }
+    }
+
+    /// When a move to a position is done (`None` for a turning axis).
+    fn done_at(&self) -> Option<f64> {
+        let Goal::To(target) = self.goal else { return None };
+        let d = (target - self.p0).abs();
+        let peak = self.speed.min((self.acc * d).sqrt());
+        let t_acc = peak / self.acc;
+        let cruise = if peak > 0.0 { (d - peak * t_acc) / peak } else { 0.0 };
+        Some(self.t0 + 2.0 * t_acc + cruise)
+    }
+}
+
+/// The robot's axes in independent mode, by axis (0-based).
+#[derive(Debug, Clone, Default)]
+pub struct Independent {
+    axes: [Option<IndAxis>; 6],
+    /// Earlier independent motions, for the trace: (axis, motion, when it ended).
+    history: Vec<(usize, IndAxis, f64)>,
+}
+
+impl Independent {
+    /// Puts the independent axes' positions at time `t` into `joints`; `true` when any.
+    pub fn apply(&self, joints: &mut Joints, t: f64) -> bool {
+        let mut any = false;
+        for (axis, ind) in self.axes.iter().enumerate() {
+            let now = ind.filter(|ind| t >= ind.t0);
+            let earlier = || {
+                let past = self.history.iter().rev().find(|(a, ind, until)| *a == axis && ind.t0 <= t && t < *until);
+                past.map(|(_, ind, _)| *ind)
+            };
+            if let Some(ind) = now.or_else(earlier) {
+                joints[axis] = ind.at(t).0;
+                any = true;
+            }
+        }
+        any
+    }
+
+    /// Sets (or with `None` ends) the independent motion of `axis` at time `t`.
+    fn set(&mut self, axis: usize, motion: Option<IndAxis>, t: f64) {
+        if let Some(old) = self.axes[axis].take() {
+            // Bounded like the trace itself: the oldest are dropped past a limit.
+            if self.history.len() >= MAX_HISTORY {
+                self.history.remove(0);
+            }
+            self.history.push((axis, old, t));
+        }
+        self.axes[axis] = motion;
+    }
+
+    /// Whether any axis is in independent mode.
+    pub fn any(&self) -> bool {
+        self.axes.iter().any(Option::is_some)
+    }
+}
+
+/// The axis argument: 4 or 6 of this task's robot (0-based), after the unit check.
+// uncertain: which axes carry the independent option depends on the robot's
+// configuration; the wrist axes 4 and 6 are taken to, others raise ERR_AXIS_PAR.
+fn axis(ctx: &Ctx<'_>, args: &[Value]) -> Result<usize, RapidError> {
+    let unit = unit_arg(ctx, args, 0)?;
+    own_only(ctx, unit)?;
+    let axis = ctx.num(&args[1])?;
+    if axis == 4.0 || axis == 6.0 {
+        return Ok(axis as usize - 1);
+    }
+    Err(ctx.error(Err::AxisPar, format!("axis {axis} cannot move independently (axes 4 and 6 can)")))
+}
+
+/// Speed (deg/s, at most the axis's maximum) and acceleration from `\Ramp` (percent).
+fn speed_and_acc(ctx: &Ctx<'_>, axis: usize, speed: f64, ramp: Option<&Value>) -> Result<(f64, f64), RapidError> {
+    let max = ctx.resources.robot.model.max_speeds[axis];
+    if !speed.is_finite() || speed == 0.0 {
+        return Err(ctx.error(Err::ArgValue, "the speed of an independent axis must not be 0"));
+    }
+    let ramp = match ctx.opt_num(ramp)? {
+        Some(r) if (1.0..=100.0).contains(&r) => r,
+        Some(r) => return Err(ctx.error(Err::ArgValue, format!("Ramp {r} % is not 1..100"))),
+        None => 100.0,
+    };
+    // uncertain: a speed above the axis's maximum is capped at it.
+    Ok((speed.abs().min(max), max / RAMP_TIME * ramp / 100.0))
+}
+
+/// Where the axis is now: its independent position, or the robot's.
+fn position_now(ctx: &mut Ctx<'_>, axis: usize) -> f64 {
+    let now = ctx.time;
+    match ctx.resources.robot.independent.axes[axis] {
+        Some(ind) => ind.at(now).0,
+        None => ctx.resources.robot.joints_at(now)[axis],
+    }
+}
+
+/// Starts an independent motion of `axis` from where it is now.
+// uncertain: a new independent move of a moving axis starts from its position at that
+// instant as if from standstill (the change of speed is not ramped).
+fn start(ctx: &mut Ctx<'_>, axis: usize, goal: Goal, speed: f64, acc: f64) {
+    let p0 = position_now(ctx, axis);
+    let ind = IndAxis { t0: ctx.time, p0, goal, speed, acc };
+    ctx.resources.robot.independent.set(axis, Some(ind), ind.t0);
+}
+
+/// `IndAMove MecUnit, Axis, \ToAbsNum, Speed [\Ramp]`: to an absolute position.
+pub(crate) fn ind_a_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let axis = axis(ctx, args)?;
+    let target = position_arg(ctx, args, 2, "ToAbsPos")?;
+    let (speed, acc) = speed_and_acc(ctx, axis, ctx.num(&args[4])?, args.get(5))?;
+    start(ctx, axis, Goal::To(target), speed, acc);
+    Ok(None)
+}
+
+/// `IndCMove MecUnit, Axis, Speed [\Ramp]`: turns continuously (the speed's sign is
+/// the direction).
+pub(crate) fn ind_c_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let axis = axis(ctx, args)?;
+    let signed = ctx.num(&args[2])?;
+    let (speed, acc) = speed_and_acc(ctx, axis, signed, args.get(3))?;
+    start(ctx, axis, Goal::Turn(speed * signed.signum()), speed, acc);
+    Ok(None)
+}
+
+/// `IndDMove MecUnit, Axis, Delta, Speed [\Ramp]`: by a distance from where it is.
+pub(crate) fn ind_d_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let axis = axis(ctx, args)?;
+    let delta = ctx.num(&args[2])?;
+    let (speed, acc) = speed_and_acc(ctx, axis, ctx.num(&args[3])?, args.get(4))?;
+    let target = position_now(ctx, axis) + delta;
+    start(ctx, axis, Goal::To(target), speed, acc);
+    Ok(None)
+}
+
+/// `IndRMove MecUnit, Axis, \ToRelNum, [\Short | \Fwd | \Bwd], Speed [\Ramp]`: to a
+/// position within one turn (0..360), the shortest way, forwards or backwards.
+pub(crate) fn ind_r_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let axis = axis(ctx, args)?;
+    let within = position_arg(ctx, args, 2, "ToRelPos")?.rem_euclid(360.0);
+    let (speed, acc) = speed_and_acc(ctx, axis, ctx.num(&args[7])?, args.get(8))?;
+    let here = position_now(ctx, axis);
+    let ahead = (within - here).rem_euclid(360.0);
+    let delta = if present(args.get(5)) {
+        ahead
+    } else if present(args.get(6)) {
+        ahead - if ahead > 0.0 { 360.0 } else { 0.0 }
+    } else if ahead > 180.0 {
+        ahead - 360.0
+    } else {
+        ahead
+    };
+    start(ctx, axis, Goal::To(here + delta), speed, acc);
+    Ok(None)
+}
+
+/// A position argument: `\ToAbsNum`-like number at `index + 1`; the robtarget form at
+/// `index` is refused for robot axes.
+fn position_arg(ctx: &Ctx<'_>, args: &[Value], index: usize, robtarget: &str) -> Result<f64, RapidError> {
+    if present(args.get(index)) {
+        return Err(RapidError::fatal(format!(
+            "\\{robtarget} (a robtarget) for a robot axis is not supported by `rapid run` yet; give the number"
+        )));
+    }
+    ctx.num(&args[index + 1])
+}
+
+/// `IndReset MecUnit, Axis [\RefNum] …`: the axis goes back to normal mode where it
+/// stands; the program's moves take it on from there.
+// uncertain: the axis must stand still (a turning or moving axis stops execution); its
+// position is brought back into its working range by whole turns; `\RefPos`,
+// `\RefNum`, `\Short`, `\Fwd`, `\Bwd`, `\Old` (moving the revolution counter) are
+// refused.
+pub(crate) fn ind_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let axis = axis(ctx, args)?;
+    if (2..=7).any(|i| present(args.get(i))) {
+        return Err(RapidError::fatal(
+            "IndReset's \\RefPos, \\RefNum, \\Short, \\Fwd, \\Bwd and \\Old are not supported by `rapid run` yet",
+        ));
+    }
+    let now = ctx.time;
+    let Some(ind) = ctx.resources.robot.independent.axes[axis] else { return Ok(None) };
+    if ind.done_at().is_none_or(|done| done > now + 1e-9) {
+        return Err(RapidError::fatal(format!("IndReset: axis {} still moves; it must stand still", axis + 1)));
+    }
+    let robot = &mut ctx.resources.robot;
+    robot.independent.set(axis, None, now);
+    let (lo, hi) = robot.kin.limits()[axis];
+    let mut position = ind.at(now).0;
+    while position > hi {
+        position -= 360.0;
+    }
+    while position < lo {
+        position += 360.0;
+    }
+    robot.take_over_axis(axis, position, now);
+    Ok(None)
+}
+
+/// `IndInpos(MecUnit, Axis)`: the independent axis stands at its target.
+pub(crate) fn ind_inpos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let axis = axis(ctx, args)?;
+    let now = ctx.time;
+    let Some(ind) = ctx.resources.robot.independent.axes[axis] else {
+        // uncertain: an axis in normal mode raises ERR_AXIS_IND? — reported as ERR_AXIS_PAR.
+        return Err(ctx.error(Err::AxisPar, format!("axis {} is not in independent mode", axis + 1)));
+    };
+    let at = ind.done_at().is_some_and(|done| now >= done - INPOS_DEG);
+    Ok(Some(Value::Bool(at)))
+}
+
+/// `IndSpeed(MecUnit, Axis, \InSpeed | \ZeroSpeed)`: the axis has reached its set
+/// speed, or stands still.
+pub(crate) fn ind_speed(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let axis = axis(ctx, args)?;
+    let now = ctx.time;
+    let Some(ind) = ctx.resources.robot.independent.axes[axis] else {
+        return Err(ctx.error(Err::AxisPar, format!("axis {} is not in independent mode", axis + 1)));
+    };
+    let (_, v) = ind.at(now);
+    let answer = if present(args.get(3)) {
+        v.abs() < 1e-9
+    } else {
+        let set = match ind.goal {
+            Goal::Turn(speed) => speed.abs(),
+            Goal::To(_) => ind.speed,
+        };
+        (v.abs() - set).abs() < 1e-6
+    };
+    Ok(Some(Value::Bool(answer)))
+}
