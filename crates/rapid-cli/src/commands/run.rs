@@ -263,7 +263,8 @@ pub(crate) fn configure_files(
         .iter()
         .filter(|f| f.unreadable.is_none())
         .flat_map(|f| {
-            let parse = rapid_syntax::parse(&f.text, &mut interner);
+            // Only the module names are needed: bodies are scanned over, not parsed.
+            let parse = rapid_syntax::parse_outline(&f.text, &mut interner);
             let path = std::path::PathBuf::from(&f.path);
             let names: Vec<String> = parse.file.modules.iter().map(|m| m.name.span.text(&f.text).to_string()).collect();
             names.into_iter().map(move |name| ModuleFile { name, path: path.clone() })

@@ -208,7 +208,8 @@ impl TaskModules {
         let mut interner = rapid_syntax::Interner::default();
         let mut base_modules = Vec::new();
         for (file, input) in base.iter().enumerate().filter(|(_, f)| f.unreadable.is_none()) {
-            let parse = rapid_syntax::parse(&input.text, &mut interner);
+            // Only the module headers are needed: bodies are scanned over, not parsed.
+            let parse = rapid_syntax::parse_outline(&input.text, &mut interner);
             for (index, module) in parse.file.modules.iter().enumerate() {
                 let name = module.name.span.text(&input.text).to_string();
                 base_modules.push(BaseModule { name, file, index, live: true });
