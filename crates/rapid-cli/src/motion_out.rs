@@ -290,7 +290,8 @@ fn write_trace(robot: &RobotState, places: &[String], path: &Path, sample_ms: f6
                 if rows >= MAX_TRACE_ROWS {
                     break;
                 }
-                let point = cursor.locate(sample);
+                // A move made with `\Corr` is where its path correction put it.
+                let point = cursor.locate(robot.corrected(planned, sample));
                 if json {
                     out.push_str(if rows == 0 { "\n[" } else { ",\n[" });
                 }

@@ -154,7 +154,7 @@ fn push_point(
     planned: &PlannedMove,
     t: f64,
 ) {
-    let point = cursor.locate(planned.sample(&robot.kin, t));
+    let point = cursor.locate(robot.corrected(planned, planned.sample(&robot.kin, t)));
     let w = point.world.translation.vector;
     series.t.push(round(t, 4));
     series.x.push(round(w.x, 2));

@@ -122,8 +122,7 @@ pub(super) fn motion_error(err: MotionError) -> RapidError {
 /// Options we do not model yet stop the program, naming themselves.
 fn refuse_unmodelled(args: &[Value], layout: &Layout) -> Result<(), RapidError> {
     let options = [(layout.id, "\\ID (synchronized moves)")];
-    let corr = layout.corr.map(|c| (c, "\\Corr (path correction)"));
-    for (idx, name) in options.into_iter().chain(corr) {
+    for (idx, name) in options {
         if present(args.get(idx)) {
             return Err(RapidError::fatal(format!("{name} on a move instruction is not supported by `rapid run` yet")));
         }
@@ -225,7 +224,12 @@ fn go_with(
     let conc = present(args.get(layout.conc));
     let robot = &mut ctx.resources.robot;
     robot.set_settings(settings);
+    // `\Corr`: the path follows the corrections of the connected generators.
+    robot.corr.next = layout.corr.is_some_and(|c| present(args.get(c)));
     let mut resume = robot.push(now, &request, conc, events).map_err(motion_error)?;
+    if let Some(err) = robot.corr.violation.take() {
+        return Err(motion_error(err));
+    }
     if let Some(stop) = stop.filter(|s| !s.progsynch && !conc) {
         // progsynch FALSE: the program goes on once the robot stands at the point.
         resume = (resume - stop.time).max(now);

@@ -161,6 +161,9 @@ pub struct RobotState {
     pub path_rec: super::recorder::Recorder,
     /// The trigger family's definitions, deferred actions and runs (ramps, TriggSpeed).
     pub trigg: super::trigg::TriggState,
+    /// Path correction: the generators, the total correction's time line, the moves
+    /// made with `\Corr`.
+    pub corr: super::corr::CorrState,
 }
 
 impl Default for RobotState {
@@ -202,6 +205,7 @@ impl RobotState {
             stored: None,
             path_rec: super::recorder::Recorder::default(),
             trigg: Default::default(),
+            corr: Default::default(),
         }
     }
 
@@ -241,6 +245,10 @@ impl RobotState {
         self.planner.idle_until(now);
         self.forget_before(now - KEEP_PAST);
         let facts = self.next_facts.take();
+        let corrected = std::mem::take(&mut self.corr.next);
+        if !self.planner.has_pending() {
+            self.corr.pending = false;
+        }
         let from = self.planner.end_joints();
         let done = self.planner.push(&self.kin, request)?;
         if self.stored.is_none() {
@@ -254,6 +262,7 @@ impl RobotState {
         if let Some(done) = done {
             self.finish(done);
         }
+        self.corr.pending = corrected;
         self.place_early_events();
         self.moves += 1;
         if conc {
@@ -338,6 +347,7 @@ impl RobotState {
             }
         }
         self.trigg.on_move(&self.kin, &planned, &specials, &mut self.due);
+        self.corr.on_final(&self.kin, &planned);
         self.supervise_zones(&planned);
         self.motion_end = self.motion_end.max(planned.end);
         if let Some(recorded) = &mut self.recorded {
@@ -363,6 +373,9 @@ impl RobotState {
         while self.ahead.len() > 1 && self.ahead.front().is_some_and(|m| m.end < t) {
             self.ahead.pop_front();
         }
+        if self.recorded.is_none() {
+            self.corr.forget_before(t);
+        }
     }
 
     /// The axis values at controller time `t`. On a move still waiting for its
@@ -378,7 +391,7 @@ impl RobotState {
             return self.planner.end_joints();
         }
         match self.ahead.iter().find(|m| t <= m.end) {
-            Some(m) if t >= m.start => m.sample(&self.kin, t).joints,
+            Some(m) if t >= m.start => self.corr.correct(&self.kin, m, m.sample(&self.kin, t)).joints,
             Some(m) => m.sample(&self.kin, m.start).joints,
             None => self.ahead.back().map_or_else(|| self.planner.end_joints(), |m| m.end_joints),
         }
@@ -413,6 +426,7 @@ impl RobotState {
         // The path events of the move that waited for its successor go with it: the
         // next move to become final must not fire them.
         self.events.clear();
+        self.corr.stop_at(t);
         let joints = self.ahead.back().map_or_else(|| self.planner.end_joints(), |m| m.end_joints);
         self.motion_end = self.ahead.back().map_or(t, |m| m.end);
         self.planner.restart_from(joints, self.motion_end);
@@ -483,6 +497,7 @@ impl RobotState {
             }
         }
         self.trigg.delay_from(since, dt);
+        self.corr.delay_from(since, dt);
     }
 
     /// Whether the robot at `joints` (TCP of the active tool) is in zone `i`.
