@@ -154,3 +154,23 @@ fn a_correction_out_of_reach_written_while_moving_stops_execution() {
     assert_eq!(text(&out.stdout), "");
     assert!(rows.iter().flatten().all(|v| v.is_finite()), "{rows:?}");
 }
+
+#[test]
+fn a_stopmove_pause_keeps_the_robot_on_its_corrected_path() {
+    // A constant 5 mm along the path's y (the world's -y) from before the move: the
+    // robot stops in a trap at 0.3 s, stands 0.5 s and goes on. Standing, going on and
+    // at the end it is 5 mm aside; every row of the move on the work plane (z = 400,
+    // x past p0) has y = -5.
+    let traps = "  TRAP halt\n    VAR pos here;\n    StopMove;\n    WaitTime 0.5;\n    here := CPos();\n    \
+                 TPWrite \"paused y \" \\Num:=here.y;\n    StartMove;\n  ENDTRAP";
+    let body =
+        "    CorrCon c;\n    CorrWrite c, [0, 5, 0];\n    CONNECT i1 WITH halt;\n    ITimer \\Single, 0.3, i1;\n    \
+                MoveL Offs(p0, 100, 0, 0), v100, fine, tool0 \\Corr;\n    \
+                TPWrite \"end \" \\Pos:=CPos();\n    WaitTime 1;\n    TPWrite \"later \" \\Pos:=CPos();";
+    let (out, rows) = run("pause", TIMERS, body, traps);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "paused y -5\nend [400,-5,400]\nlater [400,-5,400]\n");
+    let plane: Vec<_> = rows.iter().filter(|r| r[1] > 300.01 && (r[3] - 400.0).abs() < 1e-6).collect();
+    assert!(plane.len() > 300, "{rows:?}");
+    assert!(plane.iter().all(|r| (r[2] + 5.0).abs() < 1e-6), "{plane:?}");
+}

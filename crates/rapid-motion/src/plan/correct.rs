@@ -46,21 +46,32 @@ impl PlannedMove {
     }
 
     /// The direction the path goes at time `t`: a central difference over a few ms,
-    /// else the move's chord (at a standstill), else nothing.
-    fn path_direction<K: Kinematics + ?Sized>(&self, kin: &K, t: f64) -> Vector3<f64> {
+    /// else the move's chord (at a standstill); None when the path pose does not move
+    /// at all (a pure reorientation, a pause).
+    fn path_direction<K: Kinematics + ?Sized>(&self, kin: &K, t: f64) -> Option<Vector3<f64>> {
         let at = |t: f64| self.path_pose_of(&self.sample(kin, t)).translation.vector;
         let local = at(t + DIRECTION_STEP) - at(t - DIRECTION_STEP);
         if local.norm() > 1e-6 {
-            return local;
+            return Some(local);
         }
-        at(self.end) - at(self.start)
+        let chord = at(self.end) - at(self.start);
+        (chord.norm() > 1e-6).then_some(chord)
     }
 
     /// The path coordinate system at time `t` of the move (in the frame of the path
-    /// pose: the robot base, or a held work object's for a stationary tool).
-    pub fn path_frame_at<K: Kinematics + ?Sized>(&self, kin: &K, t: f64) -> Rotation3<f64> {
+    /// pose: the robot base, or a held work object's for a stationary tool); None
+    /// when the path does not move (see [`PlannedMove::path_frame_at`]).
+    pub fn travel_frame_at<K: Kinematics + ?Sized>(&self, kin: &K, t: f64) -> Option<Rotation3<f64>> {
+        let direction = self.path_direction(kin, t)?;
         let path = self.path_pose_of(&self.sample(kin, t));
-        path_frame(&self.path_direction(kin, t), &path.rotation.to_rotation_matrix())
+        Some(path_frame(&direction, &path.rotation.to_rotation_matrix()))
+    }
+
+    /// The path coordinate system at time `t`, or where the path does not move the
+    /// tool's own frame there.
+    pub fn path_frame_at<K: Kinematics + ?Sized>(&self, kin: &K, t: f64) -> Rotation3<f64> {
+        self.travel_frame_at(kin, t)
+            .unwrap_or_else(|| self.path_pose_of(&self.sample(kin, t)).rotation.to_rotation_matrix())
     }
 
     /// The robot at `sample` (a sample of this move) with the path shifted by `offset`

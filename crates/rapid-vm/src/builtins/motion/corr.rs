@@ -41,9 +41,10 @@ struct Span {
 }
 
 /// What a sample gets: an offset in the path coordinate system where it is (a move
-/// made with `\Corr`), or a shift already in the frame of the path pose (the fade).
+/// made with `\Corr`; where the path does not move, as during a pause, the frame at
+/// the move's end), or a shift already in the frame of the path pose (the fade).
 enum Shift {
-    Path(Vector3<f64>),
+    Path(Vector3<f64>, Rotation3<f64>),
     Fixed(Vector3<f64>),
 }
 
@@ -74,6 +75,11 @@ impl CorrState {
         self.generators.iter().map(|(_, offset)| offset).sum()
     }
 
+    /// Whether any move was made with `\Corr` (nothing to correct otherwise).
+    pub fn active(&self) -> bool {
+        !self.spans.is_empty()
+    }
+
     /// The total correction in force at time `t`.
     fn offset_at(&self, t: f64) -> Vector3<f64> {
         let after = self.timeline.partition_point(|&(at, _)| at <= t);
@@ -90,10 +96,18 @@ impl CorrState {
         }
     }
 
-    /// The corrected span holding `t` that overlaps `planned`, if any.
+    /// The corrected span holding `t` that overlaps `planned`, if any (spans follow
+    /// each other in time; where two meet, the later one).
     fn span_on(&self, planned: &PlannedMove, t: f64) -> Option<&Span> {
         let after = self.spans.partition_point(|s| s.start <= t);
-        self.spans[..after].iter().rev().take(4).find(|s| t <= s.end && s.start < planned.end && planned.start < s.end)
+        let span = self.spans[..after].last()?;
+        (t <= span.end && span.start < planned.end && planned.start < span.end).then_some(span)
+    }
+
+    /// The corrected span that ends where `planned` starts, if any.
+    fn span_before(&self, planned: &PlannedMove) -> Option<&Span> {
+        let at = self.spans.partition_point(|s| s.end < planned.start - 1e-9);
+        self.spans.get(at).filter(|s| (s.end - planned.start).abs() < 1e-9)
     }
 
     /// What the robot gets at `t` on `planned`: the total in force, on a move made with
@@ -103,15 +117,15 @@ impl CorrState {
         if self.spans.is_empty() {
             return None;
         }
-        if self.span_on(planned, t).is_some() {
+        if let Some(span) = self.span_on(planned, t) {
             let offset = self.offset_at(t);
-            return (offset.norm() > 1e-9).then_some(Shift::Path(offset));
+            return (offset.norm() > 1e-9).then_some(Shift::Path(offset, span.exit));
         }
         // Until the robot stands at a stop point (its settle time not counted), or
         // through the corner path of a fly-by point.
         let arrive = if planned.corner_time > 0.0 { planned.end } else { planned.zone_entry };
         let length = arrive - planned.start;
-        let before = self.spans.iter().rev().take(4).find(|s| (s.end - planned.start).abs() < 1e-9)?;
+        let before = self.span_before(planned)?;
         if length <= 0.0 {
             return None;
         }
@@ -124,7 +138,10 @@ impl CorrState {
     /// reach it.
     fn try_correct(&self, kin: &Opw, planned: &PlannedMove, sample: &Sample) -> Result<Option<Sample>, MotionError> {
         Ok(match self.shift_on(planned, sample.time) {
-            Some(Shift::Path(offset)) => Some(planned.corrected(kin, sample, &offset)?),
+            Some(Shift::Path(offset, still)) => {
+                let frame = planned.travel_frame_at(kin, sample.time).unwrap_or(still);
+                Some(planned.shifted(kin, sample, &(frame * offset))?)
+            }
             Some(Shift::Fixed(shift)) => Some(planned.shifted(kin, sample, &shift)?),
             None => None,
         })
@@ -156,6 +173,9 @@ impl CorrState {
     /// Whether the corrected path of `planned` from `from` on is reachable, at the
     /// controller's path resolution.
     fn check(&self, kin: &Opw, planned: &PlannedMove, from: f64) -> Result<(), MotionError> {
+        if self.timeline.iter().all(|(_, offset)| offset.norm() <= 1e-9) {
+            return Ok(());
+        }
         for sample in planned.samples(kin, rapid_motion::plan::DEFAULT_STEP).filter(|s| s.time >= from) {
             self.try_correct(kin, planned, &sample)?;
         }
@@ -303,4 +323,30 @@ pub(crate) fn corr_read(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     let total = ctx.resources.robot.corr.total();
     let pose = nalgebra::Isometry3::translation(total.x, total.y, total.z);
     Ok(Some(super::data::pos_value(ctx, &pose)?))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_time_line_steps_at_each_change() {
+        let mut corr = CorrState::default();
+        corr.generators.push((0, Vector3::new(0.0, 5.0, 0.0)));
+        corr.changed(1.0);
+        corr.generators[0].1 += Vector3::new(0.0, 2.0, 0.0);
+        corr.changed(2.0);
+        // A second change at one instant replaces the first.
+        corr.generators.push((1, Vector3::new(1.0, 0.0, 0.0)));
+        corr.changed(2.0);
+        assert_eq!(corr.offset_at(0.5), Vector3::zeros());
+        assert_eq!(corr.offset_at(1.0), Vector3::new(0.0, 5.0, 0.0));
+        assert_eq!(corr.offset_at(1.99), Vector3::new(0.0, 5.0, 0.0));
+        assert_eq!(corr.offset_at(2.5), Vector3::new(1.0, 7.0, 0.0));
+        assert_eq!(corr.timeline.len(), 2);
+        // Forgetting keeps the step in force.
+        corr.forget_before(10.0);
+        assert_eq!(corr.timeline.len(), 1);
+        assert_eq!(corr.offset_at(12.0), Vector3::new(1.0, 7.0, 0.0));
+    }
 }

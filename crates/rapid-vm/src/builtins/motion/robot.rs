@@ -392,7 +392,12 @@ impl RobotState {
         }
         match self.ahead.iter().find(|m| t <= m.end) {
             Some(m) if t >= m.start => self.corr.correct(&self.kin, m, m.sample(&self.kin, t)).joints,
-            Some(m) => m.sample(&self.kin, m.start).joints,
+            Some(m) => self.corr.correct(&self.kin, m, m.sample(&self.kin, m.start)).joints,
+            // Standing after a corrected move: where its correction left the robot.
+            None if self.corr.active() => self.ahead.back().map_or_else(
+                || self.planner.end_joints(),
+                |m| self.corr.correct(&self.kin, m, m.sample(&self.kin, m.end)).joints,
+            ),
             None => self.ahead.back().map_or_else(|| self.planner.end_joints(), |m| m.end_joints),
         }
     }
