@@ -158,13 +158,15 @@ impl CorrState {
     }
 
     /// A move became final: when it was given with `\Corr`, its time is corrected from
-    /// now on; what the current correction makes of it must be reachable.
+    /// now on. What the current correction makes of it (or of the move after corrected
+    /// ones, which fades it out) must be reachable.
     pub(super) fn on_final(&mut self, kin: &Opw, planned: &PlannedMove) {
-        if !std::mem::take(&mut self.pending) {
+        if std::mem::take(&mut self.pending) {
+            let exit = planned.path_frame_at(kin, planned.end);
+            self.spans.push(Span { start: planned.start, end: planned.end, exit });
+        } else if self.span_before(planned).is_none() {
             return;
         }
-        let exit = planned.path_frame_at(kin, planned.end);
-        self.spans.push(Span { start: planned.start, end: planned.end, exit });
         if let Err(err) = self.check(kin, planned, planned.start) {
             self.violation.get_or_insert(err);
         }
