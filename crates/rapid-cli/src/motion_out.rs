@@ -291,7 +291,9 @@ fn write_trace(robot: &RobotState, places: &[String], path: &Path, sample_ms: f6
                 if rows >= MAX_TRACE_ROWS {
                     break;
                 }
-                let sample = robot.with_independent(sample, &mount);
+                // A move made with `\Corr` is where its path correction put it; an axis in
+                // independent mode where its own motion took it.
+                let sample = robot.with_independent(robot.corrected(planned, sample), &mount);
                 let point = cursor.locate(sample);
                 if json {
                     out.push_str(if rows == 0 { "\n[" } else { ",\n[" });

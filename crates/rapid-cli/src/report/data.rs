@@ -154,7 +154,8 @@ fn push_point(
     planned: &PlannedMove,
     t: f64,
 ) {
-    let point = cursor.locate(robot.with_independent(planned.sample(&robot.kin, t), &planned.tool()));
+    let sample = robot.corrected(planned, planned.sample(&robot.kin, t));
+    let point = cursor.locate(robot.with_independent(sample, &planned.tool()));
     let w = point.world.translation.vector;
     series.t.push(round(t, 4));
     series.x.push(round(w.x, 2));

@@ -53,6 +53,7 @@
 //! ```
 
 mod corner;
+mod correct;
 mod data;
 mod idle;
 mod limits;
@@ -63,6 +64,7 @@ mod profile;
 mod sample;
 mod segment;
 
+pub use correct::path_frame;
 pub use data::{CircleOri, MotionSettings, SpeedData, ZoneData};
 pub use limits::AccelLimits;
 pub use mount::Mount;

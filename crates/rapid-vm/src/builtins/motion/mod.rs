@@ -10,6 +10,7 @@
 //! which equal [`Settings::default`].
 
 mod calib;
+pub mod corr;
 mod data;
 mod fit;
 mod frame;
@@ -169,6 +170,11 @@ pub(super) static ENTRIES: Entries = &[
     ("SToolRotCalib", calib::s_tool_rot_calib),
     ("CalcRotAxisFrame", calib::calc_rot_axis_frame),
     ("CalcRotAxFrameZ", calib::calc_rot_ax_frame_z),
+    ("CorrCon", corr::corr_con),
+    ("CorrWrite", corr::corr_write),
+    ("CorrDiscon", corr::corr_discon),
+    ("CorrClear", corr::corr_clear),
+    ("CorrRead", corr::corr_read),
 ];
 
 /// Where the motion family's system data and types are in the loaded program (set

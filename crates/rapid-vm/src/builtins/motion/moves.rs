@@ -119,17 +119,6 @@ pub(crate) fn motion_error(err: MotionError) -> RapidError {
     RapidError::fatal(text)
 }
 
-/// Options we do not model yet stop the program, naming themselves.
-fn refuse_unmodelled(args: &[Value], layout: &Layout) -> Result<(), RapidError> {
-    // `\ID` is synchronized movement's (`builtins/syncmove.rs`).
-    if layout.corr.is_some_and(|c| present(args.get(c))) {
-        return Err(RapidError::fatal(
-            "\\Corr (path correction) on a move instruction is not supported by `rapid run` yet",
-        ));
-    }
-    Ok(())
-}
-
 /// The speed and zone of a move, with `\V` and `\Z`.
 fn speed_and_zone(
     ctx: &Ctx<'_>,
@@ -241,7 +230,12 @@ fn go_with(
     let conc = present(args.get(layout.conc));
     let robot = &mut ctx.resources.robot;
     robot.set_settings(settings);
+    // `\Corr`: the path follows the corrections of the connected generators.
+    robot.corr.next = layout.corr.is_some_and(|c| present(args.get(c)));
     let mut resume = robot.push(now, &request, conc, events).map_err(motion_error)?;
+    if let Some(err) = robot.corr.violation.take() {
+        return Err(motion_error(err));
+    }
     if let Some(stop) = stop.filter(|s| !s.progsynch && !conc) {
         // progsynch FALSE: the program goes on once the robot stands at the point.
         resume = (resume - stop.time).max(now);
@@ -318,7 +312,6 @@ pub(super) fn joint_move(
     events: Vec<super::robot::PathEvent>,
 ) -> Res {
     require_motion_task(ctx)?;
-    refuse_unmodelled(args, layout)?;
     let chain = frames(ctx, args, layout, true)?;
     let (pose, conf) = data::robtarget(ctx, &ctx.value(&args[layout.to])?)?;
     let robot = &ctx.resources.robot;
@@ -345,7 +338,6 @@ pub(super) fn linear_move(
     events: Vec<super::robot::PathEvent>,
 ) -> Res {
     require_motion_task(ctx)?;
-    refuse_unmodelled(args, layout)?;
     let chain = frames(ctx, args, layout, true)?;
     let target = ctx.value(&args[layout.to])?;
     let to = tcp_in_base(ctx, &chain, &target)?;
@@ -386,7 +378,6 @@ pub(super) fn circular_move(
     events: Vec<super::robot::PathEvent>,
 ) -> Res {
     require_motion_task(ctx)?;
-    refuse_unmodelled(args, layout)?;
     check_circle_mode(ctx)?;
     let chain = frames(ctx, args, layout, true)?;
     let via = tcp_in_base(ctx, &chain, &ctx.value(&args[layout.cir.unwrap_or(1)])?)?;
@@ -491,7 +482,6 @@ pub(super) fn abs_joint_move(
     events: Vec<super::robot::PathEvent>,
 ) -> Res {
     require_motion_task(ctx)?;
-    refuse_unmodelled(args, layout)?;
     let chain = frames(ctx, args, layout, false)?;
     let joints = data::jointtarget(ctx, &ctx.value(&args[layout.to])?)?;
     if let Some(axis) = ctx.resources.robot.kin.limit_violation(&joints) {

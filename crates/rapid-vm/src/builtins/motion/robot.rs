@@ -163,6 +163,9 @@ pub struct RobotState {
     pub path_rec: super::recorder::Recorder,
     /// The trigger family's definitions, deferred actions and runs (ramps, TriggSpeed).
     pub trigg: super::trigg::TriggState,
+    /// Path correction: the generators, the total correction's time line, the moves
+    /// made with `\Corr`.
+    pub corr: super::corr::CorrState,
 }
 
 impl Default for RobotState {
@@ -205,6 +208,7 @@ impl RobotState {
             stored: None,
             path_rec: super::recorder::Recorder::default(),
             trigg: Default::default(),
+            corr: Default::default(),
         }
     }
 
@@ -244,6 +248,10 @@ impl RobotState {
         self.planner.idle_until(now);
         self.forget_before(now - KEEP_PAST);
         let facts = self.next_facts.take();
+        let corrected = std::mem::take(&mut self.corr.next);
+        if !self.planner.has_pending() {
+            self.corr.pending = false;
+        }
         let from = self.planner.end_joints();
         let done = self.planner.push(&self.kin, request)?;
         if self.stored.is_none() {
@@ -257,6 +265,7 @@ impl RobotState {
         if let Some(done) = done {
             self.finish(done);
         }
+        self.corr.pending = corrected;
         self.place_early_events();
         self.moves += 1;
         if conc {
@@ -341,6 +350,7 @@ impl RobotState {
             }
         }
         self.trigg.on_move(&self.kin, &planned, &specials, &mut self.due);
+        self.corr.on_final(&self.kin, &planned);
         self.supervise_zones(&planned);
         self.motion_end = self.motion_end.max(planned.end);
         if let Some(recorded) = &mut self.recorded {
@@ -365,6 +375,9 @@ impl RobotState {
     fn forget_before(&mut self, t: f64) {
         while self.ahead.len() > 1 && self.ahead.front().is_some_and(|m| m.end < t) {
             self.ahead.pop_front();
+        }
+        if self.recorded.is_none() {
+            self.corr.forget_before(t);
         }
     }
 
@@ -412,8 +425,13 @@ impl RobotState {
             return self.planner.end_joints();
         }
         match self.ahead.iter().find(|m| t <= m.end) {
-            Some(m) if t >= m.start => m.sample(&self.kin, t).joints,
-            Some(m) => m.sample(&self.kin, m.start).joints,
+            Some(m) if t >= m.start => self.corr.correct(&self.kin, m, m.sample(&self.kin, t)).joints,
+            Some(m) => self.corr.correct(&self.kin, m, m.sample(&self.kin, m.start)).joints,
+            // Standing after a corrected move: where its correction left the robot.
+            None if self.corr.active() => self.ahead.back().map_or_else(
+                || self.planner.end_joints(),
+                |m| self.corr.correct(&self.kin, m, m.sample(&self.kin, m.end)).joints,
+            ),
             None => self.ahead.back().map_or_else(|| self.planner.end_joints(), |m| m.end_joints),
         }
     }
@@ -447,6 +465,7 @@ impl RobotState {
         // The path events of the move that waited for its successor go with it: the
         // next move to become final must not fire them.
         self.events.clear();
+        self.corr.stop_at(t);
         let joints = self.ahead.back().map_or_else(|| self.planner.end_joints(), |m| m.end_joints);
         self.motion_end = self.ahead.back().map_or(t, |m| m.end);
         self.planner.restart_from(joints, self.motion_end);
@@ -517,6 +536,7 @@ impl RobotState {
             }
         }
         self.trigg.delay_from(since, dt);
+        self.corr.delay_from(since, dt);
     }
 
     /// Whether the robot at `joints` (TCP of the active tool) is in zone `i`.

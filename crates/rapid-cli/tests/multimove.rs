@@ -1,0 +1,131 @@
+//! Synchronized movement of two robots (MultiMove: SyncMoveOn, SyncMoveOff, `\ID`),
+//! run on small backups with two motion tasks. Expected outputs are worked out by hand
+//! from the timing model in the comments.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// A fresh, empty scratch folder for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("multimove").join(name);
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    dir
+}
+
+fn rapid_in(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rapid")).current_dir(dir).args(args).output().expect("run rapid")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// A task of a test system: its CAB_TASKS attributes (after -Name) and its module.
+struct TaskDef<'a> {
+    name: &'a str,
+    attrs: &'a str,
+    module: &'a str,
+}
+
+/// Writes backup `sys` in `dir`: one RAPID/TASKn folder per task, in order, and
+/// SYS.cfg (and EIO.cfg when signals are given).
+fn system(dir: &Path, tasks: &[TaskDef<'_>], eio_signals: &str) -> PathBuf {
+    let root = dir.join("sys");
+    let mut sys = String::from("SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n");
+    for (n, task) in tasks.iter().enumerate() {
+        sys.push_str(&format!("\n      -Name \"{}\" {}\n", task.name, task.attrs));
+        let folder = root.join(format!("RAPID/TASK{}/PROGMOD", n + 1));
+        fs::create_dir_all(&folder).expect("task folder");
+        fs::write(folder.join("Main.mod"), task.module).expect("module");
+    }
+    fs::create_dir_all(root.join("SYSPAR")).expect("syspar");
+    fs::write(root.join("SYSPAR/SYS.cfg"), sys).expect("SYS.cfg");
+    if !eio_signals.is_empty() {
+        fs::write(root.join("SYSPAR/EIO.cfg"), format!("EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n{eio_signals}"))
+            .expect("EIO.cfg");
+    }
+    root
+}
+
+#[test]
+fn two_robots_move_synchronized_and_take_the_same_time() {
+    let dir = scratch("multimove");
+    // Two motion tasks meet at SyncMoveOn; then their moves with \ID:=10 start together
+    // and take the time the slower needs. Worked by hand (IRB 120, path acceleration
+    // 10 m/s²): T_ROB1's 100 mm at v100 takes 100/100 + 100/10000 = 1.01 s; T_ROB2's
+    // 50 mm alone would take 0.51 s, but in synchronized movement it is given 1.01 s
+    // too. Both stop at fine points (+0.05 s settle): ClkRead 1.06 in both tasks.
+    // TasksInSync sees both; after SyncMoveOff neither moves synchronized.
+    let body = |dy: u32| {
+        format!(
+            "MODULE M\n  VAR syncident sync1;\n  VAR syncident sync2;\n  PERS tasks all{{2}} := [[\"T_ROB1\"],[\"T_ROB2\"]];\n  \
+             VAR tasks seen{{2}};\n  VAR clock c;\n  VAR robtarget here;\n  PROC main()\n    ConfL \\Off;\n    \
+             MoveAbsJ [[0,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    SyncMoveOn sync1, all;\n    \
+             TPWrite GetTaskName() + \" sync \" + ValToStr(IsSyncMoveOn()) + \" \" \\Num:=TasksInSync(seen);\n    \
+             here := CRobT(\\Tool:=tool0);\n    ClkStart c;\n    \
+             MoveL Offs(here, 0, {dy}, 0) \\ID:=10, v100, fine, tool0;\n    ClkStop c;\n    \
+             TPWrite GetTaskName() + \" moved in \" \\Num:=ClkRead(c);\n    SyncMoveOff sync2;\n    \
+             TPWrite GetTaskName() + \" after \" \\Bool:=IsSyncMoveOn();\n  ENDPROC\nENDMODULE\n"
+        )
+    };
+    let (rob1, rob2) = (body(100), body(50));
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: &rob1 },
+        TaskDef { name: "T_ROB2", attrs: "-Type \"NORMAL\" -MotionTask", module: &rob2 },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "--quiet", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let mut lines: Vec<String> = text(&out.stdout).lines().map(str::to_owned).collect();
+    lines.sort();
+    assert_eq!(
+        lines,
+        [
+            "T_ROB1 after FALSE",
+            "T_ROB1 moved in 1.06",
+            "T_ROB1 sync TRUE 2",
+            "T_ROB2 after FALSE",
+            "T_ROB2 moved in 1.06",
+            "T_ROB2 sync TRUE 2",
+        ]
+    );
+}
+
+#[test]
+fn synchronized_movement_errors_are_the_controllers() {
+    let dir = scratch("multimove_errors");
+    // T_ROB2 never comes to SyncMoveOn: T_ROB1's \TimeOut of 1 s ends in
+    // ERR_SYNCMOVEON, which its handler takes (at 1 s of controller time).
+    let rob1 = "MODULE M\n  VAR syncident sync1;\n  PERS tasks all{2} := [[\"T_ROB1\"],[\"T_ROB2\"]];\n  PROC main()\n    \
+                SyncMoveOn sync1, all \\TimeOut:=1;\n  ERROR\n    IF ERRNO = ERR_SYNCMOVEON THEN\n      \
+                TPWrite \"timed out at \" \\Num:=Round(ClkRead(clock1));\n      RETURN;\n    ENDIF\n  ENDPROC\nENDMODULE\n";
+    let rob2 = "MODULE M\n  PROC main()\n    WaitTime 3;\n  ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef {
+            name: "T_ROB1",
+            attrs: "-Type \"NORMAL\" -MotionTask",
+            module: &rob1.replace("PROC main()\n", "PROC main()\n    ClkStart clock1;\n"),
+        },
+        TaskDef { name: "T_ROB2", attrs: "-Type \"NORMAL\" -MotionTask", module: rob2 },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "--quiet", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "timed out at 1\n");
+
+    // In synchronized movement a move without \ID stops the task with a clear message.
+    let dir = scratch("multimove_no_id");
+    let body = "MODULE M\n  VAR syncident sync1;\n  PERS tasks all{2} := [[\"T_ROB1\"],[\"T_ROB2\"]];\n  PROC main()\n    \
+                SyncMoveOn sync1, all;\n    MoveAbsJ [[0,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n  \
+                ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: body },
+        TaskDef { name: "T_ROB2", attrs: "-Type \"NORMAL\" -MotionTask", module: body },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "--quiet", "sys"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stderr).contains("needs \\ID"), "{}", text(&out.stderr));
+}
