@@ -509,6 +509,9 @@ impl RobotState {
                     done.cut_at(kin, since);
                     let stand = PlannedMove::standing(done.end_joints, planned.tool(), since, since + dt);
                     planned.shift(dt);
+                    // The rest goes on from where the robot stopped: the part done before
+                    // the stop is `done`'s, not to be walked (or traced) again.
+                    planned.start = since + dt;
                     out.extend([done, stand, planned]);
                 }
             }
