@@ -112,10 +112,10 @@ pub(crate) fn search_c(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 fn search(ctx: &mut Ctx<'_>, args: &[Value], places: &Places) -> Res {
     super::moves::require_motion_task(ctx)?;
-    for (idx, name) in [(places.id, "\\ID"), (places.t, "\\T"), (places.corr, "\\Corr")] {
-        if present(args.get(idx)) {
-            return Err(RapidError::fatal(format!("{name} on a search is not supported by `rapid run` yet")));
-        }
+    // uncertain: a search in synchronized movement (`\\ID`) is not coordinated with the
+    // other tasks' moves yet.
+    if present(args.get(places.id)) {
+        return Err(RapidError::fatal("\\ID on a search is not supported by `rapid run` yet"));
     }
     let here = (ctx.chain.len(), ctx.chain.last().map_or(0, |f| f.position().1));
     let search = match ctx.resources.robot.search.take().filter(|s| s.at == here) {
@@ -154,11 +154,18 @@ fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32), places: &Places) -
     let (tool, held_object) = super::moves::mount_of(&chain);
     let request = MoveRequest { target, speed, zone: rapid_motion::plan::ZoneData::FINE, tool, held_object };
     super::moves::note_facts(ctx, &request, &chain);
-    let settings = super::moves::planner_settings(ctx);
+    let mut settings = super::moves::planner_settings(ctx);
+    // `\T`: the search move takes this long.
+    settings.move_time = ctx.opt_num(args.get(places.t))?;
     let now = ctx.time;
     let robot = &mut ctx.resources.robot;
     robot.set_settings(settings);
+    // `\Corr`: the path follows the corrections of the connected generators.
+    robot.corr.next = present(args.get(places.corr));
     let end = robot.push(now, &request, false, Vec::new()).map_err(super::moves::motion_error)?;
+    if let Some(err) = robot.corr.violation.take() {
+        return Err(super::moves::motion_error(err));
+    }
     robot.active = chain;
     Ok(Search { at, end, seen, last: level, hits: 0 })
 }
