@@ -87,6 +87,8 @@ pub struct InterruptState {
     pub next_foreign: usize,
     /// Interrupts to fire at a controller time (TriggInt): (time, number).
     pub scheduled: Vec<(f64, u32)>,
+    /// One-off interrupts (Move*Sync's procedures), freed when they start.
+    pub once: Vec<u32>,
     /// The program is stopped: only safe interrupts queue.
     pub stop: Option<ProgramStop>,
 }
@@ -139,6 +141,24 @@ impl InterruptState {
     /// Whether any interrupt watches signals.
     pub fn watches_signals(&self) -> bool {
         self.table.iter().flatten().any(|i| matches!(i.source, Some(Source::Signal { .. } | Source::Analog { .. })))
+    }
+
+    /// A one-off interrupt running procedure `routine` when it fires (Move*Sync): its
+    /// number. Its slot is freed when the procedure starts.
+    pub fn once(&mut self, routine: u32) -> u32 {
+        let number = self.connect(routine);
+        self.once.push(number);
+        number
+    }
+
+    /// Frees a one-off interrupt's slot once its procedure has started.
+    pub fn started(&mut self, number: u32) {
+        if let Some(at) = self.once.iter().position(|&n| n == number) {
+            self.once.remove(at);
+            if let Some(slot) = self.table.get_mut(number as usize - 1) {
+                *slot = None;
+            }
+        }
     }
 
     /// A new interrupt for `trap`; its number.

@@ -88,6 +88,9 @@ pub struct Ctx<'a> {
     pub events: &'a mut crate::events::EventLog,
     /// Module-level data by lower-case name.
     pub data_by_name: &'a rustc_hash::FxHashMap<String, NamedData>,
+    /// Procedures by lower-case name, and the routines (Move*Sync calls one by name).
+    pub procs_by_name: &'a rustc_hash::FxHashMap<String, u32>,
+    pub routines: &'a [Option<std::rc::Rc<crate::ir::Code>>],
     /// The routine that made the call (ERRSTR_CONTEXT).
     pub routine: &'a str,
     /// Wall-clock seconds since 1970 when the program was loaded (CDate, CTime).

@@ -196,6 +196,7 @@ impl Vm {
         interrupts.trap_event =
             interrupts.events.iter().position(|&(n, _)| n == number).map(|i| interrupts.events.remove(i).1);
         let trap = self.resources.interrupts.get_mut(number).map(|i| i.trap);
+        self.resources.interrupts.started(number);
         let Some(code) = trap.and_then(|t| self.routines.get(t as usize).cloned().flatten()) else { return };
         if let Some(global) = self.intno_global {
             self.storage.globals[global as usize] = Value::Num(number as f32);

@@ -754,6 +754,8 @@ impl Vm {
             next_booked: &mut self.next_booked,
             events: &mut self.events,
             data_by_name: &self.data_by_name,
+            procs_by_name: &self.procs_by_name,
+            routines: &self.routines,
             routine: self.frames.last().map_or("", |f| f.code.name.as_str()),
             wall_epoch: self.wall_epoch,
             resources: &mut self.resources,

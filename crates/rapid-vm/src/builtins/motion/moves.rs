@@ -403,6 +403,42 @@ pub(crate) fn move_j_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     joint_move(ctx, args, &MOVE_X_IO, event)
 }
 
+/// `MoveJSync`, `MoveLSync`, `MoveCSync`: the move runs procedure ProcName (no
+/// parameters) when the robot passes the point (the middle of the corner path, or
+/// standing at a stop point), as an interrupt's trap runs: between instructions, or
+/// while the program waits.
+// uncertain: the procedure runs like a trap (IDisable holds it back); a name that is
+// no loaded procedure is ERR_REFUNKPRC, a procedure with parameters ERR_CALLPROC.
+pub(crate) fn move_j_sync(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let event = sync_event(ctx, &args[7])?;
+    joint_move(ctx, args, &MOVE_X_IO, event)
+}
+
+pub(crate) fn move_l_sync(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let event = sync_event(ctx, &args[7])?;
+    linear_move(ctx, args, &MOVE_X_IO, event)
+}
+
+pub(crate) fn move_c_sync(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let event = sync_event(ctx, &args[8])?;
+    circular_move(ctx, args, &MOVE_C_IO, event)
+}
+
+/// The path event of Move*Sync: the named procedure, run at the point.
+fn sync_event(ctx: &mut Ctx<'_>, name: &Value) -> Result<Vec<super::robot::PathEvent>, RapidError> {
+    let name = ctx.string(name)?;
+    let Some(&routine) = ctx.procs_by_name.get(&name.to_lowercase()) else {
+        return Err(ctx.error(crate::errnames::Err::RefUnknownProc, format!("no procedure `{name}` is loaded")));
+    };
+    let callable = ctx.routines.get(routine as usize).and_then(|c| c.as_ref());
+    if !callable.is_some_and(|c| !c.is_func && !c.is_trap && c.n_params == 0) {
+        return Err(ctx.error(crate::errnames::Err::CallProc, format!("`{name}` is no procedure without parameters")));
+    }
+    let number = ctx.resources.interrupts.once(routine);
+    let action = super::robot::Action::Interrupt(number);
+    Ok(vec![super::robot::PathEvent { at: super::robot::At::Point, shift: 0.0, action }])
+}
+
 /// `MoveLDO`, `MoveLAO`, `MoveLGO`.
 pub(crate) fn move_l_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let event = path_event(ctx, args, 7)?;
