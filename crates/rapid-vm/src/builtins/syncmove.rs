@@ -27,6 +27,9 @@ const IDLE_POLL: f64 = 3600.0;
 pub struct SyncMode {
     pub point: String,
     pub members: Vec<String>,
+    /// SyncMoveSuspend: on the StorePath level the task moves on its own until
+    /// SyncMoveResume.
+    pub suspended: bool,
 }
 
 /// The coordinated move the tasks of one synchronized group are meeting at.
@@ -84,7 +87,7 @@ fn sync_move_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     tasking.shared.in_sync.retain(|t| !t.eq_ignore_ascii_case(&me));
     tasking.shared.in_sync.push(me);
     tasking.shared.epoch += 1;
-    tasking.sync_move = Some(SyncMode { point, members: list });
+    tasking.sync_move = Some(SyncMode { point, members: list, suspended: false });
     Ok(None)
 }
 
@@ -129,9 +132,33 @@ fn leave(ctx: &mut Ctx<'_>) {
     tasking.shared.epoch += 1;
 }
 
-/// `IsSyncMoveOn()`: whether the task moves synchronized.
+/// `IsSyncMoveOn()`: whether the task moves synchronized (not while suspended).
+// uncertain: a suspended synchronized movement answers FALSE.
 fn is_sync_move_on(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    Ok(Some(Value::Bool(ctx.resources.tasking.sync_move.is_some())))
+    Ok(Some(Value::Bool(ctx.resources.tasking.sync_move.as_ref().is_some_and(|m| !m.suspended))))
+}
+
+/// `SyncMoveSuspend`: on the StorePath level (path level 2) the task moves on its own,
+/// without `\ID`, until SyncMoveResume.
+// uncertain: outside synchronized movement or on path level 1 it stops execution.
+fn sync_move_suspend(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+    set_suspended(ctx, true, "SyncMoveSuspend")
+}
+
+/// `SyncMoveResume`: back to synchronized movement on the StorePath level.
+fn sync_move_resume(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+    set_suspended(ctx, false, "SyncMoveResume")
+}
+
+fn set_suspended(ctx: &mut Ctx<'_>, suspended: bool, what: &str) -> Res {
+    if ctx.resources.robot.stored.is_none() {
+        return Err(RapidError::fatal(format!("{what} is only allowed on the StorePath level (after StorePath)")));
+    }
+    let Some(mode) = ctx.resources.tasking.sync_move.as_mut() else {
+        return Err(RapidError::fatal(format!("{what}: the task does not move synchronized (no SyncMoveOn)")));
+    };
+    mode.suspended = suspended;
+    Ok(None)
 }
 
 /// `TasksInSync(TaskList)`: how many tasks move synchronized now; their names fill
@@ -162,8 +189,9 @@ pub(crate) fn coordinate(
     request: &MoveRequest,
     settings: &MotionSettings,
 ) -> Result<Coordination, RapidError> {
-    let Some(mode) = ctx.resources.tasking.sync_move.clone() else {
-        // uncertain: `\ID` outside synchronized movement is ignored.
+    let Some(mode) = ctx.resources.tasking.sync_move.clone().filter(|m| !m.suspended) else {
+        // uncertain: `\ID` outside synchronized movement (or while it is suspended) is
+        // ignored.
         return Ok(Coordination::Alone);
     };
     if !present(id) {
@@ -244,6 +272,8 @@ pub(super) static ENTRIES: Entries = &[
     ("SyncMoveOn", sync_move_on),
     ("SyncMoveOff", sync_move_off),
     ("SyncMoveUndo", sync_move_undo),
+    ("SyncMoveSuspend", sync_move_suspend),
+    ("SyncMoveResume", sync_move_resume),
     ("IsSyncMoveOn", is_sync_move_on),
     ("TasksInSync", tasks_in_sync),
 ];
