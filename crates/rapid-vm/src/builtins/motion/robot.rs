@@ -383,9 +383,8 @@ impl RobotState {
 
     /// The axis values at controller time `t`. On a move still waiting for its
     /// successor the robot is taken to be at that move's end.
-    // uncertain: the position along a fly-by move that is not final yet is not known
-    // until its corner is planned; its end point stands for it (a stop point before a
-    // read-back, as the manual recommends, makes it exact).
+    // uncertain: on a fly-by move that is not final yet the corner is not planned; the
+    // move's stop plan stands for it (exact until the robot would brake).
     pub fn joints_at(&mut self, t: f64) -> Joints {
         let mut joints = self.planned_joints_at(t);
         // Axes in independent mode are where their own motion has taken them.
@@ -422,7 +421,13 @@ impl RobotState {
         let t = self.pause.as_ref().map_or(t, |p| t.min(p.since));
         self.forget_before(t);
         if self.planner.has_pending() && t > self.planner.time() {
-            return self.planner.end_joints();
+            // On the move still waiting for its successor: until it could start braking
+            // it moves as if it stopped at its point, so that plan gives where it is
+            // (exact before the braking; within the corner the stop plan stands for it).
+            return match self.planner.provisional() {
+                Some((planned, _)) => planned.sample(&self.kin, t).joints,
+                None => self.planner.end_joints(),
+            };
         }
         match self.ahead.iter().find(|m| t <= m.end) {
             Some(m) if t >= m.start => self.corr.correct(&self.kin, m, m.sample(&self.kin, t)).joints,
