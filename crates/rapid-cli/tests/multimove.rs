@@ -129,3 +129,32 @@ fn synchronized_movement_errors_are_the_controllers() {
     assert_eq!(out.status.code(), Some(1));
     assert!(text(&out.stderr).contains("needs \\ID"), "{}", text(&out.stderr));
 }
+
+#[test]
+fn all_motion_tasks_stops_and_starts_every_robot() {
+    let dir = scratch("all_motion_tasks");
+    // T_ROB2 stops both robots 0.3 s into their moves (StopMove \AllMotionTasks) and
+    // starts them 0.5 s later. Worked by hand: T_ROB1's 100 mm at v100 takes 1.01 s
+    // + 0.05 settle = 1.06 s, now 0.5 s more: 1.56. T_ROB2's own 50 mm (\Conc) takes
+    // 0.51 + 0.05 = 0.56 s, with the stop 1.06 when WaitRob returns.
+    let prelude = "MODULE M\n  VAR clock c;\n  VAR robtarget here;\n  PROC main()\n    ConfL \\Off;\n    \
+                   MoveAbsJ [[0,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    \
+                   here := CRobT(\\Tool:=tool0);\n    ClkStart c;\n";
+    let rob1 = format!(
+        "{prelude}    MoveL Offs(here, 0, 100, 0), v100, fine, tool0;\n    \
+         TPWrite \"T_ROB1 \" \\Num:=ClkRead(c);\n  ENDPROC\nENDMODULE\n"
+    );
+    let rob2 = format!(
+        "{prelude}    MoveL \\Conc, Offs(here, 0, 50, 0), v100, fine, tool0;\n    WaitTime 0.3;\n    \
+         StopMove \\AllMotionTasks;\n    WaitTime 0.5;\n    StartMove \\AllMotionTasks;\n    WaitRob \\InPos;\n    \
+         TPWrite \"T_ROB2 \" \\Num:=ClkRead(c);\n  ENDPROC\nENDMODULE\n"
+    );
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: &rob1 },
+        TaskDef { name: "T_ROB2", attrs: "-Type \"NORMAL\" -MotionTask", module: &rob2 },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "--quiet", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "T_ROB2 1.06\nT_ROB1 1.56\n");
+}

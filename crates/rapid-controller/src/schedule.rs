@@ -212,7 +212,7 @@ impl Controller {
 
     /// Answers the request a task made of the controller (another task's data or
     /// robot), if one waits; the asking task is woken to read the reply.
-    fn serve_request(&mut self) {
+    fn serve_request(&mut self, host: &mut dyn Host) {
         use rapid_vm::builtins::tasking::{Reply, Request};
         let Some((who, request)) = self.shared.tasking.request.take() else { return };
         let reply = match request {
@@ -229,9 +229,29 @@ impl Controller {
                     Err(error) => Reply::Failed(Box::new(error)),
                 }
             }
+            Request::AllMotionTasks { name } => {
+                self.motion_in_other_tasks(who, name, host);
+                Reply::Done
+            }
         };
         self.shared.tasking.reply = Some((who, reply));
         self.shared.tasking.epoch += 1;
+    }
+
+    /// StopMove/StartMove/StopMoveReset `\AllMotionTasks` of task `who`: the same for
+    /// the robot of every other motion task, each with the shared state handed in.
+    fn motion_in_other_tasks(&mut self, who: usize, name: &str, host: &mut dyn Host) {
+        for idx in 0..self.tasks.len() {
+            if idx == who || !self.tasks[idx].spec.motion {
+                continue;
+            }
+            let time = self.time;
+            let vm = &mut self.tasks[idx].loaded.vm;
+            vm.time = time;
+            vm.exchange_shared(&mut self.shared);
+            vm.motion_for_another_task(name, host);
+            vm.exchange_shared(&mut self.shared);
+        }
     }
 
     /// GetDataVal from task `who` of task `task`'s module data `name`.
@@ -360,7 +380,7 @@ impl Controller {
         task.loaded.vm.exchange_shared(&mut self.shared);
         self.pers.copy_out(idx, &mut task.pers, &task.loaded.vm);
         self.publish_events(idx);
-        self.serve_request();
+        self.serve_request(host);
         self.steps += 1;
         // A built-in that waited on the outside world (a socket) moved the task's clock.
         self.time = self.time.max(self.tasks[idx].loaded.vm.time) + INSTRUCTION_TIME;

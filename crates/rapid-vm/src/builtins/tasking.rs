@@ -59,6 +59,9 @@ pub enum Request {
     WriteData { task: usize, name: String, value: crate::value::Value },
     /// CJointT/CRobT with `\TaskName`/`\TaskRef`: where task `task`'s robot is.
     Robot { task: usize },
+    /// StopMove, StartMove or StopMoveReset with `\AllMotionTasks`: the same
+    /// built-in (`name`) for the robots of every other motion task.
+    AllMotionTasks { name: &'static str },
     /// Save with `\TaskName`/`\TaskRef`: task `task` saves its module `module`, to
     /// `dest` (host path, path as the program wrote it) or to its own file.
     SaveModule { task: usize, module: String, dest: Option<(std::path::PathBuf, String)> },

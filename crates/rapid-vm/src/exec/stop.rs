@@ -68,6 +68,13 @@ impl Vm {
         }
     }
 
+    /// StopMove, StartMove or StopMoveReset on this task's robot, asked by another
+    /// task's `\AllMotionTasks` through the controller.
+    pub fn motion_for_another_task(&mut self, name: &str, host: &mut dyn crate::host::Host) {
+        let args: &[Value] = if name == "StopMove" { &[Value::Absent, Value::Absent] } else { &[Value::Absent] };
+        self.call_motion_builtin(name, args, host);
+    }
+
     /// Runs a motion built-in (StopMove, StartMove) as the controller; it cannot fail
     /// for the arguments given.
     fn call_motion_builtin(&mut self, name: &str, args: &[Value], host: &mut dyn crate::host::Host) {

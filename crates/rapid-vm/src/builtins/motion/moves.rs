@@ -263,10 +263,16 @@ fn wait_for_robot(ctx: &mut Ctx<'_>, resume: f64) {
     }
     // Inside a TRAP no other trap can start (interrupts queue): the move waits whole.
     let in_trap = ctx.chain.iter().any(|f| f.is_trap());
-    if ctx.resources.interrupts.active() && !in_trap {
-        // Interrupts may come while the robot moves: wait until the next one may,
-        // and hold the rest of the wait before the next instruction (the VM).
-        ctx.resources.robot.hold_until = Some(resume);
+    if in_trap {
+        ctx.wait = Some(resume - now);
+        return;
+    }
+    // The rest of the wait is held before the next instruction (the VM), so a stop of
+    // the robot meanwhile (a trap's StopMove, another task's `\AllMotionTasks`, a
+    // program stop) holds the program too.
+    ctx.resources.robot.hold_until = Some(resume);
+    if ctx.resources.interrupts.active() {
+        // Interrupts may come while the robot moves: wait until the next one may.
         let next = super::super::interrupts::next_due(ctx).map_or(resume, |due| due.min(resume));
         ctx.wait = Some((next - now).max(1e-6));
     } else {

@@ -69,11 +69,16 @@ pub(super) const REGAIN_MAX_DEG: f64 = 20.0;
 // uncertain: the controller's regain speed is not published; a slow v100.
 const REGAIN_SPEED: f64 = 100.0;
 
-fn refuse_all_tasks(args: &[Value], idx: usize) -> Result<(), RapidError> {
-    if present(args.get(idx)) {
-        return Err(RapidError::fatal("\\AllMotionTasks is not supported by `rapid run` yet"));
+/// `\AllMotionTasks`: the other motion tasks' robots get the same instruction first,
+/// through the controller. `false` while the answer is awaited (the instruction runs
+/// again); `true` when this task's own robot may follow (or the switch is absent).
+// uncertain: the other robots are stopped or started at the instant the instruction
+// runs, as one StopMove/StartMove of their own would.
+fn all_motion_tasks(ctx: &mut Ctx<'_>, args: &[Value], idx: usize, name: &'static str) -> bool {
+    if !present(args.get(idx)) {
+        return true;
     }
-    Ok(())
+    super::super::tasking::ask(ctx, super::super::tasking::Request::AllMotionTasks { name }).is_some()
 }
 
 /// The robot's path stops at `since` (now for StopMove; the end of the move it is on
@@ -118,7 +123,9 @@ fn hold_after(resources: &mut Resources, since: f64) -> Pause {
 // uncertain: the stopping distance (a path stop decelerates, \Quick faster) is not
 // modelled: the robot stands at the place it was at the instant of StopMove.
 pub(crate) fn stop_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    refuse_all_tasks(args, 1)?;
+    if !all_motion_tasks(ctx, args, 1, "StopMove") {
+        return Ok(None);
+    }
     if let Some(pause) = ctx.resources.robot.pause.as_mut() {
         // Stopped already: the stop-move state is set again (after StopMoveReset).
         pause.reset = false;
@@ -140,7 +147,9 @@ pub(crate) fn hold(resources: &mut Resources, now: f64) {
 
 /// `StartMove [\AllMotionTasks]`: the robot goes on along its path.
 pub(crate) fn start_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    refuse_all_tasks(args, 0)?;
+    if !all_motion_tasks(ctx, args, 0, "StartMove") {
+        return Ok(None);
+    }
     restart(ctx)?;
     Ok(None)
 }
@@ -161,7 +170,9 @@ pub(crate) fn start_move_retry(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 // uncertain: the manual's "restart at the next program start" read for a run that
 // is never stopped and started again.
 pub(crate) fn stop_move_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    refuse_all_tasks(args, 0)?;
+    if !all_motion_tasks(ctx, args, 0, "StopMoveReset") {
+        return Ok(None);
+    }
     if let Some(pause) = ctx.resources.robot.pause.as_mut() {
         pause.reset = true;
     }
