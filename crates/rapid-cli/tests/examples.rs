@@ -191,3 +191,16 @@ fn the_palletizing_example_stacks_twelve_boxes_in_the_time_the_timing_model_give
         assert_near(*actual, *expected, 0.01, "doGrip change");
     }
 }
+
+#[test]
+fn the_twin_robots_carry_their_part_in_step() {
+    let out = rapid(&["--quiet", "examples/twin_robots"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    // Worked by hand (IRB 120, 10 m/s², 0.05 s settle at each fine point): lift 100 mm
+    // at v200, 0.5 + 0.02 = 0.52 s; carry 150 mm (left) and 100 mm (right), both take
+    // the left's 0.75 + 0.02 = 0.77 s; lower 0.52 s: 0.57 + 0.82 + 0.57 = 1.96 s in
+    // both tasks (the right alone would need 1.71 s).
+    let mut lines: Vec<String> = text(&out.stdout).lines().map(str::to_owned).collect();
+    lines.sort();
+    assert_eq!(lines, ["T_ROB1 carried the part in 1.96", "T_ROB2 carried the part in 1.96"]);
+}
