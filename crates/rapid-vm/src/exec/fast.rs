@@ -40,6 +40,14 @@ impl Vm {
                 }
             };
         }
+        // After a plain return: the loop goes on in the caller, at its pc.
+        macro_rules! resume_caller {
+            () => {{
+                let frame = self.frame();
+                (code, base, pc) = (frame.code.clone(), frame.base as usize, frame.pc);
+                continue;
+            }};
+        }
         let budget = *remaining;
         let mut left = budget;
         let outcome = loop {
@@ -283,16 +291,26 @@ impl Vm {
                 }
                 Instr::FellOffEnd => {
                     self.frame_mut().pc = pc;
+                    // A PROC's end outside an ERROR handler is a plain return.
+                    if !code.is_func && self.frame().active.is_none() && self.return_plain(None).is_ok() {
+                        resume_caller!();
+                    }
                     continue_in_top_frame!(self.fell_off_end());
                 }
                 Instr::Return => {
                     self.frame_mut().pc = pc;
+                    if self.return_plain(None).is_ok() {
+                        resume_caller!();
+                    }
                     continue_in_top_frame!(Ok(self.return_from(None)));
                 }
                 Instr::ReturnValue => {
                     let value = stack.pop().unwrap_or(Value::Absent);
                     self.frame_mut().pc = pc;
-                    continue_in_top_frame!(Ok(self.return_from(Some(value))));
+                    match self.return_plain(Some(value)) {
+                        Ok(()) => resume_caller!(),
+                        Err(value) => continue_in_top_frame!(Ok(self.return_from(value))),
+                    }
                 }
                 Instr::PlaceLocal(slot) => {
                     let place = match &stack[base + slot as usize] {
@@ -331,6 +349,10 @@ impl Vm {
                     let site = &code.sites[site_index as usize];
                     let Callee::Builtin(id) = site.callee else {
                         // A routine: entered here, and the loop starts again in its frame.
+                        if let Some((callee, callee_base)) = self.enter_plain(&code, site_index, pc) {
+                            (code, base, pc) = (callee, callee_base, 0);
+                            continue;
+                        }
                         self.frame_mut().pc = pc;
                         continue_in_top_frame!(self.call(&code, site_index, host));
                     };
