@@ -231,7 +231,21 @@ impl Vm {
                     let rhs_on_stack = rhs == crate::ir::Operand::Stack;
                     let lhs_depth = usize::from(rhs_on_stack);
                     let (Some(a), Some(b)) = (num_at(lhs, stack, lhs_depth), num_at(rhs, stack, 0)) else {
-                        break Fast::Step;
+                        // Other operand types (pos, orient, dnum, ...): `ops::binary` here,
+                        // exactly as `Vm::step` does it, rather than a round trip through
+                        // `step` (bench/interp pos). References and absent optional
+                        // parameters still take `step`.
+                        match self.binop_general(op, lhs, rhs, &code.consts, base) {
+                            None => break Fast::Step,
+                            Some(Ok(())) => {
+                                pc += 1;
+                                continue;
+                            }
+                            Some(Err(fault)) => {
+                                self.frame_mut().pc = pc;
+                                break Fast::Called(Err(self.fault(fault)));
+                            }
+                        }
                     };
                     let Some(res) = fast_num_op(op, a, b) else { break Fast::Step };
                     // The result takes the place of the deepest stack operand, written
@@ -313,6 +327,22 @@ impl Vm {
                     }
                 }
                 Instr::PlaceLocal(slot) => {
+                    // `PlaceLocal; PlaceField(f); LoadPlace` reads a component of a
+                    // record in a local slot: done at once when the budget allows all
+                    // three, without building a place.
+                    if let Value::Record(record) = &stack[base + slot as usize] {
+                        if let (true, Some(&Instr::PlaceField(field)), Some(&Instr::LoadPlace)) =
+                            (left >= 2, code.instrs.get(pc as usize + 1), code.instrs.get(pc as usize + 2))
+                        {
+                            if let Some(value) = record.fields.get(field as usize) {
+                                let value = value.clone();
+                                stack.push(value);
+                                left -= 2;
+                                pc += 3;
+                                continue;
+                            }
+                        }
+                    }
                     let place = match &stack[base + slot as usize] {
                         Value::Ref(place) if place.path.is_empty() => place.root,
                         Value::Ref(_) | Value::Absent => break Fast::Step,
@@ -434,6 +464,50 @@ impl Vm {
         }
         outcome
     }
+
+    /// `BinOp` on operands other than nums; `None` when an operand needs `Vm::step`.
+    /// Kept out of line: inlined, it made the fast loop's other instructions slower
+    /// (callgrind, bench/interp varcall).
+    #[inline(never)]
+    fn binop_general(
+        &mut self,
+        op: rapid_syntax::ast::BinaryOp,
+        lhs: crate::ir::Operand,
+        rhs: crate::ir::Operand,
+        consts: &[Value],
+        base: usize,
+    ) -> Option<Result<(), super::storage::Fault>> {
+        let stack = &mut self.storage.stack;
+        if !plain_operand(lhs, stack, base) || !plain_operand(rhs, stack, base) {
+            return None;
+        }
+        let rhs = take_operand(rhs, stack, base, consts);
+        let lhs = take_operand(lhs, stack, base, consts);
+        Some(crate::ops::binary(op, lhs, rhs, self.types).map(|value| stack.push(value)))
+    }
+}
+
+/// Whether `BinOp` may take `operand` as it is: a local slot holding neither a
+/// reference nor an absent optional parameter (those need `Vm::load_local`).
+#[inline(always)]
+fn plain_operand(operand: crate::ir::Operand, stack: &[Value], base: usize) -> bool {
+    match operand {
+        crate::ir::Operand::Local(slot) => {
+            !matches!(stack.get(base + slot as usize), None | Some(Value::Ref(_) | Value::Absent))
+        }
+        crate::ir::Operand::Stack | crate::ir::Operand::Const(_) => true,
+    }
+}
+
+/// The value of a plain operand (popped from the stack, or a copy).
+#[inline(always)]
+fn take_operand(operand: crate::ir::Operand, stack: &mut Vec<Value>, base: usize, consts: &[Value]) -> Value {
+    match operand {
+        crate::ir::Operand::Stack => stack.pop(),
+        crate::ir::Operand::Local(slot) => stack.get(base + slot as usize).cloned(),
+        crate::ir::Operand::Const(i) => consts.get(i as usize).cloned(),
+    }
+    .unwrap_or(Value::Absent)
 }
 
 /// The string an operand names: the stack value `depth` below the top, a local slot
