@@ -47,7 +47,7 @@ impl RoutineCompiler<'_> {
         if max_depth(&kernel.ops)? > KERNEL_DEPTH {
             return None;
         }
-        kernel.ops = fuse_operands(&kernel.ops);
+        kernel.ops = fuse_operands(&kernel.ops).into_iter().map(specialize).collect();
         self.code.kernels.push(kernel);
         let idx = self.code.kernels.len() as u32 - 1;
         Some(self.code.emit(instr(idx)))
@@ -214,14 +214,37 @@ fn fuse_operands(ops: &[KernelOp]) -> Vec<KernelOp> {
     out
 }
 
+/// The specialised form of a fused operation, when there is one (see `KernelOp`).
+fn specialize(op: KernelOp) -> KernelOp {
+    use rapid_syntax::ast::BinaryOp as B;
+    match op {
+        KernelOp::BinaryWith(B::Add, KernelOperand::Const(c)) => KernelOp::AddConst(c),
+        KernelOp::BinaryWith(B::Sub, KernelOperand::Const(c)) => KernelOp::SubConst(c),
+        KernelOp::BinaryWith(B::Mul, KernelOperand::Const(c)) => KernelOp::MulConst(c),
+        KernelOp::BinaryWith(B::Mod, KernelOperand::Const(c)) => KernelOp::ModConst(c),
+        KernelOp::BinaryWith(B::Add, KernelOperand::Local(slot)) => KernelOp::AddLocal(slot),
+        KernelOp::BinaryWith(B::Lt, KernelOperand::Const(c)) => KernelOp::LtConst(c),
+        KernelOp::BinaryWith(B::Gt, KernelOperand::Const(c)) => KernelOp::GtConst(c),
+        other => other,
+    }
+}
+
 fn max_depth(ops: &[KernelOp]) -> Option<usize> {
     let (mut depth, mut max) = (0usize, 0usize);
     for op in ops {
         match op {
             KernelOp::Local(_) | KernelOp::Global(_) | KernelOp::Const(_) => depth += 1,
-            KernelOp::Elem { .. } | KernelOp::Neg | KernelOp::Not | KernelOp::BinaryWith(..) => {
-                depth.checked_sub(1).map(|_| ())?
-            }
+            KernelOp::Elem { .. }
+            | KernelOp::Neg
+            | KernelOp::Not
+            | KernelOp::BinaryWith(..)
+            | KernelOp::AddConst(_)
+            | KernelOp::SubConst(_)
+            | KernelOp::MulConst(_)
+            | KernelOp::ModConst(_)
+            | KernelOp::AddLocal(_)
+            | KernelOp::LtConst(_)
+            | KernelOp::GtConst(_) => depth.checked_sub(1).map(|_| ())?,
             KernelOp::Binary(_) => depth = depth.checked_sub(1)?,
         }
         max = max.max(depth);

@@ -110,7 +110,9 @@ impl Vm {
                         }
                         (Some(&Value::Bool(b)), Value::Bool(_)) => {
                             drop_plain(stack.pop());
-                            stack[at] = Value::Bool(b);
+                            if let Value::Bool(x) = &mut stack[at] {
+                                *x = b;
+                            }
                         }
                         (Some(Value::Str(_)), Value::Str(_)) | (Some(Value::Record(_)), Value::Record(_)) => {
                             if let Some(value) = stack.pop() {
@@ -264,14 +266,14 @@ impl Vm {
                     let Some(&Value::Num(index)) = stack.last() else { break Fast::Step };
                     let Value::Array(array) = &stack[base + slot as usize] else { break Fast::Step };
                     let Some(&Value::Num(elem)) = element_1d(array, index) else { break Fast::Step };
-                    stack[len - 1] = Value::Num(elem);
+                    set_num(&mut stack[len - 1], elem);
                 }
                 Instr::LoadElem { global: true, slot, n: 1 } => {
                     let len = stack.len();
                     let Some(&Value::Num(index)) = stack.last() else { break Fast::Step };
                     let Some(Value::Array(array)) = self.storage.globals.get(slot as usize) else { break Fast::Step };
                     let Some(&Value::Num(elem)) = element_1d(array, index) else { break Fast::Step };
-                    stack[len - 1] = Value::Num(elem);
+                    set_num(&mut stack[len - 1], elem);
                 }
                 Instr::StoreElem { global: false, slot, n: 1 } => {
                     let len = stack.len();
@@ -449,7 +451,10 @@ impl Vm {
                     let (Value::Num(v), Value::Num(step)) = (&stack[slots], &stack[slots + 2]) else {
                         break Fast::Step;
                     };
-                    stack[slots] = Value::Num(v + step);
+                    // In place: assigning a whole `Value` ran the general drop code
+                    // on the old num.
+                    let next = v + step;
+                    set_num(&mut stack[slots], next);
                     pc = check;
                     continue;
                 }

@@ -40,6 +40,7 @@ pub(super) fn eval(kernel: &Kernel, stack: &[Value], base: usize, globals: &[Val
             top = value;
         }};
     }
+    use rapid_syntax::ast::BinaryOp as B;
     for op in &kernel.ops {
         match *op {
             KernelOp::Local(slot) => push!(local_num(stack, globals, base + slot as usize)?),
@@ -75,6 +76,16 @@ pub(super) fn eval(kernel: &Kernel, stack: &[Value], base: usize, globals: &[Val
                 }
                 depth -= 1;
                 top = binary(op, *regs.get(depth)?, top)?;
+            }
+            KernelOp::AddConst(c) => top = with_top(depth, top, c, B::Add)?,
+            KernelOp::SubConst(c) => top = with_top(depth, top, c, B::Sub)?,
+            KernelOp::MulConst(c) => top = with_top(depth, top, c, B::Mul)?,
+            KernelOp::ModConst(c) => top = with_top(depth, top, c, B::Mod)?,
+            KernelOp::LtConst(c) => top = with_top(depth, top, c, B::Lt)?,
+            KernelOp::GtConst(c) => top = with_top(depth, top, c, B::Gt)?,
+            KernelOp::AddLocal(slot) => {
+                let b = local_num(stack, globals, base + slot as usize)?;
+                top = with_top(depth, top, b, B::Add)?;
             }
             KernelOp::BinaryWith(op, operand) => {
                 if depth == 0 {
@@ -138,6 +149,16 @@ pub(super) fn store(
 #[inline]
 pub(super) fn truth(results: &Results) -> Option<bool> {
     Some(results.top != 0.0)
+}
+
+/// `top op b` for a specialised operation: `binary` with the operator known at
+/// compile time (inlined, its dispatch folds away).
+#[inline(always)]
+fn with_top(depth: usize, top: f32, b: f32, op: rapid_syntax::ast::BinaryOp) -> Option<f32> {
+    if depth == 0 {
+        return None;
+    }
+    binary(op, top, b)
 }
 
 /// A num in a local slot, or behind a reference to a whole num.
