@@ -258,6 +258,25 @@ mod tests {
     use rapid_syntax::ast::BinaryOp::{Add, Mul};
 
     #[test]
+    fn common_fused_operations_get_their_own_op() {
+        use rapid_syntax::ast::BinaryOp::{Div, Gt, Lt, Mod, Sub};
+        let with = |op, operand| specialize(KernelOp::BinaryWith(op, operand));
+        assert_eq!(with(Add, KernelOperand::Const(2.0)), KernelOp::AddConst(2.0));
+        assert_eq!(with(Sub, KernelOperand::Const(2.0)), KernelOp::SubConst(2.0));
+        assert_eq!(with(Mul, KernelOperand::Const(7.0)), KernelOp::MulConst(7.0));
+        assert_eq!(with(Mod, KernelOperand::Const(9.0)), KernelOp::ModConst(9.0));
+        assert_eq!(with(Add, KernelOperand::Local(1)), KernelOp::AddLocal(1));
+        assert_eq!(with(Lt, KernelOperand::Const(2.0)), KernelOp::LtConst(2.0));
+        assert_eq!(with(Gt, KernelOperand::Const(76.0)), KernelOp::GtConst(76.0));
+        // The others stay general.
+        let general = KernelOp::BinaryWith(Div, KernelOperand::Const(4.0));
+        assert_eq!(specialize(general), general);
+        let general = KernelOp::BinaryWith(Sub, KernelOperand::Local(1));
+        assert_eq!(specialize(general), general);
+        assert_eq!(specialize(KernelOp::Local(0)), KernelOp::Local(0));
+    }
+
+    #[test]
     fn operand_pushes_fuse_into_the_operation_that_takes_them() {
         // acc * 7 + j: the first operand stays a push, the others are read in place.
         let ops = [

@@ -180,6 +180,18 @@ impl Vm {
                         && is_str(rhs, stack, base, &code.consts, 0) =>
                 {
                     let lhs_depth = usize::from(rhs == crate::ir::Operand::Stack);
+                    // `a + b + "literal"` (Stack + Stack, then the constant pushed and
+                    // added): joined at once when the budget allows all three
+                    // instructions, so the intermediate string is never allocated.
+                    if let (true, Some(joined)) = (left >= 2, concat_with_next(&code, pc, lhs, rhs, stack)) {
+                        stack.pop();
+                        if let Some(top) = stack.last_mut() {
+                            *top = joined;
+                        }
+                        left -= 2;
+                        pc += 3;
+                        continue;
+                    }
                     let joined = match (
                         str_at(lhs, stack, base, &code.consts, lhs_depth),
                         str_at(rhs, stack, base, &code.consts, 0),
@@ -574,6 +586,43 @@ fn str_at<'a>(
 #[inline(always)]
 fn is_str(operand: crate::ir::Operand, stack: &[Value], base: usize, consts: &[Value], depth: usize) -> bool {
     str_at(operand, stack, base, consts, depth).is_some()
+}
+
+/// `BinOp(+, Stack, Stack); Const(string); BinOp(+, Stack, Stack)` at `pc` on two
+/// strings: the three joined, when the result certainly fits (then neither addition
+/// could have failed). `None`: not that sequence, or too long for this shortcut.
+#[inline(always)]
+fn concat_with_next(
+    code: &crate::ir::Code,
+    pc: u32,
+    lhs: crate::ir::Operand,
+    rhs: crate::ir::Operand,
+    stack: &[Value],
+) -> Option<Value> {
+    use crate::ir::Operand::Stack;
+    if lhs != Stack || rhs != Stack {
+        return None;
+    }
+    let (Instr::Const(k), Instr::BinOp { op: rapid_syntax::ast::BinaryOp::Add, lhs: Stack, rhs: Stack }) =
+        (*code.instrs.get(pc as usize + 1)?, *code.instrs.get(pc as usize + 2)?)
+    else {
+        return None;
+    };
+    let (Value::Str(c), [Value::Str(a), Value::Str(b)]) =
+        (code.consts.get(k as usize)?, stack.get(stack.len().checked_sub(2)?..)?)
+    else {
+        return None;
+    };
+    let len = a.len() + b.len() + c.len();
+    if len > MAX_STRING_CHARS {
+        return None;
+    }
+    let mut buf = [0u8; MAX_STRING_CHARS];
+    buf[..a.len()].copy_from_slice(a.as_bytes());
+    buf[a.len()..a.len() + b.len()].copy_from_slice(b.as_bytes());
+    buf[a.len() + b.len()..len].copy_from_slice(c.as_bytes());
+    let joined = std::str::from_utf8(&buf[..len]).ok()?;
+    Some(Value::Str(joined.into()))
 }
 
 /// `a + b` when the result certainly fits a RAPID string: at most 80 bytes of UTF-8
