@@ -113,7 +113,10 @@ impl Vm {
             return None;
         }
         let callee = callee.clone();
-        self.storage.stack.extend(callee.local_defaults.iter().cloned());
+        // Checked first: even an empty `extend` costs a call's worth of setup.
+        if !callee.local_defaults.is_empty() {
+            self.storage.stack.extend(callee.local_defaults.iter().cloned());
+        }
         self.frame_mut().pc = pc;
         self.frames.push(Frame {
             code: callee.clone(),
@@ -482,6 +485,20 @@ impl Vm {
             }
         }
         Some(if self.cycle_exit { Exit::CycleEnded } else { Exit::Done })
+    }
+
+    /// A boxed place naming a whole variable, from the pool when one is free (the
+    /// common VAR argument; `pooled_place` without copying an empty path).
+    #[inline]
+    pub(super) fn pooled_root(&mut self, root: Root) -> Box<Place> {
+        match self.place_pool.pop() {
+            Some(mut place) => {
+                place.root = root;
+                place.path.clear();
+                place
+            }
+            None => Box::new(Place { root, path: Vec::new() }),
+        }
     }
 
     /// A boxed place, from the pool when one is free.

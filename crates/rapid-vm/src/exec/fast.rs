@@ -340,11 +340,11 @@ impl Vm {
                         Value::Ref(_) | Value::Absent => break Fast::Step,
                         _ => Root::Stack((base + slot as usize) as u32),
                     };
-                    let place = self.pooled_place(place, &[]);
+                    let place = self.pooled_root(place);
                     self.storage.stack.push(Value::Ref(place));
                 }
                 Instr::PlaceGlobal(idx) => {
-                    let place = self.pooled_place(Root::Global(idx), &[]);
+                    let place = self.pooled_root(Root::Global(idx));
                     self.storage.stack.push(Value::Ref(place));
                 }
                 Instr::KernelStore { kernel, skip } => {
