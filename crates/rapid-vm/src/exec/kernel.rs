@@ -25,7 +25,7 @@ pub(super) struct Results {
 /// The top value lives in `top` (a register), the ones below it in `regs`: the common
 /// kernel is a chain of `BinaryWith` operations on one value, which then never goes
 /// through memory (cut bench/interp arith by about a fifth, callgrind).
-#[inline]
+#[inline(always)]
 pub(super) fn eval(kernel: &Kernel, stack: &[Value], base: usize, globals: &[Value]) -> Option<Results> {
     // Value k of the `depth` values (1 = deepest) is in `regs[k]` for k < depth, the
     // top in `top`; `regs[0]` takes the undefined top spilled by the first push.
