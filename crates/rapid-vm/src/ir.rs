@@ -165,6 +165,17 @@ pub enum KernelOp {
     /// becomes `top op operand` (a push followed by `Binary`, fused at compile time
     /// to halve the dispatches of typical expressions such as `acc * 7 + j`).
     BinaryWith(BinaryOp, KernelOperand),
+    /// `BinaryWith` for the commonest operator and operand pairs, specialised at
+    /// compile time so that the executor dispatches once, not three times (operation,
+    /// operand kind, operator): `top + c`, `top - c`, `top * c`, `top MOD c`,
+    /// `top + local`, `top < c`, `top > c`. Same results as `BinaryWith`.
+    AddConst(f32),
+    SubConst(f32),
+    MulConst(f32),
+    ModConst(f32),
+    AddLocal(u32),
+    LtConst(f32),
+    GtConst(f32),
     Neg,
     Not,
 }

@@ -47,7 +47,7 @@ impl RoutineCompiler<'_> {
         if max_depth(&kernel.ops)? > KERNEL_DEPTH {
             return None;
         }
-        kernel.ops = fuse_operands(&kernel.ops);
+        kernel.ops = fuse_operands(&kernel.ops).into_iter().map(specialize).collect();
         self.code.kernels.push(kernel);
         let idx = self.code.kernels.len() as u32 - 1;
         Some(self.code.emit(instr(idx)))
@@ -214,14 +214,37 @@ fn fuse_operands(ops: &[KernelOp]) -> Vec<KernelOp> {
     out
 }
 
+/// The specialised form of a fused operation, when there is one (see `KernelOp`).
+fn specialize(op: KernelOp) -> KernelOp {
+    use rapid_syntax::ast::BinaryOp as B;
+    match op {
+        KernelOp::BinaryWith(B::Add, KernelOperand::Const(c)) => KernelOp::AddConst(c),
+        KernelOp::BinaryWith(B::Sub, KernelOperand::Const(c)) => KernelOp::SubConst(c),
+        KernelOp::BinaryWith(B::Mul, KernelOperand::Const(c)) => KernelOp::MulConst(c),
+        KernelOp::BinaryWith(B::Mod, KernelOperand::Const(c)) => KernelOp::ModConst(c),
+        KernelOp::BinaryWith(B::Add, KernelOperand::Local(slot)) => KernelOp::AddLocal(slot),
+        KernelOp::BinaryWith(B::Lt, KernelOperand::Const(c)) => KernelOp::LtConst(c),
+        KernelOp::BinaryWith(B::Gt, KernelOperand::Const(c)) => KernelOp::GtConst(c),
+        other => other,
+    }
+}
+
 fn max_depth(ops: &[KernelOp]) -> Option<usize> {
     let (mut depth, mut max) = (0usize, 0usize);
     for op in ops {
         match op {
             KernelOp::Local(_) | KernelOp::Global(_) | KernelOp::Const(_) => depth += 1,
-            KernelOp::Elem { .. } | KernelOp::Neg | KernelOp::Not | KernelOp::BinaryWith(..) => {
-                depth.checked_sub(1).map(|_| ())?
-            }
+            KernelOp::Elem { .. }
+            | KernelOp::Neg
+            | KernelOp::Not
+            | KernelOp::BinaryWith(..)
+            | KernelOp::AddConst(_)
+            | KernelOp::SubConst(_)
+            | KernelOp::MulConst(_)
+            | KernelOp::ModConst(_)
+            | KernelOp::AddLocal(_)
+            | KernelOp::LtConst(_)
+            | KernelOp::GtConst(_) => depth.checked_sub(1).map(|_| ())?,
             KernelOp::Binary(_) => depth = depth.checked_sub(1)?,
         }
         max = max.max(depth);
@@ -233,6 +256,25 @@ fn max_depth(ops: &[KernelOp]) -> Option<usize> {
 mod tests {
     use super::*;
     use rapid_syntax::ast::BinaryOp::{Add, Mul};
+
+    #[test]
+    fn common_fused_operations_get_their_own_op() {
+        use rapid_syntax::ast::BinaryOp::{Div, Gt, Lt, Mod, Sub};
+        let with = |op, operand| specialize(KernelOp::BinaryWith(op, operand));
+        assert_eq!(with(Add, KernelOperand::Const(2.0)), KernelOp::AddConst(2.0));
+        assert_eq!(with(Sub, KernelOperand::Const(2.0)), KernelOp::SubConst(2.0));
+        assert_eq!(with(Mul, KernelOperand::Const(7.0)), KernelOp::MulConst(7.0));
+        assert_eq!(with(Mod, KernelOperand::Const(9.0)), KernelOp::ModConst(9.0));
+        assert_eq!(with(Add, KernelOperand::Local(1)), KernelOp::AddLocal(1));
+        assert_eq!(with(Lt, KernelOperand::Const(2.0)), KernelOp::LtConst(2.0));
+        assert_eq!(with(Gt, KernelOperand::Const(76.0)), KernelOp::GtConst(76.0));
+        // The others stay general.
+        let general = KernelOp::BinaryWith(Div, KernelOperand::Const(4.0));
+        assert_eq!(specialize(general), general);
+        let general = KernelOp::BinaryWith(Sub, KernelOperand::Local(1));
+        assert_eq!(specialize(general), general);
+        assert_eq!(specialize(KernelOp::Local(0)), KernelOp::Local(0));
+    }
 
     #[test]
     fn operand_pushes_fuse_into_the_operation_that_takes_them() {

@@ -40,6 +40,14 @@ impl Vm {
                 }
             };
         }
+        // After a plain return: the loop goes on in the caller, at its pc.
+        macro_rules! resume_caller {
+            () => {{
+                let frame = self.frame();
+                (code, base, pc) = (frame.code.clone(), frame.base as usize, frame.pc);
+                continue;
+            }};
+        }
         let budget = *remaining;
         let mut left = budget;
         let outcome = loop {
@@ -102,7 +110,9 @@ impl Vm {
                         }
                         (Some(&Value::Bool(b)), Value::Bool(_)) => {
                             drop_plain(stack.pop());
-                            stack[at] = Value::Bool(b);
+                            if let Value::Bool(x) = &mut stack[at] {
+                                *x = b;
+                            }
                         }
                         (Some(Value::Str(_)), Value::Str(_)) | (Some(Value::Record(_)), Value::Record(_)) => {
                             if let Some(value) = stack.pop() {
@@ -170,6 +180,18 @@ impl Vm {
                         && is_str(rhs, stack, base, &code.consts, 0) =>
                 {
                     let lhs_depth = usize::from(rhs == crate::ir::Operand::Stack);
+                    // `a + b + "literal"` (Stack + Stack, then the constant pushed and
+                    // added): joined at once when the budget allows all three
+                    // instructions, so the intermediate string is never allocated.
+                    if let (true, Some(joined)) = (left >= 2, concat_with_next(&code, pc, lhs, rhs, stack)) {
+                        stack.pop();
+                        if let Some(top) = stack.last_mut() {
+                            *top = joined;
+                        }
+                        left -= 2;
+                        pc += 3;
+                        continue;
+                    }
                     let joined = match (
                         str_at(lhs, stack, base, &code.consts, lhs_depth),
                         str_at(rhs, stack, base, &code.consts, 0),
@@ -195,35 +217,27 @@ impl Vm {
                 }
                 Instr::BinOp { op, lhs, rhs } => {
                     let globals = &self.storage.globals;
-                    let num_at = |operand: crate::ir::Operand, stack: &Vec<Value>, depth: usize| match operand {
-                        crate::ir::Operand::Stack => match stack.get(stack.len().wrapping_sub(depth + 1)) {
-                            Some(Value::Num(n)) => Some(*n),
-                            _ => None,
-                        },
-                        crate::ir::Operand::Local(slot) => match &stack[base + slot as usize] {
-                            Value::Num(n) => Some(*n),
-                            // A VAR parameter referring to a whole num in a caller's slot.
-                            Value::Ref(place) if place.path.is_empty() => match place.root {
-                                Root::Stack(at) => match stack[at as usize] {
-                                    Value::Num(n) => Some(n),
-                                    _ => None,
-                                },
-                                Root::Global(idx) => match globals.get(idx as usize) {
-                                    Some(&Value::Num(n)) => Some(n),
-                                    _ => None,
-                                },
-                            },
-                            _ => None,
-                        },
-                        crate::ir::Operand::Const(i) => match code.consts[i as usize] {
-                            Value::Num(n) => Some(n),
-                            _ => None,
-                        },
+                    let num_at = |operand, stack: &Vec<Value>, depth| {
+                        num_operand(operand, stack, base, globals, &code.consts, depth)
                     };
                     let rhs_on_stack = rhs == crate::ir::Operand::Stack;
                     let lhs_depth = usize::from(rhs_on_stack);
                     let (Some(a), Some(b)) = (num_at(lhs, stack, lhs_depth), num_at(rhs, stack, 0)) else {
-                        break Fast::Step;
+                        // Other operand types (pos, orient, dnum, ...): `ops::binary` here,
+                        // exactly as `Vm::step` does it, rather than a round trip through
+                        // `step` (bench/interp pos). References and absent optional
+                        // parameters still take `step`.
+                        match self.binop_general(op, lhs, rhs, &code.consts, base) {
+                            None => break Fast::Step,
+                            Some(Ok(())) => {
+                                pc += 1;
+                                continue;
+                            }
+                            Some(Err(fault)) => {
+                                self.frame_mut().pc = pc;
+                                break Fast::Called(Err(self.fault(fault)));
+                            }
+                        }
                     };
                     let Some(res) = fast_num_op(op, a, b) else { break Fast::Step };
                     // The result takes the place of the deepest stack operand, written
@@ -242,14 +256,14 @@ impl Vm {
                     let Some(&Value::Num(index)) = stack.last() else { break Fast::Step };
                     let Value::Array(array) = &stack[base + slot as usize] else { break Fast::Step };
                     let Some(&Value::Num(elem)) = element_1d(array, index) else { break Fast::Step };
-                    stack[len - 1] = Value::Num(elem);
+                    set_num(&mut stack[len - 1], elem);
                 }
                 Instr::LoadElem { global: true, slot, n: 1 } => {
                     let len = stack.len();
                     let Some(&Value::Num(index)) = stack.last() else { break Fast::Step };
                     let Some(Value::Array(array)) = self.storage.globals.get(slot as usize) else { break Fast::Step };
                     let Some(&Value::Num(elem)) = element_1d(array, index) else { break Fast::Step };
-                    stack[len - 1] = Value::Num(elem);
+                    set_num(&mut stack[len - 1], elem);
                 }
                 Instr::StoreElem { global: false, slot, n: 1 } => {
                     let len = stack.len();
@@ -283,28 +297,54 @@ impl Vm {
                 }
                 Instr::FellOffEnd => {
                     self.frame_mut().pc = pc;
+                    // A PROC's end outside an ERROR handler is a plain return.
+                    if !code.is_func && self.frame().active.is_none() && self.return_plain(None).is_ok() {
+                        resume_caller!();
+                    }
                     continue_in_top_frame!(self.fell_off_end());
                 }
                 Instr::Return => {
                     self.frame_mut().pc = pc;
+                    if self.return_plain(None).is_ok() {
+                        resume_caller!();
+                    }
                     continue_in_top_frame!(Ok(self.return_from(None)));
                 }
                 Instr::ReturnValue => {
                     let value = stack.pop().unwrap_or(Value::Absent);
                     self.frame_mut().pc = pc;
-                    continue_in_top_frame!(Ok(self.return_from(Some(value))));
+                    match self.return_plain(Some(value)) {
+                        Ok(()) => resume_caller!(),
+                        Err(value) => continue_in_top_frame!(Ok(self.return_from(value))),
+                    }
                 }
                 Instr::PlaceLocal(slot) => {
+                    // `PlaceLocal; PlaceField(f); LoadPlace` reads a component of a
+                    // record in a local slot: done at once when the budget allows all
+                    // three, without building a place.
+                    if let Value::Record(record) = &stack[base + slot as usize] {
+                        if let (true, Some(&Instr::PlaceField(field)), Some(&Instr::LoadPlace)) =
+                            (left >= 2, code.instrs.get(pc as usize + 1), code.instrs.get(pc as usize + 2))
+                        {
+                            if let Some(value) = record.fields.get(field as usize) {
+                                let value = value.clone();
+                                stack.push(value);
+                                left -= 2;
+                                pc += 3;
+                                continue;
+                            }
+                        }
+                    }
                     let place = match &stack[base + slot as usize] {
                         Value::Ref(place) if place.path.is_empty() => place.root,
                         Value::Ref(_) | Value::Absent => break Fast::Step,
                         _ => Root::Stack((base + slot as usize) as u32),
                     };
-                    let place = self.pooled_place(place, &[]);
+                    let place = self.pooled_root(place);
                     self.storage.stack.push(Value::Ref(place));
                 }
                 Instr::PlaceGlobal(idx) => {
-                    let place = self.pooled_place(Root::Global(idx), &[]);
+                    let place = self.pooled_root(Root::Global(idx));
                     self.storage.stack.push(Value::Ref(place));
                 }
                 Instr::KernelStore { kernel, skip } => {
@@ -331,6 +371,10 @@ impl Vm {
                     let site = &code.sites[site_index as usize];
                     let Callee::Builtin(id) = site.callee else {
                         // A routine: entered here, and the loop starts again in its frame.
+                        if let Some((callee, callee_base)) = self.enter_plain(&code, site_index, pc) {
+                            (code, base, pc) = (callee, callee_base, 0);
+                            continue;
+                        }
                         self.frame_mut().pc = pc;
                         continue_in_top_frame!(self.call(&code, site_index, host));
                     };
@@ -339,7 +383,7 @@ impl Vm {
                     }
                     let at = stack.len() - site.n_pushed as usize;
                     let mut args = std::mem::take(&mut self.arg_scratch);
-                    args.clear();
+                    clear_values(&mut args);
                     // Moved as one block; the few arguments not pushed are inserted
                     // after (moving values one by one through temporaries costs a
                     // store-forwarding stall each, measured with perf).
@@ -397,7 +441,10 @@ impl Vm {
                     let (Value::Num(v), Value::Num(step)) = (&stack[slots], &stack[slots + 2]) else {
                         break Fast::Step;
                     };
-                    stack[slots] = Value::Num(v + step);
+                    // In place: assigning a whole `Value` ran the general drop code
+                    // on the old num.
+                    let next = v + step;
+                    set_num(&mut stack[slots], next);
                     pc = check;
                     continue;
                 }
@@ -411,6 +458,107 @@ impl Vm {
             self.frame_mut().pc = pc;
         }
         outcome
+    }
+
+    /// `BinOp` on operands other than nums; `None` when an operand needs `Vm::step`.
+    /// Kept out of line: inlined, it made the fast loop's other instructions slower
+    /// (callgrind, bench/interp varcall).
+    #[inline(never)]
+    fn binop_general(
+        &mut self,
+        op: rapid_syntax::ast::BinaryOp,
+        lhs: crate::ir::Operand,
+        rhs: crate::ir::Operand,
+        consts: &[Value],
+        base: usize,
+    ) -> Option<Result<(), super::storage::Fault>> {
+        let stack = &mut self.storage.stack;
+        if !plain_operand(lhs, stack, base) || !plain_operand(rhs, stack, base) {
+            return None;
+        }
+        let rhs = take_operand(rhs, stack, base, consts);
+        let lhs = take_operand(lhs, stack, base, consts);
+        Some(crate::ops::binary(op, lhs, rhs, self.types).map(|value| stack.push(value)))
+    }
+}
+
+/// Empties the argument scratch vector of the last built-in call. The plain values are
+/// forgotten and a string only loses a reference, inline: `clear` ran the general
+/// drop code per value (about 70 instructions a call, callgrind on bench/interp
+/// strings and strops).
+#[inline(always)]
+fn clear_values(values: &mut Vec<Value>) {
+    while let Some(value) = values.pop() {
+        match value {
+            Value::Num(_) | Value::Dnum(_) | Value::Bool(_) | Value::Absent | Value::SwitchOn => {
+                std::mem::forget(value)
+            }
+            Value::Str(text) => drop(text),
+            other => drop(other),
+        }
+    }
+}
+
+/// Whether `BinOp` may take `operand` as it is: a local slot holding neither a
+/// reference nor an absent optional parameter (those need `Vm::load_local`).
+#[inline(always)]
+fn plain_operand(operand: crate::ir::Operand, stack: &[Value], base: usize) -> bool {
+    match operand {
+        crate::ir::Operand::Local(slot) => {
+            !matches!(stack.get(base + slot as usize), None | Some(Value::Ref(_) | Value::Absent))
+        }
+        crate::ir::Operand::Stack | crate::ir::Operand::Const(_) => true,
+    }
+}
+
+/// The value of a plain operand (popped from the stack, or a copy).
+#[inline(always)]
+fn take_operand(operand: crate::ir::Operand, stack: &mut Vec<Value>, base: usize, consts: &[Value]) -> Value {
+    match operand {
+        crate::ir::Operand::Stack => stack.pop(),
+        crate::ir::Operand::Local(slot) => stack.get(base + slot as usize).cloned(),
+        crate::ir::Operand::Const(i) => consts.get(i as usize).cloned(),
+    }
+    .unwrap_or(Value::Absent)
+}
+
+/// The num an operand of `BinOp` names: the stack value `depth` below the top, a
+/// local slot (through a reference to a whole num), or a constant. A function marked
+/// for inlining: as a closure it was called, about 18 instructions per operand
+/// (callgrind, bench/interp fib).
+#[inline(always)]
+fn num_operand(
+    operand: crate::ir::Operand,
+    stack: &[Value],
+    base: usize,
+    globals: &[Value],
+    consts: &[Value],
+    depth: usize,
+) -> Option<f32> {
+    match operand {
+        crate::ir::Operand::Stack => match stack.get(stack.len().wrapping_sub(depth + 1)) {
+            Some(Value::Num(n)) => Some(*n),
+            _ => None,
+        },
+        crate::ir::Operand::Local(slot) => match stack.get(base + slot as usize)? {
+            Value::Num(n) => Some(*n),
+            // A VAR parameter referring to a whole num in a caller's slot.
+            Value::Ref(place) if place.path.is_empty() => match place.root {
+                Root::Stack(at) => match stack.get(at as usize)? {
+                    Value::Num(n) => Some(*n),
+                    _ => None,
+                },
+                Root::Global(idx) => match globals.get(idx as usize) {
+                    Some(&Value::Num(n)) => Some(n),
+                    _ => None,
+                },
+            },
+            _ => None,
+        },
+        crate::ir::Operand::Const(i) => match consts.get(i as usize)? {
+            Value::Num(n) => Some(*n),
+            _ => None,
+        },
     }
 }
 
@@ -438,6 +586,43 @@ fn str_at<'a>(
 #[inline(always)]
 fn is_str(operand: crate::ir::Operand, stack: &[Value], base: usize, consts: &[Value], depth: usize) -> bool {
     str_at(operand, stack, base, consts, depth).is_some()
+}
+
+/// `BinOp(+, Stack, Stack); Const(string); BinOp(+, Stack, Stack)` at `pc` on two
+/// strings: the three joined, when the result certainly fits (then neither addition
+/// could have failed). `None`: not that sequence, or too long for this shortcut.
+#[inline(always)]
+fn concat_with_next(
+    code: &crate::ir::Code,
+    pc: u32,
+    lhs: crate::ir::Operand,
+    rhs: crate::ir::Operand,
+    stack: &[Value],
+) -> Option<Value> {
+    use crate::ir::Operand::Stack;
+    if lhs != Stack || rhs != Stack {
+        return None;
+    }
+    let (Instr::Const(k), Instr::BinOp { op: rapid_syntax::ast::BinaryOp::Add, lhs: Stack, rhs: Stack }) =
+        (*code.instrs.get(pc as usize + 1)?, *code.instrs.get(pc as usize + 2)?)
+    else {
+        return None;
+    };
+    let (Value::Str(c), [Value::Str(a), Value::Str(b)]) =
+        (code.consts.get(k as usize)?, stack.get(stack.len().checked_sub(2)?..)?)
+    else {
+        return None;
+    };
+    let len = a.len() + b.len() + c.len();
+    if len > MAX_STRING_CHARS {
+        return None;
+    }
+    let mut buf = [0u8; MAX_STRING_CHARS];
+    buf[..a.len()].copy_from_slice(a.as_bytes());
+    buf[a.len()..a.len() + b.len()].copy_from_slice(b.as_bytes());
+    buf[a.len() + b.len()..len].copy_from_slice(c.as_bytes());
+    let joined = std::str::from_utf8(&buf[..len]).ok()?;
+    Some(Value::Str(joined.into()))
 }
 
 /// `a + b` when the result certainly fits a RAPID string: at most 80 bytes of UTF-8
