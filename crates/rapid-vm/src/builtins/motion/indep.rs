@@ -231,47 +231,117 @@ pub(crate) fn ind_r_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-/// A position argument: `\ToAbsNum`-like number at `index + 1`; the robtarget form at
-/// `index` is refused for robot axes.
+/// A position argument: `\ToAbsNum`-like number at `index + 1`. The robtarget form at
+/// `index` gives an external axis's position; robot axes take the number (the manual),
+/// and external axes do not exist yet.
 fn position_arg(ctx: &Ctx<'_>, args: &[Value], index: usize, robtarget: &str) -> Result<f64, RapidError> {
     if present(args.get(index)) {
+        let number = robtarget.replace("Pos", "Num");
         return Err(RapidError::fatal(format!(
-            "\\{robtarget} (a robtarget) for a robot axis is not supported by `rapid run` yet; give the number"
+            "\\{robtarget} (a robtarget) is for external axes, which `rapid run` does not have yet; a robot axis takes \\{number}"
         )));
     }
     ctx.num(&args[index + 1])
 }
 
-/// `IndReset MecUnit, Axis [\RefNum] …`: the axis goes back to normal mode where it
-/// stands; the program's moves take it on from there.
-// uncertain: the axis must stand still (a turning or moving axis stops execution); its
-// position is brought back into its working range by whole turns; `\RefPos`,
-// `\RefNum`, `\Short`, `\Fwd`, `\Bwd`, `\Old` (moving the revolution counter) are
-// refused.
+/// `IndReset MecUnit, Axis [\RefPos | \RefNum] [\Short | \Fwd | \Bwd | \Old]`: the
+/// axis goes back to normal mode where it stands; the program's moves take it on from
+/// there. The options move only the axis's logical position (its revolution counter)
+/// by whole turns, never the axis: `\Short` to within ±180° of the reference, `\Fwd`
+/// to [ref, ref + 360°), `\Bwd` to (ref − 360°, ref], `\Old` keeps it (the manual's
+/// example: 750° reset with `\RefNum:=0 \Short` reads 30°).
+// uncertain: the axis must stand still (a turning or moving axis stops execution);
+// without an option the position is brought back into the working range by whole
+// turns; `\Short`/`\Fwd`/`\Bwd` without a reference take 0; a reference outside the
+// working range, a reference with `\Old` or without a direction raise ERR_AXIS_PAR.
 pub(crate) fn ind_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let axis = axis(ctx, args)?;
-    if (2..=7).any(|i| present(args.get(i))) {
+    if present(args.get(2)) {
         return Err(RapidError::fatal(
-            "IndReset's \\RefPos, \\RefNum, \\Short, \\Fwd, \\Bwd and \\Old are not supported by `rapid run` yet",
+            "IndReset \\RefPos (a robtarget) is for external axes; a robot axis takes \\RefNum",
         ));
     }
+    let mode = reset_mode(ctx, args)?;
     let now = ctx.time;
     let Some(ind) = ctx.resources.robot.independent.axes[axis] else { return Ok(None) };
     if ind.done_at().is_none_or(|done| done > now + 1e-9) {
         return Err(RapidError::fatal(format!("IndReset: axis {} still moves; it must stand still", axis + 1)));
     }
+    let (lo, hi) = ctx.resources.robot.kin.limits()[axis];
+    if let Some(reference) = mode.reference() {
+        if !(lo..=hi).contains(&reference) {
+            return Err(ctx.error(
+                Err::AxisPar,
+                format!("IndReset: the reference {reference} is outside axis {}'s working range", axis + 1),
+            ));
+        }
+    }
+    let position = mode.logical_position(ind.at(now).0, (lo, hi));
     let robot = &mut ctx.resources.robot;
     robot.independent.set(axis, None, now);
-    let (lo, hi) = robot.kin.limits()[axis];
-    let mut position = ind.at(now).0;
-    while position > hi {
-        position -= 360.0;
-    }
-    while position < lo {
-        position += 360.0;
-    }
     robot.take_over_axis(axis, position, now);
     Ok(None)
+}
+
+/// How IndReset sets the axis's logical position.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum ResetMode {
+    /// No option: into the working range by whole turns.
+    IntoRange,
+    Short(f64),
+    Fwd(f64),
+    Bwd(f64),
+    Old,
+}
+
+impl ResetMode {
+    fn reference(self) -> Option<f64> {
+        match self {
+            ResetMode::Short(r) | ResetMode::Fwd(r) | ResetMode::Bwd(r) => Some(r),
+            ResetMode::IntoRange | ResetMode::Old => None,
+        }
+    }
+
+    /// The axis's new logical position for a physical position `at`.
+    fn logical_position(self, at: f64, (lo, hi): (f64, f64)) -> f64 {
+        match self {
+            ResetMode::IntoRange => {
+                let mut position = at;
+                while position > hi {
+                    position -= 360.0;
+                }
+                while position < lo {
+                    position += 360.0;
+                }
+                position
+            }
+            ResetMode::Short(r) => at - 360.0 * ((at - r) / 360.0).round(),
+            ResetMode::Fwd(r) => r + (at - r).rem_euclid(360.0),
+            ResetMode::Bwd(r) => r - (r - at).rem_euclid(360.0),
+            ResetMode::Old => at,
+        }
+    }
+}
+
+/// The options of IndReset (arguments 3 to 7: RefNum, Short, Fwd, Bwd, Old).
+fn reset_mode(ctx: &Ctx<'_>, args: &[Value]) -> Result<ResetMode, RapidError> {
+    let reference = if present(args.get(3)) { Some(ctx.num(&args[3])?) } else { None };
+    let r = reference.unwrap_or(0.0);
+    let mode = if present(args.get(4)) {
+        ResetMode::Short(r)
+    } else if present(args.get(5)) {
+        ResetMode::Fwd(r)
+    } else if present(args.get(6)) {
+        ResetMode::Bwd(r)
+    } else if present(args.get(7)) {
+        ResetMode::Old
+    } else {
+        ResetMode::IntoRange
+    };
+    if reference.is_some() && mode.reference().is_none() {
+        return Err(ctx.error(Err::AxisPar, "IndReset: \\RefNum needs \\Short, \\Fwd or \\Bwd"));
+    }
+    Ok(mode)
 }
 
 /// `IndInpos(MecUnit, Axis)`: the independent axis stands at its target.

@@ -399,6 +399,11 @@ impl RobotState {
         let mut joints = self.planned_joints_at(end);
         joints[axis] = position;
         self.planner.restart_from(joints, end);
+        // The robot stands after its last move: that move's end is where a read-back
+        // finds it, so the axis's new value goes there too.
+        if let Some(last) = self.ahead.back_mut().filter(|m| m.end <= end) {
+            last.end_joints[axis] = position;
+        }
     }
 
     /// A sample of the trace with the independent axes put in, its TCP and flange
