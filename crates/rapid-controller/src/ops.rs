@@ -55,6 +55,12 @@ pub enum ProgramState {
         steps: u64,
     },
     Stopped,
+    /// A step (FWD) of the stopped program: NORMAL task `task` runs one instruction
+    /// (it had run `from_steps` before), then the program stands stopped again.
+    Stepping {
+        task: usize,
+        from_steps: u64,
+    },
 }
 
 /// A system input or output resolved to its signal.
@@ -287,6 +293,9 @@ impl Controller {
                 self.ops.state = Some(ProgramState::Stopping { kind, steps: steps + 1 });
             }
         }
+        if let ProgramState::Stepping { task, from_steps } = self.ops.state() {
+            self.follow_step(host, task, from_steps);
+        }
         if self.ops.outputs_stale && !self.ops.outputs.is_empty() {
             self.show_outputs();
         }
@@ -315,6 +324,7 @@ impl Controller {
             ProgramState::Running => true,
             ProgramState::Stopped => false,
             ProgramState::Stopping { .. } => !self.settled(idx),
+            ProgramState::Stepping { task, .. } => task == idx,
         }
     }
 
@@ -532,5 +542,6 @@ fn trim(x: f64) -> String {
     text.trim_end_matches('0').trim_end_matches('.').to_owned()
 }
 
+mod step;
 #[cfg(test)]
 mod tests;

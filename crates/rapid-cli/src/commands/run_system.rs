@@ -191,7 +191,7 @@ fn configure_operations(controller: &mut Controller, inputs: &Inputs, sys: &Sys,
     if let Some(eio) = eio_of(inputs) {
         controller.configure_system_signals(&eio, auto)?;
     }
-    for shelf in ["STOP", "QSTOP", "RESTART", "START"] {
+    for shelf in ["STOP", "QSTOP", "RESTART", "START", "STEP"] {
         let routines = controller
             .tasks
             .iter()

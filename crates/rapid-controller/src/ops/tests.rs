@@ -324,3 +324,112 @@ ENDMODULE",
     // EventType: EVENT_QSTOP 4, EVENT_RESTART 5 (the order of SYS.cfg's shelves).
     assert_eq!(host.lines, ["QSTOP 4", "RESTART 5", "end"]);
 }
+
+/// Runs a step to its end: until the program stands stopped again.
+fn finish_step(controller: &mut Controller, host: &mut RecordingHost) {
+    for _ in 0..100_000 {
+        if controller.program_state() == ProgramState::Stopped {
+            return;
+        }
+        match controller.run(host, 1000) {
+            SystemExit::Wait(seconds) => controller.advance(seconds),
+            SystemExit::Budget | SystemExit::Stopped => {}
+            SystemExit::Ended => return,
+        }
+    }
+    panic!("the step did not end");
+}
+
+#[test]
+fn safe_interrupts_queue_while_stepping_and_run_at_the_start() {
+    // Stopped at 0.1 inside WaitTime 0.3 (0.2 s left); the timers come due at 0.5
+    // (safe) and 0.6 (plain) while the program stands. The first step finishes the
+    // wait (1.0 + 0.2 = 1.2 s) and no trap runs; the second runs TPWrite "one", still
+    // no trap. The continuous start runs the queued safe trap first; the plain
+    // interrupt is gone (§1.11 安全中断).
+    let mut c = controller(
+        "MODULE M
+  VAR intnum safe;
+  VAR intnum plain;
+  PROC main()
+    CONNECT safe WITH tSafe;
+    CONNECT plain WITH tPlain;
+    ITimer \\SingleSafe, 0.5, safe;
+    ITimer \\Single, 0.6, plain;
+    WaitTime 0.3;
+    TPWrite \"one\";
+    TPWrite \"two\";
+    TPWrite \"three\";
+  ENDPROC
+  PROC on_step()
+    TPWrite \"STEP \" \\Num:=EventType();
+  ENDPROC
+  TRAP tSafe
+    TPWrite \"safe\";
+  ENDTRAP
+  TRAP tPlain
+    TPWrite \"plain\";
+  ENDTRAP
+ENDMODULE",
+    );
+    // The STEP event routine runs as each step begins (EVENT_STEP 7, the order of
+    // SYS.cfg's shelves).
+    c.set_event_routines("STEP", vec![vec!["on_step".to_owned()]]);
+    let mut host = RecordingHost::default();
+    // A running program takes no step.
+    assert!(!c.step_forward(&mut host, 0));
+    run_until(&mut c, &mut host, 0.1);
+    c.stop(StopKind::Stop);
+    run_until(&mut c, &mut host, 1.0);
+    assert!(c.step_forward(&mut host, 0));
+    finish_step(&mut c, &mut host);
+    assert_eq!(host.lines, ["STEP 7"]);
+    assert!((c.time - 1.2).abs() < 1e-3, "{}", c.time);
+    assert!(c.step_forward(&mut host, 0));
+    finish_step(&mut c, &mut host);
+    assert_eq!(host.lines, ["STEP 7", "STEP 7", "one"]);
+    assert!(c.start(&mut host, StartMode::Continuous));
+    assert_eq!(run_until(&mut c, &mut host, 100.0), SystemExit::Ended);
+    assert_eq!(host.lines, ["STEP 7", "STEP 7", "one", "safe", "two", "three"]);
+}
+
+#[test]
+fn a_safe_signal_interrupt_during_a_step_waits_for_the_start() {
+    // diA rises at 0.5 while the stepped WaitTime runs (stopped at 0.2 inside
+    // WaitTime 1, stepped from 0.3: it ends at 0.3 + 0.8 = 1.1): the safe interrupt
+    // queues, the plain one is dropped, and no trap runs in the step.
+    let mut c = with_signals(
+        "MODULE M
+  VAR intnum safe;
+  VAR intnum plain;
+  PROC main()
+    CONNECT safe WITH tSafe;
+    CONNECT plain WITH tPlain;
+    ISignalDI \\SingleSafe, diA, 1, safe;
+    ISignalDI diA, 1, plain;
+    WaitTime 1;
+    TPWrite \"end\";
+  ENDPROC
+  TRAP tSafe
+    TPWrite \"safe\";
+  ENDTRAP
+  TRAP tPlain
+    TPWrite \"plain\";
+  ENDTRAP
+ENDMODULE",
+        "diA",
+    );
+    let id = c.io_system().and_then(|io| io.id("diA")).expect("diA");
+    c.shared_mut().io.stimulus.push_back((0.5, id, 1.0));
+    let mut host = RecordingHost::default();
+    run_until(&mut c, &mut host, 0.2);
+    c.stop(StopKind::Stop);
+    run_until(&mut c, &mut host, 0.3);
+    assert!(c.step_forward(&mut host, 0));
+    finish_step(&mut c, &mut host);
+    assert!(host.lines.is_empty(), "{:?}", host.lines);
+    assert!((c.time - 1.1).abs() < 1e-3, "{}", c.time);
+    assert!(c.start(&mut host, StartMode::Continuous));
+    assert_eq!(run_until(&mut c, &mut host, 100.0), SystemExit::Ended);
+    assert_eq!(host.lines, ["safe", "end"]);
+}

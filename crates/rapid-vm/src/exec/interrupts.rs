@@ -183,7 +183,13 @@ impl Vm {
     /// instructions (at the start of a statement).
     pub(super) fn enter_trap_if_due(&mut self) {
         let interrupts = &self.resources.interrupts;
-        if interrupts.queue.is_empty() || interrupts.disabled || self.frames.iter().any(|f| f.interrupted) {
+        // A stopped program (also while it is stepped) runs no trap: the safe
+        // interrupts queued wait for the start (§1.11).
+        if interrupts.queue.is_empty()
+            || interrupts.disabled
+            || interrupts.stop.is_some()
+            || self.frames.iter().any(|f| f.interrupted)
+        {
             return;
         }
         let Some(top) = self.frames.last() else { return };

@@ -75,6 +75,34 @@ impl Vm {
         self.call_motion_builtin(name, args, host);
     }
 
+    /// A step (FWD) of the stopped program begins now (`self.time`): a wait under way
+    /// goes on with the time it still had, and the robot the stop held goes on along
+    /// its path for the instruction. Interrupts stay as at the stop: no trap runs, only
+    /// safe interrupts queue.
+    // uncertain: the step lets the robot go on with what the stopped path still had, as
+    // a start would; the manual does not say how far the robot goes in one step.
+    pub fn step_started(&mut self, host: &mut dyn crate::host::Host) {
+        let Some(stop) = self.resources.interrupts.stop else { return };
+        let stood = (self.time - stop.since).max(0.0);
+        if let Some((depth, pc, started)) = self.resources.io.waiting {
+            self.resources.io.waiting = Some((depth, pc, started + stood));
+        }
+        if stop.paused_robot && self.resources.robot.pause.is_some() {
+            self.call_motion_builtin("StartMove", &[Value::Absent], host);
+        }
+    }
+
+    /// The step is over: the program stands stopped again from now, its robot
+    /// stopped on its path.
+    pub fn step_ended(&mut self, host: &mut dyn crate::host::Host) {
+        let now = self.time;
+        let Some(stop) = self.resources.interrupts.stop.as_mut() else { return };
+        stop.since = now;
+        if stop.paused_robot && self.resources.robot.pause.is_none() {
+            self.call_motion_builtin("StopMove", &[Value::Absent, Value::Absent], host);
+        }
+    }
+
     /// Runs a motion built-in (StopMove, StartMove) as the controller; it cannot fail
     /// for the arguments given.
     fn call_motion_builtin(&mut self, name: &str, args: &[Value], host: &mut dyn crate::host::Host) {
