@@ -24,6 +24,7 @@ mod matrix;
 pub mod modules;
 pub mod motion;
 mod pendant;
+pub mod pure;
 mod random;
 mod rawbytes;
 pub mod rmq;

@@ -121,14 +121,18 @@ pub(super) fn str_map(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 pub(super) fn num_to_str(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (value, dec) = (ctx.num(&args[0])?, ctx.num(&args[1])?);
-    let s = crate::format::num_to_str_value(value, dec as i32, present(args.get(2)))
+    // A Dec that is not a whole number is refused like one out of range (S7).
+    let s = crate::format::decimals_argument(dec)
+        .and_then(|dec| crate::format::num_to_str_value(value, dec, present(args.get(2))))
         .map_err(|e| ctx.error(Err::ArgValue, e.to_string()))?;
     Ok(Some(Value::Str(s)))
 }
 
 pub(super) fn dnum_to_str(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (value, dec) = (ctx.num(&args[0])?, ctx.num(&args[1])?);
-    let s = dnum_text(value, dec as i32, present(args.get(2))).map_err(|e| ctx.error(Err::ArgValue, e.to_string()))?;
+    let s = crate::format::decimals_argument(dec)
+        .and_then(|dec| dnum_text(value, dec, present(args.get(2))))
+        .map_err(|e| ctx.error(Err::ArgValue, e.to_string()))?;
     Ok(text(s))
 }
 

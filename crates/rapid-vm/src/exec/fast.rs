@@ -382,6 +382,16 @@ impl Vm {
                         break Fast::Step;
                     }
                     let at = stack.len() - site.n_pushed as usize;
+                    // A pure function reads its arguments where they lie; anything
+                    // unusual takes the general path below.
+                    if let Some(pure) = crate::builtins::pure::pure(id).filter(|_| only_trailing_absent(site)) {
+                        if let Some(value) = pure(&stack[at..]) {
+                            stack.truncate(at);
+                            stack.push(value);
+                            pc += 1;
+                            continue;
+                        }
+                    }
                     let mut args = std::mem::take(&mut self.arg_scratch);
                     clear_values(&mut args);
                     // Moved as one block; the few arguments not pushed are inserted
@@ -592,6 +602,14 @@ fn is_str(operand: crate::ir::Operand, stack: &[Value], base: usize, consts: &[V
 /// strings: the three joined, when the result certainly fits (then neither addition
 /// could have failed). `None`: not that sequence, or too long for this shortcut.
 #[inline(always)]
+/// Whether every argument of the call is on the stack in parameter order: the
+/// optional ones not passed come last (none is a switch inserted after).
+fn only_trailing_absent(site: &crate::ir::CallSite) -> bool {
+    let pushed = site.n_pushed as usize;
+    site.args.get(pushed..).is_some_and(|rest| rest.iter().all(|a| matches!(a, ArgSpec::Absent)))
+        && site.args[..pushed].iter().all(|a| matches!(a, ArgSpec::Value))
+}
+
 fn concat_with_next(
     code: &crate::ir::Code,
     pc: u32,
