@@ -14,7 +14,8 @@ pub type PureFn = fn(&[Value]) -> Option<Value>;
 
 /// The pure functions, by the catalogue's name; each mirrors the entry of the same
 /// name in its family (`strings.rs`).
-static PURE: &[(&str, PureFn)] = &[("StrLen", str_len), ("NumToStr", num_to_str)];
+static PURE: &[(&str, PureFn)] =
+    &[("StrLen", str_len), ("NumToStr", num_to_str), ("StrPart", str_part), ("StrFind", str_find), ("StrMap", str_map)];
 
 static BY_ID: std::sync::LazyLock<Vec<Option<PureFn>>> = std::sync::LazyLock::new(|| {
     let mut table = Vec::new();
@@ -56,6 +57,34 @@ fn num_to_str(args: &[Value]) -> Option<Value> {
     Some(Value::Str(text))
 }
 
+/// `StrPart(Str, ChPos, Len)`.
+fn str_part(args: &[Value]) -> Option<Value> {
+    match args {
+        [Value::Str(s), Value::Num(start), Value::Num(len)] => {
+            super::strings::part(s, f64::from(*start), f64::from(*len)).ok()
+        }
+        _ => None,
+    }
+}
+
+/// `StrFind(Str, ChPos, Set)` (with `\NotInSet` the call takes the general path).
+fn str_find(args: &[Value]) -> Option<Value> {
+    match args {
+        [Value::Str(s), Value::Num(start), Value::Str(set)] => {
+            super::strings::find(s, f64::from(*start), set, false).ok()
+        }
+        _ => None,
+    }
+}
+
+/// `StrMap(Str, FromMap, ToMap)`.
+fn str_map(args: &[Value]) -> Option<Value> {
+    match args {
+        [Value::Str(s), Value::Str(from), Value::Str(to)] => Some(super::strings::map(s, from, to)),
+        _ => None,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -74,6 +103,12 @@ mod tests {
         // Out-of-range decimals: the general path raises ERR_ARGVALUE.
         assert_eq!(call("NumToStr", &[Value::Num(1.0), Value::Num(-1.0)]), None);
         assert_eq!(call("StrLen", &[Value::Num(1.0)]), None);
+        assert_eq!(call("StrPart", &[s("abcdef"), Value::Num(2.0), Value::Num(3.0)]), Some(s("bcd")));
+        // Past the end: the general path raises ERR_OUTOFBND.
+        assert_eq!(call("StrPart", &[s("abc"), Value::Num(2.0), Value::Num(3.0)]), None);
+        assert_eq!(call("StrFind", &[s("abcabc"), Value::Num(3.0), s("ab")]), Some(Value::Num(4.0)));
+        assert_eq!(call("StrFind", &[s("abc"), Value::Num(9.0), s("a")]), None);
+        assert_eq!(call("StrMap", &[s("abc"), s("ab"), s("AB")]), Some(s("ABc")));
         assert!(pure(super::super::lookup("TPWrite").expect("TPWrite")).is_none());
     }
 }

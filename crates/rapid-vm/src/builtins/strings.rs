@@ -33,7 +33,7 @@ fn with_chars<R>(s: &str, f: impl FnOnce(&[char]) -> R) -> R {
 }
 
 /// A string value made of `chars` with one allocation (the value's own).
-fn text_of(chars: impl Iterator<Item = char>) -> Option<Value> {
+fn text_of(chars: impl Iterator<Item = char>) -> Value {
     // Latin-1 characters take at most 2 bytes in UTF-8.
     let mut buf = [0u8; 2 * MAX_STRING_CHARS];
     let mut len = 0;
@@ -43,20 +43,37 @@ fn text_of(chars: impl Iterator<Item = char>) -> Option<Value> {
             // Longer than any RAPID string: build it on the heap.
             let mut long = String::from(std::str::from_utf8(&buf[..len]).unwrap_or_default());
             long.extend(chars);
-            return text(long);
+            return Value::Str(long.into());
         }
         len += c.encode_utf8(&mut buf[len..]).len();
         chars.next();
     }
-    Some(Value::Str(std::str::from_utf8(&buf[..len]).unwrap_or_default().into()))
+    Value::Str(std::str::from_utf8(&buf[..len]).unwrap_or_default().into())
+}
+
+/// Why a string function refuses its arguments.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum StrError {
+    /// A character position outside 1..=max.
+    Position { pos: f64, max: usize },
+    /// StrPart's part runs past the end (or its length is no whole number).
+    PartLength(f64),
+}
+
+fn str_error(ctx: &Ctx<'_>, err: StrError) -> RapidError {
+    match err {
+        StrError::Position { pos, max } => {
+            ctx.error(Err::OutOfBounds, format!("character position {pos} is outside 1..{max}"))
+        }
+        StrError::PartLength(len) => ctx.error(Err::OutOfBounds, format!("the part of length {len} runs past the end")),
+    }
 }
 
 /// A character position 1..=len+1 (len+1 only where the manual allows it).
-fn position(ctx: &Ctx<'_>, arg: &Value, len: usize, allow_end: bool) -> Result<usize, RapidError> {
-    let pos = ctx.num(arg)?;
+fn position(pos: f64, len: usize, allow_end: bool) -> Result<usize, StrError> {
     let max = if allow_end { len + 1 } else { len };
     if pos.fract() != 0.0 || pos < 1.0 || pos > max as f64 {
-        return Err(ctx.error(Err::OutOfBounds, format!("character position {pos} is outside 1..{max}")));
+        return Err(StrError::Position { pos, max });
     }
     Ok(pos as usize)
 }
@@ -70,11 +87,16 @@ pub(super) fn str_len(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 pub(super) fn str_part(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let source = ctx.str_arg(&args[0])?;
-    with_chars(&source, |s| {
-        let start = position(ctx, &args[1], s.len(), true)?;
-        let len = ctx.num(&args[2])?;
+    let (start, len) = (ctx.num(&args[1])?, ctx.num(&args[2])?);
+    part(&source, start, len).map(Some).map_err(|e| str_error(ctx, e))
+}
+
+/// `StrPart(Str, ChPos, Len)` on plain values.
+pub(super) fn part(source: &str, start: f64, len: f64) -> Result<Value, StrError> {
+    with_chars(source, |s| {
+        let start = position(start, s.len(), true)?;
         if len.fract() != 0.0 || len < 0.0 || start - 1 + len as usize > s.len() {
-            return Err(ctx.error(Err::OutOfBounds, format!("the part of length {len} runs past the end")));
+            return Err(StrError::PartLength(len));
         }
         Ok(text_of(s[start - 1..start - 1 + len as usize].iter().copied()))
     })
@@ -82,18 +104,23 @@ pub(super) fn str_part(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 pub(super) fn str_find(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (source, set) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[2])?);
-    let not_in_set = present(args.get(3));
-    with_chars(&source, |s| {
-        let start = position(ctx, &args[1], s.len(), true)?;
+    let start = ctx.num(&args[1])?;
+    find(&source, start, &set, present(args.get(3))).map(Some).map_err(|e| str_error(ctx, e))
+}
+
+/// `StrFind(Str, ChPos, Set [\NotInSet])` on plain values.
+pub(super) fn find(source: &str, start: f64, set: &str, not_in_set: bool) -> Result<Value, StrError> {
+    with_chars(source, |s| {
+        let start = position(start, s.len(), true)?;
         let found = s.iter().enumerate().skip(start - 1).find(|(_, c)| set.contains(**c) != not_in_set);
-        Ok(Some(Value::Num(found.map_or(s.len() + 1, |(i, _)| i + 1) as f32)))
+        Ok(Value::Num(found.map_or(s.len() + 1, |(i, _)| i + 1) as f32))
     })
 }
 
 pub(super) fn str_match(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (source, pattern) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[2])?);
     with_chars(&source, |s| {
-        let start = position(ctx, &args[1], s.len(), true)?;
+        let start = position(ctx.num(&args[1])?, s.len(), true).map_err(|e| str_error(ctx, e))?;
         with_chars(&pattern, |pattern| {
             let found = (start - 1..s.len()).find(|&i| s[i..].starts_with(pattern)).map(|i| i + 1);
             Ok(Some(Value::Num(found.unwrap_or(s.len() + 1) as f32)))
@@ -104,17 +131,22 @@ pub(super) fn str_match(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 pub(super) fn str_memb(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (source, set) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[2])?);
     with_chars(&source, |s| {
-        let pos = position(ctx, &args[1], s.len(), false)?;
+        let pos = position(ctx.num(&args[1])?, s.len(), false).map_err(|e| str_error(ctx, e))?;
         Ok(Some(Value::Bool(set.contains(s[pos - 1]))))
     })
 }
 
 pub(super) fn str_map(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (source, from, to) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[1])?, ctx.str_arg(&args[2])?);
-    with_chars(&from, |from| {
-        with_chars(&to, |to| {
+    Ok(Some(map(&source, &from, &to)))
+}
+
+/// `StrMap(Str, FromMap, ToMap)` on plain values.
+pub(super) fn map(source: &str, from: &str, to: &str) -> Value {
+    with_chars(from, |from| {
+        with_chars(to, |to| {
             let map = |c: char| from.iter().position(|&f| f == c).and_then(|i| to.get(i).copied()).unwrap_or(c);
-            Ok(text_of(source.chars().map(map)))
+            text_of(source.chars().map(map))
         })
     })
 }
