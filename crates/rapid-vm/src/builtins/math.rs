@@ -9,7 +9,7 @@ use crate::value::Value;
 type Res = Result<Option<Value>, RapidError>;
 
 /// A result of the same numeric kind as `like`.
-fn same_kind(like: &Value, x: f64) -> Value {
+pub(super) fn same_kind(like: &Value, x: f64) -> Value {
     match like {
         Value::Dnum(_) => Value::Dnum(x),
         _ => Value::Num(x as f32),
@@ -49,27 +49,41 @@ pub(super) fn pow(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// Round half away from zero to `\Dec` decimals (0 without it).
 pub(super) fn round(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let dec = decimals(ctx, args.get(1))?;
-    let scale = 10f64.powi(dec);
-    unary(ctx, args, |x| (x * scale).round() / scale)
+    unary(ctx, args, |x| round_to(x, dec))
 }
 
 /// Cut (toward zero) to `\Dec` decimals.
 pub(super) fn trunc(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let dec = decimals(ctx, args.get(1))?;
+    unary(ctx, args, |x| trunc_to(x, dec))
+}
+
+pub(super) fn round_to(x: f64, dec: i32) -> f64 {
     let scale = 10f64.powi(dec);
-    unary(ctx, args, |x| (x * scale).trunc() / scale)
+    (x * scale).round() / scale
+}
+
+pub(super) fn trunc_to(x: f64, dec: i32) -> f64 {
+    let scale = 10f64.powi(dec);
+    (x * scale).trunc() / scale
 }
 
 fn decimals(ctx: &Ctx<'_>, arg: Option<&Value>) -> Result<i32, RapidError> {
     match ctx.opt_num(arg)? {
         None => Ok(0),
-        Some(d) if d >= 0.0 && d.fract() == 0.0 && d <= 15.0 => Ok(d as i32),
-        Some(d) => Err(ctx.error(Err::ArgValue, format!("{d} is not a number of decimals"))),
+        Some(d) => {
+            valid_decimals(d).ok_or_else(|| ctx.error(Err::ArgValue, format!("{d} is not a number of decimals")))
+        }
     }
 }
 
+/// `\Dec` of Round and Trunc: a whole number 0..=15.
+pub(super) fn valid_decimals(d: f64) -> Option<i32> {
+    (d >= 0.0 && d.fract() == 0.0 && d <= 15.0).then_some(d as i32)
+}
+
 /// A trigonometric result: num for Sin/Cos/..., dnum for the `...Dnum` forms.
-fn trig_result(dnum: bool, x: f64) -> Value {
+pub(super) fn trig_result(dnum: bool, x: f64) -> Value {
     if dnum {
         Value::Dnum(x)
     } else {

@@ -5,7 +5,7 @@
 //! call then takes the general path through the built-in's own implementation, which
 //! raises the RAPID error. Each must give exactly what that implementation gives.
 
-use super::BuiltinId;
+use super::{math, BuiltinId};
 use crate::value::Value;
 
 /// A pure function on the arguments passed (optional ones not passed are left off
@@ -13,9 +13,26 @@ use crate::value::Value;
 pub type PureFn = fn(&[Value]) -> Option<Value>;
 
 /// The pure functions, by the catalogue's name; each mirrors the entry of the same
-/// name in its family (`strings.rs`).
-static PURE: &[(&str, PureFn)] =
-    &[("StrLen", str_len), ("NumToStr", num_to_str), ("StrPart", str_part), ("StrFind", str_find), ("StrMap", str_map)];
+/// name in its family (`strings.rs`, `math.rs`).
+static PURE: &[(&str, PureFn)] = &[
+    ("StrLen", str_len),
+    ("NumToStr", num_to_str),
+    ("StrPart", str_part),
+    ("StrFind", str_find),
+    ("StrMap", str_map),
+    ("Abs", abs),
+    ("AbsDnum", abs),
+    ("Sqrt", sqrt),
+    ("SqrtDnum", sqrt),
+    ("Round", round),
+    ("RoundDnum", round),
+    ("Trunc", trunc),
+    ("TruncDnum", trunc),
+    ("Sin", sin),
+    ("Cos", cos),
+    ("Tan", tan),
+    ("ATan2", atan2),
+];
 
 static BY_ID: std::sync::LazyLock<Vec<Option<PureFn>>> = std::sync::LazyLock::new(|| {
     let mut table = Vec::new();
@@ -85,13 +102,78 @@ fn str_map(args: &[Value]) -> Option<Value> {
     }
 }
 
+/// A number as the general path reads it (`Ctx::num`).
+fn number(value: &Value) -> Option<f64> {
+    match value {
+        Value::Num(n) => Some(f64::from(*n)),
+        Value::Dnum(d) => Some(*d),
+        _ => None,
+    }
+}
+
+/// `Abs(Input)`, `AbsDnum`.
+fn abs(args: &[Value]) -> Option<Value> {
+    let [v] = args else { return None };
+    Some(math::same_kind(v, number(v)?.abs()))
+}
+
+/// `Sqrt(Value)`, `SqrtDnum`: a negative value takes the general path (its error).
+fn sqrt(args: &[Value]) -> Option<Value> {
+    let [v] = args else { return None };
+    let x = number(v).filter(|x| *x >= 0.0)?;
+    Some(math::same_kind(v, x.sqrt()))
+}
+
+/// The value and `\Dec` of Round and Trunc (0 without it).
+fn value_and_decimals(args: &[Value]) -> Option<(&Value, f64, i32)> {
+    match args {
+        [v] => Some((v, number(v)?, 0)),
+        [v, d] => Some((v, number(v)?, math::valid_decimals(number(d)?)?)),
+        _ => None,
+    }
+}
+
+fn round(args: &[Value]) -> Option<Value> {
+    let (v, x, dec) = value_and_decimals(args)?;
+    Some(math::same_kind(v, math::round_to(x, dec)))
+}
+
+fn trunc(args: &[Value]) -> Option<Value> {
+    let (v, x, dec) = value_and_decimals(args)?;
+    Some(math::same_kind(v, math::trunc_to(x, dec)))
+}
+
+/// Sin, Cos, Tan of a num in degrees.
+fn degrees(args: &[Value], f: fn(f64) -> f64) -> Option<Value> {
+    let [v] = args else { return None };
+    Some(math::trig_result(false, f(number(v)?.to_radians())))
+}
+
+fn sin(args: &[Value]) -> Option<Value> {
+    degrees(args, f64::sin)
+}
+
+fn cos(args: &[Value]) -> Option<Value> {
+    degrees(args, f64::cos)
+}
+
+fn tan(args: &[Value]) -> Option<Value> {
+    degrees(args, f64::tan)
+}
+
+/// `ATan2(Y, X)` in degrees.
+fn atan2(args: &[Value]) -> Option<Value> {
+    let [y, x] = args else { return None };
+    Some(math::trig_result(false, number(y)?.atan2(number(x)?).to_degrees()))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn call(name: &str, args: &[Value]) -> Option<Value> {
         let id = super::super::lookup(name).expect("a built-in");
-        pure(id).expect("a pure form")(args)
+        pure(id).unwrap_or_else(|| panic!("no pure form of {name}"))(args)
     }
 
     #[test]
@@ -109,6 +191,15 @@ mod tests {
         assert_eq!(call("StrFind", &[s("abcabc"), Value::Num(3.0), s("ab")]), Some(Value::Num(4.0)));
         assert_eq!(call("StrFind", &[s("abc"), Value::Num(9.0), s("a")]), None);
         assert_eq!(call("StrMap", &[s("abc"), s("ab"), s("AB")]), Some(s("ABc")));
+        assert_eq!(call("Abs", &[Value::Num(-2.5)]), Some(Value::Num(2.5)));
+        assert_eq!(call("AbsDnum", &[Value::Dnum(-2.5)]), Some(Value::Dnum(2.5)));
+        assert_eq!(call("Sqrt", &[Value::Num(-1.0)]), None);
+        assert_eq!(call("Round", &[Value::Num(2.5)]), Some(Value::Num(3.0)));
+        assert_eq!(call("Round", &[Value::Num(-1.25), Value::Num(1.0)]), Some(Value::Num(-1.3)));
+        assert_eq!(call("Trunc", &[Value::Num(1.99), Value::Num(1.0)]), Some(Value::Num(1.9)));
+        assert_eq!(call("Round", &[Value::Num(1.0), Value::Num(16.0)]), None);
+        assert_eq!(call("Cos", &[Value::Num(0.0)]), Some(Value::Num(1.0)));
+        assert_eq!(call("ATan2", &[Value::Num(1.0), Value::Num(0.0)]), Some(Value::Num(90.0)));
         assert!(pure(super::super::lookup("TPWrite").expect("TPWrite")).is_none());
     }
 }
