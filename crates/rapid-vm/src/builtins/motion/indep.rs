@@ -231,45 +231,117 @@ pub(crate) fn ind_r_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-/// A position argument: `\ToAbsNum`-like number at `index + 1`; the robtarget form at
-/// `index` is refused for robot axes.
+/// A position argument: `\ToAbsNum`-like number at `index + 1`. The robtarget form at
+/// `index` names the axis's value in the target's external axes (`extax`); for robot
+/// axes the manual asks for the number form, so it raises ERR_ARGVALERR here.
+// uncertain: the manual says only that robot axes use the number form; that the
+// controller answers the robtarget form on a robot axis with ERR_ARGVALERR is our choice.
 fn position_arg(ctx: &Ctx<'_>, args: &[Value], index: usize, robtarget: &str) -> Result<f64, RapidError> {
     if present(args.get(index)) {
-        return Err(RapidError::fatal(format!(
-            "\\{robtarget} (a robtarget) for a robot axis is not supported by `rapid run` yet; give the number"
-        )));
+        return Err(robtarget_on_robot_axis(ctx, robtarget));
     }
     ctx.num(&args[index + 1])
 }
 
-/// `IndReset MecUnit, Axis [\RefNum] …`: the axis goes back to normal mode where it
-/// stands; the program's moves take it on from there.
-// uncertain: the axis must stand still (a turning or moving axis stops execution); its
-// position is brought back into its working range by whole turns; `\RefPos`,
-// `\RefNum`, `\Short`, `\Fwd`, `\Bwd`, `\Old` (moving the revolution counter) are
-// refused.
-pub(crate) fn ind_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let axis = axis(ctx, args)?;
-    if (2..=7).any(|i| present(args.get(i))) {
-        return Err(RapidError::fatal(
-            "IndReset's \\RefPos, \\RefNum, \\Short, \\Fwd, \\Bwd and \\Old are not supported by `rapid run` yet",
+/// The error for a robtarget position (`\ToAbsPos`, `\ToRelPos`, `\RefPos`) given
+/// for a robot axis.
+fn robtarget_on_robot_axis(ctx: &Ctx<'_>, robtarget: &str) -> RapidError {
+    ctx.error(
+        Err::ArgValue,
+        format!("\\{robtarget} takes a robtarget's external axis value; a robot axis needs the number form"),
+    )
+}
+
+/// How IndReset moves the axis's measuring system by whole turns.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Reset {
+    /// `\Old` (the default): the position stays as it is.
+    Old,
+    /// `\Short`: within ±180 degrees of the reference.
+    Short(f64),
+    /// `\Fwd`: in [reference, reference + 360).
+    Fwd(f64),
+    /// `\Bwd`: in (reference - 360, reference].
+    Bwd(f64),
+}
+
+impl Reset {
+    /// The axis position after the reset, from `position`.
+    fn apply(self, position: f64) -> f64 {
+        match self {
+            Reset::Old => position,
+            Reset::Short(reference) => reference + (position - reference + 180.0).rem_euclid(360.0) - 180.0,
+            Reset::Fwd(reference) => reference + (position - reference).rem_euclid(360.0),
+            Reset::Bwd(reference) => reference - (reference - position).rem_euclid(360.0),
+        }
+    }
+}
+
+/// IndReset's optional arguments: `\RefPos | \RefNum` at 2/3, `\Short | \Fwd | \Bwd
+/// | \Old` at 4..=7.
+// uncertain: the manual allows a reference only with \Short, \Fwd or \Bwd, never with
+// \Old, and wants it inside the axis's working range; those faults raise ERR_ARGVALERR
+// here. \Short, \Fwd or \Bwd without a reference take 0 as the reference.
+fn reset_kind(ctx: &Ctx<'_>, args: &[Value], axis: usize) -> Result<Reset, RapidError> {
+    if present(args.get(2)) {
+        return Err(robtarget_on_robot_axis(ctx, "RefPos"));
+    }
+    let reference = ctx.opt_num(args.get(3))?;
+    let (short, fwd, bwd) = (present(args.get(4)), present(args.get(5)), present(args.get(6)));
+    let Some(reference) = reference else {
+        return Ok(if short {
+            Reset::Short(0.0)
+        } else if fwd {
+            Reset::Fwd(0.0)
+        } else if bwd {
+            Reset::Bwd(0.0)
+        } else {
+            Reset::Old
+        });
+    };
+    if !(short || fwd || bwd) {
+        return Err(ctx.error(Err::ArgValue, "IndReset \\RefNum needs \\Short, \\Fwd or \\Bwd"));
+    }
+    let (lo, hi) = ctx.resources.robot.kin.limits()[axis];
+    if !reference.is_finite() || reference < lo || reference > hi {
+        return Err(ctx.error(
+            Err::ArgValue,
+            format!("IndReset \\RefNum {reference} is outside axis {}'s working range {lo}..{hi}", axis + 1),
         ));
     }
+    Ok(if short {
+        Reset::Short(reference)
+    } else if fwd {
+        Reset::Fwd(reference)
+    } else {
+        Reset::Bwd(reference)
+    })
+}
+
+/// `IndReset MecUnit, Axis [\RefPos | \RefNum] [\Short | \Fwd | \Bwd | \Old]`: the
+/// axis goes back to normal mode where it stands, its measuring system moved by whole
+/// turns as the switch says (`\Old`, the default, keeps it); the program's moves take
+/// it on from there.
+// uncertain: the axis must stand still (a turning or moving axis stops execution), and
+// a position outside the working range after the reset stops execution.
+pub(crate) fn ind_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let axis = axis(ctx, args)?;
+    let kind = reset_kind(ctx, args, axis)?;
     let now = ctx.time;
     let Some(ind) = ctx.resources.robot.independent.axes[axis] else { return Ok(None) };
     if ind.done_at().is_none_or(|done| done > now + 1e-9) {
         return Err(RapidError::fatal(format!("IndReset: axis {} still moves; it must stand still", axis + 1)));
     }
+    let position = kind.apply(ind.at(now).0);
     let robot = &mut ctx.resources.robot;
-    robot.independent.set(axis, None, now);
     let (lo, hi) = robot.kin.limits()[axis];
-    let mut position = ind.at(now).0;
-    while position > hi {
-        position -= 360.0;
+    if position < lo - 1e-9 || position > hi + 1e-9 {
+        return Err(RapidError::fatal(format!(
+            "IndReset: axis {} at {position:.2} degrees is outside its working range {lo}..{hi}; \\Short, \\Fwd or \\Bwd bring it in",
+            axis + 1
+        )));
     }
-    while position < lo {
-        position += 360.0;
-    }
+    robot.independent.set(axis, None, now);
     robot.take_over_axis(axis, position, now);
     Ok(None)
 }

@@ -399,6 +399,14 @@ impl RobotState {
         let mut joints = self.planned_joints_at(end);
         joints[axis] = position;
         self.planner.restart_from(joints, end);
+        // The robot stands at the last final move's end: from now on with the axis
+        // where the reset left it (its independent motion until now stays in history).
+        if let Some(last) = self.ahead.back_mut().filter(|m| m.end <= end) {
+            last.end_joints[axis] = position;
+        }
+        if let Some(last) = self.recorded.as_mut().and_then(|r| r.last_mut()).filter(|m| m.end <= end) {
+            last.end_joints[axis] = position;
+        }
     }
 
     /// A sample of the trace with the independent axes put in, its TCP and flange
