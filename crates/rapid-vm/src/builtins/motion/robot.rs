@@ -560,6 +560,14 @@ impl RobotState {
         self.zones.get(i).copied().flatten().is_some_and(|z| z.shape.contains(tcp, joints))
     }
 
+    /// The TCP deceleration moves are planned with: the model's, scaled by AccSet,
+    /// capped by PathAccLim/WorldAccLim, mm/s².
+    fn braking_decel(&self) -> f64 {
+        let settings = self.planner.settings();
+        let nominal = rapid_motion::plan::AccelLimits::nominal(&self.model.max_speeds).tcp * settings.acc_factor();
+        settings.tcp_dec_max.filter(|cap| cap.is_finite() && *cap > 0.0).map_or(nominal, |cap| nominal.min(cap))
+    }
+
     /// A zone just activated (or enabled): its output follows where the robot is now.
     pub fn start_zone(&mut self, i: usize, now: f64) {
         let joints = self.joints_at(now);
@@ -576,7 +584,7 @@ impl RobotState {
     /// WZDOSet output follows, a WZLimSup zone entered stops the robot.
     fn zone_event(&mut self, i: usize, inside: bool, time: f64) {
         match self.zones[i].map(|z| z.kind) {
-            Some(super::zones::ZoneKind::DoSet { signal, value }) => {
+            Some(super::zones::ZoneKind::DoSet { signal, value, .. }) => {
                 self.due.push((time, Action::Set { signal, value: if inside { value } else { 1.0 - value } }));
             }
             Some(super::zones::ZoneKind::LimSup) if inside => {
@@ -597,10 +605,20 @@ impl RobotState {
             self.zone_inside.resize(self.zones.len(), false);
         }
         let mut crossings = Vec::new();
-        for sample in planned.samples(&self.kin, rapid_motion::plan::DEFAULT_STEP) {
-            let tcp = sample.tcp.translation.vector;
+        let samples: Vec<_> = planned.samples(&self.kin, rapid_motion::plan::DEFAULT_STEP).collect();
+        let before = |z: &super::zones::Zone| matches!(z.kind, super::zones::ZoneKind::DoSet { before: true, .. });
+        let braking = match active.iter().any(|&i| self.zones[i].is_some_and(|z| before(&z))) {
+            true => super::zones::braking_places(&samples, self.braking_decel()),
+            false => Vec::new(),
+        };
+        for (k, sample) in samples.iter().enumerate() {
             for &i in &active {
-                let inside = self.in_zone(i, &sample.joints, &tcp);
+                // A `\Before` zone looks at where the robot would stand if it braked now.
+                let at = match braking.get(k) {
+                    Some(&j) if self.zones[i].is_some_and(|z| before(&z)) => &samples[j],
+                    _ => sample,
+                };
+                let inside = self.in_zone(i, &at.joints, &at.tcp.translation.vector);
                 if inside != self.zone_inside[i] {
                     self.zone_inside[i] = inside;
                     crossings.push((i, inside, sample.time));
