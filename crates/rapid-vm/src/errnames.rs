@@ -131,6 +131,7 @@ errors! {
     // Path stop and restart (§2.2.6).
     AlreadyMoving = "ERR_ALRDY_MOVING",
     PathDist = "ERR_PATHDIST",
+    BwdLimit = "ERR_BWDLIMIT",
     // Triggers (TriggLIOs/TriggJIOs name their signals).
     SigName = "ERR_SIG_NAME",
     // Synchronized movement (MultiMove).

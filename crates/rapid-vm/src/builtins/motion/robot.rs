@@ -425,6 +425,11 @@ impl RobotState {
 
     /// The axis values the planned moves give at time `t`.
     fn planned_joints_at(&mut self, t: f64) -> Joints {
+        // A stopped robot stepped back along its path (StepBwdPath) is where that took it.
+        if let Some(joints) = self.pause.as_ref().and_then(|p| p.step.as_ref()).and_then(|s| s.joints_at(&self.kin, t))
+        {
+            return joints;
+        }
         // A stopped robot stands where it stopped.
         let t = self.pause.as_ref().map_or(t, |p| t.min(p.since));
         self.forget_before(t);
