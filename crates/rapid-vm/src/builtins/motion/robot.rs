@@ -454,6 +454,31 @@ impl RobotState {
         }
     }
 
+    /// The robot brakes on its path from time `t` to standstill in `stop_time` (a
+    /// search hit with a stop): the move it is on ends where it stands then, and
+    /// nothing planned after it is kept. Returns when it stands still.
+    pub fn brake_at(&mut self, t: f64, stop_time: f64) -> f64 {
+        let Some(on) = self.ahead.iter().find(|m| m.start <= t && t < m.end).cloned() else {
+            self.stop_at(t);
+            return t;
+        };
+        let mut braked = on.clone();
+        braked.brake_at(&self.kin, t, stop_time);
+        if braked.end >= on.end {
+            self.stop_at(on.end);
+            return on.end;
+        }
+        let end = braked.end;
+        self.stop_at(end);
+        if let Some(last) = self.ahead.back_mut().filter(|m| m.start == on.start) {
+            *last = braked.clone();
+        }
+        if let Some(last) = self.recorded.as_mut().and_then(|r| r.last_mut()).filter(|m| m.start == on.start) {
+            *last = braked;
+        }
+        end
+    }
+
     /// The robot stops where it is at time `t` (a search hit with a stop): the move it
     /// is on ends there and nothing planned after it is kept. Returns the joints.
     pub fn stop_at(&mut self, t: f64) -> Joints {
