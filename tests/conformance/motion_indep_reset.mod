@@ -6,7 +6,8 @@ MODULE motion_indep_reset
     !    away: -160;
     !  - at -100, \RefNum:=0 \Fwd: in [0, 360): -100 + 360 = 260;
     !  - at 300, \RefNum:=90 \Bwd: in (-270, 90]: 300 - 360 = -60;
-    !  - at 370, IndReset alone (\Old): stays 370;
+    !  - at 370, IndReset alone (\Old): stays 370; the axis is in normal mode
+    !    again, so IndInpos raises ERR_AXIS_IND;
     !  - a reference without \Short, \Fwd or \Bwd, a reference outside -400..400,
     !    and the robtarget forms on a robot axis: ERR_ARGVALERR;
     !  - at 750, IndReset \Old: outside the working range, execution stops.
@@ -35,6 +36,7 @@ MODULE motion_indep_reset
         WaitUntil IndInpos(ROB_1, 6);
         IndReset ROB_1, 6;
         Show "370, Old: ";
+        TPWrite "in position " \Bool:=IndInpos(ROB_1, 6);
         IndAMove ROB_1, 6 \ToAbsNum:=0, 420;
         WaitUntil IndInpos(ROB_1, 6);
         IndReset ROB_1, 6 \RefNum:=0;
@@ -50,6 +52,9 @@ MODULE motion_indep_reset
     ERROR
         IF ERRNO = ERR_ARGVALERR THEN
             TPWrite "ERR_ARGVALERR";
+            TRYNEXT;
+        ELSEIF ERRNO = ERR_AXIS_IND THEN
+            TPWrite "ERR_AXIS_IND";
             TRYNEXT;
         ENDIF
     ENDPROC

@@ -127,6 +127,7 @@ errors! {
     NoRunUnit = "ERR_NORUNUNIT",
     IoEnable = "ERR_IOENABLE",
     AxisPar = "ERR_AXIS_PAR",
+    AxisInd = "ERR_AXIS_IND",
     SpeedLimValue = "ERR_SPEEDLIM_VALUE",
     // Path stop and restart (§2.2.6).
     AlreadyMoving = "ERR_ALRDY_MOVING",

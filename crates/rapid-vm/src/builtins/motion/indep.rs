@@ -351,8 +351,7 @@ pub(crate) fn ind_inpos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let axis = axis(ctx, args)?;
     let now = ctx.time;
     let Some(ind) = ctx.resources.robot.independent.axes[axis] else {
-        // uncertain: an axis in normal mode raises ERR_AXIS_IND? — reported as ERR_AXIS_PAR.
-        return Err(ctx.error(Err::AxisPar, format!("axis {} is not in independent mode", axis + 1)));
+        return Err(ctx.error(Err::AxisInd, format!("axis {} is not in independent mode", axis + 1)));
     };
     let at = ind.done_at().is_some_and(|done| now >= done - INPOS_DEG);
     Ok(Some(Value::Bool(at)))
@@ -364,7 +363,7 @@ pub(crate) fn ind_speed(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let axis = axis(ctx, args)?;
     let now = ctx.time;
     let Some(ind) = ctx.resources.robot.independent.axes[axis] else {
-        return Err(ctx.error(Err::AxisPar, format!("axis {} is not in independent mode", axis + 1)));
+        return Err(ctx.error(Err::AxisInd, format!("axis {} is not in independent mode", axis + 1)));
     };
     let (_, v) = ind.at(now);
     let answer = if present(args.get(3)) {
