@@ -480,7 +480,8 @@ fn searchl_finds_the_edge_from_the_stimulus() {
     let dir = scratch("searchl");
     // The probe input rises 0.5 s after doStart; the search runs at 100 mm/s with a
     // 10 m/s^2 ramp (0.5 mm in its first 0.01 s), so the hit is 0.5 + 0.49 * 100 =
-    // 49.5 mm along x, where \Stop stops the robot. A second search for a rising edge
+    // 49.5 mm along x; \Stop brakes over 0.08 s: 100 * 0.08 / 2 = 4 mm further, the
+    // program goes on at 0.58 s with the robot at 353.5. A second search for a rising edge
     // starts with the input already high (ERR_SIGSUPSEARCH); a third, for a falling
     // edge that never comes, reaches its ToPoint without a hit (ERR_WHLSEARCH).
     let program = "MODULE S\n  CONST robtarget p0 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];\n  \
@@ -505,7 +506,7 @@ fn searchl_finds_the_edge_from_the_stimulus() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(
         text(&out.stdout),
-        "hit x 349.5 after 0.50\nrobot at x 349.5\nstage 2: ERR_SIGSUPSEARCH\nstage 3: ERR_WHLSEARCH, robot at x 400.0\ndone\n"
+        "hit x 349.5 after 0.58\nrobot at x 353.5\nstage 2: ERR_SIGSUPSEARCH\nstage 3: ERR_WHLSEARCH, robot at x 400.0\ndone\n"
     );
 }
 

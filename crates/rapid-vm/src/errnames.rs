@@ -127,10 +127,12 @@ errors! {
     NoRunUnit = "ERR_NORUNUNIT",
     IoEnable = "ERR_IOENABLE",
     AxisPar = "ERR_AXIS_PAR",
+    AxisInd = "ERR_AXIS_IND",
     SpeedLimValue = "ERR_SPEEDLIM_VALUE",
     // Path stop and restart (§2.2.6).
     AlreadyMoving = "ERR_ALRDY_MOVING",
     PathDist = "ERR_PATHDIST",
+    BwdLimit = "ERR_BWDLIMIT",
     // Triggers (TriggLIOs/TriggJIOs name their signals).
     SigName = "ERR_SIG_NAME",
     // Synchronized movement (MultiMove).

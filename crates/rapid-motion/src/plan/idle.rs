@@ -40,6 +40,30 @@ impl super::PlannedMove {
     }
 }
 
+impl super::PlannedMove {
+    /// The move braked from time `t` (a stop on the path): the speed falls to 0 in
+    /// `stop_time` along the path, or sooner where the piece it is on ends; the move
+    /// ends where the robot stands then. No effect at or after its end.
+    pub fn brake_at<K: crate::Kinematics + ?Sized>(&mut self, kin: &K, t: f64, stop_time: f64) {
+        if t.is_nan() || t >= self.end {
+            return;
+        }
+        let t = t.max(self.start);
+        let Some(i) = self.spans.iter().rposition(|s| s.t0 <= t) else {
+            self.cut_at(kin, t);
+            return;
+        };
+        let span = &mut self.spans[i];
+        span.profile = span.profile.braked_at(t - span.t0, stop_time);
+        let end = span.t0 + span.profile.duration;
+        self.spans.truncate(i + 1);
+        self.end = end;
+        self.end_joints = self.sample(kin, end).joints;
+        self.zone_entry = end;
+        self.corner_time = 0.0;
+    }
+}
+
 impl Planner {
     /// The robot stood still `dt` seconds (StopMove … StartMove): what was planned
     /// from `from` on happens that much later.

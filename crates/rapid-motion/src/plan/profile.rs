@@ -114,6 +114,27 @@ impl Profile {
         Profile { phases: vec![phase], length: 1.0, duration: dur, end_speed: r1 }
     }
 
+    /// The profile braked from time `t` on (a stop on the path): the speed falls at a
+    /// constant rate to 0 in `stop_time`, or sooner where the piece ends.
+    pub(crate) fn braked_at(&self, t: f64, stop_time: f64) -> Profile {
+        let t = if t.is_finite() { t.clamp(0.0, self.duration) } else { 0.0 };
+        let stop_time = if stop_time.is_finite() { stop_time.max(0.0) } else { 0.0 };
+        let (s, v) = self.at(t);
+        let mut phases: Vec<Phase> = self.phases.iter().copied().filter(|p| p.t0 < t).collect();
+        if let Some(last) = phases.last_mut() {
+            last.dur = last.dur.min(t - last.t0);
+        }
+        let room = (self.length - s).max(0.0);
+        let dur = match v > 0.0 {
+            false => 0.0,
+            true if v * stop_time / 2.0 <= room => stop_time,
+            true => 2.0 * room / v,
+        };
+        let acc = if dur > 0.0 { -v / dur } else { 0.0 };
+        phases.push(Phase { t0: t, s0: s, v0: v, acc, dur });
+        Profile { phases, length: self.length, duration: t + dur, end_speed: 0.0 }
+    }
+
     /// Path position and speed at time `t` (clamped to the profile).
     pub(crate) fn at(&self, t: f64) -> (f64, f64) {
         let t = if t.is_finite() { t.clamp(0.0, self.duration) } else { 0.0 };
@@ -133,6 +154,23 @@ mod tests {
 
     fn close(a: f64, b: f64) -> bool {
         (a - b).abs() < 1e-9
+    }
+
+    #[test]
+    fn braking_falls_to_zero_in_the_stop_time_or_at_the_end() {
+        // 100 mm at 100 mm/s with 1000 mm/s² ramps: 0.1 s and 5 mm to speed. Braked at
+        // 0.5 s (at 45 mm, 100 mm/s) over 0.08 s: 100 · 0.08 / 2 = 4 mm more, at 0.58 s.
+        let p = Profile::trapezoid(0.0, 0.0, 100.0, 1000.0, 100.0);
+        let b = p.braked_at(0.5, 0.08);
+        assert!(close(b.duration, 0.58));
+        let (s, v) = b.at(0.58);
+        assert!(close(s, 49.0) && close(v, 0.0), "{s} {v}");
+        let (s, v) = b.at(0.54);
+        assert!(close(s, 45.0 + 100.0 * 0.04 - 0.5 * 1250.0 * 0.04 * 0.04) && close(v, 50.0), "{s} {v}");
+        // Braked at 0.9 s (at 85 mm) over 0.8 s would need 40 mm; 15 mm are left:
+        // it stops at the end after 2 · 15 / 100 = 0.3 s.
+        let b = p.braked_at(0.9, 0.8);
+        assert!(close(b.duration, 1.2) && close(b.at(1.2).0, 100.0));
     }
 
     #[test]

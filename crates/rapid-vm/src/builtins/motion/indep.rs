@@ -232,116 +232,118 @@ pub(crate) fn ind_r_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 }
 
 /// A position argument: `\ToAbsNum`-like number at `index + 1`. The robtarget form at
-/// `index` gives an external axis's position; robot axes take the number (the manual),
-/// and external axes do not exist yet.
+/// `index` names the axis's value in the target's external axes (`extax`); for robot
+/// axes the manual asks for the number form, so it raises ERR_ARGVALERR here.
+// uncertain: the manual says only that robot axes use the number form; that the
+// controller answers the robtarget form on a robot axis with ERR_ARGVALERR is our choice.
 fn position_arg(ctx: &Ctx<'_>, args: &[Value], index: usize, robtarget: &str) -> Result<f64, RapidError> {
     if present(args.get(index)) {
-        let number = robtarget.replace("Pos", "Num");
-        return Err(RapidError::fatal(format!(
-            "\\{robtarget} (a robtarget) is for external axes, which `rapid run` does not have yet; a robot axis takes \\{number}"
-        )));
+        return Err(robtarget_on_robot_axis(ctx, robtarget));
     }
     ctx.num(&args[index + 1])
 }
 
-/// `IndReset MecUnit, Axis [\RefPos | \RefNum] [\Short | \Fwd | \Bwd | \Old]`: the
-/// axis goes back to normal mode where it stands; the program's moves take it on from
-/// there. The options move only the axis's logical position (its revolution counter)
-/// by whole turns, never the axis: `\Short` to within ±180° of the reference, `\Fwd`
-/// to [ref, ref + 360°), `\Bwd` to (ref − 360°, ref], `\Old` keeps it (the manual's
-/// example: 750° reset with `\RefNum:=0 \Short` reads 30°).
-// uncertain: the axis must stand still (a turning or moving axis stops execution);
-// without an option the position is brought back into the working range by whole
-// turns; `\Short`/`\Fwd`/`\Bwd` without a reference take 0; a reference outside the
-// working range, a reference with `\Old` or without a direction raise ERR_AXIS_PAR.
-pub(crate) fn ind_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let axis = axis(ctx, args)?;
+/// The error for a robtarget position (`\ToAbsPos`, `\ToRelPos`, `\RefPos`) given
+/// for a robot axis.
+fn robtarget_on_robot_axis(ctx: &Ctx<'_>, robtarget: &str) -> RapidError {
+    ctx.error(
+        Err::ArgValue,
+        format!("\\{robtarget} takes a robtarget's external axis value; a robot axis needs the number form"),
+    )
+}
+
+/// How IndReset moves the axis's measuring system by whole turns.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Reset {
+    /// `\Old` (the default): the position stays as it is.
+    Old,
+    /// `\Short`: within ±180 degrees of the reference.
+    Short(f64),
+    /// `\Fwd`: in [reference, reference + 360).
+    Fwd(f64),
+    /// `\Bwd`: in (reference - 360, reference].
+    Bwd(f64),
+}
+
+impl Reset {
+    /// The axis position after the reset, from `position`.
+    fn apply(self, position: f64) -> f64 {
+        match self {
+            Reset::Old => position,
+            Reset::Short(reference) => reference + (position - reference + 180.0).rem_euclid(360.0) - 180.0,
+            Reset::Fwd(reference) => reference + (position - reference).rem_euclid(360.0),
+            Reset::Bwd(reference) => reference - (reference - position).rem_euclid(360.0),
+        }
+    }
+}
+
+/// IndReset's optional arguments: `\RefPos | \RefNum` at 2/3, `\Short | \Fwd | \Bwd
+/// | \Old` at 4..=7.
+// uncertain: the manual allows a reference only with \Short, \Fwd or \Bwd, never with
+// \Old, and wants it inside the axis's working range; those faults raise ERR_ARGVALERR
+// here. \Short, \Fwd or \Bwd without a reference take 0 as the reference.
+fn reset_kind(ctx: &Ctx<'_>, args: &[Value], axis: usize) -> Result<Reset, RapidError> {
     if present(args.get(2)) {
-        return Err(RapidError::fatal(
-            "IndReset \\RefPos (a robtarget) is for external axes; a robot axis takes \\RefNum",
+        return Err(robtarget_on_robot_axis(ctx, "RefPos"));
+    }
+    let reference = ctx.opt_num(args.get(3))?;
+    let (short, fwd, bwd) = (present(args.get(4)), present(args.get(5)), present(args.get(6)));
+    let Some(reference) = reference else {
+        return Ok(if short {
+            Reset::Short(0.0)
+        } else if fwd {
+            Reset::Fwd(0.0)
+        } else if bwd {
+            Reset::Bwd(0.0)
+        } else {
+            Reset::Old
+        });
+    };
+    if !(short || fwd || bwd) {
+        return Err(ctx.error(Err::ArgValue, "IndReset \\RefNum needs \\Short, \\Fwd or \\Bwd"));
+    }
+    let (lo, hi) = ctx.resources.robot.kin.limits()[axis];
+    if !reference.is_finite() || reference < lo || reference > hi {
+        return Err(ctx.error(
+            Err::ArgValue,
+            format!("IndReset \\RefNum {reference} is outside axis {}'s working range {lo}..{hi}", axis + 1),
         ));
     }
-    let mode = reset_mode(ctx, args)?;
+    Ok(if short {
+        Reset::Short(reference)
+    } else if fwd {
+        Reset::Fwd(reference)
+    } else {
+        Reset::Bwd(reference)
+    })
+}
+
+/// `IndReset MecUnit, Axis [\RefPos | \RefNum] [\Short | \Fwd | \Bwd | \Old]`: the
+/// axis goes back to normal mode where it stands, its measuring system moved by whole
+/// turns as the switch says (`\Old`, the default, keeps it); the program's moves take
+/// it on from there.
+// uncertain: the axis must stand still (a turning or moving axis stops execution), and
+// a position outside the working range after the reset stops execution.
+pub(crate) fn ind_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let axis = axis(ctx, args)?;
+    let kind = reset_kind(ctx, args, axis)?;
     let now = ctx.time;
     let Some(ind) = ctx.resources.robot.independent.axes[axis] else { return Ok(None) };
     if ind.done_at().is_none_or(|done| done > now + 1e-9) {
         return Err(RapidError::fatal(format!("IndReset: axis {} still moves; it must stand still", axis + 1)));
     }
-    let (lo, hi) = ctx.resources.robot.kin.limits()[axis];
-    if let Some(reference) = mode.reference() {
-        if !(lo..=hi).contains(&reference) {
-            return Err(ctx.error(
-                Err::AxisPar,
-                format!("IndReset: the reference {reference} is outside axis {}'s working range", axis + 1),
-            ));
-        }
-    }
-    let position = mode.logical_position(ind.at(now).0, (lo, hi));
+    let position = kind.apply(ind.at(now).0);
     let robot = &mut ctx.resources.robot;
+    let (lo, hi) = robot.kin.limits()[axis];
+    if position < lo - 1e-9 || position > hi + 1e-9 {
+        return Err(RapidError::fatal(format!(
+            "IndReset: axis {} at {position:.2} degrees is outside its working range {lo}..{hi}; \\Short, \\Fwd or \\Bwd bring it in",
+            axis + 1
+        )));
+    }
     robot.independent.set(axis, None, now);
     robot.take_over_axis(axis, position, now);
     Ok(None)
-}
-
-/// How IndReset sets the axis's logical position.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum ResetMode {
-    /// No option: into the working range by whole turns.
-    IntoRange,
-    Short(f64),
-    Fwd(f64),
-    Bwd(f64),
-    Old,
-}
-
-impl ResetMode {
-    fn reference(self) -> Option<f64> {
-        match self {
-            ResetMode::Short(r) | ResetMode::Fwd(r) | ResetMode::Bwd(r) => Some(r),
-            ResetMode::IntoRange | ResetMode::Old => None,
-        }
-    }
-
-    /// The axis's new logical position for a physical position `at`.
-    fn logical_position(self, at: f64, (lo, hi): (f64, f64)) -> f64 {
-        match self {
-            ResetMode::IntoRange => {
-                let mut position = at;
-                while position > hi {
-                    position -= 360.0;
-                }
-                while position < lo {
-                    position += 360.0;
-                }
-                position
-            }
-            ResetMode::Short(r) => at - 360.0 * ((at - r) / 360.0).round(),
-            ResetMode::Fwd(r) => r + (at - r).rem_euclid(360.0),
-            ResetMode::Bwd(r) => r - (r - at).rem_euclid(360.0),
-            ResetMode::Old => at,
-        }
-    }
-}
-
-/// The options of IndReset (arguments 3 to 7: RefNum, Short, Fwd, Bwd, Old).
-fn reset_mode(ctx: &Ctx<'_>, args: &[Value]) -> Result<ResetMode, RapidError> {
-    let reference = if present(args.get(3)) { Some(ctx.num(&args[3])?) } else { None };
-    let r = reference.unwrap_or(0.0);
-    let mode = if present(args.get(4)) {
-        ResetMode::Short(r)
-    } else if present(args.get(5)) {
-        ResetMode::Fwd(r)
-    } else if present(args.get(6)) {
-        ResetMode::Bwd(r)
-    } else if present(args.get(7)) {
-        ResetMode::Old
-    } else {
-        ResetMode::IntoRange
-    };
-    if reference.is_some() && mode.reference().is_none() {
-        return Err(ctx.error(Err::AxisPar, "IndReset: \\RefNum needs \\Short, \\Fwd or \\Bwd"));
-    }
-    Ok(mode)
 }
 
 /// `IndInpos(MecUnit, Axis)`: the independent axis stands at its target.
@@ -349,8 +351,7 @@ pub(crate) fn ind_inpos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let axis = axis(ctx, args)?;
     let now = ctx.time;
     let Some(ind) = ctx.resources.robot.independent.axes[axis] else {
-        // uncertain: an axis in normal mode raises ERR_AXIS_IND? — reported as ERR_AXIS_PAR.
-        return Err(ctx.error(Err::AxisPar, format!("axis {} is not in independent mode", axis + 1)));
+        return Err(ctx.error(Err::AxisInd, format!("axis {} is not in independent mode", axis + 1)));
     };
     let at = ind.done_at().is_some_and(|done| now >= done - INPOS_DEG);
     Ok(Some(Value::Bool(at)))
@@ -362,7 +363,7 @@ pub(crate) fn ind_speed(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let axis = axis(ctx, args)?;
     let now = ctx.time;
     let Some(ind) = ctx.resources.robot.independent.axes[axis] else {
-        return Err(ctx.error(Err::AxisPar, format!("axis {} is not in independent mode", axis + 1)));
+        return Err(ctx.error(Err::AxisInd, format!("axis {} is not in independent mode", axis + 1)));
     };
     let (_, v) = ind.at(now);
     let answer = if present(args.get(3)) {

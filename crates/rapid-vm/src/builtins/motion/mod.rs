@@ -25,6 +25,7 @@ pub mod robot;
 mod search;
 pub mod servo;
 mod settings;
+mod stepbwd;
 pub mod store;
 pub mod testsign;
 mod torque;
@@ -134,6 +135,7 @@ pub(super) static ENTRIES: Entries = &[
     ("PathRecValidFwd", recorder::path_rec_valid_fwd),
     ("PathRecMoveBwd", recorder::path_rec_move_bwd),
     ("PathRecMoveFwd", recorder::path_rec_move_fwd),
+    ("StepBwdPath", stepbwd::step_bwd_path),
     ("WZBoxDef", zones::wz_box_def),
     ("WZCylDef", zones::wz_cyl_def),
     ("WZSphDef", zones::wz_sph_def),

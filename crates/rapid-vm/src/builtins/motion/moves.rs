@@ -256,7 +256,7 @@ fn go_with(
 }
 
 /// The program waits for the robot until `resume`.
-fn wait_for_robot(ctx: &mut Ctx<'_>, resume: f64) {
+pub(super) fn wait_for_robot(ctx: &mut Ctx<'_>, resume: f64) {
     let now = ctx.time;
     if resume <= now {
         return;

@@ -36,6 +36,8 @@ pub struct Pause {
     reset: bool,
     /// TriggSpeed outputs set to 0 while the robot stands, with their values.
     speed_outputs: Vec<(u32, f64)>,
+    /// StepBwdPath's steps back from where the path stopped (a RESTART routine).
+    pub(super) step: Option<super::stepbwd::StepBack>,
 }
 
 impl Pause {
@@ -116,7 +118,7 @@ fn hold_after(resources: &mut Resources, since: f64) -> Pause {
             let _ = io.set(signal, 0.0, since);
         }
     }
-    Pause { since, held_wait, held_orders, held_interrupts, regain: None, reset: false, speed_outputs }
+    Pause { since, held_wait, held_orders, held_interrupts, regain: None, reset: false, speed_outputs, step: None }
 }
 
 /// `StopMove [\Quick] [\AllMotionTasks]`: the robot stops where it is.
@@ -203,12 +205,24 @@ fn restart(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
             return Err(err);
         }
     };
-    let back = regain.as_ref().map_or(0.0, PlannedMove::duration);
+    // After StepBwdPath the robot goes forward to where it stopped first.
+    let forward = match pause.step.as_ref().map(|step| super::stepbwd::forward(ctx, &pause, step)) {
+        Some(Err(err)) => {
+            ctx.resources.robot.pause = Some(pause);
+            return Err(err);
+        }
+        Some(Ok(forward)) => Some(forward),
+        None => None,
+    };
+    let back = regain.as_ref().map_or(0.0, PlannedMove::duration) + forward.as_ref().map_or(0.0, PlannedMove::duration);
     let dt = (now - pause.since).max(0.0) + back;
     let robot = &mut ctx.resources.robot;
     robot.resume_after(pause.since, dt);
     if let Some(regain) = regain {
         insert_in_time(robot, regain);
+    }
+    if let (Some(step), Some(forward)) = (pause.step, forward) {
+        super::stepbwd::splice(robot, pause.since, step, forward);
     }
     robot.hold_until = pause.held_wait.map(|t| t + dt);
     for (signal, value) in pause.speed_outputs {

@@ -399,9 +399,12 @@ impl RobotState {
         let mut joints = self.planned_joints_at(end);
         joints[axis] = position;
         self.planner.restart_from(joints, end);
-        // The robot stands after its last move: that move's end is where a read-back
-        // finds it, so the axis's new value goes there too.
+        // The robot stands at the last final move's end: from now on with the axis
+        // where the reset left it (its independent motion until now stays in history).
         if let Some(last) = self.ahead.back_mut().filter(|m| m.end <= end) {
+            last.end_joints[axis] = position;
+        }
+        if let Some(last) = self.recorded.as_mut().and_then(|r| r.last_mut()).filter(|m| m.end <= end) {
             last.end_joints[axis] = position;
         }
     }
@@ -422,6 +425,11 @@ impl RobotState {
 
     /// The axis values the planned moves give at time `t`.
     fn planned_joints_at(&mut self, t: f64) -> Joints {
+        // A stopped robot stepped back along its path (StepBwdPath) is where that took it.
+        if let Some(joints) = self.pause.as_ref().and_then(|p| p.step.as_ref()).and_then(|s| s.joints_at(&self.kin, t))
+        {
+            return joints;
+        }
         // A stopped robot stands where it stopped.
         let t = self.pause.as_ref().map_or(t, |p| t.min(p.since));
         self.forget_before(t);
@@ -444,6 +452,31 @@ impl RobotState {
             ),
             None => self.ahead.back().map_or_else(|| self.planner.end_joints(), |m| m.end_joints),
         }
+    }
+
+    /// The robot brakes on its path from time `t` to standstill in `stop_time` (a
+    /// search hit with a stop): the move it is on ends where it stands then, and
+    /// nothing planned after it is kept. Returns when it stands still.
+    pub fn brake_at(&mut self, t: f64, stop_time: f64) -> f64 {
+        let Some(on) = self.ahead.iter().find(|m| m.start <= t && t < m.end).cloned() else {
+            self.stop_at(t);
+            return t;
+        };
+        let mut braked = on.clone();
+        braked.brake_at(&self.kin, t, stop_time);
+        if braked.end >= on.end {
+            self.stop_at(on.end);
+            return on.end;
+        }
+        let end = braked.end;
+        self.stop_at(end);
+        if let Some(last) = self.ahead.back_mut().filter(|m| m.start == on.start) {
+            *last = braked.clone();
+        }
+        if let Some(last) = self.recorded.as_mut().and_then(|r| r.last_mut()).filter(|m| m.start == on.start) {
+            *last = braked;
+        }
+        end
     }
 
     /// The robot stops where it is at time `t` (a search hit with a stop): the move it
@@ -557,6 +590,14 @@ impl RobotState {
         self.zones.get(i).copied().flatten().is_some_and(|z| z.shape.contains(tcp, joints))
     }
 
+    /// The TCP deceleration moves are planned with: the model's, scaled by AccSet,
+    /// capped by PathAccLim/WorldAccLim, mm/s².
+    fn braking_decel(&self) -> f64 {
+        let settings = self.planner.settings();
+        let nominal = rapid_motion::plan::AccelLimits::nominal(&self.model.max_speeds).tcp * settings.acc_factor();
+        settings.tcp_dec_max.filter(|cap| cap.is_finite() && *cap > 0.0).map_or(nominal, |cap| nominal.min(cap))
+    }
+
     /// A zone just activated (or enabled): its output follows where the robot is now.
     pub fn start_zone(&mut self, i: usize, now: f64) {
         let joints = self.joints_at(now);
@@ -573,7 +614,7 @@ impl RobotState {
     /// WZDOSet output follows, a WZLimSup zone entered stops the robot.
     fn zone_event(&mut self, i: usize, inside: bool, time: f64) {
         match self.zones[i].map(|z| z.kind) {
-            Some(super::zones::ZoneKind::DoSet { signal, value }) => {
+            Some(super::zones::ZoneKind::DoSet { signal, value, .. }) => {
                 self.due.push((time, Action::Set { signal, value: if inside { value } else { 1.0 - value } }));
             }
             Some(super::zones::ZoneKind::LimSup) if inside => {
@@ -594,10 +635,20 @@ impl RobotState {
             self.zone_inside.resize(self.zones.len(), false);
         }
         let mut crossings = Vec::new();
-        for sample in planned.samples(&self.kin, rapid_motion::plan::DEFAULT_STEP) {
-            let tcp = sample.tcp.translation.vector;
+        let samples: Vec<_> = planned.samples(&self.kin, rapid_motion::plan::DEFAULT_STEP).collect();
+        let before = |z: &super::zones::Zone| matches!(z.kind, super::zones::ZoneKind::DoSet { before: true, .. });
+        let braking = match active.iter().any(|&i| self.zones[i].is_some_and(|z| before(&z))) {
+            true => super::zones::braking_places(&samples, self.braking_decel()),
+            false => Vec::new(),
+        };
+        for (k, sample) in samples.iter().enumerate() {
             for &i in &active {
-                let inside = self.in_zone(i, &sample.joints, &tcp);
+                // A `\Before` zone looks at where the robot would stand if it braked now.
+                let at = match braking.get(k) {
+                    Some(&j) if self.zones[i].is_some_and(|z| before(&z)) => &samples[j],
+                    _ => sample,
+                };
+                let inside = self.in_zone(i, &at.joints, &at.tcp.translation.vector);
                 if inside != self.zone_inside[i] {
                     self.zone_inside[i] = inside;
                     crossings.push((i, inside, sample.time));

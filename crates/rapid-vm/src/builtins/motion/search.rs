@@ -1,7 +1,7 @@
 //! SearchL and SearchC (§1.8): a linear (circular) move to ToPoint that records where a digital input (or a
 //! persistent bool) changes — by default on its rising edge, `\Flanks` on both,
 //! `\NegFlank` falling, `\HighLevel`/`\LowLevel` on a level. With `\Stop`, `\PStop` or
-//! `\SStop` the robot stops at the first hit; otherwise it goes on to ToPoint (`\Sup`:
+//! `\SStop` the robot brakes on its path from the first hit; otherwise it goes on to ToPoint (`\Sup`:
 //! a second hit is an error). No hit: ERR_WHLSEARCH; the edge's level already there at
 //! the start: ERR_SIGSUPSEARCH.
 //!
@@ -199,9 +199,10 @@ fn look(ctx: &mut Ctx<'_>, args: &[Value], mut search: Search) -> Res {
             store_hit(ctx, args, t)?;
         }
         if stops {
-            // uncertain: the stop distance of \Stop, \PStop and \SStop is not modelled;
-            // the robot stands at the hit position.
-            ctx.resources.robot.stop_at(t);
+            // The robot brakes on its path from the hit; the instruction ends when it
+            // stands still.
+            let stands = ctx.resources.robot.brake_at(t, stop_time(args));
+            super::moves::wait_for_robot(ctx, stands);
             return Ok(None);
         }
     }
@@ -213,6 +214,25 @@ fn look(ctx: &mut Ctx<'_>, args: &[Value], mut search: Search) -> Res {
         return Ok(None);
     }
     finish(ctx, args, &search)
+}
+
+/// How long the robot takes to stop after a hit, s: the manual's typical stop
+/// distances at a search speed of 50 mm/s are 1-3 mm with `\Stop`, 4-8 mm with `\SStop`
+/// and 15-25 mm with `\PStop`; the middle of each, braked at a constant rate
+/// (distance = speed · time / 2), gives 0.08 s, 0.24 s and 0.8 s.
+// uncertain: the distances are as we remember the manual's table; the stop is taken to
+// last the same time at any speed (its distance grows with the speed), on the path for
+// all three (\Stop leaves the path a little on the real robot).
+fn stop_time(args: &[Value]) -> f64 {
+    const AT_50: f64 = 50.0;
+    let mm = if present(args.get(STOP)) {
+        2.0
+    } else if present(args.get(SSTOP)) {
+        6.0
+    } else {
+        20.0
+    };
+    2.0 * mm / AT_50
 }
 
 /// The robot is at ToPoint: no hit, or (`\Sup`) more than one, are errors.

@@ -54,8 +54,9 @@ impl ShapeData {
 /// What an active zone does.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum ZoneKind {
-    /// WZDOSet: the output is `value` inside the zone, the other value outside.
-    DoSet { signal: u32, value: f64 },
+    /// WZDOSet: the output is `value` inside the zone, the other value outside; with
+    /// `before` (`\Before`) it follows where the robot would stand if it braked now.
+    DoSet { signal: u32, value: f64, before: bool },
     /// WZLimSup: entering the zone stops the robot.
     LimSup,
 }
@@ -187,15 +188,45 @@ fn activate(ctx: &mut Ctx<'_>, args: &[Value], shape: ShapeData, kind: ZoneKind)
     Ok(None)
 }
 
-/// `WZDOSet [\Temp] | [\Stat] WorldZone [\Inside] | [\Before] Shape, Signal, SetValue`.
+/// `WZDOSet [\Temp] | [\Stat] WorldZone [\Inside] | [\Before] Shape, Signal, SetValue`:
+/// `\Inside` sets the output while the TCP (or the axes) is in the zone, `\Before`
+/// before it gets there (spec §2.9: so the robot can be stopped just inside): while
+/// the place where it would stand if it braked now is in the zone.
+// uncertain: the braking is taken along the path at the TCP deceleration the moves are
+// planned with (AccSet, PathAccLim), v²/2a ahead of the TCP, within the move; the
+// output goes back when that place has left the zone (the manual speaks of entering).
 pub(crate) fn wz_do_set(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    if present(args.get(4)) {
-        return Err(RapidError::fatal("WZDOSet \\Before is not supported by `rapid run` yet"));
-    }
+    let before = present(args.get(4));
     let shape = shape_of(ctx, &args[5])?;
     let signal = super::super::io::signal(ctx, &args[6])?;
     let value = ctx.num(&args[7])?;
-    activate(ctx, args, shape, ZoneKind::DoSet { signal, value })
+    activate(ctx, args, shape, ZoneKind::DoSet { signal, value, before })
+}
+
+/// For each sample of a move (at the path resolution), the index of the sample where
+/// the robot would stand if it braked from there at `decel` (mm/s²) along its path:
+/// v²/2a further along, at most the move's last sample.
+pub fn braking_places(samples: &[rapid_motion::plan::Sample], decel: f64) -> Vec<usize> {
+    let mut along = Vec::with_capacity(samples.len());
+    let mut total = 0.0;
+    for (i, sample) in samples.iter().enumerate() {
+        if i > 0 {
+            total += (sample.tcp.translation.vector - samples[i - 1].tcp.translation.vector).norm();
+        }
+        along.push(total);
+    }
+    let decel = if decel.is_finite() && decel > 0.0 { decel } else { f64::INFINITY };
+    let mut places = Vec::with_capacity(samples.len());
+    let mut j = 0;
+    for (i, sample) in samples.iter().enumerate() {
+        let stop_at = along[i] + sample.tcp_speed * sample.tcp_speed / (2.0 * decel);
+        j = j.max(i);
+        while j + 1 < samples.len() && along[j] < stop_at - 1e-9 {
+            j += 1;
+        }
+        places.push(j);
+    }
+    places
 }
 
 /// `WZLimSup [\Temp] | [\Stat] WorldZone, Shape`.

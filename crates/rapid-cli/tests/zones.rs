@@ -1,0 +1,75 @@
+//! World zones on the simulated robot: WZDOSet `\Before` against `\Inside`, seen in the
+//! I/O log (`--io-log`) at the times worked out by hand from the timing model.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// A fresh, empty scratch folder for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("zones").join(name);
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    dir
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// Runs backup `sys` in `dir`: one motion task running `module`, DO signals `outputs`.
+fn run(dir: &Path, module: &str, outputs: &[&str]) -> Output {
+    let root = dir.join("sys");
+    let folder = root.join("RAPID/TASK1/PROGMOD");
+    fs::create_dir_all(&folder).expect("task folder");
+    fs::write(folder.join("Main.mod"), module).expect("module");
+    fs::create_dir_all(root.join("SYSPAR")).expect("syspar");
+    let sys = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n";
+    fs::write(root.join("SYSPAR/SYS.cfg"), sys).expect("SYS.cfg");
+    let signals: String = outputs.iter().map(|name| format!("\n      -Name \"{name}\" -SignalType \"DO\"\n")).collect();
+    fs::write(root.join("SYSPAR/EIO.cfg"), format!("EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n{signals}")).expect("EIO.cfg");
+    Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .current_dir(dir)
+        .args(["run", "--quiet", "--io-log", "io.csv", "sys"])
+        .output()
+        .expect("run rapid")
+}
+
+/// When `signal` first became `new` in an `--io-log` CSV (time,signal,old,new,cause).
+fn change_time(log: &str, signal: &str, new: &str) -> f64 {
+    log.lines()
+        .map(|l| l.split(',').collect::<Vec<_>>())
+        .find(|f| f.len() > 3 && f[1] == signal && f[3] == new)
+        .and_then(|f| f[0].parse().ok())
+        .unwrap_or_else(|| panic!("{signal} never became {new}: {log}"))
+}
+
+#[test]
+fn wzdoset_before_sets_its_output_a_braking_distance_early() {
+    let dir = scratch("before");
+    // The slab x = 340..360 mm lies on a 100 mm MoveL from x = 300 at v500. IRB 120:
+    // 10 m/s² path acceleration, so the TCP speeds up for 500 / 10000 = 0.05 s over
+    // 12.5 mm and is at x = 312.5 + 500 (t - 0.05) while it cruises (until x = 387.5).
+    // `\Inside`: in at x = 340, t = 0.05 + 27.5 / 500 = 0.105 s; out past x = 360,
+    // t = 0.05 + 47.5 / 500 = 0.145 s.
+    // `\Before`: braking at 500 mm/s takes 500² / (2 · 10000) = 12.5 mm, so the output
+    // follows x + 12.5: in at x = 327.5, t = 0.05 + 15 / 500 = 0.08 s; out at x = 347.5,
+    // t = 0.05 + 35 / 500 = 0.12 s. Both to the 4 ms path resolution.
+    let program = "MODULE S\n  CONST robtarget p0 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];\n  \
+                   VAR shapedata slab;\n  VAR wztemporary wzIn;\n  VAR wztemporary wzBefore;\n  \
+                   PROC main()\n    MoveJ p0, v1000, fine, tool0;\n    \
+                   WZBoxDef \\Inside, slab, [340, -50, 350], [360, 50, 450];\n    \
+                   WZDOSet \\Temp, wzIn \\Inside, slab, doInside, 1;\n    \
+                   WZDOSet \\Temp, wzBefore \\Before, slab, doBefore, 1;\n    SetDO doStart, 1;\n    \
+                   MoveL Offs(p0, 100, 0, 0), v500, fine, tool0;\n  ENDPROC\nENDMODULE\n";
+    let out = run(&dir, program, &["doStart", "doInside", "doBefore"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
+    let start = change_time(&log, "doStart", "1");
+    for (signal, value, expected) in
+        [("doInside", "1", 0.105), ("doInside", "0", 0.145), ("doBefore", "1", 0.08), ("doBefore", "0", 0.12)]
+    {
+        let after = change_time(&log, signal, value) - start;
+        assert!((after - expected).abs() <= 0.0055, "{signal} = {value} after {after} s, expected {expected}: {log}");
+    }
+}
