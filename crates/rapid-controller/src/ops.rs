@@ -227,7 +227,9 @@ impl Controller {
                 self.run_in_place(idx, host, &routine, "RESTART");
             }
             self.with_task(idx, host, |vm, host| vm.program_started(host));
-            self.resume_wait(idx, stood);
+            // The RESTART routines took time too: the wait goes on from now.
+            let stood_until_now = self.time - self.ops.stopped_at;
+            self.resume_wait(idx, stood_until_now);
         }
         self.note(format!("program started (stood {} s)", trim(stood)));
         true

@@ -433,3 +433,31 @@ ENDMODULE",
     assert_eq!(run_until(&mut c, &mut host, 100.0), SystemExit::Ended);
     assert_eq!(host.lines, ["safe", "end"]);
 }
+
+#[test]
+fn a_wait_goes_on_after_the_restart_routines() {
+    // Stopped at 0.5 inside WaitTime 2 (1.5 s left), started at 1.5; the RESTART
+    // routine waits 1 s, so the wait goes on from 2.5 and ends at 4.0: the clock,
+    // started at 0, reads 4.
+    let mut c = controller(
+        "MODULE M
+  VAR clock k;
+  PROC main()
+    ClkStart k;
+    WaitTime 2;
+    TPWrite \"waited \" \\Num:=ClkRead(k);
+  ENDPROC
+  PROC on_restart()
+    WaitTime 1;
+  ENDPROC
+ENDMODULE",
+    );
+    c.set_event_routines("RESTART", vec![vec!["on_restart".to_owned()]]);
+    let mut host = RecordingHost::default();
+    run_until(&mut c, &mut host, 0.5);
+    c.stop(StopKind::Stop);
+    run_until(&mut c, &mut host, 1.5);
+    assert!(c.start(&mut host, StartMode::Continuous));
+    assert_eq!(run_until(&mut c, &mut host, 100.0), SystemExit::Ended);
+    assert_eq!(host.lines, ["waited 4"]);
+}
