@@ -219,6 +219,22 @@ impl Ctx<'_> {
         }
     }
 
+    /// The handle an opaque argument (iodev, socketdev, dir) holds, read in place
+    /// (file and socket built-ins run in tight loops); None when it holds none.
+    pub fn handle_only(&self, arg: &Value, what: &str) -> Result<Option<u32>, RapidError> {
+        let value = match arg {
+            Value::Ref(place) => self.storage.get(place).map_err(|(e, m)| self.error(e, m))?,
+            other => other,
+        };
+        match value {
+            Value::Opaque(opaque) => Ok(match opaque.state {
+                crate::value::OpaqueState::Handle(h) => Some(h),
+                _ => None,
+            }),
+            _ => Err(self.error(Err::ArgValue, format!("{what} was expected"))),
+        }
+    }
+
     /// A string argument without copying it.
     pub fn str_arg(&self, arg: &Value) -> Result<std::rc::Rc<str>, RapidError> {
         let value = match arg {

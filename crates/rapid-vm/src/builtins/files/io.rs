@@ -10,7 +10,7 @@
 // motion program of abb-motion-program-exec writes text with Write \NoNewLine).
 
 use super::iodev::{check_time, with_file, Need};
-use super::text::{bytes_of, delimiters, latin1, parse_num, read_field, skip_lines};
+use super::text::{bytes_of, delimiters, latin1, parse_num, push_latin1, read_field, skip_lines};
 use super::{anybin, fault, io_fault, opt_string, Fault, Res};
 use crate::builtins::{present, Ctx};
 use crate::errnames::Err;
@@ -30,15 +30,16 @@ const RAWBYTES_CAPACITY: usize = 1024;
 /// `Write IODevice String [\Num] | [\Bool] | [\Pos] | [\Orient] | [\Dnum] [\NoNewLine]`:
 /// the text, the value in the format TPWrite uses, and a line feed unless `\NoNewLine`.
 pub(super) fn write(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let mut line = ctx.string(&args[1])?;
+    let text = ctx.str_arg(&args[1])?;
+    let mut bytes = Vec::with_capacity(text.len() + 24);
+    push_latin1(&mut bytes, &text);
     let values = args.get(2..7).unwrap_or_default();
     if let Some(value) = values.iter().find(|a| present(Some(a))) {
-        line.push_str(&crate::builtins::pendant::value_text(ctx, &ctx.value(value)?));
+        push_latin1(&mut bytes, &crate::builtins::pendant::value_text(ctx, &ctx.value(value)?));
     }
     if !present(args.get(7)) {
-        line.push('\n');
+        bytes.push(b'\n');
     }
-    let bytes = bytes_of(&line);
     with_file(ctx, &args[0], Need::Write, |file| file.write_bytes(&bytes).map_err(|e| io_fault("Write failed", &e)))?;
     Ok(None)
 }

@@ -146,7 +146,7 @@ pub(super) fn with_file<T>(
     need: Need,
     work: impl FnOnce(&mut OpenFile) -> Result<T, Fault>,
 ) -> Result<T, RapidError> {
-    let (_, handle) = handle_of(ctx, arg)?;
+    let handle = ctx.handle_only(arg, "an iodev or dir")?;
     let result = match handle.and_then(|h| ctx.resources.files.files.get_mut(&h)) {
         None => Err((Err::FileAccess, "the I/O device is not open".to_string())),
         Some(file) if need == Need::Read && !file.readable => {

@@ -79,7 +79,19 @@ pub(super) fn latin1(bytes: &[u8]) -> String {
 
 /// The characters of a RAPID string as bytes (Latin-1; anything else becomes `?`).
 pub(super) fn bytes_of(text: &str) -> Vec<u8> {
-    text.chars().map(|c| u8::try_from(u32::from(c)).unwrap_or(b'?')).collect()
+    let mut bytes = Vec::with_capacity(text.len());
+    push_latin1(&mut bytes, text);
+    bytes
+}
+
+/// Appends `text` in Latin-1 (the controller's file encoding); a character beyond
+/// Latin-1, which no RAPID string holds, becomes `?`.
+pub(super) fn push_latin1(bytes: &mut Vec<u8>, text: &str) {
+    if text.is_ascii() {
+        bytes.extend_from_slice(text.as_bytes());
+    } else {
+        bytes.extend(text.chars().map(|c| u8::try_from(u32::from(c)).unwrap_or(b'?')));
+    }
 }
 
 /// The number ReadNum makes of a field: a decimal number as RAPID writes one (sign,
