@@ -21,10 +21,30 @@ pub(super) trait ByteSource {
 const LINE_FEED: u8 = b'\n';
 
 /// The delimiters in force: line feed plus the characters of `\Delim`.
-pub(super) fn delimiters(delim: Option<&str>) -> Vec<u8> {
-    let mut set = vec![LINE_FEED];
-    set.extend(delim.unwrap_or("").chars().filter_map(|c| u8::try_from(u32::from(c)).ok()));
+pub(super) fn delimiters(delim: Option<&str>) -> Delimiters {
+    let mut set = Delimiters { bytes: [LINE_FEED; MAX_STRING_CHARS + 1], len: 1 };
+    for byte in delim.unwrap_or("").chars().filter_map(|c| u8::try_from(u32::from(c)).ok()) {
+        if set.len < set.bytes.len() {
+            set.bytes[set.len] = byte;
+            set.len += 1;
+        }
+    }
     set
+}
+
+/// The bytes that end a field: the line feed and a `\Delim` string's (a RAPID string,
+/// so at most 80); kept on the stack, as the read built-ins run in tight loops.
+pub(super) struct Delimiters {
+    bytes: [u8; MAX_STRING_CHARS + 1],
+    len: usize,
+}
+
+impl std::ops::Deref for Delimiters {
+    type Target = [u8];
+
+    fn deref(&self) -> &[u8] {
+        &self.bytes[..self.len]
+    }
 }
 
 /// The next field: `None` at end of file. With `skip_headers`, delimiters before the
@@ -41,7 +61,7 @@ pub(super) fn read_field(src: &mut dyn ByteSource, delims: &[u8], skip_headers: 
     if src.peek_byte()?.is_none() {
         return Ok(None);
     }
-    let mut field = Vec::new();
+    let mut field = Vec::with_capacity(MAX_STRING_CHARS);
     while field.len() < MAX_STRING_CHARS {
         match src.next_byte()? {
             None => break,
