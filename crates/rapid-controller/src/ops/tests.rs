@@ -461,3 +461,38 @@ ENDMODULE",
     assert_eq!(run_until(&mut c, &mut host, 100.0), SystemExit::Ended);
     assert_eq!(host.lines, ["waited 4"]);
 }
+
+#[test]
+fn a_step_lets_the_robot_finish_the_stopped_move() {
+    // Stopped 0.3 s into a 200 mm MoveL at v100 (2 s and its ramps): the robot stands
+    // on its path. A step finishes the move instruction: without the robot going on
+    // the step would never end. The TPWrite after it runs only at the start.
+    let mut c = controller(
+        "MODULE M
+  VAR robtarget here;
+  PROC main()
+    MoveL [[400,-100,400],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;
+    TPWrite \"at A\";
+    MoveL [[400,100,400],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v100, fine, tool0;
+    here := CRobT();
+    TPWrite \"y \" \\Num:=Round(here.trans.y);
+  ENDPROC
+ENDMODULE",
+    );
+    let mut host = RecordingHost::default();
+    while host.lines.is_empty() {
+        let t = c.time + 0.01;
+        assert_ne!(run_until(&mut c, &mut host, t), SystemExit::Ended);
+    }
+    let t = c.time + 0.3;
+    run_until(&mut c, &mut host, t);
+    c.stop(StopKind::Stop);
+    let t = c.time + 1.0;
+    run_until(&mut c, &mut host, t);
+    assert!(c.step_forward(&mut host, 0));
+    finish_step(&mut c, &mut host);
+    assert_eq!(host.lines, ["at A"]);
+    assert!(c.start(&mut host, StartMode::Continuous));
+    assert_eq!(run_until(&mut c, &mut host, 1000.0), SystemExit::Ended);
+    assert_eq!(host.lines, ["at A", "y 100"]);
+}
