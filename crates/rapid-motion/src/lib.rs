@@ -9,6 +9,7 @@
 pub mod calib;
 pub mod confdata;
 pub mod dynamics;
+pub mod external;
 pub mod frames;
 pub mod kinematics;
 pub mod plan;

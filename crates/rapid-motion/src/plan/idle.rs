@@ -87,6 +87,7 @@ impl super::PlannedMove {
             end_joints: joints,
             spans: Vec::new(),
             mount,
+            eax: None,
         }
     }
 

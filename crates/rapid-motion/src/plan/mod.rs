@@ -55,6 +55,7 @@
 mod corner;
 mod correct;
 mod data;
+mod external;
 mod idle;
 mod limits;
 mod mount;
@@ -71,6 +72,7 @@ pub use mount::Mount;
 pub use sample::{PlannedMove, Sample, DEFAULT_STEP};
 pub use segment::{MoveRequest, Target};
 
+use crate::external::{Eax, ExternalMove};
 use crate::{Joints, Kinematics, MotionError};
 use corner::Corner;
 use orient::OriZone;
@@ -88,6 +90,8 @@ pub struct Planner {
     /// When the pending move starts.
     time: f64,
     pending: Option<Pending>,
+    /// Where the last pushed move leaves the external axes; `None` without any.
+    eax: Option<Eax>,
 }
 
 /// A move pushed but not yet final: it waits for the next move to plan its
@@ -113,7 +117,7 @@ impl Planner {
     /// A planner for a robot standing at `start` at time 0, with the robot's
     /// nominal accelerations (see [`AccelLimits::nominal`]).
     pub fn new(start: Joints, nominal: AccelLimits) -> Self {
-        Planner { nominal, settings: MotionSettings::default(), joints: start, time: 0.0, pending: None }
+        Planner { nominal, settings: MotionSettings::default(), joints: start, time: 0.0, pending: None, eax: None }
     }
 
     /// The settings (AccSet, VelSet, speed override) moves are planned with.
@@ -129,6 +133,17 @@ impl Planner {
     /// The joint values the robot ends at once every pushed move has run.
     pub fn end_joints(&self) -> Joints {
         self.joints
+    }
+
+    /// Where the external axes are once every pushed move has run (`None`: the
+    /// system has none).
+    pub fn end_eax(&self) -> Option<Eax> {
+        self.eax
+    }
+
+    /// The external axes stand at `eax` (at the start, or where a stop left them).
+    pub fn set_eax(&mut self, eax: Option<Eax>) {
+        self.eax = eax;
     }
 
     /// When the move still waiting for its successor starts; with none waiting,
@@ -160,8 +175,22 @@ impl Planner {
         kin: &K,
         request: &MoveRequest,
     ) -> Result<Option<PlannedMove>, MotionError> {
-        let prep = segment::prepare(kin, request, &self.joints, &self.settings, &self.nominal)?;
+        self.push_with(kin, request, None)
+    }
+
+    /// [`Planner::push`] with the external axes' move: they go to `ext.to` along the
+    /// arm's path (see `ExternalMove`).
+    pub fn push_with<K: Kinematics + ?Sized>(
+        &mut self,
+        kin: &K,
+        request: &MoveRequest,
+        ext: Option<&ExternalMove>,
+    ) -> Result<Option<PlannedMove>, MotionError> {
+        let prep = segment::prepare(kin, request, &self.joints, &self.settings, &self.nominal, ext)?;
         self.joints = prep.end_joints;
+        if let Some(ext) = ext {
+            self.eax = Some(ext.to);
+        }
         let Some(pending) = self.pending.take() else {
             self.pending = Some(Pending { prep, s_start: 0.0, v_start: 0.0, ori_in: None });
             return Ok(None);
@@ -170,6 +199,7 @@ impl Planner {
         // between the entry and exit velocities, motion.md §4.2); the
         // controller's own speed inside the corner is not published.
         let blend = corner::corner(kin, &pending.prep, &prep).and_then(|c| corner_speeds(&pending, c, &prep));
+        let blend = blend.map(|b| Blend { eax_out: external::at_start_of(&prep, b.corner.s_out), ..b });
         let (planned, handover) = self.finalize(&pending, blend);
         self.pending = Some(match handover {
             Some(h) => Pending { prep, s_start: h.s_out, v_start: h.v_out, ori_in: h.ori },
@@ -190,7 +220,7 @@ impl Planner {
     /// move and where on its path and how fast the next move takes over.
     fn finalize(&mut self, pending: &Pending, blend: Option<Blend>) -> (PlannedMove, Option<Handover>) {
         let limits = &pending.prep.limits;
-        let Some(Blend { corner, v_in, v_out }) = blend else {
+        let Some(Blend { corner, v_in, v_out, eax_out }) = blend else {
             let own = limits.profile(pending.v_start, 0.0, limits.length - pending.s_start);
             return (self.place(pending, own, None), None);
         };
@@ -198,7 +228,7 @@ impl Planner {
         let own = limits.profile(pending.v_start, v_in, own_len);
         let (rate_in, rate_out) = corner.path.rates(v_in * corner.scale_in, v_out * corner.scale_out);
         let handover = Handover { s_out: corner.s_out, v_out, ori: corner.path.ori_zone() };
-        (self.place(pending, own, Some((corner, Profile::blend(rate_in, rate_out)))), Some(handover))
+        (self.place(pending, own, Some((corner, Profile::blend(rate_in, rate_out), eax_out))), Some(handover))
     }
 
     /// The waiting move as it would be if it stopped at its point: until it starts
@@ -216,26 +246,30 @@ impl Planner {
 
     /// Lays the move's own profile and its corner's out on the time axis from
     /// the planner's clock, which then moves on to the move's end.
-    fn place(&mut self, pending: &Pending, own: Profile, corner: Option<(Corner, Profile)>) -> PlannedMove {
+    fn place(&mut self, pending: &Pending, own: Profile, corner: Option<CornerPlan>) -> PlannedMove {
         let planned = self.lay_out(pending, own, corner);
         self.time = planned.end;
         planned
     }
 
     /// The move laid out on the time axis from the planner's clock.
-    fn lay_out(&self, pending: &Pending, own: Profile, corner: Option<(Corner, Profile)>) -> PlannedMove {
+    fn lay_out(&self, pending: &Pending, own: Profile, corner: Option<CornerPlan>) -> PlannedMove {
         let prep = &pending.prep;
         let start = self.time;
         let s0 = pending.s_start;
         let seeds = prep.seeds.iter().map(|(s, q)| (s - s0, *q)).collect();
-        let ori_out = corner.as_ref().and_then(|(c, _)| c.path.ori_zone());
+        let ori_out = corner.as_ref().and_then(|(c, _, _)| c.path.ori_zone());
+        let mut eax = prep.eax.map(|ext| external::EaxTrack { ext, length: prep.limits.length, corner: None });
         let piece = Piece::Own { geom: prep.geom.clone(), s0, ori_in: pending.ori_in, ori_out };
         let zone_entry = start + own.duration;
         let mut spans = vec![Span { piece, t0: start, seeds, profile: own }];
         let (mut end, mut corner_time, mut zone) = (zone_entry, 0.0, 0.0);
         match corner {
-            Some((c, profile)) => {
+            Some((c, profile, eax_out)) => {
                 (corner_time, zone) = (profile.duration, c.zone);
+                if let Some(track) = &mut eax {
+                    track.corner = eax_out.map(|out| (track.at(c.s_in), out));
+                }
                 end += corner_time;
                 spans.push(Span { piece: Piece::Corner(c.path), t0: zone_entry, seeds: c.seeds, profile });
             }
@@ -252,6 +286,7 @@ impl Planner {
             end_joints: prep.end_joints,
             spans,
             mount: prep.mount,
+            eax,
         }
     }
 }
@@ -262,7 +297,12 @@ struct Blend {
     corner: Corner,
     v_in: f64,
     v_out: f64,
+    /// The external axes where the corner joins the next move.
+    eax_out: Option<Eax>,
 }
+
+/// A corner laid out: its path, its speed profile and the external axes at its exit.
+type CornerPlan = (Corner, Profile, Option<Eax>);
 
 /// The speeds at a corner's entry and exit, or `None` when the corner would be
 /// walked at no speed at all (the move then stops instead).
@@ -278,5 +318,5 @@ fn corner_speeds(pending: &Pending, c: Corner, next: &Prepared) -> Option<Blend>
     // able to stop within what is left of it.
     let left = (next.limits.length - c.s_out).max(0.0);
     let v_out = next.limits.cap.min(c.cap / c.scale_out).min((2.0 * next.limits.dec * left).sqrt());
-    (v_in + v_out > 1e-9).then_some(Blend { corner: c, v_in, v_out })
+    (v_in + v_out > 1e-9).then_some(Blend { corner: c, v_in, v_out, eax_out: None })
 }

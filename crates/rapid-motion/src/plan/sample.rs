@@ -39,6 +39,8 @@ pub struct PlannedMove {
     pub end_joints: Joints,
     pub(crate) spans: Vec<Span>,
     pub(crate) mount: super::Mount,
+    /// The external axes' track, when the system has external axes.
+    pub(crate) eax: Option<super::external::EaxTrack>,
 }
 
 /// The robot at one instant.

@@ -9,6 +9,7 @@ use super::limits::AccelLimits;
 use super::mount::Mount;
 use super::path::{Geometry, Metric, OriLerp, OriMode, Point, EPS_DEG, EPS_TCP};
 use super::profile::{PieceLimits, EPS_LEN};
+use crate::external::ExternalMove;
 use crate::{Joints, Kinematics, MotionError, Pose};
 
 /// Where a move goes and how it interpolates.
@@ -65,6 +66,8 @@ pub(crate) struct Prepared {
     /// The accelerations this move was planned with (AccSet applied).
     pub(crate) accel: AccelLimits,
     pub(crate) max_speeds: [f64; 6],
+    /// The external axes' move, when the system has external axes.
+    pub(crate) eax: Option<ExternalMove>,
 }
 
 /// Most IK samples taken along one path to find its axis-speed limit.
@@ -77,6 +80,7 @@ pub(crate) fn prepare<K: Kinematics + ?Sized>(
     start: &Joints,
     settings: &MotionSettings,
     nominal: &AccelLimits,
+    ext: Option<&ExternalMove>,
 ) -> Result<Prepared, MotionError> {
     check_finite(request, start)?;
     // With `\T` the move's time takes the place of the programmed speeds.
@@ -112,6 +116,9 @@ pub(crate) fn prepare<K: Kinematics + ?Sized>(
         }
     };
     prepared.zone = request.zone;
+    if let Some(ext) = ext {
+        super::external::pace(&mut prepared, ext, &speed, settings.acc_factor())?;
+    }
     if let Some(time) = settings.move_time {
         let k = settings.speed_factor();
         if !(time.is_finite() && time > 0.0) || k <= 0.0 {
@@ -194,6 +201,7 @@ impl<K: Kinematics + ?Sized> Ctx<'_, K> {
             room,
             accel: self.accel,
             max_speeds: self.max_speeds,
+            eax: None,
         }
     }
 
