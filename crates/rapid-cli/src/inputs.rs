@@ -11,6 +11,7 @@
 mod backup;
 mod glob;
 mod manifest;
+mod manifest_units;
 mod program_file;
 
 use std::fs;
@@ -24,6 +25,7 @@ use rapid_syntax::Span;
 use rustc_hash::FxHashSet;
 
 pub(crate) use self::backup::TaskFolder;
+pub(crate) use self::manifest_units::TaskUnit;
 use self::program_file::{Entry, ProgramFile};
 
 /// Extensions of RAPID module files, compared without regard to case.
@@ -52,6 +54,8 @@ pub(crate) struct Inputs {
     pub(crate) root: Option<PathBuf>,
     /// The robot model a manifest names (`[system] robot`).
     pub(crate) robot: Option<String>,
+    /// The external units a manifest configures (`[[unit]]`), with their tasks.
+    pub(crate) units: Vec<TaskUnit>,
     /// Which of `modules` are installed shared (one instance for every task).
     pub(crate) shared_modules: Vec<usize>,
     /// Diagnostics found while reading the inputs. Their `file` indexes [`Inputs::table`].
@@ -124,6 +128,7 @@ struct Collector {
     sys: Option<sys::Sys>,
     root: Option<PathBuf>,
     robot: Option<String>,
+    units: Vec<TaskUnit>,
     shared_modules: Vec<usize>,
     /// Diagnostics whose `file` is an index into `configs`.
     config_diagnostics: Vec<Diagnostic>,
@@ -316,6 +321,11 @@ impl Collector {
         self.add_task_ids(&manifest.sys);
         self.root = Some(manifest.root.clone());
         self.robot = manifest.robot.clone();
+        self.units = manifest.units.clone();
+        // Each unit is known to programs by its name, a mecunit (ActUnit TRACK).
+        self.predefined.extend(
+            self.units.iter().map(|u| PredefinedData { name: u.unit.name.clone(), type_name: "mecunit".to_owned() }),
+        );
         let wanted = match &self.wanted_task {
             Some(name) => manifest.sys.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(name)),
             None => (!manifest.sys.tasks.is_empty()).then_some(0),
@@ -457,6 +467,7 @@ impl Collector {
             sys: self.sys,
             root: self.root,
             robot: self.robot,
+            units: self.units,
             shared_modules: self.shared_modules,
             diagnostics,
             rank,

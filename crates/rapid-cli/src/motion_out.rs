@@ -61,6 +61,23 @@ pub(crate) fn configure(robot: &mut RobotState, model: &'static rapid_motion::Ro
     }
 }
 
+/// Gives the robot the external units configured for its task: those naming it, and
+/// for the first motion task those naming none. `task` is `None` when the run has one
+/// task only (every unit is its).
+pub(crate) fn configure_units(
+    robot: &mut RobotState,
+    units: &[crate::inputs::TaskUnit],
+    task: Option<&str>,
+    first_motion: bool,
+) {
+    let mine = units.iter().filter(|u| match (&u.task, task) {
+        (_, None) => true,
+        (Some(named), Some(task)) => named.eq_ignore_ascii_case(task),
+        (None, Some(_)) => first_motion,
+    });
+    robot.configure_external(mine.map(|u| u.unit.clone()).collect());
+}
+
 /// After the run: the robot finishes its last move; the cycle time (program and
 /// motion, whichever ends later) is printed unless `--quiet`, and returned.
 pub(crate) fn finish(
@@ -279,12 +296,15 @@ fn write_trace(robot: &RobotState, places: &[String], path: &Path, sample_ms: f6
     // Each move's place once, quoted for the format.
     let quoted: Vec<String> = places.iter().map(|p| if json { json_string(p) } else { csv_field(p) }).collect();
     let empty = if json { "\"\"".to_string() } else { String::new() };
-    let head = if json { json_head(robot, sample_ms) } else { TRACE_COLUMNS.join(",") + "\n" };
+    let ext = external_columns(robot);
+    let columns = trace_columns(&ext);
+    let head = if json { json_head(robot, sample_ms, &columns) } else { columns.join(",") + "\n" };
     crate::save::write_new_with(path, |file| {
         let mut out = head;
         let moves: &[PlannedMove] = robot.recorded.as_deref().unwrap_or(&[]);
         let mut cursor = FactsCursor::new(&robot.recorded_facts);
         let mut rows = 0;
+        let mut last_eax = robot.external.start();
         for planned in moves {
             let mount = planned.tool();
             for sample in planned.samples(&robot.kin, step) {
@@ -300,6 +320,12 @@ fn write_trace(robot: &RobotState, places: &[String], path: &Path, sample_ms: f6
                 }
                 for (value, decimals) in row_numbers(&point, time_decimals) {
                     push_number(&mut out, value, decimals, json);
+                    out.push(',');
+                }
+                // A pause of the path keeps the axes where they were.
+                last_eax = planned.eax_at(sample.time).unwrap_or(last_eax);
+                for &(j, _) in &ext {
+                    push_number(&mut out, last_eax[j], 3, json);
                     out.push(',');
                 }
                 out.push_str(point.facts.and_then(|i| quoted.get(i)).unwrap_or(&empty));
@@ -322,9 +348,34 @@ fn write_trace(robot: &RobotState, places: &[String], path: &Path, sample_ms: f6
 /// Bytes of trace text gathered before they go to the file.
 const TRACE_CHUNK: usize = 1 << 16;
 
+/// The external axes the trace shows after `tcp_speed`: (extjoint index, column name),
+/// in `eax_a` … `eax_f` order.
+fn external_columns(robot: &RobotState) -> Vec<(usize, String)> {
+    let mut axes: Vec<(usize, String)> = robot
+        .external
+        .units
+        .iter()
+        .flat_map(|u| &u.unit.axes)
+        .map(|a| (a.index(), format!("eax_{}", char::from(b'a' + a.index() as u8))))
+        .collect();
+    axes.sort();
+    axes
+}
+
+/// The trace's columns: [`TRACE_COLUMNS`] with the external axes before `line`.
+fn trace_columns(ext: &[(usize, String)]) -> Vec<String> {
+    let (line, numbers) = TRACE_COLUMNS.split_last().expect("the columns end in line");
+    numbers
+        .iter()
+        .map(|c| c.to_string())
+        .chain(ext.iter().map(|(_, name)| name.clone()))
+        .chain([line.to_string()])
+        .collect()
+}
+
 /// The JSON trace up to its first row: what was traced, and the columns.
-fn json_head(robot: &RobotState, sample_ms: f64) -> String {
-    let columns: Vec<String> = TRACE_COLUMNS.iter().map(|c| json_string(c)).collect();
+fn json_head(robot: &RobotState, sample_ms: f64, columns: &[String]) -> String {
+    let columns: Vec<String> = columns.iter().map(|c| json_string(c)).collect();
     format!(
         "{{\"robot\":{},\"sample_ms\":{},\"columns\":[{}],\"rows\":[",
         json_string(robot.model.name),

@@ -76,3 +76,15 @@ impl ExternalMove {
         (0..6).map(|j| (j, (self.to[j] - self.from[j]).abs())).filter(|&(_, d)| d > 1e-9)
     }
 }
+
+/// A mechanical unit of external axes (MOC.cfg `MECHANICAL_UNIT`, or a manifest's
+/// `[[unit]]`): a track, a positioner.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExternalUnit {
+    pub name: String,
+    pub axes: Vec<ExternalAxis>,
+    /// Active when the system starts (`-activate_at_start_up`).
+    pub active_at_start: bool,
+    /// DeactUnit is refused (`-deactivation_forbidden`).
+    pub deactivation_forbidden: bool,
+}

@@ -9,13 +9,7 @@ use rapid_motion::{default_model, Joints, MotionError, Pose};
 const SETTLE: f64 = 0.05;
 
 fn track(from: f64, to: f64) -> ExternalMove {
-    let mut ext = ExternalMove {
-        from: [0.0; 6],
-        to: [0.0; 6],
-        max_speed: [0.0; 6],
-        acc: [0.0; 6],
-        linear: [false; 6],
-    };
+    let mut ext = ExternalMove { from: [0.0; 6], to: [0.0; 6], max_speed: [0.0; 6], acc: [0.0; 6], linear: [false; 6] };
     (ext.from[0], ext.to[0], ext.max_speed[0], ext.acc[0], ext.linear[0]) = (from, to, 1000.0, 1000.0 / 0.15, true);
     ext
 }

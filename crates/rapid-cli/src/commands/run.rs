@@ -62,6 +62,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         }
     };
     crate::motion_out::configure(&mut loaded.vm.resources_mut().robot, model, args);
+    crate::motion_out::configure_units(&mut loaded.vm.resources_mut().robot, &inputs.units, None, true);
     let answers = pendant_answers(args)?;
     let mut host = StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers };
     let task_name = inputs.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();

@@ -92,9 +92,14 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
                 return Ok(ExitStatus::Error);
             }
         };
+    let units = tasks[0].inputs.units.clone();
+    let mut first_motion = true;
     for (spec, program) in &mut loaded {
         if spec.motion {
-            crate::motion_out::configure(&mut program.vm.resources_mut().robot, model, args);
+            let robot = &mut program.vm.resources_mut().robot;
+            crate::motion_out::configure(robot, model, args);
+            crate::motion_out::configure_units(robot, &units, Some(&spec.name), first_motion);
+            first_motion = false;
         }
     }
     let mut controller = match Controller::new(loaded, io) {

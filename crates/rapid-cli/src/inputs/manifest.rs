@@ -67,6 +67,8 @@ pub(crate) struct Manifest {
     /// `[system] name` and `robot`, kept for the motion issue.
     pub(crate) name: Option<String>,
     pub(crate) robot: Option<String>,
+    /// `[[unit]]`: external mechanical units and the tasks they belong to.
+    pub(crate) units: Vec<super::manifest_units::TaskUnit>,
     pub(crate) findings: Vec<Finding>,
 }
 
@@ -76,6 +78,8 @@ struct RawManifest {
     system: Option<RawSystem>,
     #[serde(default)]
     task: Vec<Spanned<RawTask>>,
+    #[serde(default)]
+    unit: Vec<Spanned<super::manifest_units::RawUnit>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -159,6 +163,22 @@ impl Reader<'_> {
             self.task(idx, task.get_ref(), line);
         }
         self.foregrounds(&raw.task);
+        self.units(&raw.unit);
+    }
+
+    /// `[[unit]]`: each unit's task must be a motion task of the manifest.
+    fn units(&mut self, raw: &[Spanned<super::manifest_units::RawUnit>]) {
+        let mut found = Vec::new();
+        let units = super::manifest_units::read(raw, &mut |span, message| found.push(Finding { span, message }));
+        for (unit, spanned) in units.iter().zip(raw) {
+            let Some(task) = &unit.task else { continue };
+            if !self.manifest.sys.tasks.iter().any(|t| t.name.eq_ignore_ascii_case(task) && t.motion_task) {
+                let message = format!("unit `{}`: `{task}` is no motion task of this manifest", unit.unit.name);
+                found.push(Finding { span: spanned.span(), message });
+            }
+        }
+        self.manifest.findings.extend(found);
+        self.manifest.units = units;
     }
 
     fn system(&mut self, system: RawSystem) {
@@ -412,7 +432,7 @@ fn task_type(text: &str) -> Option<TaskType> {
 }
 
 /// Why `name` cannot be a RAPID identifier (task names become `<name>Id` taskid data).
-fn identifier_problem(name: &str) -> Option<&'static str> {
+pub(super) fn identifier_problem(name: &str) -> Option<&'static str> {
     let mut chars = name.chars();
     match chars.next() {
         None => return Some("is empty"),

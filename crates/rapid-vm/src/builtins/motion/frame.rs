@@ -124,13 +124,15 @@ pub(super) fn with_frame(like: &Value, frame: &Isometry3<f64>) -> Value {
     with_trans_rot(like, &frame.translation.vector, &q)
 }
 
-/// `like` (a robtarget) with new external axis values.
+/// `like` (a robtarget or a jointtarget, whose last field is `extax`) with new
+/// external axis values.
 pub(super) fn with_extax(like: &Value, extax: &[f64; 6]) -> Value {
     let Value::Record(record) = like else { return like.clone() };
     let mut record = record.clone();
     let fields = &mut Rc::make_mut(&mut record).fields;
-    if fields.len() == 4 {
-        fields[3] = with_numbers(&fields[3], extax);
+    if matches!(fields.len(), 2 | 4) {
+        let last = fields.len() - 1;
+        fields[last] = with_numbers(&fields[last], extax);
     }
     Value::Record(record)
 }

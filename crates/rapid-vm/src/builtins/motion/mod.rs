@@ -12,6 +12,7 @@
 mod calib;
 pub mod corr;
 mod data;
+pub mod extax;
 mod fit;
 mod frame;
 pub mod indep;
@@ -82,6 +83,7 @@ pub(super) static ENTRIES: Entries = &[
     ("MoveL", moves::move_l),
     ("MoveC", moves::move_c),
     ("MoveAbsJ", moves::move_abs_j),
+    ("MoveExtJ", extax::move_ext_j),
     ("WaitRob", moves::wait_rob),
     ("CJointT", readback::c_joint_t),
     ("CRobT", readback::c_rob_t),

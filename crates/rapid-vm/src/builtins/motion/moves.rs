@@ -31,6 +31,19 @@ pub(super) struct Layout {
     pub(super) tool: usize,
     pub(super) wobj: usize,
     pub(super) corr: Option<usize>,
+    /// Whether the external axis offsets (EOffs) apply to the target.
+    pub(super) eoffs: EOffsRule,
+}
+
+/// When EOffsOn/EOffsSet offsets move a target's external axes.
+#[derive(Debug, Clone, Copy)]
+pub(super) enum EOffsRule {
+    /// Always (moves to robtargets).
+    Always,
+    /// Unless the switch at this place is given (MoveAbsJ `\NoEOffs`).
+    Unless(usize),
+    /// Only when the switch at this place is given (MoveExtJ `\UseEOffs`).
+    Only(usize),
 }
 
 const MOVE_J: Layout = Layout {
@@ -47,6 +60,7 @@ const MOVE_J: Layout = Layout {
     tool: 9,
     wobj: 10,
     corr: None,
+    eoffs: EOffsRule::Always,
 };
 const MOVE_L: Layout = Layout { corr: Some(11), ..MOVE_J };
 const MOVE_C: Layout = Layout {
@@ -63,6 +77,7 @@ const MOVE_C: Layout = Layout {
     tool: 10,
     wobj: 11,
     corr: Some(12),
+    eoffs: EOffsRule::Always,
 };
 /// No such argument (the `Move*DO/AO/GO` family has no `\Conc`, `\V`, `\Z`, `\Inpos`).
 pub(super) const NONE: usize = usize::MAX;
@@ -81,11 +96,12 @@ const MOVE_X_IO: Layout = Layout {
     tool: 5,
     wobj: 6,
     corr: None,
+    eoffs: EOffsRule::Always,
 };
 /// MoveCDO/MoveCAO/MoveCGO: CirPoint first.
 const MOVE_C_IO: Layout = Layout { cir: Some(0), to: 1, id: 2, speed: 3, t: 4, zone: 5, tool: 6, wobj: 7, ..MOVE_X_IO };
 
-/// MoveAbsJ has `\NoEOffs` at 3 (no external axes here, so it changes nothing).
+/// MoveAbsJ has `\NoEOffs` at 3.
 const MOVE_ABS_J: Layout = Layout {
     conc: 0,
     cir: None,
@@ -100,6 +116,7 @@ const MOVE_ABS_J: Layout = Layout {
     tool: 10,
     wobj: 11,
     corr: None,
+    eoffs: EOffsRule::Unless(3),
 };
 
 /// The controller's motion errors: execution stops (they are not program errors an
@@ -194,7 +211,7 @@ pub(super) fn require_motion_task(ctx: &Ctx<'_>) -> Result<(), RapidError> {
 
 /// Plans the move (with the events it fires on its path) and makes the program wait
 /// until it may go on.
-fn go_with(
+pub(super) fn go_with(
     ctx: &mut Ctx<'_>,
     args: &[Value],
     layout: &Layout,
@@ -219,6 +236,7 @@ fn go_with(
     }
     let (tool, held_object) = mount_of(&chain);
     let request = MoveRequest { target, speed, zone, tool, held_object };
+    let external = external_target(ctx, args, layout)?;
     // Synchronized movement: the moves of one `\ID` in all tasks take the same time.
     match crate::builtins::syncmove::coordinate(ctx, args.get(layout.id), &request, &settings)? {
         crate::builtins::syncmove::Coordination::Alone => {}
@@ -230,6 +248,7 @@ fn go_with(
     let conc = present(args.get(layout.conc));
     let robot = &mut ctx.resources.robot;
     robot.set_settings(settings);
+    robot.next_external = external;
     // `\Corr`: the path follows the corrections of the connected generators.
     robot.corr.next = layout.corr.is_some_and(|c| present(args.get(c)));
     let mut resume = robot.push(now, &request, conc, events).map_err(motion_error)?;
@@ -247,12 +266,37 @@ fn go_with(
         return Err(RapidError::fatal("world zone: the robot would enter a WZLimSup zone; it stops before it"));
     }
     // The move's tool and work object become the active ones (CTool, CWObj, GetSysData).
-    crate::builtins::controller::sysdata::activate_arg(ctx, &args[layout.tool], layout.tool, 0);
+    if let Some(tool) = args.get(layout.tool) {
+        crate::builtins::controller::sysdata::activate_arg(ctx, tool, layout.tool, 0);
+    }
     if present(args.get(layout.wobj)) {
         crate::builtins::controller::sysdata::activate_arg(ctx, &args[layout.wobj], layout.wobj, 1);
     }
     wait_for_robot(ctx, resume);
     Ok(None)
+}
+
+/// The external axes' part of the move to the target at `layout.to` (a robtarget's or
+/// jointtarget's `extax`, its last field), with the offsets the layout's rule allows.
+fn external_target(
+    ctx: &Ctx<'_>,
+    args: &[Value],
+    layout: &Layout,
+) -> Result<Option<rapid_motion::external::ExternalMove>, RapidError> {
+    if !ctx.resources.robot.external.any() {
+        return Ok(None);
+    }
+    let target = ctx.value(&args[layout.to])?;
+    let Value::Record(record) = &target else { return Err(RapidError::fatal("a move target is no record")) };
+    let Some(extax) = record.fields.last() else { return Err(RapidError::fatal("a move target has no extax")) };
+    let values = super::frame::extjoint(ctx, extax)?;
+    let use_offsets = match layout.eoffs {
+        EOffsRule::Always => true,
+        EOffsRule::Unless(switch) => !present(args.get(switch)),
+        EOffsRule::Only(switch) => present(args.get(switch)),
+    };
+    let offsets = use_offsets.then_some(ctx.resources.motion.settings.eoffs);
+    ctx.resources.robot.external_move(&values, offsets.as_ref()).map_err(motion_error)
 }
 
 /// The program waits for the robot until `resume`.

@@ -70,7 +70,9 @@ pub(crate) fn c_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         Some(None) => return Ok(Some(data::jointtarget_value(ctx, &[0.0; 6])?)),
         None => {
             let now = ctx.time;
-            ctx.resources.robot.joints_at(now)
+            let joints = ctx.resources.robot.joints_at(now);
+            let extax = ctx.resources.robot.extax_read(now);
+            return Ok(Some(super::frame::with_extax(&data::jointtarget_value(ctx, &joints)?, &extax)));
         }
     };
     Ok(Some(data::jointtarget_value(ctx, &joints)?))
@@ -81,6 +83,7 @@ pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let other = robot_of(ctx, args)?;
     let mut chain = read_frames(ctx, args.get(2), args.get(3))?;
     let now = ctx.time;
+    let own = other.is_none();
     let joints = match other {
         // The other task's active frames stand in for the arguments not given.
         Some(Some((joints, frames))) => {
@@ -95,7 +98,8 @@ pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let robot = &mut ctx.resources.robot;
     let pose = chain.target_of(&robot.kin.forward(&joints));
     let conf = confdata_of(&robot.kin, &joints);
-    Ok(Some(data::robtarget_value(ctx, &pose, conf)?))
+    let extax = if own { robot.extax_read(now) } else { [super::extax::UNUSED; 6] };
+    Ok(Some(super::frame::with_extax(&data::robtarget_value(ctx, &pose, conf)?, &extax)))
 }
 
 /// `CPos([\Tool] [\WObj])`: the TCP's position now.
@@ -109,11 +113,14 @@ pub(crate) fn c_pos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 }
 
 /// `CalcRobT(Joint_target, Tool [\WObj])`: the robtarget of axis values.
+// The external axis values are carried over unchanged.
 pub(crate) fn calc_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let joints = data::jointtarget(ctx, &ctx.value(&args[0])?)?;
+    let target = ctx.value(&args[0])?;
+    let joints = data::jointtarget(ctx, &target)?;
     let chain = read_frames(ctx, args.get(1), args.get(2))?;
     let (pose, conf) = chain.robtarget_of(&ctx.resources.robot.kin, &joints);
-    Ok(Some(data::robtarget_value(ctx, &pose, conf)?))
+    let extax = target_extax(ctx, &target)?;
+    Ok(Some(super::frame::with_extax(&data::robtarget_value(ctx, &pose, conf)?, &extax)))
 }
 
 /// `CalcJointT([\UseCurWObjPos] Rob_target, Tool [\WObj] [\ErrorNumber])`: the axis
@@ -122,8 +129,11 @@ pub(crate) fn calc_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// configuration cannot; with `\ErrorNumber` the number goes there instead and the
 /// current axis values are returned.
 // uncertain: what CalcJointT returns when it stores the error in \ErrorNumber.
+// The external axis values are carried over unchanged.
 pub(crate) fn calc_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (pose, conf) = data::robtarget(ctx, &ctx.value(&args[1])?)?;
+    let target = ctx.value(&args[1])?;
+    let (pose, conf) = data::robtarget(ctx, &target)?;
+    let extax = target_extax(ctx, &target)?;
     let chain = read_frames(ctx, args.get(2), args.get(3))?;
     let now = ctx.time;
     let seed = ctx.resources.robot.joints_at(now);
@@ -133,7 +143,7 @@ pub(crate) fn calc_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         ctx.store(var, Value::Num(0.0))?;
     }
     let err = match found {
-        Ok(joints) => return Ok(Some(data::jointtarget_value(ctx, &joints)?)),
+        Ok(joints) => return Ok(Some(super::frame::with_extax(&data::jointtarget_value(ctx, &joints)?, &extax))),
         Err(MotionError::OutOfReach) => ctx.error(Err::OutsideReach, "the robtarget is outside the robot's reach"),
         Err(other) => ctx.error(Err::RobLimit, format!("the robtarget cannot be reached: {other}")),
     };
@@ -170,11 +180,15 @@ pub(crate) fn pdisp_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 }
 
 /// `EOffsOn [\ExeP] ProgPoint`: external axis offsets that carry ProgPoint's axes onto
-/// ExeP's (or the current ones); an axis unused in either (9E9) gets no offset. This
-/// robot has no external axes, so without ExeP every offset is 0.
+/// ExeP's (or where the axes are now); an axis unused in either (9E9), or one the
+/// system does not have, gets no offset.
 pub(crate) fn eoffs_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let prog = extax(ctx, &ctx.value(&args[1])?)?;
-    let actual = if present(args.first()) { extax(ctx, &ctx.value(&args[0])?)? } else { [data::UNUSED_AXIS; 6] };
+    let now = ctx.time;
+    let actual = match present(args.first()) {
+        true => extax(ctx, &ctx.value(&args[0])?)?,
+        false => ctx.resources.robot.extax_read(now),
+    };
     let mut offsets = [0.0; 6];
     for ((offset, p), a) in offsets.iter_mut().zip(prog).zip(actual) {
         if p < 8.9e9 && a < 8.9e9 {
@@ -182,6 +196,16 @@ pub(crate) fn eoffs_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         }
     }
     super::settings::set_eoffs(ctx, offsets)
+}
+
+/// A robtarget's or jointtarget's external axis values (its last field).
+fn target_extax(ctx: &Ctx<'_>, target: &Value) -> Result<[f64; 6], RapidError> {
+    match target {
+        Value::Record(r) if matches!(r.fields.len(), 2 | 4) => {
+            super::frame::extjoint(ctx, &r.fields[r.fields.len() - 1])
+        }
+        _ => Err(ctx.error(Err::ArgValue, "a robtarget or jointtarget was expected")),
+    }
 }
 
 /// A robtarget's external axis values.

@@ -166,6 +166,11 @@ pub struct RobotState {
     /// Path correction: the generators, the total correction's time line, the moves
     /// made with `\Corr`.
     pub corr: super::corr::CorrState,
+    /// The task's external units (none unless the configuration gives some).
+    pub external: super::extax::ExternalUnits,
+    /// The external axes' part of the next move given (set by the move instruction
+    /// just before [`RobotState::push`]).
+    pub(super) next_external: Option<rapid_motion::external::ExternalMove>,
 }
 
 impl Default for RobotState {
@@ -209,6 +214,8 @@ impl RobotState {
             path_rec: super::recorder::Recorder::default(),
             trigg: Default::default(),
             corr: Default::default(),
+            external: Default::default(),
+            next_external: None,
         }
     }
 
@@ -253,7 +260,8 @@ impl RobotState {
             self.corr.pending = false;
         }
         let from = self.planner.end_joints();
-        let done = self.planner.push(&self.kin, request)?;
+        let external = self.next_external.take();
+        let done = self.planner.push_with(&self.kin, request, external.as_ref())?;
         if self.stored.is_none() {
             // Only the base path is recorded; level 2's moves (and the recorder's own) are not.
             self.path_rec.note(from, request);
@@ -511,7 +519,9 @@ impl RobotState {
         self.corr.stop_at(t);
         let joints = self.ahead.back().map_or_else(|| self.planner.end_joints(), |m| m.end_joints);
         self.motion_end = self.ahead.back().map_or(t, |m| m.end);
+        let eax = self.ahead.back().and_then(|m| m.eax_end()).or(self.planner.end_eax());
         self.planner.restart_from(joints, self.motion_end);
+        self.planner.set_eax(eax);
         joints
     }
 
@@ -550,7 +560,8 @@ impl RobotState {
                 } else {
                     let mut done = planned.clone();
                     done.cut_at(kin, since);
-                    let stand = PlannedMove::standing(done.end_joints, planned.tool(), since, since + dt);
+                    let mut stand = PlannedMove::standing(done.end_joints, planned.tool(), since, since + dt);
+                    stand.hold_eax(done.eax_end());
                     planned.shift(dt);
                     // The rest goes on from where the robot stopped: the part done before
                     // the stop is `done`'s, not to be walked (or traced) again.

@@ -2,7 +2,7 @@
 //! (Trigg_1 or every element of TriggArray, and T2 … T8).
 
 use super::super::super::{present, Ctx};
-use super::super::moves::{abs_joint_move, circular_move, joint_move, linear_move, Layout, NONE};
+use super::super::moves::{abs_joint_move, circular_move, joint_move, linear_move, EOffsRule, Layout, NONE};
 use super::super::robot::{Action, PathEvent};
 use super::{value_after_orders, Res, Special};
 use crate::errnames::Err;
@@ -81,6 +81,7 @@ const TRIGG_L: Layout = Layout {
     tool: 16,
     wobj: 17,
     corr: Some(18),
+    eoffs: EOffsRule::Always,
 };
 const TRIGG_J: Layout = Layout { corr: None, ..TRIGG_L };
 const TRIGG_C: Layout = Layout {
@@ -96,9 +97,20 @@ const TRIGG_C: Layout = Layout {
     corr: Some(19),
     ..TRIGG_L
 };
-/// TriggAbsJ: `\NoEOffs` at 3 (no external axes here, so it changes nothing).
-const TRIGG_ABS_J: Layout =
-    Layout { to: 1, id: 2, speed: 4, t: 5, zone: 15, inpos: 16, tool: 17, wobj: 18, corr: None, ..TRIGG_L };
+/// TriggAbsJ: `\NoEOffs` at 3.
+const TRIGG_ABS_J: Layout = Layout {
+    to: 1,
+    id: 2,
+    speed: 4,
+    t: 5,
+    zone: 15,
+    inpos: 16,
+    tool: 17,
+    wobj: 18,
+    corr: None,
+    eoffs: EOffsRule::Unless(3),
+    ..TRIGG_L
+};
 
 /// `TriggL`: MoveL firing its triggers.
 pub(crate) fn trigg_l(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {

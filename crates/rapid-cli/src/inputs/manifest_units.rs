@@ -1,0 +1,124 @@
+//! `[[unit]]` tables of `rapid.toml`: the external mechanical units (a track, a
+//! positioner) a motion task moves besides its arm, as a backup's MOC.cfg would
+//! configure them. See docs/manifest.md.
+
+use std::ops::Range;
+
+use rapid_motion::external::{ExternalAxis, ExternalUnit};
+use serde::Deserialize;
+use toml::Spanned;
+
+/// Every axis reaches its highest speed in this time unless the manifest gives an
+/// acceleration (the arm's axes are modelled the same way).
+// uncertain: ABB derives accelerations from the unit's dynamic model; not public.
+const RAMP_TIME: f64 = 0.15;
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawUnit {
+    name: Spanned<String>,
+    task: Option<Spanned<String>>,
+    active: Option<bool>,
+    deactivation_forbidden: Option<bool>,
+    #[serde(default)]
+    axis: Vec<Spanned<RawAxis>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawAxis {
+    logical: Spanned<i64>,
+    #[serde(rename = "type")]
+    kind: Spanned<String>,
+    min: Spanned<f64>,
+    max: Spanned<f64>,
+    speed: Spanned<f64>,
+    acceleration: Option<Spanned<f64>>,
+    start: Option<Spanned<f64>>,
+}
+
+/// A unit read from the manifest and the task it belongs to (`None`: the first
+/// motion task).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct TaskUnit {
+    pub(crate) task: Option<String>,
+    pub(crate) unit: ExternalUnit,
+}
+
+/// Reads the units, reporting each problem with its place through `find`.
+pub(super) fn read(raw: &[Spanned<RawUnit>], find: &mut dyn FnMut(Range<usize>, String)) -> Vec<TaskUnit> {
+    let mut units: Vec<TaskUnit> = Vec::new();
+    for spanned in raw {
+        let raw = spanned.get_ref();
+        let name = raw.name.get_ref().clone();
+        if let Some(why) = super::manifest::identifier_problem(&name) {
+            find(raw.name.span(), format!("unit name `{name}` {why}"));
+        }
+        if units.iter().any(|u| u.unit.name.eq_ignore_ascii_case(&name)) {
+            find(raw.name.span(), format!("unit `{name}` is configured twice"));
+        }
+        if name.to_ascii_uppercase().starts_with("ROB_") {
+            find(raw.name.span(), format!("unit name `{name}`: ROB_n names the robots"));
+        }
+        if raw.axis.is_empty() {
+            find(spanned.span(), format!("unit `{name}` has no `[[unit.axis]]`"));
+        }
+        let task = raw.task.as_ref().map(|t| t.get_ref().clone());
+        let axes: Vec<ExternalAxis> = raw.axis.iter().filter_map(|a| axis(&name, a.get_ref(), find)).collect();
+        for a in &axes {
+            let clash =
+                units.iter().filter(|u| u.task == task).flat_map(|u| &u.unit.axes).any(|b| b.logical == a.logical);
+            if clash || axes.iter().filter(|b| b.logical == a.logical).count() > 1 {
+                find(spanned.span(), format!("unit `{name}`: logical axis {} is configured twice", a.logical));
+            }
+        }
+        let unit = ExternalUnit {
+            name,
+            axes,
+            active_at_start: raw.active.unwrap_or(true),
+            deactivation_forbidden: raw.deactivation_forbidden.unwrap_or(false),
+        };
+        units.push(TaskUnit { task, unit });
+    }
+    units
+}
+
+/// One axis, or `None` (with findings) when it cannot be used.
+fn axis(unit: &str, raw: &RawAxis, find: &mut dyn FnMut(Range<usize>, String)) -> Option<ExternalAxis> {
+    let mut ok = true;
+    let logical = *raw.logical.get_ref();
+    if !(7..=12).contains(&logical) {
+        find(raw.logical.span(), format!("unit `{unit}`: logical axis {logical} is not 7 … 12 (eax_a … eax_f)"));
+        ok = false;
+    }
+    let linear = match raw.kind.get_ref().to_ascii_lowercase().as_str() {
+        "linear" => true,
+        "rotating" => false,
+        other => {
+            find(raw.kind.span(), format!("unit `{unit}`: unknown axis type `{other}` (linear or rotating)"));
+            ok = false;
+            true
+        }
+    };
+    let (min, max) = (*raw.min.get_ref(), *raw.max.get_ref());
+    if !(min.is_finite() && max.is_finite() && min < max) {
+        find(raw.max.span(), format!("unit `{unit}`: the working range {min} … {max} is empty"));
+        ok = false;
+    }
+    let speed = *raw.speed.get_ref();
+    if !(speed.is_finite() && speed > 0.0) {
+        find(raw.speed.span(), format!("unit `{unit}`: speed {speed} is not a positive number"));
+        ok = false;
+    }
+    let acc = raw.acceleration.as_ref().map_or(speed / RAMP_TIME, |a| *a.get_ref());
+    if let Some(a) = raw.acceleration.as_ref().filter(|a| !(a.get_ref().is_finite() && *a.get_ref() > 0.0)) {
+        find(a.span(), format!("unit `{unit}`: acceleration {} is not a positive number", a.get_ref()));
+        ok = false;
+    }
+    let start = raw.start.as_ref().map_or(min.max(0.0).min(max), |s| *s.get_ref());
+    if let Some(s) = raw.start.as_ref().filter(|s| !(min..=max).contains(s.get_ref())) {
+        find(s.span(), format!("unit `{unit}`: start {} is outside the working range {min} … {max}", s.get_ref()));
+        ok = false;
+    }
+    ok.then_some(ExternalAxis { logical: logical as u8, linear, min, max, max_speed: speed, acc, start })
+}

@@ -1,0 +1,162 @@
+//! The task's external axes (§2.1 extjoint): the mechanical units besides the arm
+//! that the configuration gives the motion task, which of them are active, and what
+//! a move's `extax` asks of them.
+//!
+//! A target's value for an axis moves it when the axis exists and its unit is active;
+//! values for axes the system does not have are ignored, as on the controller. An
+//! active axis given 9E9 stays where it is.
+// uncertain: the controller's reaction to 9E9 for an active axis is not in our notes;
+// it is taken to leave the axis where it stands.
+
+use rapid_motion::external::{is_unused, Eax, ExternalAxis, ExternalMove, ExternalUnit};
+use rapid_motion::MotionError;
+
+/// A unit and whether it is active now (ActUnit/DeactUnit).
+#[derive(Debug, Clone, PartialEq)]
+pub struct UnitState {
+    pub unit: ExternalUnit,
+    pub active: bool,
+}
+
+/// The external units of a motion task.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct ExternalUnits {
+    pub units: Vec<UnitState>,
+}
+
+/// What `extjoint` holds for an axis nobody moves: 9E9.
+pub const UNUSED: f64 = 9e9;
+
+impl ExternalUnits {
+    pub fn new(units: Vec<ExternalUnit>) -> ExternalUnits {
+        let units = units.into_iter().map(|unit| UnitState { active: unit.active_at_start, unit }).collect();
+        ExternalUnits { units }
+    }
+
+    /// Whether the task has any external axis.
+    pub fn any(&self) -> bool {
+        self.units.iter().any(|u| !u.unit.axes.is_empty())
+    }
+
+    /// The unit of this name (case as the configuration spells it, compared without).
+    pub fn find(&self, name: &str) -> Option<usize> {
+        self.units.iter().position(|u| u.unit.name.eq_ignore_ascii_case(name))
+    }
+
+    /// The axis at `extjoint` index `j` and whether its unit is active.
+    fn axis(&self, j: usize) -> Option<(&ExternalAxis, bool)> {
+        self.units.iter().find_map(|u| u.unit.axes.iter().find(|a| a.index() == j).map(|a| (a, u.active)))
+    }
+
+    /// Where every axis stands when the system starts (0 for an axis not configured).
+    pub fn start(&self) -> Eax {
+        std::array::from_fn(|j| self.axis(j).map_or(0.0, |(a, _)| a.start))
+    }
+
+    /// The external axes' part of a move from `from` to `target` (an `extjoint`), with
+    /// `offsets` (EOffs) added to the values used. An active axis asked to leave its
+    /// working range is the controller's joint-limit error, with its logical number.
+    pub fn plan(&self, from: Eax, target: &[f64; 6], offsets: Option<&Eax>) -> Result<ExternalMove, MotionError> {
+        let mut ext = ExternalMove { from, to: from, max_speed: [0.0; 6], acc: [0.0; 6], linear: [false; 6] };
+        for j in 0..6 {
+            let Some((axis, true)) = self.axis(j) else { continue };
+            (ext.max_speed[j], ext.acc[j], ext.linear[j]) = (axis.max_speed, axis.acc, axis.linear);
+            if is_unused(target[j]) {
+                continue;
+            }
+            let value = target[j] + offsets.map_or(0.0, |o| o[j]);
+            if !axis.in_range(value) {
+                return Err(MotionError::JointLimit { axis: usize::from(axis.logical) });
+            }
+            ext.to[j] = value;
+        }
+        Ok(ext)
+    }
+
+    /// An `extjoint` as read back (CJointT, CRobT): the axes' values, 9E9 where the
+    /// system has no axis or its unit is not active.
+    // uncertain: a deactivated unit's axes are read as 9E9.
+    pub fn read(&self, at: &Eax) -> [f64; 6] {
+        std::array::from_fn(|j| match self.axis(j) {
+            Some((_, true)) => at[j],
+            _ => UNUSED,
+        })
+    }
+}
+
+impl super::robot::RobotState {
+    /// Gives the robot's task these external units, standing at their start values.
+    pub fn configure_external(&mut self, units: Vec<ExternalUnit>) {
+        self.external = ExternalUnits::new(units);
+        let start = self.external.any().then(|| self.external.start());
+        self.planner.set_eax(start);
+    }
+
+    /// The external axes' part of the next move to `target` (an `extjoint`), or `None`
+    /// when the task has no external axes.
+    pub(super) fn external_move(
+        &self,
+        target: &[f64; 6],
+        offsets: Option<&Eax>,
+    ) -> Result<Option<ExternalMove>, MotionError> {
+        let Some(from) = self.planner.end_eax() else { return Ok(None) };
+        self.external.plan(from, target, offsets).map(Some)
+    }
+
+    /// Where the external axes are at controller time `t` (as `joints_at` for the
+    /// arm), or `None` when the task has none.
+    pub fn eax_at(&mut self, t: f64) -> Option<Eax> {
+        let end = self.planner.end_eax()?;
+        let t = self.pause.as_ref().map_or(t, |p| t.min(p.since));
+        if self.planner.has_pending() && t > self.planner.time() {
+            return self.planner.provisional().and_then(|(planned, _)| planned.eax_at(t)).or(Some(end));
+        }
+        let on = self.ahead.iter().find(|m| t <= m.end);
+        let at = match on {
+            Some(m) => m.eax_at(t.max(m.start)),
+            None => self.ahead.back().and_then(|m| m.eax_end()),
+        };
+        Some(at.unwrap_or(end))
+    }
+
+    /// The `extjoint` read back at time `t`: 9E9 for axes the system lacks.
+    pub fn extax_read(&mut self, t: f64) -> [f64; 6] {
+        match self.eax_at(t) {
+            Some(at) => self.external.read(&at),
+            None => [UNUSED; 6],
+        }
+    }
+}
+
+/// MoveExtJ: `[\Conc] ToJointPos [\ID] [\UseEOffs] Speed [\T] Zone [\Inpos]`.
+const MOVE_EXT_J: super::moves::Layout = super::moves::Layout {
+    conc: 0,
+    cir: None,
+    to: 1,
+    id: 2,
+    speed: 4,
+    v: super::moves::NONE,
+    t: 5,
+    zone: 6,
+    z: super::moves::NONE,
+    inpos: 7,
+    tool: super::moves::NONE,
+    wobj: super::moves::NONE,
+    corr: None,
+    eoffs: super::moves::EOffsRule::Only(3),
+};
+
+/// `MoveExtJ`: the external axes move to ToJointPos's `extax` while the arm stands
+/// (its `robax` is not used); `v_leax`/`v_reax` and the axes' maxima set the pace.
+// uncertain: consecutive MoveExtJ fly-by points are not blended (the arm's corner
+// path has no length to blend over): the axes stop at each point, while the program
+// runs on early as after any fly-by point.
+pub(crate) fn move_ext_j(
+    ctx: &mut crate::builtins::Ctx<'_>,
+    args: &[crate::value::Value],
+) -> Result<Option<crate::value::Value>, crate::error::RapidError> {
+    super::moves::require_motion_task(ctx)?;
+    let robot = &ctx.resources.robot;
+    let (chain, joints) = (robot.active, robot.end_joints());
+    super::moves::go_with(ctx, args, &MOVE_EXT_J, rapid_motion::plan::Target::Joints(joints), chain, Vec::new())
+}
