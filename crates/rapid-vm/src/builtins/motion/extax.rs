@@ -16,6 +16,8 @@ use rapid_motion::MotionError;
 pub struct UnitState {
     pub unit: ExternalUnit,
     pub active: bool,
+    /// MechUnitLoad's payload mass (kg) by axis number (from 1).
+    pub loads: std::collections::BTreeMap<usize, f64>,
 }
 
 /// The external units of a motion task.
@@ -29,7 +31,10 @@ pub const UNUSED: f64 = 9e9;
 
 impl ExternalUnits {
     pub fn new(units: Vec<ExternalUnit>) -> ExternalUnits {
-        let units = units.into_iter().map(|unit| UnitState { active: unit.active_at_start, unit }).collect();
+        let units = units
+            .into_iter()
+            .map(|unit| UnitState { active: unit.active_at_start, unit, loads: Default::default() })
+            .collect();
         ExternalUnits { units }
     }
 

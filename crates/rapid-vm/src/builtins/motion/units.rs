@@ -3,9 +3,11 @@
 //!
 //! A `rapid run` system has one mechanical unit per motion task: the TCP robot
 //! ROB_n of the n-th motion task, in configuration order, with six axes and motion
-//! planner n (a program run alone is T_ROB1 with ROB_1). There are no external axes.
-//! A mecunit argument is known by the data object passed (ROB_1, ROB_ID), or by the
-//! unit number a GetNextMechUnit `\MecRef` wrote into it.
+//! planner n (a program run alone is T_ROB1 with ROB_1), and the external units the
+//! configuration gives a motion task (`extax.rs`).
+//! A mecunit argument is known by the data object passed (ROB_1, ROB_ID, a unit's
+//! name), or by the unit number a GetNextMechUnit `\MecRef` wrote into it: robots are
+//! 1, 2, …, this task's external units [`EXTERNAL_BASE`] + their index.
 
 use super::super::{argname, present, Ctx};
 use crate::errnames::Err;
@@ -16,6 +18,23 @@ type Res = Result<Option<Value>, RapidError>;
 
 /// Axes of every unit (the six of a robot arm).
 pub(super) const ROBOT_AXES: usize = 6;
+
+/// The unit number of this task's first external unit.
+const EXTERNAL_BASE: usize = 1000;
+
+/// The index among this task's external units of unit number `unit`.
+fn external_index(ctx: &Ctx<'_>, unit: usize) -> Option<usize> {
+    let i = unit.checked_sub(EXTERNAL_BASE)?;
+    (i < ctx.resources.robot.external.units.len()).then_some(i)
+}
+
+/// The name of unit number `unit` (ROB_n, or an external unit's).
+fn unit_name(ctx: &Ctx<'_>, unit: usize) -> String {
+    match external_index(ctx, unit) {
+        Some(i) => ctx.resources.robot.external.units[i].unit.name.clone(),
+        None => format!("ROB_{unit}"),
+    }
+}
 
 /// The motion tasks of the system in configuration order: (task number from 1 among
 /// all tasks, task name). A program run alone is the motion task T_ROB1.
@@ -52,6 +71,9 @@ pub(super) fn unit_arg(ctx: &Ctx<'_>, args: &[Value], param: usize) -> Result<us
         if let Some(n) = unit_named(ctx, &name) {
             return Ok(n);
         }
+        if let Some(i) = ctx.resources.robot.external.find(&name) {
+            return Ok(EXTERNAL_BASE + i);
+        }
     }
     let handle = match args.get(param).map(|a| ctx.value(a)).transpose()? {
         Some(Value::Opaque(opaque)) => match opaque.state {
@@ -61,7 +83,7 @@ pub(super) fn unit_arg(ctx: &Ctx<'_>, args: &[Value], param: usize) -> Result<us
         _ => None,
     };
     match handle {
-        Some(n) if (1..=robot_tasks(ctx).len()).contains(&n) => Ok(n),
+        Some(n) if (1..=robot_tasks(ctx).len()).contains(&n) || external_index(ctx, n).is_some() => Ok(n),
         _ => Err(ctx.error(Err::ArgValue, "the mechanical unit is not in the system")),
     }
 }
@@ -79,6 +101,12 @@ pub(super) fn opt_unit_arg(ctx: &Ctx<'_>, args: &[Value], param: usize) -> Resul
 pub(super) fn own_only(ctx: &Ctx<'_>, unit: usize) -> Result<(), RapidError> {
     if own_unit(ctx) == Some(unit) {
         return Ok(());
+    }
+    if external_index(ctx, unit).is_some() {
+        return Err(RapidError::fatal(format!(
+            "{} is an external unit: this instruction on external units is not supported yet",
+            unit_name(ctx, unit)
+        )));
     }
     Err(RapidError::fatal(format!(
         "ROB_{unit} belongs to another task: reading or changing it from here is not supported yet"
@@ -109,35 +137,31 @@ pub(crate) fn max_rob_speed(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 
 /// `GetNextMechUnit(ListNumber, UnitName [\MecRef] [\TCPRob] [\NoOfAxes] [\MecTaskNo]
 /// [\MotPlanNo] [\Active] [\DriveModule] [\OKToDeact])`: the unit at ListNumber (from
-/// 0) with its data, ListNumber moved on by one; FALSE (nothing written) after the
-/// last unit.
+/// 0: the robots, then this task's external units) with its data, ListNumber moved on
+/// by one; FALSE (nothing written) after the last unit.
 // uncertain: each robot is taken to sit on its own drive module (number n), and a TCP
-// robot is never OK to deactivate (DeactUnit refuses it).
+// robot is never OK to deactivate (DeactUnit refuses it). External units are listed
+// for the task that has them only, on its robot's motion planner and drive module.
 pub(crate) fn get_next_mech_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let list = ctx.num(&args[0])?;
     let robots = robot_tasks(ctx);
-    if list < 0.0 || list.fract() != 0.0 || list >= robots.len() as f64 {
+    let total = robots.len() + ctx.resources.robot.external.units.len();
+    if list < 0.0 || list.fract() != 0.0 || list >= total as f64 {
         return Ok(Some(Value::Bool(false)));
     }
-    let n = list as usize + 1;
-    let task_no = robots[n - 1].0;
+    let at = list as usize;
+    let (unit, facts) = match at.checked_sub(robots.len()) {
+        None => (at + 1, robot_facts(robots[at].0, at + 1)),
+        Some(i) => (EXTERNAL_BASE + i, external_facts(ctx, i)),
+    };
     ctx.store(&args[0], Value::Num((list + 1.0) as f32))?;
-    ctx.store(&args[1], Value::Str(format!("ROB_{n}").into()))?;
+    ctx.store(&args[1], Value::Str(unit_name(ctx, unit).into()))?;
     if let Some(mec_ref) = args.get(2).filter(|a| present(Some(a))) {
         let (shell, _) = ctx.handle_arg(mec_ref, "a mecunit")?;
-        let unit = Opaque { ty: shell.ty, state: OpaqueState::Handle(n as u32) };
-        ctx.store(mec_ref, Value::Opaque(Box::new(unit)))?;
+        let handle = Opaque { ty: shell.ty, state: OpaqueState::Handle(unit as u32) };
+        ctx.store(mec_ref, Value::Opaque(Box::new(handle)))?;
     }
-    let outputs = [
-        Value::Bool(true),
-        Value::Num(ROBOT_AXES as f32),
-        Value::Num(task_no as f32),
-        Value::Num(n as f32),
-        Value::Bool(true),
-        Value::Num(n as f32),
-        Value::Bool(false),
-    ];
-    for (arg, value) in args.iter().skip(3).zip(outputs) {
+    for (arg, value) in args.iter().skip(3).zip(facts) {
         if present(Some(arg)) {
             ctx.store(arg, value)?;
         }
@@ -145,37 +169,111 @@ pub(crate) fn get_next_mech_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(Value::Bool(true)))
 }
 
-/// `IsMechUnitActive(MechUnit)`: TRUE; every unit here is a TCP robot, and those are
-/// always active.
-pub(crate) fn is_mech_unit_active(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    unit_arg(ctx, args, 0)?;
-    Ok(Some(Value::Bool(true)))
+/// GetNextMechUnit's outputs for robot `n` of task number `task_no`: TCPRob, NoOfAxes,
+/// MecTaskNo, MotPlanNo, Active, DriveModule, OKToDeact.
+fn robot_facts(task_no: usize, n: usize) -> [Value; 7] {
+    [
+        Value::Bool(true),
+        Value::Num(ROBOT_AXES as f32),
+        Value::Num(task_no as f32),
+        Value::Num(n as f32),
+        Value::Bool(true),
+        Value::Num(n as f32),
+        Value::Bool(false),
+    ]
 }
 
-/// `ActUnit MechUnit`: the unit becomes active; a TCP robot already is.
+/// GetNextMechUnit's outputs for this task's external unit `i`.
+fn external_facts(ctx: &Ctx<'_>, i: usize) -> [Value; 7] {
+    let state = &ctx.resources.robot.external.units[i];
+    let me = ctx.resources.tasking.name();
+    let task_no = robot_tasks(ctx).iter().find(|(_, name)| name.eq_ignore_ascii_case(me)).map_or(1, |(no, _)| *no);
+    let planner = own_unit(ctx).unwrap_or(1);
+    [
+        Value::Bool(false),
+        Value::Num(state.unit.axes.len() as f32),
+        Value::Num(task_no as f32),
+        Value::Num(planner as f32),
+        Value::Bool(state.active),
+        Value::Num(planner as f32),
+        Value::Bool(!state.unit.deactivation_forbidden),
+    ]
+}
+
+/// `IsMechUnitActive(MechUnit)`: TRUE for a TCP robot (always active); an external
+/// unit's state.
+pub(crate) fn is_mech_unit_active(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let unit = unit_arg(ctx, args, 0)?;
+    let active = external_index(ctx, unit).is_none_or(|i| ctx.resources.robot.external.units[i].active);
+    Ok(Some(Value::Bool(active)))
+}
+
+/// `ActUnit MechUnit`: the unit becomes active; a TCP robot already is. The robot
+/// first stands still (a fly-by point before becomes a stop point, manual: ActUnit).
 // uncertain: ActUnit of a TCP robot is taken to be allowed and change nothing.
 pub(crate) fn act_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    unit_arg(ctx, args, 0)?;
+    let unit = unit_arg(ctx, args, 0)?;
+    if let Some(i) = external_index(ctx, unit) {
+        set_active(ctx, i, true);
+    }
     Ok(None)
 }
 
-/// `DeactUnit MechUnit`: a TCP robot cannot be deactivated (manual: DeactUnit), and
-/// the system has no other units; execution stops.
+/// `DeactUnit MechUnit`: an external unit stops following the program (its axes stay
+/// where they are). A TCP robot cannot be deactivated (manual: DeactUnit), nor a unit
+/// configured with deactivation forbidden: execution stops.
 pub(crate) fn deact_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let n = unit_arg(ctx, args, 0)?;
-    Err(RapidError::fatal(format!("DeactUnit: ROB_{n} is a TCP robot, which cannot be deactivated")))
+    let unit = unit_arg(ctx, args, 0)?;
+    let Some(i) = external_index(ctx, unit) else {
+        return Err(RapidError::fatal(format!("DeactUnit: ROB_{unit} is a TCP robot, which cannot be deactivated")));
+    };
+    if ctx.resources.robot.external.units[i].unit.deactivation_forbidden {
+        return Err(RapidError::fatal(format!(
+            "DeactUnit: {} is configured with deactivation forbidden",
+            unit_name(ctx, unit)
+        )));
+    }
+    set_active(ctx, i, false);
+    Ok(None)
 }
 
-/// `MechUnitLoad MechUnit, AxisNo, Load`: the payload of an external mechanical
-/// unit. The only units here are TCP robots, whose payload GripLoad sets: execution
-/// stops.
+/// Activates or deactivates external unit `i` once the robot stands still.
+fn set_active(ctx: &mut Ctx<'_>, i: usize, active: bool) {
+    let end = ctx.resources.robot.flush();
+    ctx.resources.robot.external.units[i].active = active;
+    super::moves::wait_for_robot(ctx, end);
+}
+
+/// `MechUnitLoad MechUnit, AxisNo, Load`: the payload on an axis of an external unit
+/// (kept with the unit; the simulated motion does not depend on loads). The robots'
+/// payload is GripLoad's: execution stops for a TCP robot.
 // uncertain: the controller's reaction to MechUnitLoad on a TCP robot is not public.
 pub(crate) fn mech_unit_load(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let n = unit_arg(ctx, args, 0)?;
-    axis_arg(ctx, ctx.num(&args[1])?, Err::ArgValue)?;
-    Err(RapidError::fatal(format!(
-        "MechUnitLoad: ROB_{n} is a TCP robot; its payload is set with GripLoad (no external units here)"
-    )))
+    let unit = unit_arg(ctx, args, 0)?;
+    let Some(i) = external_index(ctx, unit) else {
+        axis_arg(ctx, ctx.num(&args[1])?, Err::ArgValue)?;
+        return Err(RapidError::fatal(format!(
+            "MechUnitLoad: ROB_{unit} is a TCP robot; its payload is set with GripLoad"
+        )));
+    };
+    let axis = ctx.num(&args[1])?;
+    let axes = ctx.resources.robot.external.units[i].unit.axes.len();
+    if axis.fract() != 0.0 || !(1.0..=axes as f64).contains(&axis) {
+        let name = unit_name(ctx, unit);
+        return Err(ctx.error(Err::ArgValue, format!("axis {axis} is not an axis of {name} (1..{axes})")));
+    }
+    let mass = match ctx.value(&args[2])? {
+        Value::Record(load) => match load.fields.first() {
+            Some(Value::Num(mass)) => f64::from(*mass),
+            _ => return Err(ctx.error(Err::ArgValue, "the load is no loaddata")),
+        },
+        _ => return Err(ctx.error(Err::ArgValue, "the load is no loaddata")),
+    };
+    if mass < 0.0 {
+        return Err(ctx.error(Err::ArgValue, format!("the load's mass {mass} kg is negative")));
+    }
+    ctx.resources.robot.external.units[i].loads.insert(axis as usize, mass);
+    Ok(None)
 }
 
 /// `ReadMotor([\MecUnit,] Axis)`: the motor angle of an axis, radians.

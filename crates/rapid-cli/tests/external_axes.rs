@@ -1,0 +1,196 @@
+//! External axes (§2.1 extjoint, §1.8 MoveExtJ, ActUnit/DeactUnit, EOffs) configured
+//! by a manifest's `[[unit]]`: a linear track TRACK (eax_a, 0 … 3000 mm, 1000 mm/s)
+//! and a rotating turntable STN1 (eax_b, ±180°, 180 °/s), each reaching full speed in
+//! 0.15 s. Times worked by hand: a stop-to-stop move of d at cruise speed v with ramps
+//! of 0.15 s takes d/v + 0.15 s, and a stop point adds 0.05 s of settle.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+const UNITS: &str = r#"
+[[unit]]
+name = "TRACK"
+[[unit.axis]]
+logical = 7
+type = "linear"
+min = 0
+max = 3000
+speed = 1000
+
+[[unit]]
+name = "STN1"
+[[unit.axis]]
+logical = 8
+type = "rotating"
+min = -180
+max = 180
+speed = 180
+"#;
+
+/// A project folder holding `rapid.toml` (one task, `extra` appended) and `main.mod`
+/// with `body` as the statements of `main`.
+fn project(name: &str, decls: &str, body: &str, extra: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external_axes").join(name);
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n{UNITS}{extra}");
+    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    let module = format!(
+        "MODULE main\n  VAR clock c;\n  VAR jointtarget jt;\n{decls}  PROC main()\n    ClkStart c;\n{body}  ENDPROC\nENDMODULE\n"
+    );
+    fs::write(dir.join("main.mod"), module).expect("module");
+    dir
+}
+
+fn rapid(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rapid")).args(args).output().expect("run rapid")
+}
+
+fn run(dir: &Path) -> (String, String, Option<i32>) {
+    let out = rapid(&["run", "--quiet", dir.to_str().expect("path")]);
+    (String::from_utf8_lossy(&out.stdout).into_owned(), String::from_utf8_lossy(&out.stderr).into_owned(), out.status.code())
+}
+
+/// Prints the time and the track's and turntable's values.
+const SHOW: &str = "    jt := CJointT();\n    TPWrite \"t \" \\Num:=ClkRead(c);\n    \
+                    TPWrite \"a \" \\Num:=jt.extax.eax_a;\n    TPWrite \"b \" \\Num:=jt.extax.eax_b;\n";
+
+#[test]
+fn move_ext_j_moves_the_track_while_the_arm_stands() {
+    // 1000 mm at 1000 mm/s: 1.15 s, then 0.05 s settle: 1.2 s. The arm stays at 0.
+    let body = format!(
+        "{SHOW}    MoveExtJ [[0,0,0,0,0,0],[1000,9E9,9E9,9E9,9E9,9E9]], v1000, fine;\n{SHOW}    \
+         TPWrite \"j6 \" \\Num:=jt.robax.rax_6;\n"
+    );
+    let (stdout, stderr, code) = run(&project("move_ext_j", "", &body, ""));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(stdout, "t 0\na 0\nb 0\nt 1.2\na 1000\nb 0\nj6 0\n");
+}
+
+#[test]
+fn an_arm_move_takes_as_long_as_its_slower_track() {
+    // Axis 6 alone would take 0.245 s (42° at 420 °/s, a triangle profile); the track's
+    // 1000 mm take 1.15 s, so the arm is slowed to arrive with it: 1.2 s with settle.
+    // The turntable's 90° at 180 °/s take 0.5 + 0.15 = 0.65 s: within the same time.
+    let body = format!(
+        "    MoveAbsJ [[0,0,0,0,0,42],[1000,90,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n{SHOW}    \
+         TPWrite \"j6 \" \\Num:=jt.robax.rax_6;\n"
+    );
+    let (stdout, stderr, code) = run(&project("paced", "", &body, ""));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(stdout, "t 1.2\na 1000\nb 90\nj6 42\n");
+}
+
+#[test]
+fn v_reax_paces_a_rotating_axis() {
+    // 180° at v_reax 90 °/s, ramps of 180/0.15 = 1200 °/s²: 180/90 + 90/1200 = 2.075 s,
+    // plus 0.05 s settle.
+    let decls = "  CONST speeddata slow := [100, 500, 5000, 90];\n";
+    let body = format!("    MoveExtJ [[0,0,0,0,0,0],[9E9,180,9E9,9E9,9E9,9E9]], slow, fine;\n{SHOW}");
+    let (stdout, stderr, code) = run(&project("v_reax", decls, &body, ""));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(stdout, "t 2.125\na 0\nb 180\n");
+}
+
+#[test]
+fn external_offsets_apply_as_each_instruction_says() {
+    // EOffsSet adds 100 mm to eax_a: robtarget moves always, MoveAbsJ unless \NoEOffs,
+    // MoveExtJ only with \UseEOffs.
+    let decls = "  CONST robtarget p := [[374,0,630],[0.707107,0,0.707107,0],[0,0,0,0],[500,9E9,9E9,9E9,9E9,9E9]];\n  \
+                 CONST jointtarget home := [[0,0,0,0,0,0],[200,9E9,9E9,9E9,9E9,9E9]];\n";
+    let show = "    jt := CJointT();\n    TPWrite \"a \" \\Num:=jt.extax.eax_a;\n";
+    let body = format!(
+        "    EOffsSet [100,0,0,0,0,0];\n    MoveJ p, v1000, fine, tool0;\n{show}    \
+         MoveAbsJ home, v1000, fine, tool0;\n{show}    MoveAbsJ home \\NoEOffs, v1000, fine, tool0;\n{show}    \
+         MoveExtJ p_j, v1000, fine;\n{show}    MoveExtJ p_j \\UseEOffs, v1000, fine;\n{show}    EOffsOff;\n    \
+         MoveExtJ p_j \\UseEOffs, v1000, fine;\n{show}"
+    );
+    let decls = format!("{decls}  CONST jointtarget p_j := [[0,0,0,0,0,0],[700,9E9,9E9,9E9,9E9,9E9]];\n");
+    let (stdout, stderr, code) = run(&project("eoffs", &decls, &body, ""));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(stdout, "a 600\na 300\na 200\na 700\na 800\na 700\n");
+}
+
+#[test]
+fn a_deactivated_unit_stands_and_reads_9e9() {
+    let body = format!(
+        "    TPWrite \"active \" \\Bool:=IsMechUnitActive(TRACK);\n    DeactUnit TRACK;\n    \
+         TPWrite \"active \" \\Bool:=IsMechUnitActive(TRACK);\n    \
+         MoveExtJ [[0,0,0,0,0,0],[1000,9E9,9E9,9E9,9E9,9E9]], v1000, fine;\n{SHOW}    ActUnit TRACK;\n    \
+         MoveExtJ [[0,0,0,0,0,0],[1000,9E9,9E9,9E9,9E9,9E9]], v1000, fine;\n{SHOW}"
+    );
+    let (stdout, stderr, code) = run(&project("deact", "", &body, ""));
+    assert_eq!(code, Some(0), "{stderr}");
+    // Deactivated, nothing moves: the MoveExtJ is a stop point of no length (settle
+    // 0.05 s). Active again, the track goes its 1000 mm: 1.2 s more.
+    assert_eq!(stdout, "active TRUE\nactive FALSE\nt 0.05\na 9E+09\nb 0\nt 1.25\na 1000\nb 0\n");
+}
+
+#[test]
+fn a_unit_with_deactivation_forbidden_refuses_deact_unit() {
+    let extra = "\n[[unit]]\nname = \"FIXED\"\ndeactivation_forbidden = true\n[[unit.axis]]\nlogical = 9\n\
+                 type = \"rotating\"\nmin = -90\nmax = 90\nspeed = 100\n";
+    let (_, stderr, code) = run(&project("forbidden", "", "    DeactUnit FIXED;\n", extra));
+    assert_eq!(code, Some(1));
+    assert!(stderr.contains("FIXED is configured with deactivation forbidden"), "{stderr}");
+}
+
+#[test]
+fn a_target_outside_the_working_range_stops_with_the_axis_number() {
+    let body = "    MoveExtJ [[0,0,0,0,0,0],[3000.5,9E9,9E9,9E9,9E9,9E9]], v1000, fine;\n";
+    let (_, stderr, code) = run(&project("range", "", body, ""));
+    assert_eq!(code, Some(1));
+    assert!(stderr.contains("50028 Joint 7 out of range"), "{stderr}");
+    assert!(stderr.contains("main.mod:6:5"), "{stderr}");
+}
+
+#[test]
+fn get_next_mech_unit_lists_the_robot_then_the_external_units() {
+    let decls = "  VAR num n := 0;\n  VAR string name;\n  VAR bool tcp;\n  VAR num axes;\n  VAR bool ok;\n";
+    let body = "    WHILE GetNextMechUnit(n, name \\TCPRob:=tcp \\NoOfAxes:=axes \\OKToDeact:=ok) DO\n      \
+                TPWrite name + \" \" + ValToStr(tcp) + \" \" + ValToStr(axes) + \" \" + ValToStr(ok);\n    ENDWHILE\n    \
+                MechUnitLoad STN1, 1, load0;\n    MechUnitLoad STN1, 2, load0;\n";
+    let (stdout, stderr, code) = run(&project("list", decls, body, ""));
+    assert_eq!(stdout, "ROB_1 TRUE 6 FALSE\nTRACK FALSE 1 TRUE\nSTN1 FALSE 1 TRUE\n");
+    assert_eq!(code, Some(1));
+    assert!(stderr.contains("ERR_ARGVALERR") && stderr.contains("axis 2 is not an axis of STN1"), "{stderr}");
+}
+
+#[test]
+fn the_trace_has_a_column_per_external_axis() {
+    let dir = project("trace", "", "    MoveExtJ [[0,0,0,0,0,0],[1000,-90,9E9,9E9,9E9,9E9]], v1000, fine;\n", "");
+    let trace = dir.join("trace.csv");
+    let out = rapid(&["run", "--quiet", "--trace", trace.to_str().unwrap(), dir.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = fs::read_to_string(&trace).expect("trace");
+    let header: Vec<&str> = text.lines().next().expect("header").split(',').collect();
+    assert_eq!(header[header.len() - 3..], ["eax_a", "eax_b", "line"]);
+    // At 0.592 s the track has ramped up (75 mm in 0.15 s) and cruised 0.442 s at
+    // 1000 mm/s: 517 mm; the turntable keeps pace on the same profile: -90 · 0.517.
+    let row = text.lines().find(|l| l.starts_with("0.592,")).expect("row at 0.592 s");
+    let fields: Vec<&str> = row.split(',').collect();
+    assert_eq!(fields[fields.len() - 3], "517.000");
+    assert_eq!(fields[fields.len() - 2], "-46.530");
+}
+
+#[test]
+fn manifest_units_are_checked() {
+    let extra = "\n[[unit]]\nname = \"BAD\"\ntask = \"T_NONE\"\n[[unit.axis]]\nlogical = 13\ntype = \"sliding\"\n\
+                 min = 5\nmax = 1\nspeed = 0\n";
+    let dir = project("bad_units", "", "", extra);
+    let out = rapid(&["check", dir.to_str().unwrap()]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let all = format!("{stdout}{stderr}");
+    assert!(!out.status.success());
+    for message in [
+        "logical axis 13 is not 7 … 12",
+        "unknown axis type `sliding`",
+        "the working range 5 … 1 is empty",
+        "speed 0 is not a positive number",
+        "`T_NONE` is no motion task",
+    ] {
+        assert!(all.contains(message), "missing `{message}` in:\n{all}");
+    }
+}
