@@ -49,7 +49,11 @@ fn rapid(args: &[&str]) -> Output {
 
 fn run(dir: &Path) -> (String, String, Option<i32>) {
     let out = rapid(&["run", "--quiet", dir.to_str().expect("path")]);
-    (String::from_utf8_lossy(&out.stdout).into_owned(), String::from_utf8_lossy(&out.stderr).into_owned(), out.status.code())
+    (
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+        out.status.code(),
+    )
 }
 
 /// Prints the time and the track's and turntable's values.
@@ -193,4 +197,27 @@ fn manifest_units_are_checked() {
     ] {
         assert!(all.contains(message), "missing `{message}` in:\n{all}");
     }
+}
+
+#[test]
+fn search_ext_j_records_the_axes_at_the_hit_and_brakes() {
+    // The probe rises 0.5 s into the search: the track has ramped up over 75 mm and
+    // cruised 0.35 s at 1000 mm/s, so it is at 425 mm. `\Stop` brakes in 0.08 s over
+    // 1000 · 0.08 / 2 = 40 mm: it stands at 465 mm at 0.58 s.
+    let extra = "\n[system]\nio = \"eio.cfg\"\n";
+    let decls = "  VAR jointtarget hit;\n";
+    let body = format!(
+        "    SetDO doProbe, 1;\n    \
+         SearchExtJ \\Stop, diProbe, hit, [[0,0,0,0,0,0],[1000,9E9,9E9,9E9,9E9,9E9]], v1000;\n    \
+         TPWrite \"hit \" \\Num:=hit.extax.eax_a;\n{SHOW}"
+    );
+    let dir = project("search_ext_j", decls, &body, extra);
+    let eio = "EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n\n      -Name \"doProbe\" -SignalType \"DO\"\n\n      \
+               -Name \"diProbe\" -SignalType \"DI\"\n";
+    fs::write(dir.join("eio.cfg"), eio).expect("EIO");
+    fs::write(dir.join("probe.stim"), "when doProbe = 1 after 0.5 s set diProbe 1\n").expect("stimulus");
+    let stim = dir.join("probe.stim");
+    let out = rapid(&["run", "--quiet", "--stimulus", stim.to_str().unwrap(), dir.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "hit 425\nt 0.58\na 465\nb 0\n");
 }

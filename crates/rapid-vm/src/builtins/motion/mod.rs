@@ -94,6 +94,7 @@ pub(super) static ENTRIES: Entries = &[
     ("EOffsOn", readback::eoffs_on),
     ("SearchL", search::search_l),
     ("SearchC", search::search_c),
+    ("SearchExtJ", search::search_ext_j),
     ("MoveJDO", moves::move_j_io),
     ("MoveJAO", moves::move_j_io),
     ("MoveJGO", moves::move_j_io),

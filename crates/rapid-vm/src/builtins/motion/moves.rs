@@ -236,7 +236,7 @@ pub(super) fn go_with(
     }
     let (tool, held_object) = mount_of(&chain);
     let request = MoveRequest { target, speed, zone, tool, held_object };
-    let external = external_target(ctx, args, layout)?;
+    let external = external_target(ctx, args, layout.to, layout.eoffs)?;
     // Synchronized movement: the moves of one `\ID` in all tasks take the same time.
     match crate::builtins::syncmove::coordinate(ctx, args.get(layout.id), &request, &settings)? {
         crate::builtins::syncmove::Coordination::Alone => {}
@@ -276,21 +276,22 @@ pub(super) fn go_with(
     Ok(None)
 }
 
-/// The external axes' part of the move to the target at `layout.to` (a robtarget's or
-/// jointtarget's `extax`, its last field), with the offsets the layout's rule allows.
-fn external_target(
+/// The external axes' part of the move to the target at `to` (a robtarget's or
+/// jointtarget's `extax`, its last field), with the offsets `rule` allows.
+pub(super) fn external_target(
     ctx: &Ctx<'_>,
     args: &[Value],
-    layout: &Layout,
+    to: usize,
+    rule: EOffsRule,
 ) -> Result<Option<rapid_motion::external::ExternalMove>, RapidError> {
     if !ctx.resources.robot.external.any() {
         return Ok(None);
     }
-    let target = ctx.value(&args[layout.to])?;
+    let target = ctx.value(&args[to])?;
     let Value::Record(record) = &target else { return Err(RapidError::fatal("a move target is no record")) };
     let Some(extax) = record.fields.last() else { return Err(RapidError::fatal("a move target has no extax")) };
     let values = super::frame::extjoint(ctx, extax)?;
-    let use_offsets = match layout.eoffs {
+    let use_offsets = match rule {
         EOffsRule::Always => true,
         EOffsRule::Unless(switch) => !present(args.get(switch)),
         EOffsRule::Only(switch) => present(args.get(switch)),

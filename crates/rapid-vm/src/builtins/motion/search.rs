@@ -1,4 +1,5 @@
-//! SearchL and SearchC (§1.8): a linear (circular) move to ToPoint that records where a digital input (or a
+//! SearchL, SearchC and SearchExtJ (§1.8): a linear (circular) move to ToPoint, or a
+//! move of the external axes alone to ToJointPos, that records where a digital input (or a
 //! persistent bool) changes — by default on its rising edge, `\Flanks` on both,
 //! `\NegFlank` falling, `\HighLevel`/`\LowLevel` on a level. With `\Stop`, `\PStop` or
 //! `\SStop` the robot brakes on its path from the first hit; otherwise it goes on to ToPoint (`\Sup`:
@@ -14,6 +15,7 @@ use rapid_motion::plan::{MoveRequest, Target};
 
 use super::super::{present, Ctx, StopKind};
 use super::data;
+use super::moves::EOffsRule;
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
@@ -44,11 +46,27 @@ struct Places {
     tool: usize,
     wobj: usize,
     corr: usize,
+    /// SearchExtJ: only the external axes move (no tool, no TCP); `\UseEOffs` here.
+    ext_only: Option<usize>,
 }
 
-const SEARCH_L: Places = Places { cir: None, to: 12, id: 13, speed: 14, v: 15, t: 16, tool: 17, wobj: 18, corr: 19 };
+const NONE: usize = super::moves::NONE;
+const SEARCH_L: Places =
+    Places { cir: None, to: 12, id: 13, speed: 14, v: 15, t: 16, tool: 17, wobj: 18, corr: 19, ext_only: None };
 const SEARCH_C: Places =
-    Places { cir: Some(12), to: 13, id: 14, speed: 15, v: 16, t: 17, tool: 18, wobj: 19, corr: 20 };
+    Places { cir: Some(12), to: 13, id: 14, speed: 15, v: 16, t: 17, tool: 18, wobj: 19, corr: 20, ext_only: None };
+const SEARCH_EXT_J: Places = Places {
+    cir: None,
+    to: 12,
+    id: 13,
+    speed: 15,
+    v: NONE,
+    t: 16,
+    tool: NONE,
+    wobj: NONE,
+    corr: NONE,
+    ext_only: Some(14),
+};
 
 /// What counts as a hit.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -110,6 +128,12 @@ pub(crate) fn search_c(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     search(ctx, args, &SEARCH_C)
 }
 
+/// `SearchExtJ`: the external axes move to ToJointPos's `extax` while the arm stands;
+/// SearchJointPos gets the axes' values at the hit.
+pub(crate) fn search_ext_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    search(ctx, args, &SEARCH_EXT_J)
+}
+
 fn search(ctx: &mut Ctx<'_>, args: &[Value], places: &Places) -> Res {
     super::moves::require_motion_task(ctx)?;
     // uncertain: a search in synchronized movement (`\\ID`) is not coordinated with the
@@ -134,6 +158,43 @@ fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32), places: &Places) -
         // uncertain: the manual raises this when the edge's level is there at the start.
         return Err(ctx.error(Err::SigSupSearch, "the search signal already has its hit value at the start"));
     }
+    let (chain, target) = path_of(ctx, args, places)?;
+    let mut speed = data::speed(ctx, &ctx.value(&args[places.speed])?)?;
+    if let Some(v) = ctx.opt_num(args.get(places.v))? {
+        speed.v_tcp = v;
+    }
+    let (tool, held_object) = super::moves::mount_of(&chain);
+    let request = MoveRequest { target, speed, zone: rapid_motion::plan::ZoneData::FINE, tool, held_object };
+    super::moves::note_facts(ctx, &request, &chain);
+    let mut settings = super::moves::planner_settings(ctx);
+    // `\T`: the search move takes this long.
+    settings.move_time = ctx.opt_num(args.get(places.t))?;
+    let rule = places.ext_only.map_or(EOffsRule::Always, EOffsRule::Only);
+    let external = super::moves::external_target(ctx, args, places.to, rule)?;
+    let now = ctx.time;
+    let robot = &mut ctx.resources.robot;
+    robot.set_settings(settings);
+    robot.next_external = external;
+    // `\Corr`: the path follows the corrections of the connected generators.
+    robot.corr.next = present(args.get(places.corr));
+    let end = robot.push(now, &request, false, Vec::new()).map_err(super::moves::motion_error)?;
+    if let Some(err) = robot.corr.violation.take() {
+        return Err(super::moves::motion_error(err));
+    }
+    robot.active = chain;
+    Ok(Search { at, end, seen, last: level, hits: 0 })
+}
+
+/// The search's frames and path: the arm standing where it is for SearchExtJ.
+fn path_of(
+    ctx: &Ctx<'_>,
+    args: &[Value],
+    places: &Places,
+) -> Result<(rapid_motion::frames::FrameChain, Target), RapidError> {
+    if places.ext_only.is_some() {
+        let robot = &ctx.resources.robot;
+        return Ok((robot.active, Target::Joints(robot.end_joints())));
+    }
     let chain = super::moves::frames_at(ctx, args, places.tool, places.wobj, true)?;
     let tcp_of = |ctx: &Ctx<'_>, idx: usize| -> Result<rapid_motion::Pose, RapidError> {
         let (target, _) = data::robtarget(ctx, &ctx.value(&args[idx])?)?;
@@ -147,27 +208,7 @@ fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32), places: &Places) -
         }
         None => Target::Linear(to),
     };
-    let mut speed = data::speed(ctx, &ctx.value(&args[places.speed])?)?;
-    if let Some(v) = ctx.opt_num(args.get(places.v))? {
-        speed.v_tcp = v;
-    }
-    let (tool, held_object) = super::moves::mount_of(&chain);
-    let request = MoveRequest { target, speed, zone: rapid_motion::plan::ZoneData::FINE, tool, held_object };
-    super::moves::note_facts(ctx, &request, &chain);
-    let mut settings = super::moves::planner_settings(ctx);
-    // `\T`: the search move takes this long.
-    settings.move_time = ctx.opt_num(args.get(places.t))?;
-    let now = ctx.time;
-    let robot = &mut ctx.resources.robot;
-    robot.set_settings(settings);
-    // `\Corr`: the path follows the corrections of the connected generators.
-    robot.corr.next = present(args.get(places.corr));
-    let end = robot.push(now, &request, false, Vec::new()).map_err(super::moves::motion_error)?;
-    if let Some(err) = robot.corr.violation.take() {
-        return Err(super::moves::motion_error(err));
-    }
-    robot.active = chain;
-    Ok(Search { at, end, seen, last: level, hits: 0 })
+    Ok((chain, target))
 }
 
 /// The signal's (or persistent's) level now, and how long the change log is.
@@ -268,13 +309,18 @@ fn events(ctx: &mut Ctx<'_>, args: &[Value], search: &mut Search) -> Result<Vec<
     Ok(found)
 }
 
-/// SearchPoint: where the TCP was at time `t`, in the search's tool and work object.
+/// SearchPoint: where the TCP was at time `t`, in the search's tool and work object,
+/// with the external axes then (SearchExtJ: the axis values as a jointtarget).
 fn store_hit(ctx: &mut Ctx<'_>, args: &[Value], t: f64) -> Result<(), RapidError> {
     let chain = ctx.resources.robot.active;
     let robot = &mut ctx.resources.robot;
     let joints = robot.joints_at(t);
+    let extax = robot.extax_read(t);
     let pose = chain.target_of(&rapid_motion::Kinematics::forward(&robot.kin, &joints));
     let conf = rapid_motion::confdata::confdata_of(&robot.kin, &joints);
-    let value = data::robtarget_value(ctx, &pose, conf)?;
-    ctx.store(&args[SEARCH_POINT], value)
+    let value = match ctx.value(&args[SEARCH_POINT])? {
+        Value::Record(r) if r.fields.len() == 2 => data::jointtarget_value(ctx, &joints)?,
+        _ => data::robtarget_value(ctx, &pose, conf)?,
+    };
+    ctx.store(&args[SEARCH_POINT], super::frame::with_extax(&value, &extax))
 }
