@@ -36,7 +36,26 @@ pub(crate) fn choose_model(
             .ok_or_else(|| format!("unknown robot model `{name}` (known: {})", known.join(", ")));
     }
     let moc = syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("MOC"));
-    let robot_type = moc.and_then(|(_, file)| rapid_config::moc::robots(file).into_iter().find_map(|r| r.robot_type));
+    let (model, note) = model_of_moc(moc.map(|(_, file)| file))?;
+    // uncertain: how MOC.cfg describes an external axis (ranges, speeds, linear or
+    // rotating) is not in our notes, so its units are not read: say so.
+    let units = moc.map(|(_, file)| rapid_config::moc::external_units(file)).unwrap_or_default();
+    if units.is_empty() {
+        return Ok((model, note));
+    }
+    let unread = format!(
+        "MOC.cfg's mechanical units {} are not read: their axes do not move (a manifest's [[unit]] configures external axes)",
+        units.join(", ")
+    );
+    Ok((model, Some(note.map_or(unread.clone(), |n| format!("{n}; {unread}")))))
+}
+
+/// The model MOC.cfg's robot type names, else the default (with a note when the type
+/// is not a model we know).
+fn model_of_moc(
+    moc: Option<&rapid_config::CfgFile>,
+) -> Result<(&'static rapid_motion::RobotModel, Option<String>), String> {
+    let robot_type = moc.and_then(|file| rapid_config::moc::robots(file).into_iter().find_map(|r| r.robot_type));
     let default = rapid_motion::default_model();
     Ok(match robot_type {
         Some(ty) => match rapid_motion::find_model(&ty) {

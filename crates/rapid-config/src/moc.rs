@@ -22,3 +22,14 @@ pub fn robots(file: &CfgFile) -> Vec<Robot> {
         })
         .collect()
 }
+
+/// The mechanical units of a MOC file that are not robots (`MECHANICAL_UNIT` instances
+/// no `ROBOT` instance names): external axes, tracks, positioners.
+pub fn external_units(file: &CfgFile) -> Vec<String> {
+    let robots: Vec<String> = robots(file).into_iter().map(|r| r.name.to_ascii_uppercase()).collect();
+    file.instances("MECHANICAL_UNIT")
+        .filter_map(|inst| inst.name())
+        .filter(|name| !robots.contains(&name.to_ascii_uppercase()))
+        .map(str::to_owned)
+        .collect()
+}

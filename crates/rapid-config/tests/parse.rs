@@ -266,6 +266,15 @@ fn moc_robots() {
 }
 
 #[test]
+fn moc_external_units_are_the_mechanical_units_no_robot_names() {
+    let file = parse(
+        "MOC:CFG_1.0:6:0::\n#\nMECHANICAL_UNIT:\n\n  -name \"ROB_1\"\n\n  -name \"TRACK\" -activate_at_start_up\n\n  \
+         -name \"STN1\"\n#\nROBOT:\n\n  -name \"ROB_1\" -use_robot_type \"ROB1\"\n",
+    );
+    assert_eq!(moc::external_units(&file), ["TRACK", "STN1"]);
+}
+
+#[test]
 fn removing_a_flag_keeps_the_rest() {
     let file = fixture("sys.cfg");
     let (section, instance) = rapid_config::find_named(&file, "CAB_TASKS", "T_ROB1").expect("task");
