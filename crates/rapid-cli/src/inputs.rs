@@ -25,7 +25,7 @@ use rapid_syntax::Span;
 use rustc_hash::FxHashSet;
 
 pub(crate) use self::backup::TaskFolder;
-pub(crate) use self::manifest_units::TaskUnit;
+pub(crate) use self::manifest_units::{TaskConveyor, TaskUnit};
 use self::program_file::{Entry, ProgramFile};
 
 /// Extensions of RAPID module files, compared without regard to case.
@@ -56,6 +56,8 @@ pub(crate) struct Inputs {
     pub(crate) robot: Option<String>,
     /// The external units a manifest configures (`[[unit]]`), with their tasks.
     pub(crate) units: Vec<TaskUnit>,
+    /// The conveyors a manifest configures (`[[conveyor]]`), with their tasks.
+    pub(crate) conveyors: Vec<TaskConveyor>,
     /// Which of `modules` are installed shared (one instance for every task).
     pub(crate) shared_modules: Vec<usize>,
     /// Diagnostics found while reading the inputs. Their `file` indexes [`Inputs::table`].
@@ -129,6 +131,7 @@ struct Collector {
     root: Option<PathBuf>,
     robot: Option<String>,
     units: Vec<TaskUnit>,
+    conveyors: Vec<TaskConveyor>,
     shared_modules: Vec<usize>,
     /// Diagnostics whose `file` is an index into `configs`.
     config_diagnostics: Vec<Diagnostic>,
@@ -322,9 +325,14 @@ impl Collector {
         self.root = Some(manifest.root.clone());
         self.robot = manifest.robot.clone();
         self.units = manifest.units.clone();
+        self.conveyors = manifest.conveyors.clone();
         // Each unit is known to programs by its name, a mecunit (ActUnit TRACK).
         self.predefined.extend(
-            self.units.iter().map(|u| PredefinedData { name: u.unit.name.clone(), type_name: "mecunit".to_owned() }),
+            self.units
+                .iter()
+                .map(|u| u.unit.name.clone())
+                .chain(self.conveyors.iter().map(|c| c.name.clone()))
+                .map(|name| PredefinedData { name, type_name: "mecunit".to_owned() }),
         );
         let wanted = match &self.wanted_task {
             Some(name) => manifest.sys.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(name)),
@@ -468,6 +476,7 @@ impl Collector {
             root: self.root,
             robot: self.robot,
             units: self.units,
+            conveyors: self.conveyors,
             shared_modules: self.shared_modules,
             diagnostics,
             rank,

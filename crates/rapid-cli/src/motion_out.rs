@@ -97,6 +97,46 @@ pub(crate) fn configure_units(
     robot.configure_external(mine.map(|u| u.unit.clone()).collect());
 }
 
+/// Gives the robot the conveyors configured for its task (chosen as
+/// [`configure_units`] chooses units), their signals found in the I/O system: a sync
+/// switch that is a digital input and a speed that is an analog input.
+pub(crate) fn configure_conveyors(
+    robot: &mut RobotState,
+    conveyors: &[crate::inputs::TaskConveyor],
+    io: Option<&rapid_io::IoSystem>,
+    task: Option<&str>,
+    first_motion: bool,
+) -> Result<(), String> {
+    use rapid_vm::builtins::motion::conveyor::{Conveyor, ConveyorConfig};
+    let mine = conveyors.iter().filter(|c| match (&c.task, task) {
+        (_, None) => true,
+        (Some(named), Some(task)) => named.eq_ignore_ascii_case(task),
+        (None, Some(_)) => first_motion,
+    });
+    for c in mine {
+        let signal = |name: &str, kind: rapid_io::SignalKind| -> Result<u32, String> {
+            let io = io.ok_or_else(|| format!("conveyor {}: the system has no I/O configuration", c.name))?;
+            match io.id(name).filter(|&id| io.def(id).is_some_and(|d| d.kind == kind)) {
+                Some(id) => Ok(id),
+                None => Err(format!("conveyor {}: `{name}` is no {kind:?} signal of the I/O configuration", c.name)),
+            }
+        };
+        let (sync, speed) = (signal(&c.sync, rapid_io::SignalKind::DI)?, signal(&c.speed, rapid_io::SignalKind::AI)?);
+        let base = rapid_motion::pose::pose(c.base, c.orientation);
+        let config = ConveyorConfig {
+            name: c.name.clone(),
+            sync,
+            speed,
+            base,
+            start_window: c.start_window,
+            max_dist: c.max_dist,
+        };
+        let initial = io.and_then(|io| io.value(speed)).unwrap_or(0.0);
+        robot.conveyors.list.push(Conveyor::new(config, initial));
+    }
+    Ok(())
+}
+
 /// After the run: the robot finishes its last move; the cycle time (program and
 /// motion, whichever ends later) is printed unless `--quiet`, and returned.
 pub(crate) fn finish(
@@ -115,6 +155,8 @@ pub(crate) fn finish(
     // The controller's clock has reached the end of the program and of the motion:
     // orders due by then (delayed sets, pulse ends, path events) have happened.
     resources.io.advance(program_end.max(motion_end));
+    // The conveyors' whole input history, for the trace of a tracking robot.
+    resources.robot.refresh_conveyors(resources.io.system.as_ref());
     let robot = &mut resources.robot;
     let cycle = program_end.max(motion_end);
     if robot.moves == 0 {
@@ -332,7 +374,8 @@ fn write_trace(robot: &RobotState, places: &[String], path: &Path, sample_ms: f6
                 }
                 // A move made with `\Corr` is where its path correction put it; an axis in
                 // independent mode where its own motion took it.
-                let sample = robot.with_independent(robot.corrected(planned, sample), &mount);
+                let sample = robot.tracked(planned.start, robot.corrected(planned, sample));
+                let sample = robot.with_independent(sample, &mount);
                 let point = cursor.locate(sample);
                 if json {
                     out.push_str(if rows == 0 { "\n[" } else { ",\n[" });

@@ -123,6 +123,8 @@ errors! {
     RobLimit = "ERR_ROBLIMIT",
     WhlSearch = "ERR_WHLSEARCH",
     SigSupSearch = "ERR_SIGSUPSEARCH",
+    CnvNotActive = "ERR_CNV_NOT_ACT",
+    CnvConnect = "ERR_CNV_CONNECT",
     // I/O devices and networks (§1.9).
     NoRunUnit = "ERR_NORUNUNIT",
     IoEnable = "ERR_IOENABLE",

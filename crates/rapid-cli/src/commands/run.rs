@@ -63,6 +63,19 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     };
     crate::motion_out::configure(&mut loaded.vm.resources_mut().robot, model, args);
     crate::motion_out::configure_units(&mut loaded.vm.resources_mut().robot, &inputs.units, None, true);
+    let resources = loaded.vm.resources_mut();
+    let conveyors = &inputs.conveyors;
+    if let Err(message) = crate::motion_out::configure_conveyors(
+        &mut resources.robot,
+        conveyors,
+        resources.io.system.as_ref(),
+        None,
+        true,
+    ) {
+        eprintln!("error: {message}");
+        eprintln!("the system has errors; it was not run");
+        return Ok(ExitStatus::Failure);
+    }
     let answers = pendant_answers(args)?;
     let mut host = StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers };
     let task_name = inputs.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();

@@ -99,6 +99,12 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             let robot = &mut program.vm.resources_mut().robot;
             crate::motion_out::configure(robot, model, args);
             crate::motion_out::configure_units(robot, &units, Some(&spec.name), first_motion);
+            let conveyors = &tasks[0].inputs.conveyors;
+            let found =
+                crate::motion_out::configure_conveyors(robot, conveyors, io.as_ref(), Some(&spec.name), first_motion);
+            if let Err(message) = found {
+                return refuse(&message);
+            }
             first_motion = false;
         }
     }

@@ -69,6 +69,8 @@ pub(crate) struct Manifest {
     pub(crate) robot: Option<String>,
     /// `[[unit]]`: external mechanical units and the tasks they belong to.
     pub(crate) units: Vec<super::manifest_units::TaskUnit>,
+    /// `[[conveyor]]`: conveyors for conveyor tracking and the tasks they belong to.
+    pub(crate) conveyors: Vec<super::manifest_units::TaskConveyor>,
     pub(crate) findings: Vec<Finding>,
 }
 
@@ -80,6 +82,8 @@ struct RawManifest {
     task: Vec<Spanned<RawTask>>,
     #[serde(default)]
     unit: Vec<Spanned<super::manifest_units::RawUnit>>,
+    #[serde(default)]
+    conveyor: Vec<Spanned<super::manifest_units::RawConveyor>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -164,6 +168,25 @@ impl Reader<'_> {
         }
         self.foregrounds(&raw.task);
         self.units(&raw.unit);
+        self.conveyors(&raw.conveyor);
+    }
+
+    /// `[[conveyor]]`: each conveyor's task must be a motion task of the manifest.
+    fn conveyors(&mut self, raw: &[Spanned<super::manifest_units::RawConveyor>]) {
+        let mut found = Vec::new();
+        let taken: Vec<String> = self.manifest.units.iter().map(|u| u.unit.name.clone()).collect();
+        let conveyors = super::manifest_units::read_conveyors(raw, &taken, &mut |span, message| {
+            found.push(Finding { span, message })
+        });
+        for (conveyor, spanned) in conveyors.iter().zip(raw) {
+            let Some(task) = &conveyor.task else { continue };
+            if !self.manifest.sys.tasks.iter().any(|t| t.name.eq_ignore_ascii_case(task) && t.motion_task) {
+                let message = format!("conveyor `{}`: `{task}` is no motion task of this manifest", conveyor.name);
+                found.push(Finding { span: spanned.span(), message });
+            }
+        }
+        self.manifest.findings.extend(found);
+        self.manifest.conveyors = conveyors;
     }
 
     /// `[[unit]]`: each unit's task must be a motion task of the manifest.

@@ -122,3 +122,89 @@ fn axis(unit: &str, raw: &RawAxis, find: &mut dyn FnMut(Range<usize>, String)) -
     }
     ok.then_some(ExternalAxis { logical: logical as u8, linear, min, max, max_speed: speed, acc, start })
 }
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawConveyor {
+    name: Spanned<String>,
+    task: Option<Spanned<String>>,
+    sync: Spanned<String>,
+    speed: Spanned<String>,
+    base: Option<Spanned<Vec<f64>>>,
+    orientation: Option<Spanned<Vec<f64>>>,
+    start_window: Spanned<f64>,
+    max_dist: Spanned<f64>,
+}
+
+/// A conveyor read from the manifest: its signals by name (checked against the I/O
+/// configuration when the system starts) and its base frame.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct TaskConveyor {
+    pub(crate) task: Option<String>,
+    pub(crate) name: String,
+    pub(crate) sync: String,
+    pub(crate) speed: String,
+    pub(crate) base: [f64; 3],
+    pub(crate) orientation: [f64; 4],
+    pub(crate) start_window: f64,
+    pub(crate) max_dist: f64,
+}
+
+/// Reads the conveyors; `taken` are the unit names already used.
+pub(super) fn read_conveyors(
+    raw: &[Spanned<RawConveyor>],
+    taken: &[String],
+    find: &mut dyn FnMut(Range<usize>, String),
+) -> Vec<TaskConveyor> {
+    let mut conveyors: Vec<TaskConveyor> = Vec::new();
+    for raw in raw.iter().map(Spanned::get_ref) {
+        let name = raw.name.get_ref().clone();
+        if let Some(why) = super::manifest::identifier_problem(&name) {
+            find(raw.name.span(), format!("conveyor name `{name}` {why}"));
+        }
+        let used = taken.iter().chain(conveyors.iter().map(|c| &c.name)).any(|n| n.eq_ignore_ascii_case(&name));
+        if used {
+            find(raw.name.span(), format!("unit `{name}` is configured twice"));
+        }
+        let base = fixed::<3>(raw.base.as_ref(), [0.0; 3], "base", &name, find);
+        let orientation = fixed::<4>(raw.orientation.as_ref(), [1.0, 0.0, 0.0, 0.0], "orientation", &name, find);
+        let norm = orientation.iter().map(|q| q * q).sum::<f64>().sqrt();
+        if let Some(o) = raw.orientation.as_ref().filter(|_| (norm - 1.0).abs() > 1e-3) {
+            find(o.span(), format!("conveyor `{name}`: the orientation is not a unit quaternion"));
+        }
+        for (value, key) in [(&raw.start_window, "start_window"), (&raw.max_dist, "max_dist")] {
+            if !(value.get_ref().is_finite() && *value.get_ref() > 0.0) {
+                find(value.span(), format!("conveyor `{name}`: {key} {} is not a positive number", value.get_ref()));
+            }
+        }
+        conveyors.push(TaskConveyor {
+            task: raw.task.as_ref().map(|t| t.get_ref().clone()),
+            name,
+            sync: raw.sync.get_ref().clone(),
+            speed: raw.speed.get_ref().clone(),
+            base,
+            orientation,
+            start_window: *raw.start_window.get_ref(),
+            max_dist: *raw.max_dist.get_ref(),
+        });
+    }
+    conveyors
+}
+
+/// An array of exactly N numbers, or `default` when absent.
+fn fixed<const N: usize>(
+    raw: Option<&Spanned<Vec<f64>>>,
+    default: [f64; N],
+    key: &str,
+    name: &str,
+    find: &mut dyn FnMut(Range<usize>, String),
+) -> [f64; N] {
+    let Some(raw) = raw else { return default };
+    match <[f64; N]>::try_from(raw.get_ref().as_slice()) {
+        Ok(values) if values.iter().all(|v| v.is_finite()) => values,
+        _ => {
+            find(raw.span(), format!("conveyor `{name}`: {key} takes {N} numbers"));
+            default
+        }
+    }
+}

@@ -64,8 +64,9 @@ pub(super) fn zone(ctx: &Ctx<'_>, value: &Value) -> Result<ZoneData, RapidError>
 
 /// The frames of a tool (`tooldata [robhold, tframe, tload]`) and a work object
 /// (`wobjdata [robhold, ufprog, ufmec, uframe, oframe]`; wobj0 when none), with the
-/// program displacement. A moving work object (`ufprog` FALSE, coordinated with a
-/// mechanical unit) is refused: no such unit exists here.
+/// program displacement. A moving work object (`ufprog` FALSE) rides the conveyor its
+/// `ufmec` names: its user frame is where the connected object is now; any other
+/// moving work object is refused.
 pub(super) fn chain(
     ctx: &Ctx<'_>,
     tool: &Value,
@@ -79,10 +80,10 @@ pub(super) fn chain(
     let Some(wobj) = wobj else { return Ok(chain) };
     let w = record(ctx, wobj, 5, "a wobjdata")?;
     let wobj_held = boolean(ctx, &w[0], "wobjdata")?;
-    if !boolean(ctx, &w[1], "wobjdata")? {
-        return Err(RapidError::fatal("a work object moved by a mechanical unit (ufprog FALSE) is not supported yet"));
-    }
-    chain.uframe = frame::frame(ctx, &w[3])?;
+    chain.uframe = match boolean(ctx, &w[1], "wobjdata")? {
+        true => frame::frame(ctx, &w[3])?,
+        false => conveyor_frame(ctx, wobj)?,
+    };
     chain.oframe = frame::frame(ctx, &w[4])?;
     chain.stationary_tool = match (tool_held, wobj_held) {
         (true, false) => false,
@@ -92,6 +93,21 @@ pub(super) fn chain(
         _ => return Err(RapidError::fatal("the tool and the work object cannot both be held (or both fixed)")),
     };
     Ok(chain)
+}
+
+/// The user frame of a work object riding a conveyor: the conveyor's base frame moved
+/// by the connected object's distance from the sync switch.
+fn conveyor_frame(ctx: &Ctx<'_>, wobj: &Value) -> Result<Isometry3<f64>, RapidError> {
+    let Some(c) = super::tracking::conveyor_of(ctx, wobj) else {
+        return Err(RapidError::fatal(
+            "a work object moved by a mechanical unit other than a conveyor (ufprog FALSE) is not supported yet",
+        ));
+    };
+    let conveyor = &ctx.resources.robot.conveyors.list[c];
+    match conveyor.distance(ctx.time) {
+        Some(d) => Ok(conveyor.frame_at(d)),
+        None => Err(ctx.error(Err::CnvNotActive, "the conveyor's work object is connected to no object (WaitWObj)")),
+    }
 }
 
 /// A robtarget's pose (trans, rot) and configuration (cf1, cf4, cf6, cfx).

@@ -10,6 +10,7 @@
 //! which equal [`Settings::default`].
 
 mod calib;
+pub mod conveyor;
 pub mod corr;
 mod data;
 pub mod extax;
@@ -30,6 +31,7 @@ mod stepbwd;
 pub mod store;
 pub mod testsign;
 mod torque;
+mod tracking;
 mod trigg;
 mod units;
 pub mod zones;
@@ -84,6 +86,8 @@ pub(super) static ENTRIES: Entries = &[
     ("MoveC", moves::move_c),
     ("MoveAbsJ", moves::move_abs_j),
     ("MoveExtJ", extax::move_ext_j),
+    ("WaitWObj", tracking::wait_wobj),
+    ("DropWObj", tracking::drop_wobj),
     ("WaitRob", moves::wait_rob),
     ("CJointT", readback::c_joint_t),
     ("CRobT", readback::c_rob_t),

@@ -255,6 +255,7 @@ pub(super) fn go_with(
     if let Some(err) = robot.corr.violation.take() {
         return Err(motion_error(err));
     }
+    super::tracking::check_reach(robot, resume)?;
     if let Some(stop) = stop.filter(|s| !s.progsynch && !conc) {
         // progsynch FALSE: the program goes on once the robot stands at the point.
         resume = (resume - stop.time).max(now);
@@ -327,7 +328,7 @@ pub(super) fn wait_for_robot(ctx: &mut Ctx<'_>, resume: f64) {
 
 /// The frames of this move: its tool and work object, and the displacement.
 fn frames(
-    ctx: &Ctx<'_>,
+    ctx: &mut Ctx<'_>,
     args: &[Value],
     layout: &Layout,
     displaced: bool,
@@ -335,9 +336,11 @@ fn frames(
     frames_at(ctx, args, layout.tool, layout.wobj, displaced)
 }
 
-/// The frames of the tool and (optional) work object arguments at these places.
+/// The frames of the tool and (optional) work object arguments at these places, for a
+/// move about to be given: a conveyor's work object is taken where the robot's
+/// tracking froze it (see `tracking.rs`).
 pub(super) fn frames_at(
-    ctx: &Ctx<'_>,
+    ctx: &mut Ctx<'_>,
     args: &[Value],
     tool: usize,
     wobj: usize,
@@ -345,8 +348,13 @@ pub(super) fn frames_at(
 ) -> Result<rapid_motion::frames::FrameChain, RapidError> {
     let tool = ctx.value(&args[tool])?;
     let wobj = if present(args.get(wobj)) { Some(ctx.value(&args[wobj])?) } else { None };
+    let conveyor = super::tracking::begin_move(ctx, wobj.as_ref())?;
     let pdisp = if displaced { ctx.resources.motion.settings.pdisp } else { nalgebra::Isometry3::identity() };
-    data::chain(ctx, &tool, wobj.as_ref(), pdisp)
+    let mut chain = data::chain(ctx, &tool, wobj.as_ref(), pdisp)?;
+    if let Some(uframe) = conveyor.and_then(|c| super::tracking::planning_frame(ctx, c)) {
+        chain.uframe = uframe;
+    }
+    Ok(chain)
 }
 
 /// `MoveJ`: joint interpolation to a robtarget, reached in its programmed

@@ -65,6 +65,7 @@ fn tool0_like(ctx: &Ctx<'_>) -> Result<Value, RapidError> {
 
 /// `CJointT([\TaskRef] | [\TaskName])`: the axis values now.
 pub(crate) fn c_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    super::tracking::refresh(ctx);
     let joints = match robot_of(ctx, args)? {
         Some(Some((joints, _))) => joints,
         Some(None) => return Ok(Some(data::jointtarget_value(ctx, &[0.0; 6])?)),
@@ -80,6 +81,7 @@ pub(crate) fn c_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `CRobT([\TaskRef] | [\TaskName] [\Tool] [\WObj])`: the robtarget the robot is at.
 pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    super::tracking::refresh(ctx);
     let other = robot_of(ctx, args)?;
     let mut chain = read_frames(ctx, args.get(2), args.get(3))?;
     let now = ctx.time;
@@ -104,6 +106,7 @@ pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `CPos([\Tool] [\WObj])`: the TCP's position now.
 pub(crate) fn c_pos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    super::tracking::refresh(ctx);
     let chain = read_frames(ctx, args.first(), args.get(1))?;
     let now = ctx.time;
     let robot = &mut ctx.resources.robot;

@@ -168,6 +168,8 @@ pub struct RobotState {
     pub corr: super::corr::CorrState,
     /// The task's external units (none unless the configuration gives some).
     pub external: super::extax::ExternalUnits,
+    /// The task's conveyors and the robot's tracking of them.
+    pub conveyors: super::conveyor::Conveyors,
     /// The external axes' part of the next move given (set by the move instruction
     /// just before [`RobotState::push`]).
     pub(super) next_external: Option<rapid_motion::external::ExternalMove>,
@@ -215,6 +217,7 @@ impl RobotState {
             trigg: Default::default(),
             corr: Default::default(),
             external: Default::default(),
+            conveyors: Default::default(),
             next_external: None,
         }
     }
@@ -333,7 +336,7 @@ impl RobotState {
         }
     }
 
-    fn finish(&mut self, planned: PlannedMove) {
+    pub(super) fn finish(&mut self, planned: PlannedMove) {
         if planned.corner_path_failure {
             self.corner_path_failures += 1;
         }
@@ -394,7 +397,9 @@ impl RobotState {
     // uncertain: on a fly-by move that is not final yet the corner is not planned; the
     // move's stop plan stands for it (exact until the robot would brake).
     pub fn joints_at(&mut self, t: f64) -> Joints {
-        let mut joints = self.planned_joints_at(t);
+        let planned = self.planned_joints_at(t);
+        // A robot following a conveyor object is shifted by the object's travel.
+        let mut joints = self.tracked_joints(t, planned);
         // Axes in independent mode are where their own motion has taken them.
         self.independent.apply(&mut joints, t);
         joints

@@ -187,7 +187,7 @@ fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32), places: &Places) -
 
 /// The search's frames and path: the arm standing where it is for SearchExtJ.
 fn path_of(
-    ctx: &Ctx<'_>,
+    ctx: &mut Ctx<'_>,
     args: &[Value],
     places: &Places,
 ) -> Result<(rapid_motion::frames::FrameChain, Target), RapidError> {

@@ -1,0 +1,187 @@
+//! Conveyor tracking (§1.8 传送带跟踪: WaitWObj, DropWObj) with a conveyor of the
+//! manifest: CNV1 runs along the world x axis from (250, 0, 300), its speed the analog
+//! input c1Speed (the stimulus sets 100 mm/s at 0 s), an object at its sync switch on
+//! each rising edge of c1Sync. The start window is 200 mm, the maximum distance 400 mm.
+//!
+//! Timing model (the IRB 120): a MoveL of L mm at v mm/s with the 10 m/s² TCP ramp takes
+//! L/v + v/10000 s when L ≥ v²/10000 (else 2·√(L/10000)), and a stop point 0.05 s more.
+//! While the robot tracks, its path is planned in the object's frame and shifted by the
+//! object's travel since the first tracked move started.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::Output;
+
+const MANIFEST: &str = r#"[system]
+io = "eio.cfg"
+
+[[task]]
+name = "T_ROB1"
+modules = ["main.mod"]
+
+[[conveyor]]
+name = "CNV1"
+sync = "c1Sync"
+speed = "c1Speed"
+base = [250, 0, 300]
+start_window = 200
+max_dist = 400
+"#;
+
+const EIO: &str = "EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n\n      -Name \"c1Sync\" -SignalType \"DI\"\n\n      \
+                   -Name \"c1Speed\" -SignalType \"AI\"\n";
+
+/// The robot stands at home (tool0 pointing down) before the first object comes.
+const HEAD: &str = "MODULE main
+  PERS wobjdata wobj_cnv1 := [FALSE, FALSE, \"CNV1\", [[0,0,0],[1,0,0,0]], [[0,0,0],[1,0,0,0]]];
+  CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget above := [[0,0,100],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  VAR clock c;
+  VAR robtarget p;
+  VAR pos w;
+  VAR bool late;
+  PROC main()
+    ClkStart c;
+    ConfL \\Off;
+    MoveJ home, v1000, fine, tool0;
+";
+
+/// A project with `body` after HEAD and the stimulus `objects` (after the speed line).
+fn project(name: &str, body: &str, objects: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("conveyor").join(name);
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    fs::write(dir.join("rapid.toml"), MANIFEST).expect("manifest");
+    fs::write(dir.join("eio.cfg"), EIO).expect("EIO");
+    fs::write(dir.join("main.mod"), format!("{HEAD}{body}  ENDPROC\nENDMODULE\n")).expect("module");
+    fs::write(dir.join("cnv.stim"), format!("at 0 set c1Speed 100\n{objects}")).expect("stimulus");
+    dir
+}
+
+fn run(dir: &Path, extra: &[&str]) -> Output {
+    let stim = dir.join("cnv.stim");
+    let mut args = vec!["run", "--quiet", "--stimulus", stim.to_str().expect("path")];
+    args.extend_from_slice(extra);
+    args.push(dir.to_str().expect("path"));
+    std::process::Command::new(env!("CARGO_BIN_EXE_rapid")).args(&args).output().expect("run rapid")
+}
+
+fn stdout(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+fn stderr(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+/// One object at the sync switch at 0.5 s.
+const ONE_OBJECT: &str = "at 0.5 set c1Sync 1\nat 0.6 set c1Sync 0\n";
+
+#[test]
+fn the_robot_follows_the_object_it_connected_to() {
+    // Connected at 0.5 s (the object at the switch). The move above it is planned with
+    // the object where it is then (x 250): 50 mm at v500, 0.15 s + 0.05 s settle, so the
+    // robot stands above it at 0.7 s, where the object has travelled 20 mm: x 270. After
+    // 0.5 s more it has travelled 70 mm and the robot with it: x 320, still 100 mm above
+    // the object. Leaving for home (fixed work object) from x 320: 20 mm at v1000, a
+    // triangle 2·√(20/10000) = 0.0894 s + 0.05 s: home at 1.339 s.
+    let body = "    WaitWObj wobj_cnv1;
+    TPWrite \"connected \" \\Num:=ClkRead(c);
+    MoveL above, v500, fine, tool0 \\WObj:=wobj_cnv1;
+    TPWrite \"above \" \\Num:=ClkRead(c);
+    w := CPos(\\Tool:=tool0 \\WObj:=wobj0);
+    TPWrite \"world \" \\Pos:=w;
+    WaitTime 0.5;
+    p := CRobT(\\Tool:=tool0 \\WObj:=wobj_cnv1);
+    TPWrite \"rel \" \\Pos:=p.trans;
+    w := CPos(\\Tool:=tool0 \\WObj:=wobj0);
+    TPWrite \"world \" \\Pos:=w;
+    MoveL home, v1000, fine, tool0 \\WObj:=wobj0;
+    TPWrite \"home \" \\Num:=ClkRead(c);
+    DropWObj wobj_cnv1;
+";
+    let dir = project("follow", body, ONE_OBJECT);
+    let trace = dir.join("trace.csv");
+    let out = run(&dir, &["--trace", trace.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(
+        stdout(&out),
+        "connected 0.5\nabove 0.7\nworld [270,0,400]\nrel [0,0,100]\nworld [320,0,400]\nhome 1.339\n"
+    );
+    // 0.1 s into the tracked move: 12.5 mm of ramp and 0.05 s at 500 mm/s towards x 250
+    // (x 262.5 in the frozen frame), shifted by the object's 10 mm: x 272.5.
+    let text = fs::read_to_string(&trace).expect("trace");
+    let row = text.lines().find(|l| l.starts_with("0.600,")).expect("a row at 0.6 s");
+    let x: f64 = row.split(',').nth(7).and_then(|f| f.parse().ok()).expect("x");
+    assert!((x - 272.5).abs() < 0.01, "x {x} in {row}");
+}
+
+#[test]
+fn rel_dist_waits_until_the_object_is_that_far() {
+    // 50 mm past the switch at 100 mm/s: 0.5 s after the edge.
+    let body = "    WaitWObj wobj_cnv1 \\RelDist:=50;\n    TPWrite \"connected \" \\Num:=ClkRead(c);\n";
+    let out = run(&project("rel_dist", body, ONE_OBJECT), &[]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(stdout(&out), "connected 1\n");
+}
+
+#[test]
+fn objects_past_the_start_window_are_skipped() {
+    // The first object leaves the 200 mm window at 2.5 s; waiting from 3 s, the robot
+    // connects to the second one, at the switch at 3.5 s.
+    let body = "    WaitTime 3 - ClkRead(c);\n    WaitWObj wobj_cnv1;\n    TPWrite \"connected \" \\Num:=ClkRead(c);\n";
+    let objects = "at 0.5 set c1Sync 1\nat 0.6 set c1Sync 0\nat 3.5 set c1Sync 1\nat 3.6 set c1Sync 0\n";
+    let out = run(&project("window", body, objects), &[]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(stdout(&out), "connected 3.5\n");
+}
+
+#[test]
+fn max_time_and_time_flag() {
+    let body = "    WaitWObj wobj_cnv1 \\MaxTime:=1 \\TimeFlag:=late;\n    TPWrite \"late \" \\Bool:=late;\n    \
+                TPWrite \"at \" \\Num:=ClkRead(c);\n    WaitWObj wobj_cnv1 \\MaxTime:=1;\n";
+    let out = run(&project("max_time", body, ""), &[]);
+    // The first wait starts when home is reached (before 0.5 s) and ends 1 s later; the
+    // second ends with ERR_WAIT_MAXTIME.
+    assert_eq!(out.status.code(), Some(1));
+    let text = stdout(&out);
+    assert!(text.starts_with("late TRUE\nat 1."), "{text}");
+    assert!(stderr(&out).contains("ERR_WAIT_MAXTIME"), "{}", stderr(&out));
+}
+
+#[test]
+fn waiting_again_while_connected_is_err_cnv_connect() {
+    let body = "    WaitWObj wobj_cnv1;\n    WaitWObj wobj_cnv1 \\RelDist:=10;\n    \
+                TPWrite \"rel \" \\Num:=ClkRead(c);\n    WaitWObj wobj_cnv1;\n";
+    let out = run(&project("connected_twice", body, ONE_OBJECT), &[]);
+    // \RelDist on the connected object: 10 mm at 100 mm/s after 0.5 s.
+    assert_eq!(stdout(&out), "rel 0.6\n");
+    assert_eq!(out.status.code(), Some(1));
+    assert!(stderr(&out).contains("ERR_CNV_CONNECT"), "{}", stderr(&out));
+}
+
+#[test]
+fn dropping_while_the_robot_tracks_stops_the_motion() {
+    let body =
+        "    WaitWObj wobj_cnv1;\n    MoveL above, v500, fine, tool0 \\WObj:=wobj_cnv1;\n    DropWObj wobj_cnv1;\n";
+    let out = run(&project("drop_tracking", body, ONE_OBJECT), &[]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(stderr(&out).contains("DropWObj while the robot still moves in the conveyor's work object"));
+}
+
+#[test]
+fn a_move_on_an_object_past_the_maximum_distance_stops() {
+    // At 5 s the object is 450 mm from the switch, beyond 400 mm.
+    let body = "    WaitWObj wobj_cnv1;\n    WaitTime 5 - ClkRead(c);\n    MoveL above, v500, fine, tool0 \\WObj:=wobj_cnv1;\n";
+    let out = run(&project("max_dist", body, ONE_OBJECT), &[]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(stderr(&out).contains("beyond the maximum distance 400 mm"), "{}", stderr(&out));
+}
+
+#[test]
+fn a_move_in_the_conveyor_work_object_before_wait_wobj_is_refused() {
+    let body = "    MoveL above, v500, fine, tool0 \\WObj:=wobj_cnv1;\n";
+    let out = run(&project("not_connected", body, ONE_OBJECT), &[]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(stderr(&out).contains("ERR_CNV_NOT_ACT"), "{}", stderr(&out));
+}

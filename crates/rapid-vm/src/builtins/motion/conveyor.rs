@@ -1,0 +1,221 @@
+//! Conveyor tracking (§1.8 传送带跟踪: WaitWObj, DropWObj): a conveyor is a simulated
+//! axis whose speed is an analog input (mm/s) and whose sync switch is a digital input
+//! (each rising edge puts an object at distance 0), both driven by the stimulus. An
+//! object's distance is how far the conveyor has moved since its edge.
+//!
+//! WaitWObj connects a work object whose `ufmec` names the conveyor (`ufprog` FALSE)
+//! to the first object in the start window. Moves in that work object are then
+//! planned with the object frozen where it is when the first of them starts (the
+//! conveyor's base frame moved along its x axis by the object's distance), and the
+//! robot's path is shifted by how far the object has moved since: the robot follows
+//! it. The first move in a fixed work object ends the tracking (the last conveyor
+//! point becomes a stop point); DropWObj then releases the object.
+// uncertain: the controller blends the corner between a conveyor move and a fixed one;
+// here that point stops. The tracking robot's axis speeds are not re-checked.
+
+use std::collections::VecDeque;
+
+use nalgebra::{Translation3, Vector3};
+use rapid_motion::plan::Sample;
+use rapid_motion::{Joints, Kinematics, Pose};
+
+/// A conveyor as the configuration describes it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ConveyorConfig {
+    /// The conveyor's mechanical unit (a wobj's `ufmec`).
+    pub name: String,
+    /// The digital input of the sync switch and the analog input of the speed (mm/s).
+    pub sync: u32,
+    pub speed: u32,
+    /// The conveyor's base frame in the world frame; objects move along its x axis.
+    pub base: Pose,
+    /// Objects farther than this from the sync switch (mm) are past the start window:
+    /// WaitWObj skips them.
+    pub start_window: f64,
+    /// A tracked object farther than this (mm) is out of the robot's tracking range.
+    pub max_dist: f64,
+}
+
+/// A conveyor and its objects.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Conveyor {
+    pub config: ConveyorConfig,
+    /// (time, position, speed): the position grows linearly from each entry on.
+    profile: Vec<(f64, f64, f64)>,
+    /// How much of the I/O change log was read.
+    seen: usize,
+    /// The conveyor position at which each waiting object passed the sync switch.
+    queue: VecDeque<f64>,
+    /// The connected object's sync position.
+    pub connected: Option<f64>,
+}
+
+impl Conveyor {
+    /// A conveyor at position 0 moving at `speed` (the speed input's value at start).
+    pub fn new(config: ConveyorConfig, speed: f64) -> Conveyor {
+        Conveyor { config, profile: vec![(0.0, 0.0, speed)], seen: 0, queue: VecDeque::new(), connected: None }
+    }
+
+    /// Where the conveyor is at time `t`, mm (after the last known change, at the last
+    /// known speed).
+    pub fn position(&self, t: f64) -> f64 {
+        let i = self.profile.partition_point(|&(t0, _, _)| t0 <= t).saturating_sub(1);
+        let (t0, p0, v) = self.profile[i];
+        p0 + v * (t - t0).max(0.0)
+    }
+
+    /// The connected object's distance from the sync switch at `t`.
+    pub fn distance(&self, t: f64) -> Option<f64> {
+        self.connected.map(|sync| self.position(t) - sync)
+    }
+
+    /// Reads the I/O changes not read yet: speed changes and objects at the switch.
+    pub fn refresh(&mut self, io: &rapid_io::IoSystem) {
+        let changes = io.changes();
+        for change in changes.get(self.seen..).unwrap_or(&[]) {
+            if change.id == self.config.speed {
+                let p = self.position(change.time);
+                self.profile.push((change.time, p, change.new));
+            } else if change.id == self.config.sync && change.old == 0.0 && change.new != 0.0 {
+                let p = self.position(change.time);
+                self.queue.push_back(p);
+            }
+        }
+        self.seen = changes.len();
+    }
+
+    /// Drops the objects past the start window at `t`; the first one left, if any.
+    pub fn first_in_window(&mut self, t: f64) -> Option<f64> {
+        let here = self.position(t);
+        while self.queue.front().is_some_and(|&sync| here - sync > self.config.start_window) {
+            self.queue.pop_front();
+        }
+        self.queue.front().copied()
+    }
+
+    /// Connects the first object of the queue (taken out of it).
+    pub fn connect_first(&mut self) {
+        self.connected = self.queue.pop_front();
+    }
+
+    /// When an object at sync position `sync` will be `dist` from the switch, at the
+    /// speed known now; `None` when the conveyor stands.
+    pub fn time_at_distance(&self, sync: f64, dist: f64, now: f64) -> Option<f64> {
+        let (_, _, v) = *self.profile.last()?;
+        let left = sync + dist - self.position(now);
+        if left <= 0.0 {
+            return Some(now);
+        }
+        (v > 0.0).then(|| now + left / v)
+    }
+
+    /// The object frame's user frame for an object `distance` from the switch.
+    pub fn frame_at(&self, distance: f64) -> Pose {
+        self.config.base * Translation3::new(distance, 0.0, 0.0)
+    }
+}
+
+/// A stretch of time in which the robot follows a conveyor object: the moves made in
+/// it were planned with the object at `d_ref`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Span {
+    pub conveyor: usize,
+    /// The object's sync position.
+    pub object: f64,
+    pub t_ref: f64,
+    pub d_ref: f64,
+    /// When the robot stopped following it (the end of its last conveyor move).
+    pub t_end: Option<f64>,
+    /// The conveyor's direction in the robot's base frame.
+    pub dir: Vector3<f64>,
+}
+
+/// The conveyors of a motion task and the robot's tracking of them.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Conveyors {
+    pub list: Vec<Conveyor>,
+    pub spans: Vec<Span>,
+    /// The first time the tracking robot could not reach its shifted path.
+    pub unreachable: Option<f64>,
+}
+
+impl Conveyors {
+    /// The conveyor of this name.
+    pub fn find(&self, name: &str) -> Option<usize> {
+        self.list.iter().position(|c| c.config.name.eq_ignore_ascii_case(name))
+    }
+
+    /// The span the robot is following now, if any.
+    pub fn open(&self) -> Option<&Span> {
+        self.spans.last().filter(|s| s.t_end.is_none())
+    }
+
+    /// How far (base frame, mm) the robot is shifted at time `t` on (or standing after)
+    /// a move that started at `move_start`: moves planned while it followed an object
+    /// are shifted by the object's travel since, until the robot stopped following it.
+    pub fn shift(&self, t: f64, move_start: f64) -> Option<Vector3<f64>> {
+        const EPS: f64 = 1e-9;
+        let span = self
+            .spans
+            .iter()
+            .rev()
+            .find(|s| s.t_ref <= move_start + EPS && s.t_end.is_none_or(|end| move_start < end - EPS))?;
+        let t = span.t_end.map_or(t, |end| t.min(end));
+        let conveyor = &self.list[span.conveyor];
+        let d = conveyor.position(t) - span.object;
+        Some(span.dir * (d - span.d_ref))
+    }
+}
+
+impl super::robot::RobotState {
+    /// Reads the conveyors' inputs from the I/O system's change log.
+    pub fn refresh_conveyors(&mut self, io: Option<&rapid_io::IoSystem>) {
+        let Some(io) = io else { return };
+        for conveyor in &mut self.conveyors.list {
+            conveyor.refresh(io);
+        }
+    }
+
+    /// Joints where the robot is at `t` when its planned `joints` are shifted by the
+    /// conveyor it follows; unchanged when it follows none.
+    pub(super) fn tracked_joints(&mut self, t: f64, joints: Joints) -> Joints {
+        if self.conveyors.spans.is_empty() {
+            return joints;
+        }
+        let Some(shift) = self.conveyors.shift(t, self.move_start_at(t)) else { return joints };
+        let flange = Translation3::from(shift) * self.kin.forward(&joints);
+        match self.kin.inverse_near(&flange, &joints) {
+            Ok(shifted) => shifted,
+            Err(_) => {
+                self.conveyors.unreachable.get_or_insert(t);
+                joints
+            }
+        }
+    }
+
+    /// The start of the move the robot is on (or last made) at `t`, as `joints_at`
+    /// chooses it.
+    fn move_start_at(&self, t: f64) -> f64 {
+        let t = self.pause.as_ref().map_or(t, |p| t.min(p.since));
+        if self.planner.has_pending() && t > self.planner.time() {
+            return self.planner.time();
+        }
+        match self.ahead.iter().find(|m| t <= m.end) {
+            Some(m) => m.start,
+            None => self.ahead.back().map_or(self.planner.time(), |m| m.start),
+        }
+    }
+
+    /// A trace sample of a move that started at `move_start`, shifted by the conveyor
+    /// the robot followed then.
+    pub fn tracked(&self, move_start: f64, mut sample: Sample) -> Sample {
+        let Some(shift) = self.conveyors.shift(sample.time, move_start) else { return sample };
+        let by = Translation3::from(shift);
+        sample.flange = by * sample.flange;
+        sample.tcp = by * sample.tcp;
+        if let Ok(joints) = self.kin.inverse_near(&sample.flange, &sample.joints) {
+            sample.joints = joints;
+        }
+        sample
+    }
+}
