@@ -191,5 +191,5 @@ fn implemented_counts_inline_built_ins_and_refuses_the_rest() {
     assert!(rapid_vm::builtins::implemented("present"));
     assert!(rapid_vm::builtins::implemented("ArgName"));
     assert!(rapid_vm::builtins::implemented("StrLen"));
-    assert!(!rapid_vm::builtins::implemented("WaitWObj"));
+    assert!(!rapid_vm::builtins::implemented("WaitSensor"));
 }
