@@ -374,7 +374,7 @@ fn write_trace(robot: &RobotState, places: &[String], path: &Path, sample_ms: f6
                 }
                 // A move made with `\Corr` is where its path correction put it; an axis in
                 // independent mode where its own motion took it.
-                let sample = robot.tracked(planned.start, robot.corrected(planned, sample));
+                let sample = robot.tracked(planned, robot.corrected(planned, sample));
                 let sample = robot.with_independent(sample, &mount);
                 let point = cursor.locate(sample);
                 if json {

@@ -221,3 +221,65 @@ fn search_ext_j_records_the_axes_at_the_hit_and_brakes() {
     assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
     assert_eq!(String::from_utf8_lossy(&out.stdout), "hit 425\nt 0.58\na 465\nb 0\n");
 }
+
+#[test]
+fn a_turntable_carries_its_work_object_and_the_robot_follows() {
+    // STN1 (eax_b) turns about the z axis of its frame at (400, 0, 200); its work
+    // object's user frame turns with it. The robot stands at (300, 0, 400) = (-100, 0,
+    // 200) in the object. Moving to that same object point while the table turns 90°
+    // (0.5 + 0.15 s, + 0.05 s settle) carries the robot round to (400, -100, 400). Then
+    // 50 mm along the object's y at v100 (0.5 + 0.01 s + 0.05 s): (350, -100, 400).
+    let extra = "base = [400, 0, 200]\n";
+    let manifest_units = UNITS.replace("name = \"STN1\"\n", &format!("name = \"STN1\"\n{extra}"));
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external_axes").join("turntable");
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n{manifest_units}");
+    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    let module = "MODULE main
+  PERS wobjdata wobj_stn1 := [FALSE, FALSE, \"STN1\", [[0,0,0],[1,0,0,0]], [[0,0,0],[1,0,0,0]]];
+  CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[9E9,0,9E9,9E9,9E9,9E9]];
+  CONST robtarget p1 := [[-100,0,200],[0,0,1,0],[0,0,0,0],[9E9,90,9E9,9E9,9E9,9E9]];
+  CONST robtarget p2 := [[-100,50,200],[0,0,1,0],[0,0,0,0],[9E9,90,9E9,9E9,9E9,9E9]];
+  VAR clock c;
+  VAR robtarget p;
+  VAR pos w;
+  PROC main()
+    ClkStart c;
+    ConfL \\Off;
+    MoveJ home, v1000, fine, tool0;
+    WaitTime 1 - ClkRead(c);
+    MoveL p1, v100, fine, tool0 \\WObj:=wobj_stn1;
+    TPWrite \"t \" \\Num:=ClkRead(c);
+    w := CPos(\\Tool:=tool0 \\WObj:=wobj0);
+    TPWrite \"world \" \\Pos:=w;
+    p := CRobT(\\Tool:=tool0 \\WObj:=wobj_stn1);
+    TPWrite \"rel \" \\Pos:=p.trans;
+    MoveL p2, v100, fine, tool0 \\WObj:=wobj_stn1;
+    TPWrite \"t \" \\Num:=ClkRead(c);
+    w := CPos(\\Tool:=tool0 \\WObj:=wobj0);
+    TPWrite \"world \" \\Pos:=w;
+  ENDPROC
+ENDMODULE
+";
+    fs::write(dir.join("main.mod"), module).expect("module");
+    let trace = dir.join("trace.csv");
+    let out = rapid(&["run", "--quiet", "--trace", trace.to_str().unwrap(), dir.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        "t 1.7\nworld [400,-100,400]\nrel [-100,0,200]\nt 2.26\nworld [350,-100,400]\n"
+    );
+    // At 1.352 s the table has ramped 13.5° in 0.15 s and turned 0.202 s at 180 °/s:
+    // 49.86° (less by up to 0.2°: the move starts when WaitTime ends, ClkRead counting
+    // whole milliseconds), and the TCP is with it on its 100 mm circle round (400, 0).
+    let text = fs::read_to_string(&trace).expect("trace");
+    let row = text.lines().find(|l| l.starts_with("1.352,")).expect("a row at 1.352 s");
+    let fields: Vec<&str> = row.split(',').collect();
+    let number = |i: usize| -> f64 { fields[i].parse().expect("number") };
+    let (x, y, eax_b) = (number(7), number(8), number(fields.len() - 2));
+    assert!((eax_b - (13.5 + 0.202 * 180.0)).abs() < 0.2, "eax_b {eax_b}");
+    let angle = eax_b.to_radians();
+    assert!((x - (400.0 - 100.0 * angle.cos())).abs() < 0.01, "x {x}");
+    assert!((y + 100.0 * angle.sin()).abs() < 0.01, "y {y}");
+}

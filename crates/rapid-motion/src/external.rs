@@ -87,4 +87,8 @@ pub struct ExternalUnit {
     pub active_at_start: bool,
     /// DeactUnit is refused (`-deactivation_forbidden`).
     pub deactivation_forbidden: bool,
+    /// Where the unit carries work objects (a turntable turns them about this frame's
+    /// z axis, a linear unit moves them along its x axis), in the world frame; `None`
+    /// when it carries none.
+    pub frame: Option<crate::Pose>,
 }

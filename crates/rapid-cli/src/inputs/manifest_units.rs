@@ -20,6 +20,8 @@ pub(super) struct RawUnit {
     task: Option<Spanned<String>>,
     active: Option<bool>,
     deactivation_forbidden: Option<bool>,
+    base: Option<Spanned<Vec<f64>>>,
+    orientation: Option<Spanned<Vec<f64>>>,
     #[serde(default)]
     axis: Vec<Spanned<RawAxis>>,
 }
@@ -72,11 +74,18 @@ pub(super) fn read(raw: &[Spanned<RawUnit>], find: &mut dyn FnMut(Range<usize>, 
                 find(spanned.span(), format!("unit `{name}`: logical axis {} is configured twice", a.logical));
             }
         }
+        // A frame (base, orientation) lets the unit carry work objects (`ufmec`).
+        let frame = (raw.base.is_some() || raw.orientation.is_some()).then(|| {
+            let base = fixed::<3>(raw.base.as_ref(), [0.0; 3], "base", &name, find);
+            let orientation = orientation(raw.orientation.as_ref(), &name, find);
+            rapid_motion::pose::pose(base, orientation)
+        });
         let unit = ExternalUnit {
             name,
             axes,
             active_at_start: raw.active.unwrap_or(true),
             deactivation_forbidden: raw.deactivation_forbidden.unwrap_or(false),
+            frame,
         };
         units.push(TaskUnit { task, unit });
     }
@@ -167,11 +176,7 @@ pub(super) fn read_conveyors(
             find(raw.name.span(), format!("unit `{name}` is configured twice"));
         }
         let base = fixed::<3>(raw.base.as_ref(), [0.0; 3], "base", &name, find);
-        let orientation = fixed::<4>(raw.orientation.as_ref(), [1.0, 0.0, 0.0, 0.0], "orientation", &name, find);
-        let norm = orientation.iter().map(|q| q * q).sum::<f64>().sqrt();
-        if let Some(o) = raw.orientation.as_ref().filter(|_| (norm - 1.0).abs() > 1e-3) {
-            find(o.span(), format!("conveyor `{name}`: the orientation is not a unit quaternion"));
-        }
+        let orientation = orientation(raw.orientation.as_ref(), &name, find);
         for (value, key) in [(&raw.start_window, "start_window"), (&raw.max_dist, "max_dist")] {
             if !(value.get_ref().is_finite() && *value.get_ref() > 0.0) {
                 find(value.span(), format!("conveyor `{name}`: {key} {} is not a positive number", value.get_ref()));
@@ -191,6 +196,16 @@ pub(super) fn read_conveyors(
     conveyors
 }
 
+/// A unit quaternion (`[1, 0, 0, 0]` when absent).
+fn orientation(raw: Option<&Spanned<Vec<f64>>>, name: &str, find: &mut dyn FnMut(Range<usize>, String)) -> [f64; 4] {
+    let orientation = fixed::<4>(raw, [1.0, 0.0, 0.0, 0.0], "orientation", name, find);
+    let norm = orientation.iter().map(|q| q * q).sum::<f64>().sqrt();
+    if let Some(o) = raw.filter(|_| (norm - 1.0).abs() > 1e-3) {
+        find(o.span(), format!("`{name}`: the orientation is not a unit quaternion"));
+    }
+    orientation
+}
+
 /// An array of exactly N numbers, or `default` when absent.
 fn fixed<const N: usize>(
     raw: Option<&Spanned<Vec<f64>>>,
@@ -203,7 +218,7 @@ fn fixed<const N: usize>(
     match <[f64; N]>::try_from(raw.get_ref().as_slice()) {
         Ok(values) if values.iter().all(|v| v.is_finite()) => values,
         _ => {
-            find(raw.span(), format!("conveyor `{name}`: {key} takes {N} numbers"));
+            find(raw.span(), format!("`{name}`: {key} takes {N} numbers"));
             default
         }
     }

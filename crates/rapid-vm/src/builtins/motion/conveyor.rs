@@ -16,6 +16,7 @@
 use std::collections::VecDeque;
 
 use nalgebra::{Translation3, Vector3};
+use rapid_motion::external::Eax;
 use rapid_motion::plan::Sample;
 use rapid_motion::{Joints, Kinematics, Pose};
 
@@ -115,19 +116,55 @@ impl Conveyor {
     }
 }
 
-/// A stretch of time in which the robot follows a conveyor object: the moves made in
-/// it were planned with the object at `d_ref`.
+/// What carries a work object the robot follows.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Mover {
+    /// A conveyor (its index) and the connected object's sync position.
+    Conveyor { conveyor: usize, object: f64 },
+    /// An external unit (its index) whose single axis (`extjoint` index) carries the
+    /// work object: a turntable turns it about its frame's z axis, a linear unit moves
+    /// it along its frame's x axis.
+    Unit { unit: usize, axis: usize, linear: bool, frame: Pose },
+}
+
+/// A stretch of time in which the robot follows a moving work object: the moves made in
+/// it were planned with the mover at `at_ref` (the object's distance, or the axis value).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Span {
-    pub conveyor: usize,
-    /// The object's sync position.
-    pub object: f64,
+    pub mover: Mover,
     pub t_ref: f64,
-    pub d_ref: f64,
-    /// When the robot stopped following it (the end of its last conveyor move).
+    pub at_ref: f64,
+    /// When the robot stopped following it (the end of its last move in it).
     pub t_end: Option<f64>,
-    /// The conveyor's direction in the robot's base frame.
-    pub dir: Vector3<f64>,
+}
+
+impl Mover {
+    /// The motion (world frame) that carries an object from the mover at `from` to `to`.
+    pub fn carry(&self, conveyors: &[Conveyor], from: f64, to: f64) -> Pose {
+        let delta = to - from;
+        match *self {
+            Mover::Conveyor { conveyor, .. } => {
+                let dir = conveyors[conveyor].config.base.rotation * Vector3::x();
+                Pose::from_parts(Translation3::from(dir * delta), nalgebra::UnitQuaternion::identity())
+            }
+            Mover::Unit { linear: true, frame, .. } => {
+                let dir = frame.rotation * Vector3::x();
+                Pose::from_parts(Translation3::from(dir * delta), nalgebra::UnitQuaternion::identity())
+            }
+            Mover::Unit { linear: false, frame, .. } => {
+                let turn = nalgebra::UnitQuaternion::from_axis_angle(&Vector3::z_axis(), delta.to_radians());
+                frame * Pose::from_parts(Translation3::identity(), turn) * frame.inverse()
+            }
+        }
+    }
+
+    /// The user frame of the carried work object with the mover at `at`.
+    pub fn user_frame(&self, conveyors: &[Conveyor], at: f64) -> Pose {
+        match *self {
+            Mover::Conveyor { conveyor, .. } => conveyors[conveyor].frame_at(at),
+            Mover::Unit { frame, .. } => self.carry(conveyors, 0.0, at) * frame,
+        }
+    }
 }
 
 /// The conveyors of a motion task and the robot's tracking of them.
@@ -150,20 +187,23 @@ impl Conveyors {
         self.spans.last().filter(|s| s.t_end.is_none())
     }
 
-    /// How far (base frame, mm) the robot is shifted at time `t` on (or standing after)
-    /// a move that started at `move_start`: moves planned while it followed an object
-    /// are shifted by the object's travel since, until the robot stopped following it.
-    pub fn shift(&self, t: f64, move_start: f64) -> Option<Vector3<f64>> {
+    /// The span a move that started at `move_start` was planned in: moves planned while
+    /// the robot followed an object move with it until it stopped following.
+    pub fn span_of(&self, move_start: f64) -> Option<&Span> {
         const EPS: f64 = 1e-9;
-        let span = self
-            .spans
+        self.spans
             .iter()
             .rev()
-            .find(|s| s.t_ref <= move_start + EPS && s.t_end.is_none_or(|end| move_start < end - EPS))?;
-        let t = span.t_end.map_or(t, |end| t.min(end));
-        let conveyor = &self.list[span.conveyor];
-        let d = conveyor.position(t) - span.object;
-        Some(span.dir * (d - span.d_ref))
+            .find(|s| s.t_ref <= move_start + EPS && s.t_end.is_none_or(|end| move_start < end - EPS))
+    }
+
+    /// The conveyor object's distance at `t` (for a unit, `None`: its axis is the
+    /// robot's to say).
+    fn conveyor_at(&self, mover: &Mover, t: f64) -> Option<f64> {
+        match *mover {
+            Mover::Conveyor { conveyor, object } => Some(self.list[conveyor].position(t) - object),
+            Mover::Unit { .. } => None,
+        }
     }
 }
 
@@ -176,14 +216,28 @@ impl super::robot::RobotState {
         }
     }
 
-    /// Joints where the robot is at `t` when its planned `joints` are shifted by the
-    /// conveyor it follows; unchanged when it follows none.
+    /// How the object the robot follows at `t` on a move that started at `move_start`
+    /// has moved since the move was planned (in the robot's base frame; the base is the
+    /// world frame here); `eax` gives the external axes at a time.
+    fn carried(&self, t: f64, move_start: f64, eax: impl Fn(f64) -> Option<Eax>) -> Option<Pose> {
+        let span = self.conveyors.span_of(move_start)?;
+        let t = span.t_end.map_or(t, |end| t.min(end));
+        let at = match span.mover {
+            Mover::Unit { axis, .. } => eax(t)?[axis],
+            conveyor => self.conveyors.conveyor_at(&conveyor, t)?,
+        };
+        Some(span.mover.carry(&self.conveyors.list, span.at_ref, at))
+    }
+
+    /// Joints where the robot is at `t` when its planned `joints` are carried by the
+    /// work object it follows; unchanged when it follows none.
     pub(super) fn tracked_joints(&mut self, t: f64, joints: Joints) -> Joints {
         if self.conveyors.spans.is_empty() {
             return joints;
         }
-        let Some(shift) = self.conveyors.shift(t, self.move_start_at(t)) else { return joints };
-        let flange = Translation3::from(shift) * self.kin.forward(&joints);
+        let start = self.move_start_at(t);
+        let Some(carry) = self.carried(t, start, |at| self.eax_at(at)) else { return joints };
+        let flange = carry * self.kin.forward(&joints);
         match self.kin.inverse_near(&flange, &joints) {
             Ok(shifted) => shifted,
             Err(_) => {
@@ -206,11 +260,12 @@ impl super::robot::RobotState {
         }
     }
 
-    /// A trace sample of a move that started at `move_start`, shifted by the conveyor
-    /// the robot followed then.
-    pub fn tracked(&self, move_start: f64, mut sample: Sample) -> Sample {
-        let Some(shift) = self.conveyors.shift(sample.time, move_start) else { return sample };
-        let by = Translation3::from(shift);
+    /// A trace sample of `planned`, carried by the work object the robot followed then.
+    pub fn tracked(&self, planned: &rapid_motion::plan::PlannedMove, mut sample: Sample) -> Sample {
+        if self.conveyors.spans.is_empty() {
+            return sample;
+        }
+        let Some(by) = self.carried(sample.time, planned.start, |at| planned.eax_at(at)) else { return sample };
         sample.flange = by * sample.flange;
         sample.tcp = by * sample.tcp;
         if let Ok(joints) = self.kin.inverse_near(&sample.flange, &sample.joints) {

@@ -95,18 +95,31 @@ pub(super) fn chain(
     Ok(chain)
 }
 
-/// The user frame of a work object riding a conveyor: the conveyor's base frame moved
-/// by the connected object's distance from the sync switch.
+/// The user frame of a work object a mechanical unit moves, where it is now: a
+/// conveyor's base frame moved by the connected object's distance from the sync switch,
+/// or an external unit's frame turned (moved) by its axis.
 fn conveyor_frame(ctx: &Ctx<'_>, wobj: &Value) -> Result<Isometry3<f64>, RapidError> {
-    let Some(c) = super::tracking::conveyor_of(ctx, wobj) else {
-        return Err(RapidError::fatal(
-            "a work object moved by a mechanical unit other than a conveyor (ufprog FALSE) is not supported yet",
-        ));
-    };
-    let conveyor = &ctx.resources.robot.conveyors.list[c];
-    match conveyor.distance(ctx.time) {
-        Some(d) => Ok(conveyor.frame_at(d)),
-        None => Err(ctx.error(Err::CnvNotActive, "the conveyor's work object is connected to no object (WaitWObj)")),
+    use super::tracking::Carrier;
+    let robot = &ctx.resources.robot;
+    match super::tracking::carrier_of(ctx, wobj)? {
+        Some(Carrier::Conveyor(c)) => {
+            let conveyor = &robot.conveyors.list[c];
+            match conveyor.distance(ctx.time) {
+                Some(d) => Ok(conveyor.frame_at(d)),
+                None => {
+                    Err(ctx.error(Err::CnvNotActive, "the conveyor's work object is connected to no object (WaitWObj)"))
+                }
+            }
+        }
+        Some(Carrier::Unit(u)) => {
+            let mover = super::tracking::unit_mover(robot, u)?;
+            let super::conveyor::Mover::Unit { axis, .. } = mover else { unreachable!("a unit's mover") };
+            let at = robot.eax_at(ctx.time).map_or(0.0, |eax| eax[axis]);
+            Ok(mover.user_frame(&robot.conveyors.list, at))
+        }
+        None => Err(RapidError::fatal(
+            "a work object moved by a mechanical unit the system does not have (ufprog FALSE, ufmec) is not supported",
+        )),
     }
 }
 

@@ -110,7 +110,7 @@ impl super::robot::RobotState {
 
     /// Where the external axes are at controller time `t` (as `joints_at` for the
     /// arm), or `None` when the task has none.
-    pub fn eax_at(&mut self, t: f64) -> Option<Eax> {
+    pub fn eax_at(&self, t: f64) -> Option<Eax> {
         let end = self.planner.end_eax()?;
         let t = self.pause.as_ref().map_or(t, |p| t.min(p.since));
         if self.planner.has_pending() && t > self.planner.time() {

@@ -348,10 +348,10 @@ pub(super) fn frames_at(
 ) -> Result<rapid_motion::frames::FrameChain, RapidError> {
     let tool = ctx.value(&args[tool])?;
     let wobj = if present(args.get(wobj)) { Some(ctx.value(&args[wobj])?) } else { None };
-    let conveyor = super::tracking::begin_move(ctx, wobj.as_ref())?;
+    let carrier = super::tracking::begin_move(ctx, wobj.as_ref())?;
     let pdisp = if displaced { ctx.resources.motion.settings.pdisp } else { nalgebra::Isometry3::identity() };
     let mut chain = data::chain(ctx, &tool, wobj.as_ref(), pdisp)?;
-    if let Some(uframe) = conveyor.and_then(|c| super::tracking::planning_frame(ctx, c)) {
+    if let Some(uframe) = carrier.and_then(|c| super::tracking::planning_frame(ctx, c)) {
         chain.uframe = uframe;
     }
     Ok(chain)

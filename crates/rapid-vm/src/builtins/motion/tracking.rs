@@ -1,10 +1,8 @@
 //! The conveyor tracking instructions (WaitWObj, DropWObj) and what a move does when
 //! its work object rides a conveyor (see `conveyor.rs` for the model).
 
-use nalgebra::Vector3;
-
 use super::super::{present, Ctx, StopKind};
-use super::conveyor::Span;
+use super::conveyor::{Mover, Span};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
@@ -24,20 +22,73 @@ pub(super) fn refresh(ctx: &mut Ctx<'_>) {
     resources.robot.refresh_conveyors(resources.io.system.as_ref());
 }
 
+/// What carries a work object that moves: a conveyor or an external unit (indexes).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Carrier {
+    Conveyor(usize),
+    Unit(usize),
+}
+
+impl Carrier {
+    fn of(mover: &Mover) -> Carrier {
+        match *mover {
+            Mover::Conveyor { conveyor, .. } => Carrier::Conveyor(conveyor),
+            Mover::Unit { unit, .. } => Carrier::Unit(unit),
+        }
+    }
+}
+
+/// The `ufmec` of a work object that moves with a mechanical unit (`ufprog` FALSE).
+fn ufmec(wobj: &Value) -> Option<&str> {
+    let Value::Record(w) = wobj else { return None };
+    match (w.fields.get(1), w.fields.get(2)) {
+        (Some(Value::Bool(false)), Some(Value::Str(ufmec))) => Some(ufmec),
+        _ => None,
+    }
+}
+
 /// The conveyor a work object rides (`ufprog` FALSE, `ufmec` a conveyor's name), if
 /// it does.
 pub(super) fn conveyor_of(ctx: &Ctx<'_>, wobj: &Value) -> Option<usize> {
-    let Value::Record(w) = wobj else { return None };
-    match (w.fields.get(1), w.fields.get(2)) {
-        (Some(Value::Bool(false)), Some(Value::Str(ufmec))) => ctx.resources.robot.conveyors.find(ufmec),
-        _ => None,
-    }
+    ctx.resources.robot.conveyors.find(ufmec(wobj)?)
 }
 
 /// The conveyor of WaitWObj's and DropWObj's work object.
 fn conveyor_arg(ctx: &Ctx<'_>, wobj: &Value) -> Result<usize, RapidError> {
     conveyor_of(ctx, &ctx.value(wobj)?)
         .ok_or_else(|| ctx.error(Err::CnvNotActive, "the work object rides no conveyor of the system (ufprog, ufmec)"))
+}
+
+/// What carries a work object: a conveyor, or an external unit with one axis and a
+/// frame; `None` for a fixed work object (or one no unit of the system carries).
+pub(super) fn carrier_of(ctx: &Ctx<'_>, wobj: &Value) -> Result<Option<Carrier>, RapidError> {
+    let Some(name) = ufmec(wobj) else { return Ok(None) };
+    let robot = &ctx.resources.robot;
+    if let Some(c) = robot.conveyors.find(name) {
+        return Ok(Some(Carrier::Conveyor(c)));
+    }
+    let Some(u) = robot.external.find(name) else { return Ok(None) };
+    unit_mover(robot, u)?;
+    Ok(Some(Carrier::Unit(u)))
+}
+
+/// How external unit `u` carries a work object: its one axis about (along) its frame.
+pub(super) fn unit_mover(robot: &super::robot::RobotState, u: usize) -> Result<Mover, RapidError> {
+    let unit = &robot.external.units[u].unit;
+    let Some(frame) = unit.frame else {
+        return Err(RapidError::fatal(format!(
+            "unit {} has no frame (base, orientation) to carry a work object (ufmec)",
+            unit.name
+        )));
+    };
+    match unit.axes.as_slice() {
+        [axis] => Ok(Mover::Unit { unit: u, axis: axis.index(), linear: axis.linear, frame }),
+        _ => Err(RapidError::fatal(format!(
+            "a work object carried by unit {} of {} axes is not supported yet (one axis only)",
+            unit.name,
+            unit.axes.len()
+        ))),
+    }
 }
 
 /// `WaitWObj WObj [\RelDist] [\MaxTime] [\TimeFlag]`: connects the work object to the
@@ -114,7 +165,7 @@ pub(crate) fn drop_wobj(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     refresh(ctx);
     let c = conveyor_arg(ctx, &args[0])?;
     let conveyors = &mut ctx.resources.robot.conveyors;
-    if conveyors.open().is_some_and(|span| span.conveyor == c) {
+    if conveyors.open().is_some_and(|span| Carrier::of(&span.mover) == Carrier::Conveyor(c)) {
         return Err(RapidError::fatal(
             "DropWObj while the robot still moves in the conveyor's work object: the motion stops \
              (move in a fixed work object first)",
@@ -124,23 +175,46 @@ pub(crate) fn drop_wobj(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-/// Before a move in work object `wobj`: a conveyor's work object starts the robot
-/// following the object (its frames frozen where the object is then); a fixed one ends
-/// a tracking under way. Returns the conveyor the move rides.
-pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Option<usize>, RapidError> {
-    if ctx.resources.robot.conveyors.list.is_empty() {
+/// Before a move in work object `wobj`: a moving work object (on a conveyor or an
+/// external unit) starts the robot following it (its frames frozen where it is then); a
+/// fixed one ends a following under way. Returns what carries the move's work object.
+pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Option<Carrier>, RapidError> {
+    let robot = &ctx.resources.robot;
+    let idle = robot.conveyors.list.is_empty() && robot.conveyors.open().is_none();
+    if idle && robot.external.units.iter().all(|u| u.unit.frame.is_none()) {
         return Ok(None);
     }
     refresh(ctx);
-    let c = wobj.and_then(|w| conveyor_of(ctx, w));
+    let carrier = match wobj {
+        Some(w) => carrier_of(ctx, w)?,
+        None => None,
+    };
     let now = ctx.time;
-    let open = ctx.resources.robot.conveyors.open().map(|s| s.conveyor);
-    if open.is_some() && open != c {
+    let open = ctx.resources.robot.conveyors.open().map(|s| Carrier::of(&s.mover));
+    if open.is_some() && open != carrier {
         ctx.resources.robot.end_tracking(now);
     }
-    let Some(c) = c else { return Ok(None) };
+    let Some(carrier) = carrier else { return Ok(None) };
+    if let Carrier::Conveyor(c) = carrier {
+        check_object(ctx, c)?;
+    }
+    if open != Some(carrier) {
+        let mover = match carrier {
+            Carrier::Conveyor(c) => {
+                let object = ctx.resources.robot.conveyors.list[c].connected.unwrap_or_default();
+                Mover::Conveyor { conveyor: c, object }
+            }
+            Carrier::Unit(u) => unit_mover(&ctx.resources.robot, u)?,
+        };
+        ctx.resources.robot.start_tracking(mover, now);
+    }
+    Ok(Some(carrier))
+}
+
+/// A move on conveyor `c`'s object: it must be connected and within the maximum distance.
+fn check_object(ctx: &Ctx<'_>, c: usize) -> Result<(), RapidError> {
     let conveyor = &ctx.resources.robot.conveyors.list[c];
-    let Some(distance) = conveyor.distance(now) else {
+    let Some(distance) = conveyor.distance(ctx.time) else {
         return Err(ctx.error(Err::CnvNotActive, "the conveyor's work object is connected to no object (WaitWObj)"));
     };
     if distance > conveyor.config.max_dist {
@@ -151,17 +225,14 @@ pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Opti
             conveyor.config.max_dist
         )));
     }
-    if open != Some(c) {
-        ctx.resources.robot.start_tracking(c, now);
-    }
-    Ok(Some(c))
+    Ok(())
 }
 
-/// The user frame moves in conveyor `c`'s work object are planned in.
-pub(super) fn planning_frame(ctx: &Ctx<'_>, c: usize) -> Option<rapid_motion::Pose> {
+/// The user frame moves in `carrier`'s work object are planned in.
+pub(super) fn planning_frame(ctx: &Ctx<'_>, carrier: Carrier) -> Option<rapid_motion::Pose> {
     let conveyors = &ctx.resources.robot.conveyors;
-    let span = conveyors.open().filter(|s| s.conveyor == c)?;
-    Some(conveyors.list[c].frame_at(span.d_ref))
+    let span = conveyors.open().filter(|s| Carrier::of(&s.mover) == carrier)?;
+    Some(span.mover.user_frame(&conveyors.list, span.at_ref))
 }
 
 /// While the robot follows a conveyor object: it must be able to reach where the
@@ -180,15 +251,16 @@ pub(super) fn check_reach(robot: &mut super::robot::RobotState, until: f64) -> R
 }
 
 impl super::robot::RobotState {
-    /// The robot starts following conveyor `c`'s connected object with its next move,
+    /// The robot starts following the work object `mover` carries with its next move,
     /// which starts from a stop point.
-    fn start_tracking(&mut self, c: usize, now: f64) {
+    fn start_tracking(&mut self, mover: Mover, now: f64) {
         let t_ref = self.stop_here().max(now);
-        let conveyor = &self.conveyors.list[c];
-        let object = conveyor.connected.unwrap_or_default();
-        let d_ref = conveyor.position(t_ref) - object;
-        let dir = conveyor.config.base.rotation * Vector3::x();
-        self.conveyors.spans.push(Span { conveyor: c, object, t_ref, d_ref, t_end: None, dir });
+        let at_ref = match mover {
+            Mover::Conveyor { conveyor, object } => self.conveyors.list[conveyor].position(t_ref) - object,
+            // The robot stands: the axis is where the last move left it.
+            Mover::Unit { axis, .. } => self.planner.end_eax().map_or(0.0, |eax| eax[axis]),
+        };
+        self.conveyors.spans.push(Span { mover, t_ref, at_ref, t_end: None });
     }
 
     /// The robot stops following its conveyor object: where its last conveyor move
