@@ -126,6 +126,26 @@ fn startmove_takes_the_robot_back_to_its_path_first() {
 }
 
 #[test]
+fn read_backs_follow_the_robot_back_to_its_path() {
+    // As above: the robot stands 5 mm above its stopped path (z 405) when StartMove
+    // takes it back. 0.04 s into the move back at 100 mm/s it has come part of the way:
+    // neither still at z 405 nor already on the path at z 400.
+    let trap = "    StopMove;\n    StorePath;\n    here := CRobT(\\Tool:=tool0);\n    \
+                MoveL Offs(here, 0, 0, 50), v100, fine, tool0;\n    MoveL Offs(here, 0, 0, 5), v100, fine, tool0;\n    \
+                RestoPath;\n    StartMove;\n    WaitTime 0.04;\n    here := CRobT(\\Tool:=tool0);\n    \
+                TPWrite \"z \" + NumToStr(here.trans.z, 2);\n";
+    let (code, out, err) = run_stopped("regain_read_back", &interrupted_move(trap), 0.3);
+    assert_eq!(code, Some(0), "{err}");
+    let z: f64 = out
+        .lines()
+        .next()
+        .and_then(|l| l.strip_prefix("z "))
+        .and_then(|z| z.parse().ok())
+        .unwrap_or_else(|| panic!("{out}"));
+    assert!(z > 400.5 && z < 404.9, "z {z} during the move back\n{out}");
+}
+
+#[test]
 fn the_path_recorder_backs_out_and_returns_in_a_trap() {
     // Recording from p0, the robot is stopped 0.3 s into the 100 mm move (x = 329.5).
     // On level 2 it goes back along the recorded line to p0 (29.5 mm: 0.295 + 0.01 +
