@@ -163,6 +163,43 @@ fn body_tag(dom: &str) -> &str {
 
 #[test]
 fn the_report_draws_in_a_headless_browser() {
+    let dir = scratch("browser");
+    let page = dir.join("report.html");
+    run_example(&dir, &["--report", path_str(&page)]);
+    assert_draws_in_browser(&dir, &page);
+}
+
+#[test]
+fn a_report_with_external_axes_draws_in_a_headless_browser() {
+    // A track (eax_a) moving with the arm and alone: its position and speed plots come
+    // after the arm's six.
+    let dir = scratch("browser_ext");
+    std::fs::write(
+        dir.join("rapid.toml"),
+        "[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n[[unit]]\nname = \"TRACK\"\n[[unit.axis]]\n\
+         logical = 7\ntype = \"linear\"\nmin = 0\nmax = 3000\nspeed = 1000\n",
+    )
+    .expect("manifest");
+    std::fs::write(
+        dir.join("main.mod"),
+        "MODULE main\n  PROC main()\n    MoveAbsJ [[0,0,0,0,0,30],[500,9E9,9E9,9E9,9E9,9E9]], v1000, z10, tool0;\n    \
+         MoveExtJ [[0,0,0,0,0,0],[1000,9E9,9E9,9E9,9E9,9E9]], v1000, fine;\n  ENDPROC\nENDMODULE\n",
+    )
+    .expect("module");
+    let page = dir.join("report.html");
+    let out = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .args(["run", "--quiet", "--report", path_str(&page), path_str(&dir)])
+        .output()
+        .expect("run rapid");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let html = std::fs::read_to_string(&page).expect("the page");
+    assert!(html.contains("TRACK eax_a"), "the page holds the track's series");
+    assert_draws_in_browser(&dir, &page);
+}
+
+/// Opens `page` in headless Chromium: it must draw and log no script error. Without
+/// Chromium the check is skipped loudly (CI requires it).
+fn assert_draws_in_browser(dir: &Path, page: &Path) {
     let browser = Path::new("/usr/bin/chromium");
     if !browser.exists() {
         let required = std::env::var("OPENRAPID_REQUIRE_BROWSER").is_ok_and(|v| v == "1");
@@ -174,11 +211,8 @@ fn the_report_draws_in_a_headless_browser() {
         }
         return;
     }
-    let dir = scratch("browser");
-    let page = dir.join("report.html");
-    run_example(&dir, &["--report", path_str(&page)]);
     let profile = dir.join("profile");
-    let url = format!("file://{}", path_str(&std::fs::canonicalize(&page).expect("the page")));
+    let url = format!("file://{}", path_str(&std::fs::canonicalize(page).expect("the page")));
     let out = Command::new(browser)
         .args([
             "--headless",

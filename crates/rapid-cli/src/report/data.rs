@@ -27,6 +27,8 @@ pub(super) struct Data {
     /// The robot base's origin in the world frame, mm.
     base: [f64; 3],
     path: Series,
+    /// The external axes (manifest `[[unit]]`), each with its values along the path.
+    ext: Vec<ExtAxisView>,
     pub(super) moves: Vec<MoveView>,
     signals: Vec<SignalView>,
     /// Signal changes left out (beyond the bound).
@@ -49,6 +51,41 @@ struct Series {
     jv: [Vec<f64>; 6],
     /// The index of the move the point is on (-1: none).
     m: Vec<i64>,
+}
+
+/// One external axis: its name (`UNIT eax_a`), unit, limits and maximum speed, and
+/// its value and speed at each point of the path.
+#[derive(Serialize)]
+struct ExtAxisView {
+    name: String,
+    unit: &'static str,
+    limits: [f64; 2],
+    max_speed: f64,
+    #[serde(skip)]
+    index: usize,
+    y: Vec<f64>,
+    v: Vec<f64>,
+}
+
+/// The robot's external axes, in `eax_a` … `eax_f` order, with no points yet.
+fn ext_views(robot: &rapid_vm::builtins::motion::robot::RobotState) -> Vec<ExtAxisView> {
+    let mut views: Vec<ExtAxisView> = robot
+        .external
+        .units
+        .iter()
+        .flat_map(|u| u.unit.axes.iter().map(move |a| (u.unit.name.as_str(), a)))
+        .map(|(unit, a)| ExtAxisView {
+            name: format!("{unit} eax_{}", char::from(b'a' + a.index() as u8)),
+            unit: if a.linear { "mm" } else { "deg" },
+            limits: [a.min, a.max],
+            max_speed: a.max_speed,
+            index: a.index(),
+            y: Vec::new(),
+            v: Vec::new(),
+        })
+        .collect();
+    views.sort_by_key(|v| v.index);
+    views
 }
 
 /// One move for the 3D view and the table.
@@ -93,12 +130,15 @@ pub(super) fn collect(out: &RunOutputs<'_>) -> Data {
         [round(b.x, 2), round(b.y, 2), round(b.z, 2)]
     });
     let (signals, changes_cut) = signals(out.io);
+    let mut ext = ext_views(robot);
+    let path = series(out, &mut ext);
     Data {
         cycle: round(out.cycle, 4),
         limits: model.limits.map(|(lo, hi)| [lo, hi]),
         max_speeds: model.max_speeds,
         base,
-        path: series(out),
+        path,
+        ext,
         moves: facts.iter().take(MAX_MOVES).map(move_view).collect(),
         signals,
         changes_cut,
@@ -120,7 +160,7 @@ fn move_view(f: &MoveFacts) -> MoveView {
 /// The trajectory at a step that keeps it within [`MAX_POINTS`]: half the points on a
 /// common time grid, the rest each move's first and last sample (every k-th move's
 /// when there are too many moves).
-fn series(out: &RunOutputs<'_>) -> Series {
+fn series(out: &RunOutputs<'_>, ext: &mut [ExtAxisView]) -> Series {
     let robot = out.robot;
     let moves: &[PlannedMove] = robot.recorded.as_deref().unwrap_or(&[]);
     let mut series = Series::default();
@@ -141,6 +181,7 @@ fn series(out: &RunOutputs<'_>) -> Series {
             }
             last_t = round(t, 4);
             push_point(&mut series, &mut cursor, robot, planned, t);
+            push_external(ext, planned, t);
         }
     }
     series
@@ -154,7 +195,8 @@ fn push_point(
     planned: &PlannedMove,
     t: f64,
 ) {
-    let sample = robot.corrected(planned, planned.sample(&robot.kin, t));
+    // Where path correction and a work object the robot follows put it.
+    let sample = robot.tracked(planned, robot.corrected(planned, planned.sample(&robot.kin, t)));
     let point = cursor.locate(robot.with_independent(sample, &planned.tool()));
     let w = point.world.translation.vector;
     series.t.push(round(t, 4));
@@ -170,6 +212,25 @@ fn push_point(
         series.j[axis].push(round(point.sample.joints[axis], 3));
         let speed = if t2 - t1 > 1e-9 { (q2[axis] - q1[axis]) / (t2 - t1) } else { 0.0 };
         series.jv[axis].push(round(speed, 2));
+    }
+}
+
+/// The external axes at `t` on `planned` (their values and, by a central difference,
+/// their speeds); 0 when the move has no track of them.
+fn push_external(ext: &mut [ExtAxisView], planned: &PlannedMove, t: f64) {
+    if ext.is_empty() {
+        return;
+    }
+    let (t1, t2) = ((t - SPEED_H).max(planned.start), (t + SPEED_H).min(planned.end));
+    let (at, e1, e2) = (planned.eax_at(t), planned.eax_at(t1), planned.eax_at(t2));
+    for view in ext.iter_mut() {
+        let j = view.index;
+        view.y.push(round(at.map_or(0.0, |e| e[j]), 3));
+        let speed = match (e1, e2) {
+            (Some(a), Some(b)) if t2 - t1 > 1e-9 => (b[j] - a[j]) / (t2 - t1),
+            _ => 0.0,
+        };
+        view.v.push(round(speed, 2));
     }
 }
 

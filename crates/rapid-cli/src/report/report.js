@@ -638,6 +638,24 @@
         limitText: "max ±" + top + " deg/s",
       }));
     }
+    // External axes (a track, a turntable), after the robot's six.
+    (data.ext || []).forEach(function (e, i) {
+      var colour = AXIS_COLOURS[i % AXIS_COLOURS.length];
+      redrawPlots.push(plot(pos, {
+        title: e.name,
+        unit: e.unit,
+        series: [{ y: e.y, colour: colour }],
+        lines: [{ y: e.limits[0] }, { y: e.limits[1] }],
+        limitText: "limits " + e.limits[0] + " … " + e.limits[1] + " " + e.unit,
+      }));
+      redrawPlots.push(plot(speed, {
+        title: e.name,
+        unit: e.unit + "/s",
+        series: [{ y: e.v, colour: colour }],
+        lines: [{ y: -e.max_speed }, { y: e.max_speed }],
+        limitText: "max ±" + e.max_speed + " " + e.unit + "/s",
+      }));
+    });
     redrawPlots.push(plot(document.getElementById("tcp-speed"), {
       title: "TCP speed",
       unit: "mm/s",
