@@ -1,6 +1,6 @@
 MODULE motion_path_fllwtime
-    ! A follow-time stop point (stoppointdata type fllwtime) follows a conveyor;
-    ! conveyor tracking is not modelled, so the move stops the program, naming it.
+    ! A follow-time stop point (stoppointdata type fllwtime) follows a conveyor
+    ! object; on a move in no conveyor's work object it stops the program, naming it.
     CONST robtarget p0 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];
 
     PROC main()

@@ -185,3 +185,26 @@ fn a_move_in_the_conveyor_work_object_before_wait_wobj_is_refused() {
     assert_eq!(out.status.code(), Some(1));
     assert!(stderr(&out).contains("ERR_CNV_NOT_ACT"), "{}", stderr(&out));
 }
+
+#[test]
+fn a_follow_time_stop_point_follows_the_object_that_long() {
+    // As in the first test, but the point above the object is a follow-time stop point
+    // of 0.3 s (stoppointdata type 3, progsynch TRUE, follow time 0.3): the robot
+    // reaches it at 0.65 s and follows the object until 0.95 s, when the object has
+    // travelled 45 mm: x 295.
+    let body = "    WaitWObj wobj_cnv1;
+    MoveL above, v500, fine \\Inpos:=follow, tool0 \\WObj:=wobj_cnv1;
+    TPWrite \"above \" \\Num:=ClkRead(c);
+    w := CPos(\\Tool:=tool0 \\WObj:=wobj0);
+    TPWrite \"world \" \\Pos:=w;
+";
+    let dir = project("follow_time", body, ONE_OBJECT);
+    let module = fs::read_to_string(dir.join("main.mod")).expect("module").replace(
+        "  VAR clock c;\n",
+        "  VAR clock c;\n  CONST stoppointdata follow := [3, TRUE, [0, 0, 0, 0], 0, 0.3, \"\", 0, 0];\n",
+    );
+    fs::write(dir.join("main.mod"), module).expect("module");
+    let out = run(&dir, &[]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(stdout(&out), "above 0.95\nworld [295,0,400]\n");
+}

@@ -138,6 +138,13 @@ pub struct Span {
     pub t_end: Option<f64>,
 }
 
+impl Span {
+    /// Whether the robot follows a conveyor object (not a unit's work object).
+    pub fn is_conveyor(&self) -> bool {
+        matches!(self.mover, Mover::Conveyor { .. })
+    }
+}
+
 impl Mover {
     /// The motion (world frame) that carries an object from the mover at `from` to `to`.
     pub fn carry(&self, conveyors: &[Conveyor], from: f64, to: f64) -> Pose {

@@ -5,8 +5,8 @@
 //!   convergence, so the stop lasts the `fine` settle time, but at least `mintime`
 //!   and at most `maxtime` (the `position`/`speed` percentages are not modelled).
 //! - `stoptime` (2): the robot stands `stoptime` seconds at the point.
-//! - `fllwtime` (3): a stop point that follows a conveyor: conveyor tracking is not
-//!   modelled, so it is refused.
+//! - `fllwtime` (3): the robot follows the conveyor object it stops on for
+//!   `followtime` seconds (a move in a conveyor's work object only).
 //!
 //! `progsynch` TRUE makes the program wait until the stop is over; FALSE lets it go
 //! on as soon as the robot stands at the point.
@@ -67,11 +67,25 @@ pub(super) fn stop_point(ctx: &Ctx<'_>, value: &Value, settle: f64) -> Result<St
             time
         }
         FLLWTIME => {
-            return Err(RapidError::fatal(
-                "\\Inpos with a follow time (fllwtime) follows a conveyor: conveyor tracking is not supported by `rapid run` yet",
-            ))
+            // uncertain: a follow time on a move in no conveyor's work object is taken to
+            // stop execution (the manual ties it to conveyor tracking).
+            let on_conveyor = ctx.resources.robot.conveyors.open().is_some_and(|s| s.is_conveyor());
+            if !on_conveyor {
+                return Err(RapidError::fatal(
+                    "\\Inpos with a follow time (fllwtime) needs a move in a conveyor's work object (WaitWObj)",
+                ));
+            }
+            let time = field(ctx, f, 4)?;
+            if time < 0.0 {
+                return Err(negative());
+            }
+            time
         }
-        _ => return Err(ctx.error(Err::ArgValue, format!("\\Inpos: {kind} is no stop point type (inpos, stoptime, fllwtime)"))),
+        _ => {
+            return Err(
+                ctx.error(Err::ArgValue, format!("\\Inpos: {kind} is no stop point type (inpos, stoptime, fllwtime)"))
+            )
+        }
     };
     Ok(StopPoint { time, progsynch })
 }
