@@ -283,3 +283,65 @@ ENDMODULE
     assert!((x - (400.0 - 100.0 * angle.cos())).abs() < 0.01, "x {x}");
     assert!((y + 100.0 * angle.sin()).abs() < 0.01, "y {y}");
 }
+
+#[test]
+fn a_track_carries_the_robot_and_the_tcp_keeps_its_world_path() {
+    // TRACK (eax_a, along the world x axis) carries the robot's base. First the track
+    // moves 100 mm while the TCP stands at (300, 0, 400) in the world: the track alone
+    // sets the time, a triangle 2·√(100/6666.7) = 0.245 s, + 0.05 s settle. The robot
+    // then reaches (200, 0, 400) from its base, as a robot off the track would at
+    // track 0. Then the TCP goes 100 mm along the world y axis at v100 while the track
+    // moves another 100 mm along x: relative to its base the TCP goes √2 · 100 mm at
+    // √2 · 100 mm/s: 1 + 0.0141 s ramp + 0.05 s settle; 1.36 s in all.
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external_axes").join("track");
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    let manifest = "[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n[[unit]]\nname = \"TRACK\"\n\
+                    carries_robot = true\n[[unit.axis]]\nlogical = 7\ntype = \"linear\"\nmin = 0\nmax = 3000\nspeed = 1000\n";
+    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    let module = "MODULE main
+  CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[0,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget stay := [[300,0,400],[0,0,1,0],[0,0,0,0],[100,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget side := [[300,100,400],[0,0,1,0],[0,0,0,0],[200,9E9,9E9,9E9,9E9,9E9]];
+  VAR clock c;
+  VAR pos w;
+  VAR jointtarget jt;
+  VAR jointtarget off_track;
+  PROC main()
+    ConfL \\Off;
+    MoveJ home, v1000, fine, tool0;
+    ClkStart c;
+    MoveL stay, v1000, fine, tool0;
+    TPWrite \"t \" + NumToStr(ClkRead(c), 2);
+    w := CPos(\\Tool:=tool0);
+    TPWrite \"world \" \\Pos:=w;
+    jt := CJointT();
+    off_track := CalcJointT([[200,0,400],[0,0,1,0],[0,0,0,0],[0,9E9,9E9,9E9,9E9,9E9]], tool0);
+    TPWrite \"as off the track \" \\Bool:=(Abs(jt.robax.rax_2 - off_track.robax.rax_2) < 0.01 AND Abs(jt.robax.rax_3 - off_track.robax.rax_3) < 0.01);
+    MoveL side, v100, fine, tool0;
+    TPWrite \"t \" + NumToStr(ClkRead(c), 2);
+    w := CPos(\\Tool:=tool0);
+    TPWrite \"world \" \\Pos:=w;
+  ENDPROC
+ENDMODULE
+";
+    fs::write(dir.join("main.mod"), module).expect("module");
+    let trace = dir.join("trace.csv");
+    let out = rapid(&["run", "--quiet", "--trace", trace.to_str().unwrap(), dir.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        "t 0.29\nworld [300,0,400]\nas off the track TRUE\nt 1.36\nworld [300,100,400]\n"
+    );
+    // In the world the TCP keeps x 300 while the track moves, and crosses at 100 mm/s.
+    let text = fs::read_to_string(&trace).expect("trace");
+    let side: Vec<Vec<f64>> = text
+        .lines()
+        .filter(|l| l.ends_with("main.mod:20"))
+        .map(|l| l.split(',').take(23).map(|f| f.parse().expect("number")).collect())
+        .collect();
+    assert!(side.len() > 200, "{} rows", side.len());
+    assert!(side.iter().all(|r| (r[7] - 300.0).abs() < 0.01), "x leaves 300");
+    let middle = &side[side.len() / 2];
+    assert!((middle[21] - 100.0).abs() < 0.1, "world TCP speed {}", middle[21]);
+}

@@ -91,4 +91,7 @@ pub struct ExternalUnit {
     /// z axis, a linear unit moves them along its x axis), in the world frame; `None`
     /// when it carries none.
     pub frame: Option<crate::Pose>,
+    /// A track the robot stands on: its one linear axis moves the robot's base frame
+    /// along `frame`'s x axis (the world x axis without a frame).
+    pub carries_robot: bool,
 }

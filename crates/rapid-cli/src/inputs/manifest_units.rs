@@ -22,6 +22,7 @@ pub(super) struct RawUnit {
     deactivation_forbidden: Option<bool>,
     base: Option<Spanned<Vec<f64>>>,
     orientation: Option<Spanned<Vec<f64>>>,
+    carries_robot: Option<Spanned<bool>>,
     #[serde(default)]
     axis: Vec<Spanned<RawAxis>>,
 }
@@ -86,10 +87,26 @@ pub(super) fn read(raw: &[Spanned<RawUnit>], find: &mut dyn FnMut(Range<usize>, 
             active_at_start: raw.active.unwrap_or(true),
             deactivation_forbidden: raw.deactivation_forbidden.unwrap_or(false),
             frame,
+            carries_robot: carries_robot(raw, &units, find),
         };
         units.push(TaskUnit { task, unit });
     }
     units
+}
+
+/// `carries_robot`: a track of one linear axis, and one such unit per task.
+fn carries_robot(raw: &RawUnit, units: &[TaskUnit], find: &mut dyn FnMut(Range<usize>, String)) -> bool {
+    let Some(flag) = raw.carries_robot.as_ref().filter(|f| *f.get_ref()) else { return false };
+    let name = raw.name.get_ref();
+    let linear_one = matches!(raw.axis.as_slice(), [a] if a.get_ref().kind.get_ref().eq_ignore_ascii_case("linear"));
+    if !linear_one {
+        find(flag.span(), format!("unit `{name}`: a unit that carries the robot is a track of one linear axis"));
+    }
+    let task = raw.task.as_ref().map(|t| t.get_ref());
+    if units.iter().any(|u| u.unit.carries_robot && u.task.as_ref() == task) {
+        find(flag.span(), format!("unit `{name}`: another unit carries this task's robot already"));
+    }
+    linear_one
 }
 
 /// One axis, or `None` (with findings) when it cannot be used.

@@ -267,11 +267,40 @@ impl super::robot::RobotState {
         }
     }
 
-    /// A trace sample of `planned`, carried by the work object the robot followed then.
-    pub fn tracked(&self, planned: &rapid_motion::plan::PlannedMove, mut sample: Sample) -> Sample {
+    /// A trace sample of `planned`, carried by the work object the robot followed then
+    /// (and on a track, where the track had the robot then).
+    pub fn tracked(&self, planned: &rapid_motion::plan::PlannedMove, sample: Sample) -> Sample {
+        let sample = self.on_track(planned, sample);
         if self.conveyors.spans.is_empty() {
             return sample;
         }
+        self.carried_sample(planned, sample)
+    }
+
+    /// A sample of `planned` with its TCP and flange where the track had the robot's
+    /// base at the sample's time (the move's frames have its base where the move ends),
+    /// and its TCP speed in the world.
+    fn on_track(&self, planned: &rapid_motion::plan::PlannedMove, mut sample: Sample) -> Sample {
+        let Some((axis, dir)) = self.external.track() else { return sample };
+        let (Some(end), Some(now)) = (planned.eax_end(), planned.eax_at(sample.time)) else { return sample };
+        let by = Translation3::from(dir * (now[axis] - end[axis]));
+        sample.tcp = by * sample.tcp;
+        sample.flange = by * sample.flange;
+        // The TCP's world speed: a central difference of its world position.
+        const H: f64 = 0.001;
+        let (t1, t2) = ((sample.time - H).max(planned.start), (sample.time + H).min(planned.end));
+        let world = |t: f64| {
+            let track = planned.eax_at(t).map_or(0.0, |e| e[axis]);
+            planned.sample(&self.kin, t).tcp.translation.vector + dir * track
+        };
+        if t2 - t1 > 1e-9 {
+            sample.tcp_speed = (world(t2) - world(t1)).norm() / (t2 - t1);
+        }
+        sample
+    }
+
+    /// A sample carried by the work object the robot followed.
+    fn carried_sample(&self, planned: &rapid_motion::plan::PlannedMove, mut sample: Sample) -> Sample {
         let Some(by) = self.carried(sample.time, planned.start, |at| planned.eax_at(at)) else { return sample };
         sample.flange = by * sample.flange;
         sample.tcp = by * sample.tcp;

@@ -76,7 +76,9 @@ pub(super) fn chain(
     let t = record(ctx, tool, 3, "a tooldata")?;
     let tool_held = boolean(ctx, &t[0], "tooldata")?;
     let tframe = frame::frame(ctx, &t[1])?;
-    let mut chain = FrameChain { tframe, pdisp, ..FrameChain::default() };
+    // On a track the robot's base is where the track is now.
+    let base = ctx.resources.robot.track_base_at(ctx.time);
+    let mut chain = FrameChain { tframe, pdisp, base, ..FrameChain::default() };
     let Some(wobj) = wobj else { return Ok(chain) };
     let w = record(ctx, wobj, 5, "a wobjdata")?;
     let wobj_held = boolean(ctx, &w[0], "wobjdata")?;

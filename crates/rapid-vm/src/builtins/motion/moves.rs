@@ -235,8 +235,11 @@ pub(super) fn go_with(
         settings.stop_time = Some(stop.time);
     }
     let (tool, held_object) = mount_of(&chain);
-    let request = MoveRequest { target, speed, zone, tool, held_object };
+    let mut request = MoveRequest { target, speed, zone, tool, held_object };
     let external = external_target(ctx, args, layout.to, layout.eoffs)?;
+    if let Some(ext) = &external {
+        request.speed.v_tcp *= super::extax::track_speed_scale(&ctx.resources.robot, &target, &chain, ext)?;
+    }
     // Synchronized movement: the moves of one `\ID` in all tasks take the same time.
     match crate::builtins::syncmove::coordinate(ctx, args.get(layout.id), &request, &settings)? {
         crate::builtins::syncmove::Coordination::Alone => {}
@@ -333,7 +336,27 @@ fn frames(
     layout: &Layout,
     displaced: bool,
 ) -> Result<rapid_motion::frames::FrameChain, RapidError> {
-    frames_at(ctx, args, layout.tool, layout.wobj, displaced)
+    let mut chain = frames_at(ctx, args, layout.tool, layout.wobj, displaced)?;
+    on_track(ctx, args, layout.to, layout.eoffs, &mut chain)?;
+    Ok(chain)
+}
+
+/// On a track, a move's target is reached with the robot's base where the track will
+/// be then: the target's track value.
+pub(super) fn on_track(
+    ctx: &Ctx<'_>,
+    args: &[Value],
+    to: usize,
+    rule: EOffsRule,
+    chain: &mut rapid_motion::frames::FrameChain,
+) -> Result<(), RapidError> {
+    if ctx.resources.robot.external.track().is_none() {
+        return Ok(());
+    }
+    if let Some(ext) = external_target(ctx, args, to, rule)? {
+        chain.base = ctx.resources.robot.track_base(&ext.to);
+    }
+    Ok(())
 }
 
 /// The frames of the tool and (optional) work object arguments at these places, for a

@@ -42,8 +42,10 @@ fn read_frames(ctx: &Ctx<'_>, tool: Option<&Value>, wobj: Option<&Value>) -> Res
         Some(w) => Some(ctx.value(w)?),
         None => None,
     };
+    // On a track the robot's base is where the track is now.
+    let base = ctx.resources.robot.track_base_at(ctx.time);
     match (tool_value, wobj_value) {
-        (None, None) => Ok(FrameChain { pdisp, ..active }),
+        (None, None) => Ok(FrameChain { pdisp, base, ..active }),
         (Some(tool), wobj) => data::chain(ctx, &tool, wobj.as_ref(), pdisp),
         (None, Some(wobj)) => {
             // uncertain: \WObj without \Tool reads with the active tool.
@@ -120,9 +122,10 @@ pub(crate) fn c_pos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 pub(crate) fn calc_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let target = ctx.value(&args[0])?;
     let joints = data::jointtarget(ctx, &target)?;
-    let chain = read_frames(ctx, args.get(1), args.get(2))?;
-    let (pose, conf) = chain.robtarget_of(&ctx.resources.robot.kin, &joints);
     let extax = target_extax(ctx, &target)?;
+    let mut chain = read_frames(ctx, args.get(1), args.get(2))?;
+    chain.base = ctx.resources.robot.track_base(&extax);
+    let (pose, conf) = chain.robtarget_of(&ctx.resources.robot.kin, &joints);
     Ok(Some(super::frame::with_extax(&data::robtarget_value(ctx, &pose, conf)?, &extax)))
 }
 
@@ -137,7 +140,8 @@ pub(crate) fn calc_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let target = ctx.value(&args[1])?;
     let (pose, conf) = data::robtarget(ctx, &target)?;
     let extax = target_extax(ctx, &target)?;
-    let chain = read_frames(ctx, args.get(2), args.get(3))?;
+    let mut chain = read_frames(ctx, args.get(2), args.get(3))?;
+    chain.base = ctx.resources.robot.track_base(&extax);
     let now = ctx.time;
     let seed = ctx.resources.robot.joints_at(now);
     let found = chain.joints_for(&ctx.resources.robot.kin, &pose, &conf, &seed, ConfMatch::Compliant);

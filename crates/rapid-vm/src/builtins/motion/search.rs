@@ -195,7 +195,8 @@ fn path_of(
         let robot = &ctx.resources.robot;
         return Ok((robot.active, Target::Joints(robot.end_joints())));
     }
-    let chain = super::moves::frames_at(ctx, args, places.tool, places.wobj, true)?;
+    let mut chain = super::moves::frames_at(ctx, args, places.tool, places.wobj, true)?;
+    super::moves::on_track(ctx, args, places.to, EOffsRule::Always, &mut chain)?;
     let tcp_of = |ctx: &Ctx<'_>, idx: usize| -> Result<rapid_motion::Pose, RapidError> {
         let (target, _) = data::robtarget(ctx, &ctx.value(&args[idx])?)?;
         Ok(super::moves::path_pose(&chain, &target))
@@ -312,7 +313,8 @@ fn events(ctx: &mut Ctx<'_>, args: &[Value], search: &mut Search) -> Result<Vec<
 /// SearchPoint: where the TCP was at time `t`, in the search's tool and work object,
 /// with the external axes then (SearchExtJ: the axis values as a jointtarget).
 fn store_hit(ctx: &mut Ctx<'_>, args: &[Value], t: f64) -> Result<(), RapidError> {
-    let chain = ctx.resources.robot.active;
+    let mut chain = ctx.resources.robot.active;
+    chain.base = ctx.resources.robot.track_base_at(t);
     let robot = &mut ctx.resources.robot;
     let joints = robot.joints_at(t);
     let extax = robot.extax_read(t);
