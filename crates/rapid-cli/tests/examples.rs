@@ -204,3 +204,46 @@ fn the_twin_robots_carry_their_part_in_step() {
     lines.sort();
     assert_eq!(lines, ["T_ROB1 carried the part in 1.96", "T_ROB2 carried the part in 1.96"]);
 }
+
+#[test]
+fn the_conveyor_example_picks_moving_boxes_when_the_timing_model_says() {
+    let io_log = Path::new(env!("CARGO_TARGET_TMPDIR")).join("conveyor_io.csv");
+    let out = rapid(&[
+        "--io-log",
+        io_log.to_str().expect("utf-8"),
+        "--stimulus",
+        "examples/conveyor_tracking/boxes.stim",
+        "examples/conveyor_tracking",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "Boxes stacked: 3\n");
+    // Worked by hand (IRB 120, tool0; boxes at the switch at 0.5 s and 3.5 s, moving at
+    // 100 mm/s along x from (250, 0, 300); the table's stack at (300, -200, 250)).
+    // Box 1: connected at 0.5 s, above it 50 mm from home at v500, down 80 mm at v200:
+    // grip. 0.2 s, up 80 mm at v500; the box has travelled 100 · (t - 0.5) mm, so the
+    // robot leaves it at (250 + that, 0, 400) for the point 130 mm above the stack.
+    let grip1 = 0.5 + fine_move_l(50.0, 500.0) + fine_move_l(80.0, 200.0);
+    let leave1 = grip1 + 0.2 + fine_move_l(80.0, 500.0);
+    let from1 = 250.0 + 100.0 * (leave1 - 0.5);
+    let across1 = ((from1 - 300.0).powi(2) + 200.0f64.powi(2) + 20.0f64.powi(2)).sqrt();
+    let release1 = leave1 + fine_move_l(across1, 500.0) + fine_move_l(130.0, 200.0);
+    // Up 130 mm, then wait for box 2 at 3.5 s and go above it: from (300, -200, 380) to
+    // (250, 0, 400).
+    let up1 = release1 + 0.2 + fine_move_l(130.0, 500.0);
+    assert!(up1 < 3.5, "the robot waits for box 2 ({up1} s)");
+    let above2 = (50.0f64.powi(2) + 200.0f64.powi(2) + 20.0f64.powi(2)).sqrt();
+    let grip2 = 3.5 + fine_move_l(above2, 500.0) + fine_move_l(80.0, 200.0);
+    let leave2 = grip2 + 0.2 + fine_move_l(80.0, 500.0);
+    let from2 = 250.0 + 100.0 * (leave2 - 3.5);
+    let across2 = ((from2 - 300.0).powi(2) + 200.0f64.powi(2) + 10.0f64.powi(2)).sqrt();
+    let release2 = leave2 + fine_move_l(across2, 500.0) + fine_move_l(130.0, 200.0);
+    let grips: Vec<(f64, String)> =
+        io_changes(&io_log).into_iter().filter(|(_, s, _)| s == "doGrip").map(|(t, _, v)| (t, v)).collect();
+    assert_eq!(grips.len(), 6, "{grips:?}");
+    for ((actual, value), (expected, expected_value)) in
+        grips.iter().zip([(grip1, "1"), (release1, "0"), (grip2, "1"), (release2, "0")])
+    {
+        assert_eq!(value, expected_value);
+        assert_near(*actual, expected, 0.002, "doGrip change");
+    }
+}
