@@ -345,3 +345,42 @@ ENDMODULE
     let middle = &side[side.len() / 2];
     assert!((middle[21] - 100.0).abs() < 0.1, "world TCP speed {}", middle[21]);
 }
+
+#[test]
+fn world_zones_watch_the_tcp_in_the_world_on_a_track() {
+    // The zone is the box x 150 … 250 (y ±50, z 350 … 450) in the world. The track
+    // moving 100 mm while the TCP stands at world x 300 takes the TCP to x 200 relative
+    // to the base, but not in the world: doZone stays 0. Then the TCP goes to world
+    // x 200 (track still at 100): inside, doZone 1.
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external_axes").join("track_zone");
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    let manifest = "[system]\nio = \"eio.cfg\"\n\n[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n\
+                    [[unit]]\nname = \"TRACK\"\ncarries_robot = true\n[[unit.axis]]\nlogical = 7\ntype = \"linear\"\n\
+                    min = 0\nmax = 3000\nspeed = 1000\n";
+    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    fs::write(dir.join("eio.cfg"), "EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n\n      -Name \"doZone\" -SignalType \"DO\"\n")
+        .expect("EIO");
+    let module = "MODULE main
+  CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[0,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget stay := [[300,0,400],[0,0,1,0],[0,0,0,0],[100,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget inside := [[200,0,400],[0,0,1,0],[0,0,0,0],[100,9E9,9E9,9E9,9E9,9E9]];
+  VAR wztemporary zone;
+  VAR shapedata box;
+  PROC main()
+    ConfL \\Off;
+    MoveJ home, v1000, fine, tool0;
+    WZBoxDef \\Inside, box, [150,-50,350], [250,50,450];
+    WZDOSet \\Temp, zone \\Inside, box, doZone, 1;
+    MoveL stay, v1000, fine, tool0;
+    TPWrite \"standing \" \\Num:=DOutput(doZone);
+    MoveL inside, v1000, fine, tool0;
+    TPWrite \"inside \" \\Num:=DOutput(doZone);
+  ENDPROC
+ENDMODULE
+";
+    fs::write(dir.join("main.mod"), module).expect("module");
+    let out = rapid(&["run", "--quiet", dir.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "standing 0\ninside 1\n");
+}

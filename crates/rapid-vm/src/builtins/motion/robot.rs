@@ -617,7 +617,8 @@ impl RobotState {
     /// A zone just activated (or enabled): its output follows where the robot is now.
     pub fn start_zone(&mut self, i: usize, now: f64) {
         let joints = self.joints_at(now);
-        let tcp = (self.kin.forward(&joints) * self.active.tframe).translation.vector;
+        // In the world: on a track, where the track has the robot's base.
+        let tcp = (self.track_base_at(now) * self.kin.forward(&joints) * self.active.tframe).translation.vector;
         let inside = self.in_zone(i, &joints, &tcp);
         if self.zone_inside.len() <= i {
             self.zone_inside.resize(i + 1, false);
@@ -664,7 +665,9 @@ impl RobotState {
                     Some(&j) if self.zones[i].is_some_and(|z| before(&z)) => &samples[j],
                     _ => sample,
                 };
-                let inside = self.in_zone(i, &at.joints, &at.tcp.translation.vector);
+                let base = planned.eax_at(at.time).map_or_else(|| self.track_base_at(at.time), |e| self.track_base(&e));
+                let tcp = base * at.tcp;
+                let inside = self.in_zone(i, &at.joints, &tcp.translation.vector);
                 if inside != self.zone_inside[i] {
                     self.zone_inside[i] = inside;
                     crossings.push((i, inside, sample.time));
