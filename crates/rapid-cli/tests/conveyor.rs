@@ -208,3 +208,26 @@ fn a_follow_time_stop_point_follows_the_object_that_long() {
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     assert_eq!(stdout(&out), "above 0.95\nworld [295,0,400]\n");
 }
+
+#[test]
+fn world_zones_see_the_robot_where_it_follows_the_object() {
+    // The zone is world x 265 … 275 (y ±50, z 350 … 450). The move above the object ends
+    // at x 270 in the world (the object has travelled 20 mm): inside. Planned with the
+    // object frozen at x 250, it would have passed the zone and ended outside it.
+    let body = "    WZBoxDef \\Inside, box, [265,-50,350], [275,50,450];
+    WZDOSet \\Temp, zone \\Inside, box, doZone, 1;
+    WaitWObj wobj_cnv1;
+    MoveL above, v500, fine, tool0 \\WObj:=wobj_cnv1;
+    TPWrite \"in the zone \" \\Num:=DOutput(doZone);
+";
+    let dir = project("zone", body, ONE_OBJECT);
+    let module = fs::read_to_string(dir.join("main.mod"))
+        .expect("module")
+        .replace("  VAR clock c;\n", "  VAR clock c;\n  VAR wztemporary zone;\n  VAR shapedata box;\n");
+    fs::write(dir.join("main.mod"), module).expect("module");
+    let eio = format!("{EIO}\n      -Name \"doZone\" -SignalType \"DO\"\n");
+    fs::write(dir.join("eio.cfg"), eio).expect("EIO");
+    let out = run(&dir, &[]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(stdout(&out), "in the zone 1\n");
+}

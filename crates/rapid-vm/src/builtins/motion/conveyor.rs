@@ -299,8 +299,9 @@ impl super::robot::RobotState {
         sample
     }
 
-    /// A sample carried by the work object the robot followed.
-    fn carried_sample(&self, planned: &rapid_motion::plan::PlannedMove, mut sample: Sample) -> Sample {
+    /// A sample carried by the work object the robot followed (unchanged when it
+    /// followed none).
+    pub(super) fn carried_sample(&self, planned: &rapid_motion::plan::PlannedMove, mut sample: Sample) -> Sample {
         let Some(by) = self.carried(sample.time, planned.start, |at| planned.eax_at(at)) else { return sample };
         sample.flange = by * sample.flange;
         sample.tcp = by * sample.tcp;

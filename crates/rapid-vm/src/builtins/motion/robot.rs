@@ -652,7 +652,11 @@ impl RobotState {
             self.zone_inside.resize(self.zones.len(), false);
         }
         let mut crossings = Vec::new();
-        let samples: Vec<_> = planned.samples(&self.kin, rapid_motion::plan::DEFAULT_STEP).collect();
+        // Where the robot is: following a moving work object, carried with it.
+        let samples: Vec<_> = planned
+            .samples(&self.kin, rapid_motion::plan::DEFAULT_STEP)
+            .map(|sample| self.carried_sample(planned, sample))
+            .collect();
         let before = |z: &super::zones::Zone| matches!(z.kind, super::zones::ZoneKind::DoSet { before: true, .. });
         let braking = match active.iter().any(|&i| self.zones[i].is_some_and(|z| before(&z))) {
             true => super::zones::braking_places(&samples, self.braking_decel()),
