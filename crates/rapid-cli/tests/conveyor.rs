@@ -94,6 +94,8 @@ fn the_robot_follows_the_object_it_connected_to() {
     WaitTime 0.5;
     p := CRobT(\\Tool:=tool0 \\WObj:=wobj_cnv1);
     TPWrite \"rel \" \\Pos:=p.trans;
+    p := CRobT();
+    TPWrite \"active \" \\Pos:=p.trans;
     w := CPos(\\Tool:=tool0 \\WObj:=wobj0);
     TPWrite \"world \" \\Pos:=w;
     MoveL home, v1000, fine, tool0 \\WObj:=wobj0;
@@ -106,7 +108,7 @@ fn the_robot_follows_the_object_it_connected_to() {
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     assert_eq!(
         stdout(&out),
-        "connected 0.5\nabove 0.7\nworld [270,0,400]\nrel [0,0,100]\nworld [320,0,400]\nhome 1.339\n"
+        "connected 0.5\nabove 0.7\nworld [270,0,400]\nrel [0,0,100]\nactive [0,0,100]\nworld [320,0,400]\nhome 1.339\n"
     );
     // 0.1 s into the tracked move: 12.5 mm of ramp and 0.05 s at 500 mm/s towards x 250
     // (x 262.5 in the frozen frame), shifted by the object's 10 mm: x 272.5.

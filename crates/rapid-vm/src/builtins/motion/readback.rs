@@ -45,7 +45,11 @@ fn read_frames(ctx: &Ctx<'_>, tool: Option<&Value>, wobj: Option<&Value>) -> Res
     // On a track the robot's base is where the track is now.
     let base = ctx.resources.robot.track_base_at(ctx.time);
     match (tool_value, wobj_value) {
-        (None, None) => Ok(FrameChain { pdisp, base, ..active }),
+        (None, None) => {
+            // A work object the robot follows is where it is now.
+            let uframe = super::tracking::active_uframe_at(&ctx.resources.robot, ctx.time);
+            Ok(FrameChain { pdisp, base, uframe, ..active })
+        }
         (Some(tool), wobj) => data::chain(ctx, &tool, wobj.as_ref(), pdisp),
         (None, Some(wobj)) => {
             // uncertain: \WObj without \Tool reads with the active tool.

@@ -235,6 +235,19 @@ pub(super) fn planning_frame(ctx: &Ctx<'_>, carrier: Carrier) -> Option<rapid_mo
     Some(span.mover.user_frame(&conveyors.list, span.at_ref))
 }
 
+/// The active work object's user frame at controller time `t`: while the robot follows
+/// a moving work object, the frame the moves were planned in, carried to where the
+/// object is at `t`.
+pub(super) fn active_uframe_at(robot: &super::robot::RobotState, t: f64) -> rapid_motion::Pose {
+    let uframe = robot.active.uframe;
+    let Some(span) = robot.conveyors.open() else { return uframe };
+    let at = match span.mover {
+        Mover::Conveyor { conveyor, object } => robot.conveyors.list[conveyor].position(t) - object,
+        Mover::Unit { axis, .. } => robot.eax_at(t).map_or(span.at_ref, |e| e[axis]),
+    };
+    span.mover.carry(&robot.conveyors.list, span.at_ref, at) * uframe
+}
+
 /// While the robot follows a conveyor object: it must be able to reach where the
 /// object takes it when the program goes on (`until`), else execution stops.
 // uncertain: the controller's event for a tracked object leaving the robot's reach is
