@@ -233,3 +233,34 @@ fn world_zones_see_the_robot_where_it_follows_the_object() {
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     assert_eq!(stdout(&out), "in the zone 1\n");
 }
+
+#[test]
+fn conveyor_configuration_is_checked() {
+    // Manifest findings (rapid check): bad numbers, a base of two numbers, a task that
+    // is no motion task.
+    let dir = project("bad_config", "", "");
+    let manifest = MANIFEST
+        .replace("start_window = 200", "start_window = -1\ntask = \"T_NONE\"")
+        .replace("base = [250, 0, 300]", "base = [250, 0]\norientation = [1, 1, 0, 0]");
+    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .args(["check", dir.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let all = format!("{}{}", stdout(&out), stderr(&out));
+    assert!(!out.status.success());
+    for message in [
+        "start_window -1 is not a positive number",
+        "base takes 3 numbers",
+        "the orientation is not a unit quaternion",
+        "`T_NONE` is no motion task",
+    ] {
+        assert!(all.contains(message), "missing `{message}` in:\n{all}");
+    }
+    // A speed input that is no analog input of the I/O configuration stops the run.
+    let dir = project("bad_signal", "", "");
+    fs::write(dir.join("rapid.toml"), MANIFEST.replace("speed = \"c1Speed\"", "speed = \"c1Sync\"")).expect("manifest");
+    let out = run(&dir, &[]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(stderr(&out).contains("conveyor CNV1: `c1Sync` is no AI signal"), "{}", stderr(&out));
+}
