@@ -132,7 +132,7 @@ pub(crate) fn configure_conveyors(
             max_dist: c.max_dist,
         };
         let initial = io.and_then(|io| io.value(speed)).unwrap_or(0.0);
-        robot.conveyors.list.push(Conveyor::new(config, initial));
+        robot.following.conveyors.push(Conveyor::new(config, initial));
     }
     Ok(())
 }

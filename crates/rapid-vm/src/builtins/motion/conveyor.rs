@@ -10,6 +10,10 @@
 //! robot's path is shifted by how far the object has moved since: the robot follows
 //! it. The first move in a fixed work object ends the tracking (the last conveyor
 //! point becomes a stop point); DropWObj then releases the object.
+//!
+//! The same following carries the robot with a work object an external unit moves
+//! (`Mover::Unit`: a turntable, coordinated motion): [`Following`] keeps the spans of
+//! time in which the robot followed either kind.
 // uncertain: the controller blends the corner between a conveyor move and a fixed one;
 // here that point stops. The tracking robot's axis speeds are not re-checked.
 
@@ -174,19 +178,20 @@ impl Mover {
     }
 }
 
-/// The conveyors of a motion task and the robot's tracking of them.
+/// What the robot of a motion task follows: its conveyors, and the spans of time in
+/// which it followed a moving work object (a conveyor's object or a unit's).
 #[derive(Debug, Clone, Default, PartialEq)]
-pub struct Conveyors {
-    pub list: Vec<Conveyor>,
+pub struct Following {
+    pub conveyors: Vec<Conveyor>,
     pub spans: Vec<Span>,
     /// The first time the tracking robot could not reach its shifted path.
     pub unreachable: Option<f64>,
 }
 
-impl Conveyors {
+impl Following {
     /// The conveyor of this name.
     pub fn find(&self, name: &str) -> Option<usize> {
-        self.list.iter().position(|c| c.config.name.eq_ignore_ascii_case(name))
+        self.conveyors.iter().position(|c| c.config.name.eq_ignore_ascii_case(name))
     }
 
     /// The span the robot is following now, if any.
@@ -208,7 +213,7 @@ impl Conveyors {
     /// robot's to say).
     fn conveyor_at(&self, mover: &Mover, t: f64) -> Option<f64> {
         match *mover {
-            Mover::Conveyor { conveyor, object } => Some(self.list[conveyor].position(t) - object),
+            Mover::Conveyor { conveyor, object } => Some(self.conveyors[conveyor].position(t) - object),
             Mover::Unit { .. } => None,
         }
     }
@@ -218,7 +223,7 @@ impl super::robot::RobotState {
     /// Reads the conveyors' inputs from the I/O system's change log.
     pub fn refresh_conveyors(&mut self, io: Option<&rapid_io::IoSystem>) {
         let Some(io) = io else { return };
-        for conveyor in &mut self.conveyors.list {
+        for conveyor in &mut self.following.conveyors {
             conveyor.refresh(io);
         }
     }
@@ -227,19 +232,19 @@ impl super::robot::RobotState {
     /// has moved since the move was planned (in the robot's base frame; the base is the
     /// world frame here); `eax` gives the external axes at a time.
     fn carried(&self, t: f64, move_start: f64, eax: impl Fn(f64) -> Option<Eax>) -> Option<Pose> {
-        let span = self.conveyors.span_of(move_start)?;
+        let span = self.following.span_of(move_start)?;
         let t = span.t_end.map_or(t, |end| t.min(end));
         let at = match span.mover {
             Mover::Unit { axis, .. } => eax(t)?[axis],
-            conveyor => self.conveyors.conveyor_at(&conveyor, t)?,
+            conveyor => self.following.conveyor_at(&conveyor, t)?,
         };
-        Some(span.mover.carry(&self.conveyors.list, span.at_ref, at))
+        Some(span.mover.carry(&self.following.conveyors, span.at_ref, at))
     }
 
     /// Joints where the robot is at `t` when its planned `joints` are carried by the
     /// work object it follows; unchanged when it follows none.
     pub(super) fn tracked_joints(&mut self, t: f64, joints: Joints) -> Joints {
-        if self.conveyors.spans.is_empty() {
+        if self.following.spans.is_empty() {
             return joints;
         }
         let start = self.move_start_at(t);
@@ -248,7 +253,7 @@ impl super::robot::RobotState {
         match self.kin.inverse_near(&flange, &joints) {
             Ok(shifted) => shifted,
             Err(_) => {
-                self.conveyors.unreachable.get_or_insert(t);
+                self.following.unreachable.get_or_insert(t);
                 joints
             }
         }
@@ -271,7 +276,7 @@ impl super::robot::RobotState {
     /// (and on a track, where the track had the robot then).
     pub fn tracked(&self, planned: &rapid_motion::plan::PlannedMove, sample: Sample) -> Sample {
         let sample = self.on_track(planned, sample);
-        if self.conveyors.spans.is_empty() {
+        if self.following.spans.is_empty() {
             return sample;
         }
         self.carried_sample(planned, sample)

@@ -105,7 +105,7 @@ fn conveyor_frame(ctx: &Ctx<'_>, wobj: &Value) -> Result<Isometry3<f64>, RapidEr
     let robot = &ctx.resources.robot;
     match super::tracking::carrier_of(ctx, wobj)? {
         Some(Carrier::Conveyor(c)) => {
-            let conveyor = &robot.conveyors.list[c];
+            let conveyor = &robot.following.conveyors[c];
             match conveyor.distance(ctx.time) {
                 Some(d) => Ok(conveyor.frame_at(d)),
                 None => {
@@ -117,7 +117,7 @@ fn conveyor_frame(ctx: &Ctx<'_>, wobj: &Value) -> Result<Isometry3<f64>, RapidEr
             let mover = super::tracking::unit_mover(robot, u)?;
             let super::conveyor::Mover::Unit { axis, .. } = mover else { unreachable!("a unit's mover") };
             let at = robot.eax_at(ctx.time).map_or(0.0, |eax| eax[axis]);
-            Ok(mover.user_frame(&robot.conveyors.list, at))
+            Ok(mover.user_frame(&robot.following.conveyors, at))
         }
         None => Err(RapidError::fatal(
             "a work object moved by a mechanical unit the system does not have (ufprog FALSE, ufmec) is not supported",

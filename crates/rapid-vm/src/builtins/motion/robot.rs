@@ -168,8 +168,8 @@ pub struct RobotState {
     pub corr: super::corr::CorrState,
     /// The task's external units (none unless the configuration gives some).
     pub external: super::extax::ExternalUnits,
-    /// The task's conveyors and the robot's tracking of them.
-    pub conveyors: super::conveyor::Conveyors,
+    /// The task's conveyors and the moving work objects the robot followed.
+    pub following: super::conveyor::Following,
     /// The external axes' part of the next move given (set by the move instruction
     /// just before [`RobotState::push`]).
     pub(super) next_external: Option<rapid_motion::external::ExternalMove>,
@@ -217,7 +217,7 @@ impl RobotState {
             trigg: Default::default(),
             corr: Default::default(),
             external: Default::default(),
-            conveyors: Default::default(),
+            following: Default::default(),
             next_external: None,
         }
     }

@@ -14,7 +14,7 @@ const IDLE_POLL: f64 = 3600.0;
 
 /// Brings the conveyors up to the controller's time: inputs changed until now.
 pub(super) fn refresh(ctx: &mut Ctx<'_>) {
-    if ctx.resources.robot.conveyors.list.is_empty() {
+    if ctx.resources.robot.following.conveyors.is_empty() {
         return;
     }
     ctx.resources.io.advance(ctx.time);
@@ -50,7 +50,7 @@ fn ufmec(wobj: &Value) -> Option<&str> {
 /// The conveyor a work object rides (`ufprog` FALSE, `ufmec` a conveyor's name), if
 /// it does.
 pub(super) fn conveyor_of(ctx: &Ctx<'_>, wobj: &Value) -> Option<usize> {
-    ctx.resources.robot.conveyors.find(ufmec(wobj)?)
+    ctx.resources.robot.following.find(ufmec(wobj)?)
 }
 
 /// The conveyor of WaitWObj's and DropWObj's work object.
@@ -64,7 +64,7 @@ fn conveyor_arg(ctx: &Ctx<'_>, wobj: &Value) -> Result<usize, RapidError> {
 pub(super) fn carrier_of(ctx: &Ctx<'_>, wobj: &Value) -> Result<Option<Carrier>, RapidError> {
     let Some(name) = ufmec(wobj) else { return Ok(None) };
     let robot = &ctx.resources.robot;
-    if let Some(c) = robot.conveyors.find(name) {
+    if let Some(c) = robot.following.find(name) {
         return Ok(Some(Carrier::Conveyor(c)));
     }
     let Some(u) = robot.external.find(name) else { return Ok(None) };
@@ -100,7 +100,7 @@ pub(crate) fn wait_wobj(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let c = conveyor_arg(ctx, &args[0])?;
     let rel_dist = ctx.opt_num(args.get(1))?;
     let now = ctx.time;
-    let conveyor = &mut ctx.resources.robot.conveyors.list[c];
+    let conveyor = &mut ctx.resources.robot.following.conveyors[c];
     let object = match conveyor.connected {
         Some(_) if rel_dist.is_none() => {
             return Err(ctx.error(Err::CnvConnect, "the work object is connected already (DropWObj first)"));
@@ -164,14 +164,14 @@ fn end_wait(ctx: &mut Ctx<'_>, args: &[Value], timed_out: bool) -> Res {
 pub(crate) fn drop_wobj(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     refresh(ctx);
     let c = conveyor_arg(ctx, &args[0])?;
-    let conveyors = &mut ctx.resources.robot.conveyors;
-    if conveyors.open().is_some_and(|span| Carrier::of(&span.mover) == Carrier::Conveyor(c)) {
+    let following = &mut ctx.resources.robot.following;
+    if following.open().is_some_and(|span| Carrier::of(&span.mover) == Carrier::Conveyor(c)) {
         return Err(RapidError::fatal(
             "DropWObj while the robot still moves in the conveyor's work object: the motion stops \
              (move in a fixed work object first)",
         ));
     }
-    conveyors.list[c].connected = None;
+    following.conveyors[c].connected = None;
     Ok(None)
 }
 
@@ -180,7 +180,7 @@ pub(crate) fn drop_wobj(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// fixed one ends a following under way. Returns what carries the move's work object.
 pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Option<Carrier>, RapidError> {
     let robot = &ctx.resources.robot;
-    let idle = robot.conveyors.list.is_empty() && robot.conveyors.open().is_none();
+    let idle = robot.following.conveyors.is_empty() && robot.following.open().is_none();
     if idle && robot.external.units.iter().all(|u| u.unit.frame.is_none()) {
         return Ok(None);
     }
@@ -190,7 +190,7 @@ pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Opti
         None => None,
     };
     let now = ctx.time;
-    let open = ctx.resources.robot.conveyors.open().map(|s| Carrier::of(&s.mover));
+    let open = ctx.resources.robot.following.open().map(|s| Carrier::of(&s.mover));
     if open.is_some() && open != carrier {
         ctx.resources.robot.end_tracking(now);
     }
@@ -201,7 +201,7 @@ pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Opti
     if open != Some(carrier) {
         let mover = match carrier {
             Carrier::Conveyor(c) => {
-                let object = ctx.resources.robot.conveyors.list[c].connected.unwrap_or_default();
+                let object = ctx.resources.robot.following.conveyors[c].connected.unwrap_or_default();
                 Mover::Conveyor { conveyor: c, object }
             }
             Carrier::Unit(u) => unit_mover(&ctx.resources.robot, u)?,
@@ -213,7 +213,7 @@ pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Opti
 
 /// A move on conveyor `c`'s object: it must be connected and within the maximum distance.
 fn check_object(ctx: &Ctx<'_>, c: usize) -> Result<(), RapidError> {
-    let conveyor = &ctx.resources.robot.conveyors.list[c];
+    let conveyor = &ctx.resources.robot.following.conveyors[c];
     let Some(distance) = conveyor.distance(ctx.time) else {
         return Err(ctx.error(Err::CnvNotActive, "the conveyor's work object is connected to no object (WaitWObj)"));
     };
@@ -230,9 +230,9 @@ fn check_object(ctx: &Ctx<'_>, c: usize) -> Result<(), RapidError> {
 
 /// The user frame moves in `carrier`'s work object are planned in.
 pub(super) fn planning_frame(ctx: &Ctx<'_>, carrier: Carrier) -> Option<rapid_motion::Pose> {
-    let conveyors = &ctx.resources.robot.conveyors;
-    let span = conveyors.open().filter(|s| Carrier::of(&s.mover) == carrier)?;
-    Some(span.mover.user_frame(&conveyors.list, span.at_ref))
+    let following = &ctx.resources.robot.following;
+    let span = following.open().filter(|s| Carrier::of(&s.mover) == carrier)?;
+    Some(span.mover.user_frame(&following.conveyors, span.at_ref))
 }
 
 /// The active work object's user frame at controller time `t`: while the robot follows
@@ -240,12 +240,12 @@ pub(super) fn planning_frame(ctx: &Ctx<'_>, carrier: Carrier) -> Option<rapid_mo
 /// object is at `t`.
 pub(super) fn active_uframe_at(robot: &super::robot::RobotState, t: f64) -> rapid_motion::Pose {
     let uframe = robot.active.uframe;
-    let Some(span) = robot.conveyors.open() else { return uframe };
+    let Some(span) = robot.following.open() else { return uframe };
     let at = match span.mover {
-        Mover::Conveyor { conveyor, object } => robot.conveyors.list[conveyor].position(t) - object,
+        Mover::Conveyor { conveyor, object } => robot.following.conveyors[conveyor].position(t) - object,
         Mover::Unit { axis, .. } => robot.eax_at(t).map_or(span.at_ref, |e| e[axis]),
     };
-    span.mover.carry(&robot.conveyors.list, span.at_ref, at) * uframe
+    span.mover.carry(&robot.following.conveyors, span.at_ref, at) * uframe
 }
 
 /// While the robot follows a conveyor object: it must be able to reach where the
@@ -253,11 +253,11 @@ pub(super) fn active_uframe_at(robot: &super::robot::RobotState, t: f64) -> rapi
 // uncertain: the controller's event for a tracked object leaving the robot's reach is
 // not in our notes; the reach error (50050) is given.
 pub(super) fn check_reach(robot: &mut super::robot::RobotState, until: f64) -> Result<(), RapidError> {
-    if robot.conveyors.open().is_none() {
+    if robot.following.open().is_none() {
         return Ok(());
     }
     robot.joints_at(until);
-    match robot.conveyors.unreachable.take() {
+    match robot.following.unreachable.take() {
         Some(_) => Err(super::moves::motion_error(rapid_motion::MotionError::OutOfReach)),
         None => Ok(()),
     }
@@ -269,11 +269,11 @@ impl super::robot::RobotState {
     fn start_tracking(&mut self, mover: Mover, now: f64) {
         let t_ref = self.stop_here().max(now);
         let at_ref = match mover {
-            Mover::Conveyor { conveyor, object } => self.conveyors.list[conveyor].position(t_ref) - object,
+            Mover::Conveyor { conveyor, object } => self.following.conveyors[conveyor].position(t_ref) - object,
             // The robot stands: the axis is where the last move left it.
             Mover::Unit { axis, .. } => self.planner.end_eax().map_or(0.0, |eax| eax[axis]),
         };
-        self.conveyors.spans.push(Span { mover, t_ref, at_ref, t_end: None });
+        self.following.spans.push(Span { mover, t_ref, at_ref, t_end: None });
     }
 
     /// The robot stops following its conveyor object: where its last conveyor move
@@ -281,7 +281,7 @@ impl super::robot::RobotState {
     fn end_tracking(&mut self, now: f64) {
         let t_end = self.stop_here().max(now);
         let joints = self.joints_at(t_end);
-        if let Some(span) = self.conveyors.spans.last_mut() {
+        if let Some(span) = self.following.spans.last_mut() {
             span.t_end = Some(t_end);
         }
         // The next move starts from where the object took the robot.
