@@ -1,15 +1,15 @@
-//! Axis torques and load identification (§1.8): GetMotorTorque, from the static model of
+//! Axis torques and load identification (§1.8): GetMotorTorque, from the load model of
 //! `rapid_motion::dynamics`: the torque each axis needs to hold the tool's load and
-//! the payload still against gravity, where the robot is now.
+//! the payload against gravity and to accelerate them as the robot moves them now.
 //!
 //! Not modelled (not public, or not simulated): the arm's own link masses, friction,
-//! acceleration torques, and the gear ratios (a ratio of 1 is used, so a motor torque
-//! is the axis torque). GetTorqueMargin and ResetTorqueMargin need the motors' torque
+//! the loads' rotational inertia, and the gear ratios (a ratio of 1 is used, so a motor
+//! torque is the axis torque). GetTorqueMargin and ResetTorqueMargin need the motors' torque
 //! limits, which are not public either; they stay unregistered. ParIdRobValid tells
 //! which identifications the robot allows.
 
 use nalgebra::{Point3, Vector3};
-use rapid_motion::dynamics::{holding_torques, PointLoad};
+use rapid_motion::dynamics::{moving_torques, PointLoad};
 
 use super::super::Ctx;
 use super::frame;
@@ -64,16 +64,20 @@ fn loads(ctx: &Ctx<'_>) -> Vec<PointLoad> {
     loads
 }
 
-/// The holding torque of each axis now, Nm.
+/// The half width of the second difference that gives the loads' acceleration, s.
+const ACCEL_H: f64 = 0.002;
+
+/// The torque of each axis now, Nm: holding the loads and accelerating them.
 pub(super) fn axis_torques(ctx: &mut Ctx<'_>) -> [f64; ROBOT_AXES] {
     let loads = loads(ctx);
     let now = ctx.time;
-    let joints = ctx.resources.robot.joints_at(now);
-    holding_torques(&ctx.resources.robot.kin, &joints, &loads)
+    let robot = &mut ctx.resources.robot;
+    let joints = [robot.joints_at((now - ACCEL_H).max(0.0)), robot.joints_at(now), robot.joints_at(now + ACCEL_H)];
+    moving_torques(&robot.kin, &joints, ACCEL_H, &loads)
 }
 
 /// `GetMotorTorque([\MecUnit,] AxisNo)`: the motor torque of an axis now, Nm: the
-/// torque that holds the tool load and the payload against gravity.
+/// torque that holds the tool load and the payload against gravity and accelerates them.
 // uncertain: which units and sign the controller reports are not public; ours is the
 // torque the motor gives, positive in the axis's positive direction.
 pub(crate) fn get_motor_torque(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
