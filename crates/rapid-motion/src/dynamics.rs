@@ -60,7 +60,8 @@ pub fn moving_torques(kin: &dyn Kinematics, joints: &[Joints; 3], h: f64, loads:
     let [before, now, after] = joints;
     let mut torques = holding_torques(kin, now, loads);
     let moving = before != now || after != now;
-    if !moving || !(h.is_finite() && h > 0.0) || !joints.iter().flatten().all(|q| q.is_finite()) {
+    let usable = moving && h.is_finite() && h > 0.0 && joints.iter().flatten().all(|q| q.is_finite());
+    if !usable {
         return torques;
     }
     let at = |q: &Joints, load: &PointLoad| (kin.forward(q) * Point3::from(load.cog)).coords;
