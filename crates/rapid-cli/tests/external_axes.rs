@@ -384,3 +384,27 @@ ENDMODULE
     assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
     assert_eq!(String::from_utf8_lossy(&out.stdout), "standing 0\ninside 1\n");
 }
+
+#[test]
+fn another_task_reads_the_robots_external_axes() {
+    // T_ROB1 moves its track to 1000 mm (1.2 s); T_PLC, a task without a robot, reads
+    // the track through the controller at 2 s.
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external_axes").join("other_task");
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    let manifest = format!(
+        "[[task]]\nname = \"T_ROB1\"\nmodules = [\"rob.mod\"]\n\n[[task]]\nname = \"T_PLC\"\ntype = \"NORMAL\"\n\
+         modules = [\"plc.mod\"]\n{UNITS}"
+    );
+    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    let rob = "MODULE rob\n  PROC main()\n    MoveExtJ [[0,0,0,0,0,0],[1000,9E9,9E9,9E9,9E9,9E9]], v1000, fine;\n  \
+               ENDPROC\nENDMODULE\n";
+    let plc = "MODULE plc\n  VAR jointtarget jt;\n  PROC main()\n    WaitTime 2;\n    jt := CJointT(\\TaskName:=\"T_ROB1\");\n    \
+               TPWrite \"track \" \\Num:=jt.extax.eax_a;\n    TPWrite \"table \" \\Num:=jt.extax.eax_b;\n    \
+               TPWrite \"none \" \\Num:=jt.extax.eax_c;\n  ENDPROC\nENDMODULE\n";
+    fs::write(dir.join("rob.mod"), rob).expect("module");
+    fs::write(dir.join("plc.mod"), plc).expect("module");
+    let out = rapid(&["run", "--quiet", dir.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "track 1000\ntable 0\nnone 9E+09\n");
+}

@@ -221,7 +221,7 @@ impl Controller {
             Request::Robot { task } => {
                 let time = self.time;
                 let robot = &mut self.tasks[task].loaded.vm.resources_mut().robot;
-                Reply::Robot(robot.joints_at(time), Box::new(robot.active))
+                Reply::Robot(robot.joints_at(time), Box::new((robot.active, robot.extax_read(time))))
             }
             Request::SaveModule { task, module, dest } => {
                 match self.tasks[task].loaded.vm.save_module_for_another_task(&module, dest) {

@@ -80,7 +80,7 @@ pub enum Reply {
     Constant,
     WrongType,
     /// The robot's axes and its active frames.
-    Robot(rapid_motion::Joints, Box<rapid_motion::frames::FrameChain>),
+    Robot(rapid_motion::Joints, Box<(rapid_motion::frames::FrameChain, [f64; 6])>),
     /// The other task could not do it: the error to raise in the asking task.
     Failed(Box<crate::error::RapidError>),
 }

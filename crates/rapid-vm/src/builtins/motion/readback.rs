@@ -14,17 +14,24 @@ use crate::value::Value;
 
 type Res = Result<Option<Value>, RapidError>;
 
-/// The robot a read-back is about: this task's (None), or another task's axes and
-/// active frames as the controller reports them (`Some(None)`: wait for the reply).
-#[allow(clippy::type_complexity)]
-fn robot_of(
-    ctx: &mut Ctx<'_>,
-    args: &[Value],
-) -> Result<Option<Option<(rapid_motion::Joints, FrameChain)>>, RapidError> {
+/// Another task's robot as the controller reports it: its axes, active frames and
+/// external axes (`extjoint`, 9E9 where it has none).
+struct OtherRobot {
+    joints: rapid_motion::Joints,
+    frames: FrameChain,
+    extax: [f64; 6],
+}
+
+/// The robot a read-back is about: this task's (None), or another task's
+/// (`Some(None)`: wait for the reply).
+fn robot_of(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Option<OtherRobot>>, RapidError> {
     use super::super::tasking::{ask, other_task, Reply, Request};
     let Some(task) = other_task(ctx, args, 0)? else { return Ok(None) };
     Ok(Some(match ask(ctx, Request::Robot { task }) {
-        Some(Reply::Robot(joints, frames)) => Some((joints, *frames)),
+        Some(Reply::Robot(joints, robot)) => {
+            let (frames, extax) = *robot;
+            Some(OtherRobot { joints, frames, extax })
+        }
         Some(_) => return Err(RapidError::fatal("the task has no robot")),
         None => None,
     }))
@@ -72,17 +79,15 @@ fn tool0_like(ctx: &Ctx<'_>) -> Result<Value, RapidError> {
 /// `CJointT([\TaskRef] | [\TaskName])`: the axis values now.
 pub(crate) fn c_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     super::tracking::refresh(ctx);
-    let joints = match robot_of(ctx, args)? {
-        Some(Some((joints, _))) => joints,
+    let (joints, extax) = match robot_of(ctx, args)? {
+        Some(Some(other)) => (other.joints, other.extax),
         Some(None) => return Ok(Some(data::jointtarget_value(ctx, &[0.0; 6])?)),
         None => {
             let now = ctx.time;
-            let joints = ctx.resources.robot.joints_at(now);
-            let extax = ctx.resources.robot.extax_read(now);
-            return Ok(Some(super::frame::with_extax(&data::jointtarget_value(ctx, &joints)?, &extax)));
+            (ctx.resources.robot.joints_at(now), ctx.resources.robot.extax_read(now))
         }
     };
-    Ok(Some(data::jointtarget_value(ctx, &joints)?))
+    Ok(Some(super::frame::with_extax(&data::jointtarget_value(ctx, &joints)?, &extax)))
 }
 
 /// `CRobT([\TaskRef] | [\TaskName] [\Tool] [\WObj])`: the robtarget the robot is at.
@@ -91,22 +96,20 @@ pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let other = robot_of(ctx, args)?;
     let mut chain = read_frames(ctx, args.get(2), args.get(3))?;
     let now = ctx.time;
-    let own = other.is_none();
-    let joints = match other {
+    let (joints, extax) = match other {
         // The other task's active frames stand in for the arguments not given.
-        Some(Some((joints, frames))) => {
+        Some(Some(other)) => {
             if !present(args.get(2)) && !present(args.get(3)) {
-                chain = frames;
+                chain = other.frames;
             }
-            joints
+            (other.joints, other.extax)
         }
         Some(None) => return Ok(Some(data::robtarget_value(ctx, &nalgebra::Isometry3::identity(), [0; 4])?)),
-        None => ctx.resources.robot.joints_at(now),
+        None => (ctx.resources.robot.joints_at(now), ctx.resources.robot.extax_read(now)),
     };
     let robot = &mut ctx.resources.robot;
     let pose = chain.target_of(&robot.kin.forward(&joints));
     let conf = confdata_of(&robot.kin, &joints);
-    let extax = if own { robot.extax_read(now) } else { [super::extax::UNUSED; 6] };
     Ok(Some(super::frame::with_extax(&data::robtarget_value(ctx, &pose, conf)?, &extax)))
 }
 
