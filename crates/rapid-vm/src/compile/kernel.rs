@@ -27,7 +27,7 @@ impl RoutineCompiler<'_> {
     /// Emits a `KernelStore` for `target := value` when both qualify; returns the
     /// instruction so its `skip` can be pointed past the general code.
     pub(crate) fn kernel_store(&mut self, arena: &Arena, target: ExprId, value: ExprId) -> Option<u32> {
-        if !has_operator(arena, value) {
+        if !has_operator(arena, value) && !is_element(arena, value) && !is_element(arena, target) {
             return None;
         }
         let mut ops = Vec::new();
@@ -176,11 +176,22 @@ fn result_kind(op: BinaryOp) -> Kind {
     }
 }
 
-/// An assignment of a bare leaf gains nothing from a kernel.
+/// An assignment of a bare scalar leaf to a scalar gains little from a kernel.
 fn has_operator(arena: &Arena, id: ExprId) -> bool {
     match arena.expr(id).kind {
         ExprKind::Paren(inner) => has_operator(arena, inner),
         ExprKind::Binary { .. } | ExprKind::Unary { .. } => true,
+        _ => false,
+    }
+}
+
+/// An element of an array: its general code takes three or four instructions
+/// (index, value, `LoadElem`/`StoreElem`), so even a plain copy such as a swap's
+/// `a{j} := a{j + 1}` gains from a kernel (bench/interp bubble).
+fn is_element(arena: &Arena, id: ExprId) -> bool {
+    match arena.expr(id).kind {
+        ExprKind::Paren(inner) => is_element(arena, inner),
+        ExprKind::Index { .. } => true,
         _ => false,
     }
 }
