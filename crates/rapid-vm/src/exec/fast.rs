@@ -27,26 +27,26 @@ impl Vm {
             let frame = self.frame();
             (frame.code.clone(), frame.base as usize, frame.pc)
         };
+        // The loop goes on in the frame now on top, at its pc. Its code is cloned only
+        // when it is another routine's (not in recursion).
+        macro_rules! resume_top_frame {
+            () => {{
+                let frame = self.frame();
+                if !std::rc::Rc::ptr_eq(&code, &frame.code) {
+                    code = frame.code.clone();
+                }
+                (base, pc) = (frame.base as usize, frame.pc);
+                continue;
+            }};
+        }
         // After a call or a return the loop goes on in the frame now on top.
         macro_rules! continue_in_top_frame {
             ($outcome:expr) => {
                 match $outcome {
-                    Ok(None) if !self.frames.is_empty() && !self.exiting => {
-                        let frame = self.frame();
-                        (code, base, pc) = (frame.code.clone(), frame.base as usize, frame.pc);
-                        continue;
-                    }
+                    Ok(None) if !self.frames.is_empty() && !self.exiting => resume_top_frame!(),
                     outcome => break Fast::Called(outcome),
                 }
             };
-        }
-        // After a plain return: the loop goes on in the caller, at its pc.
-        macro_rules! resume_caller {
-            () => {{
-                let frame = self.frame();
-                (code, base, pc) = (frame.code.clone(), frame.base as usize, frame.pc);
-                continue;
-            }};
         }
         let budget = *remaining;
         let mut left = budget;
@@ -59,25 +59,25 @@ impl Vm {
             let stack = &mut self.storage.stack;
             match instr {
                 Instr::Const(i) => match &code.consts[i as usize] {
-                    Value::Num(n) => stack.push(Value::Num(*n)),
-                    Value::Bool(b) => stack.push(Value::Bool(*b)),
+                    Value::Num(n) => push_num(stack, *n),
+                    Value::Bool(b) => push_bool(stack, *b),
                     Value::Str(s) => stack.push(Value::Str(s.clone())),
                     _ => break Fast::Step,
                 },
                 Instr::LoadLocal(slot) => match &stack[base + slot as usize] {
-                    Value::Num(n) => stack.push(Value::Num(*n)),
-                    Value::Bool(b) => stack.push(Value::Bool(*b)),
+                    Value::Num(n) => push_num(stack, *n),
+                    Value::Bool(b) => push_bool(stack, *b),
                     Value::Str(s) => stack.push(Value::Str(s.clone())),
                     // Records are shared until written: a load is a reference count.
                     Value::Record(r) => stack.push(Value::Record(r.clone())),
                     // A VAR parameter referring to a whole num in a caller's slot.
                     Value::Ref(place) if place.path.is_empty() => match place.root {
                         Root::Stack(at) => match stack[at as usize] {
-                            Value::Num(n) => stack.push(Value::Num(n)),
+                            Value::Num(n) => push_num(stack, n),
                             _ => break Fast::Step,
                         },
                         Root::Global(idx) => match self.storage.globals.get(idx as usize) {
-                            Some(&Value::Num(n)) => stack.push(Value::Num(n)),
+                            Some(&Value::Num(n)) => push_num(stack, n),
                             _ => break Fast::Step,
                         },
                     },
@@ -130,7 +130,7 @@ impl Vm {
                     }
                 }
                 Instr::LoadGlobal(idx) => match self.storage.globals.get(idx as usize) {
-                    Some(Value::Num(n)) => stack.push(Value::Num(*n)),
+                    Some(Value::Num(n)) => push_num(stack, *n),
                     Some(Value::Str(s)) => stack.push(Value::Str(s.clone())),
                     Some(Value::Record(r)) => stack.push(Value::Record(r.clone())),
                     _ => break Fast::Step,
@@ -248,7 +248,10 @@ impl Vm {
                             put_result(stack.last_mut(), res);
                         }
                         (true, false) | (false, true) => put_result(stack.last_mut(), res),
-                        (false, false) => stack.push(res.into_value()),
+                        (false, false) => match res {
+                            FastResult::Num(n) => push_num(stack, n),
+                            FastResult::Bool(b) => push_bool(stack, b),
+                        },
                     }
                 }
                 Instr::LoadElem { global: false, slot, n: 1 } => {
@@ -299,22 +302,28 @@ impl Vm {
                     self.frame_mut().pc = pc;
                     // A PROC's end outside an ERROR handler is a plain return.
                     if !code.is_func && self.frame().active.is_none() && self.return_plain(None).is_ok() {
-                        resume_caller!();
+                        resume_top_frame!();
                     }
                     continue_in_top_frame!(self.fell_off_end());
                 }
                 Instr::Return => {
                     self.frame_mut().pc = pc;
                     if self.return_plain(None).is_ok() {
-                        resume_caller!();
+                        resume_top_frame!();
                     }
                     continue_in_top_frame!(Ok(self.return_from(None)));
                 }
                 Instr::ReturnValue => {
+                    if let Some(&Value::Num(n)) = stack.last() {
+                        if self.return_num(n) {
+                            resume_top_frame!();
+                        }
+                    }
+                    let stack = &mut self.storage.stack;
                     let value = stack.pop().unwrap_or(Value::Absent);
                     self.frame_mut().pc = pc;
                     match self.return_plain(Some(value)) {
-                        Ok(()) => resume_caller!(),
+                        Ok(()) => resume_top_frame!(),
                         Err(value) => continue_in_top_frame!(Ok(self.return_from(value))),
                     }
                 }
@@ -371,9 +380,8 @@ impl Vm {
                     let site = &code.sites[site_index as usize];
                     let Callee::Builtin(id) = site.callee else {
                         // A routine: entered here, and the loop starts again in its frame.
-                        if let Some((callee, callee_base)) = self.enter_plain(&code, site_index, pc) {
-                            (code, base, pc) = (callee, callee_base, 0);
-                            continue;
+                        if self.enter_plain(&code, site_index, pc).is_some() {
+                            resume_top_frame!();
                         }
                         self.frame_mut().pc = pc;
                         continue_in_top_frame!(self.call(&code, site_index, host));
@@ -690,6 +698,29 @@ fn put_result(slot: Option<&mut Value>, res: FastResult) {
             // The old value is a num or bool: nothing to free.
             std::mem::forget(std::mem::replace(slot, res.into_value()));
         }
+    }
+}
+
+/// Pushes a num. The constant is copied in whole and then its number written: a
+/// `Value::Num(n)` assembled in a temporary by narrow stores and copied with wide
+/// loads stalled on store forwarding at every push (perf on bench/interp fib: about a
+/// third of the fast loop's time).
+#[inline(always)]
+pub(super) fn push_num(stack: &mut Vec<Value>, n: f32) {
+    const ZERO: Value = Value::Num(0.0);
+    stack.push(ZERO);
+    if let Some(Value::Num(x)) = stack.last_mut() {
+        *x = n;
+    }
+}
+
+/// Pushes a bool, as `push_num` does.
+#[inline(always)]
+fn push_bool(stack: &mut Vec<Value>, b: bool) {
+    const FALSE: Value = Value::Bool(false);
+    stack.push(FALSE);
+    if let Some(Value::Bool(x)) = stack.last_mut() {
+        *x = b;
     }
 }
 
