@@ -162,7 +162,7 @@ impl Vm {
         if let Some(caller) = self.frames.last_mut() {
             caller.pc += 1;
         }
-        super::fast::push_num(&mut self.storage.stack, n);
+        super::num::push_num(&mut self.storage.stack, n);
         true
     }
 

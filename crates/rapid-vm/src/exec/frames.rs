@@ -117,7 +117,7 @@ impl Frames {
     /// Pushes a frame entering `code` at its start, its slots from `base`: a spare is
     /// rewritten field by field (its code kept when it is the same routine, as in
     /// recursion), else a new frame is added.
-    #[inline]
+    #[inline(always)]
     pub(super) fn enter(&mut self, code: &Rc<Code>, base: u32) {
         match self.slots.get_mut(self.live) {
             Some(spare) => {

@@ -17,6 +17,7 @@ mod io;
 mod kernel;
 mod log;
 pub mod modules;
+mod num;
 mod shared;
 mod spy;
 mod stop;
@@ -368,7 +369,7 @@ impl Vm {
             Instr::Const(i) => self.push(code.consts[i as usize].clone()),
             // The fast loop runs kernels; here the statement's general code, which
             // follows, does the work.
-            Instr::KernelStore { .. } | Instr::KernelBranch { .. } => {}
+            Instr::KernelStore { .. } | Instr::KernelBranch { .. } | Instr::KernelReturn { .. } => {}
             Instr::LoadLocal(slot) => {
                 let value = self.load_local(base + slot)?;
                 self.push(value);
