@@ -10,7 +10,10 @@ use crate::builtins::BuiltinId;
 use crate::value::Value;
 
 /// One instruction. Operands come from and results go to the frame's operand stack.
+/// `repr(u8)`: a plain tag byte, so the fast loop's dispatch reads it without
+/// decoding a niche (two instructions fewer on every instruction executed).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[repr(u8)]
 pub enum Instr {
     /// Push constant `n` of the pool.
     Const(u32),

@@ -146,7 +146,7 @@ impl Vm {
     /// is written as a fresh value where the frame began, never moved as a whole
     /// `Value` (each such move stalled on store forwarding, perf on bench/interp fib).
     /// `false` (nothing changed) when the general path must return.
-    #[inline]
+    #[inline(always)]
     pub(super) fn return_num(&mut self, n: f32) -> bool {
         let depth = self.frames.len();
         if depth < 2 || self.exiting {
@@ -158,11 +158,22 @@ impl Vm {
         }
         let base = frame.base as usize;
         self.frames.leave();
-        self.release_slots(base);
         if let Some(caller) = self.frames.last_mut() {
             caller.pc += 1;
         }
-        super::num::push_num(&mut self.storage.stack, n);
+        // The result takes the frame's first slot in place when that slot holds a
+        // plain value (a num parameter, typically): one slot fewer to release, and no
+        // push (which LLVM left out of line here, about 20 instructions).
+        match self.storage.stack.get(base) {
+            Some(Value::Num(_) | Value::Dnum(_) | Value::Bool(_) | Value::Absent | Value::SwitchOn) => {
+                self.release_slots(base + 1);
+                super::num::put_num(&mut self.storage.stack[base], n);
+            }
+            _ => {
+                self.release_slots(base);
+                super::num::push_num(&mut self.storage.stack, n);
+            }
+        }
         true
     }
 

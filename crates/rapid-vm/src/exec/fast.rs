@@ -7,7 +7,7 @@ use super::num::{
     drop_plain, element_1d, element_1d_mut, fast_num_op, push_bool, push_num, put_result, set_num, FastResult,
 };
 use super::{Exit, RapidError, Value, Vm};
-use crate::ir::{ArgSpec, Callee, Instr};
+use crate::ir::{ArgSpec, Callee, Instr, Operand};
 use crate::value::{Root, MAX_STRING_CHARS};
 
 /// Why the fast loop stopped.
@@ -138,6 +138,33 @@ impl Vm {
                     Some(Value::Record(r)) => stack.push(Value::Record(r.clone())),
                     _ => break Fast::Step,
                 },
+                // The commonest num forms (`n - 1`, `a + b` of two results) first, with
+                // no dispatch on the operand kinds; anything else takes the arms below.
+                Instr::BinOp { op, lhs: Operand::Local(slot), rhs: Operand::Const(k) }
+                    if is_num(stack.get(base + slot as usize)) && is_num(code.consts.get(k as usize)) =>
+                {
+                    let (Some(&Value::Num(a)), Some(&Value::Num(b))) =
+                        (stack.get(base + slot as usize), code.consts.get(k as usize))
+                    else {
+                        break Fast::Step;
+                    };
+                    let Some(res) = fast_num_op(op, a, b) else { break Fast::Step };
+                    match res {
+                        FastResult::Num(n) => push_num(stack, n),
+                        FastResult::Bool(b) => push_bool(stack, b),
+                    }
+                }
+                Instr::BinOp { op, lhs: Operand::Stack, rhs: Operand::Stack }
+                    if matches!(&stack[stack.len().saturating_sub(2)..], [Value::Num(_), Value::Num(_)]) =>
+                {
+                    let len = stack.len();
+                    let (Value::Num(a), Value::Num(b)) = (&stack[len - 2], &stack[len - 1]) else {
+                        break Fast::Step;
+                    };
+                    let Some(res) = fast_num_op(op, *a, *b) else { break Fast::Step };
+                    drop_plain(stack.pop());
+                    put_result(stack.last_mut(), res);
+                }
                 Instr::Binary(rapid_syntax::ast::BinaryOp::Add)
                     if matches!(&stack[stack.len() - 2..], [Value::Str(_), Value::Str(_)]) =>
                 {
@@ -609,6 +636,11 @@ fn str_at<'a>(
         Some(Value::Str(s)) => Some(s),
         _ => None,
     }
+}
+
+#[inline(always)]
+fn is_num(value: Option<&Value>) -> bool {
+    matches!(value, Some(Value::Num(_)))
 }
 
 #[inline(always)]

@@ -84,12 +84,14 @@ pub(crate) struct Frames {
 impl Deref for Frames {
     type Target = [Frame];
 
+    #[inline(always)]
     fn deref(&self) -> &[Frame] {
         &self.slots[..self.live]
     }
 }
 
 impl DerefMut for Frames {
+    #[inline(always)]
     fn deref_mut(&mut self) -> &mut [Frame] {
         &mut self.slots[..self.live]
     }
@@ -126,7 +128,10 @@ impl Frames {
                 }
                 spare.pc = 0;
                 spare.base = base;
-                spare.active = None;
+                // Tested first: assigning runs the drop code out of line.
+                if spare.active.is_some() {
+                    spare.active = None;
+                }
                 spare.retries = 0;
                 spare.last_retry_stmt = None;
                 spare.undoing = false;

@@ -51,6 +51,17 @@ pub(super) fn push_num(stack: &mut Vec<Value>, n: f32) {
     }
 }
 
+/// Writes a num into a slot holding a plain value (num, dnum, bool, absent, switch),
+/// which needs no drop code.
+#[inline(always)]
+pub(super) fn put_num(slot: &mut Value, n: f32) {
+    const ZERO: Value = Value::Num(0.0);
+    if !matches!(slot, Value::Num(_)) {
+        std::mem::forget(std::mem::replace(slot, ZERO));
+    }
+    set_num(slot, n);
+}
+
 /// Pushes a bool, as `push_num` does.
 #[inline(always)]
 pub(super) fn push_bool(stack: &mut Vec<Value>, b: bool) {
