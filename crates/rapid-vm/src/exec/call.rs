@@ -80,11 +80,12 @@ impl Vm {
     /// The fast loop's call of a user routine when nothing about it needs the general
     /// path: every parameter pushed, IN nums already of their parameter's kind, no
     /// backward entry, depth below the limit. Enters the callee exactly as
-    /// `enter_in_place` does and answers its frame base; `None` (nothing changed) otherwise.
+    /// `enter_in_place` does and answers its frame base, and whether it runs `code`
+    /// again (recursion: the loop keeps its code); `None` (nothing changed) otherwise.
     /// Skips the general call's `Result` plumbing: about a sixth of a call's cost
     /// (callgrind, bench/interp fib and varcall).
     #[inline]
-    pub(super) fn enter_plain(&mut self, code: &Code, site: u32, pc: u32) -> Option<usize> {
+    pub(super) fn enter_plain(&mut self, code: &Code, site: u32, pc: u32) -> Option<(usize, bool)> {
         let site = code.sites.get(site as usize)?;
         let Callee::Routine(idx) = site.callee else { return None };
         if site.n_pushed as usize != site.args.len()
@@ -96,9 +97,14 @@ impl Vm {
         let Some(Some(callee)) = self.routines.get(idx as usize) else { return None };
         let at = self.storage.stack.len().checked_sub(site.n_pushed as usize)?;
         let args = self.storage.stack.get(at..)?;
-        let converted = callee.param_likes.iter().zip(args).all(|(like, arg)| {
+        let converted = |(like, arg): (&Option<Value>, &Value)| {
             like.as_ref().is_none_or(|like| std::mem::discriminant(like) == std::mem::discriminant(arg))
-        });
+        };
+        // One parameter is the common case, checked without setting up the zip.
+        let converted = match (&callee.param_likes[..], args) {
+            ([like], [arg]) => converted((like, arg)),
+            (likes, args) => likes.iter().zip(args).all(converted),
+        };
         if !converted {
             return None;
         }
@@ -110,7 +116,7 @@ impl Vm {
             caller.pc = pc;
         }
         self.frames.enter(callee, at as u32);
-        Some(at)
+        Some((at, std::ptr::eq(&**callee, code)))
     }
 
     /// The fast loop's return from a frame with a plain caller to go back to (not
@@ -166,7 +172,10 @@ impl Vm {
         // push (which LLVM left out of line here, about 20 instructions).
         match self.storage.stack.get(base) {
             Some(Value::Num(_) | Value::Dnum(_) | Value::Bool(_) | Value::Absent | Value::SwitchOn) => {
-                self.release_slots(base + 1);
+                // Checked here: the call alone cost as much as a slot's release.
+                if self.storage.stack.len() > base + 1 {
+                    self.release_slots(base + 1);
+                }
                 super::num::put_num(&mut self.storage.stack[base], n);
             }
             _ => {

@@ -417,8 +417,13 @@ impl Vm {
                     let site = &code.sites[site_index as usize];
                     let Callee::Builtin(id) = site.callee else {
                         // A routine: entered here, and the loop starts again in its frame.
-                        if self.enter_plain(&code, site_index, pc).is_some() {
-                            resume_top_frame!();
+                        match self.enter_plain(&code, site_index, pc) {
+                            Some((callee_base, true)) => {
+                                (base, pc) = (callee_base, 0);
+                                continue;
+                            }
+                            Some((_, false)) => resume_top_frame!(),
+                            None => {}
                         }
                         self.frame_mut().pc = pc;
                         continue_in_top_frame!(self.call(&code, site_index, host));
