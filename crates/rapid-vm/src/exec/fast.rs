@@ -399,9 +399,8 @@ impl Vm {
                 }
                 Instr::KernelReturn { kernel } => {
                     let kernel = &code.kernels[kernel as usize];
-                    let value = super::kernel::eval(kernel, stack, base, &self.storage.globals);
-                    if let Some(results) = value {
-                        if self.return_num(super::kernel::value(&results)) {
+                    if let Some(value) = super::kernel::value(kernel, stack, base, &self.storage.globals) {
+                        if self.return_num(value) {
                             resume_top_frame!();
                         }
                     }

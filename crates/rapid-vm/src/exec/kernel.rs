@@ -170,10 +170,14 @@ pub(super) fn condition(kernel: &Kernel, stack: &[Value], base: usize, globals: 
     }
 }
 
-/// The value a kernel computed.
-#[inline]
-pub(super) fn value(results: &Results) -> f32 {
-    results.top
+/// The value of a kernel, `None` when it cannot run. A bare local (`RETURN n`) is
+/// read without setting up the registers, which cost more than the read itself.
+#[inline(always)]
+pub(super) fn value(kernel: &Kernel, stack: &[Value], base: usize, globals: &[Value]) -> Option<f32> {
+    match kernel.ops[..] {
+        [KernelOp::Local(slot)] => local_num(stack, globals, base + slot as usize),
+        _ => Some(eval(kernel, stack, base, globals)?.top),
+    }
 }
 
 /// The condition a branch kernel computed.
