@@ -172,8 +172,12 @@ impl Vm {
         // push (which LLVM left out of line here, about 20 instructions).
         match self.storage.stack.get(base) {
             Some(Value::Num(_) | Value::Dnum(_) | Value::Bool(_) | Value::Absent | Value::SwitchOn) => {
-                // Checked here: the call alone cost as much as a slot's release.
-                if self.storage.stack.len() > base + 1 {
+                // Checked here: the call alone cost as much as a slot's release. One
+                // plain slot above (the result of `RETURN a + b`) is simply dropped.
+                let stack = &mut self.storage.stack;
+                if stack.len() == base + 2 && matches!(stack.last(), Some(Value::Num(_) | Value::Bool(_))) {
+                    std::mem::forget(stack.pop());
+                } else if stack.len() > base + 1 {
                     self.release_slots(base + 1);
                 }
                 super::num::put_num(&mut self.storage.stack[base], n);
