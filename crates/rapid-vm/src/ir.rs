@@ -10,7 +10,10 @@ use crate::builtins::BuiltinId;
 use crate::value::Value;
 
 /// One instruction. Operands come from and results go to the frame's operand stack.
+/// `repr(u8)`: a plain tag byte, so the fast loop's dispatch reads it without
+/// decoding a niche (two instructions fewer on every instruction executed).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[repr(u8)]
 pub enum Instr {
     /// Push constant `n` of the pool.
     Const(u32),
@@ -124,6 +127,12 @@ pub enum Instr {
         kernel: u32,
         skip: u32,
     },
+    /// `RETURN` of a num: evaluate kernel `kernel` and return its result from the FUNC;
+    /// when the kernel or the plain return cannot run, the next instruction (the
+    /// statement's general code).
+    KernelReturn {
+        kernel: u32,
+    },
     /// Evaluate condition kernel `kernel`: FALSE jumps to `on_false`, TRUE continues at
     /// `skip`; when it cannot run, the next instruction (the condition's general code).
     KernelBranch {
@@ -158,6 +167,16 @@ pub enum KernelOp {
     Elem {
         global: bool,
         slot: u32,
+    },
+    /// Push element `index + offset` of the one-dimensional num array in local or
+    /// global `slot`, the index read from local slot `index`: `Local(index)`,
+    /// `AddConst(offset)` (when not 0) and `Elem` fused at compile time, the commonest
+    /// element reads (`a{j}`, `a{j + 1}`) in one dispatch instead of two or three.
+    ElemAt {
+        global: bool,
+        slot: u32,
+        index: u32,
+        offset: f32,
     },
     /// Arithmetic and comparisons on nums; AND, OR, XOR on bools (1 or 0).
     Binary(BinaryOp),

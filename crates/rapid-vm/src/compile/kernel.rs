@@ -27,7 +27,7 @@ impl RoutineCompiler<'_> {
     /// Emits a `KernelStore` for `target := value` when both qualify; returns the
     /// instruction so its `skip` can be pointed past the general code.
     pub(crate) fn kernel_store(&mut self, arena: &Arena, target: ExprId, value: ExprId) -> Option<u32> {
-        if !has_operator(arena, value) {
+        if !has_operator(arena, value) && !is_element(arena, value) && !is_element(arena, target) {
             return None;
         }
         let mut ops = Vec::new();
@@ -43,11 +43,23 @@ impl RoutineCompiler<'_> {
         self.emit_kernel(Kernel { ops, target: None }, |kernel| Instr::KernelBranch { kernel, on_false: 0, skip: 0 })
     }
 
+    /// Emits a `KernelReturn` for `RETURN value` in a FUNC returning num, when the
+    /// value qualifies (a bare leaf too: the return then skips a push and a pop).
+    pub(crate) fn kernel_return(&mut self, arena: &Arena, value: ExprId) -> Option<u32> {
+        if !self.is_num(self.ret_ty?) {
+            return None;
+        }
+        let mut ops = Vec::new();
+        self.kernel_expr(arena, value, Kind::Num, &mut ops)?;
+        self.emit_kernel(Kernel { ops, target: None }, |kernel| Instr::KernelReturn { kernel })
+    }
+
     fn emit_kernel(&mut self, mut kernel: Kernel, instr: impl FnOnce(u32) -> Instr) -> Option<u32> {
         if max_depth(&kernel.ops)? > KERNEL_DEPTH {
             return None;
         }
-        kernel.ops = fuse_operands(&kernel.ops).into_iter().map(specialize).collect();
+        let ops: Vec<KernelOp> = fuse_operands(&kernel.ops).into_iter().map(specialize).collect();
+        kernel.ops = fuse_elements(&ops);
         self.code.kernels.push(kernel);
         let idx = self.code.kernels.len() as u32 - 1;
         Some(self.code.emit(instr(idx)))
@@ -176,11 +188,22 @@ fn result_kind(op: BinaryOp) -> Kind {
     }
 }
 
-/// An assignment of a bare leaf gains nothing from a kernel.
+/// An assignment of a bare scalar leaf to a scalar gains little from a kernel.
 fn has_operator(arena: &Arena, id: ExprId) -> bool {
     match arena.expr(id).kind {
         ExprKind::Paren(inner) => has_operator(arena, inner),
         ExprKind::Binary { .. } | ExprKind::Unary { .. } => true,
+        _ => false,
+    }
+}
+
+/// An element of an array: its general code takes three or four instructions
+/// (index, value, `LoadElem`/`StoreElem`), so even a plain copy such as a swap's
+/// `a{j} := a{j + 1}` gains from a kernel (bench/interp bubble).
+fn is_element(arena: &Arena, id: ExprId) -> bool {
+    match arena.expr(id).kind {
+        ExprKind::Paren(inner) => is_element(arena, inner),
+        ExprKind::Index { .. } => true,
         _ => false,
     }
 }
@@ -214,6 +237,34 @@ fn fuse_operands(ops: &[KernelOp]) -> Vec<KernelOp> {
     out
 }
 
+/// Fuses each element read whose index is a local, or a local plus a constant, into
+/// one `ElemAt` (see `KernelOp`). Same results: a non-finite index, which `AddConst`
+/// would refuse, is no element either.
+fn fuse_elements(ops: &[KernelOp]) -> Vec<KernelOp> {
+    let mut out = Vec::with_capacity(ops.len());
+    let mut i = 0;
+    while i < ops.len() {
+        let fused = match ops[i..] {
+            [KernelOp::Local(index), KernelOp::Elem { global, slot }, ..] => Some((2, index, 0.0, global, slot)),
+            [KernelOp::Local(index), KernelOp::AddConst(offset), KernelOp::Elem { global, slot }, ..] => {
+                Some((3, index, offset, global, slot))
+            }
+            _ => None,
+        };
+        match fused {
+            Some((len, index, offset, global, slot)) => {
+                out.push(KernelOp::ElemAt { global, slot, index, offset });
+                i += len;
+            }
+            None => {
+                out.push(ops[i]);
+                i += 1;
+            }
+        }
+    }
+    out
+}
+
 /// The specialised form of a fused operation, when there is one (see `KernelOp`).
 fn specialize(op: KernelOp) -> KernelOp {
     use rapid_syntax::ast::BinaryOp as B;
@@ -233,7 +284,7 @@ fn max_depth(ops: &[KernelOp]) -> Option<usize> {
     let (mut depth, mut max) = (0usize, 0usize);
     for op in ops {
         match op {
-            KernelOp::Local(_) | KernelOp::Global(_) | KernelOp::Const(_) => depth += 1,
+            KernelOp::Local(_) | KernelOp::Global(_) | KernelOp::Const(_) | KernelOp::ElemAt { .. } => depth += 1,
             KernelOp::Elem { .. }
             | KernelOp::Neg
             | KernelOp::Not
@@ -274,6 +325,31 @@ mod tests {
         let general = KernelOp::BinaryWith(Sub, KernelOperand::Local(1));
         assert_eq!(specialize(general), general);
         assert_eq!(specialize(KernelOp::Local(0)), KernelOp::Local(0));
+    }
+
+    #[test]
+    fn element_reads_indexed_by_a_local_fuse() {
+        use rapid_syntax::ast::BinaryOp::Gt;
+        // a{j} > a{j + 1}
+        let ops = [
+            KernelOp::Local(9),
+            KernelOp::Elem { global: true, slot: 4 },
+            KernelOp::Local(9),
+            KernelOp::AddConst(1.0),
+            KernelOp::Elem { global: true, slot: 4 },
+            KernelOp::Binary(Gt),
+        ];
+        assert_eq!(
+            fuse_elements(&ops),
+            [
+                KernelOp::ElemAt { global: true, slot: 4, index: 9, offset: 0.0 },
+                KernelOp::ElemAt { global: true, slot: 4, index: 9, offset: 1.0 },
+                KernelOp::Binary(Gt),
+            ]
+        );
+        // An index computed otherwise stays as it is.
+        let ops = [KernelOp::Local(1), KernelOp::MulConst(2.0), KernelOp::Elem { global: false, slot: 0 }];
+        assert_eq!(fuse_elements(&ops), ops);
     }
 
     #[test]

@@ -156,6 +156,7 @@ impl RoutineCompiler<'_> {
             }
             StmtKind::Return(value) => match value {
                 Some(value) => {
+                    self.kernel_return(arena, *value);
                     let ret = self.ret_ty;
                     self.expr(arena, *value, ret.map(|t| (t, [0; 3])))?;
                     self.code.emit(Instr::ReturnValue);

@@ -16,17 +16,7 @@ impl Vm {
         let base = self.storage.stack.len() as u32;
         self.storage.stack.extend(args);
         self.storage.stack.extend(code.local_defaults.iter().cloned());
-        self.frames.push(Frame {
-            code,
-            pc: 0,
-            base,
-            active: None,
-            retries: 0,
-            last_retry_stmt: None,
-            undoing: false,
-            return_to: None,
-            interrupted: false,
-        });
+        self.frames.push(Frame::new(code, base));
     }
 
     /// `Call(site)`: collects the arguments the caller pushed and enters the callee.
@@ -90,11 +80,12 @@ impl Vm {
     /// The fast loop's call of a user routine when nothing about it needs the general
     /// path: every parameter pushed, IN nums already of their parameter's kind, no
     /// backward entry, depth below the limit. Enters the callee exactly as
-    /// `enter_in_place` does and answers its code and frame base; `None` (nothing changed) otherwise.
+    /// `enter_in_place` does and answers its frame base, and whether it runs `code`
+    /// again (recursion: the loop keeps its code); `None` (nothing changed) otherwise.
     /// Skips the general call's `Result` plumbing: about a sixth of a call's cost
     /// (callgrind, bench/interp fib and varcall).
     #[inline]
-    pub(super) fn enter_plain(&mut self, code: &Code, site: u32, pc: u32) -> Option<(Rc<Code>, usize)> {
+    pub(super) fn enter_plain(&mut self, code: &Code, site: u32, pc: u32) -> Option<(usize, bool)> {
         let site = code.sites.get(site as usize)?;
         let Callee::Routine(idx) = site.callee else { return None };
         if site.n_pushed as usize != site.args.len()
@@ -106,30 +97,26 @@ impl Vm {
         let Some(Some(callee)) = self.routines.get(idx as usize) else { return None };
         let at = self.storage.stack.len().checked_sub(site.n_pushed as usize)?;
         let args = self.storage.stack.get(at..)?;
-        let converted = callee.param_likes.iter().zip(args).all(|(like, arg)| {
+        let converted = |(like, arg): (&Option<Value>, &Value)| {
             like.as_ref().is_none_or(|like| std::mem::discriminant(like) == std::mem::discriminant(arg))
-        });
+        };
+        // One parameter is the common case, checked without setting up the zip.
+        let converted = match (&callee.param_likes[..], args) {
+            ([like], [arg]) => converted((like, arg)),
+            (likes, args) => likes.iter().zip(args).all(converted),
+        };
         if !converted {
             return None;
         }
-        let callee = callee.clone();
         // Checked first: even an empty `extend` costs a call's worth of setup.
         if !callee.local_defaults.is_empty() {
             self.storage.stack.extend(callee.local_defaults.iter().cloned());
         }
-        self.frame_mut().pc = pc;
-        self.frames.push(Frame {
-            code: callee.clone(),
-            pc: 0,
-            base: at as u32,
-            active: None,
-            retries: 0,
-            last_retry_stmt: None,
-            undoing: false,
-            return_to: None,
-            interrupted: false,
-        });
-        Some((callee, at))
+        if let Some(caller) = self.frames.last_mut() {
+            caller.pc = pc;
+        }
+        self.frames.enter(callee, at as u32);
+        Some((at, std::ptr::eq(&**callee, code)))
     }
 
     /// The fast loop's return from a frame with a plain caller to go back to (not
@@ -142,20 +129,65 @@ impl Vm {
         if n < 2 || self.exiting || self.frames[n - 1].return_to.is_some() {
             return Err(value);
         }
-        let Some(frame) = self.frames.pop() else { return Err(value) };
-        self.release_slots(frame.base as usize);
+        let frame = &self.frames[n - 1];
+        let base = frame.base as usize;
+        let value = value.map(|value| match &frame.code.ret_like {
+            Some(like) if std::mem::discriminant(like) != std::mem::discriminant(&value) => {
+                super::coerce_like(like, value).unwrap_or(Value::Absent)
+            }
+            _ => value,
+        });
+        self.frames.leave();
+        self.release_slots(base);
         if let Some(caller) = self.frames.last_mut() {
             caller.pc += 1;
         }
-        if let Some(mut value) = value {
-            if let Some(like) = &frame.code.ret_like {
-                if std::mem::discriminant(like) != std::mem::discriminant(&value) {
-                    value = super::coerce_like(like, value).unwrap_or(Value::Absent);
-                }
-            }
+        if let Some(value) = value {
             self.storage.stack.push(value);
         }
         Ok(())
+    }
+
+    /// `return_plain` for a FUNC whose result, a num, is on top of the stack: the num
+    /// is written as a fresh value where the frame began, never moved as a whole
+    /// `Value` (each such move stalled on store forwarding, perf on bench/interp fib).
+    /// `false` (nothing changed) when the general path must return.
+    #[inline(always)]
+    pub(super) fn return_num(&mut self, n: f32) -> bool {
+        let depth = self.frames.len();
+        if depth < 2 || self.exiting {
+            return false;
+        }
+        let frame = &self.frames[depth - 1];
+        if frame.return_to.is_some() || !matches!(frame.code.ret_like, None | Some(Value::Num(_))) {
+            return false;
+        }
+        let base = frame.base as usize;
+        self.frames.leave();
+        if let Some(caller) = self.frames.last_mut() {
+            caller.pc += 1;
+        }
+        // The result takes the frame's first slot in place when that slot holds a
+        // plain value (a num parameter, typically): one slot fewer to release, and no
+        // push (which LLVM left out of line here, about 20 instructions).
+        match self.storage.stack.get(base) {
+            Some(Value::Num(_) | Value::Dnum(_) | Value::Bool(_) | Value::Absent | Value::SwitchOn) => {
+                // Checked here: the call alone cost as much as a slot's release. One
+                // plain slot above (the result of `RETURN a + b`) is simply dropped.
+                let stack = &mut self.storage.stack;
+                if stack.len() == base + 2 && matches!(stack.last(), Some(Value::Num(_) | Value::Bool(_))) {
+                    std::mem::forget(stack.pop());
+                } else if stack.len() > base + 1 {
+                    self.release_slots(base + 1);
+                }
+                super::num::put_num(&mut self.storage.stack[base], n);
+            }
+            _ => {
+                self.release_slots(base);
+                super::num::push_num(&mut self.storage.stack, n);
+            }
+        }
+        true
     }
 
     /// Finishes a built-in call: pushes its result, moves past the call, and turns
@@ -214,17 +246,7 @@ impl Vm {
         }
         self.storage.stack.extend(callee.local_defaults.iter().cloned());
         let (pc, return_to) = self.entry_point(&callee);
-        self.frames.push(Frame {
-            code: callee,
-            pc,
-            base: at as u32,
-            active: None,
-            retries: 0,
-            last_retry_stmt: None,
-            undoing: false,
-            return_to,
-            interrupted: false,
-        });
+        self.frames.push(Frame { pc, return_to, ..Frame::new(callee, at as u32) });
         Ok(None)
     }
 

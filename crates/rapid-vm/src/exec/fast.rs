@@ -3,8 +3,11 @@
 //! argument pushed run here without leaving the loop; anything else is handed back
 //! to `Vm::step`.
 
+use super::num::{
+    drop_plain, element_1d, element_1d_mut, fast_num_op, push_bool, push_num, put_result, set_num, FastResult,
+};
 use super::{Exit, RapidError, Value, Vm};
-use crate::ir::{ArgSpec, Callee, Instr};
+use crate::ir::{ArgSpec, Callee, Instr, Operand};
 use crate::value::{Root, MAX_STRING_CHARS};
 
 /// Why the fast loop stopped.
@@ -27,26 +30,26 @@ impl Vm {
             let frame = self.frame();
             (frame.code.clone(), frame.base as usize, frame.pc)
         };
+        // The loop goes on in the frame now on top, at its pc. Its code is cloned only
+        // when it is another routine's (not in recursion).
+        macro_rules! resume_top_frame {
+            () => {{
+                let frame = self.frame();
+                if !std::rc::Rc::ptr_eq(&code, &frame.code) {
+                    code = frame.code.clone();
+                }
+                (base, pc) = (frame.base as usize, frame.pc);
+                continue;
+            }};
+        }
         // After a call or a return the loop goes on in the frame now on top.
         macro_rules! continue_in_top_frame {
             ($outcome:expr) => {
                 match $outcome {
-                    Ok(None) if !self.frames.is_empty() && !self.exiting => {
-                        let frame = self.frame();
-                        (code, base, pc) = (frame.code.clone(), frame.base as usize, frame.pc);
-                        continue;
-                    }
+                    Ok(None) if !self.frames.is_empty() && !self.exiting => resume_top_frame!(),
                     outcome => break Fast::Called(outcome),
                 }
             };
-        }
-        // After a plain return: the loop goes on in the caller, at its pc.
-        macro_rules! resume_caller {
-            () => {{
-                let frame = self.frame();
-                (code, base, pc) = (frame.code.clone(), frame.base as usize, frame.pc);
-                continue;
-            }};
         }
         let budget = *remaining;
         let mut left = budget;
@@ -59,25 +62,25 @@ impl Vm {
             let stack = &mut self.storage.stack;
             match instr {
                 Instr::Const(i) => match &code.consts[i as usize] {
-                    Value::Num(n) => stack.push(Value::Num(*n)),
-                    Value::Bool(b) => stack.push(Value::Bool(*b)),
+                    Value::Num(n) => push_num(stack, *n),
+                    Value::Bool(b) => push_bool(stack, *b),
                     Value::Str(s) => stack.push(Value::Str(s.clone())),
                     _ => break Fast::Step,
                 },
                 Instr::LoadLocal(slot) => match &stack[base + slot as usize] {
-                    Value::Num(n) => stack.push(Value::Num(*n)),
-                    Value::Bool(b) => stack.push(Value::Bool(*b)),
+                    Value::Num(n) => push_num(stack, *n),
+                    Value::Bool(b) => push_bool(stack, *b),
                     Value::Str(s) => stack.push(Value::Str(s.clone())),
                     // Records are shared until written: a load is a reference count.
                     Value::Record(r) => stack.push(Value::Record(r.clone())),
                     // A VAR parameter referring to a whole num in a caller's slot.
                     Value::Ref(place) if place.path.is_empty() => match place.root {
                         Root::Stack(at) => match stack[at as usize] {
-                            Value::Num(n) => stack.push(Value::Num(n)),
+                            Value::Num(n) => push_num(stack, n),
                             _ => break Fast::Step,
                         },
                         Root::Global(idx) => match self.storage.globals.get(idx as usize) {
-                            Some(&Value::Num(n)) => stack.push(Value::Num(n)),
+                            Some(&Value::Num(n)) => push_num(stack, n),
                             _ => break Fast::Step,
                         },
                     },
@@ -130,11 +133,38 @@ impl Vm {
                     }
                 }
                 Instr::LoadGlobal(idx) => match self.storage.globals.get(idx as usize) {
-                    Some(Value::Num(n)) => stack.push(Value::Num(*n)),
+                    Some(Value::Num(n)) => push_num(stack, *n),
                     Some(Value::Str(s)) => stack.push(Value::Str(s.clone())),
                     Some(Value::Record(r)) => stack.push(Value::Record(r.clone())),
                     _ => break Fast::Step,
                 },
+                // The commonest num forms (`n - 1`, `a + b` of two results) first, with
+                // no dispatch on the operand kinds; anything else takes the arms below.
+                Instr::BinOp { op, lhs: Operand::Local(slot), rhs: Operand::Const(k) }
+                    if is_num(stack.get(base + slot as usize)) && is_num(code.consts.get(k as usize)) =>
+                {
+                    let (Some(&Value::Num(a)), Some(&Value::Num(b))) =
+                        (stack.get(base + slot as usize), code.consts.get(k as usize))
+                    else {
+                        break Fast::Step;
+                    };
+                    let Some(res) = fast_num_op(op, a, b) else { break Fast::Step };
+                    match res {
+                        FastResult::Num(n) => push_num(stack, n),
+                        FastResult::Bool(b) => push_bool(stack, b),
+                    }
+                }
+                Instr::BinOp { op, lhs: Operand::Stack, rhs: Operand::Stack }
+                    if matches!(&stack[stack.len().saturating_sub(2)..], [Value::Num(_), Value::Num(_)]) =>
+                {
+                    let len = stack.len();
+                    let (Value::Num(a), Value::Num(b)) = (&stack[len - 2], &stack[len - 1]) else {
+                        break Fast::Step;
+                    };
+                    let Some(res) = fast_num_op(op, *a, *b) else { break Fast::Step };
+                    drop_plain(stack.pop());
+                    put_result(stack.last_mut(), res);
+                }
                 Instr::Binary(rapid_syntax::ast::BinaryOp::Add)
                     if matches!(&stack[stack.len() - 2..], [Value::Str(_), Value::Str(_)]) =>
                 {
@@ -248,7 +278,10 @@ impl Vm {
                             put_result(stack.last_mut(), res);
                         }
                         (true, false) | (false, true) => put_result(stack.last_mut(), res),
-                        (false, false) => stack.push(res.into_value()),
+                        (false, false) => match res {
+                            FastResult::Num(n) => push_num(stack, n),
+                            FastResult::Bool(b) => push_bool(stack, b),
+                        },
                     }
                 }
                 Instr::LoadElem { global: false, slot, n: 1 } => {
@@ -299,22 +332,28 @@ impl Vm {
                     self.frame_mut().pc = pc;
                     // A PROC's end outside an ERROR handler is a plain return.
                     if !code.is_func && self.frame().active.is_none() && self.return_plain(None).is_ok() {
-                        resume_caller!();
+                        resume_top_frame!();
                     }
                     continue_in_top_frame!(self.fell_off_end());
                 }
                 Instr::Return => {
                     self.frame_mut().pc = pc;
                     if self.return_plain(None).is_ok() {
-                        resume_caller!();
+                        resume_top_frame!();
                     }
                     continue_in_top_frame!(Ok(self.return_from(None)));
                 }
                 Instr::ReturnValue => {
+                    if let Some(&Value::Num(n)) = stack.last() {
+                        if self.return_num(n) {
+                            resume_top_frame!();
+                        }
+                    }
+                    let stack = &mut self.storage.stack;
                     let value = stack.pop().unwrap_or(Value::Absent);
                     self.frame_mut().pc = pc;
                     match self.return_plain(Some(value)) {
-                        Ok(()) => resume_caller!(),
+                        Ok(()) => resume_top_frame!(),
                         Err(value) => continue_in_top_frame!(Ok(self.return_from(value))),
                     }
                 }
@@ -358,11 +397,17 @@ impl Vm {
                     }
                     // Otherwise the general code that follows does the statement.
                 }
+                Instr::KernelReturn { kernel } => {
+                    let kernel = &code.kernels[kernel as usize];
+                    if let Some(value) = super::kernel::value(kernel, stack, base, &self.storage.globals) {
+                        if self.return_num(value) {
+                            resume_top_frame!();
+                        }
+                    }
+                }
                 Instr::KernelBranch { kernel, on_false, skip } => {
                     let kernel = &code.kernels[kernel as usize];
-                    let truth = super::kernel::eval(kernel, stack, base, &self.storage.globals)
-                        .and_then(|results| super::kernel::truth(&results));
-                    if let Some(truth) = truth {
+                    if let Some(truth) = super::kernel::condition(kernel, stack, base, &self.storage.globals) {
                         pc = if truth { skip } else { on_false };
                         continue;
                     }
@@ -371,9 +416,13 @@ impl Vm {
                     let site = &code.sites[site_index as usize];
                     let Callee::Builtin(id) = site.callee else {
                         // A routine: entered here, and the loop starts again in its frame.
-                        if let Some((callee, callee_base)) = self.enter_plain(&code, site_index, pc) {
-                            (code, base, pc) = (callee, callee_base, 0);
-                            continue;
+                        match self.enter_plain(&code, site_index, pc) {
+                            Some((callee_base, true)) => {
+                                (base, pc) = (callee_base, 0);
+                                continue;
+                            }
+                            Some((_, false)) => resume_top_frame!(),
+                            None => {}
                         }
                         self.frame_mut().pc = pc;
                         continue_in_top_frame!(self.call(&code, site_index, host));
@@ -594,6 +643,11 @@ fn str_at<'a>(
 }
 
 #[inline(always)]
+fn is_num(value: Option<&Value>) -> bool {
+    matches!(value, Some(Value::Num(_)))
+}
+
+#[inline(always)]
 fn is_str(operand: crate::ir::Operand, stack: &[Value], base: usize, consts: &[Value], depth: usize) -> bool {
     str_at(operand, stack, base, consts, depth).is_some()
 }
@@ -657,104 +711,4 @@ fn concat(a: &str, b: &str) -> Option<Value> {
     buf[a.len()..a.len() + b.len()].copy_from_slice(b.as_bytes());
     let joined = std::str::from_utf8(&buf[..a.len() + b.len()]).ok()?;
     Some(Value::Str(joined.into()))
-}
-
-/// The result of a fast num operation. Kept apart from `Value` so that a result can be
-/// written into an existing num slot as a bare f32: building a whole `Value` in a
-/// temporary and copying it costs a store-forwarding stall on every operation
-/// (measured with perf on bench/interp/arith).
-#[derive(Clone, Copy)]
-pub(super) enum FastResult {
-    Num(f32),
-    Bool(bool),
-}
-
-impl FastResult {
-    #[inline(always)]
-    fn into_value(self) -> Value {
-        match self {
-            FastResult::Num(n) => Value::Num(n),
-            FastResult::Bool(b) => Value::Bool(b),
-        }
-    }
-}
-
-/// Overwrites a stack slot that holds a num or bool operand with a result.
-#[inline(always)]
-fn put_result(slot: Option<&mut Value>, res: FastResult) {
-    let Some(slot) = slot else { return };
-    match (res, &mut *slot) {
-        (FastResult::Num(n), Value::Num(x)) => *x = n,
-        (FastResult::Bool(b), Value::Bool(x)) => *x = b,
-        (res, slot) => {
-            // The old value is a num or bool: nothing to free.
-            std::mem::forget(std::mem::replace(slot, res.into_value()));
-        }
-    }
-}
-
-/// Writes a num into a slot that already holds a num.
-#[inline(always)]
-fn set_num(slot: &mut Value, n: f32) {
-    if let Value::Num(x) = slot {
-        *x = n;
-    }
-}
-
-/// num arithmetic and comparisons the fast loop does itself; `None` sends the
-/// instruction to the general path (errors, non-integer DIV/MOD, AND/OR).
-#[inline(always)]
-pub(super) fn fast_num_op(op: rapid_syntax::ast::BinaryOp, a: f32, b: f32) -> Option<FastResult> {
-    use rapid_syntax::ast::BinaryOp as B;
-    let finite = |x: f32| x.is_finite().then_some(FastResult::Num(x));
-    Some(match op {
-        B::Add => finite(a + b)?,
-        B::Sub => finite(a - b)?,
-        B::Mul => finite(a * b)?,
-        B::Div if b != 0.0 => finite(a / b)?,
-        B::Mod | B::IntDiv => {
-            // Integer operands (exactly representable as i64) take integer arithmetic:
-            // MOD keeps the dividend's sign and DIV truncates, as RAPID's do.
-            // num holds integers exactly only up to 2^24, so i32 covers every case where
-            // the operands are integers at all; larger magnitudes take the general path.
-            let (x, y) = (a as i32, b as i32);
-            if y == 0 || x as f32 != a || y as f32 != b || x == i32::MIN {
-                return None;
-            }
-            FastResult::Num(if op == B::Mod { (x % y) as f32 } else { (x / y) as f32 })
-        }
-        B::Lt => FastResult::Bool(a < b),
-        B::Le => FastResult::Bool(a <= b),
-        B::Gt => FastResult::Bool(a > b),
-        B::Ge => FastResult::Bool(a >= b),
-        B::Eq => FastResult::Bool(a == b),
-        B::Ne => FastResult::Bool(a != b),
-        _ => return None,
-    })
-}
-
-/// Discards a value the fast loop knows to be a num or bool (nothing to free), without
-/// running the general drop code.
-#[inline(always)]
-fn drop_plain(value: Option<Value>) {
-    std::mem::forget(value);
-}
-
-/// Element `index` (1-based) of a one-dimensional array, when in bounds.
-#[inline(always)]
-pub(super) fn element_1d(array: &crate::value::Array, index: f32) -> Option<&Value> {
-    let i = index as usize;
-    if array.dims[1] != 0 || i as f32 != index || i == 0 || i > array.dims[0] as usize {
-        return None;
-    }
-    array.elems.get(i - 1)
-}
-
-#[inline(always)]
-pub(super) fn element_1d_mut(array: &mut crate::value::Array, index: f32) -> Option<&mut Value> {
-    let i = index as usize;
-    if array.dims[1] != 0 || i as f32 != index || i == 0 || i > array.dims[0] as usize {
-        return None;
-    }
-    array.elems.get_mut(i - 1)
 }

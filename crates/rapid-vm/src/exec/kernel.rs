@@ -8,7 +8,7 @@
 //! and the copies cost a store-forwarding stall apiece (perf on bench/interp/arith);
 //! a kernel moves bare f32s.
 
-use super::fast::{element_1d, element_1d_mut, fast_num_op, FastResult};
+use super::num::{element_1d, element_1d_mut, fast_num_op, FastResult};
 use crate::ir::{Kernel, KernelOp, KernelOperand, KernelTarget, KERNEL_DEPTH};
 use crate::value::{Root, Value};
 
@@ -57,6 +57,13 @@ pub(super) fn eval(kernel: &Kernel, stack: &[Value], base: usize, globals: &[Val
                 let Some(Value::Array(array)) = array else { return None };
                 let Some(&Value::Num(elem)) = element_1d(array, top) else { return None };
                 top = elem;
+            }
+            KernelOp::ElemAt { global, slot, index, offset } => {
+                let at = local_num(stack, globals, base + index as usize)? + offset;
+                let array = if global { globals.get(slot as usize) } else { stack.get(base + slot as usize) };
+                let Some(Value::Array(array)) = array else { return None };
+                let Some(&Value::Num(elem)) = element_1d(array, at) else { return None };
+                push!(elem);
             }
             KernelOp::Neg => {
                 if depth == 0 {
@@ -145,9 +152,37 @@ pub(super) fn store(
     Some(())
 }
 
+/// The truth of a condition kernel, `None` when it cannot run. The commonest
+/// condition, a local compared with a constant (`n < 2`), is answered without the
+/// loop over the ops, whose dispatch cost about as much as the rest of the
+/// comparison (perf on bench/interp fib).
+#[inline(always)]
+pub(super) fn condition(kernel: &Kernel, stack: &[Value], base: usize, globals: &[Value]) -> Option<bool> {
+    use rapid_syntax::ast::BinaryOp as B;
+    match kernel.ops[..] {
+        [KernelOp::Local(slot), KernelOp::LtConst(c)] => {
+            Some(binary(B::Lt, local_num(stack, globals, base + slot as usize)?, c)? != 0.0)
+        }
+        [KernelOp::Local(slot), KernelOp::GtConst(c)] => {
+            Some(binary(B::Gt, local_num(stack, globals, base + slot as usize)?, c)? != 0.0)
+        }
+        _ => truth(&eval(kernel, stack, base, globals)?),
+    }
+}
+
+/// The value of a kernel, `None` when it cannot run. A bare local (`RETURN n`) is
+/// read without setting up the registers, which cost more than the read itself.
+#[inline(always)]
+pub(super) fn value(kernel: &Kernel, stack: &[Value], base: usize, globals: &[Value]) -> Option<f32> {
+    match kernel.ops[..] {
+        [KernelOp::Local(slot)] => local_num(stack, globals, base + slot as usize),
+        _ => Some(eval(kernel, stack, base, globals)?.top),
+    }
+}
+
 /// The condition a branch kernel computed.
 #[inline]
-pub(super) fn truth(results: &Results) -> Option<bool> {
+fn truth(results: &Results) -> Option<bool> {
     Some(results.top != 0.0)
 }
 

@@ -11,11 +11,13 @@
 pub mod backward;
 mod call;
 mod fast;
+mod frames;
 mod interrupts;
 mod io;
 mod kernel;
 mod log;
 pub mod modules;
+mod num;
 mod shared;
 mod spy;
 mod stop;
@@ -31,6 +33,8 @@ use crate::error::RapidError;
 use crate::ir::{Code, Instr, StmtRange};
 use crate::ops::{self, OpTypes};
 use crate::value::{Array, PathStep, Place, Record, Root, Value};
+pub(crate) use frames::Frame;
+use frames::Frames;
 use storage::{coerce_like, index_place, Storage};
 
 /// RETRY may restart a failing instruction this many times (§1.12: "up to four").
@@ -81,58 +85,12 @@ struct ActiveError {
     warning: Option<u64>,
 }
 
-#[derive(Debug)]
-pub(crate) struct Frame {
-    code: Rc<Code>,
-    pc: u32,
-    base: u32,
-    /// The error this frame's handler is taking (boxed: frames stay small, so a call
-    /// pushes a few words, not a block copy).
-    active: Option<Box<ActiveError>>,
-    retries: u32,
-    last_retry_stmt: Option<u32>,
-    /// Running this frame's UNDO handler while the program exits.
-    undoing: bool,
-    /// Running this frame's BACKWARD handler, or a TRAP: where the caller's PP goes
-    /// afterwards.
-    return_to: Option<u32>,
-    /// A TRAP routine an interrupt started: it returns to the interrupted instruction,
-    /// and an error it does not handle goes to the system error handler.
-    interrupted: bool,
-}
-
-impl Frame {
-    /// The routine this frame runs and the instruction it is at: for a caller, its
-    /// call (ArgName follows arguments out through the chain).
-    pub(crate) fn position(&self) -> (&Code, u32) {
-        (&self.code, self.pc)
-    }
-
-    /// Which handler of its routine this frame runs (ExecHandler): the handler_type
-    /// values HANDLER_NONE 0, HANDLER_BWD 1, HANDLER_ERR 2, HANDLER_UNDO 3.
-    pub(crate) fn handler_type(&self) -> u8 {
-        if self.undoing {
-            3
-        } else if self.active.is_some() {
-            2
-        } else if self.return_to.is_some() && !self.interrupted {
-            1
-        } else {
-            0
-        }
-    }
-
-    pub(crate) fn is_trap(&self) -> bool {
-        self.code.is_trap
-    }
-}
-
 /// One program task's interpreter.
 pub struct Vm {
     routines: Vec<Option<Rc<Code>>>,
     procs_by_name: FxHashMap<String, u32>,
     storage: Storage,
-    frames: Vec<Frame>,
+    frames: Frames,
     types: OpTypes,
     errnos: FxHashMap<&'static str, i32>,
     errno_global: Option<u32>,
@@ -192,7 +150,7 @@ impl Vm {
             routines: routines.into_iter().map(|c| c.map(Rc::new)).collect(),
             procs_by_name,
             storage: Storage { globals, stack: Vec::new() },
-            frames: Vec::new(),
+            frames: Frames::default(),
             types,
             errnos,
             errno_global,
@@ -411,7 +369,7 @@ impl Vm {
             Instr::Const(i) => self.push(code.consts[i as usize].clone()),
             // The fast loop runs kernels; here the statement's general code, which
             // follows, does the work.
-            Instr::KernelStore { .. } | Instr::KernelBranch { .. } => {}
+            Instr::KernelStore { .. } | Instr::KernelBranch { .. } | Instr::KernelReturn { .. } => {}
             Instr::LoadLocal(slot) => {
                 let value = self.load_local(base + slot)?;
                 self.push(value);
