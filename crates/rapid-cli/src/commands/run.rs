@@ -45,6 +45,9 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         Ok(loaded) => loaded,
         Err(err) => return report_load_error(err, &inputs.modules),
     };
+    // The checked program is not needed to run, and the process ends with the run: its
+    // memory goes back to the system then, without the time freeing it would take.
+    std::mem::forget(loaded.analysis.take());
     // A backup's (or a manifest's) own HOME folder is the controller's HOME: device.
     configure_files(&mut loaded, args, &inputs.modules, inputs.root.clone());
     loaded.vm.resources_mut().cfgdata.set_config(inputs.syspar.clone());

@@ -69,6 +69,8 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
                 return single::report_load_error(err, &task.inputs.modules);
             }
         };
+        // Not needed to run; freed with the process (see `run`).
+        std::mem::forget(program.analysis.take());
         single::configure_files(&mut program, args, &task.inputs.modules, task.inputs.root.clone());
         program.vm.resources_mut().cfgdata.set_config(task.inputs.syspar.clone());
         program.vm.resources_mut().controller = args.controller_state();
