@@ -133,6 +133,15 @@ pub(crate) fn configure_conveyors(
         };
         let initial = io.and_then(|io| io.value(speed)).unwrap_or(0.0);
         robot.following.conveyors.push(Conveyor::new(config, initial));
+        // The conveyor is a mechanical unit too (ActUnit, DeactUnit, GetNextMechUnit).
+        robot.external.add_unit(rapid_motion::external::ExternalUnit {
+            name: c.name.clone(),
+            axes: Vec::new(),
+            active_at_start: c.active,
+            deactivation_forbidden: false,
+            frame: None,
+            carries_robot: false,
+        });
     }
     Ok(())
 }

@@ -264,3 +264,28 @@ fn conveyor_configuration_is_checked() {
     assert_eq!(out.status.code(), Some(1));
     assert!(stderr(&out).contains("conveyor CNV1: `c1Sync` is no AI signal"), "{}", stderr(&out));
 }
+
+#[test]
+fn the_conveyor_is_a_mechanical_unit_that_must_be_active() {
+    // CNV1 is listed after the robot, active; deactivated, WaitWObj cannot track it
+    // (ERR_CNV_NOT_ACT, taken by the handler, which activates it and retries).
+    let body = "    VAR num n := 0;\n    VAR string name;\n    VAR bool tcp;\n    VAR num axes;\n";
+    let body = format!(
+        "{body}    WHILE GetNextMechUnit(n, name \\TCPRob:=tcp \\NoOfAxes:=axes) DO\n      \
+         TPWrite name + \" \" + ValToStr(tcp) + \" \" + ValToStr(axes);\n    ENDWHILE\n    \
+         DeactUnit CNV1;\n    TPWrite \"active \" \\Bool:=IsMechUnitActive(CNV1);\n    WaitWObj wobj_cnv1;\n    \
+         TPWrite \"connected \" \\Num:=ClkRead(c);\n  ERROR\n    TPWrite \"error \" \\Num:=ERRNO;\n    \
+         ActUnit CNV1;\n    RETRY;\n"
+    );
+    // Declarations cannot follow statements: move them into the module.
+    let dir = project("unit", "", ONE_OBJECT);
+    let module = fs::read_to_string(dir.join("main.mod")).expect("module");
+    let (decls, statements) = body.split_at(body.find("    WHILE").expect("statements"));
+    let module = module
+        .replace("  VAR clock c;\n", &format!("  VAR clock c;\n{}", decls.replace("    VAR", "  VAR")))
+        .replace("  ENDPROC\n", &format!("{statements}  ENDPROC\n"));
+    fs::write(dir.join("main.mod"), module).expect("module");
+    let out = run(&dir, &[]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(stdout(&out), "ROB_1 TRUE 6\nCNV1 FALSE 1\nactive FALSE\nerror 1152\nconnected 0.5\n");
+}

@@ -160,6 +160,7 @@ pub(super) struct RawConveyor {
     orientation: Option<Spanned<Vec<f64>>>,
     start_window: Spanned<f64>,
     max_dist: Spanned<f64>,
+    active: Option<bool>,
 }
 
 /// A conveyor read from the manifest: its signals by name (checked against the I/O
@@ -174,6 +175,8 @@ pub(crate) struct TaskConveyor {
     pub(crate) orientation: [f64; 4],
     pub(crate) start_window: f64,
     pub(crate) max_dist: f64,
+    /// The conveyor's mechanical unit is active when the system starts.
+    pub(crate) active: bool,
 }
 
 /// Reads the conveyors; `taken` are the unit names already used.
@@ -208,6 +211,7 @@ pub(super) fn read_conveyors(
             orientation,
             start_window: *raw.start_window.get_ref(),
             max_dist: *raw.max_dist.get_ref(),
+            active: raw.active.unwrap_or(true),
         });
     }
     conveyors

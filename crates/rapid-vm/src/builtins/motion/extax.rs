@@ -38,6 +38,16 @@ impl ExternalUnits {
         ExternalUnits { units }
     }
 
+    /// Adds a unit (a conveyor's, which has no axes the moves drive).
+    pub fn add_unit(&mut self, unit: ExternalUnit) {
+        self.units.push(UnitState { active: unit.active_at_start, unit, loads: Default::default() });
+    }
+
+    /// Whether the unit of this name is active; `None` when the task has no such unit.
+    pub fn is_active(&self, name: &str) -> Option<bool> {
+        self.find(name).map(|i| self.units[i].active)
+    }
+
     /// Whether the task has any external axis.
     pub fn any(&self) -> bool {
         self.units.iter().any(|u| !u.unit.axes.is_empty())

@@ -98,6 +98,7 @@ pub(super) fn unit_mover(robot: &super::robot::RobotState, u: usize) -> Result<M
 pub(crate) fn wait_wobj(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     refresh(ctx);
     let c = conveyor_arg(ctx, &args[0])?;
+    check_active(ctx, c)?;
     let rel_dist = ctx.opt_num(args.get(1))?;
     let now = ctx.time;
     let conveyor = &mut ctx.resources.robot.following.conveyors[c];
@@ -211,8 +212,19 @@ pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Opti
     Ok(Some(carrier))
 }
 
-/// A move on conveyor `c`'s object: it must be connected and within the maximum distance.
+/// Conveyor `c`'s mechanical unit must be active (ActUnit) to track.
+fn check_active(ctx: &Ctx<'_>, c: usize) -> Result<(), RapidError> {
+    let name = &ctx.resources.robot.following.conveyors[c].config.name;
+    match ctx.resources.robot.external.is_active(name) {
+        Some(false) => Err(ctx.error(Err::CnvNotActive, format!("the conveyor {name} is not active (ActUnit)"))),
+        _ => Ok(()),
+    }
+}
+
+/// A move on conveyor `c`'s object: its unit must be active, the object connected and
+/// within the maximum distance.
 fn check_object(ctx: &Ctx<'_>, c: usize) -> Result<(), RapidError> {
+    check_active(ctx, c)?;
     let conveyor = &ctx.resources.robot.following.conveyors[c];
     let Some(distance) = conveyor.distance(ctx.time) else {
         return Err(ctx.error(Err::CnvNotActive, "the conveyor's work object is connected to no object (WaitWObj)"));

@@ -191,7 +191,8 @@ fn external_facts(ctx: &Ctx<'_>, i: usize) -> [Value; 7] {
     let planner = own_unit(ctx).unwrap_or(1);
     [
         Value::Bool(false),
-        Value::Num(state.unit.axes.len() as f32),
+        // A conveyor's unit has no axis the moves drive; its one axis is the conveyor's.
+        Value::Num(state.unit.axes.len().max(1) as f32),
         Value::Num(task_no as f32),
         Value::Num(planner as f32),
         Value::Bool(state.active),
