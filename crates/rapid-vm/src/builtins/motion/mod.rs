@@ -31,6 +31,7 @@ mod stepbwd;
 pub mod store;
 pub mod testsign;
 mod torque;
+mod track;
 mod tracking;
 mod trigg;
 mod units;

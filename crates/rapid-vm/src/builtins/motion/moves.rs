@@ -238,7 +238,7 @@ pub(super) fn go_with(
     let mut request = MoveRequest { target, speed, zone, tool, held_object };
     let external = external_target(ctx, args, layout.to, layout.eoffs)?;
     if let Some(ext) = &external {
-        request.speed.v_tcp *= super::extax::track_speed_scale(&ctx.resources.robot, &target, &chain, ext)?;
+        request.speed.v_tcp *= super::track::track_speed_scale(&ctx.resources.robot, &target, &chain, ext)?;
     }
     // Synchronized movement: the moves of one `\ID` in all tasks take the same time.
     match crate::builtins::syncmove::coordinate(ctx, args.get(layout.id), &request, &settings)? {
