@@ -408,3 +408,66 @@ fn another_task_reads_the_robots_external_axes() {
     assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
     assert_eq!(String::from_utf8_lossy(&out.stdout), "track 1000\ntable 0\nnone 9E+09\n");
 }
+
+/// A project with the track and turntable, a DO doStart and a DI diStop that rises
+/// 0.5 s after doStart, and `module` as its program; stdout, stderr and the exit code.
+fn run_stopped(name: &str, module: &str) -> (String, String, Option<i32>) {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external_axes").join(name);
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    let manifest =
+        format!("[system]\nio = \"eio.cfg\"\n\n[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n{UNITS}");
+    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    let eio = "EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n\n      -Name \"doStart\" -SignalType \"DO\"\n\n      \
+               -Name \"diStop\" -SignalType \"DI\"\n";
+    fs::write(dir.join("eio.cfg"), eio).expect("EIO");
+    fs::write(dir.join("stop.stim"), "when doStart = 1 after 0.5 s set diStop 1\n").expect("stimulus");
+    fs::write(dir.join("main.mod"), module).expect("module");
+    let stim = dir.join("stop.stim");
+    let out = rapid(&["run", "--quiet", "--stimulus", stim.to_str().unwrap(), dir.to_str().unwrap()]);
+    let text = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
+    (text(&out.stdout), text(&out.stderr), out.status.code())
+}
+
+/// The track's 1000 mm MoveExtJ, stopped 0.5 s in by a trap running `trap`.
+fn stopped_track(trap: &str) -> String {
+    format!(
+        "MODULE main\n  VAR intnum stopint;\n  VAR clock c;\n  VAR jointtarget jt;\n  VAR jointtarget aside;\n  \
+         PROC main()\n    CONNECT stopint WITH on_stop;\n    ISignalDI diStop, 1, stopint;\n    ClkStart c;\n    \
+         SetDO doStart, 1;\n    MoveExtJ [[0,0,0,0,0,0],[1000,9E9,9E9,9E9,9E9,9E9]], v1000, fine;\n    \
+         jt := CJointT();\n    TPWrite \"end \" \\Num:=jt.extax.eax_a;\n  ENDPROC\n  TRAP on_stop\n{trap}  ENDTRAP\nENDMODULE\n"
+    )
+}
+
+#[test]
+fn level_2_moves_start_where_the_external_axes_stopped() {
+    // Stopped 0.5 s in, the track is at 75 + 0.35 · 1000 = 425 mm. On path level 2 it
+    // goes 100 mm on and back (each a triangle of 2·√(100/6666.7) = 0.245 s + 0.05 s
+    // settle): 100 mm from where it stopped, not from the base path's end at 1000 mm.
+    // Back where it stopped, RestoPath and StartMove let the base path finish.
+    let trap = "    StopMove;\n    StorePath;\n    jt := CJointT();\n    TPWrite \"stopped at \" \\Num:=jt.extax.eax_a;\n    \
+                aside := jt;\n    aside.extax.eax_a := jt.extax.eax_a + 100;\n    MoveExtJ aside, v1000, fine;\n    \
+                TPWrite \"aside after \" + NumToStr(ClkRead(c), 2);\n    MoveExtJ jt, v1000, fine;\n    RestoPath;\n    \
+                StartMove;\n";
+    let (stdout, stderr, code) = run_stopped("level_2", &stopped_track(trap));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(stdout, "stopped at 425\naside after 0.79\nend 1000\n");
+}
+
+#[test]
+fn resto_path_refuses_external_axes_left_elsewhere_on_level_2() {
+    let trap = "    StopMove;\n    StorePath;\n    jt := CJointT();\n    aside := jt;\n    \
+                aside.extax.eax_a := jt.extax.eax_a + 100;\n    MoveExtJ aside, v1000, fine;\n    RestoPath;\n    StartMove;\n";
+    let (_, stderr, code) = run_stopped("level_2_left", &stopped_track(trap));
+    assert_eq!(code, Some(1));
+    assert!(stderr.contains("RestoPath: the external axes moved on path level 2"), "{stderr}");
+}
+
+#[test]
+fn the_path_recorder_refuses_a_path_that_moved_external_axes() {
+    let body = "    PathRecStart start_id;\n    MoveExtJ [[0,0,0,0,0,0],[500,9E9,9E9,9E9,9E9,9E9]], v1000, fine;\n    \
+                StorePath;\n    PathRecMoveBwd;\n";
+    let (_, stderr, code) = run(&project("recorder", "  VAR pathrecid start_id;\n", body, ""));
+    assert_eq!(code, Some(1));
+    assert!(stderr.contains("PathRecMoveBwd: the recorded path moves external axes"), "{stderr}");
+}

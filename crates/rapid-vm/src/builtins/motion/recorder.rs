@@ -32,6 +32,8 @@ type Res = Result<Option<Value>, RapidError>;
 struct Step {
     from: Joints,
     request: MoveRequest,
+    /// The move moved external axes.
+    moves_eax: bool,
 }
 
 /// Where PathRecMoveBwd took the robot: back over moves `to..from`, from `at`.
@@ -55,9 +57,9 @@ pub struct Recorder {
 
 impl Recorder {
     /// Records a move given to the robot, while recording.
-    pub(super) fn note(&mut self, from: Joints, request: &MoveRequest) {
+    pub(super) fn note(&mut self, from: Joints, request: &MoveRequest, moves_eax: bool) {
         if self.on {
-            self.steps.push(Step { from, request: *request });
+            self.steps.push(Step { from, request: *request, moves_eax });
         }
     }
 
@@ -194,6 +196,17 @@ fn target(robot: &RobotState, step: &Step, to: Joints, whole: bool, offs: Option
     })
 }
 
+/// The recorder takes the arm back and forth only: a recorded move that moved external
+/// axes stops execution rather than leave them behind.
+fn no_external_axes(steps: &[Step], what: &str) -> Result<(), RapidError> {
+    if steps.iter().any(|s| s.moves_eax) {
+        return Err(RapidError::fatal(format!(
+            "{what}: the recorded path moves external axes; moving them along it is not supported yet"
+        )));
+    }
+    Ok(())
+}
+
 /// Whether the robot at `at` stands at the end of `step` (it finished the move).
 fn at_end(robot: &RobotState, step: &Step, at: &Joints) -> bool {
     let mount = step.request.mount();
@@ -251,6 +264,7 @@ pub(crate) fn path_rec_move_bwd(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if !robot.path_rec.on || done <= to {
         return Err(RapidError::fatal("PathRecMoveBwd: no recorded path behind the robot (PathRecValidBwd is FALSE)"));
     }
+    no_external_axes(&robot.path_rec.steps[to..done], "PathRecMoveBwd")?;
     let at = robot.end_joints();
     // Back again from a place PathRecMoveBwd took it to: whole moves only, and
     // forward still returns to where the first one started.
@@ -297,6 +311,7 @@ pub(crate) fn path_rec_move_fwd(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         }
         None => back.from,
     };
+    no_external_axes(&robot.path_rec.steps[back.to..end], "PathRecMoveFwd")?;
     let steps = &robot.path_rec.steps;
     let mut requests = Vec::new();
     for i in back.to..end {

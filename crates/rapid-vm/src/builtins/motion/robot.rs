@@ -262,12 +262,12 @@ impl RobotState {
         if !self.planner.has_pending() {
             self.corr.pending = false;
         }
-        let from = self.planner.end_joints();
+        let (from, eax_from) = (self.planner.end_joints(), self.planner.end_eax());
         let external = self.next_external.take();
         let done = self.planner.push_with(&self.kin, request, external.as_ref())?;
         if self.stored.is_none() {
             // Only the base path is recorded; level 2's moves (and the recorder's own) are not.
-            self.path_rec.note(from, request);
+            self.path_rec.note(from, request, eax_from != self.planner.end_eax());
         }
         self.events.push_back(events);
         if self.recorded.is_some() {

@@ -75,6 +75,12 @@ pub(crate) fn step_bwd_path(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let Some(segment) = robot.ahead.iter().rev().find(|m| m.start < since).cloned() else {
         return Err(ctx.error(Err::BwdLimit, "the robot has no stopped path to step back on"));
     };
+    let moves_eax = segment.eax_at(segment.start).zip(segment.eax_end()).is_some_and(|(a, b)| a != b);
+    if moves_eax {
+        return Err(RapidError::fatal(
+            "StepBwdPath on a segment that moves external axes is not supported by `rapid run` yet",
+        ));
+    }
     let tool = match segment.tool() {
         Mount::Held(tool) => tool,
         Mount::Stationary { .. } => {

@@ -39,6 +39,8 @@ pub struct Stored {
     due: Vec<(f64, Action)>,
     motion_end: f64,
     hold_until: Option<f64>,
+    /// Where the external axes stopped with the base path.
+    eax: Option<rapid_motion::external::Eax>,
 }
 
 /// `StorePath [\KeepSync]`: the base path is set aside; path level 2 begins.
@@ -59,6 +61,7 @@ pub(crate) fn store_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     let Some(pause) = robot.pause.take() else { return Ok(None) };
     let since = pause.since;
     let here = robot.joints_at(since);
+    let eax_here = robot.eax_at(since);
     // Stored again after a RestoPath, the path still goes on where it first stopped.
     let stop_joints = pause.regain.unwrap_or(here);
     let ahead = robot.ahead.drain(..).collect();
@@ -76,6 +79,8 @@ pub(crate) fn store_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     robot.due = due;
     let mut planner = robot.planner.clone();
     planner.restart_from(here, since.max(now));
+    // Level 2 starts where the external axes stopped, not where the base path ends.
+    planner.set_eax(eax_here);
     let stored = Stored {
         since,
         stop_joints,
@@ -87,6 +92,7 @@ pub(crate) fn store_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
         due: later,
         motion_end: std::mem::replace(&mut robot.motion_end, since),
         hold_until: robot.hold_until.take(),
+        eax: eax_here,
     };
     robot.stored = Some(Box::new(stored));
     if since > now {
@@ -128,6 +134,19 @@ fn split_at(robot: &RobotState, moves: Vec<PlannedMove>, since: f64) -> (Vec<Pla
     (keep, rest)
 }
 
+/// The base path goes on with the external axes where it stopped them: if level 2
+/// left them elsewhere, bringing them back is not modelled (StartMove's regain moves
+/// the arm only), and RestoPath stops execution instead of letting them jump.
+fn same_external_axes(robot: &super::robot::RobotState, stored: &Stored, level2_end: f64) -> Result<(), RapidError> {
+    let (Some(now), Some(then)) = (robot.eax_at(level2_end), stored.eax) else { return Ok(()) };
+    if now.iter().zip(then).all(|(a, b)| (a - b).abs() < 1e-6) {
+        return Ok(());
+    }
+    Err(RapidError::fatal(
+        "RestoPath: the external axes moved on path level 2; taking them back to the stored path is not supported yet",
+    ))
+}
+
 /// `RestoPath`: the base path comes back, stopped where it was, after the moves of
 /// level 2 are done (the instruction waits for them). StartMove lets it go on.
 // uncertain: RestoPath without StorePath stops the program (the manual names no
@@ -139,10 +158,25 @@ pub(crate) fn resto_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     let now = ctx.time;
     let robot = &mut ctx.resources.robot;
     let level2_end = robot.flush().max(now);
+    if let Err(err) = same_external_axes(robot, &stored, level2_end) {
+        robot.stored = Some(stored);
+        return Err(err);
+    }
     super::moves::apply_due_events(ctx)?;
     let robot = &mut ctx.resources.robot;
-    let Stored { since, stop_joints, mut pause, mut planner, events, rest, recorded_rest, due, motion_end, hold_until } =
-        *stored;
+    let Stored {
+        since,
+        stop_joints,
+        mut pause,
+        mut planner,
+        events,
+        rest,
+        recorded_rest,
+        due,
+        motion_end,
+        hold_until,
+        ..
+    } = *stored;
     let shift = (level2_end - since).max(0.0);
     pause.delay(shift);
     pause.since = level2_end;
@@ -152,7 +186,9 @@ pub(crate) fn resto_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     let here = robot.planner.end_joints();
     let (tool, held_object) = super::moves::mount_of(&robot.active);
     let mount = held_object.map_or(Mount::Held(tool), |object| Mount::Stationary { tcp: tool, object });
-    robot.ahead.push_back(PlannedMove::standing(here, mount, level2_end, level2_end));
+    let mut stand = PlannedMove::standing(here, mount, level2_end, level2_end);
+    stand.hold_eax(robot.eax_at(level2_end));
+    robot.ahead.push_back(stand);
     let later = |moves: Vec<PlannedMove>| {
         moves.into_iter().map(move |mut m| {
             m.shift(shift);
