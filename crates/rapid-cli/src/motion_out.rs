@@ -395,6 +395,7 @@ fn write_trace(robot: &RobotState, places: &[String], path: &Path, sample_ms: f6
                 }
                 // A pause of the path keeps the axes where they were.
                 last_eax = planned.eax_at(sample.time).unwrap_or(last_eax);
+                robot.independent.apply_eax(&mut last_eax, sample.time);
                 for &(j, _) in &ext {
                     push_number(&mut out, last_eax[j], 3, json);
                     out.push(',');

@@ -471,3 +471,26 @@ fn the_path_recorder_refuses_a_path_that_moved_external_axes() {
     assert_eq!(code, Some(1));
     assert!(stderr.contains("PathRecMoveBwd: the recorded path moves external axes"), "{stderr}");
 }
+
+#[test]
+fn a_turntable_turns_in_independent_mode() {
+    // STN1 (180 °/s, 1200 °/s²). IndCMove at 90 °/s ramps up in 0.075 s (3.375°): after
+    // 1 s it is at 3.375 + 0.925 · 90 = 86.625°. IndAMove to 180° at 180 °/s (from
+    // standstill, as a new independent move): 93.375° in 0.66875 s. A MoveAbsJ naming
+    // eax_b 0 leaves it alone while it is independent. IndReset \Short around 0 makes
+    // 180° read -180°; then MoveExtJ takes it to 0 in 1.15 s + 0.05 s settle.
+    let decls = "  VAR clock d;\n";
+    let body = "    IndCMove STN1, 1, 90;\n    WaitTime 1;\n    jt := CJointT();\n    \
+                TPWrite \"turning \" \\Num:=jt.extax.eax_b;\n    \
+                TPWrite \"in speed \" \\Bool:=IndSpeed(STN1, 1 \\InSpeed);\n    \
+                IndAMove STN1, 1 \\ToAbsNum:=180, 180;\n    WaitTime 0.7;\n    jt := CJointT();\n    \
+                TPWrite \"at \" \\Num:=jt.extax.eax_b;\n    TPWrite \"in position \" \\Bool:=IndInpos(STN1, 1);\n    \
+                MoveAbsJ [[0,0,0,0,0,42],[9E9,0,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    jt := CJointT();\n    \
+                TPWrite \"still \" \\Num:=jt.extax.eax_b;\n    IndReset STN1, 1 \\RefNum:=0 \\Short;\n    jt := CJointT();\n    \
+                TPWrite \"reset \" \\Num:=jt.extax.eax_b;\n    ClkStart d;\n    \
+                MoveExtJ [[0,0,0,0,0,0],[9E9,0,9E9,9E9,9E9,9E9]], v1000, fine;\n    \
+                TPWrite \"back in \" \\Num:=ClkRead(d);\n";
+    let (stdout, stderr, code) = run(&project("independent", decls, body, ""));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(stdout, "turning 86.625\nin speed TRUE\nat 180\nin position TRUE\nstill 180\nreset -180\nback in 1.2\n");
+}

@@ -181,7 +181,7 @@ fn series(out: &RunOutputs<'_>, ext: &mut [ExtAxisView]) -> Series {
             }
             last_t = round(t, 4);
             push_point(&mut series, &mut cursor, robot, planned, t);
-            push_external(ext, planned, t);
+            push_external(ext, robot, planned, t);
         }
     }
     series
@@ -217,12 +217,24 @@ fn push_point(
 
 /// The external axes at `t` on `planned` (their values and, by a central difference,
 /// their speeds); 0 when the move has no track of them.
-fn push_external(ext: &mut [ExtAxisView], planned: &PlannedMove, t: f64) {
+fn push_external(
+    ext: &mut [ExtAxisView],
+    robot: &rapid_vm::builtins::motion::robot::RobotState,
+    planned: &PlannedMove,
+    t: f64,
+) {
     if ext.is_empty() {
         return;
     }
     let (t1, t2) = ((t - SPEED_H).max(planned.start), (t + SPEED_H).min(planned.end));
-    let (at, e1, e2) = (planned.eax_at(t), planned.eax_at(t1), planned.eax_at(t2));
+    // Axes in independent mode are where their own motion has taken them.
+    let at_time = |t: f64| {
+        planned.eax_at(t).map(|mut eax| {
+            robot.independent.apply_eax(&mut eax, t);
+            eax
+        })
+    };
+    let (at, e1, e2) = (at_time(t), at_time(t1), at_time(t2));
     for view in ext.iter_mut() {
         let j = view.index;
         view.y.push(round(at.map_or(0.0, |e| e[j]), 3));

@@ -71,12 +71,19 @@ impl ExternalUnits {
     /// The external axes' part of a move from `from` to `target` (an `extjoint`), with
     /// `offsets` (EOffs) added to the values used. An active axis asked to leave its
     /// working range is the controller's joint-limit error, with its logical number.
-    pub fn plan(&self, from: Eax, target: &[f64; 6], offsets: Option<&Eax>) -> Result<ExternalMove, MotionError> {
+    /// Axes in independent mode (`independent`) are left alone.
+    pub fn plan(
+        &self,
+        from: Eax,
+        target: &[f64; 6],
+        offsets: Option<&Eax>,
+        independent: [bool; 6],
+    ) -> Result<ExternalMove, MotionError> {
         let mut ext = ExternalMove { from, to: from, max_speed: [0.0; 6], acc: [0.0; 6], linear: [false; 6] };
         for j in 0..6 {
             let Some((axis, true)) = self.axis(j) else { continue };
             (ext.max_speed[j], ext.acc[j], ext.linear[j]) = (axis.max_speed, axis.acc, axis.linear);
-            if is_unused(target[j]) {
+            if is_unused(target[j]) || independent[j] {
                 continue;
             }
             let value = target[j] + offsets.map_or(0.0, |o| o[j]);
@@ -115,7 +122,7 @@ impl super::robot::RobotState {
         offsets: Option<&Eax>,
     ) -> Result<Option<ExternalMove>, MotionError> {
         let Some(from) = self.planner.end_eax() else { return Ok(None) };
-        self.external.plan(from, target, offsets).map(Some)
+        self.external.plan(from, target, offsets, self.independent.external_mask()).map(Some)
     }
 
     /// Where the external axes are at controller time `t` (as `joints_at` for the
@@ -126,12 +133,24 @@ impl super::robot::RobotState {
         if self.planner.has_pending() && t > self.planner.time() {
             return self.planner.provisional().and_then(|(planned, _)| planned.eax_at(t)).or(Some(end));
         }
-        let on = self.ahead.iter().find(|m| t <= m.end);
-        let at = match on {
-            Some(m) => m.eax_at(t.max(m.start)),
-            None => self.ahead.back().and_then(|m| m.eax_end()),
-        };
-        Some(at.unwrap_or(end))
+        // From the end of the last move on, the axes stand where the planner has them
+        // (also where an IndReset left one).
+        let on = self.ahead.iter().find(|m| t < m.end);
+        let mut eax = on.and_then(|m| m.eax_at(t.max(m.start))).unwrap_or(end);
+        // Axes in independent mode are where their own motion has taken them.
+        self.independent.apply_eax(&mut eax, t);
+        Some(eax)
+    }
+
+    /// External axis `j` leaves independent mode at `position` (IndReset): the moves
+    /// take it on from there once the robot stands still.
+    pub(super) fn take_over_external(&mut self, j: usize, position: f64, now: f64) {
+        self.flush();
+        if let Some(mut eax) = self.planner.end_eax() {
+            eax[j] = position;
+            self.planner.set_eax(Some(eax));
+        }
+        self.planner.idle_until(now);
     }
 
     /// The `extjoint` read back at time `t`: 9E9 for axes the system lacks.

@@ -5,10 +5,12 @@
 //! any time (read-backs, the trace) has the independent axis's own position.
 //!
 //! Modelled: the robot's wrist axes 4 and 6 (the axes robots carry the independent
-//! option for), positions given as numbers (degrees).
+//! option for), positions given as numbers (degrees); and the axes of the task's
+//! external units (a turntable turning on its own), whose positions may also come from
+//! a robtarget's external axis values.
 
 use super::super::{present, Ctx};
-use super::units::{own_only, unit_arg};
+use super::units::{external_index as external_unit, own_only, unit_arg};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
@@ -91,26 +93,48 @@ impl IndAxis {
     }
 }
 
-/// The robot's axes in independent mode, by axis (0-based).
+/// Slots of the axes that can be independent: the robot's six (0..6), then the
+/// external axes `eax_a` … `eax_f` (6..12).
+const SLOTS: usize = 12;
+const FIRST_EXTERNAL: usize = 6;
+
+/// The axes in independent mode, by slot (see [`SLOTS`]).
 #[derive(Debug, Clone, Default)]
 pub struct Independent {
-    axes: [Option<IndAxis>; 6],
+    axes: [Option<IndAxis>; SLOTS],
     /// Earlier independent motions, for the trace: (axis, motion, when it ended).
     history: Vec<(usize, IndAxis, f64)>,
 }
 
 impl Independent {
-    /// Puts the independent axes' positions at time `t` into `joints`; `true` when any.
+    /// Puts the independent robot axes' positions at time `t` into `joints`; `true`
+    /// when any.
     pub fn apply(&self, joints: &mut Joints, t: f64) -> bool {
+        self.apply_slots(joints, 0, t)
+    }
+
+    /// Puts the independent external axes' positions at time `t` into `eax`.
+    pub fn apply_eax(&self, eax: &mut [f64; 6], t: f64) -> bool {
+        self.apply_slots(eax, FIRST_EXTERNAL, t)
+    }
+
+    /// Which external axes (`extjoint` index) are in independent mode now: the program's
+    /// moves leave them alone.
+    pub fn external_mask(&self) -> [bool; 6] {
+        std::array::from_fn(|j| self.axes[FIRST_EXTERNAL + j].is_some())
+    }
+
+    fn apply_slots(&self, values: &mut [f64; 6], first: usize, t: f64) -> bool {
         let mut any = false;
-        for (axis, ind) in self.axes.iter().enumerate() {
-            let now = ind.filter(|ind| t >= ind.t0);
+        for (i, value) in values.iter_mut().enumerate() {
+            let slot = first + i;
+            let now = self.axes[slot].filter(|ind| t >= ind.t0);
             let earlier = || {
-                let past = self.history.iter().rev().find(|(a, ind, until)| *a == axis && ind.t0 <= t && t < *until);
+                let past = self.history.iter().rev().find(|(a, ind, until)| *a == slot && ind.t0 <= t && t < *until);
                 past.map(|(_, ind, _)| *ind)
             };
             if let Some(ind) = now.or_else(earlier) {
-                joints[axis] = ind.at(t).0;
+                *value = ind.at(t).0;
                 any = true;
             }
         }
@@ -135,22 +159,54 @@ impl Independent {
     }
 }
 
-/// The axis argument: 4 or 6 of this task's robot (0-based), after the unit check.
+/// The axis argument as a slot: 4 or 6 of this task's robot, or an axis of one of its
+/// active external units (not a track carrying the robot).
 // uncertain: which axes carry the independent option depends on the robot's
 // configuration; the wrist axes 4 and 6 are taken to, others raise ERR_AXIS_PAR.
 fn axis(ctx: &Ctx<'_>, args: &[Value]) -> Result<usize, RapidError> {
     let unit = unit_arg(ctx, args, 0)?;
-    own_only(ctx, unit)?;
     let axis = ctx.num(&args[1])?;
+    if let Some(i) = external_unit(ctx, unit) {
+        return external_slot(ctx, i, axis);
+    }
+    own_only(ctx, unit)?;
     if axis == 4.0 || axis == 6.0 {
         return Ok(axis as usize - 1);
     }
     Err(ctx.error(Err::AxisPar, format!("axis {axis} cannot move independently (axes 4 and 6 can)")))
 }
 
+/// The slot of axis number `axis` (from 1) of external unit `i`.
+fn external_slot(ctx: &Ctx<'_>, i: usize, axis: f64) -> Result<usize, RapidError> {
+    let state = &ctx.resources.robot.external.units[i];
+    let name = &state.unit.name;
+    if state.unit.carries_robot {
+        return Err(RapidError::fatal(format!(
+            "{name} carries the robot: independent mode on it is not supported yet"
+        )));
+    }
+    if !state.active {
+        return Err(RapidError::fatal(format!("{name} is not active (ActUnit): its axes cannot move")));
+    }
+    let n = state.unit.axes.len();
+    match state.unit.axes.get((axis as usize).wrapping_sub(1)).filter(|_| axis.fract() == 0.0) {
+        Some(a) => Ok(FIRST_EXTERNAL + a.index()),
+        None => Err(ctx.error(Err::AxisPar, format!("axis {axis} is not an axis of {name} (1..{n})"))),
+    }
+}
+
+/// The external axis (configuration) in `slot`, if the slot is an external one.
+fn external_axis<'c>(ctx: &'c Ctx<'_>, slot: usize) -> Option<&'c rapid_motion::external::ExternalAxis> {
+    let j = slot.checked_sub(FIRST_EXTERNAL)?;
+    ctx.resources.robot.external.units.iter().flat_map(|u| &u.unit.axes).find(|a| a.index() == j)
+}
+
 /// Speed (deg/s, at most the axis's maximum) and acceleration from `\Ramp` (percent).
 fn speed_and_acc(ctx: &Ctx<'_>, axis: usize, speed: f64, ramp: Option<&Value>) -> Result<(f64, f64), RapidError> {
-    let max = ctx.resources.robot.model.max_speeds[axis];
+    let (max, acc) = match external_axis(ctx, axis) {
+        Some(a) => (a.max_speed, a.acc),
+        None => (ctx.resources.robot.model.max_speeds[axis], ctx.resources.robot.model.max_speeds[axis] / RAMP_TIME),
+    };
     if !speed.is_finite() || speed == 0.0 {
         return Err(ctx.error(Err::ArgValue, "the speed of an independent axis must not be 0"));
     }
@@ -160,7 +216,7 @@ fn speed_and_acc(ctx: &Ctx<'_>, axis: usize, speed: f64, ramp: Option<&Value>) -
         None => 100.0,
     };
     // uncertain: a speed above the axis's maximum is capped at it.
-    Ok((speed.abs().min(max), max / RAMP_TIME * ramp / 100.0))
+    Ok((speed.abs().min(max), acc * ramp / 100.0))
 }
 
 /// Where the axis is now: its independent position, or the robot's.
@@ -168,6 +224,7 @@ fn position_now(ctx: &mut Ctx<'_>, axis: usize) -> f64 {
     let now = ctx.time;
     match ctx.resources.robot.independent.axes[axis] {
         Some(ind) => ind.at(now).0,
+        None if axis >= FIRST_EXTERNAL => ctx.resources.robot.eax_at(now).map_or(0.0, |eax| eax[axis - FIRST_EXTERNAL]),
         None => ctx.resources.robot.joints_at(now)[axis],
     }
 }
@@ -184,7 +241,7 @@ fn start(ctx: &mut Ctx<'_>, axis: usize, goal: Goal, speed: f64, acc: f64) {
 /// `IndAMove MecUnit, Axis, \ToAbsNum, Speed [\Ramp]`: to an absolute position.
 pub(crate) fn ind_a_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let axis = axis(ctx, args)?;
-    let target = position_arg(ctx, args, 2, "ToAbsPos")?;
+    let target = position_arg(ctx, args, 2, "ToAbsPos", axis)?;
     let (speed, acc) = speed_and_acc(ctx, axis, ctx.num(&args[4])?, args.get(5))?;
     start(ctx, axis, Goal::To(target), speed, acc);
     Ok(None)
@@ -214,7 +271,7 @@ pub(crate) fn ind_d_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// position within one turn (0..360), the shortest way, forwards or backwards.
 pub(crate) fn ind_r_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let axis = axis(ctx, args)?;
-    let within = position_arg(ctx, args, 2, "ToRelPos")?.rem_euclid(360.0);
+    let within = position_arg(ctx, args, 2, "ToRelPos", axis)?.rem_euclid(360.0);
     let (speed, acc) = speed_and_acc(ctx, axis, ctx.num(&args[7])?, args.get(8))?;
     let here = position_now(ctx, axis);
     let ahead = (within - here).rem_euclid(360.0);
@@ -236,11 +293,25 @@ pub(crate) fn ind_r_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// axes the manual asks for the number form, so it raises ERR_ARGVALERR here.
 // uncertain: the manual says only that robot axes use the number form; that the
 // controller answers the robtarget form on a robot axis with ERR_ARGVALERR is our choice.
-fn position_arg(ctx: &Ctx<'_>, args: &[Value], index: usize, robtarget: &str) -> Result<f64, RapidError> {
+fn position_arg(ctx: &Ctx<'_>, args: &[Value], index: usize, robtarget: &str, slot: usize) -> Result<f64, RapidError> {
     if present(args.get(index)) {
-        return Err(robtarget_on_robot_axis(ctx, robtarget));
+        return robtarget_position(ctx, &args[index], robtarget, slot);
     }
     ctx.num(&args[index + 1])
+}
+
+/// An external axis's value in a robtarget (`\ToAbsPos`, `\ToRelPos`, `\RefPos`);
+/// for a robot axis ERR_ARGVALERR.
+fn robtarget_position(ctx: &Ctx<'_>, target: &Value, robtarget: &str, slot: usize) -> Result<f64, RapidError> {
+    let Some(j) = slot.checked_sub(FIRST_EXTERNAL) else { return Err(robtarget_on_robot_axis(ctx, robtarget)) };
+    let value = match ctx.value(target)? {
+        Value::Record(r) if r.fields.len() == 4 => super::frame::extjoint(ctx, &r.fields[3])?[j],
+        _ => return Err(ctx.error(Err::ArgValue, format!("\\{robtarget}: a robtarget was expected"))),
+    };
+    if rapid_motion::external::is_unused(value) {
+        return Err(ctx.error(Err::ArgValue, format!("\\{robtarget}: the robtarget leaves this axis unused (9E9)")));
+    }
+    Ok(value)
 }
 
 /// The error for a robtarget position (`\ToAbsPos`, `\ToRelPos`, `\RefPos`) given
@@ -283,10 +354,10 @@ impl Reset {
 // \Old, and wants it inside the axis's working range; those faults raise ERR_ARGVALERR
 // here. \Short, \Fwd or \Bwd without a reference take 0 as the reference.
 fn reset_kind(ctx: &Ctx<'_>, args: &[Value], axis: usize) -> Result<Reset, RapidError> {
-    if present(args.get(2)) {
-        return Err(robtarget_on_robot_axis(ctx, "RefPos"));
-    }
-    let reference = ctx.opt_num(args.get(3))?;
+    let reference = match args.get(2).filter(|a| present(Some(a))) {
+        Some(target) => Some(robtarget_position(ctx, target, "RefPos", axis)?),
+        None => ctx.opt_num(args.get(3))?,
+    };
     let (short, fwd, bwd) = (present(args.get(4)), present(args.get(5)), present(args.get(6)));
     let Some(reference) = reference else {
         return Ok(if short {
@@ -302,7 +373,7 @@ fn reset_kind(ctx: &Ctx<'_>, args: &[Value], axis: usize) -> Result<Reset, Rapid
     if !(short || fwd || bwd) {
         return Err(ctx.error(Err::ArgValue, "IndReset \\RefNum needs \\Short, \\Fwd or \\Bwd"));
     }
-    let (lo, hi) = ctx.resources.robot.kin.limits()[axis];
+    let (lo, hi) = limits(ctx, axis);
     if !reference.is_finite() || reference < lo || reference > hi {
         return Err(ctx.error(
             Err::ArgValue,
@@ -333,8 +404,8 @@ pub(crate) fn ind_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         return Err(RapidError::fatal(format!("IndReset: axis {} still moves; it must stand still", axis + 1)));
     }
     let position = kind.apply(ind.at(now).0);
+    let (lo, hi) = limits(ctx, axis);
     let robot = &mut ctx.resources.robot;
-    let (lo, hi) = robot.kin.limits()[axis];
     if position < lo - 1e-9 || position > hi + 1e-9 {
         return Err(RapidError::fatal(format!(
             "IndReset: axis {} at {position:.2} degrees is outside its working range {lo}..{hi}; \\Short, \\Fwd or \\Bwd bring it in",
@@ -342,8 +413,19 @@ pub(crate) fn ind_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         )));
     }
     robot.independent.set(axis, None, now);
-    robot.take_over_axis(axis, position, now);
+    match axis.checked_sub(FIRST_EXTERNAL) {
+        Some(j) => robot.take_over_external(j, position, now),
+        None => robot.take_over_axis(axis, position, now),
+    }
     Ok(None)
+}
+
+/// The working range of the axis in `slot`.
+fn limits(ctx: &Ctx<'_>, slot: usize) -> (f64, f64) {
+    match external_axis(ctx, slot) {
+        Some(a) => (a.min, a.max),
+        None => ctx.resources.robot.kin.limits()[slot.min(5)],
+    }
 }
 
 /// `IndInpos(MecUnit, Axis)`: the independent axis stands at its target.

@@ -263,7 +263,12 @@ fn regain_move(ctx: &mut Ctx<'_>, pause: &Pause, path: Joints) -> Result<Option<
     let speed = SpeedData { v_tcp: REGAIN_SPEED, ..SpeedData::VMAX };
     let request = MoveRequest { target: Target::Joints(path), speed, zone: ZoneData::FINE, tool, held_object };
     let planned = planner.push(&robot.kin, &request).map_err(super::moves::motion_error)?;
-    Ok(planned.or_else(|| planner.flush()))
+    // The arm alone goes back: the external axes stand where they stopped.
+    let eax = robot.eax_at(pause.since);
+    Ok(planned.or_else(|| planner.flush()).map(|mut planned| {
+        planned.hold_eax(eax);
+        planned
+    }))
 }
 
 /// Puts a move in the robot's queue (and the trace) by its start time.

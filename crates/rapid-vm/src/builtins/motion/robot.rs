@@ -486,6 +486,10 @@ impl RobotState {
         if let Some(last) = self.ahead.back_mut().filter(|m| m.start == on.start) {
             *last = braked.clone();
         }
+        // The external axes stop where the braked move leaves them.
+        if let Some(eax) = braked.eax_end() {
+            self.planner.set_eax(Some(eax));
+        }
         if let Some(last) = self.recorded.as_mut().and_then(|r| r.last_mut()).filter(|m| m.start == on.start) {
             *last = braked;
         }

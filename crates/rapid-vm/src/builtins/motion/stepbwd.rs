@@ -209,5 +209,10 @@ fn linear_move(
     let speed = SpeedData { v_tcp: speed, ..SpeedData::VMAX };
     let request = MoveRequest { target: Target::Linear(target), speed, zone: ZoneData::FINE, tool, held_object: None };
     let planned = planner.push(&robot.kin, &request).map_err(super::moves::motion_error)?;
-    planned.or_else(|| planner.flush()).ok_or_else(|| RapidError::fatal("StepBwdPath: no move was planned"))
+    let mut planned =
+        planned.or_else(|| planner.flush()).ok_or_else(|| RapidError::fatal("StepBwdPath: no move was planned"))?;
+    // The arm alone steps: the external axes stand where the path stopped.
+    let since = robot.pause.as_ref().map_or(now, |p| p.since);
+    planned.hold_eax(robot.eax_at(since));
+    Ok(planned)
 }

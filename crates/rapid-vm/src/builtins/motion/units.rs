@@ -23,7 +23,7 @@ pub(super) const ROBOT_AXES: usize = 6;
 const EXTERNAL_BASE: usize = 1000;
 
 /// The index among this task's external units of unit number `unit`.
-fn external_index(ctx: &Ctx<'_>, unit: usize) -> Option<usize> {
+pub(super) fn external_index(ctx: &Ctx<'_>, unit: usize) -> Option<usize> {
     let i = unit.checked_sub(EXTERNAL_BASE)?;
     (i < ctx.resources.robot.external.units.len()).then_some(i)
 }
