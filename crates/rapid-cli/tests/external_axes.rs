@@ -494,3 +494,29 @@ fn a_turntable_turns_in_independent_mode() {
     assert_eq!(code, Some(0), "{stderr}");
     assert_eq!(stdout, "turning 86.625\nin speed TRUE\nat 180\nin position TRUE\nstill 180\nreset -180\nback in 1.2\n");
 }
+
+#[test]
+fn units_belong_to_the_task_the_manifest_names() {
+    // Two robot tasks; TRACK is T_ROB2's. Each task lists its own units after the robots.
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external_axes").join("two_tasks");
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    let manifest = "[[task]]\nname = \"T_ROB1\"\nmodules = [\"rob1.mod\"]\n\n[[task]]\nname = \"T_ROB2\"\ntype = \"NORMAL\"\n\
+                    motion = true\nmodules = [\"rob2.mod\"]\n\n[[unit]]\nname = \"TRACK\"\ntask = \"T_ROB2\"\n[[unit.axis]]\n\
+                    logical = 7\ntype = \"linear\"\nmin = 0\nmax = 3000\nspeed = 1000\n";
+    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    let list = |task: &str, wait: &str| {
+        format!(
+            "MODULE m\n  VAR num n := 0;\n  VAR string name;\n  PROC main()\n    WaitTime {wait};\n    \
+             WHILE GetNextMechUnit(n, name) DO\n      TPWrite \"{task} \" + name;\n    ENDWHILE\n  ENDPROC\nENDMODULE\n"
+        )
+    };
+    fs::write(dir.join("rob1.mod"), list("T_ROB1", "0.1")).expect("module");
+    fs::write(dir.join("rob2.mod"), list("T_ROB2", "0.2")).expect("module");
+    let out = rapid(&["run", "--quiet", dir.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        "T_ROB1 ROB_1\nT_ROB1 ROB_2\nT_ROB2 ROB_1\nT_ROB2 ROB_2\nT_ROB2 TRACK\n"
+    );
+}
