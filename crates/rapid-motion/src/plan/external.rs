@@ -42,7 +42,7 @@ pub(crate) fn pace(
         limits.acc = limits.acc.min(acc * per_unit);
         limits.dec = limits.dec.min(acc * per_unit);
     }
-    prep.eax = Some(*ext);
+    prep.eax = Some(Box::new(*ext));
     Ok(())
 }
 
@@ -106,10 +106,12 @@ impl PlannedMove {
     /// Keeps the external axes standing at `eax` through this move (a pause of the
     /// path, which has no track of its own).
     pub fn hold_eax(&mut self, eax: Option<Eax>) {
-        self.eax = eax.map(|at| EaxTrack {
-            ext: ExternalMove { from: at, to: at, max_speed: [0.0; 6], acc: [0.0; 6], linear: [false; 6] },
-            length: 0.0,
-            corner: None,
+        self.eax = eax.map(|at| {
+            Box::new(EaxTrack {
+                ext: ExternalMove { from: at, to: at, max_speed: [0.0; 6], acc: [0.0; 6], linear: [false; 6] },
+                length: 0.0,
+                corner: None,
+            })
         });
     }
 }

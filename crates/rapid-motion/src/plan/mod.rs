@@ -259,7 +259,10 @@ impl Planner {
         let s0 = pending.s_start;
         let seeds = prep.seeds.iter().map(|(s, q)| (s - s0, *q)).collect();
         let ori_out = corner.as_ref().and_then(|(c, _, _)| c.path.ori_zone());
-        let mut eax = prep.eax.map(|ext| external::EaxTrack { ext, length: prep.limits.length, corner: None });
+        let mut eax = prep
+            .eax
+            .as_ref()
+            .map(|ext| Box::new(external::EaxTrack { ext: **ext, length: prep.limits.length, corner: None }));
         let piece = Piece::Own { geom: prep.geom.clone(), s0, ori_in: pending.ori_in, ori_out };
         let zone_entry = start + own.duration;
         let mut spans = vec![Span { piece, t0: start, seeds, profile: own }];

@@ -40,7 +40,8 @@ pub struct PlannedMove {
     pub(crate) spans: Vec<Span>,
     pub(crate) mount: super::Mount,
     /// The external axes' track, when the system has external axes.
-    pub(crate) eax: Option<super::external::EaxTrack>,
+    // Boxed: most systems have no external axes, and moves are cloned often.
+    pub(crate) eax: Option<Box<super::external::EaxTrack>>,
 }
 
 /// The robot at one instant.

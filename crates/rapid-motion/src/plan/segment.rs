@@ -66,8 +66,9 @@ pub(crate) struct Prepared {
     /// The accelerations this move was planned with (AccSet applied).
     pub(crate) accel: AccelLimits,
     pub(crate) max_speeds: [f64; 6],
-    /// The external axes' move, when the system has external axes.
-    pub(crate) eax: Option<ExternalMove>,
+    /// The external axes' move, when the system has external axes (boxed: moves
+    /// without external axes stay small).
+    pub(crate) eax: Option<Box<ExternalMove>>,
 }
 
 /// Most IK samples taken along one path to find its axis-speed limit.
