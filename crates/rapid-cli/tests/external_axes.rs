@@ -520,3 +520,30 @@ fn units_belong_to_the_task_the_manifest_names() {
         "T_ROB1 ROB_1\nT_ROB1 ROB_2\nT_ROB2 ROB_1\nT_ROB2 ROB_2\nT_ROB2 TRACK\n"
     );
 }
+
+#[test]
+fn joint_world_zones_watch_external_axes() {
+    // A WZLimJointDef zone on eax_a 500 … 2000 mm (the arm's axes unlimited): the track's
+    // 1000 mm MoveExtJ passes 500 mm half way in time, 0.575 s (75 mm of ramp in
+    // 0.15 s, then 1000 mm/s); supervised every 4 ms, doZone rises at 0.576 s.
+    let extra = "\n[system]\nio = \"eio.cfg\"\n";
+    let decls = "  VAR wztemporary zone;\n  VAR shapedata range;\n  \
+                 CONST jointtarget low := [[9E9,9E9,9E9,9E9,9E9,9E9],[500,9E9,9E9,9E9,9E9,9E9]];\n  \
+                 CONST jointtarget high := [[9E9,9E9,9E9,9E9,9E9,9E9],[2000,9E9,9E9,9E9,9E9,9E9]];\n";
+    let body =
+        "    WZLimJointDef \\Inside, range, low, high;\n    WZDOSet \\Temp, zone \\Inside, range, doZone, 1;\n    \
+                TPWrite \"before \" \\Num:=DOutput(doZone);\n    \
+                MoveExtJ [[0,0,0,0,0,0],[1000,9E9,9E9,9E9,9E9,9E9]], v1000, fine;\n    \
+                TPWrite \"after \" \\Num:=DOutput(doZone);\n";
+    let dir = project("joint_zone", decls, body, extra);
+    fs::write(dir.join("eio.cfg"), "EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n\n      -Name \"doZone\" -SignalType \"DO\"\n")
+        .expect("EIO");
+    let log = dir.join("io.csv");
+    let out = rapid(&["run", "--quiet", "--io-log", log.to_str().unwrap(), dir.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "before 0\nafter 1\n");
+    let text = fs::read_to_string(&log).expect("I/O log");
+    let rise = text.lines().find(|l| l.contains(",doZone,0,1,")).expect("doZone rises");
+    let time: f64 = rise.split(',').next().and_then(|t| t.parse().ok()).expect("a time");
+    assert!((time - 0.576).abs() < 1e-6, "{rise}");
+}

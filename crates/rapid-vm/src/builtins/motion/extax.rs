@@ -153,6 +153,12 @@ impl super::robot::RobotState {
         self.planner.idle_until(now);
     }
 
+    /// External axis values as zones see them: the active units' axes, 9E9 for the
+    /// others (which no bound limits).
+    pub(super) fn extax_of(&self, eax: Option<Eax>) -> Option<[f64; 6]> {
+        eax.map(|at| self.external.read(&at))
+    }
+
     /// The `extjoint` read back at time `t`: 9E9 for axes the system lacks.
     pub fn extax_read(&mut self, t: f64) -> [f64; 6] {
         match self.eax_at(t) {

@@ -606,8 +606,8 @@ impl RobotState {
     }
 
     /// Whether the robot at `joints` (TCP of the active tool) is in zone `i`.
-    fn in_zone(&self, i: usize, joints: &Joints, tcp: &nalgebra::Vector3<f64>) -> bool {
-        self.zones.get(i).copied().flatten().is_some_and(|z| z.shape.contains(tcp, joints))
+    fn in_zone(&self, i: usize, joints: &Joints, eax: Option<&[f64; 6]>, tcp: &nalgebra::Vector3<f64>) -> bool {
+        self.zones.get(i).copied().flatten().is_some_and(|z| z.shape.contains(tcp, joints, eax))
     }
 
     /// The TCP deceleration moves are planned with: the model's, scaled by AccSet,
@@ -623,7 +623,8 @@ impl RobotState {
         let joints = self.joints_at(now);
         // In the world: on a track, where the track has the robot's base.
         let tcp = (self.track_base_at(now) * self.kin.forward(&joints) * self.active.tframe).translation.vector;
-        let inside = self.in_zone(i, &joints, &tcp);
+        let eax = self.extax_of(self.eax_at(now));
+        let inside = self.in_zone(i, &joints, eax.as_ref(), &tcp);
         if self.zone_inside.len() <= i {
             self.zone_inside.resize(i + 1, false);
         }
@@ -675,7 +676,11 @@ impl RobotState {
                 };
                 let base = planned.eax_at(at.time).map_or_else(|| self.track_base_at(at.time), |e| self.track_base(&e));
                 let tcp = base * at.tcp;
-                let inside = self.in_zone(i, &at.joints, &tcp.translation.vector);
+                let eax = self.extax_of(planned.eax_at(at.time).map(|mut e| {
+                    self.independent.apply_eax(&mut e, at.time);
+                    e
+                }));
+                let inside = self.in_zone(i, &at.joints, eax.as_ref(), &tcp.translation.vector);
                 if inside != self.zone_inside[i] {
                     self.zone_inside[i] = inside;
                     crossings.push((i, inside, sample.time));

@@ -21,10 +21,30 @@ const MAX_ZONES: usize = 20;
 /// A zone's volume: in world coordinates (mm) or in axis values (degrees).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Shape {
-    Box { low: [f64; 3], high: [f64; 3] },
-    Cylinder { centre: [f64; 3], radius: f64, height: f64 },
-    Sphere { centre: [f64; 3], radius: f64 },
-    Joints { low: [f64; 6], high: [f64; 6] },
+    Box {
+        low: [f64; 3],
+        high: [f64; 3],
+    },
+    Cylinder {
+        centre: [f64; 3],
+        radius: f64,
+        height: f64,
+    },
+    Sphere {
+        centre: [f64; 3],
+        radius: f64,
+    },
+    /// The robot's six axes, then the external axes `eax_a` … `eax_f` (unbounded where
+    /// the zone does not limit an axis).
+    Joints {
+        low: [f64; 12],
+        high: [f64; 12],
+    },
+}
+
+/// Whether external axis `j` is absent (no external axes, or 9E9).
+fn e_unused(eax: Option<&[f64; 6]>, j: usize) -> bool {
+    eax.is_none_or(|e| e[j] >= 8.9e9)
 }
 
 /// A shape and whether the zone is its inside or its outside.
@@ -35,8 +55,9 @@ pub struct ShapeData {
 }
 
 impl ShapeData {
-    /// Whether the TCP at `tcp` (world, mm) with axes `joints` is in the zone.
-    pub fn contains(&self, tcp: &Vector3<f64>, joints: &[f64; 6]) -> bool {
+    /// Whether the TCP at `tcp` (world, mm) with axes `joints` and external axes `eax`
+    /// (`None` without any) is in the zone.
+    pub fn contains(&self, tcp: &Vector3<f64>, joints: &[f64; 6], eax: Option<&[f64; 6]>) -> bool {
         let within = |v: f64, lo: f64, hi: f64| v >= lo.min(hi) && v <= hi.max(lo);
         let inside = match self.shape {
             Shape::Box { low, high } => (0..3).all(|i| within(tcp[i], low[i], high[i])),
@@ -45,7 +66,14 @@ impl ShapeData {
                 dx.hypot(dy) <= radius && within(tcp.z, centre[2], centre[2] + height)
             }
             Shape::Sphere { centre, radius } => (tcp - Vector3::from(centre)).norm() <= radius,
-            Shape::Joints { low, high } => (0..6).all(|i| within(joints[i], low[i], high[i])),
+            Shape::Joints { low, high } => {
+                let robot = (0..6).all(|i| within(joints[i], low[i], high[i]));
+                // An external axis the system lacks (or a deactivated unit's, read as
+                // 9E9) is not limited by its bounds.
+                let limits = |j: usize| e_unused(eax, j) || eax.is_some_and(|e| within(e[j], low[6 + j], high[6 + j]));
+                let external = eax.is_none() || (0..6).all(limits);
+                robot && external
+            }
         };
         inside != self.outside
     }
@@ -128,20 +156,33 @@ pub(crate) fn wz_sph_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `WZHomeJointDef [\Inside] | [\Outside] Shape, MiddleJointVal, DeltaJointVal`: the
 /// axes within Delta of Middle.
+// uncertain: an external axis whose middle value is 9E9 is not checked.
 pub(crate) fn wz_home_joint_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let middle = data::jointtarget(ctx, &ctx.value(&args[3])?)?;
-    let delta = data::jointtarget(ctx, &ctx.value(&args[4])?)?;
-    let low = std::array::from_fn(|i| middle[i] - delta[i].abs());
-    let high = std::array::from_fn(|i| middle[i] + delta[i].abs());
+    let middle = all_axes(ctx, &args[3])?;
+    let delta = all_axes(ctx, &args[4])?;
+    let unused = |i: usize| i >= 6 && middle[i] >= 8.9e9;
+    let low = std::array::from_fn(|i| if unused(i) { f64::NEG_INFINITY } else { middle[i] - delta[i].abs() });
+    let high = std::array::from_fn(|i| if unused(i) { f64::INFINITY } else { middle[i] + delta[i].abs() });
     define(ctx, args, Shape::Joints { low, high })
+}
+
+/// A jointtarget's twelve values: `robax`, then `extax`.
+fn all_axes(ctx: &Ctx<'_>, arg: &Value) -> Result<[f64; 12], RapidError> {
+    let target = ctx.value(arg)?;
+    let robot = data::jointtarget(ctx, &target)?;
+    let external = match &target {
+        Value::Record(r) if r.fields.len() == 2 => super::frame::extjoint(ctx, &r.fields[1])?,
+        _ => [9e9; 6],
+    };
+    Ok(std::array::from_fn(|i| if i < 6 { robot[i] } else { external[i - 6] }))
 }
 
 /// `WZLimJointDef [\Inside] | [\Outside] Shape, LowJointVal, HighJointVal`.
 // uncertain: an axis whose low and high are both 9E9 is not limited.
 pub(crate) fn wz_lim_joint_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let mut low = data::jointtarget(ctx, &ctx.value(&args[3])?)?;
-    let mut high = data::jointtarget(ctx, &ctx.value(&args[4])?)?;
-    for i in 0..6 {
+    let mut low = all_axes(ctx, &args[3])?;
+    let mut high = all_axes(ctx, &args[4])?;
+    for i in 0..12 {
         if low[i] >= 8.9e9 {
             low[i] = f64::NEG_INFINITY;
         }
