@@ -247,3 +247,16 @@ fn the_conveyor_example_picks_moving_boxes_when_the_timing_model_says() {
         assert_near(*actual, expected, 0.002, "doGrip change");
     }
 }
+
+#[test]
+fn the_turntable_example_welds_while_the_table_turns_half_a_turn() {
+    let io_log = Path::new(env!("CARGO_TARGET_TMPDIR")).join("turntable_io.csv");
+    let out = rapid(&["--io-log", io_log.to_str().expect("utf-8"), "examples/turntable"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "Seam welded\n");
+    // The arc burns while the table turns 180° at 180 °/s with 0.15 s ramps: 1 + 0.15 s,
+    // and the stop point's 0.05 s settle; the robot only follows the part.
+    let arc: Vec<f64> = io_changes(&io_log).into_iter().filter(|(_, s, _)| s == "doArc").map(|(t, _, _)| t).collect();
+    assert_eq!(arc.len(), 2, "{arc:?}");
+    assert_near(arc[1] - arc[0], 1.2, 0.001, "arc time");
+}
