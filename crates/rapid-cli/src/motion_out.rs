@@ -89,12 +89,19 @@ pub(crate) fn configure_units(
     task: Option<&str>,
     first_motion: bool,
 ) {
-    let mine = units.iter().filter(|u| match (&u.task, task) {
+    let mine = units.iter().filter(|u| belongs(u.task.as_deref(), task, first_motion));
+    robot.configure_external(mine.map(|u| u.unit.clone()).collect());
+}
+
+/// Whether a unit or conveyor the manifest gives `named` task belongs to the run's
+/// `task` (`None`: the run has one task only), the first motion task taking those
+/// naming none.
+fn belongs(named: Option<&str>, task: Option<&str>, first_motion: bool) -> bool {
+    match (named, task) {
         (_, None) => true,
         (Some(named), Some(task)) => named.eq_ignore_ascii_case(task),
         (None, Some(_)) => first_motion,
-    });
-    robot.configure_external(mine.map(|u| u.unit.clone()).collect());
+    }
 }
 
 /// Gives the robot the conveyors configured for its task (chosen as
@@ -108,11 +115,7 @@ pub(crate) fn configure_conveyors(
     first_motion: bool,
 ) -> Result<(), String> {
     use rapid_vm::builtins::motion::conveyor::{Conveyor, ConveyorConfig};
-    let mine = conveyors.iter().filter(|c| match (&c.task, task) {
-        (_, None) => true,
-        (Some(named), Some(task)) => named.eq_ignore_ascii_case(task),
-        (None, Some(_)) => first_motion,
-    });
+    let mine = conveyors.iter().filter(|c| belongs(c.task.as_deref(), task, first_motion));
     for c in mine {
         let signal = |name: &str, kind: rapid_io::SignalKind| -> Result<u32, String> {
             let io = io.ok_or_else(|| format!("conveyor {}: the system has no I/O configuration", c.name))?;

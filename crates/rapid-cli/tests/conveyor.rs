@@ -46,11 +46,17 @@ const HEAD: &str = "MODULE main
     MoveJ home, v1000, fine, tool0;
 ";
 
-/// A project with `body` after HEAD and the stimulus `objects` (after the speed line).
-fn project(name: &str, body: &str, objects: &str) -> PathBuf {
+/// A fresh, empty scratch folder for one test.
+fn scratch(name: &str) -> PathBuf {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("conveyor").join(name);
     let _ = fs::remove_dir_all(&dir);
     fs::create_dir_all(&dir).expect("scratch folder");
+    dir
+}
+
+/// A project with `body` after HEAD and the stimulus `objects` (after the speed line).
+fn project(name: &str, body: &str, objects: &str) -> PathBuf {
+    let dir = scratch(name);
     fs::write(dir.join("rapid.toml"), MANIFEST).expect("manifest");
     fs::write(dir.join("eio.cfg"), EIO).expect("EIO");
     fs::write(dir.join("main.mod"), format!("{HEAD}{body}  ENDPROC\nENDMODULE\n")).expect("module");

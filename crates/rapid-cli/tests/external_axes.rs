@@ -28,12 +28,18 @@ max = 180
 speed = 180
 "#;
 
-/// A project folder holding `rapid.toml` (one task, `extra` appended) and `main.mod`
-/// with `body` as the statements of `main`.
-fn project(name: &str, decls: &str, body: &str, extra: &str) -> PathBuf {
+/// A fresh, empty scratch folder for one test.
+fn scratch(name: &str) -> PathBuf {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external_axes").join(name);
     let _ = fs::remove_dir_all(&dir);
     fs::create_dir_all(&dir).expect("scratch folder");
+    dir
+}
+
+/// A project folder holding `rapid.toml` (one task, `extra` appended) and `main.mod`
+/// with `body` as the statements of `main`.
+fn project(name: &str, decls: &str, body: &str, extra: &str) -> PathBuf {
+    let dir = scratch(name);
     let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n{UNITS}{extra}");
     fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
     let module = format!(
@@ -231,9 +237,7 @@ fn a_turntable_carries_its_work_object_and_the_robot_follows() {
     // 50 mm along the object's y at v100 (0.5 + 0.01 s + 0.05 s): (350, -100, 400).
     let extra = "base = [400, 0, 200]\n";
     let manifest_units = UNITS.replace("name = \"STN1\"\n", &format!("name = \"STN1\"\n{extra}"));
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external_axes").join("turntable");
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("scratch folder");
+    let dir = scratch("turntable");
     let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n{manifest_units}");
     fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
     let module = "MODULE main
@@ -293,9 +297,7 @@ fn a_track_carries_the_robot_and_the_tcp_keeps_its_world_path() {
     // track 0. Then the TCP goes 100 mm along the world y axis at v100 while the track
     // moves another 100 mm along x: relative to its base the TCP goes √2 · 100 mm at
     // √2 · 100 mm/s: 1 + 0.0141 s ramp + 0.05 s settle; 1.36 s in all.
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external_axes").join("track");
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("scratch folder");
+    let dir = scratch("track");
     let manifest = "[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n[[unit]]\nname = \"TRACK\"\n\
                     carries_robot = true\n[[unit.axis]]\nlogical = 7\ntype = \"linear\"\nmin = 0\nmax = 3000\nspeed = 1000\n";
     fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
@@ -352,9 +354,7 @@ fn world_zones_watch_the_tcp_in_the_world_on_a_track() {
     // moving 100 mm while the TCP stands at world x 300 takes the TCP to x 200 relative
     // to the base, but not in the world: doZone stays 0. Then the TCP goes to world
     // x 200 (track still at 100): inside, doZone 1.
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external_axes").join("track_zone");
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("scratch folder");
+    let dir = scratch("track_zone");
     let manifest = "[system]\nio = \"eio.cfg\"\n\n[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n\
                     [[unit]]\nname = \"TRACK\"\ncarries_robot = true\n[[unit.axis]]\nlogical = 7\ntype = \"linear\"\n\
                     min = 0\nmax = 3000\nspeed = 1000\n";
@@ -389,9 +389,7 @@ ENDMODULE
 fn another_task_reads_the_robots_external_axes() {
     // T_ROB1 moves its track to 1000 mm (1.2 s); T_PLC, a task without a robot, reads
     // the track through the controller at 2 s.
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external_axes").join("other_task");
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("scratch folder");
+    let dir = scratch("other_task");
     let manifest = format!(
         "[[task]]\nname = \"T_ROB1\"\nmodules = [\"rob.mod\"]\n\n[[task]]\nname = \"T_PLC\"\ntype = \"NORMAL\"\n\
          modules = [\"plc.mod\"]\n{UNITS}"
@@ -412,9 +410,7 @@ fn another_task_reads_the_robots_external_axes() {
 /// A project with the track and turntable, a DO doStart and a DI diStop that rises
 /// 0.5 s after doStart, and `module` as its program; stdout, stderr and the exit code.
 fn run_stopped(name: &str, module: &str) -> (String, String, Option<i32>) {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external_axes").join(name);
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("scratch folder");
+    let dir = scratch(name);
     let manifest =
         format!("[system]\nio = \"eio.cfg\"\n\n[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n{UNITS}");
     fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
@@ -498,9 +494,7 @@ fn a_turntable_turns_in_independent_mode() {
 #[test]
 fn units_belong_to_the_task_the_manifest_names() {
     // Two robot tasks; TRACK is T_ROB2's. Each task lists its own units after the robots.
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external_axes").join("two_tasks");
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("scratch folder");
+    let dir = scratch("two_tasks");
     let manifest = "[[task]]\nname = \"T_ROB1\"\nmodules = [\"rob1.mod\"]\n\n[[task]]\nname = \"T_ROB2\"\ntype = \"NORMAL\"\n\
                     motion = true\nmodules = [\"rob2.mod\"]\n\n[[unit]]\nname = \"TRACK\"\ntask = \"T_ROB2\"\n[[unit.axis]]\n\
                     logical = 7\ntype = \"linear\"\nmin = 0\nmax = 3000\nspeed = 1000\n";

@@ -179,11 +179,7 @@ impl Reader<'_> {
             found.push(Finding { span, message })
         });
         for (conveyor, spanned) in conveyors.iter().zip(raw) {
-            let Some(task) = &conveyor.task else { continue };
-            if !self.manifest.sys.tasks.iter().any(|t| t.name.eq_ignore_ascii_case(task) && t.motion_task) {
-                let message = format!("conveyor `{}`: `{task}` is no motion task of this manifest", conveyor.name);
-                found.push(Finding { span: spanned.span(), message });
-            }
+            found.extend(self.no_motion_task("conveyor", &conveyor.name, conveyor.task.as_deref(), spanned.span()));
         }
         self.manifest.findings.extend(found);
         self.manifest.conveyors = conveyors;
@@ -194,14 +190,18 @@ impl Reader<'_> {
         let mut found = Vec::new();
         let units = super::manifest_units::read(raw, &mut |span, message| found.push(Finding { span, message }));
         for (unit, spanned) in units.iter().zip(raw) {
-            let Some(task) = &unit.task else { continue };
-            if !self.manifest.sys.tasks.iter().any(|t| t.name.eq_ignore_ascii_case(task) && t.motion_task) {
-                let message = format!("unit `{}`: `{task}` is no motion task of this manifest", unit.unit.name);
-                found.push(Finding { span: spanned.span(), message });
-            }
+            found.extend(self.no_motion_task("unit", &unit.unit.name, unit.task.as_deref(), spanned.span()));
         }
         self.manifest.findings.extend(found);
         self.manifest.units = units;
+    }
+
+    /// A finding when the `task` a unit or conveyor names is no motion task here.
+    fn no_motion_task(&self, what: &str, name: &str, task: Option<&str>, span: Range<usize>) -> Option<Finding> {
+        let task = task?;
+        let motion = self.manifest.sys.tasks.iter().any(|t| t.name.eq_ignore_ascii_case(task) && t.motion_task);
+        let message = format!("{what} `{name}`: `{task}` is no motion task of this manifest");
+        (!motion).then_some(Finding { span, message })
     }
 
     fn system(&mut self, system: RawSystem) {

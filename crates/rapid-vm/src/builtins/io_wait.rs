@@ -116,12 +116,8 @@ fn wait(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, compare: Compare) ->
         _ => ctx.num(&args[layout.value])?,
     };
     let value = ctx.resources.io.system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0);
-    let here = wait_key(ctx);
     let now = ctx.time;
-    let started = match ctx.resources.io.waiting {
-        Some((depth, pc, at)) if (depth, pc) == here => at,
-        _ => now,
-    };
+    let started = wait_started(ctx);
     if compare.holds(value, target) {
         ctx.resources.io.waiting = None;
         if let Some(flag) = layout.time_flag.filter(|&f| present(args.get(f))) {
@@ -134,16 +130,34 @@ fn wait(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, compare: Compare) ->
         ctx.resources.io.waiting = None;
         return timed_out(ctx, args, layout, value);
     }
-    ctx.resources.io.waiting = Some((here.0, here.1, started));
+    wait_again(ctx, started, deadline, None);
+    Ok(None)
+}
+
+/// When the wait of the instruction being run began: the first try's time, kept across
+/// its repeats (per call depth and instruction); now on a first try.
+pub(crate) fn wait_started(ctx: &Ctx<'_>) -> f64 {
+    match ctx.resources.io.waiting {
+        Some((depth, pc, at)) if (depth, pc) == wait_key(ctx) => at,
+        _ => ctx.time,
+    }
+}
+
+/// The instruction waits on from `started` and runs again at the next signal change
+/// the I/O system knows of, the next interrupt that may come, `also`, or `deadline`,
+/// whichever is first.
+pub(crate) fn wait_again(ctx: &mut Ctx<'_>, started: f64, deadline: Option<f64>, also: Option<f64>) {
+    let now = ctx.time;
+    let (depth, pc) = wait_key(ctx);
+    ctx.resources.io.waiting = Some((depth, pc, started));
     let io_next = ctx.resources.io.next_event_time();
     let interrupt_next = super::interrupts::next_due(ctx);
-    let next = [io_next, interrupt_next].into_iter().flatten().min_by(f64::total_cmp).unwrap_or(now + IDLE_POLL);
+    let next = [io_next, interrupt_next, also].into_iter().flatten().min_by(f64::total_cmp).unwrap_or(now + IDLE_POLL);
     let until = deadline.map_or(next, |d| d.min(next)).max(now);
     // A change due now (or a rounding tie) still moves the clock a little, so the wait
     // always ends.
     ctx.wait = Some((until - now).max(1e-6));
     ctx.stop = StopKind::Repeat;
-    Ok(None)
 }
 
 /// Past `\MaxTime`: with `\TimeFlag` the flag is set and execution goes on; otherwise

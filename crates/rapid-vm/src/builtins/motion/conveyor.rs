@@ -208,15 +208,6 @@ impl Following {
             .rev()
             .find(|s| s.t_ref <= move_start + EPS && s.t_end.is_none_or(|end| move_start < end - EPS))
     }
-
-    /// The conveyor object's distance at `t` (for a unit, `None`: its axis is the
-    /// robot's to say).
-    fn conveyor_at(&self, mover: &Mover, t: f64) -> Option<f64> {
-        match *mover {
-            Mover::Conveyor { conveyor, object } => Some(self.conveyors[conveyor].position(t) - object),
-            Mover::Unit { .. } => None,
-        }
-    }
 }
 
 impl super::robot::RobotState {
@@ -234,11 +225,17 @@ impl super::robot::RobotState {
     fn carried(&self, t: f64, move_start: f64, eax: impl Fn(f64) -> Option<Eax>) -> Option<Pose> {
         let span = self.following.span_of(move_start)?;
         let t = span.t_end.map_or(t, |end| t.min(end));
-        let at = match span.mover {
-            Mover::Unit { axis, .. } => eax(t)?[axis],
-            conveyor => self.following.conveyor_at(&conveyor, t)?,
-        };
+        let at = self.mover_at(&span.mover, t, eax)?;
         Some(span.mover.carry(&self.following.conveyors, span.at_ref, at))
+    }
+
+    /// Where `mover` is at `t`: the conveyor object's distance from the sync switch, or
+    /// the unit's axis value (`eax` gives the external axes at a time).
+    pub(super) fn mover_at(&self, mover: &Mover, t: f64, eax: impl Fn(f64) -> Option<Eax>) -> Option<f64> {
+        match *mover {
+            Mover::Conveyor { conveyor, object } => Some(self.following.conveyors[conveyor].position(t) - object),
+            Mover::Unit { axis, .. } => Some(eax(t)?[axis]),
+        }
     }
 
     /// Joints where the robot is at `t` when its planned `joints` are carried by the

@@ -137,6 +137,16 @@ pub(super) fn robtarget(ctx: &Ctx<'_>, value: &Value) -> Result<(Isometry3<f64>,
     Ok((pose, conf))
 }
 
+/// A robtarget's or jointtarget's external axis values (`extax`, its last field).
+pub(super) fn target_extax(ctx: &Ctx<'_>, target: &Value) -> Result<[f64; 6], RapidError> {
+    match target {
+        Value::Record(r) if matches!(r.fields.len(), 2 | 4) => {
+            super::frame::extjoint(ctx, &r.fields[r.fields.len() - 1])
+        }
+        _ => Err(ctx.error(Err::ArgValue, "a robtarget or jointtarget was expected")),
+    }
+}
+
 /// A jointtarget's robot axes.
 pub(super) fn jointtarget(ctx: &Ctx<'_>, value: &Value) -> Result<Joints, RapidError> {
     let f = record(ctx, value, 2, "a jointtarget")?;

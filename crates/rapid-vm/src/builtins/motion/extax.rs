@@ -26,9 +26,6 @@ pub struct ExternalUnits {
     pub units: Vec<UnitState>,
 }
 
-/// What `extjoint` holds for an axis nobody moves: 9E9.
-pub const UNUSED: f64 = 9e9;
-
 impl ExternalUnits {
     pub fn new(units: Vec<ExternalUnit>) -> ExternalUnits {
         let units = units
@@ -101,7 +98,7 @@ impl ExternalUnits {
     pub fn read(&self, at: &Eax) -> [f64; 6] {
         std::array::from_fn(|j| match self.axis(j) {
             Some((_, true)) => at[j],
-            _ => UNUSED,
+            _ => super::data::UNUSED_AXIS,
         })
     }
 }
@@ -163,7 +160,7 @@ impl super::robot::RobotState {
     pub fn extax_read(&mut self, t: f64) -> [f64; 6] {
         match self.eax_at(t) {
             Some(at) => self.external.read(&at),
-            None => [UNUSED; 6],
+            None => [super::data::UNUSED_AXIS; 6],
         }
     }
 }

@@ -304,10 +304,7 @@ fn position_arg(ctx: &Ctx<'_>, args: &[Value], index: usize, robtarget: &str, sl
 /// for a robot axis ERR_ARGVALERR.
 fn robtarget_position(ctx: &Ctx<'_>, target: &Value, robtarget: &str, slot: usize) -> Result<f64, RapidError> {
     let Some(j) = slot.checked_sub(FIRST_EXTERNAL) else { return Err(robtarget_on_robot_axis(ctx, robtarget)) };
-    let value = match ctx.value(target)? {
-        Value::Record(r) if r.fields.len() == 4 => super::frame::extjoint(ctx, &r.fields[3])?[j],
-        _ => return Err(ctx.error(Err::ArgValue, format!("\\{robtarget}: a robtarget was expected"))),
-    };
+    let value = super::data::target_extax(ctx, &ctx.value(target)?)?[j];
     if rapid_motion::external::is_unused(value) {
         return Err(ctx.error(Err::ArgValue, format!("\\{robtarget}: the robtarget leaves this axis unused (9E9)")));
     }

@@ -292,9 +292,7 @@ pub(super) fn external_target(
         return Ok(None);
     }
     let target = ctx.value(&args[to])?;
-    let Value::Record(record) = &target else { return Err(RapidError::fatal("a move target is no record")) };
-    let Some(extax) = record.fields.last() else { return Err(RapidError::fatal("a move target has no extax")) };
-    let values = super::frame::extjoint(ctx, extax)?;
+    let values = data::target_extax(ctx, &target)?;
     let use_offsets = match rule {
         EOffsRule::Always => true,
         EOffsRule::Unless(switch) => !present(args.get(switch)),

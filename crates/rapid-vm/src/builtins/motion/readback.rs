@@ -129,7 +129,7 @@ pub(crate) fn c_pos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 pub(crate) fn calc_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let target = ctx.value(&args[0])?;
     let joints = data::jointtarget(ctx, &target)?;
-    let extax = target_extax(ctx, &target)?;
+    let extax = data::target_extax(ctx, &target)?;
     let mut chain = read_frames(ctx, args.get(1), args.get(2))?;
     chain.base = ctx.resources.robot.track_base(&extax);
     let (pose, conf) = chain.robtarget_of(&ctx.resources.robot.kin, &joints);
@@ -146,7 +146,7 @@ pub(crate) fn calc_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 pub(crate) fn calc_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let target = ctx.value(&args[1])?;
     let (pose, conf) = data::robtarget(ctx, &target)?;
-    let extax = target_extax(ctx, &target)?;
+    let extax = data::target_extax(ctx, &target)?;
     let mut chain = read_frames(ctx, args.get(2), args.get(3))?;
     chain.base = ctx.resources.robot.track_base(&extax);
     let now = ctx.time;
@@ -197,10 +197,10 @@ pub(crate) fn pdisp_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// ExeP's (or where the axes are now); an axis unused in either (9E9), or one the
 /// system does not have, gets no offset.
 pub(crate) fn eoffs_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let prog = extax(ctx, &ctx.value(&args[1])?)?;
+    let prog = data::target_extax(ctx, &ctx.value(&args[1])?)?;
     let now = ctx.time;
     let actual = match present(args.first()) {
-        true => extax(ctx, &ctx.value(&args[0])?)?,
+        true => data::target_extax(ctx, &ctx.value(&args[0])?)?,
         false => ctx.resources.robot.extax_read(now),
     };
     let mut offsets = [0.0; 6];
@@ -210,22 +210,4 @@ pub(crate) fn eoffs_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         }
     }
     super::settings::set_eoffs(ctx, offsets)
-}
-
-/// A robtarget's or jointtarget's external axis values (its last field).
-fn target_extax(ctx: &Ctx<'_>, target: &Value) -> Result<[f64; 6], RapidError> {
-    match target {
-        Value::Record(r) if matches!(r.fields.len(), 2 | 4) => {
-            super::frame::extjoint(ctx, &r.fields[r.fields.len() - 1])
-        }
-        _ => Err(ctx.error(Err::ArgValue, "a robtarget or jointtarget was expected")),
-    }
-}
-
-/// A robtarget's external axis values.
-fn extax(ctx: &Ctx<'_>, target: &Value) -> Result<[f64; 6], RapidError> {
-    match target {
-        Value::Record(r) if r.fields.len() == 4 => super::frame::extjoint(ctx, &r.fields[3]),
-        _ => Err(ctx.error(Err::ArgValue, "a robtarget was expected")),
-    }
 }

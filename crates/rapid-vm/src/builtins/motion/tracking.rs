@@ -1,16 +1,13 @@
 //! The conveyor tracking instructions (WaitWObj, DropWObj) and what a move does when
 //! its work object rides a conveyor (see `conveyor.rs` for the model).
 
-use super::super::{present, Ctx, StopKind};
+use super::super::{present, Ctx};
 use super::conveyor::{Mover, Span};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
 
 type Res = Result<Option<Value>, RapidError>;
-
-/// How long a wait with nothing scheduled sleeps before looking again (as WaitDI).
-const IDLE_POLL: f64 = 3600.0;
 
 /// Brings the conveyors up to the controller's time: inputs changed until now.
 pub(super) fn refresh(ctx: &mut Ctx<'_>) {
@@ -124,23 +121,12 @@ pub(crate) fn wait_wobj(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// The wait goes on until the next input change, the object's arrival or `\MaxTime`.
 fn keep_waiting(ctx: &mut Ctx<'_>, args: &[Value], arrival: Option<f64>) -> Res {
-    let now = ctx.time;
-    let here = (ctx.chain.len(), ctx.chain.last().map_or(0, |f| f.position().1));
-    let started = match ctx.resources.io.waiting {
-        Some((depth, pc, at)) if (depth, pc) == here => at,
-        _ => now,
-    };
+    let started = super::super::io_wait::wait_started(ctx);
     let deadline = ctx.opt_num(args.get(2))?.map(|max| started + max);
-    if deadline.is_some_and(|d| now >= d) {
+    if deadline.is_some_and(|d| ctx.time >= d) {
         return end_wait(ctx, args, true);
     }
-    ctx.resources.io.waiting = Some((here.0, here.1, started));
-    let io_next = ctx.resources.io.next_event_time();
-    let interrupt_next = super::super::interrupts::next_due(ctx);
-    let next = [io_next, interrupt_next, arrival, deadline].into_iter().flatten().min_by(f64::total_cmp);
-    let until = next.unwrap_or(now + IDLE_POLL).max(now);
-    ctx.wait = Some((until - now).max(1e-6));
-    ctx.stop = StopKind::Repeat;
+    super::super::io_wait::wait_again(ctx, started, deadline, arrival);
     Ok(None)
 }
 
@@ -253,10 +239,7 @@ pub(super) fn planning_frame(ctx: &Ctx<'_>, carrier: Carrier) -> Option<rapid_mo
 pub(super) fn active_uframe_at(robot: &super::robot::RobotState, t: f64) -> rapid_motion::Pose {
     let uframe = robot.active.uframe;
     let Some(span) = robot.following.open() else { return uframe };
-    let at = match span.mover {
-        Mover::Conveyor { conveyor, object } => robot.following.conveyors[conveyor].position(t) - object,
-        Mover::Unit { axis, .. } => robot.eax_at(t).map_or(span.at_ref, |e| e[axis]),
-    };
+    let at = robot.mover_at(&span.mover, t, |t| robot.eax_at(t)).unwrap_or(span.at_ref);
     span.mover.carry(&robot.following.conveyors, span.at_ref, at) * uframe
 }
 
@@ -280,11 +263,7 @@ impl super::robot::RobotState {
     /// which starts from a stop point.
     fn start_tracking(&mut self, mover: Mover, now: f64) {
         let t_ref = self.stop_here().max(now);
-        let at_ref = match mover {
-            Mover::Conveyor { conveyor, object } => self.following.conveyors[conveyor].position(t_ref) - object,
-            // The robot stands: the axis is where the last move left it.
-            Mover::Unit { axis, .. } => self.planner.end_eax().map_or(0.0, |eax| eax[axis]),
-        };
+        let at_ref = self.mover_at(&mover, t_ref, |t| self.eax_at(t)).unwrap_or(0.0);
         self.following.spans.push(Span { mover, t_ref, at_ref, t_end: None });
     }
 
@@ -297,9 +276,7 @@ impl super::robot::RobotState {
             span.t_end = Some(t_end);
         }
         // The next move starts from where the object took the robot.
-        let eax = self.planner.end_eax();
         self.planner.restart_from(joints, t_end);
-        self.planner.set_eax(eax);
         self.motion_end = t_end;
     }
 

@@ -44,7 +44,7 @@ pub enum Shape {
 
 /// Whether external axis `j` is absent (no external axes, or 9E9).
 fn e_unused(eax: Option<&[f64; 6]>, j: usize) -> bool {
-    eax.is_none_or(|e| e[j] >= 8.9e9)
+    eax.is_none_or(|e| rapid_motion::external::is_unused(e[j]))
 }
 
 /// A shape and whether the zone is its inside or its outside.
@@ -160,7 +160,7 @@ pub(crate) fn wz_sph_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 pub(crate) fn wz_home_joint_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let middle = all_axes(ctx, &args[3])?;
     let delta = all_axes(ctx, &args[4])?;
-    let unused = |i: usize| i >= 6 && middle[i] >= 8.9e9;
+    let unused = |i: usize| i >= 6 && rapid_motion::external::is_unused(middle[i]);
     let low = std::array::from_fn(|i| if unused(i) { f64::NEG_INFINITY } else { middle[i] - delta[i].abs() });
     let high = std::array::from_fn(|i| if unused(i) { f64::INFINITY } else { middle[i] + delta[i].abs() });
     define(ctx, args, Shape::Joints { low, high })
@@ -170,10 +170,7 @@ pub(crate) fn wz_home_joint_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 fn all_axes(ctx: &Ctx<'_>, arg: &Value) -> Result<[f64; 12], RapidError> {
     let target = ctx.value(arg)?;
     let robot = data::jointtarget(ctx, &target)?;
-    let external = match &target {
-        Value::Record(r) if r.fields.len() == 2 => super::frame::extjoint(ctx, &r.fields[1])?,
-        _ => [9e9; 6],
-    };
+    let external = data::target_extax(ctx, &target)?;
     Ok(std::array::from_fn(|i| if i < 6 { robot[i] } else { external[i - 6] }))
 }
 
@@ -183,10 +180,10 @@ pub(crate) fn wz_lim_joint_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let mut low = all_axes(ctx, &args[3])?;
     let mut high = all_axes(ctx, &args[4])?;
     for i in 0..12 {
-        if low[i] >= 8.9e9 {
+        if rapid_motion::external::is_unused(low[i]) {
             low[i] = f64::NEG_INFINITY;
         }
-        if high[i] >= 8.9e9 {
+        if rapid_motion::external::is_unused(high[i]) {
             high[i] = f64::INFINITY;
         }
     }
