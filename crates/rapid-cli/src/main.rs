@@ -10,6 +10,7 @@ mod render;
 mod report;
 mod save;
 mod stimulus;
+mod trace;
 mod virtual_io;
 
 use std::io::{self, Write};

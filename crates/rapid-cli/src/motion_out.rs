@@ -6,10 +6,7 @@
 // The CLI is the one crate that talks to the terminal.
 #![allow(clippy::print_stderr)]
 
-use std::fmt::Write as _;
-use std::path::Path;
-
-use rapid_motion::plan::{PlannedMove, Sample};
+use rapid_motion::plan::Sample;
 use rapid_motion::Pose;
 use rapid_sema::SourceInput;
 use rapid_syntax::LineIndex;
@@ -17,9 +14,6 @@ use rapid_vm::builtins::motion::robot::{MoveFacts, RobotState};
 use rustc_hash::FxHashMap;
 
 use crate::args::RunArgs;
-
-/// Most trace rows written (a day at 4 ms): a bound on a mistaken `--sample`.
-const MAX_TRACE_ROWS: usize = 21_600_000;
 
 /// The robot model the run moves: `--robot`, else a manifest's `robot` (an unknown
 /// name is an error), else the MOC.cfg robot type when it is a known model, else the default. The second
@@ -209,7 +203,7 @@ pub(crate) fn write_outputs(out: &RunOutputs<'_>, args: &RunArgs) -> anyhow::Res
     }
     let places = move_places(out);
     if let Some(path) = &args.trace {
-        write_trace(out.robot, &places, path, args.sample)?;
+        crate::trace::write(out.robot, &places, path, args.sample)?;
     }
     if let Some(path) = &args.report {
         crate::report::write(path, out, &places)?;
@@ -249,6 +243,7 @@ pub(crate) struct Point {
 
 /// Finds the facts of the move a time falls in, for times that only grow, and places
 /// the robot in that move's frames.
+#[derive(Clone)]
 pub(crate) struct FactsCursor<'a> {
     facts: &'a [MoveFacts],
     at: usize,
@@ -261,19 +256,25 @@ impl<'a> FactsCursor<'a> {
         FactsCursor { facts, at: 0, to_object: facts.first().map_or(Pose::identity(), object_frame_inverse) }
     }
 
-    /// The robot at `sample`, placed in the frames of the move it is on.
-    pub(crate) fn locate(&mut self, sample: Sample) -> Point {
-        let t = sample.time;
+    /// Moves on to the facts of the move time `t` falls in (times only grow).
+    pub(crate) fn advance(&mut self, t: f64) {
         let moved = self.at;
         while self.at + 1 < self.facts.len() && t >= self.facts[self.at].end && t >= self.facts[self.at + 1].start {
             self.at += 1;
         }
+        if self.at != moved {
+            if let Some(facts) = self.facts.get(self.at) {
+                self.to_object = object_frame_inverse(facts);
+            }
+        }
+    }
+
+    /// The robot at `sample`, placed in the frames of the move it is on.
+    pub(crate) fn locate(&mut self, sample: Sample) -> Point {
+        self.advance(sample.time);
         let Some(facts) = self.facts.get(self.at) else {
             return Point { sample, world: sample.tcp, object: sample.tcp, facts: None };
         };
-        if self.at != moved {
-            self.to_object = object_frame_inverse(facts);
-        }
         let frames = &facts.frames;
         let (world, object) = if frames.stationary_tool {
             // The TCP stands still; the robot carries the work object past it.
@@ -294,244 +295,4 @@ impl<'a> FactsCursor<'a> {
 // the displaced frame (FrameChain::target_of).
 fn object_frame_inverse(facts: &MoveFacts) -> Pose {
     (facts.frames.uframe * facts.frames.oframe).inverse()
-}
-
-/// The trace's columns, in order.
-pub(crate) const TRACE_COLUMNS: [&str; 23] = [
-    "time",
-    "j1",
-    "j2",
-    "j3",
-    "j4",
-    "j5",
-    "j6",
-    "x",
-    "y",
-    "z",
-    "q1",
-    "q2",
-    "q3",
-    "q4",
-    "wx",
-    "wy",
-    "wz",
-    "wq1",
-    "wq2",
-    "wq3",
-    "wq4",
-    "tcp_speed",
-    "line",
-];
-
-/// The numbers of a trace row with their decimals (all columns but `line`).
-fn row_numbers(p: &Point, time_decimals: u32) -> [(f64, u32); 22] {
-    let s = &p.sample;
-    let w = p.world.translation.vector;
-    let o = p.object.translation.vector;
-    let [q1, q2, q3, q4] = rapid_motion::pose::orient(&p.world);
-    let [r1, r2, r3, r4] = rapid_motion::pose::orient(&p.object);
-    [
-        (s.time, time_decimals),
-        (s.joints[0], 4),
-        (s.joints[1], 4),
-        (s.joints[2], 4),
-        (s.joints[3], 4),
-        (s.joints[4], 4),
-        (s.joints[5], 4),
-        (w.x, 3),
-        (w.y, 3),
-        (w.z, 3),
-        (q1, 6),
-        (q2, 6),
-        (q3, 6),
-        (q4, 6),
-        (o.x, 3),
-        (o.y, 3),
-        (o.z, 3),
-        (r1, 6),
-        (r2, 6),
-        (r3, 6),
-        (r4, 6),
-        (s.tcp_speed, 2),
-    ]
-}
-
-/// The trajectory sampled every `sample_ms`, as CSV or (for a `.json` path) JSON,
-/// written atomically (the format: docs/trace.md).
-fn write_trace(robot: &RobotState, places: &[String], path: &Path, sample_ms: f64) -> anyhow::Result<()> {
-    if !(sample_ms.is_finite() && sample_ms >= 0.1) {
-        anyhow::bail!("--sample must be at least 0.1 ms");
-    }
-    let json = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"));
-    let step = sample_ms / 1000.0;
-    // Milliseconds while the period is whole milliseconds, else tenths of them.
-    let time_decimals = if sample_ms.fract() == 0.0 { 3 } else { 4 };
-    // Each move's place once, quoted for the format.
-    let quoted: Vec<String> = places.iter().map(|p| if json { json_string(p) } else { csv_field(p) }).collect();
-    let empty = if json { "\"\"".to_string() } else { String::new() };
-    let ext = external_columns(robot);
-    let columns = trace_columns(&ext);
-    let head = if json { json_head(robot, sample_ms, &columns) } else { columns.join(",") + "\n" };
-    crate::save::write_new_with(path, |file| {
-        let mut out = head;
-        let moves: &[PlannedMove] = robot.recorded.as_deref().unwrap_or(&[]);
-        let mut cursor = FactsCursor::new(&robot.recorded_facts);
-        let mut rows = 0;
-        let mut last_eax = robot.external.start();
-        for planned in moves {
-            let mount = planned.tool();
-            for sample in planned.samples(&robot.kin, step) {
-                if rows >= MAX_TRACE_ROWS {
-                    break;
-                }
-                // A move made with `\Corr` is where its path correction put it; an axis in
-                // independent mode where its own motion took it.
-                let sample = robot.tracked(planned, robot.corrected(planned, sample));
-                let sample = robot.with_independent(sample, &mount);
-                let point = cursor.locate(sample);
-                if json {
-                    out.push_str(if rows == 0 { "\n[" } else { ",\n[" });
-                }
-                for (value, decimals) in row_numbers(&point, time_decimals) {
-                    push_number(&mut out, value, decimals, json);
-                    out.push(',');
-                }
-                // A pause of the path keeps the axes where they were.
-                last_eax = planned.eax_at(sample.time).unwrap_or(last_eax);
-                robot.independent.apply_eax(&mut last_eax, sample.time);
-                for &(j, _) in &ext {
-                    push_number(&mut out, last_eax[j], 3, json);
-                    out.push(',');
-                }
-                out.push_str(point.facts.and_then(|i| quoted.get(i)).unwrap_or(&empty));
-                out.push_str(if json { "]" } else { "\n" });
-                rows += 1;
-                // Written in slices: a long trace is never held in memory whole.
-                if out.len() >= TRACE_CHUNK {
-                    file.write_all(out.as_bytes())?;
-                    out.clear();
-                }
-            }
-        }
-        if json {
-            out.push_str("\n]}\n");
-        }
-        file.write_all(out.as_bytes())
-    })
-}
-
-/// Bytes of trace text gathered before they go to the file.
-const TRACE_CHUNK: usize = 1 << 16;
-
-/// The external axes the trace shows after `tcp_speed`: (extjoint index, column name),
-/// in `eax_a` … `eax_f` order.
-fn external_columns(robot: &RobotState) -> Vec<(usize, String)> {
-    let mut axes: Vec<(usize, String)> = robot
-        .external
-        .units
-        .iter()
-        .flat_map(|u| &u.unit.axes)
-        .map(|a| (a.index(), format!("eax_{}", char::from(b'a' + a.index() as u8))))
-        .collect();
-    axes.sort();
-    axes
-}
-
-/// The trace's columns: [`TRACE_COLUMNS`] with the external axes before `line`.
-fn trace_columns(ext: &[(usize, String)]) -> Vec<String> {
-    let (line, numbers) = TRACE_COLUMNS.split_last().expect("the columns end in line");
-    numbers
-        .iter()
-        .map(|c| c.to_string())
-        .chain(ext.iter().map(|(_, name)| name.clone()))
-        .chain([line.to_string()])
-        .collect()
-}
-
-/// The JSON trace up to its first row: what was traced, and the columns.
-fn json_head(robot: &RobotState, sample_ms: f64, columns: &[String]) -> String {
-    let columns: Vec<String> = columns.iter().map(|c| json_string(c)).collect();
-    format!(
-        "{{\"robot\":{},\"sample_ms\":{},\"columns\":[{}],\"rows\":[",
-        json_string(robot.model.name),
-        serde_json::Number::from_f64(sample_ms).map_or("4".into(), |n| n.to_string()),
-        columns.join(",")
-    )
-}
-
-/// A number for the trace: fixed decimals; in JSON a value that is not a number is
-/// `null` (JSON has no NaN).
-fn push_number(out: &mut String, value: f64, decimals: u32, json: bool) {
-    if json && !value.is_finite() {
-        out.push_str("null");
-    } else {
-        push_fixed(out, value, decimals);
-    }
-}
-
-/// `text` as a JSON string literal.
-fn json_string(text: &str) -> String {
-    serde_json::to_string(text).unwrap_or_else(|_| "\"\"".into())
-}
-
-/// `text` as a CSV field: quoted when it holds a comma, a quote or a line break.
-fn csv_field(text: &str) -> String {
-    if text.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", text.replace('"', "\"\""))
-    } else {
-        text.to_string()
-    }
-}
-
-/// `x` with `decimals` decimals, rounded, without a minus sign on zero: integer
-/// arithmetic, which is many times faster than the standard exact formatting for the
-/// millions of numbers of a long trace.
-fn push_fixed(out: &mut String, x: f64, decimals: u32) {
-    let scale = 10u64.pow(decimals);
-    let scaled = (x * scale as f64).round();
-    if !scaled.is_finite() || scaled.abs() >= 9.0e15 {
-        let _ = write!(out, "{x:.prec$}", prec = decimals as usize);
-        return;
-    }
-    let n = scaled as i64;
-    if n < 0 {
-        out.push('-');
-    }
-    // Digits written by hand, least significant first into a buffer: the standard
-    // integer formatting costs more than the rest of a trace row.
-    let mut n = n.unsigned_abs();
-    let mut digits = [0u8; 24];
-    let mut at = digits.len();
-    for _ in 0..decimals {
-        at -= 1;
-        digits[at] = b'0' + (n % 10) as u8;
-        n /= 10;
-    }
-    if decimals > 0 {
-        at -= 1;
-        digits[at] = b'.';
-    }
-    loop {
-        at -= 1;
-        digits[at] = b'0' + (n % 10) as u8;
-        n /= 10;
-        if n == 0 {
-            break;
-        }
-    }
-    // Only ASCII digits and a point were written.
-    out.push_str(std::str::from_utf8(&digits[at..]).unwrap_or_default());
-}
-
-#[cfg(test)]
-mod tests {
-    #[test]
-    fn fixed_decimals_round_and_keep_zero_unsigned() {
-        let mut out = String::new();
-        for (x, d) in [(1.23456, 3), (-0.00004, 4), (-2.5, 2), (374.0, 3), (0.123456789, 6), (12.0, 0)] {
-            super::push_fixed(&mut out, x, d);
-            out.push(' ');
-        }
-        assert_eq!(out, "1.235 0.0000 -2.50 374.000 0.123457 12 ");
-    }
 }

@@ -165,6 +165,9 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         cycle,
     };
     crate::motion_out::write_outputs(&outputs, args)?;
+    // The recorded path (every planned move of the run) goes back to the system when
+    // the process ends, without the time freeing it piece by piece would take.
+    std::mem::forget(robot);
     if loaded.vm.resources_mut().controller.warm_start {
         eprintln!("{WARM_START}");
     }

@@ -119,10 +119,30 @@ impl PlannedMove {
     /// Samples at every multiple of `step` in `start..end`, so consecutive moves
     /// share one grid. Empty when `step` is not a positive number.
     pub fn samples<'a, K: Kinematics + ?Sized>(&'a self, kin: &'a K, step: f64) -> impl Iterator<Item = Sample> + 'a {
+        self.samples_in(kin, step, 0..self.sample_count(step))
+    }
+
+    /// The samples numbered `range` of [`PlannedMove::samples`], each computed alone:
+    /// a long trace is rendered in pieces.
+    pub fn samples_in<'a, K: Kinematics + ?Sized>(
+        &'a self,
+        kin: &'a K,
+        step: f64,
+        range: std::ops::Range<u64>,
+    ) -> impl Iterator<Item = Sample> + 'a {
+        range.map(move |k| self.sample(kin, self.sample_time(step, k)))
+    }
+
+    /// How many samples [`PlannedMove::samples`] gives.
+    pub fn sample_count(&self, step: f64) -> u64 {
         let valid = step.is_finite() && step > 0.0 && self.end.is_finite();
         let (first, last) = if valid { ((self.start / step).ceil(), (self.end / step).ceil()) } else { (0.0, 0.0) };
-        let count = (last - first).clamp(0.0, MAX_SAMPLES as f64) as u64;
-        (0..count).map(move |k| self.sample(kin, (first + k as f64) * step))
+        (last - first).clamp(0.0, MAX_SAMPLES as f64) as u64
+    }
+
+    /// The time of sample `k` of [`PlannedMove::samples`].
+    pub fn sample_time(&self, step: f64, k: u64) -> f64 {
+        ((self.start / step).ceil() + k as f64) * step
     }
 
     /// Joints, flange and TCP (base frame) at path parameter `s` of `span`.
