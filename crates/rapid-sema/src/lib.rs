@@ -17,15 +17,14 @@ mod consteval;
 mod decls;
 mod diagnostic;
 mod expr;
-mod pipeline;
 pub mod symbols;
 mod syntax;
 pub mod types;
 
 use std::sync::OnceLock;
 
-use rapid_syntax::ast::{Arena, BodyItem, Item};
-use rapid_syntax::{cap_errors, parse_body, parse_outline, Interner, Parse, Span, SyntaxError};
+use rapid_syntax::ast::Item;
+use rapid_syntax::{cap_errors, for_each_body_item, parse_body, parse_outline, Interner, Parse, Span, SyntaxError};
 
 pub use codes::{Code, Severity};
 pub use diagnostic::{Diagnostic, SourceInput};
@@ -186,15 +185,7 @@ fn check_semantics<'a>(
         for routine in routines(m) {
             ck.begin_routine(routine);
             let text = &files[m.file].text;
-            let errors = if routine.body_span.len() >= PIPELINE_THRESHOLD {
-                pipeline::check_body(&mut ck, text, routine.body_span, interner)
-            } else {
-                let mut sink = |item: BodyItem, arena: &mut Arena| {
-                    ck.body_item(&item, arena);
-                    arena.clear();
-                };
-                parse_body(text, routine.body_span, interner, Some(&mut sink))
-            };
+            let errors = for_each_body_item(text, routine.body_span, interner, |item, arena| ck.body_item(item, arena));
             syntax_errors[m.file].extend(errors);
             ck.end_routine();
         }
@@ -203,9 +194,6 @@ fn check_semantics<'a>(
     ck
 }
 
-/// Bodies at least this long (in bytes) are parsed on a second thread while the
-/// checker works through them: CAM programs hold one routine of millions of moves.
-const PIPELINE_THRESHOLD: u32 = 1 << 20;
 /// Module-level declarations: data initialisers and routine headers.
 fn check_module_items(ck: &mut Checker<'_>, modules: &[ModuleRef<'_>]) {
     for (idx, m) in modules.iter().enumerate() {

@@ -8,6 +8,7 @@ pub mod dump;
 pub mod error;
 mod grammar;
 pub mod intern;
+pub mod items;
 pub mod lexer;
 pub mod literal;
 mod parser;
@@ -17,5 +18,6 @@ pub mod token;
 
 pub use error::{SyntaxError, SyntaxErrorKind};
 pub use intern::{Interner, Symbol};
+pub use items::for_each_body_item;
 pub use parser::{cap_errors, parse, parse_body, parse_outline, BodySink, Parse, MAX_EXPR_DEPTH, MAX_STMT_DEPTH};
 pub use span::{LineCol, LineIndex, Span};

@@ -98,11 +98,12 @@ pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Resul
     }
     let Some(mut prog) = analysis.program else { return Err(LoadError::Diagnostics(analysis.diagnostics)) };
     let (_, catalogue) = rapid_sema::catalogue();
+    // Outlines: each routine's body is parsed as it is compiled, never held whole.
     let parses: Vec<(usize, rapid_syntax::Parse)> = files
         .iter()
         .enumerate()
         .filter(|(_, f)| f.unreadable.is_none())
-        .map(|(idx, f)| (idx, rapid_syntax::parse(&f.text, &mut prog.interner)))
+        .map(|(idx, f)| (idx, rapid_syntax::parse_outline(&f.text, &mut prog.interner)))
         .collect();
     let modules: Vec<compile::ModuleSource<'_>> = parses
         .iter()
@@ -114,8 +115,12 @@ pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Resul
             })
         })
         .collect();
-    let compiled =
-        compile::compile(&prog, &modules, &catalogue.module, &catalogue.text).map_err(LoadError::Unsupported)?;
+    // The compiler reads the program while the bodies' parser spells names with its
+    // interner: lent out for the while.
+    let mut interner = std::mem::take(&mut prog.interner);
+    let compiled = compile::compile(&prog, &modules, &catalogue.module, &catalogue.text, &mut interner);
+    prog.interner = interner;
+    let compiled = compiled.map_err(LoadError::Unsupported)?;
     let types = ops::OpTypes { pos: prog.core.pos, orient: prog.core.orient };
     let mut procs_by_name: FxHashMap<String, u32> = prog
         .routines

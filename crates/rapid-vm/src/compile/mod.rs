@@ -4,6 +4,7 @@
 //! The program has passed `rapid_sema::analyze` without errors, so the compiler
 //! trusts types and arity; what it cannot run yet it refuses with a clear message.
 
+mod body;
 mod call;
 mod expr;
 mod kernel;
@@ -12,8 +13,8 @@ mod stmt;
 use rapid_sema::symbols::{DataKind, DeclOrigin, Def};
 use rapid_sema::types::{Atomic, TypeId, TypeKind};
 use rapid_sema::Program;
-use rapid_syntax::ast::{Arena, DataDecl, Item, Module, ParamMode, Routine, RoutineKind};
-use rapid_syntax::{Span, Symbol};
+use rapid_syntax::ast::{Arena, DataDecl, Item, Module, ParamMode, Routine, Section};
+use rapid_syntax::{Interner, Span, Symbol};
 use rustc_hash::FxHashMap;
 
 use crate::ir::{Code, Instr};
@@ -62,11 +63,15 @@ pub(crate) enum LocalKind {
 }
 
 /// Compiles every user routine and the global initialisers.
+/// Routines whose bodies the trees leave out (an outline, `rapid_syntax::parse_outline`)
+/// are parsed from their text as they are compiled, with `interner`, the one that
+/// spelled the program.
 pub fn compile(
     prog: &Program,
     modules: &[ModuleSource<'_>],
     builtin_module: &Module,
     builtin_text: &str,
+    interner: &mut Interner,
 ) -> Result<Compiled, Vec<CompileError>> {
     let mut errors = Vec::new();
     for data in &prog.datas {
@@ -100,7 +105,11 @@ pub fn compile(
         let Some(source) = modules.get(module) else { continue };
         let Some(Item::Routine(routine)) = source.module.items.get(item) else { continue };
         let mut rc = RoutineCompiler::new(prog, module, source.file, source.text);
-        match rc.routine(routine) {
+        let compiled = match routine.body {
+            Some(_) => rc.routine(routine),
+            None => rc.routine_from_text(routine, interner),
+        };
+        match compiled {
             Ok(code) => routines[idx] = Some(code),
             Err(mut errs) => errors.append(&mut errs),
         }
@@ -303,6 +312,8 @@ pub(crate) struct RoutineCompiler<'p> {
     /// The FOR and WHILE loops around the statement being compiled, innermost last
     /// (Break and Continue jump out of or back into the innermost one).
     pub(crate) loops: Vec<LoopJumps>,
+    /// The part of the routine being compiled: the body or one of its handlers.
+    pub(crate) section: Section,
 }
 
 /// A loop's Break and Continue jumps, patched when the loop's code is complete.
@@ -331,6 +342,7 @@ impl<'p> RoutineCompiler<'p> {
             ret_ty: None,
             stmt_depth: 0,
             exits: Vec::new(),
+            section: Section::Body,
         }
     }
 
@@ -380,56 +392,7 @@ impl<'p> RoutineCompiler<'p> {
         }
     }
 
-    pub(crate) fn routine(&mut self, routine: &Routine) -> Result<Code, Vec<CompileError>> {
-        let name = routine.name.span.text(self.text).to_string();
-        self.code.name = name;
-        self.code.span = routine.span;
-        self.code.is_func = routine.kind == RoutineKind::Func;
-        self.code.is_trap = routine.kind == RoutineKind::Trap;
-        self.ret_ty = routine.ret_ty.and_then(|t| match self.resolve(t.sym) {
-            Some(Resolved::Type(ty)) => Some(ty),
-            _ => None,
-        });
-        self.code.ret_like = self.ret_ty.and_then(|ty| numeric_like(self.prog, ty, 0));
-        let Some(body) = &routine.body else { return Ok(self.code.clone()) };
-        self.declare_params(routine);
-        let mut errors = Vec::new();
-        for decl in &body.decls {
-            if let Err(e) = self.routine_data(decl, &body.arena) {
-                errors.push(e);
-            }
-        }
-        self.stmt_list(&body.arena, &body.stmts, &mut errors);
-        self.code.emit(Instr::FellOffEnd);
-        if let Some(handler) = &body.error {
-            let pc = self.code.here();
-            let numbers = handler.error_numbers.iter().filter_map(|&n| self.handler_number(&body.arena, n)).collect();
-            self.code.error_handler = Some(crate::ir::Handler { pc, numbers });
-            self.stmt_list(&body.arena, &handler.stmts, &mut errors);
-            self.code.emit(Instr::FellOffEnd);
-        }
-        if let Some(handler) = &body.undo {
-            self.code.undo_handler = Some(self.code.here());
-            self.stmt_list(&body.arena, &handler.stmts, &mut errors);
-            self.code.emit(Instr::Return);
-        }
-        if let Some(handler) = &body.backward {
-            // Backward execution is driven by a debugger, not by forward runs; the
-            // handler is compiled so its errors show, and kept for that API.
-            self.code.backward_handler = Some(self.code.here());
-            self.stmt_list(&body.arena, &handler.stmts, &mut errors);
-            self.code.emit(Instr::Return);
-        }
-        self.resolve_gotos(&mut errors);
-        self.finish_locals();
-        if errors.is_empty() {
-            Ok(std::mem::take(&mut self.code))
-        } else {
-            Err(errors)
-        }
-    }
-
-    fn declare_params(&mut self, routine: &Routine) {
+    pub(crate) fn declare_params(&mut self, routine: &Routine) {
         for param in routine.params.iter().filter(|p| p.placeholder.is_none()) {
             let ty = match self.resolve(param.ty.sym) {
                 Some(Resolved::Type(ty)) => ty,
@@ -483,7 +446,7 @@ impl<'p> RoutineCompiler<'p> {
         }
     }
 
-    fn handler_number(&self, arena: &Arena, id: rapid_syntax::ast::ExprId) -> Option<i32> {
+    pub(crate) fn handler_number(&self, arena: &Arena, id: rapid_syntax::ast::ExprId) -> Option<i32> {
         let expr = arena.expr(id);
         match expr.kind {
             rapid_syntax::ast::ExprKind::Num => {
@@ -504,7 +467,7 @@ impl<'p> RoutineCompiler<'p> {
         }
     }
 
-    fn resolve_gotos(&mut self, errors: &mut Vec<CompileError>) {
+    pub(crate) fn resolve_gotos(&mut self, errors: &mut Vec<CompileError>) {
         for (at, label, span) in std::mem::take(&mut self.gotos) {
             match self.labels.get(&label) {
                 Some(&target) => self.code.patch(at, target),

@@ -44,7 +44,9 @@ impl Vm {
         if top_level.clone().any(|s| s.start < pc && pc < s.end) {
             return Err(BackwardRefusal::InsideCompoundStatement);
         }
-        let body_end = code.error_handler.as_ref().map(|h| h.pc).or(code.undo_handler).or(code.backward_handler);
+        // The handlers follow the body, each starting where the part before it ends.
+        let handlers = [code.error_handler.as_ref().map(|h| h.pc), code.undo_handler, code.backward_handler];
+        let body_end = handlers.into_iter().flatten().min();
         if body_end.is_some_and(|end| pc >= end) {
             return Err(BackwardRefusal::InHandler);
         }

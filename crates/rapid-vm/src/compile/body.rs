@@ -1,0 +1,117 @@
+//! A routine compiled item by item in source order: its declarations, statements and
+//! handler keywords, from a parsed tree or from the items the parser hands over while it
+//! works through the routine's text (`rapid_syntax::for_each_body_item`, which parses a
+//! long body on a second thread). Both give the same code; the second never holds a
+//! whole body's tree, which for a CAM program is millions of moves.
+
+use rapid_syntax::ast::{Arena, BodyItem, DataDecl, ExprId, Routine, RoutineKind, Section};
+use rapid_syntax::Interner;
+
+use super::{numeric_like, CompileError, Resolved, RoutineCompiler};
+use crate::ir::{Code, Handler, Instr};
+
+impl RoutineCompiler<'_> {
+    /// Compiles a routine whose body the tree holds.
+    pub(crate) fn routine(&mut self, routine: &Routine) -> Result<Code, Vec<CompileError>> {
+        self.header(routine);
+        let Some(body) = &routine.body else { return Ok(self.code.clone()) };
+        self.declare_params(routine);
+        let mut errors = Vec::new();
+        for decl in &body.decls {
+            self.decl(decl, &body.arena, &mut errors);
+        }
+        self.stmt_list(&body.arena, &body.stmts, &mut errors);
+        // The handlers in the order the language writes them.
+        let handlers =
+            [(Section::Backward, &body.backward), (Section::Error, &body.error), (Section::Undo, &body.undo)];
+        for (section, handler) in handlers {
+            let Some(handler) = handler else { continue };
+            self.enter_section(section, &handler.error_numbers, &body.arena);
+            self.stmt_list(&body.arena, &handler.stmts, &mut errors);
+        }
+        self.finish_routine(errors)
+    }
+
+    /// Compiles a routine of an outline, parsing its body from the text as it goes.
+    pub(crate) fn routine_from_text(
+        &mut self,
+        routine: &Routine,
+        interner: &mut Interner,
+    ) -> Result<Code, Vec<CompileError>> {
+        self.header(routine);
+        self.declare_params(routine);
+        let mut errors = Vec::new();
+        let text = self.text;
+        // The checker parsed this body already and found no syntax error in it.
+        let _ = rapid_syntax::for_each_body_item(text, routine.body_span, interner, |item, arena| {
+            self.body_item(item, arena, &mut errors)
+        });
+        self.finish_routine(errors)
+    }
+
+    /// What the routine's head says: its name, kind and return type.
+    fn header(&mut self, routine: &Routine) {
+        self.code.name = routine.name.span.text(self.text).to_string();
+        self.code.span = routine.span;
+        self.code.is_func = routine.kind == RoutineKind::Func;
+        self.code.is_trap = routine.kind == RoutineKind::Trap;
+        self.ret_ty = routine.ret_ty.and_then(|t| match self.resolve(t.sym) {
+            Some(Resolved::Type(ty)) => Some(ty),
+            _ => None,
+        });
+        self.code.ret_like = self.ret_ty.and_then(|ty| numeric_like(self.prog, ty, 0));
+    }
+
+    fn body_item(&mut self, item: &BodyItem, arena: &Arena, errors: &mut Vec<CompileError>) {
+        match item {
+            BodyItem::Decl(decl) => self.decl(decl, arena, errors),
+            BodyItem::Stmt(stmt) => self.stmt_list(arena, std::slice::from_ref(stmt), errors),
+            BodyItem::Section { section, error_numbers, .. } => self.enter_section(*section, error_numbers, arena),
+            BodyItem::End => {}
+        }
+    }
+
+    fn decl(&mut self, decl: &DataDecl, arena: &Arena, errors: &mut Vec<CompileError>) {
+        if let Err(e) = self.routine_data(decl, arena) {
+            errors.push(e);
+        }
+    }
+
+    /// Ends the part being compiled and starts handler `section` here.
+    fn enter_section(&mut self, section: Section, error_numbers: &[ExprId], arena: &Arena) {
+        self.close_section();
+        let here = self.code.here();
+        match section {
+            Section::Error => {
+                let numbers = error_numbers.iter().filter_map(|&n| self.handler_number(arena, n)).collect();
+                self.code.error_handler = Some(Handler { pc: here, numbers });
+            }
+            Section::Undo => self.code.undo_handler = Some(here),
+            // Backward execution is driven by a debugger, not by forward runs; the
+            // handler is compiled so its errors show, and kept for that API.
+            Section::Backward => self.code.backward_handler = Some(here),
+            Section::Body => {}
+        }
+        self.section = section;
+    }
+
+    /// What ends the part being compiled when execution runs off it: the body and the
+    /// ERROR handler fall off the routine's end, UNDO and BACKWARD return.
+    fn close_section(&mut self) {
+        match self.section {
+            Section::Body | Section::Error => self.code.emit(Instr::FellOffEnd),
+            Section::Undo | Section::Backward => self.code.emit(Instr::Return),
+        };
+    }
+
+    fn finish_routine(&mut self, mut errors: Vec<CompileError>) -> Result<Code, Vec<CompileError>> {
+        self.close_section();
+        self.resolve_gotos(&mut errors);
+        self.finish_locals();
+        if errors.is_empty() {
+            Ok(std::mem::take(&mut self.code))
+        } else {
+            Err(errors)
+        }
+    }
+}
