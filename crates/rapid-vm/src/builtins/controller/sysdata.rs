@@ -60,6 +60,10 @@ pub(crate) fn activate_arg(ctx: &mut Ctx<'_>, arg: &Value, param: usize, kind: u
     if !matches!(place.root, Root::Global(_)) {
         return;
     }
+    // The active object again (a program's moves mostly name one tool): nothing changes.
+    if ctx.resources.motion.active[kind].as_ref().is_some_and(|(_, active)| active == &**place) {
+        return;
+    }
     let name = argname::original_name(ctx.chain, param).unwrap_or_else(|| "".into());
     activate(ctx, kind, name, (**place).clone());
 }
