@@ -67,6 +67,32 @@ const SHOW: &str = "    jt := CJointT();\n    TPWrite \"t \" \\Num:=ClkRead(c);\
                     TPWrite \"a \" \\Num:=jt.extax.eax_a;\n    TPWrite \"b \" \\Num:=jt.extax.eax_b;\n";
 
 #[test]
+fn move_ext_j_fly_by_points_blend() {
+    // The turntable 0 → 90° → 180° with z100 at 90° (zone_reax 15°): a straight corner
+    // from 75° to 105° at full speed, so both moves take what one of 180° takes:
+    // 180/180 + 0.15 = 1.15 s, + 0.05 s settle at the end. Half way, 0.575 s in,
+    // the table is at 90° (stopping at the point, it would be at 86.6°).
+    let body = format!(
+        "    MoveExtJ [[0,0,0,0,0,0],[9E9,90,9E9,9E9,9E9,9E9]], v1000, z100;\n    \
+         MoveExtJ [[0,0,0,0,0,0],[9E9,180,9E9,9E9,9E9,9E9]], v1000, fine;\n{SHOW}"
+    );
+    let (stdout, stderr, code) = run(&project("move_ext_j_blend", "", &body, ""));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(stdout, "t 1.2\na 0\nb 180\n");
+    let dir = project("move_ext_j_blend_trace", "", &body, "");
+    let trace = dir.join("trace.csv");
+    let out = rapid(&["run", "--quiet", "--trace", trace.to_str().expect("path"), dir.to_str().expect("path")]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = fs::read_to_string(&trace).expect("trace");
+    let header: Vec<&str> = text.lines().next().expect("header").split(',').collect();
+    let col = header.iter().position(|c| *c == "eax_b").expect("eax_b column");
+    let row = text.lines().find(|l| l.starts_with("0.576,")).expect("the row at 0.576 s");
+    let b: f64 = row.split(',').nth(col).expect("eax_b").parse().expect("number");
+    // 0.576 s: 1 ms past the middle at 180 °/s.
+    assert!((b - 90.18).abs() < 1e-6, "eax_b {b}");
+}
+
+#[test]
 fn move_ext_j_moves_the_track_while_the_arm_stands() {
     // 1000 mm at 1000 mm/s: 1.15 s, then 0.05 s settle: 1.2 s. The arm stays at 0.
     let body = format!(

@@ -2,12 +2,13 @@
 //! entry on the incoming path, with the programmed point as control point, to
 //! the zone exit on the outgoing path — in TCP space between Cartesian moves,
 //! per joint between joint moves and across a change of interpolation type or
-//! of tool.
+//! of tool, per external axis between moves of the external axes alone.
 
 use super::orient::OriZone;
 use super::path::{weighted_distance, Bezier, Metric, Point, EPS_TCP};
 use super::profile::EPS_LEN;
 use super::segment::{axis_cap, solve_at, Prepared};
+use crate::external::ExternalMove;
 use crate::{Joints, Kinematics};
 
 /// The largest turn (°) a corner path is made for; a sharper turn is close to
@@ -25,6 +26,9 @@ pub(crate) enum CornerPath {
     Tcp { curve: Bezier<3>, ori: OriZone, zone: f64 },
     /// Between joint moves, in degrees, measured in the joint metric.
     Joint { curve: Bezier<6> },
+    /// Between moves of the external axes alone: the axes' values (mm or °, weighted
+    /// by their speeds) while the arm stands at `arm`.
+    Axes { curve: Bezier<6>, arm: Joints },
 }
 
 /// A planned corner between two moves.
@@ -60,6 +64,7 @@ impl CornerPath {
                 Point::Tcp(nalgebra::Vector3::new(x, y, z), ori.at(ori.progress_corner(u, *zone)))
             }
             CornerPath::Joint { curve } => Point::Joints(curve.point(u)),
+            CornerPath::Axes { arm, .. } => Point::Joints(*arm),
         }
     }
 
@@ -68,7 +73,7 @@ impl CornerPath {
     pub(crate) fn rates(&self, v_in: f64, v_out: f64) -> (f64, f64) {
         let (d0, d1) = match self {
             CornerPath::Tcp { curve, .. } => (curve.speed(0.0), curve.speed(1.0)),
-            CornerPath::Joint { curve } => (curve.speed(0.0), curve.speed(1.0)),
+            CornerPath::Joint { curve } | CornerPath::Axes { curve, .. } => (curve.speed(0.0), curve.speed(1.0)),
         };
         let rate = |v: f64, d: f64| if d > 0.0 { v / d } else { 0.0 };
         (rate(v_in, d0), rate(v_out, d1))
@@ -78,14 +83,14 @@ impl CornerPath {
     pub(crate) fn ori_zone(&self) -> Option<OriZone> {
         match self {
             CornerPath::Tcp { ori, .. } => Some(*ori),
-            CornerPath::Joint { .. } => None,
+            CornerPath::Joint { .. } | CornerPath::Axes { .. } => None,
         }
     }
 
     fn arc_length_to(&self, u: f64) -> f64 {
         match self {
             CornerPath::Tcp { curve, .. } => curve.length_to(u),
-            CornerPath::Joint { curve } => curve.length_to(u),
+            CornerPath::Joint { curve } | CornerPath::Axes { curve, .. } => curve.length_to(u),
         }
     }
 }
@@ -101,25 +106,22 @@ struct Ends {
 
 /// The corner between `cur` and `next`, or `None` when `cur` ends in a stop
 /// point: a `fine` zone, a zone reduced to nothing, a pure reorientation on
-/// either side, a reversal, or a TCP corner that leaves the robot's reach. Between Cartesian moves with one tool the
-/// corner is a TCP parabola; across a change of interpolation type or of tool
-/// it is a joint-space parabola (§2.2.3).
+/// either side, a move of the external axes alone next to a move of the arm, a
+/// reversal, or a TCP corner that leaves the robot's reach. Between Cartesian moves
+/// with one tool the corner is a TCP parabola; across a change of interpolation type
+/// or of tool it is a joint-space parabola; between moves of the external axes alone,
+/// a parabola of the axes (§2.2.3).
 pub(crate) fn corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared) -> Option<Corner> {
     if cur.zone.is_stop() {
         return None;
     }
-    let (len_in, len_out) = (cur.limits.length, next.limits.length);
-    // The zone may use at most half the distance to either neighbour.
-    let zone = cur.zone.pzone_tcp.min(cur.room / 2.0).min(next.room / 2.0);
-    if zone.is_nan() || zone <= EPS_TCP || len_in <= EPS_LEN || len_out <= EPS_LEN {
-        return None;
-    }
-    let one_tool = same_tool(cur, next);
-    let Ends { path, s_in, s_out, scale_in, scale_out } = match (cur.geom.metric(), next.geom.metric()) {
-        (Metric::Deg, _) | (_, Metric::Deg) => return None,
-        (Metric::Mm, Metric::Mm) if one_tool => tcp_corner(cur, next, zone)?,
-        _ => joint_corner(kin, cur, next, zone)?,
+    // §2.2.3: no corner between a move of the TCP and one of the external axes alone.
+    let (ends, zone) = match (cur.axes_only, next.axes_only) {
+        (false, false) => arm_ends(kin, cur, next)?,
+        (true, true) => (axes_corner(cur, next)?, 0.0),
+        _ => return None,
     };
+    let Ends { path, s_in, s_out, scale_in, scale_out } = ends;
     let scales_ok = [scale_in, scale_out].iter().all(|k| k.is_finite() && *k > 1e-12);
     if !scales_ok {
         return None;
@@ -135,11 +137,71 @@ pub(crate) fn corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Pre
     let seeds = corner_seeds(kin, &path, cur, s_in)?;
     let by_length: Vec<(f64, Joints)> = seeds.iter().map(|(u, q)| (path.arc_length_to(*u), *q)).collect();
     cap = cap.min(axis_cap(&by_length, &cur.max_speeds));
-    if let CornerPath::Joint { curve } = &path {
+    if let CornerPath::Joint { curve } | CornerPath::Axes { curve, .. } = &path {
         cap = cap.min(joint_corner_cap(curve));
     }
     Some(Corner { path, zone, s_in, s_out, cap, acc, scale_in, scale_out, seeds })
 }
+
+/// The corner between two moves of the arm, with the position zone it uses (mm).
+fn arm_ends<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared) -> Option<(Ends, f64)> {
+    let (len_in, len_out) = (cur.limits.length, next.limits.length);
+    // The zone may use at most half the distance to either neighbour.
+    let zone = cur.zone.pzone_tcp.min(cur.room / 2.0).min(next.room / 2.0);
+    if zone.is_nan() || zone <= EPS_TCP || len_in <= EPS_LEN || len_out <= EPS_LEN {
+        return None;
+    }
+    let ends = match (cur.geom.metric(), next.geom.metric()) {
+        (Metric::Deg, _) | (_, Metric::Deg) => return None,
+        (Metric::Mm, Metric::Mm) if same_tool(cur, next) => tcp_corner(cur, next, zone)?,
+        _ => joint_corner(kin, cur, next, zone)?,
+    };
+    Some((ends, zone))
+}
+
+/// Between two moves of the external axes alone: a parabola in the axes' values
+/// from where every moving axis is within its zone of the point (zone_leax mm for a
+/// linear axis, zone_reax ° for a rotating one) to where every one has left it; each
+/// axis's zone is reduced to half its move on either side, as the position zone is.
+// uncertain: the manual (§2.2.3) has external-axis zones work like the reorientation
+// zone, but not how several axes share one corner: here it starts when the last axis
+// enters its zone and ends when the first leaves its own.
+fn axes_corner(cur: &Prepared, next: &Prepared) -> Option<Ends> {
+    let (into, out_of) = (cur.eax.as_deref()?, next.eax.as_deref()?);
+    let (mut f_in, mut f_out) = (0.5f64, 0.5f64);
+    for j in 0..6 {
+        let (d_in, d_out) = ((into.to[j] - into.from[j]).abs(), (out_of.to[j] - out_of.from[j]).abs());
+        let linear = into.linear[j] || out_of.linear[j];
+        let zone = if linear { cur.zone.zone_leax } else { cur.zone.zone_reax };
+        let zone = [d_in, d_out].into_iter().filter(|&d| d > AXIS_MOVES).fold(zone, |z, d| z.min(d / 2.0));
+        if d_in > AXIS_MOVES {
+            f_in = f_in.min(zone / d_in);
+        }
+        if d_out > AXIS_MOVES {
+            f_out = f_out.min(zone / d_out);
+        }
+    }
+    if !(f_in > EPS_LEN && f_out > EPS_LEN) {
+        return None;
+    }
+    let weights: [f64; 6] = std::array::from_fn(|j| match into.max_speed[j].max(out_of.max_speed[j]) {
+        v if v > 0.0 => 1.0 / v,
+        _ => 0.0,
+    });
+    // The corner-metric length per unit of a move's path.
+    let scale = |m: &ExternalMove, p: &Prepared| weighted_distance(&m.from, &m.to, &weights) / p.limits.length;
+    let curve = Bezier::new(into.at(1.0 - f_in), into.to, out_of.at(f_out), weights);
+    Some(Ends {
+        path: CornerPath::Axes { curve, arm: cur.end_joints },
+        s_in: cur.limits.length * (1.0 - f_in),
+        s_out: next.limits.length * f_out,
+        scale_in: scale(into, cur),
+        scale_out: scale(out_of, next),
+    })
+}
+
+/// An external axis moves when it goes further than this (mm or °).
+const AXIS_MOVES: f64 = 1e-9;
 
 fn same_tool(cur: &Prepared, next: &Prepared) -> bool {
     cur.mount.same_as(&next.mount)
@@ -229,7 +291,7 @@ fn turn_and_leg(path: &CornerPath) -> (f64, f64) {
     }
     match path {
         CornerPath::Tcp { curve, .. } => legs(curve, &[1.0; 3]),
-        CornerPath::Joint { curve } => legs(curve, &curve.weights()),
+        CornerPath::Joint { curve } | CornerPath::Axes { curve, .. } => legs(curve, &curve.weights()),
     }
 }
 
@@ -245,7 +307,7 @@ fn corner_seeds<K: Kinematics + ?Sized>(
     cur: &Prepared,
     s_in: f64,
 ) -> Option<Vec<(f64, Joints)>> {
-    if let CornerPath::Joint { .. } = path {
+    if let CornerPath::Joint { .. } | CornerPath::Axes { .. } = path {
         return Some(Vec::new());
     }
     let mut seed = nearest_seed(&cur.seeds, s_in)?;

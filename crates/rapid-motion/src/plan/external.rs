@@ -7,6 +7,7 @@
 //! A move in which the arm stands still (MoveExtJ, or a target the arm is already at)
 //! gets a path of unit length walked by the external axes alone.
 
+use super::corner::CornerPath;
 use super::data::SpeedData;
 use super::profile::{PieceLimits, EPS_LEN};
 use super::sample::{Piece, PlannedMove};
@@ -23,12 +24,13 @@ pub(crate) fn pace(
     speed: &SpeedData,
     acc_factor: f64,
 ) -> Result<(), MotionError> {
-    let limits = &mut prep.limits;
     let mut moving = ext.moving().peekable();
-    if moving.peek().is_some() && limits.length <= EPS_LEN {
+    if moving.peek().is_some() && prep.limits.length <= EPS_LEN {
         // The arm stands: the path is the external axes' own, of unit length.
-        *limits = PieceLimits { length: 1.0, cap: f64::INFINITY, acc: f64::INFINITY, dec: f64::INFINITY };
+        prep.limits = PieceLimits { length: 1.0, cap: f64::INFINITY, acc: f64::INFINITY, dec: f64::INFINITY };
+        prep.axes_only = true;
     }
+    let limits = &mut prep.limits;
     for (j, distance) in moving {
         let programmed = if ext.linear[j] { speed.v_leax } else { speed.v_reax };
         let allowed = programmed.min(ext.max_speed[j]);
@@ -87,14 +89,16 @@ impl PlannedMove {
         let (s, _) = span.profile.at(t - span.t0);
         Some(match &span.piece {
             Piece::Own { s0, .. } => track.at(s0 + s),
-            Piece::Corner(_) => match track.corner {
-                Some((from, to)) => {
-                    let len = span.profile.length;
-                    let f = if len > EPS_LEN { (s / len).clamp(0.0, 1.0) } else { 1.0 };
-                    std::array::from_fn(|j| from[j] + f * (to[j] - from[j]))
+            Piece::Corner(path) => {
+                let len = span.profile.length;
+                let f = if len > EPS_LEN { (s / len).clamp(0.0, 1.0) } else { 1.0 };
+                match (path, track.corner) {
+                    // The axes' own corner: on its parabola.
+                    (CornerPath::Axes { curve, .. }, _) => curve.point(f),
+                    (_, Some((from, to))) => std::array::from_fn(|j| from[j] + f * (to[j] - from[j])),
+                    (_, None) => track.ext.to,
                 }
-                None => track.ext.to,
-            },
+            }
         })
     }
 

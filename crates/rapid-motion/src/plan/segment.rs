@@ -69,6 +69,8 @@ pub(crate) struct Prepared {
     /// The external axes' move, when the system has external axes (boxed: moves
     /// without external axes stay small).
     pub(crate) eax: Option<Box<ExternalMove>>,
+    /// Only the external axes move (the arm stands): the path is theirs, of unit length.
+    pub(crate) axes_only: bool,
 }
 
 /// Most IK samples taken along one path to find its axis-speed limit.
@@ -203,6 +205,7 @@ impl<K: Kinematics + ?Sized> Ctx<'_, K> {
             accel: self.accel,
             max_speeds: self.max_speeds,
             eax: None,
+            axes_only: false,
         }
     }
 

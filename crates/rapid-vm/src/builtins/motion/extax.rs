@@ -185,9 +185,8 @@ const MOVE_EXT_J: super::moves::Layout = super::moves::Layout {
 
 /// `MoveExtJ`: the external axes move to ToJointPos's `extax` while the arm stands
 /// (its `robax` is not used); `v_leax`/`v_reax` and the axes' maxima set the pace.
-// uncertain: consecutive MoveExtJ fly-by points are not blended (the arm's corner
-// path has no length to blend over): the axes stop at each point, while the program
-// runs on early as after any fly-by point.
+// A fly-by point between two moves of the axes alone blends in the axes' zones; next to a
+// move of the TCP it is a stop point (§2.2.3; `rapid_motion::plan::corner`).
 pub(crate) fn move_ext_j(
     ctx: &mut crate::builtins::Ctx<'_>,
     args: &[crate::value::Value],
