@@ -528,3 +528,72 @@ fn reorientation_zone_starts_turning_before_the_corner() {
     assert!(close(turn(planned[1].start + 0.01, &planned[1]), 13.5, 1e-9));
     assert!(close(turn(planned[1].start + 0.08, &planned[1]), 45.0, 1e-9));
 }
+
+/// Reorientation without TCP movement: v_ori 100 °/s, reached in 0.1 s (1000 °/s²).
+fn turning(to: Pose, zone: ZoneData) -> MoveRequest {
+    MoveRequest { speed: speed(1000.0, 100.0), ..linear(to, 0.0, zone) }
+}
+
+/// A zone of 10° for reorientations (zone_ori); its position zone is no use to a
+/// standing TCP.
+fn ori_zone(deg: f64) -> ZoneData {
+    ZoneData {
+        finep: false,
+        pzone_tcp: 10.0,
+        pzone_ori: 15.0,
+        pzone_eax: 15.0,
+        zone_ori: deg,
+        zone_leax: 15.0,
+        zone_reax: deg,
+    }
+}
+
+const ORI_ACC: AccelLimits = AccelLimits { tcp: 1e6, ori: 1000.0, joint: [1e6; 6], settle: 0.0 };
+
+#[test]
+fn reorientations_of_a_standing_tcp_blend_in_the_orientation_zone() {
+    // §2.2.3: without TCP movement the zone is an angle. 0° → 30° → 60° about z with
+    // zone_ori 10° at 30°: a straight corner from 20° to 40° at 100 °/s, so both take
+    // what one turn of 60° takes: 60/100 + 0.1 = 0.7 s (0.8 s stopping at 30°).
+    let moves =
+        [turning(turned(0.0, 0.0, 0.0, 30.0), ori_zone(10.0)), turning(turned(0.0, 0.0, 0.0, 60.0), ZoneData::FINE)];
+    let planned = plan_all(&FAST, ORI_ACC, &moves);
+    assert_eq!(planned.len(), 2);
+    // Before the corner: 0.1 s up to speed (5°), 15° at 100 °/s: 0.25 s.
+    assert!(close(planned[0].zone_entry, 0.25, 1e-9), "entry {}", planned[0].zone_entry);
+    assert!(close(planned[0].corner_time, 0.2, 1e-9), "corner {}", planned[0].corner_time);
+    assert!(close(planned[1].end, 0.7, 1e-9), "end {}", planned[1].end);
+    // Half way through the corner the tool has turned 30°, the TCP still at the origin.
+    let mid = planned[0].sample(&FAST, 0.35);
+    assert!(close(mid.joints[3], 30.0, 1e-6) && mid.tcp.translation.vector.norm() < 1e-9, "{:?}", mid.joints);
+    assert_eq!(mid.tcp_speed, 0.0);
+}
+
+#[test]
+fn a_reorientation_corner_turning_to_another_axis() {
+    // 30° about z, then 30° about the tool's x, zone_ori 10°: the corner's legs are
+    // 10° each at 90° in rotation vectors. Its speed could reach √(1000 · 10 / sin 45°)
+    // = 119 °/s, so it is walked at 100 °/s: parameter rates 100 / 20 at both ends, 0.2 s.
+    // The moves around it as above: 0.25 s each; 0.7 s in all.
+    let second = turned(0.0, 0.0, 0.0, 30.0) * UnitQuaternion::from_euler_angles(30f64.to_radians(), 0.0, 0.0);
+    let moves = [turning(turned(0.0, 0.0, 0.0, 30.0), ori_zone(10.0)), turning(second, ZoneData::FINE)];
+    let planned = plan_all(&FAST, ORI_ACC, &moves);
+    assert!(close(planned[0].corner_time, 0.2, 1e-9), "corner {}", planned[0].corner_time);
+    assert!(close(planned[1].end, 0.7, 1e-9), "end {}", planned[1].end);
+    // Half way along the parabola: rotation vector (a + 2p + b)/4 = (2.5°, 0, −2.5°) in
+    // the tool frame at the point; the TCP stands.
+    let mid = planned[0].sample(&FAST, 0.35);
+    let at_point = turned(0.0, 0.0, 0.0, 30.0).rotation;
+    let expected = at_point * UnitQuaternion::from_scaled_axis(Vector3::new(2.5, 0.0, -2.5).map(f64::to_radians));
+    assert!(mid.tcp.rotation.angle_to(&expected) < 1e-9, "{:?}", mid.joints);
+    assert!(mid.tcp.translation.vector.norm() < 1e-9);
+}
+
+#[test]
+fn a_reorientation_next_to_a_tcp_move_stops() {
+    // §2.2.3: no corner between a move of the TCP and a reorientation without one.
+    let moves =
+        [linear(at(100.0, 0.0, 0.0), 100.0, ori_zone(10.0)), turning(turned(100.0, 0.0, 0.0, 30.0), ZoneData::FINE)];
+    let planned = plan_all(&FAST, ORI_ACC, &moves);
+    assert_eq!(planned[0].corner_time, 0.0);
+}

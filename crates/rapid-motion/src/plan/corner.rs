@@ -2,10 +2,13 @@
 //! entry on the incoming path, with the programmed point as control point, to
 //! the zone exit on the outgoing path — in TCP space between Cartesian moves,
 //! per joint between joint moves and across a change of interpolation type or
-//! of tool, per external axis between moves of the external axes alone.
+//! of tool, in rotation vectors between reorientations of a standing TCP, per
+//! external axis between moves of the external axes alone.
 
 use super::orient::OriZone;
-use super::path::{weighted_distance, Bezier, Metric, Point, EPS_TCP};
+use nalgebra::{UnitQuaternion, Vector3};
+
+use super::path::{weighted_distance, Bezier, Metric, Point, EPS_DEG, EPS_TCP};
 use super::profile::EPS_LEN;
 use super::segment::{axis_cap, solve_at, Prepared};
 use crate::external::ExternalMove;
@@ -29,6 +32,9 @@ pub(crate) enum CornerPath {
     /// Between moves of the external axes alone: the axes' values (mm or °, weighted
     /// by their speeds) while the arm stands at `arm`.
     Axes { curve: Bezier<6>, arm: Joints },
+    /// Between reorientations of a TCP standing `at`: rotation vectors (°) about the
+    /// programmed orientation `point`.
+    Ori { curve: Bezier<3>, at: Vector3<f64>, point: UnitQuaternion<f64> },
 }
 
 /// A planned corner between two moves.
@@ -65,6 +71,10 @@ impl CornerPath {
             }
             CornerPath::Joint { curve } => Point::Joints(curve.point(u)),
             CornerPath::Axes { arm, .. } => Point::Joints(*arm),
+            CornerPath::Ori { curve, at, point } => {
+                let turn = Vector3::from(curve.point(u)).map(f64::to_radians);
+                Point::Tcp(*at, point * UnitQuaternion::from_scaled_axis(turn))
+            }
         }
     }
 
@@ -72,7 +82,7 @@ impl CornerPath {
     /// the entry and `v_out` at the exit: |dB/du| is twice each leg.
     pub(crate) fn rates(&self, v_in: f64, v_out: f64) -> (f64, f64) {
         let (d0, d1) = match self {
-            CornerPath::Tcp { curve, .. } => (curve.speed(0.0), curve.speed(1.0)),
+            CornerPath::Tcp { curve, .. } | CornerPath::Ori { curve, .. } => (curve.speed(0.0), curve.speed(1.0)),
             CornerPath::Joint { curve } | CornerPath::Axes { curve, .. } => (curve.speed(0.0), curve.speed(1.0)),
         };
         let rate = |v: f64, d: f64| if d > 0.0 { v / d } else { 0.0 };
@@ -83,13 +93,13 @@ impl CornerPath {
     pub(crate) fn ori_zone(&self) -> Option<OriZone> {
         match self {
             CornerPath::Tcp { ori, .. } => Some(*ori),
-            CornerPath::Joint { .. } | CornerPath::Axes { .. } => None,
+            CornerPath::Joint { .. } | CornerPath::Axes { .. } | CornerPath::Ori { .. } => None,
         }
     }
 
     fn arc_length_to(&self, u: f64) -> f64 {
         match self {
-            CornerPath::Tcp { curve, .. } => curve.length_to(u),
+            CornerPath::Tcp { curve, .. } | CornerPath::Ori { curve, .. } => curve.length_to(u),
             CornerPath::Joint { curve } | CornerPath::Axes { curve, .. } => curve.length_to(u),
         }
     }
@@ -105,12 +115,13 @@ struct Ends {
 }
 
 /// The corner between `cur` and `next`, or `None` when `cur` ends in a stop
-/// point: a `fine` zone, a zone reduced to nothing, a pure reorientation on
-/// either side, a move of the external axes alone next to a move of the arm, a
-/// reversal, or a TCP corner that leaves the robot's reach. Between Cartesian moves
-/// with one tool the corner is a TCP parabola; across a change of interpolation type
-/// or of tool it is a joint-space parabola; between moves of the external axes alone,
-/// a parabola of the axes (§2.2.3).
+/// point: a `fine` zone, a zone reduced to nothing, a reorientation of a standing
+/// TCP or a move of the external axes alone next to a move of the TCP, a reversal,
+/// or a TCP corner that leaves the robot's reach. Between Cartesian moves with one
+/// tool the corner is a TCP parabola; across a change of interpolation type or of
+/// tool it is a joint-space parabola; between reorientations of a standing TCP, a
+/// parabola of the orientation; between moves of the external axes alone, a
+/// parabola of the axes (§2.2.3).
 pub(crate) fn corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared) -> Option<Corner> {
     if cur.zone.is_stop() {
         return None;
@@ -146,6 +157,9 @@ pub(crate) fn corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Pre
 /// The corner between two moves of the arm, with the position zone it uses (mm).
 fn arm_ends<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared) -> Option<(Ends, f64)> {
     let (len_in, len_out) = (cur.limits.length, next.limits.length);
+    if let (Metric::Deg, Metric::Deg) = (cur.geom.metric(), next.geom.metric()) {
+        return Some((ori_corner(cur, next)?, 0.0));
+    }
     // The zone may use at most half the distance to either neighbour.
     let zone = cur.zone.pzone_tcp.min(cur.room / 2.0).min(next.room / 2.0);
     if zone.is_nan() || zone <= EPS_TCP || len_in <= EPS_LEN || len_out <= EPS_LEN {
@@ -198,6 +212,32 @@ fn axes_corner(cur: &Prepared, next: &Prepared) -> Option<Ends> {
         scale_in: scale(into, cur),
         scale_out: scale(out_of, next),
     })
+}
+
+/// Between two reorientations of a standing TCP: §2.2.3, without TCP movement the zone
+/// is an angle (zone_ori), reduced to half of either reorientation like the position
+/// zone. The orientation goes from `zone` before the point to `zone` after it on a
+/// parabola of rotation vectors about the point's orientation: at its ends it turns
+/// about the moves' own axes at their own speeds.
+// uncertain: the shape of the controller's blend of orientations is not published.
+fn ori_corner(cur: &Prepared, next: &Prepared) -> Option<Ends> {
+    let (len_in, len_out) = (cur.limits.length, next.limits.length);
+    let zone = cur.zone.zone_ori.min(len_in / 2.0).min(len_out / 2.0);
+    if zone.is_nan() || zone <= EPS_DEG || !same_tool(cur, next) {
+        return None;
+    }
+    let (Point::Tcp(_, from), Point::Tcp(at, point), Point::Tcp(_, to)) =
+        (cur.geom.at(len_in - zone), cur.geom.at(len_in), next.geom.at(zone))
+    else {
+        return None;
+    };
+    let about_point = |r: UnitQuaternion<f64>| {
+        let v = (point.inverse() * r).scaled_axis().map(f64::to_degrees);
+        [v.x, v.y, v.z]
+    };
+    let curve = Bezier::new(about_point(from), [0.0; 3], about_point(to), [1.0; 3]);
+    let path = CornerPath::Ori { curve, at, point };
+    Some(Ends { path, s_in: len_in - zone, s_out: zone, scale_in: 1.0, scale_out: 1.0 })
 }
 
 /// An external axis moves when it goes further than this (mm or °).
@@ -290,7 +330,7 @@ fn turn_and_leg(path: &CornerPath) -> (f64, f64) {
         (turn, n1.min(n2))
     }
     match path {
-        CornerPath::Tcp { curve, .. } => legs(curve, &[1.0; 3]),
+        CornerPath::Tcp { curve, .. } | CornerPath::Ori { curve, .. } => legs(curve, &[1.0; 3]),
         CornerPath::Joint { curve } | CornerPath::Axes { curve, .. } => legs(curve, &curve.weights()),
     }
 }

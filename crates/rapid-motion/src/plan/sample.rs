@@ -106,8 +106,8 @@ impl PlannedMove {
             Piece::Corner(path) => match path {
                 CornerPath::Tcp { curve, .. } => v * curve.speed(s),
                 CornerPath::Joint { .. } => v * self.tcp_per_unit(kin, span, s, &seed),
-                // The TCP stands while the external axes blend.
-                CornerPath::Axes { .. } => 0.0,
+                // The TCP stands while the external axes or the orientation blend.
+                CornerPath::Axes { .. } | CornerPath::Ori { .. } => 0.0,
             },
             Piece::Own { geom, .. } => match geom.metric() {
                 Metric::Mm => v,
