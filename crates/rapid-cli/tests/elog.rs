@@ -195,3 +195,29 @@ fn an_entry_from_a_module_loaded_at_run_time_names_its_rapid_path() {
     });
     assert_eq!(program_entries(&dir), [expected]);
 }
+
+#[test]
+fn corner_path_failures_are_logged_at_their_moves_unless_warnings_are_off() {
+    // Line 4's fly-by point waits through WaitTime: it is run as a stop point, and the
+    // next move (line 6) finds it so: a warning at line 4. Line 6's point fails the
+    // same way while CornerPathWarning is FALSE: counted, not logged. Line 9's point is
+    // met in time. The program ends on line 11's fly-by point: a warning at line 11.
+    let program = "MODULE m\n  PROC main()\n    MoveAbsJ [[0,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    \
+                   MoveL Offs(CRobT(), 0, 50, 0), v1000, z10, tool0;\n    WaitTime 0.5;\n    \
+                   MoveL Offs(CRobT(), 0, 50, 0), v1000, z10, tool0;\n    CornerPathWarning FALSE;\n    \
+                   WaitTime 0.5;\n    MoveL Offs(CRobT(), 0, -50, 0), v1000, z10, tool0;\n    \
+                   CornerPathWarning TRUE;\n    MoveL Offs(CRobT(), 0, -50, 0), v1000, z10, tool0;\n  ENDPROC\nENDMODULE\n";
+    let dir = fresh_dir("corner_path_failures");
+    let out = run(&dir, program, &[]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("3 corner path failure(s)"));
+    let logged: Vec<Value> = program_entries(&dir).into_iter().filter(|e| e["code"] == 50024).collect();
+    let places: Vec<(Value, Value, Value, Value)> = logged
+        .iter()
+        .map(|e| (e["type"].clone(), e["title"].clone(), e["routine"].clone(), e["line"].clone()))
+        .collect();
+    let warning = |line: u64| (json!("warning"), json!("Corner path failure"), json!("main"), json!(line));
+    assert_eq!(places, vec![warning(4), warning(11)]);
+    // Line 4's failure is found when line 6 gives the next move, after the 0.5 s wait.
+    assert!(logged[0]["time"].as_f64().expect("time") > 0.5);
+}

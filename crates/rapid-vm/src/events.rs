@@ -12,6 +12,8 @@ pub const USER_DOMAIN: u32 = 8;
 pub const PROGRAM_DOMAIN: u32 = 4;
 /// The operational domain (OP_STATE): state changes of the controller and its tasks.
 pub const OPERATIONAL_DOMAIN: u32 = 1;
+/// The motion domain (MOTION): what the motion system reports (corner path failures).
+pub const MOTION_DOMAIN: u32 = 5;
 
 /// Operational state changes `rapid run` logs, as (number, title): the event code is
 /// the domain × 10000 + the number (10002, 10150, 10151).

@@ -153,6 +153,8 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     let program_end = loaded.vm.time;
     let resources = loaded.vm.resources_mut();
     let cycle = crate::motion_out::finish(resources, program_end, "T_ROB1", model_note.as_deref(), args)?;
+    // The last fly-by point, if the program ended on one, became a stop point.
+    loaded.vm.log_corner_failures();
     // The run is over: the robot leaves the task for the trace and the report.
     let robot = std::mem::take(&mut loaded.vm.resources_mut().robot);
     let sources = |file: usize| inputs.modules.get(file).or_else(|| loaded.vm.program_source(file));

@@ -158,6 +158,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         let name = task.spec.name.clone();
         let resources = task.loaded.vm.resources_mut();
         cycle = cycle.max(crate::motion_out::finish(resources, program_end, &name, model_note.as_deref(), args)?);
+        task.loaded.vm.log_corner_failures();
     }
     write_motion_outputs(&mut controller, &tasks, cycle, args)?;
     if controller.tasks.iter_mut().any(|task| task.loaded.vm.resources_mut().controller.warm_start) {

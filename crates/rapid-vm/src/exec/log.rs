@@ -3,6 +3,9 @@
 //! happened.
 
 use super::{Exit, Frame, Vm};
+
+/// The motion event of a fly-by point run as a stop point: (number, title).
+const CORNER_PATH_FAILURE: (u32, &str) = (24, "Corner path failure");
 use crate::error::RapidError;
 
 impl Vm {
@@ -38,6 +41,42 @@ impl Vm {
             lines: vec![format!("routine {}", place.routine)],
             place: Some(place),
         })
+    }
+
+    /// The motion warning for each fly-by point that became a stop point since the last
+    /// look (the robot had to stop there: the next move came too late), placed at the
+    /// move that programmed it; `CornerPathWarning FALSE` keeps them out of the log.
+    // uncertain: number and title as we remember RobotWare 6's event log (50024 "Corner
+    // path failure"); the message line is ours.
+    pub fn log_corner_failures(&mut self) {
+        let failures = std::mem::take(&mut self.resources.robot.corner_failures);
+        if !self.resources.motion.settings.corner_path_warning {
+            return;
+        }
+        for place in failures {
+            let place = place.map(|(file, span)| crate::events::EventPlace {
+                routine: self.routine_holding(file, span).unwrap_or_default(),
+                file,
+                span,
+            });
+            self.events.push(crate::events::Event {
+                seq: 0,
+                domain: crate::events::MOTION_DOMAIN,
+                number: CORNER_PATH_FAILURE.0,
+                kind: crate::events::EventKind::Warning,
+                time: self.time,
+                title: CORNER_PATH_FAILURE.1.to_string(),
+                lines: vec!["The fly-by point was run as a stop point: no next move was ready in time.".to_string()],
+                place,
+            });
+        }
+    }
+
+    /// The name of the routine whose code in `file` holds the statement at `span`.
+    fn routine_holding(&self, file: usize, span: rapid_syntax::Span) -> Option<String> {
+        let holds =
+            |c: &&std::rc::Rc<crate::ir::Code>| c.file == file && c.span.start <= span.start && span.end <= c.span.end;
+        self.routines.iter().flatten().find(holds).map(|c| c.name.clone())
     }
 
     /// Where `frame` is: its routine and the statement at its PC (for a caller, its call).

@@ -730,6 +730,9 @@ impl Vm {
                 self.events.place_since(first_event, &Self::place_of(frame));
             }
         }
+        if !self.resources.robot.corner_failures.is_empty() {
+            self.log_corner_failures();
+        }
         let res = res?;
         if reset {
             if let Some(frame) = self.frames.last_mut() {

@@ -615,15 +615,16 @@ pub(crate) fn wait_rob(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     Ok(None)
 }
 
-/// While a trace or report is recorded: what the move about to be given is (its
-/// instruction and place, programmed point, zone, frames), for the outputs. Nothing
-/// is computed or allocated otherwise.
+/// Where the move about to be given is programmed (for the event of a corner path
+/// failure), and while a trace or report is recorded what it is (its instruction,
+/// programmed point, zone, frames), for the outputs; nothing is allocated otherwise.
 pub(super) fn note_facts(ctx: &mut Ctx<'_>, request: &MoveRequest, chain: &rapid_motion::frames::FrameChain) {
     use rapid_motion::Kinematics as _;
+    let (instruction, file, span) = instruction_here(ctx);
+    ctx.resources.robot.next_place = Some((file, span));
     if ctx.resources.robot.recorded.is_none() {
         return;
     }
-    let (instruction, file, span) = instruction_here(ctx);
     let robot = &mut ctx.resources.robot;
     let point = match request.target {
         Target::Joints(joints) => chain.tcp_in_world(&robot.kin.forward(&joints)),

@@ -14,6 +14,7 @@ use rapid_motion::kinematics::Opw;
 use rapid_motion::plan::{AccelLimits, MoveRequest, PlannedMove, Planner};
 use rapid_motion::robots::{default_model, RobotModel};
 use rapid_motion::{Joints, Kinematics, MotionError};
+use rapid_syntax::Span;
 
 /// How long before the robot would brake for a fly-by point the program goes on to
 /// plan the next move (§2.3: "about 0.1 s" to plan the next move).
@@ -109,6 +110,14 @@ impl MoveFacts {
 /// The step path distances are measured at, s.
 const DISTANCE_STEP: f64 = 0.001;
 
+/// What waits with a move until it is final: its path events and where it was
+/// programmed.
+#[derive(Debug, Default, Clone)]
+pub struct Queued {
+    pub(super) events: Vec<PathEvent>,
+    place: Option<(usize, Span)>,
+}
+
 /// The robot of a motion task.
 pub struct RobotState {
     pub model: &'static RobotModel,
@@ -135,10 +144,16 @@ pub struct RobotState {
     pub moves: u64,
     /// Fly-by points the robot had to stop at.
     pub corner_path_failures: u64,
+    /// Where the moves whose fly-by point became a stop point were programmed (file,
+    /// statement), for the event log: taken by the VM after each built-in.
+    pub corner_failures: Vec<Option<(usize, Span)>>,
+    /// Where the next move given is programmed (set by the move instruction just
+    /// before [`RobotState::push`]).
+    pub next_place: Option<(usize, Span)>,
     /// The SearchL under way.
     pub search: Option<super::search::Search>,
-    /// The path events of each move given and not yet final, oldest first.
-    pub(super) events: VecDeque<Vec<PathEvent>>,
+    /// What waits with each move given and not yet final, oldest first.
+    pub(super) events: VecDeque<Queued>,
     /// Path events whose time is known: (controller time, action).
     pub due: Vec<(f64, Action)>,
     /// The triggers TriggIO, TriggEquip and TriggInt defined (triggdata holds an index).
@@ -201,6 +216,8 @@ impl RobotState {
             motion_end: 0.0,
             moves: 0,
             corner_path_failures: 0,
+            corner_failures: Vec::new(),
+            next_place: None,
             search: None,
             events: VecDeque::new(),
             due: Vec::new(),
@@ -269,7 +286,7 @@ impl RobotState {
             // Only the base path is recorded; level 2's moves (and the recorder's own) are not.
             self.path_rec.note(from, request, eax_from != self.planner.end_eax());
         }
-        self.events.push_back(events);
+        self.events.push_back(Queued { events, place: self.next_place.take() });
         if self.recorded.is_some() {
             self.pending_facts.push_back(facts);
         }
@@ -311,7 +328,7 @@ impl RobotState {
     /// (TriggL \Start on a slow weld seam).
     fn place_early_events(&mut self) {
         let Some((provisional, braking)) = self.planner.provisional() else { return };
-        let Some(events) = self.events.back_mut() else { return };
+        let Some(Queued { events, .. }) = self.events.back_mut() else { return };
         // The trigger family lays its own events (ramps, TriggSpeed, checks) out on the
         // final move: those wait for it.
         let early = |e: &PathEvent| matches!(e.at, At::AfterStart(_)) && !matches!(e.action, Action::Special(_));
@@ -331,16 +348,17 @@ impl RobotState {
                 later.push(event);
             }
         }
-        if let Some(events) = self.events.back_mut() {
-            *events = later;
+        if let Some(queued) = self.events.back_mut() {
+            queued.events = later;
         }
     }
 
     pub(super) fn finish(&mut self, planned: PlannedMove) {
+        let Queued { events, place } = self.events.pop_front().unwrap_or_default();
         if planned.corner_path_failure {
             self.corner_path_failures += 1;
+            self.corner_failures.push(place);
         }
-        let events = self.events.pop_front().unwrap_or_default();
         let mut specials = Vec::new();
         if !events.is_empty() {
             // The point: the middle of the corner path; at a stop point, when the robot

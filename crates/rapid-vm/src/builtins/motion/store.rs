@@ -16,7 +16,7 @@ use rapid_motion::Joints;
 
 use super::super::Ctx;
 use super::pause::{pause_at, Pause};
-use super::robot::{Action, PathEvent, RobotState};
+use super::robot::{Action, Queued, RobotState};
 use crate::error::RapidError;
 use crate::value::Value;
 
@@ -31,7 +31,7 @@ pub struct Stored {
     pause: Pause,
     /// The planner with the base path's move still waiting for its successor.
     planner: Planner,
-    events: VecDeque<Vec<PathEvent>>,
+    events: VecDeque<Queued>,
     /// The base path's moves not done at `since`, whole (their times unshifted), and
     /// their copies in the trace.
     rest: Vec<PlannedMove>,
