@@ -322,3 +322,26 @@ fn a_paused_move_and_a_search_stopped_at_its_hit_keep_their_lines() {
     let x: f64 = last[7].parse().expect("x");
     assert!((x - 346.5).abs() < 0.5, "{x}");
 }
+
+#[test]
+fn a_corner_where_the_tcp_stands_says_what_it_blended() {
+    // Two turns of the tool about its z axis with z50 between (§2.2.3: the zone is an
+    // angle when the TCP stands), then a stop: the first move's corner blended the
+    // orientation, not the position zone.
+    let dir = scratch("standing_corner");
+    let module = "MODULE m\n  PROC main()\n    VAR robtarget p0;\n    VAR robtarget p;\n    \
+                  MoveAbsJ [[0,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    \
+                  p0 := CRobT(\\Tool:=tool0);\n    p := p0;\n    p.rot := p0.rot * OrientZYX(30, 0, 0);\n    \
+                  MoveL p, v1000, z50, tool0;\n    p.rot := p0.rot * OrientZYX(60, 0, 0);\n    \
+                  MoveL p, v1000, fine, tool0;\n  ENDPROC\nENDMODULE\n";
+    std::fs::write(dir.join("m.mod"), module).expect("module");
+    let out = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .current_dir(&dir)
+        .args(["run", "--quiet", "--report", "r.html", "m.mod"])
+        .output()
+        .expect("run rapid");
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let page = std::fs::read_to_string(dir.join("r.html")).expect("the report");
+    assert!(table_row(&page, 2).contains(&"z 50 mm (orientation corner)".to_string()), "{:?}", table_row(&page, 2));
+    assert!(table_row(&page, 3).contains(&"fine".to_string()), "{:?}", table_row(&page, 3));
+}

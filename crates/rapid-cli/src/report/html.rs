@@ -81,6 +81,15 @@ fn summary(page: &mut String, out: &RunOutputs<'_>) {
     }
 }
 
+/// What a corner blended while the TCP stood, for the table of moves.
+fn standing_corner(kind: Option<rapid_motion::plan::CornerKind>) -> Option<&'static str> {
+    match kind? {
+        rapid_motion::plan::CornerKind::Orientation => Some("orientation"),
+        rapid_motion::plan::CornerKind::ExternalAxes => Some("external axes"),
+        _ => None,
+    }
+}
+
 /// The table of moves: one row per move (at most [`MAX_MOVES`], with a note when cut).
 fn moves_table(page: &mut String, out: &RunOutputs<'_>, places: &[String]) {
     let facts = &out.robot.recorded_facts;
@@ -88,6 +97,9 @@ fn moves_table(page: &mut String, out: &RunOutputs<'_>, places: &[String]) {
         let place = places.get(i).map_or("", String::as_str);
         let zone = if f.fine {
             "fine".to_string()
+        } else if let Some(what) = standing_corner(f.corner) {
+            // The TCP stood: the corner was not in its position zone.
+            format!("z {} mm ({what} corner)", trim(f.zone))
         } else if (f.zone_used - f.zone).abs() > 0.05 {
             format!("z {} mm (used {:.1})", trim(f.zone), f.zone_used)
         } else {

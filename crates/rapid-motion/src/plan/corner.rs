@@ -60,7 +60,29 @@ pub(crate) struct Corner {
     pub(crate) seeds: Vec<(f64, Joints)>,
 }
 
+/// What a corner path blends, for those who show it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CornerKind {
+    /// The TCP's position (pzone_tcp).
+    Tcp,
+    /// The axes, in joint space (a change of interpolation or of tool).
+    Joint,
+    /// The orientation of a standing TCP (zone_ori).
+    Orientation,
+    /// The external axes, the arm standing (zone_leax, zone_reax).
+    ExternalAxes,
+}
+
 impl CornerPath {
+    pub(crate) fn kind(&self) -> CornerKind {
+        match self {
+            CornerPath::Tcp { .. } => CornerKind::Tcp,
+            CornerPath::Joint { .. } => CornerKind::Joint,
+            CornerPath::Ori { .. } => CornerKind::Orientation,
+            CornerPath::Axes { .. } => CornerKind::ExternalAxes,
+        }
+    }
+
     /// The point at curve parameter `u` (0 to 1).
     pub(crate) fn at(&self, u: f64) -> Point {
         let u = if u.is_finite() { u.clamp(0.0, 1.0) } else { 0.0 };

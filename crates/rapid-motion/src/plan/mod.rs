@@ -65,6 +65,7 @@ mod profile;
 mod sample;
 mod segment;
 
+pub use corner::CornerKind;
 pub use correct::path_frame;
 pub use data::{CircleOri, MotionSettings, SpeedData, ZoneData};
 pub use limits::AccelLimits;

@@ -85,6 +85,14 @@ pub(crate) enum Piece {
 }
 
 impl PlannedMove {
+    /// What the move's corner path blends, when it ends in one.
+    pub fn corner_kind(&self) -> Option<super::CornerKind> {
+        self.spans.iter().find_map(|span| match &span.piece {
+            Piece::Corner(path) => Some(path.kind()),
+            Piece::Own { .. } => None,
+        })
+    }
+
     /// How long the move takes, s.
     pub fn duration(&self) -> f64 {
         self.end - self.start

@@ -642,6 +642,7 @@ pub(super) fn note_facts(ctx: &mut Ctx<'_>, request: &MoveRequest, chain: &rapid
         end: 0.0,
         zone_used: 0.0,
         corner_path_failure: false,
+        corner: None,
     });
 }
 

@@ -86,6 +86,8 @@ pub struct MoveFacts {
     pub end: f64,
     pub zone_used: f64,
     pub corner_path_failure: bool,
+    /// What its corner path blended, when it flew by its point.
+    pub corner: Option<rapid_motion::plan::CornerKind>,
 }
 
 impl MoveFacts {
@@ -103,6 +105,7 @@ impl MoveFacts {
             end: 0.0,
             zone_used: 0.0,
             corner_path_failure: false,
+            corner: None,
         }
     }
 }
@@ -394,6 +397,7 @@ impl RobotState {
             facts.end = planned.end;
             facts.zone_used = planned.zone;
             facts.corner_path_failure = planned.corner_path_failure;
+            facts.corner = planned.corner_kind();
             self.recorded_facts.push(facts);
         }
         self.ahead.push_back(planned);
