@@ -597,3 +597,17 @@ fn a_reorientation_next_to_a_tcp_move_stops() {
     let planned = plan_all(&FAST, ORI_ACC, &moves);
     assert_eq!(planned[0].corner_time, 0.0);
 }
+
+#[test]
+fn a_zone_that_is_no_positive_number_is_a_stop_point() {
+    // NaN and negative zones leave no room for a corner (f64::min would pass a NaN by
+    // and take half the neighbour distance instead).
+    for bad in [f64::NAN, -5.0] {
+        let moves =
+            [turning(turned(0.0, 0.0, 0.0, 30.0), ori_zone(bad)), turning(turned(0.0, 0.0, 0.0, 60.0), ZoneData::FINE)];
+        assert_eq!(plan_all(&FAST, ORI_ACC, &moves)[0].corner_time, 0.0, "zone_ori {bad}");
+        let zone = ZoneData { pzone_tcp: bad, ..ori_zone(10.0) };
+        let moves = [linear(at(100.0, 0.0, 0.0), 100.0, zone), linear(at(100.0, 100.0, 0.0), 100.0, ZoneData::FINE)];
+        assert_eq!(plan_all(&FAST, accel(10_000.0), &moves)[0].corner_time, 0.0, "pzone_tcp {bad}");
+    }
+}

@@ -182,8 +182,10 @@ fn arm_ends<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared) ->
     if let (Metric::Deg, Metric::Deg) = (cur.geom.metric(), next.geom.metric()) {
         return Some((ori_corner(cur, next)?, 0.0));
     }
-    // The zone may use at most half the distance to either neighbour.
-    let zone = cur.zone.pzone_tcp.min(cur.room / 2.0).min(next.room / 2.0);
+    // The zone may use at most half the distance to either neighbour (a zone that is
+    // no positive number, which `min` would pass by, is none).
+    let programmed = if cur.zone.pzone_tcp > 0.0 { cur.zone.pzone_tcp } else { 0.0 };
+    let zone = programmed.min(cur.room / 2.0).min(next.room / 2.0);
     if zone.is_nan() || zone <= EPS_TCP || len_in <= EPS_LEN || len_out <= EPS_LEN {
         return None;
     }
@@ -209,6 +211,8 @@ fn axes_corner(cur: &Prepared, next: &Prepared) -> Option<Ends> {
         let (d_in, d_out) = ((into.to[j] - into.from[j]).abs(), (out_of.to[j] - out_of.from[j]).abs());
         let linear = into.linear[j] || out_of.linear[j];
         let zone = if linear { cur.zone.zone_leax } else { cur.zone.zone_reax };
+        // A zone that is no positive number leaves no room (`min` would pass a NaN by).
+        let zone = if zone > 0.0 { zone } else { 0.0 };
         let zone = [d_in, d_out].into_iter().filter(|&d| d > AXIS_MOVES).fold(zone, |z, d| z.min(d / 2.0));
         if d_in > AXIS_MOVES {
             f_in = f_in.min(zone / d_in);
@@ -244,7 +248,9 @@ fn axes_corner(cur: &Prepared, next: &Prepared) -> Option<Ends> {
 // uncertain: the shape of the controller's blend of orientations is not published.
 fn ori_corner(cur: &Prepared, next: &Prepared) -> Option<Ends> {
     let (len_in, len_out) = (cur.limits.length, next.limits.length);
-    let zone = cur.zone.zone_ori.min(len_in / 2.0).min(len_out / 2.0);
+    // `min` would pass a NaN zone by: it must be a positive number first.
+    let programmed = if cur.zone.zone_ori > 0.0 { cur.zone.zone_ori } else { 0.0 };
+    let zone = programmed.min(len_in / 2.0).min(len_out / 2.0);
     if zone.is_nan() || zone <= EPS_DEG || !same_tool(cur, next) {
         return None;
     }
