@@ -131,6 +131,20 @@ impl Kinematics for Opw {
     }
 }
 
+/// `x.rem_euclid(m)` (for `m > 0`), without fmod when `x` is less than one `m` from
+/// zero, which is nearly always: the same bits, since fmod is exact there. The
+/// inverse kinematics wraps some thirty angles per solution.
+#[inline]
+pub(crate) fn wrap(x: f64, m: f64) -> f64 {
+    if (0.0..m).contains(&x) {
+        x
+    } else if x < 0.0 && x > -m {
+        x + m
+    } else {
+        x.rem_euclid(m)
+    }
+}
+
 /// The seed with any value that is not a number read as 0°, so comparisons with it
 /// stay meaningful.
 pub(crate) fn finite_seed(seed: &Joints) -> Joints {
@@ -174,6 +188,21 @@ mod tests {
                 assert!((back.translation.vector - flange.translation.vector).norm() < 1e-6);
                 assert!(back.rotation.angle_to(&flange.rotation) < 1e-9);
             }
+        }
+    }
+
+    #[test]
+    fn wrap_gives_the_bits_rem_euclid_gives() {
+        let m = 360.0;
+        let xs =
+            [0.0, -0.0, 1e-300, -1e-300, 359.999_999_999_999_94, -359.999_999_999_999_94, 360.0, -360.0, 725.5, -725.5];
+        for x in xs.into_iter().chain((-2000..2000).map(|i| i as f64 * 0.731)) {
+            assert_eq!(wrap(x, m).to_bits(), x.rem_euclid(m).to_bits(), "{x}");
+        }
+        assert!(wrap(f64::NAN, m).is_nan());
+        let tau = std::f64::consts::TAU;
+        for x in (-400..400).map(|i| i as f64 * 0.0173) {
+            assert_eq!(wrap(x, tau).to_bits(), x.rem_euclid(tau).to_bits(), "{x}");
         }
     }
 

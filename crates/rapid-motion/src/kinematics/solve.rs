@@ -88,7 +88,7 @@ pub(super) fn seeded(p: &OpwParams, flange: &Pose, seed: &Joints, limits: &[(f64
 /// How far angle `q` (radians) is from `seed` (degrees), modulo a turn: a lower bound
 /// of the move to any turn of `q`.
 fn wrapped_deg(q: f64, seed: f64) -> f64 {
-    let d = (q.to_degrees() - seed).rem_euclid(360.0);
+    let d = super::wrap(q.to_degrees() - seed, 360.0);
     d.min(360.0 - d)
 }
 
@@ -172,7 +172,7 @@ fn wrist_angles(w: &Matrix3<f64>, seed: Option<&Joints>) -> [(bool, [f64; 3]); 2
 
 /// The angle in (−π, π].
 fn principal(q: f64) -> f64 {
-    let r = q.rem_euclid(2.0 * PI);
+    let r = super::wrap(q, 2.0 * PI);
     if r > PI {
         r - 2.0 * PI
     } else {

@@ -118,7 +118,7 @@ pub fn nearest_within_limits(
 
 /// The largest single-axis angle between two joint sets, each axis taken modulo 360°.
 fn wrapped_distance(joints: &Joints, seed: &Joints) -> f64 {
-    joints.iter().zip(seed).map(|(a, b)| ((a - b).rem_euclid(360.0)).min((b - a).rem_euclid(360.0))).fold(0.0, f64::max)
+    joints.iter().zip(seed).map(|(a, b)| super::wrap(a - b, 360.0).min(super::wrap(b - a, 360.0))).fold(0.0, f64::max)
 }
 
 #[cfg(test)]
