@@ -62,6 +62,20 @@ fn run(dir: &Path) -> (String, String, Option<i32>) {
     )
 }
 
+/// Runs the project with `--trace`: what it printed and the trace's text.
+fn run_traced(dir: &Path) -> (String, String) {
+    let trace = dir.join("trace.csv");
+    let out = rapid(&["run", "--quiet", "--trace", trace.to_str().expect("path"), dir.to_str().expect("path")]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    (String::from_utf8_lossy(&out.stdout).into_owned(), fs::read_to_string(&trace).expect("trace"))
+}
+
+/// The fields of the trace row at `time`, spelled as the trace spells it ("0.576").
+fn trace_row<'t>(trace: &'t str, time: &str) -> Vec<&'t str> {
+    let row = trace.lines().find(|l| l.strip_prefix(time).is_some_and(|rest| rest.starts_with(',')));
+    row.unwrap_or_else(|| panic!("no trace row at {time} s")).split(',').collect()
+}
+
 /// Prints the time and the track's and turntable's values.
 const SHOW: &str = "    jt := CJointT();\n    TPWrite \"t \" \\Num:=ClkRead(c);\n    \
                     TPWrite \"a \" \\Num:=jt.extax.eax_a;\n    TPWrite \"b \" \\Num:=jt.extax.eax_b;\n";
@@ -76,18 +90,11 @@ fn move_ext_j_fly_by_points_blend() {
         "    MoveExtJ [[0,0,0,0,0,0],[9E9,90,9E9,9E9,9E9,9E9]], v1000, z100;\n    \
          MoveExtJ [[0,0,0,0,0,0],[9E9,180,9E9,9E9,9E9,9E9]], v1000, fine;\n{SHOW}"
     );
-    let (stdout, stderr, code) = run(&project("move_ext_j_blend", "", &body, ""));
-    assert_eq!(code, Some(0), "{stderr}");
+    let (stdout, text) = run_traced(&project("move_ext_j_blend", "", &body, ""));
     assert_eq!(stdout, "t 1.2\na 0\nb 180\n");
-    let dir = project("move_ext_j_blend_trace", "", &body, "");
-    let trace = dir.join("trace.csv");
-    let out = rapid(&["run", "--quiet", "--trace", trace.to_str().expect("path"), dir.to_str().expect("path")]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let text = fs::read_to_string(&trace).expect("trace");
     let header: Vec<&str> = text.lines().next().expect("header").split(',').collect();
     let col = header.iter().position(|c| *c == "eax_b").expect("eax_b column");
-    let row = text.lines().find(|l| l.starts_with("0.576,")).expect("the row at 0.576 s");
-    let b: f64 = row.split(',').nth(col).expect("eax_b").parse().expect("number");
+    let b: f64 = trace_row(&text, "0.576")[col].parse().expect("number");
     // 0.576 s: 1 ms past the middle at 180 °/s.
     assert!((b - 90.18).abs() < 1e-6, "eax_b {b}");
 }
@@ -196,16 +203,12 @@ fn get_next_mech_unit_lists_the_robot_then_the_external_units() {
 #[test]
 fn the_trace_has_a_column_per_external_axis() {
     let dir = project("trace", "", "    MoveExtJ [[0,0,0,0,0,0],[1000,-90,9E9,9E9,9E9,9E9]], v1000, fine;\n", "");
-    let trace = dir.join("trace.csv");
-    let out = rapid(&["run", "--quiet", "--trace", trace.to_str().unwrap(), dir.to_str().unwrap()]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let text = fs::read_to_string(&trace).expect("trace");
+    let (_, text) = run_traced(&dir);
     let header: Vec<&str> = text.lines().next().expect("header").split(',').collect();
     assert_eq!(header[header.len() - 3..], ["eax_a", "eax_b", "line"]);
     // At 0.592 s the track has ramped up (75 mm in 0.15 s) and cruised 0.442 s at
     // 1000 mm/s: 517 mm; the turntable keeps pace on the same profile: -90 · 0.517.
-    let row = text.lines().find(|l| l.starts_with("0.592,")).expect("row at 0.592 s");
-    let fields: Vec<&str> = row.split(',').collect();
+    let fields = trace_row(&text, "0.592");
     assert_eq!(fields[fields.len() - 3], "517.000");
     assert_eq!(fields[fields.len() - 2], "-46.530");
 }
@@ -293,19 +296,12 @@ fn a_turntable_carries_its_work_object_and_the_robot_follows() {
 ENDMODULE
 ";
     fs::write(dir.join("main.mod"), module).expect("module");
-    let trace = dir.join("trace.csv");
-    let out = rapid(&["run", "--quiet", "--trace", trace.to_str().unwrap(), dir.to_str().unwrap()]);
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
-    assert_eq!(
-        String::from_utf8_lossy(&out.stdout),
-        "t 1.7\nworld [400,-100,400]\nrel [-100,0,200]\nt 2.26\nworld [350,-100,400]\n"
-    );
+    let (stdout, text) = run_traced(&dir);
+    assert_eq!(stdout, "t 1.7\nworld [400,-100,400]\nrel [-100,0,200]\nt 2.26\nworld [350,-100,400]\n");
     // At 1.352 s the table has ramped 13.5° in 0.15 s and turned 0.202 s at 180 °/s:
     // 49.86° (less by up to 0.2°: the move starts when WaitTime ends, ClkRead counting
     // whole milliseconds), and the TCP is with it on its 100 mm circle round (400, 0).
-    let text = fs::read_to_string(&trace).expect("trace");
-    let row = text.lines().find(|l| l.starts_with("1.352,")).expect("a row at 1.352 s");
-    let fields: Vec<&str> = row.split(',').collect();
+    let fields = trace_row(&text, "1.352");
     let number = |i: usize| -> f64 { fields[i].parse().expect("number") };
     let (x, y, eax_b) = (number(7), number(8), number(fields.len() - 2));
     assert!((eax_b - (13.5 + 0.202 * 180.0)).abs() < 0.2, "eax_b {eax_b}");
@@ -354,15 +350,9 @@ fn a_track_carries_the_robot_and_the_tcp_keeps_its_world_path() {
 ENDMODULE
 ";
     fs::write(dir.join("main.mod"), module).expect("module");
-    let trace = dir.join("trace.csv");
-    let out = rapid(&["run", "--quiet", "--trace", trace.to_str().unwrap(), dir.to_str().unwrap()]);
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
-    assert_eq!(
-        String::from_utf8_lossy(&out.stdout),
-        "t 0.29\nworld [300,0,400]\nas off the track TRUE\nt 1.36\nworld [300,100,400]\n"
-    );
+    let (stdout, text) = run_traced(&dir);
+    assert_eq!(stdout, "t 0.29\nworld [300,0,400]\nas off the track TRUE\nt 1.36\nworld [300,100,400]\n");
     // In the world the TCP keeps x 300 while the track moves, and crosses at 100 mm/s.
-    let text = fs::read_to_string(&trace).expect("trace");
     let side: Vec<Vec<f64>> = text
         .lines()
         .filter(|l| l.ends_with("main.mod:20"))

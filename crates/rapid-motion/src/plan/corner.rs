@@ -178,10 +178,10 @@ pub(crate) fn corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Pre
 
 /// The corner between two moves of the arm, with the position zone it uses (mm).
 fn arm_ends<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared) -> Option<(Ends, f64)> {
-    let (len_in, len_out) = (cur.limits.length, next.limits.length);
     if let (Metric::Deg, Metric::Deg) = (cur.geom.metric(), next.geom.metric()) {
         return Some((ori_corner(cur, next)?, 0.0));
     }
+    let (len_in, len_out) = (cur.limits.length, next.limits.length);
     // The zone may use at most half the distance to either neighbour (a zone that is
     // no positive number, which `min` would pass by, is none).
     let programmed = if cur.zone.pzone_tcp > 0.0 { cur.zone.pzone_tcp } else { 0.0 };
