@@ -269,8 +269,10 @@ impl<'a> FactsCursor<'a> {
         }
     }
 
-    /// The robot at `sample`, placed in the frames of the move it is on.
-    pub(crate) fn locate(&mut self, sample: Sample) -> Point {
+    /// The robot at `sample`, placed in the frames of the move it is on; `carry` is how
+    /// far the work object it follows (a conveyor's, a unit's) had moved since the move
+    /// was planned, so the TCP is placed in the object where the object is.
+    pub(crate) fn locate(&mut self, sample: Sample, carry: Option<Pose>) -> Point {
         self.advance(sample.time);
         let Some(facts) = self.facts.get(self.at) else {
             return Point { sample, world: sample.tcp, object: sample.tcp, facts: None };
@@ -283,7 +285,11 @@ impl<'a> FactsCursor<'a> {
             // The planner's TCP is the tool's, in the base frame; the work object is
             // fixed in the world.
             let world = frames.base * sample.tcp;
-            (world, self.to_object * world)
+            let object = match carry {
+                Some(carry) => self.to_object * carry.inverse() * world,
+                None => self.to_object * world,
+            };
+            (world, object)
         };
         Point { sample, world, object, facts: Some(self.at) }
     }

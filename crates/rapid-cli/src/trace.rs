@@ -132,9 +132,10 @@ fn render(robot: &RobotState, style: &Style, piece: &Piece<'_>) -> Vec<u8> {
         for sample in planned.samples_in(&robot.kin, style.step, first..first + n) {
             // A move made with `\Corr` is where its path correction put it; an axis in
             // independent mode where its own motion took it.
+            let carry = robot.carry_at(planned, sample.time);
             let sample = robot.tracked(planned, robot.corrected(planned, sample));
             let sample = robot.with_independent(sample, &mount);
-            let point = cursor.locate(sample);
+            let point = cursor.locate(sample, carry);
             eax = next_eax(robot, planned, eax, sample.time);
             push_row(&mut out, style, &point, &eax, row);
             row += 1;

@@ -216,7 +216,7 @@ fn the_trace_has_a_column_per_external_axis() {
 #[test]
 fn manifest_units_are_checked() {
     let extra = "\n[[unit]]\nname = \"BAD\"\ntask = \"T_NONE\"\n[[unit.axis]]\nlogical = 13\ntype = \"sliding\"\n\
-                 min = 5\nmax = 1\nspeed = 0\n";
+                 min = 5\nmax = 1\nspeed = 0\nbase = [0, 0, 100]\n";
     let dir = project("bad_units", "", "", extra);
     let out = rapid(&["check", dir.to_str().unwrap()]);
     let stderr = String::from_utf8_lossy(&out.stderr);
@@ -229,6 +229,7 @@ fn manifest_units_are_checked() {
         "the working range 5 … 1 is empty",
         "speed 0 is not a positive number",
         "`T_NONE` is no motion task",
+        "an axis's base and orientation place it in a unit that carries work objects",
     ] {
         assert!(all.contains(message), "missing `{message}` in:\n{all}");
     }
@@ -308,6 +309,55 @@ ENDMODULE
     let angle = eax_b.to_radians();
     assert!((x - (400.0 - 100.0 * angle.cos())).abs() < 0.01, "x {x}");
     assert!((y + 100.0 * angle.sin()).abs() < 0.01, "y {y}");
+}
+
+/// A two-axis positioner at (400, 0, 200): its tilt axis (eax_c) is mounted with its z
+/// axis along the world x axis, and carries the turntable (eax_d) mounted upright on it.
+const POSITIONER: &str = "\n[[unit]]\nname = \"STN2\"\nbase = [400, 0, 200]\n\
+    [[unit.axis]]\nlogical = 9\ntype = \"rotating\"\nmin = -90\nmax = 90\nspeed = 90\n\
+    orientation = [0.70710678, 0, 0.70710678, 0]\n\
+    [[unit.axis]]\nlogical = 10\ntype = \"rotating\"\nmin = -180\nmax = 180\nspeed = 180\n\
+    orientation = [0.70710678, 0, -0.70710678, 0]\n";
+
+#[test]
+fn a_tilting_positioner_carries_its_work_object_through_both_axes() {
+    // §2.1.2: a user frame that follows a unit of several axes. The robot stands at
+    // (300, 0, 400) = (-100, 0, 200) on the table with both axes at 0. It keeps that
+    // object point while the table turns 90° and tilts 30°: the table (90° at 180 °/s)
+    // sets the pace, 0.5 + 0.15 s ramp, + 0.05 s settle. On the table the point turns to
+    // (0, -100, 200); the tilt turns that about the world x axis by 30°: y = -100·cos30
+    // - 200·sin30 = -186.6, z = -100·sin30 + 200·cos30 = 123.2, from (400, 0, 200).
+    let decls = "  PERS wobjdata wobj_stn2 := [FALSE, FALSE, \"STN2\", [[0,0,0],[1,0,0,0]], [[0,0,0],[1,0,0,0]]];\n  \
+                 CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[9E9,9E9,0,0,9E9,9E9]];\n  \
+                 CONST robtarget p1 := [[-100,0,200],[0,0,1,0],[0,0,0,0],[9E9,9E9,30,90,9E9,9E9]];\n  \
+                 VAR pos w;\n  VAR robtarget p;\n";
+    let body = "    ConfL \\Off;\n    MoveJ home, v1000, fine, tool0;\n    WaitTime 1 - ClkRead(c);\n    \
+                MoveL p1, v100, fine, tool0 \\WObj:=wobj_stn2;\n    TPWrite \"t \" \\Num:=ClkRead(c);\n    \
+                w := CPos(\\Tool:=tool0 \\WObj:=wobj0);\n    \
+                TPWrite \"world \" + NumToStr(w.x, 1) + \" \" + NumToStr(w.y, 1) + \" \" + NumToStr(w.z, 1);\n    \
+                p := CRobT(\\Tool:=tool0 \\WObj:=wobj_stn2);\n    \
+                TPWrite \"rel \" + NumToStr(p.trans.x, 1) + \" \" + NumToStr(p.trans.y, 1) + \" \" + NumToStr(p.trans.z, 1);\n";
+    let dir = project("positioner", decls, body, POSITIONER);
+    let (stdout, text) = run_traced(&dir);
+    assert_eq!(stdout, "t 1.7\nworld 400.0 -186.6 323.2\nrel -100.0 0.0 200.0\n");
+    // Midway the TCP is where the axes of that moment carry the object point.
+    let header: Vec<&str> = text.lines().next().expect("header").split(',').collect();
+    let fields = trace_row(&text, "1.352");
+    let column = |name: &str| -> f64 {
+        let i = header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("no column {name}"));
+        fields[i].parse().expect("number")
+    };
+    let (tilt, turn) = (column("eax_c").to_radians(), column("eax_d").to_radians());
+    assert!(tilt > 0.1 && tilt < 30f64.to_radians() - 0.05, "the tilt is under way: {tilt}");
+    let (x, y) = (-100.0 * turn.cos(), -100.0 * turn.sin());
+    let expected = [400.0 + x, y * tilt.cos() - 200.0 * tilt.sin(), 200.0 + y * tilt.sin() + 200.0 * tilt.cos()];
+    for (name, want) in ["x", "y", "z"].into_iter().zip(expected) {
+        assert!((column(name) - want).abs() < 0.05, "{name} {} (want {want})", column(name));
+    }
+    // In the work object, which moves with the axes, the TCP stays at its point.
+    for (name, want) in ["wx", "wy", "wz"].into_iter().zip([-100.0, 0.0, 200.0]) {
+        assert!((column(name) - want).abs() < 0.05, "{name} {} (want {want})", column(name));
+    }
 }
 
 #[test]

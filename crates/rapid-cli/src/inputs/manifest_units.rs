@@ -38,6 +38,8 @@ struct RawAxis {
     speed: Spanned<f64>,
     acceleration: Option<Spanned<f64>>,
     start: Option<Spanned<f64>>,
+    base: Option<Spanned<Vec<f64>>>,
+    orientation: Option<Spanned<Vec<f64>>>,
 }
 
 /// A unit read from the manifest and the task it belongs to (`None`: the first
@@ -81,6 +83,7 @@ pub(super) fn read(raw: &[Spanned<RawUnit>], find: &mut dyn FnMut(Range<usize>, 
             let orientation = orientation(raw.orientation.as_ref(), &name, find);
             rapid_motion::pose::pose(base, orientation)
         });
+        check_mounts(raw, frame.is_some(), find);
         let unit = ExternalUnit {
             name,
             axes,
@@ -92,6 +95,22 @@ pub(super) fn read(raw: &[Spanned<RawUnit>], find: &mut dyn FnMut(Range<usize>, 
         units.push(TaskUnit { task, unit });
     }
     units
+}
+
+/// An axis's `base`/`orientation` place it on the axis before it in a unit that
+/// carries work objects; elsewhere they would mean nothing.
+fn check_mounts(raw: &RawUnit, has_frame: bool, find: &mut dyn FnMut(Range<usize>, String)) {
+    let name = raw.name.get_ref();
+    let track = raw.carries_robot.as_ref().is_some_and(|f| *f.get_ref());
+    for axis in raw.axis.iter().map(Spanned::get_ref) {
+        let Some(key) = axis.base.as_ref().or(axis.orientation.as_ref()) else { continue };
+        if track || !has_frame {
+            find(
+                key.span(),
+                format!("unit `{name}`: an axis's base and orientation place it in a unit that carries work objects (give the unit a base or orientation; not on a track)"),
+            );
+        }
+    }
 }
 
 /// `carries_robot`: a track of one linear axis, and one such unit per task.
@@ -146,7 +165,10 @@ fn axis(unit: &str, raw: &RawAxis, find: &mut dyn FnMut(Range<usize>, String)) -
         find(s.span(), format!("unit `{unit}`: start {} is outside the working range {min} … {max}", s.get_ref()));
         ok = false;
     }
-    ok.then_some(ExternalAxis { logical: logical as u8, linear, min, max, max_speed: speed, acc, start })
+    // Where the axis sits on the one before it (the unit's frame for the first).
+    let at = fixed::<3>(raw.base.as_ref(), [0.0; 3], "base", unit, find);
+    let mount = rapid_motion::pose::pose(at, orientation(raw.orientation.as_ref(), unit, find));
+    ok.then_some(ExternalAxis { logical: logical as u8, linear, min, max, max_speed: speed, acc, start, mount })
 }
 
 #[derive(Debug, Deserialize)]

@@ -197,7 +197,7 @@ fn push_point(
 ) {
     // Where path correction and a work object the robot follows put it.
     let sample = robot.tracked(planned, robot.corrected(planned, planned.sample(&robot.kin, t)));
-    let point = cursor.locate(robot.with_independent(sample, &planned.tool()));
+    let point = cursor.locate(robot.with_independent(sample, &planned.tool()), robot.carry_at(planned, t));
     let w = point.world.translation.vector;
     series.t.push(round(t, 4));
     series.x.push(round(w.x, 2));

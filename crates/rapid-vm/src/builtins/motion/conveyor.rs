@@ -11,8 +11,8 @@
 //! it. The first move in a fixed work object ends the tracking (the last conveyor
 //! point becomes a stop point); DropWObj then releases the object.
 //!
-//! The same following carries the robot with a work object an external unit moves
-//! (`Mover::Unit`: a turntable, coordinated motion): [`Following`] keeps the spans of
+//! The same following carries the robot with a work object an external unit's axes
+//! move (`Mover::Unit`: a turntable, a positioner, coordinated motion): [`Following`] keeps the spans of
 //! time in which the robot followed either kind.
 // uncertain: the controller blends the corner between a conveyor move and a fixed one;
 // here that point stops. The tracking robot's axis speeds are not re-checked.
@@ -20,7 +20,7 @@
 use std::collections::VecDeque;
 
 use nalgebra::{Translation3, Vector3};
-use rapid_motion::external::Eax;
+use rapid_motion::external::{Eax, UnitChain};
 use rapid_motion::plan::Sample;
 use rapid_motion::{Joints, Kinematics, Pose};
 
@@ -121,23 +121,30 @@ impl Conveyor {
 }
 
 /// What carries a work object the robot follows.
+// A unit's chain is a few hundred bytes; a mover is kept once per span of following,
+// so it stays inline (and Copy) rather than boxed.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Mover {
     /// A conveyor (its index) and the connected object's sync position.
     Conveyor { conveyor: usize, object: f64 },
-    /// An external unit (its index) whose single axis (`extjoint` index) carries the
-    /// work object: a turntable turns it about its frame's z axis, a linear unit moves
-    /// it along its frame's x axis.
-    Unit { unit: usize, axis: usize, linear: bool, frame: Pose },
+    /// An external unit (its index) whose axes carry the work object along `chain`: a
+    /// turntable turns it about its frame's z axis, a linear unit moves it along its
+    /// frame's x axis, a positioner's tilt axis carries its turntable.
+    Unit { unit: usize, chain: UnitChain },
 }
 
+/// Where a mover is: a conveyor object's distance from the sync switch (in the first
+/// value), or the unit's external axes.
+pub type MoverAt = Eax;
+
 /// A stretch of time in which the robot follows a moving work object: the moves made in
-/// it were planned with the mover at `at_ref` (the object's distance, or the axis value).
+/// it were planned with the mover at `at_ref`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Span {
     pub mover: Mover,
     pub t_ref: f64,
-    pub at_ref: f64,
+    pub at_ref: MoverAt,
     /// When the robot stopped following it (the end of its last move in it).
     pub t_end: Option<f64>,
 }
@@ -151,29 +158,21 @@ impl Span {
 
 impl Mover {
     /// The motion (world frame) that carries an object from the mover at `from` to `to`.
-    pub fn carry(&self, conveyors: &[Conveyor], from: f64, to: f64) -> Pose {
-        let delta = to - from;
+    pub fn carry(&self, conveyors: &[Conveyor], from: &MoverAt, to: &MoverAt) -> Pose {
         match *self {
             Mover::Conveyor { conveyor, .. } => {
                 let dir = conveyors[conveyor].config.base.rotation * Vector3::x();
-                Pose::from_parts(Translation3::from(dir * delta), nalgebra::UnitQuaternion::identity())
+                Pose::from_parts(Translation3::from(dir * (to[0] - from[0])), nalgebra::UnitQuaternion::identity())
             }
-            Mover::Unit { linear: true, frame, .. } => {
-                let dir = frame.rotation * Vector3::x();
-                Pose::from_parts(Translation3::from(dir * delta), nalgebra::UnitQuaternion::identity())
-            }
-            Mover::Unit { linear: false, frame, .. } => {
-                let turn = nalgebra::UnitQuaternion::from_axis_angle(&Vector3::z_axis(), delta.to_radians());
-                frame * Pose::from_parts(Translation3::identity(), turn) * frame.inverse()
-            }
+            Mover::Unit { chain, .. } => chain.carry(from, to),
         }
     }
 
     /// The user frame of the carried work object with the mover at `at`.
-    pub fn user_frame(&self, conveyors: &[Conveyor], at: f64) -> Pose {
+    pub fn user_frame(&self, conveyors: &[Conveyor], at: &MoverAt) -> Pose {
         match *self {
-            Mover::Conveyor { conveyor, .. } => conveyors[conveyor].frame_at(at),
-            Mover::Unit { frame, .. } => self.carry(conveyors, 0.0, at) * frame,
+            Mover::Conveyor { conveyor, .. } => conveyors[conveyor].frame_at(at[0]),
+            Mover::Unit { chain, .. } => chain.frame_at(at),
         }
     }
 }
@@ -226,15 +225,19 @@ impl super::robot::RobotState {
         let span = self.following.span_of(move_start)?;
         let t = span.t_end.map_or(t, |end| t.min(end));
         let at = self.mover_at(&span.mover, t, eax)?;
-        Some(span.mover.carry(&self.following.conveyors, span.at_ref, at))
+        Some(span.mover.carry(&self.following.conveyors, &span.at_ref, &at))
     }
 
     /// Where `mover` is at `t`: the conveyor object's distance from the sync switch, or
-    /// the unit's axis value (`eax` gives the external axes at a time).
-    pub(super) fn mover_at(&self, mover: &Mover, t: f64, eax: impl Fn(f64) -> Option<Eax>) -> Option<f64> {
+    /// the unit's axis values (`eax` gives the external axes at a time).
+    pub(super) fn mover_at(&self, mover: &Mover, t: f64, eax: impl Fn(f64) -> Option<Eax>) -> Option<MoverAt> {
         match *mover {
-            Mover::Conveyor { conveyor, object } => Some(self.following.conveyors[conveyor].position(t) - object),
-            Mover::Unit { axis, .. } => Some(eax(t)?[axis]),
+            Mover::Conveyor { conveyor, object } => {
+                let mut at = [0.0; 6];
+                at[0] = self.following.conveyors[conveyor].position(t) - object;
+                Some(at)
+            }
+            Mover::Unit { .. } => eax(t),
         }
     }
 
@@ -301,10 +304,17 @@ impl super::robot::RobotState {
         sample
     }
 
+    /// How the work object the robot followed on `planned` had moved at `t` since the
+    /// move was planned (`None` when it followed none): a sample's TCP in that work
+    /// object is its carried TCP brought back by this motion.
+    pub fn carry_at(&self, planned: &rapid_motion::plan::PlannedMove, t: f64) -> Option<Pose> {
+        self.carried(t, planned.start, |at| planned.eax_at(at))
+    }
+
     /// A sample carried by the work object the robot followed (unchanged when it
     /// followed none).
     pub(super) fn carried_sample(&self, planned: &rapid_motion::plan::PlannedMove, mut sample: Sample) -> Sample {
-        let Some(by) = self.carried(sample.time, planned.start, |at| planned.eax_at(at)) else { return sample };
+        let Some(by) = self.carry_at(planned, sample.time) else { return sample };
         sample.flange = by * sample.flange;
         sample.tcp = by * sample.tcp;
         if let Ok(joints) = self.kin.inverse_near(&sample.flange, &sample.joints) {

@@ -99,7 +99,7 @@ pub(super) fn chain(
 
 /// The user frame of a work object a mechanical unit moves, where it is now: a
 /// conveyor's base frame moved by the connected object's distance from the sync switch,
-/// or an external unit's frame turned (moved) by its axis.
+/// or an external unit's frame carried by its axes.
 fn conveyor_frame(ctx: &Ctx<'_>, wobj: &Value) -> Result<Isometry3<f64>, RapidError> {
     use super::tracking::Carrier;
     let robot = &ctx.resources.robot;
@@ -115,9 +115,8 @@ fn conveyor_frame(ctx: &Ctx<'_>, wobj: &Value) -> Result<Isometry3<f64>, RapidEr
         }
         Some(Carrier::Unit(u)) => {
             let mover = super::tracking::unit_mover(robot, u)?;
-            let super::conveyor::Mover::Unit { axis, .. } = mover else { unreachable!("a unit's mover") };
-            let at = robot.eax_at(ctx.time).map_or(0.0, |eax| eax[axis]);
-            Ok(mover.user_frame(&robot.following.conveyors, at))
+            let at = robot.eax_at(ctx.time).unwrap_or_default();
+            Ok(mover.user_frame(&robot.following.conveyors, &at))
         }
         None => Err(RapidError::fatal(
             "a work object moved by a mechanical unit the system does not have (ufprog FALSE, ufmec) is not supported",

@@ -56,8 +56,7 @@ fn conveyor_arg(ctx: &Ctx<'_>, wobj: &Value) -> Result<usize, RapidError> {
         .ok_or_else(|| ctx.error(Err::CnvNotActive, "the work object rides no conveyor of the system (ufprog, ufmec)"))
 }
 
-/// What carries a work object: a conveyor, or an external unit with one axis and a
-/// frame; `None` for a fixed work object (or one no unit of the system carries).
+/// What carries a work object: a conveyor, or an external unit with a frame; `None` for a fixed work object (or one no unit of the system carries).
 pub(super) fn carrier_of(ctx: &Ctx<'_>, wobj: &Value) -> Result<Option<Carrier>, RapidError> {
     let Some(name) = ufmec(wobj) else { return Ok(None) };
     let robot = &ctx.resources.robot;
@@ -69,21 +68,14 @@ pub(super) fn carrier_of(ctx: &Ctx<'_>, wobj: &Value) -> Result<Option<Carrier>,
     Ok(Some(Carrier::Unit(u)))
 }
 
-/// How external unit `u` carries a work object: its one axis about (along) its frame.
+/// How external unit `u` carries a work object: its axes, in order, from its frame.
 pub(super) fn unit_mover(robot: &super::robot::RobotState, u: usize) -> Result<Mover, RapidError> {
     let unit = &robot.external.units[u].unit;
-    let Some(frame) = unit.frame else {
-        return Err(RapidError::fatal(format!(
+    match unit.chain() {
+        Some(chain) => Ok(Mover::Unit { unit: u, chain }),
+        None => Err(RapidError::fatal(format!(
             "unit {} has no frame (base, orientation) to carry a work object (ufmec)",
             unit.name
-        )));
-    };
-    match unit.axes.as_slice() {
-        [axis] => Ok(Mover::Unit { unit: u, axis: axis.index(), linear: axis.linear, frame }),
-        _ => Err(RapidError::fatal(format!(
-            "a work object carried by unit {} of {} axes is not supported yet (one axis only)",
-            unit.name,
-            unit.axes.len()
         ))),
     }
 }
@@ -230,7 +222,7 @@ fn check_object(ctx: &Ctx<'_>, c: usize) -> Result<(), RapidError> {
 pub(super) fn planning_frame(ctx: &Ctx<'_>, carrier: Carrier) -> Option<rapid_motion::Pose> {
     let following = &ctx.resources.robot.following;
     let span = following.open().filter(|s| Carrier::of(&s.mover) == carrier)?;
-    Some(span.mover.user_frame(&following.conveyors, span.at_ref))
+    Some(span.mover.user_frame(&following.conveyors, &span.at_ref))
 }
 
 /// The active work object's user frame at controller time `t`: while the robot follows
@@ -240,7 +232,7 @@ pub(super) fn active_uframe_at(robot: &super::robot::RobotState, t: f64) -> rapi
     let uframe = robot.active.uframe;
     let Some(span) = robot.following.open() else { return uframe };
     let at = robot.mover_at(&span.mover, t, |t| robot.eax_at(t)).unwrap_or(span.at_ref);
-    span.mover.carry(&robot.following.conveyors, span.at_ref, at) * uframe
+    span.mover.carry(&robot.following.conveyors, &span.at_ref, &at) * uframe
 }
 
 /// While the robot follows a conveyor object: it must be able to reach where the
@@ -263,7 +255,7 @@ impl super::robot::RobotState {
     /// which starts from a stop point.
     fn start_tracking(&mut self, mover: Mover, now: f64) {
         let t_ref = self.stop_here().max(now);
-        let at_ref = self.mover_at(&mover, t_ref, |t| self.eax_at(t)).unwrap_or(0.0);
+        let at_ref = self.mover_at(&mover, t_ref, |t| self.eax_at(t)).unwrap_or_default();
         self.following.spans.push(Span { mover, t_ref, at_ref, t_end: None });
     }
 
