@@ -25,22 +25,125 @@ fn cycle_time(stderr: &str) -> f64 {
     seconds.parse().expect("a number")
 }
 
+/// The timing model's pieces for the IRB 2600 (docs/semantics.md, "Timing model"):
+/// path acceleration 10 m/s² scaled by axis 1's 175 °/s over 250 °/s.
+const IRB2600_ACC: f64 = 7_000.0;
+
+/// A MoveL of `length` mm at `v` mm/s from stop to stop (a trapezoid).
+fn move_l(length: f64, v: f64) -> f64 {
+    length / v + v / IRB2600_ACC
+}
+
+/// A MoveJ from stop to stop whose pace is set by the TCP's chord at v1000 (every
+/// axis slower than its maximum by `f`, the limiting axis's full-speed time over the
+/// chord's time): the chord's time plus the ramps, f · 0.15 s.
+fn move_j(chord: f64, f: f64) -> f64 {
+    chord / 1000.0 + f * 0.15
+}
+
+/// The most a fly-by point can save against stopping there: half of each side's ramp
+/// (what a stop costs beyond cruising) and the zone legs `zone`/v on either side that
+/// the corner may cut. `ramp_in`, `ramp_out` are whole ramp times.
+fn corner_saving(ramp_in: f64, ramp_out: f64, zone: f64, v_in: f64, v_out: f64) -> f64 {
+    (ramp_in + ramp_out) / 2.0 + zone / v_in + zone / v_out
+}
+
 #[test]
-fn the_pick_and_place_cell_places_four_parts() {
-    let out = rapid(&["--stimulus", "examples/pick_and_place_cell/parts.stim", "examples/pick_and_place_cell"]);
+fn the_pick_and_place_cell_places_four_parts_in_the_time_the_timing_model_gives() {
+    let io_log = Path::new(env!("CARGO_TARGET_TMPDIR")).join("pick_and_place_io.csv");
+    let out = rapid(&[
+        "--io-log",
+        io_log.to_str().expect("utf-8"),
+        "--stimulus",
+        "examples/pick_and_place_cell/parts.stim",
+        "examples/pick_and_place_cell",
+    ]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "Parts placed: 4\n");
     let stderr = text(&out.stderr);
-    let cycle = cycle_time(&stderr);
-    // A lower bound from the program and the stimulus alone: the first part is there
-    // at 0.5 s; each part needs its 0.3 s grip and 0.2 s release waits, and four
-    // 100 mm straight moves, two at 200 mm/s (0.5 s each) and two at 500 mm/s (0.2 s),
-    // so 0.5 + 4 * (0.5 + 1.4) = 8.1 s even with infinite acceleration and no joint
-    // moves. An upper bound: each of the 26 moves of at most 2 m at the slowest
-    // programmed speed (200 mm/s) takes at most 10 s plus its ramps, and the waits
-    // for parts add at most 1.2 s each: 260 + 2 + 5 < 300 s.
-    assert!((8.1..300.0).contains(&cycle), "cycle time {cycle} s out of bounds: {stderr}");
     assert!(stderr.contains("IRB 2600-12/1.65"), "{stderr}");
+    // Worked out by hand. The joints come from an independent OPW calculation with the
+    // IRB 2600-12/1.65's parameters (a1 150, a2 -115, c1 445, c2 700, c3 795, c4 85)
+    // and the targets' TCPs (tVacuum 142.5 mm along the flange's z, pointing down):
+    //   start (all axes 0): TCP [1172.5, 0, 1260]
+    //   pHome [600, 0, 900]:          [0, -29.968, 32.764, 0, 87.204, 0]
+    //   pick approach [1070,-365,425]: [-18.836, 25.299, 14.907, 0, 49.795, -18.836]
+    //   place approach n [650, 500 + 110n, 240] (turned 90° about z):
+    //     n 0 [37.569, 16.346, 45.805, 0, 27.849, -52.431]
+    //     n 1 [43.182, 20.615, 39.580, 0, 29.805, -46.818]
+    //     n 2 [47.925, 25.220, 32.506, 0, 32.273, -42.075]
+    //     n 3 [51.934, 30.140, 24.610, 0, 35.250, -38.066]
+    // Every MoveJ is paced by its TCP chord at v1000 (its limiting axis, at 175 °/s,
+    // would be faster; the 90° reorientations at 500 °/s take 0.18 s): the chord (mm),
+    // and f = the limiting axis's full-speed time over the chord's time.
+    let home = (676.281, 0.242234 / 0.676281); // start → pHome, axis 5
+    let to_pick_first = (761.413, 0.315810 / 0.761413); // pHome → pick approach, axis 2
+    let place = [(979.209, 0.322310), (1077.613, 0.354385), (1178.070, 0.381489), (1280.098, 0.404400)];
+    let to_place = |n: usize| (place[n].0, place[n].1 / (place[n].0 / 1000.0)); // pick approach ↔ place n
+    let last = (1061.603, 0.343478 / 1.061603); // place approach 3 → pHome, axis 2
+    let j = |(chord, f): (f64, f64)| move_j(chord, f);
+    let (down, up) = (move_l(100.0, 200.0), move_l(100.0, 500.0));
+    // The program. A part is there at 0.5 s; after a part is placed (Reset), the next
+    // one is there 1.2 s later, when the robot has long stood above the pallet: the
+    // MoveL up before WaitDI becomes a stop point (three corner path failures) and the
+    // next pick starts when the part is there. Stopping at every point (fine points
+    // settle 0.05 s) gives the upper bound:
+    let settle = 0.05;
+    let pick_chain = |to_pick: f64| to_pick + down + settle;
+    let place_chain = |n: usize| up + j(to_place(n)) + down + settle;
+    let mut upper = j(home).max(0.5);
+    for n in 0..4 {
+        let to_pick = if n == 0 { j(to_pick_first) } else { j(to_place(n - 1)) };
+        let start = if n == 0 { upper } else { upper + 1.2 };
+        upper = start + pick_chain(to_pick) + 0.3;
+        upper += place_chain(n);
+    }
+    upper += 0.2 + up + j(last) + settle;
+    // The fly-by points that are not stop points can each save at most
+    // `corner_saving`; a MoveJ's ramp is f · 0.15 s, a MoveL's v / 7000 s².
+    let ramp_j = |(_, f): (f64, f64)| f * 0.15;
+    let (ramp_200, ramp_500) = (200.0 / IRB2600_ACC, 500.0 / IRB2600_ACC);
+    let pick_saving = |to_pick: (f64, f64)| corner_saving(ramp_j(to_pick), ramp_200, 20.0, 1000.0, 200.0);
+    let place_saving = |n: usize| {
+        corner_saving(ramp_500, ramp_j(to_place(n)), 20.0, 500.0, 1000.0)
+            + corner_saving(ramp_j(to_place(n)), ramp_200, 20.0, 1000.0, 200.0)
+    };
+    let mut saving = corner_saving(ramp_j(home), ramp_j(to_pick_first), 50.0, 1000.0, 1000.0);
+    for n in 0..4 {
+        saving += pick_saving(if n == 0 { to_pick_first } else { to_place(n - 1) }) + place_saving(n);
+    }
+    saving += corner_saving(ramp_500, ramp_j(last), 20.0, 500.0, 1000.0);
+    let cycle = cycle_time(&stderr);
+    assert!((upper - saving..=upper).contains(&cycle), "cycle time {cycle} s, expected {} … {upper} s", upper - saving);
+    assert!(stderr.contains("3 corner path failure(s)"), "{stderr}");
+    // Each pick and each place, from the move that starts it to the vacuum's change,
+    // within its own bounds (the corners inside each chain only).
+    let changes = io_changes(&io_log);
+    let times = |value: &str| -> Vec<f64> {
+        changes.iter().filter(|(_, s, v)| s == "DO_Vacuum" && v == value).map(|(t, _, _)| *t).collect()
+    };
+    let (on, off) = (times("1"), times("0"));
+    // (Reset at the start changes nothing: the output is 0 already.)
+    assert_eq!((on.len(), off.len()), (4, 4), "{changes:?}");
+    for n in 1..4 {
+        // The pick starts 1.2 s after the part before was let go.
+        let took = on[n] - (off[n - 1] + 1.2);
+        let to_pick = to_place(n - 1);
+        let (chain, save) = (pick_chain(j(to_pick)), pick_saving(to_pick));
+        assert!(
+            (chain - save - 0.002..=chain + 0.002).contains(&took),
+            "pick {n}: {took} s, expected {chain} - {save}"
+        );
+    }
+    for n in 0..4 {
+        // The place starts when the 0.3 s grip wait after the vacuum went on ends.
+        let took = off[n] - (on[n] + 0.3);
+        let (chain, save) = (place_chain(n), place_saving(n));
+        assert!(
+            (chain - save - 0.002..=chain + 0.002).contains(&took),
+            "place {n}: {took} s, expected {chain} - {save}"
+        );
+    }
 }
 
 #[test]
