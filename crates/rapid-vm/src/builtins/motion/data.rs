@@ -118,10 +118,22 @@ fn conveyor_frame(ctx: &Ctx<'_>, wobj: &Value) -> Result<Isometry3<f64>, RapidEr
             let at = robot.eax_at(ctx.time).unwrap_or_default();
             Ok(mover.user_frame(&robot.following.conveyors, &at))
         }
-        None => Err(RapidError::fatal(
-            "a work object moved by a mechanical unit the system does not have (ufprog FALSE, ufmec) is not supported",
-        )),
+        None => Err(RapidError::fatal(unfollowed_mover(ctx, super::tracking::ufmec(wobj).unwrap_or("")))),
     }
+}
+
+/// Why a work object moved by mechanical unit `name` (`ufmec`) cannot be followed.
+fn unfollowed_mover(ctx: &Ctx<'_>, name: &str) -> String {
+    if super::units::unit_named(ctx, name).is_some() {
+        return format!(
+            "a work object moved by the robot {name} (MultiMove coordinated movement) is not supported yet; \
+             a robot's own held work object is robhold TRUE"
+        );
+    }
+    format!(
+        "the work object is moved by mechanical unit `{name}` (ufprog FALSE, ufmec), which is no conveyor or \
+         external unit with a frame of this task (units of other tasks are not supported yet)"
+    )
 }
 
 /// A robtarget's pose (trans, rot) and configuration (cf1, cf4, cf6, cfx).

@@ -36,7 +36,7 @@ impl Carrier {
 }
 
 /// The `ufmec` of a work object that moves with a mechanical unit (`ufprog` FALSE).
-fn ufmec(wobj: &Value) -> Option<&str> {
+pub(super) fn ufmec(wobj: &Value) -> Option<&str> {
     let Value::Record(w) = wobj else { return None };
     match (w.fields.get(1), w.fields.get(2)) {
         (Some(Value::Bool(false)), Some(Value::Str(ufmec))) => Some(ufmec),

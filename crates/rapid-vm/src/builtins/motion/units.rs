@@ -53,7 +53,7 @@ pub(super) fn own_unit(ctx: &Ctx<'_>) -> Option<usize> {
 }
 
 /// The unit number of `ROB_n`, if the system has it.
-fn unit_named(ctx: &Ctx<'_>, name: &str) -> Option<usize> {
+pub(super) fn unit_named(ctx: &Ctx<'_>, name: &str) -> Option<usize> {
     let upper = name.to_ascii_uppercase();
     let n: usize = upper.strip_prefix("ROB_")?.parse().ok()?;
     (1..=robot_tasks(ctx).len()).contains(&n).then_some(n)
