@@ -62,8 +62,8 @@ fn the_pick_and_place_cell_places_four_parts_in_the_time_the_timing_model_gives(
     assert_eq!(text(&out.stdout), "Parts placed: 4\n");
     let stderr = text(&out.stderr);
     assert!(stderr.contains("IRB 2600-12/1.65"), "{stderr}");
-    // Worked out by hand. The joints come from an independent OPW calculation with the
-    // IRB 2600-12/1.65's parameters (a1 150, a2 -115, c1 445, c2 700, c3 795, c4 85)
+    // Worked out by hand. The joints come from an independent OPW calculation
+    // (tests/hand/pick_and_place.py) with the IRB 2600-12/1.65's parameters (a1 150, a2 -115, c1 445, c2 700, c3 795, c4 85)
     // and the targets' TCPs (tVacuum 142.5 mm along the flange's z, pointing down):
     //   start (all axes 0): TCP [1172.5, 0, 1260]
     //   pHome [600, 0, 900]:          [0, -29.968, 32.764, 0, 87.204, 0]
@@ -261,24 +261,41 @@ fn the_palletizing_example_stacks_twelve_boxes_in_the_time_the_timing_model_give
     // √(52² + 250² + 308²) = 400.085 mm at 400 mm/s.
     let first_grip = 0.28125 + 0.15 + 0.05 + fine_move_l(400.085, 400.0);
     // Each transfer is up 100 mm, across, down 100 mm at 400 mm/s through two z20
-    // corners (at 400 mm/s the corners need no slow-down: 90° at 20 mm allows
-    // √(10000 · 20 / sin 45°) = 532 mm/s), so it takes as long as one straight move
-    // of the same length. Across: from above the pick place [250,-250,250] to above
-    // the place [200 + x, 100 + y, 250 + 50 · (layer - 1)].
+    // corners. Where the work object stays the same the corner is a TCP parabola
+    // that needs no slow-down (90° at 20 mm allows √(10000 · 20 / sin 45°) =
+    // 532 mm/s) and takes as long as the straight path it replaces; where it changes,
+    // see `joint_corners_ms` below. Across: from above the pick place [250,-250,250]
+    // to above the place [200 + x, 100 + y, 250 + 50 · (layer - 1)].
     let places = [(0.0, 0.0), (80.0, 0.0), (0.0, 80.0), (80.0, 80.0), (0.0, 160.0), (80.0, 160.0)];
     let transfer = |layer: f64, (x, y): (f64, f64)| {
         let across = ((x - 50.0f64).powi(2) + (y + 350.0f64).powi(2) + (50.0 * (layer - 1.0)).powi(2)).sqrt();
         fine_move_l(200.0 + across, 400.0)
     };
+    // §2.2.3: where the work object changes (wobj0 ↔ wobjPallet above the pick place
+    // going out, above the place coming back: 23 corners) the corner is joint-
+    // interpolated: a blend in the metric of each axis over its maximum speed
+    // (250, 250, 250, 320, 320, 420 °/s), from 20 mm before the point to 20 mm after
+    // it, time 2/(v0/(2·L_in) + v1/(2·L_out)) with L the legs and v the ends' speeds
+    // in that metric, each end at most √(a·L/sin(θ/2)) (a the 10 m/s² path
+    // acceleration in the metric, θ the turn), the TCP braking to it before and
+    // speeding up after: (400 − v_e)²/(2·a·400) each. Against the 0.1 s TCP parabola,
+    // per box out and back (ms), from an independent OPW calculation of the IRB 120's
+    // joints at the corners' ends, tests/hand/palletizing_corners.py (e.g. layer 1,
+    // box 0, out: θ 95.8°, the exit's 0.434 over its 0.395 limit):
+    let joint_corners_ms = [
+        5.35, -1.76, 0.42, -0.62, 4.78, -1.19, 0.42, 0.03, 4.38, -0.01, 0.60, 6.87, // layer 1
+        3.09, 0.44, 0.34, -0.01, 2.98, -0.56, 0.36, 0.66, 2.89, 3.52, 0.37, // layer 2
+    ];
+    let joint_corner = |n: usize| joint_corners_ms[n] / 1000.0;
     let mut t = first_grip;
     let mut expected_changes = Vec::new();
     for (k, (layer, place)) in [1.0, 2.0].iter().flat_map(|&l| places.iter().map(move |&p| (l, p))).enumerate() {
         expected_changes.push((t, "1"));
-        t += 0.2 + transfer(layer, place);
+        t += 0.2 + transfer(layer, place) + joint_corner(2 * k);
         expected_changes.push((t, "0"));
         t += 0.2;
         if k < 11 {
-            t += transfer(layer, place);
+            t += transfer(layer, place) + joint_corner(2 * k + 1);
         }
     }
     // After the last box: up 100 mm (fine), then across to above the pick place

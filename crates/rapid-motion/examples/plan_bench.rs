@@ -50,7 +50,14 @@ fn main() {
             let y = if i % 2 == 0 { -150.0 } else { 150.0 };
             let zone = if i % 50 == 49 { ZoneData::FINE } else { z10 };
             let target = Target::Linear(pose([x, y, 500.0], [1.0, 0.0, 0.0, 0.0]));
-            MoveRequest { target, speed: v1000, zone, tool: Pose::identity(), held_object: None }
+            MoveRequest {
+                target,
+                speed: v1000,
+                zone,
+                tool: Pose::identity(),
+                held_object: None,
+                wobj: Pose::identity(),
+            }
         })
         .collect();
 

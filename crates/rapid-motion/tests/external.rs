@@ -21,6 +21,7 @@ fn request(joints: Joints, speed: SpeedData, zone: &str) -> MoveRequest {
         zone: ZoneData::predefined(zone).unwrap(),
         tool: Pose::identity(),
         held_object: None,
+        wobj: Pose::identity(),
     }
 }
 

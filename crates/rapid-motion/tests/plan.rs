@@ -6,7 +6,8 @@ use std::f64::consts::{FRAC_1_SQRT_2, PI};
 
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
 use rapid_motion::plan::{
-    AccelLimits, MotionSettings, MoveRequest, PlannedMove, Planner, SpeedData, Target, ZoneData, DEFAULT_STEP,
+    AccelLimits, CornerKind, MotionSettings, MoveRequest, PlannedMove, Planner, SpeedData, Target, ZoneData,
+    DEFAULT_STEP,
 };
 use rapid_motion::{Joints, Kinematics, MotionError, Pose};
 
@@ -64,7 +65,14 @@ fn speed(v_tcp: f64, v_ori: f64) -> SpeedData {
 }
 
 fn linear(to: Pose, v: f64, zone: ZoneData) -> MoveRequest {
-    MoveRequest { target: Target::Linear(to), speed: speed(v, 500.0), zone, tool: Pose::identity(), held_object: None }
+    MoveRequest {
+        target: Target::Linear(to),
+        speed: speed(v, 500.0),
+        zone,
+        tool: Pose::identity(),
+        held_object: None,
+        wobj: Pose::identity(),
+    }
 }
 
 /// Plans `moves` in order and flushes.
@@ -345,6 +353,7 @@ fn joint_moves_blend_per_joint() {
         zone,
         tool: Pose::identity(),
         held_object: None,
+        wobj: Pose::identity(),
     };
     let z10 = ZoneData::predefined("z10").unwrap();
     let via = [100.0, 0.0, 0.0, 0.0, 0.0, 0.0];
@@ -610,4 +619,28 @@ fn a_zone_that_is_no_positive_number_is_a_stop_point() {
         let moves = [linear(at(100.0, 0.0, 0.0), 100.0, zone), linear(at(100.0, 100.0, 0.0), 100.0, ZoneData::FINE)];
         assert_eq!(plan_all(&FAST, accel(10_000.0), &moves)[0].corner_time, 0.0, "pzone_tcp {bad}");
     }
+}
+
+#[test]
+fn a_new_work_object_makes_the_corner_joint_interpolated() {
+    // §2.2.3: where the coordinate system changes in a corner, a new TCP or a new
+    // work object, the corner path is joint-interpolated. The square's sides in one
+    // work object blend on TCP parabolas; each side in a work object of its own (its
+    // frame elsewhere, the targets the same in the base frame) blends in joint space.
+    let z10 = ZoneData::predefined("z10").unwrap();
+    let kinds = |moves: &[MoveRequest]| -> Vec<Option<CornerKind>> {
+        plan_all(&FAST, accel(20_000.0), moves).iter().map(PlannedMove::corner_kind).collect()
+    };
+    let tcp = Some(CornerKind::Tcp);
+    assert_eq!(kinds(&square(z10)), [tcp, tcp, tcp, None]);
+    let one_wobj = at(500.0, 0.0, 0.0);
+    let same: Vec<MoveRequest> = square(z10).into_iter().map(|m| MoveRequest { wobj: one_wobj, ..m }).collect();
+    assert_eq!(kinds(&same), [tcp, tcp, tcp, None]);
+    let own: Vec<MoveRequest> = square(z10)
+        .into_iter()
+        .enumerate()
+        .map(|(i, m)| MoveRequest { wobj: turned(0.0, 0.0, 0.0, 10.0 * i as f64), ..m })
+        .collect();
+    let joint = Some(CornerKind::Joint);
+    assert_eq!(kinds(&own), [joint, joint, joint, None]);
 }

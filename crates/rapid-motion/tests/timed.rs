@@ -51,6 +51,7 @@ fn one_move(kin: &Gantry, acc: AccelLimits, x: f64, settings: MotionSettings) ->
         zone: ZoneData::FINE,
         tool: Pose::identity(),
         held_object: None,
+        wobj: Pose::identity(),
     };
     assert!(planner.push(kin, &request)?.is_none());
     Ok(planner.flush().expect("the move"))

@@ -285,6 +285,7 @@ mod tests {
                 zone: ZoneData::FINE,
                 tool: rapid_motion::Pose::identity(),
                 held_object: None,
+                wobj: rapid_motion::Pose::identity(),
             };
             now = robot.push(now, &request, false, Vec::new()).expect("a reachable move");
         }

@@ -140,8 +140,8 @@ struct Ends {
 /// point: a `fine` zone, a zone reduced to nothing, a reorientation of a standing
 /// TCP or a move of the external axes alone next to a move of the TCP, a reversal,
 /// or a TCP corner that leaves the robot's reach. Between Cartesian moves with one
-/// tool the corner is a TCP parabola; across a change of interpolation type or of
-/// tool it is a joint-space parabola; between reorientations of a standing TCP, a
+/// tool and work object the corner is a TCP parabola; across a change of
+/// interpolation type, of tool or of work object it is a joint-space parabola; between reorientations of a standing TCP, a
 /// parabola of the orientation; between moves of the external axes alone, a
 /// parabola of the axes (§2.2.3).
 pub(crate) fn corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared) -> Option<Corner> {
@@ -191,7 +191,7 @@ fn arm_ends<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared) ->
     }
     let ends = match (cur.geom.metric(), next.geom.metric()) {
         (Metric::Deg, _) | (_, Metric::Deg) => return None,
-        (Metric::Mm, Metric::Mm) if same_tool(cur, next) => tcp_corner(cur, next, zone)?,
+        (Metric::Mm, Metric::Mm) if same_tool(cur, next) && same_wobj(cur, next) => tcp_corner(cur, next, zone)?,
         _ => joint_corner(kin, cur, next, zone)?,
     };
     Some((ends, zone))
@@ -273,6 +273,14 @@ const AXIS_MOVES: f64 = 1e-9;
 
 fn same_tool(cur: &Prepared, next: &Prepared) -> bool {
     cur.mount.same_as(&next.mount)
+}
+
+/// §2.2.3: a corner where the coordinate system changes, a new TCP or a new work
+/// object, is joint-interpolated. Work objects whose frames coincide are one.
+// uncertain: the controller may compare the wobjdata rather than its frames.
+fn same_wobj(cur: &Prepared, next: &Prepared) -> bool {
+    let (a, b) = (&cur.wobj, &next.wobj);
+    (a.translation.vector - b.translation.vector).norm() < 1e-9 && a.rotation.angle_to(&b.rotation) < 1e-9
 }
 
 /// A TCP parabola: entry `zone` mm of path before the programmed point, exit

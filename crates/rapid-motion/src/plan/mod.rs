@@ -39,12 +39,12 @@
 //! let robot = Gantry;
 //! let mut planner = Planner::new([0.0; 6], AccelLimits::nominal(&robot.max_speeds()));
 //! let v1000 = SpeedData::predefined("v1000").unwrap();
-//! let tool0 = Pose::identity();
+//! let (tool0, wobj) = (Pose::identity(), Pose::identity());
 //! let mut moves = Vec::new();
 //! for (x, zone) in [(100.0, "z10"), (200.0, "fine")] {
 //!     let target = Target::Linear(pose([x, 50.0, 0.0], [1.0, 0.0, 0.0, 0.0]));
 //!     let zone = ZoneData::predefined(zone).unwrap();
-//!     moves.extend(planner.push(&robot, &MoveRequest { target, speed: v1000, zone, tool: tool0, held_object: None })?);
+//!     moves.extend(planner.push(&robot, &MoveRequest { target, speed: v1000, zone, tool: tool0, held_object: None, wobj })?);
 //! }
 //! moves.extend(planner.flush());
 //! let trace: Vec<_> = moves.iter().flat_map(|m| m.samples(&robot, DEFAULT_STEP)).collect();

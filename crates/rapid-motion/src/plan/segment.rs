@@ -37,6 +37,10 @@ pub struct MoveRequest {
     /// A stationary tool: the work object the robot holds, its frame in the flange
     /// frame. Linear and circular targets are then TCP poses in that object frame.
     pub held_object: Option<Pose>,
+    /// The work object's frame (user frame · object frame) in the base frame. The
+    /// path does not depend on it (targets are in the base frame already); a corner
+    /// between moves in different work objects is joint-interpolated (§2.2.3).
+    pub wobj: Pose,
 }
 
 impl MoveRequest {
@@ -56,6 +60,8 @@ pub(crate) struct Prepared {
     pub(crate) limits: PieceLimits,
     pub(crate) zone: ZoneData,
     pub(crate) mount: Mount,
+    /// The move's work object frame (see `MoveRequest::wobj`).
+    pub(crate) wobj: Pose,
     pub(crate) end_joints: Joints,
     /// Joint values along a Cartesian path (path parameter, joints), which seed
     /// the inverse kinematics when the path is sampled.
@@ -119,6 +125,7 @@ pub(crate) fn prepare<K: Kinematics + ?Sized>(
         }
     };
     prepared.zone = request.zone;
+    prepared.wobj = request.wobj;
     if let Some(ext) = ext {
         super::external::pace(&mut prepared, ext, &speed, settings.acc_factor())?;
     }
@@ -199,6 +206,7 @@ impl<K: Kinematics + ?Sized> Ctx<'_, K> {
             limits,
             zone: ZoneData::FINE,
             mount: self.mount,
+            wobj: Pose::identity(),
             end_joints,
             seeds: Vec::new(),
             room,

@@ -235,7 +235,7 @@ pub(super) fn go_with(
         settings.stop_time = Some(stop.time);
     }
     let (tool, held_object) = mount_of(&chain);
-    let mut request = MoveRequest { target, speed, zone, tool, held_object };
+    let mut request = MoveRequest { target, speed, zone, tool, held_object, wobj: wobj_frame(&chain) };
     let external = external_target(ctx, args, layout.to, layout.eoffs)?;
     if let Some(ext) = &external {
         request.speed.v_tcp *= super::track::track_speed_scale(&ctx.resources.robot, &target, &chain, ext)?;
@@ -572,6 +572,11 @@ pub(super) fn path_pose(chain: &rapid_motion::frames::FrameChain, target: &rapid
     } else {
         chain.flange_goal(target) * chain.tframe
     }
+}
+
+/// A move request's work object frame for these frames: user frame · object frame.
+pub(super) fn wobj_frame(chain: &rapid_motion::frames::FrameChain) -> rapid_motion::Pose {
+    chain.uframe * chain.oframe
 }
 
 /// A move request's `tool` and `held_object` for these frames: the tool frame, or for

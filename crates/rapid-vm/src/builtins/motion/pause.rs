@@ -261,7 +261,8 @@ fn regain_move(ctx: &mut Ctx<'_>, pause: &Pause, path: Joints) -> Result<Option<
     planner.set_settings(settings);
     planner.idle_until(now.max(pause.since));
     let speed = SpeedData { v_tcp: REGAIN_SPEED, ..SpeedData::VMAX };
-    let request = MoveRequest { target: Target::Joints(path), speed, zone: ZoneData::FINE, tool, held_object };
+    let wobj = super::moves::wobj_frame(&robot.active);
+    let request = MoveRequest { target: Target::Joints(path), speed, zone: ZoneData::FINE, tool, held_object, wobj };
     let planned = planner.push(&robot.kin, &request).map_err(super::moves::motion_error)?;
     // The arm alone goes back: the external axes stand where they stopped.
     let eax = robot.eax_at(pause.since);

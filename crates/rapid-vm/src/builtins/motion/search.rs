@@ -164,7 +164,8 @@ fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32), places: &Places) -
         speed.v_tcp = v;
     }
     let (tool, held_object) = super::moves::mount_of(&chain);
-    let request = MoveRequest { target, speed, zone: rapid_motion::plan::ZoneData::FINE, tool, held_object };
+    let wobj = super::moves::wobj_frame(&chain);
+    let request = MoveRequest { target, speed, zone: rapid_motion::plan::ZoneData::FINE, tool, held_object, wobj };
     super::moves::note_facts(ctx, &request, &chain);
     let mut settings = super::moves::planner_settings(ctx);
     // `\T`: the search move takes this long.

@@ -207,7 +207,10 @@ fn linear_move(
     planner.set_settings(settings);
     planner.idle_until(now);
     let speed = SpeedData { v_tcp: speed, ..SpeedData::VMAX };
-    let request = MoveRequest { target: Target::Linear(target), speed, zone: ZoneData::FINE, tool, held_object: None };
+    // A stop point: its work object plays no part.
+    let wobj = rapid_motion::Pose::identity();
+    let request =
+        MoveRequest { target: Target::Linear(target), speed, zone: ZoneData::FINE, tool, held_object: None, wobj };
     let planned = planner.push(&robot.kin, &request).map_err(super::moves::motion_error)?;
     let mut planned =
         planned.or_else(|| planner.flush()).ok_or_else(|| RapidError::fatal("StepBwdPath: no move was planned"))?;
