@@ -644,3 +644,49 @@ fn a_new_work_object_makes_the_corner_joint_interpolated() {
     let joint = Some(CornerKind::Joint);
     assert_eq!(kinds(&own), [joint, joint, joint, None]);
 }
+
+/// A straight move 60 mm down from `start` on the IRB 120, its orientation kept.
+fn down_from(start: Joints) -> (rapid_motion::Opw, MoveRequest) {
+    let kin = rapid_motion::default_model().kinematics();
+    let from = kin.forward(&start);
+    let to = Isometry3::from_parts(
+        Translation3::from(from.translation.vector - Vector3::new(0.0, 0.0, 60.0)),
+        from.rotation,
+    );
+    (kin, linear(to, 100.0, ZoneData::FINE))
+}
+
+#[test]
+fn a_linear_move_whose_axis_would_leave_its_range_stops_there() {
+    // From [0,0,0,45,3,0] (axis 5 near the wrist singularity) straight down 60 mm with
+    // the orientation kept, axis 4 turns from 45° past its 160° limit, to 166.76° (an
+    // independent inverse kinematics, tests/hand/). The solver's nearest solution
+    // within the ranges there has axes 4 and 6 half a turn away: the arm cannot jump,
+    // the move is refused with the axis.
+    let (kin, down) = down_from([0.0, 0.0, 0.0, 45.0, 3.0, 0.0]);
+    let mut planner = Planner::new([0.0, 0.0, 0.0, 45.0, 3.0, 0.0], accel(10_000.0));
+    assert_eq!(planner.push(&kin, &down).err(), Some(MotionError::JointLimit { axis: 4 }));
+}
+
+#[test]
+fn near_the_wrist_singularity_axes_4_and_6_turn_fast_but_continuously() {
+    // From [0,0,0,60,10,0] the same move turns axis 4 from 60° to 125.12° and axis 6
+    // to -65.97° (tests/hand/), within their ranges: the move is made, its joints
+    // change by small steps all the way, and it ends where the calculation says.
+    let start = [0.0, 0.0, 0.0, 60.0, 10.0, 0.0];
+    let (kin, down) = down_from(start);
+    let mut planner = Planner::new(start, accel(10_000.0));
+    let mut planned: Vec<PlannedMove> = planner.push(&kin, &down).unwrap().into_iter().collect();
+    planned.extend(planner.flush());
+    let end = planned[0].end_joints;
+    let expected = [0.0, -1.66, 12.84, 125.12, 10.59, -65.97];
+    assert!(end.iter().zip(expected).all(|(a, b)| (a - b).abs() < 0.01), "{end:?}");
+    let mut t = planned[0].start;
+    let mut last = planned[0].sample(&kin, t).joints;
+    while t < planned[0].end {
+        t += 0.004;
+        let q = planned[0].sample(&kin, t.min(planned[0].end)).joints;
+        assert!(q.iter().zip(last).all(|(a, b)| (a - b).abs() < 10.0), "a jump at {t} s: {last:?} → {q:?}");
+        last = q;
+    }
+}

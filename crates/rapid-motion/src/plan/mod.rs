@@ -52,6 +52,7 @@
 //! # Ok::<(), rapid_motion::MotionError>(())
 //! ```
 
+mod continuity;
 mod corner;
 mod correct;
 mod data;

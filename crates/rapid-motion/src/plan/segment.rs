@@ -297,7 +297,9 @@ fn time_cap(length: f64, amount: f64, speed: f64, eps: f64, zero: &'static str) 
 }
 
 /// Joint values at evenly spaced points along a Cartesian path, each solved
-/// near the one before; the first is `q0` itself.
+/// near the one before, with points added between two whose axes differ much until
+/// the joints are seen to change continuously (`continuity.rs`); the first is `q0`
+/// itself. A jump to another solution branch is an error.
 pub(crate) fn ik_along<K: Kinematics + ?Sized>(
     kin: &K,
     geom: &Geometry,
@@ -316,10 +318,12 @@ pub(crate) fn ik_along<K: Kinematics + ?Sized>(
     let mut seeds = Vec::with_capacity(n + 1);
     seeds.push((0.0, *q0));
     let mut seed = *q0;
+    let mut budget = super::continuity::MAX_ADDED;
     for i in 1..=n {
+        let s_prev = length * (i - 1) as f64 / n as f64;
         let s = length * i as f64 / n as f64;
-        seed = solve_at(kin, &geom.at(s), mount, &seed)?;
-        seeds.push((s, seed));
+        let q = solve_at(kin, &geom.at(s), mount, &seed)?;
+        seed = super::continuity::bridge((kin, geom, mount), (s_prev, seed), (s, q), &mut seeds, &mut budget)?;
     }
     Ok(seeds)
 }
