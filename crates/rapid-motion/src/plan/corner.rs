@@ -191,7 +191,15 @@ fn arm_ends<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared) ->
     }
     let ends = match (cur.geom.metric(), next.geom.metric()) {
         (Metric::Deg, _) | (_, Metric::Deg) => return None,
-        (Metric::Mm, Metric::Mm) if same_tool(cur, next) && same_wobj(cur, next) => tcp_corner(cur, next, zone)?,
+        // SingArea\Wrist moves have no programmed orientation to blend: joint space.
+        (Metric::Mm, Metric::Mm)
+            if same_tool(cur, next)
+                && same_wobj(cur, next)
+                && !cur.geom.wrist_interpolated()
+                && !next.geom.wrist_interpolated() =>
+        {
+            tcp_corner(cur, next, zone)?
+        }
         _ => joint_corner(kin, cur, next, zone)?,
     };
     Some((ends, zone))
@@ -345,7 +353,7 @@ fn joints_and_scale<K: Kinematics + ?Sized>(
     let solve = |s: f64, seed: &Joints| solve_at(kin, &m.geom.at(s), &m.mount, seed).ok();
     match m.geom.at(s) {
         Point::Joints(q) => Some((q, 1.0)),
-        Point::Tcp(..) => {
+        Point::Tcp(..) | Point::Wrist(..) => {
             let q = solve(s, &nearest_seed(&m.seeds, s)?)?;
             let h = side * 1.0f64.min(m.limits.length / 4.0);
             let q2 = solve(s + h, &q)?;

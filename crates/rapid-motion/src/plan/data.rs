@@ -50,6 +50,10 @@ pub struct MotionSettings {
     /// along a linear or circular path, mm/s² (`None`: no limit).
     pub tcp_acc_max: Option<f64>,
     pub tcp_dec_max: Option<f64>,
+    /// SingArea\Wrist: linear and circular moves interpolate the wrist axes in joint
+    /// space while the TCP keeps its path (`wrist.rs`); \Off (false) keeps the
+    /// programmed orientation.
+    pub sing_wrist: bool,
 }
 
 /// How a circular move reorients the tool (CirPathMode; the wrist modes are not
@@ -80,6 +84,7 @@ impl Default for MotionSettings {
             stop_time: None,
             tcp_acc_max: None,
             tcp_dec_max: None,
+            sing_wrist: false,
         }
     }
 }

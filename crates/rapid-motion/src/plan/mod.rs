@@ -65,6 +65,7 @@ mod path;
 mod profile;
 mod sample;
 mod segment;
+mod wrist;
 
 pub use corner::CornerKind;
 pub use correct::path_frame;

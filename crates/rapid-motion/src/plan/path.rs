@@ -46,6 +46,11 @@ pub(crate) enum OriMode {
     /// Through the circle point's orientation `via`, reached at fraction `at`
     /// (`\CirPointOri`).
     ViaPoint { via: UnitQuaternion<f64>, at: f64 },
+    /// SingArea\Wrist: the wrist axes (4, 5, 6) go straight in joint space from
+    /// `from` to `to`; the orientation is what they give (`wrist.rs`). The slerp
+    /// from `from`'s orientation to `to`'s stands for it where only a nominal one
+    /// is needed (the reorientation angle).
+    Wrist { from: [f64; 3], to: [f64; 3] },
 }
 
 /// Samples of a non-linear interpolation used to measure its rotation.
@@ -60,7 +65,7 @@ impl OriLerp {
     pub(crate) fn at(&self, fraction: f64) -> UnitQuaternion<f64> {
         let f = if fraction.is_finite() { fraction.clamp(0.0, 1.0) } else { 0.0 };
         match self.mode {
-            OriMode::Fixed => slerp(&self.from, &self.to, f),
+            OriMode::Fixed | OriMode::Wrist { .. } => slerp(&self.from, &self.to, f),
             OriMode::PathFrame { normal, sweep } => {
                 // R(f) = Rn(sweep·f) · slerp(R0, Rn(−sweep)·R1, f): at f = 1 the
                 // turns cancel, and a tool that turns with the path keeps its
@@ -84,7 +89,7 @@ impl OriLerp {
     /// move's time by it and v_ori).
     pub(crate) fn angle(&self) -> f64 {
         match self.mode {
-            OriMode::Fixed => self.from.angle_to(&self.to).to_degrees(),
+            OriMode::Fixed | OriMode::Wrist { .. } => self.from.angle_to(&self.to).to_degrees(),
             _ => {
                 let mut total = 0.0;
                 let mut last = self.at(0.0);
@@ -118,11 +123,13 @@ pub(crate) enum Geometry {
     Joint { q0: Joints, q1: Joints, weights: [f64; 6] },
 }
 
-/// A point on a path: a TCP pose in the base frame or joint values.
+/// A point on a path: a TCP pose in the base frame, joint values, or (SingArea\Wrist)
+/// a TCP position with the wrist axes' values.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum Point {
     Tcp(Vector3<f64>, UnitQuaternion<f64>),
     Joints(Joints),
+    Wrist(Vector3<f64>, [f64; 3]),
 }
 
 impl Geometry {
@@ -180,11 +187,15 @@ impl Geometry {
     pub(crate) fn at(&self, s: f64) -> Point {
         let len = self.length();
         let f = if len > 0.0 && s.is_finite() { (s / len).clamp(0.0, 1.0) } else { 1.0 };
+        let point = |p: Vector3<f64>, ori: &OriLerp| match ori.mode {
+            OriMode::Wrist { from, to } => Point::Wrist(p, super::wrist::wrist_at(from, to, f)),
+            _ => Point::Tcp(p, ori.at(f)),
+        };
         match self {
-            Geometry::Line { p0, p1, ori } => Point::Tcp(p0.lerp(p1, f), ori.at(f)),
+            Geometry::Line { p0, p1, ori } => point(p0.lerp(p1, f), ori),
             Geometry::Arc { center, radius, e1, e2, sweep, ori } => {
                 let phi = f * sweep;
-                Point::Tcp(center + *radius * (phi.cos() * e1 + phi.sin() * e2), ori.at(f))
+                point(center + *radius * (phi.cos() * e1 + phi.sin() * e2), ori)
             }
             Geometry::Joint { q0, q1, .. } => Point::Joints(std::array::from_fn(|j| q0[j] + f * (q1[j] - q0[j]))),
         }
@@ -211,6 +222,11 @@ impl Geometry {
         if let Geometry::Line { ori, .. } | Geometry::Arc { ori, .. } = self {
             *ori = new;
         }
+    }
+
+    /// Whether the wrist axes are interpolated in joint space (SingArea\Wrist).
+    pub(crate) fn wrist_interpolated(&self) -> bool {
+        matches!(self.ori(), Some(OriLerp { mode: OriMode::Wrist { .. }, .. }))
     }
 
     /// The orientation interpolation, for Cartesian paths.

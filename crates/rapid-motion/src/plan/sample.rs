@@ -162,6 +162,11 @@ impl PlannedMove {
                 let flange = kin.forward(&q);
                 (q, flange, self.mount.tcp(&flange))
             }
+            point @ Point::Wrist(..) => {
+                let joints = solve_at(kin, &point, &self.mount, seed).unwrap_or(*seed);
+                let flange = kin.forward(&joints);
+                (joints, flange, self.mount.tcp(&flange))
+            }
             point @ Point::Tcp(p, r) => {
                 let joints = solve_at(kin, &point, &self.mount, seed).unwrap_or(*seed);
                 let path = tcp_pose(&p, &r);

@@ -112,8 +112,11 @@ pub(crate) fn prepare<K: Kinematics + ?Sized>(
         Target::Joints(q1) => ctx.joint_move(start, q1)?,
         Target::Linear(to) => {
             let ori = OriLerp::fixed(start_tcp.rotation, to.rotation);
-            let geom = Geometry::Line { p0: start_tcp.translation.vector, p1: to.translation.vector, ori };
+            let mut geom = Geometry::Line { p0: start_tcp.translation.vector, p1: to.translation.vector, ori };
             let room = (to.translation.vector - start_tcp.translation.vector).norm();
+            if settings.sing_wrist {
+                ctx.wrist_interpolation(&mut geom, start, &to)?;
+            }
             ctx.cartesian_move(geom, start, room)?
         }
         Target::Circular { via, to } => {
@@ -121,6 +124,9 @@ pub(crate) fn prepare<K: Kinematics + ?Sized>(
             let ori = OriLerp::fixed(start_tcp.rotation, to.rotation);
             let mut geom = Geometry::arc(p0, pc, p1, ori)?;
             circle_orientation(&mut geom, ori, &via, settings.circle_ori);
+            if settings.sing_wrist {
+                ctx.wrist_interpolation(&mut geom, start, &to)?;
+            }
             ctx.cartesian_move(geom, start, (pc - p0).norm().min((p1 - pc).norm()))?
         }
     };
@@ -246,6 +252,20 @@ impl<K: Kinematics + ?Sized> Ctx<'_, K> {
         Ok(self.prepared(geom, PieceLimits { length, cap, acc, dec: acc }, q1, room))
     }
 
+    /// SingArea\Wrist: the wrist axes go straight in joint space from the start's
+    /// to those of the end's solution nearest the start (a held tool only; a
+    /// stationary tool's path keeps its orientation).
+    fn wrist_interpolation(&self, geom: &mut Geometry, start: &Joints, to: &Pose) -> Result<(), MotionError> {
+        if !matches!(self.mount, Mount::Held(_)) {
+            return Ok(());
+        }
+        let end = self.kin.inverse_near(&self.mount.flange(to), start)?;
+        let Some(ori) = geom.ori().copied() else { return Ok(()) };
+        let (from, to) = ([start[3], start[4], start[5]], [end[3], end[4], end[5]]);
+        geom.set_ori(OriLerp { mode: OriMode::Wrist { from, to }, ..ori });
+        Ok(())
+    }
+
     /// MoveL / MoveC: TCP speed, reorientation speed and every axis's speed
     /// (sampled with IK along the path) bound the path speed.
     fn cartesian_move(&self, geom: Geometry, q0: &Joints, room: f64) -> Result<Prepared, MotionError> {
@@ -338,6 +358,11 @@ pub(crate) fn solve_at<K: Kinematics + ?Sized>(
     match point {
         Point::Joints(q) => Ok(*q),
         Point::Tcp(p, r) => kin.inverse_near(&mount.flange(&tcp_pose(p, r)), seed),
+        Point::Wrist(p, wrist) => match mount {
+            Mount::Held(tool) => super::wrist::arm_for(kin, tool, p, *wrist, seed),
+            // The planner gives a stationary tool no wrist interpolation.
+            Mount::Stationary { .. } => Err(MotionError::InvalidData("SingArea\\Wrist with a stationary tool")),
+        },
     }
 }
 

@@ -176,6 +176,7 @@ pub(super) fn planner_settings(ctx: &Ctx<'_>) -> MotionSettings {
         // m/s² to mm/s²; a world-frame limit bounds the path's too.
         tcp_acc_max: min_limit(s.acc_max, s.world_acc_max).map(|a| a * 1000.0),
         tcp_dec_max: min_limit(s.decel_max, s.world_acc_max).map(|a| a * 1000.0),
+        sing_wrist: s.sing == super::SingMode::Wrist,
     }
 }
 
@@ -195,6 +196,17 @@ pub(super) fn check_circle_mode(ctx: &Ctx<'_>) -> Result<(), RapidError> {
         return Err(RapidError::fatal(format!(
             "circular moves with CirPathMode \\{mode:?} are not supported by `rapid run` yet"
         )));
+    }
+    Ok(())
+}
+
+/// Linear and circular moves are planned with SingArea \Off or \Wrist; \LockAxis4
+/// (axis 4 held at 0° or ±180°) is not modelled.
+pub(super) fn check_sing_mode(ctx: &Ctx<'_>) -> Result<(), RapidError> {
+    if ctx.resources.motion.settings.sing == super::SingMode::LockAxis4 {
+        return Err(RapidError::fatal(
+            "linear and circular moves with SingArea \\LockAxis4 are not supported by `rapid run` yet",
+        ));
     }
     Ok(())
 }
@@ -418,6 +430,7 @@ pub(super) fn linear_move(
     events: Vec<super::robot::PathEvent>,
 ) -> Res {
     require_motion_task(ctx)?;
+    check_sing_mode(ctx)?;
     let chain = frames(ctx, args, layout, true)?;
     let target = ctx.value(&args[layout.to])?;
     let to = tcp_in_base(ctx, &chain, &target)?;
@@ -459,6 +472,7 @@ pub(super) fn circular_move(
 ) -> Res {
     require_motion_task(ctx)?;
     check_circle_mode(ctx)?;
+    check_sing_mode(ctx)?;
     let chain = frames(ctx, args, layout, true)?;
     let via = tcp_in_base(ctx, &chain, &ctx.value(&args[layout.cir.unwrap_or(1)])?)?;
     let to = tcp_in_base(ctx, &chain, &ctx.value(&args[layout.to])?)?;

@@ -203,6 +203,7 @@ fn path_of(
         Ok(super::moves::path_pose(&chain, &target))
     };
     let to = tcp_of(ctx, places.to)?;
+    super::moves::check_sing_mode(ctx)?;
     let target = match places.cir {
         Some(cir) => {
             super::moves::check_circle_mode(ctx)?;
