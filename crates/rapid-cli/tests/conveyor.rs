@@ -295,3 +295,57 @@ fn the_conveyor_is_a_mechanical_unit_that_must_be_active() {
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     assert_eq!(stdout(&out), "ROB_1 TRUE 6\nCNV1 FALSE 1\nactive FALSE\nerror 1152\nconnected 0.5\n");
 }
+
+/// Down from home to `via` (fixed work object, zone `zone`), then above the object.
+fn approach(zone: &str) -> String {
+    format!(
+        "    WaitWObj wobj_cnv1;
+    MoveL [[300,0,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v500, {zone}, tool0;
+    MoveL above, v500, fine, tool0 \\WObj:=wobj_cnv1;
+    TPWrite \"above \" \\Num:=ClkRead(c);
+    p := CRobT(\\Tool:=tool0 \\WObj:=wobj_cnv1);
+    TPWrite \"rel \" \\Pos:=p.trans;
+    w := CPos(\\Tool:=tool0 \\WObj:=wobj0);
+    TPWrite \"world x \" \\Num:=Round(w.x);
+"
+    )
+}
+
+#[test]
+fn a_fly_by_point_before_the_first_tracked_move_is_a_corner_not_a_stop() {
+    // §2.2.3: a change from uncoordinated to coordinated motion gets a corner path
+    // (joint-interpolated), not a stop. Connected at 0.5 s; 100 mm down at v500 to a
+    // point in the fixed work object, then above the object.
+    //
+    // With a fine point there: 0.2 + 0.05 s ramp + 0.05 s settle, standing at 0.8 s
+    // with the object at x 280; above it (x 280, z 400) is √(20² + 100²) = 101.98 mm:
+    // 0.204 + 0.05 + 0.05 s, above the object at 1.10396 s (ClkRead counts whole
+    // milliseconds: 1.103), where it has travelled to x 310.4.
+    let fine = run(&project("approach_fine", &approach("fine"), ONE_OBJECT), &[]);
+    assert_eq!(fine.status.code(), Some(0), "{}", stderr(&fine));
+    assert_eq!(stdout(&fine), "above 1.103\nrel [0,0,100]\nworld x 310\n");
+    // With z20 the robot does not stop: at least the settle (0.05 s) and the stop's
+    // braking and starting again (500/10000 s) are saved, less what the 90° corner
+    // may cost. It ends above the object all the same, wherever that is by then:
+    // x 250 + 100 mm/s · (t - 0.5).
+    let dir = project("approach_fly_by", &approach("z20"), ONE_OBJECT);
+    let trace = dir.join("trace.csv");
+    let out = run(&dir, &["--trace", trace.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let text = stdout(&out);
+    let lines: Vec<&str> = text.lines().collect();
+    let t: f64 = lines[0].trim_start_matches("above ").parse().expect("a time");
+    assert!(t < 1.104 - 0.05, "{text}");
+    assert_eq!(lines[1], "rel [0,0,100]");
+    assert_eq!(lines[2], format!("world x {}", (250.0 + 100.0 * (t - 0.5)).round()));
+    // No jump where the following fades in: every 4 ms the axes move little.
+    let rows: Vec<Vec<f64>> = fs::read_to_string(&trace)
+        .expect("trace")
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').take(7).map(|f| f.parse().expect("number")).collect())
+        .collect();
+    let step =
+        rows.windows(2).map(|w| (1..7).map(|j| (w[1][j] - w[0][j]).abs()).fold(0.0, f64::max)).fold(0.0, f64::max);
+    assert!(step < 2.0, "an axis moved {step}° in one sample");
+}

@@ -14,8 +14,9 @@
 //! The same following carries the robot with a work object an external unit's axes
 //! move (`Mover::Unit`: a turntable, a positioner, coordinated motion): [`Following`] keeps the spans of
 //! time in which the robot followed either kind.
-// uncertain: the controller blends the corner between a conveyor move and a fixed one;
-// here that point stops. The tracking robot's axis speeds are not re-checked.
+// uncertain: from a fly-by point in a fixed work object the following fades in over the
+// corner (`Fade`); the corner from a conveyor move back to a fixed one is a stop point
+// here, which the controller blends. The tracking robot's axis speeds are not re-checked.
 
 use std::collections::VecDeque;
 
@@ -147,6 +148,53 @@ pub struct Span {
     pub at_ref: MoverAt,
     /// When the robot stopped following it (the end of its last move in it).
     pub t_end: Option<f64>,
+    /// How the following begins: at once from a stop point, or faded in over the
+    /// corner from a fly-by point in a fixed work object.
+    pub fade: Fade,
+}
+
+/// How a following begins (§2.2.3: a change from uncoordinated to coordinated motion
+/// gets a corner path, joint-interpolated, rather than a stop).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Fade {
+    /// From a stop point: the frames were frozen where the robot stood.
+    None,
+    /// From a fly-by point whose corner is not planned yet.
+    Pending,
+    /// Over this time window (the corner into the first following move) the robot is
+    /// carried by a growing part of the object's travel since the frames were frozen:
+    /// none at its start, all of it at its end, both smoothly.
+    Window(f64, f64),
+}
+
+/// After a fly-by point that became a stop point, the following fades in over this
+/// long (s).
+// uncertain: the controller's catching up with a moving object is not public.
+const FADE_AFTER_STOP: f64 = 0.1;
+
+impl Fade {
+    /// The window over which a following that began at fly-by point `planned` fades
+    /// in: its corner path, or a short time after it stopped.
+    pub fn after(planned: &rapid_motion::plan::PlannedMove) -> Fade {
+        match planned.corner_time > 0.0 {
+            true => Fade::Window(planned.zone_entry, planned.end),
+            false => Fade::Window(planned.end, planned.end + FADE_AFTER_STOP),
+        }
+    }
+
+    /// How much of the object's travel carries the robot at `t`, 0 to 1.
+    fn weight(&self, t: f64) -> f64 {
+        let Fade::Window(a, b) = *self else { return 1.0 };
+        if !(b > a) || t >= b {
+            return 1.0;
+        }
+        let x = ((t - a) / (b - a)).clamp(0.0, 1.0);
+        x * x * (3.0 - 2.0 * x)
+    }
+
+    fn covers(&self, t: f64) -> bool {
+        matches!(*self, Fade::Window(a, b) if a <= t && t < b)
+    }
 }
 
 impl Span {
@@ -198,6 +246,20 @@ impl Following {
         self.spans.last().filter(|s| s.t_end.is_none())
     }
 
+    /// The span whose fade-in window holds `t`: the corner into its first move is
+    /// carried (partly) too, though its move began before.
+    fn fading_at(&self, t: f64) -> Option<&Span> {
+        self.spans.iter().rev().find(|s| s.fade.covers(t))
+    }
+
+    /// The fly-by point before a following began is final: the following fades in over
+    /// its corner.
+    pub fn begin_fade(&mut self, planned: &rapid_motion::plan::PlannedMove) {
+        if let Some(span) = self.spans.last_mut().filter(|s| s.fade == Fade::Pending) {
+            span.fade = Fade::after(planned);
+        }
+    }
+
     /// The span a move that started at `move_start` was planned in: moves planned while
     /// the robot followed an object move with it until it stopped following.
     pub fn span_of(&self, move_start: f64) -> Option<&Span> {
@@ -222,9 +284,12 @@ impl super::robot::RobotState {
     /// has moved since the move was planned (in the robot's base frame; the base is the
     /// world frame here); `eax` gives the external axes at a time.
     fn carried(&self, t: f64, move_start: f64, eax: impl Fn(f64) -> Option<Eax>) -> Option<Pose> {
-        let span = self.following.span_of(move_start)?;
+        let span = self.following.span_of(move_start).or_else(|| self.following.fading_at(t))?;
         let t = span.t_end.map_or(t, |end| t.min(end));
         let at = self.mover_at(&span.mover, t, eax)?;
+        // While the following fades in, the robot is carried by a part of the travel.
+        let w = span.fade.weight(t);
+        let at: MoverAt = std::array::from_fn(|k| span.at_ref[k] + w * (at[k] - span.at_ref[k]));
         Some(span.mover.carry(&self.following.conveyors, &span.at_ref, &at))
     }
 

@@ -2,7 +2,7 @@
 //! its work object rides a conveyor (see `conveyor.rs` for the model).
 
 use super::super::{present, Ctx};
-use super::conveyor::{Mover, Span};
+use super::conveyor::{Fade, Mover, Span};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
@@ -251,12 +251,24 @@ pub(super) fn check_reach(robot: &mut super::robot::RobotState, until: f64) -> R
 }
 
 impl super::robot::RobotState {
-    /// The robot starts following the work object `mover` carries with its next move,
-    /// which starts from a stop point.
+    /// The robot starts following the work object `mover` carries with its next move.
+    /// From a stop point (or a fly-by point given too late) the frames are frozen where
+    /// the robot stands. From a fly-by point in a fixed work object there is no stop
+    /// (§2.2.3: the change to coordinated motion gets a joint-interpolated corner, as
+    /// any change of work object): the frames are frozen where the object will be when
+    /// the robot would stand at that point, and the following fades in over the corner.
+    // uncertain: how the controller joins the moving object on the corner.
     fn start_tracking(&mut self, mover: Mover, now: f64) {
+        let from_fixed = self.following.open().is_none();
+        let blend = self.planner.pending_stop_time().filter(|&stop| from_fixed && now <= stop);
+        if let Some(stop) = blend {
+            let at_ref = self.mover_at(&mover, stop, |t| self.eax_at(t)).unwrap_or_default();
+            self.following.spans.push(Span { mover, t_ref: now, at_ref, t_end: None, fade: Fade::Pending });
+            return;
+        }
         let t_ref = self.stop_here().max(now);
         let at_ref = self.mover_at(&mover, t_ref, |t| self.eax_at(t)).unwrap_or_default();
-        self.following.spans.push(Span { mover, t_ref, at_ref, t_end: None });
+        self.following.spans.push(Span { mover, t_ref, at_ref, t_end: None, fade: Fade::None });
     }
 
     /// The robot stops following its conveyor object: where its last conveyor move
