@@ -185,7 +185,9 @@ impl Fade {
     /// How much of the object's travel carries the robot at `t`, 0 to 1.
     fn weight(&self, t: f64) -> f64 {
         let Fade::Window(a, b) = *self else { return 1.0 };
-        if !(b > a) || t >= b {
+        // A window that is empty (or not a number) fades in at once.
+        let empty = b.partial_cmp(&a) != Some(std::cmp::Ordering::Greater);
+        if empty || t >= b {
             return 1.0;
         }
         let x = ((t - a) / (b - a)).clamp(0.0, 1.0);
