@@ -636,3 +636,51 @@ fn a_work_object_moved_by_another_tasks_unit_or_robot_is_refused_by_name() {
         assert!(stderr.contains(message) && stderr.contains("r1.mod:4"), "{stderr}");
     }
 }
+
+#[test]
+fn a_circle_keeps_its_world_path_while_the_track_moves() {
+    // The TCP goes on the world's half circle of radius 100 about (400, 0, 400), from
+    // (300, 0, 400) over (400, 100, 400) to (500, 0, 400), while the track carries the
+    // base 100 mm along x. The circle is kept in the world at v100: π · 100 mm in
+    // 3.1416 s + 0.01 s ramp + 0.05 s settle = 3.2016 s.
+    let dir = scratch("track_circle");
+    let manifest = "[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n[[unit]]\nname = \"TRACK\"\n\
+                    carries_robot = true\n[[unit.axis]]\nlogical = 7\ntype = \"linear\"\nmin = 0\nmax = 3000\nspeed = 1000\n";
+    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    let module = "MODULE main
+  CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[0,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget top := [[400,100,400],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget far := [[500,0,400],[0,0,1,0],[0,0,0,0],[100,9E9,9E9,9E9,9E9,9E9]];
+  VAR clock c;
+  VAR pos w;
+  PROC main()
+    ConfL \\Off;
+    MoveJ home, v1000, fine, tool0;
+    ClkStart c;
+    MoveC top, far, v100, fine, tool0;
+    TPWrite \"t \" + NumToStr(ClkRead(c), 2);
+    w := CPos(\\Tool:=tool0);
+    TPWrite \"world \" \\Pos:=w;
+  ENDPROC
+ENDMODULE
+";
+    fs::write(dir.join("main.mod"), module).expect("module");
+    let (stdout, text) = run_traced(&dir);
+    assert_eq!(stdout, "t 3.20\nworld [500,0,400]\n");
+    let circle: Vec<Vec<f64>> = text
+        .lines()
+        .filter(|l| l.ends_with("main.mod:11"))
+        .map(|l| l.split(',').take(23).map(|f| f.parse().expect("number")).collect())
+        .collect();
+    assert!(circle.len() > 700, "{} rows", circle.len());
+    for row in &circle {
+        let off = ((row[7] - 400.0).powi(2) + row[8].powi(2)).sqrt() - 100.0;
+        assert!(off.abs() < 0.05 && (row[9] - 400.0).abs() < 0.05, "off the circle at {row:?}");
+    }
+    // At the top of the circle the path is half done: the track has carried the base
+    // half its way (eax_a, the column after tcp_speed).
+    let middle = circle.iter().max_by(|a, b| a[8].total_cmp(&b[8])).expect("rows");
+    assert!((middle[7] - 400.0).abs() < 0.5 && (middle[8] - 100.0).abs() < 0.05, "{middle:?}");
+    assert!((middle[22] - 50.0).abs() < 0.5, "track {}", middle[22]);
+    assert!((middle[21] - 100.0).abs() < 0.5, "world TCP speed {}", middle[21]);
+}

@@ -54,6 +54,10 @@ pub struct MotionSettings {
     /// space while the TCP keeps its path (`wrist.rs`); \Off (false) keeps the
     /// programmed orientation.
     pub sing_wrist: bool,
+    /// How far a track carries the robot's base over the move being pushed (mm, in
+    /// the base frame; zero without one): a circle's targets are relative to the base
+    /// where the move ends, and the circle is kept in the world.
+    pub base_travel: [f64; 3],
 }
 
 /// How a circular move reorients the tool (CirPathMode; the wrist modes are not
@@ -85,6 +89,7 @@ impl Default for MotionSettings {
             tcp_acc_max: None,
             tcp_dec_max: None,
             sing_wrist: false,
+            base_travel: [0.0; 3],
         }
     }
 }

@@ -116,8 +116,18 @@ pub(crate) enum Geometry {
     /// A straight TCP line (MoveL), orientation slerped along it.
     Line { p0: Vector3<f64>, p1: Vector3<f64>, ori: OriLerp },
     /// A circle arc (MoveC) from `center + radius·e1`, turning towards `e2`
-    /// through `sweep` radians.
-    Arc { center: Vector3<f64>, radius: f64, e1: Vector3<f64>, e2: Vector3<f64>, sweep: f64, ori: OriLerp },
+    /// through `sweep` radians; `drift` is how far a track carries the robot's base
+    /// over the move: the path relative to the base is the arc less that much of the
+    /// drift as the move has gone (zero without a moving track).
+    Arc {
+        center: Vector3<f64>,
+        radius: f64,
+        e1: Vector3<f64>,
+        e2: Vector3<f64>,
+        sweep: f64,
+        ori: OriLerp,
+        drift: Vector3<f64>,
+    },
     /// A straight line in joint space (MoveJ, MoveAbsJ); `weights` are the
     /// inverse axis speeds that define the joint metric.
     Joint { q0: Joints, q1: Joints, weights: [f64; 6] },
@@ -159,7 +169,7 @@ impl Geometry {
         if sweep <= 0.0 {
             sweep += std::f64::consts::TAU;
         }
-        Ok(Geometry::Arc { center, radius, e1, e2, sweep, ori })
+        Ok(Geometry::Arc { center, radius, e1, e2, sweep, ori, drift: Vector3::zeros() })
     }
 
     /// How the path parameter is measured.
@@ -193,9 +203,9 @@ impl Geometry {
         };
         match self {
             Geometry::Line { p0, p1, ori } => point(p0.lerp(p1, f), ori),
-            Geometry::Arc { center, radius, e1, e2, sweep, ori } => {
+            Geometry::Arc { center, radius, e1, e2, sweep, ori, drift } => {
                 let phi = f * sweep;
-                point(center + *radius * (phi.cos() * e1 + phi.sin() * e2), ori)
+                point(center + *radius * (phi.cos() * e1 + phi.sin() * e2) - f * drift, ori)
             }
             Geometry::Joint { q0, q1, .. } => Point::Joints(std::array::from_fn(|j| q0[j] + f * (q1[j] - q0[j]))),
         }
@@ -215,6 +225,13 @@ impl Geometry {
         let rel = point - center;
         let angle = rel.dot(e2).atan2(rel.dot(e1)).rem_euclid(std::f64::consts::TAU);
         (*sweep > 0.0).then(|| (angle / sweep).clamp(0.0, 1.0))
+    }
+
+    /// Sets a circle's drift (see `Geometry::Arc`).
+    pub(crate) fn set_drift(&mut self, by: Vector3<f64>) {
+        if let Geometry::Arc { drift, .. } = self {
+            *drift = by;
+        }
     }
 
     /// Sets the orientation interpolation (a circle's, by CirPathMode).

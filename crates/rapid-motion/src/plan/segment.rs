@@ -120,10 +120,16 @@ pub(crate) fn prepare<K: Kinematics + ?Sized>(
             ctx.cartesian_move(geom, start, room)?
         }
         Target::Circular { via, to } => {
-            let (p0, pc, p1) = (start_tcp.translation.vector, via.translation.vector, to.translation.vector);
+            // On a moving track the circle is the world's: its points relative to the
+            // base where the move starts (the targets are relative to where it ends).
+            let travel = Vector3::from(settings.base_travel);
+            let (p0, pc, p1) =
+                (start_tcp.translation.vector, via.translation.vector + travel, to.translation.vector + travel);
             let ori = OriLerp::fixed(start_tcp.rotation, to.rotation);
             let mut geom = Geometry::arc(p0, pc, p1, ori)?;
+            let via = tcp_pose(&pc, &via.rotation);
             circle_orientation(&mut geom, ori, &via, settings.circle_ori);
+            geom.set_drift(travel);
             if settings.sing_wrist {
                 ctx.wrist_interpolation(&mut geom, start, &to)?;
             }

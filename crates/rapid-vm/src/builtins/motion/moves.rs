@@ -177,6 +177,7 @@ pub(super) fn planner_settings(ctx: &Ctx<'_>) -> MotionSettings {
         tcp_acc_max: min_limit(s.acc_max, s.world_acc_max).map(|a| a * 1000.0),
         tcp_dec_max: min_limit(s.decel_max, s.world_acc_max).map(|a| a * 1000.0),
         sing_wrist: s.sing == super::SingMode::Wrist,
+        base_travel: [0.0; 3],
     }
 }
 
@@ -251,6 +252,9 @@ pub(super) fn go_with(
     let external = external_target(ctx, args, layout.to, layout.eoffs)?;
     if let Some(ext) = &external {
         request.speed.v_tcp *= super::track::track_speed_scale(&ctx.resources.robot, &target, &chain, ext)?;
+        if let Target::Circular { .. } = target {
+            settings.base_travel = super::track::track_travel(&ctx.resources.robot, ext).into();
+        }
     }
     // Synchronized movement: the moves of one `\ID` in all tasks take the same time.
     match crate::builtins::syncmove::coordinate(ctx, args.get(layout.id), &request, &settings)? {

@@ -39,9 +39,19 @@ impl super::robot::RobotState {
     }
 }
 
+/// How far the track carries the robot's base over a move to `ext` (world frame, mm;
+/// the base frame is the world's turned by nothing): zero without a moving track.
+pub(super) fn track_travel(robot: &super::robot::RobotState, ext: &ExternalMove) -> nalgebra::Vector3<f64> {
+    match robot.external.track() {
+        Some((axis, dir)) => dir * (ext.to[axis] - ext.from[axis]),
+        None => nalgebra::Vector3::zeros(),
+    }
+}
+
 /// How much a move's programmed TCP speed is scaled so that the TCP keeps it in the
 /// world while the track moves the robot's base: the planner times the path relative to
-/// the base, which is longer or shorter than the world path by the track's travel.
+/// the base, which is longer or shorter than the world path by the track's travel. A
+/// circle needs no scale: the planner keeps it in the world (`MotionSettings::base_travel`).
 // uncertain: the TCP's acceleration is then applied along the base-relative path.
 pub(super) fn track_speed_scale(
     robot: &super::robot::RobotState,
@@ -58,12 +68,10 @@ pub(super) fn track_speed_scale(
     }
     let to = match target {
         Target::Joints(_) => return Ok(1.0),
-        Target::Circular { .. } => {
-            return Err(crate::error::RapidError::fatal("a circular move while the track moves is not supported yet"))
-        }
-        Target::Linear(_) if chain.stationary_tool => {
+        Target::Linear(_) | Target::Circular { .. } if chain.stationary_tool => {
             return Err(crate::error::RapidError::fatal("a stationary tool on a moving track is not supported yet"))
         }
+        Target::Circular { .. } => return Ok(1.0),
         Target::Linear(to) => to.translation.vector,
     };
     let from = (robot.kin.forward(&robot.end_joints()) * chain.tframe).translation.vector;
