@@ -8,12 +8,14 @@
 //! planned with the object frozen where it is when the first of them starts (the
 //! conveyor's base frame moved along its x axis by the object's distance), and the
 //! robot's path is shifted by how far the object has moved since: the robot follows
-//! it. The first move in a fixed work object ends the tracking (the last conveyor
-//! point becomes a stop point); DropWObj then releases the object.
+//! it. From a fly-by point in a fixed work object the object is frozen where it will
+//! be when the robot would stand at that point, and the following fades in over the
+//! corner ([`Fade`]). The first move in a fixed work object ends the tracking (the
+//! last conveyor point becomes a stop point); DropWObj then releases the object.
 //!
 //! The same following carries the robot with a work object an external unit's axes
-//! move (`Mover::Unit`: a turntable, a positioner, coordinated motion): [`Following`] keeps the spans of
-//! time in which the robot followed either kind.
+//! move (`Mover::Unit`: a turntable, a positioner, coordinated motion): [`Following`]
+//! keeps the spans of time in which the robot followed either kind.
 // uncertain: from a fly-by point in a fixed work object the following fades in over the
 // corner (`Fade`); the corner from a conveyor move back to a fixed one is a stop point
 // here, which the controller blends. The tracking robot's axis speeds are not re-checked.
