@@ -88,3 +88,38 @@ fn far_from_singular_points_sing_area_wrist_changes_little() {
     assert!(off.end_joints.iter().zip(wrist.end_joints).all(|(a, b)| (a - b).abs() < 1e-6));
     assert!((off.duration() - 0.61).abs() < 1e-6 && (wrist.duration() - 0.61).abs() < 1e-6);
 }
+
+#[test]
+fn corners_between_wrist_moves_blend_the_tcp_as_any_linear_corner() {
+    // Two 60 mm moves at a right angle through a z10 corner, far from singular points:
+    // with SingArea\Wrist the TCP takes the same parabola (the corner is a TCP corner,
+    // the wrist axes going straight across it), so the moves take as long as with \Off:
+    // 2 · 60/100 + 0.01 s of ramp, the corner 2·10/100 = 0.2 s in place of 20 mm of lines.
+    let kin = default_model().kinematics();
+    let start = [10.0, 20.0, 10.0, 20.0, 60.0, 30.0];
+    let from = kin.forward(&start);
+    let at = |dy: f64, dz: f64| {
+        let p = from.translation.vector + Vector3::new(0.0, dy, dz);
+        Isometry3::from_parts(Translation3::from(p), from.rotation)
+    };
+    let z10 = ZoneData::predefined("z10").unwrap();
+    let first = MoveRequest { target: Target::Linear(at(-60.0, 0.0)), zone: z10, ..setup().2 };
+    let second = MoveRequest { target: Target::Linear(at(-60.0, -60.0)), ..setup().2 };
+    let both = |wrist: bool| {
+        let accel = AccelLimits { tcp: 10_000.0, ori: 1e6, joint: [1e6; 6], settle: 0.0 };
+        let mut planner = Planner::new(start, accel);
+        planner.set_settings(MotionSettings { sing_wrist: wrist, ..MotionSettings::default() });
+        let mut moves: Vec<PlannedMove> = planner.push(&kin, &first).unwrap().into_iter().collect();
+        moves.extend(planner.push(&kin, &second).unwrap());
+        moves.extend(planner.flush());
+        moves
+    };
+    let (off, wrist) = (both(false), both(true));
+    assert_eq!(wrist[0].corner_kind(), Some(rapid_motion::plan::CornerKind::Tcp));
+    let total = |m: &[PlannedMove]| m.last().unwrap().end - m[0].start;
+    assert!((total(&off) - 1.21).abs() < 1e-6, "{}", total(&off));
+    assert!((total(&wrist) - 1.21).abs() < 1e-6, "{}", total(&wrist));
+    // The middle of the corner is at the same place either way.
+    let mid = |m: &[PlannedMove]| m[0].sample(&kin, m[0].zone_entry + m[0].corner_time / 2.0).tcp.translation.vector;
+    assert!((mid(&off) - mid(&wrist)).norm() < 1e-6, "{} vs {}", mid(&off), mid(&wrist));
+}

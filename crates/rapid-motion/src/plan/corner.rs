@@ -32,6 +32,9 @@ pub(crate) enum CornerPath {
     /// Between moves of the external axes alone: the axes' values (mm or °, weighted
     /// by their speeds) while the arm stands at `arm`.
     Axes { curve: Bezier<6>, arm: Joints },
+    /// Between SingArea\Wrist moves: the TCP parabola, the wrist axes (4, 5, 6) going
+    /// straight from `from` to `to` over it.
+    Wrist { curve: Bezier<3>, from: [f64; 3], to: [f64; 3] },
     /// Between reorientations of a TCP standing `at`: rotation vectors (°) about the
     /// programmed orientation `point`.
     Ori { curve: Bezier<3>, at: Vector3<f64>, point: UnitQuaternion<f64> },
@@ -76,7 +79,7 @@ pub enum CornerKind {
 impl CornerPath {
     pub(crate) fn kind(&self) -> CornerKind {
         match self {
-            CornerPath::Tcp { .. } => CornerKind::Tcp,
+            CornerPath::Tcp { .. } | CornerPath::Wrist { .. } => CornerKind::Tcp,
             CornerPath::Joint { .. } => CornerKind::Joint,
             CornerPath::Ori { .. } => CornerKind::Orientation,
             CornerPath::Axes { .. } => CornerKind::ExternalAxes,
@@ -91,6 +94,10 @@ impl CornerPath {
                 let [x, y, z] = curve.point(u);
                 Point::Tcp(nalgebra::Vector3::new(x, y, z), ori.at(ori.progress_corner(u, *zone)))
             }
+            CornerPath::Wrist { curve, from, to } => {
+                let [x, y, z] = curve.point(u);
+                Point::Wrist(nalgebra::Vector3::new(x, y, z), super::wrist::wrist_at(*from, *to, u))
+            }
             CornerPath::Joint { curve } => Point::Joints(curve.point(u)),
             CornerPath::Axes { arm, .. } => Point::Joints(*arm),
             CornerPath::Ori { curve, at, point } => {
@@ -104,7 +111,9 @@ impl CornerPath {
     /// the entry and `v_out` at the exit: |dB/du| is twice each leg.
     pub(crate) fn rates(&self, v_in: f64, v_out: f64) -> (f64, f64) {
         let (d0, d1) = match self {
-            CornerPath::Tcp { curve, .. } | CornerPath::Ori { curve, .. } => (curve.speed(0.0), curve.speed(1.0)),
+            CornerPath::Tcp { curve, .. } | CornerPath::Wrist { curve, .. } | CornerPath::Ori { curve, .. } => {
+                (curve.speed(0.0), curve.speed(1.0))
+            }
             CornerPath::Joint { curve } | CornerPath::Axes { curve, .. } => (curve.speed(0.0), curve.speed(1.0)),
         };
         let rate = |v: f64, d: f64| if d > 0.0 { v / d } else { 0.0 };
@@ -115,13 +124,17 @@ impl CornerPath {
     pub(crate) fn ori_zone(&self) -> Option<OriZone> {
         match self {
             CornerPath::Tcp { ori, .. } => Some(*ori),
-            CornerPath::Joint { .. } | CornerPath::Axes { .. } | CornerPath::Ori { .. } => None,
+            CornerPath::Joint { .. } | CornerPath::Axes { .. } | CornerPath::Ori { .. } | CornerPath::Wrist { .. } => {
+                None
+            }
         }
     }
 
     fn arc_length_to(&self, u: f64) -> f64 {
         match self {
-            CornerPath::Tcp { curve, .. } | CornerPath::Ori { curve, .. } => curve.length_to(u),
+            CornerPath::Tcp { curve, .. } | CornerPath::Wrist { curve, .. } | CornerPath::Ori { curve, .. } => {
+                curve.length_to(u)
+            }
             CornerPath::Joint { curve } | CornerPath::Axes { curve, .. } => curve.length_to(u),
         }
     }
@@ -191,14 +204,13 @@ fn arm_ends<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared) ->
     }
     let ends = match (cur.geom.metric(), next.geom.metric()) {
         (Metric::Deg, _) | (_, Metric::Deg) => return None,
-        // SingArea\Wrist moves have no programmed orientation to blend: joint space.
-        (Metric::Mm, Metric::Mm)
-            if same_tool(cur, next)
-                && same_wobj(cur, next)
-                && !cur.geom.wrist_interpolated()
-                && !next.geom.wrist_interpolated() =>
-        {
-            tcp_corner(cur, next, zone)?
+        (Metric::Mm, Metric::Mm) if same_tool(cur, next) && same_wobj(cur, next) => {
+            match (cur.geom.wrist_interpolated(), next.geom.wrist_interpolated()) {
+                (false, false) => tcp_corner(cur, next, zone)?,
+                (true, true) => wrist_corner(cur, next, zone)?,
+                // One keeps its orientation, the other its wrist axes: joint space.
+                _ => joint_corner(kin, cur, next, zone)?,
+            }
         }
         _ => joint_corner(kin, cur, next, zone)?,
     };
@@ -319,6 +331,21 @@ fn tcp_corner(cur: &Prepared, next: &Prepared, zone: f64) -> Option<Ends> {
     Some(Ends { path, s_in, s_out, scale_in: 1.0, scale_out: 1.0 })
 }
 
+/// Between two SingArea\Wrist moves: the TCP on the parabola a TCP corner takes,
+/// the wrist axes straight from where the corner leaves the one move's to where it
+/// joins the other's.
+fn wrist_corner(cur: &Prepared, next: &Prepared, zone: f64) -> Option<Ends> {
+    let (len_in, s_out) = (cur.limits.length, zone);
+    let s_in = len_in - zone;
+    let (Point::Wrist(a, from), Point::Wrist(p, _), Point::Wrist(b, to)) =
+        (cur.geom.at(s_in), cur.geom.at(len_in), next.geom.at(s_out))
+    else {
+        return None;
+    };
+    let curve = Bezier::new(a.into(), p.into(), b.into(), [1.0; 3]);
+    Some(Ends { path: CornerPath::Wrist { curve, from, to }, s_in, s_out, scale_in: 1.0, scale_out: 1.0 })
+}
+
 /// A joint-space parabola through the programmed point's joints. On a joint
 /// move the entry (exit) is the fraction of the move that the TCP zone is of
 /// its TCP distance; on a Cartesian move it is `zone` mm along the path,
@@ -374,7 +401,9 @@ fn turn_and_leg(path: &CornerPath) -> (f64, f64) {
         (turn, n1.min(n2))
     }
     match path {
-        CornerPath::Tcp { curve, .. } | CornerPath::Ori { curve, .. } => legs(curve, &[1.0; 3]),
+        CornerPath::Tcp { curve, .. } | CornerPath::Wrist { curve, .. } | CornerPath::Ori { curve, .. } => {
+            legs(curve, &[1.0; 3])
+        }
         CornerPath::Joint { curve } | CornerPath::Axes { curve, .. } => legs(curve, &curve.weights()),
     }
 }

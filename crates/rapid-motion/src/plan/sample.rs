@@ -112,7 +112,7 @@ impl PlannedMove {
         let (joints, flange, tcp) = self.locate(kin, span, s, &seed);
         let tcp_speed = match &span.piece {
             Piece::Corner(path) => match path {
-                CornerPath::Tcp { curve, .. } => v * curve.speed(s),
+                CornerPath::Tcp { curve, .. } | CornerPath::Wrist { curve, .. } => v * curve.speed(s),
                 CornerPath::Joint { .. } => v * self.tcp_per_unit(kin, span, s, &seed),
                 // The TCP stands while the external axes or the orientation blend.
                 CornerPath::Axes { .. } | CornerPath::Ori { .. } => 0.0,
@@ -163,7 +163,9 @@ impl PlannedMove {
                 (q, flange, self.mount.tcp(&flange))
             }
             point @ Point::Wrist(..) => {
-                let joints = solve_at(kin, &point, &self.mount, seed).unwrap_or(*seed);
+                // The arm is solved iteratively: start it between the samples around.
+                let near = interpolated_seed(&span.seeds, s).unwrap_or(*seed);
+                let joints = solve_at(kin, &point, &self.mount, &near).unwrap_or(*seed);
                 let flange = kin.forward(&joints);
                 (joints, flange, self.mount.tcp(&flange))
             }
@@ -196,6 +198,14 @@ impl PlannedMove {
         let (a, b) = (self.mount.path_pose(&a), self.mount.path_pose(&b));
         (b.translation.vector - a.translation.vector).norm() / (hi - lo)
     }
+}
+
+/// The joints between the two samples around path parameter `s`, in proportion.
+fn interpolated_seed(seeds: &[(f64, Joints)], s: f64) -> Option<Joints> {
+    let after = seeds.partition_point(|(at, _)| *at < s);
+    let ((s0, q0), (s1, q1)) = (seeds.get(after.checked_sub(1)?)?, seeds.get(after)?);
+    let f = if s1 > s0 { ((s - s0) / (s1 - s0)).clamp(0.0, 1.0) } else { 0.0 };
+    Some(std::array::from_fn(|j| q0[j] + f * (q1[j] - q0[j])))
 }
 
 impl Piece {

@@ -11,8 +11,8 @@ use nalgebra::{Matrix3, Vector3};
 
 use crate::{Joints, Kinematics, MotionError, Pose};
 
-/// The TCP closer than this (mm) to the point is on it.
-const TOLERANCE_MM: f64 = 1e-9;
+/// The TCP closer than this (mm, a nanometre) to the point is on it.
+const TOLERANCE_MM: f64 = 1e-6;
 /// Newton steps before the point counts as out of reach.
 const MAX_STEPS: usize = 40;
 /// The largest change of an arm axis in one Newton step (°): far steps keep to the
@@ -20,6 +20,8 @@ const MAX_STEPS: usize = 40;
 const MAX_STEP_DEG: f64 = 10.0;
 /// The difference step of the Jacobian (°).
 const H_DEG: f64 = 1e-6;
+/// Steps between fresh Jacobians.
+const REFRESH: usize = 4;
 
 /// The axes that put the TCP (`tool` on the flange) at `p` with the wrist axes at
 /// `wrist` (axes 4, 5, 6), axes 1–3 found from `seed`'s by Newton's method.
@@ -33,29 +35,41 @@ pub(crate) fn arm_for<K: Kinematics + ?Sized>(
 ) -> Result<Joints, MotionError> {
     let mut q = [seed[0], seed[1], seed[2], wrist[0], wrist[1], wrist[2]];
     let tcp = |q: &Joints| (kin.forward(q) * tool).translation.vector;
-    for _ in 0..MAX_STEPS {
-        let error = p - tcp(&q);
+    let mut here = tcp(&q);
+    let mut solver = None;
+    for step in 0..MAX_STEPS {
+        let error = p - here;
         if !error.iter().all(|e| e.is_finite()) {
             break;
         }
         if error.norm() < TOLERANCE_MM {
             return within_limits(kin, q);
         }
-        let here = tcp(&q);
-        let mut jacobian = Matrix3::zeros();
-        for j in 0..3 {
-            let mut moved = q;
-            moved[j] += H_DEG;
-            jacobian.set_column(j, &((tcp(&moved) - here) / H_DEG));
+        // The Jacobian is taken afresh every few steps (a chord method between): the
+        // seed is near, so it changes little.
+        if step % REFRESH == 0 || solver.is_none() {
+            solver = Some(jacobian(&tcp, &q, &here).lu());
         }
-        let Some(step) = jacobian.lu().solve(&error) else { break };
-        let largest = step.amax();
+        let Some(delta) = solver.as_ref().and_then(|lu| lu.solve(&error)) else { break };
+        let largest = delta.amax();
         let scale = if largest > MAX_STEP_DEG { MAX_STEP_DEG / largest } else { 1.0 };
         for j in 0..3 {
-            q[j] += step[j] * scale;
+            q[j] += delta[j] * scale;
         }
+        here = tcp(&q);
     }
     Err(MotionError::OutOfReach)
+}
+
+/// The TCP's change per degree of axes 1–3 at `q` (the TCP `here`), by differences.
+fn jacobian(tcp: &impl Fn(&Joints) -> Vector3<f64>, q: &Joints, here: &Vector3<f64>) -> Matrix3<f64> {
+    let mut jacobian = Matrix3::zeros();
+    for j in 0..3 {
+        let mut moved = *q;
+        moved[j] += H_DEG;
+        jacobian.set_column(j, &((tcp(&moved) - here) / H_DEG));
+    }
+    jacobian
 }
 
 fn within_limits<K: Kinematics + ?Sized>(kin: &K, q: Joints) -> Result<Joints, MotionError> {
