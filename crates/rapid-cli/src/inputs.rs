@@ -12,6 +12,7 @@ mod backup;
 mod glob;
 mod manifest;
 mod manifest_units;
+mod moc_units;
 mod program_file;
 
 use std::fs;
@@ -26,6 +27,7 @@ use rustc_hash::FxHashSet;
 
 pub(crate) use self::backup::TaskFolder;
 pub(crate) use self::manifest_units::{TaskConveyor, TaskUnit};
+pub(crate) use self::moc_units::read as read_moc_units;
 use self::program_file::{Entry, ProgramFile};
 
 /// Extensions of RAPID module files, compared without regard to case.
@@ -278,6 +280,13 @@ impl Collector {
                     name: signal.name.clone(),
                     type_name: signal.signal_type.rapid_type().to_owned(),
                 }));
+            }
+            "MOC" => {
+                // External units RobotWare's way; each is known to programs by its name.
+                let moc = moc_units::read(&parsed);
+                let names = moc.units.iter().map(|u| u.unit.name.clone());
+                self.predefined.extend(names.map(|name| PredefinedData { name, type_name: "mecunit".to_owned() }));
+                self.units.extend(moc.units);
             }
             "SYS" => {
                 let view = sys::read(&parsed);

@@ -31,12 +31,12 @@ pub(crate) fn choose_model(
     }
     let moc = syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("MOC"));
     let (model, note) = model_of_moc(moc.map(|(_, file)| file))?;
-    // uncertain: how MOC.cfg describes an external axis (ranges, speeds, linear or
-    // rotating) is not in our notes, so its units are not read: say so.
-    let units = moc.map(|(_, file)| rapid_config::moc::external_units(file)).unwrap_or_default();
-    if units.is_empty() {
+    // The external units MOC.cfg describes in a way we cannot read: say so.
+    let unread = moc.map(|(_, file)| crate::inputs::read_moc_units(file).unread).unwrap_or_default();
+    if unread.is_empty() {
         return Ok((model, note));
     }
+    let units: Vec<String> = unread.iter().map(|(name, why)| format!("{name} ({why})")).collect();
     let unread = format!(
         "MOC.cfg's mechanical units {} are not read: their axes do not move (a manifest's [[unit]] configures external axes)",
         units.join(", ")

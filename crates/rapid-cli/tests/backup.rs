@@ -467,3 +467,85 @@ fn a_backups_home_folder_is_the_home_device() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "recipe blue boxes\n");
 }
+
+/// A track as RobotWare's MOC.cfg links it (our own values): 10 m long, the motor's
+/// 300 rad/s over a gear ratio of 300 rad/m, so 1 m/s; 2.5 m/s²; it carries ROB_1.
+const MOC_TRACK: &str = "MOC:CFG_1.0:6:0::
+#
+MECHANICAL_UNIT:
+
+      -name \"ROB_1\"
+
+      -name \"TRK1\" -use_single_0 \"TRK1\" -activate_at_start_up  -deactivation_forbidden
+#
+ROBOT:
+
+      -name \"ROB_1\" -use_robot_type \"ROB1_120_0.58_3\" -base_frame_coordinated \"TRK1\"
+#
+SINGLE:
+
+      -name \"TRK1\" -use_single_type \"TRK1\" -use_joint \"TRK1\"
+#
+SINGLE_TYPE:
+
+      -name \"TRK1\" -mechanics \"TRACK\"
+#
+JOINT:
+
+      -name \"TRK1\" -logical_axis 7 -use_arm \"TRK1\" -use_transmission \"TRK1\" -use_drive_system \"TRK1\"
+#
+ARM:
+
+      -name \"TRK1\" -use_acc_data \"TRK1\" -upper_joint_bound 10 -lower_joint_bound -0.1
+#
+ACC_DATA:
+
+      -name \"TRK1\" -wc_acc 2.5 -wc_dec 2.5
+#
+TRANSMISSION:
+
+      -name \"TRK1\" -transm_joint 300
+#
+DRIVE_SYSTEM:
+
+      -name \"TRK1\" -use_stress_duty_cycle \"TRK1\"
+#
+STRESS_DUTY_CYCLE:
+
+      -name \"TRK1\" -speed_absolute_max 300
+";
+
+#[test]
+fn a_track_of_the_backups_moc_cfg_moves_and_carries_the_robot() {
+    // The track goes 500 mm at its 1000 mm/s with 2500 mm/s² (v1000's v_leax does not
+    // limit it): 500/1000 + 1000/2500 = 0.9 s, + 0.05 s settle. The robot stands on it:
+    // its TCP goes 500 mm along the world x axis with it. The unit may not be
+    // deactivated (-deactivation_forbidden).
+    let dir = scratch("moc_track");
+    let program = "MODULE MainModule
+  VAR clock c;
+  VAR jointtarget jt;
+  VAR pos before;
+  VAR pos after;
+  PROC main()
+    MoveAbsJ [[0,0,0,0,90,0],[0,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;
+    before := CPos(\\Tool:=tool0);
+    ClkStart c;
+    MoveExtJ [[0,0,0,0,90,0],[500,9E9,9E9,9E9,9E9,9E9]], v1000, fine;
+    TPWrite \"t \" + NumToStr(ClkRead(c), 2);
+    jt := CJointT();
+    TPWrite \"track \" \\Num:=jt.extax.eax_a;
+    after := CPos(\\Tool:=tool0);
+    TPWrite \"moved \" \\Pos:=after - before;
+    DeactUnit TRK1;
+  ENDPROC
+ENDMODULE
+";
+    write(&dir, &[("cell/SYSPAR/MOC.cfg", MOC_TRACK), ("cell/RAPID/TASK1/PROGMOD/MainModule.mod", program)]);
+    let out = rapid_in(&dir, &["run", "--quiet", "cell"]);
+    assert_eq!(text(&out.stdout), "t 0.95\ntrack 500\nmoved [500,0,0]\n", "{}", text(&out.stderr));
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("TRK1 is configured with deactivation forbidden"), "{stderr}");
+    assert!(!stderr.contains("are not read"), "{stderr}");
+}

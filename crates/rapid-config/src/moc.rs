@@ -1,5 +1,6 @@
 //! The motion configuration (`MOC.cfg`), as far as programs see it: the robots and the
-//! robot types they use (`ROBOT: -name "ROB_1" -use_robot_type "ROB1"`).
+//! robot types they use (`ROBOT: -name "ROB_1" -use_robot_type "ROB1"`), and the external
+//! mechanical units with their axes as the file links them.
 
 use crate::CfgFile;
 
@@ -32,4 +33,99 @@ pub fn external_units(file: &CfgFile) -> Vec<String> {
         .filter(|name| !robots.contains(&name.to_ascii_uppercase()))
         .map(str::to_owned)
         .collect()
+}
+
+/// One axis of an external mechanical unit as MOC.cfg links it together, its values as
+/// written (SI units: metres or radians, seconds); `None` where a link or a value is
+/// missing. `SINGLE` names the `SINGLE_TYPE` (its `-mechanics`) and the `JOINT` (its
+/// `-logical_axis`), the joint its `ARM` (the working range; its `ACC_DATA`, the
+/// acceleration), its `TRANSMISSION` (the gear ratio) and its `DRIVE_SYSTEM`, whose
+/// `STRESS_DUTY_CYCLE` gives the motor's highest speed.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SingleAxis {
+    pub single: String,
+    pub mechanics: Option<String>,
+    pub logical_axis: Option<i64>,
+    pub lower: Option<f64>,
+    pub upper: Option<f64>,
+    pub acc: Option<f64>,
+    /// `-transm_joint`: motor radians per unit of the joint.
+    pub transmission: Option<f64>,
+    /// `-speed_absolute_max`: the motor's highest speed, rad/s.
+    pub motor_speed_max: Option<f64>,
+}
+
+/// An external mechanical unit (a `MECHANICAL_UNIT` no `ROBOT` is): its flags and its
+/// axes (`-use_single_0` … `-use_single_5`).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct MechUnit {
+    pub name: String,
+    pub line: u32,
+    pub active_at_start: bool,
+    pub deactivation_forbidden: bool,
+    /// A `ROBOT` has its base coordinated with this unit (`-base_frame_coordinated`):
+    /// the unit carries that robot.
+    pub carries_robot: bool,
+    pub axes: Vec<SingleAxis>,
+}
+
+/// The external mechanical units of a MOC file with their axes.
+pub fn mechanical_units(file: &CfgFile) -> Vec<MechUnit> {
+    let external = external_units(file);
+    file.instances("MECHANICAL_UNIT")
+        .filter(|inst| inst.name().is_some_and(|n| external.iter().any(|e| e == n)))
+        .map(|inst| {
+            let name = inst.name().unwrap_or_default().to_owned();
+            let carries_robot = file
+                .instances("ROBOT")
+                .any(|r| r.value("base_frame_coordinated").is_some_and(|u| u.eq_ignore_ascii_case(&name)));
+            let axes = (0..6)
+                .filter_map(|k| inst.value(&format!("use_single_{k}")))
+                .map(|single| single_axis(file, single))
+                .collect();
+            MechUnit {
+                line: inst.line,
+                active_at_start: inst.has("activate_at_start_up"),
+                deactivation_forbidden: inst.has("deactivation_forbidden"),
+                carries_robot,
+                axes,
+                name,
+            }
+        })
+        .collect()
+}
+
+/// The instance of a type with this `-name`.
+fn named<'a>(file: &'a CfgFile, type_name: &'a str, name: &str) -> Option<&'a crate::Instance> {
+    file.instances(type_name).find(|inst| inst.name().is_some_and(|n| n.eq_ignore_ascii_case(name)))
+}
+
+/// A number attribute of the instance of a type with this `-name`.
+fn number(file: &CfgFile, type_name: &str, name: Option<&str>, attr: &str) -> Option<f64> {
+    named(file, type_name, name?)?.value(attr)?.trim().parse().ok()
+}
+
+fn single_axis(file: &CfgFile, single: &str) -> SingleAxis {
+    let inst = named(file, "SINGLE", single);
+    let link = |attr: &str| inst.and_then(|i| i.value(attr));
+    let mechanics = link("use_single_type")
+        .and_then(|t| named(file, "SINGLE_TYPE", t))
+        .and_then(|t| t.value("mechanics"))
+        .map(str::to_owned);
+    let joint = link("use_joint").and_then(|j| named(file, "JOINT", j));
+    let joint_link = |attr: &str| joint.and_then(|j| j.value(attr));
+    let arm = joint_link("use_arm").and_then(|a| named(file, "ARM", a));
+    let stress = joint_link("use_drive_system")
+        .and_then(|d| named(file, "DRIVE_SYSTEM", d))
+        .and_then(|d| d.value("use_stress_duty_cycle"));
+    SingleAxis {
+        single: single.to_owned(),
+        mechanics,
+        logical_axis: joint_link("logical_axis").and_then(|v| v.trim().parse().ok()),
+        lower: arm.and_then(|a| a.value("lower_joint_bound")).and_then(|v| v.trim().parse().ok()),
+        upper: arm.and_then(|a| a.value("upper_joint_bound")).and_then(|v| v.trim().parse().ok()),
+        acc: number(file, "ACC_DATA", arm.and_then(|a| a.value("use_acc_data")), "wc_acc"),
+        transmission: number(file, "TRANSMISSION", joint_link("use_transmission"), "transm_joint"),
+        motor_speed_max: number(file, "STRESS_DUTY_CYCLE", stress, "speed_absolute_max"),
+    }
 }

@@ -11,7 +11,7 @@ use toml::Spanned;
 /// Every axis reaches its highest speed in this time unless the manifest gives an
 /// acceleration (the arm's axes are modelled the same way).
 // uncertain: ABB derives accelerations from the unit's dynamic model; not public.
-const RAMP_TIME: f64 = 0.15;
+pub(super) const RAMP_TIME: f64 = 0.15;
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
