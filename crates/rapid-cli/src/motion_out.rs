@@ -74,6 +74,18 @@ pub(crate) fn configure(robot: &mut RobotState, model: &'static rapid_motion::Ro
     }
 }
 
+/// Places the robot `ROB_n` (`n` from 1, the n-th motion task's) where MOC.cfg's
+/// `ROBOT` instance of that name has its base frame; the world frame without one.
+pub(crate) fn configure_base(robot: &mut RobotState, syspar: &[(String, rapid_config::CfgFile)], n: usize) {
+    let moc = syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("MOC"));
+    let robots = moc.map(|(_, file)| rapid_config::moc::robots(file)).unwrap_or_default();
+    let name = format!("ROB_{n}");
+    let Some(found) = robots.iter().find(|r| r.name.eq_ignore_ascii_case(&name)) else { return };
+    let (pos, orient) = found.base_frame;
+    robot.base_frame = rapid_motion::pose::pose(pos.map(|m| m * 1000.0), orient);
+    robot.active.base = robot.base_frame;
+}
+
 /// Gives the robot the external units configured for its task: those naming it, and
 /// for the first motion task those naming none. `task` is `None` when the run has one
 /// task only (every unit is its).

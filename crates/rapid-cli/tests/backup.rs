@@ -549,3 +549,32 @@ ENDMODULE
     assert!(stderr.contains("TRK1 is configured with deactivation forbidden"), "{stderr}");
     assert!(!stderr.contains("are not read"), "{stderr}");
 }
+
+#[test]
+fn the_robot_stands_where_the_backups_moc_cfg_puts_its_base() {
+    // MOC.cfg puts ROB_1's base 0.5 m up and turned 90° about z: its x axis is the
+    // world's y. The world target [0, 300, 900] pointing down (in the base frame; in the
+    // world [0, -0.70711, 0.70711, 0]) is [300, 0, 400] in the base frame, which the
+    // IRB 120 reaches at [0, 0.5818, 28.9565, 0, 60.4616, 0] (an independent inverse
+    // kinematics, tests/hand/). CPos reports the world.
+    let dir = scratch("moc_base");
+    let moc = "MOC:CFG_1.0:6:0::\n#\nROBOT:\n\n      -name \"ROB_1\" -use_robot_type \"ROB1_120_0.58_3\"\\\n      \
+               -base_frame_pos_z 0.5 -base_frame_orient_u0 0.70710678 -base_frame_orient_u3 0.70710678\n";
+    let program = "MODULE MainModule
+  VAR jointtarget jt;
+  VAR pos w;
+  PROC main()
+    MoveJ [[0,300,900],[0,-0.70710678,0.70710678,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;
+    jt := CJointT();
+    TPWrite \"axes \" + NumToStr(jt.robax.rax_1, 3) + \" \" + NumToStr(jt.robax.rax_2, 3) + \" \" + NumToStr(jt.robax.rax_3, 3)
+      + \" \" + NumToStr(jt.robax.rax_5, 3);
+    w := CPos(\\Tool:=tool0 \\WObj:=wobj0);
+    TPWrite \"world \" \\Pos:=w;
+  ENDPROC
+ENDMODULE
+";
+    write(&dir, &[("cell/SYSPAR/MOC.cfg", moc), ("cell/RAPID/TASK1/PROGMOD/MainModule.mod", program)]);
+    let out = rapid_in(&dir, &["run", "--quiet", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "axes 0.000 0.582 28.957 60.462\nworld [0,300,900]\n");
+}

@@ -5,12 +5,16 @@
 use crate::CfgFile;
 
 /// One `ROBOT` instance.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Robot {
     pub name: String,
     /// `-use_robot_type`: the name of the `ROBOT_TYPE` instance.
     pub robot_type: Option<String>,
     pub line: u32,
+    /// The robot's base frame in the world: `-base_frame_pos_x/y/z` (metres) and
+    /// `-base_frame_orient_u0` … `u3` (a unit quaternion, u0 the scalar part); the world
+    /// frame itself where they are absent.
+    pub base_frame: ([f64; 3], [f64; 4]),
 }
 
 /// The robots of a MOC file.
@@ -19,9 +23,20 @@ pub fn robots(file: &CfgFile) -> Vec<Robot> {
         .filter_map(|inst| {
             let name = inst.name()?;
             let robot_type = inst.value("use_robot_type").map(str::to_owned);
-            Some(Robot { name: name.to_owned(), robot_type, line: inst.line })
+            let base_frame = base_frame(inst);
+            Some(Robot { name: name.to_owned(), robot_type, line: inst.line, base_frame })
         })
         .collect()
+}
+
+/// An instance's base frame attributes (ROBOT, SINGLE): position in metres, orientation
+/// as a quaternion; absent values are those of the identity.
+fn base_frame(inst: &crate::Instance) -> ([f64; 3], [f64; 4]) {
+    let value = |attr: &str, default: f64| inst.value(attr).and_then(|v| v.trim().parse().ok()).unwrap_or(default);
+    let pos = ["x", "y", "z"].map(|c| value(&format!("base_frame_pos_{c}"), 0.0));
+    let orient = [("u0", 1.0), ("u1", 0.0), ("u2", 0.0), ("u3", 0.0)]
+        .map(|(u, default)| value(&format!("base_frame_orient_{u}"), default));
+    (pos, orient)
 }
 
 /// The mechanical units of a MOC file that are not robots (`MECHANICAL_UNIT` instances
@@ -41,7 +56,7 @@ pub fn external_units(file: &CfgFile) -> Vec<String> {
 /// `-logical_axis`), the joint its `ARM` (the working range; its `ACC_DATA`, the
 /// acceleration), its `TRANSMISSION` (the gear ratio) and its `DRIVE_SYSTEM`, whose
 /// `STRESS_DUTY_CYCLE` gives the motor's highest speed.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct SingleAxis {
     pub single: String,
     pub mechanics: Option<String>,
@@ -53,6 +68,9 @@ pub struct SingleAxis {
     pub transmission: Option<f64>,
     /// `-speed_absolute_max`: the motor's highest speed, rad/s.
     pub motor_speed_max: Option<f64>,
+    /// The `SINGLE`'s base frame (as [`Robot::base_frame`]): where the axis stands in
+    /// the world (a track moves along its x axis).
+    pub base_frame: ([f64; 3], [f64; 4]),
 }
 
 /// An external mechanical unit (a `MECHANICAL_UNIT` no `ROBOT` is): its flags and its
@@ -127,5 +145,6 @@ fn single_axis(file: &CfgFile, single: &str) -> SingleAxis {
         acc: number(file, "ACC_DATA", arm.and_then(|a| a.value("use_acc_data")), "wc_acc"),
         transmission: number(file, "TRANSMISSION", joint_link("use_transmission"), "transm_joint"),
         motor_speed_max: number(file, "STRESS_DUTY_CYCLE", stress, "speed_absolute_max"),
+        base_frame: inst.map_or(([0.0; 3], [1.0, 0.0, 0.0, 0.0]), base_frame),
     }
 }

@@ -65,6 +65,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         }
     };
     crate::motion_out::configure(&mut loaded.vm.resources_mut().robot, model, args);
+    crate::motion_out::configure_base(&mut loaded.vm.resources_mut().robot, &inputs.syspar, 1);
     crate::motion_out::configure_units(&mut loaded.vm.resources_mut().robot, &inputs.units, None, true);
     let resources = loaded.vm.resources_mut();
     let conveyors = &inputs.conveyors;

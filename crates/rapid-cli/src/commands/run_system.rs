@@ -96,10 +96,13 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         };
     let units = tasks[0].inputs.units.clone();
     let mut first_motion = true;
+    let mut robot_number = 0;
     for (spec, program) in &mut loaded {
         if spec.motion {
+            robot_number += 1;
             let robot = &mut program.vm.resources_mut().robot;
             crate::motion_out::configure(robot, model, args);
+            crate::motion_out::configure_base(robot, &tasks[0].inputs.syspar, robot_number);
             crate::motion_out::configure_units(robot, &units, Some(&spec.name), first_motion);
             let conveyors = &tasks[0].inputs.conveyors;
             let found =

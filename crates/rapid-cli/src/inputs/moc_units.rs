@@ -5,8 +5,8 @@
 // uncertain: only the mechanics `TRACK` is known to us (a linear axis); a unit with any
 // other is not read. The highest speed is the motor's (`STRESS_DUTY_CYCLE
 // -speed_absolute_max`, rad/s) over the gear ratio (`TRANSMISSION -transm_joint`); the
-// controller's own speed limit for the axis may be lower. A track moves along the world
-// x axis (the unit's base frame attributes are not read).
+// controller's own speed limit for the axis may be lower. A track moves along its
+// SINGLE's base frame's x axis.
 
 use rapid_config::moc::{MechUnit, SingleAxis};
 use rapid_config::CfgFile;
@@ -41,12 +41,16 @@ fn unit(mech: &MechUnit) -> Result<ExternalUnit, String> {
     }
     let axes = mech.axes.iter().map(axis).collect::<Result<Vec<_>, _>>()?;
     let carries_robot = mech.carries_robot && matches!(axes.as_slice(), [a] if a.linear);
+    // A track moves along its SINGLE's base frame's x axis (the world's without one).
+    let (pos, orient) = mech.axes[0].base_frame;
+    let frame = (pos != [0.0; 3] || orient != [1.0, 0.0, 0.0, 0.0])
+        .then(|| rapid_motion::pose::pose(pos.map(|m| m * 1000.0), orient));
     Ok(ExternalUnit {
         name: mech.name.clone(),
         axes,
         active_at_start: mech.active_at_start,
         deactivation_forbidden: mech.deactivation_forbidden,
-        frame: None,
+        frame,
         carries_robot,
     })
 }

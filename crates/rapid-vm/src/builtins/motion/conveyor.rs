@@ -285,9 +285,15 @@ impl super::robot::RobotState {
     }
 
     /// How the object the robot follows at `t` on a move that started at `move_start`
-    /// has moved since the move was planned (in the robot's base frame; the base is the
-    /// world frame here); `eax` gives the external axes at a time.
+    /// has moved since the move was planned, in the robot's base frame; `eax` gives the
+    /// external axes at a time.
     fn carried(&self, t: f64, move_start: f64, eax: impl Fn(f64) -> Option<Eax>) -> Option<Pose> {
+        let world = self.carried_world(t, move_start, eax)?;
+        Some(self.base_frame.inverse() * world * self.base_frame)
+    }
+
+    /// The same motion in the world frame.
+    fn carried_world(&self, t: f64, move_start: f64, eax: impl Fn(f64) -> Option<Eax>) -> Option<Pose> {
         let span = self.following.span_of(move_start).or_else(|| self.following.fading_at(t))?;
         let t = span.t_end.map_or(t, |end| t.min(end));
         let at = self.mover_at(&span.mover, t, eax)?;
@@ -356,6 +362,7 @@ impl super::robot::RobotState {
     /// and its TCP speed in the world.
     fn on_track(&self, planned: &rapid_motion::plan::PlannedMove, mut sample: Sample) -> Sample {
         let Some((axis, dir)) = self.external.track() else { return sample };
+        let dir = self.in_base(dir);
         let (Some(end), Some(now)) = (planned.eax_end(), planned.eax_at(sample.time)) else { return sample };
         let by = Translation3::from(dir * (now[axis] - end[axis]));
         sample.tcp = by * sample.tcp;
@@ -377,13 +384,13 @@ impl super::robot::RobotState {
     /// move was planned (`None` when it followed none): a sample's TCP in that work
     /// object is its carried TCP brought back by this motion.
     pub fn carry_at(&self, planned: &rapid_motion::plan::PlannedMove, t: f64) -> Option<Pose> {
-        self.carried(t, planned.start, |at| planned.eax_at(at))
+        self.carried_world(t, planned.start, |at| planned.eax_at(at))
     }
 
     /// A sample carried by the work object the robot followed (unchanged when it
     /// followed none).
     pub(super) fn carried_sample(&self, planned: &rapid_motion::plan::PlannedMove, mut sample: Sample) -> Sample {
-        let Some(by) = self.carry_at(planned, sample.time) else { return sample };
+        let Some(by) = self.carried(sample.time, planned.start, |at| planned.eax_at(at)) else { return sample };
         sample.flange = by * sample.flange;
         sample.tcp = by * sample.tcp;
         if let Ok(joints) = self.kin.inverse_near(&sample.flange, &sample.joints) {

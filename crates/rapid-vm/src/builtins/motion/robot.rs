@@ -125,6 +125,9 @@ pub struct Queued {
 pub struct RobotState {
     pub model: &'static RobotModel,
     pub kin: Opw,
+    /// The robot's base frame in the world (MOC.cfg's `ROBOT -base_frame_pos/orient`);
+    /// a track moves it further (`track.rs` `track_base`).
+    pub base_frame: rapid_motion::Pose,
     pub(super) planner: Planner,
     /// Final moves the robot may still be on, oldest first.
     pub(super) ahead: VecDeque<PlannedMove>,
@@ -209,6 +212,7 @@ impl RobotState {
         RobotState {
             model,
             kin,
+            base_frame: rapid_motion::Pose::identity(),
             planner,
             ahead: VecDeque::new(),
             recorded: None,

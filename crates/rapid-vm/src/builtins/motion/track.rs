@@ -18,32 +18,38 @@ impl ExternalUnits {
 }
 
 impl super::robot::RobotState {
-    /// The robot's base frame in the world with its track at `eax` (the world frame
-    /// without a track); a track value of 9E9 is where the track stands at the end of
-    /// the planned moves.
+    /// The robot's base frame in the world with its track at `eax`: its configured base
+    /// frame, moved along the track by the track's value (a value of 9E9 is where the
+    /// track stands at the end of the planned moves).
     pub fn track_base(&self, eax: &[f64; 6]) -> rapid_motion::Pose {
-        let Some((axis, dir)) = self.external.track() else { return rapid_motion::Pose::identity() };
+        let Some((axis, dir)) = self.external.track() else { return self.base_frame };
         let mut at = eax[axis];
         if is_unused(at) {
             at = self.planner.end_eax().map_or(0.0, |e| e[axis]);
         }
-        rapid_motion::Pose::from_parts(nalgebra::Translation3::from(dir * at), nalgebra::UnitQuaternion::identity())
+        let along = nalgebra::Translation3::from(dir * at);
+        rapid_motion::Pose::from_parts(along, nalgebra::UnitQuaternion::identity()) * self.base_frame
+    }
+
+    /// A direction in the world as the robot's base frame sees it.
+    pub(super) fn in_base(&self, world: nalgebra::Vector3<f64>) -> nalgebra::Vector3<f64> {
+        self.base_frame.rotation.inverse() * world
     }
 
     /// The robot's base frame in the world at controller time `t`.
     pub fn track_base_at(&self, t: f64) -> rapid_motion::Pose {
         match self.eax_at(t) {
             Some(eax) => self.track_base(&eax),
-            None => rapid_motion::Pose::identity(),
+            None => self.base_frame,
         }
     }
 }
 
-/// How far the track carries the robot's base over a move to `ext` (world frame, mm;
-/// the base frame is the world's turned by nothing): zero without a moving track.
+/// How far the track carries the robot's base over a move to `ext`, in the base frame
+/// (mm): zero without a moving track.
 pub(super) fn track_travel(robot: &super::robot::RobotState, ext: &ExternalMove) -> nalgebra::Vector3<f64> {
     match robot.external.track() {
-        Some((axis, dir)) => dir * (ext.to[axis] - ext.from[axis]),
+        Some((axis, dir)) => robot.in_base(dir * (ext.to[axis] - ext.from[axis])),
         None => nalgebra::Vector3::zeros(),
     }
 }
@@ -62,7 +68,8 @@ pub(super) fn track_speed_scale(
     use rapid_motion::plan::Target;
     use rapid_motion::Kinematics as _;
     let Some((axis, dir)) = robot.external.track() else { return Ok(1.0) };
-    let shift = dir * (ext.to[axis] - ext.from[axis]);
+    // In the base frame, as the targets are.
+    let shift = robot.in_base(dir * (ext.to[axis] - ext.from[axis]));
     if shift.norm() < 1e-9 {
         return Ok(1.0);
     }
