@@ -56,6 +56,8 @@ pub(crate) struct Inputs {
     pub(crate) root: Option<PathBuf>,
     /// The robot model a manifest names (`[system] robot`).
     pub(crate) robot: Option<String>,
+    /// A manifest's robot base frames by motion task (mm, quaternion).
+    pub(crate) robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
     /// The external units a manifest configures (`[[unit]]`), with their tasks.
     pub(crate) units: Vec<TaskUnit>,
     /// The conveyors a manifest configures (`[[conveyor]]`), with their tasks.
@@ -132,6 +134,7 @@ struct Collector {
     sys: Option<sys::Sys>,
     root: Option<PathBuf>,
     robot: Option<String>,
+    robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
     units: Vec<TaskUnit>,
     conveyors: Vec<TaskConveyor>,
     shared_modules: Vec<usize>,
@@ -333,6 +336,7 @@ impl Collector {
         self.add_task_ids(&manifest.sys);
         self.root = Some(manifest.root.clone());
         self.robot = manifest.robot.clone();
+        self.robot_bases = manifest.robot_bases.clone();
         self.units = manifest.units.clone();
         self.conveyors = manifest.conveyors.clone();
         // Each unit is known to programs by its name, a mecunit (ActUnit TRACK).
@@ -484,6 +488,7 @@ impl Collector {
             sys: self.sys,
             root: self.root,
             robot: self.robot,
+            robot_bases: self.robot_bases,
             units: self.units,
             conveyors: self.conveyors,
             shared_modules: self.shared_modules,

@@ -74,16 +74,25 @@ pub(crate) fn configure(robot: &mut RobotState, model: &'static rapid_motion::Ro
     }
 }
 
-/// Places the robot `ROB_n` (`n` from 1, the n-th motion task's) where MOC.cfg's
-/// `ROBOT` instance of that name has its base frame; the world frame without one.
-pub(crate) fn configure_base(robot: &mut RobotState, syspar: &[(String, rapid_config::CfgFile)], n: usize) {
-    let moc = syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("MOC"));
-    let robots = moc.map(|(_, file)| rapid_config::moc::robots(file)).unwrap_or_default();
-    let name = format!("ROB_{n}");
-    let Some(found) = robots.iter().find(|r| r.name.eq_ignore_ascii_case(&name)) else { return };
-    let (pos, orient) = found.base_frame;
-    robot.base_frame = rapid_motion::pose::pose(pos.map(|m| m * 1000.0), orient);
-    robot.active.base = robot.base_frame;
+/// Places the robot of motion task `task`, `ROB_n` (`n` from 1, the n-th motion
+/// task's), where the manifest's `base`/`orientation` of that task puts it, else where
+/// MOC.cfg's `ROBOT` instance of that name has its base frame; the world frame without
+/// either.
+pub(crate) fn configure_base(robot: &mut RobotState, inputs: &crate::inputs::Inputs, n: usize, task: &str) {
+    let from_manifest = inputs.robot_bases.iter().find(|(t, _, _)| t.eq_ignore_ascii_case(task));
+    let base = match from_manifest {
+        Some((_, base, orientation)) => rapid_motion::pose::pose(*base, *orientation),
+        None => {
+            let moc = inputs.syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("MOC"));
+            let robots = moc.map(|(_, file)| rapid_config::moc::robots(file)).unwrap_or_default();
+            let name = format!("ROB_{n}");
+            let Some(found) = robots.iter().find(|r| r.name.eq_ignore_ascii_case(&name)) else { return };
+            let (pos, orient) = found.base_frame;
+            rapid_motion::pose::pose(pos.map(|m| m * 1000.0), orient)
+        }
+    };
+    robot.base_frame = base;
+    robot.active.base = base;
 }
 
 /// Gives the robot the external units configured for its task: those naming it, and

@@ -301,3 +301,32 @@ fn shared_modules_of_a_manifest_are_one_module_for_every_task() {
     assert_eq!(out.status.code(), Some(1));
     finding_at(&text(&out.stderr), "no module file", "proj/rapid.toml:2:11");
 }
+
+#[test]
+fn a_motion_tasks_base_places_its_robot_in_the_world() {
+    // The robot stands 500 mm up, turned 90° about z (its x axis the world's y): the
+    // world target [0, 300, 900] pointing down in its base frame is [300, 0, 400] there,
+    // reached at [0, 0.5818, 28.9565, 0, 60.4616, 0] (tests/hand/, as the backup test).
+    // A base on a task that moves no robot is a finding.
+    let dir = scratch("robot_base");
+    let manifest = "[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\nbase = [0, 0, 500]\n\
+                    orientation = [0.70710678, 0, 0, 0.70710678]\n";
+    let program = "MODULE main
+  VAR jointtarget jt;
+  PROC main()
+    MoveJ [[0,300,900],[0,-0.70710678,0.70710678,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;
+    jt := CJointT();
+    TPWrite \"axes \" + NumToStr(jt.robax.rax_2, 3) + \" \" + NumToStr(jt.robax.rax_3, 3);
+  ENDPROC
+ENDMODULE
+";
+    write(&dir, &[("cell/rapid.toml", manifest), ("cell/main.mod", program)]);
+    let out = rapid_in(&dir, &["run", "--quiet", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "axes 0.582 28.957\n");
+    let bad = format!("{manifest}\n[[task]]\nname = \"T_PLC\"\nmodules = [\"main.mod\"]\nbase = [0, 0, 1]\n");
+    write(&dir, &[("bad/rapid.toml", &bad), ("bad/main.mod", program)]);
+    let out = rapid_in(&dir, &["check", "bad"]);
+    let report = format!("{}{}", text(&out.stdout), text(&out.stderr));
+    finding_at(&report, "task `T_PLC`: base and orientation place a motion task's robot", "bad/rapid.toml:10:8");
+}

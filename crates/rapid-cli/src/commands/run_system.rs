@@ -102,7 +102,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             robot_number += 1;
             let robot = &mut program.vm.resources_mut().robot;
             crate::motion_out::configure(robot, model, args);
-            crate::motion_out::configure_base(robot, &tasks[0].inputs.syspar, robot_number);
+            crate::motion_out::configure_base(robot, &tasks[0].inputs, robot_number, &spec.name);
             crate::motion_out::configure_units(robot, &units, Some(&spec.name), first_motion);
             let conveyors = &tasks[0].inputs.conveyors;
             let found =

@@ -71,6 +71,9 @@ pub(crate) struct Manifest {
     pub(crate) units: Vec<super::manifest_units::TaskUnit>,
     /// `[[conveyor]]`: conveyors for conveyor tracking and the tasks they belong to.
     pub(crate) conveyors: Vec<super::manifest_units::TaskConveyor>,
+    /// A motion task's `base` and `orientation`: where its robot stands in the world (mm,
+    /// a unit quaternion), by task name.
+    pub(crate) robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
     pub(crate) findings: Vec<Finding>,
 }
 
@@ -108,6 +111,8 @@ struct RawTask {
     foreground: Option<Spanned<String>>,
     trust_level: Option<Spanned<String>>,
     rmq: Option<RawRmq>,
+    base: Option<Spanned<Vec<f64>>>,
+    orientation: Option<Spanned<Vec<f64>>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -300,12 +305,14 @@ impl Reader<'_> {
         });
         let rmq = raw.rmq.as_ref().map_or_else(Rmq::default, |rmq| self.rmq(&name, rmq));
         let modules = self.modules(&name, &raw.modules);
+        let motion_task = raw.motion.unwrap_or(idx == 0);
+        self.robot_base(&name, raw, motion_task);
         self.manifest.sys.tasks.push(Task {
             name,
             task_type,
             entry,
             trust_level,
-            motion_task: raw.motion.unwrap_or(idx == 0),
+            motion_task,
             mechanical_unit_group: None,
             hidden: false,
             foreground: raw.foreground.as_ref().map(|f| f.get_ref().clone()).filter(|f| !f.is_empty()),
@@ -313,6 +320,22 @@ impl Reader<'_> {
             line,
         });
         self.manifest.modules.push(modules);
+    }
+
+    /// A motion task's `base`/`orientation`: where its robot stands in the world.
+    fn robot_base(&mut self, task: &str, raw: &RawTask, motion_task: bool) {
+        let Some(key) = raw.base.as_ref().or(raw.orientation.as_ref()) else { return };
+        if !motion_task {
+            let message = format!("task `{task}`: base and orientation place a motion task's robot (motion = true)");
+            self.find(key.span(), message);
+            return;
+        }
+        let mut found = Vec::new();
+        let mut find = |span: Range<usize>, message: String| found.push(Finding { span, message });
+        let base = super::manifest_units::fixed::<3>(raw.base.as_ref(), [0.0; 3], "base", task, &mut find);
+        let orientation = super::manifest_units::orientation(raw.orientation.as_ref(), task, &mut find);
+        self.manifest.findings.extend(found);
+        self.manifest.robot_bases.push((task.to_owned(), base, orientation));
     }
 
     fn rmq(&mut self, task: &str, raw: &RawRmq) -> Rmq {

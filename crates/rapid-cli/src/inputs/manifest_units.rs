@@ -240,7 +240,11 @@ pub(super) fn read_conveyors(
 }
 
 /// A unit quaternion (`[1, 0, 0, 0]` when absent).
-fn orientation(raw: Option<&Spanned<Vec<f64>>>, name: &str, find: &mut dyn FnMut(Range<usize>, String)) -> [f64; 4] {
+pub(super) fn orientation(
+    raw: Option<&Spanned<Vec<f64>>>,
+    name: &str,
+    find: &mut dyn FnMut(Range<usize>, String),
+) -> [f64; 4] {
     let orientation = fixed::<4>(raw, [1.0, 0.0, 0.0, 0.0], "orientation", name, find);
     let norm = orientation.iter().map(|q| q * q).sum::<f64>().sqrt();
     if let Some(o) = raw.filter(|_| (norm - 1.0).abs() > 1e-3) {
@@ -250,7 +254,7 @@ fn orientation(raw: Option<&Spanned<Vec<f64>>>, name: &str, find: &mut dyn FnMut
 }
 
 /// An array of exactly N numbers, or `default` when absent.
-fn fixed<const N: usize>(
+pub(super) fn fixed<const N: usize>(
     raw: Option<&Spanned<Vec<f64>>>,
     default: [f64; N],
     key: &str,
