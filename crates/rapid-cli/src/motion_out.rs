@@ -95,6 +95,22 @@ pub(crate) fn configure_base(robot: &mut RobotState, inputs: &crate::inputs::Inp
     robot.active.base = base;
 }
 
+/// Narrows (or widens) the robot `ROB_n`'s axis ranges to those its backup's MOC.cfg
+/// configures (`ARM -lower_joint_bound -upper_joint_bound`); the model's own elsewhere.
+pub(crate) fn configure_ranges(robot: &mut RobotState, syspar: &[(String, rapid_config::CfgFile)], n: usize) {
+    let moc = syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("MOC"));
+    let robots = moc.map(|(_, file)| rapid_config::moc::robots(file)).unwrap_or_default();
+    let name = format!("ROB_{n}");
+    let Some(found) = robots.iter().find(|r| r.name.eq_ignore_ascii_case(&name)) else { return };
+    if found.arm_bounds.iter().all(Option::is_none) {
+        return;
+    }
+    let model = robot.model.limits;
+    let limits =
+        std::array::from_fn(|k| found.arm_bounds[k].map_or(model[k], |(lo, hi)| (lo.to_degrees(), hi.to_degrees())));
+    robot.kin = robot.kin.with_limits(limits);
+}
+
 /// Gives the robot the external units configured for its task: those naming it, and
 /// for the first motion task those naming none. `task` is `None` when the run has one
 /// task only (every unit is its).

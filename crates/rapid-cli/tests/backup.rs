@@ -578,3 +578,26 @@ ENDMODULE
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "axes 0.000 0.582 28.957 60.462\nworld [0,300,900]\n");
 }
+
+#[test]
+fn the_axis_ranges_of_the_backups_moc_cfg_bound_the_robot() {
+    // MOC.cfg narrows axis 1 of ROB_1 to ±1.5708 rad = ±90° (the IRB 120 has ±165°):
+    // 80° is reached, 100° is out of range (50028 for axis 1).
+    let dir = scratch("moc_ranges");
+    let moc = "MOC:CFG_1.0:6:0::\n#\nROBOT:\n\n      -name \"ROB_1\" -use_robot_type \"ROB1_120_0.58_3\"\\\n      \
+               -use_joint_0 \"rob1_1\"\n#\nARM:\n\n      -name \"rob1_1\" -upper_joint_bound 1.5708 -lower_joint_bound -1.5708\n";
+    let program = "MODULE MainModule
+  PROC main()
+    MoveAbsJ [[80,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;
+    TPWrite \"at 80\";
+    MoveAbsJ [[100,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;
+    TPWrite \"at 100\";
+  ENDPROC
+ENDMODULE
+";
+    write(&dir, &[("cell/SYSPAR/MOC.cfg", moc), ("cell/RAPID/TASK1/PROGMOD/MainModule.mod", program)]);
+    let out = rapid_in(&dir, &["run", "--quiet", "cell"]);
+    assert_eq!(text(&out.stdout), "at 80\n");
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stderr).contains("50028 Joint 1 out of range"), "{}", text(&out.stderr));
+}

@@ -15,6 +15,10 @@ pub struct Robot {
     /// `-base_frame_orient_u0` … `u3` (a unit quaternion, u0 the scalar part); the world
     /// frame itself where they are absent.
     pub base_frame: ([f64; 3], [f64; 4]),
+    /// Each axis's working range as configured, radians: the `ARM` of the joint
+    /// `-use_joint_0` … `-use_joint_5` names (through the `JOINT`'s `-use_arm` where
+    /// there is one, else the `ARM` of the joint's own name, as RobotWare names them).
+    pub arm_bounds: [Option<(f64, f64)>; 6],
 }
 
 /// The robots of a MOC file.
@@ -24,9 +28,18 @@ pub fn robots(file: &CfgFile) -> Vec<Robot> {
             let name = inst.name()?;
             let robot_type = inst.value("use_robot_type").map(str::to_owned);
             let base_frame = base_frame(inst);
-            Some(Robot { name: name.to_owned(), robot_type, line: inst.line, base_frame })
+            let arm_bounds = std::array::from_fn(|k| arm_bounds(file, inst.value(&format!("use_joint_{k}"))?));
+            Some(Robot { name: name.to_owned(), robot_type, line: inst.line, base_frame, arm_bounds })
         })
         .collect()
+}
+
+/// The working range of the `ARM` of a robot joint, radians.
+fn arm_bounds(file: &CfgFile, joint: &str) -> Option<(f64, f64)> {
+    let arm = named(file, "JOINT", joint).and_then(|j| j.value("use_arm")).unwrap_or(joint);
+    let lower = number(file, "ARM", Some(arm), "lower_joint_bound")?;
+    let upper = number(file, "ARM", Some(arm), "upper_joint_bound")?;
+    (lower < upper).then_some((lower, upper))
 }
 
 /// An instance's base frame attributes (ROBOT, SINGLE): position in metres, orientation

@@ -67,6 +67,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     crate::motion_out::configure(&mut loaded.vm.resources_mut().robot, model, args);
     let task_name = inputs.task.as_ref().map_or("T_ROB1", |t| t.name.as_str());
     crate::motion_out::configure_base(&mut loaded.vm.resources_mut().robot, &inputs, 1, task_name);
+    crate::motion_out::configure_ranges(&mut loaded.vm.resources_mut().robot, &inputs.syspar, 1);
     crate::motion_out::configure_units(&mut loaded.vm.resources_mut().robot, &inputs.units, None, true);
     let resources = loaded.vm.resources_mut();
     let conveyors = &inputs.conveyors;

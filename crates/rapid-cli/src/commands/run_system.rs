@@ -103,6 +103,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             let robot = &mut program.vm.resources_mut().robot;
             crate::motion_out::configure(robot, model, args);
             crate::motion_out::configure_base(robot, &tasks[0].inputs, robot_number, &spec.name);
+            crate::motion_out::configure_ranges(robot, &tasks[0].inputs.syspar, robot_number);
             crate::motion_out::configure_units(robot, &units, Some(&spec.name), first_motion);
             let conveyors = &tasks[0].inputs.conveyors;
             let found =
