@@ -107,7 +107,10 @@ fn check_mounts(raw: &RawUnit, has_frame: bool, find: &mut dyn FnMut(Range<usize
         if track || !has_frame {
             find(
                 key.span(),
-                format!("unit `{name}`: an axis's base and orientation place it in a unit that carries work objects (give the unit a base or orientation; not on a track)"),
+                format!(
+                    "unit `{name}`: an axis's base and orientation place it in a unit that carries work objects \
+                     (give the unit a base or orientation; not on a track)"
+                ),
             );
         }
     }

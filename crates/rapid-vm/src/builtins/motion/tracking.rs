@@ -56,7 +56,8 @@ fn conveyor_arg(ctx: &Ctx<'_>, wobj: &Value) -> Result<usize, RapidError> {
         .ok_or_else(|| ctx.error(Err::CnvNotActive, "the work object rides no conveyor of the system (ufprog, ufmec)"))
 }
 
-/// What carries a work object: a conveyor, or an external unit with a frame; `None` for a fixed work object (or one no unit of the system carries).
+/// What carries a work object: a conveyor, or an external unit with a frame; `None` for
+/// a fixed work object (or one no unit of the system carries).
 pub(super) fn carrier_of(ctx: &Ctx<'_>, wobj: &Value) -> Result<Option<Carrier>, RapidError> {
     let Some(name) = ufmec(wobj) else { return Ok(None) };
     let robot = &ctx.resources.robot;
