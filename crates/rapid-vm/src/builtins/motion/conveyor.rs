@@ -288,17 +288,22 @@ impl super::robot::RobotState {
     /// has moved since the move was planned, in the robot's base frame; `eax` gives the
     /// external axes at a time.
     fn carried(&self, t: f64, move_start: f64, eax: impl Fn(f64) -> Option<Eax>) -> Option<Pose> {
-        let world = self.carried_world(t, move_start, eax)?;
+        let world = self.carried_world(t, move_start, eax, true)?;
         Some(self.base_frame.inverse() * world * self.base_frame)
     }
 
-    /// The same motion in the world frame.
-    fn carried_world(&self, t: f64, move_start: f64, eax: impl Fn(f64) -> Option<Eax>) -> Option<Pose> {
-        let span = self.following.span_of(move_start).or_else(|| self.following.fading_at(t))?;
+    /// The same motion in the world frame; `robot`: as it carries the robot (faded in
+    /// over the corner into a following), else as the object itself moved (for the
+    /// moves made in its work object only).
+    fn carried_world(&self, t: f64, move_start: f64, eax: impl Fn(f64) -> Option<Eax>, robot: bool) -> Option<Pose> {
+        let span = match robot {
+            true => self.following.span_of(move_start).or_else(|| self.following.fading_at(t))?,
+            false => self.following.span_of(move_start)?,
+        };
         let t = span.t_end.map_or(t, |end| t.min(end));
         let at = self.mover_at(&span.mover, t, eax)?;
         // While the following fades in, the robot is carried by a part of the travel.
-        let w = span.fade.weight(t);
+        let w = if robot { span.fade.weight(t) } else { 1.0 };
         let at: MoverAt = std::array::from_fn(|k| span.at_ref[k] + w * (at[k] - span.at_ref[k]));
         Some(span.mover.carry(&self.following.conveyors, &span.at_ref, &at))
     }
@@ -384,7 +389,7 @@ impl super::robot::RobotState {
     /// move was planned (`None` when it followed none): a sample's TCP in that work
     /// object is its carried TCP brought back by this motion.
     pub fn carry_at(&self, planned: &rapid_motion::plan::PlannedMove, t: f64) -> Option<Pose> {
-        self.carried_world(t, planned.start, |at| planned.eax_at(at))
+        self.carried_world(t, planned.start, |at| planned.eax_at(at), false)
     }
 
     /// A sample carried by the work object the robot followed (unchanged when it
