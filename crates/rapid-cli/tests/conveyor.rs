@@ -357,3 +357,59 @@ fn a_fly_by_point_before_the_first_tracked_move_is_a_corner_not_a_stop() {
         rows.windows(2).map(|w| (1..7).map(|j| (w[1][j] - w[0][j]).abs()).fold(0.0, f64::max)).fold(0.0, f64::max);
     assert!(step < 2.0, "an axis moved {step}° in one sample");
 }
+
+/// Above the object, up 50 mm with it (zone `zone`), then home in the fixed work object.
+fn leave(zone: &str) -> String {
+    format!(
+        "    WaitWObj wobj_cnv1;
+    MoveL above, v500, fine, tool0 \\WObj:=wobj_cnv1;
+    MoveL Offs(above, 0, 0, 50), v500, {zone}, tool0 \\WObj:=wobj_cnv1;
+    MoveL home, v500, fine, tool0;
+    TPWrite \"home \" \\Num:=ClkRead(c);
+    w := CPos(\\Tool:=tool0 \\WObj:=wobj0);
+    TPWrite \"world \" \\Pos:=w;
+    DropWObj wobj_cnv1;
+"
+    )
+}
+
+#[test]
+fn the_last_tracked_move_blends_into_a_fixed_one_without_a_stop() {
+    // §2.2.3: a change from coordinated to uncoordinated motion gets a corner path, not
+    // a stop. With `fine` on the last tracked move the robot stops on the moving object
+    // (settling 0.05 s) before it goes home; with z20 it does not, so it is home sooner,
+    // and home all the same.
+    let fine = run(&project("leave_fine", &leave("fine"), ONE_OBJECT), &[]);
+    assert_eq!(fine.status.code(), Some(0), "{}", stderr(&fine));
+    let dir = project("leave_fly_by", &leave("z20"), ONE_OBJECT);
+    let trace = dir.join("trace.csv");
+    let out = run(&dir, &["--trace", trace.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let time = |text: &str| -> f64 {
+        text.lines().next().and_then(|l| l.strip_prefix("home ")).and_then(|t| t.parse().ok()).expect("a time")
+    };
+    let (t_fine, t_fly) = (time(&stdout(&fine)), time(&stdout(&out)));
+    assert!(t_fly < t_fine - 0.05, "fine {t_fine} s, fly-by {t_fly} s");
+    assert!(stdout(&out).ends_with("world [300,0,400]\n"), "{}", stdout(&out));
+    // Up 50 mm with the object (line 15): until its corner begins 20 mm before the
+    // point (z 130 in the object) the TCP goes straight up in the object's frame, at
+    // x 0 and y 0 there.
+    let text = fs::read_to_string(&trace).expect("trace");
+    let rows: Vec<Vec<f64>> =
+        text.lines().skip(1).map(|l| l.split(',').take(17).map(|f| f.parse().expect("number")).collect()).collect();
+    let up: Vec<&Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .zip(&rows)
+        .filter(|(l, _)| l.ends_with("main.mod:15"))
+        .map(|(_, r)| r)
+        .take_while(|r| r[16] < 129.9)
+        .collect();
+    assert!(up.len() > 10, "{} rows", up.len());
+    let off = up.iter().find(|r| r[14].abs() > 0.01 || r[15].abs() > 0.01);
+    assert!(off.is_none(), "{off:?}");
+    // And no jump anywhere.
+    let step =
+        rows.windows(2).map(|w| (1..7).map(|j| (w[1][j] - w[0][j]).abs()).fold(0.0, f64::max)).fold(0.0, f64::max);
+    assert!(step < 2.0, "an axis moved {step}° in one sample");
+}

@@ -63,6 +63,7 @@ mod mount;
 mod orient;
 mod path;
 mod profile;
+mod rebase;
 mod sample;
 mod segment;
 mod wrist;
@@ -209,6 +210,23 @@ impl Planner {
             None => Pending { prep, s_start: 0.0, v_start: 0.0, ori_in: None },
         });
         Ok(Some(planned))
+    }
+
+    /// Moves the waiting move rigidly by `by` (a pose in the base frame), path and joints,
+    /// with where it starts on its path and how fast kept (`rebase.rs`). Nothing changes
+    /// on an error (the moved path leaves the robot's reach, a stationary tool).
+    pub fn rebase_pending<K: Kinematics + ?Sized>(&mut self, kin: &K, by: &crate::Pose) -> Result<(), MotionError> {
+        let Some(pending) = self.pending.as_ref() else { return Ok(()) };
+        let start = match &pending.prep.geom {
+            path::Geometry::Joint { q0, .. } => *q0,
+            _ => pending.prep.seeds.first().map_or(self.joints, |(_, q)| *q),
+        };
+        let (prep, _) = rebase::rebased(kin, &pending.prep, &start, by)?;
+        self.joints = prep.end_joints;
+        if let Some(pending) = self.pending.as_mut() {
+            pending.prep = prep;
+        }
+        Ok(())
     }
 
     /// Ends the queue: the waiting move, if any, stops at its end point.

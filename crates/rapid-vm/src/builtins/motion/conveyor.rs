@@ -10,15 +10,17 @@
 //! robot's path is shifted by how far the object has moved since: the robot follows
 //! it. From a fly-by point in a fixed work object the object is frozen where it will
 //! be when the robot would stand at that point, and the following fades in over the
-//! corner ([`Fade`]). The first move in a fixed work object ends the tracking (the
-//! last conveyor point becomes a stop point); DropWObj then releases the object.
+//! corner ([`Fade`]). The first move in a fixed work object ends the tracking: given in
+//! time after a conveyor fly-by point, over a corner (the last conveyor move rebased to
+//! where the object will be, the following fading out); else the last conveyor point
+//! becomes a stop point. DropWObj then releases the object.
 //!
 //! The same following carries the robot with a work object an external unit's axes
 //! move (`Mover::Unit`: a turntable, a positioner, coordinated motion): [`Following`]
 //! keeps the spans of time in which the robot followed either kind.
-// uncertain: from a fly-by point in a fixed work object the following fades in over the
-// corner (`Fade`); the corner from a conveyor move back to a fixed one is a stop point
-// here, which the controller blends. The tracking robot's axis speeds are not re-checked.
+// uncertain: how the following fades in and out over its corners (`Fade`) is ours; a
+// unit's work object still ends at a stop point. The tracking robot's axis speeds are
+// not re-checked.
 
 use std::collections::VecDeque;
 
@@ -153,6 +155,13 @@ pub struct Span {
     /// How the following begins: at once from a stop point, or faded in over the
     /// corner from a fly-by point in a fixed work object.
     pub fade: Fade,
+    /// How it ends: at a stop point (`None`), or faded out over the corner into a move
+    /// in a fixed work object (the last move rebased to where the object would be when
+    /// it ends, `at_ref` that place; see `tracking.rs` `blend_exit`).
+    pub exit: Fade,
+    /// Where the mover was when the moves' frames were frozen (`at_ref` but for a rebased
+    /// last move): the trace's work-object columns take the object's travel from there.
+    pub frames_ref: MoverAt,
 }
 
 /// How a following begins (§2.2.3: a change from uncoordinated to coordinated motion
@@ -175,6 +184,15 @@ pub enum Fade {
 const FADE_AFTER_STOP: f64 = 0.1;
 
 impl Fade {
+    /// The window over which a following that ends with move `planned` fades out: its
+    /// corner path, or its last moments before it stands.
+    pub fn before_end(planned: &rapid_motion::plan::PlannedMove) -> Fade {
+        match planned.corner_time > 0.0 {
+            true => Fade::Window(planned.zone_entry, planned.end),
+            false => Fade::Window((planned.zone_entry - FADE_AFTER_STOP).max(planned.start), planned.zone_entry),
+        }
+    }
+
     /// The window over which a following that began at fly-by point `planned` fades
     /// in: its corner path, or a short time after it stopped.
     pub fn after(planned: &rapid_motion::plan::PlannedMove) -> Fade {
@@ -264,6 +282,15 @@ impl Following {
         }
     }
 
+    /// The last move of a following that fades out is final: the following ends with
+    /// it, fading out over its corner.
+    pub fn end_fade(&mut self, planned: &rapid_motion::plan::PlannedMove) {
+        if let Some(span) = self.spans.last_mut().filter(|s| s.exit == Fade::Pending) {
+            span.exit = Fade::before_end(planned);
+            span.t_end = Some(planned.end);
+        }
+    }
+
     /// The span a move that started at `move_start` was planned in: moves planned while
     /// the robot followed an object move with it until it stopped following.
     pub fn span_of(&self, move_start: f64) -> Option<&Span> {
@@ -302,9 +329,20 @@ impl super::robot::RobotState {
         };
         let t = span.t_end.map_or(t, |end| t.min(end));
         let at = self.mover_at(&span.mover, t, eax)?;
-        // While the following fades in, the robot is carried by a part of the travel.
-        let w = if robot { span.fade.weight(t) } else { 1.0 };
-        let at: MoverAt = std::array::from_fn(|k| span.at_ref[k] + w * (at[k] - span.at_ref[k]));
+        if !robot {
+            return Some(span.mover.carry(&self.following.conveyors, &span.frames_ref, &at));
+        }
+        // While the following fades in, the robot is carried by a part of the travel;
+        // while it fades out, the robot leaves the object for where it was planned to be.
+        let leave = match span.exit {
+            Fade::Window(..) => span.exit.weight(t),
+            _ => 0.0,
+        };
+        let w = span.fade.weight(t);
+        let at: MoverAt = std::array::from_fn(|k| {
+            let faded_in = span.at_ref[k] + w * (at[k] - span.at_ref[k]);
+            faded_in + leave * (span.at_ref[k] - faded_in)
+        });
         Some(span.mover.carry(&self.following.conveyors, &span.at_ref, &at))
     }
 

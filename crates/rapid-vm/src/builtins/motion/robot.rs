@@ -362,6 +362,7 @@ impl RobotState {
 
     pub(super) fn finish(&mut self, planned: PlannedMove) {
         self.following.begin_fade(&planned);
+        self.following.end_fade(&planned);
         let Queued { events, place } = self.events.pop_front().unwrap_or_default();
         if planned.corner_path_failure {
             self.corner_path_failures += 1;

@@ -172,7 +172,10 @@ pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Opti
     let now = ctx.time;
     let open = ctx.resources.robot.following.open().map(|s| Carrier::of(&s.mover));
     if open.is_some() && open != carrier {
-        ctx.resources.robot.end_tracking(now);
+        let robot = &mut ctx.resources.robot;
+        if carrier.is_some() || !robot.blend_exit(now) {
+            robot.end_tracking(now);
+        }
     }
     let Some(carrier) = carrier else { return Ok(None) };
     if let Carrier::Conveyor(c) = carrier {
@@ -264,12 +267,56 @@ impl super::robot::RobotState {
         let blend = self.planner.pending_stop_time().filter(|&stop| from_fixed && now <= stop);
         if let Some(stop) = blend {
             let at_ref = self.mover_at(&mover, stop, |t| self.eax_at(t)).unwrap_or_default();
-            self.following.spans.push(Span { mover, t_ref: now, at_ref, t_end: None, fade: Fade::Pending });
+            let span = Span {
+                mover,
+                t_ref: now,
+                at_ref,
+                t_end: None,
+                fade: Fade::Pending,
+                exit: Fade::None,
+                frames_ref: at_ref,
+            };
+            self.following.spans.push(span);
             return;
         }
         let t_ref = self.stop_here().max(now);
         let at_ref = self.mover_at(&mover, t_ref, |t| self.eax_at(t)).unwrap_or_default();
-        self.following.spans.push(Span { mover, t_ref, at_ref, t_end: None, fade: Fade::None });
+        let span = Span { mover, t_ref, at_ref, t_end: None, fade: Fade::None, exit: Fade::None, frames_ref: at_ref };
+        self.following.spans.push(span);
+    }
+
+    /// From a fly-by point on a conveyor object into a move in a fixed work object given
+    /// in time: no stop (§2.2.3: the change from coordinated motion gets a corner path).
+    /// The waiting move is rebased to where the object will be when the robot would
+    /// stand at its point, so the next move is planned from there in the world and the
+    /// two share a corner; the rebased move is carried by the object's travel from that
+    /// place, fading out over the corner (`Span::exit`). False when that cannot be (no
+    /// waiting move, given too late, a unit's work object, the rebased path out of reach):
+    /// the caller stops following as before.
+    // uncertain: how the controller leaves a moving object on the corner; a unit's work
+    // object (which may turn) still ends at a stop point.
+    pub(super) fn blend_exit(&mut self, now: f64) -> bool {
+        let Some(stop) = self.planner.pending_stop_time().filter(|&stop| now <= stop) else { return false };
+        let Some(span) = self.following.open().filter(|s| s.is_conveyor() && s.exit == Fade::None) else {
+            return false;
+        };
+        let (mover, frames_ref, at_ref) = (span.mover, span.frames_ref, span.at_ref);
+        let Some(at_end) = self.mover_at(&mover, stop, |t| self.eax_at(t)) else { return false };
+        let world = mover.carry(&self.following.conveyors, &at_ref, &at_end);
+        let by = self.base_frame.inverse() * world * self.base_frame;
+        let starts = self.planner.time();
+        if self.planner.rebase_pending(&self.kin, &by).is_err() {
+            return false;
+        }
+        // The moves before the waiting one stay in the span as it was; the waiting one
+        // gets a span of its own, carried from where it was rebased to.
+        if let Some(old) = self.following.spans.last_mut() {
+            old.t_end = Some(starts);
+        }
+        let exit = Fade::Pending;
+        let span = Span { mover, t_ref: starts, at_ref: at_end, t_end: None, fade: Fade::None, exit, frames_ref };
+        self.following.spans.push(span);
+        true
     }
 
     /// The robot stops following its conveyor object: where its last conveyor move

@@ -1,0 +1,70 @@
+//! Moving the waiting move rigidly (`Planner::rebase_pending`): the last move in a
+//! moving work object (a conveyor's) was planned in the object's frame frozen when the
+//! following began; when the next move is in a fixed work object, the waiting move is
+//! carried to where the object will be when it ends, so the next move is planned from
+//! there in the world and the two can share a corner (§2.2.3). The VM then carries the
+//! rebased move's samples by the object's travel relative to that place.
+
+use super::mount::Mount;
+use super::path::{Geometry, OriLerp, OriMode};
+use super::segment::{ik_along, Prepared};
+use crate::{Joints, Kinematics, MotionError, Pose};
+
+/// `prep`, starting at joints `start`, moved by `by` (in the base frame): its path and
+/// joints, and its new start. A stationary tool's path cannot be moved so (its TCP
+/// stands in the base frame): `InvalidData`.
+pub(crate) fn rebased<K: Kinematics + ?Sized>(
+    kin: &K,
+    prep: &Prepared,
+    start: &Joints,
+    by: &Pose,
+) -> Result<(Prepared, Joints), MotionError> {
+    if !matches!(prep.mount, Mount::Held(_)) {
+        return Err(MotionError::InvalidData("a stationary tool's move cannot follow a moving work object"));
+    }
+    let moved_joints = |q: &Joints| kin.inverse_near(&(by * kin.forward(q)), q);
+    let start = moved_joints(start)?;
+    let geom = match &prep.geom {
+        Geometry::Joint { q0: _, q1, weights } => {
+            Geometry::Joint { q0: start, q1: moved_joints(q1)?, weights: *weights }
+        }
+        Geometry::Line { p0, p1, ori } => {
+            Geometry::Line { p0: (by * point(p0)).coords, p1: (by * point(p1)).coords, ori: turned(ori, by) }
+        }
+        Geometry::Arc { center, radius, e1, e2, sweep, ori, drift } => Geometry::Arc {
+            center: (by * point(center)).coords,
+            radius: *radius,
+            e1: by.rotation * e1,
+            e2: by.rotation * e2,
+            sweep: *sweep,
+            ori: turned(ori, by),
+            drift: by.rotation * drift,
+        },
+    };
+    let seeds = match &geom {
+        Geometry::Joint { .. } => Vec::new(),
+        _ => ik_along(kin, &geom, &prep.mount, &start)?,
+    };
+    let end_joints = match &geom {
+        Geometry::Joint { q1, .. } => *q1,
+        _ => seeds.last().map_or(start, |(_, q)| *q),
+    };
+    Ok((Prepared { geom, seeds, end_joints, ..prep.clone() }, start))
+}
+
+fn point(v: &nalgebra::Vector3<f64>) -> nalgebra::Point3<f64> {
+    nalgebra::Point3::from(*v)
+}
+
+/// An orientation interpolation turned by `by`'s rotation.
+fn turned(ori: &OriLerp, by: &Pose) -> OriLerp {
+    let r = by.rotation;
+    let mode = match ori.mode {
+        OriMode::PathFrame { normal, sweep } => {
+            OriMode::PathFrame { normal: nalgebra::Unit::new_normalize(r * normal.into_inner()), sweep }
+        }
+        OriMode::ViaPoint { via, at } => OriMode::ViaPoint { via: r * via, at },
+        mode => mode,
+    };
+    OriLerp { from: r * ori.from, to: r * ori.to, mode }
+}
