@@ -68,3 +68,42 @@ fn turned(ori: &OriLerp, by: &Pose) -> OriLerp {
     };
     OriLerp { from: r * ori.from, to: r * ori.to, mode }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::plan::{AccelLimits, MoveRequest, Planner, SpeedData, Target, ZoneData};
+    use crate::{default_model, Kinematics, Pose};
+    use nalgebra::{Translation3, UnitQuaternion, Vector3};
+
+    #[test]
+    fn a_rebased_move_ends_where_its_point_was_moved_to() {
+        // A MoveL 100 mm along y with a z20 zone waits for its successor; moved 40 mm
+        // along x, it ends 40 mm further along x, as long and as fast as before.
+        let kin = default_model().kinematics();
+        let start = [0.0, 10.0, 20.0, 0.0, 60.0, 0.0];
+        let from = kin.forward(&start);
+        let to = Pose::from_parts(
+            Translation3::from(from.translation.vector + Vector3::new(0.0, 100.0, 0.0)),
+            from.rotation,
+        );
+        let request = MoveRequest {
+            target: Target::Linear(to),
+            speed: SpeedData { v_tcp: 100.0, v_ori: 500.0, v_leax: 5000.0, v_reax: 1000.0 },
+            zone: ZoneData::predefined("z20").unwrap(),
+            tool: Pose::identity(),
+            held_object: None,
+            wobj: Pose::identity(),
+        };
+        let mut planner = Planner::new(start, AccelLimits::nominal(&kin.max_speeds()));
+        assert!(planner.push(&kin, &request).unwrap().is_none());
+        let stop_before = planner.pending_stop_time().unwrap();
+        let by = Pose::from_parts(Translation3::new(40.0, 0.0, 0.0), UnitQuaternion::identity());
+        planner.rebase_pending(&kin, &by).unwrap();
+        assert!((planner.pending_stop_time().unwrap() - stop_before).abs() < 1e-9);
+        let planned = planner.flush().unwrap();
+        let end = kin.forward(&planned.end_joints).translation.vector;
+        assert!((end - (to.translation.vector + Vector3::new(40.0, 0.0, 0.0))).norm() < 1e-6, "{end}");
+        let first = planned.sample(&kin, planned.start).tcp.translation.vector;
+        assert!((first - (from.translation.vector + Vector3::new(40.0, 0.0, 0.0))).norm() < 1e-6, "{first}");
+    }
+}
