@@ -684,3 +684,54 @@ ENDMODULE
     assert!((middle[22] - 50.0).abs() < 0.5, "track {}", middle[22]);
     assert!((middle[21] - 100.0).abs() < 0.5, "world TCP speed {}", middle[21]);
 }
+
+#[test]
+fn a_turntable_move_blends_into_a_fixed_one() {
+    // §2.2.3: leaving coordinated motion gets a corner. The robot goes 50 mm along the
+    // object's y while the table turns 90°, then to a fixed point: with z20 there it
+    // does not stop (no braking, no settle), so it is there sooner than with `fine`,
+    // and exactly there all the same; no axis jumps.
+    let manifest_units = UNITS.replace("name = \"STN1\"\n", "name = \"STN1\"\nbase = [400, 0, 200]\n");
+    let program = |zone: &str| {
+        format!(
+            "MODULE main
+  PERS wobjdata wobj_stn1 := [FALSE, FALSE, \"STN1\", [[0,0,0],[1,0,0,0]], [[0,0,0],[1,0,0,0]]];
+  CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[9E9,0,9E9,9E9,9E9,9E9]];
+  CONST robtarget p1 := [[-100,50,200],[0,0,1,0],[0,0,0,0],[9E9,90,9E9,9E9,9E9,9E9]];
+  CONST robtarget away := [[300,-200,450],[0,0,1,0],[0,0,0,0],[9E9,90,9E9,9E9,9E9,9E9]];
+  VAR clock c;
+  VAR pos w;
+  PROC main()
+    ConfL \\Off;
+    MoveJ home, v1000, fine, tool0;
+    ClkStart c;
+    MoveL p1, v100, {zone}, tool0 \\WObj:=wobj_stn1;
+    MoveL away, v100, fine, tool0;
+    TPWrite \"t \" \\Num:=ClkRead(c);
+    w := CPos(\\Tool:=tool0 \\WObj:=wobj0);
+    TPWrite \"world \" \\Pos:=w;
+  ENDPROC
+ENDMODULE
+"
+        )
+    };
+    let run_with = |name: &str, zone: &str| -> (String, String) {
+        let dir = scratch(name);
+        let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n{manifest_units}");
+        fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+        fs::write(dir.join("main.mod"), program(zone)).expect("module");
+        run_traced(&dir)
+    };
+    let (fine, _) = run_with("table_leave_fine", "fine");
+    let (fly, text) = run_with("table_leave_fly_by", "z20");
+    let time = |out: &str| -> f64 {
+        out.lines().next().and_then(|l| l.strip_prefix("t ")).and_then(|t| t.parse().ok()).expect("a time")
+    };
+    assert!(time(&fly) < time(&fine) - 0.05, "fine {fine:?}, fly-by {fly:?}");
+    assert!(fly.ends_with("world [300,-200,450]\n") && fine.ends_with("world [300,-200,450]\n"), "{fly:?} {fine:?}");
+    let rows: Vec<Vec<f64>> =
+        text.lines().skip(1).map(|l| l.split(',').take(7).map(|f| f.parse().expect("number")).collect()).collect();
+    let step =
+        rows.windows(2).map(|w| (1..7).map(|j| (w[1][j] - w[0][j]).abs()).fold(0.0, f64::max)).fold(0.0, f64::max);
+    assert!(step < 2.0, "an axis moved {step}° in one sample");
+}

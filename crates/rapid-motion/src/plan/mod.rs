@@ -217,6 +217,11 @@ impl Planner {
     /// on an error (the moved path leaves the robot's reach, a stationary tool).
     pub fn rebase_pending<K: Kinematics + ?Sized>(&mut self, kin: &K, by: &crate::Pose) -> Result<(), MotionError> {
         let Some(pending) = self.pending.as_ref() else { return Ok(()) };
+        // The previous corner's reorientation zone reaches into the move with its old
+        // orientation: a turn would break it.
+        if pending.ori_in.is_some() && by.rotation.angle() > 1e-12 {
+            return Err(MotionError::InvalidData("a move entered through a reorientation zone cannot be turned"));
+        }
         let start = match &pending.prep.geom {
             path::Geometry::Joint { q0, .. } => *q0,
             _ => pending.prep.seeds.first().map_or(self.joints, |(_, q)| *q),

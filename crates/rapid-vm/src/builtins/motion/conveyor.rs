@@ -18,9 +18,8 @@
 //! The same following carries the robot with a work object an external unit's axes
 //! move (`Mover::Unit`: a turntable, a positioner, coordinated motion): [`Following`]
 //! keeps the spans of time in which the robot followed either kind.
-// uncertain: how the following fades in and out over its corners (`Fade`) is ours; a
-// unit's work object still ends at a stop point. The tracking robot's axis speeds are
-// not re-checked.
+// uncertain: how the following fades in and out over its corners (`Fade`) is ours. The
+// tracking robot's axis speeds are not re-checked.
 
 use std::collections::VecDeque;
 

@@ -291,15 +291,12 @@ impl super::robot::RobotState {
     /// stand at its point, so the next move is planned from there in the world and the
     /// two share a corner; the rebased move is carried by the object's travel from that
     /// place, fading out over the corner (`Span::exit`). False when that cannot be (no
-    /// waiting move, given too late, a unit's work object, the rebased path out of reach):
-    /// the caller stops following as before.
-    // uncertain: how the controller leaves a moving object on the corner; a unit's work
-    // object (which may turn) still ends at a stop point.
+    /// waiting move, given too late, the rebased path out of reach, a turn of a move
+    /// entered through a reorientation zone): the caller stops following as before.
+    // uncertain: how the controller leaves a moving object on the corner.
     pub(super) fn blend_exit(&mut self, now: f64) -> bool {
         let Some(stop) = self.planner.pending_stop_time().filter(|&stop| now <= stop) else { return false };
-        let Some(span) = self.following.open().filter(|s| s.is_conveyor() && s.exit == Fade::None) else {
-            return false;
-        };
+        let Some(span) = self.following.open().filter(|s| s.exit == Fade::None) else { return false };
         let (mover, frames_ref, at_ref) = (span.mover, span.frames_ref, span.at_ref);
         let Some(at_end) = self.mover_at(&mover, stop, |t| self.eax_at(t)) else { return false };
         let world = mover.carry(&self.following.conveyors, &at_ref, &at_end);
