@@ -11,8 +11,9 @@ use super::segment::{ik_along, Prepared};
 use crate::{Joints, Kinematics, MotionError, Pose};
 
 /// `prep`, starting at joints `start`, moved by `by` (in the base frame): its path and
-/// joints, and its new start. A stationary tool's path cannot be moved so (its TCP
-/// stands in the base frame): `InvalidData`.
+/// joints, and its new start. A linear or circular path keeps its shape and length; a
+/// joint move or a stationary tool's path (its TCP stands in the base frame) cannot be
+/// moved so: `InvalidData`.
 pub(crate) fn rebased<K: Kinematics + ?Sized>(
     kin: &K,
     prep: &Prepared,
@@ -22,12 +23,14 @@ pub(crate) fn rebased<K: Kinematics + ?Sized>(
     if !matches!(prep.mount, Mount::Held(_)) {
         return Err(MotionError::InvalidData("a stationary tool's move cannot follow a moving work object"));
     }
-    let moved_joints = |q: &Joints| kin.inverse_near(&(by * kin.forward(q)), q);
-    let start = moved_joints(start)?;
+    if prep.geom.wrist_interpolated() && by.rotation.angle() > 1e-12 {
+        // SingArea\Wrist's wrist values belong to the orientation: a turn changes them.
+        return Err(MotionError::InvalidData("a wrist-interpolated move cannot be turned"));
+    }
+    let start = kin.inverse_near(&(by * kin.forward(start)), start)?;
     let geom = match &prep.geom {
-        Geometry::Joint { q0: _, q1, weights } => {
-            Geometry::Joint { q0: start, q1: moved_joints(q1)?, weights: *weights }
-        }
+        // A joint move's path is no rigid shape: moved, its length and pace would change.
+        Geometry::Joint { .. } => return Err(MotionError::InvalidData("a joint move cannot be moved rigidly")),
         Geometry::Line { p0, p1, ori } => {
             Geometry::Line { p0: (by * point(p0)).coords, p1: (by * point(p1)).coords, ori: turned(ori, by) }
         }
@@ -41,14 +44,8 @@ pub(crate) fn rebased<K: Kinematics + ?Sized>(
             drift: by.rotation * drift,
         },
     };
-    let seeds = match &geom {
-        Geometry::Joint { .. } => Vec::new(),
-        _ => ik_along(kin, &geom, &prep.mount, &start)?,
-    };
-    let end_joints = match &geom {
-        Geometry::Joint { q1, .. } => *q1,
-        _ => seeds.last().map_or(start, |(_, q)| *q),
-    };
+    let seeds = ik_along(kin, &geom, &prep.mount, &start)?;
+    let end_joints = seeds.last().map_or(start, |(_, q)| *q);
     Ok((Prepared { geom, seeds, end_joints, ..prep.clone() }, start))
 }
 
