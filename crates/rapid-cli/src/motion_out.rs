@@ -83,10 +83,7 @@ pub(crate) fn configure_base(robot: &mut RobotState, inputs: &crate::inputs::Inp
     let base = match from_manifest {
         Some((_, base, orientation)) => rapid_motion::pose::pose(*base, *orientation),
         None => {
-            let moc = inputs.syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("MOC"));
-            let robots = moc.map(|(_, file)| rapid_config::moc::robots(file)).unwrap_or_default();
-            let name = format!("ROB_{n}");
-            let Some(found) = robots.iter().find(|r| r.name.eq_ignore_ascii_case(&name)) else { return };
+            let Some(found) = moc_robot(&inputs.syspar, n) else { return };
             let (pos, orient) = found.base_frame;
             rapid_motion::pose::pose(pos.map(|m| m * 1000.0), orient)
         }
@@ -98,10 +95,7 @@ pub(crate) fn configure_base(robot: &mut RobotState, inputs: &crate::inputs::Inp
 /// Narrows (or widens) the robot `ROB_n`'s axis ranges to those its backup's MOC.cfg
 /// configures (`ARM -lower_joint_bound -upper_joint_bound`); the model's own elsewhere.
 pub(crate) fn configure_ranges(robot: &mut RobotState, syspar: &[(String, rapid_config::CfgFile)], n: usize) {
-    let moc = syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("MOC"));
-    let robots = moc.map(|(_, file)| rapid_config::moc::robots(file)).unwrap_or_default();
-    let name = format!("ROB_{n}");
-    let Some(found) = robots.iter().find(|r| r.name.eq_ignore_ascii_case(&name)) else { return };
+    let Some(found) = moc_robot(syspar, n) else { return };
     if found.arm_bounds.iter().all(Option::is_none) {
         return;
     }
@@ -109,6 +103,13 @@ pub(crate) fn configure_ranges(robot: &mut RobotState, syspar: &[(String, rapid_
     let limits =
         std::array::from_fn(|k| found.arm_bounds[k].map_or(model[k], |(lo, hi)| (lo.to_degrees(), hi.to_degrees())));
     robot.kin = robot.kin.with_limits(limits);
+}
+
+/// MOC.cfg's `ROBOT` instance of robot `ROB_n`, if the system has a MOC.cfg naming it.
+fn moc_robot(syspar: &[(String, rapid_config::CfgFile)], n: usize) -> Option<rapid_config::moc::Robot> {
+    let (_, file) = syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("MOC"))?;
+    let name = format!("ROB_{n}");
+    rapid_config::moc::robots(file).into_iter().find(|r| r.name.eq_ignore_ascii_case(&name))
 }
 
 /// Gives the robot the external units configured for its task: those naming it, and

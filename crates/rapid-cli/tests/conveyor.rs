@@ -296,6 +296,11 @@ fn the_conveyor_is_a_mechanical_unit_that_must_be_active() {
     assert_eq!(stdout(&out), "ROB_1 TRUE 6\nCNV1 FALSE 1\nactive FALSE\nerror 1152\nconnected 0.5\n");
 }
 
+/// The most any axis moves between two rows of a trace (rows of time and axes 1–6).
+fn largest_axis_step(rows: &[Vec<f64>]) -> f64 {
+    rows.windows(2).map(|w| (1..7).map(|j| (w[1][j] - w[0][j]).abs()).fold(0.0, f64::max)).fold(0.0, f64::max)
+}
+
 /// Down from home to `via` (fixed work object, zone `zone`), then above the object.
 fn approach(zone: &str) -> String {
     format!(
@@ -353,8 +358,7 @@ fn a_fly_by_point_before_the_first_tracked_move_is_a_corner_not_a_stop() {
     for row in &fixed {
         assert!((7..10).all(|k| (row[k] - row[k + 7]).abs() < 1e-3), "{row:?}");
     }
-    let step =
-        rows.windows(2).map(|w| (1..7).map(|j| (w[1][j] - w[0][j]).abs()).fold(0.0, f64::max)).fold(0.0, f64::max);
+    let step = largest_axis_step(&rows);
     assert!(step < 2.0, "an axis moved {step}° in one sample");
 }
 
@@ -409,7 +413,6 @@ fn the_last_tracked_move_blends_into_a_fixed_one_without_a_stop() {
     let off = up.iter().find(|r| r[14].abs() > 0.01 || r[15].abs() > 0.01);
     assert!(off.is_none(), "{off:?}");
     // And no jump anywhere.
-    let step =
-        rows.windows(2).map(|w| (1..7).map(|j| (w[1][j] - w[0][j]).abs()).fold(0.0, f64::max)).fold(0.0, f64::max);
+    let step = largest_axis_step(&rows);
     assert!(step < 2.0, "an axis moved {step}° in one sample");
 }

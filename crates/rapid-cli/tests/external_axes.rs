@@ -28,6 +28,10 @@ max = 180
 speed = 180
 "#;
 
+/// A 3 m track the robot stands on (eax_a, along the world x axis, 1000 mm/s).
+const TRACK: &str = "[[unit]]\nname = \"TRACK\"\ncarries_robot = true\n[[unit.axis]]\nlogical = 7\ntype = \"linear\"\n\
+                     min = 0\nmax = 3000\nspeed = 1000\n";
+
 /// A fresh, empty scratch folder for one test.
 fn scratch(name: &str) -> PathBuf {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external_axes").join(name);
@@ -370,8 +374,7 @@ fn a_track_carries_the_robot_and_the_tcp_keeps_its_world_path() {
     // moves another 100 mm along x: relative to its base the TCP goes √2 · 100 mm at
     // √2 · 100 mm/s: 1 + 0.0141 s ramp + 0.05 s settle; 1.36 s in all.
     let dir = scratch("track");
-    let manifest = "[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n[[unit]]\nname = \"TRACK\"\n\
-                    carries_robot = true\n[[unit.axis]]\nlogical = 7\ntype = \"linear\"\nmin = 0\nmax = 3000\nspeed = 1000\n";
+    let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n{TRACK}");
     fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
     let module = "MODULE main
   CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[0,9E9,9E9,9E9,9E9,9E9]];
@@ -421,9 +424,8 @@ fn world_zones_watch_the_tcp_in_the_world_on_a_track() {
     // to the base, but not in the world: doZone stays 0. Then the TCP goes to world
     // x 200 (track still at 100): inside, doZone 1.
     let dir = scratch("track_zone");
-    let manifest = "[system]\nio = \"eio.cfg\"\n\n[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n\
-                    [[unit]]\nname = \"TRACK\"\ncarries_robot = true\n[[unit.axis]]\nlogical = 7\ntype = \"linear\"\n\
-                    min = 0\nmax = 3000\nspeed = 1000\n";
+    let manifest =
+        format!("[system]\nio = \"eio.cfg\"\n\n[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n{TRACK}");
     fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
     fs::write(dir.join("eio.cfg"), "EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n\n      -Name \"doZone\" -SignalType \"DO\"\n")
         .expect("EIO");
@@ -644,8 +646,7 @@ fn a_circle_keeps_its_world_path_while_the_track_moves() {
     // base 100 mm along x. The circle is kept in the world at v100: π · 100 mm in
     // 3.1416 s + 0.01 s ramp + 0.05 s settle = 3.2016 s.
     let dir = scratch("track_circle");
-    let manifest = "[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n[[unit]]\nname = \"TRACK\"\n\
-                    carries_robot = true\n[[unit.axis]]\nlogical = 7\ntype = \"linear\"\nmin = 0\nmax = 3000\nspeed = 1000\n";
+    let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n{TRACK}");
     fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
     let module = "MODULE main
   CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[0,9E9,9E9,9E9,9E9,9E9]];

@@ -45,7 +45,7 @@ fn arm_bounds(file: &CfgFile, joint: &str) -> Option<(f64, f64)> {
 /// An instance's base frame attributes (ROBOT, SINGLE): position in metres, orientation
 /// as a quaternion; absent values are those of the identity.
 fn base_frame(inst: &crate::Instance) -> ([f64; 3], [f64; 4]) {
-    let value = |attr: &str, default: f64| inst.value(attr).and_then(|v| v.trim().parse().ok()).unwrap_or(default);
+    let value = |attr: &str, default: f64| parsed(inst, attr).unwrap_or(default);
     let pos = ["x", "y", "z"].map(|c| value(&format!("base_frame_pos_{c}"), 0.0));
     let orient = [("u0", 1.0), ("u1", 0.0), ("u2", 0.0), ("u3", 0.0)]
         .map(|(u, default)| value(&format!("base_frame_orient_{u}"), default));
@@ -133,7 +133,12 @@ fn named<'a>(file: &'a CfgFile, type_name: &'a str, name: &str) -> Option<&'a cr
 
 /// A number attribute of the instance of a type with this `-name`.
 fn number(file: &CfgFile, type_name: &str, name: Option<&str>, attr: &str) -> Option<f64> {
-    named(file, type_name, name?)?.value(attr)?.trim().parse().ok()
+    parsed(named(file, type_name, name?)?, attr)
+}
+
+/// An attribute's value read as a number; `None` when absent or not one.
+fn parsed<T: std::str::FromStr>(inst: &crate::Instance, attr: &str) -> Option<T> {
+    inst.value(attr)?.trim().parse().ok()
 }
 
 fn single_axis(file: &CfgFile, single: &str) -> SingleAxis {
@@ -152,9 +157,9 @@ fn single_axis(file: &CfgFile, single: &str) -> SingleAxis {
     SingleAxis {
         single: single.to_owned(),
         mechanics,
-        logical_axis: joint_link("logical_axis").and_then(|v| v.trim().parse().ok()),
-        lower: arm.and_then(|a| a.value("lower_joint_bound")).and_then(|v| v.trim().parse().ok()),
-        upper: arm.and_then(|a| a.value("upper_joint_bound")).and_then(|v| v.trim().parse().ok()),
+        logical_axis: joint.and_then(|j| parsed(j, "logical_axis")),
+        lower: arm.and_then(|a| parsed(a, "lower_joint_bound")),
+        upper: arm.and_then(|a| parsed(a, "upper_joint_bound")),
         acc: number(file, "ACC_DATA", arm.and_then(|a| a.value("use_acc_data")), "wc_acc"),
         transmission: number(file, "TRANSMISSION", joint_link("use_transmission"), "transm_joint"),
         motor_speed_max: number(file, "STRESS_DUTY_CYCLE", stress, "speed_absolute_max"),

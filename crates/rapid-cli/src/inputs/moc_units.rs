@@ -14,6 +14,9 @@ use rapid_motion::external::{ExternalAxis, ExternalUnit};
 
 use super::manifest_units::{TaskUnit, RAMP_TIME};
 
+/// MOC.cfg gives lengths in metres, programs see millimetres.
+const MM_PER_M: f64 = 1000.0;
+
 /// The units read from MOC.cfg, and those that could not be, with why.
 #[derive(Debug, Default)]
 pub(crate) struct MocUnits {
@@ -55,17 +58,17 @@ fn unit(mech: &MechUnit) -> Result<ExternalUnit, String> {
     })
 }
 
-/// One axis in the units programs see (mm or degrees): MOC.cfg has metres or radians.
+/// A track's axis in the units programs see (mm): MOC.cfg has metres.
 fn axis(single: &SingleAxis) -> Result<ExternalAxis, String> {
     let name = &single.single;
-    let linear = match single.mechanics.as_deref() {
-        Some(m) if m.eq_ignore_ascii_case("TRACK") => true,
+    match single.mechanics.as_deref() {
+        Some(m) if m.eq_ignore_ascii_case("TRACK") => {}
         Some(m) => return Err(format!("its axis {name} is of mechanics `{m}`, which is not read (only TRACK)")),
         None => return Err(format!("its axis {name} has no mechanics (SINGLE_TYPE)")),
-    };
+    }
     let logical = single.logical_axis.filter(|a| (7..=12).contains(a));
     let Some(logical) = logical else { return Err(format!("its axis {name} has no logical axis 7 … 12 (JOINT)")) };
-    let scale = if linear { 1000.0 } else { 1f64.to_degrees() };
+    let scale = MM_PER_M;
     let (Some(lower), Some(upper)) = (single.lower, single.upper) else {
         return Err(format!("its axis {name} has no working range (ARM -lower_joint_bound, -upper_joint_bound)"));
     };
@@ -80,7 +83,7 @@ fn axis(single: &SingleAxis) -> Result<ExternalAxis, String> {
     let acc = single.acc.filter(|a| a.is_finite() && *a > 0.0).map_or(speed / RAMP_TIME, |a| a * scale);
     let start = 0f64.clamp(min, max);
     let mount = rapid_motion::Pose::identity();
-    Ok(ExternalAxis { logical: logical as u8, linear, min, max, max_speed: speed, acc, start, mount })
+    Ok(ExternalAxis { logical: logical as u8, linear: true, min, max, max_speed: speed, acc, start, mount })
 }
 
 #[cfg(test)]

@@ -299,8 +299,7 @@ fn same_tool(cur: &Prepared, next: &Prepared) -> bool {
 /// object, is joint-interpolated. Work objects whose frames coincide are one.
 // uncertain: the controller may compare the wobjdata rather than its frames.
 fn same_wobj(cur: &Prepared, next: &Prepared) -> bool {
-    let (a, b) = (&cur.wobj, &next.wobj);
-    (a.translation.vector - b.translation.vector).norm() < 1e-9 && a.rotation.angle_to(&b.rotation) < 1e-9
+    super::mount::same_pose(&cur.wobj, &next.wobj)
 }
 
 /// A TCP parabola: entry `zone` mm of path before the programmed point, exit

@@ -53,17 +53,19 @@ impl Mount {
 
     /// Whether two moves share one mount (a TCP corner path may join them).
     pub(crate) fn same_as(&self, other: &Mount) -> bool {
-        let same = |a: &Pose, b: &Pose| {
-            (a.translation.vector - b.translation.vector).norm() < 1e-9 && a.rotation.angle_to(&b.rotation) < 1e-9
-        };
         match (self, other) {
-            (Mount::Held(a), Mount::Held(b)) => same(a, b),
+            (Mount::Held(a), Mount::Held(b)) => same_pose(a, b),
             (Mount::Stationary { tcp: a, object: c }, Mount::Stationary { tcp: b, object: d }) => {
-                same(a, b) && same(c, d)
+                same_pose(a, b) && same_pose(c, d)
             }
             _ => false,
         }
     }
+}
+
+/// Whether two poses coincide (to a nanometre and a nanoradian).
+pub(crate) fn same_pose(a: &Pose, b: &Pose) -> bool {
+    (a.translation.vector - b.translation.vector).norm() < 1e-9 && a.rotation.angle_to(&b.rotation) < 1e-9
 }
 
 #[cfg(test)]

@@ -393,7 +393,7 @@ pub(crate) fn axis_cap(seeds: &[(f64, Joints)], max_speeds: &[f64; 6]) -> f64 {
     cap
 }
 
-fn check_limits(limits: &[(f64, f64); 6], q: &Joints) -> Result<(), MotionError> {
+pub(crate) fn check_limits(limits: &[(f64, f64); 6], q: &Joints) -> Result<(), MotionError> {
     match (0..6).find(|&j| !(q[j] >= limits[j].0 - 1e-9 && q[j] <= limits[j].1 + 1e-9)) {
         Some(j) => Err(MotionError::JointLimit { axis: j + 1 }),
         None => Ok(()),

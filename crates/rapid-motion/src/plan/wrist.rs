@@ -43,7 +43,7 @@ pub(crate) fn arm_for<K: Kinematics + ?Sized>(
             break;
         }
         if error.norm() < TOLERANCE_MM {
-            return within_limits(kin, q);
+            return super::segment::check_limits(&kin.limits(), &q).map(|()| q);
         }
         // The Jacobian is taken afresh every few steps (a chord method between): the
         // seed is near, so it changes little.
@@ -70,14 +70,6 @@ fn jacobian(tcp: &impl Fn(&Joints) -> Vector3<f64>, q: &Joints, here: &Vector3<f
         jacobian.set_column(j, &((tcp(&moved) - here) / H_DEG));
     }
     jacobian
-}
-
-fn within_limits<K: Kinematics + ?Sized>(kin: &K, q: Joints) -> Result<Joints, MotionError> {
-    let limits = kin.limits();
-    match (0..6).find(|&j| !(q[j] >= limits[j].0 - 1e-9 && q[j] <= limits[j].1 + 1e-9)) {
-        Some(j) => Err(MotionError::JointLimit { axis: j + 1 }),
-        None => Ok(q),
-    }
 }
 
 /// The wrist axes a fraction `f` of the way from `from` to `to`.
