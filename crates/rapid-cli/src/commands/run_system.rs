@@ -114,6 +114,17 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             first_motion = false;
         }
     }
+    // The robots work in the work objects the other tasks' units carry (MultiMove).
+    let mut linked: Vec<_> = loaded
+        .iter_mut()
+        .filter(|(spec, _)| spec.motion)
+        .map(|(spec, program)| rapid_vm::builtins::motion::foreign::LinkedTask {
+            name: &spec.name,
+            robot: &mut program.vm.resources_mut().robot,
+        })
+        .collect();
+    rapid_vm::builtins::motion::foreign::link(&mut linked);
+    drop(linked);
     let mut controller = match Controller::new(loaded, io) {
         Ok(controller) => controller,
         Err(message) => return refuse(&message),

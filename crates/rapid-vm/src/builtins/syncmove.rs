@@ -14,6 +14,7 @@ use super::{present, Ctx, Entries, StopKind};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Record, Value};
+use rapid_motion::external::ExternalMove;
 use rapid_motion::plan::{AccelLimits, MotionSettings, MoveRequest, Planner};
 
 type Res = Result<Option<Value>, RapidError>;
@@ -188,6 +189,7 @@ pub(crate) fn coordinate(
     id: Option<&Value>,
     request: &MoveRequest,
     settings: &MotionSettings,
+    external: Option<&ExternalMove>,
 ) -> Result<Coordination, RapidError> {
     let Some(mode) = ctx.resources.tasking.sync_move.clone().filter(|m| !m.suspended) else {
         // uncertain: `\ID` outside synchronized movement (or while it is suspended) is
@@ -200,7 +202,7 @@ pub(crate) fn coordinate(
     let id = ctx.num(id.unwrap_or(&Value::Absent))?;
     let alone = match settings.move_time {
         Some(t) => t,
-        None => time_alone(ctx, request, settings)?,
+        None => time_alone(ctx, request, settings, external)?,
     };
     let tasking = &mut ctx.resources.tasking;
     let me = tasking.name().to_string();
@@ -255,16 +257,23 @@ fn complete_if_all_given(tasking: &mut super::tasking::TaskingState, mode: &Sync
     shared.epoch += 1;
 }
 
-/// The time the robot would take for `request` on its own, from where its last move
-/// ends to standing still at the point (a stop-to-stop move).
+/// The time the robot (with its external axes' part, `external`) would take for
+/// `request` on its own, from where its last move ends to standing still at the point
+/// (a stop-to-stop move).
 // uncertain: coordinated moves are timed stop to stop; corner paths at fly-by points
 // shorten each robot's move a little, as they do any timed move.
-fn time_alone(ctx: &Ctx<'_>, request: &MoveRequest, settings: &MotionSettings) -> Result<f64, RapidError> {
+fn time_alone(
+    ctx: &Ctx<'_>,
+    request: &MoveRequest,
+    settings: &MotionSettings,
+    external: Option<&ExternalMove>,
+) -> Result<f64, RapidError> {
     let robot = &ctx.resources.robot;
     let mut planner = Planner::new(robot.end_joints(), AccelLimits::nominal(&robot.model.max_speeds));
     planner.set_settings(*settings);
+    planner.set_eax(external.map(|ext| ext.from));
     let request = MoveRequest { zone: rapid_motion::plan::ZoneData::FINE, ..*request };
-    planner.push(&robot.kin, &request).map_err(super::motion::motion_error)?;
+    planner.push_with(&robot.kin, &request, external).map_err(super::motion::motion_error)?;
     Ok(planner.flush().map_or(0.0, |m| m.zone_entry - m.start))
 }
 

@@ -136,6 +136,9 @@ pub enum Mover {
     /// turntable turns it about its frame's z axis, a linear unit moves it along its
     /// frame's x axis, a positioner's tilt axis carries its turntable.
     Unit { unit: usize, chain: UnitChain },
+    /// A unit of another motion task (its index among the task's foreign units,
+    /// `foreign.rs`), carrying the work object along `chain` as its own task moves it.
+    Foreign { unit: usize, chain: UnitChain },
 }
 
 /// Where a mover is: a conveyor object's distance from the sync switch (in the first
@@ -233,7 +236,7 @@ impl Mover {
                 let dir = conveyors[conveyor].config.base.rotation * Vector3::x();
                 Pose::from_parts(Translation3::from(dir * (to[0] - from[0])), nalgebra::UnitQuaternion::identity())
             }
-            Mover::Unit { chain, .. } => chain.carry(from, to),
+            Mover::Unit { chain, .. } | Mover::Foreign { chain, .. } => chain.carry(from, to),
         }
     }
 
@@ -241,7 +244,7 @@ impl Mover {
     pub fn user_frame(&self, conveyors: &[Conveyor], at: &MoverAt) -> Pose {
         match *self {
             Mover::Conveyor { conveyor, .. } => conveyors[conveyor].frame_at(at[0]),
-            Mover::Unit { chain, .. } => chain.frame_at(at),
+            Mover::Unit { chain, .. } | Mover::Foreign { chain, .. } => chain.frame_at(at),
         }
     }
 }
@@ -355,6 +358,7 @@ impl super::robot::RobotState {
                 Some(at)
             }
             Mover::Unit { .. } => eax(t),
+            Mover::Foreign { unit, .. } => self.foreign_eax_at(unit, t),
         }
     }
 

@@ -118,6 +118,11 @@ fn conveyor_frame(ctx: &Ctx<'_>, wobj: &Value) -> Result<Isometry3<f64>, RapidEr
             let at = robot.eax_at(ctx.time).unwrap_or_default();
             Ok(mover.user_frame(&robot.following.conveyors, &at))
         }
+        Some(carrier @ Carrier::Foreign(f)) => {
+            let mover = super::tracking::mover_of(ctx, carrier)?;
+            let at = robot.foreign_eax_at(f, ctx.time).unwrap_or_default();
+            Ok(mover.user_frame(&robot.following.conveyors, &at))
+        }
         None => Err(RapidError::fatal(unfollowed_mover(ctx, super::tracking::ufmec(wobj).unwrap_or("")))),
     }
 }
@@ -132,7 +137,7 @@ fn unfollowed_mover(ctx: &Ctx<'_>, name: &str) -> String {
     }
     format!(
         "the work object is moved by mechanical unit `{name}` (ufprog FALSE, ufmec), which is no conveyor or \
-         external unit with a frame of this task (units of other tasks are not supported yet)"
+         external unit with a frame (base, orientation) of the system"
     )
 }
 

@@ -24,6 +24,11 @@ pub struct UnitState {
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct ExternalUnits {
     pub units: Vec<UnitState>,
+    /// Where this task's external axes go, published for the other motion tasks when
+    /// one of its units carries work objects (`foreign.rs`).
+    pub publication: Option<super::foreign::SharedPath>,
+    /// The units of other motion tasks that carry work objects.
+    pub foreign: Vec<super::foreign::ForeignUnit>,
 }
 
 impl ExternalUnits {
@@ -32,7 +37,7 @@ impl ExternalUnits {
             .into_iter()
             .map(|unit| UnitState { active: unit.active_at_start, unit, loads: Default::default() })
             .collect();
-        ExternalUnits { units }
+        ExternalUnits { units, ..ExternalUnits::default() }
     }
 
     /// Adds a unit (a conveyor's, which has no axes the moves drive).
@@ -53,6 +58,11 @@ impl ExternalUnits {
     /// The unit of this name (case as the configuration spells it, compared without).
     pub fn find(&self, name: &str) -> Option<usize> {
         self.units.iter().position(|u| u.unit.name.eq_ignore_ascii_case(name))
+    }
+
+    /// The unit of another task of this name that carries work objects.
+    pub fn find_foreign(&self, name: &str) -> Option<usize> {
+        self.foreign.iter().position(|u| u.name.eq_ignore_ascii_case(name))
     }
 
     /// The axis at `extjoint` index `j` and whether its unit is active.
@@ -148,6 +158,7 @@ impl super::robot::RobotState {
             self.planner.set_eax(Some(eax));
         }
         self.planner.idle_until(now);
+        self.publish_tail();
     }
 
     /// External axis values as zones see them: the active units' axes, 9E9 for the

@@ -188,6 +188,13 @@ fn external_slot(ctx: &Ctx<'_>, i: usize, axis: f64) -> Result<usize, RapidError
     if !state.active {
         return Err(RapidError::fatal(format!("{name} is not active (ActUnit): its axes cannot move")));
     }
+    let publication = ctx.resources.robot.external.publication.as_ref();
+    if let Some(busy) = publication.and_then(|p| p.read().busy_after(name, ctx.time).map(|b| b.task.clone())) {
+        return Err(RapidError::fatal(format!(
+            "the robot of task {busy} works in a work object {name} carries: independent mode on it is not supported \
+             yet"
+        )));
+    }
     let n = state.unit.axes.len();
     match state.unit.axes.get((axis as usize).wrapping_sub(1)).filter(|_| axis.fract() == 0.0) {
         Some(a) => Ok(FIRST_EXTERNAL + a.index()),
@@ -236,6 +243,8 @@ fn start(ctx: &mut Ctx<'_>, axis: usize, goal: Goal, speed: f64, acc: f64) {
     let p0 = position_now(ctx, axis);
     let ind = IndAxis { t0: ctx.time, p0, goal, speed, acc };
     ctx.resources.robot.independent.set(axis, Some(ind), ind.t0);
+    // Another task working in a unit's work object must know its axis left the moves.
+    ctx.resources.robot.publish_tail();
 }
 
 /// `IndAMove MecUnit, Axis, \ToAbsNum, Speed [\Ramp]`: to an absolute position.

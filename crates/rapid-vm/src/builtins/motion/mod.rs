@@ -15,6 +15,7 @@ pub mod corr;
 mod data;
 pub mod extax;
 mod fit;
+pub mod foreign;
 mod frame;
 pub mod indep;
 mod inpos;

@@ -257,7 +257,7 @@ pub(super) fn go_with(
         }
     }
     // Synchronized movement: the moves of one `\ID` in all tasks take the same time.
-    match crate::builtins::syncmove::coordinate(ctx, args.get(layout.id), &request, &settings)? {
+    match crate::builtins::syncmove::coordinate(ctx, args.get(layout.id), &request, &settings, external.as_ref())? {
         crate::builtins::syncmove::Coordination::Alone => {}
         crate::builtins::syncmove::Coordination::Wait => return Ok(None),
         crate::builtins::syncmove::Coordination::Time(time) => settings.move_time = Some(time),
@@ -315,7 +315,12 @@ pub(super) fn external_target(
         EOffsRule::Only(switch) => present(args.get(switch)),
     };
     let offsets = use_offsets.then_some(ctx.resources.motion.settings.eoffs);
-    ctx.resources.robot.external_move(&values, offsets.as_ref()).map_err(motion_error)
+    let external = ctx.resources.robot.external_move(&values, offsets.as_ref()).map_err(motion_error)?;
+    if let Some(ext) = &external {
+        // A unit another task's robot works in moves only as MultiMove allows.
+        super::foreign::check_unit_move(ctx, &ext.from, &ext.to)?;
+    }
+    Ok(external)
 }
 
 /// The program waits for the robot until `resume`.

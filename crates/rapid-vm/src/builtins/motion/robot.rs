@@ -119,6 +119,8 @@ const DISTANCE_STEP: f64 = 0.001;
 pub struct Queued {
     pub(super) events: Vec<PathEvent>,
     place: Option<(usize, Span)>,
+    /// The move is in the work object of this unit of another task (`foreign.rs`).
+    foreign: Option<usize>,
 }
 
 /// The robot of a motion task.
@@ -194,6 +196,9 @@ pub struct RobotState {
     /// The external axes' part of the next move given (set by the move instruction
     /// just before [`RobotState::push`]).
     pub(super) next_external: Option<rapid_motion::external::ExternalMove>,
+    /// The next move given is in the work object of this unit of another task (set by
+    /// the move instruction just before [`RobotState::push`]).
+    pub(super) next_foreign: Option<usize>,
 }
 
 impl Default for RobotState {
@@ -243,6 +248,7 @@ impl RobotState {
             external: Default::default(),
             following: Default::default(),
             next_external: None,
+            next_foreign: None,
         }
     }
 
@@ -288,18 +294,23 @@ impl RobotState {
         }
         let (from, eax_from) = (self.planner.end_joints(), self.planner.end_eax());
         let external = self.next_external.take();
+        let foreign = self.next_foreign.take();
         let done = self.planner.push_with(&self.kin, request, external.as_ref())?;
+        if let Some(f) = foreign {
+            self.busy_in(f);
+        }
         if self.stored.is_none() {
             // Only the base path is recorded; level 2's moves (and the recorder's own) are not.
             self.path_rec.note(from, request, eax_from != self.planner.end_eax());
         }
-        self.events.push_back(Queued { events, place: self.next_place.take() });
+        self.events.push_back(Queued { events, place: self.next_place.take(), foreign });
         if self.recorded.is_some() {
             self.pending_facts.push_back(facts);
         }
         if let Some(done) = done {
             self.finish(done);
         }
+        self.publish_tail();
         self.corr.pending = corrected;
         self.place_early_events();
         self.moves += 1;
@@ -325,6 +336,7 @@ impl RobotState {
     pub fn flush(&mut self) -> f64 {
         if let Some(last) = self.planner.flush() {
             self.finish(last);
+            self.publish_tail();
         }
         self.motion_end
     }
@@ -363,7 +375,11 @@ impl RobotState {
     pub(super) fn finish(&mut self, planned: PlannedMove) {
         self.following.begin_fade(&planned);
         self.following.end_fade(&planned);
-        let Queued { events, place } = self.events.pop_front().unwrap_or_default();
+        let Queued { events, place, foreign } = self.events.pop_front().unwrap_or_default();
+        if let Some(f) = foreign {
+            self.busy_until(f, planned.end);
+        }
+        self.publish_final(&planned);
         if planned.corner_path_failure {
             self.corner_path_failures += 1;
             self.corner_failures.push(place);
@@ -521,6 +537,7 @@ impl RobotState {
         if let Some(last) = self.recorded.as_mut().and_then(|r| r.last_mut()).filter(|m| m.start == on.start) {
             *last = braked;
         }
+        self.republish();
         end
     }
 
@@ -552,13 +569,16 @@ impl RobotState {
         }
         // The path events of the move that waited for its successor go with it: the
         // next move to become final must not fire them.
-        self.events.clear();
+        for f in self.events.drain(..).filter_map(|q| q.foreign).collect::<Vec<_>>() {
+            self.busy_until(f, t);
+        }
         self.corr.stop_at(t);
         let joints = self.ahead.back().map_or_else(|| self.planner.end_joints(), |m| m.end_joints);
         self.motion_end = self.ahead.back().map_or(t, |m| m.end);
         let eax = self.ahead.back().and_then(|m| m.eax_end()).or(self.planner.end_eax());
         self.planner.restart_from(joints, self.motion_end);
         self.planner.set_eax(eax);
+        self.republish();
         joints
     }
 
@@ -631,6 +651,7 @@ impl RobotState {
         }
         self.trigg.delay_from(since, dt);
         self.corr.delay_from(since, dt);
+        self.republish();
     }
 
     /// Whether the robot at `joints` (TCP of the active tool) is in zone `i`.

@@ -19,11 +19,13 @@ pub(super) fn refresh(ctx: &mut Ctx<'_>) {
     resources.robot.refresh_conveyors(resources.io.system.as_ref());
 }
 
-/// What carries a work object that moves: a conveyor or an external unit (indexes).
+/// What carries a work object that moves: a conveyor, an external unit, or an external
+/// unit of another task (indexes).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) enum Carrier {
     Conveyor(usize),
     Unit(usize),
+    Foreign(usize),
 }
 
 impl Carrier {
@@ -31,6 +33,7 @@ impl Carrier {
         match *mover {
             Mover::Conveyor { conveyor, .. } => Carrier::Conveyor(conveyor),
             Mover::Unit { unit, .. } => Carrier::Unit(unit),
+            Mover::Foreign { unit, .. } => Carrier::Foreign(unit),
         }
     }
 }
@@ -64,9 +67,24 @@ pub(super) fn carrier_of(ctx: &Ctx<'_>, wobj: &Value) -> Result<Option<Carrier>,
     if let Some(c) = robot.following.find(name) {
         return Ok(Some(Carrier::Conveyor(c)));
     }
+    if let Some(f) = robot.external.find_foreign(name) {
+        return Ok(Some(Carrier::Foreign(f)));
+    }
     let Some(u) = robot.external.find(name) else { return Ok(None) };
     unit_mover(robot, u)?;
     Ok(Some(Carrier::Unit(u)))
+}
+
+/// What moves `carrier`'s work object, as the robot follows it.
+pub(super) fn mover_of(ctx: &Ctx<'_>, carrier: Carrier) -> Result<Mover, RapidError> {
+    let robot = &ctx.resources.robot;
+    Ok(match carrier {
+        Carrier::Conveyor(c) => {
+            Mover::Conveyor { conveyor: c, object: robot.following.conveyors[c].connected.unwrap_or_default() }
+        }
+        Carrier::Unit(u) => unit_mover(robot, u)?,
+        Carrier::Foreign(f) => Mover::Foreign { unit: f, chain: robot.external.foreign[f].chain },
+    })
 }
 
 /// How external unit `u` carries a work object: its axes, in order, from its frame.
@@ -159,16 +177,24 @@ pub(crate) fn drop_wobj(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// external unit) starts the robot following it (its frames frozen where it is then); a
 /// fixed one ends a following under way. Returns what carries the move's work object.
 pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Option<Carrier>, RapidError> {
-    let robot = &ctx.resources.robot;
+    let robot = &mut ctx.resources.robot;
+    robot.next_foreign = None;
     let idle = robot.following.conveyors.is_empty() && robot.following.open().is_none();
-    if idle && robot.external.units.iter().all(|u| u.unit.frame.is_none()) {
+    if idle && robot.external.units.iter().all(|u| u.unit.frame.is_none()) && robot.external.foreign.is_empty() {
         return Ok(None);
     }
     refresh(ctx);
-    let carrier = match wobj {
+    let mut carrier = match wobj {
         Some(w) => carrier_of(ctx, w)?,
         None => None,
     };
+    if let Some(Carrier::Foreign(f)) = carrier {
+        // Semi-coordinated, the object stands where its unit has it: a fixed frame.
+        if !super::foreign::follows(ctx, f)? {
+            carrier = None;
+        }
+        ctx.resources.robot.next_foreign = Some(f);
+    }
     let now = ctx.time;
     let open = ctx.resources.robot.following.open().map(|s| Carrier::of(&s.mover));
     if open.is_some() && open != carrier {
@@ -182,13 +208,7 @@ pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Opti
         check_object(ctx, c)?;
     }
     if open != Some(carrier) {
-        let mover = match carrier {
-            Carrier::Conveyor(c) => {
-                let object = ctx.resources.robot.following.conveyors[c].connected.unwrap_or_default();
-                Mover::Conveyor { conveyor: c, object }
-            }
-            Carrier::Unit(u) => unit_mover(&ctx.resources.robot, u)?,
-        };
+        let mover = mover_of(ctx, carrier)?;
         ctx.resources.robot.start_tracking(mover, now);
     }
     Ok(Some(carrier))

@@ -1,0 +1,179 @@
+//! A robot working in the work object of another task's unit (MultiMove): T_ROB1's
+//! robot works on turntable STN1, which task T_STN1 moves. The table's frame stands at
+//! (300, 0, 0) and turns about the world z axis (eax_a of T_STN1, ±180°, 180 °/s,
+//! reaching full speed in 0.15 s); the work object's object frame is 200 mm above it
+//! (a coordinated work object's user frame is the unit's, whatever its `uframe` says).
+//! The object point (100, 0, 100) is (400, 0, 300) in the world with the table at 0°,
+//! and (300, 100, 300) with it at 90° (a turn of +90° about z takes x to y).
+//!
+//! Semi-coordinated (the tasks synchronize with WaitSyncTask): the robot works in the
+//! object where the table stands. Synchronized (SyncMoveOn): the robot follows it.
+//! Expected values are worked by hand in the comments.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+const MANIFEST: &str = r#"
+[[task]]
+name = "T_ROB1"
+modules = ["rob.mod"]
+
+[[task]]
+name = "T_STN1"
+type = "NORMAL"
+motion = true
+modules = ["stn.mod"]
+
+[[unit]]
+name = "STN1"
+task = "T_STN1"
+base = [300, 0, 0]
+[[unit.axis]]
+logical = 7
+type = "rotating"
+min = -180
+max = 180
+speed = 180
+"#;
+
+/// The declarations both tasks share: the task list and the sync points.
+const COMMON: &str = "  PERS tasks all{2} := [[\"T_ROB1\"],[\"T_STN1\"]];\n  VAR syncident turn;\n  \
+                      VAR syncident turned;\n  VAR syncident on;\n  VAR syncident off;\n  VAR clock c;\n";
+
+/// The robot's declarations: the table's work object and points in it.
+const ROB_DECLS: &str =
+    "  PERS wobjdata wobj_stn := [FALSE, FALSE, \"STN1\", [[0,0,0],[1,0,0,0]], [[0,0,200],[1,0,0,0]]];\n  \
+                         CONST robtarget p := [[100,0,100],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n  \
+                         CONST robtarget p_low := [[100,0,50],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n  \
+                         VAR robtarget r;\n";
+
+/// Prints where the TCP is in the world and in the table's work object.
+const SHOW: &str = "    TPWrite \"world \" \\Pos:=CPos(\\Tool:=tool0 \\WObj:=wobj0);\n    \
+                    r := CRobT(\\Tool:=tool0 \\WObj:=wobj_stn);\n    TPWrite \"object \" \\Pos:=r.trans;\n";
+
+/// The table to 90°.
+const TURN: &str = "MoveExtJ [[0,0,0,0,0,0],[90,9E9,9E9,9E9,9E9,9E9]]";
+
+/// A fresh project folder: the manifest and the two tasks' modules, whose `main`
+/// bodies are given.
+fn project(name: &str, rob: &str, stn: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("coordinated").join(name);
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    fs::write(dir.join("rapid.toml"), MANIFEST).expect("manifest");
+    let module = |name: &str, decls: &str, body: &str| {
+        format!("MODULE {name}\n{COMMON}{decls}  PROC main()\n{body}  ENDPROC\nENDMODULE\n")
+    };
+    fs::write(dir.join("rob.mod"), module("rob", ROB_DECLS, rob)).expect("module");
+    fs::write(dir.join("stn.mod"), module("stn", "", stn)).expect("module");
+    dir
+}
+
+fn rapid(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rapid")).args(args).output().expect("run rapid")
+}
+
+fn run(dir: &Path) -> (String, String, Option<i32>) {
+    let out = rapid(&["run", "--quiet", dir.to_str().expect("path")]);
+    (
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+        out.status.code(),
+    )
+}
+
+#[test]
+fn a_robot_works_on_another_tasks_table_where_it_stands() {
+    // The robot goes to p with the table at 0°, stands, and lets T_STN1 turn it (the
+    // first sync point); after the turn (the second) it goes to p again: p is now where
+    // the turned table has it.
+    let rob = format!(
+        "    MoveJ p, v1000, fine, tool0 \\WObj:=wobj_stn;\n{SHOW}    WaitSyncTask turn, all;\n    \
+         WaitSyncTask turned, all;\n    MoveJ p, v1000, fine, tool0 \\WObj:=wobj_stn;\n{SHOW}"
+    );
+    let stn = format!("    WaitSyncTask turn, all;\n    {TURN}, v1000, fine;\n    WaitSyncTask turned, all;\n");
+    let (stdout, stderr, code) = run(&project("semi", &rob, &stn));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(stdout, "world [400,0,300]\nobject [100,0,100]\nworld [300,100,300]\nobject [100,0,100]\n");
+}
+
+#[test]
+fn the_table_does_not_turn_while_the_robot_works_on_it_unsynchronized() {
+    // The robot's move to p takes well over 0.2 s; T_STN1 turns the table at 0.2 s
+    // without waiting for it: execution stops in T_STN1, at its MoveExtJ (line 10).
+    let rob = "    MoveJ p, v1000, fine, tool0 \\WObj:=wobj_stn;\n";
+    let stn = format!("    WaitTime 0.2;\n    {TURN}, v1000, fine;\n");
+    let (_, stderr, code) = run(&project("semi_unit_moves", rob, &stn));
+    assert_eq!(code, Some(1), "{stderr}");
+    assert!(
+        stderr.contains("unit STN1 would move while the robot of task T_ROB1 moves in a work object it carries")
+            && stderr.contains("stn.mod:10"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn the_robot_does_not_work_on_a_turning_table_unsynchronized() {
+    // The table turns from 0 s to 0.65 s; the robot's move in its work object at 0.2 s
+    // stops execution in T_ROB1 (line 14).
+    let rob = "    WaitTime 0.2;\n    MoveJ p, v1000, fine, tool0 \\WObj:=wobj_stn;\n";
+    let stn = format!("    {TURN}, v1000, fine;\n");
+    let (_, stderr, code) = run(&project("semi_robot_moves", rob, &stn));
+    assert_eq!(code, Some(1), "{stderr}");
+    assert!(
+        stderr.contains("the work object's unit STN1 (task T_STN1) moves") && stderr.contains("rob.mod:14"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn a_robot_follows_another_tasks_table_in_synchronized_movement() {
+    // After SyncMoveOn the robot goes 50 mm down in the object (at v100 alone 0.5 + 0.01
+    // s) while the table turns 90° (alone 90/180 + 0.15 = 0.65 s): both take 0.65 s, +
+    // 0.05 s settle at the fine point. At the end the robot is at p_low of the turned
+    // table: (100, 0, 250) above the table's origin turned to (0, 100, 250), so
+    // (300, 100, 250) in the world.
+    let rob = format!(
+        "    MoveJ p, v1000, fine, tool0 \\WObj:=wobj_stn;\n    SyncMoveOn on, all;\n    ClkStart c;\n    \
+         MoveL p_low \\ID:=10, v100, fine, tool0 \\WObj:=wobj_stn;\n    ClkStop c;\n    SyncMoveOff off;\n    \
+         TPWrite \"t \" \\Num:=ClkRead(c);\n{SHOW}"
+    );
+    let stn = format!("    SyncMoveOn on, all;\n    {TURN} \\ID:=10, v1000, fine;\n    SyncMoveOff off;\n");
+    let dir = project("synchronized", &rob, &stn);
+    let trace = dir.join("trace.csv");
+    let out = rapid(&[
+        "run",
+        "--quiet",
+        "--sample",
+        "1",
+        "--trace",
+        trace.to_str().expect("path"),
+        dir.to_str().expect("path"),
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "t 0.7\nworld [300,100,250]\nobject [100,0,50]\n");
+    // Every row of the synchronized move: the TCP is on the object's line x = 100,
+    // y = 0 (the trace's work-object columns follow the turning table), 100 ≥ z ≥ 50, and
+    // in the world on the table at that height, 100 mm from its axis.
+    let text = fs::read_to_string(&trace).expect("trace");
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .filter(|l| l.ends_with("rob.mod:16"))
+        .map(|l| l.split(',').take(17).map(|f| f.parse().expect("number")).collect())
+        .collect();
+    assert!(rows.len() > 600, "{} rows", rows.len());
+    for row in &rows {
+        let (x, y, z, wx, wy, wz) = (row[7], row[8], row[9], row[14], row[15], row[16]);
+        assert!((wx - 100.0).abs() < 0.01 && wy.abs() < 0.01 && (49.99..=100.01).contains(&wz), "{row:?}");
+        assert!(((x - 300.0).hypot(y) - 100.0).abs() < 0.01 && (z - (wz + 200.0)).abs() < 0.01, "{row:?}");
+    }
+    // Half way (0.325 s in; rows every 1 ms, the first within 1 ms of the start) both
+    // profiles are half done, by symmetry: the table at 45°, the robot 75 mm up in the
+    // object: (100, 0, 275) above the table turned 45°, (370.71, 70.71, 275) in the
+    // world. A millisecond moves the table 0.18°, 0.31 mm at 100 mm.
+    let mid = rows.iter().find(|r| r[0] >= rows[0][0] + 0.325 - 1e-9).expect("mid row");
+    assert!((mid[7] - 370.71).abs() < 0.5 && (mid[8] - 70.71).abs() < 0.5, "{mid:?}");
+    assert!((mid[9] - 275.0).abs() < 0.2, "{mid:?}");
+}
