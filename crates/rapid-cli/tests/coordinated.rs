@@ -134,12 +134,18 @@ fn a_robot_follows_another_tasks_table_in_synchronized_movement() {
     // 0.05 s settle at the fine point. At the end the robot is at p_low of the turned
     // table: (100, 0, 250) above the table's origin turned to (0, 100, 250), so
     // (300, 100, 250) in the world.
+    // After SyncMoveOff the robot stands where it is while T_STN1 turns the table back
+    // (semi-coordinated again): it no longer follows the table.
     let rob = format!(
         "    MoveJ p, v1000, fine, tool0 \\WObj:=wobj_stn;\n    SyncMoveOn on, all;\n    ClkStart c;\n    \
          MoveL p_low \\ID:=10, v100, fine, tool0 \\WObj:=wobj_stn;\n    ClkStop c;\n    SyncMoveOff off;\n    \
-         TPWrite \"t \" \\Num:=ClkRead(c);\n{SHOW}"
+         TPWrite \"t \" \\Num:=ClkRead(c);\n{SHOW}    WaitSyncTask turned, all;\n    \
+         TPWrite \"world \" \\Pos:=CPos(\\Tool:=tool0 \\WObj:=wobj0);\n"
     );
-    let stn = format!("    SyncMoveOn on, all;\n    {TURN} \\ID:=10, v1000, fine;\n    SyncMoveOff off;\n");
+    let stn = format!(
+        "    SyncMoveOn on, all;\n    {TURN} \\ID:=10, v1000, fine;\n    SyncMoveOff off;\n    \
+         MoveExtJ [[0,0,0,0,0,0],[0,9E9,9E9,9E9,9E9,9E9]], v1000, fine;\n    WaitSyncTask turned, all;\n"
+    );
     let dir = project("synchronized", &rob, &stn);
     let trace = dir.join("trace.csv");
     let out = rapid(&[
@@ -153,7 +159,10 @@ fn a_robot_follows_another_tasks_table_in_synchronized_movement() {
     ]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(0), "{stderr}");
-    assert_eq!(String::from_utf8_lossy(&out.stdout), "t 0.7\nworld [300,100,250]\nobject [100,0,50]\n");
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        "t 0.7\nworld [300,100,250]\nobject [100,0,50]\nworld [300,100,250]\n"
+    );
     // Every row of the synchronized move: the TCP is on the object's line x = 100,
     // y = 0 (the trace's work-object columns follow the turning table), 100 ≥ z ≥ 50, and
     // in the world on the table at that height, 100 mm from its axis.

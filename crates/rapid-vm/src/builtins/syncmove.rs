@@ -131,6 +131,9 @@ fn leave(ctx: &mut Ctx<'_>) {
     tasking.move_round = None;
     tasking.shared.in_sync.retain(|t| !t.eq_ignore_ascii_case(&me));
     tasking.shared.epoch += 1;
+    // The robot no longer follows another task's unit: it stands where it is when that
+    // unit moves again.
+    super::motion::stop_following_other_tasks(ctx);
 }
 
 /// `IsSyncMoveOn()`: whether the task moves synchronized (not while suspended).

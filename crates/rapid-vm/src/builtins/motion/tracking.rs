@@ -214,6 +214,16 @@ pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Opti
     Ok(Some(carrier))
 }
 
+/// Synchronized movement ended: a robot following another task's unit stops following
+/// it (where its last move in the unit's work object leaves it, once it stands).
+pub(crate) fn stop_following_other_tasks(ctx: &mut Ctx<'_>) {
+    let now = ctx.time;
+    let robot = &mut ctx.resources.robot;
+    if robot.following.open().is_some_and(|span| matches!(span.mover, Mover::Foreign { .. })) {
+        robot.end_tracking(now);
+    }
+}
+
 /// Conveyor `c`'s mechanical unit must be active (ActUnit) to track.
 fn check_active(ctx: &Ctx<'_>, c: usize) -> Result<(), RapidError> {
     let name = &ctx.resources.robot.following.conveyors[c].config.name;
