@@ -58,6 +58,8 @@ pub(crate) struct Inputs {
     pub(crate) robot: Option<String>,
     /// A manifest's robot base frames by motion task (mm, quaternion).
     pub(crate) robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
+    /// A manifest's robot models by motion task; `None`: the task moves no robot.
+    pub(crate) task_robots: Vec<(String, Option<String>)>,
     /// The external units a manifest configures (`[[unit]]`), with their tasks.
     pub(crate) units: Vec<TaskUnit>,
     /// The conveyors a manifest configures (`[[conveyor]]`), with their tasks.
@@ -135,6 +137,7 @@ struct Collector {
     root: Option<PathBuf>,
     robot: Option<String>,
     robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
+    task_robots: Vec<(String, Option<String>)>,
     units: Vec<TaskUnit>,
     conveyors: Vec<TaskConveyor>,
     shared_modules: Vec<usize>,
@@ -337,6 +340,7 @@ impl Collector {
         self.root = Some(manifest.root.clone());
         self.robot = manifest.robot.clone();
         self.robot_bases = manifest.robot_bases.clone();
+        self.task_robots = manifest.task_robots.clone();
         self.units = manifest.units.clone();
         self.conveyors = manifest.conveyors.clone();
         // Each unit is known to programs by its name, a mecunit (ActUnit TRACK).
@@ -489,6 +493,7 @@ impl Collector {
             root: self.root,
             robot: self.robot,
             robot_bases: self.robot_bases,
+            task_robots: self.task_robots,
             units: self.units,
             conveyors: self.conveyors,
             shared_modules: self.shared_modules,

@@ -66,6 +66,35 @@ fn model_of_moc(
     })
 }
 
+/// The robot motion task `task` moves, `None` for a task that moves external units only
+/// (a positioner's): a manifest task's `robot = false`, or a backup whose MOC.cfg
+/// mechanical unit group for the task (SYS.cfg `-UseMechanicalUnitGroup`) has no
+/// `-robot`. Its model: `--robot`, else the task's own `robot` model in a manifest, else
+/// its MOC.cfg robot's type (`ROB_n` the n-th robot) when we know it, else `system` (the
+/// run's model, [`choose_model`]).
+pub(crate) fn task_robot(
+    args: &RunArgs,
+    inputs: &crate::inputs::Inputs,
+    task: &rapid_config::sys::Task,
+    n: usize,
+    system: &'static rapid_motion::RobotModel,
+) -> Option<&'static rapid_motion::RobotModel> {
+    let own = inputs.task_robots.iter().find(|(t, _)| t.eq_ignore_ascii_case(&task.name)).map(|(_, m)| m);
+    let moc = inputs.syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("MOC")).map(|(_, file)| file);
+    let group = task.mechanical_unit_group.as_deref();
+    let robotless = group.zip(moc).and_then(|(group, file)| rapid_config::moc::group_robot(file, group));
+    if matches!(own, Some(None)) || matches!(robotless, Some(None)) {
+        return None;
+    }
+    if args.robot.is_some() {
+        return Some(system);
+    }
+    let named = own.and_then(|m| m.as_deref()).and_then(rapid_motion::find_model);
+    let of_moc =
+        || moc_robot(&inputs.syspar, n).and_then(|r| r.robot_type).and_then(|ty| rapid_motion::find_model(&ty));
+    Some(named.or_else(of_moc).unwrap_or(system))
+}
+
 /// Sets the task's robot up for the run: a trace or a report records every move.
 pub(crate) fn configure(robot: &mut RobotState, model: &'static rapid_motion::RobotModel, args: &RunArgs) {
     *robot = RobotState::new(model);

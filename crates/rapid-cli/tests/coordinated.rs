@@ -1,5 +1,6 @@
 //! A robot working in the work object of another task's unit (MultiMove): T_ROB1's
-//! robot works on turntable STN1, which task T_STN1 moves. The table's frame stands at
+//! robot works on turntable STN1, which task T_STN1 moves (a positioner's motion task,
+//! moving no robot of its own: `robot = false`). The table's frame stands at
 //! (300, 0, 0) and turns about the world z axis (eax_a of T_STN1, ±180°, 180 °/s,
 //! reaching full speed in 0.15 s); the work object's object frame is 200 mm above it
 //! (a coordinated work object's user frame is the unit's, whatever its `uframe` says).
@@ -23,6 +24,7 @@ modules = ["rob.mod"]
 name = "T_STN1"
 type = "NORMAL"
 motion = true
+robot = false
 modules = ["stn.mod"]
 
 [[unit]]
@@ -185,4 +187,36 @@ fn a_robot_follows_another_tasks_table_in_synchronized_movement() {
     let mid = rows.iter().find(|r| r[0] >= rows[0][0] + 0.325 - 1e-9).expect("mid row");
     assert!((mid[7] - 370.71).abs() < 0.5 && (mid[8] - 70.71).abs() < 0.5, "{mid:?}");
     assert!((mid[9] - 275.0).abs() < 0.2, "{mid:?}");
+}
+
+#[test]
+fn a_positioners_task_moves_its_axes_and_no_robot() {
+    // T_STN1 comes first in the manifest and moves no robot: T_ROB1's robot is ROB_1.
+    // TaskRunRob is FALSE there, TaskRunMec TRUE; MoveAbsJ moves the table (90° in
+    // 0.65 s + 0.05 s settle) and not the robot axes it names; a MoveL stops execution.
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("coordinated").join("positioner_task");
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    let (_, units) = MANIFEST.split_once("[[unit]]").expect("units");
+    let manifest = format!(
+        "[[task]]\nname = \"T_STN1\"\nrobot = false\nmodules = [\"stn.mod\"]\n\n\
+         [[task]]\nname = \"T_ROB1\"\ntype = \"NORMAL\"\nmotion = true\nmodules = [\"rob.mod\"]\n\n[[unit]]{units}"
+    );
+    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    let show = "    TPWrite GetTaskName() + \" \" + RobName() + \" \" + ValToStr(TaskRunRob()) + \" \" + ValToStr(TaskRunMec());\n";
+    let stn = format!(
+        "MODULE stn\n  VAR clock c;\n  VAR jointtarget jt;\n  PROC main()\n{show}    ClkStart c;\n    \
+         MoveAbsJ [[10,20,30,0,0,0],[90,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    jt := CJointT();\n    \
+         TPWrite \"stn \" \\Num:=ClkRead(c);\n    TPWrite \"table \" \\Num:=jt.extax.eax_a;\n    \
+         MoveL [[400,0,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v100, fine, tool0;\n  ENDPROC\nENDMODULE\n"
+    );
+    fs::write(dir.join("stn.mod"), stn).expect("module");
+    let rob = format!("MODULE rob\n  PROC main()\n{show}  ENDPROC\nENDMODULE\n");
+    fs::write(dir.join("rob.mod"), rob).expect("module");
+    let (stdout, stderr, code) = run(&dir);
+    assert_eq!(code, Some(1), "{stderr}");
+    let mut lines: Vec<&str> = stdout.lines().collect();
+    lines.sort_unstable();
+    assert_eq!(lines, ["T_ROB1 ROB_1 TRUE TRUE", "T_STN1  FALSE TRUE", "stn 0.7", "table 90"]);
+    assert!(stderr.contains("task T_STN1 moves no robot") && stderr.contains("stn.mod:11"), "{stderr}");
 }

@@ -330,3 +330,38 @@ ENDMODULE
     let report = format!("{}{}", text(&out.stdout), text(&out.stderr));
     finding_at(&report, "task `T_PLC`: base and orientation place a motion task's robot", "bad/rapid.toml:10:8");
 }
+
+#[test]
+fn a_tasks_robot_is_a_known_model_or_none_and_only_a_motion_tasks() {
+    // `robot = false` makes a positioner's task (tests/coordinated.rs); a model must be
+    // one we know, and a task that is no motion task has no robot to name.
+    let dir = scratch("task_robot");
+    let manifest = "[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\nrobot = \"IRB 9999\"\n\n\
+                    [[task]]\nname = \"T_PLC\"\nmodules = [\"main.mod\"]\nrobot = false\n";
+    let program = "MODULE main\n  PROC main()\n  ENDPROC\nENDMODULE\n";
+    write(&dir, &[("bad/rapid.toml", manifest), ("bad/main.mod", program)]);
+    let out = rapid_in(&dir, &["check", "bad"]);
+    let report = format!("{}{}", text(&out.stdout), text(&out.stderr));
+    finding_at(&report, "task `T_ROB1`: unknown robot model `IRB 9999` (known: IRB 120-3/0.58", "bad/rapid.toml:4:9");
+    finding_at(&report, "task `T_PLC`: robot is a motion task's (motion = true)", "bad/rapid.toml:9:9");
+}
+
+#[test]
+fn each_motion_task_moves_the_robot_model_it_names() {
+    // T_ROB2 names its own model: at the calibration position (all axes 0) its TCP is
+    // the IRB 2600-12/1.65's (a1 + c3 + c4, 0, c1 + c2 - a2) = (1030, 0, 1260); T_ROB1
+    // keeps the system's IRB 120 at (374, 0, 630).
+    let dir = scratch("task_models");
+    let manifest = "[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n\
+                    [[task]]\nname = \"T_ROB2\"\ntype = \"NORMAL\"\nmotion = true\nrobot = \"IRB 2600-12/1.65\"\n\
+                    modules = [\"main.mod\"]\n";
+    let program =
+        "MODULE main\n  PROC main()\n    TPWrite GetTaskName() + \" \" + RobName() \\Pos:=CPos(\\Tool:=tool0);\n  \
+                   ENDPROC\nENDMODULE\n";
+    write(&dir, &[("cell/rapid.toml", manifest), ("cell/main.mod", program)]);
+    let out = rapid_in(&dir, &["run", "--quiet", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let mut lines: Vec<String> = text(&out.stdout).lines().map(str::to_owned).collect();
+    lines.sort();
+    assert_eq!(lines, ["T_ROB1 ROB_1[374,0,630]", "T_ROB2 ROB_2[1030,0,1260]"]);
+}

@@ -52,6 +52,14 @@ fn base_frame(inst: &crate::Instance) -> ([f64; 3], [f64; 4]) {
     (pos, orient)
 }
 
+/// The robot of the `MECHANICAL_UNIT_GROUP` named `group` (its `-robot`, "ROB_1"): `None`
+/// when the file has no such group, `Some(None)` for a group without a robot (the group
+/// of a positioner's task, which moves external units only).
+pub fn group_robot(file: &CfgFile, group: &str) -> Option<Option<String>> {
+    let found = named(file, "MECHANICAL_UNIT_GROUP", group)?;
+    Some(found.value("robot").filter(|r| !r.is_empty()).map(str::to_owned))
+}
+
 /// The mechanical units of a MOC file that are not robots (`MECHANICAL_UNIT` instances
 /// no `ROBOT` instance names): external axes, tracks, positioners.
 pub fn external_units(file: &CfgFile) -> Vec<String> {

@@ -275,6 +275,17 @@ fn moc_external_units_are_the_mechanical_units_no_robot_names() {
 }
 
 #[test]
+fn moc_a_group_without_a_robot_is_a_positioners() {
+    let file = parse(
+        "MOC:CFG_1.0:6:0::\n#\nMECHANICAL_UNIT_GROUP:\n\n  -name \"rob1\" -robot \"ROB_1\"\n\n  \
+         -name \"stn1\" -mech_unit_1 \"STN1\"\n",
+    );
+    assert_eq!(moc::group_robot(&file, "ROB1"), Some(Some("ROB_1".to_owned())));
+    assert_eq!(moc::group_robot(&file, "stn1"), Some(None));
+    assert_eq!(moc::group_robot(&file, "stn2"), None);
+}
+
+#[test]
 fn removing_a_flag_keeps_the_rest() {
     let file = fixture("sys.cfg");
     let (section, instance) = rapid_config::find_named(&file, "CAB_TASKS", "T_ROB1").expect("task");

@@ -113,6 +113,7 @@ impl Controller {
             .map(|(spec, _)| TaskInfo {
                 name: spec.name.clone(),
                 motion: spec.motion,
+                robot: spec.motion && spec.robot,
                 normal: spec.kind == TaskKind::Normal,
                 active: true,
                 executing: true,

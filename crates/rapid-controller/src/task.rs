@@ -61,6 +61,9 @@ pub struct TaskSpec {
     pub foreground: Option<String>,
     /// `-MotionTask`: the task that moves the robot.
     pub motion: bool,
+    /// A motion task whose mechanical unit group has a robot with a TCP (a positioner's
+    /// task moves external units only).
+    pub robot: bool,
     /// Its RAPID Message Queue (`-RmqType` …).
     pub rmq: rapid_config::sys::Rmq,
     /// Which of its files are modules installed shared (their variables are one

@@ -99,11 +99,18 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     let mut robot_number = 0;
     for (spec, program) in &mut loaded {
         if spec.motion {
-            robot_number += 1;
+            let Some(task) = sys.task(&spec.name) else { continue };
+            let own = crate::motion_out::task_robot(args, &tasks[0].inputs, task, robot_number + 1, model);
+            spec.robot = own.is_some();
             let robot = &mut program.vm.resources_mut().robot;
-            crate::motion_out::configure(robot, model, args);
-            crate::motion_out::configure_base(robot, &tasks[0].inputs, robot_number, &spec.name);
-            crate::motion_out::configure_ranges(robot, &tasks[0].inputs.syspar, robot_number);
+            // A task moving external units only keeps an arm that never moves (its
+            // robot instructions are refused), so that its units have a state to live in.
+            crate::motion_out::configure(robot, own.unwrap_or(model), args);
+            if own.is_some() {
+                robot_number += 1;
+                crate::motion_out::configure_base(robot, &tasks[0].inputs, robot_number, &spec.name);
+                crate::motion_out::configure_ranges(robot, &tasks[0].inputs.syspar, robot_number);
+            }
             crate::motion_out::configure_units(robot, &units, Some(&spec.name), first_motion);
             let conveyors = &tasks[0].inputs.conveyors;
             let found =
@@ -299,6 +306,7 @@ fn task_specs(sys: &Sys) -> Result<Vec<TaskSpec>, String> {
                 trust,
                 foreground: task.foreground.clone(),
                 motion: task.motion_task,
+                robot: task.motion_task,
                 rmq: task.rmq,
                 shared_files: Vec::new(),
             })
@@ -438,7 +446,9 @@ fn write_motion_outputs(
     cycle: f64,
     args: &RunArgs,
 ) -> anyhow::Result<()> {
-    let motion = controller.tasks.iter_mut().position(|t| t.loaded.vm.resources_mut().robot.recorded.is_some());
+    // The first task's robot that was recorded (a positioner's task moves none).
+    let motion =
+        controller.tasks.iter_mut().position(|t| t.spec.robot && t.loaded.vm.resources_mut().robot.recorded.is_some());
     let Some(at) = motion else { return Ok(()) };
     let robot = std::mem::take(&mut controller.tasks[at].loaded.vm.resources_mut().robot);
     let vm = &controller.tasks[at].loaded.vm;

@@ -74,6 +74,9 @@ pub(crate) struct Manifest {
     /// A motion task's `base` and `orientation`: where its robot stands in the world (mm,
     /// a unit quaternion), by task name.
     pub(crate) robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
+    /// A motion task's own `robot`: its model's name, or `None` for a task that moves
+    /// external units only (a positioner's), by task name.
+    pub(crate) task_robots: Vec<(String, Option<String>)>,
     pub(crate) findings: Vec<Finding>,
 }
 
@@ -113,6 +116,15 @@ struct RawTask {
     rmq: Option<RawRmq>,
     base: Option<Spanned<Vec<f64>>>,
     orientation: Option<Spanned<Vec<f64>>>,
+    robot: Option<Spanned<RawRobot>>,
+}
+
+/// A task's `robot`: a model's name, or whether the task moves a robot at all.
+#[derive(Debug, Deserialize)]
+#[serde(untagged)]
+enum RawRobot {
+    Model(String),
+    Moves(bool),
 }
 
 #[derive(Debug, Deserialize)]
@@ -307,6 +319,7 @@ impl Reader<'_> {
         let modules = self.modules(&name, &raw.modules);
         let motion_task = raw.motion.unwrap_or(idx == 0);
         self.robot_base(&name, raw, motion_task);
+        self.task_robot(&name, raw, motion_task);
         self.manifest.sys.tasks.push(Task {
             name,
             task_type,
@@ -336,6 +349,30 @@ impl Reader<'_> {
         let orientation = super::manifest_units::orientation(raw.orientation.as_ref(), task, &mut find);
         self.manifest.findings.extend(found);
         self.manifest.robot_bases.push((task.to_owned(), base, orientation));
+    }
+
+    /// A motion task's own `robot`: a model (known to us), `true` (the system's), or
+    /// `false` (none: the task moves its external units only).
+    fn task_robot(&mut self, task: &str, raw: &RawTask, motion_task: bool) {
+        let Some(robot) = &raw.robot else { return };
+        if !motion_task {
+            let message = format!("task `{task}`: robot is a motion task's (motion = true)");
+            self.find(robot.span(), message);
+            return;
+        }
+        let chosen = match robot.get_ref() {
+            RawRobot::Moves(true) => return,
+            RawRobot::Moves(false) => None,
+            RawRobot::Model(name) => {
+                if rapid_motion::find_model(name).is_none() {
+                    let known: Vec<&str> = rapid_motion::models().iter().map(|m| m.name).collect();
+                    let message = format!("task `{task}`: unknown robot model `{name}` (known: {})", known.join(", "));
+                    self.find(robot.span(), message);
+                }
+                Some(name.clone())
+            }
+        };
+        self.manifest.task_robots.push((task.to_owned(), chosen));
     }
 
     fn rmq(&mut self, task: &str, raw: &RawRmq) -> Rmq {

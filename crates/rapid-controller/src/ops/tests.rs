@@ -30,6 +30,7 @@ fn with_signals(program: &str, inputs: &str) -> Controller {
         trust: TrustLevel::SysFail,
         foreground: None,
         motion: true,
+        robot: true,
         rmq: rapid_config::sys::Rmq::default(),
         shared_files: Vec::new(),
     };

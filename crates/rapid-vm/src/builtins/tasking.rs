@@ -29,8 +29,11 @@ const IDLE_POLL: f64 = 3600.0;
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct TaskInfo {
     pub name: String,
-    /// Runs motion instructions (`-MotionTask`): TaskRunRob, TaskRunMec.
+    /// Runs motion instructions (`-MotionTask`): TaskRunMec.
     pub motion: bool,
+    /// A motion task that moves a robot with a TCP (TaskRunRob); a positioner's task
+    /// moves external units only.
+    pub robot: bool,
     /// A NORMAL task (not STATIC or SEMISTATIC): GetTSPStatus.
     pub normal: bool,
     /// Selected in the task selection panel (TaskIsActive); every configured task is.
@@ -114,7 +117,15 @@ impl Default for SharedTasking {
     /// A system of one task, T_ROB1, moving the robot.
     fn default() -> Self {
         let rmq = rapid_config::sys::Rmq::default();
-        let t_rob1 = TaskInfo { name: "T_ROB1".into(), motion: true, normal: true, active: true, executing: true, rmq };
+        let t_rob1 = TaskInfo {
+            name: "T_ROB1".into(),
+            motion: true,
+            robot: true,
+            normal: true,
+            active: true,
+            executing: true,
+            rmq,
+        };
         SharedTasking::new(vec![t_rob1])
     }
 }
@@ -426,14 +437,13 @@ fn my_task<'c>(ctx: &'c Ctx<'_>) -> Option<&'c TaskInfo> {
 
 /// `TaskRunRob()`: the task controls a robot with a TCP (it is a motion task).
 fn task_run_rob(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    Ok(Some(Value::Bool(my_task(ctx).is_some_and(|t| t.motion))))
+    Ok(Some(Value::Bool(my_task(ctx).is_some_and(|t| t.robot))))
 }
 
-/// `TaskRunMec()`: the task controls a mechanical unit; only motion tasks do here.
-// uncertain: a task with external axes but no robot also answers TRUE on a controller;
-// the systems we model have robot units only.
+/// `TaskRunMec()`: the task controls a mechanical unit (a robot, or only external units
+/// as a positioner's task does): every motion task.
 fn task_run_mec(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    task_run_rob(ctx, _args)
+    Ok(Some(Value::Bool(my_task(ctx).is_some_and(|t| t.motion))))
 }
 
 /// The task a `taskid | string` argument pair names: a taskid by its data name

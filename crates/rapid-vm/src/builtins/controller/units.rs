@@ -66,11 +66,13 @@ fn unit_name(ctx: &Ctx<'_>, param: usize) -> Result<String, RapidError> {
         return Ok(name.to_string());
     }
     let tasking = &ctx.resources.tasking;
-    let me = tasking.shared.tasks.iter().find(|t| t.name.eq_ignore_ascii_case(tasking.name()));
-    if me.is_some_and(|t| !t.motion) {
-        return Err(ctx.error(Err::ArgValue, "ROB_ID: this task controls no robot"));
+    let robots: Vec<&str> = tasking.shared.tasks.iter().filter(|t| t.robot).map(|t| t.name.as_str()).collect();
+    match robots.iter().position(|name| name.eq_ignore_ascii_case(tasking.name())) {
+        Some(index) => Ok(format!("ROB_{}", index + 1)),
+        // A program run alone is T_ROB1's, with ROB_1.
+        None if tasking.shared.tasks.is_empty() => Ok("ROB_1".to_owned()),
+        None => Err(ctx.error(Err::ArgValue, "ROB_ID: this task controls no robot")),
     }
-    Ok(format!("ROB_{}", planner_no(ctx)))
 }
 
 /// `GetMecUnitName(MechUnit)`: the mechanical unit's configured name ("ROB_1").

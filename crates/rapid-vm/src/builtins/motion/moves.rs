@@ -222,6 +222,29 @@ pub(super) fn require_motion_task(ctx: &Ctx<'_>) -> Result<(), RapidError> {
     Err(RapidError::fatal(format!("task {} is no motion task (-MotionTask): it cannot move the robot", tasking.name())))
 }
 
+/// Whether this task moves a robot (a positioner's motion task moves external units
+/// only).
+pub(super) fn moves_robot(ctx: &Ctx<'_>) -> bool {
+    let tasking = &ctx.resources.tasking;
+    let me = tasking.shared.tasks.iter().find(|t| t.name.eq_ignore_ascii_case(tasking.name()));
+    me.is_none_or(|t| t.robot)
+}
+
+/// A move of the TCP runs only in a motion task that moves a robot.
+// uncertain: the controller's error for a TCP move in a task whose mechanical unit
+// group has no robot is not in our sources; execution stops.
+pub(super) fn require_robot(ctx: &Ctx<'_>) -> Result<(), RapidError> {
+    require_motion_task(ctx)?;
+    if moves_robot(ctx) {
+        return Ok(());
+    }
+    Err(RapidError::fatal(format!(
+        "task {} moves no robot (its mechanical units are external axes only): it cannot move a TCP; MoveExtJ \
+         and MoveAbsJ move its axes",
+        ctx.resources.tasking.name()
+    )))
+}
+
 /// Plans the move (with the events it fires on its path) and makes the program wait
 /// until it may go on.
 pub(super) fn go_with(
@@ -412,7 +435,7 @@ pub(super) fn joint_move(
     layout: &Layout,
     events: Vec<super::robot::PathEvent>,
 ) -> Res {
-    require_motion_task(ctx)?;
+    require_robot(ctx)?;
     let chain = frames(ctx, args, layout, true)?;
     let (pose, conf) = data::robtarget(ctx, &ctx.value(&args[layout.to])?)?;
     let robot = &ctx.resources.robot;
@@ -438,7 +461,7 @@ pub(super) fn linear_move(
     layout: &Layout,
     events: Vec<super::robot::PathEvent>,
 ) -> Res {
-    require_motion_task(ctx)?;
+    require_robot(ctx)?;
     check_sing_mode(ctx)?;
     let chain = frames(ctx, args, layout, true)?;
     let target = ctx.value(&args[layout.to])?;
@@ -479,7 +502,7 @@ pub(super) fn circular_move(
     layout: &Layout,
     events: Vec<super::robot::PathEvent>,
 ) -> Res {
-    require_motion_task(ctx)?;
+    require_robot(ctx)?;
     check_circle_mode(ctx)?;
     check_sing_mode(ctx)?;
     let chain = frames(ctx, args, layout, true)?;
@@ -627,7 +650,11 @@ pub(super) fn abs_joint_move(
 ) -> Res {
     require_motion_task(ctx)?;
     let chain = frames(ctx, args, layout, false)?;
-    let joints = data::jointtarget(ctx, &ctx.value(&args[layout.to])?)?;
+    let mut joints = data::jointtarget(ctx, &ctx.value(&args[layout.to])?)?;
+    if !moves_robot(ctx) {
+        // A positioner's task: only the external axes move (`robax` is not used).
+        joints = ctx.resources.robot.end_joints();
+    }
     if let Some(axis) = ctx.resources.robot.kin.limit_violation(&joints) {
         return Err(motion_error(MotionError::JointLimit { axis }));
     }

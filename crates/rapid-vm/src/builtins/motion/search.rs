@@ -135,7 +135,11 @@ pub(crate) fn search_ext_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 }
 
 fn search(ctx: &mut Ctx<'_>, args: &[Value], places: &Places) -> Res {
-    super::moves::require_motion_task(ctx)?;
+    // SearchExtJ moves external axes only; SearchL and SearchC move the TCP.
+    match std::ptr::eq(places, &SEARCH_EXT_J) {
+        true => super::moves::require_motion_task(ctx)?,
+        false => super::moves::require_robot(ctx)?,
+    }
     // uncertain: a search in synchronized movement (`\\ID`) is not coordinated with the
     // other tasks' moves yet.
     if present(args.get(places.id)) {

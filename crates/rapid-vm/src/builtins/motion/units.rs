@@ -36,14 +36,15 @@ fn unit_name(ctx: &Ctx<'_>, unit: usize) -> String {
     }
 }
 
-/// The motion tasks of the system in configuration order: (task number from 1 among
-/// all tasks, task name). A program run alone is the motion task T_ROB1.
+/// The motion tasks of the system that move a robot, in configuration order: (task
+/// number from 1 among all tasks, task name); `ROB_n` is the n-th one's robot (a
+/// positioner's task has none). A program run alone is the motion task T_ROB1.
 fn robot_tasks(ctx: &Ctx<'_>) -> Vec<(usize, String)> {
     let tasks = &ctx.resources.tasking.shared.tasks;
     if tasks.is_empty() {
         return vec![(1, ctx.resources.tasking.name().to_string())];
     }
-    tasks.iter().enumerate().filter(|(_, t)| t.motion).map(|(i, t)| (i + 1, t.name.clone())).collect()
+    tasks.iter().enumerate().filter(|(_, t)| t.robot).map(|(i, t)| (i + 1, t.name.clone())).collect()
 }
 
 /// The unit number (from 1) of this task's robot, if it has one.
