@@ -215,7 +215,7 @@ pub(crate) fn configure_conveyors(
 pub(crate) fn finish(
     resources: &mut rapid_vm::builtins::Resources,
     program_end: f64,
-    task: &str,
+    (task, has_robot): (&str, bool),
     note: Option<&str>,
     args: &RunArgs,
 ) -> anyhow::Result<f64> {
@@ -243,7 +243,9 @@ pub(crate) fn finish(
             0 => String::new(),
             n => format!(", {n} corner path failure(s): a fly-by point became a stop point"),
         };
-        eprintln!("cycle time {task}: {cycle:.3} s ({} moves, {}{failures})", robot.moves, robot.model.name);
+        // A positioner's task moves its external axes only.
+        let moved = if has_robot { robot.model.name } else { "external axes" };
+        eprintln!("cycle time {task}: {cycle:.3} s ({} moves, {moved}{failures})", robot.moves);
     }
     Ok(cycle)
 }

@@ -380,3 +380,35 @@ fn the_turntable_example_welds_while_the_table_turns_half_a_turn() {
     assert_eq!(arc.len(), 2, "{arc:?}");
     assert_near(arc[1] - arc[0], 1.2, 0.001, "arc time");
 }
+
+#[test]
+fn the_positioner_cell_tacks_and_welds_as_the_tasks_take_turns() {
+    let io_log = Path::new(env!("CARGO_TARGET_TMPDIR")).join("positioner_cell_io.csv");
+    let out = rapid(&["--io-log", io_log.to_str().expect("utf-8"), "examples/positioner_cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    // Worked by hand from the robot's home, 100 mm from the table's axis (IRB 120, table
+    // 180 °/s with 0.15 s ramps, 0.05 s settle at each fine point):
+    // side A, table at 0°: down 50 mm and up at v100 around a 0.2 s tack;
+    let side_a = fine_move_l(50.0, 100.0) + 0.2 + fine_move_l(50.0, 100.0);
+    // the table turns 180° while the robot stands (semi-coordinated): 1 + 0.15 + 0.05 s;
+    let turn = 180.0 / 180.0 + 0.15 + 0.05;
+    // side B: 200 mm across to above the turned edge, the tack at v200, 50 mm down at
+    // v100 to the seam;
+    let side_b = fine_move_l(200.0, 200.0) + fine_move_l(50.0, 200.0) + 0.2 + fine_move_l(50.0, 200.0);
+    let to_seam = fine_move_l(50.0, 100.0);
+    // the weld (synchronized): 50 mm along the rim at v20 alone 2.5 + 0.002 s, the table
+    // back 180° alone 1.15 s: both take 2.502 s, + 0.05 s settle.
+    let weld = fine_move_l(50.0, 20.0);
+    let stdout = text(&out.stdout);
+    let reported: f64 = stdout.trim().strip_prefix("Part done in ").expect("the report").parse().expect("a time");
+    assert_near(reported, side_a + turn + side_b + to_seam + weld, 0.0015, "the cycle");
+    let changes = io_changes(&io_log);
+    let times =
+        |signal: &str| -> Vec<f64> { changes.iter().filter(|(_, s, _)| s == signal).map(|(t, _, _)| *t).collect() };
+    let (tack, arc) = (times("doTack"), times("doArc"));
+    assert_eq!((tack.len(), arc.len()), (4, 2), "{changes:?}");
+    // The second tack comes after the rest of side A, the turn and side B's approach.
+    let between = fine_move_l(50.0, 100.0) + turn + fine_move_l(200.0, 200.0) + fine_move_l(50.0, 200.0);
+    assert_near(tack[2] - tack[1], between, 0.0015, "from tack to tack");
+    assert_near(arc[1] - arc[0], weld, 0.0015, "the weld");
+}

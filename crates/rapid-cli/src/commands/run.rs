@@ -155,7 +155,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     log_stop(&mut loaded.vm, &task_name, status);
     let program_end = loaded.vm.time;
     let resources = loaded.vm.resources_mut();
-    let cycle = crate::motion_out::finish(resources, program_end, "T_ROB1", model_note.as_deref(), args)?;
+    let cycle = crate::motion_out::finish(resources, program_end, ("T_ROB1", true), model_note.as_deref(), args)?;
     // The last fly-by point, if the program ended on one, became a stop point.
     loaded.vm.log_corner_failures();
     // The run is over: the robot leaves the task for the trace and the report.

@@ -179,7 +179,8 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     for task in &mut controller.tasks {
         let name = task.spec.name.clone();
         let resources = task.loaded.vm.resources_mut();
-        cycle = cycle.max(crate::motion_out::finish(resources, program_end, &name, model_note.as_deref(), args)?);
+        let who = (name.as_str(), task.spec.robot);
+        cycle = cycle.max(crate::motion_out::finish(resources, program_end, who, model_note.as_deref(), args)?);
         task.loaded.vm.log_corner_failures();
     }
     write_motion_outputs(&mut controller, &tasks, cycle, args)?;
