@@ -220,3 +220,29 @@ fn a_positioners_task_moves_its_axes_and_no_robot() {
     assert_eq!(lines, ["T_ROB1 ROB_1 TRUE TRUE", "T_STN1  FALSE TRUE", "stn 0.7", "table 90"]);
     assert!(stderr.contains("task T_STN1 moves no robot") && stderr.contains("stn.mod:11"), "{stderr}");
 }
+
+#[test]
+fn wait_sync_task_in_pos_lets_the_table_turn_after_a_fly_by_point() {
+    // The robot's last move on the table ends at a fly-by point. WaitSyncTask \InPos
+    // first waits for the robot to stand there (the fly-by point becomes a stop point,
+    // without a fine point's settle: 50 mm at v100, 0.5 + 0.01 s), so the table may turn
+    // after the meeting; the robot stands where it was in the world, (400, 0, 250), which
+    // on the turned table is (0, -100, 50). Without \InPos the robot is still given its
+    // fly-by move when the tasks meet, and the table's turn stops execution.
+    for (in_pos, ok) in [("\\InPos, ", true), ("", false)] {
+        let rob = format!(
+            "    MoveJ p, v1000, fine, tool0 \\WObj:=wobj_stn;\n    ClkStart c;\n    \
+             MoveL p_low, v100, z10, tool0 \\WObj:=wobj_stn;\n    WaitSyncTask {in_pos}turn, all;\n    \
+             TPWrite \"met \" \\Num:=ClkRead(c);\n    WaitSyncTask turned, all;\n{SHOW}"
+        );
+        let stn = format!("    WaitSyncTask turn, all;\n    {TURN}, v1000, fine;\n    WaitSyncTask turned, all;\n");
+        let (stdout, stderr, code) = run(&project(&format!("in_pos_{ok}"), &rob, &stn));
+        if ok {
+            assert_eq!(code, Some(0), "{stderr}");
+            assert_eq!(stdout, "met 0.51\nworld [400,0,250]\nobject [0,-100,50]\n");
+        } else {
+            assert_eq!(code, Some(1), "{stderr}");
+            assert!(stderr.contains("unit STN1 would move while the robot of task T_ROB1 moves"), "{stderr}");
+        }
+    }
+}

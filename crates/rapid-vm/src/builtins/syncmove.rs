@@ -55,7 +55,7 @@ pub(crate) enum Coordination {
 
 /// The robot stands still before a stop-point instruction goes on: `false` (and a
 /// wait) while it still moves.
-fn robot_stands(ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
+pub(crate) fn robot_stands(ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
     let end = ctx.resources.robot.flush();
     super::motion::apply_due_events(ctx)?;
     if end > ctx.time {

@@ -235,14 +235,18 @@ impl TaskingState {
 
 /// `WaitSyncTask [\InPos] SyncID, TaskList [\TimeOut]`: waits until every task of the
 /// list has reached the sync point of this name (the syncident's data name, the same
-/// in every task). Tasks of the list that are not executing are not waited for.
-// uncertain: \InPos waits for the robot to stand still; no motion runs yet, so it
-// always does.
+/// in every task). Tasks of the list that are not executing are not waited for. With
+/// `\InPos` the task's robot first stands still at the end of its last move (a fly-by
+/// point becomes a stop point), as before a positioner moves the object it works on.
 // uncertain: a task in the list the system does not have raises ERR_TASKNAME.
+// uncertain: `\InPos` in a task that moves no robot (no motion task) waits for nothing.
 fn wait_sync_task(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let point = sync_point(ctx, 1)?;
     let list = task_list(ctx, &args[2])?;
     let timeout = ctx.opt_num(args.get(3))?;
+    if present(args.first()) && !super::syncmove::robot_stands(ctx)? {
+        return Ok(None);
+    }
     meet(
         ctx,
         &point,
