@@ -64,7 +64,7 @@ pub(crate) struct Manifest {
     pub(crate) io: Option<(PathBuf, Range<usize>)>,
     /// The controller root: the folder whose `HOME` subfolder is the HOME: device.
     pub(crate) root: PathBuf,
-    /// `[system] name` and `robot`, kept for the motion issue.
+    /// `[system] name`, and `robot`: the model the motion tasks move (`motion_out.rs`).
     pub(crate) name: Option<String>,
     pub(crate) robot: Option<String>,
     /// `[[unit]]`: external mechanical units and the tasks they belong to.
