@@ -70,8 +70,8 @@ fn model_of_moc(
 /// (a positioner's): a manifest task's `robot = false`, or a backup whose MOC.cfg
 /// mechanical unit group for the task (SYS.cfg `-UseMechanicalUnitGroup`) has no
 /// `-robot`. Its model: `--robot`, else the task's own `robot` model in a manifest, else
-/// its MOC.cfg robot's type (`ROB_n` the n-th robot) when we know it, else `system` (the
-/// run's model, [`choose_model`]).
+/// the manifest's [system] robot, else its MOC.cfg robot's type (`ROB_n` the n-th robot)
+/// when we know it, else `system` (the run's model, [`choose_model`]).
 pub(crate) fn task_robot(
     args: &RunArgs,
     inputs: &crate::inputs::Inputs,
@@ -86,10 +86,12 @@ pub(crate) fn task_robot(
     if matches!(own, Some(None)) || matches!(robotless, Some(None)) {
         return None;
     }
-    if args.robot.is_some() {
+    let named = own.and_then(|m| m.as_deref()).and_then(rapid_motion::find_model);
+    // `--robot` stands above all; a manifest's [system] robot above MOC.cfg, as in
+    // `choose_model`.
+    if args.robot.is_some() || (named.is_none() && inputs.robot.is_some()) {
         return Some(system);
     }
-    let named = own.and_then(|m| m.as_deref()).and_then(rapid_motion::find_model);
     let of_moc =
         || moc_robot(&inputs.syspar, n).and_then(|r| r.robot_type).and_then(|ty| rapid_motion::find_model(&ty));
     Some(named.or_else(of_moc).unwrap_or(system))
