@@ -158,3 +158,35 @@ fn all_motion_tasks_stops_and_starts_every_robot() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "T_ROB2 1.06\nT_ROB1 1.56\n");
 }
+
+#[test]
+fn a_backups_positioner_task_moves_no_robot() {
+    // SYS.cfg gives T_STN1 the mechanical unit group stn1, which MOC.cfg gives no robot:
+    // a positioner's task. TaskRunRob is FALSE there (TRUE in T_ROB1), TaskRunMec TRUE
+    // in both, and T_ROB1's robot is ROB_1.
+    let dir = scratch("positioner_task");
+    let body =
+        "MODULE M\n  PROC main()\n    TPWrite GetTaskName() + \" \" + RobName() + \" \" + ValToStr(TaskRunRob()) \
+                + \" \" + ValToStr(TaskRunMec());\n  ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef {
+            name: "T_STN1",
+            attrs: "-Type \"NORMAL\" -MotionTask -UseMechanicalUnitGroup \"stn1\"",
+            module: body,
+        },
+        TaskDef {
+            name: "T_ROB1",
+            attrs: "-Type \"NORMAL\" -MotionTask -UseMechanicalUnitGroup \"rob1\"",
+            module: body,
+        },
+    ];
+    let root = system(&dir, &tasks, "");
+    let moc = "MOC:CFG_1.0:6:0::\n#\nMECHANICAL_UNIT_GROUP:\n\n      -name \"rob1\" -robot \"ROB_1\"\n\n      \
+               -name \"stn1\" -mech_unit_1 \"STN1\"\n";
+    fs::write(root.join("SYSPAR/MOC.cfg"), moc).expect("MOC.cfg");
+    let out = rapid_in(&dir, &["run", "--quiet", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let mut lines: Vec<String> = text(&out.stdout).lines().map(str::to_owned).collect();
+    lines.sort();
+    assert_eq!(lines, ["T_ROB1 ROB_1 TRUE TRUE", "T_STN1  FALSE TRUE"]);
+}
