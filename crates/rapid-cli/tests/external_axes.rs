@@ -315,6 +315,59 @@ ENDMODULE
     assert!((y + 100.0 * angle.sin()).abs() < 0.01, "y {y}");
 }
 
+#[test]
+fn calc_joint_t_takes_the_turntable_where_the_target_has_it() {
+    // p1 is (-100, 0, 200) on STN1's table with the table at 90° (its eax_b): (400, -100,
+    // 400) in the world, axis 1 at -14° and the tool turned 90° more, axis 6 at -104°
+    // (confdata -1, 0, -2, 0). CalcJointT before the move gives the axes the robot has
+    // after it (the table turned); with \UseCurWObjPos the table where it stands (0°),
+    // where that object point is home (axes 1 and 6 at 0): the axes now. CalcRobT of
+    // the axes after the move, with the target's table angle, is p1 again. Back home
+    // (the table back at 0°), while the table turns again (a \Conc move) CalcJointT
+    // \UseCurWObjPos raises ERR_WOBJ_MOVING.
+    let manifest_units = UNITS.replace("name = \"STN1\"\n", "name = \"STN1\"\nbase = [400, 0, 200]\n");
+    let dir = scratch("calc_joint_t_table");
+    let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n{manifest_units}");
+    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    let module = "MODULE main
+  PERS wobjdata wobj_stn1 := [FALSE, FALSE, \"STN1\", [[0,0,0],[1,0,0,0]], [[0,0,0],[1,0,0,0]]];
+  CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[9E9,0,9E9,9E9,9E9,9E9]];
+  CONST robtarget p1 := [[-100,0,200],[0,0,1,0],[-1,0,-2,0],[9E9,90,9E9,9E9,9E9,9E9]];
+  CONST robtarget p1_home_conf := [[-100,0,200],[0,0,1,0],[0,0,0,0],[9E9,90,9E9,9E9,9E9,9E9]];
+  VAR jointtarget planned;
+  VAR jointtarget now_there;
+  VAR jointtarget here;
+  VAR robtarget back;
+  PROC main()
+    ConfL \\Off;
+    MoveJ home, v1000, fine, tool0;
+    planned := CalcJointT(p1, tool0 \\WObj:=wobj_stn1);
+    now_there := CalcJointT(\\UseCurWObjPos, p1_home_conf, tool0 \\WObj:=wobj_stn1);
+    here := CJointT();
+    TPWrite \"standing \" \\Num:=Distance([here.robax.rax_1, here.robax.rax_2, here.robax.rax_3], [now_there.robax.rax_1, now_there.robax.rax_2, now_there.robax.rax_3]);
+    MoveL p1, v100, fine, tool0 \\WObj:=wobj_stn1;
+    here := CJointT();
+    TPWrite \"planned \" \\Num:=Distance([here.robax.rax_1, here.robax.rax_2, here.robax.rax_3], [planned.robax.rax_1, planned.robax.rax_2, planned.robax.rax_3]);
+    back := CalcRobT(here, tool0 \\WObj:=wobj_stn1);
+    TPWrite \"back \" \\Pos:=back.trans;
+    MoveL home, v100, fine, tool0;
+    MoveL \\Conc, p1, v100, fine, tool0 \\WObj:=wobj_stn1;
+    now_there := CalcJointT(\\UseCurWObjPos, p1, tool0 \\WObj:=wobj_stn1);
+    TPWrite \"not moving?\";
+  ERROR
+    IF ERRNO = ERR_WOBJ_MOVING THEN
+      TPWrite \"moving\";
+      RETURN;
+    ENDIF
+  ENDPROC
+ENDMODULE
+";
+    fs::write(dir.join("main.mod"), module).expect("module");
+    let (stdout, stderr, code) = run(&dir);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(stdout, "standing 0\nplanned 0\nback [-100,0,200]\nmoving\n");
+}
+
 /// A two-axis positioner at (400, 0, 200): its tilt axis (eax_c) is mounted with its z
 /// axis along the world x axis, and carries the turntable (eax_d) mounted upright on it.
 const POSITIONER: &str = "\n[[unit]]\nname = \"STN2\"\nbase = [400, 0, 200]\n\

@@ -140,4 +140,5 @@ errors! {
     // Synchronized movement (MultiMove).
     SyncMoveOn = "ERR_SYNCMOVEON",
     SyncMoveOff = "ERR_SYNCMOVEOFF",
+    WobjMoving = "ERR_WOBJ_MOVING",
 }

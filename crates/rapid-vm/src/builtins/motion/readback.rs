@@ -67,6 +67,54 @@ fn read_frames(ctx: &Ctx<'_>, tool: Option<&Value>, wobj: Option<&Value>) -> Res
     }
 }
 
+/// The frames CalcJointT and CalcRobT compute with, for a target whose external axes
+/// are `extax`: on a track, the base where the target's track value puts it; a work
+/// object an external unit of this task carries, where the target's values put the
+/// unit (those it gives; `current`, CalcJointT's `\UseCurWObjPos`: where the unit is
+/// now); one another task's unit carries, where that unit is now. A unit that carries
+/// the work object from where it is now must stand: ERR_WOBJ_MOVING.
+// uncertain: that CalcJointT without \UseCurWObjPos takes the unit where the target's
+// extax has it, and that ERR_WOBJ_MOVING is raised only when the unit's current position
+// is used, are our reading of the function's arguments.
+fn target_frames(
+    ctx: &Ctx<'_>,
+    tool: Option<&Value>,
+    wobj: Option<&Value>,
+    extax: &[f64; 6],
+    current: bool,
+) -> Result<FrameChain, RapidError> {
+    use super::tracking::Carrier;
+    let mut chain = read_frames(ctx, tool, wobj)?;
+    let robot = &ctx.resources.robot;
+    chain.base = robot.track_base(extax);
+    let Some(wobj) = wobj.filter(|w| present(Some(w))) else { return Ok(chain) };
+    let now = ctx.time;
+    let moving = |at: &dyn Fn(f64) -> Option<rapid_motion::external::Eax>| at(now) != at(now + MOVING_PROBE);
+    match super::tracking::carrier_of(ctx, &ctx.value(wobj)?)? {
+        Some(Carrier::Unit(u)) if !current => {
+            let mover = super::tracking::unit_mover(robot, u)?;
+            let mut at = robot.eax_at(now).unwrap_or_default();
+            for (slot, value) in at.iter_mut().zip(extax) {
+                if !rapid_motion::external::is_unused(*value) {
+                    *slot = *value;
+                }
+            }
+            chain.uframe = mover.user_frame(&robot.following.conveyors, &at);
+        }
+        Some(Carrier::Unit(_)) if moving(&|t| robot.eax_at(t)) => return Err(wobj_moving(ctx)),
+        Some(Carrier::Foreign(f)) if moving(&|t| robot.foreign_eax_at(f, t)) => return Err(wobj_moving(ctx)),
+        _ => {}
+    }
+    Ok(chain)
+}
+
+/// How far ahead (s) a unit's axes are looked at to see whether it moves now.
+const MOVING_PROBE: f64 = 1e-3;
+
+fn wobj_moving(ctx: &Ctx<'_>) -> RapidError {
+    ctx.error(Err::WobjMoving, "the mechanical unit that carries the work object is moving")
+}
+
 /// A tool0-shaped value, to read a work object's frames with.
 fn tool0_like(ctx: &Ctx<'_>) -> Result<Value, RapidError> {
     let name = "tool0";
@@ -130,8 +178,7 @@ pub(crate) fn calc_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let target = ctx.value(&args[0])?;
     let joints = data::jointtarget(ctx, &target)?;
     let extax = data::target_extax(ctx, &target)?;
-    let mut chain = read_frames(ctx, args.get(1), args.get(2))?;
-    chain.base = ctx.resources.robot.track_base(&extax);
+    let chain = target_frames(ctx, args.get(1), args.get(2), &extax, false)?;
     let (pose, conf) = chain.robtarget_of(&ctx.resources.robot.kin, &joints);
     Ok(Some(super::frame::with_extax(&data::robtarget_value(ctx, &pose, conf)?, &extax)))
 }
@@ -147,8 +194,7 @@ pub(crate) fn calc_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let target = ctx.value(&args[1])?;
     let (pose, conf) = data::robtarget(ctx, &target)?;
     let extax = data::target_extax(ctx, &target)?;
-    let mut chain = read_frames(ctx, args.get(2), args.get(3))?;
-    chain.base = ctx.resources.robot.track_base(&extax);
+    let chain = target_frames(ctx, args.get(2), args.get(3), &extax, present(args.first()))?;
     let now = ctx.time;
     let seed = ctx.resources.robot.joints_at(now);
     let found = chain.joints_for(&ctx.resources.robot.kin, &pose, &conf, &seed, ConfMatch::Compliant);
