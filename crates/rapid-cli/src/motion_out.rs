@@ -282,6 +282,23 @@ pub(crate) fn write_outputs(out: &RunOutputs<'_>, args: &RunArgs) -> anyhow::Res
     Ok(())
 }
 
+/// The trace of another motion task's robot (MultiMove): `--trace`'s file with the
+/// task's name before its extension (`trace.T_ROB2.csv`); no report.
+pub(crate) fn write_task_trace(out: &RunOutputs<'_>, args: &RunArgs) -> anyhow::Result<()> {
+    let Some(path) = &args.trace else { return Ok(()) };
+    crate::trace::write(out.robot, &move_places(out), &task_trace_path(path, out.task), args.sample)
+}
+
+/// `path` with `task` before its extension: `trace.csv` → `trace.T_ROB2.csv`.
+fn task_trace_path(path: &std::path::Path, task: &str) -> std::path::PathBuf {
+    let stem = path.file_stem().map_or_else(Default::default, |s| s.to_string_lossy().into_owned());
+    let name = match path.extension() {
+        Some(ext) => format!("{stem}.{task}.{}", ext.to_string_lossy()),
+        None => format!("{stem}.{task}"),
+    };
+    path.with_file_name(name)
+}
+
 /// The program's name for the report: the first path's file or folder name.
 pub(crate) fn program_name(args: &RunArgs) -> String {
     let first = args.paths.first().and_then(|p| p.file_name());

@@ -190,3 +190,27 @@ fn a_backups_positioner_task_moves_no_robot() {
     lines.sort();
     assert_eq!(lines, ["T_ROB1 ROB_1 TRUE TRUE", "T_STN1  FALSE TRUE"]);
 }
+
+#[test]
+fn every_robot_of_a_multimove_system_gets_a_trace() {
+    // `--trace t.csv` traces T_ROB1's robot in t.csv and T_ROB2's in t.T_ROB2.csv. The
+    // right robot of examples/twin_robots starts with axis 5 at 90° (its TCP at the
+    // wrist centre (302, 0, 630) less tool0's 72 mm down: (302, 0, 558)), lifts the part
+    // 100 mm, carries it 100 mm along y and puts it down: it ends at (302, 100, 558).
+    // The two robots' traces end together (synchronized movement).
+    let dir = scratch("traces");
+    let trace = dir.join("t.csv");
+    let example = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/twin_robots");
+    let out =
+        rapid_in(&dir, &["run", "--quiet", "--trace", trace.to_str().expect("path"), example.to_str().expect("path")]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let last = |path: PathBuf| -> Vec<String> {
+        let text = fs::read_to_string(&path).unwrap_or_else(|_| panic!("no trace {}", path.display()));
+        text.lines().last().expect("rows").split(',').map(str::to_owned).collect()
+    };
+    let (left, right) = (last(trace.clone()), last(dir.join("t.T_ROB2.csv")));
+    assert_eq!(left[0], right[0], "the traces end together");
+    let at: Vec<f64> = right[7..10].iter().map(|f| f.parse().expect("number")).collect();
+    assert!((at[0] - 302.0).abs() < 0.01 && (at[1] - 100.0).abs() < 0.01 && (at[2] - 558.0).abs() < 0.01, "{right:?}");
+    assert!(right.last().is_some_and(|l| l.ends_with("right.mod:21")), "{right:?}");
+}

@@ -447,23 +447,33 @@ fn write_motion_outputs(
     cycle: f64,
     args: &RunArgs,
 ) -> anyhow::Result<()> {
-    // The first task's robot that was recorded (a positioner's task moves none).
-    let motion =
-        controller.tasks.iter_mut().position(|t| t.spec.robot && t.loaded.vm.resources_mut().robot.recorded.is_some());
-    let Some(at) = motion else { return Ok(()) };
-    let robot = std::mem::take(&mut controller.tasks[at].loaded.vm.resources_mut().robot);
-    let vm = &controller.tasks[at].loaded.vm;
-    let files: &[SourceInput] = tasks.get(at).map_or(&[], |t| &t.inputs.modules);
-    let sources = |file: usize| files.get(file).or_else(|| vm.program_source(file));
-    let outputs = crate::motion_out::RunOutputs {
-        robot: &robot,
-        sources: &sources,
-        io: controller.io_system(),
-        program: crate::motion_out::program_name(args),
-        task: &controller.tasks[at].spec.name,
-        cycle,
-    };
-    crate::motion_out::write_outputs(&outputs, args)
+    // The robots that were recorded (a positioner's task moves none): the first gets
+    // the trace and the report, the others a trace each.
+    let robots: Vec<usize> = (0..controller.tasks.len())
+        .filter(|&i| {
+            let task = &mut controller.tasks[i];
+            task.spec.robot && task.loaded.vm.resources_mut().robot.recorded.is_some()
+        })
+        .collect();
+    for (k, &at) in robots.iter().enumerate() {
+        let robot = std::mem::take(&mut controller.tasks[at].loaded.vm.resources_mut().robot);
+        let vm = &controller.tasks[at].loaded.vm;
+        let files: &[SourceInput] = tasks.get(at).map_or(&[], |t| &t.inputs.modules);
+        let sources = |file: usize| files.get(file).or_else(|| vm.program_source(file));
+        let outputs = crate::motion_out::RunOutputs {
+            robot: &robot,
+            sources: &sources,
+            io: controller.io_system(),
+            program: crate::motion_out::program_name(args),
+            task: &controller.tasks[at].spec.name,
+            cycle,
+        };
+        match k {
+            0 => crate::motion_out::write_outputs(&outputs, args)?,
+            _ => crate::motion_out::write_task_trace(&outputs, args)?,
+        }
+    }
+    Ok(())
 }
 
 /// The logs and saves asked for, after the run.
