@@ -274,7 +274,7 @@ pub(crate) fn write_outputs(out: &RunOutputs<'_>, args: &RunArgs) -> anyhow::Res
     }
     let places = move_places(out);
     if let Some(path) = &args.trace {
-        crate::trace::write(out.robot, &places, path, args.sample)?;
+        crate::trace::write(out.robot, &places, path, args.sample, true)?;
     }
     if let Some(path) = &args.report {
         crate::report::write(path, out, &places)?;
@@ -282,11 +282,12 @@ pub(crate) fn write_outputs(out: &RunOutputs<'_>, args: &RunArgs) -> anyhow::Res
     Ok(())
 }
 
-/// The trace of another motion task's robot (MultiMove): `--trace`'s file with the
-/// task's name before its extension (`trace.T_ROB2.csv`); no report.
-pub(crate) fn write_task_trace(out: &RunOutputs<'_>, args: &RunArgs) -> anyhow::Result<()> {
+/// The trace of another motion task (MultiMove): `--trace`'s file with the task's name
+/// before its extension (`trace.T_ROB2.csv`); no report. A positioner's task (no `arm`)
+/// has its external axes' columns only.
+pub(crate) fn write_task_trace(out: &RunOutputs<'_>, args: &RunArgs, arm: bool) -> anyhow::Result<()> {
     let Some(path) = &args.trace else { return Ok(()) };
-    crate::trace::write(out.robot, &move_places(out), &task_trace_path(path, out.task), args.sample)
+    crate::trace::write(out.robot, &move_places(out), &task_trace_path(path, out.task), args.sample, arm)
 }
 
 /// `path` with `task` before its extension: `trace.csv` → `trace.T_ROB2.csv`.

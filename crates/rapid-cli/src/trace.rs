@@ -33,6 +33,9 @@ struct Style {
     empty: String,
     /// The external axes' columns: (extjoint index, name).
     ext: Vec<(usize, String)>,
+    /// The arm's columns are written (a positioner's task has no arm: time, its axes
+    /// and the line only).
+    arm: bool,
     step: f64,
 }
 
@@ -48,15 +51,23 @@ struct Piece<'a> {
     eax: [f64; 6],
 }
 
-/// Writes the trajectory sampled every `sample_ms` to `path`.
-pub(crate) fn write(robot: &RobotState, places: &[String], path: &Path, sample_ms: f64) -> anyhow::Result<()> {
+/// Writes the trajectory sampled every `sample_ms` to `path`; without the `arm`'s
+/// columns for a task that moves external units only.
+pub(crate) fn write(
+    robot: &RobotState,
+    places: &[String],
+    path: &Path,
+    sample_ms: f64,
+    arm: bool,
+) -> anyhow::Result<()> {
     if !(sample_ms.is_finite() && sample_ms >= 0.1) {
         anyhow::bail!("--sample must be at least 0.1 ms");
     }
     let json = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"));
     let ext = external_columns(robot);
-    let columns = trace_columns(&ext);
-    let head = if json { json_head(robot, sample_ms, &columns) } else { columns.join(",") + "\n" };
+    let columns = trace_columns(&ext, arm);
+    let traced = if arm { robot.model.name } else { "none" };
+    let head = if json { json_head(traced, sample_ms, &columns) } else { columns.join(",") + "\n" };
     let style = Style {
         json,
         // Milliseconds while the period is whole milliseconds, else tenths of them.
@@ -64,6 +75,7 @@ pub(crate) fn write(robot: &RobotState, places: &[String], path: &Path, sample_m
         places: places.iter().map(|p| if json { json_string(p) } else { csv_field(p) }).collect(),
         empty: if json { "\"\"".to_string() } else { String::new() },
         ext,
+        arm,
         step: sample_ms / 1000.0,
     };
     let pieces = cut(robot, style.step);
@@ -152,7 +164,9 @@ fn push_row(out: &mut Vec<u8>, style: &Style, point: &Point, eax: &[f64; 6], row
     if json {
         out.extend_from_slice(if row == 0 { b"\n[" } else { b",\n[" });
     }
-    for (value, decimals) in row_numbers(point, style.time_decimals) {
+    let numbers = row_numbers(point, style.time_decimals);
+    let shown = if style.arm { &numbers[..] } else { &numbers[..1] };
+    for &(value, decimals) in shown {
         push_number(out, value, decimals, json);
         out.push(b',');
     }
@@ -276,9 +290,11 @@ fn external_columns(robot: &RobotState) -> Vec<(usize, String)> {
     axes
 }
 
-/// The trace's columns: [`TRACE_COLUMNS`] with the external axes before `line`.
-fn trace_columns(ext: &[(usize, String)]) -> Vec<String> {
+/// The trace's columns: [`TRACE_COLUMNS`] with the external axes before `line`; of the
+/// arm's only `time` without it.
+fn trace_columns(ext: &[(usize, String)], arm: bool) -> Vec<String> {
     let (line, numbers) = TRACE_COLUMNS.split_last().expect("the columns end in line");
+    let numbers = if arm { numbers } else { &numbers[..1] };
     numbers
         .iter()
         .map(|c| c.to_string())
@@ -288,11 +304,11 @@ fn trace_columns(ext: &[(usize, String)]) -> Vec<String> {
 }
 
 /// The JSON trace up to its first row: what was traced, and the columns.
-fn json_head(robot: &RobotState, sample_ms: f64, columns: &[String]) -> String {
+fn json_head(robot: &str, sample_ms: f64, columns: &[String]) -> String {
     let columns: Vec<String> = columns.iter().map(|c| json_string(c)).collect();
     format!(
         "{{\"robot\":{},\"sample_ms\":{},\"columns\":[{}],\"rows\":[",
-        json_string(robot.model.name),
+        json_string(robot),
         serde_json::Number::from_f64(sample_ms).map_or("4".into(), |n| n.to_string()),
         columns.join(",")
     )

@@ -187,6 +187,14 @@ fn a_robot_follows_another_tasks_table_in_synchronized_movement() {
     let mid = rows.iter().find(|r| r[0] >= rows[0][0] + 0.325 - 1e-9).expect("mid row");
     assert!((mid[7] - 370.71).abs() < 0.5 && (mid[8] - 70.71).abs() < 0.5, "{mid:?}");
     assert!((mid[9] - 275.0).abs() < 0.2, "{mid:?}");
+    // T_STN1's own trace (trace.T_STN1.csv) has the table's axis only: at that row's
+    // time it is at 45° (within the 0.18° a millisecond turns it).
+    let table = fs::read_to_string(dir.join("trace.T_STN1.csv")).expect("the positioner's trace");
+    assert_eq!(table.lines().next(), Some("time,eax_a,line"));
+    let time = format!("{:.3},", mid[0]);
+    let row = table.lines().find(|l| l.starts_with(&time)).expect("the table's row at that time");
+    let angle: f64 = row.split(',').nth(1).expect("eax_a").parse().expect("number");
+    assert!((angle - 45.0).abs() < 0.2, "{row}");
 }
 
 #[test]

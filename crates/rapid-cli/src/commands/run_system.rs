@@ -447,15 +447,17 @@ fn write_motion_outputs(
     cycle: f64,
     args: &RunArgs,
 ) -> anyhow::Result<()> {
-    // The robots that were recorded (a positioner's task moves none): the first gets
-    // the trace and the report, the others a trace each.
-    let robots: Vec<usize> = (0..controller.tasks.len())
-        .filter(|&i| {
-            let task = &mut controller.tasks[i];
-            task.spec.robot && task.loaded.vm.resources_mut().robot.recorded.is_some()
-        })
+    // The motion tasks that were recorded: the first with a robot gets the trace and
+    // the report, the others a trace each (a positioner's task, its axes only).
+    let mut recorded: Vec<usize> = (0..controller.tasks.len())
+        .filter(|&i| controller.tasks[i].loaded.vm.resources_mut().robot.recorded.is_some())
         .collect();
-    for (k, &at) in robots.iter().enumerate() {
+    if let Some(first) = recorded.iter().position(|&i| controller.tasks[i].spec.robot) {
+        let primary = recorded.remove(first);
+        recorded.insert(0, primary);
+    }
+    for (k, &at) in recorded.iter().enumerate() {
+        let arm = controller.tasks[at].spec.robot;
         let robot = std::mem::take(&mut controller.tasks[at].loaded.vm.resources_mut().robot);
         let vm = &controller.tasks[at].loaded.vm;
         let files: &[SourceInput] = tasks.get(at).map_or(&[], |t| &t.inputs.modules);
@@ -468,9 +470,9 @@ fn write_motion_outputs(
             task: &controller.tasks[at].spec.name,
             cycle,
         };
-        match k {
-            0 => crate::motion_out::write_outputs(&outputs, args)?,
-            _ => crate::motion_out::write_task_trace(&outputs, args)?,
+        match (k, arm) {
+            (0, true) => crate::motion_out::write_outputs(&outputs, args)?,
+            _ => crate::motion_out::write_task_trace(&outputs, args, arm)?,
         }
     }
     Ok(())
