@@ -288,7 +288,10 @@ pub(super) fn follows(ctx: &Ctx<'_>, f: usize) -> Result<bool, RapidError> {
     if synchronized_with(ctx, &unit.owner) {
         return Ok(true);
     }
-    if path.moves_after(ctx.time, &unit.axes) {
+    // The move starts once the robot's moves given before it are under way, at the
+    // earliest (the program runs ahead of the robot).
+    let start = ctx.resources.robot.planner.time().max(ctx.time);
+    if path.moves_after(start, &unit.axes) {
         return Err(RapidError::fatal(format!(
             "the work object's unit {} (task {}) moves: outside synchronized movement with that task (SyncMoveOn) a \
              robot works in the object only while the unit stands (semi-coordinated movement: synchronize the tasks \
@@ -306,9 +309,11 @@ pub(super) fn check_unit_move(ctx: &Ctx<'_>, from: &Eax, to: &Eax) -> Result<(),
     let external = &ctx.resources.robot.external;
     let Some(path) = &external.publication else { return Ok(()) };
     let path = path.read();
+    // The move starts once this task's moves given before it are under way, at the earliest.
+    let start = ctx.resources.robot.planner.time().max(ctx.time);
     for state in &external.units {
         let moves = state.unit.axes.iter().any(|a| (to[a.index()] - from[a.index()]).abs() > SAME_POSITION);
-        let Some(busy) = path.busy_after(&state.unit.name, ctx.time).filter(|_| moves) else { continue };
+        let Some(busy) = path.busy_after(&state.unit.name, start).filter(|_| moves) else { continue };
         if synchronized_with(ctx, &busy.task) {
             continue;
         }
