@@ -254,3 +254,22 @@ fn wait_sync_task_in_pos_lets_the_table_turn_after_a_fly_by_point() {
         }
     }
 }
+
+#[test]
+fn a_table_stopped_by_stop_move_is_seen_standing() {
+    // T_STN1 turns the table 90° and stops its path from 0.3 s to 0.8 s (StopMove,
+    // StartMove). At 0.5 s the table stands, so CalcJointT \UseCurWObjPos in T_ROB1
+    // computes; at 1.0 s it turns again (the rest of the turn, 0.35 s, from 0.8 s):
+    // ERR_WOBJ_MOVING.
+    let rob = "    WaitTime 0.5;\n    Check;\n    WaitTime 0.5;\n    Check;\n  ENDPROC\n  PROC Check()\n    \
+               VAR jointtarget jt;\n    jt := CalcJointT(\\UseCurWObjPos, p, tool0 \\WObj:=wobj_stn);\n    \
+               TPWrite \"standing\";\n  ERROR\n    IF ERRNO = ERR_WOBJ_MOVING THEN\n      TPWrite \"moving\";\n      \
+               RETURN;\n    ENDIF\n";
+    let stn = format!(
+        "    VAR intnum stop;\n    CONNECT stop WITH Hold;\n    ITimer \\Single, 0.3, stop;\n    {TURN}, v1000, fine;\n  \
+         ENDPROC\n  TRAP Hold\n    StopMove;\n    WaitTime 0.5;\n    StartMove;\n  ENDTRAP\n  PROC Unused()\n"
+    );
+    let (stdout, stderr, code) = run(&project("paused_table", rob, &stn));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(stdout, "standing\nmoving\n");
+}

@@ -193,7 +193,10 @@ impl Vm {
             return;
         }
         let Some(top) = self.frames.last() else { return };
-        let at_statement = top.code.stmt_at(top.pc).is_some_and(|s| s.start == top.pc);
+        // Between instructions: at a statement's start, or at the routine's end, where a
+        // last move's wait for the robot is held (its traps run there too).
+        let at_statement = top.code.stmt_at(top.pc).is_some_and(|s| s.start == top.pc)
+            || matches!(top.code.instrs.get(top.pc as usize), Some(crate::ir::Instr::FellOffEnd));
         if !at_statement || top.undoing || self.exiting {
             return;
         }

@@ -733,6 +733,8 @@ impl Vm {
         if !self.resources.robot.corner_failures.is_empty() {
             self.log_corner_failures();
         }
+        // Another task reading this task's external axes sees its path stop and go on.
+        self.resources.robot.publish_pause();
         let res = res?;
         if reset {
             if let Some(frame) = self.frames.last_mut() {

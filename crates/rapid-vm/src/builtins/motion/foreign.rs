@@ -46,6 +46,9 @@ pub struct UnitPath {
     end: Eax,
     /// The axes in independent mode: their own motion is not published.
     independent: [bool; 6],
+    /// The task's path stands since then (StopMove) until it goes on (StartMove, which
+    /// publishes the rest of the path later).
+    paused_since: Option<f64>,
     /// The tasks whose robots work in the work object of a unit.
     busy: Vec<Busy>,
 }
@@ -69,11 +72,20 @@ impl Busy {
 
 impl UnitPath {
     fn new(start: Eax) -> UnitPath {
-        UnitPath { start, moves: Vec::new(), provisional: None, end: start, independent: [false; 6], busy: Vec::new() }
+        UnitPath {
+            start,
+            moves: Vec::new(),
+            provisional: None,
+            end: start,
+            independent: [false; 6],
+            paused_since: None,
+            busy: Vec::new(),
+        }
     }
 
     /// Where the axes are at time `t`.
     pub fn eax_at(&self, t: f64) -> Eax {
+        let t = self.paused_since.map_or(t, |since| t.min(since));
         if let Some(waiting) = self.provisional.as_ref().filter(|p| t >= p.start) {
             return waiting.eax_at(t).unwrap_or(self.end);
         }
@@ -222,6 +234,16 @@ impl super::robot::RobotState {
             p.end = end;
             p.independent = independent;
         });
+    }
+
+    /// Publishes whether the path stands (StopMove); after every built-in, so that every
+    /// way to stop or go on is seen.
+    pub fn publish_pause(&self) {
+        let Some(path) = &self.external.publication else { return };
+        let since = self.pause.as_ref().map(|p| p.since);
+        if path.read().paused_since != since {
+            path.write(|p| p.paused_since = since);
+        }
     }
 
     /// Publishes the whole path again after it changed in the past (a stop, a pause).
