@@ -273,3 +273,16 @@ fn a_table_stopped_by_stop_move_is_seen_standing() {
     assert_eq!(code, Some(0), "{stderr}");
     assert_eq!(stdout, "standing\nmoving\n");
 }
+
+#[test]
+fn another_tasks_unit_is_named_with_its_task() {
+    // ActUnit, DeactUnit, IsMechUnitActive … on T_STN1's unit from T_ROB1 are not
+    // supported yet: the message says whose unit it is (it was "not in the system").
+    let rob = "    TPWrite \"active \" \\Bool:=IsMechUnitActive(STN1);\n";
+    let (_, stderr, code) = run(&project("other_tasks_unit", rob, "    WaitTime 0.1;\n"));
+    assert_eq!(code, Some(1), "{stderr}");
+    assert!(
+        stderr.contains("STN1 is a mechanical unit of task T_STN1: using it from another task is not supported yet"),
+        "{stderr}"
+    );
+}

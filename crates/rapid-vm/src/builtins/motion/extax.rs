@@ -29,6 +29,8 @@ pub struct ExternalUnits {
     pub publication: Option<super::foreign::SharedPath>,
     /// The units of other motion tasks that carry work objects.
     pub foreign: Vec<super::foreign::ForeignUnit>,
+    /// Every unit of another motion task, with its task: (unit, task).
+    pub others: Vec<(String, String)>,
 }
 
 impl ExternalUnits {

@@ -172,6 +172,14 @@ pub struct LinkedTask<'a> {
 /// Lets every motion task work in the work objects the other tasks' units carry: each
 /// task with such a unit publishes its external axes' motion, and the others read it.
 pub fn link(tasks: &mut [LinkedTask<'_>]) {
+    let names: Vec<(String, String)> = tasks
+        .iter()
+        .flat_map(|t| t.robot.external.units.iter().map(|u| (u.unit.name.clone(), t.name.to_owned())))
+        .collect();
+    for task in tasks.iter_mut() {
+        let others = names.iter().filter(|(_, owner)| !owner.eq_ignore_ascii_case(task.name));
+        task.robot.external.others = others.cloned().collect();
+    }
     let mut offered = Vec::new();
     for task in tasks.iter_mut() {
         let external = &mut task.robot.external;

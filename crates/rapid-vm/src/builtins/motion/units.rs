@@ -75,6 +75,12 @@ pub(super) fn unit_arg(ctx: &Ctx<'_>, args: &[Value], param: usize) -> Result<us
         if let Some(i) = ctx.resources.robot.external.find(&name) {
             return Ok(EXTERNAL_BASE + i);
         }
+        let others = &ctx.resources.robot.external.others;
+        if let Some((unit, owner)) = others.iter().find(|(unit, _)| unit.eq_ignore_ascii_case(&name)) {
+            return Err(RapidError::fatal(format!(
+                "{unit} is a mechanical unit of task {owner}: using it from another task is not supported yet"
+            )));
+        }
     }
     let handle = match args.get(param).map(|a| ctx.value(a)).transpose()? {
         Some(Value::Opaque(opaque)) => match opaque.state {
