@@ -345,3 +345,25 @@ fn a_corner_where_the_tcp_stands_says_what_it_blended() {
     assert!(table_row(&page, 2).contains(&"z 50 mm (orientation corner)".to_string()), "{:?}", table_row(&page, 2));
     assert!(table_row(&page, 3).contains(&"fine".to_string()), "{:?}", table_row(&page, 3));
 }
+
+#[test]
+fn a_point_on_a_turning_table_is_drawn_where_the_robot_reaches_it() {
+    // examples/turntable: the seam's end is (-100, 0, 200) on the table with the table
+    // turned 180° about its axis through (400, 0): (500, 0, 400) in the world, where the
+    // robot reaches it. Its marker is there, not where the point was when the move was
+    // planned (the table at 0°: (300, 0, 400)).
+    let dir = scratch("turntable");
+    let page = dir.join("report.html");
+    let out = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .current_dir(root())
+        .args(["run", "--quiet", "--report", path_str(&page), "examples/turntable"])
+        .output()
+        .expect("run rapid");
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let page = std::fs::read_to_string(&page).expect("the report");
+    let points: Vec<&str> =
+        page.match_indices("\"p\":[").map(|(i, _)| &page[i + 5..i + 5 + page[i + 5..].find(']').expect("]")]).collect();
+    // MoveJ pHome, MoveL pSeam, MoveL pSeamEnd, MoveL pHome, MoveExtJ.
+    assert_eq!(points.len(), 5, "{points:?}");
+    assert_eq!(points[2], "500.0,0.0,400.0", "{points:?}");
+}

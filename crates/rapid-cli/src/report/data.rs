@@ -3,7 +3,7 @@
 //! the signal changes, serialised to JSON inside the page.
 
 use rapid_motion::plan::PlannedMove;
-use rapid_vm::builtins::motion::robot::MoveFacts;
+use rapid_vm::builtins::motion::robot::{MoveFacts, RobotState};
 use serde::Serialize;
 
 use crate::motion_out::{FactsCursor, RunOutputs};
@@ -139,14 +139,16 @@ pub(super) fn collect(out: &RunOutputs<'_>) -> Data {
         base,
         path,
         ext,
-        moves: facts.iter().take(MAX_MOVES).map(move_view).collect(),
+        moves: facts.iter().take(MAX_MOVES).map(|f| move_view(robot, f)).collect(),
         signals,
         changes_cut,
     }
 }
 
-fn move_view(f: &MoveFacts) -> MoveView {
-    let p = f.point.translation.vector;
+/// A move as the page shows it: its point where the robot passes it (a point on a
+/// moving work object, where the object has taken it by then).
+fn move_view(robot: &RobotState, f: &MoveFacts) -> MoveView {
+    let p = robot.point_passed(f).translation.vector;
     MoveView {
         p: [round(p.x, 2), round(p.y, 2), round(p.z, 2)],
         zone: round(f.zone_used, 2),

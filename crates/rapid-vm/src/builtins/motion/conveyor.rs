@@ -433,6 +433,18 @@ impl super::robot::RobotState {
         self.carried_world(t, planned.start, |at| planned.eax_at(at), false)
     }
 
+    /// Where the programmed point of a recorded move is when the robot passes it: a
+    /// point in a work object that moves (a conveyor's, a unit's) is carried there by
+    /// the object's travel since the move's frames were frozen.
+    pub fn point_passed(&self, facts: &super::robot::MoveFacts) -> Pose {
+        let moves = self.recorded.as_deref().unwrap_or(&[]);
+        let Some(on) = moves.iter().rev().find(|m| m.start <= facts.passed) else { return facts.point };
+        match self.carried_world(facts.passed, facts.start, |at| on.eax_at(at), false) {
+            Some(carry) => carry * facts.point,
+            None => facts.point,
+        }
+    }
+
     /// A sample carried by the work object the robot followed (unchanged when it
     /// followed none).
     pub(super) fn carried_sample(&self, planned: &rapid_motion::plan::PlannedMove, mut sample: Sample) -> Sample {

@@ -695,6 +695,7 @@ pub(super) fn note_facts(ctx: &mut Ctx<'_>, request: &MoveRequest, chain: &rapid
         frames: *chain,
         start: 0.0,
         end: 0.0,
+        passed: 0.0,
         zone_used: 0.0,
         corner_path_failure: false,
         corner: None,

@@ -84,6 +84,9 @@ pub struct MoveFacts {
     /// its fly-by point became a stop point.
     pub start: f64,
     pub end: f64,
+    /// When the robot passes the point: the middle of its corner path, or when it
+    /// stands at a stop point.
+    pub passed: f64,
     pub zone_used: f64,
     pub corner_path_failure: bool,
     /// What its corner path blended, when it flew by its point.
@@ -103,6 +106,7 @@ impl MoveFacts {
             frames: FrameChain::default(),
             start: 0.0,
             end: 0.0,
+            passed: 0.0,
             zone_used: 0.0,
             corner_path_failure: false,
             corner: None,
@@ -417,6 +421,7 @@ impl RobotState {
             };
             facts.start = planned.start;
             facts.end = planned.end;
+            facts.passed = planned.zone_entry + planned.corner_time / 2.0;
             facts.zone_used = planned.zone;
             facts.corner_path_failure = planned.corner_path_failure;
             facts.corner = planned.corner_kind();
@@ -638,6 +643,9 @@ impl RobotState {
             }
             if facts.end > since {
                 facts.end += dt;
+            }
+            if facts.passed > since {
+                facts.passed += dt;
             }
         }
         self.planner.delay_from(since, dt);
