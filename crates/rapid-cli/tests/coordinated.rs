@@ -241,13 +241,15 @@ fn wait_sync_task_in_pos_lets_the_table_turn_after_a_fly_by_point() {
         let rob = format!(
             "    MoveJ p, v1000, fine, tool0 \\WObj:=wobj_stn;\n    ClkStart c;\n    \
              MoveL p_low, v100, z10, tool0 \\WObj:=wobj_stn;\n    WaitSyncTask {in_pos}turn, all;\n    \
-             TPWrite \"met \" \\Num:=ClkRead(c);\n    WaitSyncTask turned, all;\n{SHOW}"
+             TPWrite \"met \" \\Num:=ClkRead(c);\n    WaitSyncTask turned, all;\n{SHOW}    \
+             r := CRobT(\\Tool:=tool0);\n    TPWrite \"active \" \\Pos:=r.trans;\n"
         );
         let stn = format!("    WaitSyncTask turn, all;\n    {TURN}, v1000, fine;\n    WaitSyncTask turned, all;\n");
         let (stdout, stderr, code) = run(&project(&format!("in_pos_{ok}"), &rob, &stn));
         if ok {
             assert_eq!(code, Some(0), "{stderr}");
-            assert_eq!(stdout, "met 0.51\nworld [400,0,250]\nobject [0,-100,50]\n");
+            // CRobT without \\WObj reads in the active work object, where the table has it.
+            assert_eq!(stdout, "met 0.51\nworld [400,0,250]\nobject [0,-100,50]\nactive [0,-100,50]\n");
         } else {
             assert_eq!(code, Some(1), "{stderr}");
             assert!(stderr.contains("unit STN1 would move while the robot of task T_ROB1 moves"), "{stderr}");

@@ -293,6 +293,7 @@ pub(super) fn go_with(
     robot.next_external = external;
     // `\Corr`: the path follows the corrections of the connected generators.
     robot.corr.next = layout.corr.is_some_and(|c| present(args.get(c)));
+    let foreign = robot.next_foreign;
     let mut resume = robot.push(now, &request, conc, events).map_err(motion_error)?;
     if let Some(err) = robot.corr.violation.take() {
         return Err(motion_error(err));
@@ -303,6 +304,7 @@ pub(super) fn go_with(
         resume = (resume - stop.time).max(now);
     }
     robot.active = chain;
+    robot.active_foreign = foreign;
     apply_due_events(ctx)?;
     if ctx.resources.robot.zone_violation.take().is_some() {
         // uncertain: RobotWare's event number for a WZLimSup stop is not in our notes.

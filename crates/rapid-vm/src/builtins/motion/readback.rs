@@ -57,7 +57,17 @@ fn read_frames(ctx: &Ctx<'_>, tool: Option<&Value>, wobj: Option<&Value>) -> Res
             let uframe = super::tracking::active_uframe_at(&ctx.resources.robot, ctx.time);
             Ok(FrameChain { pdisp, base, uframe, ..active })
         }
-        (Some(tool), wobj) => data::chain(ctx, &tool, wobj.as_ref(), pdisp),
+        (Some(tool), Some(wobj)) => data::chain(ctx, &tool, Some(&wobj), pdisp),
+        (Some(tool), None) => {
+            // The active work object, where it is now (CRobT and CPos; CalcRobT and
+            // CalcJointT take wobj0 for an omitted \WObj: `target_frames`).
+            let mut chain = data::chain(ctx, &tool, None, pdisp)?;
+            let uframe = super::tracking::active_uframe_at(&ctx.resources.robot, ctx.time);
+            chain.uframe = uframe;
+            chain.oframe = active.oframe;
+            chain.stationary_tool = active.stationary_tool;
+            Ok(chain)
+        }
         (None, Some(wobj)) => {
             // uncertain: \WObj without \Tool reads with the active tool.
             let mut chain = data::chain(ctx, &tool0_like(ctx)?, Some(&wobj), pdisp)?;
@@ -84,10 +94,15 @@ fn target_frames(
     current: bool,
 ) -> Result<FrameChain, RapidError> {
     use super::tracking::Carrier;
-    let mut chain = read_frames(ctx, tool, wobj)?;
+    let given = wobj.filter(|w| present(Some(w)));
+    let mut chain = match (tool.filter(|t| present(Some(t))), given) {
+        // An omitted \WObj is wobj0 here (CRobT and CPos take the active one).
+        (Some(tool), None) => data::chain(ctx, &ctx.value(tool)?, None, ctx.resources.motion.settings.pdisp)?,
+        _ => read_frames(ctx, tool, wobj)?,
+    };
     let robot = &ctx.resources.robot;
     chain.base = robot.track_base(extax);
-    let Some(wobj) = wobj.filter(|w| present(Some(w))) else { return Ok(chain) };
+    let Some(wobj) = given else { return Ok(chain) };
     let now = ctx.time;
     let moving = |at: &dyn Fn(f64) -> Option<rapid_motion::external::Eax>| at(now) != at(now + MOVING_PROBE);
     match super::tracking::carrier_of(ctx, &ctx.value(wobj)?)? {

@@ -203,6 +203,8 @@ pub struct RobotState {
     /// The next move given is in the work object of this unit of another task (set by
     /// the move instruction just before [`RobotState::push`]).
     pub(super) next_foreign: Option<usize>,
+    /// The active work object rides this unit of another task (its frame follows it).
+    pub(super) active_foreign: Option<usize>,
 }
 
 impl Default for RobotState {
@@ -253,6 +255,7 @@ impl RobotState {
             following: Default::default(),
             next_external: None,
             next_foreign: None,
+            active_foreign: None,
         }
     }
 

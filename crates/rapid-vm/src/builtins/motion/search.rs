@@ -182,11 +182,13 @@ fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32), places: &Places) -
     robot.next_external = external;
     // `\Corr`: the path follows the corrections of the connected generators.
     robot.corr.next = present(args.get(places.corr));
+    let foreign = robot.next_foreign;
     let end = robot.push(now, &request, false, Vec::new()).map_err(super::moves::motion_error)?;
     if let Some(err) = robot.corr.violation.take() {
         return Err(super::moves::motion_error(err));
     }
     robot.active = chain;
+    robot.active_foreign = foreign;
     Ok(Search { at, end, seen, last: level, hits: 0 })
 }
 

@@ -264,7 +264,12 @@ pub(super) fn planning_frame(ctx: &Ctx<'_>, carrier: Carrier) -> Option<rapid_mo
 /// object is at `t`.
 pub(super) fn active_uframe_at(robot: &super::robot::RobotState, t: f64) -> rapid_motion::Pose {
     let uframe = robot.active.uframe;
-    let Some(span) = robot.following.open() else { return uframe };
+    let Some(span) = robot.following.open() else {
+        // A work object another task's unit carries is where that unit has it now.
+        let foreign = robot.active_foreign.and_then(|f| Some((robot.external.foreign.get(f)?, f)));
+        return foreign
+            .map_or(uframe, |(unit, f)| unit.chain.frame_at(&robot.foreign_eax_at(f, t).unwrap_or_default()));
+    };
     let at = robot.mover_at(&span.mover, t, |t| robot.eax_at(t)).unwrap_or(span.at_ref);
     span.mover.carry(&robot.following.conveyors, &span.at_ref, &at) * uframe
 }
