@@ -288,3 +288,43 @@ fn another_tasks_unit_is_named_with_its_task() {
         "{stderr}"
     );
 }
+
+#[test]
+fn two_robots_follow_one_table_in_synchronized_movement() {
+    // Two robots work on opposite sides of the table while it turns 30° (SyncMoveOn of
+    // all three tasks). T_ROB2 stands at (600, 0, 0) turned 180°. Each goes 30 mm down
+    // in the object: T_ROB1 to (100, 0, 70) on the table, (100, 0, 270) above its origin,
+    // turned 30°: (386.603, 50, 270); T_ROB2 to (-100, 0, 70): (213.397, -50, 270).
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("coordinated").join("two_robots");
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("scratch folder");
+    let (_, units) = MANIFEST.split_once("[[unit]]").expect("units");
+    let manifest = format!(
+        "[[task]]\nname = \"T_ROB1\"\nmodules = [\"rob1.mod\"]\n\n[[task]]\nname = \"T_ROB2\"\ntype = \"NORMAL\"\n\
+         motion = true\nbase = [600, 0, 0]\norientation = [0, 0, 0, 1]\nmodules = [\"rob2.mod\"]\n\n[[task]]\n\
+         name = \"T_STN1\"\ntype = \"NORMAL\"\nmotion = true\nrobot = false\nmodules = [\"stn.mod\"]\n\n[[unit]]{units}"
+    );
+    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    let list =
+        "  PERS tasks all{3} := [[\"T_ROB1\"],[\"T_ROB2\"],[\"T_STN1\"]];\n  VAR syncident on;\n  VAR syncident off;\n";
+    for (n, x) in [(1, 100), (2, -100)] {
+        let module = format!(
+            "MODULE rob{n}\n{list}  PERS wobjdata wobj_stn := [FALSE, FALSE, \"STN1\", [[0,0,0],[1,0,0,0]], \
+             [[0,0,200],[1,0,0,0]]];\n  CONST robtarget p := [[{x},0,100],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n  \
+             PROC main()\n    ConfL \\Off;\n    ConfJ \\Off;\n    MoveJ p, v1000, fine, tool0 \\WObj:=wobj_stn;\n    \
+             SyncMoveOn on, all;\n    MoveL Offs(p,0,0,-30) \\ID:=10, v100, fine, tool0 \\WObj:=wobj_stn;\n    \
+             SyncMoveOff off;\n    TPWrite GetTaskName() + \" \" \\Pos:=CPos(\\Tool:=tool0 \\WObj:=wobj0);\n  ENDPROC\nENDMODULE\n"
+        );
+        fs::write(dir.join(format!("rob{n}.mod")), module).expect("module");
+    }
+    let stn = format!(
+        "MODULE stn\n{list}  PROC main()\n    SyncMoveOn on, all;\n    \
+         MoveExtJ [[0,0,0,0,0,0],[30,9E9,9E9,9E9,9E9,9E9]] \\ID:=10, v1000, fine;\n    SyncMoveOff off;\n  ENDPROC\nENDMODULE\n"
+    );
+    fs::write(dir.join("stn.mod"), stn).expect("module");
+    let (stdout, stderr, code) = run(&dir);
+    assert_eq!(code, Some(0), "{stderr}");
+    let mut lines: Vec<&str> = stdout.lines().collect();
+    lines.sort_unstable();
+    assert_eq!(lines, ["T_ROB1 [386.603,50,270]", "T_ROB2 [213.397,-50,270]"]);
+}
