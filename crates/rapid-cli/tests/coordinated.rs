@@ -201,7 +201,8 @@ fn a_robot_follows_another_tasks_table_in_synchronized_movement() {
 fn a_positioners_task_moves_its_axes_and_no_robot() {
     // T_STN1 comes first in the manifest and moves no robot: T_ROB1's robot is ROB_1.
     // TaskRunRob is FALSE there, TaskRunMec TRUE; MoveAbsJ moves the table (90° in
-    // 0.65 s + 0.05 s settle) and not the robot axes it names; a MoveL stops execution.
+    // 0.65 s + 0.05 s settle) and not the robot axes it names; CJointT reads no robot
+    // axes (9E9, as axes the system lacks); a MoveL stops execution.
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("coordinated").join("positioner_task");
     let _ = fs::remove_dir_all(&dir);
     fs::create_dir_all(&dir).expect("scratch folder");
@@ -216,6 +217,7 @@ fn a_positioners_task_moves_its_axes_and_no_robot() {
         "MODULE stn\n  VAR clock c;\n  VAR jointtarget jt;\n  PROC main()\n{show}    ClkStart c;\n    \
          MoveAbsJ [[10,20,30,0,0,0],[90,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    jt := CJointT();\n    \
          TPWrite \"stn \" \\Num:=ClkRead(c);\n    TPWrite \"table \" \\Num:=jt.extax.eax_a;\n    \
+         TPWrite \"robax \" \\Bool:=jt.robax.rax_1 = 9E9;\n    \
          MoveL [[400,0,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v100, fine, tool0;\n  ENDPROC\nENDMODULE\n"
     );
     fs::write(dir.join("stn.mod"), stn).expect("module");
@@ -225,8 +227,8 @@ fn a_positioners_task_moves_its_axes_and_no_robot() {
     assert_eq!(code, Some(1), "{stderr}");
     let mut lines: Vec<&str> = stdout.lines().collect();
     lines.sort_unstable();
-    assert_eq!(lines, ["T_ROB1 ROB_1 TRUE TRUE", "T_STN1  FALSE TRUE", "stn 0.7", "table 90"]);
-    assert!(stderr.contains("task T_STN1 moves no robot") && stderr.contains("stn.mod:11"), "{stderr}");
+    assert_eq!(lines, ["T_ROB1 ROB_1 TRUE TRUE", "T_STN1  FALSE TRUE", "robax TRUE", "stn 0.7", "table 90"]);
+    assert!(stderr.contains("task T_STN1 moves no robot") && stderr.contains("stn.mod:12"), "{stderr}");
 }
 
 #[test]
@@ -327,4 +329,20 @@ fn two_robots_follow_one_table_in_synchronized_movement() {
     let mut lines: Vec<&str> = stdout.lines().collect();
     lines.sort_unstable();
     assert_eq!(lines, ["T_ROB1 [386.603,50,270]", "T_ROB2 [213.397,-50,270]"]);
+}
+
+#[test]
+fn a_positioners_task_has_no_tcp_to_read() {
+    // CRobT in T_STN1 (no robot) stops execution; CPos as well (its line 9 and 10 in two
+    // runs); from T_ROB1, CJointT of T_STN1 reads its table and no robot axes.
+    for (call, line) in [("VAR robtarget r;\n    r := CRobT(\\Tool:=tool0);", 10), ("TPWrite \"\" \\Pos:=CPos();", 9)] {
+        let stn = format!("    {call}\n");
+        let rob = "    VAR jointtarget jt;\n    jt := CJointT(\\TaskName:=\"T_STN1\");\n    \
+                   TPWrite \"other \" \\Bool:=jt.robax.rax_1 = 9E9 AND jt.extax.eax_a = 0;\n";
+        let (stdout, stderr, code) = run(&project(&format!("no_tcp_{line}"), rob, &stn));
+        assert_eq!(code, Some(1), "{stderr}");
+        assert!(stderr.contains("the task moves no robot (a positioner's task): there is no TCP to read"), "{stderr}");
+        assert!(stderr.contains(&format!("stn.mod:{line}")), "{stderr}");
+        assert_eq!(stdout, "other TRUE\n");
+    }
 }

@@ -20,6 +20,8 @@ struct OtherRobot {
     joints: rapid_motion::Joints,
     frames: FrameChain,
     extax: [f64; 6],
+    /// The task moves a robot (a positioner's task moves its external axes only).
+    tcp: bool,
 }
 
 /// The robot a read-back is about: this task's (None), or another task's
@@ -30,7 +32,8 @@ fn robot_of(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Option<OtherRobo
     Ok(Some(match ask(ctx, Request::Robot { task }) {
         Some(Reply::Robot(joints, robot)) => {
             let (frames, extax) = *robot;
-            Some(OtherRobot { joints, frames, extax })
+            let tcp = ctx.resources.tasking.shared.tasks.get(task).is_none_or(|t| t.robot);
+            Some(OtherRobot { joints, frames, extax, tcp })
         }
         Some(_) => return Err(RapidError::fatal("the task has no robot")),
         None => None,
@@ -142,21 +145,42 @@ fn tool0_like(ctx: &Ctx<'_>) -> Result<Value, RapidError> {
 /// `CJointT([\TaskRef] | [\TaskName])`: the axis values now.
 pub(crate) fn c_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     super::tracking::refresh(ctx);
-    let (joints, extax) = match robot_of(ctx, args)? {
-        Some(Some(other)) => (other.joints, other.extax),
+    let (joints, extax, tcp) = match robot_of(ctx, args)? {
+        Some(Some(other)) => (other.joints, other.extax, other.tcp),
         Some(None) => return Ok(Some(data::jointtarget_value(ctx, &[0.0; 6])?)),
         None => {
             let now = ctx.time;
-            (ctx.resources.robot.joints_at(now), ctx.resources.robot.extax_read(now))
+            let tcp = super::moves::moves_robot(ctx);
+            (ctx.resources.robot.joints_at(now), ctx.resources.robot.extax_read(now), tcp)
         }
     };
+    // A positioner's task has no robot axes: they read 9E9, as axes the system lacks.
+    // uncertain: the controller's robax for such a task is not in our sources.
+    let joints = if tcp { joints } else { [data::UNUSED_AXIS; 6] };
     Ok(Some(super::frame::with_extax(&data::jointtarget_value(ctx, &joints)?, &extax)))
+}
+
+/// CRobT and CPos need a TCP: a positioner's task (this one, or `other`) has none.
+// uncertain: the controller's error for them in such a task is not in our sources;
+// execution stops.
+fn require_tcp(ctx: &Ctx<'_>, other: Option<&OtherRobot>, what: &str) -> Result<(), RapidError> {
+    let tcp = other.map_or_else(|| super::moves::moves_robot(ctx), |o| o.tcp);
+    if tcp {
+        return Ok(());
+    }
+    Err(RapidError::fatal(format!("{what}: the task moves no robot (a positioner's task): there is no TCP to read")))
 }
 
 /// `CRobT([\TaskRef] | [\TaskName] [\Tool] [\WObj])`: the robtarget the robot is at.
 pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     super::tracking::refresh(ctx);
     let other = robot_of(ctx, args)?;
+    match &other {
+        None => require_tcp(ctx, None, "CRobT")?,
+        Some(Some(answer)) => require_tcp(ctx, Some(answer), "CRobT")?,
+        // The other task has not answered yet.
+        Some(None) => {}
+    }
     let mut chain = read_frames(ctx, args.get(2), args.get(3))?;
     let now = ctx.time;
     let (joints, extax) = match other {
@@ -179,6 +203,7 @@ pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `CPos([\Tool] [\WObj])`: the TCP's position now.
 pub(crate) fn c_pos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     super::tracking::refresh(ctx);
+    require_tcp(ctx, None, "CPos")?;
     let chain = read_frames(ctx, args.first(), args.get(1))?;
     let now = ctx.time;
     let robot = &mut ctx.resources.robot;
