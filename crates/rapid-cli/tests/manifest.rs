@@ -337,13 +337,15 @@ fn a_tasks_robot_is_a_known_model_or_none_and_only_a_motion_tasks() {
     // one we know, and a task that is no motion task has no robot to name.
     let dir = scratch("task_robot");
     let manifest = "[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\nrobot = \"IRB 9999\"\n\n\
-                    [[task]]\nname = \"T_PLC\"\nmodules = [\"main.mod\"]\nrobot = false\n";
+                    [[task]]\nname = \"T_PLC\"\nmodules = [\"main.mod\"]\nrobot = false\n\n\
+                    [[task]]\nname = \"T_ROB2\"\nmotion = true\nmodules = [\"main.mod\"]\nrobot = 5\n";
     let program = "MODULE main\n  PROC main()\n  ENDPROC\nENDMODULE\n";
     write(&dir, &[("bad/rapid.toml", manifest), ("bad/main.mod", program)]);
     let out = rapid_in(&dir, &["check", "bad"]);
     let report = format!("{}{}", text(&out.stdout), text(&out.stderr));
     finding_at(&report, "task `T_ROB1`: unknown robot model `IRB 9999` (known: IRB 120-3/0.58", "bad/rapid.toml:4:9");
     finding_at(&report, "task `T_PLC`: robot is a motion task's (motion = true)", "bad/rapid.toml:9:9");
+    finding_at(&report, "task `T_ROB2`: robot is a robot model's name, or false", "bad/rapid.toml:15:9");
 }
 
 #[test]

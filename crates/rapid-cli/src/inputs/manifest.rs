@@ -116,15 +116,8 @@ struct RawTask {
     rmq: Option<RawRmq>,
     base: Option<Spanned<Vec<f64>>>,
     orientation: Option<Spanned<Vec<f64>>>,
-    robot: Option<Spanned<RawRobot>>,
-}
-
-/// A task's `robot`: a model's name, or whether the task moves a robot at all.
-#[derive(Debug, Deserialize)]
-#[serde(untagged)]
-enum RawRobot {
-    Model(String),
-    Moves(bool),
+    /// A model's name, or whether the task moves a robot at all (`false`).
+    robot: Option<Spanned<toml::Value>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -361,15 +354,21 @@ impl Reader<'_> {
             return;
         }
         let chosen = match robot.get_ref() {
-            RawRobot::Moves(true) => return,
-            RawRobot::Moves(false) => None,
-            RawRobot::Model(name) => {
+            toml::Value::Boolean(true) => return,
+            toml::Value::Boolean(false) => None,
+            toml::Value::String(name) => {
                 if rapid_motion::find_model(name).is_none() {
                     let known: Vec<&str> = rapid_motion::models().iter().map(|m| m.name).collect();
                     let message = format!("task `{task}`: unknown robot model `{name}` (known: {})", known.join(", "));
                     self.find(robot.span(), message);
                 }
                 Some(name.clone())
+            }
+            _ => {
+                let message =
+                    format!("task `{task}`: robot is a robot model's name, or false for a task that moves none");
+                self.find(robot.span(), message);
+                return;
             }
         };
         self.manifest.task_robots.push((task.to_owned(), chosen));
