@@ -62,6 +62,12 @@ pub(super) fn zone(ctx: &Ctx<'_>, value: &Value) -> Result<ZoneData, RapidError>
     })
 }
 
+/// Whether the robot holds the tool (`tooldata`'s robhold; FALSE: a stationary tool).
+pub(super) fn tool_held(ctx: &Ctx<'_>, tool: &Value) -> Result<bool, RapidError> {
+    let t = record(ctx, tool, 3, "a tooldata")?;
+    boolean(ctx, &t[0], "tooldata")
+}
+
 /// The frames of a tool (`tooldata [robhold, tframe, tload]`) and a work object
 /// (`wobjdata [robhold, ufprog, ufmec, uframe, oframe]`; wobj0 when none), with the
 /// program displacement. A moving work object (`ufprog` FALSE) rides the conveyor its

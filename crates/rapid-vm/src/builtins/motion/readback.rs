@@ -64,6 +64,12 @@ fn read_frames(ctx: &Ctx<'_>, tool: Option<&Value>, wobj: Option<&Value>) -> Res
         (Some(tool), None) => {
             // The active work object, where it is now (CRobT and CPos; CalcRobT and
             // CalcJointT take wobj0 for an omitted \WObj: `target_frames`).
+            // A stationary tool goes with a work object the robot holds, as in a move.
+            if data::tool_held(ctx, &tool)? == active.stationary_tool {
+                return Err(RapidError::fatal(
+                    "the tool and the active work object cannot both be held (or both fixed): give \\WObj",
+                ));
+            }
             let mut chain = data::chain(ctx, &tool, None, pdisp)?;
             let uframe = super::tracking::active_uframe_at(&ctx.resources.robot, ctx.time);
             chain.uframe = uframe;
