@@ -105,8 +105,17 @@ fn target_frames(
     use super::tracking::Carrier;
     let given = wobj.filter(|w| present(Some(w)));
     let mut chain = match (tool.filter(|t| present(Some(t))), given) {
-        // An omitted \WObj is wobj0 here (CRobT and CPos take the active one).
-        (Some(tool), None) => data::chain(ctx, &ctx.value(tool)?, None, ctx.resources.motion.settings.pdisp)?,
+        // An omitted \WObj is wobj0 here (CRobT and CPos take the active one), which a
+        // stationary tool cannot go with: the manual asks for \WObj then.
+        (Some(tool), None) => {
+            let tool = ctx.value(tool)?;
+            if !data::tool_held(ctx, &tool)? {
+                return Err(RapidError::fatal(
+                    "a stationary tool (robhold FALSE) needs \\WObj, the work object the robot holds",
+                ));
+            }
+            data::chain(ctx, &tool, None, ctx.resources.motion.settings.pdisp)?
+        }
         _ => read_frames(ctx, tool, wobj)?,
     };
     let robot = &ctx.resources.robot;
