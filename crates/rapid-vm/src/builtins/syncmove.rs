@@ -59,7 +59,10 @@ pub(crate) fn robot_stands(ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
     let end = ctx.resources.robot.flush();
     super::motion::apply_due_events(ctx)?;
     if end > ctx.time {
-        ctx.wait = Some(end - ctx.time);
+        // The instruction looks again when the robot stands, or earlier when an
+        // interrupt may come (its trap runs meanwhile, §1.11).
+        let next = super::interrupts::next_due(ctx).map_or(end, |due| due.min(end));
+        ctx.wait = Some((next - ctx.time).max(1e-6));
         ctx.stop = StopKind::Repeat;
         return Ok(false);
     }

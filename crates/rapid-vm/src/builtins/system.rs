@@ -5,8 +5,13 @@ use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
 
-/// `WaitTime [\InPos] Time`: waits `Time` seconds of controller time.
+/// `WaitTime [\InPos] Time`: waits `Time` seconds of controller time; with `\InPos` from
+/// when the robot stands at the end of its last move (a fly-by point there becomes a stop
+/// point: §2.3, the instruction that ends a \Conc sequence).
 pub(super) fn wait_time(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
+    if args.len() > 1 && present(args.first()) && !super::syncmove::robot_stands(ctx)? {
+        return Ok(None);
+    }
     let time_arg = args.iter().rev().find(|a| present(Some(a))).ok_or_else(|| ctx.error(Err::ArgValue, "no time"))?;
     let seconds = ctx.num(time_arg)?;
     if seconds < 0.0 {

@@ -154,6 +154,19 @@ impl RoutineCompiler<'_> {
         Ok(())
     }
 
+    /// A call of WaitRob (no arguments): the program waits for the robot to stand still.
+    fn wait_for_robot(&mut self, span: Span) -> Result<(), CompileError> {
+        let Some(id) = builtins::lookup("WaitRob") else { return Err(self.unsupported(span, "WaitUntil \\InPos")) };
+        let wait_rob =
+            self.prog.routines.iter().find(|r| r.chapter.is_some() && r.display.eq_ignore_ascii_case("WaitRob"));
+        // WaitRob [\InPos] | [\ZeroSpeed]: its switches, not passed.
+        let n_params = wait_rob.map_or(2, |info| info.params.len());
+        let args = vec![ArgSpec::Absent; n_params];
+        let site = self.site(CallSite { callee: Callee::Builtin(id), args, n_pushed: 0, late_args: Vec::new() });
+        self.code.emit(Instr::Call(site));
+        Ok(())
+    }
+
     /// `ArgName(Parameter [\ErrorNumber])`: the Parameter argument is never evaluated
     /// (an absent optional parameter or a switch must give ERR_ARGNAME, not
     /// ERR_NOTPRES); the call site records which data object it names instead.
@@ -344,6 +357,12 @@ impl RoutineCompiler<'_> {
             return Err(self.unsupported(span, "WaitUntil with \\Visualize"));
         }
         let (max_time, time_flag, poll_rate) = (arg_of("MaxTime"), arg_of("TimeFlag"), arg_of("PollRate"));
+        let in_pos = info.params.iter().position(|p| p.display.eq_ignore_ascii_case("InPos")).and_then(|i| bound[i]);
+        if in_pos.is_some() {
+            // `\InPos`: the robot first stands at the end of its last move (§2.3), as
+            // WaitRob makes the program wait; MaxTime counts from then.
+            self.wait_for_robot(span)?;
+        }
         let num = self.prog.core.num;
         let dnum = self.prog.core.dnum;
         let start = self.new_local(dnum, [0; 3], 0, LocalKind::Temp);
