@@ -214,3 +214,24 @@ fn every_robot_of_a_multimove_system_gets_a_trace() {
     assert!((at[0] - 302.0).abs() < 0.01 && (at[1] - 100.0).abs() < 0.01 && (at[2] - 558.0).abs() < 0.01, "{right:?}");
     assert!(right.last().is_some_and(|l| l.ends_with("right.mod:21")), "{right:?}");
 }
+
+#[test]
+fn stop_all_move_tasks_stops_the_other_normal_tasks() {
+    // T_ROB1 stops at 0.5 s; with \AllMoveTasks T_ROB2, which counts every 0.2 s, stops
+    // with it (it printed 1 and 2, at 0.2 and 0.4 s); without it T_ROB2 counts to 5.
+    for (switch, counted) in [(" \\AllMoveTasks", 2), ("", 5)] {
+        let dir = scratch(&format!("stop_all{}", counted));
+        let stopper = format!("MODULE M\n  PROC main()\n    WaitTime 0.5;\n    Stop{switch};\n  ENDPROC\nENDMODULE\n");
+        let counter = "MODULE M\n  PROC main()\n    FOR i FROM 1 TO 5 DO\n      WaitTime 0.2;\n      \
+                       TPWrite \"count \" \\Num:=i;\n    ENDFOR\n  ENDPROC\nENDMODULE\n";
+        let tasks = [
+            TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: &stopper },
+            TaskDef { name: "T_ROB2", attrs: "-Type \"NORMAL\" -MotionTask", module: counter },
+        ];
+        system(&dir, &tasks, "");
+        let out = rapid_in(&dir, &["run", "--quiet", "sys"]);
+        let stdout = text(&out.stdout);
+        let expected: String = (1..=counted).map(|i| format!("count {i}\n")).collect();
+        assert_eq!(stdout, expected, "{}", text(&out.stderr));
+    }
+}

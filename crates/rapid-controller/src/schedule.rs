@@ -387,7 +387,8 @@ impl Controller {
         self.time = self.time.max(self.tasks[idx].loaded.vm.time) + INSTRUCTION_TIME;
         let epoch = self.epoch();
         let rechecks = self.tasks[idx].loaded.vm.wait_rechecks;
-        let held = exit == Exit::Stopped && self.stop_instruction_holds(idx);
+        let stopped = exit == Exit::Stopped;
+        let held = stopped && self.stop_instruction_holds(idx);
         let state = match exit {
             Exit::Stopped if held => State::Ready,
             Exit::Budget => State::Ready,
@@ -409,6 +410,25 @@ impl Controller {
         }
         if self.tasks[idx].state == State::Ended(TaskEnd::Stopped) {
             self.run_stop_routines(idx, host);
+        }
+        let controller = &mut self.tasks[idx].loaded.vm.resources_mut().controller;
+        if std::mem::take(&mut controller.stop_all_moves) && stopped {
+            self.stop_other_normal_tasks(idx, host);
+        }
+    }
+
+    /// `Stop \AllMoveTasks` in task `idx`: every other running NORMAL task stops as a
+    /// Stop instruction would stop it.
+    // uncertain: with system inputs the controller may hold them for a restart; here
+    // they end as a task does whose Stop does not hold.
+    fn stop_other_normal_tasks(&mut self, idx: usize, host: &mut dyn Host) {
+        for other in 0..self.tasks.len() {
+            let task = &self.tasks[other];
+            if other == idx || task.spec.kind != TaskKind::Normal || matches!(task.state, State::Ended(_)) {
+                continue;
+            }
+            self.tasks[other].state = State::Ended(TaskEnd::Stopped);
+            self.run_stop_routines(other, host);
         }
     }
 

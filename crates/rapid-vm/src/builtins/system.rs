@@ -48,8 +48,12 @@ pub(super) fn wait_time(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
     Ok(None)
 }
 
-pub(super) fn stop(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
+pub(super) fn stop(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
     ctx.stop = super::StopKind::Stop;
+    // `\AllMoveTasks`: the programs of the other running NORMAL tasks stop too (the
+    // controller stops them). `\NoRegain` concerns a robot moved away while stopped,
+    // which no one does here.
+    ctx.resources.controller.stop_all_moves = present(args.get(1));
     Ok(None)
 }
 

@@ -79,6 +79,8 @@ pub struct ControllerState {
     stop_pp_to_main: bool,
     /// WarmStart was executed: the run ends and the caller reports the restart.
     pub warm_start: bool,
+    /// `Stop \AllMoveTasks` was executed: the other NORMAL tasks stop too.
+    pub stop_all_moves: bool,
 }
 
 impl Default for ControllerState {
@@ -104,6 +106,7 @@ impl ControllerState {
             stop_pp_moved: true,
             stop_pp_to_main: true,
             warm_start: false,
+            stop_all_moves: false,
         }
     }
 
