@@ -15,7 +15,8 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-const MANIFEST: &str = r#"
+/// T_ROB1 and the positioner's task T_STN1, then [`TABLE`].
+const TASKS: &str = r#"
 [[task]]
 name = "T_ROB1"
 modules = ["rob.mod"]
@@ -26,7 +27,10 @@ type = "NORMAL"
 motion = true
 robot = false
 modules = ["stn.mod"]
+"#;
 
+/// The turntable STN1 of task T_STN1.
+const TABLE: &str = r#"
 [[unit]]
 name = "STN1"
 task = "T_STN1"
@@ -57,13 +61,19 @@ const SHOW: &str = "    TPWrite \"world \" \\Pos:=CPos(\\Tool:=tool0 \\WObj:=wob
 /// The table to 90°.
 const TURN: &str = "MoveExtJ [[0,0,0,0,0,0],[90,9E9,9E9,9E9,9E9,9E9]]";
 
-/// A fresh project folder: the manifest and the two tasks' modules, whose `main`
-/// bodies are given.
-fn project(name: &str, rob: &str, stn: &str) -> PathBuf {
+/// A fresh, empty scratch folder for one test.
+fn scratch(name: &str) -> PathBuf {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("coordinated").join(name);
     let _ = fs::remove_dir_all(&dir);
     fs::create_dir_all(&dir).expect("scratch folder");
-    fs::write(dir.join("rapid.toml"), MANIFEST).expect("manifest");
+    dir
+}
+
+/// A fresh project folder: the manifest and the two tasks' modules, whose `main`
+/// bodies are given.
+fn project(name: &str, rob: &str, stn: &str) -> PathBuf {
+    let dir = scratch(name);
+    fs::write(dir.join("rapid.toml"), format!("{TASKS}{TABLE}")).expect("manifest");
     let module = |name: &str, decls: &str, body: &str| {
         format!("MODULE {name}\n{COMMON}{decls}  PROC main()\n{body}  ENDPROC\nENDMODULE\n")
     };
@@ -203,13 +213,10 @@ fn a_positioners_task_moves_its_axes_and_no_robot() {
     // TaskRunRob is FALSE there, TaskRunMec TRUE; MoveAbsJ moves the table (90° in
     // 0.65 s + 0.05 s settle) and not the robot axes it names; CJointT reads no robot
     // axes (9E9, as axes the system lacks); a MoveL stops execution.
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("coordinated").join("positioner_task");
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("scratch folder");
-    let (_, units) = MANIFEST.split_once("[[unit]]").expect("units");
+    let dir = scratch("positioner_task");
     let manifest = format!(
         "[[task]]\nname = \"T_STN1\"\nrobot = false\nmodules = [\"stn.mod\"]\n\n\
-         [[task]]\nname = \"T_ROB1\"\ntype = \"NORMAL\"\nmotion = true\nmodules = [\"rob.mod\"]\n\n[[unit]]{units}"
+         [[task]]\nname = \"T_ROB1\"\ntype = \"NORMAL\"\nmotion = true\nmodules = [\"rob.mod\"]\n{TABLE}"
     );
     fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
     let show = "    TPWrite GetTaskName() + \" \" + RobName() + \" \" + ValToStr(TaskRunRob()) + \" \" + ValToStr(TaskRunMec());\n";
@@ -297,14 +304,11 @@ fn two_robots_follow_one_table_in_synchronized_movement() {
     // all three tasks). T_ROB2 stands at (600, 0, 0) turned 180°. Each goes 30 mm down
     // in the object: T_ROB1 to (100, 0, 70) on the table, (100, 0, 270) above its origin,
     // turned 30°: (386.603, 50, 270); T_ROB2 to (-100, 0, 70): (213.397, -50, 270).
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("coordinated").join("two_robots");
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("scratch folder");
-    let (_, units) = MANIFEST.split_once("[[unit]]").expect("units");
+    let dir = scratch("two_robots");
     let manifest = format!(
         "[[task]]\nname = \"T_ROB1\"\nmodules = [\"rob1.mod\"]\n\n[[task]]\nname = \"T_ROB2\"\ntype = \"NORMAL\"\n\
          motion = true\nbase = [600, 0, 0]\norientation = [0, 0, 0, 1]\nmodules = [\"rob2.mod\"]\n\n[[task]]\n\
-         name = \"T_STN1\"\ntype = \"NORMAL\"\nmotion = true\nrobot = false\nmodules = [\"stn.mod\"]\n\n[[unit]]{units}"
+         name = \"T_STN1\"\ntype = \"NORMAL\"\nmotion = true\nrobot = false\nmodules = [\"stn.mod\"]\n{TABLE}"
     );
     fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
     let list =

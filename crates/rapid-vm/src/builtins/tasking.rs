@@ -435,7 +435,8 @@ pub(crate) fn other_task(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<
     Ok(tasking.shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(&task.name)))
 }
 
-fn my_task<'c>(ctx: &'c Ctx<'_>) -> Option<&'c TaskInfo> {
+/// This task's entry in the system's task list.
+pub(crate) fn my_task<'c>(ctx: &'c Ctx<'_>) -> Option<&'c TaskInfo> {
     ctx.resources.tasking.shared.task(ctx.resources.tasking.name())
 }
 

@@ -115,7 +115,8 @@ impl UnitPath {
     }
 
     fn busy_mut(&mut self, unit: &str, task: &str) -> &mut Busy {
-        let at = self.busy.iter().position(|b| b.unit == unit && b.task == task);
+        let same = |b: &Busy| b.unit.eq_ignore_ascii_case(unit) && b.task.eq_ignore_ascii_case(task);
+        let at = self.busy.iter().position(same);
         let at = at.unwrap_or_else(|| {
             let busy = Busy { unit: unit.to_owned(), task: task.to_owned(), open: 0, until: f64::NEG_INFINITY };
             self.busy.push(busy);

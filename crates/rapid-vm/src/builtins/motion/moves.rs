@@ -214,20 +214,17 @@ pub(super) fn check_sing_mode(ctx: &Ctx<'_>) -> Result<(), RapidError> {
 
 /// Only a motion task (`-MotionTask`) runs move instructions (§1.20).
 pub(super) fn require_motion_task(ctx: &Ctx<'_>) -> Result<(), RapidError> {
-    let tasking = &ctx.resources.tasking;
-    let me = tasking.shared.tasks.iter().find(|t| t.name.eq_ignore_ascii_case(tasking.name()));
-    if me.is_none_or(|t| t.motion) {
+    if crate::builtins::tasking::my_task(ctx).is_none_or(|t| t.motion) {
         return Ok(());
     }
-    Err(RapidError::fatal(format!("task {} is no motion task (-MotionTask): it cannot move the robot", tasking.name())))
+    let name = ctx.resources.tasking.name();
+    Err(RapidError::fatal(format!("task {name} is no motion task (-MotionTask): it cannot move the robot")))
 }
 
 /// Whether this task moves a robot (a positioner's motion task moves external units
 /// only).
 pub(super) fn moves_robot(ctx: &Ctx<'_>) -> bool {
-    let tasking = &ctx.resources.tasking;
-    let me = tasking.shared.tasks.iter().find(|t| t.name.eq_ignore_ascii_case(tasking.name()));
-    me.is_none_or(|t| t.robot)
+    crate::builtins::tasking::my_task(ctx).is_none_or(|t| t.robot)
 }
 
 /// A move of the TCP runs only in a motion task that moves a robot.
