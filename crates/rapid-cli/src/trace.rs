@@ -129,7 +129,10 @@ fn next_eax(robot: &RobotState, planned: &PlannedMove, last: [f64; 6], t: f64) -
 /// The text of one piece's rows.
 fn render(robot: &RobotState, style: &Style, piece: &Piece<'_>) -> Vec<u8> {
     let moves: &[PlannedMove] = robot.recorded.as_deref().unwrap_or(&[]);
-    let mut out = Vec::with_capacity(piece.rows as usize * 160);
+    // Room for every row at once: a buffer that grows copies the rows written so far.
+    // About 14 bytes a number and a place like `module.mod:123456`.
+    let row_bytes = 14 * (TRACE_COLUMNS.len() + style.ext.len()) + 32;
+    let mut out = Vec::with_capacity(piece.rows as usize * row_bytes);
     let mut cursor = piece.cursor.clone();
     let mut eax = piece.eax;
     let mut row = piece.row;
