@@ -235,3 +235,58 @@ fn stop_all_move_tasks_stops_the_other_normal_tasks() {
         assert_eq!(stdout, expected, "{}", text(&out.stderr));
     }
 }
+
+#[test]
+fn store_path_leaves_synchronized_movement_unless_keep_sync() {
+    // Both tasks move synchronized. T_ROB1 stores its path: on level 2 it moves on its
+    // own (IsSyncMoveOn FALSE, a move without \ID), 50 mm up at v100 alone: 50/100 +
+    // 100/10000 = 0.51 s, +0.05 s settling at the fine point = 0.56 s, and back (StartMove
+    // needs the robot within 10 mm of its stopped path). RestoPath makes it
+    // synchronized again, and both tasks' \ID:=20 moves meet. With StorePath \KeepSync
+    // the task stays synchronized on level 2, where a move needs \ID.
+    let rob1 = |store: &str| {
+        format!(
+            "MODULE M\n  VAR syncident sync1;\n  VAR syncident sync2;\n  PERS tasks all{{2}} := [[\"T_ROB1\"],[\"T_ROB2\"]];\n  \
+             VAR clock c;\n  VAR robtarget here;\n  PROC main()\n    ConfL \\Off;\n    \
+             MoveAbsJ [[0,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    SyncMoveOn sync1, all;\n    \
+             here := CRobT(\\Tool:=tool0);\n    {store};\n    \
+             TPWrite \"T_ROB1 level 2 \" + ValToStr(IsSyncMoveOn());\n    ClkStart c;\n    \
+             MoveL Offs(here, 0, 0, 50), v100, fine, tool0;\n    ClkStop c;\n    \
+             TPWrite \"T_ROB1 level 2 move \" \\Num:=ClkRead(c);\n    MoveL here, v100, fine, tool0;\n    \
+             RestoPath;\n    \
+             TPWrite \"T_ROB1 restored \" + ValToStr(IsSyncMoveOn());\n    StartMove;\n    \
+             MoveL Offs(here, 0, 100, 0) \\ID:=20, v100, fine, tool0;\n    SyncMoveOff sync2;\n    \
+             TPWrite \"T_ROB1 off\";\n  ENDPROC\nENDMODULE\n"
+        )
+    };
+    let rob2 = "MODULE M\n  VAR syncident sync1;\n  VAR syncident sync2;\n  PERS tasks all{2} := [[\"T_ROB1\"],[\"T_ROB2\"]];\n  \
+                VAR robtarget here;\n  PROC main()\n    ConfL \\Off;\n    \
+                MoveAbsJ [[0,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    SyncMoveOn sync1, all;\n    \
+                here := CRobT(\\Tool:=tool0);\n    MoveL Offs(here, 0, 50, 0) \\ID:=20, v100, fine, tool0;\n    \
+                SyncMoveOff sync2;\n    TPWrite \"T_ROB2 off\";\n  ENDPROC\nENDMODULE\n";
+    let run = |name: &str, store: &str| {
+        let dir = scratch(name);
+        let rob1 = rob1(store);
+        let tasks = [
+            TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: &rob1 },
+            TaskDef { name: "T_ROB2", attrs: "-Type \"NORMAL\" -MotionTask", module: rob2 },
+        ];
+        system(&dir, &tasks, "");
+        rapid_in(&dir, &["run", "--quiet", "--max-time", "60", "sys"])
+    };
+    let out = run("store_path_sync", "StorePath");
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let mut lines: Vec<String> = text(&out.stdout).lines().map(str::to_owned).collect();
+    lines.sort();
+    assert_eq!(
+        lines,
+        ["T_ROB1 level 2 FALSE", "T_ROB1 level 2 move 0.56", "T_ROB1 off", "T_ROB1 restored TRUE", "T_ROB2 off"]
+    );
+
+    let out = run("store_path_keep_sync", "StorePath \\KeepSync");
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stdout));
+    let rob1_lines: Vec<String> =
+        text(&out.stdout).lines().filter(|l| l.starts_with("T_ROB1")).map(str::to_owned).collect();
+    assert_eq!(rob1_lines, ["T_ROB1 level 2 TRUE"]);
+    assert!(text(&out.stderr).contains("needs \\ID"), "{}", text(&out.stderr));
+}

@@ -43,14 +43,19 @@ pub struct Stored {
     eax: Option<rapid_motion::external::Eax>,
 }
 
-/// `StorePath [\KeepSync]`: the base path is set aside; path level 2 begins.
-// uncertain: a second StorePath (one path is stored at a time) stops the program;
-// \KeepSync (synchronized MultiMove) changes nothing, as no synchronized movement
-// exists in `rapid run`.
-pub(crate) fn store_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+/// `StorePath [\KeepSync]`: the base path is set aside; path level 2 begins. In
+/// synchronized movement (MultiMove) the task moves on its own on level 2, as after
+/// SyncMoveSuspend, unless `\KeepSync` keeps it synchronized; RestoPath brings the
+/// synchronized movement back.
+// uncertain: a second StorePath (one path is stored at a time) stops the program.
+// uncertain: StorePath without \KeepSync is taken as StorePath \KeepSync followed
+// by SyncMoveSuspend (the manual's example suspends after StorePath \KeepSync), so a
+// SyncMoveResume on that level synchronizes the task again.
+pub(crate) fn store_path(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if ctx.resources.robot.stored.is_some() {
         return Err(RapidError::fatal("StorePath: a path is stored already (one at a time: RestoPath first)"));
     }
+    let keep_sync = super::super::present(args.first());
     let now = ctx.time;
     if ctx.resources.robot.pause.is_none() {
         let since = end_of_current_move(&mut ctx.resources.robot, now);
@@ -95,6 +100,9 @@ pub(crate) fn store_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
         eax: eax_here,
     };
     robot.stored = Some(Box::new(stored));
+    if let Some(mode) = ctx.resources.tasking.sync_move.as_mut() {
+        mode.suspended = !keep_sync;
+    }
     if since > now {
         // uncertain: StorePath waits until the robot stands at the end of its move,
         // so CRobT after it (as the manual's examples do) reads the stop position.
@@ -148,7 +156,8 @@ fn same_external_axes(robot: &super::robot::RobotState, stored: &Stored, level2_
 }
 
 /// `RestoPath`: the base path comes back, stopped where it was, after the moves of
-/// level 2 are done (the instruction waits for them). StartMove lets it go on.
+/// level 2 are done (the instruction waits for them). StartMove lets it go on. A task
+/// in synchronized movement moves synchronized again.
 // uncertain: RestoPath without StorePath stops the program (the manual names no
 // recoverable error for it).
 pub(crate) fn resto_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
@@ -209,6 +218,11 @@ pub(crate) fn resto_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     robot.hold_until = hold_until;
     robot.pause = Some(pause);
     robot.path_rec.forget_back();
+    // The base path was synchronized: so is the task again.
+    // uncertain: also when the level 2 moves ended suspended (no SyncMoveResume).
+    if let Some(mode) = ctx.resources.tasking.sync_move.as_mut() {
+        mode.suspended = false;
+    }
     if level2_end > now {
         ctx.wait = Some(level2_end - now);
     }
