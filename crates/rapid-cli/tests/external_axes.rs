@@ -425,7 +425,8 @@ fn a_track_carries_the_robot_and_the_tcp_keeps_its_world_path() {
     // then reaches (200, 0, 400) from its base, as a robot off the track would at
     // track 0. Then the TCP goes 100 mm along the world y axis at v100 while the track
     // moves another 100 mm along x: relative to its base the TCP goes √2 · 100 mm at
-    // √2 · 100 mm/s: 1 + 0.0141 s ramp + 0.05 s settle; 1.36 s in all.
+    // √2 · 100 mm/s: 1 + 0.015 s ramp (the track's, longer than the path's 0.0141 s) + 0.05 s
+    // settle; 1.36 s in all.
     let dir = scratch("track");
     let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n{TRACK}");
     fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
@@ -581,12 +582,97 @@ fn resto_path_refuses_external_axes_left_elsewhere_on_level_2() {
 }
 
 #[test]
-fn the_path_recorder_refuses_a_path_that_moved_external_axes() {
+fn the_path_recorder_takes_the_external_axes_back_and_forth() {
+    // The track's 500 mm at v1000 takes 500/1000 + 0.15 s ramp + 0.05 s settle = 0.70 s.
+    // PathRecMoveBwd takes it back to 0 along the recorded move, the same 0.70 s, and
+    // PathRecMoveFwd to 500 again: 1.40 and 2.10 s.
     let body = "    PathRecStart start_id;\n    MoveExtJ [[0,0,0,0,0,0],[500,9E9,9E9,9E9,9E9,9E9]], v1000, fine;\n    \
-                StorePath;\n    PathRecMoveBwd;\n";
-    let (_, stderr, code) = run(&project("recorder", "  VAR pathrecid start_id;\n", body, ""));
-    assert_eq!(code, Some(1));
-    assert!(stderr.contains("PathRecMoveBwd: the recorded path moves external axes"), "{stderr}");
+                StorePath;\n    PathRecMoveBwd;\n    jt := CJointT();\n    \
+                TPWrite \"back \" + NumToStr(ClkRead(c), 2) + \" \" \\Num:=jt.extax.eax_a;\n    PathRecMoveFwd;\n    \
+                jt := CJointT();\n    TPWrite \"forward \" + NumToStr(ClkRead(c), 2) + \" \" \\Num:=jt.extax.eax_a;\n    \
+                RestoPath;\n";
+    let (stdout, stderr, code) = run(&project("recorder", "  VAR pathrecid start_id;\n", body, ""));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(stdout, "back 1.40 0\nforward 2.10 500\n");
+}
+
+#[test]
+fn the_path_recorder_keeps_the_world_path_on_a_track() {
+    // As in `a_track_carries_the_robot_and_the_tcp_keeps_its_world_path`: the TCP crosses
+    // 100 mm along the world y axis at v100 while the track carries the base 100 mm along
+    // x, √2 · 100 mm at √2 · 100 mm/s relative to the base. The track's ramp is the
+    // longer one (100 mm/s of its 1000 in 0.015 s; the path's 141 mm/s at 10 m/s² takes
+    // 0.0141 s): 1 + 0.015 s + 0.05 s settle = 1.065 s. Back along the recorded path the
+    // track returns to 100 mm and the TCP to (300, 0, 400) in the same time. Forward
+    // again with \Speed:=v50, the TCP keeps 50 mm/s in the world: √2 · 100 mm at
+    // √2 · 50 mm/s relative to the base, 2 + 0.0075 s ramp + 0.05 s settle = 2.06 s,
+    // ending at (300, 100, 400), track 200.
+    let dir = scratch("recorder_track");
+    let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n{TRACK}");
+    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    let module = "MODULE main
+  CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[0,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget stay := [[300,0,400],[0,0,1,0],[0,0,0,0],[100,9E9,9E9,9E9,9E9,9E9]];
+  CONST robtarget side := [[300,100,400],[0,0,1,0],[0,0,0,0],[200,9E9,9E9,9E9,9E9,9E9]];
+  VAR clock c;
+  VAR pathrecid start_id;
+  VAR jointtarget jt;
+  PROC main()
+    ConfL \\Off;
+    MoveJ home, v1000, fine, tool0;
+    MoveL stay, v1000, fine, tool0;
+    PathRecStart start_id;
+    MoveL side, v100, fine, tool0;
+    StorePath;
+    ClkStart c;
+    PathRecMoveBwd;
+    show \"back\", 3;
+    ClkStop c;
+    ClkReset c;
+    ClkStart c;
+    PathRecMoveFwd \\Speed:=v50;
+    show \"forward\", 2;
+    RestoPath;
+  ENDPROC
+  PROC show(string what, num decimals)
+    jt := CJointT();
+    TPWrite what + \" \" + NumToStr(ClkRead(c), decimals) + \" \" + ValToStr(CPos(\\Tool:=tool0)) + \" \" \\Num:=jt.extax.eax_a;
+  ENDPROC
+ENDMODULE
+";
+    fs::write(dir.join("main.mod"), module).expect("module");
+    let (stdout, stderr, code) = run(&dir);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(stdout, "back 1.065 [300,0,400] 100\nforward 2.06 [300,100,400] 200\n");
+}
+
+#[test]
+fn the_path_recorder_refuses_a_path_made_in_a_moving_work_object() {
+    // A move made while the robot followed the turntable's work object cannot be
+    // replayed relative to the robot's base: execution stops, naming why.
+    let manifest_units = UNITS.replace("name = \"STN1\"\n", "name = \"STN1\"\nbase = [400, 0, 200]\n");
+    let dir = scratch("recorder_moving");
+    let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n{manifest_units}");
+    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    let module = "MODULE main
+  PERS wobjdata wobj_stn1 := [FALSE, FALSE, \"STN1\", [[0,0,0],[1,0,0,0]], [[0,0,0],[1,0,0,0]]];
+  CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[9E9,0,9E9,9E9,9E9,9E9]];
+  CONST robtarget p1 := [[-100,0,250],[0,0,1,0],[0,0,0,0],[9E9,20,9E9,9E9,9E9,9E9]];
+  VAR pathrecid start_id;
+  PROC main()
+    ConfL \\Off;
+    MoveJ home, v1000, fine, tool0;
+    PathRecStart start_id;
+    MoveL p1, v100, fine, tool0 \\WObj:=wobj_stn1;
+    StorePath;
+    PathRecMoveBwd;
+  ENDPROC
+ENDMODULE
+";
+    fs::write(dir.join("main.mod"), module).expect("module");
+    let (_, stderr, code) = run(&dir);
+    assert_eq!(code, Some(1), "{stderr}");
+    assert!(stderr.contains("PathRecMoveBwd: the recorded path was made in a moving work object"), "{stderr}");
 }
 
 #[test]

@@ -16,6 +16,7 @@
 //! ends with a move from the offset back onto the path.
 
 use nalgebra::{Isometry3, Translation3};
+use rapid_motion::external::Eax;
 use rapid_motion::plan::{MoveRequest, SpeedData, Target, ZoneData};
 use rapid_motion::{Joints, Kinematics, Pose};
 
@@ -31,18 +32,25 @@ type Res = Result<Option<Value>, RapidError>;
 #[derive(Debug, Clone, Copy)]
 struct Step {
     from: Joints,
+    /// Where the external axes stood when it started (`None`: the task has none).
+    eax_from: Option<Eax>,
     request: MoveRequest,
-    /// The move moved external axes.
-    moves_eax: bool,
+    /// It was made in a moving work object (a conveyor's, a unit's, another task's).
+    in_moving_object: bool,
 }
 
-/// Where PathRecMoveBwd took the robot: back over moves `to..from`, from `at`.
+/// Where PathRecMoveBwd took the robot: back over moves `to..from`, from `at` (with
+/// the external axes at `at_eax`).
 #[derive(Debug, Clone, Copy)]
 struct Back {
     to: usize,
     from: usize,
     at: Joints,
+    at_eax: Option<Eax>,
 }
+
+/// A move the recorder gives the robot, and where it takes the external axes.
+type Leg = (MoveRequest, Option<Eax>);
 
 /// The recorder of a motion task.
 #[derive(Debug, Clone, Default)]
@@ -57,9 +65,10 @@ pub struct Recorder {
 
 impl Recorder {
     /// Records a move given to the robot, while recording.
-    pub(super) fn note(&mut self, from: Joints, request: &MoveRequest, moves_eax: bool) {
+    pub(super) fn note(&mut self, from: (Joints, Option<Eax>), request: &MoveRequest, in_moving_object: bool) {
         if self.on {
-            self.steps.push(Step { from, request: *request, moves_eax });
+            let (from, eax_from) = from;
+            self.steps.push(Step { from, eax_from, request: *request, in_moving_object });
         }
     }
 
@@ -196,15 +205,35 @@ fn target(robot: &RobotState, step: &Step, to: Joints, whole: bool, offs: Option
     })
 }
 
-/// The recorder takes the arm back and forth only: a recorded move that moved external
-/// axes stops execution rather than leave them behind.
-fn no_external_axes(steps: &[Step], what: &str) -> Result<(), RapidError> {
-    if steps.iter().any(|s| s.moves_eax) {
+/// The recorder replays moves relative to the robot's base: a move made in a work
+/// object that moved meanwhile (a conveyor's, a unit's) stops execution rather than
+/// take the robot where the object no longer is.
+fn no_moving_objects(steps: &[Step], what: &str) -> Result<(), RapidError> {
+    if steps.iter().any(|s| s.in_moving_object) {
         return Err(RapidError::fatal(format!(
-            "{what}: the recorded path moves external axes; moving them along it is not supported yet"
+            "{what}: the recorded path was made in a moving work object (a conveyor's or a unit's); \
+             moving along it is not supported yet"
         )));
     }
     Ok(())
+}
+
+/// A `\Speed` given to the recorder as the planner needs it for a linear leg from
+/// `from` to `to` while the track carries the robot: the TCP keeps it in the world (the
+/// recorded speeds were scaled so when the moves were given).
+fn scaled(
+    robot: &RobotState,
+    speed: SpeedData,
+    step: &Step,
+    from: (Joints, Option<Eax>),
+    to: (&Target, Option<Eax>),
+) -> SpeedData {
+    let (Target::Linear(to_pose), Some(a), Some(b)) = (to.0, from.1, to.1) else { return speed };
+    let Some((axis, dir)) = robot.external.track() else { return speed };
+    let shift = robot.in_base(dir * (b[axis] - a[axis]));
+    let from_tcp = step.request.mount().path_pose(&robot.kin.forward(&from.0)).translation.vector;
+    let scale = super::track::relative_over_world(from_tcp, to_pose.translation.vector, shift);
+    SpeedData { v_tcp: speed.v_tcp * scale, ..speed }
 }
 
 /// Whether the robot at `at` stands at the end of `step` (it finished the move).
@@ -218,14 +247,23 @@ fn at_end(robot: &RobotState, step: &Step, at: &Joints) -> bool {
     (end.translation.vector - here.translation.vector).norm() < 0.01
 }
 
-/// Gives the robot `requests` (on level 2) and makes the program wait until it
-/// stands at the last one.
-fn run(ctx: &mut Ctx<'_>, requests: &[MoveRequest]) -> Result<(), RapidError> {
+/// Gives the robot `legs` (on level 2) and makes the program wait until it stands at
+/// the last one. The external axes go where each leg takes them, on the arm's profile;
+/// a track carrying the robot keeps a circle in the world as the move did.
+fn run(ctx: &mut Ctx<'_>, legs: &[Leg]) -> Result<(), RapidError> {
     let settings = super::moves::planner_settings(ctx);
     let now = ctx.time;
     let robot = &mut ctx.resources.robot;
-    robot.set_settings(settings);
-    for request in requests {
+    for (request, eax) in legs {
+        let mut settings = settings;
+        if let (Some(to), Some(from)) = (eax, robot.planner.end_eax()) {
+            let ext = robot.external.plan(from, to, None, robot.independent.external_mask()).map_err(motion_error)?;
+            if let Target::Circular { .. } = request.target {
+                settings.base_travel = super::track::track_travel(robot, &ext).into();
+            }
+            robot.next_external = Some(ext);
+        }
+        robot.set_settings(settings);
         robot.push(now, request, true, Vec::new()).map_err(motion_error)?;
     }
     let end = robot.flush();
@@ -264,27 +302,30 @@ pub(crate) fn path_rec_move_bwd(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if !robot.path_rec.on || done <= to {
         return Err(RapidError::fatal("PathRecMoveBwd: no recorded path behind the robot (PathRecValidBwd is FALSE)"));
     }
-    no_external_axes(&robot.path_rec.steps[to..done], "PathRecMoveBwd")?;
-    let at = robot.end_joints();
+    no_moving_objects(&robot.path_rec.steps[to..done], "PathRecMoveBwd")?;
+    let (at, at_eax) = (robot.end_joints(), robot.planner.end_eax());
     // Back again from a place PathRecMoveBwd took it to: whole moves only, and
     // forward still returns to where the first one started.
     let earlier = robot.path_rec.back;
     let steps = &robot.path_rec.steps;
-    let mut requests = Vec::new();
+    let mut legs = Vec::new();
     if let Some(offs) = offs {
         let last = &steps[done - 1];
-        requests.push(to_offset(robot, last, &at, offs, speed.unwrap_or(last.request.speed), ZoneData::FINE));
+        let speed = speed.unwrap_or(last.request.speed);
+        legs.push((to_offset(robot, last, &at, offs, speed, ZoneData::FINE), at_eax));
     }
+    let mut here = (at, at_eax);
     for i in (to..done).rev() {
         let step = &steps[i];
         let whole = i + 1 < done || earlier.is_some() || at_end(robot, step, &at);
         let zone = if i == to { ZoneData::FINE } else { steps[i - 1].request.zone };
         let target = target(robot, step, step.from, whole, offs)?;
-        let speed = speed.unwrap_or(step.request.speed);
-        requests.push(MoveRequest { target, speed, zone, ..step.request });
+        let speed = speed.map_or(step.request.speed, |s| scaled(robot, s, step, here, (&target, step.eax_from)));
+        legs.push((MoveRequest { target, speed, zone, ..step.request }, step.eax_from));
+        here = (step.from, step.eax_from);
     }
-    robot.path_rec.back = Some(earlier.map_or(Back { to, from: done, at }, |b| Back { to, ..b }));
-    run(ctx, &requests)?;
+    robot.path_rec.back = Some(earlier.map_or(Back { to, from: done, at, at_eax }, |b| Back { to, ..b }));
+    run(ctx, &legs)?;
     Ok(None)
 }
 
@@ -311,27 +352,30 @@ pub(crate) fn path_rec_move_fwd(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         }
         None => back.from,
     };
-    no_external_axes(&robot.path_rec.steps[back.to..end], "PathRecMoveFwd")?;
+    no_moving_objects(&robot.path_rec.steps[back.to..end], "PathRecMoveFwd")?;
     let steps = &robot.path_rec.steps;
-    let mut requests = Vec::new();
+    let mut legs = Vec::new();
+    let mut here = (robot.end_joints(), robot.planner.end_eax());
     for i in back.to..end {
         let step = &steps[i];
-        let (to, whole) = match steps.get(i + 1) {
-            Some(next) if i + 1 < back.from => (next.from, true),
-            _ => (back.at, at_end(robot, step, &back.at)),
+        let (to, to_eax, whole) = match steps.get(i + 1) {
+            Some(next) if i + 1 < back.from => (next.from, next.eax_from, true),
+            _ => (back.at, back.at_eax, at_end(robot, step, &back.at)),
         };
         let zone = if i + 1 == end && offs.is_none() { ZoneData::FINE } else { step.request.zone };
         let target = target(robot, step, to, whole, offs)?;
-        requests.push(MoveRequest { target, speed: speed.unwrap_or(step.request.speed), zone, ..step.request });
+        let speed = speed.map_or(step.request.speed, |s| scaled(robot, s, step, here, (&target, to_eax)));
+        legs.push((MoveRequest { target, speed, zone, ..step.request }, to_eax));
+        here = (to, to_eax);
     }
     if offs.is_some() && end > back.to {
         let step = &steps[end - 1];
         let to = if end == back.from { back.at } else { steps[end].from };
         let tcp = step.request.mount().path_pose(&robot.kin.forward(&to));
         let speed = speed.unwrap_or(step.request.speed);
-        requests.push(MoveRequest { target: Target::Linear(tcp), speed, zone: ZoneData::FINE, ..step.request });
+        legs.push((MoveRequest { target: Target::Linear(tcp), speed, zone: ZoneData::FINE, ..step.request }, here.1));
     }
     robot.path_rec.back = (end < back.from).then_some(Back { to: end, ..back });
-    run(ctx, &requests)?;
+    run(ctx, &legs)?;
     Ok(None)
 }

@@ -308,7 +308,8 @@ impl RobotState {
         }
         if self.stored.is_none() {
             // Only the base path is recorded; level 2's moves (and the recorder's own) are not.
-            self.path_rec.note(from, request, eax_from != self.planner.end_eax());
+            let in_moving_object = foreign.is_some() || self.following.open().is_some();
+            self.path_rec.note((from, eax_from), request, in_moving_object);
         }
         self.events.push_back(Queued { events, place: self.next_place.take(), foreign });
         if self.recorded.is_some() {

@@ -82,11 +82,21 @@ pub(super) fn track_speed_scale(
         Target::Linear(to) => to.translation.vector,
     };
     let from = (robot.kin.forward(&robot.end_joints()) * chain.tframe).translation.vector;
+    Ok(relative_over_world(from, to, shift))
+}
+
+/// The scale of a linear move's TCP speed from `from` to `to` (base frame, mm) while the
+/// track carries the base by `shift`: the base-relative path's length over the world's.
+pub(super) fn relative_over_world(
+    from: nalgebra::Vector3<f64>,
+    to: nalgebra::Vector3<f64>,
+    shift: nalgebra::Vector3<f64>,
+) -> f64 {
     let (relative, world) = ((to - from).norm(), (to - from + shift).norm());
-    Ok(match (relative > 1e-6, world > 1e-6) {
+    match (relative > 1e-6, world > 1e-6) {
         // The TCP stands in the world: the track's pace alone sets the time.
         (true, false) => 1e6,
         (true, true) => relative / world,
         _ => 1.0,
-    })
+    }
 }
