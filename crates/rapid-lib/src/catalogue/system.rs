@@ -96,21 +96,21 @@ pub(crate) const ENTRIES: &[Entry] = &[
         "Writes a user error, warning or information message to the event log.",
     ),
     routine(
-        r#"PROC TPReadFK(VAR num TPAnswer, string TPText, string TPFK1, string TPFK2, string TPFK3, string TPFK4, string TPFK5 \num MaxTime \signaldi DIBreak \switch DIPassive \signaldo DOBreak \switch DOPassive \PERS bool PersBoolBreak \switch PersBoolPassive \VAR errnum BreakFlag)"#,
+        r#"PROC TPReadFK(INOUT num TPAnswer, string TPText, string TPFK1, string TPFK2, string TPFK3, string TPFK4, string TPFK5 \num MaxTime \signaldi DIBreak \switch DIPassive \signaldo DOBreak \switch DOPassive \PERS bool PersBoolBreak \switch PersBoolPassive \VAR errnum BreakFlag)"#,
         "Shows texts on the function keys and returns which key (1-5) was pressed.",
     ),
     routine(
-        r#"PROC TPReadNum(VAR num TPAnswer, string TPText \num MaxTime \signaldi DIBreak \switch DIPassive \signaldo DOBreak \switch DOPassive \PERS bool PersBoolBreak \switch PersBoolPassive \VAR errnum BreakFlag)"#,
+        r#"PROC TPReadNum(INOUT num TPAnswer, string TPText \num MaxTime \signaldi DIBreak \switch DIPassive \signaldo DOBreak \switch DOPassive \PERS bool PersBoolBreak \switch PersBoolPassive \VAR errnum BreakFlag)"#,
         "Asks the operator for a num on the FlexPendant.",
     ),
     routine(
-        r#"PROC TPReadDnum(VAR dnum TPAnswer, string TPText \num MaxTime \signaldi DIBreak \switch DIPassive \signaldo DOBreak \switch DOPassive \PERS bool PersBoolBreak \switch PersBoolPassive \VAR errnum BreakFlag)"#,
+        r#"PROC TPReadDnum(INOUT dnum TPAnswer, string TPText \num MaxTime \signaldi DIBreak \switch DIPassive \signaldo DOBreak \switch DOPassive \PERS bool PersBoolBreak \switch PersBoolPassive \VAR errnum BreakFlag)"#,
         "Asks the operator for a dnum on the FlexPendant.",
     ),
     routine(r#"PROC TPShow(tpnum Window)"#, "Brings the given FlexPendant window to the front."),
     // --- §1.10 FlexPendant UI functions ----------------------------------------------------------------------
     routine(
-        r#"PROC UIMsgBox(\string Header, string MsgLine1 \string MsgLine2 \string MsgLine3 \string MsgLine4 \string MsgLine5 \switch Wrap \buttondata Buttons \icondata Icon \string Image \VAR btnres Result \num MaxTime \signaldi DIBreak \switch DIPassive \signaldo DOBreak \switch DOPassive \PERS bool PersBoolBreak \switch PersBoolPassive \VAR errnum BreakFlag \signaldo UIActiveSignal)"#,
+        r#"PROC UIMsgBox(\string Header, string MsgLine1 \string MsgLine2 \string MsgLine3 \string MsgLine4 \string MsgLine5 \switch Wrap \buttondata Buttons \icondata Icon \string Image \INOUT btnres Result \num MaxTime \signaldi DIBreak \switch DIPassive \signaldo DOBreak \switch DOPassive \PERS bool PersBoolBreak \switch PersBoolPassive \VAR errnum BreakFlag \signaldo UIActiveSignal)"#,
         "Shows a message box with up to five lines and standard buttons.",
     ),
     routine(
@@ -138,7 +138,7 @@ pub(crate) const ENTRIES: &[Entry] = &[
         "Lets the operator type a string on a keyboard and returns it.",
     ),
     routine(
-        r#"FUNC num UIListView(\VAR btnres Result \string Header, listitem ListItems{*} \buttondata Buttons | string BtnArray{*} \icondata Icon \num DefaultIndex \num MaxTime \signaldi DIBreak \switch DIPassive \signaldo DOBreak \switch DOPassive \PERS bool PersBoolBreak \switch PersBoolPassive \VAR errnum BreakFlag \signaldo UIActiveSignal)"#,
+        r#"FUNC num UIListView(\INOUT btnres Result \string Header, listitem ListItems{*} \buttondata Buttons | string BtnArray{*} \icondata Icon \num DefaultIndex \num MaxTime \signaldi DIBreak \switch DIPassive \signaldo DOBreak \switch DOPassive \PERS bool PersBoolBreak \switch PersBoolPassive \VAR errnum BreakFlag \signaldo UIActiveSignal)"#,
         "Shows a list menu and returns the index of the item the operator picked.",
     ),
     routine(r#"FUNC bool UIClientExist()"#, "Tells whether a user device such as the FlexPendant is connected."),

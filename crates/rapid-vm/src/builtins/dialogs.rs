@@ -25,11 +25,11 @@ type Res = Result<Option<Value>, RapidError>;
 // Parameter positions in the catalogue's signatures (rapid-lib catalogue/system.rs).
 // Every parameter has its own position, each alternative of a `|` group included.
 
-// TPReadNum / TPReadDnum (VAR TPAnswer, TPText \MaxTime \DIBreak \DIPassive \DOBreak
+// TPReadNum / TPReadDnum (INOUT TPAnswer, TPText \MaxTime \DIBreak \DIPassive \DOBreak
 // \DOPassive \PersBoolBreak \PersBoolPassive \BreakFlag).
 const READ_NUM_MAX_TIME: usize = 2;
 const READ_NUM_BREAK_FLAG: usize = 9;
-// TPReadFK (VAR TPAnswer, TPText, TPFK1..TPFK5 \MaxTime ... \BreakFlag).
+// TPReadFK (INOUT TPAnswer, TPText, TPFK1..TPFK5 \MaxTime ... \BreakFlag).
 const READ_FK_KEYS: std::ops::Range<usize> = 2..7;
 const READ_FK_MAX_TIME: usize = 7;
 const READ_FK_BREAK_FLAG: usize = 14;
@@ -66,7 +66,7 @@ const TUNE_MAX_TIME: usize = 9;
 const TUNE_BREAK_FLAG: usize = 16;
 
 // UIMsgBox (\Header, MsgLine1 \MsgLine2 \MsgLine3 \MsgLine4 \MsgLine5 \Wrap \Buttons
-// \Icon \Image \VAR Result \MaxTime \DIBreak \DIPassive \DOBreak \DOPassive
+// \Icon \Image \INOUT Result \MaxTime \DIBreak \DIPassive \DOBreak \DOPassive
 // \PersBoolBreak \PersBoolPassive \BreakFlag \UIActiveSignal).
 const MSG_BOX_HEADER: usize = 0;
 const MSG_BOX_LINES: std::ops::Range<usize> = 1..6;
@@ -84,7 +84,7 @@ const MESSAGE_BOX_DEFAULT_BTN: usize = 6;
 const MESSAGE_BOX_MAX_TIME: usize = 9;
 const MESSAGE_BOX_BREAK_FLAG: usize = 16;
 
-// UIListView (\VAR Result \Header, ListItems \Buttons | BtnArray \Icon \DefaultIndex
+// UIListView (\INOUT Result \Header, ListItems \Buttons | BtnArray \Icon \DefaultIndex
 // \MaxTime \DIBreak \DIPassive \DOBreak \DOPassive \PersBoolBreak \PersBoolPassive
 // \BreakFlag \UIActiveSignal).
 const LIST_RESULT: usize = 0;

@@ -232,3 +232,13 @@ fn tp_read_fk_still_takes_numbers_and_key_texts() {
     assert_eq!(lines("", body, &["1"]), ["k=1"]);
     assert_eq!(fails("", body, &["2"]), "ERR_ARGVALERR");
 }
+
+#[test]
+fn answers_go_into_persistents() {
+    // ABB's syntax: TPAnswer and \Result are "var or pers (INOUT)"; a PERS takes the answer.
+    let decls = format!("{LIST}\nPERS num nAnswer := 0;\nPERS dnum dAnswer := 0;\nPERS btnres rAnswer := 0;");
+    let body = "  TPReadNum nAnswer, \"n?\";\n  TPWrite \"num \" \\Num:=nAnswer;\n  TPReadDnum dAnswer, \"d?\";\n  TPWrite \"dnum \" \\Dnum:=dAnswer;\n  TPReadFK nAnswer, \"k?\", \"Go\", \"Stop\", stEmpty, stEmpty, stEmpty;\n  TPWrite \"key \" \\Num:=nAnswer;\n  UIMsgBox \"?\" \\Buttons:=btnOKCancel \\Result:=rAnswer;\n  TPWrite \"box \" \\Num:=rAnswer;\n  TPWrite \"item \" \\Num:=UIListView(\\Result:=rAnswer, items \\Buttons:=btnYesNo);\n  TPWrite \"list \" \\Num:=rAnswer;";
+    let answers = ["12", "4000000001", "stop", "cancel", "3;No"];
+    let expected = ["num 12", "dnum 4000000001", "key 2", "box 5", "item 3", "list 7"];
+    assert_eq!(lines(&decls, body, &answers), expected);
+}
