@@ -235,8 +235,18 @@ fn clear(data: &mut Vec<u8>, from: Option<f64>) -> Result<(), Fault> {
 
 /// CopyRawBytes: `count` bytes (default: all valid ones from `from_index`) from `from`
 /// at `from_index` into `to` at `to_index`; `to`'s valid length grows to cover them.
+/// Without `count`, a `from_index` just past the valid bytes copies nothing.
 fn copy(from: &[u8], from_index: f64, to: &mut Vec<u8>, to_index: f64, count: Option<f64>) -> Result<(), Fault> {
     let src = start_offset(from_index)?;
+    let dst = start_offset(to_index)?;
+    // uncertain: the manual does not say what FromIndex = RawBytesLen + 1 does without
+    // \NoOfBytes. Behavioural evidence: the ROS-Industrial driver copies the empty data
+    // part of a header-only reply this way (FromIndex 1 of an empty rawbytes) and works
+    // on real controllers, so it copies the zero bytes from there to the end and leaves
+    // ToRawData as it is. Indexes further out stay ERR_OUTOFBND.
+    if count.is_none() && src == from.len() {
+        return Ok(());
+    }
     if src >= from.len() {
         return Err((Err::OutOfBounds, format!("FromIndex {from_index} is past the {} valid bytes", from.len())));
     }
@@ -245,7 +255,6 @@ fn copy(from: &[u8], from_index: f64, to: &mut Vec<u8>, to_index: f64, count: Op
         Some(n) if n.fract() == 0.0 && n >= 0.0 => n as usize,
         Some(n) => return Err((Err::ArgValue, format!("NoOfBytes {n} is not a whole number of bytes"))),
     };
-    let dst = start_offset(to_index)?;
     let bytes = read_at(from, src, count)?.to_vec();
     write_at(to, dst, &bytes)
 }
@@ -291,8 +300,11 @@ fn chosen_layout(ctx: &Ctx<'_>, args: &[Value], first: usize, ascii_count: bool)
                 return Ok(Layout::Ascii(0));
             }
             let n = ctx.num(a)?;
-            if n.fract() != 0.0 || !(1.0..=MAX_STRING_CHARS as f64).contains(&n) {
-                return Err(ctx.error(Err::ArgValue, format!("\\ASCII:={n} is not a character count in 1..80")));
+            // uncertain: the manual gives 1..80 characters; \ASCII:=0 unpacks the empty
+            // string, as real clients rely on (abb_motion_program_exec sends zero-length
+            // strings, read with the length field as the count, and works on real robots).
+            if n.fract() != 0.0 || !(0.0..=MAX_STRING_CHARS as f64).contains(&n) {
+                return Err(ctx.error(Err::ArgValue, format!("\\ASCII:={n} is not a character count in 0..80")));
             }
             Ok(Layout::Ascii(n as usize))
         }
@@ -431,12 +443,20 @@ mod tests {
             (&[0xAB], Layout::Hex1, false, &n, Value::Num(171.0)),
             (&[0x41, 0x42], Layout::Ascii(2), false, &s, Value::Str("AB".into())),
             (&[0x41], Layout::Ascii(1), false, &n, Value::Num(65.0)),
+            (&[], Layout::Ascii(0), false, &s, Value::Str("".into())),
         ];
         for (bytes, layout, network, like, expected) in cases {
             assert_eq!(unpack_value(bytes, *layout, *network, like).unwrap(), *expected, "{bytes:?} {layout:?}");
         }
         // 0xFFFFFFFF does not fit a num exactly.
         assert_eq!(unpack_value(&[0xFF; 4], int(4.0), false, &n).unwrap_err().0, Err::ArgValue);
+        // No character into a byte is no byte.
+        assert_eq!(unpack_value(&[], Layout::Ascii(0), false, &n).unwrap_err().0, Err::ArgValue);
+        // Zero characters are read at any index up to just past the valid bytes.
+        let text = Value::Str("unchanged".into());
+        assert_eq!(unpack(&[0x20; 4], 5.0, Layout::Ascii(0), false, &text).unwrap(), Value::Str("".into()));
+        assert_eq!(unpack(&[], 1.0, Layout::Ascii(0), false, &text).unwrap(), Value::Str("".into()));
+        assert_eq!(unpack(&[0x20; 4], 6.0, Layout::Ascii(0), false, &text).unwrap_err().0, Err::OutOfBounds);
     }
 
     #[test]
@@ -477,7 +497,18 @@ mod tests {
         assert_eq!(to, [1, 20, 30, 4, 5, 6]);
         copy(&from, 3.0, &mut to, 6.0, None).unwrap();
         assert_eq!(to, [1, 20, 30, 4, 5, 30, 40]);
-        assert_eq!(copy(&from, 5.0, &mut to, 1.0, None).unwrap_err().0, Err::OutOfBounds);
+        // Just past the valid bytes: without \NoOfBytes nothing is copied, `to` is left
+        // as it is (also its length, ToIndex past its end); with it, or further out, the
+        // index is out of bounds.
+        copy(&from, 5.0, &mut to, 9.0, None).unwrap();
+        assert_eq!(to, [1, 20, 30, 4, 5, 30, 40]);
+        let mut empty_to = vec![7, 7, 7, 7];
+        copy(&[], 1.0, &mut empty_to, 5.0, None).unwrap();
+        assert_eq!(empty_to, [7, 7, 7, 7]);
+        assert_eq!(copy(&[], 2.0, &mut empty_to, 5.0, None).unwrap_err().0, Err::OutOfBounds);
+        assert_eq!(copy(&from, 6.0, &mut to, 1.0, None).unwrap_err().0, Err::OutOfBounds);
+        assert_eq!(copy(&from, 5.0, &mut to, 1.0, Some(1.0)).unwrap_err().0, Err::OutOfBounds);
+        assert_eq!(copy(&from, 5.0, &mut to, 1025.0, None).unwrap_err().0, Err::OutOfBounds);
         assert_eq!(copy(&from, 2.0, &mut to, 1.0, Some(4.0)).unwrap_err().0, Err::OutOfBounds);
         assert_eq!(copy(&from, 1.0, &mut to, 1023.0, None).unwrap_err().0, Err::OutOfBounds);
     }
