@@ -282,6 +282,7 @@ impl Collector {
             "EIO" => {
                 let eio = eio::read(&parsed);
                 self.config_findings(config_idx, &eio.errors);
+                self.config_warnings(config_idx, &eio.warnings);
                 self.predefined.extend(eio.signals.iter().map(|signal| PredefinedData {
                     name: signal.name.clone(),
                     type_name: signal.signal_type.rapid_type().to_owned(),
@@ -398,6 +399,14 @@ impl Collector {
         self.config_diagnostics.extend(errors.iter().map(|error| {
             let span = Span::new(error.span.start, error.span.end);
             Diagnostic::new(config_idx, Code::ConfigFile, span, error.message.clone())
+        }));
+    }
+
+    /// Settings the configuration accepts but `rapid run` does not simulate (W0702).
+    fn config_warnings(&mut self, config_idx: usize, warnings: &[CfgError]) {
+        self.config_diagnostics.extend(warnings.iter().map(|warning| {
+            let span = Span::new(warning.span.start, warning.span.end);
+            Diagnostic::new(config_idx, Code::ConfigNotSimulated, span, warning.message.clone())
         }));
     }
 

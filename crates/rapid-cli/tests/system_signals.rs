@@ -272,3 +272,83 @@ fn bad_system_signal_lines_are_refused_with_file_and_line() {
     assert_eq!(out.status.code(), Some(1));
     assert!(text(&out.stderr).contains("names task `T_NONE`, which the system does not have"), "{}", text(&out.stderr));
 }
+
+#[test]
+fn standard_signals_not_simulated_are_accepted_with_a_warning() {
+    let dir = scratch("not_simulated");
+    let module = "MODULE Main
+  PROC main()
+    WaitTime 2;
+    TPWrite \"done\";
+  ENDPROC
+  PROC rInterrupt()
+    TPWrite \"interrupt routine\";
+  ENDPROC
+ENDMODULE
+";
+    let eio = "EIO:CFG_1.0:6:0::
+#
+EIO_SIGNAL:
+
+      -Name \"diResetEstop\" -SignalType \"DI\"
+
+      -Name \"diSysReset\" -SignalType \"DI\"
+
+      -Name \"diInterrupt\" -SignalType \"DI\"
+
+      -Name \"doEmStop\" -SignalType \"DO\"
+
+      -Name \"doSimMode\" -SignalType \"DO\"
+
+      -Name \"aoTcpSpeed\" -SignalType \"AO\"
+#
+SYSSIG_IN:
+
+      -Signal \"diResetEstop\" -Action \"ResetEstop\"
+
+      -Signal \"diSysReset\" -Action \"SysReset\"
+
+      -Signal \"diInterrupt\" -Action \"Interrupt\" -Arg6 \"rInterrupt\"
+#
+SYSSIG_OUT:
+
+      -Status \"EmStop\" -Signal \"doEmStop\"
+
+      -Status \"SimMode\" -Signal \"doSimMode\"
+
+      -Status \"TCPSpeed\" -Signal \"aoTcpSpeed\"
+";
+    one_task_cell(&dir, module, eio);
+    // ResetEstop (no emergency stop to reset) and SimMode (0: never in simulated mode)
+    // are modelled; SysReset, Interrupt and TCPSpeed are accepted with a warning each.
+    let out = rapid_in(&dir, &["check", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stdout));
+    let stdout = text(&out.stdout);
+    let warnings: Vec<&str> = stdout.lines().filter(|l| l.starts_with("warning[W0702]")).collect();
+    assert_eq!(
+        warnings,
+        [
+            "warning[W0702]: system input `diSysReset`: action `SysReset` is accepted but not simulated (the input does nothing in `rapid run`)",
+            "warning[W0702]: system input `diInterrupt`: action `Interrupt` is accepted but not simulated (the input does nothing in `rapid run`)",
+            "warning[W0702]: system output `aoTcpSpeed`: status `TCPSpeed` is accepted but not simulated (the controller never sets the output)",
+        ],
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("EIO.cfg:21:") && stdout.contains("EIO.cfg:23:") && stdout.contains("EIO.cfg:31:"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("found 0 errors and 3 warnings"), "{stdout}");
+
+    // The inputs do nothing: the program runs on to its end at 2 s. The controller
+    // never sets the outputs (EmStop and SimMode stay 0; TCPSpeed is not simulated).
+    let stimulus = "at 0.5 set diResetEstop 1\nat 1 set diSysReset 1\nat 1.5 set diInterrupt 1\n";
+    fs::write(dir.join("plc.stim"), stimulus).expect("stimulus");
+    let out = rapid_in(&dir, &["run", "--stimulus", "plc.stim", "--io-log", "io.csv", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "done\n");
+    let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
+    assert_eq!(changes(&log, "doEmStop"), [], "{log}");
+    assert_eq!(changes(&log, "doSimMode"), [], "{log}");
+    assert_eq!(changes(&log, "aoTcpSpeed"), [], "{log}");
+}

@@ -154,6 +154,9 @@ pub struct Eio {
     pub sys_outputs: Vec<SysOutput>,
     /// What the view refuses (the parser's errors are in the file).
     pub errors: Vec<CfgError>,
+    /// What the view accepts but `rapid run` does not simulate (standard system input
+    /// actions and output statuses without a model).
+    pub warnings: Vec<CfgError>,
 }
 
 impl Eio {

@@ -142,12 +142,17 @@ impl Controller {
         self.ops.errors_seen = vec![false; self.tasks.len()];
         let Some(io) = self.io_system() else { return Ok(()) };
         let mut inputs = Vec::new();
-        for input in &eio.sys_inputs {
+        // An input that cannot operate the controller is left out: ResetEstop (a virtual
+        // run has no emergency stop to reset) and the actions not simulated (the
+        // configuration warned of them).
+        let operates = |action: SysAction| !matches!(action, SysAction::ResetEstop | SysAction::NotSimulated(_));
+        for input in eio.sys_inputs.iter().filter(|input| operates(input.action)) {
             let Some(id) = io.id(&input.signal) else { continue };
             inputs.push(SysInput { id, action: input.action, arg: input.arg1.clone() });
         }
         let mut outputs = Vec::new();
-        for output in &eio.sys_outputs {
+        // The statuses not simulated are never set (the configuration warned of them).
+        for output in eio.sys_outputs.iter().filter(|output| !matches!(output.status, SysStatus::NotSimulated(_))) {
             let Some(id) = io.id(&output.signal) else { continue };
             let task = match &output.task {
                 None => None,
@@ -472,6 +477,8 @@ impl Controller {
                 self.ops.outputs_stale = true;
             }
             SysAction::PpToMain => self.note("PP to Main by a system input is not run by `rapid run` yet".to_owned()),
+            // Left out when configured (configure_system_signals).
+            SysAction::ResetEstop | SysAction::NotSimulated(_) => {}
         }
     }
 
@@ -502,7 +509,11 @@ impl Controller {
                         None => self.ops.errors_shown.iter().any(|&e| e),
                     },
                     SysStatus::RunchOk => true,
-                    SysStatus::EmStop => false,
+                    // No emergency stop, and never in simulated mode (the Sim Mode input
+                    // is not simulated).
+                    SysStatus::EmStop | SysStatus::SimMode => false,
+                    // Left out when configured (configure_system_signals).
+                    SysStatus::NotSimulated(_) => false,
                 };
                 (o.id, if on { 1.0 } else { 0.0 })
             })

@@ -143,6 +143,7 @@ diagnostic_codes! {
 
     // System configuration (a backup's SYSPAR/*.cfg, read by rapid-cli).
     "E0701" Error   ConfigFile:                "a line of a .cfg configuration file that cannot be read, or a configuration the controller refuses";
+    "W0702" Warning ConfigNotSimulated:        "a standard configuration setting `rapid run` accepts but does not simulate (a system input action or output status)";
 }
 
 #[cfg(test)]

@@ -8,6 +8,11 @@
 //! *Technical reference manual – System parameters* (topic I/O System, types System
 //! Input and System Output) as we remember them; we could not confirm them from a
 //! public copy.
+//!
+//! Every standard RobotWare 6 action and status is accepted. Those `rapid run` does not
+//! simulate ([`SysAction::NotSimulated`], [`SysStatus::NotSimulated`]) are read with a
+//! warning rather than refused, so a real backup runs: such an input does nothing, such
+//! an output is never set by the controller.
 // uncertain: every action and status name below, and the arguments each takes.
 
 use std::ops::Range;
@@ -41,6 +46,11 @@ pub enum SysAction {
     ResetError,
     /// PP to Main without starting.
     PpToMain,
+    /// Reset the emergency stop: a virtual run has none, so there is nothing to reset.
+    ResetEstop,
+    /// A standard action `rapid run` does not simulate (its configuration spelling):
+    /// accepted with a warning, it does nothing.
+    NotSimulated(&'static str),
 }
 
 /// The `-Action` spellings, in EIO.cfg and ours.
@@ -57,6 +67,25 @@ const ACTIONS: &[(&str, SysAction)] = &[
     ("MotOnStart", SysAction::MotorOnStart),
     ("ResetError", SysAction::ResetError),
     ("PpToMain", SysAction::PpToMain),
+    ("ResetEstop", SysAction::ResetEstop),
+];
+
+/// Standard actions accepted but not simulated: System Restart, Interrupt (a routine
+/// run at the input, `-Arg6`), loading programs, backups, speed override, simulated
+/// mode, write access, energy saving, collision avoidance, limited speed.
+const NOT_SIMULATED_ACTIONS: &[&str] = &[
+    "SysReset",
+    "Interrupt",
+    "LoadStart",
+    "Load",
+    "Backup",
+    "DisableBackup",
+    "SetSpeedOverride",
+    "SimMode",
+    "WriteAccess",
+    "EnableEnergySaving",
+    "CollAvoid",
+    "LimitSpeed",
 ];
 
 /// What a system output shows (`-Status`).
@@ -81,6 +110,11 @@ pub enum SysStatus {
     RunchOk,
     /// Emergency stop: 0 (never pressed in a virtual run).
     EmStop,
+    /// Simulated mode (the Sim Mode input, not simulated): 0.
+    SimMode,
+    /// A standard status `rapid run` does not simulate (its configuration spelling):
+    /// accepted with a warning, the controller never sets the output.
+    NotSimulated(&'static str),
 }
 
 const STATUSES: &[(&str, SysStatus)] = &[
@@ -94,6 +128,33 @@ const STATUSES: &[(&str, SysStatus)] = &[
     ("Error", SysStatus::Error),
     ("RunchOk", SysStatus::RunchOk),
     ("EmStop", SysStatus::EmStop),
+    ("SimMode", SysStatus::SimMode),
+];
+
+/// Standard statuses accepted but not simulated, with the signal type each shows on
+/// (the TCP speeds are analog outputs).
+const NOT_SIMULATED_STATUSES: &[(&str, SignalType)] = &[
+    ("AbsAccActive", SignalType::Do),
+    ("BackupErr", SignalType::Do),
+    ("BackupInProgress", SignalType::Do),
+    ("CollAvoid", SignalType::Do),
+    ("CPUFanNotRunning", SignalType::Do),
+    ("EnergySavingBlocked", SignalType::Do),
+    ("LimitSpeed", SignalType::Do),
+    ("MechUnitActive", SignalType::Do),
+    ("MechUnitNotMoving", SignalType::Do),
+    ("MotSupOn", SignalType::Do),
+    ("MotSupTrigg", SignalType::Do),
+    ("PathReturnRegionError", SignalType::Do),
+    ("PFError", SignalType::Do),
+    ("ProdExecError", SignalType::Do),
+    ("RobotNotOnPath", SignalType::Do),
+    ("SimulatedIO", SignalType::Do),
+    ("SMBBatteryChargeLow", SignalType::Do),
+    ("TCPSpeed", SignalType::Ao),
+    ("TCPSpeedRef", SignalType::Ao),
+    ("TempWarning", SignalType::Do),
+    ("WriteAccess", SignalType::Do),
 ];
 
 /// One `SYSSIG_IN` instance.
@@ -118,25 +179,50 @@ pub struct SysOutput {
 
 /// The spelling of an action as the configuration writes it.
 pub fn action_name(action: SysAction) -> &'static str {
+    if let SysAction::NotSimulated(name) = action {
+        return name;
+    }
     ACTIONS.iter().find(|(_, a)| *a == action).map_or("?", |(n, _)| n)
 }
 
 /// The spelling of a status as the configuration writes it.
 pub fn status_name(status: SysStatus) -> &'static str {
+    if let SysStatus::NotSimulated(name) = status {
+        return name;
+    }
     STATUSES.iter().find(|(_, s)| *s == status).map_or("?", |(n, _)| n)
+}
+
+/// The action of an `-Action` value, ignoring case.
+fn action(text: &str) -> Option<SysAction> {
+    let simulated = ACTIONS.iter().find(|(n, _)| n.eq_ignore_ascii_case(text)).map(|(_, a)| *a);
+    simulated.or_else(|| {
+        NOT_SIMULATED_ACTIONS.iter().find(|n| n.eq_ignore_ascii_case(text)).map(|n| SysAction::NotSimulated(n))
+    })
+}
+
+/// The status of a `-Status` value, ignoring case, and the signal type it shows on.
+fn status(text: &str) -> Option<(SysStatus, SignalType)> {
+    let simulated = STATUSES.iter().find(|(n, _)| n.eq_ignore_ascii_case(text)).map(|(_, s)| (*s, SignalType::Do));
+    simulated.or_else(|| {
+        let (name, wanted) = NOT_SIMULATED_STATUSES.iter().find(|(n, _)| n.eq_ignore_ascii_case(text))?;
+        Some((SysStatus::NotSimulated(name), *wanted))
+    })
 }
 
 /// Reads the system inputs and outputs into `eio` (its signals read already).
 pub(super) fn read(file: &CfgFile, eio: &mut Eio) {
     let mut errors = Vec::new();
+    let mut warnings = Vec::new();
     for inst in file.instances("SYSSIG_IN") {
         let Some(signal) = checked_signal(inst, eio, SignalType::Di, "SYSSIG_IN", &mut errors) else { continue };
         let Some(text) = inst.value("Action") else {
             push(&mut errors, inst, None, format!("system input `{signal}` has no `-Action`"));
             continue;
         };
-        let Some(action) = ACTIONS.iter().find(|(n, _)| n.eq_ignore_ascii_case(text)).map(|(_, a)| *a) else {
-            let names: Vec<&str> = ACTIONS.iter().map(|(n, _)| *n).collect();
+        let Some(action) = action(text) else {
+            let names: Vec<&str> =
+                ACTIONS.iter().map(|(n, _)| *n).chain(NOT_SIMULATED_ACTIONS.iter().copied()).collect();
             let message = format!("system input `{signal}`: unknown action `{text}` (one of {})", names.join(", "));
             push(&mut errors, inst, value_span(inst, "Action"), message);
             continue;
@@ -156,16 +242,28 @@ pub(super) fn read(file: &CfgFile, eio: &mut Eio) {
             push(&mut errors, inst, value_span(inst, "Signal"), message);
             continue;
         }
+        if let SysAction::NotSimulated(name) = action {
+            let message = format!(
+                "system input `{signal}`: action `{name}` is accepted but not simulated \
+                 (the input does nothing in `rapid run`)"
+            );
+            push(&mut warnings, inst, value_span(inst, "Action"), message);
+        }
         eio.sys_inputs.push(SysInput { signal, action, arg1, line: inst.line });
     }
     for inst in file.instances("SYSSIG_OUT") {
-        let Some(signal) = checked_signal(inst, eio, SignalType::Do, "SYSSIG_OUT", &mut errors) else { continue };
+        // The status says which signal type the output must be (a DO but for the TCP
+        // speeds); an unknown status is reported against a DO.
+        let found = inst.value("Status").and_then(status);
+        let wanted = found.map_or(SignalType::Do, |(_, wanted)| wanted);
+        let Some(signal) = checked_signal(inst, eio, wanted, "SYSSIG_OUT", &mut errors) else { continue };
         let Some(text) = inst.value("Status") else {
             push(&mut errors, inst, None, format!("system output `{signal}` has no `-Status`"));
             continue;
         };
-        let Some(status) = STATUSES.iter().find(|(n, _)| n.eq_ignore_ascii_case(text)).map(|(_, s)| *s) else {
-            let names: Vec<&str> = STATUSES.iter().map(|(n, _)| *n).collect();
+        let Some((status, _)) = found else {
+            let names: Vec<&str> =
+                STATUSES.iter().map(|(n, _)| *n).chain(NOT_SIMULATED_STATUSES.iter().map(|(n, _)| *n)).collect();
             let message = format!("system output `{signal}`: unknown status `{text}` (one of {})", names.join(", "));
             push(&mut errors, inst, value_span(inst, "Status"), message);
             continue;
@@ -182,9 +280,17 @@ pub(super) fn read(file: &CfgFile, eio: &mut Eio) {
             push(&mut errors, inst, value_span(inst, "Signal"), message);
             continue;
         }
+        if let SysStatus::NotSimulated(name) = status {
+            let message = format!(
+                "system output `{signal}`: status `{name}` is accepted but not simulated \
+                 (the controller never sets the output)"
+            );
+            push(&mut warnings, inst, value_span(inst, "Status"), message);
+        }
         eio.sys_outputs.push(SysOutput { signal, status, task, line: inst.line });
     }
     eio.errors.append(&mut errors);
+    eio.warnings.append(&mut warnings);
 }
 
 /// The instance's `-Signal`, when it names a configured signal of type `wanted`.
@@ -205,15 +311,25 @@ fn checked_signal(
         return None;
     };
     if signal.signal_type != wanted {
+        let (found, wanted) = (upper(signal.signal_type.rapid_type()), upper(wanted.rapid_type()));
         let message = format!(
-            "{section} names `{name}`, a {} signal; it must be a {} signal",
-            upper(signal.signal_type.rapid_type()),
-            upper(wanted.rapid_type())
+            "{section} names `{name}`, {} {found} signal; it must be {} {wanted} signal",
+            article(&found),
+            article(&wanted)
         );
         push(errors, inst, span, message);
         return None;
     }
     Some(signal.name.clone())
+}
+
+/// `an` before AI and AO, `a` before the others.
+fn article(signal_type: &str) -> &'static str {
+    if signal_type.starts_with('A') {
+        "an"
+    } else {
+        "a"
+    }
 }
 
 /// `signaldi` → `DI`.
@@ -300,5 +416,47 @@ SYSSIG_OUT:
         assert!(eio.errors[1].message.contains("a DO signal; it must be a DI signal"));
         assert!(eio.errors[3].message.contains("a system input twice"));
         assert_eq!(eio.sys_inputs.len(), 1);
+    }
+
+    #[test]
+    fn standard_names_not_simulated_are_read_with_warnings() {
+        let text = format!(
+            "{SIGNALS}
+      -Name \"diReset\" -SignalType \"DI\"
+
+      -Name \"aoSpeed\" -SignalType \"AO\"
+#
+SYSSIG_IN:
+
+      -Signal \"diStart\" -Action \"resetestop\"
+
+      -Signal \"diStop\" -Action \"SysReset\"
+
+      -Signal \"diReset\" -Action \"Interrupt\" -Arg6 \"rInterrupt\"
+#
+SYSSIG_OUT:
+
+      -Status \"SimMode\" -Signal \"doCycleOn\"
+
+      -Status \"TCPSpeed\" -Signal \"aoSpeed\"
+
+      -Status \"TCPSpeed\" -Signal \"doExec\"
+"
+        );
+        let eio = read(&crate::parse(&text));
+        let inputs: Vec<SysAction> = eio.sys_inputs.iter().map(|i| i.action).collect();
+        let not_simulated = [SysAction::NotSimulated("SysReset"), SysAction::NotSimulated("Interrupt")];
+        assert_eq!(inputs, [SysAction::ResetEstop, not_simulated[0], not_simulated[1]]);
+        let outputs: Vec<SysStatus> = eio.sys_outputs.iter().map(|o| o.status).collect();
+        assert_eq!(outputs, [SysStatus::SimMode, SysStatus::NotSimulated("TCPSpeed")]);
+        // ResetEstop and SimMode are modelled; the others are read with a warning each.
+        let warned: Vec<u32> = eio.warnings.iter().map(|w| w.line).collect();
+        assert_eq!(warned, [21, 23, 29], "{:?}", eio.warnings);
+        assert!(eio.warnings[0].message.contains("action `SysReset` is accepted but not simulated"));
+        assert!(eio.warnings[2].message.contains("status `TCPSpeed` is accepted but not simulated"));
+        // The TCP speed is an analog output: on a DO it is refused.
+        let refused: Vec<u32> = eio.errors.iter().map(|e| e.line).collect();
+        assert_eq!(refused, [31], "{:?}", eio.errors);
+        assert!(eio.errors[0].message.contains("a DO signal; it must be an AO signal"), "{:?}", eio.errors);
     }
 }
