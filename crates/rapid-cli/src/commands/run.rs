@@ -146,7 +146,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
                 };
                 eprintln!("error: {}", unhandled.error);
                 eprintln!("  in routine {} at {path}:{line}:{column}", unhandled.routine);
-                eprintln!("  the program stopped (no ERROR handler took the error)");
+                eprintln!("  the program stopped (no ERROR handler handled the error)");
                 break ExitStatus::Failure;
             }
         }
@@ -216,7 +216,8 @@ pub(crate) fn log_stop(vm: &mut rapid_vm::Vm, task: &str, status: ExitStatus) {
 pub(crate) enum HookFailure {
     /// The configuration names a routine the task does not have.
     Missing(String),
-    Unhandled(rapid_vm::Unhandled),
+    /// An error no ERROR handler handled while the event routine (named) ran.
+    Unhandled(String, rapid_vm::Unhandled),
 }
 
 /// Runs the event routines of system event `shelf` configured for `task`.
@@ -237,7 +238,7 @@ pub(crate) fn run_hooks(
                     "task {task} has no procedure `{routine}` for its {shelf} event routine"
                 )))
             }
-            Err(unhandled) => return Err(HookFailure::Unhandled(unhandled)),
+            Err(unhandled) => return Err(HookFailure::Unhandled(routine.to_owned(), unhandled)),
         }
     }
     Ok(())
@@ -253,14 +254,15 @@ fn report_hook_failure(
             eprintln!("error: {message}");
             eprintln!("the system has errors; it was not run");
         }
-        HookFailure::Unhandled(unhandled) => {
+        HookFailure::Unhandled(routine, unhandled) => {
             let source = files.get(unhandled.file).or(loaded.vm.program_source(unhandled.file));
             let (path, line, column) = match source {
                 Some(input) => location(std::slice::from_ref(input), 0, unhandled.span.start),
                 None => location(&[], 0, 0),
             };
             eprintln!("error: {}", unhandled.error);
-            eprintln!("  in event routine {} at {path}:{line}:{column}", unhandled.routine);
+            eprintln!("  in routine {} at {path}:{line}:{column}", unhandled.routine);
+            eprintln!("  the event routine {routine} stopped (no ERROR handler handled the error)");
         }
     }
     Ok(ExitStatus::Failure)

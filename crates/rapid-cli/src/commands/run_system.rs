@@ -274,10 +274,14 @@ fn run_hooks(
             match controller.run_event_routine(idx, host, routine, event) {
                 Ok(_) => {}
                 Err(unhandled) => {
+                    let source = controller.tasks[idx].loaded.vm.program_source(unhandled.file);
+                    let (path, line, column) =
+                        single::location(source.map(std::slice::from_ref).unwrap_or(&[]), 0, unhandled.span.start);
+                    let raised = format!("raised in routine {} at {path}:{line}:{column}", unhandled.routine);
                     return Err(format!(
-                        "{} in the {shelf} event routine {} of task {name}",
-                        unhandled.error, unhandled.routine
-                    ))
+                        "{} in the {shelf} event routine {routine} of task {name}, {raised}",
+                        unhandled.error
+                    ));
                 }
             }
         }
@@ -420,7 +424,7 @@ fn report(controller: &Controller, tasks: &[LoadedTask], bound: Option<Bound>) -
         };
         eprintln!("error: {}", unhandled.error);
         eprintln!("  in task {}, routine {} at {path}:{line}:{column}", task.spec.name, unhandled.routine);
-        eprintln!("  the task stopped (no ERROR handler took the error)");
+        eprintln!("  the task stopped (no ERROR handler handled the error)");
         status = ExitStatus::Failure;
     }
     if let Some(stop) = &controller.system_stop {

@@ -4,7 +4,7 @@
 
 use std::rc::Rc;
 
-use super::{ActiveError, Exit, Frame, Unhandled, Vm, MAX_CALL_DEPTH, MAX_RETRIES};
+use super::{ActiveError, Exit, Frame, RaisedAt, Unhandled, Vm, MAX_CALL_DEPTH, MAX_RETRIES};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::events::EventKind;
@@ -364,17 +364,21 @@ impl Vm {
         self.error(Err::IllegalRaise, format!("RAISE {n}: user error numbers are 1..90"))
     }
 
-    /// Bare RAISE in an ERROR handler: the same error, raised at the call in the caller.
+    /// Bare RAISE in an ERROR handler: the same error, raised at the call in the caller;
+    /// this RAISE is where it was raised last. Only the system calls a trap, so out of a
+    /// trap it goes to the system error handler (§1.12).
     pub(super) fn re_raise(&mut self) -> Result<Option<Exit>, RapidError> {
         let Some(active) = self.frame_mut().active.take() else {
             return Err(RapidError::fatal("RAISE without a number outside an ERROR handler"));
         };
         let frame = self.frames.pop().expect("a running frame");
+        let raised_at = Self::raised_here(&frame);
         self.storage.stack.truncate(frame.base as usize);
-        if self.frames.is_empty() {
-            return Ok(Some(self.unhandled(active.error, &frame)));
+        if self.frames.is_empty() || frame.interrupted {
+            self.frames.clear();
+            return Ok(Some(Self::unhandled(active.error, &raised_at)));
         }
-        Err(active.error)
+        Ok(self.raise_from(active.error, raised_at))
     }
 
     pub(super) fn retry(&mut self) -> Result<Option<Exit>, RapidError> {
@@ -406,7 +410,8 @@ impl Vm {
         if let Some(active) = &frame.active {
             let mut error = active.error.clone();
             error.fatal = true;
-            return Err(error);
+            let raised_at = active.raised_at.clone();
+            return Ok(self.raise_from(error, raised_at));
         }
         if frame.code.is_func {
             return Err(self.error(Err::FuncNoReturn, format!("FUNC {} ended without RETURN", frame.code.name)));
@@ -417,6 +422,13 @@ impl Vm {
     /// Raises `error` at the top frame's current instruction: its ERROR handler takes
     /// it, or it propagates to the caller's call; at the top, the system error handler.
     pub(super) fn raise(&mut self, error: RapidError) -> Option<Exit> {
+        let raised_at = Self::raised_here(self.frames.last()?);
+        self.raise_from(error, raised_at)
+    }
+
+    /// `raise` of an error raised last at `raised_at`, which the system error handler
+    /// reports if no handler handles it (propagation to callers does not move it).
+    fn raise_from(&mut self, error: RapidError, raised_at: RaisedAt) -> Option<Exit> {
         loop {
             let frame = self.frames.last()?;
             let in_handler = frame.active.is_some() || frame.undoing;
@@ -440,15 +452,14 @@ impl Vm {
                     if frame.last_retry_stmt != Some(stmt.start) {
                         frame.retries = 0;
                     }
-                    frame.active = Some(Box::new(ActiveError { error, stmt, warning }));
+                    frame.active = Some(Box::new(ActiveError { error, stmt, warning, raised_at }));
                     frame.pc = handler_pc;
                     let keep = frame.base + frame.code.n_locals;
                     self.storage.stack.truncate(keep as usize);
                     return None;
                 }
                 _ if error.fatal || in_handler || self.frames.len() == 1 || frame.interrupted => {
-                    let frame = self.frames.last()?;
-                    let exit = self.unhandled(error, frame);
+                    let exit = Self::unhandled(error, &raised_at);
                     self.frames.clear();
                     return Some(exit);
                 }
@@ -473,14 +484,20 @@ impl Vm {
             })
     }
 
-    fn unhandled(&self, error: RapidError, frame: &Frame) -> Exit {
-        // The failing statement; at the end of an ERROR handler, the one that raised.
-        let span = frame
-            .code
-            .stmt_at(frame.pc)
-            .or_else(|| frame.active.as_ref().map(|a| a.stmt))
-            .map_or(frame.code.span, |s| s.span);
-        Exit::Unhandled(Unhandled { error, routine: frame.code.name.clone(), file: frame.code.file, span })
+    /// The statement at `frame`'s PC (the failing one, or a RAISE), or its routine.
+    fn raised_here(frame: &Frame) -> RaisedAt {
+        let span = frame.code.stmt_at(frame.pc).map_or(frame.code.span, |s| s.span);
+        RaisedAt { code: frame.code.clone(), span }
+    }
+
+    /// The system error handler's report: the error where it was raised last (§1.12:
+    /// the program pointer is put at the erroneous instruction).
+    // uncertain: the manual does not say where the PP goes for an error an ERROR handler
+    // passed on with RAISE; we take that RAISE, the instruction that raised it last
+    // (the failing statement's warning is in the event log already).
+    fn unhandled(error: RapidError, at: &RaisedAt) -> Exit {
+        let code = &at.code;
+        Exit::Unhandled(Unhandled { error, routine: code.name.clone(), file: code.file, span: at.span })
     }
 
     /// EXIT: runs the UNDO handlers of the call chain, innermost first, then ends.

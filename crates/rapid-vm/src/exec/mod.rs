@@ -60,14 +60,16 @@ pub enum Exit {
     Budget,
     /// A waiting instruction: advance the clock by this many seconds, then `run`.
     Wait(f64),
-    /// An error no handler took; the system error handler stops the program.
+    /// An error no ERROR handler handled; the system error handler stops the program.
     Unhandled(Unhandled),
     /// ExitCycle: the cycle ended (UNDO handlers ran); a continuous run would start
     /// main again, a single-cycle run stops.
     CycleEnded,
 }
 
-/// An error that reached the system error handler, with where it happened.
+/// An error that reached the system error handler, with where it was raised last: the
+/// failing statement (however deep in calls, traps or functions it was), or the RAISE
+/// of an ERROR handler that passed it on; `routine` is the routine holding it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Unhandled {
     pub error: RapidError,
@@ -81,8 +83,20 @@ pub struct Unhandled {
 struct ActiveError {
     error: RapidError,
     stmt: StmtRange,
+    /// Where the error was raised last, for the system error handler if this handler
+    /// ends without handling it.
+    raised_at: RaisedAt,
     /// The event-log warning a handled error leaves (§1.12), until SkipWarn drops it.
     warning: Option<u64>,
+}
+
+/// Where an error was raised last: the statement that failed, or the RAISE of an
+/// ERROR handler that passed the error on. An error that goes up to a caller without
+/// being handled keeps it; the system error handler reports it (§1.12).
+#[derive(Debug, Clone)]
+struct RaisedAt {
+    code: Rc<Code>,
+    span: rapid_syntax::Span,
 }
 
 /// One program task's interpreter.
