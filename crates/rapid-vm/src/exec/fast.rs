@@ -464,10 +464,13 @@ impl Vm {
                             if let Some(value) = result {
                                 self.storage.stack.push(value);
                             }
-                            if self.resources.spy.is_active() || self.resources.interrupts.active() {
-                                // SpyStart, or an interrupt ordered: from the next
-                                // instruction on, the run looks at every statement (the
-                                // log, interrupts to take), which the fast loop skips.
+                            let watched = self.resources.interrupts.active() || self.resources.robot.hold_until.is_some();
+                            if self.resources.spy.is_active() || watched {
+                                // SpyStart, an interrupt ordered, or a wait for the robot
+                                // owed (StartMove in a trap restarts the move the routine
+                                // it interrupted waits for): from the next instruction on,
+                                // the run looks at every statement (the log, interrupts to
+                                // take, the wait to resume), which the fast loop skips.
                                 self.frame_mut().pc = pc + 1;
                                 break Fast::Called(Ok(None));
                             }
