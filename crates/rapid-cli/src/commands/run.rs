@@ -121,8 +121,14 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
                 break ExitStatus::Success;
             }
             Exit::Done | Exit::CycleEnded => break ExitStatus::Success,
-            Exit::Budget => {}
-            Exit::Wait(seconds) => {
+            // A whole slice computed without waiting (a loop polling a flag a trap sets):
+            // the clock moves on by the instructions' nominal time, as the system's
+            // scheduler moves it, so timers come and --max-time bounds the loop.
+            Exit::Budget | Exit::Wait(_) => {
+                let seconds = match exit {
+                    Exit::Wait(seconds) => seconds,
+                    _ => SLICE as f64 * rapid_controller::schedule::INSTRUCTION_TIME,
+                };
                 loaded.vm.time += seconds;
                 if let Some(max) = args.max_time {
                     if loaded.vm.time > max {

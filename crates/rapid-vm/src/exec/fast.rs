@@ -464,7 +464,8 @@ impl Vm {
                             if let Some(value) = result {
                                 self.storage.stack.push(value);
                             }
-                            let watched = self.resources.interrupts.active() || self.resources.robot.hold_until.is_some();
+                            let watched =
+                                self.resources.interrupts.active() || self.resources.robot.hold_until.is_some();
                             if self.resources.spy.is_active() || watched {
                                 // SpyStart, an interrupt ordered, or a wait for the robot
                                 // owed (StartMove in a trap restarts the move the routine

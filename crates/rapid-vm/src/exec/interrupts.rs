@@ -194,9 +194,12 @@ impl Vm {
         }
         let Some(top) = self.frames.last() else { return };
         // Between instructions: at a statement's start, or at the routine's end, where a
-        // last move's wait for the robot is held (its traps run there too).
+        // last move's wait for the robot is held (its traps run there too), or between
+        // two polls of WaitUntil, which the traps' data may end (§1.11: traps run during
+        // wait instructions).
         let at_statement = top.code.stmt_at(top.pc).is_some_and(|s| s.start == top.pc)
-            || matches!(top.code.instrs.get(top.pc as usize), Some(crate::ir::Instr::FellOffEnd));
+            || matches!(top.code.instrs.get(top.pc as usize), Some(crate::ir::Instr::FellOffEnd))
+            || matches!(top.code.instrs.get((top.pc as usize).wrapping_sub(1)), Some(crate::ir::Instr::WaitPop));
         if !at_statement || top.undoing || self.exiting {
             return;
         }
