@@ -37,6 +37,13 @@ pub(crate) struct RunArgs {
     #[arg(long, value_name = "SECONDS")]
     pub(crate) max_time: Option<f64>,
 
+    /// Run mode: the number of cycles to run. 1 (the default) is cycle mode: the end of
+    /// the entry routine, or ExitCycle, ends the run. More is continuous mode: each
+    /// starts the next cycle; 0 runs on until the program stops itself (Stop, EXIT) or
+    /// --max-time / --max-steps ends it.
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    pub(crate) cycles: u64,
+
     /// Wait in wall-clock time (WaitTime really waits).
     #[arg(long)]
     pub(crate) realtime: bool,

@@ -94,6 +94,9 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
             return report_hook_failure(failure, &loaded, &inputs.modules);
         }
     }
+    let mut cycles_run = 0u64;
+    // The instructions executed when the clock was last charged for computing.
+    let mut charged = loaded.vm.steps;
     let status = loop {
         // Defence in depth: an interpreter bug must not take the terminal down with a
         // panic trace; it is reported as what it is.
@@ -120,22 +123,37 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
                 }
                 break ExitStatus::Success;
             }
-            Exit::Done | Exit::CycleEnded => break ExitStatus::Success,
-            // A whole slice computed without waiting (a loop polling a flag a trap sets):
-            // the clock moves on by the instructions' nominal time, as the system's
-            // scheduler moves it, so timers come and --max-time bounds the loop.
+            Exit::Done | Exit::CycleEnded => {
+                // Continuous run mode: the next cycle starts at the entry routine, the
+                // data keeping its values.
+                cycles_run += 1;
+                if args.cycles != 0 && cycles_run >= args.cycles {
+                    break ExitStatus::Success;
+                }
+                let steps = loaded.vm.steps;
+                loaded.vm.time += computed(&mut charged, steps);
+                let entry = loaded.entry;
+                loaded.vm.start_routine(entry);
+                if past_max_time(loaded.vm.time, args, &mut host) {
+                    break ExitStatus::Failure;
+                }
+            }
+            // Computing without waiting (a whole slice of a loop polling a flag a trap
+            // sets): the clock moves on by the instructions' nominal time, as the system's
+            // scheduler moves it, so timers come and --max-time bounds the loop. What is
+            // computed before a wait takes no time (the hand-worked times stay exact).
             Exit::Budget | Exit::Wait(_) => {
+                let steps = loaded.vm.steps;
                 let seconds = match exit {
-                    Exit::Wait(seconds) => seconds,
-                    _ => SLICE as f64 * rapid_controller::schedule::INSTRUCTION_TIME,
+                    Exit::Wait(seconds) => {
+                        charged = steps;
+                        seconds
+                    }
+                    _ => computed(&mut charged, steps),
                 };
                 loaded.vm.time += seconds;
-                if let Some(max) = args.max_time {
-                    if loaded.vm.time > max {
-                        host.flush();
-                        eprintln!("error: stopped at {max} s of controller time (--max-time); the program did not end");
-                        break ExitStatus::Failure;
-                    }
+                if past_max_time(loaded.vm.time, args, &mut host) {
+                    break ExitStatus::Failure;
                 }
                 if args.realtime {
                     host.flush();
@@ -473,4 +491,24 @@ pub(crate) fn write_io_log(io: Option<&rapid_io::IoSystem>, path: &std::path::Pa
         }
     }
     crate::save::write_new(path, csv.as_bytes())
+}
+
+/// The controller time the instructions run since `charged` took (`steps` now), which
+/// are charged from here on.
+fn computed(charged: &mut u64, steps: u64) -> f64 {
+    let seconds = steps.saturating_sub(*charged) as f64 * rapid_controller::schedule::INSTRUCTION_TIME;
+    *charged = steps;
+    seconds
+}
+
+/// Whether the clock is past `--max-time` (then the run says so).
+fn past_max_time(time: f64, args: &RunArgs, host: &mut StdoutHost<'_>) -> bool {
+    match args.max_time {
+        Some(max) if time > max => {
+            host.flush();
+            eprintln!("error: stopped at {max} s of controller time (--max-time); the program did not end");
+            true
+        }
+        _ => false,
+    }
 }

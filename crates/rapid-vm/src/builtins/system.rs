@@ -57,8 +57,12 @@ pub(super) fn stop(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, R
     Ok(None)
 }
 
-/// `ExitCycle`: ends the current cycle; the program pointer goes back to main.
+/// `ExitCycle`: ends the current cycle; the program pointer goes back to main. The
+/// robot's movement stops and its paths are cleared; variables keep their values. In
+/// continuous run mode the next cycle follows (`rapid run --cycles`), in cycle mode the
+/// run ends.
 pub(super) fn exit_cycle(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
+    super::motion::abandon_paths(ctx)?;
     ctx.stop = super::StopKind::ExitCycle;
     Ok(None)
 }

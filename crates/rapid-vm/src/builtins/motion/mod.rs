@@ -39,6 +39,7 @@ mod units;
 pub mod zones;
 
 pub(crate) use moves::{apply_due_events, motion_error};
+pub(crate) use pause::abandon_paths;
 pub(crate) use settings::set_payload;
 pub(crate) use tracking::stop_following_other_tasks;
 pub(crate) use trigg::{poll as poll_triggers, program_stopped};

@@ -336,6 +336,21 @@ pub(crate) fn clear_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     Ok(None)
 }
 
+/// ExitCycle in a motion task: the robot stops where it is and every path, on both
+/// path levels, is cleared (as StopMove, ClearPath and StartMove would, with the stored
+/// base path dropped), so the next cycle starts from where the robot stands.
+// uncertain: the manual's "on-going robot movements stop" taken as an immediate stop,
+// as StopMove's.
+pub(crate) fn abandon_paths(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
+    if crate::builtins::tasking::my_task(ctx).is_some_and(|t| !t.motion) {
+        return Ok(());
+    }
+    ctx.resources.robot.stored = None;
+    stop_move(ctx, &[])?;
+    clear_path(ctx, &[])?;
+    restart(ctx)
+}
+
 /// `PathLevel()`: 1 on the base path, 2 after StorePath (until RestoPath).
 pub(crate) fn path_level(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     Ok(Some(Value::Num(if ctx.resources.robot.stored.is_some() { 2.0 } else { 1.0 })))
