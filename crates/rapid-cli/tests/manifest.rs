@@ -367,3 +367,33 @@ fn each_motion_task_moves_the_robot_model_it_names() {
     lines.sort();
     assert_eq!(lines, ["T_ROB1 ROB_1[374,0,630]", "T_ROB2 ROB_2[1030,0,1260]"]);
 }
+
+#[test]
+fn a_task_using_a_motion_tasks_unit_group_reads_its_robot() {
+    // T_ROB1 moves axis 1 to 10°, axis 5 to 40°. T_MON is no motion task; with
+    // `mechanical_unit_group = "rob1"` (SYS.cfg's -UseMechanicalUnitGroup; rob1 is the
+    // first motion task's) its CJointT reads T_ROB1's robot, as a ROS-style state server
+    // does; T_OFF, without a group, reads no robot (9E9).
+    let dir = scratch("unit_group");
+    let rob = "MODULE Rob\n  PERS bool moved := FALSE;\n  PROC main()\n    \
+               MoveAbsJ [[10,0,0,0,40,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    moved := TRUE;\n    \
+               WaitTime 1;\n  ENDPROC\nENDMODULE\n";
+    let mon = |who: &str| {
+        format!(
+            "MODULE Mon\n  PERS bool moved := FALSE;\n  PROC mon_main()\n    VAR jointtarget jt;\n    \
+             WaitUntil moved;\n    jt := CJointT();\n    \
+             TPWrite \"{who} axis 1 \" \\Num:=jt.robax.rax_1;\n  ENDPROC\nENDMODULE\n"
+        )
+    };
+    let (on, off) = (mon("mon"), mon("off").replace("Mon", "Off"));
+    let toml = "[[task]]\nname = \"T_ROB1\"\nmodules = [\"Rob.mod\"]\n\n\
+                [[task]]\nname = \"T_MON\"\ntype = \"NORMAL\"\nentry = \"mon_main\"\nmechanical_unit_group = \"rob1\"\n\
+                modules = [\"mon/Mon.mod\"]\n\n\
+                [[task]]\nname = \"T_OFF\"\ntype = \"NORMAL\"\nentry = \"mon_main\"\nmodules = [\"off/Off.mod\"]\n";
+    write(&dir, &[("rapid.toml", toml), ("Rob.mod", rob), ("mon/Mon.mod", &on), ("off/Off.mod", &off)]);
+    let out = rapid_in(&dir, &["run", "--quiet", "."]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let mut lines: Vec<String> = text(&out.stdout).lines().map(str::to_owned).collect();
+    lines.sort();
+    assert_eq!(lines, ["mon axis 1 10", "off axis 1 9E+09"]);
+}

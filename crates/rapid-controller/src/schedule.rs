@@ -118,6 +118,7 @@ impl Controller {
                 active: true,
                 executing: true,
                 rmq: spec.rmq,
+                robot_of: spec.robot_of.clone(),
             })
             .collect();
         let mut shared = Shared { tasking: SharedTasking::new(infos), ..Shared::default() };

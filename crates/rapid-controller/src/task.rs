@@ -66,6 +66,10 @@ pub struct TaskSpec {
     pub robot: bool,
     /// Its RAPID Message Queue (`-RmqType` …).
     pub rmq: rapid_config::sys::Rmq,
+    /// A task that is no motion task but uses a motion task's mechanical unit group
+    /// (SYS.cfg `-UseMechanicalUnitGroup`): that motion task, whose robot its CJointT
+    /// and CRobT read.
+    pub robot_of: Option<String>,
     /// Which of its files are modules installed shared (their variables are one
     /// object for every task, except TASK VAR).
     pub shared_files: Vec<usize>,

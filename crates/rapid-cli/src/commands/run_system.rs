@@ -289,6 +289,21 @@ fn run_hooks(
     Ok(())
 }
 
+/// The motion task whose mechanical unit group a task that is no motion task uses
+/// (`-UseMechanicalUnitGroup`). A motion task without the attribute uses `rob1`, `rob2`,
+/// … by its place among the motion tasks.
+// uncertain: that default; RobotWare's own configurations name the group of each
+// motion task.
+fn robot_of(sys: &Sys, task: &rapid_config::sys::Task) -> Option<String> {
+    let group = task.mechanical_unit_group.as_deref().filter(|_| !task.motion_task)?;
+    let mut motion = sys.tasks.iter().filter(|t| t.motion_task).enumerate();
+    let uses = |(n, t): &(usize, &rapid_config::sys::Task)| match t.mechanical_unit_group.as_deref() {
+        Some(own) => own.eq_ignore_ascii_case(group),
+        None => format!("rob{}", n + 1).eq_ignore_ascii_case(group),
+    };
+    motion.find(uses).map(|(_, t)| t.name.clone())
+}
+
 /// The tasks of SYS.cfg in configuration order.
 fn task_specs(sys: &Sys) -> Result<Vec<TaskSpec>, String> {
     sys.tasks
@@ -314,6 +329,7 @@ fn task_specs(sys: &Sys) -> Result<Vec<TaskSpec>, String> {
                 robot: task.motion_task,
                 rmq: task.rmq,
                 shared_files: Vec::new(),
+                robot_of: robot_of(sys, task),
             })
         })
         .collect()

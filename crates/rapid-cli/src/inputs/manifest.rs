@@ -118,6 +118,9 @@ struct RawTask {
     orientation: Option<Spanned<Vec<f64>>>,
     /// A model's name, or whether the task moves a robot at all (`false`).
     robot: Option<Spanned<toml::Value>>,
+    /// SYS.cfg's `-UseMechanicalUnitGroup`: a task that is no motion task reads the robot
+    /// of the motion task with this group (`rob1` is the first motion task's).
+    mechanical_unit_group: Option<String>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -319,7 +322,7 @@ impl Reader<'_> {
             entry,
             trust_level,
             motion_task,
-            mechanical_unit_group: None,
+            mechanical_unit_group: raw.mechanical_unit_group.clone(),
             hidden: false,
             foreground: raw.foreground.as_ref().map(|f| f.get_ref().clone()).filter(|f| !f.is_empty()),
             rmq,

@@ -42,6 +42,9 @@ pub struct TaskInfo {
     pub executing: bool,
     /// Its RAPID Message Queue (none by default).
     pub rmq: rapid_config::sys::Rmq,
+    /// A task that is no motion task: the motion task whose mechanical unit group it
+    /// uses, whose robot it reads (CJointT, CRobT).
+    pub robot_of: Option<String>,
 }
 
 /// A sync point of WaitSyncTask: which tasks have arrived in the current round.
@@ -125,6 +128,7 @@ impl Default for SharedTasking {
             active: true,
             executing: true,
             rmq,
+            robot_of: None,
         };
         SharedTasking::new(vec![t_rob1])
     }

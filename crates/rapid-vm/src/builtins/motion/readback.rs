@@ -28,7 +28,7 @@ struct OtherRobot {
 /// (`Some(None)`: wait for the reply).
 fn robot_of(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Option<OtherRobot>>, RapidError> {
     use super::super::tasking::{ask, other_task, Reply, Request};
-    let Some(task) = other_task(ctx, args, 0)? else { return Ok(None) };
+    let Some(task) = other_task(ctx, args, 0)?.or_else(|| linked_motion_task(ctx)) else { return Ok(None) };
     Ok(Some(match ask(ctx, Request::Robot { task }) {
         Some(Reply::Robot(joints, robot)) => {
             let (frames, extax) = *robot;
@@ -38,6 +38,13 @@ fn robot_of(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Option<OtherRobo
         Some(_) => return Err(RapidError::fatal("the task has no robot")),
         None => None,
     }))
+}
+
+/// A task that is no motion task reads the robot of the motion task whose mechanical
+/// unit group it uses (SYS.cfg `-UseMechanicalUnitGroup`), as if named by `\TaskName`.
+fn linked_motion_task(ctx: &Ctx<'_>) -> Option<usize> {
+    let name = super::super::tasking::my_task(ctx)?.robot_of.as_deref()?;
+    ctx.resources.tasking.shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(name))
 }
 
 /// The frames a read-back uses: the given tool and work object, else the active ones.
