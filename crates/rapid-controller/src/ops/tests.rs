@@ -33,6 +33,7 @@ fn with_signals(program: &str, inputs: &str) -> Controller {
         robot: true,
         rmq: rapid_config::sys::Rmq::default(),
         shared_files: Vec::new(),
+        robot_of: None,
     };
     let io = (!names.is_empty()).then(|| {
         let signals: String = names.iter().map(|n| format!("\n      -Name \"{n}\" -SignalType \"DI\"\n")).collect();
