@@ -372,8 +372,11 @@ fn each_motion_task_moves_the_robot_model_it_names() {
 fn a_task_using_a_motion_tasks_unit_group_reads_its_robot() {
     // T_ROB1 moves axis 1 to 10°, axis 5 to 40°. T_MON is no motion task; with
     // `mechanical_unit_group = "rob1"` (SYS.cfg's -UseMechanicalUnitGroup; rob1 is the
-    // first motion task's) its CJointT reads T_ROB1's robot, as a ROS-style state server
-    // does; T_OFF, without a group, reads no robot (9E9).
+    // first motion task's) its CJointT, CRobT and CPos read T_ROB1's robot, as a
+    // ROS-style state server does; T_OFF, without a group, reads no robot (9E9). tool0
+    // there: the wrist centre (302, 0, 630) at zero, the flange 72 mm on along the tool's
+    // z axis, tilted 40° down by axis 5: x = 302 + 72·cos 40° = 357.155, z = 630 −
+    // 72·sin 40° = 583.719; axis 1 turns it 10°: (351.729, 62.019, 583.719).
     let dir = scratch("unit_group");
     let rob = "MODULE Rob\n  PERS bool moved := FALSE;\n  PROC main()\n    \
                MoveAbsJ [[10,0,0,0,40,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    moved := TRUE;\n    \
@@ -381,8 +384,11 @@ fn a_task_using_a_motion_tasks_unit_group_reads_its_robot() {
     let mon = |who: &str| {
         format!(
             "MODULE Mon\n  PERS bool moved := FALSE;\n  PROC mon_main()\n    VAR jointtarget jt;\n    \
-             WaitUntil moved;\n    jt := CJointT();\n    \
-             TPWrite \"{who} axis 1 \" \\Num:=jt.robax.rax_1;\n  ENDPROC\nENDMODULE\n"
+             VAR robtarget rt;\n    WaitUntil moved;\n    jt := CJointT();\n    \
+             TPWrite \"{who} axis 1 \" \\Num:=jt.robax.rax_1;\n    \
+             IF \"{who}\" = \"mon\" THEN\n      TPWrite \"mon at \" \\Pos:=CPos(\\Tool:=tool0);\n      \
+             rt := CRobT(\\Tool:=tool0);\n      TPWrite \"mon robtarget at \" \\Pos:=rt.trans;\n    ENDIF\n  \
+             ENDPROC\nENDMODULE\n"
         )
     };
     let (on, off) = (mon("mon"), mon("off").replace("Mon", "Off"));
@@ -395,5 +401,13 @@ fn a_task_using_a_motion_tasks_unit_group_reads_its_robot() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     let mut lines: Vec<String> = text(&out.stdout).lines().map(str::to_owned).collect();
     lines.sort();
-    assert_eq!(lines, ["mon axis 1 10", "off axis 1 9E+09"]);
+    assert_eq!(
+        lines,
+        [
+            "mon at [351.729,62.0193,583.719]",
+            "mon axis 1 10",
+            "mon robtarget at [351.729,62.0193,583.719]",
+            "off axis 1 9E+09"
+        ]
+    );
 }

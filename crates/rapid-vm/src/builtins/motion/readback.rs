@@ -224,6 +224,15 @@ pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `CPos([\Tool] [\WObj])`: the TCP's position now.
 pub(crate) fn c_pos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    if linked_motion_task(ctx).is_some() {
+        // The robot of the motion task whose unit group this task uses: CRobT's position.
+        let arg = |i: usize| args.get(i).cloned().unwrap_or(Value::Absent);
+        let target = c_rob_t(ctx, &[Value::Absent, Value::Absent, arg(0), arg(1)])?;
+        return Ok(match target {
+            Some(Value::Record(record)) => record.fields.first().cloned(),
+            other => other,
+        });
+    }
     super::tracking::refresh(ctx);
     require_tcp(ctx, None, "CPos")?;
     let chain = read_frames(ctx, args.first(), args.get(1))?;
