@@ -26,7 +26,8 @@ impl Checker<'_> {
                 Ty::ERROR
             }
             None => {
-                self.diag(Code::UndefinedFunction, span, format!("undefined function `{name_text}`"));
+                let note = crate::options::note_for(&name_text);
+                self.diag(Code::UndefinedFunction, span, format!("undefined function `{name_text}`{note}"));
                 self.type_args_leniently(arena, args);
                 Ty::ERROR
             }
@@ -64,7 +65,8 @@ impl Checker<'_> {
             }
             None => {
                 let message = format!(
-                    "no procedure `{text}` is defined in this task; calling it raises ERR_REFUNKPRC at run time"
+                    "no procedure `{text}` is defined in this task; calling it raises ERR_REFUNKPRC at run time{}",
+                    crate::options::note_for(&text)
                 );
                 self.diag(Code::UndefinedProcedure, name.span, message);
                 self.type_args_leniently(arena, args);

@@ -363,7 +363,8 @@ impl Checker<'_> {
             }
             _ if !builtin => {
                 let text = self.text(name.span);
-                self.diag(Code::UndefinedType, name.span, format!("undefined data type `{text}`"));
+                let note = crate::options::note_for(&text);
+                self.diag(Code::UndefinedType, name.span, format!("undefined data type `{text}`{note}"));
                 types::ERROR
             }
             _ => types::ERROR,

@@ -17,6 +17,7 @@ mod consteval;
 mod decls;
 mod diagnostic;
 mod expr;
+mod options;
 pub mod symbols;
 mod syntax;
 pub mod types;
