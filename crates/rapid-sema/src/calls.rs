@@ -66,7 +66,7 @@ impl Checker<'_> {
             None => {
                 let message = format!(
                     "no procedure `{text}` is defined in this task; calling it raises ERR_REFUNKPRC at run time{}",
-                    crate::options::note_for(&text)
+                    crate::options::note_for(text)
                 );
                 self.diag(Code::UndefinedProcedure, name.span, message);
                 self.type_args_leniently(arena, args);

@@ -363,7 +363,7 @@ impl Checker<'_> {
             }
             _ if !builtin => {
                 let text = self.text(name.span);
-                let note = crate::options::note_for(&text);
+                let note = crate::options::note_for(text);
                 self.diag(Code::UndefinedType, name.span, format!("undefined data type `{text}`{note}"));
                 types::ERROR
             }
