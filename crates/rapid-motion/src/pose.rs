@@ -35,8 +35,16 @@ pub fn trans(pose: &Pose) -> [f64; 3] {
 /// The rotation of a pose as RAPID's `[q1, q2, q3, q4]`, scalar first, with q1 ≥ 0
 /// (the sign the controller shows; both signs are the same rotation).
 pub fn orient(pose: &Pose) -> [f64; 4] {
+    // Below this a component is rounding noise (a half turn's q1 is 0 up to ~1e-17).
+    const NOISE: f64 = 1e-12;
     let q = pose.rotation.quaternion();
-    let sign = if q.w < 0.0 { -1.0 } else { 1.0 };
+    // q1 ≥ 0; for a half turn (q1 = 0) the first non-zero of q2…q4 is positive, so one
+    // orientation reads back one way whatever path led to it.
+    // uncertain: the controller's sign for half turns (the usual matrix-to-quaternion
+    // conversion makes the largest component positive; for a half turn about one
+    // axis, as a tool pointing down, the two agree).
+    let lead = [q.w, q.i, q.j, q.k].into_iter().find(|c| c.abs() > NOISE).unwrap_or(q.w);
+    let sign = if lead < 0.0 { -1.0 } else { 1.0 };
     [sign * q.w, sign * q.i, sign * q.j, sign * q.k]
 }
 
@@ -51,6 +59,19 @@ mod tests {
         let o = orient(&p);
         assert!((o[0] - 0.5f64.sqrt()).abs() < 1e-6 && (o[2] - 0.5f64.sqrt()).abs() < 1e-6);
         assert_eq!(trans(&p), [374.0, 0.0, 630.0]);
+    }
+
+    #[test]
+    fn a_half_turn_reads_back_one_way() {
+        // 180° about y, whichever sign the quaternion arrived with (q1 a rounding
+        // error either side of 0): [0, 0, 1, 0].
+        for (w, y) in [(1e-17, 1.0), (-1e-17, 1.0), (1e-17, -1.0), (-1e-17, -1.0)] {
+            let p = Isometry3::from_parts(
+                Translation3::identity(),
+                UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(w, 0.0, y, 0.0)),
+            );
+            assert_eq!(orient(&p).map(|c| if c.abs() < 1e-12 { 0.0 } else { c }), [0.0, 0.0, 1.0, 0.0]);
+        }
     }
 
     #[test]

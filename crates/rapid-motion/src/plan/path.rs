@@ -41,8 +41,10 @@ pub(crate) enum OriMode {
     Fixed,
     /// In the path frame, which turns with the circle's tangent by `sweep`
     /// radians about the circle's `normal` (`\PathFrame`, the default): the tool's
-    /// orientation relative to the path goes from the start's to the end's.
-    PathFrame { normal: nalgebra::Unit<Vector3<f64>>, sweep: f64 },
+    /// orientation relative to the path goes from the start's to the end's, with
+    /// `turns` whole turns about the normal added on the way (−1, 0 or 1): the way round
+    /// the circle point's orientation picks (`path_frame`).
+    PathFrame { normal: nalgebra::Unit<Vector3<f64>>, sweep: f64, turns: f64 },
     /// Through the circle point's orientation `via`, reached at fraction `at`
     /// (`\CirPointOri`).
     ViaPoint { via: UnitQuaternion<f64>, at: f64 },
@@ -62,16 +64,39 @@ impl OriLerp {
         OriLerp { from, to, mode: OriMode::Fixed }
     }
 
+    /// `\PathFrame` on a circle turning `sweep` about `normal`, passing the circle point
+    /// (orientation `via`) at fraction `at`. Relative to the path the orientation goes the
+    /// short way from the start's to the end's; on a circle of more than half a turn that
+    /// way and the path's own turn can add up to a whole turn of the tool. The circle
+    /// point's orientation picks the way round (motion.md: it "only picks the direction
+    /// of reorientation"): the one of −1, 0 or 1 added turns that passes nearest to it.
+    // uncertain: the controller's exact rule; a tool that keeps its orientation (start,
+    // circle point and end alike) keeps it all the way round, as on the controller.
+    pub(crate) fn path_frame(
+        fixed: OriLerp,
+        normal: nalgebra::Unit<Vector3<f64>>,
+        sweep: f64,
+        via: (&UnitQuaternion<f64>, f64),
+    ) -> OriLerp {
+        let with = |turns: f64| OriLerp { mode: OriMode::PathFrame { normal, sweep, turns }, ..fixed };
+        let miss = |turns: f64| with(turns).at(via.1).angle_to(via.0);
+        // Ties keep no added turn.
+        let turns =
+            [0.0, -1.0, 1.0].into_iter().fold(0.0, |best, t| if miss(t) < miss(best) - 1e-9 { t } else { best });
+        with(turns)
+    }
+
     pub(crate) fn at(&self, fraction: f64) -> UnitQuaternion<f64> {
         let f = if fraction.is_finite() { fraction.clamp(0.0, 1.0) } else { 0.0 };
         match self.mode {
             OriMode::Fixed | OriMode::Wrist { .. } => slerp(&self.from, &self.to, f),
-            OriMode::PathFrame { normal, sweep } => {
-                // R(f) = Rn(sweep·f) · slerp(R0, Rn(−sweep)·R1, f): at f = 1 the
-                // turns cancel, and a tool that turns with the path keeps its
+            OriMode::PathFrame { normal, sweep, turns } => {
+                // R(f) = Rn((sweep + 2π·turns)·f) · slerp(R0, Rn(−sweep)·R1, f): at f = 1
+                // the turns cancel, and a tool that turns with the path keeps its
                 // orientation relative to the tangent all the way.
                 let turn = |angle: f64| UnitQuaternion::from_axis_angle(&normal, angle);
-                turn(sweep * f) * slerp(&self.from, &(turn(-sweep) * self.to), f)
+                let around = sweep + std::f64::consts::TAU * turns;
+                turn(around * f) * slerp(&self.from, &(turn(-sweep) * self.to), f)
             }
             OriMode::ViaPoint { via, at } if at > 0.0 && at < 1.0 => {
                 if f <= at {
@@ -353,7 +378,7 @@ mod tests {
             Geometry::arc(Vector3::new(r, 0.0, 0.0), Vector3::new(h, h, 0.0), Vector3::new(0.0, r, 0.0), fixed)
                 .unwrap();
         let (normal, sweep) = arc.arc_turn().unwrap();
-        arc.set_ori(OriLerp { mode: OriMode::PathFrame { normal, sweep }, ..fixed });
+        arc.set_ori(OriLerp { mode: OriMode::PathFrame { normal, sweep, turns: 0.0 }, ..fixed });
         arc
     }
 
@@ -388,6 +413,31 @@ mod tests {
         // \ObjectFrame would be half of Rx(90°): a different orientation.
         let object = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), deg(45.0));
         assert!(ori_at(&arc, 0.5).angle_to(&object) > deg(10.0));
+    }
+
+    #[test]
+    fn path_frame_on_a_long_circle_goes_the_way_the_circle_point_shows() {
+        // A 270° circle about z with the tool pointing down all the way (start, circle
+        // point and end alike). Relative to the path the end is Rz(−270°) = Rz(90°) from
+        // the start: the short way turns +90° while the path turns +270°, a whole turn of
+        // the tool. The circle point (pointing down, like the others) picks −1 added
+        // turn: the tool keeps its orientation everywhere.
+        let deg = f64::to_radians;
+        let down = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), deg(180.0));
+        let normal = Vector3::z_axis();
+        let fixed = OriLerp::fixed(down, down);
+        let ori = OriLerp::path_frame(fixed, normal, deg(270.0), (&down, 0.5));
+        for k in 0..=8 {
+            let f = k as f64 / 8.0;
+            assert!(ori.at(f).angle_to(&down) < 1e-9, "at {f}: {}°", ori.at(f).angle_to(&down).to_degrees());
+        }
+        // A tool that turns with the path (the circle point turned 135°, half way)
+        // keeps no added turn: 135° about z half way, the path's own turn.
+        let turning = UnitQuaternion::from_axis_angle(&normal, deg(270.0)) * down;
+        let via = UnitQuaternion::from_axis_angle(&normal, deg(135.0)) * down;
+        let ori = OriLerp::path_frame(OriLerp::fixed(down, turning), normal, deg(270.0), (&via, 0.5));
+        assert!(ori.at(0.5).angle_to(&via) < 1e-9);
+        assert!(matches!(ori.mode, OriMode::PathFrame { turns, .. } if turns == 0.0));
     }
 
     #[test]

@@ -57,8 +57,8 @@ fn point(v: &nalgebra::Vector3<f64>) -> nalgebra::Point3<f64> {
 fn turned(ori: &OriLerp, by: &Pose) -> OriLerp {
     let r = by.rotation;
     let mode = match ori.mode {
-        OriMode::PathFrame { normal, sweep } => {
-            OriMode::PathFrame { normal: nalgebra::Unit::new_normalize(r * normal.into_inner()), sweep }
+        OriMode::PathFrame { normal, sweep, turns } => {
+            OriMode::PathFrame { normal: nalgebra::Unit::new_normalize(r * normal.into_inner()), sweep, turns }
         }
         OriMode::ViaPoint { via, at } => OriMode::ViaPoint { via: r * via, at },
         mode => mode,

@@ -157,9 +157,12 @@ pub(crate) fn prepare<K: Kinematics + ?Sized>(
 fn circle_orientation(geom: &mut Geometry, fixed: OriLerp, via: &Pose, mode: CircleOri) {
     let ori = match mode {
         CircleOri::ObjectFrame => return,
-        CircleOri::PathFrame => match geom.arc_turn() {
-            Some((normal, sweep)) => OriLerp { mode: OriMode::PathFrame { normal, sweep }, ..fixed },
-            None => return,
+        CircleOri::PathFrame => match (geom.arc_turn(), geom.arc_fraction(&via.translation.vector)) {
+            (Some((normal, sweep)), Some(at)) => OriLerp::path_frame(fixed, normal, sweep, (&via.rotation, at)),
+            (Some((normal, sweep)), None) => {
+                OriLerp { mode: OriMode::PathFrame { normal, sweep, turns: 0.0 }, ..fixed }
+            }
+            _ => return,
         },
         CircleOri::CirPointOri => {
             let Some(at) = geom.arc_fraction(&via.translation.vector) else { return };
