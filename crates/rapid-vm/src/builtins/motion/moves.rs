@@ -470,8 +470,9 @@ pub(super) fn linear_move(
     Ok(result)
 }
 
-/// ConfL\On: a linear move keeps the configuration it starts in; it must end in the
-/// programmed one (cf1, cf4, cf6 within a quadrant, cfx equal), else execution stops.
+/// ConfL\On: a linear or circular move keeps the configuration it starts in; it must
+/// end in the programmed one (cf1, cf4, cf6 within a quadrant, cfx equal), else
+/// execution stops.
 // uncertain: the controller also watches axes 1, 4, 6 along the path; only the end is
 // checked here, with the same neighbours ConfJ accepts.
 fn check_conf_l(ctx: &Ctx<'_>, target: &Value) -> Result<(), RapidError> {
@@ -486,7 +487,7 @@ fn check_conf_l(ctx: &Ctx<'_>, target: &Value) -> Result<(), RapidError> {
         return Ok(());
     }
     Err(RapidError::fatal(format!(
-        "50080 Position not compatible: the linear move ends in configuration {reached:?}, not the programmed {programmed:?} (ConfL\\On; ConfL\\Off follows the path's)"
+        "50080 Position not compatible: the move ends in configuration {reached:?}, not the programmed {programmed:?} (ConfL\\On; ConfL\\Off follows the path's)"
     )))
 }
 /// `MoveC`: a circle through CirPoint to ToPoint.
@@ -506,8 +507,11 @@ pub(super) fn circular_move(
     check_sing_mode(ctx)?;
     let chain = frames(ctx, args, layout, true)?;
     let via = tcp_in_base(ctx, &chain, &ctx.value(&args[layout.cir.unwrap_or(1)])?)?;
-    let to = tcp_in_base(ctx, &chain, &ctx.value(&args[layout.to])?)?;
-    go_with(ctx, args, layout, Target::Circular { via, to }, chain, events)
+    let target = ctx.value(&args[layout.to])?;
+    let to = tcp_in_base(ctx, &chain, &target)?;
+    let result = go_with(ctx, args, layout, Target::Circular { via, to }, chain, events)?;
+    check_conf_l(ctx, &target)?;
+    Ok(result)
 }
 
 /// The output a Move*DO/AO/GO sets: its signal and value (a group's `\Dvalue` too).
