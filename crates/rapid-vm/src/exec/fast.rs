@@ -465,7 +465,7 @@ impl Vm {
                                 self.storage.stack.push(value);
                             }
                             let watched =
-                                self.resources.interrupts.active() || self.resources.robot.hold_until.is_some();
+                                self.resources.interrupts.active() || self.resources.robot.program_hold().is_some();
                             if self.resources.spy.is_active() || watched {
                                 // SpyStart, an interrupt ordered, or a wait for the robot
                                 // owed (StartMove in a trap restarts the move the routine

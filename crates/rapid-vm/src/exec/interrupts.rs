@@ -162,7 +162,7 @@ impl Vm {
     /// moves (§1.11); the rest of the wait follows here, before the next instruction.
     /// None once the robot's time has come, or while a trap runs.
     pub(super) fn motion_hold(&mut self) -> Option<f64> {
-        let until = self.resources.robot.hold_until?;
+        let until = self.resources.robot.program_hold()?;
         if until <= self.time {
             self.resources.robot.hold_until = None;
             return None;

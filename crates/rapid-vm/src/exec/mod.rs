@@ -308,7 +308,7 @@ impl Vm {
             // While the program owes the robot the rest of a move's wait (a trap cut
             // it short), it runs one instruction at a time too, so the wait resumes as
             // soon as the trap has returned (the fast loop would run on past it).
-            let watched = self.resources.interrupts.active() || self.resources.robot.hold_until.is_some();
+            let watched = self.resources.interrupts.active() || self.resources.robot.program_hold().is_some();
             let outcome = if self.resources.spy.is_active() || watched {
                 // The execution log sees every statement, and interrupts are looked for
                 // before every instruction: one instruction at a time.

@@ -241,6 +241,16 @@ pub(super) fn drop_from(robot: &mut RobotState, t: f64) {
     }
 }
 
+impl RobotState {
+    /// Until when the program owes the robot the rest of a move's wait: its own, or,
+    /// while path level 2 runs, the stored base path's (a trap that stored the path of
+    /// the move the routine waits for and returned without RestoPath and StartMove: the
+    /// routine waits on, §2.3, until the base path is restored, restarted and done).
+    pub fn program_hold(&self) -> Option<f64> {
+        self.hold_until.or_else(|| self.stored.as_ref().and_then(|s| s.hold_until))
+    }
+}
+
 impl Stored {
     /// Whether the base path was stopped by StopMove (the stop-move state).
     pub(super) fn stop_move_act(&self) -> bool {
