@@ -165,3 +165,28 @@ fn the_path_recorder_backs_out_and_returns_in_a_trap() {
     assert_eq!(code, Some(0), "{err}\n{module}");
     assert_eq!(out, "back at 0.655 x 300\nforward at 1.010 x 329.5\narrived after 1.77 at level 1\n");
 }
+
+#[test]
+fn the_trace_names_the_level_2_moves_by_their_own_instructions() {
+    // The conformance program motion_path_store_two_traps: main's 100 mm MoveL (line 40)
+    // is stopped at 0.3 s by a trap whose MoveL up (line 19) takes 0.56 s; a later trap
+    // moves down (line 26, 0.56 s), restores and restarts the path, whose rest takes
+    // 1.06 − 0.3 = 0.76 s. At 4 ms a row, the trace names them in that order: 75, 140,
+    // 140 and 190 rows (main's move was named all along before).
+    let dir = scratch("trace_level_2");
+    let program = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/conformance/motion_path_store_two_traps.mod");
+    let trace = dir.join("trace.csv");
+    let out = rapid_in(&dir, &["run", "--quiet", "--trace", trace.to_str().unwrap(), program.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let text = fs::read_to_string(&trace).expect("trace");
+    let mut runs: Vec<(String, usize)> = Vec::new();
+    for line in text.lines().skip(1) {
+        let place = line.rsplit(':').next().unwrap_or("").to_owned();
+        match runs.last_mut() {
+            Some((last, n)) if *last == place => *n += 1,
+            _ => runs.push((place, 1)),
+        }
+    }
+    let lines: Vec<(&str, usize)> = runs.iter().skip(1).map(|(l, n)| (l.as_str(), *n)).collect();
+    assert_eq!(lines, [("40", 75), ("19", 140), ("26", 140), ("40", 190)]);
+}

@@ -753,3 +753,45 @@ impl RobotState {
         }
     }
 }
+
+/// The trace's facts of a stored base path (StorePath): those of its moves not yet
+/// final (waiting in the stored planner), and those of its recorded moves from where it
+/// stopped.
+#[derive(Debug, Clone, Default)]
+pub(super) struct FactsAside {
+    pending: VecDeque<Option<MoveFacts>>,
+    rest: Vec<MoveFacts>,
+}
+
+impl RobotState {
+    /// StorePath at `since`: the base path's facts from there on are set aside with it,
+    /// so the moves of path level 2 are traced with their own instructions.
+    pub(super) fn set_facts_aside(&mut self, since: f64) -> FactsAside {
+        let pending = std::mem::take(&mut self.pending_facts);
+        let facts = &mut self.recorded_facts;
+        let at = facts.iter().position(|f| f.start >= since).unwrap_or(facts.len());
+        let mut rest = facts.split_off(at);
+        if let Some(cut) = facts.last_mut().filter(|f| f.end > since) {
+            // The move under way: done up to `since`, the rest after level 2.
+            let mut rest_of_it = cut.clone();
+            rest_of_it.start = since;
+            cut.end = since;
+            rest.insert(0, rest_of_it);
+        }
+        FactsAside { pending, rest }
+    }
+
+    /// RestoPath: the base path's facts come back after level 2's, `shift` later (as
+    /// its moves, which waited that long from `since`).
+    pub(super) fn restore_facts(&mut self, aside: FactsAside, since: f64, shift: f64) {
+        self.pending_facts = aside.pending;
+        for mut facts in aside.rest {
+            facts.start += shift;
+            facts.end += shift;
+            if facts.passed > since {
+                facts.passed += shift;
+            }
+            self.recorded_facts.push(facts);
+        }
+    }
+}

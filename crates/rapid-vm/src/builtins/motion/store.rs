@@ -41,6 +41,8 @@ pub struct Stored {
     hold_until: Option<f64>,
     /// Where the external axes stopped with the base path.
     eax: Option<rapid_motion::external::Eax>,
+    /// The trace's facts of the base path's moves from `since` on.
+    facts: super::robot::FactsAside,
 }
 
 /// `StorePath [\KeepSync]`: the base path is set aside; path level 2 begins. In
@@ -98,6 +100,7 @@ pub(crate) fn store_path(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         motion_end: std::mem::replace(&mut robot.motion_end, since),
         hold_until: robot.hold_until.take(),
         eax: eax_here,
+        facts: robot.set_facts_aside(since),
     };
     robot.stored = Some(Box::new(stored));
     if let Some(mode) = ctx.resources.tasking.sync_move.as_mut() {
@@ -184,6 +187,7 @@ pub(crate) fn resto_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
         due,
         motion_end,
         hold_until,
+        facts,
         ..
     } = *stored;
     let shift = (level2_end - since).max(0.0);
@@ -210,6 +214,7 @@ pub(crate) fn resto_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     if let Some(recorded) = &mut robot.recorded {
         recorded.extend(later(recorded_rest));
     }
+    robot.restore_facts(facts, since, shift);
     planner.delay_from(since, shift);
     robot.planner = planner;
     robot.events = events;
