@@ -24,6 +24,7 @@ MODULE motion_unit_mech
         VAR bool oktodeact := TRUE;
         TPWrite "RobName " + RobName();
         TPWrite "MaxRobSpeed " \Num:=MaxRobSpeed();
+        TPWrite "MaxRobReorientSpeed " \Num:=MaxRobReorientSpeed();
         WHILE GetNextMechUnit(listno, name \TCPRob:=tcprob \NoOfAxes:=noofaxes \MecTaskNo:=mectaskno \MotPlanNo:=motplanno \Active:=active \DriveModule:=drivemodule \OKToDeact:=oktodeact) DO
             TPWrite name + " next " + NumToStr(listno, 0) + " axes " + NumToStr(noofaxes, 0) + " task " + NumToStr(mectaskno, 0) + " planner " + NumToStr(motplanno, 0) + " drive " + NumToStr(drivemodule, 0);
             TPWrite "tcp robot " \Bool:=tcprob;

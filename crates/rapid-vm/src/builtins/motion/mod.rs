@@ -159,6 +159,7 @@ pub(super) static ENTRIES: Entries = &[
     ("WZFree", zones::wz_free),
     ("RobName", units::rob_name),
     ("MaxRobSpeed", units::max_rob_speed),
+    ("MaxRobReorientSpeed", units::max_rob_reorient_speed),
     ("GetNextMechUnit", units::get_next_mech_unit),
     ("IsMechUnitActive", units::is_mech_unit_active),
     ("ActUnit", units::act_unit),

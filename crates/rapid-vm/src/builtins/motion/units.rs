@@ -142,6 +142,15 @@ pub(crate) fn max_rob_speed(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     Ok(Some(Value::Num(ctx.resources.robot.model.tcp_speed() as f32)))
 }
 
+/// `MaxRobReorientSpeed()`: the highest reorientation speed of the TCP (°/s): the v_ori
+/// of vmax, the highest the planner is ever given.
+// uncertain: ABB publishes no robot's reorientation maximum; this is the one the
+// simulated robot reorients at most, so a program that builds its speeddata from it
+// moves as fast as it can here.
+pub(crate) fn max_rob_reorient_speed(_ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+    Ok(Some(Value::Num(rapid_motion::plan::SpeedData::VMAX.v_ori as f32)))
+}
+
 /// `GetNextMechUnit(ListNumber, UnitName [\MecRef] [\TCPRob] [\NoOfAxes] [\MecTaskNo]
 /// [\MotPlanNo] [\Active] [\DriveModule] [\OKToDeact])`: the unit at ListNumber (from
 /// 0: the robots, then this task's external units) with its data, ListNumber moved on
