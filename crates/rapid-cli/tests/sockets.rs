@@ -496,3 +496,45 @@ ENDMODULE
     assert_eq!(peers.join().expect("client thread"), vec!["one1", "two2"]);
     assert_eq!(host.lines, vec!["served one", "served two", "server 4"]);
 }
+
+#[test]
+fn a_line_written_before_a_socket_wait_is_out_at_once() {
+    // TPWrite shows its line when it runs, as the pendant does: a program that then
+    // waits on a socket (a server that is stopped rather than ending) has its output out
+    // already. The Rust peer accepts the connection, reads the program's first line from
+    // its stdout while the program waits in SocketReceive, then sends the data it waits
+    // for.
+    use std::io::BufRead;
+    let (listener, port) = local_listener();
+    let dir = std::env::temp_dir().join(format!("rapid-sockets-flush-{}", std::process::id()));
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("temp dir");
+    let module = "MODULE flush\n  VAR socketdev s;\n  VAR string got;\n  PROC main()\n    \
+                  TPWrite \"connecting\";\n    SocketCreate s;\n    SocketConnect s, \"127.0.0.1\", PORT;\n    \
+                  SocketReceive s \\Str:=got \\Time:=30;\n    TPWrite \"got \" + got;\n    SocketClose s;\n  \
+                  ENDPROC\nENDMODULE\n";
+    let path = dir.join("flush.mod");
+    fs::write(&path, module.replace("PORT", &port.to_string())).expect("module");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .args(["run", "--quiet"])
+        .arg(&path)
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .expect("run rapid");
+    let stdout = child.stdout.take().expect("stdout");
+    let (tx, rx) = std::sync::mpsc::channel();
+    let reader = thread::spawn(move || {
+        for line in std::io::BufReader::new(stdout).lines().map_while(Result::ok) {
+            let _ = tx.send(line);
+        }
+    });
+    let mut stream = accept(&listener);
+    let first = rx.recv_timeout(PEER_TIMEOUT);
+    // Whatever came, let the program end before asserting.
+    stream.write_all(b"hello").expect("send");
+    let status = child.wait().expect("wait");
+    reader.join().expect("reader");
+    assert_eq!(first.as_deref(), Ok("connecting"), "the line came only when the program ended");
+    assert_eq!(rx.recv().as_deref(), Ok("got hello"));
+    assert!(status.success());
+}

@@ -405,6 +405,9 @@ impl Host for StdoutHost<'_> {
         if !self.broken && writeln!(self.out, "{line}").is_err() {
             self.broken = true;
         }
+        // The pendant shows a line when it is written: a program stopped by the user
+        // (a server waiting on a socket, a continuous run) has its output out already.
+        self.flush();
     }
 
     fn tp_answer(&mut self, _prompt: &str) -> Option<String> {
