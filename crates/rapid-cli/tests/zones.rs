@@ -73,3 +73,29 @@ fn wzdoset_before_sets_its_output_a_braking_distance_early() {
         assert!((after - expected).abs() <= 0.0055, "{signal} = {value} after {after} s, expected {expected}: {log}");
     }
 }
+
+#[test]
+fn a_zone_on_a_move_to_a_fly_by_point_switches_as_the_robot_passes() {
+    let dir = scratch("fly_by");
+    // A 300 mm MoveL along y at v100 to a fly-by point (z10), then on. The slab
+    // y = -60 … -40 lies on its straight part. The TCP ramps up for 0.01 s over 0.5 mm and
+    // then cruises: in at y = -60, t = 0.01 + 89.5 / 100 = 0.905 s; out past y = -40,
+    // t = 0.01 + 109.5 / 100 = 1.105 s (to the 4 ms path resolution). The program gives
+    // the next move only near the fly-by point, about 2.9 s in; the output must not wait
+    // for it (it changed then, in and out at once).
+    let program = "MODULE S\n  CONST robtarget p0 := [[300, -150, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];\n  \
+                   VAR shapedata slab;\n  VAR wztemporary wzIn;\n  \
+                   PROC main()\n    MoveJ p0, v1000, fine, tool0;\n    \
+                   WZBoxDef \\Inside, slab, [250, -60, 350], [350, -40, 450];\n    \
+                   WZDOSet \\Temp, wzIn \\Inside, slab, doInside, 1;\n    SetDO doStart, 1;\n    \
+                   MoveL Offs(p0, 0, 300, 0), v100, z10, tool0;\n    \
+                   MoveL Offs(p0, 0, 300, -50), v100, fine, tool0;\n  ENDPROC\nENDMODULE\n";
+    let out = run(&dir, program, &["doStart", "doInside"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
+    let start = change_time(&log, "doStart", "1");
+    for (value, expected) in [("1", 0.905), ("0", 1.105)] {
+        let after = change_time(&log, "doInside", value) - start;
+        assert!((after - expected).abs() <= 0.0055, "doInside = {value} after {after} s, expected {expected}: {log}");
+    }
+}

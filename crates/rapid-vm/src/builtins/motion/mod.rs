@@ -36,6 +36,7 @@ mod track;
 mod tracking;
 mod trigg;
 mod units;
+mod zone_watch;
 pub mod zones;
 
 pub(crate) use moves::{apply_due_events, motion_error};

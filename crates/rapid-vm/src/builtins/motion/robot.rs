@@ -179,7 +179,9 @@ pub struct RobotState {
     /// with whether the robot was last inside each.
     pub shapes: Vec<super::zones::ShapeData>,
     pub zones: Vec<Option<super::zones::Zone>>,
-    zone_inside: Vec<bool>,
+    pub(super) zone_inside: Vec<bool>,
+    /// The time up to which the world zones were supervised along the path.
+    pub(super) zones_until: f64,
     /// When the robot would enter a WZLimSup zone (execution stops).
     pub zone_violation: Option<f64>,
     /// The axes in independent mode (IndAMove …).
@@ -245,6 +247,7 @@ impl RobotState {
             shapes: Vec::new(),
             zones: Vec::new(),
             zone_inside: Vec::new(),
+            zones_until: 0.0,
             zone_violation: None,
             independent: Default::default(),
             stored: None,
@@ -321,6 +324,7 @@ impl RobotState {
         self.publish_tail();
         self.corr.pending = corrected;
         self.place_early_events();
+        self.supervise_provisional();
         self.moves += 1;
         if conc {
             // A stop point needs no successor to be planned: the robot is on its way.
@@ -413,7 +417,7 @@ impl RobotState {
         }
         self.trigg.on_move(&self.kin, &planned, &specials, &mut self.due);
         self.corr.on_final(&self.kin, &planned);
-        self.supervise_zones(&planned);
+        self.supervise_final(&planned);
         self.motion_end = self.motion_end.max(planned.end);
         if let Some(recorded) = &mut self.recorded {
             recorded.push(planned.clone());
@@ -553,6 +557,7 @@ impl RobotState {
     /// The robot stops where it is at time `t` (a search hit with a stop): the move it
     /// is on ends there and nothing planned after it is kept. Returns the joints.
     pub fn stop_at(&mut self, t: f64) -> Joints {
+        self.zones_stop_at(t);
         while self.ahead.back().is_some_and(|m| m.start > t && self.ahead.len() > 1) {
             self.ahead.pop_back();
         }
@@ -614,6 +619,9 @@ impl RobotState {
     /// planned after `since` comes that much later; the move it was on is split into
     /// the part done, the standstill and the rest.
     pub fn resume_after(&mut self, since: f64, dt: f64) {
+        if self.zones_until > since {
+            self.zones_until += dt;
+        }
         let kin = &self.kin;
         let pause = |moves: Vec<PlannedMove>| -> Vec<PlannedMove> {
             let mut out = Vec::with_capacity(moves.len() + 2);
@@ -664,93 +672,6 @@ impl RobotState {
         self.trigg.delay_from(since, dt);
         self.corr.delay_from(since, dt);
         self.republish();
-    }
-
-    /// Whether the robot at `joints` (TCP of the active tool) is in zone `i`.
-    fn in_zone(&self, i: usize, joints: &Joints, eax: Option<&[f64; 6]>, tcp: &nalgebra::Vector3<f64>) -> bool {
-        self.zones.get(i).copied().flatten().is_some_and(|z| z.shape.contains(tcp, joints, eax))
-    }
-
-    /// The TCP deceleration moves are planned with: the model's, scaled by AccSet,
-    /// capped by PathAccLim/WorldAccLim, mm/s².
-    fn braking_decel(&self) -> f64 {
-        let settings = self.planner.settings();
-        let nominal = rapid_motion::plan::AccelLimits::nominal(&self.model.max_speeds).tcp * settings.acc_factor();
-        settings.tcp_dec_max.filter(|cap| cap.is_finite() && *cap > 0.0).map_or(nominal, |cap| nominal.min(cap))
-    }
-
-    /// A zone just activated (or enabled): its output follows where the robot is now.
-    pub fn start_zone(&mut self, i: usize, now: f64) {
-        let joints = self.joints_at(now);
-        // In the world: on a track, where the track has the robot's base.
-        let tcp = (self.track_base_at(now) * self.kin.forward(&joints) * self.active.tframe).translation.vector;
-        let eax = self.extax_of(self.eax_at(now));
-        let inside = self.in_zone(i, &joints, eax.as_ref(), &tcp);
-        if self.zone_inside.len() <= i {
-            self.zone_inside.resize(i + 1, false);
-        }
-        self.zone_inside[i] = inside;
-        self.zone_event(i, inside, now);
-    }
-
-    /// What zone `i` does when the robot is found in it (or out of it) at `time`: a
-    /// WZDOSet output follows, a WZLimSup zone entered stops the robot.
-    fn zone_event(&mut self, i: usize, inside: bool, time: f64) {
-        match self.zones[i].map(|z| z.kind) {
-            Some(super::zones::ZoneKind::DoSet { signal, value, .. }) => {
-                self.due.push((time, Action::Set { signal, value: if inside { value } else { 1.0 - value } }));
-            }
-            Some(super::zones::ZoneKind::LimSup) if inside => {
-                self.zone_violation.get_or_insert(time);
-            }
-            _ => {}
-        }
-    }
-
-    /// World zones along a final move, at the 4 ms path resolution: outputs where the
-    /// TCP (or the axes) go in or out, a WZLimSup zone entered.
-    fn supervise_zones(&mut self, planned: &PlannedMove) {
-        let active: Vec<usize> = (0..self.zones.len()).filter(|&i| self.zones[i].is_some_and(|z| z.enabled)).collect();
-        if active.is_empty() {
-            return;
-        }
-        if self.zone_inside.len() < self.zones.len() {
-            self.zone_inside.resize(self.zones.len(), false);
-        }
-        let mut crossings = Vec::new();
-        // Where the robot is: following a moving work object, carried with it.
-        let samples: Vec<_> = planned
-            .samples(&self.kin, rapid_motion::plan::DEFAULT_STEP)
-            .map(|sample| self.carried_sample(planned, sample))
-            .collect();
-        let before = |z: &super::zones::Zone| matches!(z.kind, super::zones::ZoneKind::DoSet { before: true, .. });
-        let braking = match active.iter().any(|&i| self.zones[i].is_some_and(|z| before(&z))) {
-            true => super::zones::braking_places(&samples, self.braking_decel()),
-            false => Vec::new(),
-        };
-        for (k, sample) in samples.iter().enumerate() {
-            for &i in &active {
-                // A `\Before` zone looks at where the robot would stand if it braked now.
-                let at = match braking.get(k) {
-                    Some(&j) if self.zones[i].is_some_and(|z| before(&z)) => &samples[j],
-                    _ => sample,
-                };
-                let base = planned.eax_at(at.time).map_or_else(|| self.track_base_at(at.time), |e| self.track_base(&e));
-                let tcp = base * at.tcp;
-                let eax = self.extax_of(planned.eax_at(at.time).map(|mut e| {
-                    self.independent.apply_eax(&mut e, at.time);
-                    e
-                }));
-                let inside = self.in_zone(i, &at.joints, eax.as_ref(), &tcp.translation.vector);
-                if inside != self.zone_inside[i] {
-                    self.zone_inside[i] = inside;
-                    crossings.push((i, inside, sample.time));
-                }
-            }
-        }
-        for (i, inside, time) in crossings {
-            self.zone_event(i, inside, time);
-        }
     }
 }
 
