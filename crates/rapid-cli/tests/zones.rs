@@ -19,6 +19,13 @@ fn text(bytes: &[u8]) -> String {
 
 /// Runs backup `sys` in `dir`: one motion task running `module`, DO signals `outputs`.
 fn run(dir: &Path, module: &str, outputs: &[&str]) -> Output {
+    let signals: String = outputs.iter().map(|name| format!("\n      -Name \"{name}\" -SignalType \"DO\"\n")).collect();
+    run_with_signals(dir, module, &signals)
+}
+
+/// Runs backup `sys` in `dir`: one motion task running `module`, the EIO_SIGNAL lines
+/// `signals`.
+fn run_with_signals(dir: &Path, module: &str, signals: &str) -> Output {
     let root = dir.join("sys");
     let folder = root.join("RAPID/TASK1/PROGMOD");
     fs::create_dir_all(&folder).expect("task folder");
@@ -26,7 +33,6 @@ fn run(dir: &Path, module: &str, outputs: &[&str]) -> Output {
     fs::create_dir_all(root.join("SYSPAR")).expect("syspar");
     let sys = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n";
     fs::write(root.join("SYSPAR/SYS.cfg"), sys).expect("SYS.cfg");
-    let signals: String = outputs.iter().map(|name| format!("\n      -Name \"{name}\" -SignalType \"DO\"\n")).collect();
     fs::write(root.join("SYSPAR/EIO.cfg"), format!("EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n{signals}")).expect("EIO.cfg");
     Command::new(env!("CARGO_BIN_EXE_rapid"))
         .current_dir(dir)
@@ -98,4 +104,29 @@ fn a_zone_on_a_move_to_a_fly_by_point_switches_as_the_robot_passes() {
         let after = change_time(&log, "doInside", value) - start;
         assert!((after - expected).abs() <= 0.0055, "doInside = {value} after {after} s, expected {expected}: {log}");
     }
+}
+
+#[test]
+fn a_read_only_output_follows_its_zone() {
+    // The zone supervision sets a WZDOSet output, not the program: an output the
+    // program may not write (-Access "ReadOnly", as real cells configure their zone
+    // outputs so nothing else writes them) follows the zone all the same. The robot
+    // starts inside the box around p0 (the output is 1 at once) and leaves it: 100 mm
+    // along x at v500 from x = 300, out past x = 320: 0.05 s ramp over 12.5 mm, then
+    // t = 0.05 + 7.5 / 500 = 0.065 s.
+    let dir = scratch("read_only");
+    let program = "MODULE S\n  CONST robtarget p0 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];\n  \
+                   VAR shapedata box;\n  VAR wztemporary wzHome;\n  \
+                   PROC main()\n    MoveJ p0, v1000, fine, tool0;\n    \
+                   WZBoxDef \\Inside, box, [280, -20, 380], [320, 20, 420];\n    SetDO doStart, 1;\n    \
+                   WZDOSet \\Temp, wzHome \\Inside, box, doHome, 1;\n    \
+                   MoveL Offs(p0, 100, 0, 0), v500, fine, tool0;\n  ENDPROC\nENDMODULE\n";
+    let signals = "\n      -Name \"doStart\" -SignalType \"DO\"\n\n      -Name \"doHome\" -SignalType \"DO\" -Access \"ReadOnly\"\n";
+    let out = run_with_signals(&dir, program, signals);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
+    let start = change_time(&log, "doStart", "1");
+    assert!((change_time(&log, "doHome", "1") - start).abs() < 1e-9, "{log}");
+    let after = change_time(&log, "doHome", "0") - start;
+    assert!((after - 0.065).abs() <= 0.0055, "doHome = 0 after {after} s, expected 0.065: {log}");
 }

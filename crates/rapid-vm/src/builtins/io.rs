@@ -105,8 +105,9 @@ impl IoState {
         let Some(system) = self.system.as_mut() else { return };
         for _ in 0..MAX_REACTIONS_PER_ADVANCE {
             react(system, &self.reactions, &mut self.seen_changes, &mut self.stimulus);
-            // Outputs the robot's path sets (triggers, Move*DO) at their time: the motion
-            // system's own orders, which no program order cancels.
+            // Outputs the robot's path sets (triggers, Move*DO, world zones) at their time:
+            // the motion system's own orders, which no program order cancels, whatever the
+            // signal's access level (the program's instruction was checked when given).
             let path = self.path_orders.front().map(|&(at, _, _)| at).filter(|&at| at <= t);
             let earliest_other = [self.stimulus.front().map(|&(at, _, _)| at), system.next_event_time()]
                 .into_iter()
@@ -115,7 +116,7 @@ impl IoState {
             if let Some(at) = path.filter(|&at| at <= earliest_other) {
                 system.advance(at);
                 if let Some((at, id, value)) = self.path_orders.pop_front() {
-                    let _ = system.set(id, value, at);
+                    let _ = system.set_by_system(id, value, at);
                 }
                 continue;
             }

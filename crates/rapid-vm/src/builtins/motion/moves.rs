@@ -594,6 +594,13 @@ pub(crate) fn apply_due_events(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
                     super::super::io::order(ctx, |io, t| io.set(id, value, t))?;
                 }
             }
+            super::robot::Action::ZoneSet { signal: id, value } => {
+                if time > ctx.time {
+                    ctx.resources.io.order_on_path(time, id, value);
+                } else {
+                    super::super::io::order(ctx, |io, t| io.set_by_system(id, value, t))?;
+                }
+            }
             super::robot::Action::Interrupt(number) => ctx.resources.interrupts.schedule(time, number),
             super::robot::Action::Special(key) => super::trigg::defer(ctx, time, key),
         }

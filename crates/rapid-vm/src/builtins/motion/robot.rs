@@ -41,6 +41,10 @@ pub enum At {
 pub enum Action {
     /// Sets an output to a value.
     Set { signal: u32, value: f64 },
+    /// A world zone's output (WZDOSet): the zone supervision sets it whatever its access
+    /// level, as the controller sets its system outputs (a read-only output is read-only
+    /// for programs).
+    ZoneSet { signal: u32, value: f64 },
     /// Fires an interrupt (TriggInt).
     Interrupt(u32),
     /// A trigger laid out or decided by the trigger family (TriggCheckIO, TriggRampAO,

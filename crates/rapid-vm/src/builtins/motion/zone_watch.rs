@@ -46,7 +46,7 @@ impl RobotState {
     fn zone_event(&mut self, i: usize, inside: bool, time: f64) {
         match self.zones[i].map(|z| z.kind) {
             Some(super::zones::ZoneKind::DoSet { signal, value, .. }) => {
-                self.due.push((time, Action::Set { signal, value: if inside { value } else { 1.0 - value } }));
+                self.due.push((time, Action::ZoneSet { signal, value: if inside { value } else { 1.0 - value } }));
             }
             Some(super::zones::ZoneKind::LimSup) if inside => {
                 self.zone_violation.get_or_insert(time);
