@@ -411,3 +411,21 @@ fn a_task_using_a_motion_tasks_unit_group_reads_its_robot() {
         ]
     );
 }
+
+#[test]
+fn a_persistent_declared_without_a_value_takes_the_value_another_task_gives() {
+    // §1.2.2: a persistent may omit its initial value and then takes the value it has
+    // (the other declarations'). T_LOG comes first and declares ip and port without
+    // values; T_ROB1 gives them: both tasks see "127.0.0.1" and 5003, whatever the order.
+    let dir = scratch("pers_no_value");
+    let rob = "MODULE Rob\n  PERS string ip := \"127.0.0.1\";\n  PERS num port := 5003;\n  PROC main()\n    \
+               WaitTime 0.1;\n    TPWrite \"rob \" + ip + \" \" \\Num:=port;\n  ENDPROC\nENDMODULE\n";
+    let log = "MODULE Log\n  PERS string ip;\n  PERS num port;\n  PROC log_main()\n    \
+               TPWrite \"log \" + ip + \" \" \\Num:=port;\n  ENDPROC\nENDMODULE\n";
+    let toml = "[[task]]\nname = \"T_LOG\"\ntype = \"NORMAL\"\nentry = \"log_main\"\nmotion = false\nmodules = [\"Log.mod\"]\n\n\
+                [[task]]\nname = \"T_ROB1\"\ntype = \"NORMAL\"\nmotion = true\nmodules = [\"Rob.mod\"]\n";
+    write(&dir, &[("rapid.toml", toml), ("Rob.mod", rob), ("Log.mod", log)]);
+    let out = rapid_in(&dir, &["run", "--quiet", "."]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "log 127.0.0.1 5003\nrob 127.0.0.1 5003\n");
+}

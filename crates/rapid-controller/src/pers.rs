@@ -21,6 +21,8 @@ struct Entry {
     owner: usize,
     /// The store's generation when it last changed.
     changed: u64,
+    /// A declaration with an initial value gave it its value.
+    initialised: bool,
 }
 
 /// A task's view of the store: where each of its shared persistents lives.
@@ -43,8 +45,10 @@ pub struct PersStore {
 
 impl PersStore {
     /// Registers task `task`'s global persistents. A persistent another task declared
-    /// already keeps its value (the first declaration creates the object); one with
-    /// another type or size is the error of §1.20.
+    /// already keeps its value (the first declaration creates the object), unless that
+    /// declaration had no initial value and this one has (§1.2.2: a persistent without
+    /// one takes the value the others give it); one with another type or size is the
+    /// error of §1.20.
     pub(crate) fn register(
         &mut self,
         task: usize,
@@ -66,6 +70,12 @@ impl PersStore {
             let idx = match self.by_name.get(&key) {
                 Some(&idx) => {
                     check_same_shape(&self.entries[idx], pers, task_name)?;
+                    let entry = &mut self.entries[idx];
+                    if pers.initialised && !entry.initialised {
+                        self.generation += 1;
+                        (entry.value, entry.owner, entry.initialised) = (value.clone(), task, true);
+                        entry.changed = self.generation;
+                    }
                     idx
                 }
                 None => {
@@ -76,8 +86,9 @@ impl PersStore {
                         value: value.clone(),
                         owner: task,
                         changed: 1,
+                        initialised: pers.initialised,
                     });
-                    self.generation = 1;
+                    self.generation = self.generation.max(1);
                     self.by_name.insert(key, self.entries.len() - 1);
                     self.entries.len() - 1
                 }

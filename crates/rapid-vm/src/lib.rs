@@ -82,6 +82,9 @@ pub struct SharedPers {
     pub type_name: String,
     /// Array sizes (all 0 for a scalar): tasks must agree on type and size.
     pub dims: [u32; 3],
+    /// Declared with an initial value (a persistent may omit it, §1.2.2: it then takes
+    /// the value another declaration gives it).
+    pub initialised: bool,
 }
 
 /// Checks, compiles and initialises the task made of `files`, ready to run `entry`.
@@ -259,6 +262,7 @@ fn shared_pers(prog: &Program, modules: &[compile::ModuleSource<'_>]) -> Vec<Sha
             name: data.display.clone(),
             type_name: prog.types.name(data.ty).to_string(),
             dims: data.dims,
+            initialised: decl.init.is_some(),
         });
     }
     shared
@@ -280,6 +284,7 @@ fn module_vars(prog: &Program, modules: &[compile::ModuleSource<'_>]) -> Vec<Mod
             name: data.display.clone(),
             type_name: prog.types.name(data.ty).to_string(),
             dims: data.dims,
+            initialised: true,
         };
         let task_scoped = decl.scope == rapid_syntax::ast::DeclScope::Task;
         vars.push(ModuleVar { data: shared, file: source.file, task_scoped });
