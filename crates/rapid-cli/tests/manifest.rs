@@ -429,3 +429,21 @@ fn a_persistent_declared_without_a_value_takes_the_value_another_task_gives() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "log 127.0.0.1 5003\nrob 127.0.0.1 5003\n");
 }
+
+#[test]
+fn tasks_in_each_others_background_are_refused() {
+    // T_A waits for T_B to be idle and T_B for T_A: neither could ever run.
+    let dir = scratch("foreground_cycle");
+    let module = "MODULE M\n  PROC main()\n    TPWrite \"ran\";\n  ENDPROC\nENDMODULE\n";
+    let toml = "[[task]]\nname = \"T_A\"\ntype = \"NORMAL\"\nforeground = \"T_B\"\nmodules = [\"a/M.mod\"]\n\n\
+                [[task]]\nname = \"T_B\"\ntype = \"NORMAL\"\nforeground = \"T_A\"\nmodules = [\"b/M.mod\"]\n";
+    write(&dir, &[("rapid.toml", toml), ("a/M.mod", module), ("b/M.mod", module)]);
+    let out = rapid_in(&dir, &["run", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stdout));
+    let report = text(&out.stderr);
+    finding_at(
+        &report,
+        "task `T_A` runs in the background of `T_B`, which runs (through its foreground tasks) in the background of `T_A`",
+        "rapid.toml:4:14",
+    );
+}

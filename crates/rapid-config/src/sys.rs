@@ -1,7 +1,7 @@
 //! The controller configuration (`SYS.cfg`): RAPID tasks (`CAB_TASKS`) and the modules
 //! loaded into them (`CAB_TASK_MODULES`).
 
-use crate::{CfgError, CfgFile, Instance};
+use crate::{Attr, CfgError, CfgFile, Instance};
 
 /// `-Type` of a task.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -151,14 +151,22 @@ pub fn read(file: &CfgFile) -> Sys {
         }
     }
     for inst in file.instances("CAB_TASKS") {
-        let (Some(name), Some(value)) = (inst.name(), inst.attr("TaskInForeground").and_then(|a| a.value.as_ref()))
-        else {
+        let (Some(name), Some(value)) = (inst.name(), foreground_attr(inst).and_then(|a| a.value.as_ref())) else {
             continue;
         };
-        if !value.text.is_empty() && sys.task(&value.text).is_none() {
-            let message = format!("task `{name}` runs in the background of `{}`, which is not a task", value.text);
-            sys.errors.push(CfgError { line: file.line_of(value.span.start), span: value.span.clone(), message });
-        }
+        let message = if value.text.is_empty() {
+            continue;
+        } else if sys.task(&value.text).is_none() {
+            format!("task `{name}` runs in the background of `{}`, which is not a task", value.text)
+        } else if value.text.eq_ignore_ascii_case(name) {
+            format!("task `{name}` runs in the background of itself: it could never run")
+        } else if in_foreground_cycle(&sys, name) {
+            // Each task of the cycle would wait for the next to be idle: none ever runs.
+            format!("task `{name}` runs in the background of `{}`, which runs (through its foreground tasks) in the background of `{name}`: none of them could run", value.text)
+        } else {
+            continue;
+        };
+        sys.errors.push(CfgError { line: file.line_of(value.span.start), span: value.span.clone(), message });
     }
     for inst in file.instances("CAB_TASK_MODULES") {
         let Some(path) = inst.value("File") else {
@@ -258,7 +266,10 @@ fn task(file: &CfgFile, inst: &Instance, errors: &mut Vec<CfgError>) -> Option<T
         motion_task: inst.has("MotionTask"),
         mechanical_unit_group: inst.value("UseMechanicalUnitGroup").map(str::to_owned),
         hidden: inst.has("Hidden"),
-        foreground: inst.value("TaskInForeground").filter(|t| !t.is_empty()).map(str::to_owned),
+        foreground: foreground_attr(inst)
+            .and_then(|a| a.value.as_ref())
+            .map(|v| v.text.clone())
+            .filter(|t| !t.is_empty()),
         rmq: rmq(file, inst, name, errors),
         line: inst.line,
     })
@@ -302,4 +313,23 @@ fn rmq(file: &CfgFile, inst: &Instance, task: &str, errors: &mut Vec<CfgError>) 
     number("RmqMaxMsgSize", RMQ_MAX_MSG_SIZE, &mut rmq.max_msg_size);
     number("RmqMaxNoOfMsg", RMQ_MAX_NO_OF_MSG, &mut rmq.max_no_of_msg);
     rmq
+}
+
+/// A task's foreground task attribute: `-TaskInForeground`, or `-Task_in_forground`, as
+/// the SYS.cfg files controllers write spell it.
+fn foreground_attr(inst: &Instance) -> Option<&Attr> {
+    inst.attr("TaskInForeground").or_else(|| inst.attr("Task_in_forground"))
+}
+
+/// Whether following task `name`'s foreground tasks leads back to it.
+pub fn in_foreground_cycle(sys: &Sys, name: &str) -> bool {
+    let mut at = name;
+    for _ in 0..=sys.tasks.len() {
+        match sys.task(at).and_then(|t| t.foreground.as_deref()) {
+            Some(next) if next.eq_ignore_ascii_case(name) => return true,
+            Some(next) => at = next,
+            None => return false,
+        }
+    }
+    false
 }

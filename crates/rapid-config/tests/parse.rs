@@ -257,6 +257,36 @@ fn sys_findings() {
 }
 
 #[test]
+fn foreground_tasks_in_either_spelling_and_no_cycles() {
+    // `-Task_in_forground` is how SYS.cfg files controllers write spell the attribute;
+    // a task in its own background, or a cycle of them, could never run.
+    let file = parse(
+        "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n  -Name \"T_ROB1\" -Type \"NORMAL\"\n\n  \
+         -Name \"T_BG\" -Task_in_forground \"T_ROB1\"\n\n  -Name \"T_SELF\" -TaskInForeground \"T_SELF\"\n\n  \
+         -Name \"T_A\" -TaskInForeground \"T_B\"\n\n  -Name \"T_B\" -Task_in_forground \"T_A\"\n",
+    );
+    let sys = sys::read(&file);
+    assert_eq!(sys.task("T_BG").and_then(|t| t.foreground.as_deref()), Some("T_ROB1"));
+    let found: Vec<(u32, &str)> = sys.errors.iter().map(|e| (e.line, e.message.as_str())).collect();
+    assert_eq!(
+        found,
+        [
+            (9, "task `T_SELF` runs in the background of itself: it could never run"),
+            (
+                11,
+                "task `T_A` runs in the background of `T_B`, which runs (through its foreground tasks) in the \
+                 background of `T_A`: none of them could run"
+            ),
+            (
+                13,
+                "task `T_B` runs in the background of `T_A`, which runs (through its foreground tasks) in the \
+                 background of `T_B`: none of them could run"
+            ),
+        ]
+    );
+}
+
+#[test]
 fn moc_robots() {
     let file =
         parse("MOC:CFG_1.0:6:0::\n#\nROBOT:\n\n  -name \"ROB_1\" -use_robot_type \"ROB1\" -base_frame_pos_z 0.5\n");

@@ -493,6 +493,12 @@ impl Reader<'_> {
             } else if self.manifest.sys.task(target).is_none() {
                 let message = format!("task `{name}` runs in the background of `{target}`, which is not a task");
                 self.find(foreground.span(), message);
+            } else if rapid_config::sys::in_foreground_cycle(&self.manifest.sys, name) {
+                let message = format!(
+                    "task `{name}` runs in the background of `{target}`, which runs (through its foreground tasks) in \
+                     the background of `{name}`: none of them could run"
+                );
+                self.find(foreground.span(), message);
             }
         }
     }
