@@ -258,6 +258,15 @@ fn task(file: &CfgFile, inst: &Instance, errors: &mut Vec<CfgError>) -> Option<T
             }
         },
     };
+    // The levels the controller knows (`None` is RobotWare 5's NoSafety), checked here
+    // so that `rapid check` reports an unknown one at its line as `rapid run` refuses it.
+    if let Some(level) = inst.value("TrustLevel") {
+        const LEVELS: [&str; 5] = ["SysFail", "SysHalt", "SysStop", "NoSafety", "None"];
+        if !LEVELS.iter().any(|l| l.eq_ignore_ascii_case(level)) {
+            let message = format!("task `{name}`: unknown -TrustLevel `{level}` (SysFail, SysHalt, SysStop, NoSafety)");
+            error(file, errors, inst, message);
+        }
+    }
     Some(Task {
         name: name.to_owned(),
         task_type,

@@ -241,7 +241,7 @@ fn sys_tasks_and_modules() {
 fn sys_findings() {
     let file = parse(
         "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n  -Name \"T1\" -Type \"DYNAMIC\"\n\n  -Name \"t1\"\n\n  -Type \"NORMAL\"\n\n  \
-         -Name \"T2\" -TaskInForeground \"T9\"\n",
+         -Name \"T2\" -TaskInForeground \"T9\"\n\n  -Name \"T3\" -TrustLevel \"Bogus\"\n\n  -Name \"T4\" -TrustLevel \"None\"\n",
     );
     let sys = sys::read(&file);
     let found: Vec<(u32, &str)> = sys.errors.iter().map(|e| (e.line, e.message.as_str())).collect();
@@ -251,6 +251,7 @@ fn sys_findings() {
             (5, "task `T1`: unknown type `DYNAMIC` (NORMAL, STATIC or SEMISTATIC)"),
             (7, "task `t1` is configured twice"),
             (9, "a task without `-Name`"),
+            (13, "task `T3`: unknown -TrustLevel `Bogus` (SysFail, SysHalt, SysStop, NoSafety)"),
             (11, "task `T2` runs in the background of `T9`, which is not a task"),
         ]
     );
