@@ -85,3 +85,30 @@ fn a_task_without_a_robot_must_name_the_unit() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "no robot here\n");
 }
+
+#[test]
+fn another_task_reads_the_robot_where_its_base_frame_stands() {
+    // MOC.cfg sets ROB_1's base frame 2 m along x: at its calibration position tool0 is
+    // at x = 2000 + 374 in the world (wobj0). T_CTRL, no motion task, reads T_ROB1's
+    // robot through its unit group and with \TaskName: the same 2374 (it read 374,
+    // the base frame left out).
+    let dir = scratch("other_task_base");
+    let probe = "MODULE Probe\n  PROC main()\n    VAR robtarget p;\n    p := CRobT(\\Tool:=tool0 \\WObj:=wobj0);\n    \
+                 TPWrite \"own \" \\Num:=p.trans.x;\n  ENDPROC\nENDMODULE\n";
+    let ctrl = "MODULE Ctrl\n  PROC main()\n    VAR robtarget p;\n    WaitTime 0.1;\n    \
+                p := CRobT(\\Tool:=tool0 \\WObj:=wobj0);\n    TPWrite \"group \" \\Num:=p.trans.x;\n    \
+                p := CRobT(\\TaskName:=\"T_ROB1\" \\Tool:=tool0 \\WObj:=wobj0);\n    TPWrite \"named \" \\Num:=p.trans.x;\n  \
+                ENDPROC\nENDMODULE\n";
+    let root = system(
+        &dir,
+        &[
+            ("T_ROB1", "-Type \"NORMAL\" -UseMechanicalUnitGroup \"rob1\" -MotionTask", probe),
+            ("T_CTRL", "-Type \"NORMAL\" -UseMechanicalUnitGroup \"rob1\"", ctrl),
+        ],
+    );
+    let moc = "MOC:CFG_1.0:6:0::\n#\nROBOT:\n\n      -name \"ROB_1\" -use_robot_type \"ROB1_120_0.58_3\" -base_frame_pos_x 2\n";
+    fs::write(root.join("SYSPAR/MOC.cfg"), moc).expect("MOC.cfg");
+    let out = rapid_in(&dir, &["run", "--quiet", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "own 2374\ngroup 2374\nnamed 2374\n");
+}

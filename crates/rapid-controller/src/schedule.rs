@@ -223,7 +223,11 @@ impl Controller {
             Request::Robot { task } => {
                 let time = self.time;
                 let robot = &mut self.tasks[task].loaded.vm.resources_mut().robot;
-                Reply::Robot(robot.joints_at(time), Box::new((robot.active, robot.extax_read(time))))
+                // Its frames with its base where it stands in the world now (MOC.cfg's
+                // base frame, on a track where the track has it).
+                let mut frames = robot.active;
+                frames.base = robot.track_base_at(time);
+                Reply::Robot(robot.joints_at(time), Box::new((frames, robot.extax_read(time))))
             }
             Request::SaveModule { task, module, dest } => {
                 match self.tasks[task].loaded.vm.save_module_for_another_task(&module, dest) {

@@ -210,6 +210,10 @@ pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         Some(Some(other)) => {
             if !present(args.get(2)) && !present(args.get(3)) {
                 chain = other.frames;
+            } else {
+                // The given tool and work object on the other robot, which stands where
+                // its base frame is.
+                chain.base = other.frames.base;
             }
             (other.joints, other.extax)
         }
