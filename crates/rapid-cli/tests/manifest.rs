@@ -447,3 +447,22 @@ fn tasks_in_each_others_background_are_refused() {
         "rapid.toml:4:14",
     );
 }
+
+#[test]
+fn max_time_bounds_a_system_whose_task_never_waits() {
+    // T_BUSY loops without ever waiting; the clock moves by the nominal instruction time
+    // as it computes, so --max-time 0.5 ends the run (it never ended before).
+    let dir = scratch("max_time_busy");
+    let busy = "MODULE Busy\n  PROC main()\n    VAR num n := 0;\n    WHILE TRUE DO\n      n := n + 1;\n    \
+                ENDWHILE\n  ENDPROC\nENDMODULE\n";
+    let other =
+        "MODULE Other\n  PROC other_main()\n    WaitTime 0.1;\n    TPWrite \"other waited\";\n  ENDPROC\nENDMODULE\n";
+    let toml = "[[task]]\nname = \"T_BUSY\"\ntype = \"NORMAL\"\nmodules = [\"Busy.mod\"]\n\n\
+                [[task]]\nname = \"T_OTHER\"\ntype = \"NORMAL\"\nentry = \"other_main\"\nmodules = [\"o/Other.mod\"]\n";
+    write(&dir, &[("rapid.toml", toml), ("Busy.mod", busy), ("o/Other.mod", other)]);
+    // --max-steps only keeps a broken bound from hanging the test.
+    let out = rapid_in(&dir, &["run", "--quiet", "--max-time", "0.5", "--max-steps", "5000000", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stdout));
+    assert_eq!(text(&out.stdout), "other waited\n");
+    assert!(text(&out.stderr).contains("stopped at 0.5 s of controller time (--max-time)"), "{}", text(&out.stderr));
+}

@@ -391,15 +391,17 @@ fn drive(controller: &mut Controller, host: &mut StdoutHost<'_>, args: &RunArgs)
             SystemExit::Budget => {}
             SystemExit::Wait(seconds) => {
                 controller.advance(seconds);
-                if let Some(max) = args.max_time {
-                    if controller.time > max {
-                        return Some(Bound::Time(max));
-                    }
-                }
-                if args.realtime {
+                if args.realtime && controller.time <= args.max_time.unwrap_or(f64::INFINITY) {
                     host.flush();
                     std::thread::sleep(Duration::from_secs_f64(seconds.min(86_400.0)));
                 }
+            }
+        }
+        // The clock moves while tasks compute too (the nominal instruction time): a loop
+        // that never waits is bounded as well.
+        if let Some(max) = args.max_time {
+            if controller.time > max {
+                return Some(Bound::Time(max));
             }
         }
     }
