@@ -208,6 +208,9 @@ impl Collector {
         let Some(task) = backup::choose_task(folder, tasks, sys.as_ref(), self.wanted_task.as_deref()) else {
             bail!("backup `{shown}` holds no RAPID/TASKn folder");
         };
+        if !task.folder.is_dir() {
+            bail!("backup `{shown}`: task {} has no task folder `{}`", task.name, task.folder.display());
+        }
         let modules = backup::task_modules(&task.folder);
         if modules.is_empty() {
             bail!("backup `{shown}`: task folder `{}` holds no modules in PROGMOD or SYSMOD", task.folder.display());

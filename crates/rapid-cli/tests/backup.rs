@@ -601,3 +601,20 @@ ENDMODULE
     assert_eq!(out.status.code(), Some(1));
     assert!(text(&out.stderr).contains("50028 Joint 1 out of range"), "{}", text(&out.stderr));
 }
+
+#[test]
+fn a_task_without_its_folder_is_reported_not_given_another_tasks_program() {
+    // SYS.cfg configures T_ROB1 and T_BG; the backup holds RAPID/TASK1 only. T_BG has no
+    // program: the run and the check say so (T_BG ran T_ROB1's modules before).
+    let dir = scratch("task_without_folder");
+    let sys = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n\n      \
+               -Name \"T_BG\" -Type \"SEMISTATIC\"\n";
+    let module = "MODULE M\n  PROC main()\n    TPWrite \"main runs in \" + GetTaskName();\n  ENDPROC\nENDMODULE\n";
+    write(&dir, &[("sys/SYSPAR/SYS.cfg", sys), ("sys/RAPID/TASK1/PROGMOD/M.mod", module)]);
+    for command in ["run", "check"] {
+        let out = rapid_in(&dir, &[command, "sys"]);
+        assert_eq!(out.status.code(), Some(2), "{command}: {}", text(&out.stdout));
+        assert_eq!(text(&out.stdout), "", "{command}");
+        assert!(text(&out.stderr).contains("task T_BG has no task folder"), "{command}: {}", text(&out.stderr));
+    }
+}

@@ -102,9 +102,19 @@ pub(crate) fn choose_task(
         let place = sys?.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(&wanted))?;
         u32::try_from(place + 1).ok()
     });
-    let folder = number.and_then(|n| tasks.iter().find(|(m, _)| *m == n)).unwrap_or(first);
+    // A task whose folder is missing has no program: never another task's (the caller
+    // reports the missing folder).
+    let folder = match number {
+        Some(n) => tasks.iter().find(|(m, _)| *m == n).map_or_else(|| rapid_task_folder(folder, n), |f| f.1.clone()),
+        None => first.1.clone(),
+    };
     let entry = sys.and_then(|sys| sys.task(&wanted)).map(|t| t.entry.clone());
-    Some(TaskFolder { name: wanted, folder: folder.1.clone(), entry })
+    Some(TaskFolder { name: wanted, folder, entry })
+}
+
+/// Where task folder `n` of a backup would be: `RAPID/TASKn`.
+fn rapid_task_folder(folder: &Path, n: u32) -> PathBuf {
+    child(folder, "RAPID").unwrap_or_else(|| folder.join("RAPID")).join(format!("TASK{n}"))
 }
 
 fn folder_name(path: &Path) -> String {
