@@ -466,3 +466,16 @@ fn max_time_bounds_a_system_whose_task_never_waits() {
     assert_eq!(text(&out.stdout), "other waited\n");
     assert!(text(&out.stderr).contains("stopped at 0.5 s of controller time (--max-time)"), "{}", text(&out.stderr));
 }
+
+#[test]
+fn cycles_are_refused_for_a_system_rather_than_ignored() {
+    let dir = scratch("cycles_system");
+    let module = "MODULE M\n  PROC main()\n    TPWrite \"ran\";\n  ENDPROC\nENDMODULE\n";
+    let toml = "[[task]]\nname = \"T_A\"\ntype = \"NORMAL\"\nmodules = [\"a/M.mod\"]\n\n\
+                [[task]]\nname = \"T_B\"\ntype = \"NORMAL\"\nmodules = [\"b/M.mod\"]\n";
+    write(&dir, &[("rapid.toml", toml), ("a/M.mod", module), ("b/M.mod", module)]);
+    let out = rapid_in(&dir, &["run", "--cycles", "2", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(text(&out.stdout), "");
+    assert!(text(&out.stderr).contains("--cycles is not supported for a system"), "{}", text(&out.stderr));
+}

@@ -40,6 +40,12 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         None if has_system_signals(&first) => one_task_system(&first),
         None => return single::run(args),
     };
+    if args.cycles != 1 {
+        // The NORMAL tasks of a system run one cycle: continuous mode is not modelled here.
+        return refuse(
+            "--cycles is not supported for a system (a backup or manifest with tasks or system signals) yet",
+        );
+    }
     let specs = match task_specs(&sys) {
         Ok(specs) => specs,
         Err(message) => return refuse(&message),
