@@ -80,9 +80,7 @@ pub(crate) fn task_robot(
     system: &'static rapid_motion::RobotModel,
 ) -> Option<&'static rapid_motion::RobotModel> {
     let own = inputs.task_robots.iter().find(|(t, _)| t.eq_ignore_ascii_case(&task.name)).map(|(_, m)| m);
-    let moc = inputs.syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("MOC")).map(|(_, file)| file);
-    let group = task.mechanical_unit_group.as_deref();
-    let robotless = group.zip(moc).and_then(|(group, file)| rapid_config::moc::group_robot(file, group));
+    let robotless = group_robot(inputs, task);
     if matches!(own, Some(None)) || matches!(robotless, Some(None)) {
         return None;
     }
@@ -95,6 +93,18 @@ pub(crate) fn task_robot(
     let of_moc =
         || moc_robot(&inputs.syspar, n).and_then(|r| r.robot_type).and_then(|ty| rapid_motion::find_model(&ty));
     Some(named.or_else(of_moc).unwrap_or(system))
+}
+
+/// The robot of the mechanical unit group task `task` uses (`-UseMechanicalUnitGroup`):
+/// its `MECHANICAL_UNIT_GROUP -Robot`, written in SYS.cfg (RobotWare 6) or MOC.cfg;
+/// `Some(None)` for a group without a robot (a positioner's), `None` when no group is
+/// found.
+pub(crate) fn group_robot(inputs: &crate::inputs::Inputs, task: &rapid_config::sys::Task) -> Option<Option<String>> {
+    let group = task.mechanical_unit_group.as_deref()?;
+    let files = ["SYS", "MOC"]
+        .into_iter()
+        .filter_map(|domain| inputs.syspar.iter().find(|(d, _)| d.eq_ignore_ascii_case(domain)).map(|(_, file)| file));
+    files.into_iter().find_map(|file| rapid_config::moc::group_robot(file, group))
 }
 
 /// Sets the task's robot up for the run: a trace or a report records every move.

@@ -114,6 +114,19 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             crate::motion_out::configure(robot, own.unwrap_or(model), args);
             if own.is_some() {
                 robot_number += 1;
+                // Robots are numbered by the motion tasks' order: a group naming another
+                // robot would have this task move the wrong one.
+                if let Some(Some(named)) = crate::motion_out::group_robot(&tasks[0].inputs, task) {
+                    if !named.eq_ignore_ascii_case(&format!("ROB_{robot_number}")) {
+                        return refuse(&format!(
+                            "task {} uses the mechanical unit group of {named}, but it is motion task \
+                             {robot_number} with a robot, which moves ROB_{robot_number}: robots numbered other \
+                             than by the tasks' order are not supported yet (list the motion tasks in their \
+                             robots' order in SYS.cfg)",
+                            spec.name
+                        ));
+                    }
+                }
                 crate::motion_out::configure_base(robot, &tasks[0].inputs, robot_number, &spec.name);
                 crate::motion_out::configure_ranges(robot, &tasks[0].inputs.syspar, robot_number);
             }
