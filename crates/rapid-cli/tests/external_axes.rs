@@ -9,7 +9,7 @@ mod external_fixture;
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use external_fixture::{rapid, run, TRACK, UNITS};
+use external_fixture::{rapid, run, units_with_table, write_manifest, TRACK, UNITS};
 
 /// A fresh, empty scratch folder for one test.
 fn scratch(name: &str) -> PathBuf {
@@ -225,11 +225,9 @@ fn a_turntable_carries_its_work_object_and_the_robot_follows() {
     // 200) in the object. Moving to that same object point while the table turns 90°
     // (0.5 + 0.15 s, + 0.05 s settle) carries the robot round to (400, -100, 400). Then
     // 50 mm along the object's y at v100 (0.5 + 0.01 s + 0.05 s): (350, -100, 400).
-    let extra = "base = [400, 0, 200]\n";
-    let manifest_units = UNITS.replace("name = \"STN1\"\n", &format!("name = \"STN1\"\n{extra}"));
+    let manifest_units = units_with_table("");
     let dir = scratch("turntable");
-    let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n{manifest_units}");
-    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    write_manifest(&dir, &manifest_units);
     let module = "MODULE main
   PERS wobjdata wobj_stn1 := [FALSE, FALSE, \"STN1\", [[0,0,0],[1,0,0,0]], [[0,0,0],[1,0,0,0]]];
   CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[9E9,0,9E9,9E9,9E9,9E9]];
@@ -281,10 +279,9 @@ fn calc_joint_t_takes_the_turntable_where_the_target_has_it() {
     // the axes after the move, with the target's table angle, is p1 again. Back home
     // (the table back at 0°), while the table turns again (a \Conc move) CalcJointT
     // \UseCurWObjPos raises ERR_WOBJ_MOVING.
-    let manifest_units = UNITS.replace("name = \"STN1\"\n", "name = \"STN1\"\nbase = [400, 0, 200]\n");
+    let manifest_units = units_with_table("");
     let dir = scratch("calc_joint_t_table");
-    let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n{manifest_units}");
-    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    write_manifest(&dir, &manifest_units);
     let module = "MODULE main
   PERS wobjdata wobj_stn1 := [FALSE, FALSE, \"STN1\", [[0,0,0],[1,0,0,0]], [[0,0,0],[1,0,0,0]]];
   CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[9E9,0,9E9,9E9,9E9,9E9]];
@@ -384,8 +381,7 @@ fn a_track_carries_the_robot_and_the_tcp_keeps_its_world_path() {
     // √2 · 100 mm/s: 1 + 0.015 s ramp (the track's, longer than the path's 0.0141 s) + 0.05 s
     // settle; 1.36 s in all.
     let dir = scratch("track");
-    let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n{TRACK}");
-    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    write_manifest(&dir, TRACK);
     let module = "MODULE main
   CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[0,9E9,9E9,9E9,9E9,9E9]];
   CONST robtarget stay := [[300,0,400],[0,0,1,0],[0,0,0,0],[100,9E9,9E9,9E9,9E9,9E9]];
@@ -589,8 +585,7 @@ fn a_circle_keeps_its_world_path_while_the_track_moves() {
     // base 100 mm along x. The circle is kept in the world at v100: π · 100 mm in
     // 3.1416 s + 0.01 s ramp + 0.05 s settle = 3.2016 s.
     let dir = scratch("track_circle");
-    let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n{TRACK}");
-    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    write_manifest(&dir, TRACK);
     let module = "MODULE main
   CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[0,9E9,9E9,9E9,9E9,9E9]];
   CONST robtarget top := [[400,100,400],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
@@ -635,7 +630,7 @@ fn a_turntable_move_blends_into_a_fixed_one() {
     // object's y while the table turns 90°, then to a fixed point: with z20 there it
     // does not stop (no braking, no settle), so it is there sooner than with `fine`,
     // and exactly there all the same; no axis jumps.
-    let manifest_units = UNITS.replace("name = \"STN1\"\n", "name = \"STN1\"\nbase = [400, 0, 200]\n");
+    let manifest_units = units_with_table("");
     let program = |zone: &str| {
         format!(
             "MODULE main
@@ -661,8 +656,7 @@ ENDMODULE
     };
     let run_with = |name: &str, zone: &str| -> (String, String) {
         let dir = scratch(name);
-        let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n{manifest_units}");
-        fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+        write_manifest(&dir, &manifest_units);
         fs::write(dir.join("main.mod"), program(zone)).expect("module");
         run_traced(&dir)
     };

@@ -9,7 +9,7 @@ mod external_fixture;
 use std::fs;
 use std::path::PathBuf;
 
-use external_fixture::{rapid, run, TRACK, UNITS};
+use external_fixture::{rapid, run, units_with_table, write_manifest, TRACK, UNITS};
 
 /// A fresh, empty scratch folder for one test.
 fn scratch(name: &str) -> PathBuf {
@@ -101,8 +101,7 @@ fn the_path_recorder_keeps_the_world_path_on_a_track() {
     // √2 · 50 mm/s relative to the base, 2 + 0.0075 s ramp + 0.05 s settle = 2.06 s,
     // ending at (300, 100, 400), track 200.
     let dir = scratch("recorder_track");
-    let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n{TRACK}");
-    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    write_manifest(&dir, TRACK);
     let module = "MODULE main
   CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[0,9E9,9E9,9E9,9E9,9E9]];
   CONST robtarget stay := [[300,0,400],[0,0,1,0],[0,0,0,0],[100,9E9,9E9,9E9,9E9,9E9]];
@@ -143,10 +142,9 @@ ENDMODULE
 fn the_path_recorder_refuses_a_path_made_in_a_moving_work_object() {
     // A move made while the robot followed the turntable's work object cannot be
     // replayed relative to the robot's base: execution stops, naming why.
-    let manifest_units = UNITS.replace("name = \"STN1\"\n", "name = \"STN1\"\nbase = [400, 0, 200]\n");
+    let manifest_units = units_with_table("");
     let dir = scratch("recorder_moving");
-    let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n{manifest_units}");
-    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+    write_manifest(&dir, &manifest_units);
     let module = "MODULE main
   PERS wobjdata wobj_stn1 := [FALSE, FALSE, \"STN1\", [[0,0,0],[1,0,0,0]], [[0,0,0],[1,0,0,0]]];
   CONST robtarget home := [[300,0,400],[0,0,1,0],[0,0,0,0],[9E9,0,9E9,9E9,9E9,9E9]];

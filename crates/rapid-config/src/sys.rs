@@ -154,19 +154,9 @@ pub fn read(file: &CfgFile) -> Sys {
         let (Some(name), Some(value)) = (inst.name(), foreground_attr(inst).and_then(|a| a.value.as_ref())) else {
             continue;
         };
-        let message = if value.text.is_empty() {
-            continue;
-        } else if sys.task(&value.text).is_none() {
-            format!("task `{name}` runs in the background of `{}`, which is not a task", value.text)
-        } else if value.text.eq_ignore_ascii_case(name) {
-            format!("task `{name}` runs in the background of itself: it could never run")
-        } else if in_foreground_cycle(&sys, name) {
-            // Each task of the cycle would wait for the next to be idle: none ever runs.
-            format!("task `{name}` runs in the background of `{}`, which runs (through its foreground tasks) in the background of `{name}`: none of them could run", value.text)
-        } else {
-            continue;
-        };
-        sys.errors.push(CfgError { line: file.line_of(value.span.start), span: value.span.clone(), message });
+        if let Some(message) = foreground_finding(&sys, name, &value.text) {
+            sys.errors.push(CfgError { line: file.line_of(value.span.start), span: value.span.clone(), message });
+        }
     }
     for inst in file.instances("CAB_TASK_MODULES") {
         let Some(path) = inst.value("File") else {
@@ -330,8 +320,28 @@ fn foreground_attr(inst: &Instance) -> Option<&Attr> {
     inst.attr("TaskInForeground").or_else(|| inst.attr("Task_in_forground"))
 }
 
+/// What is wrong with task `name` running in the background of `target` (its
+/// `-TaskInForeground`, a manifest's `foreground`), if anything: no such task, itself,
+/// or a cycle, where each task would wait for the next to be idle and none ever runs.
+pub fn foreground_finding(sys: &Sys, name: &str, target: &str) -> Option<String> {
+    if target.is_empty() {
+        None
+    } else if target.eq_ignore_ascii_case(name) {
+        Some(format!("task `{name}` cannot run in its own background"))
+    } else if sys.task(target).is_none() {
+        Some(format!("task `{name}` runs in the background of `{target}`, which is not a task"))
+    } else if in_foreground_cycle(sys, name) {
+        Some(format!(
+            "task `{name}` runs in the background of `{target}`, which runs (through its foreground tasks) in the \
+             background of `{name}`: none of them could run"
+        ))
+    } else {
+        None
+    }
+}
+
 /// Whether following task `name`'s foreground tasks leads back to it.
-pub fn in_foreground_cycle(sys: &Sys, name: &str) -> bool {
+fn in_foreground_cycle(sys: &Sys, name: &str) -> bool {
     let mut at = name;
     for _ in 0..=sys.tasks.len() {
         match sys.task(at).and_then(|t| t.foreground.as_deref()) {

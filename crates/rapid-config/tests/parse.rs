@@ -272,7 +272,7 @@ fn foreground_tasks_in_either_spelling_and_no_cycles() {
     assert_eq!(
         found,
         [
-            (9, "task `T_SELF` runs in the background of itself: it could never run"),
+            (9, "task `T_SELF` cannot run in its own background"),
             (
                 11,
                 "task `T_A` runs in the background of `T_B`, which runs (through its foreground tasks) in the \

@@ -479,25 +479,13 @@ impl Reader<'_> {
         }
     }
 
-    /// A `foreground` must name another task of the manifest.
+    /// A `foreground` must name another task of the manifest, not in a cycle.
     fn foregrounds(&mut self, tasks: &[Spanned<RawTask>]) {
         for task in tasks {
             let task = task.get_ref();
             let Some(foreground) = &task.foreground else { continue };
             let (name, target) = (task.name.get_ref(), foreground.get_ref());
-            if target.is_empty() {
-                continue;
-            }
-            if target.eq_ignore_ascii_case(name) {
-                self.find(foreground.span(), format!("task `{name}` cannot run in its own background"));
-            } else if self.manifest.sys.task(target).is_none() {
-                let message = format!("task `{name}` runs in the background of `{target}`, which is not a task");
-                self.find(foreground.span(), message);
-            } else if rapid_config::sys::in_foreground_cycle(&self.manifest.sys, name) {
-                let message = format!(
-                    "task `{name}` runs in the background of `{target}`, which runs (through its foreground tasks) in \
-                     the background of `{name}`: none of them could run"
-                );
+            if let Some(message) = rapid_config::sys::foreground_finding(&self.manifest.sys, name, target) {
                 self.find(foreground.span(), message);
             }
         }

@@ -42,6 +42,18 @@ pub(crate) fn scratch_in(group: &str, name: &str) -> PathBuf {
     dir
 }
 
+/// Writes `dir`'s `rapid.toml`: the one task T_ROB1 running `main.mod`, with `units`.
+pub(crate) fn write_manifest(dir: &Path, units: &str) {
+    let manifest = format!("[[task]]\nname = \"T_ROB1\"\nmodules = [\"main.mod\"]\n\n{units}");
+    fs::write(dir.join("rapid.toml"), manifest).expect("manifest");
+}
+
+/// UNITS with STN1's frame at (400, 0, 200) and `extra` lines after its name: a turntable
+/// that carries work objects.
+pub(crate) fn units_with_table(extra: &str) -> String {
+    UNITS.replace("name = \"STN1\"\n", &format!("name = \"STN1\"\nbase = [400, 0, 200]\n{extra}"))
+}
+
 /// Fills `dir` with `rapid.toml` (one task with UNITS, `extra` appended) and `main.mod`
 /// with `body` as the statements of `main`.
 pub(crate) fn project_at(dir: PathBuf, decls: &str, body: &str, extra: &str) -> PathBuf {
