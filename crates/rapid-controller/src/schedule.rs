@@ -1,7 +1,7 @@
-//! The scheduler (§1.20 优先级): round-robin one instruction each among the busy tasks
-//! whose foreground tasks are idle; the controller clock moves on while every runnable
-//! task waits, and by a nominal instruction time while tasks compute, so a task that
-//! polls in a loop does not stop the clock for the others.
+//! The scheduler (§1.20 优先级): round-robin one basic step (a statement) each among the
+//! busy tasks whose foreground tasks are idle; the controller clock moves on while every
+//! runnable task waits, and by a nominal statement time while tasks compute, so a task
+//! that polls in a loop does not stop the clock for the others.
 
 use rapid_vm::builtins::tasking::{SharedTasking, TaskInfo};
 use rapid_vm::builtins::Shared;
@@ -11,9 +11,9 @@ use crate::pers::{PersStore, TaskPers};
 use crate::task::{TaskEnd, TaskKind, TaskSpec, TrustLevel};
 use crate::types::{type_map, TypeMap};
 
-/// Controller time one instruction takes while tasks compute.
+/// Controller time one basic step (a statement) takes while tasks compute.
 // uncertain: RobotWare does not publish instruction times; a microsecond is the order
-// of a simple RAPID instruction on an IRC5. It only matters for tasks that loop
+// of a simple RAPID statement on an IRC5. It only matters for tasks that loop
 // without waiting.
 pub const INSTRUCTION_TIME: f64 = 1e-6;
 
@@ -91,7 +91,7 @@ pub struct Controller {
     maps: Vec<Vec<TypeMap>>,
     /// The controller clock, seconds.
     pub time: f64,
-    /// Instructions executed, all tasks together.
+    /// Basic steps (statements) executed, all tasks together.
     pub steps: u64,
     /// Set when a static task's stop stopped the NORMAL tasks.
     pub system_stop: Option<SystemStop>,
@@ -314,7 +314,7 @@ impl Controller {
         }
     }
 
-    /// Runs at most `budget` instructions, all tasks together.
+    /// Runs at most `budget` basic steps (statements), all tasks together.
     pub fn run(&mut self, host: &mut dyn Host, budget: u64) -> SystemExit {
         let mut remaining = budget;
         while remaining > 0 {
@@ -375,14 +375,16 @@ impl Controller {
         }
     }
 
-    /// Runs one instruction of task `idx` with the shared state handed in.
+    /// Runs one basic step (a statement, [`rapid_vm::Vm::run_statement`]) of task `idx`
+    /// with the shared state handed in: a statement reading and writing a shared
+    /// persistent is not cut by another task's.
     fn step(&mut self, idx: usize, host: &mut dyn Host) {
         let time = self.time;
         let task = &mut self.tasks[idx];
         self.pers.copy_in(idx, &mut task.pers, &mut task.loaded.vm, &self.maps);
         task.loaded.vm.time = time;
         task.loaded.vm.exchange_shared(&mut self.shared);
-        let exit = task.loaded.vm.run(host, 1);
+        let exit = task.loaded.vm.run_statement(host);
         task.loaded.vm.exchange_shared(&mut self.shared);
         self.pers.copy_out(idx, &mut task.pers, &task.loaded.vm);
         self.publish_events(idx);
