@@ -132,6 +132,8 @@ impl Controller {
         for (idx, (spec, mut loaded)) in tasks.into_iter().enumerate() {
             let view = pers.register(idx, &spec.name, &loaded, &spec.shared_files)?;
             loaded.vm.resources_mut().tasking.me = spec.name.clone();
+            // A socket wait must not block the process: the other tasks run meanwhile.
+            loaded.vm.resources_mut().sockets.set_cooperative(true);
             loaded.vm.exchange_shared(&mut shared);
             loaded.vm.connect_configured_signals();
             loaded.vm.exchange_shared(&mut shared);
@@ -170,6 +172,12 @@ impl Controller {
     /// The shared state, to configure before the run (the stimulus).
     pub fn shared_mut(&mut self) -> &mut Shared {
         &mut self.shared
+    }
+
+    /// Whether a waiting task waits on the outside world (a socket): the clock must
+    /// then move in wall-clock time, so that the peer has the time the program gives it.
+    pub fn waits_on_outside_world(&self) -> bool {
+        self.tasks.iter().any(|t| matches!(t.state, State::Waiting { .. }) && t.loaded.vm.resources().sockets.is_polling())
     }
 
     /// Moves the clock on (after [`SystemExit::Wait`]).

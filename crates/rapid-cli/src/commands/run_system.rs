@@ -409,8 +409,11 @@ fn drive(controller: &mut Controller, host: &mut StdoutHost<'_>, args: &RunArgs)
             SystemExit::Stopped => return Some(Bound::Stopped),
             SystemExit::Budget => {}
             SystemExit::Wait(seconds) => {
+                // While a task waits on a socket, the clock runs in wall-clock time
+                // (what it waits for comes from outside); otherwise it jumps.
+                let paced = args.realtime || controller.waits_on_outside_world();
                 controller.advance(seconds);
-                if args.realtime && controller.time <= args.max_time.unwrap_or(f64::INFINITY) {
+                if paced && controller.time <= args.max_time.unwrap_or(f64::INFINITY) {
                     host.flush();
                     std::thread::sleep(Duration::from_secs_f64(seconds.min(86_400.0)));
                 }

@@ -200,6 +200,11 @@ impl Vm {
         &mut self.resources
     }
 
+    /// The task's files, directories, sockets and robot, to look at.
+    pub fn resources(&self) -> &crate::builtins::Resources {
+        &self.resources
+    }
+
     /// The numbers of the predefined errors (read from the ERR_ constants at load).
     pub fn set_errnos(&mut self, errnos: FxHashMap<&'static str, i32>) {
         self.errnos = errnos;

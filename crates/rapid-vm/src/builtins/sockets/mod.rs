@@ -14,9 +14,19 @@
 //! also when the wait ends in an error (ERR_SOCK_TIMEOUT), and nobody sleeps it again
 //! (not even `rapid run --realtime`).
 //!
-//! When tasks run side by side, table.rs's `poll_*` functions are the seam: they make
-//! progress without waiting, so a scheduler can poll each waiting task instead of
-//! blocking the controller.
+//! When tasks run side by side (`SocketState::set_cooperative`, set by the controller
+//! for every task of a system), SocketAccept, SocketReceive and SocketReceiveFrom do
+//! not block: each try makes what progress it can without waiting (table.rs's `poll_*`
+//! steps, reached with a deadline of now), and while nothing has come the statement is
+//! run again `POLL_PERIOD` later (`StopKind::Repeat`, as WaitDI waits), the other tasks
+//! running meanwhile. `\Time` then counts controller time from the first try, and the
+//! controller paces its clock in wall-clock time while a task waits so
+//! (`SocketState::is_polling`), so the peer has the time the program gives it.
+//! SocketConnect and SocketSend still block (briefly, unless the peer is unreachable
+//! or reads nothing).
+// uncertain: interrupts may run a trap while a socket wait is under way in a system, as
+// during WaitDI; whether the controller serves traps during SocketReceive is not
+// documented.
 
 mod payload;
 mod table;
@@ -25,6 +35,7 @@ use std::net::{Ipv4Addr, SocketAddr, SocketAddrV4};
 use std::str::FromStr;
 use std::time::{Duration, Instant};
 
+use super::io_wait::{wait_again, wait_started};
 use super::{present, Ctx, Entries};
 use crate::errnames::Err;
 use crate::error::RapidError;
@@ -35,6 +46,10 @@ type Res = Result<Option<Value>, RapidError>;
 
 /// The `\Time` of Connect, Accept and the receives when none is given (manual: 60 s).
 const DEFAULT_TIME: f64 = 60.0;
+
+/// Controller seconds between two tries of a socket wait in cooperative mode: the
+/// controller's 4 ms period.
+const POLL_PERIOD: f64 = 0.004;
 
 pub(super) static ENTRIES: Entries = &[
     ("SocketCreate", socket_create),
@@ -102,9 +117,9 @@ fn socket_accept(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (_, handle) = socket_arg(ctx, &args[0])?;
     let (client, client_handle) = socket_arg(ctx, &args[1])?;
     let timeout = time_arg(ctx, args.get(3))?;
-    let started = Instant::now();
-    let res = ctx.resources.sockets.accept(handle, deadline(started, timeout));
-    let (new, ip) = finish_wait(ctx, started, res)?;
+    let Some((new, ip)) = wait_for(ctx, timeout, |sockets, deadline| sockets.accept(handle, deadline))? else {
+        return Ok(None);
+    };
     // uncertain: a ClientSocket still in use is replaced (its connection closed); the
     // manual documents no error for it.
     ctx.resources.sockets.close(client_handle);
@@ -156,9 +171,9 @@ fn socket_receive(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         None => table::Want { min: 1, max: capacity },
     };
     let timeout = time_arg(ctx, args.get(6))?;
-    let started = Instant::now();
-    let res = ctx.resources.sockets.receive(handle, want, deadline(started, timeout));
-    let bytes = finish_wait(ctx, started, res)?;
+    let Some(bytes) = wait_for(ctx, timeout, |sockets, deadline| sockets.receive(handle, want, deadline))? else {
+        return Ok(None);
+    };
     payload::store_received(ctx, args, slot, &bytes)?;
     if present(args.get(5)) {
         ctx.store(&args[5], Value::Num(bytes.len() as f32))?;
@@ -178,9 +193,8 @@ fn socket_receive_from(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         None => capacity,
     };
     let timeout = time_arg(ctx, args.get(8))?;
-    let started = Instant::now();
-    let res = ctx.resources.sockets.receive_from(handle, max, deadline(started, timeout));
-    let (bytes, from) = finish_wait(ctx, started, res)?;
+    let wait = wait_for(ctx, timeout, |sockets, deadline| sockets.receive_from(handle, max, deadline))?;
+    let Some((bytes, from)) = wait else { return Ok(None) };
     payload::store_received(ctx, args, slot, &bytes)?;
     if present(args.get(5)) {
         ctx.store(&args[5], Value::Num(bytes.len() as f32))?;
@@ -229,6 +243,37 @@ fn set_handle(ctx: &mut Ctx<'_>, arg: &Value, mut opaque: Opaque, handle: Option
     opaque.state = handle.map_or(OpaqueState::None, OpaqueState::Handle);
     ctx.store(arg, Value::Opaque(Box::new(opaque)))?;
     Ok(None)
+}
+
+/// Runs socket operation `op` (given its deadline) for at most `timeout`. A task running
+/// alone blocks in it. In cooperative mode it is tried without waiting: `None` while
+/// nothing has come and time is left (the statement runs again a poll later), else its
+/// outcome, ERR_SOCK_TIMEOUT once `timeout` of controller time has passed.
+fn wait_for<T>(
+    ctx: &mut Ctx<'_>,
+    timeout: Duration,
+    op: impl FnOnce(&mut SocketState, Instant) -> Result<T, table::Fault>,
+) -> Result<Option<T>, RapidError> {
+    if !ctx.resources.sockets.is_cooperative() {
+        let started = Instant::now();
+        let res = op(&mut ctx.resources.sockets, deadline(started, timeout));
+        return finish_wait(ctx, started, res).map(Some);
+    }
+    let started = wait_started(ctx);
+    let until = started + timeout.as_secs_f64();
+    match op(&mut ctx.resources.sockets, Instant::now()) {
+        Err((Err::SockTimeout, _)) if ctx.time < until => {
+            ctx.resources.sockets.set_polling(true);
+            let next = ctx.time + POLL_PERIOD;
+            wait_again(ctx, started, Some(until), Some(next));
+            Ok(None)
+        }
+        res => {
+            ctx.resources.io.waiting = None;
+            ctx.resources.sockets.set_polling(false);
+            res.map(Some).map_err(|f| fault(ctx, f))
+        }
+    }
 }
 
 /// Reports the wall time a socket operation took as a wait of the controller clock,

@@ -88,6 +88,10 @@ pub struct SocketState {
     next_handle: u32,
     /// No network for this task (fuzzing, sandboxed hosts): SocketCreate fails.
     offline: bool,
+    /// The task runs beside others: a socket wait polls and gives way (mod.rs).
+    cooperative: bool,
+    /// A socket wait of the task is under way in cooperative mode.
+    polling: bool,
 }
 
 impl SocketState {
@@ -98,6 +102,26 @@ impl SocketState {
 
     pub fn is_offline(&self) -> bool {
         self.offline
+    }
+
+    /// Makes the task's socket waits polls that give way to other tasks (a task of a
+    /// system) instead of blocking the process (a task running alone).
+    pub fn set_cooperative(&mut self, cooperative: bool) {
+        self.cooperative = cooperative;
+    }
+
+    pub(super) fn is_cooperative(&self) -> bool {
+        self.cooperative
+    }
+
+    /// Whether the task waits on a socket now (cooperative mode): what it waits for
+    /// comes from outside, in wall-clock time.
+    pub fn is_polling(&self) -> bool {
+        self.polling
+    }
+
+    pub(super) fn set_polling(&mut self, polling: bool) {
+        self.polling = polling;
     }
 
     /// Closes every socket.

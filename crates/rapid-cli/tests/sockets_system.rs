@@ -1,0 +1,90 @@
+//! Sockets in a system of several tasks: a task waiting on a socket gives way to the
+//! others (the controller runs them while it waits), and its `\Time` is the peer's in
+//! wall-clock time. The peer is a Rust listener on 127.0.0.1 with a port the OS chose;
+//! every wait is bounded on both sides.
+
+mod system_fixture;
+
+use std::io::{BufRead, BufReader, Write};
+use std::net::TcpListener;
+use std::path::Path;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use system_fixture::{scratch_in, system, text, TaskDef};
+
+/// A task that ticks three times, 0.1 s apart.
+const TICKER: &str = "MODULE Ticker\n  PROC main()\n    FOR i FROM 1 TO 3 DO\n      WaitTime 0.1;\n      \
+                      TPWrite \"tick\";\n    ENDFOR\n  ENDPROC\nENDMODULE\n";
+
+/// A two-task backup in `dir`: T_ROB1 runs `client` (with `PORT` replaced), T_B ticks.
+fn client_and_ticker(dir: &Path, client: &str, port: u16) {
+    let client = client.replace("PORT", &port.to_string());
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: &client },
+        TaskDef { name: "T_B", attrs: "-Type \"NORMAL\"", module: TICKER },
+    ];
+    system(dir, &tasks, "");
+}
+
+#[test]
+fn a_task_waiting_on_a_socket_lets_the_other_tasks_run() {
+    let dir = scratch_in("sockets_system", "give_way");
+    let listener = TcpListener::bind("127.0.0.1:0").expect("bind");
+    let port = listener.local_addr().expect("addr").port();
+    let client = "MODULE Client\n  VAR socketdev s;\n  VAR string got;\n  PROC main()\n    SocketCreate s;\n    \
+                  SocketConnect s, \"127.0.0.1\", PORT;\n    SocketReceive s \\Str:=got \\Time:=10;\n    \
+                  TPWrite \"got \" + got;\n    SocketClose s;\n  ENDPROC\nENDMODULE\n";
+    client_and_ticker(&dir, client, port);
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .current_dir(&dir)
+        .args(["run", "sys"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start rapid");
+    let (mut peer, _) = listener.accept().expect("accept");
+    peer.set_write_timeout(Some(Duration::from_secs(10))).expect("timeout");
+    // The other task runs while T_ROB1 waits for data: its three ticks come first, and
+    // only then does the peer send what T_ROB1 waits for.
+    let mut lines = BufReader::new(child.stdout.take().expect("stdout")).lines();
+    let mut seen = Vec::new();
+    for _ in 0..3 {
+        seen.push(lines.next().and_then(Result::ok).unwrap_or_default());
+    }
+    assert_eq!(seen, ["tick", "tick", "tick"]);
+    peer.write_all(b"hello").expect("send");
+    let rest: Vec<String> = lines.map_while(Result::ok).collect();
+    let out = child.wait_with_output().expect("rapid ends");
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(rest, ["got hello"]);
+}
+
+#[test]
+fn a_socket_wait_in_a_system_gives_the_peer_its_time_in_wall_clock_time() {
+    let dir = scratch_in("sockets_system", "time_out");
+    let listener = TcpListener::bind("127.0.0.1:0").expect("bind");
+    let port = listener.local_addr().expect("addr").port();
+    let client = "MODULE Client\n  VAR socketdev s;\n  VAR string got;\n  PROC main()\n    SocketCreate s;\n    \
+                  SocketConnect s, \"127.0.0.1\", PORT;\n    SocketReceive s \\Str:=got \\Time:=0.5;\n    \
+                  TPWrite \"got \" + got;\n  ERROR\n    IF ERRNO = ERR_SOCK_TIMEOUT TPWrite \"timeout\";\n    \
+                  SocketClose s;\n    RETURN;\n  ENDPROC\nENDMODULE\n";
+    client_and_ticker(&dir, client, port);
+    let started = Instant::now();
+    let child = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .current_dir(&dir)
+        .args(["run", "sys"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start rapid");
+    // The peer keeps the connection open and sends nothing.
+    let (_peer, _) = listener.accept().expect("accept");
+    let out = child.wait_with_output().expect("rapid ends");
+    let elapsed = started.elapsed();
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    // The ticks at 0.1, 0.2 and 0.3 s come before the receive times out at 0.5 s, and
+    // those 0.5 s passed on the wall clock: the peer had them.
+    assert_eq!(text(&out.stdout), "tick\ntick\ntick\ntimeout\n");
+    assert!(elapsed >= Duration::from_millis(450), "{elapsed:?}");
+}
