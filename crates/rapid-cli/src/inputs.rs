@@ -79,6 +79,21 @@ impl Inputs {
     pub(crate) fn table(&self) -> Vec<&SourceInput> {
         self.modules.iter().chain(&self.programs).chain(&self.configs).collect()
     }
+
+    /// The configuration findings of this task's inputs that `first` (another task of
+    /// the same backup, whose configuration is the same files in the same order) does
+    /// not have: those about this task alone (a module of HOME it loads), numbered
+    /// as files of `first`'s table.
+    pub(crate) fn task_config_findings(&self, first: &Inputs) -> Vec<Diagnostic> {
+        let own_configs = self.modules.len() + self.programs.len();
+        let first_configs = first.modules.len() + first.programs.len();
+        self.diagnostics
+            .iter()
+            .filter(|d| d.code == Code::ConfigFile && d.file >= own_configs)
+            .map(|d| Diagnostic { file: d.file - own_configs + first_configs, ..d.clone() })
+            .filter(|d| !first.diagnostics.iter().any(|f| f.file == d.file && f.span == d.span && f.message == d.message))
+            .collect()
+    }
 }
 
 /// Reads every PATH. Fails, with a message naming the PATH, when one cannot be used.
@@ -220,7 +235,7 @@ impl Collector {
             self.add_module(path).with_context(|| format!("cannot read `{shown}`"))?;
         }
         if let Some(sys) = &sys {
-            self.add_shared_modules(folder, sys, &modules);
+            self.add_home_modules(folder, sys, &task.name, &modules);
         }
         self.task = Some(task);
         self.sys = sys;
@@ -228,15 +243,19 @@ impl Collector {
         Ok(())
     }
 
-    /// The modules SYS.cfg installs shared (`CAB_TASK_MODULES -Shared`): one module
-    /// every task sees, read from the backup's HOME folder (a backup does not keep it
-    /// in a task folder). A shared module of HOME that is missing is a finding in
-    /// SYS.cfg; one on another device (RobotWare's own, `RELEASE:/…`) is not in a
-    /// backup and is left out.
+    /// The modules SYS.cfg loads from HOME (`CAB_TASK_MODULES`): a shared one
+    /// (`-Shared`: one module every task sees), and one of task `task` (`-Task`, or
+    /// `-AllTask`) that the task folder does not hold already (one installed with
+    /// `-Install` is not saved in it), read from the backup's HOME folder. One of HOME
+    /// that is missing is a finding in SYS.cfg; one on another device (RobotWare's own,
+    /// `RELEASE:/…`) is not in a backup and is left out.
     // uncertain: shared modules of RobotWare itself (BASE_SHARED and the like) are not
     // modelled; their routines are in the catalogue.
-    fn add_shared_modules(&mut self, folder: &Path, sys: &sys::Sys, task_files: &[PathBuf]) {
-        for module in sys.modules.iter().filter(|m| m.shared) {
+    fn add_home_modules(&mut self, folder: &Path, sys: &sys::Sys, task: &str, task_files: &[PathBuf]) {
+        let mine = |m: &&sys::TaskModule| {
+            m.shared || m.all_tasks || m.task.as_deref().is_some_and(|t| t.eq_ignore_ascii_case(task))
+        };
+        for module in sys.modules.iter().filter(mine) {
             let Some(rest) =
                 module.file.get(..5).filter(|d| d.eq_ignore_ascii_case("HOME:")).map(|_| &module.file[5..])
             else {
@@ -257,14 +276,15 @@ impl Collector {
             match path.filter(|p| p.is_file()) {
                 Some(path) => {
                     let index = self.modules.len();
-                    if self.add_module(&path).is_ok() && self.modules.len() > index {
+                    if self.add_module(&path).is_ok() && self.modules.len() > index && module.shared {
                         self.shared_modules.push(index);
                     }
                 }
-                None => self.sys_finding(
-                    module.line,
-                    format!("shared module `{}` is not in the backup's HOME folder", module.file),
-                ),
+                None => {
+                    let kind = if module.shared { "shared module" } else { "task module" };
+                    let message = format!("{kind} `{}` is not in the backup's HOME folder", module.file);
+                    self.sys_finding(module.line, message);
+                }
             }
         }
     }

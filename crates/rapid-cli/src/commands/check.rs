@@ -26,6 +26,7 @@ pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
         let options = Options { syntax_only: args.syntax_only, predefined: other.predefined.clone() };
         let found = rapid_sema::check(&other.modules, &options);
         diagnostics.extend(found.into_iter().map(|d| Diagnostic { file: d.file + offset, ..d }));
+        diagnostics.extend(other.task_config_findings(&inputs));
         table.extend(other.modules.iter());
         rank.extend((0..other.modules.len()).map(|i| offset + i));
     }

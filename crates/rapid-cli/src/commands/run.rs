@@ -28,7 +28,7 @@ pub(crate) const WARM_START: &str =
 
 pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     let inputs = inputs::collect(&args.paths)?;
-    if inputs.diagnostics.iter().any(|d| d.code == Code::ConfigFile && d.severity() == Severity::Error) {
+    if has_config_errors(&inputs) {
         return report_input_errors(&inputs);
     }
     // Several tasks, or system inputs and outputs (the controller operates the program
@@ -345,6 +345,11 @@ pub(crate) fn location(files: &[SourceInput], file: usize, offset: u32) -> (Stri
         }
         None => ("<predefined>".into(), 0, 0),
     }
+}
+
+/// Whether the inputs' configuration has errors (the controller would not start).
+pub(crate) fn has_config_errors(inputs: &inputs::Inputs) -> bool {
+    inputs.diagnostics.iter().any(|d| d.code == Code::ConfigFile && d.severity() == Severity::Error)
 }
 
 /// Errors in a backup's configuration: the controller would not start, so nothing

@@ -17,10 +17,10 @@ use std::time::Duration;
 
 use rapid_config::sys::{Sys, TaskType};
 use rapid_controller::{Controller, SystemExit, TaskEnd, TaskKind, TaskSpec, TrustLevel};
-use rapid_sema::{Options, SourceInput};
+use rapid_sema::{Options, Severity, SourceInput};
 use rapid_vm::load_with;
 
-use super::run::{self as single, StdoutHost};
+use super::run::{self as single, has_config_errors, StdoutHost};
 use crate::args::RunArgs;
 use crate::commands::ExitStatus;
 use crate::inputs::{self, Inputs};
@@ -50,15 +50,30 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         Ok(specs) => specs,
         Err(message) => return refuse(&message),
     };
-    let mut tasks = Vec::new();
+    let mut tasks: Vec<LoadedTask> = Vec::new();
     let mut first = Some(first);
+    let mut own_findings = Vec::new();
     for spec in specs {
         let inputs = match first.take().filter(|f| f.task.as_ref().is_none_or(|t| t.name == spec.name)) {
             Some(inputs) => inputs,
-            None => inputs::collect_task(&args.paths, Some(&spec.name))?,
+            None => {
+                let inputs = inputs::collect_task(&args.paths, Some(&spec.name))?;
+                // What is wrong for this task alone (a module of HOME it loads is missing).
+                match tasks.first() {
+                    Some(first) => own_findings.extend(inputs.task_config_findings(&first.inputs)),
+                    None if has_config_errors(&inputs) => return single::report_input_errors(&inputs),
+                    None => {}
+                }
+                inputs
+            }
         };
         let spec = TaskSpec { shared_files: inputs.shared_modules.clone(), ..spec };
         tasks.push(LoadedTask { inputs, spec });
+    }
+    if own_findings.iter().any(|d| d.severity() == Severity::Error) {
+        let mut first = tasks.swap_remove(0).inputs;
+        first.diagnostics.extend(own_findings);
+        return single::report_input_errors(&first);
     }
     let mut loaded = Vec::new();
     for (idx, task) in tasks.iter().enumerate() {
