@@ -40,7 +40,7 @@ pub(crate) struct RunArgs {
     /// Run mode: the number of cycles to run. 1 (the default) is cycle mode: the end of
     /// the entry routine, or ExitCycle, ends the run. More is continuous mode: each
     /// starts the next cycle; 0 runs on until the program stops itself (Stop, EXIT) or
-    /// --max-time / --max-steps ends it.
+    /// --max-time / --max-steps ends it. In a system each NORMAL task runs its cycles.
     #[arg(long, value_name = "N", default_value_t = 1)]
     pub(crate) cycles: u64,
 

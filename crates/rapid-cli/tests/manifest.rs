@@ -468,14 +468,25 @@ fn max_time_bounds_a_system_whose_task_never_waits() {
 }
 
 #[test]
-fn cycles_are_refused_for_a_system_rather_than_ignored() {
+fn each_normal_task_of_a_system_runs_its_cycles() {
     let dir = scratch("cycles_system");
-    let module = "MODULE M\n  PROC main()\n    TPWrite \"ran\";\n  ENDPROC\nENDMODULE\n";
+    // `--cycles 3`: every NORMAL task starts main again when it ends (continuous mode,
+    // data kept). T_A's cycles take 0.3 s, T_B's 0.5 s (the second ended by ExitCycle,
+    // which ends a cycle like the end of main); T_C's EXIT in its second cycle, at
+    // 0.4 s, ends T_C for good (a restart is not allowed). Prints: T_A at 0, 0.3, 0.6;
+    // T_B at 0, 0.5, 1.0; T_C at 0 and 0.2.
+    let cycle = |task: &str, wait: &str, end: &str| {
+        format!(
+            "MODULE M\n  VAR num n := 0;\n  PROC main()\n    n := n + 1;\n    TPWrite \"{task} \" \\Num:=n;\n    \
+             WaitTime {wait};\n    IF n = 2 {end};\n  ENDPROC\nENDMODULE\n"
+        )
+    };
+    let (a, b, c) = (cycle("a", "0.3", "n := n"), cycle("b", "0.5", "ExitCycle"), cycle("c", "0.2", "EXIT"));
     let toml = "[[task]]\nname = \"T_A\"\ntype = \"NORMAL\"\nmodules = [\"a/M.mod\"]\n\n\
-                [[task]]\nname = \"T_B\"\ntype = \"NORMAL\"\nmodules = [\"b/M.mod\"]\n";
-    write(&dir, &[("rapid.toml", toml), ("a/M.mod", module), ("b/M.mod", module)]);
-    let out = rapid_in(&dir, &["run", "--cycles", "2", "rapid.toml"]);
-    assert_eq!(out.status.code(), Some(1));
-    assert_eq!(text(&out.stdout), "");
-    assert!(text(&out.stderr).contains("--cycles is not supported for a system"), "{}", text(&out.stderr));
+                [[task]]\nname = \"T_B\"\ntype = \"NORMAL\"\nmodules = [\"b/M.mod\"]\n\n\
+                [[task]]\nname = \"T_C\"\ntype = \"NORMAL\"\nmodules = [\"c/M.mod\"]\n";
+    write(&dir, &[("rapid.toml", toml), ("a/M.mod", &a), ("b/M.mod", &b), ("c/M.mod", &c)]);
+    let out = rapid_in(&dir, &["run", "--quiet", "--cycles", "3", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "a 1\nb 1\nc 1\nc 2\na 2\nb 2\na 3\nb 3\n");
 }

@@ -99,6 +99,10 @@ pub struct Controller {
     pub stop_routines: Vec<Vec<String>>,
     /// Instructions run since the last NORMAL task ended.
     drained: u64,
+    /// Run mode: the cycles each NORMAL task runs (1: cycle mode; 0: continuous
+    /// until stopped), and how many each has ended.
+    cycles: u64,
+    cycles_ended: Vec<u64>,
     /// Program stop and start, system inputs and outputs (`ops.rs`).
     pub(crate) ops: crate::ops::Operations,
 }
@@ -150,6 +154,7 @@ impl Controller {
             built[idx].foreground = Some(fg);
         }
         let stop_routines = vec![Vec::new(); built.len()];
+        let cycles_ended = vec![0; built.len()];
         Ok(Controller {
             tasks: built,
             shared,
@@ -160,8 +165,17 @@ impl Controller {
             system_stop: None,
             stop_routines,
             drained: 0,
+            cycles: 1,
+            cycles_ended,
             ops: crate::ops::Operations::default(),
         })
+    }
+
+    /// Run mode: each NORMAL task runs `cycles` cycles, the end of its entry routine
+    /// or ExitCycle starting the next (continuous mode, data kept); 0 runs on until a
+    /// task stops. 1, the default, is cycle mode.
+    pub fn set_cycles(&mut self, cycles: u64) {
+        self.cycles = cycles;
     }
 
     /// The I/O system the tasks share (its change log), if there is one.
@@ -458,14 +472,21 @@ impl Controller {
         }
     }
 
-    /// The end of a task's cycle: a NORMAL task has run its one cycle; a static task
-    /// runs continuously, so it starts its entry routine again.
+    /// The end of a task's cycle: a NORMAL task has run its cycles (one in cycle
+    /// mode) or starts the next; a static task runs continuously, so it starts its
+    /// entry routine again. EXIT ends a task for good (no restart is allowed).
     // uncertain: STATIC and SEMISTATIC tasks run in continuous mode on the controller,
     // so the end of main starts main again rather than stopping the task.
     fn cycle_end(&mut self, idx: usize, end: TaskEnd) -> State {
         let task = &mut self.tasks[idx];
-        if task.spec.kind == TaskKind::Normal {
+        if task.loaded.vm.ended_by_exit() {
             return State::Ended(end);
+        }
+        if task.spec.kind == TaskKind::Normal {
+            self.cycles_ended[idx] += 1;
+            if self.cycles != 0 && self.cycles_ended[idx] >= self.cycles {
+                return State::Ended(end);
+            }
         }
         let entry = task.loaded.entry;
         if task.loaded.vm.start_routine(entry) {

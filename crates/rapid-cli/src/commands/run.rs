@@ -125,9 +125,10 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
             }
             Exit::Done | Exit::CycleEnded => {
                 // Continuous run mode: the next cycle starts at the entry routine, the
-                // data keeping its values.
+                // data keeping its values. EXIT ends the program for good (§1.12: it
+                // terminates execution where a restart is not allowed).
                 cycles_run += 1;
-                if args.cycles != 0 && cycles_run >= args.cycles {
+                if (args.cycles != 0 && cycles_run >= args.cycles) || loaded.vm.ended_by_exit() {
                     break ExitStatus::Success;
                 }
                 let steps = loaded.vm.steps;

@@ -40,12 +40,6 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         None if has_system_signals(&first) => one_task_system(&first),
         None => return single::run(args),
     };
-    if args.cycles != 1 {
-        // The NORMAL tasks of a system run one cycle: continuous mode is not modelled here.
-        return refuse(
-            "--cycles is not supported for a system (a backup or manifest with tasks or system signals) yet",
-        );
-    }
     let specs = match task_specs(&sys) {
         Ok(specs) => specs,
         Err(message) => return refuse(&message),
@@ -170,6 +164,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         Ok(controller) => controller,
         Err(message) => return refuse(&message),
     };
+    controller.set_cycles(args.cycles);
     if let Err(message) = install_stimulus(&mut controller, args) {
         return refuse(&message);
     }

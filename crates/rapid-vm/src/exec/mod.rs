@@ -20,6 +20,7 @@ pub mod modules;
 mod num;
 mod shared;
 mod spy;
+mod statement;
 mod stop;
 pub mod storage;
 
@@ -48,9 +49,6 @@ const FIRST_BOOKED_ERRNO: i32 = 5000;
 pub(crate) fn is_booked(n: i32, next_booked: i32) -> bool {
     (FIRST_BOOKED_ERRNO..next_booked).contains(&n)
 }
-
-/// Instructions [`Vm::run_statement`] runs at most before giving way to the other tasks.
-const MAX_STATEMENT_STEPS: u32 = 10_000;
 
 /// Why `run` returned.
 #[derive(Debug, Clone, PartialEq)]
@@ -230,6 +228,12 @@ impl Vm {
         self.events.entries()
     }
 
+    /// Whether the program ended by EXIT (which forbids a restart: a continuous run
+    /// stops there) rather than by the end of its entry routine or ExitCycle.
+    pub fn ended_by_exit(&self) -> bool {
+        self.exiting && !self.cycle_exit && self.frames.is_empty()
+    }
+
     /// Runs `code` with no arguments as the first frame (the entry routine or the
     /// load-time initialisers).
     pub fn start(&mut self, code: Rc<Code>) {
@@ -354,29 +358,6 @@ impl Vm {
         } else {
             Exit::Budget
         }
-    }
-
-    /// Runs the task to the start of its next statement (the manual's "basic step",
-    /// §1.20: tasks at one level take turns a basic step each), or to a wait, a stop or
-    /// the end. A statement is never cut between its reads and writes, so two tasks
-    /// adding to one shared persistent both count. A statement that runs on past
-    /// `MAX_STATEMENT_STEPS` instructions (a function looping) gives way there.
-    pub fn run_statement(&mut self, host: &mut dyn crate::host::Host) -> Exit {
-        for _ in 0..MAX_STATEMENT_STEPS {
-            let exit = self.run(host, 1);
-            if exit != Exit::Budget || self.at_statement_start() {
-                return exit;
-            }
-        }
-        Exit::Budget
-    }
-
-    /// The top frame stands at the first instruction of one of its statements.
-    fn at_statement_start(&self) -> bool {
-        let Some(frame) = self.frames.last() else { return true };
-        let stmts = &frame.code.stmts;
-        let at = stmts.partition_point(|s| s.start < frame.pc);
-        stmts.get(at).is_some_and(|s| s.start == frame.pc)
     }
 
     fn frame(&self) -> &Frame {
