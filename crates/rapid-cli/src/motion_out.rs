@@ -70,7 +70,7 @@ fn model_of_moc(
 /// `--robot`, else the task's own `robot` model in a manifest, else the manifest's
 /// [system] robot, else its MOC.cfg robot's type when we know it, else `system` (the
 /// run's model, [`choose_model`]).
-pub(crate) fn task_robot(
+pub(crate) fn robot_model(
     args: &RunArgs,
     inputs: &crate::inputs::Inputs,
     task: &str,
@@ -97,9 +97,9 @@ pub(crate) fn configure(robot: &mut RobotState, model: &'static rapid_motion::Ro
     }
 }
 
-/// Places robot `ROB_n`, which motion task `task` moves (`crate::robots`), where the manifest's `base`/`orientation` of that task puts it, else where
-/// MOC.cfg's `ROBOT` instance of that name has its base frame; the world frame without
-/// either.
+/// Places robot `ROB_n`, which motion task `task` moves (`crate::robots`), where the
+/// manifest's `base`/`orientation` of that task puts it, else where MOC.cfg's `ROBOT`
+/// instance of that name has its base frame; the world frame without either.
 pub(crate) fn configure_base(robot: &mut RobotState, inputs: &crate::inputs::Inputs, n: usize, task: &str) {
     let from_manifest = inputs.robot_bases.iter().find(|(t, _, _)| t.eq_ignore_ascii_case(task));
     let base = match from_manifest {

@@ -59,13 +59,13 @@ fn backup(dir: &Path, sys: &str, rob2: &str, rob1: &str) -> PathBuf {
     root
 }
 
-/// A task's program: it names its robot, moves axis 5 to 30° and back to the
+/// A task's program: it names its robot and its motion planner, moves axis 5 to 30° and back to the
 /// calibration position, then writes where tool0 is in the world (CRobT in wobj0). The
 /// second task waits a little so that the lines come in order.
 fn program(task: &str, wait: f64) -> String {
     format!(
         "MODULE Main\n  VAR robtarget p;\n  PROC main()\n    WaitTime {wait};\n    \
-         TPWrite \"{task} \" + RobName() + \" \" + GetMecUnitName(ROB_ID);\n    \
+         TPWrite \"{task} \" + RobName() + \" \" + GetMecUnitName(ROB_ID) + \" planner \" \\Num:=MotionPlannerNo();\n    \
          MoveAbsJ [[0,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    \
          MoveAbsJ [[0,0,0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    \
          p := CRobT(\\Tool:=tool0 \\WObj:=wobj0);\n    \
@@ -77,7 +77,8 @@ fn program(task: &str, wait: f64) -> String {
 #[test]
 fn each_task_moves_the_robot_its_group_names() {
     // T_ROB2 is the first motion task, but its group names ROB_2: RobName and
-    // GetMecUnitName(ROB_ID) answer ROB_2 there, ROB_1 in T_ROB1. At the calibration
+    // GetMecUnitName(ROB_ID) answer ROB_2 there, and its motion planner is ROB_2's, 2;
+    // ROB_1 and planner 1 in T_ROB1. At the calibration
     // position the IRB 120's tool0 is at (374, 0, 630) in its base frame (wrist centre
     // 302 mm out and 630 mm up, the flange 72 mm beyond it along x). ROB_1's base is the
     // world: (374.0, 0.0, 630.0). ROB_2's base turns x to -x and y to -y and stands at
@@ -98,10 +99,10 @@ fn each_task_moves_the_robot_its_group_names() {
     assert_eq!(
         lines,
         [
-            "T_ROB2 ROB_2 ROB_2",
+            "T_ROB2 ROB_2 ROB_2 planner 2",
             "unit ROB_1 task 2",
             "unit ROB_2 task 1",
-            "T_ROB1 ROB_1 ROB_1",
+            "T_ROB1 ROB_1 ROB_1 planner 1",
             "T_ROB2 world 1626.0 500.0 630.0",
             "T_ROB1 world 374.0 0.0 630.0",
         ]
@@ -132,6 +133,21 @@ fn each_task_moves_the_robot_its_group_names() {
     let page = fs::read_to_string(&report).expect("the report");
     assert!(page.contains("<dt>Task</dt><dd>T_ROB2</dd>"), "the report's task");
     assert!(page.contains("<dt>Robot</dt><dd>ROB_2 (IRB 120-3/0.58)</dd>"), "the report's robot");
+}
+
+#[test]
+fn a_backup_of_one_task_moves_the_robot_its_group_names() {
+    // One task, T_ROB2, whose group names ROB_2: it is no MultiMove system, but its robot
+    // is ROB_2 and stands where MOC.cfg puts ROB_2: (1626.0, 500.0, 630.0), worked out in
+    // `each_task_moves_the_robot_its_group_names`.
+    let dir = scratch("one_task");
+    let sys = sys_cfg("ROB_1", "ROB_2")
+        .replace("\n      -Name \"T_ROB1\" -Type \"NORMAL\" -UseMechanicalUnitGroup \"rob1\" -MotionTask\n", "");
+    let root = backup(&dir, &sys, &program("T_ROB2", 0.0), "MODULE Unused\nENDMODULE\n");
+    let out = rapid_in(&dir, &["run", root.to_str().expect("path")]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "T_ROB2 ROB_2 ROB_2 planner 2\nT_ROB2 world 1626.0 500.0 630.0\n");
+    assert!(text(&out.stderr).contains("(2 moves, ROB_2 IRB 120-3/0.58)"), "{}", text(&out.stderr));
 }
 
 #[test]

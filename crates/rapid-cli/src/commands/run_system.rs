@@ -110,7 +110,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     for ((spec, program), &number) in loaded.iter_mut().zip(&numbers) {
         if spec.motion {
             spec.robot = number.is_some();
-            let own = number.map(|n| crate::motion_out::task_robot(args, &tasks[0].inputs, &spec.name, n, model));
+            let own = number.map(|n| crate::motion_out::robot_model(args, &tasks[0].inputs, &spec.name, n, model));
             let robot = &mut program.vm.resources_mut().robot;
             // A task moving external units only keeps an arm that never moves (its
             // robot instructions are refused), so that its units have a state to live in.
