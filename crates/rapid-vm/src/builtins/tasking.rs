@@ -549,3 +549,30 @@ pub(super) static ENTRIES: Entries = &[
     ("TaskIsActive", task_is_active),
     ("TaskIsExecuting", task_is_executing),
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn task(name: &str, robot: bool) -> TaskInfo {
+        let rmq = rapid_config::sys::Rmq::default();
+        let (motion, normal, active, executing, robot_of) = (true, true, true, true, None);
+        TaskInfo { name: name.into(), motion, robot, normal, active, executing, rmq, robot_of }
+    }
+
+    #[test]
+    fn robots_are_numbered_by_order_unless_the_configuration_numbers_them() {
+        // T_ROB2, a positioner's task T_STN1, T_ROB1: by order ROB_1 and ROB_2.
+        let tasks = vec![task("T_ROB2", true), task("T_STN1", false), task("T_ROB1", true)];
+        let mut shared = SharedTasking::new(tasks);
+        assert_eq!([0, 1, 2].map(|t| shared.robot_number(t)), [Some(1), None, Some(2)]);
+        // The groups name ROB_2 for T_ROB2 and ROB_1 for T_ROB1: listed by number.
+        shared.number_robots(vec![Some(2), None, Some(1)]).expect("numbered");
+        assert_eq!([0, 1, 2].map(|t| shared.robot_number(t)), [Some(2), None, Some(1)]);
+        assert_eq!(shared.robots(), [(1, 2), (2, 0)]);
+        // One robot for two tasks, or a number for the positioner's task, is refused.
+        assert!(shared.number_robots(vec![Some(1), None, Some(1)]).is_err());
+        assert!(shared.number_robots(vec![Some(2), Some(3), Some(1)]).is_err());
+        assert_eq!(shared.robots(), [(1, 2), (2, 0)]);
+    }
+}

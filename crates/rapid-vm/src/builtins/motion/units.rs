@@ -159,8 +159,8 @@ pub(crate) fn max_rob_reorient_speed(_ctx: &mut Ctx<'_>, _args: &[Value]) -> Res
 
 /// `GetNextMechUnit(ListNumber, UnitName [\MecRef] [\TCPRob] [\NoOfAxes] [\MecTaskNo]
 /// [\MotPlanNo] [\Active] [\DriveModule] [\OKToDeact])`: the unit at ListNumber (from
-/// 0: the robots by number, then this task's external units) with its data, ListNumber moved on
-/// by one; FALSE (nothing written) after the last unit.
+/// 0: the robots by number, then this task's external units) with its data, ListNumber
+/// moved on by one; FALSE (nothing written) after the last unit.
 // uncertain: each robot is taken to sit on its own drive module (number n), and a TCP
 // robot is never OK to deactivate (DeactUnit refuses it). External units are listed
 // for the task that has them only, on its robot's motion planner and drive module.
