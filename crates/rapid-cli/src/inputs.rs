@@ -236,6 +236,10 @@ impl Collector {
         }
         if let Some(sys) = &sys {
             self.add_home_modules(folder, sys, &task.name, &modules);
+            // The controller refuses a configuration that gives one robot two tasks.
+            if let Err(found) = crate::robots::numbers(sys, &self.syspar, &[]) {
+                self.config_finding(found.domain, found.line, found.message);
+            }
         }
         self.task = Some(task);
         self.sys = sys;
@@ -410,7 +414,12 @@ impl Collector {
 
     /// A finding at line `line` of the backup's SYS.cfg.
     fn sys_finding(&mut self, line: u32, message: String) {
-        let Some(idx) = self.syspar.iter().position(|(domain, _)| domain == "SYS") else { return };
+        self.config_finding("SYS", line, message);
+    }
+
+    /// A finding at line `line` of the backup's configuration file of domain `domain`.
+    fn config_finding(&mut self, domain: &str, line: u32, message: String) {
+        let Some(idx) = self.syspar.iter().position(|(d, _)| d == domain) else { return };
         let text = &self.configs[idx].text;
         let start: usize = text.split_inclusive('\n').take(line.saturating_sub(1) as usize).map(str::len).sum();
         let end = text[start.min(text.len())..].find('\n').map_or(text.len(), |n| start + n);

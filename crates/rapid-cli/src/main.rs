@@ -8,6 +8,7 @@ mod inputs;
 mod motion_out;
 mod render;
 mod report;
+mod robots;
 mod save;
 mod stimulus;
 mod trace;

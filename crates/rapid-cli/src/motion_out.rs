@@ -66,45 +66,27 @@ fn model_of_moc(
     })
 }
 
-/// The robot motion task `task` moves, `None` for a task that moves external units only
-/// (a positioner's): a manifest task's `robot = false`, or a backup whose MOC.cfg
-/// mechanical unit group for the task (SYS.cfg `-UseMechanicalUnitGroup`) has no
-/// `-robot`. Its model: `--robot`, else the task's own `robot` model in a manifest, else
-/// the manifest's [system] robot, else its MOC.cfg robot's type (`ROB_n` the n-th robot)
-/// when we know it, else `system` (the run's model, [`choose_model`]).
-pub(crate) fn task_robot(
+/// The model of robot ROB_`n`, which motion task `task` moves (`crate::robots`):
+/// `--robot`, else the task's own `robot` model in a manifest, else the manifest's
+/// [system] robot, else its MOC.cfg robot's type when we know it, else `system` (the
+/// run's model, [`choose_model`]).
+pub(crate) fn robot_model(
     args: &RunArgs,
     inputs: &crate::inputs::Inputs,
-    task: &rapid_config::sys::Task,
+    task: &str,
     n: usize,
     system: &'static rapid_motion::RobotModel,
-) -> Option<&'static rapid_motion::RobotModel> {
-    let own = inputs.task_robots.iter().find(|(t, _)| t.eq_ignore_ascii_case(&task.name)).map(|(_, m)| m);
-    let robotless = group_robot(inputs, task);
-    if matches!(own, Some(None)) || matches!(robotless, Some(None)) {
-        return None;
-    }
+) -> &'static rapid_motion::RobotModel {
+    let own = inputs.task_robots.iter().find(|(t, _)| t.eq_ignore_ascii_case(task)).map(|(_, m)| m);
     let named = own.and_then(|m| m.as_deref()).and_then(rapid_motion::find_model);
     // `--robot` stands above all; a manifest's [system] robot above MOC.cfg, as in
     // `choose_model`.
     if args.robot.is_some() || (named.is_none() && inputs.robot.is_some()) {
-        return Some(system);
+        return system;
     }
     let of_moc =
         || moc_robot(&inputs.syspar, n).and_then(|r| r.robot_type).and_then(|ty| rapid_motion::find_model(&ty));
-    Some(named.or_else(of_moc).unwrap_or(system))
-}
-
-/// The robot of the mechanical unit group task `task` uses (`-UseMechanicalUnitGroup`):
-/// its `MECHANICAL_UNIT_GROUP -Robot`, written in SYS.cfg (RobotWare 6) or MOC.cfg;
-/// `Some(None)` for a group without a robot (a positioner's), `None` when no group is
-/// found.
-pub(crate) fn group_robot(inputs: &crate::inputs::Inputs, task: &rapid_config::sys::Task) -> Option<Option<String>> {
-    let group = task.mechanical_unit_group.as_deref()?;
-    let files = ["SYS", "MOC"]
-        .into_iter()
-        .filter_map(|domain| inputs.syspar.iter().find(|(d, _)| d.eq_ignore_ascii_case(domain)).map(|(_, file)| file));
-    files.into_iter().find_map(|file| rapid_config::moc::group_robot(file, group))
+    named.or_else(of_moc).unwrap_or(system)
 }
 
 /// Sets the task's robot up for the run: a trace or a report records every move.
@@ -115,10 +97,9 @@ pub(crate) fn configure(robot: &mut RobotState, model: &'static rapid_motion::Ro
     }
 }
 
-/// Places the robot of motion task `task`, `ROB_n` (`n` from 1, the n-th motion
-/// task's), where the manifest's `base`/`orientation` of that task puts it, else where
-/// MOC.cfg's `ROBOT` instance of that name has its base frame; the world frame without
-/// either.
+/// Places robot `ROB_n`, which motion task `task` moves (`crate::robots`), where the
+/// manifest's `base`/`orientation` of that task puts it, else where MOC.cfg's `ROBOT`
+/// instance of that name has its base frame; the world frame without either.
 pub(crate) fn configure_base(robot: &mut RobotState, inputs: &crate::inputs::Inputs, n: usize, task: &str) {
     let from_manifest = inputs.robot_bases.iter().find(|(t, _, _)| t.eq_ignore_ascii_case(task));
     let base = match from_manifest {
@@ -223,11 +204,12 @@ pub(crate) fn configure_conveyors(
 }
 
 /// After the run: the robot finishes its last move; the cycle time (program and
-/// motion, whichever ends later) is printed unless `--quiet`, and returned.
+/// motion, whichever ends later) is printed unless `--quiet`, and returned. `robot_name`
+/// is the task's robot (`ROB_n`), none for a positioner's task.
 pub(crate) fn finish(
     resources: &mut rapid_vm::builtins::Resources,
     program_end: f64,
-    (task, has_robot): (&str, bool),
+    (task, robot_name): (&str, Option<&str>),
     note: Option<&str>,
     args: &RunArgs,
 ) -> anyhow::Result<f64> {
@@ -256,7 +238,10 @@ pub(crate) fn finish(
             n => format!(", {n} corner path failure(s): a fly-by point became a stop point"),
         };
         // A positioner's task moves its external axes only.
-        let moved = if has_robot { robot.model.name } else { "external axes" };
+        let moved = match robot_name {
+            Some(name) => format!("{name} {}", robot.model.name),
+            None => "external axes".to_owned(),
+        };
         eprintln!("cycle time {task}: {cycle:.3} s ({} moves, {moved}{failures})", robot.moves);
     }
     Ok(cycle)
@@ -274,6 +259,9 @@ pub(crate) struct RunOutputs<'a> {
     /// The program's name (its first file or folder), the task and the cycle time.
     pub(crate) program: String,
     pub(crate) task: &'a str,
+    /// The task's robot (`ROB_n`); none for a positioner's task, which moves external
+    /// units only.
+    pub(crate) robot_name: Option<&'a str>,
     pub(crate) cycle: f64,
 }
 
@@ -284,7 +272,7 @@ pub(crate) fn write_outputs(out: &RunOutputs<'_>, args: &RunArgs) -> anyhow::Res
     }
     let places = move_places(out);
     if let Some(path) = &args.trace {
-        crate::trace::write(out.robot, &places, path, args.sample, true)?;
+        crate::trace::write(out.robot, &places, path, args.sample, out.robot_name)?;
     }
     if let Some(path) = &args.report {
         crate::report::write(path, out, &places)?;
@@ -293,11 +281,12 @@ pub(crate) fn write_outputs(out: &RunOutputs<'_>, args: &RunArgs) -> anyhow::Res
 }
 
 /// The trace of another motion task (MultiMove): `--trace`'s file with the task's name
-/// before its extension (`trace.T_ROB2.csv`); no report. A positioner's task (no `arm`)
+/// before its extension (`trace.T_ROB2.csv`); no report. A positioner's task (no robot)
 /// has its external axes' columns only.
-pub(crate) fn write_task_trace(out: &RunOutputs<'_>, args: &RunArgs, arm: bool) -> anyhow::Result<()> {
+pub(crate) fn write_task_trace(out: &RunOutputs<'_>, args: &RunArgs) -> anyhow::Result<()> {
     let Some(path) = &args.trace else { return Ok(()) };
-    crate::trace::write(out.robot, &move_places(out), &task_trace_path(path, out.task), args.sample, arm)
+    let path = task_trace_path(path, out.task);
+    crate::trace::write(out.robot, &move_places(out), &path, args.sample, out.robot_name)
 }
 
 /// `path` with `task` before its extension: `trace.csv` → `trace.T_ROB2.csv`.

@@ -51,15 +51,17 @@ struct Piece<'a> {
     eax: [f64; 6],
 }
 
-/// Writes the trajectory sampled every `sample_ms` to `path`; without the `arm`'s
-/// columns for a task that moves external units only.
+/// Writes the trajectory sampled every `sample_ms` to `path`: of robot `robot_name`
+/// (`ROB_n`), or without the arm's columns for a task that moves external units only
+/// (`None`).
 pub(crate) fn write(
     robot: &RobotState,
     places: &[String],
     path: &Path,
     sample_ms: f64,
-    arm: bool,
+    robot_name: Option<&str>,
 ) -> anyhow::Result<()> {
+    let arm = robot_name.is_some();
     if !(sample_ms.is_finite() && sample_ms >= 0.1) {
         anyhow::bail!("--sample must be at least 0.1 ms");
     }
@@ -67,7 +69,11 @@ pub(crate) fn write(
     let ext = external_columns(robot);
     let columns = trace_columns(&ext, arm);
     let traced = if arm { robot.model.name } else { "none" };
-    let head = if json { json_head(traced, sample_ms, &columns) } else { columns.join(",") + "\n" };
+    let head = if json {
+        json_head((traced, robot_name.unwrap_or_default()), sample_ms, &columns)
+    } else {
+        columns.join(",") + "\n"
+    };
     let style = Style {
         json,
         // Milliseconds while the period is whole milliseconds, else tenths of them.
@@ -307,11 +313,12 @@ fn trace_columns(ext: &[(usize, String)], arm: bool) -> Vec<String> {
 }
 
 /// The JSON trace up to its first row: what was traced, and the columns.
-fn json_head(robot: &str, sample_ms: f64, columns: &[String]) -> String {
+fn json_head((robot, mech_unit): (&str, &str), sample_ms: f64, columns: &[String]) -> String {
     let columns: Vec<String> = columns.iter().map(|c| json_string(c)).collect();
     format!(
-        "{{\"robot\":{},\"sample_ms\":{},\"columns\":[{}],\"rows\":[",
+        "{{\"robot\":{},\"mech_unit\":{},\"sample_ms\":{},\"columns\":[{}],\"rows\":[",
         json_string(robot),
+        json_string(mech_unit),
         serde_json::Number::from_f64(sample_ms).map_or("4".into(), |n| n.to_string()),
         columns.join(",")
     )

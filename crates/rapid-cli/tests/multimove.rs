@@ -290,33 +290,3 @@ fn store_path_leaves_synchronized_movement_unless_keep_sync() {
     assert_eq!(rob1_lines, ["T_ROB1 level 2 TRUE"]);
     assert!(text(&out.stderr).contains("needs \\ID"), "{}", text(&out.stderr));
 }
-
-#[test]
-fn robots_numbered_against_the_task_order_are_refused() {
-    // SYS.cfg lists T_ROB2 first, and its group names ROB_2: robots are numbered by the
-    // motion tasks' order here, so T_ROB2 would move ROB_1 (another robot's base frame
-    // and model). The run refuses it, naming why, rather than move the wrong robot.
-    let dir = scratch("robot_order");
-    let body = "MODULE M\n  PROC main()\n    TPWrite RobName();\n  ENDPROC\nENDMODULE\n";
-    let tasks = [
-        TaskDef {
-            name: "T_ROB2",
-            attrs: "-Type \"NORMAL\" -UseMechanicalUnitGroup \"rob2\" -MotionTask",
-            module: body,
-        },
-        TaskDef {
-            name: "T_ROB1",
-            attrs: "-Type \"NORMAL\" -UseMechanicalUnitGroup \"rob1\" -MotionTask",
-            module: body,
-        },
-    ];
-    let root = system(&dir, &tasks, "");
-    let groups =
-        "#\nMECHANICAL_UNIT_GROUP:\n\n      -Name \"rob1\" -Robot \"ROB_1\"\n\n      -Name \"rob2\" -Robot \"ROB_2\"\n";
-    let sys = fs::read_to_string(root.join("SYSPAR/SYS.cfg")).expect("SYS.cfg") + groups;
-    fs::write(root.join("SYSPAR/SYS.cfg"), sys).expect("SYS.cfg");
-    let out = rapid_in(&dir, &["run", "--quiet", "sys"]);
-    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stdout));
-    assert_eq!(text(&out.stdout), "");
-    assert!(text(&out.stderr).contains("task T_ROB2 uses the mechanical unit group of ROB_2"), "{}", text(&out.stderr));
-}

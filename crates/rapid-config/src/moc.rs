@@ -52,12 +52,27 @@ fn base_frame(inst: &crate::Instance) -> ([f64; 3], [f64; 4]) {
     (pos, orient)
 }
 
+/// One `MECHANICAL_UNIT_GROUP` instance (RobotWare 6 writes them in SYS.cfg, a
+/// MultiMove backup may have them in MOC.cfg).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Group {
+    /// `-robot` ("ROB_1"); none for a group without a robot (the group of a positioner's
+    /// task, which moves external units only).
+    pub robot: Option<String>,
+    pub line: u32,
+}
+
+/// The `MECHANICAL_UNIT_GROUP` named `name`, if the file has it.
+pub fn group(file: &CfgFile, name: &str) -> Option<Group> {
+    let found = named(file, "MECHANICAL_UNIT_GROUP", name)?;
+    let robot = found.value("robot").filter(|r| !r.is_empty()).map(str::to_owned);
+    Some(Group { robot, line: found.line })
+}
+
 /// The robot of the `MECHANICAL_UNIT_GROUP` named `group` (its `-robot`, "ROB_1"): `None`
-/// when the file has no such group, `Some(None)` for a group without a robot (the group
-/// of a positioner's task, which moves external units only).
+/// when the file has no such group, `Some(None)` for a group without a robot.
 pub fn group_robot(file: &CfgFile, group: &str) -> Option<Option<String>> {
-    let found = named(file, "MECHANICAL_UNIT_GROUP", group)?;
-    Some(found.value("robot").filter(|r| !r.is_empty()).map(str::to_owned))
+    self::group(file, group).map(|g| g.robot)
 }
 
 /// The mechanical units of a MOC file that are not robots (`MECHANICAL_UNIT` instances

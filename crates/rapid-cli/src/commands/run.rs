@@ -66,8 +66,14 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     };
     crate::motion_out::configure(&mut loaded.vm.resources_mut().robot, model, args);
     let task_name = inputs.task.as_ref().map_or("T_ROB1", |t| t.name.as_str());
-    crate::motion_out::configure_base(&mut loaded.vm.resources_mut().robot, &inputs, 1, task_name);
-    crate::motion_out::configure_ranges(&mut loaded.vm.resources_mut().robot, &inputs.syspar, 1);
+    // The task moves the robot its mechanical unit group names (ROB_1 without one).
+    let number = crate::robots::of_single_task(&inputs);
+    if let Err(message) = loaded.vm.resources_mut().tasking.shared.number_robots(vec![Some(number)]) {
+        return Err(anyhow::anyhow!("internal error: {message}"));
+    }
+    let robot_name = format!("ROB_{number}");
+    crate::motion_out::configure_base(&mut loaded.vm.resources_mut().robot, &inputs, number, task_name);
+    crate::motion_out::configure_ranges(&mut loaded.vm.resources_mut().robot, &inputs.syspar, number);
     crate::motion_out::configure_units(&mut loaded.vm.resources_mut().robot, &inputs.units, None, true);
     let resources = loaded.vm.resources_mut();
     let conveyors = &inputs.conveyors;
@@ -180,7 +186,8 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     log_stop(&mut loaded.vm, &task_name, status);
     let program_end = loaded.vm.time;
     let resources = loaded.vm.resources_mut();
-    let cycle = crate::motion_out::finish(resources, program_end, ("T_ROB1", true), model_note.as_deref(), args)?;
+    let who = ("T_ROB1", Some(robot_name.as_str()));
+    let cycle = crate::motion_out::finish(resources, program_end, who, model_note.as_deref(), args)?;
     // The last fly-by point, if the program ended on one, became a stop point.
     loaded.vm.log_corner_failures();
     // The run is over: the robot leaves the task for the trace and the report.
@@ -192,6 +199,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         io: loaded.vm.io_system(),
         program: crate::motion_out::program_name(args),
         task: &task_name,
+        robot_name: Some(&robot_name),
         cycle,
     };
     crate::motion_out::write_outputs(&outputs, args)?;

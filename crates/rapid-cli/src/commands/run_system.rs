@@ -110,34 +110,23 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             }
         };
     let units = tasks[0].inputs.units.clone();
+    // The robot each task moves: its group's ROB_n, else by the tasks' order.
+    let numbers = match crate::robots::numbers(&sys, &tasks[0].inputs.syspar, &tasks[0].inputs.task_robots) {
+        Ok(numbers) => numbers,
+        Err(found) => return refuse(&format!("{}.cfg:{}: {}", found.domain, found.line, found.message)),
+    };
     let mut first_motion = true;
-    let mut robot_number = 0;
-    for (spec, program) in &mut loaded {
+    for ((spec, program), &number) in loaded.iter_mut().zip(&numbers) {
         if spec.motion {
-            let Some(task) = sys.task(&spec.name) else { continue };
-            let own = crate::motion_out::task_robot(args, &tasks[0].inputs, task, robot_number + 1, model);
-            spec.robot = own.is_some();
+            spec.robot = number.is_some();
+            let own = number.map(|n| crate::motion_out::robot_model(args, &tasks[0].inputs, &spec.name, n, model));
             let robot = &mut program.vm.resources_mut().robot;
             // A task moving external units only keeps an arm that never moves (its
             // robot instructions are refused), so that its units have a state to live in.
             crate::motion_out::configure(robot, own.unwrap_or(model), args);
-            if own.is_some() {
-                robot_number += 1;
-                // Robots are numbered by the motion tasks' order: a group naming another
-                // robot would have this task move the wrong one.
-                if let Some(Some(named)) = crate::motion_out::group_robot(&tasks[0].inputs, task) {
-                    if !named.eq_ignore_ascii_case(&format!("ROB_{robot_number}")) {
-                        return refuse(&format!(
-                            "task {} uses the mechanical unit group of {named}, but it is motion task \
-                             {robot_number} with a robot, which moves ROB_{robot_number}: robots numbered other \
-                             than by the tasks' order are not supported yet (list the motion tasks in their \
-                             robots' order in SYS.cfg)",
-                            spec.name
-                        ));
-                    }
-                }
-                crate::motion_out::configure_base(robot, &tasks[0].inputs, robot_number, &spec.name);
-                crate::motion_out::configure_ranges(robot, &tasks[0].inputs.syspar, robot_number);
+            if let Some(n) = number {
+                crate::motion_out::configure_base(robot, &tasks[0].inputs, n, &spec.name);
+                crate::motion_out::configure_ranges(robot, &tasks[0].inputs.syspar, n);
             }
             crate::motion_out::configure_units(robot, &units, Some(&spec.name), first_motion);
             let conveyors = &tasks[0].inputs.conveyors;
@@ -165,6 +154,9 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         Err(message) => return refuse(&message),
     };
     controller.set_cycles(args.cycles);
+    if let Err(message) = controller.shared_mut().tasking.number_robots(numbers.clone()) {
+        return refuse(&message);
+    }
     if let Err(message) = install_stimulus(&mut controller, args) {
         return refuse(&message);
     }
@@ -205,14 +197,16 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         single::log_stop(&mut task.loaded.vm, &name, status);
     }
     let mut cycle = program_end;
-    for task in &mut controller.tasks {
+    let robot_names: Vec<Option<String>> = numbers.iter().map(|n| n.map(|n| format!("ROB_{n}"))).collect();
+    for (idx, task) in controller.tasks.iter_mut().enumerate() {
         let name = task.spec.name.clone();
         let resources = task.loaded.vm.resources_mut();
-        let who = (name.as_str(), task.spec.robot);
+        let robot_name = robot_names.get(idx).cloned().flatten();
+        let who = (name.as_str(), robot_name.as_deref());
         cycle = cycle.max(crate::motion_out::finish(resources, program_end, who, model_note.as_deref(), args)?);
         task.loaded.vm.log_corner_failures();
     }
-    write_motion_outputs(&mut controller, &tasks, cycle, args)?;
+    write_motion_outputs(&mut controller, &tasks, &robot_names, cycle, args)?;
     if controller.tasks.iter_mut().any(|task| task.loaded.vm.resources_mut().controller.warm_start) {
         eprintln!("{}", single::WARM_START);
     }
@@ -493,11 +487,12 @@ fn report(controller: &Controller, tasks: &[LoadedTask], bound: Option<Bound>) -
     status
 }
 
-/// `--trace` and `--report` of the first motion task's robot (with MultiMove the
-/// other robots are not shown).
+/// `--trace` and `--report` of the first motion task's robot, a trace of each other
+/// motion task's; `robot_names` are the tasks' robots (`ROB_n`), by task.
 fn write_motion_outputs(
     controller: &mut Controller,
     tasks: &[LoadedTask],
+    robot_names: &[Option<String>],
     cycle: f64,
     args: &RunArgs,
 ) -> anyhow::Result<()> {
@@ -522,11 +517,12 @@ fn write_motion_outputs(
             io: controller.io_system(),
             program: crate::motion_out::program_name(args),
             task: &controller.tasks[at].spec.name,
+            robot_name: robot_names.get(at).and_then(Option::as_deref).filter(|_| arm),
             cycle,
         };
         match (k, arm) {
             (0, true) => crate::motion_out::write_outputs(&outputs, args)?,
-            _ => crate::motion_out::write_task_trace(&outputs, args, arm)?,
+            _ => crate::motion_out::write_task_trace(&outputs, args)?,
         }
     }
     Ok(())

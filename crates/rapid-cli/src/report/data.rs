@@ -304,6 +304,7 @@ mod tests {
             io: None,
             program: "many.mod".into(),
             task: "T_ROB1",
+            robot_name: Some("ROB_1"),
             cycle: robot.motion_end,
         };
         let data = super::collect(&out);

@@ -70,7 +70,8 @@ fn summary(page: &mut String, out: &RunOutputs<'_>) {
     let items = [
         ("Program", escape(&out.program)),
         ("Task", escape(out.task)),
-        ("Robot", escape(robot.model.name)),
+        // The robot's mechanical unit (ROB_n) and its model.
+        ("Robot", format!("{} ({})", escape(out.robot_name.unwrap_or("none")), escape(robot.model.name))),
         ("Cycle time", format!("{:.3} s", out.cycle)),
         ("Moves", robot.recorded_facts.len().to_string()),
         ("Corner path failures", failures.to_string()),

@@ -114,6 +114,11 @@ pub struct SharedTasking {
     pub in_sync: Vec<String>,
     /// The coordinated moves under way, by the sync point of their SyncMoveOn.
     pub(crate) move_meets: FxHashMap<String, super::syncmove::MoveMeet>,
+    /// The robot (`n` of ROB_n) each task moves, by task index, when the configuration
+    /// numbers the robots (`MECHANICAL_UNIT_GROUP -Robot`); empty: the n-th task with a
+    /// robot moves ROB_n. Kept beside `tasks` (not in [`TaskInfo`]) because the
+    /// controller builds those from its task specs.
+    robot_numbers: Vec<Option<usize>>,
 }
 
 impl Default for SharedTasking {
@@ -149,7 +154,50 @@ impl SharedTasking {
             sysdata: FxHashMap::default(),
             in_sync: Vec::new(),
             move_meets: FxHashMap::default(),
+            robot_numbers: Vec::new(),
         }
+    }
+
+    /// Numbers the robots as the configuration does: `numbers[i]` is the `n` of the
+    /// ROB_n task `i` moves. Fails, changing nothing, unless it gives each task with a
+    /// robot (and no other) its own number from 1.
+    pub fn number_robots(&mut self, numbers: Vec<Option<usize>>) -> Result<(), String> {
+        if numbers.len() != self.tasks.len() {
+            return Err(format!("{} robot numbers for {} tasks", numbers.len(), self.tasks.len()));
+        }
+        let mut seen = Vec::new();
+        for (task, n) in self.tasks.iter().zip(&numbers) {
+            match n {
+                Some(0) => return Err(format!("task {}: robots are numbered from 1", task.name)),
+                Some(n) if seen.contains(n) => return Err(format!("ROB_{n} is given to two tasks")),
+                Some(n) if task.robot => seen.push(*n),
+                None if !task.robot => {}
+                _ => return Err(format!("task {}: a robot number goes with a robot", task.name)),
+            }
+        }
+        self.robot_numbers = numbers;
+        Ok(())
+    }
+
+    /// The `n` of the robot ROB_n task `task` (an index) moves; `None` for a task without
+    /// a robot.
+    pub fn robot_number(&self, task: usize) -> Option<usize> {
+        if !self.tasks.get(task)?.robot {
+            return None;
+        }
+        match self.robot_numbers.get(task) {
+            Some(n) => *n,
+            None => Some(self.tasks[..task].iter().filter(|t| t.robot).count() + 1),
+        }
+    }
+
+    /// The robots of the system in the order of their numbers: (`n` of ROB_n, index of
+    /// the task that moves it).
+    pub fn robots(&self) -> Vec<(usize, usize)> {
+        let mut robots: Vec<(usize, usize)> =
+            (0..self.tasks.len()).filter_map(|task| Some((self.robot_number(task)?, task))).collect();
+        robots.sort_unstable();
+        robots
     }
 
     fn task(&self, name: &str) -> Option<&TaskInfo> {
@@ -501,3 +549,30 @@ pub(super) static ENTRIES: Entries = &[
     ("TaskIsActive", task_is_active),
     ("TaskIsExecuting", task_is_executing),
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn task(name: &str, robot: bool) -> TaskInfo {
+        let rmq = rapid_config::sys::Rmq::default();
+        let (motion, normal, active, executing, robot_of) = (true, true, true, true, None);
+        TaskInfo { name: name.into(), motion, robot, normal, active, executing, rmq, robot_of }
+    }
+
+    #[test]
+    fn robots_are_numbered_by_order_unless_the_configuration_numbers_them() {
+        // T_ROB2, a positioner's task T_STN1, T_ROB1: by order ROB_1 and ROB_2.
+        let tasks = vec![task("T_ROB2", true), task("T_STN1", false), task("T_ROB1", true)];
+        let mut shared = SharedTasking::new(tasks);
+        assert_eq!([0, 1, 2].map(|t| shared.robot_number(t)), [Some(1), None, Some(2)]);
+        // The groups name ROB_2 for T_ROB2 and ROB_1 for T_ROB1: listed by number.
+        shared.number_robots(vec![Some(2), None, Some(1)]).expect("numbered");
+        assert_eq!([0, 1, 2].map(|t| shared.robot_number(t)), [Some(2), None, Some(1)]);
+        assert_eq!(shared.robots(), [(1, 2), (2, 0)]);
+        // One robot for two tasks, or a number for the positioner's task, is refused.
+        assert!(shared.number_robots(vec![Some(1), None, Some(1)]).is_err());
+        assert!(shared.number_robots(vec![Some(2), Some(3), Some(1)]).is_err());
+        assert_eq!(shared.robots(), [(1, 2), (2, 0)]);
+    }
+}

@@ -2,8 +2,9 @@
 //! GetTSPStatus, MotionPlannerNo, GetMecUnitName, GetServiceInfo. TaskIsActive and
 //! TaskIsExecuting are in tasking.rs.
 //!
-//! The robot of the n-th motion task is ROB_n and its motion planner is number n, in
-//! configuration order (a one-task run has T_ROB1, ROB_1, planner 1).
+//! A motion task's robot is the ROB_n its mechanical unit group names, else the n-th
+//! motion task's with a robot in configuration order (`SharedTasking::robot_number`);
+//! its motion planner is number n (a one-task run has T_ROB1, ROB_1, planner 1).
 
 use super::super::{argname, present, tasking, Ctx};
 use super::Res;
@@ -32,21 +33,25 @@ pub(crate) fn get_tsp_status(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(Value::Num(status)))
 }
 
-/// The number (from 1) of the motion planner of the task's robot: its place among
-/// the motion tasks; a task without a robot uses the planner of the motion task it is
-/// connected to; 0 when the system has no motion task.
-// uncertain: a task without a robot is taken to be connected to the first motion
-// task (as GetTaskName \MecTaskNo does); the controller follows
-// -UseMechanicalUnitGroup.
+/// The number (from 1) of the motion planner of the task's robot: its robot's number
+/// (ROB_n uses planner n); a motion task without a robot (a positioner's) the planners
+/// after the robots', by its place among such tasks; a task without a robot uses the
+/// planner of the motion task it is connected to; 0 when the system has no motion task.
+// uncertain: the controller takes the planner from the mechanical unit group's
+// -UseMotionPlanner, which RobotWare's configurations give rob1 motion_planner_1 and so
+// on; a task that is no motion task is taken to be connected to the first motion task
+// (as GetTaskName \MecTaskNo does); the controller follows -UseMechanicalUnitGroup.
 fn planner_no(ctx: &Ctx<'_>) -> usize {
     let tasking = &ctx.resources.tasking;
-    let motion: Vec<&str> = tasking.shared.tasks.iter().filter(|t| t.motion).map(|t| t.name.as_str()).collect();
-    let mine = motion.iter().position(|name| name.eq_ignore_ascii_case(tasking.name()));
-    match (mine, motion.is_empty()) {
-        (Some(index), _) => index + 1,
-        (None, false) => 1,
-        (None, true) => 0,
+    let shared = &tasking.shared;
+    let mine = shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(tasking.name()));
+    let motion = mine.filter(|&i| shared.tasks[i].motion).or_else(|| shared.tasks.iter().position(|t| t.motion));
+    let Some(task) = motion else { return 0 };
+    if let Some(n) = shared.robot_number(task) {
+        return n;
     }
+    let robots = shared.tasks.iter().filter(|t| t.robot).count();
+    robots + shared.tasks[..=task].iter().filter(|t| t.motion && !t.robot).count()
 }
 
 /// `MotionPlannerNo()`: the number of the motion planner the task's movements use.
@@ -66,9 +71,9 @@ fn unit_name(ctx: &Ctx<'_>, param: usize) -> Result<String, RapidError> {
         return Ok(name.to_string());
     }
     let tasking = &ctx.resources.tasking;
-    let robots: Vec<&str> = tasking.shared.tasks.iter().filter(|t| t.robot).map(|t| t.name.as_str()).collect();
-    match robots.iter().position(|name| name.eq_ignore_ascii_case(tasking.name())) {
-        Some(index) => Ok(format!("ROB_{}", index + 1)),
+    let mine = tasking.shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(tasking.name()));
+    match mine.and_then(|task| tasking.shared.robot_number(task)) {
+        Some(n) => Ok(format!("ROB_{n}")),
         // A program run alone is T_ROB1's, with ROB_1.
         None if tasking.shared.tasks.is_empty() => Ok("ROB_1".to_owned()),
         None => Err(ctx.error(Err::ArgValue, "ROB_ID: this task controls no robot")),

@@ -1,8 +1,9 @@
 //! Mechanical units (§1.8, §1.20): RobName, MaxRobSpeed, GetNextMechUnit,
 //! IsMechUnitActive, ActUnit, DeactUnit, MechUnitLoad, ReadMotor.
 //!
-//! A `rapid run` system has one mechanical unit per motion task: the TCP robot
-//! ROB_n of the n-th motion task, in configuration order, with six axes and motion
+//! A `rapid run` system has one mechanical unit per motion task with a robot: the TCP
+//! robot ROB_n its mechanical unit group names (else the n-th such task's, in
+//! configuration order: `SharedTasking::robot_number`), with six axes and motion
 //! planner n (a program run alone is T_ROB1 with ROB_1), and the external units the
 //! configuration gives a motion task (`extax.rs`).
 //! A mecunit argument is known by the data object passed (ROB_1, ROB_ID, a unit's
@@ -36,28 +37,33 @@ fn unit_name(ctx: &Ctx<'_>, unit: usize) -> String {
     }
 }
 
-/// The motion tasks of the system that move a robot, in configuration order: (task
-/// number from 1 among all tasks, task name); `ROB_n` is the n-th one's robot (a
-/// positioner's task has none). A program run alone is the motion task T_ROB1.
-fn robot_tasks(ctx: &Ctx<'_>) -> Vec<(usize, String)> {
-    let tasks = &ctx.resources.tasking.shared.tasks;
-    if tasks.is_empty() {
-        return vec![(1, ctx.resources.tasking.name().to_string())];
+/// The robots of the system in the order of their numbers: (`n` of ROB_n, task number
+/// from 1 among all tasks, task name). A program run alone is the motion task T_ROB1
+/// with ROB_1.
+fn robot_tasks(ctx: &Ctx<'_>) -> Vec<(usize, usize, String)> {
+    let shared = &ctx.resources.tasking.shared;
+    if shared.tasks.is_empty() {
+        return vec![(1, 1, ctx.resources.tasking.name().to_string())];
     }
-    tasks.iter().enumerate().filter(|(_, t)| t.robot).map(|(i, t)| (i + 1, t.name.clone())).collect()
+    shared.robots().into_iter().map(|(n, task)| (n, task + 1, shared.tasks[task].name.clone())).collect()
 }
 
 /// The unit number (from 1) of this task's robot, if it has one.
 pub(super) fn own_unit(ctx: &Ctx<'_>) -> Option<usize> {
     let me = ctx.resources.tasking.name();
-    robot_tasks(ctx).iter().position(|(_, name)| name.eq_ignore_ascii_case(me)).map(|i| i + 1)
+    robot_tasks(ctx).into_iter().find(|(_, _, name)| name.eq_ignore_ascii_case(me)).map(|(n, _, _)| n)
+}
+
+/// Whether the system has robot ROB_`n`.
+fn has_robot(ctx: &Ctx<'_>, n: usize) -> bool {
+    robot_tasks(ctx).iter().any(|(robot, _, _)| *robot == n)
 }
 
 /// The unit number of `ROB_n`, if the system has it.
 pub(super) fn unit_named(ctx: &Ctx<'_>, name: &str) -> Option<usize> {
     let upper = name.to_ascii_uppercase();
     let n: usize = upper.strip_prefix("ROB_")?.parse().ok()?;
-    (1..=robot_tasks(ctx).len()).contains(&n).then_some(n)
+    has_robot(ctx, n).then_some(n)
 }
 
 /// The unit the mecunit argument `param` stands for (its number from 1).
@@ -90,7 +96,7 @@ pub(super) fn unit_arg(ctx: &Ctx<'_>, args: &[Value], param: usize) -> Result<us
         _ => None,
     };
     match handle {
-        Some(n) if (1..=robot_tasks(ctx).len()).contains(&n) || external_index(ctx, n).is_some() => Ok(n),
+        Some(n) if has_robot(ctx, n) || external_index(ctx, n).is_some() => Ok(n),
         _ => Err(ctx.error(Err::ArgValue, "the mechanical unit is not in the system")),
     }
 }
@@ -153,8 +159,8 @@ pub(crate) fn max_rob_reorient_speed(_ctx: &mut Ctx<'_>, _args: &[Value]) -> Res
 
 /// `GetNextMechUnit(ListNumber, UnitName [\MecRef] [\TCPRob] [\NoOfAxes] [\MecTaskNo]
 /// [\MotPlanNo] [\Active] [\DriveModule] [\OKToDeact])`: the unit at ListNumber (from
-/// 0: the robots, then this task's external units) with its data, ListNumber moved on
-/// by one; FALSE (nothing written) after the last unit.
+/// 0: the robots by number, then this task's external units) with its data, ListNumber
+/// moved on by one; FALSE (nothing written) after the last unit.
 // uncertain: each robot is taken to sit on its own drive module (number n), and a TCP
 // robot is never OK to deactivate (DeactUnit refuses it). External units are listed
 // for the task that has them only, on its robot's motion planner and drive module.
@@ -167,7 +173,7 @@ pub(crate) fn get_next_mech_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     }
     let at = list as usize;
     let (unit, facts) = match at.checked_sub(robots.len()) {
-        None => (at + 1, robot_facts(robots[at].0, at + 1)),
+        None => (robots[at].0, robot_facts(robots[at].1, robots[at].0)),
         Some(i) => (EXTERNAL_BASE + i, external_facts(ctx, i)),
     };
     ctx.store(&args[0], Value::Num((list + 1.0) as f32))?;
@@ -203,7 +209,8 @@ fn robot_facts(task_no: usize, n: usize) -> [Value; 7] {
 fn external_facts(ctx: &Ctx<'_>, i: usize) -> [Value; 7] {
     let state = &ctx.resources.robot.external.units[i];
     let me = ctx.resources.tasking.name();
-    let task_no = robot_tasks(ctx).iter().find(|(_, name)| name.eq_ignore_ascii_case(me)).map_or(1, |(no, _)| *no);
+    let task_no =
+        robot_tasks(ctx).iter().find(|(_, _, name)| name.eq_ignore_ascii_case(me)).map_or(1, |(_, no, _)| *no);
     let planner = own_unit(ctx).unwrap_or(1);
     [
         Value::Bool(false),
