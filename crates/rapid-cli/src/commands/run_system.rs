@@ -230,6 +230,7 @@ fn one_task_system(inputs: &Inputs) -> Sys {
         name,
         task_type: TaskType::Normal,
         entry,
+        entry_span: None,
         trust_level: None,
         motion_task: true,
         mechanical_unit_group: None,
