@@ -37,9 +37,12 @@ struct LoadedTask {
 
 pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     let sys = match first.sys.clone() {
-        Some(sys) => sys,
+        Some(sys) if !sys.tasks.is_empty() => sys,
+        // A SYS.cfg that configures no task: the one task read, with the configuration's
+        // event routines.
+        Some(sys) if has_system_signals(&first) => Sys { tasks: one_task_system(&first).tasks, ..sys },
         None if has_system_signals(&first) => one_task_system(&first),
-        None => return single::run(args),
+        _ => return single::run(args),
     };
     if args.cycles != 1 {
         // The NORMAL tasks of a system run one cycle: continuous mode is not modelled here.
