@@ -51,6 +51,9 @@ pub(crate) struct Inputs {
     pub(crate) task: Option<TaskFolder>,
     /// The backup's task configuration (SYS.cfg), or the manifest's tasks.
     pub(crate) sys: Option<sys::Sys>,
+    /// The file of [`Inputs::table`] that `sys` was read from (SYS.cfg or the manifest):
+    /// the spans of `sys` are in its text.
+    pub(crate) sys_file: Option<usize>,
     /// The controller root of a backup (the backup folder) or a manifest (the folder
     /// holding its HOME folder): the file devices are its subfolders.
     pub(crate) root: Option<PathBuf>,
@@ -149,6 +152,8 @@ struct Collector {
     wanted_task: Option<String>,
     /// The backup's SYS configuration, or the manifest's tasks.
     sys: Option<sys::Sys>,
+    /// Index into `configs` of the file `sys` was read from.
+    sys_config: Option<usize>,
     root: Option<PathBuf>,
     robot: Option<String>,
     robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
@@ -214,6 +219,7 @@ impl Collector {
         for path in backup::config_files(folder) {
             if let (_, Some(view)) = self.add_config(&path)? {
                 sys = Some(view);
+                self.sys_config = Some(self.configs.len() - 1);
             }
         }
         let shown = folder.display();
@@ -352,6 +358,7 @@ impl Collector {
         self.order.push(FileRef::Config(config_idx));
         self.configs.push(SourceInput::from_bytes(shown.to_string(), bytes));
         let manifest = manifest::read(path, &self.configs[config_idx].text);
+        self.sys_config = Some(config_idx);
         let mut findings = manifest.findings.clone();
         if let Some((io, span)) = &manifest.io {
             let (domain, _) = self.add_config(io)?;
@@ -531,6 +538,7 @@ impl Collector {
             syspar: self.syspar,
             task: self.task,
             sys: self.sys,
+            sys_file: self.sys_config.map(|idx| table_idx(FileRef::Config(idx))),
             root: self.root,
             robot: self.robot,
             robot_bases: self.robot_bases,

@@ -78,8 +78,8 @@ fn persistents_of_one_name_must_agree_on_type_and_size() {
     assert_eq!(out.status.code(), Some(1));
     assert_eq!(text(&out.stdout), "", "nothing runs");
     let err = text(&out.stderr);
-    assert!(err.contains("persistent `shared` is declared `num{2}` in one task and `num{3}` in task T_B"), "{err}");
-    assert!(err.contains("it was not run"), "{err}");
+    assert!(err.contains("persistent `shared` is declared `num{3}` here and `num{2}` in task T_ROB1"), "{err}");
+    assert!(err.contains(" --> sys/RAPID/TASK2/PROGMOD/Main.mod:2:12\n") && err.contains("it was not run"), "{err}");
 }
 
 #[test]

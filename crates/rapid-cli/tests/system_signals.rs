@@ -90,6 +90,22 @@ fn a_stop_keeps_the_safe_interrupt_and_drops_the_other() {
 }
 
 #[test]
+fn a_sys_cfg_configuring_no_task_runs_the_one_task_with_its_event_routines() {
+    // The cell above with a SYS.cfg of event routines only (no CAB_TASKS; without -Task
+    // they are T_ROB1's, the task backinfo.txt names): the same run as above. The
+    // system run indexed the configuration's first task and panicked.
+    let dir = scratch("no_tasks");
+    copy_dir(&fixture("syssig_cell"), &dir.join("cell"));
+    let sys = "SYS:CFG_1.0:6:0::\n#\nCAB_EXEC_HOOKS:\n\n      -Routine \"on_stop\" -Shelf \"STOP\"\n\n      \
+               -Routine \"on_restart\" -Shelf \"RESTART\"\n";
+    fs::write(dir.join("cell/SYSPAR/SYS.cfg"), sys).expect("SYS.cfg");
+    fs::write(dir.join("cell.stim"), "at 1 set diStop 1\nat 2.5 set diStart 1\n").expect("stimulus");
+    let out = rapid_in(&dir, &["run", "--stimulus", "cell.stim", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "STOP event at 1\nRESTART event at 2.5\nsafe trap at 2.5\nwaited until 4.5\n");
+}
+
+#[test]
 fn a_program_nothing_starts_again_ends_the_run_without_failure() {
     let dir = scratch("stranded");
     fs::write(dir.join("stop.stim"), "at 1 set diStop 1\n").expect("stimulus");

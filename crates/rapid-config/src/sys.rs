@@ -1,6 +1,8 @@
 //! The controller configuration (`SYS.cfg`): RAPID tasks (`CAB_TASKS`) and the modules
 //! loaded into them (`CAB_TASK_MODULES`).
 
+use std::ops::Range;
+
 use crate::{Attr, CfgError, CfgFile, Instance};
 
 /// `-Type` of a task.
@@ -32,6 +34,9 @@ pub struct Task {
     pub task_type: TaskType,
     /// `-Entry`, the routine the task starts in (`main` when not written).
     pub entry: String,
+    /// Where the entry routine is written (its value's bytes in the file the task was
+    /// read from); none when it is `main` by default.
+    pub entry_span: Option<Range<usize>>,
     /// `-TrustLevel` (`SysFail`, `SysHalt`, `SysStop`, `NoSafety`), when written.
     pub trust_level: Option<String>,
     /// `-MotionTask`: the task that moves the robot.
@@ -104,6 +109,8 @@ pub struct TaskModule {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ExecHook {
     pub routine: String,
+    /// The `-Routine` value's bytes in the file.
+    pub routine_span: Range<usize>,
     pub shelf: String,
     pub task: Option<String>,
     pub all_tasks: bool,
@@ -179,7 +186,8 @@ pub fn read(file: &CfgFile) -> Sys {
 /// The event routines of `CAB_EXEC_HOOKS`.
 fn read_hooks(file: &CfgFile, sys: &mut Sys) {
     for inst in file.instances("CAB_EXEC_HOOKS") {
-        let (Some(routine), Some(shelf)) = (inst.value("Routine"), inst.value("Shelf")) else {
+        let (Some(routine), Some(shelf)) = (inst.attr("Routine").and_then(|a| a.value.as_ref()), inst.value("Shelf"))
+        else {
             error(file, &mut sys.errors, inst, "an event routine needs `-Routine` and `-Shelf`".to_owned());
             continue;
         };
@@ -196,13 +204,14 @@ fn read_hooks(file: &CfgFile, sys: &mut Sys) {
                     file,
                     &mut sys.errors,
                     inst,
-                    format!("event routine `{routine}` names task `{name}`, which is not configured"),
+                    format!("event routine `{}` names task `{name}`, which is not configured", routine.text),
                 );
                 continue;
             }
         }
         sys.hooks.push(ExecHook {
-            routine: routine.to_owned(),
+            routine: routine.text.clone(),
+            routine_span: routine.span.clone(),
             shelf,
             task,
             all_tasks: inst.has("AllTask"),
@@ -212,16 +221,18 @@ fn read_hooks(file: &CfgFile, sys: &mut Sys) {
 }
 
 impl Sys {
-    /// The event routines of `shelf` for task `task`, in configuration order. A hook
-    /// naming no task and not `-AllTask` belongs to T_ROB1.
-    // uncertain: RobotWare's default task for a hook without `-Task`.
+    /// The event routines of `shelf` for task `task`, in configuration order.
     pub fn hooks_for(&self, task: &str, shelf: &str) -> Vec<&str> {
-        self.hooks
-            .iter()
-            .filter(|h| h.shelf == shelf)
-            .filter(|h| h.all_tasks || h.task.as_deref().unwrap_or("T_ROB1").eq_ignore_ascii_case(task))
-            .map(|h| h.routine.as_str())
-            .collect()
+        self.hooks.iter().filter(|h| h.shelf == shelf && h.runs_in(task)).map(|h| h.routine.as_str()).collect()
+    }
+}
+
+impl ExecHook {
+    /// Whether the event routine runs in task `task`: every task with `-AllTask`, else
+    /// its `-Task`; a hook naming no task belongs to T_ROB1.
+    // uncertain: RobotWare's default task for a hook without `-Task`.
+    pub fn runs_in(&self, task: &str) -> bool {
+        self.all_tasks || self.task.as_deref().unwrap_or("T_ROB1").eq_ignore_ascii_case(task)
     }
 }
 
@@ -261,6 +272,7 @@ fn task(file: &CfgFile, inst: &Instance, errors: &mut Vec<CfgError>) -> Option<T
         name: name.to_owned(),
         task_type,
         entry: inst.value("Entry").unwrap_or("main").to_owned(),
+        entry_span: inst.attr("Entry").and_then(|a| a.value.as_ref()).map(|v| v.span.clone()),
         trust_level: inst.value("TrustLevel").map(str::to_owned),
         motion_task: inst.has("MotionTask"),
         mechanical_unit_group: inst.value("UseMechanicalUnitGroup").map(str::to_owned),

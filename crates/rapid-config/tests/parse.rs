@@ -258,6 +258,23 @@ fn sys_findings() {
 }
 
 #[test]
+fn sys_entry_and_event_routine_spans() {
+    // The entry routine and an event routine's name are kept with their places, so that
+    // a routine a task lacks can be reported where the configuration names it.
+    let text =
+        "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n  -Name \"T1\"\n\n  -Name \"T2\" -Entry \"go\"\n#\nCAB_EXEC_HOOKS:\n\n  \
+                -Routine \"on_power\" -Shelf \"POWER_ON\" -AllTask\n";
+    let file = parse(text);
+    let sys = sys::read(&file);
+    assert!(sys.errors.is_empty(), "{:?}", sys.errors);
+    assert_eq!(sys.task("T1").map(|t| t.entry_span.clone()), Some(None));
+    let entry = sys.task("T2").and_then(|t| t.entry_span.clone()).expect("T2's -Entry");
+    assert_eq!((file.line_of(entry.start), text[entry].trim_matches('"')), (7, "go"));
+    let routine = sys.hooks[0].routine_span.clone();
+    assert_eq!((file.line_of(routine.start), text[routine].trim_matches('"')), (11, "on_power"));
+}
+
+#[test]
 fn foreground_tasks_in_either_spelling_and_no_cycles() {
     // `-Task_in_forground` is how SYS.cfg files controllers write spell the attribute;
     // a task in its own background, or a cycle of them, could never run.

@@ -65,6 +65,7 @@ impl Checker<'_> {
                 const_value: None,
                 optional: info.optional,
                 origin: DeclOrigin::Routine,
+                system_global: false,
             };
             self.add_routine_data(param.name, data);
         }
@@ -340,6 +341,7 @@ impl Checker<'_> {
             const_value: None,
             optional: false,
             origin: DeclOrigin::Routine,
+            system_global: false,
         };
         self.datas.push(data);
         let idx = self.datas.len() as u32 - 1;

@@ -141,9 +141,13 @@ diagnostic_codes! {
     "E0609" Error   ConnectTargetNotVariable:  "CONNECT to something that is not an intnum variable";
     "E0610" Error   BadHandlerErrorNumber:     "an ERROR handler number list entry that is not an errnum constant";
 
-    // System configuration (a backup's SYSPAR/*.cfg, read by rapid-cli).
+    // System configuration (a backup's SYSPAR/*.cfg, a manifest; read by rapid-cli) and the
+    // system of tasks as a whole.
     "E0701" Error   ConfigFile:                "a line of a .cfg configuration file that cannot be read, or a configuration the controller refuses";
     "W0702" Warning ConfigNotSimulated:        "a standard configuration setting `rapid run` accepts but does not simulate (a system input action or output status)";
+    "E0703" Error   SharedPersMismatch:        "a global PERS declared with another type or array size than in another task of the system (one persistent for all tasks, §1.20)";
+    "E0704" Error   EventRoutineMissing:       "an event routine (SYS.cfg CAB_EXEC_HOOKS) that is not a procedure of a task it is configured for";
+    "E0705" Error   EntryRoutineMissing:       "a task other than the first whose entry routine (SYS.cfg -Entry, a manifest's entry; main by default) is not a global procedure of the task";
 }
 
 #[cfg(test)]

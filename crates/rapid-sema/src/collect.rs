@@ -106,6 +106,7 @@ impl Checker<'_> {
                 const_value: None,
                 optional: false,
                 origin: DeclOrigin::CONFIGURED,
+                system_global: false,
             });
             self.scopes.builtins.insert(sym, Def::Data(self.datas.len() as u32 - 1));
         }
@@ -384,7 +385,8 @@ impl Checker<'_> {
     ) {
         let builtin = level == Level::Builtin;
         let ty = self.resolve_type_name(decl.ty, builtin);
-        let info = DataInfo { origin, ..self.data_info(decl, ty, read_only, !builtin, arena, text) };
+        let system_global = !builtin && decl.scope == DeclScope::Global;
+        let info = DataInfo { origin, system_global, ..self.data_info(decl, ty, read_only, !builtin, arena, text) };
         self.datas.push(info);
         let idx = self.datas.len() as u32 - 1;
         self.register(decl.name, level, Def::Data(idx));
@@ -420,6 +422,7 @@ impl Checker<'_> {
             const_value,
             optional: false,
             origin: DeclOrigin::Routine,
+            system_global: false,
         }
     }
 

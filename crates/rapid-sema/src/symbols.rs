@@ -37,6 +37,9 @@ pub struct DataInfo {
     pub optional: bool,
     /// Where the declaration is (to find its initial value).
     pub origin: DeclOrigin,
+    /// Module-level data declared neither LOCAL nor TASK: a PERS of this kind is one
+    /// object for every task of the system that declares it (§1.20).
+    pub system_global: bool,
 }
 
 /// Where a data object or routine was declared.

@@ -4,6 +4,7 @@ mod check;
 mod codes;
 mod run;
 mod run_system;
+mod system;
 
 use std::process::ExitCode;
 

@@ -9,12 +9,13 @@
 use std::io::{self, BufWriter, Write};
 use std::time::Duration;
 
-use rapid_sema::{Code, Options, Severity, SourceInput};
+use rapid_sema::{Code, Diagnostic, Options, Severity, SourceInput};
 use rapid_syntax::LineIndex;
 use rapid_vm::builtins::files::ModuleFile;
 use rapid_vm::{load_with, Exit, Host, LoadError};
 
 use crate::args::RunArgs;
+use crate::commands::system::{self, ConfigFile, TaskProgram};
 use crate::commands::ExitStatus;
 use crate::inputs;
 use crate::render::{self, Files, Summary};
@@ -45,6 +46,18 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         Ok(loaded) => loaded,
         Err(err) => return report_load_error(err, &inputs.modules),
     };
+    let task_name = inputs.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
+    // What `rapid check` finds about the configured system (an event routine the task
+    // lacks) keeps it from starting, shown at the same place.
+    if let Some(sys) = &inputs.sys {
+        let facts = loaded.analysis.as_deref().map(system::facts).unwrap_or_default();
+        let table = inputs.table();
+        let task = TaskProgram { name: &task_name, file_offset: 0, facts: &facts };
+        let found = system::findings(sys, ConfigFile::of(inputs.sys_file, &table), &[task]);
+        if !found.is_empty() {
+            return report_system_errors(&table, &found);
+        }
+    }
     // The checked program is not needed to run, and the process ends with the run: its
     // memory goes back to the system then, without the time freeing it would take.
     std::mem::forget(loaded.analysis.take());
@@ -65,14 +78,13 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         }
     };
     crate::motion_out::configure(&mut loaded.vm.resources_mut().robot, model, args);
-    let task_name = inputs.task.as_ref().map_or("T_ROB1", |t| t.name.as_str());
     // The task moves the robot its mechanical unit group names (ROB_1 without one).
     let number = crate::robots::of_single_task(&inputs);
     if let Err(message) = loaded.vm.resources_mut().tasking.shared.number_robots(vec![Some(number)]) {
         return Err(anyhow::anyhow!("internal error: {message}"));
     }
     let robot_name = format!("ROB_{number}");
-    crate::motion_out::configure_base(&mut loaded.vm.resources_mut().robot, &inputs, number, task_name);
+    crate::motion_out::configure_base(&mut loaded.vm.resources_mut().robot, &inputs, number, &task_name);
     crate::motion_out::configure_ranges(&mut loaded.vm.resources_mut().robot, &inputs.syspar, number);
     crate::motion_out::configure_units(&mut loaded.vm.resources_mut().robot, &inputs.units, None, true);
     let resources = loaded.vm.resources_mut();
@@ -90,7 +102,6 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     }
     let answers = pendant_answers(args)?;
     let mut host = StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers };
-    let task_name = inputs.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
     log_start(&mut loaded.vm, &task_name);
     // `rapid run` is power on and a start from main: the POWER_ON, then the START
     // event routines run first.
@@ -364,10 +375,15 @@ pub(crate) fn has_config_errors(inputs: &inputs::Inputs) -> bool {
 /// Errors in a backup's configuration: the controller would not start, so nothing
 /// runs (the report shows every input finding, warnings and `.pgf` entries too).
 pub(crate) fn report_input_errors(inputs: &inputs::Inputs) -> anyhow::Result<ExitStatus> {
-    let table = inputs.table();
-    let summary = Summary::of(&inputs.diagnostics, table.len());
+    report_system_errors(&inputs.table(), &inputs.diagnostics)
+}
+
+/// Findings that keep the system from starting, shown as `rapid check` shows them
+/// (`files` is the table their `file` indexes).
+pub(crate) fn report_system_errors(files: &[&SourceInput], diagnostics: &[Diagnostic]) -> anyhow::Result<ExitStatus> {
+    let summary = Summary::of(diagnostics, files.len());
     let mut out = io::stderr().lock();
-    render::human::render(&mut out, &Files::new(&table), &inputs.diagnostics, &summary)?;
+    render::human::render(&mut out, &Files::new(files), diagnostics, &summary)?;
     writeln!(out, "the system has errors; it was not run")?;
     Ok(ExitStatus::Failure)
 }

@@ -18,10 +18,11 @@ use std::time::Duration;
 use rapid_config::sys::{Sys, TaskType};
 use rapid_controller::{Controller, SystemExit, TaskEnd, TaskKind, TaskSpec, TrustLevel};
 use rapid_sema::{Options, Severity, SourceInput};
-use rapid_vm::load_with;
+use rapid_vm::{load_with, LoadError};
 
 use super::run::{self as single, has_config_errors, StdoutHost};
 use crate::args::RunArgs;
+use crate::commands::system::{self, ConfigFile, TaskFacts, TaskProgram};
 use crate::commands::ExitStatus;
 use crate::inputs::{self, Inputs};
 
@@ -36,9 +37,12 @@ struct LoadedTask {
 
 pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     let sys = match first.sys.clone() {
-        Some(sys) => sys,
+        Some(sys) if !sys.tasks.is_empty() => sys,
+        // A SYS.cfg that configures no task: the one task read, with the configuration's
+        // event routines.
+        Some(sys) if has_system_signals(&first) => Sys { tasks: one_task_system(&first).tasks, ..sys },
         None if has_system_signals(&first) => one_task_system(&first),
-        None => return single::run(args),
+        _ => return single::run(args),
     };
     let specs = match task_specs(&sys) {
         Ok(specs) => specs,
@@ -69,27 +73,56 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         first.diagnostics.extend(own_findings);
         return single::report_input_errors(&first);
     }
+    // Every task's files in one table, as `rapid check` shows them: the first task's
+    // inputs (with the configuration), then the other tasks' modules.
+    let mut table = tasks[0].inputs.table();
+    let mut offsets = vec![0];
+    for task in &tasks[1..] {
+        offsets.push(table.len());
+        table.extend(task.inputs.modules.iter());
+    }
+    let config = ConfigFile::of(tasks[0].inputs.sys_file, &table);
     let mut loaded = Vec::new();
+    let mut facts: Vec<TaskFacts> = Vec::new();
     for (idx, task) in tasks.iter().enumerate() {
-        let entry = match (&args.entry, sys.task(&task.spec.name)) {
+        let configured = sys.task(&task.spec.name);
+        let entry = match (&args.entry, configured) {
             (Some(entry), _) if idx == 0 => entry.clone(),
             (_, Some(config)) => config.entry.clone(),
             _ => "main".to_owned(),
         };
         let options = Options { predefined: task.inputs.predefined.clone(), ..Options::default() };
-        let mut program = match load_with(&task.inputs.modules, &entry, &options) {
-            Ok(program) => program,
-            Err(err) => {
+        let mut program = match (load_with(&task.inputs.modules, &entry, &options), configured, config) {
+            (Ok(program), _, _) => program,
+            // `--entry` reaches the first task only: the configuration is where this
+            // task's entry routine is named.
+            (Err(LoadError::NoEntry(_)), Some(configured), Some(config)) if idx > 0 => {
+                return single::report_system_errors(&table, &[system::entry_finding(configured, config)]);
+            }
+            (Err(err), _, _) => {
                 eprintln!("error: task {} cannot start:", task.spec.name);
                 return single::report_load_error(err, &task.inputs.modules);
             }
         };
+        facts.push(program.analysis.as_deref().map(system::facts).unwrap_or_default());
         // Not needed to run; freed with the process (see `run`).
         std::mem::forget(program.analysis.take());
         single::configure_files(&mut program, args, &task.inputs.modules, task.inputs.root.clone());
         program.vm.resources_mut().cfgdata.set_config(task.inputs.syspar.clone());
         program.vm.resources_mut().controller = args.controller_state();
         loaded.push((task.spec.clone(), program));
+    }
+    // What `rapid check` finds about the system as a whole (persistents declared
+    // differently, missing event routines) keeps it from starting.
+    let programs: Vec<TaskProgram<'_>> = tasks
+        .iter()
+        .zip(&offsets)
+        .zip(&facts)
+        .map(|((task, &file_offset), facts)| TaskProgram { name: &task.spec.name, file_offset, facts })
+        .collect();
+    let found = system::findings(&sys, config, &programs);
+    if !found.is_empty() {
+        return single::report_system_errors(&table, &found);
     }
     let mut io = match io_system(&tasks[0].inputs) {
         Ok(io) => io,
@@ -170,10 +203,8 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         single::log_start(&mut task.loaded.vm, &name);
     }
     // Power on and a start from main: every task's POWER_ON, then START event routines;
-    // STOP event routines run when a task stops.
-    if let Err(message) = check_hooks(&controller, &sys) {
-        return refuse(&message);
-    }
+    // STOP event routines run when a task stops (each task has its routines: the
+    // system findings above).
     controller.stop_routines = controller
         .tasks
         .iter()
@@ -234,6 +265,7 @@ fn one_task_system(inputs: &Inputs) -> Sys {
         name,
         task_type: TaskType::Normal,
         entry,
+        entry_span: None,
         trust_level: None,
         motion_task: true,
         mechanical_unit_group: None,
@@ -258,23 +290,6 @@ fn configure_operations(controller: &mut Controller, inputs: &Inputs, sys: &Sys,
             .map(|t| sys.hooks_for(&t.spec.name, shelf).into_iter().map(str::to_owned).collect())
             .collect();
         controller.set_event_routines(shelf, routines);
-    }
-    Ok(())
-}
-
-/// Every event routine the configuration names exists in its task.
-fn check_hooks(controller: &Controller, sys: &Sys) -> Result<(), String> {
-    for task in &controller.tasks {
-        for shelf in rapid_config::sys::SHELVES {
-            for routine in sys.hooks_for(&task.spec.name, shelf) {
-                if !task.loaded.vm.has_procedure(routine) {
-                    return Err(format!(
-                        "task {} has no procedure `{routine}` for its {shelf} event routine",
-                        task.spec.name
-                    ));
-                }
-            }
-        }
     }
     Ok(())
 }

@@ -320,6 +320,7 @@ impl Reader<'_> {
             name,
             task_type,
             entry,
+            entry_span: raw.entry.as_ref().map(Spanned::span),
             trust_level,
             motion_task,
             mechanical_unit_group: raw.mechanical_unit_group.clone(),
