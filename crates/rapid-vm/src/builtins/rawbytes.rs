@@ -22,8 +22,6 @@ type Fault = (Err, String);
 /// How many bytes a rawbytes holds at most.
 const RAWBYTES_CAPACITY: usize = 1024;
 
-/// The largest integer a num holds exactly (2^23, the RAPID convention).
-const NUM_INT_LIMIT: f64 = 8_388_608.0;
 
 /// The layout a value is packed in or unpacked from.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -87,14 +85,12 @@ fn read_at(data: &[u8], offset: usize, len: usize) -> Result<&[u8], Fault> {
     })
 }
 
-/// An integer value checked for the layout: integral, within the type's range and, for
-/// a num, within the integers a num holds exactly.
-fn checked_int(value: f64, size: usize, signed: bool, is_num: bool) -> Result<i128, Fault> {
+/// An integer value checked for the layout: integral and within the type's range. A
+/// num past 2^23 is packed as the integer it holds (the manual's 0..8388608 for a num
+/// is a "limitation for storage", not a documented error).
+fn checked_int(value: f64, size: usize, signed: bool) -> Result<i128, Fault> {
     if !value.is_finite() || value.fract() != 0.0 {
         return Err((Err::ArgValue, format!("{value} is not an integer")));
-    }
-    if is_num && value.abs() > NUM_INT_LIMIT {
-        return Err((Err::ArgValue, format!("{value} is beyond the integers a num holds exactly; use a dnum")));
     }
     let bits = 8 * size as u32;
     let (min, max) =
@@ -143,7 +139,7 @@ fn pack_bytes(value: &Value, layout: Layout, network: bool) -> Result<Vec<u8>, F
     match layout {
         Layout::Hex1 => Ok(vec![checked_byte(number.ok_or_else(need_number)?)?]),
         Layout::Int { size, signed } => {
-            let v = checked_int(number.ok_or_else(need_number)?, size, signed, matches!(value, Value::Num(_)))?;
+            let v = checked_int(number.ok_or_else(need_number)?, size, signed)?;
             Ok(int_bytes(v, size, network))
         }
         Layout::Float4 => {
@@ -169,13 +165,11 @@ fn unpack_value(bytes: &[u8], layout: Layout, network: bool, like: &Value) -> Re
     let number = |v: f64| -> Result<Value, Fault> {
         match like {
             Value::Dnum(_) => Ok(Value::Dnum(v)),
-            Value::Num(_) => {
-                if v.abs() > NUM_INT_LIMIT && v.fract() == 0.0 {
-                    Err((Err::ArgValue, format!("{v} is beyond the integers a num holds exactly; use a dnum")))
-                } else {
-                    Ok(Value::Num(v as f32))
-                }
-            }
+            // uncertain: an integer past 2^23 unpacked into a num becomes the nearest num
+            // (the manual calls 0..8388608 a limitation for storage and documents no
+            // error; a public ROS-Industrial driver fork unpacks its 0xFFFFFFFF
+            // end-of-message marker into a num and compares it with 4294967295).
+            Value::Num(_) => Ok(Value::Num(v as f32)),
             _ => Err((Err::ArgValue, "the value to unpack into must be a num, dnum or byte".into())),
         }
     };
