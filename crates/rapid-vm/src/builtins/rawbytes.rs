@@ -403,7 +403,8 @@ mod tests {
             (Value::Num(-129.0), int(-1.0), Err::ArgValue),
             (Value::Num(65536.0), int(2.0), Err::ArgValue),
             (Value::Num(1.5), int(4.0), Err::ArgValue),
-            (Value::Num(16777216.0), int(4.0), Err::ArgValue),
+            // The num literal 4294967295 is 4294967296, one past UDINT.
+            (Value::Num(4294967295.0), int(4.0), Err::ArgValue),
             (Value::Dnum(4294967296.0), int(4.0), Err::ArgValue),
             (Value::Num(256.0), Layout::Hex1, Err::ArgValue),
             (Value::Num(-1.0), Layout::Hex1, Err::ArgValue),
@@ -414,6 +415,8 @@ mod tests {
             assert_eq!(pack_bytes(value, *layout, false).unwrap_err().0, *err, "{value:?} {layout:?}");
         }
         assert!(int_layout(3.0).is_err());
+        // A num past 2^23 packs as the integer it holds.
+        assert_eq!(pack_bytes(&Value::Num(16777216.0), int(4.0), false).unwrap(), [0, 0, 0, 1]);
     }
 
     #[test]
@@ -442,8 +445,8 @@ mod tests {
         for (bytes, layout, network, like, expected) in cases {
             assert_eq!(unpack_value(bytes, *layout, *network, like).unwrap(), *expected, "{bytes:?} {layout:?}");
         }
-        // 0xFFFFFFFF does not fit a num exactly.
-        assert_eq!(unpack_value(&[0xFF; 4], int(4.0), false, &n).unwrap_err().0, Err::ArgValue);
+        // 0xFFFFFFFF into a num is the nearest num, 2^32.
+        assert_eq!(unpack_value(&[0xFF; 4], int(4.0), false, &n).unwrap(), Value::Num(4294967296.0));
         // No character into a byte is no byte.
         assert_eq!(unpack_value(&[], Layout::Ascii(0), false, &n).unwrap_err().0, Err::ArgValue);
         // Zero characters are read at any index up to just past the valid bytes.
