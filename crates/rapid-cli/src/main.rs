@@ -6,6 +6,7 @@ mod commands;
 mod elog;
 mod inputs;
 mod motion_out;
+mod pace;
 mod render;
 mod report;
 mod robots;

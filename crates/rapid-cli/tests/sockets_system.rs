@@ -1,6 +1,7 @@
-//! Sockets in a system of several tasks: a task waiting on a socket gives way to the
-//! others (the controller runs them while it waits), and its `\Time` is the peer's in
-//! wall-clock time. The peer is a Rust listener on 127.0.0.1 with a port the OS chose;
+//! Sockets and the controller clock: in a system of several tasks a task waiting on a
+//! socket gives way to the others (the controller runs them while it waits), and its
+//! `\Time` is the peer's in wall-clock time; while a program holds a socket open, its
+//! waits pass in wall-clock time too, so the peer sees the controller's time pass. The peer is a Rust listener on 127.0.0.1 with a port the OS chose;
 //! every wait is bounded on both sides.
 
 mod system_fixture;
@@ -87,4 +88,39 @@ fn a_socket_wait_in_a_system_gives_the_peer_its_time_in_wall_clock_time() {
     // those 0.5 s passed on the wall clock: the peer had them.
     assert_eq!(text(&out.stdout), "tick\ntick\ntick\ntimeout\n");
     assert!(elapsed >= Duration::from_millis(450), "{elapsed:?}");
+}
+
+#[test]
+fn waits_pass_in_wall_clock_time_while_a_socket_is_open() {
+    let dir = scratch_in("sockets_system", "paced");
+    let listener = TcpListener::bind("127.0.0.1:0").expect("bind");
+    let port = listener.local_addr().expect("addr").port();
+    // A state server of sorts, one task alone: 20 messages 50 ms apart. With the
+    // socket open the 19 waits between them take 0.95 s of wall-clock time, as on a
+    // controller, instead of passing at once.
+    let module = "MODULE Sender\n  VAR socketdev s;\n  PROC main()\n    SocketCreate s;\n    \
+                  SocketConnect s, \"127.0.0.1\", PORT;\n    FOR i FROM 1 TO 20 DO\n      \
+                  SocketSend s \\Str:=\"m\";\n      IF i < 20 WaitTime 0.05;\n    ENDFOR\n    \
+                  SocketClose s;\n  ENDPROC\nENDMODULE\n"
+        .replace("PORT", &port.to_string());
+    std::fs::write(dir.join("Sender.mod"), module).expect("module");
+    let child = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .current_dir(&dir)
+        .args(["run", "--quiet", "Sender.mod"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start rapid");
+    let (mut peer, _) = listener.accept().expect("accept");
+    peer.set_read_timeout(Some(Duration::from_secs(10))).expect("timeout");
+    let mut first = [0u8; 1];
+    std::io::Read::read_exact(&mut peer, &mut first).expect("first message");
+    let started = Instant::now();
+    let mut rest = Vec::new();
+    std::io::Read::read_to_end(&mut peer, &mut rest).expect("the other messages");
+    let elapsed = started.elapsed();
+    let out = child.wait_with_output().expect("rapid ends");
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(rest.len(), 19);
+    assert!(elapsed >= Duration::from_millis(940), "{elapsed:?}");
 }

@@ -188,10 +188,14 @@ impl Controller {
         &mut self.shared
     }
 
-    /// Whether a waiting task waits on the outside world (a socket): the clock must
-    /// then move in wall-clock time, so that the peer has the time the program gives it.
-    pub fn waits_on_outside_world(&self) -> bool {
-        self.tasks.iter().any(|t| matches!(t.state, State::Waiting { .. }) && t.loaded.vm.resources().sockets.is_polling())
+    /// Whether a task talks to the outside world (waits on a socket, or holds one
+    /// open): the clock must then move in wall-clock time, so that the peer has the time
+    /// the program gives it and sees the controller's time pass as its own does.
+    pub fn talks_to_outside_world(&self) -> bool {
+        self.tasks.iter().any(|t| {
+            let sockets = &t.loaded.vm.resources().sockets;
+            sockets.is_open() || (matches!(t.state, State::Waiting { .. }) && sockets.is_polling())
+        })
     }
 
     /// Moves the clock on (after [`SystemExit::Wait`]).

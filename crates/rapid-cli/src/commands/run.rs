@@ -7,7 +7,6 @@
 #![allow(clippy::print_stderr)]
 
 use std::io::{self, BufWriter, Write};
-use std::time::Duration;
 
 use rapid_sema::{Code, Diagnostic, Options, Severity, SourceInput};
 use rapid_syntax::LineIndex;
@@ -112,6 +111,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
         }
     }
     let mut cycles_run = 0u64;
+    let mut pacer = crate::pace::Pacer::default();
     // The instructions executed when the clock was last charged for computing.
     let mut charged = loaded.vm.steps;
     let status = loop {
@@ -169,13 +169,15 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
                     }
                     _ => computed(&mut charged, steps),
                 };
-                loaded.vm.time += seconds;
+                // With a socket open the clock runs in wall-clock time (a peer sees it).
+                let paced = args.realtime || loaded.vm.resources().sockets.is_open();
+                if paced {
+                    host.flush();
+                }
+                let from = loaded.vm.time;
+                loaded.vm.time = pacer.wait(paced, from, from + seconds, args.max_time.unwrap_or(f64::INFINITY));
                 if past_max_time(loaded.vm.time, args, &mut host) {
                     break ExitStatus::Failure;
-                }
-                if args.realtime {
-                    host.flush();
-                    std::thread::sleep(Duration::from_secs_f64(seconds.min(86_400.0)));
                 }
             }
             Exit::Unhandled(unhandled) => {

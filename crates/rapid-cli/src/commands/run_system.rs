@@ -13,7 +13,6 @@
 #![allow(clippy::print_stderr)]
 
 use std::io::{self, BufWriter};
-use std::time::Duration;
 
 use rapid_config::sys::{Sys, TaskType};
 use rapid_controller::{Controller, SystemExit, TaskEnd, TaskKind, TaskSpec, TrustLevel};
@@ -415,6 +414,8 @@ enum Bound {
 
 /// Runs the system to its end or to a bound.
 fn drive(controller: &mut Controller, host: &mut StdoutHost<'_>, args: &RunArgs) -> Option<Bound> {
+    let mut pacer = crate::pace::Pacer::default();
+    let limit = args.max_time.unwrap_or(f64::INFINITY);
     loop {
         let step = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| controller.run(host, SLICE)));
         let Ok(exit) = step else { return Some(Bound::InternalError) };
@@ -428,14 +429,15 @@ fn drive(controller: &mut Controller, host: &mut StdoutHost<'_>, args: &RunArgs)
             SystemExit::Stopped => return Some(Bound::Stopped),
             SystemExit::Budget => {}
             SystemExit::Wait(seconds) => {
-                // While a task waits on a socket, the clock runs in wall-clock time
-                // (what it waits for comes from outside); otherwise it jumps.
-                let paced = args.realtime || controller.waits_on_outside_world();
-                controller.advance(seconds);
-                if paced && controller.time <= args.max_time.unwrap_or(f64::INFINITY) {
+                // While a task talks to the outside world (a socket), the clock runs in
+                // wall-clock time; otherwise it jumps.
+                let paced = args.realtime || controller.talks_to_outside_world();
+                if paced {
                     host.flush();
-                    std::thread::sleep(Duration::from_secs_f64(seconds.min(86_400.0)));
                 }
+                let from = controller.time;
+                let to = pacer.wait(paced, from, from + seconds, limit);
+                controller.advance(to - from);
             }
         }
         // The clock moves while tasks compute too (the nominal instruction time): a loop

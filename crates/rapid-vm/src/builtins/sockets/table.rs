@@ -114,6 +114,12 @@ impl SocketState {
         self.cooperative
     }
 
+    /// Whether the task holds a socket that talks to the outside world: connected,
+    /// listening, or a bound UDP socket.
+    pub fn is_open(&self) -> bool {
+        self.entries.values().any(|e| !matches!(e, Endpoint::TcpNew | Endpoint::UdpNew | Endpoint::Broken))
+    }
+
     /// Whether the task waits on a socket now (cooperative mode): what it waits for
     /// comes from outside, in wall-clock time.
     pub fn is_polling(&self) -> bool {
