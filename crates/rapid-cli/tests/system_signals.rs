@@ -368,3 +368,82 @@ SYSSIG_OUT:
     assert_eq!(changes(&log, "doSimMode"), [], "{log}");
     assert_eq!(changes(&log, "aoTcpSpeed"), [], "{log}");
 }
+
+#[test]
+fn mech_unit_outputs_show_whether_the_robot_moves() {
+    let dir = scratch("mech_unit_outputs");
+    // A 100 mm MoveL at v100 takes 1.01 s (0.01 s to reach 100 mm/s over 0.5 mm, 99 mm
+    // at speed, 0.01 s to stop, as C `run_cycles_exitcycle` works out), and a fine
+    // point settles 0.05 s more: 0.5 s after the MoveJ the robot moves, and stands
+    // still 1.06 s later. A MoveL \Conc to a fly-by point the program never follows up
+    // stops at its end (the fly-by point becomes a stop point, no settling): 0.5 s
+    // later it moves for 1.01 s, while the program waits. ROB_1 is always active.
+    let module = "MODULE Main
+  CONST robtarget p0 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];
+  PROC main()
+    MoveJ p0, v1000, fine, tool0;
+    WaitTime 0.5;
+    MoveL Offs(p0, 100, 0, 0), v100, fine, tool0;
+    WaitTime 0.5;
+    MoveL \\Conc, p0, v100, z10, tool0;
+    WaitTime 3;
+  ENDPROC
+ENDMODULE
+";
+    let eio = "EIO:CFG_1.0:6:0::
+#
+EIO_SIGNAL:
+
+      -Name \"doStill\" -SignalType \"DO\" -Access \"ReadOnly\"
+
+      -Name \"doActive\" -SignalType \"DO\" -Access \"ReadOnly\"
+#
+SYSSIG_OUT:
+
+      -Status \"MechUnitNotMoving\" -Signal \"doStill\" -Arg1 \"ROB_1\"
+
+      -Status \"MechUnitActive\" -Signal \"doActive\" -Arg1 \"ROB_1\"
+";
+    one_task_cell(&dir, module, eio);
+    let out = rapid_in(&dir, &["check", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stdout));
+    assert!(!text(&out.stdout).contains("W0702"), "{}", text(&out.stdout));
+    let out = rapid_in(&dir, &["run", "--quiet", "--io-log", "io.csv", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
+    assert_eq!(changes(&log, "doActive"), [("0", "1")], "{log}");
+    let still = changes(&log, "doStill");
+    let values: Vec<&str> = still.iter().map(|c| c.1).collect();
+    // Still at power on, moving for the MoveJ, still, moving, still, moving, still.
+    assert_eq!(values, ["1", "0", "1", "0", "1", "0", "1"], "{log}");
+    let at: Vec<f64> = still.iter().map(|c| c.0.parse().expect("time")).collect();
+    let near = |a: f64, b: f64| (a - b).abs() < 1e-3;
+    assert!(near(at[3] - at[2], 0.5) && near(at[4] - at[3], 1.06), "{at:?}");
+    assert!(near(at[5] - at[4], 0.5) && near(at[6] - at[5], 1.01), "{at:?}");
+}
+
+#[test]
+fn a_mech_unit_output_names_a_unit_the_system_has() {
+    let dir = scratch("mech_unit_missing");
+    let module = "MODULE Main\n  PROC main()\n    TPWrite \"ran\";\n  ENDPROC\nENDMODULE\n";
+    let eio = |arg: &str| {
+        format!(
+            "EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n\n      -Name \"doStill\" -SignalType \"DO\"\n#\nSYSSIG_OUT:\n\n      \
+             -Status \"MechUnitNotMoving\" -Signal \"doStill\"{arg}\n"
+        )
+    };
+    // Without -Arg1 the output shows nothing: a finding at its line (9).
+    one_task_cell(&dir, module, &eio(""));
+    let out = rapid_in(&dir, &["check", "cell"]);
+    assert_eq!(out.status.code(), Some(1));
+    let stdout = text(&out.stdout);
+    assert!(stdout.contains("MechUnitNotMoving needs the mechanical unit as `-Arg1`"), "{stdout}");
+    assert!(stdout.contains("EIO.cfg:9:"), "{stdout}");
+    // A robot the system does not have: nothing runs.
+    one_task_cell(&dir, module, &eio(" -Arg1 \"ROB_2\""));
+    let out = rapid_in(&dir, &["run", "cell"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(text(&out.stdout), "");
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("names mechanical unit `ROB_2`, which the system does not have"), "{stderr}");
+}

@@ -75,7 +75,8 @@ struct SysInput {
 struct SysOutput {
     id: u32,
     status: SysStatus,
-    /// The task (by index) a TaskExecuting or Error output watches; None: any.
+    /// The task (by index) a TaskExecuting or Error output watches, or the task that
+    /// moves the unit of a MechUnit… output; None: any.
     task: Option<usize>,
 }
 
@@ -107,6 +108,9 @@ pub struct Operations {
     pub journal: Vec<(f64, String)>,
     /// The outputs may show something else now (set at each change of state).
     pub(crate) outputs_stale: bool,
+    /// An output shows whether a robot moves (MechUnitNotMoving): the outputs are
+    /// looked at whenever the controller is, and the clock stops where a move ends.
+    watch_motion: bool,
 }
 
 impl Operations {
@@ -154,9 +158,10 @@ impl Controller {
         // The statuses not simulated are never set (the configuration warned of them).
         for output in eio.sys_outputs.iter().filter(|output| !matches!(output.status, SysStatus::NotSimulated(_))) {
             let Some(id) = io.id(&output.signal) else { continue };
-            let task = match &output.task {
-                None => None,
-                Some(name) => match self.tasks.iter().position(|t| t.spec.name.eq_ignore_ascii_case(name)) {
+            let task = match (&output.unit, &output.task) {
+                (Some(unit), _) => Some(self.unit_task(unit, output)?),
+                (None, None) => None,
+                (None, Some(name)) => match self.tasks.iter().position(|t| t.spec.name.eq_ignore_ascii_case(name)) {
                     Some(idx) => Some(idx),
                     None => {
                         return Err(format!(
@@ -169,10 +174,44 @@ impl Controller {
             outputs.push(SysOutput { id, status: output.status, task });
         }
         self.ops.seen_changes = self.shared.io.change_count();
+        self.ops.watch_motion = outputs.iter().any(|o| o.status == SysStatus::MechUnitNotMoving);
         self.ops.inputs = inputs;
         self.ops.outputs = outputs;
         self.ops.outputs_stale = true;
         Ok(())
+    }
+
+    /// The task that moves mechanical unit `unit` (a robot, `ROB_n`) of a MechUnit…
+    /// system output.
+    fn unit_task(&self, unit: &str, output: &rapid_config::eio::syssig::SysOutput) -> Result<usize, String> {
+        let number = unit.to_ascii_uppercase().strip_prefix("ROB_").and_then(|n| n.parse::<usize>().ok());
+        let robot = self.shared.tasking.robots().into_iter().find(|&(n, _)| Some(n) == number);
+        if let Some((_, task)) = robot {
+            return Ok(task);
+        }
+        let external = self.tasks.iter().any(|t| t.loaded.vm.resources().robot.external.find(unit).is_some());
+        let status = rapid_config::eio::syssig::status_name(output.status);
+        Err(if external {
+            format!(
+                "system output `{}` (line {}): {status} of external unit `{unit}` is not supported yet (robots only)",
+                output.signal, output.line
+            )
+        } else {
+            format!(
+                "system output `{}` (line {}) names mechanical unit `{unit}`, which the system does not have",
+                output.signal, output.line
+            )
+        })
+    }
+
+    /// The earliest time after now that a watched robot stands still (a system output
+    /// shows it): the controller must look at its outputs then.
+    pub(crate) fn next_motion_end(&self) -> Option<f64> {
+        if !self.ops.watch_motion {
+            return None;
+        }
+        let ends = self.tasks.iter().map(|t| t.loaded.vm.resources().robot.still_from()).filter(|&end| end > self.time);
+        ends.min_by(f64::total_cmp)
     }
 
     /// Whether system inputs may operate the controller (the run then follows the
@@ -303,7 +342,7 @@ impl Controller {
         if let ProgramState::Stepping { task, from_steps } = self.ops.state() {
             self.follow_step(host, task, from_steps);
         }
-        if self.ops.outputs_stale && !self.ops.outputs.is_empty() {
+        if (self.ops.outputs_stale || self.ops.watch_motion) && !self.ops.outputs.is_empty() {
             self.show_outputs();
         }
     }
@@ -512,6 +551,11 @@ impl Controller {
                     // No emergency stop, and never in simulated mode (the Sim Mode input
                     // is not simulated).
                     SysStatus::EmStop | SysStatus::SimMode => false,
+                    SysStatus::MechUnitNotMoving => {
+                        o.task.is_some_and(|i| self.time >= self.tasks[i].loaded.vm.resources().robot.still_from())
+                    }
+                    // A TCP robot is always active (DeactUnit refuses it).
+                    SysStatus::MechUnitActive => true,
                     // Left out when configured (configure_system_signals).
                     SysStatus::NotSimulated(_) => false,
                 };

@@ -381,6 +381,8 @@ impl Controller {
     /// tasks run meanwhile); when nothing can, `Stopped`.
     fn idle(&mut self) -> SystemExit {
         let operation = self.next_operation();
+        // A system output shows when a robot stands still: the clock stops there.
+        let motion_end = self.next_motion_end();
         let earliest = |times: &mut dyn Iterator<Item = f64>| times.min_by(f64::total_cmp);
         let next = if self.program_state() == crate::ops::ProgramState::Stopped {
             let Some(operation) = operation else { return SystemExit::Stopped };
@@ -388,9 +390,9 @@ impl Controller {
                 State::Waiting { until, .. } => Some(until),
                 _ => None,
             });
-            earliest(&mut statics.chain(Some(operation)))
+            earliest(&mut statics.chain([Some(operation), motion_end].into_iter().flatten()))
         } else {
-            earliest(&mut [self.next_wake(), operation].into_iter().flatten())
+            earliest(&mut [self.next_wake(), operation, motion_end].into_iter().flatten())
         };
         match next {
             Some(until) => SystemExit::Wait((until - self.time).max(0.0)),

@@ -112,6 +112,10 @@ pub enum SysStatus {
     EmStop,
     /// Simulated mode (the Sim Mode input, not simulated): 0.
     SimMode,
+    /// 1 while the mechanical unit `-Arg1` stands still.
+    MechUnitNotMoving,
+    /// 1 while the mechanical unit `-Arg1` is active.
+    MechUnitActive,
     /// A standard status `rapid run` does not simulate (its configuration spelling):
     /// accepted with a warning, the controller never sets the output.
     NotSimulated(&'static str),
@@ -129,6 +133,8 @@ const STATUSES: &[(&str, SysStatus)] = &[
     ("RunchOk", SysStatus::RunchOk),
     ("EmStop", SysStatus::EmStop),
     ("SimMode", SysStatus::SimMode),
+    ("MechUnitNotMoving", SysStatus::MechUnitNotMoving),
+    ("MechUnitActive", SysStatus::MechUnitActive),
 ];
 
 /// Standard statuses accepted but not simulated, with the signal type each shows on
@@ -141,8 +147,6 @@ const NOT_SIMULATED_STATUSES: &[(&str, SignalType)] = &[
     ("CPUFanNotRunning", SignalType::Do),
     ("EnergySavingBlocked", SignalType::Do),
     ("LimitSpeed", SignalType::Do),
-    ("MechUnitActive", SignalType::Do),
-    ("MechUnitNotMoving", SignalType::Do),
     ("MotSupOn", SignalType::Do),
     ("MotSupTrigg", SignalType::Do),
     ("PathReturnRegionError", SignalType::Do),
@@ -174,6 +178,9 @@ pub struct SysOutput {
     pub status: SysStatus,
     /// `-Arg2`: the task (TaskExecuting, Error).
     pub task: Option<String>,
+    /// `-Arg1`: the mechanical unit (MechUnitNotMoving, MechUnitActive).
+    // uncertain: the argument that names the unit, as we remember the manual.
+    pub unit: Option<String>,
     pub line: u32,
 }
 
@@ -274,6 +281,12 @@ pub(super) fn read(file: &CfgFile, eio: &mut Eio) {
             push(&mut errors, inst, None, message);
             continue;
         }
+        let unit = inst.value("Arg1").map(str::to_owned);
+        if matches!(status, SysStatus::MechUnitNotMoving | SysStatus::MechUnitActive) && unit.is_none() {
+            let message = format!("system output `{signal}`: {text} needs the mechanical unit as `-Arg1`");
+            push(&mut errors, inst, None, message);
+            continue;
+        }
         // One output shows one status: a second would fight the first.
         if eio.sys_outputs.iter().any(|o| o.signal.eq_ignore_ascii_case(&signal)) {
             let message = format!("signal `{signal}` is a system output twice");
@@ -287,7 +300,7 @@ pub(super) fn read(file: &CfgFile, eio: &mut Eio) {
             );
             push(&mut warnings, inst, value_span(inst, "Status"), message);
         }
-        eio.sys_outputs.push(SysOutput { signal, status, task, line: inst.line });
+        eio.sys_outputs.push(SysOutput { signal, status, task, unit, line: inst.line });
     }
     eio.errors.append(&mut errors);
     eio.warnings.append(&mut warnings);

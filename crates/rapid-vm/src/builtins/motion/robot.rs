@@ -281,6 +281,14 @@ impl RobotState {
         self.motion_end > t || self.planner.has_pending()
     }
 
+    /// From when the robot stands still unless the program gives it another move: the
+    /// end of its last final move, or where the move waiting for its successor would
+    /// stop (its fly-by point then becomes a stop point).
+    // uncertain: a StopMove pause counts as moving (the path is only held).
+    pub fn still_from(&self) -> f64 {
+        self.motion_end.max(self.planner.pending_stop_time().unwrap_or(f64::NEG_INFINITY))
+    }
+
     /// Where the last move given ends (the start of the next).
     pub fn end_joints(&self) -> Joints {
         self.planner.end_joints()
