@@ -490,3 +490,21 @@ fn each_normal_task_of_a_system_runs_its_cycles() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "a 1\nb 1\nc 1\nc 2\na 2\nb 2\na 3\nb 3\n");
 }
+
+#[test]
+fn exit_cycle_in_cycle_mode_ends_the_run_and_says_how_to_run_on() {
+    let dir = scratch("exit_cycle_note");
+    // T_A ends its cycle with ExitCycle at 0.5 s; in cycle mode that ends its run, and
+    // with it the system's (T_B is static: it runs while a NORMAL task does).
+    let a = "MODULE M\n  PROC main()\n    WaitTime 0.5;\n    TPWrite \"a\";\n    ExitCycle;\n  ENDPROC\nENDMODULE\n";
+    let b = "MODULE N\n  PROC main()\n    WaitTime 0.2;\n    TPWrite \"b\";\n  ENDPROC\nENDMODULE\n";
+    let toml = "[[task]]\nname = \"T_A\"\ntype = \"NORMAL\"\nmodules = [\"a/M.mod\"]\n\n\
+                [[task]]\nname = \"T_B\"\ntype = \"STATIC\"\nmodules = [\"b/N.mod\"]\n";
+    write(&dir, &[("rapid.toml", toml), ("a/M.mod", a), ("b/N.mod", b)]);
+    let out = rapid_in(&dir, &["run", "--quiet", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "b\nb\na\n");
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("note: ExitCycle ended the cycle of T_A; in cycle mode"), "{stderr}");
+    assert!(stderr.contains("`--cycles 0` runs continuously"), "{stderr}");
+}

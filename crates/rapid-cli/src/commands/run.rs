@@ -146,6 +146,13 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
                 // terminates execution where a restart is not allowed).
                 cycles_run += 1;
                 if (args.cycles != 0 && cycles_run >= args.cycles) || loaded.vm.ended_by_exit() {
+                    if args.cycles == 1 && exit == Exit::CycleEnded {
+                        host.flush();
+                        eprintln!(
+                            "note: ExitCycle ended the cycle; in cycle mode (the default) that ends the run: \
+                             `--cycles 0` runs continuously, each ExitCycle starting the next cycle"
+                        );
+                    }
                     break ExitStatus::Success;
                 }
                 let steps = loaded.vm.steps;

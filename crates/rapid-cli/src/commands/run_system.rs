@@ -241,6 +241,9 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         eprintln!("{}", single::WARM_START);
     }
     let status = report(&controller, &tasks, bounded);
+    if args.cycles == 1 {
+        note_exit_cycles(&controller);
+    }
     finish(&controller, &tasks, args)?;
     Ok(status)
 }
@@ -502,6 +505,25 @@ fn report(controller: &Controller, tasks: &[LoadedTask], bound: Option<Bound>) -
         status = ExitStatus::Failure;
     }
     status
+}
+
+/// In cycle mode ExitCycle ends a NORMAL task's run, where a controller in continuous
+/// mode starts its next cycle: a program restarting itself so (a server's main loop)
+/// would surprise the user by ending; say how to run it on.
+fn note_exit_cycles(controller: &Controller) {
+    let ended: Vec<&str> = controller
+        .tasks
+        .iter()
+        .filter(|t| t.spec.kind == TaskKind::Normal && t.end() == Some(&TaskEnd::CycleEnded))
+        .map(|t| t.spec.name.as_str())
+        .collect();
+    if !ended.is_empty() {
+        eprintln!(
+            "note: ExitCycle ended the cycle of {}; in cycle mode (the default) that ends the run: \
+             `--cycles 0` runs continuously, each ExitCycle starting the next cycle",
+            ended.join(", ")
+        );
+    }
 }
 
 /// `--trace` and `--report` of the first motion task's robot, a trace of each other
