@@ -206,7 +206,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     log_stop(&mut loaded.vm, &task_name, status);
     let program_end = loaded.vm.time;
     let resources = loaded.vm.resources_mut();
-    let who = ("T_ROB1", Some(robot_name.as_str()));
+    let who = (task_name.as_str(), Some(robot_name.as_str()));
     let cycle = crate::motion_out::finish(resources, program_end, who, model_note.as_deref(), args)?;
     // The last fly-by point, if the program ended on one, became a stop point.
     loaded.vm.log_corner_failures();
