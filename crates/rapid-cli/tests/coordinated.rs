@@ -350,3 +350,16 @@ fn a_positioners_task_has_no_tcp_to_read() {
         assert_eq!(stdout, "other TRUE\n");
     }
 }
+
+#[test]
+fn a_positioners_unit_is_listed_with_its_own_task_and_motion_planner() {
+    // In T_STN1 (task 2) GetNextMechUnit lists ROB_1 (T_ROB1's, task 1, planner 1), then
+    // T_STN1's own unit STN1: task 2, and the planner after the one robot's, 2.
+    let stn = "    VAR num n := 0;\n    VAR string name;\n    VAR num task_no;\n    VAR num planner;\n    \
+               WHILE GetNextMechUnit(n, name \\MecTaskNo:=task_no \\MotPlanNo:=planner) DO\n      \
+               TPWrite name + \" \" + NumToStr(task_no, 0) + \" \" + NumToStr(planner, 0);\n    ENDWHILE\n";
+    let dir = project("positioner_unit_numbers", "", stn);
+    let (stdout, stderr, code) = run(&dir);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(stdout, "ROB_1 1 1\nSTN1 2 2\n");
+}

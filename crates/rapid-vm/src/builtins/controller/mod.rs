@@ -13,6 +13,7 @@
 
 pub mod sysdata;
 mod units;
+pub(crate) use units::planner_no;
 
 use super::{present, Ctx, Entries, StopKind};
 use crate::errnames::Err;

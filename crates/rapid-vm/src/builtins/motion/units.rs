@@ -208,10 +208,10 @@ fn robot_facts(task_no: usize, n: usize) -> [Value; 7] {
 /// GetNextMechUnit's outputs for this task's external unit `i`.
 fn external_facts(ctx: &Ctx<'_>, i: usize) -> [Value; 7] {
     let state = &ctx.resources.robot.external.units[i];
-    let me = ctx.resources.tasking.name();
-    let task_no =
-        robot_tasks(ctx).iter().find(|(_, _, name)| name.eq_ignore_ascii_case(me)).map_or(1, |(_, no, _)| *no);
-    let planner = own_unit(ctx).unwrap_or(1);
+    // The unit is this task's: its number in the system, and its motion planner (a
+    // positioner's task has a planner of its own after the robots').
+    let task_no = ctx.resources.tasking.index() + 1;
+    let planner = crate::builtins::controller::planner_no(ctx).max(1);
     [
         Value::Bool(false),
         // A conveyor's unit has no axis the moves drive; its one axis is the conveyor's.
