@@ -124,3 +124,39 @@ fn waits_pass_in_wall_clock_time_while_a_socket_is_open() {
     assert_eq!(rest.len(), 19);
     assert!(elapsed >= Duration::from_millis(940), "{elapsed:?}");
 }
+
+#[test]
+fn traps_run_while_a_task_running_alone_waits_on_a_socket() {
+    let dir = scratch_in("sockets_system", "trap_during_receive");
+    let listener = TcpListener::bind("127.0.0.1:0").expect("bind");
+    let port = listener.local_addr().expect("addr").port();
+    // A timer trap every 0.1 s (three times) while the one task waits for data: the
+    // ticks come first, and only then does the peer send what the task waits for.
+    let module = "MODULE Client\n  VAR socketdev s;\n  VAR string got;\n  VAR intnum tick;\n  VAR num ticks := 0;\n  \
+                  PROC main()\n    CONNECT tick WITH on_tick;\n    ITimer 0.1, tick;\n    SocketCreate s;\n    \
+                  SocketConnect s, \"127.0.0.1\", PORT;\n    SocketReceive s \\Str:=got \\Time:=10;\n    \
+                  TPWrite \"got \" + got;\n    SocketClose s;\n  ENDPROC\n  TRAP on_tick\n    ticks := ticks + 1;\n    \
+                  TPWrite \"tick\";\n    IF ticks = 3 IDelete tick;\n  ENDTRAP\nENDMODULE\n"
+        .replace("PORT", &port.to_string());
+    std::fs::write(dir.join("Client.mod"), module).expect("module");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .current_dir(&dir)
+        .args(["run", "--quiet", "Client.mod"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start rapid");
+    let (mut peer, _) = listener.accept().expect("accept");
+    peer.set_write_timeout(Some(Duration::from_secs(10))).expect("timeout");
+    let mut lines = BufReader::new(child.stdout.take().expect("stdout")).lines();
+    let mut seen = Vec::new();
+    for _ in 0..3 {
+        seen.push(lines.next().and_then(Result::ok).unwrap_or_default());
+    }
+    assert_eq!(seen, ["tick", "tick", "tick"]);
+    peer.write_all(b"hello").expect("send");
+    let rest: Vec<String> = lines.map_while(Result::ok).collect();
+    let out = child.wait_with_output().expect("rapid ends");
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(rest, ["got hello"]);
+}

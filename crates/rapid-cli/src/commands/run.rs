@@ -62,6 +62,9 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     std::mem::forget(loaded.analysis.take());
     // A backup's (or a manifest's) own HOME folder is the controller's HOME: device.
     configure_files(&mut loaded, args, &inputs.modules, inputs.root.clone());
+    // A socket wait polls, so that traps run while it waits (as during any wait), the
+    // clock paced in wall-clock time meanwhile.
+    loaded.vm.resources_mut().sockets.set_cooperative(true);
     loaded.vm.resources_mut().cfgdata.set_config(inputs.syspar.clone());
     loaded.vm.resources_mut().controller = args.controller_state();
     if let Err(message) = configure_io(&mut loaded, args, &inputs.syspar, &inputs.modules) {
