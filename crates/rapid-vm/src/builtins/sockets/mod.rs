@@ -14,8 +14,8 @@
 //! also when the wait ends in an error (ERR_SOCK_TIMEOUT), and nobody sleeps it again
 //! (not even `rapid run --realtime`).
 //!
-//! When tasks run side by side (`SocketState::set_cooperative`, set by the controller
-//! for every task of a system), SocketAccept, SocketReceive and SocketReceiveFrom do
+//! Cooperatively (`SocketState::set_cooperative`, as `rapid run` and the controller set
+//! it for every task, so that other tasks and traps run while one waits), SocketAccept, SocketReceive and SocketReceiveFrom do
 //! not block: each try makes what progress it can without waiting (table.rs's `poll_*`
 //! steps, reached with a deadline of now), and while nothing has come the statement is
 //! run again `POLL_PERIOD` later (`StopKind::Repeat`, as WaitDI waits), the other tasks
