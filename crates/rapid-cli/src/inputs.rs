@@ -94,7 +94,9 @@ impl Inputs {
             .iter()
             .filter(|d| d.code == Code::ConfigFile && d.file >= own_configs)
             .map(|d| Diagnostic { file: d.file - own_configs + first_configs, ..d.clone() })
-            .filter(|d| !first.diagnostics.iter().any(|f| f.file == d.file && f.span == d.span && f.message == d.message))
+            .filter(|d| {
+                !first.diagnostics.iter().any(|f| f.file == d.file && f.span == d.span && f.message == d.message)
+            })
             .collect()
     }
 }

@@ -508,3 +508,22 @@ fn exit_cycle_in_cycle_mode_ends_the_run_and_says_how_to_run_on() {
     assert!(stderr.contains("note: ExitCycle ended the cycle of T_A; in cycle mode"), "{stderr}");
     assert!(stderr.contains("`--cycles 0` runs continuously"), "{stderr}");
 }
+
+#[test]
+fn another_tasks_robot_is_read_with_its_own_model() {
+    let dir = scratch("other_model");
+    // T_ROB2's robot is an IRB 2400-10/1.55 at its calibration position: tool0 at
+    // x = a1 + c3 + c4 = 100 + 755 + 85 = 940, z = c1 + c2 - a2 = 615 + 705 + 135 = 1455
+    // (its OPW lengths). T_ROB1, an IRB 120, reads it so (not 374/630, its own robot's).
+    let rob1 = "MODULE R1\n  PROC main()\n    VAR robtarget p;\n    WaitTime 0.1;\n    \
+                p := CRobT(\\TaskName:=\"T_ROB2\" \\Tool:=tool0 \\WObj:=wobj0);\n    \
+                TPWrite \"x \" \\Num:=p.trans.x;\n    TPWrite \"z \" \\Num:=p.trans.z;\n  ENDPROC\nENDMODULE\n";
+    let rob2 = "MODULE R2\n  PROC main()\n    WaitTime 0.2;\n  ENDPROC\nENDMODULE\n";
+    let toml = "[[task]]\nname = \"T_ROB1\"\ntype = \"NORMAL\"\nmotion = true\nmodules = [\"r1/R1.mod\"]\n\n\
+                [[task]]\nname = \"T_ROB2\"\ntype = \"NORMAL\"\nmotion = true\nrobot = \"IRB 2400-10/1.55\"\n\
+                modules = [\"r2/R2.mod\"]\n";
+    write(&dir, &[("rapid.toml", toml), ("r1/R1.mod", rob1), ("r2/R2.mod", rob2)]);
+    let out = rapid_in(&dir, &["run", "--quiet", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "x 940\nz 1455\n");
+}

@@ -241,7 +241,7 @@ impl Controller {
     /// Answers the request a task made of the controller (another task's data or
     /// robot), if one waits; the asking task is woken to read the reply.
     fn serve_request(&mut self, host: &mut dyn Host) {
-        use rapid_vm::builtins::tasking::{Reply, Request};
+        use rapid_vm::builtins::tasking::{OtherRobotState, Reply, Request};
         let Some((who, request)) = self.shared.tasking.request.take() else { return };
         let reply = match request {
             Request::ReadData { task, name } => self.read_data(who, task, &name),
@@ -253,7 +253,10 @@ impl Controller {
                 // base frame, on a track where the track has it).
                 let mut frames = robot.active;
                 frames.base = robot.track_base_at(time);
-                Reply::Robot(robot.joints_at(time), Box::new((frames, robot.extax_read(time))))
+                let joints = robot.joints_at(time);
+                let (flange, conf) = robot.flange_of(&joints);
+                let state = OtherRobotState { frames, extax: robot.extax_read(time), flange, conf };
+                Reply::Robot(joints, Box::new(state))
             }
             Request::SaveModule { task, module, dest } => {
                 match self.tasks[task].loaded.vm.save_module_for_another_task(&module, dest) {

@@ -22,7 +22,6 @@ type Fault = (Err, String);
 /// How many bytes a rawbytes holds at most.
 const RAWBYTES_CAPACITY: usize = 1024;
 
-
 /// The layout a value is packed in or unpacked from.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Layout {

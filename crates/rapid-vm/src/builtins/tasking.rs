@@ -85,10 +85,21 @@ pub enum Reply {
     Missing,
     Constant,
     WrongType,
-    /// The robot's axes and its active frames.
-    Robot(rapid_motion::Joints, Box<(rapid_motion::frames::FrameChain, [f64; 6])>),
+    /// The robot's axes, its active frames and external axes, and where its flange is
+    /// in its base frame with its configuration (by its own kinematics: the robots of a
+    /// system may be of different models).
+    Robot(rapid_motion::Joints, Box<OtherRobotState>),
     /// The other task could not do it: the error to raise in the asking task.
     Failed(Box<crate::error::RapidError>),
+}
+
+/// Another task's robot as the controller reports it (with [`Reply::Robot`]'s axes).
+#[derive(Debug, Clone, PartialEq)]
+pub struct OtherRobotState {
+    pub frames: rapid_motion::frames::FrameChain,
+    pub extax: [f64; 6],
+    pub flange: rapid_motion::Pose,
+    pub conf: rapid_motion::confdata::ConfData,
 }
 
 /// The multitasking state all tasks share.

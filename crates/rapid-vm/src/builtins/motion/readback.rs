@@ -2,7 +2,7 @@
 //! CalcJointT and CalcRobT. Read-backs sample the planned motion at the controller's
 //! time; without `\Tool`/`\WObj` they use the last move's tool and work object.
 
-use rapid_motion::confdata::{confdata_of, ConfMatch};
+use rapid_motion::confdata::ConfMatch;
 use rapid_motion::frames::FrameChain;
 use rapid_motion::{Kinematics, MotionError};
 
@@ -20,6 +20,9 @@ struct OtherRobot {
     joints: rapid_motion::Joints,
     frames: FrameChain,
     extax: [f64; 6],
+    /// Its flange in its base frame and its configuration, by its own kinematics.
+    flange: rapid_motion::Pose,
+    conf: rapid_motion::confdata::ConfData,
     /// The task moves a robot (a positioner's task moves its external axes only).
     tcp: bool,
 }
@@ -31,9 +34,15 @@ fn robot_of(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Option<OtherRobo
     let Some(task) = other_task(ctx, args, 0)?.or_else(|| linked_motion_task(ctx)) else { return Ok(None) };
     Ok(Some(match ask(ctx, Request::Robot { task }) {
         Some(Reply::Robot(joints, robot)) => {
-            let (frames, extax) = *robot;
             let tcp = ctx.resources.tasking.shared.tasks.get(task).is_none_or(|t| t.robot);
-            Some(OtherRobot { joints, frames, extax, tcp })
+            Some(OtherRobot {
+                joints,
+                frames: robot.frames,
+                extax: robot.extax,
+                flange: robot.flange,
+                conf: robot.conf,
+                tcp,
+            })
         }
         Some(_) => return Err(RapidError::fatal("the task has no robot")),
         None => None,
@@ -205,7 +214,7 @@ pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     }
     let mut chain = read_frames(ctx, args.get(2), args.get(3))?;
     let now = ctx.time;
-    let (joints, extax) = match other {
+    let (flange, conf, extax) = match other {
         // The other task's active frames stand in for the arguments not given.
         Some(Some(other)) => {
             if !present(args.get(2)) && !present(args.get(3)) {
@@ -215,14 +224,17 @@ pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
                 // its base frame is.
                 chain.base = other.frames.base;
             }
-            (other.joints, other.extax)
+            (other.flange, other.conf, other.extax)
         }
         Some(None) => return Ok(Some(data::robtarget_value(ctx, &nalgebra::Isometry3::identity(), [0; 4])?)),
-        None => (ctx.resources.robot.joints_at(now), ctx.resources.robot.extax_read(now)),
+        None => {
+            let robot = &mut ctx.resources.robot;
+            let joints = robot.joints_at(now);
+            let (flange, conf) = robot.flange_of(&joints);
+            (flange, conf, robot.extax_read(now))
+        }
     };
-    let robot = &mut ctx.resources.robot;
-    let pose = chain.target_of(&robot.kin.forward(&joints));
-    let conf = confdata_of(&robot.kin, &joints);
+    let pose = chain.target_of(&flange);
     Ok(Some(super::frame::with_extax(&data::robtarget_value(ctx, &pose, conf)?, &extax)))
 }
 

@@ -289,6 +289,13 @@ impl RobotState {
         self.motion_end.max(self.planner.pending_stop_time().unwrap_or(f64::NEG_INFINITY))
     }
 
+    /// Where the flange is for axes `joints`, in the base frame, and their confdata, by
+    /// this robot's own kinematics.
+    pub fn flange_of(&self, joints: &Joints) -> (rapid_motion::Pose, rapid_motion::confdata::ConfData) {
+        use rapid_motion::Kinematics;
+        (self.kin.forward(joints), rapid_motion::confdata::confdata_of(&self.kin, joints))
+    }
+
     /// Where the last move given ends (the start of the next).
     pub fn end_joints(&self) -> Joints {
         self.planner.end_joints()
