@@ -88,16 +88,23 @@ impl Inputs {
     /// not have: those about this task alone (a module of HOME it loads), numbered
     /// as files of `first`'s table.
     pub(crate) fn task_config_findings(&self, first: &Inputs) -> Vec<Diagnostic> {
-        let own_configs = self.modules.len() + self.programs.len();
-        let first_configs = first.modules.len() + first.programs.len();
-        self.diagnostics
-            .iter()
-            .filter(|d| d.code == Code::ConfigFile && d.file >= own_configs)
-            .map(|d| Diagnostic { file: d.file - own_configs + first_configs, ..d.clone() })
+        self.config_findings(first)
             .filter(|d| {
                 !first.diagnostics.iter().any(|f| f.file == d.file && f.span == d.span && f.message == d.message)
             })
             .collect()
+    }
+
+    /// Every finding in the configuration files of this task's inputs (those of
+    /// `first`'s too, where `first`, another task of the same backup or `self`, has
+    /// them), numbered as files of `first`'s table.
+    pub(crate) fn config_findings<'a>(&'a self, first: &Inputs) -> impl Iterator<Item = Diagnostic> + 'a {
+        let own_configs = self.modules.len() + self.programs.len();
+        let first_configs = first.modules.len() + first.programs.len();
+        self.diagnostics
+            .iter()
+            .filter(move |d| d.code == Code::ConfigFile && d.file >= own_configs)
+            .map(move |d| Diagnostic { file: d.file - own_configs + first_configs, ..d.clone() })
     }
 }
 

@@ -11,7 +11,9 @@ fn render() -> String {
         "# Diagnostics of `rapid check`\n\n\
          Generated from `crates/rapid-sema/src/codes.rs` by the `docs_fresh` test; do not edit by hand.\n\
          Codes are stable: a code is never reused or renumbered. `E` codes are errors (exit status 1),\n\
-         `W` codes are warnings. Every code has at least one fixture under `tests/check/err/` named after it.\n\n\
+         `W` codes are warnings. Every code has at least one fixture under `tests/check/err/` named after it.\n\
+         How `rapid check` shows them (the human layout, `--format json`, the tasks a finding of a check\n\
+         of several tasks comes from) is in the README's `rapid check` section.\n\n\
          | code | severity | name | what it reports |\n|---|---|---|---|\n",
     );
     for code in Code::ALL {

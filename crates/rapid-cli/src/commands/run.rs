@@ -17,7 +17,7 @@ use crate::args::RunArgs;
 use crate::commands::system::{self, ConfigFile, TaskProgram};
 use crate::commands::ExitStatus;
 use crate::inputs;
-use crate::render::{self, Files, Summary};
+use crate::render::{self, Files, Reported, Summary};
 
 /// Instructions executed between checks of the bounds and of output flushing.
 const SLICE: u64 = 1 << 16;
@@ -393,9 +393,10 @@ pub(crate) fn report_input_errors(inputs: &inputs::Inputs) -> anyhow::Result<Exi
 /// Findings that keep the system from starting, shown as `rapid check` shows them
 /// (`files` is the table their `file` indexes).
 pub(crate) fn report_system_errors(files: &[&SourceInput], diagnostics: &[Diagnostic]) -> anyhow::Result<ExitStatus> {
-    let summary = Summary::of(diagnostics, files.len());
+    let (files, reported) = (Files::new(files), Reported::untagged(diagnostics));
+    let summary = Summary::of(&reported, &files);
     let mut out = io::stderr().lock();
-    render::human::render(&mut out, &Files::new(files), diagnostics, &summary)?;
+    render::human::render(&mut out, &files, &reported, &summary)?;
     writeln!(out, "the system has errors; it was not run")?;
     Ok(ExitStatus::Failure)
 }
@@ -404,9 +405,10 @@ pub(crate) fn report_load_error(err: LoadError, files: &[SourceInput]) -> anyhow
     match err {
         LoadError::Diagnostics(diagnostics) => {
             let table: Vec<&SourceInput> = files.iter().collect();
-            let summary = Summary::of(&diagnostics, table.len());
+            let (files, reported) = (Files::new(&table), Reported::untagged(&diagnostics));
+            let summary = Summary::of(&reported, &files);
             let mut out = io::stderr().lock();
-            render::human::render(&mut out, &Files::new(&table), &diagnostics, &summary)?;
+            render::human::render(&mut out, &files, &reported, &summary)?;
             writeln!(out, "the program has errors; it was not run")?;
         }
         LoadError::Unsupported(errors) => {

@@ -8,6 +8,15 @@
 //!    |     ^^^
 //! ```
 //!
+//! A diagnostic of a check of several tasks ends with a note naming the tasks whose
+//! check found it (one report for all of them):
+//!
+//! ```text
+//!    |     ^^^
+//!    |
+//!    = note: in tasks T_ROB1, T_B
+//! ```
+//!
 //! Carets cover the span on its first line (at least one caret). The source line is
 //! made safe for a terminal: tabs become four spaces, control characters become visible
 //! symbols, and a line longer than [`LONG_LINE`] characters is cut to a window of about
@@ -15,9 +24,7 @@
 
 use std::io::{self, Write};
 
-use rapid_sema::Diagnostic;
-
-use crate::render::{severity_name, Files, Summary};
+use crate::render::{severity_name, Files, Reported, Summary};
 
 /// Lines longer than this many characters are shown as a window around the caret.
 pub(crate) const LONG_LINE: usize = 200;
@@ -32,18 +39,19 @@ const TAB_WIDTH: usize = 4;
 pub(crate) fn render(
     out: &mut dyn Write,
     files: &Files<'_>,
-    diagnostics: &[Diagnostic],
+    reported: &[Reported],
     summary: &Summary,
 ) -> io::Result<()> {
-    for diag in diagnostics {
-        render_one(out, files, diag)?;
+    for it in reported {
+        render_one(out, files, it)?;
         writeln!(out)?;
     }
     write_summary(out, summary)
 }
 
-/// Writes one diagnostic: header, location and the excerpt with carets.
-pub(crate) fn render_one(out: &mut dyn Write, files: &Files<'_>, diag: &Diagnostic) -> io::Result<()> {
+/// Writes one diagnostic: header, location, the excerpt with carets and the tasks.
+pub(crate) fn render_one(out: &mut dyn Write, files: &Files<'_>, reported: &Reported) -> io::Result<()> {
+    let diag = &reported.diag;
     let severity = severity_name(diag.severity());
     writeln!(out, "{severity}[{}]: {}", diag.code.as_str(), sanitize(&diag.message))?;
 
@@ -64,7 +72,14 @@ pub(crate) fn render_one(out: &mut dyn Write, files: &Files<'_>, diag: &Diagnost
     writeln!(out, "{gutter} |")?;
     writeln!(out, "{line_no} | {}", excerpt.text.trim_end())?;
     let pad = " ".repeat(excerpt.caret_column);
-    writeln!(out, "{gutter} | {pad}{}", "^".repeat(excerpt.caret_width))
+    writeln!(out, "{gutter} | {pad}{}", "^".repeat(excerpt.caret_width))?;
+    let word = match reported.tasks.len() {
+        0 => return Ok(()),
+        1 => "task",
+        _ => "tasks",
+    };
+    writeln!(out, "{gutter} |")?;
+    writeln!(out, "{gutter} = note: in {word} {}", sanitize(&reported.tasks.join(", ")))
 }
 
 /// `found 2 errors and 1 warning in 3 files`, or `checked 3 files: no problems found`.
@@ -190,22 +205,27 @@ fn char_width(c: char) -> usize {
 
 #[cfg(test)]
 mod tests {
-    use rapid_sema::{Code, SourceInput};
+    use rapid_sema::{Code, Diagnostic, SourceInput};
     use rapid_syntax::Span;
 
     use super::*;
 
     /// Renders diagnostics given as (file, code, start, end, message) over the files.
     fn render_str(sources: &[SourceInput], diags: &[(usize, Code, usize, usize, &str)]) -> String {
-        let table: Vec<&SourceInput> = sources.iter().collect();
-        let files = Files::new(&table);
-        let diagnostics: Vec<Diagnostic> = diags
+        let reported: Vec<Reported> = diags
             .iter()
             .map(|&(file, code, start, end, message)| Diagnostic::new(file, code, Span::new(start, end), message))
+            .map(Reported::from)
             .collect();
-        let summary = Summary::of(&diagnostics, table.len());
+        render_reported(sources, &reported)
+    }
+
+    fn render_reported(sources: &[SourceInput], reported: &[Reported]) -> String {
+        let table: Vec<&SourceInput> = sources.iter().collect();
+        let files = Files::new(&table);
+        let summary = Summary::of(reported, &files);
         let mut out = Vec::new();
-        render(&mut out, &files, &diagnostics, &summary).unwrap();
+        render(&mut out, &files, reported, &summary).unwrap();
         String::from_utf8(out).unwrap()
     }
 
@@ -228,6 +248,40 @@ mod tests {
             ],
         );
         insta::assert_snapshot!(out);
+    }
+
+    #[test]
+    fn tasks_are_named_in_a_note() {
+        // One library module loaded in two tasks: in the table once for each task, so
+        // the summary counts one file. Line 3 of the module, column 3, gutter of one.
+        let text = "MODULE Lib\n  PROC p()\n  x := 1;\n  ENDPROC\nENDMODULE\n";
+        let sources = [SourceInput::from_text("lib/Lib.sys", text), SourceInput::from_text("lib/Lib.sys", text)];
+        let (a, b) = span_of(text, "x");
+        let undefined = |file| Diagnostic::new(file, Code::UndefinedData, Span::new(a, b), "undefined data `x`");
+        let reported = [
+            Reported { diag: undefined(0), tasks: vec!["T_ROB1".to_owned(), "T_B".to_owned()] },
+            Reported { diag: undefined(1), tasks: vec!["T_B".to_owned()] },
+        ];
+        let expected = "\
+error[E0201]: undefined data `x`
+ --> lib/Lib.sys:3:3
+  |
+3 |   x := 1;
+  |   ^
+  |
+  = note: in tasks T_ROB1, T_B
+
+error[E0201]: undefined data `x`
+ --> lib/Lib.sys:3:3
+  |
+3 |   x := 1;
+  |   ^
+  |
+  = note: in task T_B
+
+found 2 errors and 0 warnings in 1 file
+";
+        assert_eq!(render_reported(&sources, &reported), expected);
     }
 
     #[test]
@@ -311,7 +365,7 @@ mod tests {
             for end in [0, start, start + 1, start + 7, text.len() + 3] {
                 let diag = Diagnostic::new(0, Code::UnexpectedToken, Span::new(start, end), "m");
                 let mut out = Vec::new();
-                render_one(&mut out, &files, &diag).unwrap();
+                render_one(&mut out, &files, &Reported::from(diag)).unwrap();
                 let shown = String::from_utf8(out).unwrap();
                 assert!(shown.lines().count() == 5 && shown.contains('^'), "{shown}");
                 assert!(shown.len() < 1000, "{shown}");

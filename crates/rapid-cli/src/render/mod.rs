@@ -3,6 +3,10 @@
 //! Diagnostics carry byte spans; lines and columns are computed here, only for the
 //! files that have something to report. The renderers never panic: a span past the end
 //! of its text or inside a character is pulled back to the nearest character boundary.
+//!
+//! A check of several tasks reports each diagnostic of a task's modules with the tasks
+//! whose check found it ([`Reported::tasks`]), so a module loaded in several tasks has
+//! one report per problem that says where it holds.
 
 pub(crate) mod human;
 pub(crate) mod json;
@@ -11,11 +15,34 @@ use std::cell::OnceCell;
 
 use rapid_sema::{Diagnostic, Severity, SourceInput};
 use rapid_syntax::{LineCol, LineIndex};
+use rustc_hash::FxHashSet;
 
 /// The files diagnostics point into, with line indexes built on first use.
 pub(crate) struct Files<'a> {
     sources: &'a [&'a SourceInput],
     line_indexes: Vec<OnceCell<LineIndex>>,
+}
+
+/// A diagnostic as reported: with the names of the tasks whose check found it, in the
+/// order they were checked. Empty when the check covers one task, and for findings
+/// about the system or its configuration as a whole.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct Reported {
+    pub(crate) diag: Diagnostic,
+    pub(crate) tasks: Vec<String>,
+}
+
+impl Reported {
+    /// Diagnostics that no task is named for.
+    pub(crate) fn untagged(diagnostics: &[Diagnostic]) -> Vec<Reported> {
+        diagnostics.iter().cloned().map(Reported::from).collect()
+    }
+}
+
+impl From<Diagnostic> for Reported {
+    fn from(diag: Diagnostic) -> Reported {
+        Reported { diag, tasks: Vec::new() }
+    }
 }
 
 /// Where a diagnostic starts and ends, as 1-based lines and character columns.
@@ -28,6 +55,12 @@ pub(crate) struct Location {
 impl<'a> Files<'a> {
     pub(crate) fn new(sources: &'a [&'a SourceInput]) -> Files<'a> {
         Files { sources, line_indexes: sources.iter().map(|_| OnceCell::new()).collect() }
+    }
+
+    /// How many different files the table holds: a file that several tasks load is
+    /// in the table once for each, under one path.
+    pub(crate) fn distinct(&self) -> usize {
+        self.sources.iter().map(|source| source.path.as_str()).collect::<FxHashSet<_>>().len()
     }
 
     /// The path to show for a file.
@@ -69,7 +102,7 @@ impl<'a> Files<'a> {
     }
 }
 
-/// How many errors and warnings a run found, and in how many files.
+/// How many errors and warnings a run found, and in how many files (by path).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct Summary {
     pub(crate) errors: usize,
@@ -78,9 +111,9 @@ pub(crate) struct Summary {
 }
 
 impl Summary {
-    pub(crate) fn of(diagnostics: &[Diagnostic], n_files: usize) -> Summary {
-        let errors = diagnostics.iter().filter(|diag| diag.severity() == Severity::Error).count();
-        Summary { errors, warnings: diagnostics.len() - errors, files: n_files }
+    pub(crate) fn of(reported: &[Reported], files: &Files<'_>) -> Summary {
+        let errors = reported.iter().filter(|it| it.diag.severity() == Severity::Error).count();
+        Summary { errors, warnings: reported.len() - errors, files: files.distinct() }
     }
 }
 
