@@ -134,6 +134,7 @@ errors! {
     // Path stop and restart (§2.2.6).
     AlreadyMoving = "ERR_ALRDY_MOVING",
     PathDist = "ERR_PATHDIST",
+    ConcMax = "ERR_CONC_MAX",
     BwdLimit = "ERR_BWDLIMIT",
     // Triggers (TriggLIOs/TriggJIOs name their signals).
     SigName = "ERR_SIG_NAME",

@@ -285,6 +285,7 @@ pub(super) fn go_with(
     note_facts(ctx, &request, &chain);
     let now = ctx.time;
     let conc = present(args.get(layout.conc));
+    count_conc(ctx, conc, now)?;
     let robot = &mut ctx.resources.robot;
     robot.set_settings(settings);
     robot.next_external = external;
@@ -343,6 +344,35 @@ pub(super) fn external_target(
         super::foreign::check_unit_move(ctx, &ext.from, &ext.to)?;
     }
     Ok(external)
+}
+
+/// The most consecutive moves with `\Conc` (the instruction manual: "the number of
+/// consecutive movement instructions is limited to 5").
+const MAX_CONC: u32 = 5;
+
+/// Counts a move given with `\Conc` (`conc`): a sixth in a row raises ERR_CONC_MAX; a
+/// move without it, or the robot standing still when it is given (every move before
+/// it done), ends the row. A `\Conc` move while StorePath holds the base path stops
+/// execution (the manual does not allow one between StorePath and RestoPath).
+// uncertain: that the row ends when the robot has caught up, and where the error is
+// raised (at the sixth move, before the robot is given it).
+fn count_conc(ctx: &mut Ctx<'_>, conc: bool, now: f64) -> Result<(), RapidError> {
+    let robot = &mut ctx.resources.robot;
+    if !conc || robot.still_from() <= now {
+        robot.conc_run = 0;
+    }
+    if !conc {
+        return Ok(());
+    }
+    if robot.stored.is_some() {
+        return Err(RapidError::fatal("a move with \\Conc is not allowed between StorePath and RestoPath"));
+    }
+    if robot.conc_run >= MAX_CONC {
+        let message = format!("more than {MAX_CONC} consecutive movement instructions with \\Conc");
+        return Err(ctx.error(crate::errnames::Err::ConcMax, message));
+    }
+    robot.conc_run += 1;
+    Ok(())
 }
 
 /// The program waits for the robot until `resume`.

@@ -158,6 +158,8 @@ pub struct RobotState {
     pub motion_end: f64,
     /// Moves planned so far.
     pub moves: u64,
+    /// Consecutive moves given with `\Conc` (moves.rs `count_conc`).
+    pub(super) conc_run: u32,
     /// Fly-by points the robot had to stop at.
     pub corner_path_failures: u64,
     /// Where the moves whose fly-by point became a stop point were programmed (file,
@@ -239,6 +241,7 @@ impl RobotState {
             active: FrameChain::default(),
             motion_end: 0.0,
             moves: 0,
+            conc_run: 0,
             corner_path_failures: 0,
             corner_failures: Vec::new(),
             next_place: None,
