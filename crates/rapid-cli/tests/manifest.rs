@@ -373,7 +373,8 @@ fn a_task_using_a_motion_tasks_unit_group_reads_its_robot() {
     // T_ROB1 moves axis 1 to 10°, axis 5 to 40°. T_MON is no motion task; with
     // `mechanical_unit_group = "rob1"` (SYS.cfg's -UseMechanicalUnitGroup; rob1 is the
     // first motion task's) its CJointT, CRobT and CPos read T_ROB1's robot, as a
-    // ROS-style state server does; T_OFF, without a group, reads no robot (9E9). tool0
+    // ROS-style state server does; so does T_OFF without a group, the system having one
+    // motion task (`a_task_without_a_unit_group_reads_the_only_robot`). tool0
     // there: the wrist centre (302, 0, 630) at zero, the flange 72 mm on along the tool's
     // z axis, tilted 40° down by axis 5: x = 302 + 72·cos 40° = 357.155, z = 630 −
     // 72·sin 40° = 583.719; axis 1 turns it 10°: (351.729, 62.019, 583.719).
@@ -407,7 +408,7 @@ fn a_task_using_a_motion_tasks_unit_group_reads_its_robot() {
             "mon at [351.729,62.0193,583.719]",
             "mon axis 1 10",
             "mon robtarget at [351.729,62.0193,583.719]",
-            "off axis 1 9E+09"
+            "off axis 1 10"
         ]
     );
 }
@@ -526,4 +527,33 @@ fn another_tasks_robot_is_read_with_its_own_model() {
     let out = rapid_in(&dir, &["run", "--quiet", "rapid.toml"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "x 940\nz 1455\n");
+}
+
+#[test]
+fn a_task_without_a_unit_group_reads_the_only_robot() {
+    let dir = scratch("only_robot");
+    // One motion task (no MultiMove): MON, no motion task and no unit group, reads its
+    // robot as open_abb's LOGGER does. Axis 5 at 30°: tool0 at (302 + 72 cos 30°, 0,
+    // 630 - 72 sin 30°) = (364.354, 0, 594).
+    let rob = "MODULE Rob\n  PROC main()\n    MoveAbsJ [[0,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    \
+               WaitTime 1;\n  ENDPROC\nENDMODULE\n";
+    let mon = "MODULE Mon\n  PROC main()\n    VAR jointtarget j;\n    VAR robtarget p;\n    WaitTime 0.8;\n    \
+               j := CJointT();\n    p := CRobT(\\Tool:=tool0 \\WObj:=wobj0);\n    \
+               TPWrite \"axis 5 \" \\Num:=j.robax.rax_5;\n    \
+               TPWrite \"tcp \" + NumToStr(p.trans.x, 1) + \" \" + NumToStr(p.trans.z, 1);\n  ENDPROC\nENDMODULE\n";
+    let toml = "[[task]]\nname = \"T_ROB1\"\nmodules = [\"r/Rob.mod\"]\n\n\
+                [[task]]\nname = \"MON\"\ntype = \"NORMAL\"\nmodules = [\"m/Mon.mod\"]\n";
+    write(&dir, &[("rapid.toml", toml), ("r/Rob.mod", rob), ("m/Mon.mod", mon)]);
+    let out = rapid_in(&dir, &["run", "--quiet", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "axis 5 30\ntcp 364.4 594.0\n");
+    // With a second robot (MultiMove) the group must be named: without it MON reads no
+    // robot, CJointT 9E9, and its CRobT stops the task, saying why.
+    let two = toml.replace("[[task]]\nname = \"MON\"", "[[task]]\nname = \"T_ROB2\"\nmotion = true\nmodules = [\"r2/Rob.mod\"]\n\n[[task]]\nname = \"MON\"");
+    write(&dir, &[("rapid.toml", &two), ("r2/Rob.mod", rob)]);
+    let out = rapid_in(&dir, &["run", "--quiet", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(text(&out.stdout), "");
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("CRobT: the task is no motion task and uses no motion task's mechanical unit group"), "{stderr}");
 }

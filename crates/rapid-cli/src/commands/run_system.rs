@@ -331,12 +331,21 @@ fn run_hooks(
 
 /// The motion task whose mechanical unit group a task that is no motion task uses
 /// (`-UseMechanicalUnitGroup`). A motion task without the attribute uses `rob1`, `rob2`,
-/// … by its place among the motion tasks.
-// uncertain: that default; RobotWare's own configurations name the group of each
-// motion task.
+/// … by its place among the motion tasks. Without the attribute, in a system of one
+/// motion task (no MultiMove), the task uses that task's group, the only one.
+// uncertain: both defaults; RobotWare's own configurations name the group of each
+// motion task, and the attribute is needed in MultiMove systems. The second is what
+// open_abb's controller backup relies on: its LOGGER task, configured without the
+// attribute, streams the robot's CRobT and CJointT.
 fn robot_of(sys: &Sys, task: &rapid_config::sys::Task) -> Option<String> {
-    let group = task.mechanical_unit_group.as_deref().filter(|_| !task.motion_task)?;
+    if task.motion_task {
+        return None;
+    }
     let mut motion = sys.tasks.iter().filter(|t| t.motion_task).enumerate();
+    let Some(group) = task.mechanical_unit_group.as_deref() else {
+        let only = motion.next().filter(|_| sys.tasks.iter().filter(|t| t.motion_task).count() == 1);
+        return only.map(|(_, t)| t.name.clone());
+    };
     let uses = |(n, t): &(usize, &rapid_config::sys::Task)| match t.mechanical_unit_group.as_deref() {
         Some(own) => own.eq_ignore_ascii_case(group),
         None => format!("rob{}", n + 1).eq_ignore_ascii_case(group),

@@ -199,7 +199,15 @@ fn require_tcp(ctx: &Ctx<'_>, other: Option<&OtherRobot>, what: &str) -> Result<
     if tcp {
         return Ok(());
     }
-    Err(RapidError::fatal(format!("{what}: the task moves no robot (a positioner's task): there is no TCP to read")))
+    let motion = super::super::tasking::my_task(ctx).is_none_or(|t| t.motion);
+    Err(RapidError::fatal(if other.is_none() && !motion {
+        format!(
+            "{what}: the task is no motion task and uses no motion task's mechanical unit group \
+             (-UseMechanicalUnitGroup): there is no robot to read"
+        )
+    } else {
+        format!("{what}: the task moves no robot (a positioner's task): there is no TCP to read")
+    }))
 }
 
 /// `CRobT([\TaskRef] | [\TaskName] [\Tool] [\WObj])`: the robtarget the robot is at.
