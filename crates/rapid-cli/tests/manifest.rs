@@ -535,7 +535,8 @@ fn a_task_without_a_unit_group_reads_the_only_robot() {
     // One motion task (no MultiMove): MON, no motion task and no unit group, reads its
     // robot as open_abb's LOGGER does. Axis 5 at 30°: tool0 at (302 + 72 cos 30°, 0,
     // 630 - 72 sin 30°) = (364.354, 0, 594).
-    let rob = "MODULE Rob\n  PROC main()\n    MoveAbsJ [[0,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    \
+    let rob =
+        "MODULE Rob\n  PROC main()\n    MoveAbsJ [[0,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    \
                WaitTime 1;\n  ENDPROC\nENDMODULE\n";
     let mon = "MODULE Mon\n  PROC main()\n    VAR jointtarget j;\n    VAR robtarget p;\n    WaitTime 0.8;\n    \
                j := CJointT();\n    p := CRobT(\\Tool:=tool0 \\WObj:=wobj0);\n    \
@@ -549,11 +550,17 @@ fn a_task_without_a_unit_group_reads_the_only_robot() {
     assert_eq!(text(&out.stdout), "axis 5 30\ntcp 364.4 594.0\n");
     // With a second robot (MultiMove) the group must be named: without it MON reads no
     // robot, CJointT 9E9, and its CRobT stops the task, saying why.
-    let two = toml.replace("[[task]]\nname = \"MON\"", "[[task]]\nname = \"T_ROB2\"\nmotion = true\nmodules = [\"r2/Rob.mod\"]\n\n[[task]]\nname = \"MON\"");
+    let two = toml.replace(
+        "[[task]]\nname = \"MON\"",
+        "[[task]]\nname = \"T_ROB2\"\nmotion = true\nmodules = [\"r2/Rob.mod\"]\n\n[[task]]\nname = \"MON\"",
+    );
     write(&dir, &[("rapid.toml", &two), ("r2/Rob.mod", rob)]);
     let out = rapid_in(&dir, &["run", "--quiet", "rapid.toml"]);
     assert_eq!(out.status.code(), Some(1));
     assert_eq!(text(&out.stdout), "");
     let stderr = text(&out.stderr);
-    assert!(stderr.contains("CRobT: the task is no motion task and uses no motion task's mechanical unit group"), "{stderr}");
+    assert!(
+        stderr.contains("CRobT: the task is no motion task and uses no motion task's mechanical unit group"),
+        "{stderr}"
+    );
 }
