@@ -5,6 +5,7 @@ mod args;
 mod commands;
 mod elog;
 mod inputs;
+mod interrupt;
 mod motion_out;
 mod pace;
 mod render;

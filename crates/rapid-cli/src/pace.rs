@@ -13,6 +13,9 @@ use std::time::{Duration, Instant};
 /// The longest single sleep (a wait of days is still bounded).
 const MAX_SLEEP: f64 = 86_400.0;
 
+/// Sleeps are cut into slices this long, so that Ctrl-C ends a long wait at once.
+const SLICE: Duration = Duration::from_millis(50);
+
 /// Where wall-clock time and controller time were last tied together.
 #[derive(Default)]
 pub(crate) struct Pacer {
@@ -32,8 +35,11 @@ impl Pacer {
         let (wall0, clock0) = *self.anchor.get_or_insert_with(|| (Instant::now(), from));
         let target = to.min(limit);
         let due = wall0 + Duration::from_secs_f64((target - clock0).clamp(0.0, MAX_SLEEP));
-        if let Some(left) = due.checked_duration_since(Instant::now()) {
-            std::thread::sleep(left);
+        while let Some(left) = due.checked_duration_since(Instant::now()) {
+            if crate::interrupt::requested() {
+                break;
+            }
+            std::thread::sleep(left.min(SLICE));
         }
         let now = clock0 + wall0.elapsed().as_secs_f64();
         to.max(now.min(limit))

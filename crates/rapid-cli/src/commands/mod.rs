@@ -19,6 +19,8 @@ pub(crate) enum ExitStatus {
     Failure,
     /// Bad usage or a tool failure such as an unreadable path (exit 2).
     Error,
+    /// The user ended the run with Ctrl-C (exit 130, as a shell reports SIGINT).
+    Interrupted,
 }
 
 impl From<ExitStatus> for ExitCode {
@@ -27,6 +29,7 @@ impl From<ExitStatus> for ExitCode {
             ExitStatus::Success => ExitCode::from(0),
             ExitStatus::Failure => ExitCode::from(1),
             ExitStatus::Error => ExitCode::from(2),
+            ExitStatus::Interrupted => ExitCode::from(130),
         }
     }
 }
@@ -35,7 +38,10 @@ impl From<ExitStatus> for ExitCode {
 pub(crate) fn run(cli: Cli) -> anyhow::Result<ExitStatus> {
     match cli.command {
         Command::Check(args) => check::run(&args),
-        Command::Run(args) => run::run(&args),
+        Command::Run(args) => {
+            crate::interrupt::install();
+            run::run(&args)
+        }
         Command::Codes => codes::run(),
     }
 }

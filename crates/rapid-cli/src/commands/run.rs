@@ -118,6 +118,11 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     // The instructions executed when the clock was last charged for computing.
     let mut charged = loaded.vm.steps;
     let status = loop {
+        if crate::interrupt::requested() {
+            host.flush();
+            eprintln!("interrupted (Ctrl-C) at {:.3} s of controller time; the program did not end", loaded.vm.time);
+            break ExitStatus::Interrupted;
+        }
         // Defence in depth: an interpreter bug must not take the terminal down with a
         // panic trace; it is reported as what it is.
         let step = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| loaded.vm.run(&mut host, SLICE)));

@@ -419,6 +419,8 @@ enum Bound {
     Steps(u64),
     Time(f64),
     InternalError,
+    /// The user ended the run (Ctrl-C).
+    Interrupted,
     /// The program was stopped (a system input) and nothing in the stimulus starts it
     /// again.
     Stopped,
@@ -429,6 +431,9 @@ fn drive(controller: &mut Controller, host: &mut StdoutHost<'_>, args: &RunArgs)
     let mut pacer = crate::pace::Pacer::default();
     let limit = args.max_time.unwrap_or(f64::INFINITY);
     loop {
+        if crate::interrupt::requested() {
+            return Some(Bound::Interrupted);
+        }
         let step = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| controller.run(host, SLICE)));
         let Ok(exit) = step else { return Some(Bound::InternalError) };
         if let Some(max) = args.max_steps {
@@ -480,6 +485,13 @@ fn report(controller: &Controller, tasks: &[LoadedTask], bound: Option<Bound>) -
                 "the program is stopped at {:.3} s of controller time and nothing in the stimulus starts it again; the run ends here",
                 controller.time
             );
+        }
+        Some(Bound::Interrupted) => {
+            eprintln!(
+                "interrupted (Ctrl-C) at {:.3} s of controller time; the program did not end",
+                controller.time
+            );
+            status = ExitStatus::Interrupted;
         }
         Some(Bound::InternalError) => {
             eprintln!("internal error: the interpreter failed; please report this program");
