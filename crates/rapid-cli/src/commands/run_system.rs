@@ -487,10 +487,7 @@ fn report(controller: &Controller, tasks: &[LoadedTask], bound: Option<Bound>) -
             );
         }
         Some(Bound::Interrupted) => {
-            eprintln!(
-                "interrupted (Ctrl-C) at {:.3} s of controller time; the program did not end",
-                controller.time
-            );
+            eprintln!("interrupted (Ctrl-C) at {:.3} s of controller time; the program did not end", controller.time);
             status = ExitStatus::Interrupted;
         }
         Some(Bound::InternalError) => {
