@@ -447,3 +447,46 @@ fn a_mech_unit_output_names_a_unit_the_system_has() {
     let stderr = text(&out.stderr);
     assert!(stderr.contains("names mechanical unit `ROB_2`, which the system does not have"), "{stderr}");
 }
+
+#[test]
+fn a_robot_held_by_stop_move_shows_standing_still() {
+    let dir = scratch("mech_unit_stop_move");
+    // 0.5 s after the MoveJ the robot starts a 100 mm MoveL (\Conc: the program goes on),
+    // StopMove holds it 0.3 s later, StartMove lets it go on 0.5 s after that: the output
+    // shows it standing still from the stop to the start.
+    let module = "MODULE Main
+  CONST robtarget p0 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];
+  PROC main()
+    MoveJ p0, v1000, fine, tool0;
+    WaitTime 0.5;
+    MoveL \\Conc, Offs(p0, 100, 0, 0), v100, fine, tool0;
+    WaitTime 0.3;
+    StopMove;
+    WaitTime 0.5;
+    StartMove;
+    WaitRob \\InPos;
+  ENDPROC
+ENDMODULE
+";
+    let eio = "EIO:CFG_1.0:6:0::
+#
+EIO_SIGNAL:
+
+      -Name \"doStill\" -SignalType \"DO\" -Access \"ReadOnly\"
+#
+SYSSIG_OUT:
+
+      -Status \"MechUnitNotMoving\" -Signal \"doStill\" -Arg1 \"ROB_1\"
+";
+    one_task_cell(&dir, module, eio);
+    let out = rapid_in(&dir, &["run", "--quiet", "--io-log", "io.csv", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
+    let still = changes(&log, "doStill");
+    let values: Vec<&str> = still.iter().map(|c| c.1).collect();
+    // Power on, the MoveJ, the MoveL until StopMove, from StartMove to the end.
+    assert_eq!(values, ["1", "0", "1", "0", "1", "0", "1"], "{log}");
+    let at: Vec<f64> = still.iter().map(|c| c.0.parse().expect("time")).collect();
+    let near = |a: f64, b: f64| (a - b).abs() < 1e-3;
+    assert!(near(at[3] - at[2], 0.5) && near(at[4] - at[3], 0.3) && near(at[5] - at[4], 0.5), "{at:?}");
+}

@@ -286,9 +286,12 @@ impl RobotState {
 
     /// From when the robot stands still unless the program gives it another move: the
     /// end of its last final move, or where the move waiting for its successor would
-    /// stop (its fly-by point then becomes a stop point).
-    // uncertain: a StopMove pause counts as moving (the path is only held).
+    /// stop (its fly-by point then becomes a stop point); while StopMove holds its path,
+    /// from where the path stopped.
     pub fn still_from(&self) -> f64 {
+        if let Some(pause) = &self.pause {
+            return pause.since;
+        }
         self.motion_end.max(self.planner.pending_stop_time().unwrap_or(f64::NEG_INFINITY))
     }
 
