@@ -283,6 +283,7 @@ const CFG_PROGRAM: &str = r#"MODULE MainModule
         ReadCfgData "/EIO/EIO_SIGNAL/doGrip", "Label", s;
         ReadCfgData "/MMC/X/y", "Name", s;
         ReadCfgData "EIO/EIO_SIGNAL/doGrip", "Device", s;
+        TPWrite "without the slash: " + s;
         ReadCfgData "/EIO/EIO_SIGNAL/doGrip", "Default", s;
         ReadCfgData "/EIO/EIO_SIGNAL/doGrip", "Device", n;
         idx := 3;
@@ -355,7 +356,7 @@ on d652: doLamp, next -1
 ERR_CFG_NOTFND
 ERR_CFG_NOTFND
 ERR_CFG_NOTFND
-ERR_CFG_NOTFND
+without the slash: d652
 ERR_CFG_ILLTYPE
 ERR_CFG_ILLTYPE
 ERR_CFG_OUTOFBOUNDS

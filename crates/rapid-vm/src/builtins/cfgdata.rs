@@ -51,10 +51,12 @@ struct InstancePath {
     key: (String, String),
 }
 
-// uncertain: a path without the leading `/` or with another number of parts is not
-// found (ERR_CFG_NOTFND) rather than refused some other way.
+// uncertain: a path with another number of parts is not found (ERR_CFG_NOTFND) rather
+// than refused some other way. A path without the leading `/` is read as with it: the
+// manual's examples all have it, but public production code reads
+// "MOC/ROBOT_SERIAL_NUMBER/rob_1" (next to WriteCfgData paths with the slash).
 fn parse_path(text: &str) -> Option<InstancePath> {
-    let parts: Vec<&str> = text.strip_prefix('/')?.split('/').collect();
+    let parts: Vec<&str> = text.strip_prefix('/').unwrap_or(text).split('/').collect();
     let (domain, type_name, key) = match parts.as_slice() {
         [domain, type_name, name] => (domain, type_name, ("Name".to_owned(), (*name).to_owned())),
         [domain, type_name, attr, value] => (domain, type_name, ((*attr).to_owned(), (*value).to_owned())),
