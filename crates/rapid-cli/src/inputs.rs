@@ -241,7 +241,7 @@ impl Collector {
         if !task.folder.is_dir() {
             bail!("backup `{shown}`: task {} has no task folder `{}`", task.name, task.folder.display());
         }
-        let modules = backup::task_modules(&task.folder);
+        let modules = backup::task_modules(folder, &task.folder)?;
         if modules.is_empty() {
             bail!("backup `{shown}`: task folder `{}` holds no modules in PROGMOD or SYSMOD", task.folder.display());
         }

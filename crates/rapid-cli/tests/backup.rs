@@ -619,3 +619,37 @@ fn a_task_without_its_folder_is_reported_not_given_another_tasks_program() {
         assert!(text(&out.stderr).contains("task T_BG has no task folder"), "{command}: {}", text(&out.stderr));
     }
 }
+
+#[test]
+fn a_task_is_the_modules_backinfo_lists() {
+    let dir = scratch("backinfo_modules");
+    // backinfo.txt lists MainModule.mod for TASK1; Old.mod, left in the folder, is not
+    // part of the task (the controller saved what it had loaded): its error does not
+    // count and its procedure is not there.
+    let main = "MODULE MainModule\n  PROC main()\n    TPWrite \"main\";\n  ENDPROC\nENDMODULE\n";
+    let old = "MODULE Old\n  PROC old()\n    undefined_thing;\n  ENDPROC\nENDMODULE\n";
+    let backinfo = "#\n>>SYSPAR:\nSYS.cfg\n\n>>TASK1: (T_ROB1,,)\nPROGMOD\\MainModule.mod @ \n\n>>EOF:\n";
+    write(
+        &dir,
+        &[
+            ("cell/BACKINFO/backinfo.txt", backinfo),
+            ("cell/SYSPAR/SYS.cfg", CFG_SYS),
+            ("cell/RAPID/TASK1/PROGMOD/MainModule.mod", main),
+            ("cell/RAPID/TASK1/PROGMOD/Old.mod", old),
+        ],
+    );
+    let out = rapid_in(&dir, &["run", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "main\n");
+    let out = rapid_in(&dir, &["check", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stdout));
+    assert!(!text(&out.stdout).contains("Old.mod"), "{}", text(&out.stdout));
+    // A module it lists that the folder lacks: the backup is refused, naming it.
+    let listed_twice =
+        backinfo.replace("PROGMOD\\MainModule.mod @ \n", "PROGMOD\\MainModule.mod @ \nSYSMOD\\user.sys @ \n");
+    write(&dir, &[("cell/BACKINFO/backinfo.txt", &listed_twice)]);
+    let out = rapid_in(&dir, &["run", "cell"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(text(&out.stdout), "");
+    assert!(text(&out.stderr).contains("backinfo.txt lists module `SYSMOD\\user.sys`"), "{}", text(&out.stderr));
+}

@@ -2,7 +2,8 @@
 //!
 //! ```text
 //! BACKUP/
-//!   BACKINFO/backinfo.txt     `>>TASK1: (T_ROB1,,)` names the task of each folder
+//!   BACKINFO/backinfo.txt     `>>TASK1: (T_ROB1,,)` names the task of each folder,
+//!                             and the lines after it its modules (`SYSMOD\user.sys @ `)
 //!   HOME/
 //!   RAPID/TASK1/PROGMOD/*.mod
 //!   RAPID/TASK1/SYSMOD/*.sys
@@ -137,8 +138,51 @@ fn parse_backinfo_task(line: &str) -> Option<(u32, String)> {
     (!name.is_empty()).then(|| (n, name.to_owned()))
 }
 
+/// The modules of task folder `task` of backup `backup`: those backinfo.txt lists for
+/// it, in its order (the controller saved exactly these; another file in the folder is
+/// not part of the task), else every module file, `SYSMOD` then `PROGMOD`, each sorted
+/// by name. A listed module the folder lacks is an error.
+pub(crate) fn task_modules(backup: &Path, task: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    let number = task.file_name().and_then(|n| n.to_str()).and_then(task_number);
+    let Some(listed) = number.and_then(|n| backinfo_modules(backup, n)) else { return Ok(folder_modules(task)) };
+    listed
+        .iter()
+        .map(|entry| {
+            let found = entry.split(['\\', '/']).try_fold(task.to_path_buf(), |dir, part| child(&dir, part));
+            found.filter(|p| p.is_file()).ok_or_else(|| {
+                anyhow::anyhow!(
+                    "backup `{}`: backinfo.txt lists module `{entry}` for `{}`, which the folder does not hold",
+                    backup.display(),
+                    task.display()
+                )
+            })
+        })
+        .collect()
+}
+
+/// `n` of a task folder named `TASKn`.
+fn task_number(folder: &str) -> Option<u32> {
+    folder.to_ascii_uppercase().strip_prefix("TASK")?.parse().ok()
+}
+
+/// The modules backinfo.txt lists for task folder `TASKn` (the lines after its
+/// `>>TASKn:` header up to the next header: `SYSMOD\user.sys @ `); None when there is
+/// no backinfo.txt or it lists none.
+fn backinfo_modules(backup: &Path, n: u32) -> Option<Vec<String>> {
+    let file = child(backup, "BACKINFO").and_then(|dir| child(&dir, "backinfo.txt"))?;
+    let text = String::from_utf8_lossy(&fs::read(file).ok()?).into_owned();
+    let mut lines = text.lines().skip_while(|line| parse_backinfo_task(line).is_none_or(|(k, _)| k != n)).skip(1);
+    let listed: Vec<String> = lines
+        .by_ref()
+        .take_while(|line| !line.trim_start().starts_with(">>"))
+        .filter_map(|line| line.split('@').next().map(str::trim).filter(|entry| !entry.is_empty()))
+        .map(str::to_owned)
+        .collect();
+    (!listed.is_empty()).then_some(listed)
+}
+
 /// The module files of a task folder: `SYSMOD` then `PROGMOD`, each sorted by name.
-pub(crate) fn task_modules(task: &Path) -> Vec<PathBuf> {
+fn folder_modules(task: &Path) -> Vec<PathBuf> {
     let mut modules = Vec::new();
     for sub in ["SYSMOD", "PROGMOD"] {
         let Some(dir) = child(task, sub).filter(|p| p.is_dir()) else { continue };
@@ -164,5 +208,12 @@ mod tests {
         assert_eq!(parse_backinfo_task(">>TASK2: (T_BACK,BASE,)"), Some((2, "T_BACK".into())));
         assert_eq!(parse_backinfo_task(">>SYSPAR:"), None);
         assert_eq!(parse_backinfo_task("PROGMOD\\MainModule.mod @ "), None);
+    }
+
+    #[test]
+    fn task_folder_numbers() {
+        assert_eq!(task_number("TASK2"), Some(2));
+        assert_eq!(task_number("task10"), Some(10));
+        assert_eq!(task_number("PROGMOD"), None);
     }
 }
