@@ -74,6 +74,9 @@ pub(crate) struct Inputs {
     /// For each file of [`Inputs::table`], its place in the order the files were found,
     /// so output follows the command line even though modules come first in the table.
     pub(crate) rank: Vec<usize>,
+    /// What the user should know about how the inputs were read (a backup's module
+    /// left out): printed to stderr as notes.
+    pub(crate) notes: Vec<String>,
 }
 
 impl Inputs {
@@ -174,6 +177,7 @@ struct Collector {
     config_diagnostics: Vec<Diagnostic>,
     /// Canonical paths already read, so a file named twice is checked once.
     seen: FxHashSet<PathBuf>,
+    notes: Vec<String>,
 }
 
 impl Collector {
@@ -242,6 +246,13 @@ impl Collector {
             bail!("backup `{shown}`: task {} has no task folder `{}`", task.name, task.folder.display());
         }
         let modules = backup::task_modules(folder, &task.folder)?;
+        for left_out in backup::unlisted_modules(&task.folder, &modules) {
+            self.notes.push(format!(
+                "`{}` is not among the modules backinfo.txt lists for task {}: it is not loaded",
+                left_out.display(),
+                task.name
+            ));
+        }
         if modules.is_empty() {
             bail!("backup `{shown}`: task folder `{}` holds no modules in PROGMOD or SYSMOD", task.folder.display());
         }
@@ -557,6 +568,7 @@ impl Collector {
             shared_modules: self.shared_modules,
             diagnostics,
             rank,
+            notes: self.notes,
         }
     }
 }

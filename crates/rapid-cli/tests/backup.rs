@@ -641,6 +641,8 @@ fn a_task_is_the_modules_backinfo_lists() {
     let out = rapid_in(&dir, &["run", "cell"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "main\n");
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("note: `cell/RAPID/TASK1/PROGMOD/Old.mod` is not among the modules backinfo.txt lists for task T_ROB1: it is not loaded"), "{stderr}");
     let out = rapid_in(&dir, &["check", "cell"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stdout));
     assert!(!text(&out.stdout).contains("Old.mod"), "{}", text(&out.stdout));

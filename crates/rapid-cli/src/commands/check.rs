@@ -24,6 +24,9 @@ use crate::render::{self, Files, Reported, Summary};
 pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
     let inputs = inputs::collect(&args.paths)?;
     let others = other_tasks(args, &inputs)?;
+    for task in std::iter::once(&inputs).chain(&others) {
+        super::run::print_notes(task);
+    }
     // A task is named only where the check covers several.
     let names = |task: &inputs::Inputs| match (&task.task, others.is_empty()) {
         (Some(folder), false) => vec![folder.name.clone()],

@@ -28,6 +28,7 @@ pub(crate) const WARM_START: &str =
 
 pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     let inputs = inputs::collect(&args.paths)?;
+    print_notes(&inputs);
     if has_config_errors(&inputs) {
         return report_input_errors(&inputs);
     }
@@ -381,6 +382,13 @@ pub(crate) fn location(files: &[SourceInput], file: usize, offset: u32) -> (Stri
             (input.path.clone(), at.line, at.column)
         }
         None => ("<predefined>".into(), 0, 0),
+    }
+}
+
+/// Prints the notes on how the inputs were read (a backup's module left out) to stderr.
+pub(crate) fn print_notes(inputs: &inputs::Inputs) {
+    for note in &inputs.notes {
+        eprintln!("note: {note}");
     }
 }
 

@@ -55,6 +55,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             Some(inputs) => inputs,
             None => {
                 let inputs = inputs::collect_task(&args.paths, Some(&spec.name))?;
+                single::print_notes(&inputs);
                 // What is wrong for this task alone (a module of HOME it loads is missing).
                 match tasks.first() {
                     Some(first) => own_findings.extend(inputs.task_config_findings(&first.inputs)),

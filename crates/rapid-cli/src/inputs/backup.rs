@@ -160,6 +160,12 @@ pub(crate) fn task_modules(backup: &Path, task: &Path) -> anyhow::Result<Vec<Pat
         .collect()
 }
 
+/// The module files of task folder `task` that are not among `modules` (those
+/// backinfo.txt lists), which the task therefore leaves out.
+pub(crate) fn unlisted_modules(task: &Path, modules: &[PathBuf]) -> Vec<PathBuf> {
+    folder_modules(task).into_iter().filter(|file| !modules.contains(file)).collect()
+}
+
 /// `n` of a task folder named `TASKn`.
 fn task_number(folder: &str) -> Option<u32> {
     folder.to_ascii_uppercase().strip_prefix("TASK")?.parse().ok()
