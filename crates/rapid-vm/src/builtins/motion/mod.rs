@@ -72,6 +72,7 @@ pub(super) static ENTRIES: Entries = &[
     ("GripLoad", settings::grip_load),
     ("PathResol", settings::path_resol),
     ("CornerPathWarning", settings::corner_path_warning),
+    ("MotionProcessModeSet", settings::motion_process_mode_set),
     ("SpeedRefresh", settings::speed_refresh),
     ("CSpeedOverride", settings::c_speed_override),
     ("PDispSet", settings::pdisp_set),

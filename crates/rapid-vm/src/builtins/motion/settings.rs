@@ -157,6 +157,38 @@ pub(crate) fn path_resol(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     update(ctx, |s| s.path_resol = percent)
 }
 
+/// `MotionProcessModeSet Mode`: the motion process mode. OPTIMAL_CYCLE_TIME_MODE is the
+/// controller's default, the mode every move is planned in: it changes nothing. The
+/// other modes trade cycle time for accuracy through accelerations and servo tuning
+/// whose values ABB does not publish, so they stop execution ("not supported yet")
+/// rather than run with the default's timing.
+pub(crate) fn motion_process_mode_set(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    const OPTIMAL_CYCLE_TIME_MODE: f64 = 1.0;
+    let mode = ctx.num(&args[0])?;
+    if mode == OPTIMAL_CYCLE_TIME_MODE {
+        return Ok(None);
+    }
+    // The catalogue's motionprocessmode constants, by value.
+    const NAMES: [&str; 8] = [
+        "OPTIMAL_CYCLE_TIME_MODE",
+        "LOW_SPEED_ACCURACY_MODE",
+        "LOW_SPEED_STIFF_MODE",
+        "ACCURACY_MODE",
+        "MPM_USER_MODE_1",
+        "MPM_USER_MODE_2",
+        "MPM_USER_MODE_3",
+        "MPM_USER_MODE_4",
+    ];
+    let known = (mode.fract() == 0.0 && (1.0..=8.0).contains(&mode)).then(|| NAMES[mode as usize - 1]);
+    let Some(name) = known else {
+        return Err(ctx.error(Err::ArgValue, format!("{mode} is no motion process mode")));
+    };
+    Err(RapidError::fatal(format!(
+        "MotionProcessModeSet {name}: motion process modes other than OPTIMAL_CYCLE_TIME_MODE are not \
+         supported yet (their accelerations and servo tuning are not public)"
+    )))
+}
+
 /// `CornerPathWarning Active`: whether corner path failures are reported.
 pub(crate) fn corner_path_warning(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let active = match ctx.value(&args[0])? {
