@@ -221,3 +221,19 @@ fn corner_path_failures_are_logged_at_their_moves_unless_warnings_are_off() {
     // Line 4's failure is found when line 6 gives the next move, after the 0.5 s wait.
     assert!(logged[0]["time"].as_f64().expect("time") > 0.5);
 }
+
+#[test]
+fn a_motion_error_is_logged_in_the_motion_domain() {
+    let dir = fresh_dir("motion_domain");
+    // 2.4 m away is beyond the IRB 120's reach: the motion system reports 50050
+    // "Position outside reach" (domain 5, number 50), not a program error 4xxxx.
+    let program = "MODULE M\n  PROC main()\n    \
+                   MoveL [[2400,0,600],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v500, fine, tool0;\n  \
+                   ENDPROC\nENDMODULE\n";
+    let out = run(&dir, program, &["--quiet"]);
+    assert_eq!(out.status.code(), Some(1));
+    let found: Vec<Value> = program_entries(&dir);
+    let reach = found.iter().find(|e| e["code"] == json!(50050)).unwrap_or_else(|| panic!("{found:?}"));
+    assert_eq!((&reach["domain"], &reach["number"]), (&json!(5), &json!(50)), "{reach}");
+    assert!(reach["title"].as_str().is_some_and(|t| t.contains("Position outside reach")), "{reach}");
+}

@@ -13,11 +13,20 @@ pub struct RapidError {
     pub message: String,
     /// Errors that no ERROR handler may take (errors in handlers, limits).
     pub fatal: bool,
+    /// The event-log code (domain × 10000 + number) of an error another part of the
+    /// controller reports (the motion system's 50050); None: the program domain's, by
+    /// `errno`.
+    pub event: Option<u32>,
 }
 
 impl RapidError {
     pub fn fatal(message: impl Into<String>) -> RapidError {
-        RapidError { errno: 0, name: "", message: message.into(), fatal: true }
+        RapidError { errno: 0, name: "", message: message.into(), fatal: true, event: None }
+    }
+
+    /// A stop the motion system reports as event `code` (50050 Position outside reach).
+    pub fn motion(code: u32, message: impl Into<String>) -> RapidError {
+        RapidError { event: Some(code), ..RapidError::fatal(message) }
     }
 }
 

@@ -359,7 +359,9 @@ mod tests {
         );
         let p = parse_path("/EIO/EIO_SIGNAL/Device/d652").expect("path");
         assert_eq!((p.key.0.as_str(), p.key.1.as_str()), ("Device", "d652"));
-        assert!(parse_path("EIO/EIO_SIGNAL/di1").is_none());
+        // Without the leading slash: read as with it.
+        let p = parse_path("EIO/EIO_SIGNAL/di1").expect("path");
+        assert_eq!((p.domain.as_str(), p.key.1.as_str()), ("EIO", "di1"));
         assert!(parse_path("/EIO/di1").is_none());
         assert!(parse_path("//EIO_SIGNAL/x").is_none());
     }

@@ -266,7 +266,7 @@ fn parse_num(ctx: &Ctx<'_>, text: &str) -> Result<f64, RapidError> {
 /// number, else ERR_ARGVALERR.
 fn ui_error(ctx: &Ctx<'_>, name: &'static str, message: String) -> RapidError {
     match ctx.errnos.get(name) {
-        Some(&errno) => RapidError { errno, name, message, fatal: false },
+        Some(&errno) => RapidError { errno, name, message, fatal: false, event: None },
         None => ctx.error(Err::ArgValue, message),
     }
 }

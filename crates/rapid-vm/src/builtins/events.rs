@@ -60,7 +60,7 @@ pub(super) fn err_raise(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
     let event = user_event(ctx, number, EventKind::Error, &args[2..])?;
     let message = format!("{name}: {}", event.title);
     ctx.events.push(event);
-    Err(RapidError { errno, name: "", message, fatal: false })
+    Err(RapidError { errno, name: "", message, fatal: false, event: None })
 }
 
 /// The booked error number held by the module-level errnum data called `name`.

@@ -173,6 +173,7 @@ impl Ctx<'_> {
             name: err.name(),
             message: message.into(),
             fatal: false,
+            event: None,
         }
     }
 

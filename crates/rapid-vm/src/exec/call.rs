@@ -359,6 +359,7 @@ impl Vm {
                 name,
                 message: format!("error {n_int} raised by the program"),
                 fatal: false,
+                event: None,
             };
         }
         self.error(Err::IllegalRaise, format!("RAISE {n}: user error numbers are 1..90"))

@@ -31,10 +31,14 @@ impl Vm {
         error: &RapidError,
         place: crate::events::EventPlace,
     ) -> u64 {
+        let (domain, number) = match error.event {
+            Some(code) => (code / 10_000, code % 10_000),
+            None => (crate::events::PROGRAM_DOMAIN, u32::try_from(error.errno).unwrap_or(0)),
+        };
         self.events.push(crate::events::Event {
             seq: 0,
-            domain: crate::events::PROGRAM_DOMAIN,
-            number: u32::try_from(error.errno).unwrap_or(0),
+            domain,
+            number,
             kind,
             time: self.time,
             title: error.to_string(),

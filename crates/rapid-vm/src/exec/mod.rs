@@ -301,7 +301,7 @@ impl Vm {
     }
 
     fn error(&self, err: Err, message: impl Into<String>) -> RapidError {
-        RapidError { errno: self.errno(err), name: err.name(), message: message.into(), fatal: false }
+        RapidError { errno: self.errno(err), name: err.name(), message: message.into(), fatal: false, event: None }
     }
 
     fn fault(&self, (err, message): (Err, String)) -> RapidError {

@@ -123,17 +123,18 @@ const MOVE_ABS_J: Layout = Layout {
 /// ERROR handler can take). Event numbers as RobotWare logs them.
 // uncertain: the event numbers are from memory of RobotWare's event log.
 pub(crate) fn motion_error(err: MotionError) -> RapidError {
-    let text = match err {
-        MotionError::OutOfReach => "50050 Position outside reach".to_string(),
-        MotionError::JointLimit { axis } => format!("50028 Joint {axis} out of range"),
-        MotionError::Configuration => "50080 Position not compatible (the programmed configuration)".to_string(),
-        MotionError::Singularity => "50026 Close to singularity".to_string(),
+    let (code, text) = match err {
+        MotionError::OutOfReach => (50050, "Position outside reach".to_string()),
+        MotionError::JointLimit { axis } => (50028, format!("Joint {axis} out of range")),
+        MotionError::Configuration => (50080, "Position not compatible (the programmed configuration)".to_string()),
+        MotionError::Singularity => (50026, "Close to singularity".to_string()),
         MotionError::DegenerateCircle => {
-            "50063 Circle uncertain (the circle points are too close or on a line)".to_string()
+            (50063, "Circle uncertain (the circle points are too close or on a line)".to_string())
         }
-        MotionError::InvalidData(what) => format!("invalid motion data: {what}"),
+        MotionError::InvalidData(what) => return RapidError::fatal(format!("invalid motion data: {what}")),
     };
-    RapidError::fatal(text)
+    // The motion system reports these, in its own domain of the event log.
+    RapidError::motion(code, format!("{code} {text}"))
 }
 
 /// The speed and zone of a move, with `\V` and `\Z`.
