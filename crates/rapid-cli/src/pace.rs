@@ -6,7 +6,9 @@
 //! not slept wait by wait: sleeping each wait's length lets the time spent computing
 //! and every sleep's overshoot add up, and the controller fell a tenth behind the wall
 //! clock over a second of 10 ms waits. When the run computes longer than the controller
-//! time it took, the clock catches up with the wall clock, as a real controller's does.
+//! time it took, the clock catches up with the wall clock, as a real controller's does;
+//! when it computes faster, it waits for the wall clock (a stretch of computing is paced
+//! as a wait of no length).
 
 use std::time::{Duration, Instant};
 

@@ -160,3 +160,37 @@ fn traps_run_while_a_task_running_alone_waits_on_a_socket() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(rest, ["got hello"]);
 }
+
+#[test]
+fn tasks_computing_beside_an_open_socket_keep_wall_clock_time() {
+    let dir = scratch_in("sockets_system", "busy");
+    let listener = TcpListener::bind("127.0.0.1:0").expect("bind");
+    let port = listener.local_addr().expect("addr").port();
+    // T_ROB1 holds a connection open; T_B computes without ever waiting. The controller's
+    // clock is the wall clock then, computing too: --max-time 1 ends the run after a
+    // second of wall-clock time (not after a million statements at the nominal 1 µs).
+    let client = "MODULE Client\n  VAR socketdev s;\n  VAR string got;\n  PROC main()\n    SocketCreate s;\n    \
+                  SocketConnect s, \"127.0.0.1\", PORT;\n    SocketReceive s \\Str:=got \\Time:=60;\n  ENDPROC\nENDMODULE\n"
+        .replace("PORT", &port.to_string());
+    let busy = "MODULE Busy\n  VAR num n := 0;\n  PROC main()\n    WHILE TRUE DO\n      n := n + 1;\n    ENDWHILE\n  \
+                ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\"", module: &client },
+        TaskDef { name: "T_B", attrs: "-Type \"NORMAL\"", module: busy },
+    ];
+    system(&dir, &tasks, "");
+    let started = Instant::now();
+    let child = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .current_dir(&dir)
+        .args(["run", "--max-time", "1", "sys"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start rapid");
+    let (_peer, _) = listener.accept().expect("accept");
+    let out = child.wait_with_output().expect("rapid ends");
+    let elapsed = started.elapsed();
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
+    assert!(text(&out.stderr).contains("stopped at 1 s of controller time (--max-time)"), "{}", text(&out.stderr));
+    assert!(elapsed >= Duration::from_millis(950), "{elapsed:?}");
+}

@@ -445,7 +445,13 @@ fn drive(controller: &mut Controller, host: &mut StdoutHost<'_>, args: &RunArgs)
         match exit {
             SystemExit::Ended => return None,
             SystemExit::Stopped => return Some(Bound::Stopped),
-            SystemExit::Budget => {}
+            SystemExit::Budget => {
+                // While the program talks to the outside world the clock is the wall
+                // clock, computing too: a peer's data and --max-time come in its time.
+                let paced = args.realtime || controller.talks_to_outside_world();
+                let to = pacer.wait(paced, controller.time, controller.time, limit);
+                controller.advance(to - controller.time);
+            }
             SystemExit::Wait(seconds) => {
                 // While a task talks to the outside world (a socket), the clock runs in
                 // wall-clock time; otherwise it jumps.
