@@ -219,7 +219,7 @@ impl Checker<'_> {
         let rank = if param.rank == ANY_RANK { 0 } else { (param.rank as usize).min(3) };
         let expect = Expect { ty: param.ty, dims: &UNKNOWN_DIMS[..rank] };
         if param.mode != ParamMode::In {
-            self.check_reference(arena, value, param);
+            self.check_reference(arena, value, param, builtin);
         }
         let got = self.expr(arena, value, Some(expect));
         if got.ty == types::ERROR {
@@ -258,7 +258,12 @@ impl Checker<'_> {
     }
 
     /// VAR, INOUT and PERS parameters need a data object of the right kind (§1.1.5).
-    fn check_reference(&mut self, arena: &Arena, value: ExprId, param: &ParamInfo) {
+    /// An INOUT parameter of a built-in also takes part of a persistent.
+    // uncertain: the manual's rule for INOUT is "a variable (entire, element or
+    // component) or an entire persistent"; but a RobotWare 6.11 backup (ETH's COMPAS
+    // RRC) runs `Incr n_WritePtr{nCh}` on a persistent array's element, so built-ins
+    // take one. User routines keep the manual's rule.
+    fn check_reference(&mut self, arena: &Arena, value: ExprId, param: &ParamInfo, builtin: bool) {
         let span = arena.expr(value).span;
         let name = &param.display;
         let want = match param.mode {
@@ -282,7 +287,7 @@ impl Checker<'_> {
         let ok = match param.mode {
             ParamMode::Var => is_var,
             ParamMode::Pers => is_pers && entire,
-            _ => is_var || (is_pers && entire),
+            _ => is_var || (is_pers && (entire || builtin)),
         };
         if !ok {
             let what = match kind {
