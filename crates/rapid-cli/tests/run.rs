@@ -89,3 +89,21 @@ fn save_pers_writes_values_back_keeping_every_other_byte() {
     // No temporary file is left behind.
     assert_eq!(fs::read_dir(&dir).unwrap().count(), 1);
 }
+
+#[test]
+fn a_function_defined_nowhere_fails_only_when_it_is_called() {
+    let dir = temp_dir("unknown_func");
+    let module = dir.join("m.mod");
+    // The controller links late: the program loads, runs past the call it skips, and
+    // the call it makes raises ERR_REFUNKFUN, which an ERROR handler can take.
+    let text = "MODULE m\nPROC main()\n  VAR num op := 1;\n  IF op = 5 TPWrite \"opt \" \\Bool:=optional_cmd(op);\n  \
+                TPWrite \"skipped\";\n  reg1 := optional_cmd(op) + 1;\n  TPWrite \"not reached\";\nERROR\n  \
+                IF ERRNO = ERR_REFUNKFUN TPWrite \"ERR_REFUNKFUN\";\n  RETURN;\nENDPROC\nENDMODULE\n";
+    fs::write(&module, text).unwrap();
+    let out = rapid(&["check", module.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stdout));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("warning[W0203]"));
+    let out = rapid(&["run", module.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "skipped\nERR_REFUNKFUN\n");
+}

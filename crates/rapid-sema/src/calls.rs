@@ -27,7 +27,13 @@ impl Checker<'_> {
             }
             None => {
                 let note = crate::options::note_for(&name_text);
-                self.diag(Code::UndefinedFunction, span, format!("undefined function `{name_text}`{note}"));
+                // The controller links late: the call raises ERR_REFUNKFUN only when it
+                // is executed (a module calling another's function that a cell does not
+                // load still runs, as abb_motion_program_exec's documented setup does).
+                let message = format!(
+                    "no function `{name_text}` is defined in this task; calling it raises ERR_REFUNKFUN at run time{note}"
+                );
+                self.diag(Code::UndefinedFunction, span, message);
                 self.type_args_leniently(arena, args);
                 Ty::ERROR
             }

@@ -72,7 +72,7 @@ diagnostic_codes! {
     // Names and scopes.
     "E0201" Error   UndefinedData:             "a name that is not declared data in scope";
     "W0202" Warning UndefinedProcedure:        "a call to a procedure defined nowhere in the task (ERR_REFUNKPRC at run time)";
-    "E0203" Error   UndefinedFunction:         "a call to a function that is not defined";
+    "W0203" Warning UndefinedFunction:         "a call to a function defined nowhere in the task (ERR_REFUNKFUN at run time)";
     "E0204" Error   UndefinedType:             "a data type that is not defined";
     "E0205" Error   DuplicateDeclaration:      "two declarations of one name where the scope rules forbid it";
     "E0206" Error   UndefinedLabel:            "a GOTO to a label that the routine does not have";

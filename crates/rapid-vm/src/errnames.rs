@@ -24,6 +24,7 @@ errors! {
     NotPresent = "ERR_NOTPRES",
     FuncNoReturn = "ERR_FNCNORET",
     RefUnknownProc = "ERR_REFUNKPRC",
+    RefUnknownFunc = "ERR_REFUNKFUN",
     CallProc = "ERR_CALLPROC",
     IllegalRaise = "ERR_ILLRAISE",
     TooManyRetries = "ERR_EXCRTYMAX",

@@ -72,6 +72,9 @@ pub enum Instr {
     Call(u32),
     /// Pop a string naming a procedure; call it with call site `n`'s arguments.
     LateCall(u32),
+    /// A call of a function defined nowhere in the task: raise ERR_REFUNKFUN (constant
+    /// `n` names it). The controller links late, so only executing it fails.
+    UnknownFunc(u32),
     /// End a PROC or TRAP.
     Return,
     /// Pop the value a FUNC returns.

@@ -70,6 +70,14 @@ impl RoutineCompiler<'_> {
         in_expr: bool,
     ) -> Result<(), CompileError> {
         let Some(Resolved::Routine(idx)) = self.resolve(name) else {
+            if in_expr {
+                // A function defined nowhere raises ERR_REFUNKFUN when the call is
+                // executed (its arguments are not evaluated).
+                let name_text = span.text(self.text).split('(').next().unwrap_or("").trim();
+                let name_idx = self.code.constant(crate::value::Value::Str(name_text.into()));
+                self.code.emit(Instr::UnknownFunc(name_idx));
+                return Ok(());
+            }
             // Calls to undefined procedures raise ERR_REFUNKPRC when executed.
             let site = CallSite { callee: Callee::Late, args: Vec::new(), n_pushed: 0, late_args: Vec::new() };
             let name_text = span.text(self.text).split(|c: char| c == '(' || c.is_whitespace()).next().unwrap_or("");

@@ -514,6 +514,13 @@ impl Vm {
             }
             Instr::Call(site) => return self.call(&code, site, host),
             Instr::LateCall(site) => return self.late_call(&code, site),
+            Instr::UnknownFunc(name) => {
+                let name = match code.consts.get(name as usize) {
+                    Some(Value::Str(text)) => text.to_string(),
+                    _ => "?".to_owned(),
+                };
+                return Err(self.error(Err::RefUnknownFunc, format!("no function `{name}` is loaded")));
+            }
             Instr::Return => return Ok(self.return_from(None)),
             Instr::ReturnValue => {
                 let value = self.pop();

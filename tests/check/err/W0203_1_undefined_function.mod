@@ -1,6 +1,6 @@
-! expect: E0203 line 6
+! expect: W0203 line 6
 ! a call to a function that is not defined
-MODULE E0203_1
+MODULE W0203_1
   VAR num n;
   PROC main()
     n := Compute(2);

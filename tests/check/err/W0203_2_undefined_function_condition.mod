@@ -1,6 +1,6 @@
-! expect: E0203 line 5
+! expect: W0203 line 5
 ! an undefined function as IF condition (no E0310: its type is unknown)
-MODULE E0203_2
+MODULE W0203_2
   PROC main()
     IF IsReady() THEN
       TPWrite "ready";
