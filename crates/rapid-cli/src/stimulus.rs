@@ -144,12 +144,16 @@ fn seconds(text: &str) -> Result<f64, String> {
     Ok(time)
 }
 
-/// An input of the configuration and a value it can take.
+/// An input of the configuration, or an output every client may write (`-Access
+/// "All"`: a remote client such as an RWS application sets it), and a value it can take.
 fn input(io: &IoSystem, name: &str, value: &str) -> Result<(u32, f64), String> {
     let id = io.id(name).ok_or_else(|| format!("no signal `{name}` in the I/O configuration"))?;
-    let kind = io.def(id).map(|d| d.kind).ok_or_else(|| format!("no signal `{name}`"))?;
-    if !kind.is_input() {
-        return Err(format!("`{name}` is an output; a stimulus sets inputs only"));
+    let def = io.def(id).ok_or_else(|| format!("no signal `{name}`"))?;
+    let kind = def.kind;
+    if !kind.is_input() && def.access != rapid_io::Access::All {
+        return Err(format!(
+            "`{name}` is an output; a stimulus sets inputs, and outputs every client may write (-Access \"All\")"
+        ));
     }
     let value: f64 = value.parse().map_err(|_| format!("`{value}` is not a number"))?;
     if kind == SignalKind::DI && value != 0.0 && value != 1.0 {
@@ -163,8 +167,18 @@ mod tests {
     use rapid_io::{IoSystem, SignalDef, SignalKind};
 
     fn io() -> IoSystem {
-        let defs = vec![SignalDef::new("di1", SignalKind::DI), SignalDef::new("do1", SignalKind::DO)];
+        let open = SignalDef { access: rapid_io::Access::All, ..SignalDef::new("doOpen", SignalKind::AO) };
+        let defs = vec![SignalDef::new("di1", SignalKind::DI), SignalDef::new("do1", SignalKind::DO), open];
         IoSystem::new(defs, Vec::new()).expect("a valid configuration")
+    }
+
+    #[test]
+    fn an_output_every_client_may_write_is_set_as_a_remote_client_sets_it() {
+        // doOpen (-Access "All") as an RWS client writes it; do1 (default access) not.
+        assert_eq!(
+            super::parse("s.txt", "at 1 set doOpen 2.5\n", &io()),
+            Ok((vec![(1.0, 2, 2.5)], Vec::new(), Vec::new()))
+        );
     }
 
     #[test]
@@ -190,7 +204,7 @@ mod tests {
         let cases = [
             ("at x set di1 1", "s.txt:1: `x` is not a time in seconds"),
             ("at 1 set nosuch 1", "s.txt:1: no signal `nosuch` in the I/O configuration"),
-            ("at 1 set do1 1", "s.txt:1: `do1` is an output; a stimulus sets inputs only"),
+            ("at 1 set do1 1", "s.txt:1: `do1` is an output; a stimulus sets inputs, and outputs every client may write (-Access \"All\")"),
             ("at 1 set di1 2", "s.txt:1: digital input `di1` takes 0 or 1, not 2"),
             ("answer 7 at 1", "s.txt:1: expected `at SECONDS answer [DIALOG] TEXT`, found `answer 7 at 1`"),
             (
@@ -199,7 +213,7 @@ mod tests {
                  `when …`, found `at 1 jump di1 1`",
             ),
             ("at 1 connect nodevice", "s.txt:1: no I/O device `nodevice` is configured"),
-            ("when do1 = 1 set do1 1", "s.txt:1: `do1` is an output; a stimulus sets inputs only"),
+            ("when do1 = 1 set do1 1", "s.txt:1: `do1` is an output; a stimulus sets inputs, and outputs every client may write (-Access \"All\")"),
             ("when di1 = 1 after -1 set di1 0", "s.txt:1: the time -1 is not 0 or later"),
         ];
         for (text, message) in cases {

@@ -367,3 +367,17 @@ fn analog_interrupts_follow_their_conditions_and_delta() {
          between 5.5\nhigh 7\nlow 2\nspeed 30\n"
     );
 }
+
+#[test]
+fn a_stimulus_writes_an_output_every_client_may_write() {
+    let dir = scratch("client_output");
+    // aoPreempt has -Access "All": a remote client (an RWS application) may write it, and
+    // so may the stimulus, at 0.5 s. The program waits for it (WaitAO) and reads it.
+    let eio = "EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n      -Name \"aoPreempt\" -SignalType \"AO\" -Access \"All\" \
+               -MaxLog 100 -MaxPhys 100 -MaxBitVal 65535\n";
+    let body = "    VAR clock c;\n    ClkStart c;\n    WaitAO aoPreempt, \\GT, 2;\n    \
+                TPWrite \"preempt \" \\Num:=AOutput(aoPreempt);\n    TPWrite \"at \" \\Num:=ClkRead(c);\n";
+    let out = run_cell(&dir, eio, &program("", body, ""), Some("at 0.5 set aoPreempt 3\n"));
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "preempt 3\nat 0.5\n");
+}

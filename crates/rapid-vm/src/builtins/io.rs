@@ -130,10 +130,16 @@ impl IoState {
                             system.set_device_connected((id & !rapid_io::DEVICE_EVENT) as usize, value != 0.0, at);
                             continue;
                         }
-                        // A stimulus names inputs only (checked when it is read); an input
-                        // a cross-connection drives ignores it, as its physical channel
-                        // is off.
-                        let _ = system.set_input(id, value, at);
+                        // A stimulus sets inputs, and outputs any client may write
+                        // (`-Access "All"`, as an RWS client does; checked when it is
+                        // read); an input a cross-connection drives ignores it, as its
+                        // physical channel is off.
+                        let is_input = system.def(id).is_some_and(|d| d.kind.is_input());
+                        if is_input {
+                            let _ = system.set_input(id, value, at);
+                        } else {
+                            let _ = system.set_by_system(id, value, at);
+                        }
                     }
                 }
                 (_, Some(at)) => system.advance(at),
