@@ -176,7 +176,9 @@ fn a_backup_runs_unattended_on_a_stimulus_and_logs_its_signals() {
 #[test]
 fn a_stimulus_needs_inputs_of_the_configuration() {
     let dir = scratch("bad_stimulus");
-    write(&dir, &[("stimulus.txt", "at 1 set doGripperClose 1\n")]);
+    // doCycleDone has the default access: only RAPID writes it (doGripperClose, -Access
+    // "All", a remote client may write, and so may a stimulus).
+    write(&dir, &[("stimulus.txt", "at 1 set doCycleDone 1\n")]);
     let out =
         rapid_in(&dir, &["run", "--stimulus", "stimulus.txt", &backups().join("palletizer").display().to_string()]);
     assert_eq!(out.status.code(), Some(1));
