@@ -184,7 +184,7 @@ fn a_stimulus_needs_inputs_of_the_configuration() {
     assert_eq!(out.status.code(), Some(1));
     let stderr = text(&out.stderr);
     assert!(
-        stderr.contains("stimulus.txt:1: `doGripperClose` is an output; a stimulus sets inputs, and outputs"),
+        stderr.contains("stimulus.txt:1: `doCycleDone` is an output; a stimulus sets inputs, and outputs"),
         "{stderr}"
     );
 }
