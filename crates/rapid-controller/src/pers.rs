@@ -1,8 +1,10 @@
 //! The global persistents of a system (§1.20): one object per name for every task
 //! that declares it. Each task keeps its own copy in its globals; the store holds the
 //! current value, and the controller copies changes in before a task runs and out
-//! after (tasks run one at a time, so no task ever sees a stale value).
+//! after (tasks run one at a time, so no task ever sees a stale value). What a task
+//! changed is looked for only among the globals its VM records as written.
 
+use rapid_vm::exec::storage::GlobalWrites;
 use rapid_vm::value::Value;
 use rapid_vm::{Loaded, SharedPers};
 use rustc_hash::FxHashMap;
@@ -30,6 +32,8 @@ struct Entry {
 pub(crate) struct TaskPers {
     /// (global in the task, entry in the store, the value the task had when last synced).
     slots: Vec<(u32, usize, Value)>,
+    /// The slot of each of those globals.
+    slot_of: FxHashMap<u32, usize>,
     /// The store generation the task has seen.
     seen: u64,
 }
@@ -93,6 +97,7 @@ impl PersStore {
                     self.entries.len() - 1
                 }
             };
+            view.slot_of.insert(pers.global, view.slots.len());
             view.slots.push((pers.global, idx, value));
         }
         Ok(view)
@@ -107,30 +112,49 @@ impl PersStore {
             let entry = &self.entries[*idx];
             if entry.changed > view.seen && entry.owner != task {
                 let value = renumber(&entry.value, &maps[entry.owner][task]);
-                vm.set_global(*global, value.clone());
+                vm.sync_global(*global, value.clone());
                 *last = value;
             }
         }
         view.seen = self.generation;
     }
 
-    /// After task `task` ran: what it changed, into the store.
-    pub(crate) fn copy_out(&mut self, task: usize, view: &mut TaskPers, vm: &rapid_vm::Vm) {
-        for (global, idx, last) in &mut view.slots {
-            let Some(now) = vm.global(*global) else { continue };
-            if same(now, last) {
-                continue;
+    /// After task `task` ran: what it changed, into the store. Only the globals the
+    /// task wrote since the last copy out can have changed (copy_in's writes are not
+    /// recorded); a value written but left as it was changes nothing.
+    pub(crate) fn copy_out(&mut self, task: usize, view: &mut TaskPers, vm: &mut rapid_vm::Vm) {
+        match vm.global_writes() {
+            GlobalWrites::All => {
+                for slot in &mut view.slots {
+                    self.copy_out_slot(task, slot, vm);
+                }
             }
-            *last = now.clone();
-            self.generation += 1;
-            let entry = &mut self.entries[*idx];
-            entry.value = now.clone();
-            entry.owner = task;
-            entry.changed = self.generation;
+            GlobalWrites::Only(written) => {
+                for global in written {
+                    if let Some(&at) = view.slot_of.get(global) {
+                        self.copy_out_slot(task, &mut view.slots[at], vm);
+                    }
+                }
+            }
         }
+        vm.clear_global_writes();
         // copy_in ran just before the task did, and no other task ran since: the
         // task holds every current value.
         view.seen = self.generation;
+    }
+
+    /// One shared persistent of task `task` into the store, if it changed.
+    fn copy_out_slot(&mut self, task: usize, (global, idx, last): &mut (u32, usize, Value), vm: &rapid_vm::Vm) {
+        let Some(now) = vm.global(*global) else { return };
+        if same(now, last) {
+            return;
+        }
+        *last = now.clone();
+        self.generation += 1;
+        let entry = &mut self.entries[*idx];
+        entry.value = now.clone();
+        entry.owner = task;
+        entry.changed = self.generation;
     }
 }
 

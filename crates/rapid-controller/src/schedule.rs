@@ -232,7 +232,7 @@ impl Controller {
         task.loaded.vm.exchange_shared(&mut self.shared);
         let outcome = f(&mut task.loaded.vm, host);
         task.loaded.vm.exchange_shared(&mut self.shared);
-        self.pers.copy_out(idx, &mut task.pers, &task.loaded.vm);
+        self.pers.copy_out(idx, &mut task.pers, &mut task.loaded.vm);
         self.publish_events(idx);
         self.time = self.time.max(self.tasks[idx].loaded.vm.time);
         outcome
@@ -321,7 +321,7 @@ impl Controller {
             return Reply::WrongType;
         }
         target.loaded.vm.set_global(global, value);
-        self.pers.copy_out(task, &mut target.pers, &target.loaded.vm);
+        self.pers.copy_out(task, &mut target.pers, &mut target.loaded.vm);
         Reply::Done
     }
 
@@ -417,7 +417,7 @@ impl Controller {
         task.loaded.vm.exchange_shared(&mut self.shared);
         let exit = task.loaded.vm.run_statement(host);
         task.loaded.vm.exchange_shared(&mut self.shared);
-        self.pers.copy_out(idx, &mut task.pers, &task.loaded.vm);
+        self.pers.copy_out(idx, &mut task.pers, &mut task.loaded.vm);
         self.publish_events(idx);
         self.serve_request(host);
         self.steps += 1;

@@ -68,7 +68,7 @@ fn booked_number(ctx: &Ctx<'_>, name: &str) -> Result<i32, RapidError> {
     let value = ctx
         .data_by_name
         .get(&name.to_lowercase())
-        .and_then(|named| ctx.storage.globals.get(named.global as usize))
+        .and_then(|named| ctx.storage.globals.get(named.global))
         .and_then(Value::as_f64);
     let Some(value) = value else {
         return Err(ctx.error(Err::ArgValue, format!("ErrRaise: no errnum data named `{name}`")));

@@ -73,7 +73,7 @@ pub(super) fn get_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         }
         None => {
             let named = lookup(ctx, args)?;
-            ctx.storage.globals[named.global as usize].clone()
+            ctx.storage.globals.get(named.global).cloned().ok_or_else(|| RapidError::fatal("a data slot is missing"))?
         }
     };
     let target = &args[4];
@@ -96,10 +96,13 @@ pub(super) fn set_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         return Err(ctx.error(Err::SymAccess, format!("`{name}` is a constant")));
     }
     let value = ctx.value(&args[4])?;
-    if !same_type(&ctx.storage.globals[named.global as usize], &value) {
+    let current = ctx.storage.globals.get(named.global).ok_or_else(|| RapidError::fatal("a data slot is missing"))?;
+    if !same_type(current, &value) {
         return Err(type_error(ctx, &name));
     }
-    ctx.storage.globals[named.global as usize] = value;
+    if let Some(slot) = ctx.storage.globals.get_mut(named.global) {
+        *slot = value;
+    }
     Ok(None)
 }
 

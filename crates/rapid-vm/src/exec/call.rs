@@ -445,7 +445,9 @@ impl Vm {
                     });
                     let handler_pc = handler.pc;
                     if let Some(global) = self.errno_global {
-                        self.storage.globals[global as usize] = Value::Num(error.errno as f32);
+                        if let Some(slot) = self.storage.globals.get_mut(global) {
+                            *slot = Value::Num(error.errno as f32);
+                        }
                     }
                     let place = Self::place_of(frame);
                     let warning = Some(self.log_program_event(EventKind::Warning, &error, place));
@@ -477,7 +479,7 @@ impl Vm {
             || handler.numbers.iter().any(|&n| {
                 let number = if n < 0 {
                     // A data object's number, read now (booked errnum variables).
-                    self.storage.globals.get((-n - 1) as usize).and_then(Value::as_f64).map_or(i32::MIN, |v| v as i32)
+                    self.storage.globals.get((-n - 1) as u32).and_then(Value::as_f64).map_or(i32::MIN, |v| v as i32)
                 } else {
                     n
                 };

@@ -79,7 +79,7 @@ impl Vm {
                             Value::Num(n) => push_num(stack, n),
                             _ => break Fast::Step,
                         },
-                        Root::Global(idx) => match self.storage.globals.get(idx as usize) {
+                        Root::Global(idx) => match self.storage.globals.get(idx) {
                             Some(&Value::Num(n)) => push_num(stack, n),
                             _ => break Fast::Step,
                         },
@@ -94,7 +94,7 @@ impl Vm {
                             // A VAR parameter referring to a whole module-level num.
                             (true, Root::Global(idx)) => {
                                 let (Some(&Value::Num(n)), Some(Value::Num(x))) =
-                                    (stack.last(), self.storage.globals.get_mut(idx as usize))
+                                    (stack.last(), self.storage.globals.get_mut(idx))
                                 else {
                                     break Fast::Step;
                                 };
@@ -132,7 +132,7 @@ impl Vm {
                         *top = value;
                     }
                 }
-                Instr::LoadGlobal(idx) => match self.storage.globals.get(idx as usize) {
+                Instr::LoadGlobal(idx) => match self.storage.globals.get(idx) {
                     Some(Value::Num(n)) => push_num(stack, *n),
                     Some(Value::Str(s)) => stack.push(Value::Str(s.clone())),
                     Some(Value::Record(r)) => stack.push(Value::Record(r.clone())),
@@ -246,7 +246,7 @@ impl Vm {
                     }
                 }
                 Instr::BinOp { op, lhs, rhs } => {
-                    let globals = &self.storage.globals;
+                    let globals = self.storage.globals.values();
                     let num_at = |operand, stack: &Vec<Value>, depth| {
                         num_operand(operand, stack, base, globals, &code.consts, depth)
                     };
@@ -294,7 +294,7 @@ impl Vm {
                 Instr::LoadElem { global: true, slot, n: 1 } => {
                     let len = stack.len();
                     let Some(&Value::Num(index)) = stack.last() else { break Fast::Step };
-                    let Some(Value::Array(array)) = self.storage.globals.get(slot as usize) else { break Fast::Step };
+                    let Some(Value::Array(array)) = self.storage.globals.get(slot) else { break Fast::Step };
                     let Some(&Value::Num(elem)) = element_1d(array, index) else { break Fast::Step };
                     set_num(&mut stack[len - 1], elem);
                 }
@@ -316,7 +316,7 @@ impl Vm {
                         break Fast::Step;
                     };
                     let (index, value) = (*index, *value);
-                    let Some(Value::Array(array)) = self.storage.globals.get_mut(slot as usize) else {
+                    let Some(Value::Array(array)) = self.storage.globals.get_mut(slot) else {
                         break Fast::Step;
                     };
                     let Some(Value::Num(elem)) = element_1d_mut(array, index) else { break Fast::Step };
@@ -389,7 +389,7 @@ impl Vm {
                 Instr::KernelStore { kernel, skip } => {
                     let kernel = &code.kernels[kernel as usize];
                     let globals = &mut self.storage.globals;
-                    let stored = super::kernel::eval(kernel, stack, base, globals)
+                    let stored = super::kernel::eval(kernel, stack, base, globals.values())
                         .and_then(|results| super::kernel::store(kernel.target?, &results, stack, base, globals));
                     if stored.is_some() {
                         pc = skip;
@@ -399,7 +399,7 @@ impl Vm {
                 }
                 Instr::KernelReturn { kernel } => {
                     let kernel = &code.kernels[kernel as usize];
-                    if let Some(value) = super::kernel::value(kernel, stack, base, &self.storage.globals) {
+                    if let Some(value) = super::kernel::value(kernel, stack, base, self.storage.globals.values()) {
                         if self.return_num(value) {
                             resume_top_frame!();
                         }
@@ -407,7 +407,7 @@ impl Vm {
                 }
                 Instr::KernelBranch { kernel, on_false, skip } => {
                     let kernel = &code.kernels[kernel as usize];
-                    if let Some(truth) = super::kernel::condition(kernel, stack, base, &self.storage.globals) {
+                    if let Some(truth) = super::kernel::condition(kernel, stack, base, self.storage.globals.values()) {
                         pc = if truth { skip } else { on_false };
                         continue;
                     }

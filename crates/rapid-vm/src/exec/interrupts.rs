@@ -211,7 +211,9 @@ impl Vm {
         self.resources.interrupts.started(number);
         let Some(code) = trap.and_then(|t| self.routines.get(t as usize).cloned().flatten()) else { return };
         if let Some(global) = self.intno_global {
-            self.storage.globals[global as usize] = Value::Num(number as f32);
+            if let Some(slot) = self.storage.globals.get_mut(global) {
+                *slot = Value::Num(number as f32);
+            }
         }
         let resume = top.pc;
         self.push_frame(code, Vec::new());

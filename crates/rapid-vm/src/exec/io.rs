@@ -16,7 +16,7 @@ impl Vm {
     /// handed in, for every task.)
     pub fn connect_configured_signals(&mut self) {
         for (global, value) in self.resources.io.configured_values() {
-            if let Some(slot) = self.storage.globals.get_mut(global as usize) {
+            if let Some(slot) = self.storage.globals.get_mut(global) {
                 *slot = value;
             }
         }

@@ -9,6 +9,7 @@
 //! a kernel moves bare f32s.
 
 use super::num::{element_1d, element_1d_mut, fast_num_op, FastResult};
+use super::storage::Globals;
 use crate::ir::{Kernel, KernelOp, KernelOperand, KernelTarget, KERNEL_DEPTH};
 use crate::value::{Root, Value};
 
@@ -118,14 +119,15 @@ pub(super) fn eval(kernel: &Kernel, stack: &[Value], base: usize, globals: &[Val
 }
 
 /// Writes a store kernel's result to its target; `None` (nothing written) when the
-/// target is not a plain num slot or the element index is out of range.
+/// target is not a plain num slot or the element index is out of range. A global
+/// target is recorded as written ([`Globals::get_mut`]).
 #[inline]
 pub(super) fn store(
     target: KernelTarget,
     results: &Results,
     stack: &mut [Value],
     base: usize,
-    globals: &mut [Value],
+    globals: &mut Globals,
 ) -> Option<()> {
     let value = results.top;
     let slot = match target {
@@ -135,14 +137,14 @@ pub(super) fn store(
                 Value::Num(_) => stack.get_mut(at)?,
                 Value::Ref(place) if place.path.is_empty() => match place.root {
                     Root::Stack(to) => stack.get_mut(to as usize)?,
-                    Root::Global(idx) => globals.get_mut(idx as usize)?,
+                    Root::Global(idx) => globals.get_mut(idx)?,
                 },
                 _ => return None,
             }
         }
-        KernelTarget::Global(idx) => globals.get_mut(idx as usize)?,
+        KernelTarget::Global(idx) => globals.get_mut(idx)?,
         KernelTarget::Elem { global, slot } => {
-            let array = if global { globals.get_mut(slot as usize)? } else { stack.get_mut(base + slot as usize)? };
+            let array = if global { globals.get_mut(slot)? } else { stack.get_mut(base + slot as usize)? };
             let Value::Array(array) = array else { return None };
             element_1d_mut(array, results.below_top?)?
         }

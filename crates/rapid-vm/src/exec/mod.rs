@@ -164,7 +164,7 @@ impl Vm {
         Vm {
             routines: routines.into_iter().map(|c| c.map(Rc::new)).collect(),
             procs_by_name,
-            storage: Storage { globals, stack: Vec::new() },
+            storage: Storage { globals: storage::Globals::new(globals), stack: Vec::new() },
             frames: Frames::default(),
             types,
             errnos,
@@ -263,21 +263,23 @@ impl Vm {
         }
         self.resources.close_all();
         if let Some((code, defaults)) = self.init.clone() {
-            let kept: Vec<(usize, Value)> = self
+            let kept: Vec<(u32, Value)> = self
                 .pers_globals
                 .iter()
                 .enumerate()
                 .filter(|(_, &pers)| pers)
-                .filter_map(|(idx, _)| self.storage.globals.get(idx).map(|v| (idx, v.clone())))
+                .filter_map(|(idx, _)| self.storage.globals.get(idx as u32).map(|v| (idx as u32, v.clone())))
                 .collect();
-            self.storage.globals = defaults;
+            self.storage.globals.replace(defaults);
             self.start(code);
             if let Exit::Unhandled(u) = self.run(host, u64::MAX) {
                 return Err(u);
             }
             self.modules_at_pp_to_main(host)?;
             for (idx, value) in kept {
-                self.storage.globals[idx] = value;
+                if let Some(slot) = self.storage.globals.get_mut(idx) {
+                    *slot = value;
+                }
             }
             self.connect_configured_signals();
         }
@@ -405,7 +407,7 @@ impl Vm {
                 self.store_local(base + slot, value)?;
             }
             Instr::LoadGlobal(idx) => {
-                let value = self.storage.globals.get(idx as usize).cloned().unwrap_or(Value::Absent);
+                let value = self.storage.globals.get(idx).cloned().unwrap_or(Value::Absent);
                 self.push(value);
             }
             Instr::StoreGlobal(idx) => {
@@ -676,7 +678,7 @@ impl Vm {
 
     fn element(&self, global: bool, stack_index: u32, slot: u32, indices: &[f64]) -> Result<&Value, RapidError> {
         let array = if global {
-            self.storage.globals.get(slot as usize)
+            self.storage.globals.get(slot)
         } else {
             match &self.storage.stack[stack_index as usize] {
                 Value::Ref(place) => Some(self.storage.get(place).map_err(|f| self.fault(f))?),

@@ -439,7 +439,7 @@ impl Vm {
             self.routines[idx as usize] = Some(Rc::new(code));
         }
         let n = prog.datas.len();
-        grow(&mut self.storage.globals, n);
+        self.storage.globals.grow(n);
         if let Some((_, init_defaults)) = self.init.as_mut() {
             grow(init_defaults, n);
             for (idx, value) in defaults {
@@ -447,7 +447,9 @@ impl Vm {
             }
         }
         for (idx, value) in defaults {
-            self.storage.globals[*idx as usize] = value.clone();
+            if let Some(slot) = self.storage.globals.get_mut(*idx) {
+                *slot = value.clone();
+            }
         }
         if self.pers_globals.len() < n {
             self.pers_globals.resize(n, false);
@@ -488,8 +490,7 @@ impl Vm {
 
     fn snapshot_pers(&mut self, unit: usize) {
         let Some(u) = self.modules.units.get(unit) else { return };
-        let pers =
-            u.pers.iter().filter_map(|&g| self.storage.globals.get(g as usize).map(|v| (g, v.clone()))).collect();
+        let pers = u.pers.iter().filter_map(|&g| self.storage.globals.get(g).map(|v| (g, v.clone()))).collect();
         self.modules.units[unit].saved_pers = pers;
     }
 
@@ -541,7 +542,7 @@ impl Vm {
     }
 
     fn unit_changed(&self, unit: usize) -> bool {
-        self.modules.units[unit].saved_pers.iter().any(|(g, v)| self.storage.globals.get(*g as usize) != Some(v))
+        self.modules.units[unit].saved_pers.iter().any(|(g, v)| self.storage.globals.get(*g) != Some(v))
     }
 
     /// Takes a loaded module out of the task: its routines, names and file entry.
@@ -680,7 +681,7 @@ impl Vm {
             .filter(|s| s.file == file && s.insert_at >= start && s.insert_at <= end)
             .filter_map(|s| {
                 let slot = pers_slot(&checked.prog, s.global).unwrap_or(s.global);
-                self.storage.globals.get(slot as usize).map(|v| (s, v))
+                self.storage.globals.get(slot).map(|v| (s, v))
             })
             .collect();
         let new = crate::persist::rewrite(text, &values).unwrap_or_else(|| text.clone());

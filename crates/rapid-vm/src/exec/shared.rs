@@ -7,7 +7,7 @@ use crate::value::Value;
 impl Vm {
     /// The value of global `idx`.
     pub fn global(&self, idx: u32) -> Option<&Value> {
-        self.storage.globals.get(idx as usize)
+        self.storage.globals.get(idx)
     }
 
     /// The module-level data of a name (GetDataVal from another task): its global and
@@ -16,11 +16,28 @@ impl Vm {
         self.data_by_name.get(&name.to_lowercase()).map(|d| (d.global, d.constant))
     }
 
-    /// Gives global `idx` a value (the controller, sharing persistents between tasks).
+    /// Gives global `idx` a value (SetDataVal from another task): recorded as written.
     pub fn set_global(&mut self, idx: u32, value: Value) {
-        if let Some(slot) = self.storage.globals.get_mut(idx as usize) {
+        if let Some(slot) = self.storage.globals.get_mut(idx) {
             *slot = value;
         }
+    }
+
+    /// Gives global `idx` the value another task gave a persistent they share: not
+    /// recorded as written, being no change of this task's.
+    pub fn sync_global(&mut self, idx: u32, value: Value) {
+        self.storage.globals.sync(idx, value);
+    }
+
+    /// The globals written since [`Vm::clear_global_writes`] (a controller finds there
+    /// what a task changed of the persistents it shares).
+    pub fn global_writes(&self) -> crate::exec::storage::GlobalWrites<'_> {
+        self.storage.globals.writes()
+    }
+
+    /// Forgets the globals written so far.
+    pub fn clear_global_writes(&mut self) {
+        self.storage.globals.clear_writes();
     }
 
     /// Swaps the controller's shared state (I/O system, sync points) with the task's:

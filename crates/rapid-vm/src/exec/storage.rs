@@ -7,8 +7,117 @@ use crate::value::{PathStep, Place, Root, Value};
 /// Globals (predefined and module data) and the frames' slots and operands.
 #[derive(Debug, Default)]
 pub struct Storage {
-    pub globals: Vec<Value>,
+    pub globals: Globals,
     pub stack: Vec<Value>,
+}
+
+/// The globals, and which of them were written since the record was last cleared: a
+/// controller compares only those with what the other tasks share (comparing every
+/// shared persistent after each statement cost most of a multi-task run's time).
+/// Every write goes through [`Globals::get_mut`] or replaces the whole vector, so none
+/// is missed; a value written but unchanged is recorded too (the reader compares).
+#[derive(Debug, Default)]
+pub struct Globals {
+    values: Vec<Value>,
+    /// Per global, whether it is in `list` (as long as `values`).
+    marked: Vec<bool>,
+    /// The globals written, each once.
+    list: Vec<u32>,
+    /// The whole vector was replaced or grown: every global counts as written.
+    all: bool,
+}
+
+/// Which globals were written since the record was last cleared.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GlobalWrites<'a> {
+    /// These (each once, in no particular order).
+    Only(&'a [u32]),
+    /// Any of them.
+    All,
+}
+
+impl Globals {
+    /// Globals with their initial values: all of them count as written.
+    pub fn new(values: Vec<Value>) -> Globals {
+        let marked = vec![false; values.len()];
+        Globals { values, marked, list: Vec::new(), all: true }
+    }
+
+    /// The value of global `idx`.
+    #[inline]
+    pub fn get(&self, idx: u32) -> Option<&Value> {
+        self.values.get(idx as usize)
+    }
+
+    /// Every global, to read.
+    #[inline]
+    pub fn values(&self) -> &[Value] {
+        &self.values
+    }
+
+    /// Global `idx` to write: recorded as written.
+    #[inline]
+    pub fn get_mut(&mut self, idx: u32) -> Option<&mut Value> {
+        let value = self.values.get_mut(idx as usize)?;
+        if !self.all {
+            if let Some(marked) = self.marked.get_mut(idx as usize) {
+                if !*marked {
+                    *marked = true;
+                    self.list.push(idx);
+                }
+            }
+        }
+        Some(value)
+    }
+
+    /// Gives global `idx` a value without recording the write: the controller
+    /// bringing in what another task changed, which is no change of this task's.
+    pub fn sync(&mut self, idx: u32, value: Value) {
+        if let Some(slot) = self.values.get_mut(idx as usize) {
+            *slot = value;
+        }
+    }
+
+    /// Replaces every global (PP to main's initial values): all count as written.
+    /// The old values are returned.
+    pub fn replace(&mut self, values: Vec<Value>) -> Vec<Value> {
+        self.mark_all();
+        self.marked = vec![false; values.len()];
+        std::mem::replace(&mut self.values, values)
+    }
+
+    /// Makes room for `n` globals (a module loaded), new ones `Absent`: all count as
+    /// written.
+    pub fn grow(&mut self, n: usize) {
+        if self.values.len() < n {
+            self.values.resize(n, Value::Absent);
+            self.marked.resize(n, false);
+        }
+        self.mark_all();
+    }
+
+    fn mark_all(&mut self) {
+        for &idx in &self.list {
+            self.marked[idx as usize] = false;
+        }
+        self.list.clear();
+        self.all = true;
+    }
+
+    /// The globals written since [`Globals::clear_writes`].
+    pub fn writes(&self) -> GlobalWrites<'_> {
+        if self.all {
+            GlobalWrites::All
+        } else {
+            GlobalWrites::Only(&self.list)
+        }
+    }
+
+    /// Starts a new record: nothing written.
+    pub fn clear_writes(&mut self) {
+        self.mark_all();
+        self.all = false;
+    }
 }
 
 /// A storage fault: the RAPID error and a message.
@@ -17,14 +126,14 @@ pub type Fault = (Err, String);
 impl Storage {
     fn root(&self, root: Root) -> Option<&Value> {
         match root {
-            Root::Global(i) => self.globals.get(i as usize),
+            Root::Global(i) => self.globals.get(i),
             Root::Stack(i) => self.stack.get(i as usize),
         }
     }
 
     fn root_mut(&mut self, root: Root) -> Option<&mut Value> {
         match root {
-            Root::Global(i) => self.globals.get_mut(i as usize),
+            Root::Global(i) => self.globals.get_mut(i),
             Root::Stack(i) => self.stack.get_mut(i as usize),
         }
     }

@@ -43,7 +43,7 @@ fn active(ctx: &Ctx<'_>, kind: usize) -> Option<Active> {
 fn kind_of(ctx: &Ctx<'_>, value: &Value) -> Option<usize> {
     let Value::Record(record) = value else { return None };
     (0..DEFAULT_NAMES.len()).find(|&kind| {
-        let default = ctx.resources.motion.links.sysdata[kind].and_then(|g| ctx.storage.globals.get(g as usize));
+        let default = ctx.resources.motion.links.sysdata[kind].and_then(|g| ctx.storage.globals.get(g));
         matches!(default, Some(Value::Record(d)) if d.ty == record.ty)
     })
 }
@@ -178,7 +178,7 @@ pub(crate) fn set_sys_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     }
     let name = ctx.string(&args[1])?;
     let global = named_global(ctx, &name, kind)?;
-    let value = ctx.storage.globals.get(global as usize).cloned().unwrap_or(Value::Absent);
+    let value = ctx.storage.globals.get(global).cloned().unwrap_or(Value::Absent);
     if kind_of(ctx, &value) != Some(kind) {
         return Err(ctx.error(Err::SymbolType, format!("`{name}` is not a {}", type_name(kind))));
     }

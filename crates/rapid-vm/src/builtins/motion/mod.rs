@@ -356,7 +356,7 @@ fn mirror(ctx: &mut Ctx<'_>) {
             (&[12], Value::Bool(s.world_acc_max.is_some())),
             (&[13], num(s.world_acc_max.unwrap_or(-1.0))),
         ];
-        write_leaves(ctx.storage.globals.get_mut(global as usize), &leaves);
+        write_leaves(ctx.storage.globals.get_mut(global), &leaves);
     }
     if let Some(global) = state.links.progdisp {
         let t = s.pdisp.translation.vector;
@@ -377,7 +377,7 @@ fn mirror(ctx: &mut Ctx<'_>) {
             (&[1, 4], num(e[4])),
             (&[1, 5], num(e[5])),
         ];
-        write_leaves(ctx.storage.globals.get_mut(global as usize), &leaves);
+        write_leaves(ctx.storage.globals.get_mut(global), &leaves);
     }
 }
 

@@ -169,7 +169,7 @@ fn tool0_like(ctx: &Ctx<'_>) -> Result<Value, RapidError> {
     let name = "tool0";
     ctx.data_by_name
         .get(name)
-        .and_then(|d| ctx.storage.globals.get(d.global as usize).cloned())
+        .and_then(|d| ctx.storage.globals.get(d.global).cloned())
         .ok_or_else(|| RapidError::fatal("the program has no tool0"))
 }
 

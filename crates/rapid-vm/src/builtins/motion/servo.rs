@@ -70,7 +70,7 @@ fn mirror(ctx: &mut Ctx<'_>) {
     let leaves =
         [(&[5][..], Value::Bool(s.motion_sup)), (&[6], super::num(s.sup_level)), (&[14], Value::Bool(s.event_buffer))];
     if let Some(global) = ctx.resources.motion.links.motset {
-        super::write_leaves(ctx.storage.globals.get_mut(global as usize), &leaves);
+        super::write_leaves(ctx.storage.globals.get_mut(global), &leaves);
     }
 }
 

@@ -200,7 +200,7 @@ fn set_all_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         if datum.rank > 0 {
             continue;
         }
-        let slot = datum.global as usize;
+        let slot = datum.global;
         let current = ctx.storage.globals.get(slot).ok_or_else(|| RapidError::fatal("a data slot is missing"))?;
         if !super::symbols::same_type(current, &value) {
             let message = format!("`{}` is of type {ty}, the Value is not", datum.name);
@@ -209,7 +209,9 @@ fn set_all_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         targets.push(slot);
     }
     for slot in targets {
-        ctx.storage.globals[slot] = value.clone();
+        if let Some(target) = ctx.storage.globals.get_mut(slot) {
+            *target = value.clone();
+        }
     }
     Ok(None)
 }
