@@ -410,3 +410,18 @@ fn long_component_chains_are_bounded_too() {
     let src = format!("MODULE m\nPROC p()\nx := a{};\nENDPROC\nENDMODULE", ".b{1}".repeat(5_000));
     assert_eq!(errors(&src), vec![(K::NestingTooDeep, 3)]);
 }
+
+#[test]
+fn a_component_of_a_function_result_is_refused_plainly_and_the_statement_goes_on() {
+    // §1.3: components and elements are selected of data, not of a function call.
+    let src = "MODULE m\nPROC p()\n  x := f(1).a{2}.b + 1;\n  y := 2;\nENDPROC\nENDMODULE\n";
+    let mut interner = Interner::default();
+    let parse = parse(src, &mut interner);
+    let messages: Vec<&str> = parse.errors.iter().map(|e| e.message.as_str()).collect();
+    assert_eq!(
+        messages,
+        ["a component or element of a function's result cannot be selected: assign the result to a variable first"]
+    );
+    // The selectors are read over: the rest of the expression and the next statement parse.
+    assert!(dump_file(&parse.file, src, &interner).contains("(assign y 2)"), "{:?}", parse.errors);
+}

@@ -150,7 +150,11 @@ impl Parser<'_, '_, '_> {
             T::Str => self.leaf(ExprKind::Str),
             T::True => self.leaf(ExprKind::Bool(true)),
             T::False => self.leaf(ExprKind::Bool(false)),
-            T::Ident if self.nth(1) == T::LParen => self.call(),
+            T::Ident if self.nth(1) == T::LParen => {
+                let call = self.call();
+                self.refuse_selectors_of_a_result();
+                call
+            }
             T::Ident => self.postfix_expr(),
             T::LParen => {
                 self.bump();
@@ -167,6 +171,32 @@ impl Parser<'_, '_, '_> {
             _ => {
                 self.error_expected("an expression");
                 self.arena.alloc(ExprKind::Error, Span { start: token.span.start, end: token.span.start })
+            }
+        }
+    }
+
+    /// `f(x).comp` or `f(x){i}`: RAPID selects components and elements of data only
+    /// (a variable, persistent, constant or parameter), never of a function's result.
+    /// Said plainly, and the selectors are read over so the expression goes on.
+    fn refuse_selectors_of_a_result(&mut self) {
+        if !matches!(self.nth(0), T::Dot | T::LBrace) {
+            return;
+        }
+        let span = self.current().span;
+        let message = "a component or element of a function's result cannot be selected: assign the result to a \
+                       variable first";
+        self.error(SyntaxErrorKind::UnexpectedToken, span, message.to_owned());
+        loop {
+            match self.nth(0) {
+                T::Dot => {
+                    self.bump();
+                    self.name();
+                }
+                T::LBrace => {
+                    self.bump();
+                    self.expr_list(T::RBrace);
+                }
+                _ => return,
             }
         }
     }
