@@ -7,8 +7,11 @@
 /// names we know of (compared without case).
 pub(crate) fn option_of(name: &str) -> Option<&'static str> {
     let lower = name.to_ascii_lowercase();
-    // Every EGM instruction and data type starts with `egm`.
-    if lower.starts_with("egm") {
+    // EGM's instructions are spelt `EGM` + a capitalised word (EGMActJoint, EGMRunPose);
+    // its data types are lower case. A user's own `egm_setup` is none of them.
+    let egm_instruction =
+        name.strip_prefix("EGM").is_some_and(|rest| rest.starts_with(|c: char| c.is_ascii_uppercase()));
+    if egm_instruction || EGM_TYPES.contains(&lower.as_str()) {
         return Some("Externally Guided Motion (EGM)");
     }
     OPTION_NAMES.iter().find(|(names, _)| names.contains(&lower.as_str())).map(|&(_, option)| option)
@@ -22,7 +25,11 @@ pub(crate) fn note_for(name: &str) -> String {
     }
 }
 
-/// Names (lower case) by option, beyond a prefix rule.
+/// EGM's data types (lower case).
+// uncertain: as we remember RobotWare 6's EGM manual.
+const EGM_TYPES: &[&str] = &["egmident", "egmstate", "egmstopmode", "egmframetype", "egm_minmax"];
+
+/// Names (lower case) by option, beyond the EGM rule.
 const OPTION_NAMES: &[(&[&str], &str)] = &[
     (
         &[
@@ -82,6 +89,9 @@ mod tests {
         assert_eq!(option_of("FCAct"), Some("Force Control"));
         assert_eq!(option_of("MoveL"), None);
         assert_eq!(option_of("my_proc"), None);
+        // A user's own routine that happens to start with `egm` is no EGM name.
+        assert_eq!(option_of("egm_setup"), None);
+        assert_eq!(option_of("egmCheckRange"), None);
     }
 
     #[test]
