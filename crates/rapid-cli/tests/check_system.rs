@@ -7,18 +7,18 @@
 //! relative paths, so the reports hold no machine paths. Every expected report, lines
 //! and columns included, is worked out by hand from the files written here.
 
+mod system_fixture;
+
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use insta_cmd::assert_cmd_snapshot;
+use system_fixture::{scratch_in, text};
 
 /// A fresh, empty scratch folder for one test.
 fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("check_system").join(name);
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("scratch folder");
-    dir
+    scratch_in("check_system", name)
 }
 
 /// `rapid ARGS…` run in `dir`.
@@ -30,10 +30,6 @@ fn rapid(dir: &Path, args: &[&str]) -> Command {
 
 fn output(dir: &Path, args: &[&str]) -> Output {
     rapid(dir, args).output().expect("run rapid")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
 }
 
 /// Writes backup `sys` in `dir`: SYS.cfg with one CAB_TASKS instance per task (`-Name`

@@ -4,9 +4,9 @@
 mod system_fixture;
 
 use std::io::{BufRead, BufReader};
-use std::process::{Command, Stdio};
+use std::process::Command;
 
-use system_fixture::{scratch_in, text};
+use system_fixture::{scratch_in, spawn_in, text};
 
 #[test]
 fn ctrl_c_ends_a_run_and_keeps_its_trace() {
@@ -16,13 +16,7 @@ fn ctrl_c_ends_a_run_and_keeps_its_trace() {
     let module = "MODULE Wait\n  PROC main()\n    MoveAbsJ [[20,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, tool0;\n    \
                   TPWrite \"moved\";\n    WaitTime 3600;\n    TPWrite \"not reached\";\n  ENDPROC\nENDMODULE\n";
     std::fs::write(dir.join("Wait.mod"), module).expect("module");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .current_dir(&dir)
-        .args(["run", "--realtime", "--trace", "t.csv", "Wait.mod"])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("start rapid");
+    let mut child = spawn_in(&dir, &["run", "--realtime", "--trace", "t.csv", "Wait.mod"]);
     let mut lines = BufReader::new(child.stdout.take().expect("stdout")).lines();
     assert_eq!(lines.next().and_then(Result::ok).as_deref(), Some("moved"));
     let killed = Command::new("kill").args(["-INT", &child.id().to_string()]).status().expect("kill");

@@ -2,51 +2,16 @@
 //! run on small backups with two motion tasks. Expected outputs are worked out by hand
 //! from the timing model in the comments.
 
+mod system_fixture;
+
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+
+use system_fixture::{rapid_in, scratch_in, system, text, TaskDef};
 
 /// A fresh, empty scratch folder for one test.
 fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("multimove").join(name);
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("scratch folder");
-    dir
-}
-
-fn rapid_in(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rapid")).current_dir(dir).args(args).output().expect("run rapid")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
-
-/// A task of a test system: its CAB_TASKS attributes (after -Name) and its module.
-struct TaskDef<'a> {
-    name: &'a str,
-    attrs: &'a str,
-    module: &'a str,
-}
-
-/// Writes backup `sys` in `dir`: one RAPID/TASKn folder per task, in order, and
-/// SYS.cfg (and EIO.cfg when signals are given).
-fn system(dir: &Path, tasks: &[TaskDef<'_>], eio_signals: &str) -> PathBuf {
-    let root = dir.join("sys");
-    let mut sys = String::from("SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n");
-    for (n, task) in tasks.iter().enumerate() {
-        sys.push_str(&format!("\n      -Name \"{}\" {}\n", task.name, task.attrs));
-        let folder = root.join(format!("RAPID/TASK{}/PROGMOD", n + 1));
-        fs::create_dir_all(&folder).expect("task folder");
-        fs::write(folder.join("Main.mod"), task.module).expect("module");
-    }
-    fs::create_dir_all(root.join("SYSPAR")).expect("syspar");
-    fs::write(root.join("SYSPAR/SYS.cfg"), sys).expect("SYS.cfg");
-    if !eio_signals.is_empty() {
-        fs::write(root.join("SYSPAR/EIO.cfg"), format!("EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n{eio_signals}"))
-            .expect("EIO.cfg");
-    }
-    root
+    scratch_in("multimove", name)
 }
 
 #[test]

@@ -3,24 +3,16 @@
 //! `-UseMechanicalUnitGroup` naming a `MECHANICAL_UNIT_GROUP` whose `-Robot` is its
 //! robot. Expected positions are worked out by hand from MOC.cfg's base frames.
 
+mod system_fixture;
+
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+
+use system_fixture::{rapid_in, scratch_in, text};
 
 /// A fresh, empty scratch folder for one test.
 fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("robot_numbers").join(name);
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("scratch folder");
-    dir
-}
-
-fn rapid_in(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rapid")).current_dir(dir).args(args).output().expect("run rapid")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
+    scratch_in("robot_numbers", name)
 }
 
 /// SYS.cfg's two motion tasks, T_ROB2 listed first (lines 5 and 7), and the groups

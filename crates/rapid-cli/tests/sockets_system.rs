@@ -9,10 +9,10 @@ mod system_fixture;
 use std::io::{BufRead, BufReader, Write};
 use std::net::TcpListener;
 use std::path::Path;
-use std::process::{Command, Stdio};
+use std::process::Child;
 use std::time::{Duration, Instant};
 
-use system_fixture::{scratch_in, system, text, TaskDef};
+use system_fixture::{scratch_in, spawn_in, system, text, TaskDef};
 
 /// A task that ticks three times, 0.1 s apart.
 const TICKER: &str = "MODULE Ticker\n  PROC main()\n    FOR i FROM 1 TO 3 DO\n      WaitTime 0.1;\n      \
@@ -28,26 +28,12 @@ fn client_and_ticker(dir: &Path, client: &str, port: u16) {
     system(dir, &tasks, "");
 }
 
-#[test]
-fn a_task_waiting_on_a_socket_lets_the_other_tasks_run() {
-    let dir = scratch_in("sockets_system", "give_way");
-    let listener = TcpListener::bind("127.0.0.1:0").expect("bind");
-    let port = listener.local_addr().expect("addr").port();
-    let client = "MODULE Client\n  VAR socketdev s;\n  VAR string got;\n  PROC main()\n    SocketCreate s;\n    \
-                  SocketConnect s, \"127.0.0.1\", PORT;\n    SocketReceive s \\Str:=got \\Time:=10;\n    \
-                  TPWrite \"got \" + got;\n    SocketClose s;\n  ENDPROC\nENDMODULE\n";
-    client_and_ticker(&dir, client, port);
-    let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .current_dir(&dir)
-        .args(["run", "sys"])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("start rapid");
+/// The peer's side of a run whose client waits for data while something else ticks:
+/// it accepts the client, sees three `tick` lines on the run's stdout, then sends
+/// `hello`, which the client prints (`got hello`) before the run ends well.
+fn hello_after_three_ticks(listener: &TcpListener, mut child: Child) {
     let (mut peer, _) = listener.accept().expect("accept");
     peer.set_write_timeout(Some(Duration::from_secs(10))).expect("timeout");
-    // The other task runs while T_ROB1 waits for data: its three ticks come first, and
-    // only then does the peer send what T_ROB1 waits for.
     let mut lines = BufReader::new(child.stdout.take().expect("stdout")).lines();
     let mut seen = Vec::new();
     for _ in 0..3 {
@@ -62,6 +48,21 @@ fn a_task_waiting_on_a_socket_lets_the_other_tasks_run() {
 }
 
 #[test]
+fn a_task_waiting_on_a_socket_lets_the_other_tasks_run() {
+    let dir = scratch_in("sockets_system", "give_way");
+    let listener = TcpListener::bind("127.0.0.1:0").expect("bind");
+    let port = listener.local_addr().expect("addr").port();
+    let client = "MODULE Client\n  VAR socketdev s;\n  VAR string got;\n  PROC main()\n    SocketCreate s;\n    \
+                  SocketConnect s, \"127.0.0.1\", PORT;\n    SocketReceive s \\Str:=got \\Time:=10;\n    \
+                  TPWrite \"got \" + got;\n    SocketClose s;\n  ENDPROC\nENDMODULE\n";
+    client_and_ticker(&dir, client, port);
+    let child = spawn_in(&dir, &["run", "sys"]);
+    // The other task runs while T_ROB1 waits for data: its three ticks come first, and
+    // only then does the peer send what T_ROB1 waits for.
+    hello_after_three_ticks(&listener, child);
+}
+
+#[test]
 fn a_socket_wait_in_a_system_gives_the_peer_its_time_in_wall_clock_time() {
     let dir = scratch_in("sockets_system", "time_out");
     let listener = TcpListener::bind("127.0.0.1:0").expect("bind");
@@ -72,13 +73,7 @@ fn a_socket_wait_in_a_system_gives_the_peer_its_time_in_wall_clock_time() {
                   SocketClose s;\n    RETURN;\n  ENDPROC\nENDMODULE\n";
     client_and_ticker(&dir, client, port);
     let started = Instant::now();
-    let child = Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .current_dir(&dir)
-        .args(["run", "sys"])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("start rapid");
+    let child = spawn_in(&dir, &["run", "sys"]);
     // The peer keeps the connection open and sends nothing.
     let (_peer, _) = listener.accept().expect("accept");
     let out = child.wait_with_output().expect("rapid ends");
@@ -104,13 +99,7 @@ fn waits_pass_in_wall_clock_time_while_a_socket_is_open() {
                   SocketClose s;\n  ENDPROC\nENDMODULE\n"
         .replace("PORT", &port.to_string());
     std::fs::write(dir.join("Sender.mod"), module).expect("module");
-    let child = Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .current_dir(&dir)
-        .args(["run", "--quiet", "Sender.mod"])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("start rapid");
+    let child = spawn_in(&dir, &["run", "--quiet", "Sender.mod"]);
     let (mut peer, _) = listener.accept().expect("accept");
     peer.set_read_timeout(Some(Duration::from_secs(10))).expect("timeout");
     let mut first = [0u8; 1];
@@ -139,26 +128,8 @@ fn traps_run_while_a_task_running_alone_waits_on_a_socket() {
                   TPWrite \"tick\";\n    IF ticks = 3 IDelete tick;\n  ENDTRAP\nENDMODULE\n"
         .replace("PORT", &port.to_string());
     std::fs::write(dir.join("Client.mod"), module).expect("module");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .current_dir(&dir)
-        .args(["run", "--quiet", "Client.mod"])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("start rapid");
-    let (mut peer, _) = listener.accept().expect("accept");
-    peer.set_write_timeout(Some(Duration::from_secs(10))).expect("timeout");
-    let mut lines = BufReader::new(child.stdout.take().expect("stdout")).lines();
-    let mut seen = Vec::new();
-    for _ in 0..3 {
-        seen.push(lines.next().and_then(Result::ok).unwrap_or_default());
-    }
-    assert_eq!(seen, ["tick", "tick", "tick"]);
-    peer.write_all(b"hello").expect("send");
-    let rest: Vec<String> = lines.map_while(Result::ok).collect();
-    let out = child.wait_with_output().expect("rapid ends");
-    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
-    assert_eq!(rest, ["got hello"]);
+    let child = spawn_in(&dir, &["run", "--quiet", "Client.mod"]);
+    hello_after_three_ticks(&listener, child);
 }
 
 #[test]
@@ -180,13 +151,7 @@ fn tasks_computing_beside_an_open_socket_keep_wall_clock_time() {
     ];
     system(&dir, &tasks, "");
     let started = Instant::now();
-    let child = Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .current_dir(&dir)
-        .args(["run", "--max-time", "1", "sys"])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("start rapid");
+    let child = spawn_in(&dir, &["run", "--max-time", "1", "sys"]);
     let (_peer, _) = listener.accept().expect("accept");
     let out = child.wait_with_output().expect("rapid ends");
     let elapsed = started.elapsed();

@@ -1,6 +1,6 @@
 //! rapid-controller: the task system of the virtual controller (§1.20). Several
 //! program tasks, each its own `rapid_vm::Vm`, run pseudo-parallel: round-robin one
-//! instruction each among the busy tasks of the top level, a background task only
+//! statement each among the busy tasks of the top level, a background task only
 //! while the tasks it stands behind are idle. What tasks share lives here and is
 //! handed to the task that runs: the I/O system and sync points
 //! (`rapid_vm::builtins::Shared`) and the global persistents ([`pers::PersStore`]).

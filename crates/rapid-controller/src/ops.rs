@@ -111,6 +111,8 @@ pub struct Operations {
     /// An output shows whether a robot moves (MechUnitNotMoving): the outputs are
     /// looked at whenever the controller is, and the clock stops where a move ends.
     watch_motion: bool,
+    /// Which tasks' robots stood still when the outputs were last shown.
+    still_shown: Vec<bool>,
 }
 
 impl Operations {
@@ -342,7 +344,10 @@ impl Controller {
         if let ProgramState::Stepping { task, from_steps } = self.ops.state() {
             self.follow_step(host, task, from_steps);
         }
-        if (self.ops.outputs_stale || self.ops.watch_motion) && !self.ops.outputs.is_empty() {
+        if self.ops.watch_motion && self.motion_changed() {
+            self.ops.outputs_stale = true;
+        }
+        if self.ops.outputs_stale && !self.ops.outputs.is_empty() {
             self.show_outputs();
         }
     }
@@ -521,9 +526,23 @@ impl Controller {
         }
     }
 
+    /// Whether task `task`'s robot stands still now (MechUnitNotMoving).
+    fn robot_still(&self, task: &crate::schedule::Task) -> bool {
+        self.time >= task.loaded.vm.resources().robot.still_from()
+    }
+
+    /// Whether a robot started or stopped since the outputs were last shown.
+    fn motion_changed(&self) -> bool {
+        self.ops.still_shown.len() != self.tasks.len()
+            || self.tasks.iter().zip(&self.ops.still_shown).any(|(t, &shown)| self.robot_still(t) != shown)
+    }
+
     /// Sets each system output to what it shows now.
     fn show_outputs(&mut self) {
         self.ops.outputs_stale = false;
+        if self.ops.watch_motion {
+            self.ops.still_shown = self.tasks.iter().map(|t| self.robot_still(t)).collect();
+        }
         for (idx, task) in self.tasks.iter().enumerate() {
             // Shown when the task fails; ResetError clears it.
             if matches!(task.state, State::Ended(TaskEnd::Failed(_))) && !self.ops.errors_seen[idx] {
@@ -551,9 +570,7 @@ impl Controller {
                     // No emergency stop, and never in simulated mode (the Sim Mode input
                     // is not simulated).
                     SysStatus::EmStop | SysStatus::SimMode => false,
-                    SysStatus::MechUnitNotMoving => {
-                        o.task.is_some_and(|i| self.time >= self.tasks[i].loaded.vm.resources().robot.still_from())
-                    }
+                    SysStatus::MechUnitNotMoving => o.task.is_some_and(|i| self.robot_still(&self.tasks[i])),
                     // A TCP robot is always active (DeactUnit refuses it).
                     SysStatus::MechUnitActive => true,
                     // Left out when configured (configure_system_signals).

@@ -171,10 +171,11 @@ fn check_same_shape(entry: &Entry, pers: &SharedPers, task_name: &str) -> Result
     ))
 }
 
-fn shape(type_name: &str, dims: [u32; 3]) -> String {
+/// A persistent's type with its array sizes, as declared: `num{2,3}`.
+pub fn shape(type_name: &str, dims: [u32; 3]) -> String {
     let sizes: Vec<String> = dims.iter().take_while(|&&d| d > 0).map(u32::to_string).collect();
     if sizes.is_empty() {
-        type_name.to_string()
+        type_name.to_owned()
     } else {
         format!("{type_name}{{{}}}", sizes.join(","))
     }

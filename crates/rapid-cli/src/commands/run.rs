@@ -121,7 +121,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     let status = loop {
         if crate::interrupt::requested() {
             host.flush();
-            eprintln!("interrupted (Ctrl-C) at {:.3} s of controller time; the program did not end", loaded.vm.time);
+            eprintln!("{}", interrupted_at(loaded.vm.time));
             break ExitStatus::Interrupted;
         }
         // Defence in depth: an interpreter bug must not take the terminal down with a
@@ -157,10 +157,7 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
                 if (args.cycles != 0 && cycles_run >= args.cycles) || loaded.vm.ended_by_exit() {
                     if args.cycles == 1 && exit == Exit::CycleEnded {
                         host.flush();
-                        eprintln!(
-                            "note: ExitCycle ended the cycle; in cycle mode (the default) that ends the run: \
-                             `--cycles 0` runs continuously, each ExitCycle starting the next cycle"
-                        );
+                        eprintln!("{}", exit_cycle_note("the cycle"));
                     }
                     break ExitStatus::Success;
                 }
@@ -383,6 +380,21 @@ pub(crate) fn location(files: &[SourceInput], file: usize, offset: u32) -> (Stri
         }
         None => ("<predefined>".into(), 0, 0),
     }
+}
+
+/// What the run says when Ctrl-C ended it at controller time `time`.
+pub(crate) fn interrupted_at(time: f64) -> String {
+    format!("interrupted (Ctrl-C) at {time:.3} s of controller time; the program did not end")
+}
+
+/// What the run says when ExitCycle ended `what` ("the cycle of T_A") in cycle mode:
+/// a program restarting itself so (a server's main loop) would seem to stop for no
+/// reason, so it says how to run on.
+pub(crate) fn exit_cycle_note(what: &str) -> String {
+    format!(
+        "note: ExitCycle ended {what}; in cycle mode (the default) that ends the run: `--cycles 0` runs \
+         continuously, each ExitCycle starting the next cycle"
+    )
 }
 
 /// Prints the notes on how the inputs were read (a backup's module left out) to stderr.

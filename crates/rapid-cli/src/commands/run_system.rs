@@ -494,7 +494,7 @@ fn report(controller: &Controller, tasks: &[LoadedTask], bound: Option<Bound>) -
             );
         }
         Some(Bound::Interrupted) => {
-            eprintln!("interrupted (Ctrl-C) at {:.3} s of controller time; the program did not end", controller.time);
+            eprintln!("{}", single::interrupted_at(controller.time));
             status = ExitStatus::Interrupted;
         }
         Some(Bound::InternalError) => {
@@ -533,8 +533,7 @@ fn report(controller: &Controller, tasks: &[LoadedTask], bound: Option<Bound>) -
 }
 
 /// In cycle mode ExitCycle ends a NORMAL task's run, where a controller in continuous
-/// mode starts its next cycle: a program restarting itself so (a server's main loop)
-/// would surprise the user by ending; say how to run it on.
+/// mode starts its next cycle: say so, naming the tasks.
 fn note_exit_cycles(controller: &Controller) {
     let ended: Vec<&str> = controller
         .tasks
@@ -543,11 +542,7 @@ fn note_exit_cycles(controller: &Controller) {
         .map(|t| t.spec.name.as_str())
         .collect();
     if !ended.is_empty() {
-        eprintln!(
-            "note: ExitCycle ended the cycle of {}; in cycle mode (the default) that ends the run: \
-             `--cycles 0` runs continuously, each ExitCycle starting the next cycle",
-            ended.join(", ")
-        );
+        eprintln!("{}", single::exit_cycle_note(&format!("the cycle of {}", ended.join(", "))));
     }
 }
 

@@ -180,23 +180,13 @@ fn persistent_mismatches(ordered: &[(usize, &Task, &TaskProgram<'_>)]) -> Vec<Di
                 "persistent `{}` is declared `{}` here and `{}` in task {other_task}: global persistents of one name \
                  must have the same type and size in every task",
                 pers.name,
-                shape(&pers.type_name, pers.dims),
-                shape(&other.type_name, other.dims)
+                rapid_controller::pers::shape(&pers.type_name, pers.dims),
+                rapid_controller::pers::shape(&other.type_name, other.dims)
             );
             found.push(Diagnostic::new(program.file_offset + pers.file, Code::SharedPersMismatch, pers.span, message));
         }
     }
     found
-}
-
-/// A type with its array sizes, as declared: `num{2,3}`.
-fn shape(type_name: &str, dims: [u32; 3]) -> String {
-    let sizes: Vec<String> = dims.iter().take_while(|&&d| d > 0).map(u32::to_string).collect();
-    if sizes.is_empty() {
-        type_name.to_owned()
-    } else {
-        format!("{type_name}{{{}}}", sizes.join(","))
-    }
 }
 
 /// The text of line `line` (1-based) of `text`, without its indentation and line break.

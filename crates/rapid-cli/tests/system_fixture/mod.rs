@@ -5,7 +5,7 @@
 
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::{Child, Command, Output, Stdio};
 
 /// A fresh, empty scratch folder `name` of test group `group`.
 pub(crate) fn scratch_in(group: &str, name: &str) -> PathBuf {
@@ -17,6 +17,18 @@ pub(crate) fn scratch_in(group: &str, name: &str) -> PathBuf {
 
 pub(crate) fn rapid_in(dir: &Path, args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_rapid")).current_dir(dir).args(args).output().expect("run rapid")
+}
+
+/// `rapid ARGS…` started in `dir` with stdout and stderr piped, for a test that talks
+/// to the run while it goes on (a socket peer, a signal).
+pub(crate) fn spawn_in(dir: &Path, args: &[&str]) -> Child {
+    Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .current_dir(dir)
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start rapid")
 }
 
 pub(crate) fn text(bytes: &[u8]) -> String {
