@@ -13,7 +13,7 @@ fn render() -> String {
          Codes are stable: a code is never reused or renumbered. `E` codes are errors (exit status 1),\n\
          `W` codes are warnings. Every code has at least one fixture under `tests/check/err/` named after it.\n\
          How `rapid check` shows them (the human layout, `--format json`, the tasks a finding of a check\n\
-         of several tasks comes from) is in the README's `rapid check` section.\n\n\
+         of several tasks comes from) is in the user guide's `docs/guide/check.md`.\n\n\
          | code | severity | name | what it reports |\n|---|---|---|---|\n",
     );
     for code in Code::ALL {
