@@ -19,7 +19,7 @@ fuzz_target!(|data: &[u8]| {
         None => vec![SourceInput::from_bytes("a.mod", data.to_vec())],
     };
     for syntax_only in [false, true] {
-        let options = Options { syntax_only };
+        let options = Options { syntax_only, ..Options::default() };
         let first = check(&files, &options);
         let second = check(&files, &options);
         assert_eq!(first, second, "check is not deterministic");
