@@ -12,7 +12,7 @@ use std::fs;
 use std::path::Path;
 use std::process::Output;
 
-use crate::fixture::{scratch_in, stderr, stdout, Scratch};
+use crate::fixture::{rapid, scratch_in, stderr, stdout, Scratch};
 
 const MANIFEST: &str = r#"[system]
 io = "eio.cfg"
@@ -63,7 +63,7 @@ fn run(dir: &Path, extra: &[&str]) -> Output {
     let mut args = vec!["run", "--quiet", "--stimulus", stim.to_str().expect("path")];
     args.extend_from_slice(extra);
     args.push(dir.to_str().expect("path"));
-    std::process::Command::new(env!("CARGO_BIN_EXE_rapid")).args(&args).output().expect("run rapid")
+    rapid(&args)
 }
 
 /// A fresh, empty scratch folder for one test.

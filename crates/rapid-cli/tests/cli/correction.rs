@@ -13,9 +13,9 @@
 //! and the path's z is the world's -z either way.
 
 use std::fs;
-use std::process::{Command, Output};
+use std::process::Output;
 
-use crate::fixture::{scratch_in, text, Scratch};
+use crate::fixture::{rapid_in, scratch_in, text, Scratch};
 
 /// A fresh, empty scratch folder for one test.
 fn scratch(name: &str) -> Scratch {
@@ -32,11 +32,7 @@ fn run(name: &str, decls: &str, body: &str, traps: &str) -> (Output, Vec<[f64; 4
         "MODULE S\n  {P0}\n{decls}\n  PROC main()\n    MoveJ p0, v1000, fine, tool0;\n{body}\n  ENDPROC\n{traps}\nENDMODULE\n"
     );
     fs::write(dir.join("s.mod"), module).expect("module");
-    let out = Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .current_dir(&dir)
-        .args(["run", "--quiet", "--trace", "t.csv", "s.mod"])
-        .output()
-        .expect("run rapid");
+    let out = rapid_in(&dir, &["run", "--quiet", "--trace", "t.csv", "s.mod"]);
     let trace = fs::read_to_string(dir.join("t.csv")).unwrap_or_default();
     let rows = trace
         .lines()

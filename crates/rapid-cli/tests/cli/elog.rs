@@ -6,11 +6,11 @@
 
 use std::fs;
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
 use serde_json::{json, Value};
 
-use crate::fixture::{scratch_in, Scratch};
+use crate::fixture::{rapid_in, scratch_in, Scratch};
 
 /// A fresh, empty scratch folder for one test.
 fn fresh_dir(name: &str) -> Scratch {
@@ -20,13 +20,10 @@ fn fresh_dir(name: &str) -> Scratch {
 /// Runs `rapid run --elog log.jsonl ARGS… m.mod` in `dir` (so entries name `m.mod`).
 fn run(dir: &Path, program: &str, args: &[&str]) -> Output {
     fs::write(dir.join("m.mod"), program).expect("write module");
-    Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .current_dir(dir)
-        .args(["run", "--elog", "log.jsonl"])
-        .args(args)
-        .arg("m.mod")
-        .output()
-        .expect("run rapid")
+    let mut all = vec!["run", "--elog", "log.jsonl"];
+    all.extend_from_slice(args);
+    all.push("m.mod");
+    rapid_in(dir, &all)
 }
 
 /// The file's lines, each parsed; every line must be one JSON object.

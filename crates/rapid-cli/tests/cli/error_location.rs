@@ -14,7 +14,7 @@ use std::process::{Command, Output};
 use insta_cmd::{assert_cmd_snapshot, get_cargo_bin};
 use serde_json::{json, Value};
 
-use crate::fixture::{rapid_cmd, scratch_in, text, Scratch};
+use crate::fixture::{rapid_cmd, rapid_in, scratch_in, text, Scratch};
 
 /// A fresh, empty scratch folder for one test.
 fn scratch(name: &str) -> Scratch {
@@ -244,7 +244,7 @@ fn run_with_start_hook(dir: &Path, tasks: &[(&str, &str)]) -> Output {
     sys.push_str("#\nCAB_EXEC_HOOKS:\n\n      -Routine \"on_start\" -Shelf \"START\" -Task \"T_ROB1\"\n");
     fs::create_dir_all(dir.join("sys/SYSPAR")).expect("syspar");
     fs::write(dir.join("sys/SYSPAR/SYS.cfg"), sys).expect("SYS.cfg");
-    Command::new(get_cargo_bin("rapid")).current_dir(dir).args(["run", "sys"]).output().expect("run rapid")
+    rapid_in(dir, &["run", "sys"])
 }
 
 /// T_ROB1's module: the START event routine calls `inner`, which fails on line 9.

@@ -1,15 +1,15 @@
 //! The shipped examples run as their READMEs and comments say.
 
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
-use crate::fixture::{repo_root, text};
+use crate::fixture::{rapid_in, repo_root, text};
 
 fn rapid(args: &[&str]) -> Output {
     let home = Path::new(env!("CARGO_TARGET_TMPDIR")).join("examples-home");
     let mut all = vec!["run", "--home", home.to_str().expect("utf-8 path")];
     all.extend_from_slice(args);
-    Command::new(env!("CARGO_BIN_EXE_rapid")).current_dir(repo_root()).args(&all).output().expect("run rapid")
+    rapid_in(&repo_root(), &all)
 }
 
 /// The cycle time `rapid run` reports on stderr.

@@ -4,9 +4,9 @@
 //! (ISignalAI, ISignalAO). Every expectation is worked out by hand in the comments.
 
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
-use crate::fixture::{scratch_in, text, write_files as write, Scratch};
+use crate::fixture::{rapid_in, scratch_in, text, write_files as write, Scratch};
 
 /// A fresh, empty scratch folder for one test.
 fn scratch(name: &str) -> Scratch {
@@ -22,7 +22,7 @@ fn run_cell(dir: &Path, eio: &str, program: &str, stimulus: Option<&str>) -> Out
         args.extend(["--stimulus", "stimulus.txt"]);
     }
     args.push("cell");
-    Command::new(env!("CARGO_BIN_EXE_rapid")).current_dir(dir).args(&args).output().expect("run rapid")
+    rapid_in(dir, &args)
 }
 
 /// A DeviceNet network with d652 (enabled) and d651 (deactivated at start-up).

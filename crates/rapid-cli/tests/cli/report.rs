@@ -5,7 +5,7 @@
 use std::path::Path;
 use std::process::{Command, Output};
 
-use crate::fixture::{repo_root, scratch_in, Scratch};
+use crate::fixture::{rapid_in, repo_root, scratch_in, Scratch};
 
 /// A fresh, empty scratch folder for one test.
 fn scratch(name: &str) -> Scratch {
@@ -30,8 +30,7 @@ fn run_example(dir: &Path, extra: &[&str]) -> Output {
     ];
     args.extend_from_slice(extra);
     args.push(EXAMPLE);
-    let out =
-        Command::new(env!("CARGO_BIN_EXE_rapid")).current_dir(repo_root()).args(&args).output().expect("run rapid");
+    let out = rapid_in(&repo_root(), &args);
     assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
     out
 }

@@ -9,9 +9,9 @@
 
 use std::fs;
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
-use crate::fixture::{scratch_in, text, Scratch};
+use crate::fixture::{rapid_in, scratch_in, text, Scratch};
 
 /// A fresh, empty scratch folder for one test.
 fn scratch(name: &str) -> Scratch {
@@ -33,11 +33,7 @@ fn run_cell(dir: &Path, module: &str, stimulus: &str) -> Output {
                CAB_EXEC_HOOKS:\n\n      -Routine \"on_restart\" -Shelf \"RESTART\" -Task \"T_ROB1\"\n";
     fs::write(root.join("SYSPAR/SYS.cfg"), sys).expect("SYS.cfg");
     fs::write(dir.join("plc.stim"), stimulus).expect("stimulus");
-    Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .current_dir(dir)
-        .args(["run", "--quiet", "--robot", "IRB120-3/0.58", "--stimulus", "plc.stim", "cell"])
-        .output()
-        .expect("run rapid")
+    rapid_in(dir, &["run", "--quiet", "--robot", "IRB120-3/0.58", "--stimulus", "plc.stim", "cell"])
 }
 
 /// The MoveL, and a RESTART routine with `restart` in it.

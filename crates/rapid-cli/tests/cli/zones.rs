@@ -3,9 +3,9 @@
 
 use std::fs;
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
-use crate::fixture::{scratch_in, text, Scratch};
+use crate::fixture::{rapid_in, scratch_in, text, Scratch};
 
 /// A fresh, empty scratch folder for one test.
 fn scratch(name: &str) -> Scratch {
@@ -29,11 +29,7 @@ fn run_with_signals(dir: &Path, module: &str, signals: &str) -> Output {
     let sys = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n";
     fs::write(root.join("SYSPAR/SYS.cfg"), sys).expect("SYS.cfg");
     fs::write(root.join("SYSPAR/EIO.cfg"), format!("EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n{signals}")).expect("EIO.cfg");
-    Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .current_dir(dir)
-        .args(["run", "--quiet", "--io-log", "io.csv", "sys"])
-        .output()
-        .expect("run rapid")
+    rapid_in(dir, &["run", "--quiet", "--io-log", "io.csv", "sys"])
 }
 
 /// When `signal` first became `new` in an `--io-log` CSV (time,signal,old,new,cause).
