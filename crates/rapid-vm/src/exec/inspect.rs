@@ -1,6 +1,7 @@
 //! What a front end of the controller (a debugger, a web service) reads of a task
-//! and asks of it besides running: the call stack with each frame's statement, the
-//! statements of the routines (to place line breakpoints), and PP to a routine.
+//! and asks of it besides running: the call stack with each frame's statement and
+//! locals, the statements of the routines (to place line breakpoints), and PP to a
+//! routine.
 //! Nothing here runs in the executor's loop: it costs nothing when unused.
 
 use std::rc::Rc;
@@ -14,8 +15,8 @@ pub struct FrameView {
     pub routine: String,
     /// Index of the routine's file among the task's program sources.
     pub file: usize,
-    /// The statement the frame stands at (for a caller: its call), or the routine's
-    /// span when it stands at none (its end).
+    /// The statement the frame stands at (for a caller: its call; before the first
+    /// statement: that one), or the routine's span when it stands at none (its end).
     pub span: rapid_syntax::Span,
     /// Which handler of its routine it runs: 0 none, 1 BACKWARD, 2 ERROR, 3 UNDO.
     pub handler: u8,
@@ -33,12 +34,33 @@ impl Vm {
                 FrameView {
                     routine: code.name.clone(),
                     file: code.file,
-                    span: code.stmt_at(pc).map_or(code.span, |s| s.span),
+                    // Before its first statement (a routine's data being given its
+                    // initial values) a frame stands at that statement.
+                    span: code
+                        .stmt_at(pc)
+                        .or_else(|| code.stmts.iter().find(|s| s.start >= pc).copied())
+                        .map_or(code.span, |s| s.span),
                     handler: frame.handler_type(),
                     trap: frame.interrupted,
                 }
             })
             .collect()
+    }
+
+    /// The parameters and routine data of frame `frame` (0: the outermost), by name
+    /// in declaration order; a VAR, INOUT or PERS parameter shows the value of the
+    /// data it refers to. None when there is no such frame.
+    pub fn frame_locals(&self, frame: usize) -> Option<Vec<(String, crate::value::Value)>> {
+        let f = self.frames.get(frame)?;
+        let locals = f.code.local_names.iter().filter_map(|(name, slot)| {
+            let value = self.storage.stack.get((f.base + slot) as usize)?;
+            let value = match value {
+                crate::value::Value::Ref(place) => self.storage.get(place).ok()?.clone(),
+                other => other.clone(),
+            };
+            Some((name.clone(), value))
+        });
+        Some(locals.collect())
     }
 
     /// How many routines are running.
