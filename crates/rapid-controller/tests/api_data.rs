@@ -16,6 +16,17 @@ fn read(session: &mut Session, path: &str) -> String {
     }
 }
 
+/// Runs until the clock reaches `until`, sleeping as a paced clock asks (while a
+/// prompt waits for the operator the clock is the wall clock).
+fn run_to(session: &mut Session, until: f64) -> RunOutcome {
+    loop {
+        match session.run_until(Until::Time(until), 100_000) {
+            RunOutcome::Sleep(wall) => std::thread::sleep(wall),
+            other => return other,
+        }
+    }
+}
+
 fn pp_line(session: &Session, task: &str) -> u32 {
     match session.program_pointer(task) {
         Ok(Some(at)) => at.line,
@@ -65,14 +76,22 @@ fn a_persistent_written_while_running_is_read_by_the_other_task_and_a_prompt_wai
     assert_eq!(session.write_data("T_ROB1/MainModule/shared", "7"), Ok(()));
     // The other task declares the same global PERS: one object (§1.20).
     assert_eq!(read(&mut session, "T_OTHER/Other/shared"), "7");
-    assert_eq!(session.run_until(Until::Time(0.5), 100_000), RunOutcome::Running);
+    assert_eq!(run_to(&mut session, 0.5), RunOutcome::Running);
     assert_eq!(read(&mut session, "T_OTHER/Other/got"), "7");
     // Its TPReadFK now waits for the operator: a prompt; the task stands on it while
-    // time passes and the other task runs on.
+    // time passes and the other task runs on. With an operator in the loop the clock
+    // is the wall clock: `run` asks the caller to sleep rather than blocking it.
     let prompts = session.prompts();
     assert_eq!(prompts.len(), 1);
     assert_eq!((prompts[0].task.as_str(), prompts[0].text.as_str()), ("T_OTHER", "Continue?"));
-    assert_eq!(session.run_until(Until::Time(3.0), 100_000), RunOutcome::Running);
+    assert!(matches!(session.run_until(Until::Time(1.6), 100_000), RunOutcome::Sleep(_)));
+    let wall = std::time::Instant::now();
+    let before = session.time();
+    assert_eq!(run_to(&mut session, 1.6), RunOutcome::Running);
+    // The clock moved no faster than the wall clock (50 ms of slack for the statements'
+    // nominal time, which is not paced).
+    let moved = session.time() - before;
+    assert!(wall.elapsed().as_secs_f64() >= moved - 0.05, "{moved} s of clock in {:?}", wall.elapsed());
     assert_eq!(pp_line(&session, "T_OTHER"), line_of(OTHER, "TPReadFK"));
     assert_eq!(session.prompts().len(), 1, "one prompt, however often the dialog looks");
     // T_ROB1 ran to its end meanwhile: 5 * 2 + 100 + 1.
@@ -157,7 +176,7 @@ fn a_prompt_nobody_answers_times_out_after_its_max_time() {
   VAR num n := 0;
   VAR bool timedout := FALSE;
   PROC main()
-    TPReadNum n, \"How many?\" \\MaxTime:=2;
+    TPReadNum n, \"How many?\" \\MaxTime:=0.2;
   ERROR
     timedout := ERRNO = ERR_TP_MAXTIME;
     TRYNEXT;
@@ -167,11 +186,11 @@ ENDMODULE
     let mut session = with_signals(program, &[], &[]);
     let sub = session.subscribe();
     assert_eq!(session.start(StartFrom::Pointer), Ok(()));
-    assert_eq!(session.run_until(Until::Time(1.0), 10_000), RunOutcome::Running);
+    assert!(matches!(session.run_until(Until::Time(1.0), 10_000), RunOutcome::Sleep(_)));
     assert_eq!(session.prompts().len(), 1);
-    // \MaxTime 2 s from the dialog's start: ERR_TP_MAXTIME, which the handler takes.
-    assert_eq!(session.run_until(Until::Time(5.0), 10_000), RunOutcome::Ended);
-    assert!(session.time() >= 2.0 && session.time() < 2.1, "{}", session.time());
+    // \MaxTime 0.2 s from the dialog's start: ERR_TP_MAXTIME, which the handler takes.
+    assert_eq!(run_to(&mut session, 1.0), RunOutcome::Ended);
+    assert!(session.time() >= 0.2 && session.time() < 0.3, "{}", session.time());
     assert_eq!(read(&mut session, "T_ROB1/MainModule/timedout"), "TRUE");
     assert_eq!(read(&mut session, "T_ROB1/MainModule/n"), "0");
     assert!(session.prompts().is_empty());

@@ -99,7 +99,7 @@ fn steps_go_into_over_and_out_of_a_routine() {
     let mut session = session();
     let (call, first, second, after) = (
         line_of(ROBOT, "    Helper;"),
-        line_of(ROBOT, "reg1 := reg1 * 2"),
+        line_of(ROBOT, "reg1 := reg1 * scale"),
         line_of(ROBOT, "reg1 := reg1 + 100"),
         line_of(ROBOT, "reg1 := reg1 + 1"),
     );
@@ -119,6 +119,10 @@ fn steps_go_into_over_and_out_of_a_routine() {
     let frames: Vec<(String, u32)> = stack.iter().map(|f| (f.at.routine.clone(), f.at.line)).collect();
     assert_eq!(frames, [("Helper".to_owned(), first), ("main".to_owned(), call)]);
     assert_eq!(stack[0].at.file, FILE);
+    // Helper's routine data, main has none.
+    assert_eq!(session.frame_locals("T_ROB1", 0), Ok(vec![("scale".to_owned(), "2".to_owned())]));
+    assert_eq!(session.frame_locals("T_ROB1", 1), Ok(Vec::new()));
+    assert!(matches!(session.frame_locals("T_ROB1", 2), Err(ApiError::NotFound(_))));
     assert!(session.step("T_ROB1", StepKind::Over).is_ok());
     finish_step(&mut session);
     assert_eq!(pp_line(&session, "T_ROB1"), second);
@@ -154,7 +158,7 @@ fn a_step_backward_runs_the_backward_handler_and_refuses_a_move() {
 #[test]
 fn a_breakpoint_stops_the_program_before_its_statement() {
     let mut session = session();
-    let first = line_of(ROBOT, "reg1 := reg1 * 2");
+    let first = line_of(ROBOT, "reg1 := reg1 * scale");
     let sub = session.subscribe();
     let at = session.set_breakpoint("MainModule.mod", first).unwrap_or_default();
     assert_eq!(at.len(), 1);
@@ -189,7 +193,7 @@ fn a_breakpoint_stops_the_program_before_its_statement() {
 #[test]
 fn pp_to_main_and_to_a_routine_move_the_program_pointer() {
     let mut session = session();
-    let first = line_of(ROBOT, "reg1 := reg1 * 2");
+    let first = line_of(ROBOT, "reg1 := reg1 * scale");
     assert!(session.pp_to_routine("T_ROB1", "Helper").is_ok());
     assert_eq!(pp_line(&session, "T_ROB1"), first);
     assert!(session.start(StartFrom::Pointer).is_ok());
@@ -204,4 +208,45 @@ fn pp_to_main_and_to_a_routine_move_the_program_pointer() {
     assert_eq!(pp_line(&session, "T_ROB1"), line_of(ROBOT, "MoveJ p10"));
     assert_eq!(read(&mut session, "T_ROB1/MainModule/reg1"), "5");
     assert_eq!(read(&mut session, "T_ROB1/MainModule/here"), "[7,8,9]");
+}
+
+#[test]
+fn a_paced_clock_asks_the_caller_to_sleep_and_a_virtual_one_jumps() {
+    let program = "MODULE MainModule
+  VAR num done := 0;
+  PROC main()
+    WaitTime 0.5;
+    done := 1;
+  ENDPROC
+ENDMODULE
+";
+    // Virtual: the 0.5 s wait is jumped over at once.
+    let mut session = api_common::with_signals(program, &[], &[]);
+    assert!(session.start(StartFrom::Pointer).is_ok());
+    let wall = std::time::Instant::now();
+    assert_eq!(session.run_until(Until::Steps(10), 10), RunOutcome::Ended);
+    assert!(session.time() >= 0.5);
+    assert!(wall.elapsed().as_secs_f64() < 0.5);
+    // Paced ten times faster than real: the wait takes 0.05 s of wall-clock time, and
+    // `run` says how long to sleep instead of sleeping.
+    let mut session = api_common::with_signals(program, &[], &[]);
+    session.set_clock(rapid_controller::api::ClockPolicy::Paced { rate: 10.0 });
+    assert!(session.start(StartFrom::Pointer).is_ok());
+    let wall = std::time::Instant::now();
+    let mut sleeps = 0;
+    let end = loop {
+        match session.run(10) {
+            RunOutcome::Sleep(d) => {
+                assert!(d.as_secs_f64() <= 0.05 + 1e-9, "{d:?}");
+                sleeps += 1;
+                std::thread::sleep(d);
+            }
+            RunOutcome::Running => {}
+            other => break other,
+        }
+    };
+    assert_eq!(end, RunOutcome::Ended);
+    assert!(sleeps >= 1);
+    assert!(wall.elapsed().as_secs_f64() >= 0.05 - 0.002, "{:?}", wall.elapsed());
+    assert_eq!(read(&mut session, "T_ROB1/MainModule/done"), "1");
 }

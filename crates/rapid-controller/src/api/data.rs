@@ -8,8 +8,7 @@
 //! RAPID's rules for who may change what (§1.2 data kinds): a CONST is never written;
 //! VAR and PERS are. A global PERS written here is written in the shared store at once,
 //! so every task declaring it reads the new value at its next statement.
-// uncertain: routine data (a frame's locals) has no names at run time yet: reading
-// it is refused as not supported.
+// Routine data (a frame's locals) is read through `Session::frame_locals`.
 
 use rapid_vm::builtins::symsearch::{SymData, SymKind};
 use rapid_vm::value::{Record, Value};

@@ -20,7 +20,8 @@ const MAX_SLEEP: f64 = 60.0;
 /// How the controller clock moves while every task waits.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum ClockPolicy {
-    /// It jumps to the end of the wait (simulation as fast as the host computes).
+    /// It jumps to the end of the wait (simulation as fast as the host computes);
+    /// while a pendant dialog waits for the operator it follows the wall clock.
     Virtual,
     /// Waits take wall-clock time divided by `rate` (2.0: twice as fast as real).
     Paced { rate: f64 },
@@ -319,13 +320,29 @@ impl Session {
             .collect())
     }
 
-    /// The routine data (locals) of frame `frame` of task `task`'s call stack.
+    /// The parameters and routine data of frame `frame` of task `task`'s call stack
+    /// (0: the innermost, as [`Session::call_stack`] lists them), as (name, RAPID
+    /// literal text); an optional parameter not passed shows as `<not present>`, data
+    /// of a non-value type as `<no literal>`.
     pub fn frame_locals(&self, task: &str, frame: usize) -> Result<Vec<(String, String)>, ApiError> {
         let idx = self.task_index(task)?;
-        if frame >= self.controller.tasks[idx].loaded.vm.depth() {
-            return Err(ApiError::NotFound(format!("task {task} has no frame {frame}")));
-        }
-        Err(ApiError::Unsupported("reading routine data: it has no names at run time yet".into()))
+        let vm = &self.controller.tasks[idx].loaded.vm;
+        let locals = vm
+            .depth()
+            .checked_sub(frame + 1)
+            .and_then(|at| vm.frame_locals(at))
+            .ok_or_else(|| ApiError::NotFound(format!("task {task} has no frame {frame}")))?;
+        Ok(locals
+            .into_iter()
+            .map(|(name, value)| {
+                let text = match value {
+                    rapid_vm::value::Value::Absent => "<not present>".to_owned(),
+                    rapid_vm::value::Value::SwitchOn => "<present>".to_owned(),
+                    other => rapid_vm::builtins::value_literal(&other).unwrap_or_else(|| "<no literal>".to_owned()),
+                };
+                (name, text)
+            })
+            .collect())
     }
 
     /// Runs at most `budget` statements (all tasks together), moving the clock as
@@ -401,11 +418,17 @@ impl Session {
     fn wait(&mut self, seconds: f64, limit: f64) -> RunOutcome {
         let time = self.controller.time;
         let to = (time + seconds).min(limit).max(time);
+        // While a dialog waits for the operator, a person is part of the loop: the
+        // clock is the wall clock (a virtual clock would jump over the hour a dialog
+        // without \MaxTime polls in), as a run's clock is while a task talks to a socket.
+        let operator = self.pendant.pending().next().is_some();
         let rate = match self.clock {
-            ClockPolicy::Virtual => {
+            ClockPolicy::Virtual if !operator => {
+                self.anchor = None;
                 self.controller.advance(to - time);
                 return RunOutcome::Running;
             }
+            ClockPolicy::Virtual => 1.0,
             ClockPolicy::Paced { rate } if rate > 0.0 && rate.is_finite() => rate,
             ClockPolicy::Paced { .. } | ClockPolicy::Realtime => 1.0,
         };

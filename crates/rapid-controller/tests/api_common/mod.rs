@@ -28,7 +28,8 @@ pub(crate) const ROBOT: &str = "MODULE MainModule
     here := now.trans;
   ENDPROC
   PROC Helper()
-    reg1 := reg1 * 2;
+    VAR num scale := 2;
+    reg1 := reg1 * scale;
     reg1 := reg1 + 100;
   BACKWARD
     bwd := bwd + 1;
