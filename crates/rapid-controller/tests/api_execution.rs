@@ -250,3 +250,22 @@ ENDMODULE
     assert!(wall.elapsed().as_secs_f64() >= 0.05 - 0.002, "{:?}", wall.elapsed());
     assert_eq!(read(&mut session, "T_ROB1/MainModule/done"), "1");
 }
+
+#[test]
+fn a_stop_ends_a_step_over_at_the_next_statement() {
+    let mut session = session();
+    assert!(session.pp_to_routine("T_ROB1", "main").is_ok());
+    for _ in 0..2 {
+        assert!(session.step("T_ROB1", StepKind::Over).is_ok());
+        finish_step(&mut session);
+    }
+    assert_eq!(pp_line(&session, "T_ROB1"), line_of(ROBOT, "    Helper;"));
+    // Step over the call, but stop after its first statement: the call is entered
+    // (one statement run), and the step ends there, inside Helper.
+    assert!(session.step("T_ROB1", StepKind::Over).is_ok());
+    assert_eq!(session.run(1), RunOutcome::Running);
+    assert!(session.stop(StopKind::Stop).is_ok());
+    finish_step(&mut session);
+    assert_eq!(pp_line(&session, "T_ROB1"), line_of(ROBOT, "reg1 := reg1 * scale"));
+    assert_eq!(session.call_stack("T_ROB1").map(|s| s.len()), Ok(2));
+}

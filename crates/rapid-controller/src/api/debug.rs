@@ -95,6 +95,13 @@ impl Watch {
     pub(crate) fn is_active(&self) -> bool {
         !self.points.is_empty() || self.step.is_some()
     }
+
+    /// The step under way ends at its task's next statement (a front end's stop).
+    pub(crate) fn end_step(&mut self) {
+        if self.step.is_some() {
+            self.step_broken = true;
+        }
+    }
 }
 
 /// The 1-based line and character column of byte `offset` in `text`.

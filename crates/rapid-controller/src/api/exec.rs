@@ -71,8 +71,10 @@ pub struct TaskView {
     pub name: String,
     /// `NORMAL`, `STATIC` or `SEMISTATIC`.
     pub kind: &'static str,
-    /// `ready`, `waiting`, `ended…` (as in the stream).
+    /// `active` or how it ended (as in the stream).
     pub state: String,
+    /// It waits (a wait instruction, a move, a prompt) rather than computes.
+    pub waiting: bool,
     pub motion: bool,
 }
 
@@ -101,6 +103,7 @@ impl Session {
                     TaskKind::SemiStatic => "SEMISTATIC",
                 },
                 state: super::task_state_name(&t.state),
+                waiting: matches!(t.state, State::Waiting { .. }),
                 motion: t.spec.motion,
             })
             .collect()
@@ -162,8 +165,13 @@ impl Session {
     }
 
     /// Stops the running program: `Stop` and `Quick` at each NORMAL task's next
-    /// instruction (done when this returns), `Cycle` at the end of the cycle.
+    /// instruction (done when this returns), `Cycle` at the end of the cycle. A step
+    /// under way (a long step over) ends at its task's next statement instead.
     pub fn stop(&mut self, kind: StopKind) -> Result<(), ApiError> {
+        if matches!(self.controller.program_state(), ProgramState::Stepping { .. }) {
+            self.controller.watch.end_step();
+            return Ok(());
+        }
         if self.controller.program_state() != ProgramState::Running {
             return Err(ApiError::WrongState("the program is not running".into()));
         }

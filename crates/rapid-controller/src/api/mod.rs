@@ -228,9 +228,11 @@ impl Session {
             }
             self.seen.signals = changes.len();
         }
+        let pers_changed = c.pers.generation != self.seen.pers_generation;
         let mut pers: Vec<(String, String)> = c
             .pers
             .changed_since(self.seen.pers_generation)
+            .filter(|_| pers_changed)
             .map(|(name, value, _)| (name.to_owned(), rapid_vm::builtins::value_literal(value).unwrap_or_default()))
             .collect();
         pers.sort();
@@ -265,11 +267,12 @@ fn program_state_name(state: ProgramState) -> String {
     .to_owned()
 }
 
-/// A task's state as the stream names it.
+/// A task's state as the stream names it: `active` until it ends (whether it
+/// computes or waits changes every few statements; the program's state says whether
+/// it is stopped), then how it ended.
 fn task_state_name(state: &State) -> String {
     match state {
-        State::Ready => "ready".to_owned(),
-        State::Waiting { .. } => "waiting".to_owned(),
+        State::Ready | State::Waiting { .. } => "active".to_owned(),
         State::Ended(TaskEnd::Done) => "ended".to_owned(),
         State::Ended(TaskEnd::Stopped) => "ended: stopped".to_owned(),
         State::Ended(TaskEnd::CycleEnded) => "ended: cycle".to_owned(),

@@ -19,7 +19,8 @@ pub enum Change {
     Persistent { name: String, value: String },
     /// The program's state changed: `Running`, `Stopping`, `Stopped`, `Stepping`.
     Execution { state: String },
-    /// A task's state changed: `ready`, `waiting`, `ended: …`.
+    /// A task's state changed: `active`, or how it ended (`ended`, `ended: cycle`,
+    /// `ended: stopped`, `ended: halted`, `ended: ` and its error).
     Task { task: String, state: String },
     /// The program stopped at a breakpoint.
     Breakpoint { task: String, file: String, line: u32 },
