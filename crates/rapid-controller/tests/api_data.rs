@@ -101,6 +101,7 @@ fn a_persistent_written_while_running_is_read_by_the_other_task_and_a_prompt_wai
     assert_eq!(session.answer(prompts[0].id, "No"), Ok(()));
     assert_eq!(session.run_until(Until::Steps(100), 100), RunOutcome::Ended);
     assert_eq!(read(&mut session, "T_OTHER/Other/key"), "2");
+    assert_eq!(session.tp_screen(), ["key 2"]);
     assert!(session.prompts().is_empty());
     let changes = session.poll(sub).map(|b| b.changes).unwrap_or_default();
     let id = prompts[0].id;

@@ -137,6 +137,9 @@ impl Session {
 
     /// Starts the stopped program (every NORMAL task). A breakpoint on the statement
     /// a task stands on is passed.
+    // uncertain: the first start after boot runs the RESTART event routines (a start
+    // from where the PP stands, `Controller::start`), not START: the controller runs
+    // START for a start after PP to Main, which `StartFrom::Main` is.
     pub fn start(&mut self, from: StartFrom) -> Result<(), ApiError> {
         self.must_be_stopped()?;
         let started = match from {

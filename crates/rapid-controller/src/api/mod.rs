@@ -140,6 +140,12 @@ impl Session {
             .ok_or_else(|| ApiError::NotFound(format!("no task `{name}`")))
     }
 
+    /// The pendant's screen: the newest lines written (at most 100) since the last
+    /// TPErase, oldest first.
+    pub fn tp_screen(&self) -> Vec<String> {
+        self.pendant.screen.iter().cloned().collect()
+    }
+
     /// The dialogs waiting for the operator.
     pub fn prompts(&self) -> Vec<PendingPrompt> {
         self.pendant.pending().cloned().collect()

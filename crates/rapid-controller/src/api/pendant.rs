@@ -21,9 +21,14 @@ pub struct PendingPrompt {
     answer: Option<String>,
 }
 
+/// Lines the pendant's screen keeps (a front end that connects late sees them).
+const SCREEN_LINES: usize = 100;
+
 /// The front end's pendant: the [`Host`] the controller's tasks run with.
 #[derive(Debug, Default)]
 pub(crate) struct Pendant {
+    /// The newest lines written, oldest first, since the last TPErase.
+    pub(crate) screen: std::collections::VecDeque<String>,
     prompts: Vec<PendingPrompt>,
     next_id: u64,
     /// What happened on the pendant since the API last took it, in order.
@@ -55,10 +60,15 @@ impl Pendant {
 
 impl Host for Pendant {
     fn tp_write(&mut self, line: &str) {
+        if self.screen.len() == SCREEN_LINES {
+            self.screen.pop_front();
+        }
+        self.screen.push_back(line.to_owned());
         self.changes.push(Change::TpWrite { text: line.to_owned() });
     }
 
     fn tp_erase(&mut self) {
+        self.screen.clear();
         self.changes.push(Change::TpErase);
     }
 
