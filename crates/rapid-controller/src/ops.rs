@@ -616,6 +616,7 @@ fn trim(x: f64) -> String {
     text.trim_end_matches('0').trim_end_matches('.').to_owned()
 }
 
+mod api_hooks;
 mod step;
 #[cfg(test)]
 mod tests;

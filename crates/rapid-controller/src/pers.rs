@@ -103,6 +103,19 @@ impl PersStore {
         Ok(view)
     }
 
+    /// The global persistents changed after store generation `generation` (for a
+    /// front end's change stream): name as first declared, value, and the task whose
+    /// record types the value is numbered in. The variables of shared modules are left
+    /// out.
+    pub(crate) fn changed_since(&self, generation: u64) -> impl Iterator<Item = (&str, &Value, usize)> {
+        self.by_name
+            .iter()
+            .filter(|(key, _)| !key.starts_with("var "))
+            .map(|(_, &idx)| &self.entries[idx])
+            .filter(move |entry| entry.changed > generation)
+            .map(|entry| (entry.name.as_str(), &entry.value, entry.owner))
+    }
+
     /// Before task `task` runs: the changes made since it last looked, into its globals.
     pub(crate) fn copy_in(&self, task: usize, view: &mut TaskPers, vm: &mut rapid_vm::Vm, maps: &[Vec<TypeMap>]) {
         if view.seen == self.generation {

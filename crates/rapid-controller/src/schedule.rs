@@ -86,7 +86,7 @@ pub struct SystemStop {
 pub struct Controller {
     pub tasks: Vec<Task>,
     pub(crate) shared: Shared,
-    pers: PersStore,
+    pub(crate) pers: PersStore,
     /// `maps[a][b]`: renumbering of task a's record types into task b's.
     maps: Vec<Vec<TypeMap>>,
     /// The controller clock, seconds.
@@ -105,6 +105,9 @@ pub struct Controller {
     cycles_ended: Vec<u64>,
     /// Program stop and start, system inputs and outputs (`ops.rs`).
     pub(crate) ops: crate::ops::Operations,
+    /// Breakpoints and step targets of the front-end API (`api/debug.rs`); idle
+    /// unless a front end sets one.
+    pub(crate) watch: crate::api::debug::Watch,
 }
 
 impl Controller {
@@ -168,6 +171,7 @@ impl Controller {
             cycles: 1,
             cycles_ended,
             ops: crate::ops::Operations::default(),
+            watch: crate::api::debug::Watch::default(),
         })
     }
 
@@ -368,6 +372,10 @@ impl Controller {
             for idx in runnable {
                 if remaining == 0 {
                     break;
+                }
+                // API hook: a breakpoint where the task stands stops the program first.
+                if self.watch.is_active() && self.break_before(idx) {
+                    return SystemExit::Budget;
                 }
                 remaining -= 1;
                 self.step(idx, host);

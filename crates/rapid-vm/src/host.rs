@@ -15,6 +15,38 @@ pub trait Host {
     fn tp_answer(&mut self, _prompt: &str) -> Option<String> {
         None
     }
+    /// A dialog of task `prompt.task` waits for the operator: the answer now, or
+    /// [`PromptReply::Pending`] when a front end will answer later (the task waits and
+    /// asks again; the caller's thread is never blocked). By default the answer of
+    /// [`Host::tp_answer`], and no client when there is none.
+    fn tp_prompt(&mut self, prompt: &Prompt<'_>) -> PromptReply {
+        match self.tp_answer(prompt.text) {
+            Some(text) => PromptReply::Answer(text),
+            None => PromptReply::NoClient,
+        }
+    }
+    /// A dialog left [`PromptReply::Pending`] gave up waiting (`\MaxTime` ran out).
+    fn tp_prompt_closed(&mut self, _prompt: &Prompt<'_>) {}
+}
+
+/// A pendant dialog waiting for the operator (TPReadNum, TPReadFK, UI...).
+#[derive(Debug, Clone, Copy)]
+pub struct Prompt<'a> {
+    /// The task that shows it.
+    pub task: &'a str,
+    /// What the dialog shows.
+    pub text: &'a str,
+}
+
+/// What the pendant says to a dialog.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum PromptReply {
+    /// The operator's answer.
+    Answer(String),
+    /// Shown; no answer yet: the dialog waits (with `\MaxTime` at most that long).
+    Pending,
+    /// No pendant is connected (ERR_TP_NO_CLIENT, or ERR_TP_MAXTIME with `\MaxTime`).
+    NoClient,
 }
 
 /// A host that records pendant lines (for tests).

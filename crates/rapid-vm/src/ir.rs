@@ -326,6 +326,10 @@ pub struct Code {
     /// For the call sites of user routines and of ArgName: where each argument came
     /// from, in parameter order (positional for late calls), sorted by site index.
     pub arg_origins: Vec<(u32, Box<[ArgOrigin]>)>,
+    /// The names of the parameters and routine data with their local slots, as
+    /// declared (a debugger shows a frame's locals by them; loop variables and
+    /// temporaries have none).
+    pub local_names: Vec<(String, u32)>,
 }
 
 #[derive(Debug, Clone, PartialEq)]

@@ -24,7 +24,7 @@ use rustc_hash::FxHashMap;
 
 pub use exec::backward::{BackStep, BackwardRefusal};
 pub use exec::{Exit, Unhandled, Vm};
-pub use host::{Host, RecordingHost};
+pub use host::{Host, Prompt, PromptReply, RecordingHost};
 
 /// Why a program could not be loaded.
 #[derive(Debug)]

@@ -58,7 +58,8 @@ impl Controller {
             }
             _ => false,
         };
-        if !done {
+        // API hook: a step over or out goes on to its target depth.
+        if !done || !self.step_target_reached(task) {
             return;
         }
         self.ops.state = Some(ProgramState::Stopped);

@@ -34,6 +34,7 @@ mod strdig;
 mod strformat;
 mod strings;
 mod symbols;
+pub use strings::{read_literal, value_literal};
 pub use symbols::same_type;
 pub mod symsearch;
 pub(crate) mod syncmove;

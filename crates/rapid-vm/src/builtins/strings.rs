@@ -178,6 +178,25 @@ pub(super) fn val_to_str(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(text(s))
 }
 
+/// A value as RAPID literal text (ValToStr's syntax: records and arrays as
+/// aggregates), for front ends that read data; `None` for a value of a non-value
+/// type (clock, iodev…), which has no literal.
+pub fn value_literal(value: &Value) -> Option<String> {
+    match value {
+        Value::Num(_) | Value::Dnum(_) | Value::Bool(_) | Value::Str(_) => Some(literal(value)),
+        Value::Record(r) => r.fields.iter().all(|f| value_literal(f).is_some()).then(|| literal(value)),
+        Value::Array(a) => a.elems.iter().all(|e| value_literal(e).is_some()).then(|| literal(value)),
+        _ => None,
+    }
+}
+
+/// Reads RAPID literal text shaped like `template` (StrToVal's reader): the value, or
+/// `None` when the text is no literal of the template's type (or has more after it).
+pub fn read_literal(text: &str, template: &Value) -> Option<Value> {
+    let mut reader = LiteralReader { chars: text.chars().collect(), pos: 0 };
+    reader.value_like(template).filter(|_| reader.at_end())
+}
+
 fn literal(value: &Value) -> String {
     use crate::format::{aggregate_to_text, bool_to_text, dnum_to_text, num_to_text, string_to_literal};
     match value {

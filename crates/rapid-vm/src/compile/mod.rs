@@ -401,6 +401,7 @@ impl<'p> RoutineCompiler<'p> {
             let kind = LocalKind::Param { mode: param.mode, optional: param.optional };
             let local = self.new_local(ty, [0; 3], param.rank, kind);
             self.locals.insert(param.name.sym, local);
+            self.code.local_names.push((param.name.span.text(self.text).to_owned(), local.slot));
             let by_ref = param.mode != ParamMode::In;
             self.code.param_by_ref.push(by_ref);
             self.code.param_likes.push(if by_ref { None } else { numeric_like(self.prog, ty, param.rank) });
@@ -423,6 +424,7 @@ impl<'p> RoutineCompiler<'p> {
         }
         let local = self.new_local(ty, dims, rank, LocalKind::Data);
         self.locals.insert(decl.name.sym, local);
+        self.code.local_names.push((decl.name.span.text(self.text).to_owned(), local.slot));
         if let Some(init) = decl.init {
             self.expr(arena, init, Some((ty, dims)))?;
             self.code.emit(Instr::StoreLocal(local.slot));

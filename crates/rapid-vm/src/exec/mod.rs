@@ -12,6 +12,7 @@ pub mod backward;
 mod call;
 mod fast;
 mod frames;
+pub mod inspect;
 mod interrupts;
 mod io;
 mod kernel;

@@ -66,6 +66,16 @@ impl SymSearchState {
         SymSearchState { modules, data, search: None }
     }
 
+    /// The task's module names, by index.
+    pub fn modules(&self) -> &[String] {
+        &self.modules
+    }
+
+    /// The task's module-level data, in declaration order.
+    pub fn data(&self) -> &[SymData] {
+        &self.data
+    }
+
     /// Forgets the current search (PP to Main).
     // uncertain: whether the controller keeps a search across PP to Main is not
     // public; a new run starts without one here.
