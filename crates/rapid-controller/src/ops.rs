@@ -316,6 +316,11 @@ impl Controller {
         true
     }
 
+    /// Whether the motors are on.
+    pub fn motors_on(&self) -> bool {
+        !self.ops.motors_off
+    }
+
     /// Motors on (true) or off. Motors off stops a running program.
     // uncertain: motors off while the program runs stops it as a quick stop would
     // (the robot cannot move); the controller logs more than we do.

@@ -12,11 +12,13 @@
 //!
 //! Modules: `debug` (breakpoints, steps, locations), `data` (data and signals by
 //! name), `pendant` (the `Host` the tasks run with), `stream` (subscriptions),
-//! `exec` (run, clock policies, start/stop, program pointers, call stacks).
+//! `exec` (run, clock policies, start/stop, program pointers, call stacks), `panel`
+//! (motors, run mode, the robots' positions, the file devices' folder).
 
 pub mod data;
 pub mod debug;
 mod exec;
+pub mod panel;
 pub mod pendant;
 pub mod stream;
 
@@ -25,6 +27,7 @@ use std::fmt;
 pub use data::{DataInfo, DataValue};
 pub use debug::{BreakpointHit, Location, StepKind};
 pub use exec::{ClockPolicy, RunOutcome, StackFrame, StartFrom, TaskView, Until};
+pub use panel::MechUnitView;
 pub use pendant::PendingPrompt;
 pub use stream::{Batch, Change, Subscription};
 
