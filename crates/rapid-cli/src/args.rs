@@ -18,8 +18,33 @@ pub(crate) enum Command {
     Check(CheckArgs),
     /// Run a RAPID program (or every task of a backup) on the virtual controller.
     Run(Box<RunArgs>),
+    /// Serve the virtual controller over Robot Web Services (RWS 1.0, RobotWare 6).
+    Serve(ServeArgs),
     /// List every diagnostic code with its severity and meaning.
     Codes,
+}
+
+#[derive(Debug, Args)]
+pub(crate) struct ServeArgs {
+    /// Where to listen (default 127.0.0.1:80, RobotWare's port).
+    #[arg(long, value_name = "HOST:PORT")]
+    pub(crate) bind: Option<String>,
+
+    /// The clock is the wall clock, computing included.
+    #[arg(long, conflicts_with = "speed")]
+    pub(crate) realtime: bool,
+
+    /// Waits take 1/N of their wall-clock time (default 1: paced to the wall clock).
+    #[arg(long, value_name = "N")]
+    pub(crate) speed: Option<f64>,
+
+    /// More users, one `name:password` a line, besides "Default User"/"robotics".
+    #[arg(long, value_name = "FILE")]
+    pub(crate) users: Option<PathBuf>,
+
+    /// The program: as for `rapid run`.
+    #[arg(required = true)]
+    pub(crate) paths: Vec<PathBuf>,
 }
 
 #[derive(Debug, Args)]

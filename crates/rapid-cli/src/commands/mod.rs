@@ -4,6 +4,7 @@ mod check;
 mod codes;
 mod run;
 mod run_system;
+mod serve;
 mod system;
 
 use std::process::ExitCode;
@@ -42,6 +43,7 @@ pub(crate) fn run(cli: Cli) -> anyhow::Result<ExitStatus> {
             crate::interrupt::install();
             run::run(&args)
         }
+        Command::Serve(args) => serve::run(&args),
         Command::Codes => codes::run(),
     }
 }

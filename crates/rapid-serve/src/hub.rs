@@ -1,0 +1,305 @@
+//! Subscriptions: `POST /subscription` names resources (`resources=1&1=/rw/…&1-p=1`),
+//! the answer (201) links `ws://HOST/poll/{id}`, and a websocket on that address
+//! (subprotocol `robapi2_subscription`, which clients insist is echoed) receives one
+//! XHTML document per event, each on one line (the Python client's regexes do not
+//! cross lines).
+//!
+//! Events come from the controller thread on a broadcast channel: a slow websocket
+//! never holds the controller up; one that falls more than the channel's capacity
+//! behind is closed (code 1011, "events lost"), so a lost event is never silent.
+
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
+
+use axum::extract::ws::{CloseFrame, Message, WebSocket};
+use rapid_controller::api::Change;
+use tokio::sync::broadcast;
+
+use crate::model::{escape, escape_text, number, xhtml_head, RwsError, XHTML_TAIL};
+
+/// Subscriptions kept at most (RobotWare limits them per controller too).
+const MAX_SUBSCRIPTIONS: usize = 256;
+/// Resources one subscription may name.
+const MAX_RESOURCES: usize = 100;
+/// How often a websocket checks that its subscription still exists.
+const CHECK: Duration = Duration::from_secs(1);
+
+/// Something that happened, as the controller thread reports it.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Event {
+    Signal { name: String, value: String },
+    Persistent { name: String, value: String },
+    Execution { state: String },
+    CtrlState { state: String },
+    OpMode { mode: String },
+    Elog { seq: u64 },
+}
+
+impl Event {
+    /// The event a change of the controller's stream makes, if RWS has one.
+    pub(crate) fn of_change(change: &Change) -> Option<Event> {
+        match change {
+            Change::Signal { name, value, .. } => Some(Event::Signal { name: name.clone(), value: number(*value) }),
+            Change::Persistent { name, value } => Some(Event::Persistent { name: name.clone(), value: value.clone() }),
+            // Execution state and event-log entries are told by the core (RWS's own
+            // names and numbering); the rest has no RWS resource.
+            _ => None,
+        }
+    }
+}
+
+/// A resource a subscription names.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Resource {
+    CtrlState,
+    OpMode,
+    Execution,
+    /// `/rw/rapid/symbol/data/RAPID/{task}[/{module}]/{name}`: the path (without
+    /// `;value`) and the datum's name.
+    Persistent {
+        path: String,
+        name: String,
+    },
+    /// `/rw/iosystem/signals/[{network}/{device}/]{name}`: the path and the name.
+    Signal {
+        path: String,
+        name: String,
+    },
+    /// `/rw/elog/{domain}`.
+    Elog {
+        domain: u32,
+    },
+}
+
+impl Resource {
+    /// Parses a resource and checks its priority (2, high, only for signals and
+    /// persistents, as the RWS manual says).
+    pub(crate) fn parse(text: &str, priority: u8) -> Result<Resource, RwsError> {
+        let resource = match text.trim() {
+            "/rw/panel/ctrlstate" => Resource::CtrlState,
+            "/rw/panel/opmode" => Resource::OpMode,
+            "/rw/rapid/execution;ctrlexecstate" => Resource::Execution,
+            other => Resource::parse_named(other)
+                .ok_or_else(|| RwsError::bad_request(format!("`{other}` is no resource one can subscribe to")))?,
+        };
+        let high_allowed = matches!(resource, Resource::Signal { .. } | Resource::Persistent { .. });
+        match priority {
+            0 | 1 => Ok(resource),
+            2 if high_allowed => Ok(resource),
+            2 => Err(RwsError::bad_request(format!("`{text}`: high priority is for signals and persistents only"))),
+            _ => Err(RwsError::bad_request(format!("`{text}`: the priority must be 0, 1 or 2"))),
+        }
+    }
+
+    fn parse_named(text: &str) -> Option<Resource> {
+        if let Some(path) = text.strip_suffix(";value") {
+            let rest = path.strip_prefix("/rw/rapid/symbol/data/RAPID/")?;
+            let parts: Vec<&str> = rest.split('/').collect();
+            if !(2..=3).contains(&parts.len()) || parts.iter().any(|p| p.is_empty()) {
+                return None;
+            }
+            return Some(Resource::Persistent { path: path.to_owned(), name: parts[parts.len() - 1].to_owned() });
+        }
+        if let Some(path) = text.strip_suffix(";state") {
+            let rest = path.strip_prefix("/rw/iosystem/signals/")?;
+            let parts: Vec<&str> = rest.split('/').collect();
+            if !(parts.len() == 1 || parts.len() == 3) || parts.iter().any(|p| p.is_empty()) {
+                return None;
+            }
+            return Some(Resource::Signal { path: path.to_owned(), name: parts[parts.len() - 1].to_owned() });
+        }
+        let domain = text.strip_prefix("/rw/elog/")?.trim_end_matches('/');
+        Some(Resource::Elog { domain: domain.parse().ok()? })
+    }
+
+    /// The `<li>` this resource shows `event` as, if it is about it.
+    fn li(&self, event: &Event) -> Option<String> {
+        match (self, event) {
+            (Resource::Signal { path, name }, Event::Signal { name: n, value }) if name.eq_ignore_ascii_case(n) => {
+                Some(format!(
+                    "<li class=\"ios-signalstate-ev\" title=\"{t}\"><a href=\"{t};state\" rel=\"self\"/>\
+                     <span class=\"lvalue\">{v}</span><span class=\"lstate\">not simulated</span>\
+                     <span class=\"quality\">good</span></li>",
+                    t = escape(path),
+                    v = escape_text(value)
+                ))
+            }
+            (Resource::Persistent { path, name }, Event::Persistent { name: n, value })
+                if name.eq_ignore_ascii_case(n) =>
+            {
+                // The RWS manual's event names the datum (rap-value-ev); the Python
+                // client reads its value from a `rap-data` item on the same line.
+                Some(format!(
+                    "<li class=\"rap-value-ev\" title=\"{t}\"><a href=\"{t};value\" rel=\"self\"/></li>\
+                     <li class=\"rap-data\" title=\"{t}\"><span class=\"value\">{v}</span></li>",
+                    t = escape(path),
+                    v = escape_text(value)
+                ))
+            }
+            (Resource::Execution, Event::Execution { state }) => Some(format!(
+                "<li class=\"rap-ctrlexecstate-ev\" title=\"ctrlexecstate\">\
+                 <a href=\"/rw/rapid/execution;ctrlexecstate\" rel=\"self\"/>\
+                 <span class=\"ctrlexecstate\">{state}</span></li>"
+            )),
+            (Resource::CtrlState, Event::CtrlState { state }) => Some(format!(
+                "<li class=\"pnl-ctrlstate-ev\" title=\"ctrlstate\"><a href=\"/rw/panel/ctrlstate\" rel=\"self\"/>\
+                 <span class=\"ctrlstate\">{state}</span></li>"
+            )),
+            (Resource::OpMode, Event::OpMode { mode }) => Some(format!(
+                "<li class=\"pnl-opmode-ev\" title=\"opmode\"><a href=\"/rw/panel/opmode\" rel=\"self\"/>\
+                 <span class=\"opmode\">{mode}</span></li>"
+            )),
+            (Resource::Elog { domain }, Event::Elog { seq }) => Some(format!(
+                "<li class=\"elog-message-ev\" title=\"message\"><a href=\"/rw/elog/{domain}/{seq}\" rel=\"self\"/>\
+                 <span class=\"seqnum\">{seq}</span></li>"
+            )),
+            _ => None,
+        }
+    }
+}
+
+/// The subscriptions by id.
+#[derive(Debug, Default)]
+pub(crate) struct Hub {
+    subs: Mutex<Subs>,
+}
+
+#[derive(Debug, Default)]
+struct Subs {
+    next: u64,
+    by_id: HashMap<u64, Arc<Vec<Resource>>>,
+}
+
+impl Hub {
+    fn lock(&self) -> std::sync::MutexGuard<'_, Subs> {
+        self.subs.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
+    }
+
+    /// A new subscription; its id.
+    pub(crate) fn add(&self, resources: Vec<Resource>) -> Result<u64, RwsError> {
+        if resources.is_empty() || resources.len() > MAX_RESOURCES {
+            return Err(RwsError::bad_request(format!("a subscription names 1 to {MAX_RESOURCES} resources")));
+        }
+        let mut subs = self.lock();
+        if subs.by_id.len() >= MAX_SUBSCRIPTIONS {
+            return Err(RwsError::busy(format!("too many subscriptions ({MAX_SUBSCRIPTIONS})")));
+        }
+        subs.next += 1;
+        let id = subs.next;
+        subs.by_id.insert(id, Arc::new(resources));
+        Ok(id)
+    }
+
+    pub(crate) fn get(&self, id: u64) -> Option<Arc<Vec<Resource>>> {
+        self.lock().by_id.get(&id).cloned()
+    }
+
+    pub(crate) fn remove(&self, id: u64) -> bool {
+        self.lock().by_id.remove(&id).is_some()
+    }
+}
+
+/// The XHTML document a subscription's websocket gets for `event`, if any of its
+/// resources is about it: one line.
+pub(crate) fn render_event(id: u64, host: &str, resources: &[Resource], event: &Event) -> Option<String> {
+    let lis: String = resources.iter().filter_map(|r| r.li(event)).collect();
+    if lis.is_empty() {
+        return None;
+    }
+    Some(format!(
+        "{}<div class=\"state\"><a href=\"http://{h}/subscription/{id}\" rel=\"group\"></a><ul>{lis}</ul></div>{}",
+        xhtml_head("Event"),
+        XHTML_TAIL,
+        h = escape(host)
+    ))
+}
+
+/// The body of `POST /subscription`'s answer: the poll link the clients look for
+/// (`<a href="ws://…/poll/N" rel="self">`).
+pub(crate) fn created_body(id: u64, host: &str) -> String {
+    let h = escape(host);
+    format!(
+        "{}<div class=\"state\"><a href=\"http://{h}/subscription/{id}\" rel=\"group\"></a>\
+         <a href=\"ws://{h}/poll/{id}\" rel=\"self\"></a></div>{}",
+        xhtml_head("Event"),
+        XHTML_TAIL
+    )
+}
+
+/// Serves one websocket: the subscription's events until the client goes, the
+/// subscription is deleted, or the client falls too far behind.
+pub(crate) async fn pump(
+    mut socket: WebSocket,
+    hub: Arc<Hub>,
+    id: u64,
+    host: String,
+    mut events: broadcast::Receiver<Event>,
+) {
+    let Some(resources) = hub.get(id) else { return };
+    let mut check = tokio::time::interval(CHECK);
+    loop {
+        tokio::select! {
+            event = events.recv() => match event {
+                Ok(event) => {
+                    if let Some(text) = render_event(id, &host, &resources, &event) {
+                        if socket.send(Message::Text(text.into())).await.is_err() {
+                            return;
+                        }
+                    }
+                }
+                Err(broadcast::error::RecvError::Lagged(n)) => {
+                    let reason = format!("{n} events lost: the client read too slowly");
+                    let _ = socket.send(Message::Close(Some(CloseFrame { code: 1011, reason: reason.into() }))).await;
+                    return;
+                }
+                Err(broadcast::error::RecvError::Closed) => return,
+            },
+            incoming = socket.recv() => match incoming {
+                Some(Ok(Message::Close(_))) | None | Some(Err(_)) => return,
+                Some(Ok(_)) => {}
+            },
+            _ = check.tick() => {
+                if hub.get(id).is_none() {
+                    let _ = socket.send(Message::Close(None)).await;
+                    return;
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn resources_and_priorities() {
+        assert_eq!(Resource::parse("/rw/panel/ctrlstate", 1).unwrap(), Resource::CtrlState);
+        assert!(Resource::parse("/rw/panel/ctrlstate", 2).is_err());
+        let signal = Resource::parse("/rw/iosystem/signals/Local/DRV_1/di1;state", 2).unwrap();
+        assert_eq!(
+            signal,
+            Resource::Signal { path: "/rw/iosystem/signals/Local/DRV_1/di1".into(), name: "di1".into() }
+        );
+        let pers = Resource::parse("/rw/rapid/symbol/data/RAPID/T_ROB1/count;value", 1).unwrap();
+        assert!(matches!(pers, Resource::Persistent { ref name, .. } if name == "count"));
+        assert_eq!(Resource::parse("/rw/elog/0", 1).unwrap(), Resource::Elog { domain: 0 });
+        assert!(Resource::parse("/rw/nothing", 1).is_err());
+        assert!(Resource::parse("/rw/iosystem/signals/a/b;state", 1).is_err());
+    }
+
+    #[test]
+    fn an_event_is_one_line_the_python_client_parses() {
+        let resources = vec![Resource::parse("/rw/iosystem/signals/Local/DRV_1/di1;state", 1).unwrap()];
+        let event = Event::Signal { name: "DI1".into(), value: "1".into() };
+        let text = render_event(3, "127.0.0.1:80", &resources, &event).unwrap();
+        assert!(!text.contains('\n'));
+        assert!(text.contains("<li class=\"ios-signalstate-ev\""));
+        assert!(text.contains("<a href=\"/rw/iosystem/signals/Local/DRV_1/di1;state\" rel=\"self\"/>"));
+        assert!(text.contains("<span class=\"lvalue\">1</span>"));
+        let other = Event::Signal { name: "di2".into(), value: "1".into() };
+        assert_eq!(render_event(3, "h", &resources, &other), None);
+        assert!(created_body(7, "h:1").contains("<a href=\"ws://h:1/poll/7\" rel=\"self\">"));
+    }
+}
