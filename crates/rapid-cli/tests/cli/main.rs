@@ -39,6 +39,7 @@ mod robot_numbers;
 mod run;
 mod save_pers;
 mod search;
+mod serve;
 mod sockets;
 mod sockets_system;
 mod stepbwd;
