@@ -86,10 +86,7 @@ pub(crate) fn run(args: &ServeArgs) -> anyhow::Result<ExitStatus> {
 
 /// Builds the session on the controller thread; the module files go to `modules` for
 /// the save at the end.
-fn boot_closure(
-    paths: Vec<PathBuf>,
-    modules: Arc<Mutex<Vec<SourceInput>>>,
-) -> rapid_serve::BuildSession {
+fn boot_closure(paths: Vec<PathBuf>, modules: Arc<Mutex<Vec<SourceInput>>>) -> rapid_serve::BuildSession {
     Box::new(move || {
         let (controller, files) = assemble_one_task(&paths)?;
         if let Ok(mut kept) = modules.lock() {
