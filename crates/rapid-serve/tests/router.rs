@@ -343,3 +343,35 @@ async fn a_subscription_answers_with_its_websocket_address() {
         server.send(Request::delete("/subscription/1").header("cookie", &cookie).body(Body::empty()).unwrap()).await;
     assert_eq!(deleted.status(), StatusCode::NO_CONTENT);
 }
+
+#[tokio::test]
+async fn symbol_properties_tasks_and_the_run_mode() {
+    let server = Server::new("small");
+    let cookie = server.login().await;
+    let props = "/rw/rapid/symbol/properties/RAPID/T_ROB1/MainModule/limit?json=1";
+    assert_eq!(state_field(&server, props, &cookie, "symtyp").await, "con");
+    assert_eq!(state_field(&server, props, &cookie, "rdonly").await, "true");
+    assert_eq!(
+        state_field(&server, "/rw/rapid/symbol/properties/RAPID/T_ROB1/here?json=1", &cookie, "dattyp").await,
+        "pos"
+    );
+    let setcycle = server.send(post("/rw/rapid/execution?action=setcycle&json=1", &cookie, "cycle=once")).await;
+    assert_eq!(setcycle.status(), StatusCode::NO_CONTENT);
+    assert_eq!(state_field(&server, "/rw/rapid/execution?json=1", &cookie, "cycle").await, "once");
+    let tasks = json_of(server.send(get("/rw/rapid/tasks?json=1", Some(&cookie))).await).await;
+    let task = &tasks["_embedded"]["_state"][0];
+    assert_eq!(
+        (task["name"].as_str(), task["type"].as_str(), task["excstate"].as_str()),
+        (Some("T_ROB1"), Some("normal"), Some("stopped"))
+    );
+    // PP at main, on its first statement (line 7 of PROGRAM, column 5).
+    let pcp = "/rw/rapid/tasks/T_ROB1/pcp?json=1";
+    assert_eq!(state_field(&server, pcp, &cookie, "routinename").await, "main");
+    assert_eq!(state_field(&server, pcp, &cookie, "beginposition").await, "7,5");
+    assert_eq!(state_field(&server, "/ctrl/$RAMDISK?json=1", &cookie, "_value").await, "$RAMDISK");
+    let signals = json_of(server.send(get("/rw/iosystem/signals?json=1", Some(&cookie))).await).await;
+    let names: Vec<&str> =
+        signals["_embedded"]["_state"].as_array().unwrap().iter().filter_map(|s| s["name"].as_str()).collect();
+    assert_eq!(names, ["di1", "do1"]);
+    assert_eq!(state_field(&server, "/rw/iosystem/signals/di1?json=1", &cookie, "type").await, "DI");
+}

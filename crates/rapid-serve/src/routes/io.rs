@@ -31,6 +31,21 @@ pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
             let signals = app.controller.call(|core| signals(&core.session, None)).await?;
             Ok(Reply::Items { base: BASE.into(), items: signals.iter().map(|s| item(s, "ios-signal-li")).collect() })
         }
+        ["devices"] if req.is(Method::GET) => {
+            let signals = app.controller.call(|core| signals(&core.session, None)).await?;
+            let mut devices: Vec<String> = signals.into_iter().filter_map(|s| s.device).collect();
+            devices.sort();
+            devices.dedup();
+            let items = devices
+                .into_iter()
+                .map(|d| Item::new("ios-device-li", &format!("Local/{d}")).with("name", d).with("lstate", "running"))
+                .collect();
+            Ok(Reply::Items { base: BASE.into(), items })
+        }
+        ["networks"] if req.is(Method::GET) => {
+            let item = Item::new("ios-network-li", "Local").with("name", "Local").with("lstate", "running");
+            Ok(Reply::Items { base: BASE.into(), items: vec![item] })
+        }
         ["signals", name] | ["signals", _, _, name] => {
             let name = name.strip_suffix(";state").unwrap_or(name).to_owned();
             signal(app, req, name).await

@@ -28,6 +28,9 @@ pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
         ["symbol", "data", "RAPID", path @ ..] if (2..=3).contains(&path.len()) => {
             symbol_data(app, req, path.join("/")).await
         }
+        ["symbol", "properties", "RAPID", path @ ..] if (2..=3).contains(&path.len()) && req.is(Method::GET) => {
+            properties(app, path.iter().map(|p| (*p).to_owned()).collect()).await
+        }
         ["symbols"] if req.action() == Some("search-symbols") && req.is(Method::POST) => search_symbols(app, req).await,
         ["modules"] if req.is(Method::GET) => modules(app, req).await,
         _ => Err(not_found(req)),
@@ -55,6 +58,20 @@ async fn execution(app: &Arc<App>, req: &Req) -> Res {
                 other => return Err(RwsError::bad_request(format!("stopmode `{other}`: stop, qstop, cycle or instr"))),
             };
             app.controller.call(move |core| stop(core, kind)).await??;
+            Ok(Reply::NoContent)
+        }
+        (Some("setcycle"), &Method::POST) => {
+            let (cycles, name) = match req.need("cycle")? {
+                "once" => (1, "once"),
+                "forever" => (0, "forever"),
+                other => return Err(RwsError::bad_request(format!("cycle `{other}`: once or forever"))),
+            };
+            app.controller
+                .call(move |core| {
+                    core.session.set_cycles(cycles);
+                    core.cycle = name.to_owned();
+                })
+                .await?;
             Ok(Reply::NoContent)
         }
         (Some("resetpp"), &Method::POST) => {
@@ -286,20 +303,7 @@ async fn search_symbols(app: &Arc<App>, req: &Req) -> Res {
                     if !in_module || !kinds.contains(&d.kind) {
                         continue;
                     }
-                    let (class, symtyp) = match d.kind {
-                        "PERS" => ("rap-symproppers", "per"),
-                        "VAR" => ("rap-sympropvar", "var"),
-                        _ => ("rap-sympropconstant", "con"),
-                    };
-                    let url = format!("RAPID/{task}/{}/{}", d.module, d.name);
-                    items.push(
-                        Item::new(class, &url)
-                            .with("symburl", url.clone())
-                            .with("name", d.name)
-                            .with("symtyp", symtyp)
-                            .with("dattyp", d.type_name)
-                            .with("local", if d.local { "true" } else { "false" }),
-                    );
+                    items.push(symbol_item(&task, &d));
                 }
             }
             Ok::<_, RwsError>(items)
@@ -325,4 +329,47 @@ async fn modules(app: &Arc<App>, req: &Req) -> Res {
         })
         .await??;
     Ok(Reply::Items { base: BASE.into(), items })
+}
+
+/// A datum as symbol search and symbol properties show it.
+fn symbol_item(task: &str, d: &rapid_controller::api::DataInfo) -> Item {
+    let (class, symtyp) = match d.kind {
+        "PERS" => ("rap-symproppers", "per"),
+        "VAR" => ("rap-sympropvar", "var"),
+        _ => ("rap-sympropconstant", "con"),
+    };
+    let url = format!("RAPID/{task}/{}/{}", d.module, d.name);
+    Item::new(class, &url)
+        .with("symburl", url.clone())
+        .with("name", d.name.clone())
+        .with("symtyp", symtyp)
+        .with("dattyp", d.type_name.clone())
+        .with("local", if d.local { "true" } else { "false" })
+        .with("rdonly", if d.kind == "CONST" { "true" } else { "false" })
+}
+
+/// `GET /rw/rapid/symbol/properties/RAPID/{task}[/{module}]/{name}`: a datum's kind,
+/// type and module.
+async fn properties(app: &Arc<App>, path: Vec<String>) -> Res {
+    let item = app
+        .controller
+        .call(move |core| {
+            let (task, module, name) = match path.as_slice() {
+                [task, name] => (task, None, name),
+                [task, module, name] => (task, Some(module), name),
+                _ => return Err(RwsError::bad_request("RAPID/TASK[/MODULE]/NAME")),
+            };
+            let data = core.session.list_data(task).map_err(|e| RwsError::from_api(&e))?;
+            let found = data.iter().find(|d| {
+                d.name.eq_ignore_ascii_case(name)
+                    && match module {
+                        Some(m) => d.module.eq_ignore_ascii_case(m),
+                        None => !d.local,
+                    }
+            });
+            let d = found.ok_or_else(|| RwsError::not_found(format!("no data `{name}` in task {task}")))?;
+            Ok(symbol_item(task, d))
+        })
+        .await??;
+    Ok(Reply::Items { base: BASE.into(), items: vec![item] })
 }

@@ -41,6 +41,11 @@ pub(crate) struct Dipc {
 pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
     let segs: Vec<&str> = req.segs.iter().map(String::as_str).collect();
     match (segs.as_slice(), req.action(), &req.method) {
+        // abb_librws registers itself as a local or remote user.
+        (["users"], None, &Method::POST) => {
+            req.need("username")?;
+            Ok(Reply::Created { location: None, body: None })
+        }
         (["users", "rmmp"], None, &Method::POST) => match req.need("privilege")? {
             "modify" | "exec" => Ok(Reply::NoContent),
             other => Err(RwsError::bad_request(format!("privilege `{other}`: modify or exec"))),
