@@ -7,6 +7,7 @@
 //!
 //! No IO of its own: output and operator input go through the `Host` the caller gives.
 
+mod alone;
 pub mod ops;
 pub mod pers;
 pub mod schedule;

@@ -97,6 +97,12 @@ pub struct Controller {
     pub system_stop: Option<SystemStop>,
     /// Each task's STOP event routines, run when it stops (by index).
     pub stop_routines: Vec<Vec<String>>,
+    /// The STOP event routine in which a task failed (its index, the routine), when one
+    /// did: its error is the task's [`TaskEnd::Failed`].
+    pub failed_stop_routine: Option<(usize, String)>,
+    /// A task run alone (`alone.rs`): the instructions executed when the clock was last
+    /// charged for computing.
+    pub(crate) charged: Option<u64>,
     /// Instructions run since the last NORMAL task ended.
     drained: u64,
     /// Run mode: the cycles each NORMAL task runs (1: cycle mode; 0: continuous
@@ -164,6 +170,8 @@ impl Controller {
             steps: 0,
             system_stop: None,
             stop_routines,
+            failed_stop_routine: None,
+            charged: None,
             drained: 0,
             cycles: 1,
             cycles_ended,
@@ -238,9 +246,17 @@ impl Controller {
         outcome
     }
 
+    /// Hands the state the tasks share (the I/O system, the stimulus, the task list) to
+    /// task `idx`'s VM, or takes it back when called again: what runs on the task
+    /// outside [`Controller::run`] (finishing its robot's last moves, which set
+    /// outputs and bring the I/O system to the end of the motion) sees the system.
+    pub fn exchange_shared_with(&mut self, idx: usize) {
+        self.tasks[idx].loaded.vm.exchange_shared(&mut self.shared);
+    }
+
     /// Answers the request a task made of the controller (another task's data or
     /// robot), if one waits; the asking task is woken to read the reply.
-    fn serve_request(&mut self, host: &mut dyn Host) {
+    pub(crate) fn serve_request(&mut self, host: &mut dyn Host) {
         use rapid_vm::builtins::tasking::{OtherRobotState, Reply, Request};
         let Some((who, request)) = self.shared.tasking.request.take() else { return };
         let reply = match request {
@@ -344,7 +360,12 @@ impl Controller {
     }
 
     /// Runs at most `budget` basic steps (statements), all tasks together.
+    /// A task run alone ([`Controller::runs_alone`]) counts instructions rather than
+    /// statements, as its VM runs in slices.
     pub fn run(&mut self, host: &mut dyn Host, budget: u64) -> SystemExit {
+        if self.runs_alone() {
+            return self.run_alone(host, budget);
+        }
         let mut remaining = budget;
         while remaining > 0 {
             self.operate(host);
@@ -472,10 +493,11 @@ impl Controller {
 
     /// The STOP event routines of a task that stopped (EVENT_STOP, 3); an error in
     /// one is the task's failure.
-    fn run_stop_routines(&mut self, idx: usize, host: &mut dyn Host) {
+    pub(crate) fn run_stop_routines(&mut self, idx: usize, host: &mut dyn Host) {
         for routine in self.stop_routines[idx].clone() {
             if let Err(unhandled) = self.run_event_routine(idx, host, &routine, 3) {
                 self.tasks[idx].state = State::Ended(TaskEnd::Failed(unhandled));
+                self.failed_stop_routine = Some((idx, routine));
                 return;
             }
         }
@@ -486,7 +508,7 @@ impl Controller {
     /// entry routine again. EXIT ends a task for good (no restart is allowed).
     // uncertain: STATIC and SEMISTATIC tasks run in continuous mode on the controller,
     // so the end of main starts main again rather than stopping the task.
-    fn cycle_end(&mut self, idx: usize, end: TaskEnd) -> State {
+    pub(crate) fn cycle_end(&mut self, idx: usize, end: TaskEnd) -> State {
         let task = &mut self.tasks[idx];
         if task.loaded.vm.ended_by_exit() {
             return State::Ended(end);
@@ -507,7 +529,7 @@ impl Controller {
 
     /// A task ended: the others see it no longer executing; a static task's stop
     /// applies its trust level.
-    fn after_end(&mut self, idx: usize) {
+    pub(crate) fn after_end(&mut self, idx: usize) {
         self.ops.outputs_stale = true;
         let name = self.tasks[idx].spec.name.clone();
         self.shared.tasking.set_executing(&name, false);
@@ -529,7 +551,7 @@ impl Controller {
 
     /// Everything a waiting task may be waiting for: signal changes, sync points,
     /// semaphores and shared persistents.
-    fn epoch(&self) -> u64 {
+    pub(crate) fn epoch(&self) -> u64 {
         self.shared.io.change_count() as u64 + self.shared.tasking.epoch + self.pers.generation
     }
 

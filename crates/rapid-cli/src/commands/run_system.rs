@@ -1,10 +1,13 @@
-//! `rapid run BACKUP` for a system of several tasks (SYS.cfg `CAB_TASKS`): every task
-//! is loaded from its `RAPID/TASKn` folder, and the controller runs them
-//! pseudo-parallel (`rapid_controller`), sharing the I/O system and the global
-//! persistents. The run ends when every NORMAL task has ended; each task's unhandled
-//! error is reported with the task's name.
+//! `rapid run`'s one path: every program runs under the controller
+//! (`rapid_controller::Controller`). A module, a folder, a `.pgf` or a backup of one
+//! task is a system of one task run alone (the controller runs it in slices,
+//! `Controller::runs_alone`), reported as a program: its error and its event log name
+//! no task. A system of several tasks (SYS.cfg `CAB_TASKS`) has every task loaded
+//! from its `RAPID/TASKn` folder, and the controller runs them pseudo-parallel, sharing
+//! the I/O system and the global persistents. The run ends when every NORMAL task has
+//! ended; each task's unhandled error is reported with the task's name.
 //!
-//! A single task runs here too when the I/O configuration has system inputs or
+//! A single task runs as a system too when the I/O configuration has system inputs or
 //! outputs (`SYSSIG_IN`, `SYSSIG_OUT`): the controller stops and starts the program
 //! on their rising edges and sets the outputs (`rapid_controller::ops`). A program
 //! stopped that nothing in the stimulus starts again ends the run (exit 0).
@@ -25,8 +28,11 @@ use crate::commands::system::{self, ConfigFile, TaskFacts, TaskProgram};
 use crate::commands::ExitStatus;
 use crate::inputs::{self, Inputs};
 
-/// Instructions (all tasks together) between checks of the bounds.
+/// Statements (all tasks together) between checks of the bounds.
 const SLICE: u64 = 1 << 14;
+
+/// Instructions of a task run alone between checks of the bounds.
+const SLICE_ALONE: u64 = 1 << 16;
 
 /// One task's inputs, loaded program and configuration.
 struct LoadedTask {
@@ -35,17 +41,23 @@ struct LoadedTask {
 }
 
 pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
+    // One task without system inputs or outputs: a program run alone.
+    let alone = !(first.sys.as_ref().is_some_and(|sys| sys.tasks.len() > 1) || has_system_signals(&first));
     let sys = match first.sys.clone() {
-        Some(sys) if !sys.tasks.is_empty() => sys,
+        _ if alone => first.sys.clone(),
+        Some(sys) if !sys.tasks.is_empty() => Some(sys),
         // A SYS.cfg that configures no task: the one task read, with the configuration's
         // event routines.
-        Some(sys) if has_system_signals(&first) => Sys { tasks: one_task_system(&first).tasks, ..sys },
-        None if has_system_signals(&first) => one_task_system(&first),
-        _ => return single::run(args),
+        Some(sys) => Some(Sys { tasks: one_task_system(&first).tasks, ..sys }),
+        None => Some(one_task_system(&first)),
     };
-    let specs = match task_specs(&sys) {
-        Ok(specs) => specs,
-        Err(message) => return refuse(&message),
+    let specs = match &sys {
+        _ if alone => vec![alone_spec(&first)],
+        Some(sys) => match task_specs(sys) {
+            Ok(specs) => specs,
+            Err(message) => return refuse(&message),
+        },
+        None => vec![alone_spec(&first)],
     };
     let mut tasks: Vec<LoadedTask> = Vec::new();
     let mut first = Some(first);
@@ -85,10 +97,12 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     let mut loaded = Vec::new();
     let mut facts: Vec<TaskFacts> = Vec::new();
     for (idx, task) in tasks.iter().enumerate() {
-        let configured = sys.task(&task.spec.name);
-        let entry = match (&args.entry, configured) {
-            (Some(entry), _) if idx == 0 => entry.clone(),
-            (_, Some(config)) => config.entry.clone(),
+        let configured = sys.as_ref().filter(|_| !alone).and_then(|sys| sys.task(&task.spec.name));
+        let own_entry = task.inputs.task.as_ref().and_then(|t| t.entry.as_ref()).filter(|_| alone);
+        let entry = match (&args.entry, configured, own_entry) {
+            (Some(entry), _, _) if idx == 0 => entry.clone(),
+            (_, Some(config), _) => config.entry.clone(),
+            (_, _, Some(entry)) => entry.clone(),
             _ => "main".to_owned(),
         };
         let options = Options { predefined: task.inputs.predefined.clone(), ..Options::default() };
@@ -100,7 +114,9 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
                 return single::report_system_errors(&table, &[system::entry_finding(configured, config)]);
             }
             (Err(err), _, _) => {
-                eprintln!("error: task {} cannot start:", task.spec.name);
+                if !alone {
+                    eprintln!("error: task {} cannot start:", task.spec.name);
+                }
                 return single::report_load_error(err, &task.inputs.modules);
             }
         };
@@ -120,7 +136,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         .zip(&facts)
         .map(|((task, &file_offset), facts)| TaskProgram { name: &task.spec.name, file_offset, facts })
         .collect();
-    let found = system::findings(&sys, config, &programs);
+    let found = sys.as_ref().map(|sys| system::findings(sys, config, &programs)).unwrap_or_default();
     if !found.is_empty() {
         return single::report_system_errors(&table, &found);
     }
@@ -134,6 +150,10 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             return refuse(&message);
         }
     }
+    let stimulus = match read_stimulus(io.as_ref(), args, alone) {
+        Ok(stimulus) => stimulus,
+        Err(message) => return refuse(&message),
+    };
     let (model, model_note) =
         match crate::motion_out::choose_model(args, tasks[0].inputs.robot.as_deref(), &tasks[0].inputs.syspar) {
             Ok(chosen) => chosen,
@@ -144,15 +164,23 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         };
     let units = tasks[0].inputs.units.clone();
     // The robot each task moves: its group's ROB_n, else by the tasks' order.
-    let numbers = match crate::robots::numbers(&sys, &tasks[0].inputs.syspar, &tasks[0].inputs.task_robots) {
-        Ok(numbers) => numbers,
-        Err(found) => return refuse(&format!("{}.cfg:{}: {}", found.domain, found.line, found.message)),
+    let numbers = match &sys {
+        Some(sys) if !alone => match crate::robots::numbers(sys, &tasks[0].inputs.syspar, &tasks[0].inputs.task_robots)
+        {
+            Ok(numbers) => numbers,
+            Err(found) => return refuse(&format!("{}.cfg:{}: {}", found.domain, found.line, found.message)),
+        },
+        _ => vec![Some(crate::robots::of_single_task(&tasks[0].inputs))],
     };
     let mut first_motion = true;
     for ((spec, program), &number) in loaded.iter_mut().zip(&numbers) {
         if spec.motion {
             spec.robot = number.is_some();
-            let own = number.map(|n| crate::motion_out::robot_model(args, &tasks[0].inputs, &spec.name, n, model));
+            // A program alone moves the run's model; its units and conveyors are all its.
+            let own = number
+                .filter(|_| !alone)
+                .map(|n| crate::motion_out::robot_model(args, &tasks[0].inputs, &spec.name, n, model));
+            let task = Some(spec.name.as_str()).filter(|_| !alone);
             let robot = &mut program.vm.resources_mut().robot;
             // A task moving external units only keeps an arm that never moves (its
             // robot instructions are refused), so that its units have a state to live in.
@@ -161,10 +189,9 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
                 crate::motion_out::configure_base(robot, &tasks[0].inputs, n, &spec.name);
                 crate::motion_out::configure_ranges(robot, &tasks[0].inputs.syspar, n);
             }
-            crate::motion_out::configure_units(robot, &units, Some(&spec.name), first_motion);
+            crate::motion_out::configure_units(robot, &units, task, first_motion);
             let conveyors = &tasks[0].inputs.conveyors;
-            let found =
-                crate::motion_out::configure_conveyors(robot, conveyors, io.as_ref(), Some(&spec.name), first_motion);
+            let found = crate::motion_out::configure_conveyors(robot, conveyors, io.as_ref(), task, first_motion);
             if let Err(message) = found {
                 return refuse(&message);
             }
@@ -180,7 +207,9 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             robot: &mut program.vm.resources_mut().robot,
         })
         .collect();
-    rapid_vm::builtins::motion::foreign::link(&mut linked);
+    if !alone {
+        rapid_vm::builtins::motion::foreign::link(&mut linked);
+    }
     drop(linked);
     let mut controller = match Controller::new(loaded, io) {
         Ok(controller) => controller,
@@ -188,12 +217,18 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     };
     controller.set_cycles(args.cycles);
     if let Err(message) = controller.shared_mut().tasking.number_robots(numbers.clone()) {
+        if alone {
+            return Err(anyhow::anyhow!("internal error: {message}"));
+        }
         return refuse(&message);
     }
-    if let Err(message) = install_stimulus(&mut controller, args) {
-        return refuse(&message);
+    if let Some((orders, reactions, answers)) = stimulus {
+        let io = &mut controller.shared_mut().io;
+        io.stimulus = orders.into();
+        io.reactions = reactions;
+        io.answers = answers.into();
     }
-    if let Err(message) = configure_operations(&mut controller, &tasks[0].inputs, &sys, args) {
+    if let Err(message) = configure_operations(&mut controller, &tasks[0].inputs, sys.as_ref(), args) {
         return refuse(&message);
     }
     let mut host =
@@ -205,19 +240,32 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     // Power on and a start from main: every task's POWER_ON, then START event routines;
     // STOP event routines run when a task stops (each task has its routines: the
     // system findings above).
-    controller.stop_routines = controller
-        .tasks
-        .iter()
-        .map(|t| sys.hooks_for(&t.spec.name, "STOP").into_iter().map(str::to_owned).collect())
-        .collect();
+    let hooks_for = |name: &str, shelf: &str| -> Vec<String> {
+        sys.as_ref().map(|sys| sys.hooks_for(name, shelf).into_iter().map(str::to_owned).collect()).unwrap_or_default()
+    };
+    controller.stop_routines = controller.tasks.iter().map(|t| hooks_for(&t.spec.name, "STOP")).collect();
     for shelf in ["POWER_ON", "START"] {
-        if let Err(message) = run_hooks(&mut controller, &mut host, &sys, shelf, |_| true) {
+        let outcome = run_hooks(&mut controller, &mut host, &hooks_for, shelf);
+        if let Err(failure) = outcome {
             host.flush();
-            return refuse(&message);
+            if alone {
+                return report_hook_failure(&controller, &tasks[0].inputs.modules, failure);
+            }
+            return refuse(&failure.message(&controller));
         }
     }
     let bounded = drive(&mut controller, &mut host, args);
     host.flush();
+    // A program alone is reported as it stops: what ended it, then its outputs.
+    let alone_status = alone.then(|| report_alone(&controller, &tasks[0].inputs.modules, bounded.as_ref(), args));
+    if alone {
+        if let Some((_, routine)) = controller.failed_stop_routine.clone() {
+            if let Some(TaskEnd::Failed(unhandled)) = controller.tasks[0].end() {
+                let failure = HookFailure::Unhandled(routine, Box::new(unhandled.clone()));
+                return report_hook_failure(&controller, &tasks[0].inputs.modules, failure);
+            }
+        }
+    }
     let program_end = controller.time;
     for task in &mut controller.tasks {
         let name = task.spec.name.clone();
@@ -229,24 +277,167 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     }
     let mut cycle = program_end;
     let robot_names: Vec<Option<String>> = numbers.iter().map(|n| n.map(|n| format!("ROB_{n}"))).collect();
-    for (idx, task) in controller.tasks.iter_mut().enumerate() {
+    for idx in 0..controller.tasks.len() {
+        // A program alone finishes its motion with the I/O system in hand: the outputs
+        // its last moves set and the I/O system brought to the motion's end.
+        if alone {
+            controller.exchange_shared_with(idx);
+        }
+        let task = &mut controller.tasks[idx];
         let name = task.spec.name.clone();
         let resources = task.loaded.vm.resources_mut();
         let robot_name = robot_names.get(idx).cloned().flatten();
         let who = (name.as_str(), robot_name.as_deref());
-        cycle = cycle.max(crate::motion_out::finish(resources, program_end, who, model_note.as_deref(), args)?);
-        task.loaded.vm.log_corner_failures();
+        let finished = crate::motion_out::finish(resources, program_end, who, model_note.as_deref(), args);
+        if alone {
+            controller.exchange_shared_with(idx);
+        }
+        cycle = cycle.max(finished?);
+        controller.tasks[idx].loaded.vm.log_corner_failures();
     }
     write_motion_outputs(&mut controller, &tasks, &robot_names, cycle, args)?;
     if controller.tasks.iter_mut().any(|task| task.loaded.vm.resources_mut().controller.warm_start) {
         eprintln!("{}", single::WARM_START);
     }
-    let status = report(&controller, &tasks, bounded);
-    if args.cycles == 1 {
-        note_exit_cycles(&controller);
-    }
-    finish(&controller, &tasks, args)?;
+    let status = match alone_status {
+        Some(status) => status,
+        None => {
+            let status = report(&controller, &tasks, bounded);
+            if args.cycles == 1 {
+                note_exit_cycles(&controller);
+            }
+            status
+        }
+    };
+    finish(&controller, &tasks, args, alone)?;
     Ok(status)
+}
+
+/// The one task of a program run alone: a NORMAL motion task moving the robot, named
+/// as its backup or manifest names it (T_ROB1 else).
+// The configuration's type, trust level and message queue of a backup's single task
+// are not applied: a program alone runs one start of its entry routine, as it always
+// has under `rapid run`.
+fn alone_spec(inputs: &Inputs) -> TaskSpec {
+    TaskSpec {
+        name: inputs.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned(),
+        kind: TaskKind::Normal,
+        trust: TrustLevel::default(),
+        foreground: None,
+        motion: true,
+        robot: true,
+        rmq: rapid_config::sys::Rmq::default(),
+        robot_of: None,
+        shared_files: Vec::new(),
+    }
+}
+
+/// What ended a program run alone, said as the program's (no task named): a bound,
+/// its unhandled error, ExitCycle in cycle mode. Its exit status.
+fn report_alone(controller: &Controller, files: &[SourceInput], bound: Option<&Bound>, args: &RunArgs) -> ExitStatus {
+    match bound {
+        Some(Bound::Steps(max)) => {
+            eprintln!("error: stopped after {max} steps (--max-steps); the program did not end");
+            return ExitStatus::Failure;
+        }
+        Some(Bound::Time(max)) => {
+            eprintln!("error: stopped at {max} s of controller time (--max-time); the program did not end");
+            return ExitStatus::Failure;
+        }
+        Some(Bound::Interrupted) => {
+            eprintln!("{}", single::interrupted_at(controller.time));
+            return ExitStatus::Interrupted;
+        }
+        Some(Bound::InternalError) => {
+            eprintln!("internal error: the interpreter failed; please report this program");
+            return ExitStatus::Error;
+        }
+        Some(Bound::Stopped) | None => {}
+    }
+    let task = &controller.tasks[0];
+    match task.end() {
+        Some(TaskEnd::Failed(unhandled)) if controller.failed_stop_routine.is_none() => {
+            let (path, line, column) = source_location(controller, 0, files, unhandled);
+            eprintln!("error: {}", unhandled.error);
+            eprintln!("  in routine {} at {path}:{line}:{column}", unhandled.routine);
+            eprintln!("  the program stopped (no ERROR handler handled the error)");
+            ExitStatus::Failure
+        }
+        Some(TaskEnd::Failed(_)) => ExitStatus::Failure,
+        Some(TaskEnd::CycleEnded) if args.cycles == 1 => {
+            eprintln!("{}", single::exit_cycle_note("the cycle"));
+            ExitStatus::Success
+        }
+        _ => ExitStatus::Success,
+    }
+}
+
+/// Where an unhandled error of task `idx` was raised: its file (one of the task's
+/// `files`, or a module loaded at run time), line and column.
+fn source_location(
+    controller: &Controller,
+    idx: usize,
+    files: &[SourceInput],
+    unhandled: &rapid_vm::Unhandled,
+) -> (String, u32, u32) {
+    let loaded_module = controller.tasks[idx].loaded.vm.program_source(unhandled.file);
+    match files.get(unhandled.file).or(loaded_module) {
+        Some(source) => single::location(std::slice::from_ref(source), 0, unhandled.span.start),
+        None => single::location(&[], 0, 0),
+    }
+}
+
+/// Why event routines could not run: in task (index) …
+enum HookFailure {
+    /// … the configuration names a routine the task does not have.
+    Missing { task: usize, shelf: &'static str, routine: String },
+    /// … an error no ERROR handler handled while the event routine (named) ran.
+    Unhandled(String, Box<rapid_vm::Unhandled>),
+    /// … the same, in the `shelf` event routine of a system's task.
+    InSystem { task: usize, shelf: &'static str, routine: String, unhandled: Box<rapid_vm::Unhandled> },
+}
+
+impl HookFailure {
+    /// The failure as a system's refusal says it.
+    fn message(&self, controller: &Controller) -> String {
+        match self {
+            HookFailure::Missing { task, shelf, routine } => {
+                let name = &controller.tasks[*task].spec.name;
+                format!("task {name} has no procedure `{routine}` for its {shelf} event routine")
+            }
+            HookFailure::Unhandled(routine, unhandled) => format!("{} in the event routine {routine}", unhandled.error),
+            HookFailure::InSystem { task, shelf, routine, unhandled } => {
+                let name = &controller.tasks[*task].spec.name;
+                let source = controller.tasks[*task].loaded.vm.program_source(unhandled.file);
+                let (path, line, column) =
+                    single::location(source.map(std::slice::from_ref).unwrap_or(&[]), 0, unhandled.span.start);
+                let raised = format!("raised in routine {} at {path}:{line}:{column}", unhandled.routine);
+                format!("{} in the {shelf} event routine {routine} of task {name}, {raised}", unhandled.error)
+            }
+        }
+    }
+}
+
+/// An event routine of a program alone failed: said as the program's, and nothing
+/// more of the run is reported.
+fn report_hook_failure(
+    controller: &Controller,
+    files: &[SourceInput],
+    failure: HookFailure,
+) -> anyhow::Result<ExitStatus> {
+    match failure {
+        HookFailure::Unhandled(routine, unhandled) | HookFailure::InSystem { routine, unhandled, .. } => {
+            let (path, line, column) = source_location(controller, 0, files, &unhandled);
+            eprintln!("error: {}", unhandled.error);
+            eprintln!("  in routine {} at {path}:{line}:{column}", unhandled.routine);
+            eprintln!("  the event routine {routine} stopped (no ERROR handler handled the error)");
+        }
+        missing @ HookFailure::Missing { .. } => {
+            eprintln!("error: {}", missing.message(controller));
+            eprintln!("the system has errors; it was not run");
+        }
+    }
+    Ok(ExitStatus::Failure)
 }
 
 /// Whether the inputs' I/O configuration has system inputs or outputs.
@@ -281,7 +472,12 @@ fn one_task_system(inputs: &Inputs) -> Sys {
 }
 
 /// The system inputs and outputs and the event routines the operations run.
-fn configure_operations(controller: &mut Controller, inputs: &Inputs, sys: &Sys, args: &RunArgs) -> Result<(), String> {
+fn configure_operations(
+    controller: &mut Controller,
+    inputs: &Inputs,
+    sys: Option<&Sys>,
+    args: &RunArgs,
+) -> Result<(), String> {
     let auto = args.controller_state().mode == rapid_vm::builtins::controller::OpMode::Auto;
     if let Some(eio) = eio_of(inputs) {
         controller.configure_system_signals(&eio, auto)?;
@@ -290,39 +486,34 @@ fn configure_operations(controller: &mut Controller, inputs: &Inputs, sys: &Sys,
         let routines = controller
             .tasks
             .iter()
-            .map(|t| sys.hooks_for(&t.spec.name, shelf).into_iter().map(str::to_owned).collect())
+            .map(|t| sys.map(|sys| sys.hooks_for(&t.spec.name, shelf).into_iter().map(str::to_owned).collect()))
+            .map(Option::unwrap_or_default)
             .collect();
         controller.set_event_routines(shelf, routines);
     }
     Ok(())
 }
 
-/// Runs the `shelf` event routines of every task `which` selects.
+/// Runs the `shelf` event routines (`hooks_for(task, shelf)`) of every task.
 fn run_hooks(
     controller: &mut Controller,
     host: &mut StdoutHost<'_>,
-    sys: &Sys,
-    shelf: &str,
-    which: impl Fn(usize) -> bool,
-) -> Result<(), String> {
+    hooks_for: &dyn Fn(&str, &str) -> Vec<String>,
+    shelf: &'static str,
+) -> Result<(), HookFailure> {
     let event = rapid_config::sys::SHELVES.iter().position(|s| *s == shelf).map_or(0, |i| i as u8 + 1);
+    let alone = controller.runs_alone();
     for idx in 0..controller.tasks.len() {
-        if !which(idx) {
-            continue;
-        }
         let name = controller.tasks[idx].spec.name.clone();
-        for routine in sys.hooks_for(&name, shelf) {
-            match controller.run_event_routine(idx, host, routine, event) {
-                Ok(_) => {}
+        for routine in hooks_for(&name, shelf) {
+            match controller.run_event_routine(idx, host, &routine, event) {
+                Ok(true) => {}
+                // A system's findings have named every routine its tasks lack.
+                Ok(false) if !alone => {}
+                Ok(false) => return Err(HookFailure::Missing { task: idx, shelf, routine }),
+                Err(unhandled) if alone => return Err(HookFailure::Unhandled(routine, Box::new(unhandled))),
                 Err(unhandled) => {
-                    let source = controller.tasks[idx].loaded.vm.program_source(unhandled.file);
-                    let (path, line, column) =
-                        single::location(source.map(std::slice::from_ref).unwrap_or(&[]), 0, unhandled.span.start);
-                    let raised = format!("raised in routine {} at {path}:{line}:{column}", unhandled.routine);
-                    return Err(format!(
-                        "{} in the {shelf} event routine {routine} of task {name}, {raised}",
-                        unhandled.error
-                    ));
+                    return Err(HookFailure::InSystem { task: idx, shelf, routine, unhandled: Box::new(unhandled) })
                 }
             }
         }
@@ -400,19 +591,24 @@ fn io_system(inputs: &Inputs) -> Result<Option<rapid_io::IoSystem>, String> {
     }
 }
 
-fn install_stimulus(controller: &mut Controller, args: &RunArgs) -> Result<(), String> {
-    let Some(path) = &args.stimulus else { return Ok(()) };
+/// A stimulus's input orders, reactions and pendant answers (`rapid_vm::builtins::io`).
+type Stimulus = (Vec<(f64, u32, f64)>, Vec<rapid_vm::builtins::io::Reaction>, Vec<(f64, String)>);
+
+/// `--stimulus`, read against the system's I/O system `io`.
+fn read_stimulus(io: Option<&rapid_io::IoSystem>, args: &RunArgs, alone: bool) -> Result<Option<Stimulus>, String> {
+    let Some(path) = &args.stimulus else { return Ok(None) };
     let shown = path.display().to_string();
     let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read the stimulus `{shown}`: {e}"))?;
-    let io = &mut controller.shared_mut().io;
-    let Some(system) = &io.system else {
-        return Err(format!("`{shown}`: a stimulus needs an I/O configuration (the system has none: SYSPAR/EIO.cfg in a backup, `io` in a manifest)"));
+    let Some(system) = io else {
+        return Err(if alone {
+            format!(
+                "`{shown}`: a stimulus needs an I/O configuration (a backup with SYSPAR/EIO.cfg, or a manifest with `io`)"
+            )
+        } else {
+            format!("`{shown}`: a stimulus needs an I/O configuration (the system has none: SYSPAR/EIO.cfg in a backup, `io` in a manifest)")
+        });
     };
-    let (orders, reactions, answers) = crate::stimulus::parse(&shown, &text, system)?;
-    io.stimulus = orders.into();
-    io.reactions = reactions;
-    io.answers = answers.into();
-    Ok(())
+    crate::stimulus::parse(&shown, &text, system).map(Some)
 }
 
 /// Why the run stopped before the system ended, if a bound stopped it.
@@ -435,7 +631,8 @@ fn drive(controller: &mut Controller, host: &mut StdoutHost<'_>, args: &RunArgs)
         if crate::interrupt::requested() {
             return Some(Bound::Interrupted);
         }
-        let step = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| controller.run(host, SLICE)));
+        let slice = if controller.runs_alone() { SLICE_ALONE } else { SLICE };
+        let step = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| controller.run(host, slice)));
         let Ok(exit) = step else { return Some(Bound::InternalError) };
         if let Some(max) = args.max_steps {
             if controller.steps > max {
@@ -583,16 +780,23 @@ fn write_motion_outputs(
             (0, true) => crate::motion_out::write_outputs(&outputs, args)?,
             _ => crate::motion_out::write_task_trace(&outputs, args)?,
         }
+        // The recorded path (every planned move of the run) goes back to the system
+        // when the process ends, without the time freeing it piece by piece would take.
+        std::mem::forget(robot);
     }
     Ok(())
 }
 
 /// The logs and saves asked for, after the run.
-fn finish(controller: &Controller, tasks: &[LoadedTask], args: &RunArgs) -> anyhow::Result<()> {
+fn finish(controller: &Controller, tasks: &[LoadedTask], args: &RunArgs, alone: bool) -> anyhow::Result<()> {
     if args.event_log {
         for task in &controller.tasks {
             for event in task.loaded.vm.event_log() {
-                eprintln!("event {} {event}", task.spec.name);
+                // A program alone: its entries name no task.
+                match alone {
+                    true => eprintln!("event {event}"),
+                    false => eprintln!("event {} {event}", task.spec.name),
+                }
             }
         }
     }
@@ -613,7 +817,8 @@ fn finish(controller: &Controller, tasks: &[LoadedTask], args: &RunArgs) -> anyh
             .iter()
             .zip(tasks)
             .map(|(task, input)| crate::elog::TaskEvents {
-                task: &task.spec.name,
+                // A program alone is the controller's main task.
+                task: if alone { crate::elog::MAIN_TASK } else { &task.spec.name },
                 vm: &task.loaded.vm,
                 files: &input.inputs.modules,
             })
