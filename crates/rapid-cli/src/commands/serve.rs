@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 
 use rapid_controller::api::{ClockPolicy, Session};
-use rapid_controller::{Controller, TaskKind, TaskSpec, TrustLevel};
+use rapid_controller::{boot, Controller, TaskSpec};
 use rapid_sema::{Options, SourceInput};
 
 use super::ExitStatus;
@@ -49,7 +49,7 @@ pub(crate) fn run(args: &ServeArgs) -> anyhow::Result<ExitStatus> {
         }
     };
     let local: SocketAddr = listener.local_addr()?;
-    let modules: Arc<Mutex<Vec<SourceInput>>> = Arc::default();
+    let modules: Arc<Mutex<Vec<TaskFiles>>> = Arc::default();
     let boot = rapid_serve::Boot {
         session: boot_closure(args.paths.clone(), modules.clone()),
         clock,
@@ -84,11 +84,11 @@ pub(crate) fn run(args: &ServeArgs) -> anyhow::Result<ExitStatus> {
     }
 }
 
-/// Builds the session on the controller thread; the module files go to `modules` for
-/// the save at the end.
-fn boot_closure(paths: Vec<PathBuf>, modules: Arc<Mutex<Vec<SourceInput>>>) -> rapid_serve::BuildSession {
+/// Builds the session on the controller thread; each task's module files go to
+/// `modules` for the save at the end.
+fn boot_closure(paths: Vec<PathBuf>, modules: Arc<Mutex<Vec<TaskFiles>>>) -> rapid_serve::BuildSession {
     Box::new(move || {
-        let (controller, files) = assemble_one_task(&paths)?;
+        let (controller, files) = assemble(&paths)?;
         if let Ok(mut kept) = modules.lock() {
             *kept = files;
         }
@@ -96,48 +96,79 @@ fn boot_closure(paths: Vec<PathBuf>, modules: Arc<Mutex<Vec<SourceInput>>>) -> r
     })
 }
 
-/// A one-task system from PATH (modules, a folder, a .pgf, a backup or a manifest of
-/// one task): its program, its file devices' folder and its EIO.cfg signals.
-// This is the CLI's own small assembly, kept apart until rapid-controller offers one
-// entry point from inputs to a booted system (systems of several tasks, the robot
-// model and base of MOC.cfg, event routines): those are refused or left at their
-// defaults here.
-fn assemble_one_task(paths: &[PathBuf]) -> Result<(Controller, Vec<SourceInput>), String> {
-    let inputs = inputs::collect(paths).map_err(|e| format!("{e:#}"))?;
-    if let Some(d) = inputs.diagnostics.iter().find(|d| d.severity() == rapid_sema::Severity::Error) {
-        return Err(format!("the configuration has errors: {}", d.message));
+/// A task's name, the module files it was loaded from, and its persistents' values
+/// at boot as RAPID literals (by index in `Loaded::persistents`).
+type TaskFiles = (String, Vec<SourceInput>, Vec<Option<String>>);
+
+/// Each persistent's value now, as RAPID literal text.
+fn pers_literals(loaded: &rapid_vm::Loaded) -> Vec<Option<String>> {
+    let value =
+        |s: &rapid_vm::persist::PersSite| loaded.vm.global(s.global).and_then(rapid_vm::builtins::value_literal);
+    loaded.persistents.iter().map(value).collect()
+}
+
+/// The system of PATH (modules, a folder, a .pgf, a backup or a manifest; one task or
+/// several) booted by `rapid_controller::boot` as `rapid run` boots it, but standing
+/// stopped for the clients to start: the tasks' checked programs are kept (record
+/// components of data are read and written through them).
+// Not configured as `rapid run` does: a stimulus, --virtual-io, --robot; the POWER_ON
+// and START event routines do not run (the program is started by a client).
+fn assemble(paths: &[PathBuf]) -> Result<(Controller, Vec<TaskFiles>), String> {
+    let first = inputs::collect(paths).map_err(|e| format!("{e:#}"))?;
+    config_errors(&first)?;
+    let name = first.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
+    let entry = first.task.as_ref().and_then(|t| t.entry.clone());
+    // Served, the program is operated by the controller: never "alone".
+    let sys = boot::system::system_of(first.sys.as_ref(), false, &name, entry.as_deref())
+        .ok_or_else(|| "no task to serve".to_owned())?;
+    let specs = boot::system::task_specs(&sys)?;
+    let mut first = Some(first);
+    let mut collected = Vec::new();
+    for spec in specs {
+        let inputs = match first.take().filter(|f| f.task.as_ref().is_none_or(|t| t.name == spec.name)) {
+            Some(inputs) => inputs,
+            None => inputs::collect_task(paths, Some(&spec.name)).map_err(|e| format!("{e:#}"))?,
+        };
+        config_errors(&inputs)?;
+        let spec = TaskSpec { shared_files: inputs.shared_modules.clone(), ..spec };
+        collected.push((spec, inputs));
     }
-    if inputs.sys.as_ref().is_some_and(|sys| sys.tasks.len() > 1) {
-        return Err("`rapid serve` does not serve systems of several tasks yet (use `rapid run` for them)".into());
+    let mut loaded = Vec::new();
+    for (spec, inputs) in &collected {
+        let entry = sys.task(&spec.name).map_or_else(|| "main".to_owned(), |t| t.entry.clone());
+        let options = Options { predefined: inputs.predefined.clone(), ..Options::default() };
+        let mut program = rapid_vm::load_with(&inputs.modules, &entry, &options)
+            .map_err(|e| format!("task {} cannot start: {e:?} (`rapid check` shows why)", spec.name))?;
+        let home = inputs.root.clone().unwrap_or_else(|| default_home(paths));
+        let state =
+            rapid_vm::builtins::controller::ControllerState::new(rapid_vm::builtins::controller::OpMode::Auto, 100.0);
+        let resources = program.vm.resources_mut();
+        resources.files.set_root(home);
+        resources.cfgdata.set_config(inputs.syspar.clone());
+        resources.controller = state;
+        resources.sockets.set_cooperative(true);
+        loaded.push((spec.clone(), program));
     }
-    let entry = inputs.task.as_ref().and_then(|t| t.entry.clone()).unwrap_or_else(|| "main".to_owned());
-    let options = Options { predefined: inputs.predefined.clone(), ..Options::default() };
-    let mut loaded = rapid_vm::load_with(&inputs.modules, &entry, &options)
-        .map_err(|e| format!("the program cannot start: {e:?} (`rapid check` shows why)"))?;
-    let root = inputs.root.clone().unwrap_or_else(|| default_home(paths));
-    loaded.vm.resources_mut().files.set_root(root);
-    loaded.vm.resources_mut().sockets.set_cooperative(true);
-    loaded.vm.resources_mut().cfgdata.set_config(inputs.syspar.clone());
-    loaded.vm.resources_mut().tasking.shared.number_robots(vec![Some(1)])?;
-    let eio = inputs.syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("EIO"));
-    let io = match eio {
-        Some((_, eio)) => Some(rapid_vm::builtins::io_config::io_system(&rapid_config::eio::read(eio))?),
-        None => None,
-    };
-    let name = inputs.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
-    let spec = TaskSpec {
-        name,
-        kind: TaskKind::Normal,
-        trust: TrustLevel::SysFail,
-        foreground: None,
-        motion: true,
-        robot: true,
-        rmq: rapid_config::sys::Rmq::default(),
-        shared_files: Vec::new(),
-        robot_of: None,
-    };
-    let controller = Controller::new(vec![(spec, loaded)], io)?;
-    Ok((controller, inputs.modules))
+    let options = boot::system::BootOptions { alone: false, cycles: 0, auto: true, ..Default::default() };
+    let cell = collected[0].1.cell();
+    let booted = boot::system::boot(loaded, Some(&sys), cell, &options, &mut |_| Ok(None));
+    let booted = booted.map_err(|e| match e {
+        boot::system::BootError::Refused(m)
+        | boot::system::BootError::UnknownModel(m)
+        | boot::system::BootError::Internal(m) => m,
+    })?;
+    let at_boot = booted.controller.tasks.iter().map(|t| pers_literals(&t.loaded));
+    let files =
+        collected.into_iter().zip(at_boot).map(|((spec, inputs), pers)| (spec.name, inputs.modules, pers)).collect();
+    Ok((booted.controller, files))
+}
+
+/// The inputs' configuration errors, as one message.
+fn config_errors(inputs: &inputs::Inputs) -> Result<(), String> {
+    match inputs.diagnostics.iter().find(|d| d.severity() == rapid_sema::Severity::Error) {
+        Some(d) => Err(format!("the system has errors (`rapid check` shows them all): {}", d.message)),
+        None => Ok(()),
+    }
 }
 
 /// `rapid-controller` beside the first PATH, as `rapid run` defaults it.
@@ -149,9 +180,21 @@ fn default_home(paths: &[PathBuf]) -> PathBuf {
     }
 }
 
-/// Ctrl-C: the persistents written back into their module files, as `--save-pers`.
-fn save_persistents(session: &mut Session, modules: &Mutex<Vec<SourceInput>>) -> Result<(), String> {
+/// Ctrl-C: every task's persistents that changed since boot written back into their
+/// module files, as `--save-pers` does (an untouched module stays byte for byte).
+fn save_persistents(session: &mut Session, modules: &Mutex<Vec<TaskFiles>>) -> Result<(), String> {
     let files = modules.lock().map_err(|_| "the module list is unreadable".to_owned())?;
-    let Some(task) = session.controller().tasks.first() else { return Ok(()) };
-    crate::save::save_persistents(&task.loaded, &files).map_err(|e| format!("{e:#}"))
+    let mut failures = Vec::new();
+    for (task, (name, task_files, at_boot)) in session.controller().tasks.iter().zip(files.iter()) {
+        debug_assert_eq!(&task.spec.name, name);
+        let now = pers_literals(&task.loaded);
+        let changed = |idx: usize| now.get(idx) != at_boot.get(idx);
+        if let Err(e) = crate::save::save_persistents_where(&task.loaded, task_files, &changed) {
+            failures.push(format!("{e:#}"));
+        }
+    }
+    match failures.is_empty() {
+        true => Ok(()),
+        false => Err(failures.join("\n")),
+    }
 }

@@ -114,11 +114,10 @@ fn ctrl_c_saves_the_persistents_and_exits_0() {
     interrupt(&child);
     let status = wait_bounded(&mut child, Duration::from_secs(20)).expect("rapid serve ends after Ctrl-C");
     assert_eq!(status.code(), Some(0));
-    // Nothing changed the persistents: they keep their values. (The save writes
-    // 123.456 back as 123.456001, as `rapid run --save-pers` does: the f32's digits.)
-    let module = std::fs::read_to_string(project.join("src/Module1.mod")).unwrap();
-    assert!(module.contains("PERS num seen := 0;"), "{module}");
-    assert!(module.contains("PERS string test_var_str := \"Hello\";"), "{module}");
+    // No persistent changed: the module stays byte for byte.
+    let module = std::fs::read(project.join("src/Module1.mod")).unwrap();
+    let original = std::fs::read(repo_root().join("crates/rapid-cli/tests/cli/fixtures/serve_project/src/Module1.mod"));
+    assert_eq!(module, original.unwrap());
 }
 
 #[test]
@@ -207,4 +206,24 @@ fn abb_robot_client_works_against_rapid_serve() {
     assert!(module.contains("PERS num test_var_num := 7.5;"), "{module}");
     assert!(module.contains("PERS string test_var_str := \"Hello World!\";"), "{module}");
     assert!(module.contains("PERS num seen := 1;"), "{module}");
+    // Untouched, the CONST keeps its text.
+    assert!(module.contains("CONST jointtarget home := [[10, 20, 30, 40, 50, 60], [9E9, 9E9"), "{module}");
+}
+
+#[test]
+fn a_system_of_three_tasks_is_served() {
+    let Some(python) = client_python() else { return };
+    let dir = scratch_in("serve", "press_cell");
+    let project = dir.join("press_cell_project");
+    copy_dir(&repo_root().join("examples/press_cell_project"), &project);
+    let (mut child, url) = start_server(&project);
+    let script = repo_root().join("crates/rapid-cli/tests/cli/serve_system.py");
+    let out = output_bounded(Command::new(&python).arg(&script).arg(&url), Duration::from_secs(120));
+    interrupt(&child);
+    let status = wait_bounded(&mut child, Duration::from_secs(20));
+    let out = out.expect("the client script ends within 120 s");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "the client failed:\n{stdout}\n{}", String::from_utf8_lossy(&out.stderr));
+    assert!(stdout.lines().last().is_some_and(|l| l.ends_with(" passed, 0 failed")), "{stdout}");
+    assert_eq!(status.and_then(|s| s.code()), Some(0));
 }
