@@ -18,6 +18,8 @@ const PROGRAM: &str = "MODULE MainModule
   PERS pos here := [1, 2, 3];
   VAR string name := \"abc\";
   CONST num limit := 3;
+  PERS tooldata tGrip := [TRUE, [[0, 0, 100], [1, 0, 0, 0]], [1, [0, 0, 1], [1, 0, 0, 0], 0, 0, 0]];
+  PERS wobjdata wTable := [FALSE, TRUE, \"\", [[100, 0, 0], [1, 0, 0, 0]], [[0, 0, 50], [1, 0, 0, 0]]];
   PROC main()
     WaitDI di1, 1;
     count := count + 1;
@@ -364,14 +366,68 @@ async fn symbol_properties_tasks_and_the_run_mode() {
         (task["name"].as_str(), task["type"].as_str(), task["excstate"].as_str()),
         (Some("T_ROB1"), Some("normal"), Some("stopped"))
     );
-    // PP at main, on its first statement (line 7 of PROGRAM, column 5).
+    // PP at main, on its first statement (column 5 of WaitDI's line).
+    let line = PROGRAM.lines().position(|l| l.contains("WaitDI")).unwrap() + 1;
     let pcp = "/rw/rapid/tasks/T_ROB1/pcp?json=1";
     assert_eq!(state_field(&server, pcp, &cookie, "routinename").await, "main");
-    assert_eq!(state_field(&server, pcp, &cookie, "beginposition").await, "7,5");
+    assert_eq!(state_field(&server, pcp, &cookie, "beginposition").await, format!("{line},5"));
     assert_eq!(state_field(&server, "/ctrl/$RAMDISK?json=1", &cookie, "_value").await, "$RAMDISK");
     let signals = json_of(server.send(get("/rw/iosystem/signals?json=1", Some(&cookie))).await).await;
     let names: Vec<&str> =
         signals["_embedded"]["_state"].as_array().unwrap().iter().filter_map(|s| s["name"].as_str()).collect();
     assert_eq!(names, ["di1", "do1"]);
     assert_eq!(state_field(&server, "/rw/iosystem/signals/di1?json=1", &cookie, "type").await, "DI");
+}
+
+/// A robtarget answer's x, y, z and q1..q4.
+async fn robtarget(server: &Server, cookie: &str, query: &str) -> ([f64; 3], [f64; 4]) {
+    let uri = format!("/rw/motionsystem/mechunits/ROB_1/robtarget?{query}&json=1");
+    let response = server.send(get(&uri, Some(cookie))).await;
+    assert_eq!(response.status(), StatusCode::OK, "{uri}");
+    let item = json_of(response).await["_embedded"]["_state"][0].clone();
+    assert_eq!(item["_type"], "ms-robtargets");
+    let num = |k: &str| item[k].as_str().unwrap().parse::<f64>().unwrap();
+    ([num("x"), num("y"), num("z")], [num("q1"), num("q2"), num("q3"), num("q4")])
+}
+
+/// `v` turned by the unit quaternion `q` (scalar first), written out.
+fn rotate(q: [f64; 4], v: [f64; 3]) -> [f64; 3] {
+    let [w, x, y, z] = q;
+    let r = [
+        [1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y)],
+        [2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x)],
+        [2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y)],
+    ];
+    [0, 1, 2].map(|i| r[i][0] * v[0] + r[i][1] * v[1] + r[i][2] * v[2])
+}
+
+fn close(a: &[f64], b: &[f64]) -> bool {
+    a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-3)
+}
+
+#[tokio::test]
+async fn robtargets_of_a_tool_in_base_world_and_a_work_object() {
+    let server = Server::new("robtarget");
+    let cookie = server.login().await;
+    let (flange, q) = robtarget(&server, &cookie, "tool=tool0&wobj=wobj0&coordinate=Base").await;
+    assert!((q.iter().map(|c| c * c).sum::<f64>() - 1.0).abs() < 1e-6);
+    // tGrip's TCP is 100 mm along the flange's z axis, turned as the flange is.
+    let offset = rotate(q, [0.0, 0.0, 100.0]);
+    let want = [flange[0] + offset[0], flange[1] + offset[1], flange[2] + offset[2]];
+    let (base, q_base) = robtarget(&server, &cookie, "tool=tGrip&wobj=wobj0&coordinate=Base").await;
+    assert!(close(&base, &want) && close(&q_base, &q), "{base:?} {q_base:?}, expected {want:?}");
+    // The robot's base is the world's origin here.
+    let (world, _) = robtarget(&server, &cookie, "tool=tGrip&wobj=wobj0&coordinate=World").await;
+    assert!(close(&world, &want), "{world:?}");
+    // wTable's object frame is at [100, 0, 0] + [0, 0, 50], not turned.
+    let (in_wobj, q_wobj) = robtarget(&server, &cookie, "tool=tGrip&wobj=wTable&coordinate=Wobj").await;
+    assert!(close(&in_wobj, &[want[0] - 100.0, want[1], want[2] - 50.0]) && close(&q_wobj, &q), "{in_wobj:?}");
+    let unknown =
+        server.send(get("/rw/motionsystem/mechunits/ROB_1/robtarget?tool=nothing&json=1", Some(&cookie))).await;
+    assert!(unknown.status().is_client_error());
+    let tool =
+        server.send(get("/rw/motionsystem/mechunits/ROB_1/robtarget?coordinate=Tool&json=1", Some(&cookie))).await;
+    assert_eq!(tool.status(), StatusCode::BAD_REQUEST);
+    let no_unit = server.send(get("/rw/motionsystem/mechunits/ROB_2/jointtarget?json=1", Some(&cookie))).await;
+    assert!(no_unit.status().is_client_error());
 }

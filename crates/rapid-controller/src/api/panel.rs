@@ -20,6 +20,9 @@ pub struct MechUnitView {
     pub orient: [f64; 4],
     /// cf1, cf4, cf6, cfx.
     pub conf: [i32; 4],
+    /// The robot's base frame in the world now (on a track, where the track has it).
+    pub base_trans: [f64; 3],
+    pub base_orient: [f64; 4],
 }
 
 impl Session {
@@ -62,7 +65,10 @@ impl Session {
             let joints = robot.joints_at(time);
             let extax = robot.extax_read(time);
             let (flange, conf) = robot.flange_of(&joints);
+            let base = robot.track_base_at(time);
             units.push(MechUnitView {
+                base_trans: rapid_motion::pose::trans(&base),
+                base_orient: rapid_motion::pose::orient(&base),
                 task: task.spec.name.clone(),
                 joints,
                 extax,
