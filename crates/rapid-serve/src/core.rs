@@ -60,6 +60,9 @@ pub(crate) struct Core {
     /// Tasks deactivated through `/rw/rapid/tasks/{task}?action=deactivate`.
     pub(crate) inactive: Vec<String>,
     pub(crate) elog: Elog,
+    /// The controller failed (an internal error, caught): it runs no more, and
+    /// requests are still answered as far as they can be.
+    failed: bool,
     /// The state last told subscribers: (ctrlexecstate, ctrlstate).
     told: (String, String),
     stream: Subscription,
@@ -76,6 +79,7 @@ impl Core {
             cycle: "forever".to_owned(),
             inactive: Vec::new(),
             elog: Elog::default(),
+            failed: false,
             told: (String::new(), String::new()),
             stream,
             events,
@@ -166,7 +170,11 @@ impl Handle {
         }
         match tokio::time::timeout(ANSWER_TIMEOUT, rx).await {
             Ok(Ok(answer)) => Ok(answer),
-            Ok(Err(_)) => Err(RwsError::busy("the controller has stopped")),
+            Ok(Err(_)) => Err(RwsError::new(
+                axum::http::StatusCode::INTERNAL_SERVER_ERROR,
+                crate::model::CODE_BUSY,
+                "the controller failed on this request (an internal error; please report it)",
+            )),
             Err(_) => Err(RwsError::busy("the controller did not answer in time")),
         }
     }
@@ -240,22 +248,43 @@ fn drive(core: &mut Core, jobs: &Receiver<Job>, stop: &AtomicBool) {
     while !stop.load(Ordering::SeqCst) {
         for _ in 0..QUEUE {
             match jobs.try_recv() {
-                Ok(job) => job(core),
+                Ok(job) => run_job(core, job),
                 Err(mpsc::TryRecvError::Empty) => break,
                 Err(mpsc::TryRecvError::Disconnected) => return,
             }
         }
-        let outcome = core.session.run(ROUND);
-        core.after();
+        let outcome = match core.failed {
+            true => RunOutcome::Stopped,
+            false => guarded(|| core.session.run(ROUND)).unwrap_or_else(|| {
+                core.failed = true;
+                RunOutcome::Stopped
+            }),
+        };
+        if guarded(|| core.after()).is_none() {
+            core.failed = true;
+        }
         let rest = match outcome {
             RunOutcome::Running => continue,
             RunOutcome::Sleep(d) => d.min(IDLE * 5),
             RunOutcome::Breakpoint(_) | RunOutcome::Stopped | RunOutcome::Ended => IDLE,
         };
         match jobs.recv_timeout(rest) {
-            Ok(job) => job(core),
+            Ok(job) => run_job(core, job),
             Err(RecvTimeoutError::Timeout) => {}
             Err(RecvTimeoutError::Disconnected) => return,
         }
     }
+}
+
+/// Runs a job; a panic in it (an interpreter bug) is caught, its handler answered 500
+/// (its answer channel dropped), and the controller marked failed.
+fn run_job(core: &mut Core, job: Job) {
+    if guarded(|| job(core)).is_none() {
+        core.failed = true;
+    }
+}
+
+/// `f()`, or None when it panics.
+fn guarded<R>(f: impl FnOnce() -> R) -> Option<R> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).ok()
 }
