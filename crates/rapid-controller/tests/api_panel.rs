@@ -48,3 +48,29 @@ fn cycle_once_ends_every_normal_task() {
     s.run_until(Until::Time(1.0), 100_000);
     assert!(s.all_normal_ended());
 }
+
+#[test]
+fn a_module_loaded_from_home_is_linked_and_unloaded_again() {
+    let root = std::env::temp_dir().join(format!("rapid-api-modules-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&root);
+    std::fs::create_dir_all(root.join("HOME")).unwrap();
+    std::fs::write(root.join("HOME/Extra.mod"), "MODULE Extra\n  PERS num extra := 42;\nENDMODULE\n").unwrap();
+    let mut s = api_common::session();
+    s.controller_mut().tasks[0].loaded.vm.resources_mut().files.set_root(&root);
+    assert_eq!(s.modules("T_ROB1").unwrap(), vec!["MainModule".to_owned()]);
+    assert_eq!(s.modules("T_OTHER").unwrap(), vec!["Other".to_owned()]);
+    assert!(s.read_data("T_ROB1/extra").is_err());
+    s.load_module("T_ROB1", "HOME:/Extra.mod").expect("loads");
+    assert!(s.modules("T_ROB1").unwrap().iter().any(|m| m == "Extra"));
+    // A second load of the same module is refused (ERR_LOADED).
+    assert!(s.load_module("T_ROB1", "HOME:/Extra.mod").is_err());
+    s.unload_module("T_ROB1", "Extra").expect("unloads");
+    assert!(!s.modules("T_ROB1").unwrap().iter().any(|m| m == "Extra"));
+    assert!(s.unload_module("T_ROB1", "Extra").is_err());
+    assert!(s.load_module("T_ROB1", "HOME:/Missing.mod").is_err());
+    assert!(s.load_module("T_ROB1", "HOME:/../Extra.mod").is_err(), "a path leaving the device");
+    // Not while the program runs.
+    s.start(StartFrom::Pointer).unwrap();
+    assert!(s.load_module("T_ROB1", "HOME:/Extra.mod").is_err());
+    let _ = std::fs::remove_dir_all(&root);
+}

@@ -431,3 +431,53 @@ async fn robtargets_of_a_tool_in_base_world_and_a_work_object() {
     let no_unit = server.send(get("/rw/motionsystem/mechunits/ROB_2/jointtarget?json=1", Some(&cookie))).await;
     assert!(no_unit.status().is_client_error());
 }
+
+#[tokio::test]
+async fn modules_are_listed_loaded_and_unloaded() {
+    let server = Server::new("modules");
+    let cookie = server.login().await;
+    std::fs::create_dir_all(server.root.join("HOME")).unwrap();
+    std::fs::write(server.root.join("HOME/Extra.mod"), "MODULE Extra\n  PROC extra_proc()\n  ENDPROC\nENDMODULE\n")
+        .unwrap();
+    let names = |value: serde_json::Value| -> Vec<String> {
+        value["_embedded"]["_state"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|m| m["name"].as_str().unwrap().to_owned())
+            .collect()
+    };
+    let list = json_of(server.send(get("/rw/rapid/modules?task=T_ROB1&json=1", Some(&cookie))).await).await;
+    assert_eq!(names(list), ["MainModule"]);
+    let load = server
+        .send(post(
+            "/rw/rapid/tasks/T_ROB1?action=loadmod&json=1",
+            &cookie,
+            "modulepath=%24HOME%2FExtra.mod&replace=false",
+        ))
+        .await;
+    assert_eq!(load.status(), StatusCode::NO_CONTENT);
+    let list = json_of(server.send(get("/rw/rapid/modules?task=T_ROB1&json=1", Some(&cookie))).await).await;
+    assert_eq!(names(list), ["MainModule", "Extra"]);
+    // Loaded again: refused; with replace=true, the old one goes first.
+    let again = server
+        .send(post("/rw/rapid/tasks/T_ROB1?action=loadmod&json=1", &cookie, "modulepath=%24HOME%2FExtra.mod"))
+        .await;
+    assert!(again.status().is_client_error());
+    let replaced = server
+        .send(post(
+            "/rw/rapid/tasks/T_ROB1?action=loadmod&json=1",
+            &cookie,
+            "modulepath=HOME%3A%2FExtra.mod&replace=true",
+        ))
+        .await;
+    assert_eq!(replaced.status(), StatusCode::NO_CONTENT);
+    let unload = server.send(post("/rw/rapid/tasks/T_ROB1?action=unloadmod&json=1", &cookie, "module=Extra")).await;
+    assert_eq!(unload.status(), StatusCode::NO_CONTENT);
+    let list = json_of(server.send(get("/rw/rapid/modules?task=T_ROB1&json=1", Some(&cookie))).await).await;
+    assert_eq!(names(list), ["MainModule"]);
+    let outside = server
+        .send(post("/rw/rapid/tasks/T_ROB1?action=loadmod&json=1", &cookie, "modulepath=%24HOME%2F..%2Fx.mod"))
+        .await;
+    assert!(outside.status().is_client_error());
+}

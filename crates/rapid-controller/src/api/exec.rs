@@ -115,7 +115,7 @@ impl Session {
         self.anchor = None;
     }
 
-    fn must_be_stopped(&self) -> Result<(), ApiError> {
+    pub(super) fn must_be_stopped(&self) -> Result<(), ApiError> {
         match self.controller.program_state() {
             ProgramState::Stopped => Ok(()),
             other => {

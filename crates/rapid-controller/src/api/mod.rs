@@ -13,11 +13,13 @@
 //! Modules: `debug` (breakpoints, steps, locations), `data` (data and signals by
 //! name), `pendant` (the `Host` the tasks run with), `stream` (subscriptions),
 //! `exec` (run, clock policies, start/stop, program pointers, call stacks), `panel`
-//! (motors, run mode, the robots' positions, the file devices' folder).
+//! (motors, run mode, the robots' positions, the file devices' folder), `modules`
+//! (list, load, unload a task's modules).
 
 pub mod data;
 pub mod debug;
 mod exec;
+mod modules;
 pub mod panel;
 pub mod pendant;
 pub mod stream;

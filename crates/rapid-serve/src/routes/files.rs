@@ -58,7 +58,7 @@ pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
 }
 
 /// The host path of `segs` (a device, then names), checked.
-fn resolve(root: &Path, segs: &[String]) -> Result<PathBuf, RwsError> {
+pub(super) fn resolve(root: &Path, segs: &[String]) -> Result<PathBuf, RwsError> {
     let refused = |why: &str| RwsError::new(StatusCode::FORBIDDEN, crate::model::CODE_BAD_REQUEST, why);
     let device = device_name(&segs[0])
         .ok_or_else(|| RwsError::not_found(format!("`{}` is no device ($HOME, $TEMP, $RAMDISK, $BACKUP)", segs[0])))?;

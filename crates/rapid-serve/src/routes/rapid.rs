@@ -215,6 +215,32 @@ async fn task_route(app: &Arc<App>, req: &Req, task: &str) -> Res {
             app.controller.call(move |core| activate(core, &name, on)).await??;
             Ok(Reply::NoContent)
         }
+        (Some("loadmod"), &Method::POST) => {
+            let path = rapid_path(req.need("modulepath")?)?;
+            let replace = req.field("replace").unwrap_or("false") == "true";
+            let replaced = if replace { module_in(app, &path).await } else { None };
+            app.controller
+                .call(move |core| {
+                    if let Some(module) = replaced {
+                        let loaded = core.session.modules(&name).unwrap_or_default();
+                        if loaded.iter().any(|m| m.eq_ignore_ascii_case(&module)) {
+                            core.session.unload_module(&name, &module)?;
+                        }
+                    }
+                    core.session.load_module(&name, &path)
+                })
+                .await?
+                .map_err(|e| RwsError::from_api(&e))?;
+            Ok(Reply::NoContent)
+        }
+        (Some("unloadmod"), &Method::POST) => {
+            let module = req.need("module")?.to_owned();
+            app.controller
+                .call(move |core| core.session.unload_module(&name, &module))
+                .await?
+                .map_err(|e| RwsError::from_api(&e))?;
+            Ok(Reply::NoContent)
+        }
         _ => Err(not_found(req)),
     }
 }
@@ -318,14 +344,11 @@ async fn modules(app: &Arc<App>, req: &Req) -> Res {
     let items = app
         .controller
         .call(move |core| {
-            let view = core.session.tasks().into_iter().find(|t| t.name.eq_ignore_ascii_case(&task));
-            let view = view.ok_or_else(|| RwsError::not_found(format!("no task `{task}`")))?;
-            let controller = core.session.controller();
-            let Some(found) = controller.tasks.iter().find(|t| t.spec.name == view.name) else {
-                return Err(RwsError::not_found(format!("no task `{task}`")));
-            };
-            let names = found.loaded.vm.resources().symsearch.modules().to_vec();
-            Ok(names.into_iter().map(|name| Item::new("rap-module-info-li", &name).with("name", name)).collect())
+            let names = core.session.modules(&task).map_err(|e| RwsError::from_api(&e))?;
+            Ok(names
+                .into_iter()
+                .map(|name| Item::new("rap-module-info-li", &name).with("name", name).with("type", "ProgMod"))
+                .collect())
         })
         .await??;
     Ok(Reply::Items { base: BASE.into(), items })
@@ -372,4 +395,37 @@ async fn properties(app: &Arc<App>, path: Vec<String>) -> Res {
         })
         .await??;
     Ok(Reply::Items { base: BASE.into(), items: vec![item] })
+}
+
+/// A module path as RWS clients give it (`$HOME/x.mod`, `HOME:/x.mod`, `/hd0a/…` is not
+/// ours) as the RAPID path the task loads (`HOME:/x.mod`).
+fn rapid_path(text: &str) -> Result<String, RwsError> {
+    let text = text.trim();
+    if let Some(rest) = text.strip_prefix('$') {
+        let (device, tail) = rest.split_once('/').unwrap_or((rest, ""));
+        let device = super::files::device_name(device)
+            .ok_or_else(|| RwsError::bad_request(format!("modulepath `{text}`: no such device")))?;
+        return Ok(format!("{device}:/{tail}"));
+    }
+    if text.contains(':') {
+        return Ok(text.to_owned());
+    }
+    Err(RwsError::bad_request(format!("modulepath `{text}`: a device is needed ($HOME/…, HOME:/…)")))
+}
+
+/// The name of the module in the file at RAPID path `path`, read through the file
+/// service's folders (for `replace=true`); None when it cannot be told.
+async fn module_in(app: &Arc<App>, path: &str) -> Option<String> {
+    let (device, tail) = path.split_once(':')?;
+    let root = app.file_root.clone()?;
+    let segs: Vec<String> = std::iter::once(device.to_owned())
+        .chain(tail.split('/').filter(|s| !s.is_empty()).map(str::to_owned))
+        .collect();
+    let host = super::files::resolve(&root, &segs).ok()?;
+    let bytes = tokio::task::spawn_blocking(move || std::fs::read(host)).await.ok()?.ok()?;
+    let text = String::from_utf8_lossy(&bytes);
+    let mut words = text.split_whitespace().skip_while(|w| !w.eq_ignore_ascii_case("MODULE"));
+    words.next()?;
+    let name: String = words.next()?.chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '_').collect();
+    Some(name).filter(|n| !n.is_empty())
 }

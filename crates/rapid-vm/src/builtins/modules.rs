@@ -140,6 +140,25 @@ fn read_module(ctx: &Ctx<'_>, path: &Value, file: Option<&Value>, dynamic: bool)
     Ok(LoadFile { path, host, source, dynamic })
 }
 
+/// A Load of the module file at RAPID path `text` (`HOME:/x.mod`) under the controller
+/// root `root`, as a front end asks for it (RWS `loadmod`): the file read, checked for
+/// size. Err says why not, as Load's error would.
+pub fn front_end_load(root: Option<&std::path::Path>, text: &str) -> Result<ModuleRequest, String> {
+    let resolved = devices::resolve(root, text).map_err(|fault| format!("`{text}`: {}", fault.message()))?;
+    let host = resolved.path;
+    match std::fs::metadata(&host) {
+        Ok(meta) if meta.is_file() && meta.len() <= MAX_MODULE_BYTES => {}
+        Ok(meta) if meta.is_file() => {
+            return Err(format!("`{text}` is larger than the program memory ({MAX_MODULE_BYTES} bytes)"))
+        }
+        _ => return Err(format!("the module file `{text}` was not found")),
+    }
+    let bytes = std::fs::read(&host).map_err(|e| format!("`{text}` cannot be read: {e}"))?;
+    let source = SourceInput::from_bytes(text.to_owned(), bytes);
+    let file = LoadFile { path: text.to_owned(), host, source, dynamic: false };
+    Ok(ModuleRequest::Load { file, check_ref: false })
+}
+
 /// `Load [\Dynamic] FilePath [\File] [\CheckRef]`.
 fn load(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let file = read_module(ctx, &args[1], args.get(2), present(args.first()))?;
