@@ -63,6 +63,8 @@ pub(crate) struct Core {
     /// The controller failed (an internal error, caught): it runs no more, and
     /// requests are still answered as far as they can be.
     failed: bool,
+    /// Each task's program pointer last told, while the program stands stopped.
+    told_pointers: Vec<Option<Event>>,
     /// The state last told subscribers: (ctrlexecstate, ctrlstate).
     told: (String, String),
     stream: Subscription,
@@ -80,6 +82,7 @@ impl Core {
             inactive: Vec::new(),
             elog: Elog::default(),
             failed: false,
+            told_pointers: Vec::new(),
             told: (String::new(), String::new()),
             stream,
             events,
@@ -137,7 +140,32 @@ impl Core {
             self.elog.motors(now.1 == "motoron");
             self.publish(Event::CtrlState { state: now.1.clone() });
         }
+        if now.0 == "stopped" {
+            self.tell_pointers();
+        }
         self.told = now;
+    }
+
+    /// While the program stands stopped, each task's program pointer that moved (a
+    /// stop, PP to Main, a step) is told once.
+    fn tell_pointers(&mut self) {
+        let tasks = self.session.tasks();
+        self.told_pointers.resize(tasks.len(), None);
+        for (idx, task) in tasks.iter().enumerate() {
+            let Ok(Some(at)) = self.session.program_pointer(&task.name) else { continue };
+            let module =
+                std::path::Path::new(&at.file).file_stem().map_or_else(String::new, |s| s.to_string_lossy().into());
+            let event = Event::ProgramPointer {
+                task: task.name.clone(),
+                routine: at.routine,
+                module,
+                position: format!("{},{}", at.line, at.column),
+            };
+            if self.told_pointers[idx].as_ref() != Some(&event) {
+                self.publish(event.clone());
+                self.told_pointers[idx] = Some(event);
+            }
+        }
     }
 }
 
@@ -177,6 +205,12 @@ impl Handle {
             )),
             Err(_) => Err(RwsError::busy("the controller did not answer in time")),
         }
+    }
+
+    /// Tells subscribers of something that happened outside the controller (a DIPC
+    /// message between clients).
+    pub(crate) fn publish(&self, event: Event) {
+        let _ = self.events.send(event);
     }
 
     /// A new listener to the controller's events.

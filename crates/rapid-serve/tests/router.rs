@@ -481,3 +481,105 @@ async fn modules_are_listed_loaded_and_unloaded() {
         .await;
     assert!(outside.status().is_client_error());
 }
+
+/// The next text frame of `ws` that contains `needle`, within 5 s.
+async fn frame_with<S>(ws: &mut S, needle: &str) -> String
+where
+    S: futures_util::Stream<
+            Item = Result<tokio_tungstenite::tungstenite::Message, tokio_tungstenite::tungstenite::Error>,
+        > + Unpin,
+{
+    use futures_util::StreamExt;
+    let deadline = tokio::time::Instant::now() + Duration::from_secs(5);
+    loop {
+        let next = tokio::time::timeout_at(deadline, ws.next()).await;
+        match next {
+            Ok(Some(Ok(tokio_tungstenite::tungstenite::Message::Text(text)))) if text.contains(needle) => {
+                return text.to_string();
+            }
+            Ok(Some(Ok(_))) => {}
+            other => panic!("no frame with `{needle}`: {other:?}"),
+        }
+    }
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_websocket_subscription_delivers_signals_execution_and_queue_messages() {
+    use tokio_tungstenite::tungstenite::client::IntoClientRequest;
+    let server = Server::new("websocket");
+    let cookie = server.login().await;
+    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
+    let host = listener.local_addr().unwrap().to_string();
+    let (stop_tx, stop_rx) = tokio::sync::oneshot::channel::<()>();
+    let serving = tokio::spawn(rapid_serve::serve(listener, server.router.clone(), async move {
+        let _ = stop_rx.await;
+    }));
+    let create = server
+        .send(post(
+            "/rw/dipc?action=dipc-create&json=1",
+            &cookie,
+            "dipc-queue-name=q1&dipc-queue-size=10&dipc-max-msg-size=100",
+        ))
+        .await;
+    assert_eq!(create.status(), StatusCode::CREATED);
+    let form = "resources=1&1=%2Frw%2Fiosystem%2Fsignals%2FLocal%2FDRV_1%2Fdo1%3Bstate&1-p=2\
+                &resources=2&2=%2Frw%2Frapid%2Fexecution%3Bctrlexecstate&2-p=1\
+                &resources=3&3=%2Frw%2Fdipc%2Fq1&3-p=1\
+                &resources=4&4=%2Frw%2Frapid%2Ftasks%2FT_ROB1%2Fpcp%3Bprogrampointerchange&4-p=1";
+    let mut request = post("/subscription", &cookie, form);
+    request.headers_mut().insert(header::HOST, host.parse().unwrap());
+    let created = server.send(request).await;
+    assert_eq!(created.status(), StatusCode::CREATED);
+    let location = header_text(&created, "location");
+    assert_eq!(location, format!("ws://{host}/poll/1"));
+    let mut ws_request = location.into_client_request().unwrap();
+    ws_request.headers_mut().insert("cookie", cookie.parse().unwrap());
+    ws_request.headers_mut().insert("sec-websocket-protocol", "robapi2_subscription".parse().unwrap());
+    let (mut ws, response) = tokio_tungstenite::connect_async(ws_request).await.expect("the websocket opens");
+    assert_eq!(header_text_of(response.headers(), "sec-websocket-protocol"), "robapi2_subscription");
+    // The program waits for di1, then sets do1.
+    let start = "regain=continue&execmode=continue&cycle=forever&condition=none&stopatbp=disabled&alltaskbytsp=true";
+    assert_eq!(
+        server.send(post("/rw/rapid/execution?action=start", &cookie, start)).await.status(),
+        StatusCode::NO_CONTENT
+    );
+    let running = frame_with(&mut ws, "rap-ctrlexecstate-ev").await;
+    assert!(running.contains("<span class=\"ctrlexecstate\">running</span>") && !running.contains('\n'), "{running}");
+    let set = server.send(post("/rw/iosystem/signals/Local/DRV_1/di1?action=set", &cookie, "lvalue=1")).await;
+    assert_eq!(set.status(), StatusCode::NO_CONTENT);
+    let signal = frame_with(&mut ws, "ios-signalstate-ev").await;
+    assert!(
+        signal.contains(
+            "<a href=\"/rw/iosystem/signals/Local/DRV_1/do1;state\" rel=\"self\"/><span class=\"lvalue\">1</span>"
+        ),
+        "{signal}"
+    );
+    let send = "dipc-src-queue-name=q1&dipc-cmd=111&dipc-userdef=5&dipc-msgtype=1&dipc-data=hello";
+    assert_eq!(server.send(post("/rw/dipc/q1?action=dipc-send", &cookie, send)).await.status(), StatusCode::NO_CONTENT);
+    let message = frame_with(&mut ws, "dipc-msg-ev").await;
+    assert!(
+        message.contains("<span class=\"dipc-data\">hello</span><span class=\"dipc-userdef\">5</span>"),
+        "{message}"
+    );
+    // Stopped, then PP to Main: the pointer goes back to main's first statement.
+    assert_eq!(
+        server.send(post("/rw/rapid/execution?action=stop", &cookie, "stopmode=stop")).await.status(),
+        StatusCode::NO_CONTENT
+    );
+    let stopped = frame_with(&mut ws, "<span class=\"ctrlexecstate\">stopped</span>").await;
+    assert!(stopped.contains("rap-ctrlexecstate-ev"));
+    assert_eq!(
+        server.send(post("/rw/rapid/execution?action=resetpp", &cookie, "")).await.status(),
+        StatusCode::NO_CONTENT
+    );
+    let line = PROGRAM.lines().position(|l| l.contains("WaitDI")).unwrap() + 1;
+    let pointer = frame_with(&mut ws, &format!("<span class=\"beginposition\">{line},5</span>")).await;
+    assert!(pointer.contains("<span class=\"routinename\">main</span>"), "{pointer}");
+    let _ = stop_tx.send(());
+    drop(ws);
+    let _ = tokio::time::timeout(Duration::from_secs(5), serving).await;
+}
+
+fn header_text_of(headers: &axum::http::HeaderMap, name: &str) -> String {
+    headers.get(name).map(|v| v.to_str().unwrap().to_owned()).unwrap_or_default()
+}

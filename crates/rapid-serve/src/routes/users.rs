@@ -74,7 +74,13 @@ pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
                 cmd: req.field("dipc-cmd").unwrap_or("111").to_owned(),
                 from: req.field("dipc-src-queue-name").unwrap_or("").to_owned(),
             };
+            let event = crate::hub::Event::Dipc {
+                queue: (*queue).to_owned(),
+                data: message.data.clone(),
+                userdef: message.userdef.clone(),
+            };
             app.dipc.send(queue, message)?;
+            app.controller.publish(event);
             Ok(Reply::NoContent)
         }
         (["rw", "dipc", queue], Some("dipc-read"), &Method::GET) => {
