@@ -20,6 +20,9 @@ const PROGRAM: &str = "MODULE MainModule
   CONST num limit := 3;
   PERS tooldata tGrip := [TRUE, [[0, 0, 100], [1, 0, 0, 0]], [1, [0, 0, 1], [1, 0, 0, 0], 0, 0, 0]];
   PERS wobjdata wTable := [FALSE, TRUE, \"\", [[100, 0, 0], [1, 0, 0, 0]], [[0, 0, 50], [1, 0, 0, 0]]];
+  PROC other()
+    count := 100;
+  ENDPROC
   PROC main()
     WaitDI di1, 1;
     count := count + 1;
@@ -372,6 +375,19 @@ async fn symbol_properties_tasks_and_the_run_mode() {
     assert_eq!(state_field(&server, pcp, &cookie, "routinename").await, "main");
     assert_eq!(state_field(&server, pcp, &cookie, "beginposition").await, format!("{line},5"));
     assert_eq!(state_field(&server, "/ctrl/$RAMDISK?json=1", &cookie, "_value").await, "$RAMDISK");
+    // PP to a routine, and back to main.
+    let to_other =
+        server.send(post("/rw/rapid/tasks/T_ROB1/pcp?action=set-pp-routine&json=1", &cookie, "routine=other")).await;
+    assert_eq!(to_other.status(), StatusCode::NO_CONTENT);
+    assert_eq!(state_field(&server, pcp, &cookie, "routinename").await, "other");
+    let nowhere =
+        server.send(post("/rw/rapid/tasks/T_ROB1/pcp?action=set-pp-routine&json=1", &cookie, "routine=nowhere")).await;
+    assert!(nowhere.status().is_client_error());
+    assert_eq!(
+        server.send(post("/rw/rapid/execution?action=resetpp", &cookie, "")).await.status(),
+        StatusCode::NO_CONTENT
+    );
+    assert_eq!(state_field(&server, pcp, &cookie, "routinename").await, "main");
     let signals = json_of(server.send(get("/rw/iosystem/signals?json=1", Some(&cookie))).await).await;
     let names: Vec<&str> =
         signals["_embedded"]["_state"].as_array().unwrap().iter().filter_map(|s| s["name"].as_str()).collect();
@@ -531,6 +547,9 @@ async fn a_websocket_subscription_delivers_signals_execution_and_queue_messages(
     let created = server.send(request).await;
     assert_eq!(created.status(), StatusCode::CREATED);
     let location = header_text(&created, "location");
+    // Without a session cookie or credentials, the websocket is refused like any request.
+    let bare = server.send(get("/poll/1", None)).await;
+    assert_eq!(bare.status(), StatusCode::UNAUTHORIZED);
     assert_eq!(location, format!("ws://{host}/poll/1"));
     let mut ws_request = location.into_client_request().unwrap();
     ws_request.headers_mut().insert("cookie", cookie.parse().unwrap());

@@ -24,7 +24,16 @@ pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
             Ok(Reply::Items { base: BASE.into(), items })
         }
         ["tasks", task] => task_route(app, req, task).await,
-        ["tasks", task, "pcp"] if req.is(Method::GET) => program_pointer(app, task).await,
+        ["tasks", task, "pcp"] if req.is(Method::GET) && req.action().is_none() => program_pointer(app, task).await,
+        ["tasks", task, "pcp"] if req.is(Method::POST) && req.action() == Some("set-pp-routine") => {
+            // uncertain: the action and its `routine` field as we read the RWS manual.
+            let (task, routine) = ((*task).to_owned(), req.need("routine")?.to_owned());
+            app.controller
+                .call(move |core| core.session.pp_to_routine(&task, &routine))
+                .await?
+                .map_err(|e| RwsError::from_api(&e))?;
+            Ok(Reply::NoContent)
+        }
         ["symbol", "data", "RAPID", path @ ..] if (2..=3).contains(&path.len()) => {
             symbol_data(app, req, path.join("/")).await
         }
