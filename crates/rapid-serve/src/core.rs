@@ -38,6 +38,9 @@ type Job = Box<dyn FnOnce(&mut Core) + Send>;
 pub type BuildSession = Box<dyn FnOnce() -> Result<Session, String> + Send>;
 /// Runs when the server stops, on the controller thread (saving persistents).
 pub type OnExit = Box<dyn FnOnce(&mut Session) -> Result<(), String> + Send>;
+/// Gets each line the program writes on the pendant (TPWrite), on the controller
+/// thread.
+pub type OnTpWrite = Box<dyn FnMut(&str) + Send>;
 
 /// What the controller thread is started with.
 pub struct Boot {
@@ -46,6 +49,8 @@ pub struct Boot {
     pub clock: ClockPolicy,
     /// Run on the controller thread when the server stops (saving persistents).
     pub on_exit: Option<OnExit>,
+    /// Where the pendant's lines go besides the stream (a terminal).
+    pub on_tp_write: Option<OnTpWrite>,
 }
 
 /// The controller and what RWS keeps beside it.
@@ -69,10 +74,11 @@ pub(crate) struct Core {
     told: (String, String),
     stream: Subscription,
     events: broadcast::Sender<Event>,
+    on_tp_write: Option<OnTpWrite>,
 }
 
 impl Core {
-    fn new(mut session: Session, events: broadcast::Sender<Event>) -> Core {
+    fn new(mut session: Session, events: broadcast::Sender<Event>, on_tp_write: Option<OnTpWrite>) -> Core {
         let stream = session.subscribe();
         let mut core = Core {
             session,
@@ -86,6 +92,7 @@ impl Core {
             told: (String::new(), String::new()),
             stream,
             events,
+            on_tp_write,
         };
         core.told = (core.exec_state().to_owned(), core.ctrl_state().to_owned());
         core.elog.boot(core.session.motors_on());
@@ -125,6 +132,9 @@ impl Core {
             Err(_) => return,
         };
         for change in batch.changes {
+            if let (rapid_controller::api::Change::TpWrite { text }, Some(out)) = (&change, &mut self.on_tp_write) {
+                out(text);
+            }
             if let Some(event) = Event::of_change(&change) {
                 self.publish(event);
             }
@@ -247,7 +257,7 @@ impl Controller {
                         return Err(message);
                     }
                 };
-                let mut core = Core::new(session, thread_events);
+                let mut core = Core::new(session, thread_events, boot.on_tp_write);
                 core.session.set_clock(boot.clock);
                 let _ = ready_tx.send(Ok(core.session.file_root()));
                 drive(&mut core, &rx, &thread_stop);

@@ -23,7 +23,7 @@ use std::net::SocketAddr;
 use std::sync::Arc;
 
 pub use crate::auth::{Auth, DEFAULT_USER, REALM};
-pub use crate::core::{Boot, BuildSession, Controller, OnExit};
+pub use crate::core::{Boot, BuildSession, Controller, OnExit, OnTpWrite};
 pub use rapid_controller::api::{ClockPolicy, Session};
 
 /// What the handlers share.

@@ -80,6 +80,7 @@ impl Server {
             session: Box::new(move || boot(for_boot)),
             clock: ClockPolicy::Paced { rate: 20.0 },
             on_exit: None,
+            on_tp_write: None,
         };
         let controller = rapid_serve::Controller::start(boot).expect("the controller boots");
         let router = rapid_serve::router(&controller, rapid_serve::Config::default());

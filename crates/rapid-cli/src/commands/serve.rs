@@ -54,6 +54,13 @@ pub(crate) fn run(args: &ServeArgs) -> anyhow::Result<ExitStatus> {
         session: boot_closure(args.paths.clone(), modules.clone()),
         clock,
         on_exit: Some(Box::new(move |session: &mut Session| save_persistents(session, &modules))),
+        // The pendant's lines go to stdout, as `rapid run` writes them.
+        on_tp_write: Some(Box::new(|line: &str| {
+            use std::io::Write;
+            let mut out = std::io::stdout().lock();
+            // A closed stdout must not stop the controller.
+            let _ = writeln!(out, "{line}").and_then(|()| out.flush());
+        })),
     };
     let controller = match rapid_serve::Controller::start(boot) {
         Ok(controller) => controller,

@@ -28,14 +28,15 @@ fn free_port() -> u16 {
     TcpListener::bind("127.0.0.1:0").and_then(|l| l.local_addr()).map(|a| a.port()).expect("a free port")
 }
 
-/// `rapid serve` on `project`, once it says it serves (at most 30 s), and its URL.
-fn start_server(project: &Path) -> (Child, String) {
+/// `rapid serve` on `project`, once it says it serves (at most 30 s): the child, its
+/// URL, and its stdout (the pendant's lines) read to the end on a thread.
+fn start_server(project: &Path) -> (Child, String, std::thread::JoinHandle<String>) {
     let port = free_port();
     let bind = format!("127.0.0.1:{port}");
     let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
         .args(["serve", "--bind", &bind, "--speed", "10"])
         .arg(project)
-        .stdout(Stdio::null())
+        .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
         .expect("start rapid serve");
@@ -50,7 +51,10 @@ fn start_server(project: &Path) -> (Child, String) {
     let mut seen = Vec::new();
     while Instant::now() < deadline {
         match rx.recv_timeout(Duration::from_millis(100)) {
-            Ok(line) if line.starts_with("serving RWS on") => return (child, format!("http://{bind}")),
+            Ok(line) if line.starts_with("serving RWS on") => {
+                let stdout = read_all(child.stdout.take());
+                return (child, format!("http://{bind}"), stdout);
+            }
             Ok(line) => seen.push(line),
             Err(mpsc::RecvTimeoutError::Timeout) => {}
             Err(mpsc::RecvTimeoutError::Disconnected) => break,
@@ -101,6 +105,17 @@ fn output_bounded(cmd: &mut Command, limit: Duration) -> Option<Output> {
     Some(Output { status, stdout: stdout.join().unwrap_or_default(), stderr: stderr.join().unwrap_or_default() })
 }
 
+/// Reads a pipe to its end on a thread of its own.
+fn read_all(pipe: Option<std::process::ChildStdout>) -> std::thread::JoinHandle<String> {
+    std::thread::spawn(move || {
+        let mut text = String::new();
+        if let Some(mut pipe) = pipe {
+            let _ = std::io::Read::read_to_string(&mut pipe, &mut text);
+        }
+        text
+    })
+}
+
 fn interrupt(child: &Child) {
     let sent = Command::new("kill").args(["-INT", &child.id().to_string()]).status().expect("kill");
     assert!(sent.success());
@@ -110,7 +125,7 @@ fn interrupt(child: &Child) {
 fn ctrl_c_saves_the_persistents_and_exits_0() {
     let dir = scratch_in("serve", "ctrl_c");
     let project = fixture_project(&dir);
-    let (mut child, _url) = start_server(&project);
+    let (mut child, _url, _stdout) = start_server(&project);
     interrupt(&child);
     let status = wait_bounded(&mut child, Duration::from_secs(20)).expect("rapid serve ends after Ctrl-C");
     assert_eq!(status.code(), Some(0));
@@ -188,11 +203,13 @@ fn abb_robot_client_works_against_rapid_serve() {
     let Some(python) = client_python() else { return };
     let dir = scratch_in("serve", "abb_robot_client");
     let project = fixture_project(&dir);
-    let (mut child, url) = start_server(&project);
+    let (mut child, url, pendant) = start_server(&project);
     let script = repo_root().join("crates/rapid-cli/tests/cli/serve_client.py");
     let out = output_bounded(Command::new(&python).arg(&script).arg(&url), Duration::from_secs(180));
     interrupt(&child);
     let status = wait_bounded(&mut child, Duration::from_secs(20));
+    let pendant = pendant.join().unwrap_or_default();
+    assert!(pendant.lines().any(|l| l == "count 1"), "the pendant's lines: {pendant}");
     let out = out.expect("the client script ends within 180 s");
     let stdout = String::from_utf8_lossy(&out.stdout);
     let stderr = String::from_utf8_lossy(&out.stderr);
@@ -216,7 +233,7 @@ fn a_system_of_three_tasks_is_served() {
     let dir = scratch_in("serve", "press_cell");
     let project = dir.join("press_cell_project");
     copy_dir(&repo_root().join("examples/press_cell_project"), &project);
-    let (mut child, url) = start_server(&project);
+    let (mut child, url, _stdout) = start_server(&project);
     let script = repo_root().join("crates/rapid-cli/tests/cli/serve_system.py");
     let out = output_bounded(Command::new(&python).arg(&script).arg(&url), Duration::from_secs(120));
     interrupt(&child);
