@@ -6,9 +6,9 @@ from Module1.mod and eio.cfg. Prints `N passed, 0 failed` at the end; any failed
 check exits non-zero."""
 
 import sys
-import threading
 import time
 
+import numpy as np
 from abb_robot_client import rws
 
 URL = sys.argv[1]
@@ -56,7 +56,7 @@ check("activated", c.get_tasks()["T_ROB1"].active)
 # Data: PERS values as RAPID literals, in and out.
 check("pers num", c.get_rapid_variable("test_var_num") == "123.456")
 check("pers string", c.get_rapid_variable("test_var_str") == '"Hello"')
-c.set_rapid_variable("test_var_num", "7.5")
+c.set_rapid_variable_num("test_var_num", 7.5)
 check("pers num set", c.get_rapid_variable_num("test_var_num") == 7.5)
 c.set_rapid_variable("test_var_str", '"Hello World!"', "T_ROB1/Module1")
 check("pers string set through the module", c.get_rapid_variable("test_var_str") == '"Hello World!"')
@@ -66,7 +66,21 @@ try:
 except rws.ABBException as e:
     check("a string is no num", e.code != 0)
 names = sorted(v["name"] for v in c.get_rapid_variables())
-check("persistents listed", names == ["seen", "test_var_num", "test_var_str"], names)
+check("persistents listed", names == ["seen", "test_jt", "test_jts", "test_nums", "test_var_num", "test_var_str"], names)
+
+# Arrays and jointtargets through the client's converters (radians on its side).
+check("num array", list(c.get_rapid_variable_num_array("test_nums")) == [1, 2, 3])
+c.set_rapid_variable_num_array("test_nums", [4.5, 5, -6])
+check("num array set", list(c.get_rapid_variable_num_array("test_nums")) == [4.5, 5, -6])
+jt = c.get_rapid_variable_jointtarget("test_jt")
+check("jointtarget", np.allclose(np.rad2deg(jt.robax), [1, 2, 3, 4, 5, 6]) and np.allclose(np.rad2deg(jt.extax), 9e9), jt)
+c.set_rapid_variable_jointtarget("test_jt", rws.JointTarget(np.deg2rad([10, 20, 30, 40, 50, 60]), jt.extax))
+check("jointtarget set", np.allclose(np.rad2deg(c.get_rapid_variable_jointtarget("test_jt").robax), [10, 20, 30, 40, 50, 60]))
+jts = c.get_rapid_variable_jointtarget_array("test_jts")
+check("jointtarget array", len(jts) == 2 and np.allclose(np.rad2deg(jts[1].robax), [6, 5, 4, 3, 2, 1]), jts)
+c.set_rapid_variable_jointtarget_array("test_jts", [jts[1], jts[0]])
+swapped = c.get_rapid_variable_jointtarget_array("test_jts")
+check("jointtarget array set", np.allclose(np.rad2deg(swapped[0].robax), [6, 5, 4, 3, 2, 1]), swapped)
 
 # Signals.
 check("DO at its default", c.get_digital_io("test_do1") == 0)
@@ -159,6 +173,7 @@ poll = c._do_get("users/rmmp/poll")["_embedded"]["_state"][0]
 check("rmmp", poll["_type"] == "user-rmmp-poll" and poll["status"] == "GRANTED", poll)
 check("queue created", c.try_create_ipc_queue("serve_q"))
 check("queue exists", not c.try_create_ipc_queue("serve_q"))
+check("queue read empty", c.get_ipc_queue("serve_q")["_embedded"]["_state"] == [])
 c.send_ipc_message("serve_q", "hello", "serve_q", cmd=7, userdef=3)
 got = c.read_ipc_message("serve_q")
 check("queue message", len(got) == 1 and got[0].data == "hello" and got[0].userdef == "3", got)
