@@ -103,8 +103,9 @@ impl RwsError {
         RwsError::new(StatusCode::CONFLICT, CODE_WRONG_STATE, msg)
     }
 
+    /// Something this virtual controller does not do yet: said so, never guessed.
     pub(crate) fn unsupported(msg: impl Into<String>) -> RwsError {
-        RwsError::new(StatusCode::BAD_REQUEST, CODE_UNSUPPORTED, msg)
+        RwsError::new(StatusCode::BAD_REQUEST, CODE_UNSUPPORTED, format!("not supported yet: {}", msg.into()))
     }
 
     pub(crate) fn busy(msg: impl Into<String>) -> RwsError {
@@ -119,7 +120,7 @@ impl RwsError {
             E::NotFound(_) => RwsError::new(StatusCode::BAD_REQUEST, CODE_NOT_FOUND, msg),
             E::BadPath(_) | E::BadLiteral(_) => RwsError::bad_request(msg),
             E::ReadOnly(_) | E::WrongState(_) | E::Refused(_) => RwsError::wrong_state(msg),
-            E::Unsupported(_) => RwsError::unsupported(msg),
+            E::Unsupported(_) => RwsError::new(StatusCode::BAD_REQUEST, CODE_UNSUPPORTED, msg),
             E::Failed(_) => RwsError::new(StatusCode::INTERNAL_SERVER_ERROR, CODE_WRONG_STATE, msg),
         }
     }

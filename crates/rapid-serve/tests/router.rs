@@ -603,3 +603,28 @@ async fn a_websocket_subscription_delivers_signals_execution_and_queue_messages(
 fn header_text_of(headers: &axum::http::HeaderMap, name: &str) -> String {
     headers.get(name).map(|v| v.to_str().unwrap().to_owned()).unwrap_or_default()
 }
+
+#[tokio::test]
+async fn dipc_queues_between_clients_and_not_yet_to_tasks() {
+    let server = Server::new("dipc");
+    let cookie = server.login().await;
+    let create = |name: &str| format!("dipc-queue-name={name}&dipc-queue-size=10&dipc-max-msg-size=20");
+    let made = server.send(post("/rw/dipc?action=dipc-create&json=1", &cookie, &create("T_mine"))).await;
+    assert_eq!(made.status(), StatusCode::CREATED);
+    let again = server.send(post("/rw/dipc?action=dipc-create&json=1", &cookie, &create("T_mine"))).await;
+    assert_eq!(json_of(again).await["_embedded"]["status"]["code"], -1_073_445_879_i64);
+    let task = server.send(post("/rw/dipc?action=dipc-create&json=1", &cookie, &create("t_rob1"))).await;
+    assert_eq!(task.status(), StatusCode::BAD_REQUEST);
+    let to_task = server.send(post("/rw/dipc/RMQ_T_ROB1?action=dipc-send&json=1", &cookie, "dipc-data=x")).await;
+    let msg = json_of(to_task).await["_embedded"]["status"]["msg"].as_str().unwrap_or_default().to_owned();
+    assert!(msg.contains("not supported"), "{msg}");
+    let long =
+        server.send(post("/rw/dipc/T_mine?action=dipc-send&json=1", &cookie, "dipc-data=012345678901234567890")).await;
+    assert_eq!(long.status(), StatusCode::BAD_REQUEST);
+    let sent =
+        server.send(post("/rw/dipc/T_mine?action=dipc-send&json=1", &cookie, "dipc-data=ok&dipc-userdef=2")).await;
+    assert_eq!(sent.status(), StatusCode::NO_CONTENT);
+    assert_eq!(state_field(&server, "/rw/dipc/T_mine?action=dipc-read&json=1", &cookie, "dipc-data").await, "ok");
+    let empty = json_of(server.send(get("/rw/dipc/T_mine?action=dipc-read&json=1", Some(&cookie))).await).await;
+    assert_eq!(empty["_embedded"]["_state"].as_array().map(Vec::len), Some(0));
+}

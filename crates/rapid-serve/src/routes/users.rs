@@ -63,6 +63,9 @@ pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
         (["rw", "dipc"], Some("dipc-create"), &Method::POST) => {
             let name = req.need("dipc-queue-name")?;
             let size = req.field("dipc-max-msg-size").and_then(|s| s.parse().ok()).unwrap_or(444);
+            if is_task_queue(app, name).await? {
+                return Err(RwsError::bad_request(format!("`{name}` is a RAPID task's queue name")));
+            }
             app.dipc.create(name, size)?;
             Ok(Reply::Created { location: None, body: None })
         }
@@ -74,6 +77,9 @@ pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
                 cmd: req.field("dipc-cmd").unwrap_or("111").to_owned(),
                 from: req.field("dipc-src-queue-name").unwrap_or("").to_owned(),
             };
+            if is_task_queue(app, queue).await? {
+                return Err(RwsError::unsupported(format!("sending to a RAPID task's queue (`{queue}`)")));
+            }
             let event = crate::hub::Event::Dipc {
                 queue: (*queue).to_owned(),
                 data: message.data.clone(),
@@ -104,9 +110,6 @@ impl Dipc {
         if name.is_empty() || name.len() > 64 {
             return Err(RwsError::bad_request("a queue name has 1 to 64 characters"));
         }
-        if is_task_queue(name) {
-            return Err(RwsError::bad_request(format!("`{name}` is a RAPID task's queue name")));
-        }
         let mut queues = self.lock();
         if queues.contains_key(name) {
             return Err(RwsError::new(StatusCode::BAD_REQUEST, CODE_DIPC_EXISTS, format!("queue `{name}` exists")));
@@ -119,9 +122,6 @@ impl Dipc {
     }
 
     fn send(&self, name: &str, message: Message) -> Result<(), RwsError> {
-        if is_task_queue(name) {
-            return Err(RwsError::unsupported(format!("sending to a RAPID task's queue (`{name}`)")));
-        }
         let mut queues = self.lock();
         let (max_size, queue) =
             queues.get_mut(name).ok_or_else(|| RwsError::not_found(format!("no queue `{name}`")))?;
@@ -155,7 +155,14 @@ impl Dipc {
     }
 }
 
-/// RAPID tasks' RMQ queues are named `RMQ_<task>`; clients may name the task itself.
-fn is_task_queue(name: &str) -> bool {
-    name.to_ascii_uppercase().starts_with("RMQ_") || name.to_ascii_uppercase().starts_with("T_")
+/// Whether `name` is a RAPID task's RMQ queue: `RMQ_<task>`, or the task's name,
+/// which clients may give for it.
+async fn is_task_queue(app: &Arc<App>, name: &str) -> Result<bool, RwsError> {
+    let name = name.to_owned();
+    app.controller
+        .call(move |core| {
+            let bare = name.get(..4).filter(|p| p.eq_ignore_ascii_case("RMQ_")).map_or(name.as_str(), |_| &name[4..]);
+            core.session.tasks().iter().any(|t| t.name.eq_ignore_ascii_case(bare))
+        })
+        .await
 }
