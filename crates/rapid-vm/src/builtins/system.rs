@@ -48,7 +48,12 @@ pub(super) fn wait_time(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
     Ok(None)
 }
 
+/// `Stop [\NoRegain] | [\AllMoveTasks]`: halts the program. In UNDO context it is
+/// ignored, with its switches, and an event-log warning is written (§1.13).
 pub(super) fn stop(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
+    if ignored_in_undo(ctx, "STOP") {
+        return Ok(None);
+    }
     ctx.stop = super::StopKind::Stop;
     // `\AllMoveTasks`: the programs of the other running NORMAL tasks stop too (the
     // controller stops them). `\NoRegain` concerns a robot moved away while stopped,
@@ -67,10 +72,25 @@ pub(super) fn exit_cycle(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Va
     Ok(None)
 }
 
-/// `Break` stops execution for debugging (no debugger is attached: like Stop).
+/// `Break` stops execution for debugging (no debugger is attached: like Stop); in UNDO
+/// context it is ignored with an event-log warning (§1.13). (Break inside a loop ends
+/// the loop: compiled as a jump, never called.)
 pub(super) fn break_(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
+    if ignored_in_undo(ctx, "BREAK") {
+        return Ok(None);
+    }
     ctx.stop = super::StopKind::Stop;
     Ok(None)
+}
+
+/// In UNDO context `instruction` is not executed: logs the warning (the VM places it at
+/// the call) and answers `true` (§1.13, `exec/undo.rs`).
+fn ignored_in_undo(ctx: &mut Ctx<'_>, instruction: &str) -> bool {
+    if !crate::exec::undo::in_undo_context(ctx.chain) {
+        return false;
+    }
+    crate::exec::undo::log_ignored(ctx.events, ctx.time, instruction, ctx.routine, None);
+    true
 }
 
 /// `BookErrNo ErrorName`: gives the errnum variable a free system error number.
