@@ -16,7 +16,7 @@ use std::path::Path;
 use rapid_config::{CfgFile, Instance};
 
 use super::files::devices;
-use super::{present, Ctx, Entries};
+use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
@@ -343,8 +343,14 @@ fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     result
 }
 
-pub(super) static ENTRIES: Entries =
-    &[("ReadCfgData", read_cfg_data), ("WriteCfgData", write_cfg_data), ("SaveCfgData", save_cfg_data)];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("ReadCfgData", read_cfg_data),
+        native("WriteCfgData", write_cfg_data),
+        native("SaveCfgData", save_cfg_data),
+    ],
+};
 
 #[cfg(test)]
 mod tests {

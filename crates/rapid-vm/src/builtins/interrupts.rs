@@ -15,7 +15,7 @@
 //! again the queued safe interrupts run first, in the order they came.
 
 use super::io::connected;
-use super::{present, Ctx, Entries};
+use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
@@ -469,24 +469,27 @@ fn ienable(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     Ok(None)
 }
 
-pub(super) static ENTRIES: Entries = &[
-    ("ITimer", itimer),
-    ("ISignalDI", isignal_digital),
-    ("ISignalDO", isignal_digital),
-    ("ISignalGI", isignal_group),
-    ("IPers", ipers),
-    ("IError", ierror),
-    ("GetTrapData", get_trap_data),
-    ("ReadErrData", read_err_data),
-    ("ISignalGO", isignal_group),
-    ("ISignalAI", isignal_analog),
-    ("ISignalAO", isignal_analog),
-    ("IDelete", idelete),
-    ("ISleep", isleep),
-    ("IWatch", iwatch),
-    ("IDisable", idisable),
-    ("IEnable", ienable),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("ITimer", itimer),
+        native("ISignalDI", isignal_digital),
+        native("ISignalDO", isignal_digital),
+        native("ISignalGI", isignal_group),
+        native("IPers", ipers),
+        native("IError", ierror),
+        native("GetTrapData", get_trap_data),
+        native("ReadErrData", read_err_data),
+        native("ISignalGO", isignal_group),
+        native("ISignalAI", isignal_analog),
+        native("ISignalAO", isignal_analog),
+        native("IDelete", idelete),
+        native("ISleep", isleep),
+        native("IWatch", iwatch),
+        native("IDisable", idisable),
+        native("IEnable", ienable),
+    ],
+};
 
 #[cfg(test)]
 mod tests {

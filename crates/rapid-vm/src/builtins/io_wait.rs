@@ -8,7 +8,7 @@
 //! instruction, so the deadline counts from the first try.
 
 use super::io::signal;
-use super::{present, Ctx, Entries, StopKind};
+use super::{native, present, Ctx, Family, StopKind};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
@@ -184,11 +184,14 @@ fn wait_key(ctx: &Ctx<'_>) -> (usize, u32) {
     (ctx.chain.len(), pc)
 }
 
-pub(super) static ENTRIES: Entries = &[
-    ("WaitDI", wait_digital),
-    ("WaitDO", wait_digital),
-    ("WaitGI", wait_group),
-    ("WaitGO", wait_group),
-    ("WaitAI", wait_analog),
-    ("WaitAO", wait_analog),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("WaitDI", wait_digital),
+        native("WaitDO", wait_digital),
+        native("WaitGI", wait_group),
+        native("WaitGO", wait_group),
+        native("WaitAI", wait_analog),
+        native("WaitAO", wait_analog),
+    ],
+};

@@ -11,6 +11,8 @@
 //! (or the persistent's value) at every wake, so a hit has its exact time for a
 //! signal, and the time of the wake for a persistent another task changed.
 
+use std::sync::LazyLock;
+
 use rapid_motion::plan::{MoveRequest, Target};
 
 use super::super::{present, Ctx, StopKind};
@@ -35,7 +37,9 @@ const HIGH_LEVEL: usize = 9;
 const LOW_LEVEL: usize = 10;
 const SEARCH_POINT: usize = 11;
 
-/// Where the arguments after SearchPoint are (SearchC has CirPoint first).
+/// Where the arguments after SearchPoint are (SearchC has CirPoint first;
+/// `signature::ABSENT` where the instruction has no such parameter).
+#[derive(Debug, PartialEq, Eq)]
 struct Places {
     cir: Option<usize>,
     to: usize,
@@ -50,23 +54,30 @@ struct Places {
     ext_only: Option<usize>,
 }
 
-const NONE: usize = super::moves::NONE;
-const SEARCH_L: Places =
-    Places { cir: None, to: 12, id: 13, speed: 14, v: 15, t: 16, tool: 17, wobj: 18, corr: 19, ext_only: None };
-const SEARCH_C: Places =
-    Places { cir: Some(12), to: 13, id: 14, speed: 15, v: 16, t: 17, tool: 18, wobj: 19, corr: 20, ext_only: None };
-const SEARCH_EXT_J: Places = Places {
-    cir: None,
-    to: 12,
-    id: 13,
-    speed: 15,
-    v: NONE,
-    t: 16,
-    tool: NONE,
-    wobj: NONE,
-    corr: NONE,
-    ext_only: Some(14),
-};
+impl Places {
+    /// Where search instruction `name`'s arguments after SearchPoint are, by the
+    /// parameter names of its declaration (see `signature.rs`).
+    fn of(name: &str) -> Places {
+        let sig = crate::builtins::signature::of(name);
+        let ext_only = sig.opt("UseEOffs");
+        Places {
+            cir: sig.opt("CirPoint"),
+            to: sig.first_of(&["ToPoint", "ToJointPos"]),
+            id: sig.at("ID"),
+            speed: sig.at("Speed"),
+            v: sig.at("V"),
+            t: sig.at("T"),
+            tool: sig.at("Tool"),
+            wobj: sig.at("WObj"),
+            corr: sig.at("Corr"),
+            ext_only,
+        }
+    }
+}
+
+static SEARCH_L: LazyLock<Places> = LazyLock::new(|| Places::of("SearchL"));
+static SEARCH_C: LazyLock<Places> = LazyLock::new(|| Places::of("SearchC"));
+static SEARCH_EXT_J: LazyLock<Places> = LazyLock::new(|| Places::of("SearchExtJ"));
 
 /// What counts as a hit.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -136,7 +147,7 @@ pub(crate) fn search_ext_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 fn search(ctx: &mut Ctx<'_>, args: &[Value], places: &Places) -> Res {
     // SearchExtJ moves external axes only; SearchL and SearchC move the TCP.
-    match std::ptr::eq(places, &SEARCH_EXT_J) {
+    match places.ext_only.is_some() {
         true => super::moves::require_motion_task(ctx)?,
         false => super::moves::require_robot(ctx)?,
     }
@@ -333,4 +344,48 @@ fn store_hit(ctx: &mut Ctx<'_>, args: &[Value], t: f64) -> Result<(), RapidError
         _ => data::robtarget_value(ctx, &pose, conf)?,
     };
     ctx.store(&args[SEARCH_POINT], super::frame::with_extax(&value, &extax))
+}
+
+#[cfg(test)]
+mod layout_tests {
+    use super::*;
+    use crate::builtins::signature::ABSENT;
+
+    // SearchL [\Stop]|[\PStop]|[\SStop]|[\Sup] Signal|PersBool [\Flanks]|[\PosFlank]|
+    // [\NegFlank]|[\HighLevel]|[\LowLevel] SearchPoint ToPoint [\ID] Speed [\V]|[\T] Tool
+    // [\WObj] [\Corr]: eleven parameters before SearchPoint (11), then the move's.
+    #[test]
+    fn places_after_search_point() {
+        let l = &*SEARCH_L;
+        let expected =
+            Places { cir: None, to: 12, id: 13, speed: 14, v: 15, t: 16, tool: 17, wobj: 18, corr: 19, ext_only: None };
+        assert_eq!(*l, expected);
+        let c = Places {
+            cir: Some(12),
+            to: 13,
+            id: 14,
+            speed: 15,
+            v: 16,
+            t: 17,
+            tool: 18,
+            wobj: 19,
+            corr: 20,
+            ext_only: None,
+        };
+        assert_eq!(*SEARCH_C, c);
+        // SearchExtJ … SearchJointPos ToJointPos [\ID] [\UseEOffs] Speed [\T].
+        let ext = Places {
+            cir: None,
+            to: 12,
+            id: 13,
+            speed: 15,
+            v: ABSENT,
+            t: 16,
+            tool: ABSENT,
+            wobj: ABSENT,
+            corr: ABSENT,
+            ext_only: Some(14),
+        };
+        assert_eq!(*SEARCH_EXT_J, ext);
+    }
 }

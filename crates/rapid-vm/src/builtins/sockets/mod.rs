@@ -36,7 +36,7 @@ use std::str::FromStr;
 use std::time::{Duration, Instant};
 
 use super::io_wait::{wait_again, wait_started};
-use super::{present, Ctx, Entries};
+use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Opaque, OpaqueState, Value};
@@ -51,20 +51,23 @@ const DEFAULT_TIME: f64 = 60.0;
 /// controller's 4 ms period.
 const POLL_PERIOD: f64 = 0.004;
 
-pub(super) static ENTRIES: Entries = &[
-    ("SocketCreate", socket_create),
-    ("SocketConnect", socket_connect),
-    ("SocketBind", socket_bind),
-    ("SocketListen", socket_listen),
-    ("SocketAccept", socket_accept),
-    ("SocketSend", socket_send),
-    ("SocketSendTo", socket_send_to),
-    ("SocketReceive", socket_receive),
-    ("SocketReceiveFrom", socket_receive_from),
-    ("SocketClose", socket_close),
-    ("SocketGetStatus", socket_get_status),
-    ("SocketPeek", socket_peek),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("SocketCreate", socket_create),
+        native("SocketConnect", socket_connect),
+        native("SocketBind", socket_bind),
+        native("SocketListen", socket_listen),
+        native("SocketAccept", socket_accept),
+        native("SocketSend", socket_send),
+        native("SocketSendTo", socket_send_to),
+        native("SocketReceive", socket_receive),
+        native("SocketReceiveFrom", socket_receive_from),
+        native("SocketClose", socket_close),
+        native("SocketGetStatus", socket_get_status),
+        native("SocketPeek", socket_peek),
+    ],
+};
 
 /// `SocketCreate Socket [\UDP]`: a new TCP (stream) or UDP (datagram) socket.
 fn socket_create(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {

@@ -68,12 +68,12 @@ fn io_events(ctx: &mut Ctx<'_>, args: &[Value], first: usize) -> Result<Vec<Path
 
 /// `TriggLIOs`: MoveL setting the outputs of its trigger arrays.
 pub(crate) fn trigg_l_ios(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = io_events(ctx, args, 5)?;
+    let events = io_events(ctx, args, TRIGG_L_IOS.trigg)?;
     linear_move(ctx, args, &TRIGG_L_IOS, events)
 }
 
 /// `TriggJIOs`: MoveJ setting the outputs of its trigger arrays.
 pub(crate) fn trigg_j_ios(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = io_events(ctx, args, 5)?;
+    let events = io_events(ctx, args, TRIGG_J_IOS.trigg)?;
     joint_move(ctx, args, &TRIGG_J_IOS, events)
 }

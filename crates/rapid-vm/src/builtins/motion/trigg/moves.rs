@@ -2,7 +2,9 @@
 //! (Trigg_1 or every element of TriggArray, and T2 … T8).
 
 use super::super::super::{present, Ctx};
-use super::super::moves::{abs_joint_move, circular_move, joint_move, linear_move, EOffsRule, Layout, NONE};
+use std::sync::LazyLock;
+
+use super::super::moves::{abs_joint_move, circular_move, joint_move, linear_move, Layout};
 use super::super::robot::{Action, PathEvent};
 use super::{value_after_orders, Res, Special};
 use crate::errnames::Err;
@@ -67,75 +69,35 @@ fn triggers_of(ctx: &mut Ctx<'_>, args: &[Value], first: usize, speed: usize) ->
     Ok(events)
 }
 
-const TRIGG_L: Layout = Layout {
-    conc: 0,
-    cir: None,
-    to: 1,
-    id: 2,
-    speed: 3,
-    v: NONE,
-    t: 4,
-    zone: 14,
-    z: NONE,
-    inpos: 15,
-    tool: 16,
-    wobj: 17,
-    corr: Some(18),
-    eoffs: EOffsRule::Always,
-};
-const TRIGG_J: Layout = Layout { corr: None, ..TRIGG_L };
-const TRIGG_C: Layout = Layout {
-    cir: Some(1),
-    to: 2,
-    id: 3,
-    speed: 4,
-    t: 5,
-    zone: 15,
-    inpos: 16,
-    tool: 17,
-    wobj: 18,
-    corr: Some(19),
-    ..TRIGG_L
-};
-/// TriggAbsJ: `\NoEOffs` at 3.
-const TRIGG_ABS_J: Layout = Layout {
-    to: 1,
-    id: 2,
-    speed: 4,
-    t: 5,
-    zone: 15,
-    inpos: 16,
-    tool: 17,
-    wobj: 18,
-    corr: None,
-    eoffs: EOffsRule::Unless(3),
-    ..TRIGG_L
-};
+static TRIGG_L: LazyLock<Layout> = LazyLock::new(|| Layout::of("TriggL"));
+static TRIGG_J: LazyLock<Layout> = LazyLock::new(|| Layout::of("TriggJ"));
+static TRIGG_C: LazyLock<Layout> = LazyLock::new(|| Layout::of("TriggC"));
+static TRIGG_ABS_J: LazyLock<Layout> = LazyLock::new(|| Layout::of("TriggAbsJ"));
 
 /// `TriggL`: MoveL firing its triggers.
 pub(crate) fn trigg_l(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = triggers_of(ctx, args, 5, TRIGG_L.speed)?;
+    let events = triggers_of(ctx, args, TRIGG_L.trigg, TRIGG_L.speed)?;
     linear_move(ctx, args, &TRIGG_L, events)
 }
 
 /// `TriggJ`: MoveJ firing its triggers.
 pub(crate) fn trigg_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = triggers_of(ctx, args, 5, TRIGG_J.speed)?;
+    let events = triggers_of(ctx, args, TRIGG_J.trigg, TRIGG_J.speed)?;
     joint_move(ctx, args, &TRIGG_J, events)
 }
 
 /// `TriggC`: MoveC firing its triggers.
 pub(crate) fn trigg_c(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = triggers_of(ctx, args, 6, TRIGG_C.speed)?;
+    let events = triggers_of(ctx, args, TRIGG_C.trigg, TRIGG_C.speed)?;
     circular_move(ctx, args, &TRIGG_C, events)
 }
 
 /// `TriggAbsJ`: MoveAbsJ firing its triggers.
 pub(crate) fn trigg_abs_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = triggers_of(ctx, args, 6, TRIGG_ABS_J.speed)?;
+    let events = triggers_of(ctx, args, TRIGG_ABS_J.trigg, TRIGG_ABS_J.speed)?;
     abs_joint_move(ctx, args, &TRIGG_ABS_J, events)
 }
 
 /// The layouts of TriggLIOs and TriggJIOs (for `ios.rs`).
-pub(super) const TRIGG_L_IOS: Layout = Layout { zone: 8, inpos: 9, tool: 10, wobj: 11, corr: Some(12), ..TRIGG_L };
-pub(super) const TRIGG_J_IOS: Layout = Layout { corr: None, ..TRIGG_L_IOS };
+pub(super) static TRIGG_L_IOS: LazyLock<Layout> = LazyLock::new(|| Layout::of("TriggLIOs"));
+pub(super) static TRIGG_J_IOS: LazyLock<Layout> = LazyLock::new(|| Layout::of("TriggJIOs"));
