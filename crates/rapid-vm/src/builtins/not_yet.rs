@@ -15,7 +15,6 @@ pub(super) static NOT_YET: &[(&str, &str)] = &[
     ("RemoveAllCyclicBool", "cyclic bools (conditions the controller evaluates cyclically) are not modelled"),
     ("RemoveCyclicBool", "cyclic bools (conditions the controller evaluates cyclically) are not modelled"),
     ("SetupCyclicBool", "cyclic bools (conditions the controller evaluates cyclically) are not modelled"),
-    ("GetModalPayLoadMode", "the ModalPayLoadMode system parameter is not read yet"),
     ("GetUASUserName", "the user authorization system (UAS) and its users are not modelled"),
     ("ProcerrRecovery", "process error recovery (moving away from and back to the path) is not modelled"),
     ("RaiseToUser", "raising an error to the user level of NOSTEPIN routines is not modelled"),
