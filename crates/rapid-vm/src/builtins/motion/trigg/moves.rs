@@ -11,9 +11,9 @@ use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{OpaqueState, Value};
 
-/// The trigger handles of the triggdata arguments from `first` on (Trigg_1,
+/// The trigger handles of the triggdata arguments: Trigg_1 up to Zone (Trigg_1,
 /// TriggArray, T2 … T8).
-fn handles(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<Vec<usize>, RapidError> {
+fn handles(ctx: &Ctx<'_>, args: &[Value], layout: &Layout) -> Result<Vec<usize>, RapidError> {
     let mut handles = Vec::new();
     let mut add = |value: &Value| {
         if let Value::Opaque(o) = value {
@@ -22,7 +22,7 @@ fn handles(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<Vec<usize>, Ra
             }
         }
     };
-    for idx in first..first + 9 {
+    for idx in layout.trigg..layout.zone {
         if !present(args.get(idx)) {
             continue;
         }
@@ -37,9 +37,10 @@ fn handles(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<Vec<usize>, Ra
 /// The events of the triggers a move names; the move takes its own copy of each
 /// special definition (a ramp's start value resolved now). A TriggSpeed whose value
 /// at the programmed speed exceeds its output's limit is ERR_AO_LIM.
-fn triggers_of(ctx: &mut Ctx<'_>, args: &[Value], first: usize, speed: usize) -> Result<Vec<PathEvent>, RapidError> {
+fn triggers_of(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout) -> Result<Vec<PathEvent>, RapidError> {
+    let speed = layout.speed;
     let mut events = Vec::new();
-    for h in handles(ctx, args, first)? {
+    for h in handles(ctx, args, layout)? {
         let Some(&event) = ctx.resources.robot.triggers.get(h) else {
             return Err(ctx.error(Err::ArgValue, "a triggdata was never defined (TriggIO)"));
         };
@@ -76,25 +77,25 @@ static TRIGG_ABS_J: LazyLock<Layout> = LazyLock::new(|| Layout::of("TriggAbsJ"))
 
 /// `TriggL`: MoveL firing its triggers.
 pub(crate) fn trigg_l(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = triggers_of(ctx, args, TRIGG_L.trigg, TRIGG_L.speed)?;
+    let events = triggers_of(ctx, args, &TRIGG_L)?;
     linear_move(ctx, args, &TRIGG_L, events)
 }
 
 /// `TriggJ`: MoveJ firing its triggers.
 pub(crate) fn trigg_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = triggers_of(ctx, args, TRIGG_J.trigg, TRIGG_J.speed)?;
+    let events = triggers_of(ctx, args, &TRIGG_J)?;
     joint_move(ctx, args, &TRIGG_J, events)
 }
 
 /// `TriggC`: MoveC firing its triggers.
 pub(crate) fn trigg_c(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = triggers_of(ctx, args, TRIGG_C.trigg, TRIGG_C.speed)?;
+    let events = triggers_of(ctx, args, &TRIGG_C)?;
     circular_move(ctx, args, &TRIGG_C, events)
 }
 
 /// `TriggAbsJ`: MoveAbsJ firing its triggers.
 pub(crate) fn trigg_abs_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = triggers_of(ctx, args, TRIGG_ABS_J.trigg, TRIGG_ABS_J.speed)?;
+    let events = triggers_of(ctx, args, &TRIGG_ABS_J)?;
     abs_joint_move(ctx, args, &TRIGG_ABS_J, events)
 }
 
