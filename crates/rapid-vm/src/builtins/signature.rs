@@ -75,6 +75,57 @@ impl Signature {
     }
 }
 
+/// Declares where one built-in's arguments are, by parameter name: a struct of
+/// positions and a `LazyLock` static that reads them from the declaration the first
+/// time it is used, with a test that every name is declared (and that the built-ins
+/// after `|`, which share the implementation, have them at the same places).
+///
+/// ```ignore
+/// layout! {
+///     /// `ITimer [\Single] | [\SingleSafe] Time Interrupt`.
+///     static ITIMER: TimerArgs = "ITimer" {
+///         single: "Single", single_safe: "SingleSafe", time: "Time", interrupt: "Interrupt",
+///     }
+/// }
+/// ```
+macro_rules! layout {
+    ($(
+        $(#[$doc:meta])*
+        static $static:ident: $ty:ident = $routine:literal $(| $also:literal)* {
+            $($field:ident: $param:literal),* $(,)?
+        }
+    )*) => {$(
+        $(#[$doc])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+        struct $ty {
+            $($field: usize),*
+        }
+
+        impl $ty {
+            fn of(routine: &str) -> $ty {
+                let sig = $crate::builtins::signature::of(routine);
+                $ty { $($field: sig.at($param)),* }
+            }
+        }
+
+        static $static: std::sync::LazyLock<$ty> = std::sync::LazyLock::new(|| $ty::of($routine));
+
+        #[cfg(test)]
+        #[allow(non_snake_case)]
+        mod $static {
+            #[test]
+            fn every_parameter_is_declared() {
+                let sig = $crate::builtins::signature::of($routine);
+                for name in [$($param),*] {
+                    assert!(sig.opt(name).is_some(), "{} declares no parameter {name}", $routine);
+                }
+                $(assert_eq!(super::$ty::of($also), *super::$static, "{} and {}", $routine, $also);)*
+            }
+        }
+    )*};
+}
+pub(crate) use layout;
+
 #[cfg(test)]
 mod tests {
     use super::*;
