@@ -93,7 +93,7 @@ fn compiled_only(_: &mut Ctx<'_>, _: &[Value]) -> Result<Option<Value>, RapidErr
 pub(super) struct Registry {
     pub(super) builtins: Vec<Builtin>,
     by_name: FxHashMap<String, BuiltinId>,
-    /// (built-in index, family index), for the docs.
+    /// The family of each built-in (an index into `FAMILIES`), for the docs.
     families: Vec<u16>,
 }
 
