@@ -184,4 +184,6 @@ pub(crate) enum Format {
     Human,
     /// One JSON array of diagnostics.
     Json,
+    /// One SARIF 2.1.0 log, for code scanning (see docs/ci.md).
+    Sarif,
 }
