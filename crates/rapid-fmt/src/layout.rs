@@ -1,0 +1,347 @@
+//! The formatter proper: the token stream, with comments in their places, cut into
+//! lines (one statement, declaration or block keyword each) and indented by block
+//! level.
+//!
+//! A statement ends at its `;`; a block header at `THEN` or `DO`, at the `)` of a
+//! routine's parameters or a module's attributes, after the name of a TRAP or RECORD,
+//! or (TEST) before its first CASE. ELSE, ELSEIF, CASE, DEFAULT and the handler
+//! keywords ERROR, UNDO and BACKWARD stand one level out of the block they divide, as
+//! RobotStudio writes them. Comments on lines of their own are indented as the code
+//! around them; a comment after code stays on that line, with the spaces it had
+//! before it. Runs of blank lines between statements are kept, up to
+//! `Config::max_blank_lines`; line ends are the text's own (`\r\n` or `\n`).
+
+use rapid_syntax::lexer::Lexer;
+use rapid_syntax::token::TokenKind as T;
+use rapid_syntax::Span;
+
+use crate::names::{spellings, Declared, Spellings};
+use crate::spacing::Spacer;
+use crate::wrap::{lay_out, Atom, AtomKind, Frame};
+use crate::Config;
+
+/// Formats `text`, which has no syntax errors.
+pub(crate) fn format(text: &str, config: &Config, declared: &Declared) -> String {
+    let mut f = Formatter::new(text, config, declared);
+    let mut lexer = Lexer::new(text);
+    let mut last_end = 0usize;
+    loop {
+        let token = lexer.next_token();
+        for comment in lexer.comments.drain(..) {
+            let newlines = count_newlines(&text[last_end..comment.start as usize]);
+            f.piece(Piece { kind: None, span: comment, newlines });
+            last_end = comment.end as usize;
+        }
+        if token.kind == T::Eof {
+            break;
+        }
+        let newlines = count_newlines(&text[last_end..token.span.start as usize]);
+        f.piece(Piece { kind: Some(token.kind), span: token.span, newlines });
+        last_end = token.span.end as usize;
+    }
+    f.finish()
+}
+
+fn count_newlines(gap: &str) -> usize {
+    gap.bytes().filter(|&b| b == b'\n').count()
+}
+
+/// A token (`kind`) or a comment (`None`), with the line ends before it.
+#[derive(Debug, Clone, Copy)]
+struct Piece {
+    kind: Option<T>,
+    span: Span,
+    newlines: usize,
+}
+
+/// What a line opened, to be closed by its END keyword.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Block {
+    Module,
+    Routine,
+    Record,
+    If,
+    Loop,
+    Test,
+}
+
+/// The statement being gathered.
+#[derive(Debug, Default)]
+struct Unit {
+    pieces: Vec<Piece>,
+    n_tokens: usize,
+    /// The first token that is not LOCAL or TASK.
+    head: Option<T>,
+    last: Option<T>,
+    depth: usize,
+    /// The unit could end here (a following token may still continue it).
+    complete: bool,
+}
+
+struct Formatter<'a> {
+    text: &'a str,
+    config: &'a Config,
+    declared: &'a Declared,
+    spellings: &'static Spellings,
+    nl: &'static str,
+    out: String,
+    blocks: Vec<Block>,
+    unit: Unit,
+    scratch: String,
+    atoms: Vec<Atom>,
+}
+
+impl<'a> Formatter<'a> {
+    fn new(text: &'a str, config: &'a Config, declared: &'a Declared) -> Formatter<'a> {
+        let nl = match text.find('\n') {
+            Some(idx) if idx > 0 && text.as_bytes()[idx - 1] == b'\r' => "\r\n",
+            _ => "\n",
+        };
+        Formatter {
+            text,
+            config,
+            declared,
+            spellings: spellings(),
+            nl,
+            out: String::with_capacity(text.len() + text.len() / 8),
+            blocks: Vec::new(),
+            unit: Unit::default(),
+            scratch: String::new(),
+            atoms: Vec::new(),
+        }
+    }
+
+    fn piece(&mut self, piece: Piece) {
+        let Some(kind) = piece.kind else {
+            if self.unit.pieces.is_empty() {
+                // Only comments before the first token reach here.
+                let level = self.blocks.len();
+                self.comment_line(piece, level);
+            } else {
+                self.unit.pieces.push(piece);
+            }
+            return;
+        };
+        if !self.unit.pieces.is_empty() && self.closes_before(kind, piece.newlines) {
+            self.flush();
+        }
+        let unit = &mut self.unit;
+        unit.pieces.push(piece);
+        unit.n_tokens += 1;
+        if unit.head.is_none() && !matches!(kind, T::Local | T::Task) {
+            unit.head = Some(kind);
+        }
+        match kind {
+            T::LParen | T::LBracket | T::LBrace => unit.depth += 1,
+            T::RParen | T::RBracket | T::RBrace => unit.depth = unit.depth.saturating_sub(1),
+            _ => {}
+        }
+        unit.last = Some(kind);
+        unit.complete = ends_after(unit, kind);
+    }
+
+    /// Whether the gathered unit ends before a token of `kind`.
+    fn closes_before(&self, kind: T, newlines: usize) -> bool {
+        let unit = &self.unit;
+        if unit.head == Some(T::Test) {
+            return unit.depth == 0 && unit.n_tokens >= 2 && matches!(kind, T::Case | T::Default | T::Endtest);
+        }
+        if !unit.complete {
+            return false;
+        }
+        let continues = match unit.head {
+            // `MODULE m (SYSMODULE)`, `ERROR (ERR_A, ERR_B)`.
+            Some(T::Module | T::Error) => kind == T::LParen && unit.last != Some(T::RParen),
+            // An editor placeholder is a statement of its own unless code follows it on its line.
+            Some(T::Placeholder) => newlines == 0 && unit.last != Some(T::Semi),
+            _ => false,
+        };
+        !continues
+    }
+
+    fn finish(mut self) -> String {
+        if !self.unit.pieces.is_empty() {
+            self.flush();
+        }
+        if !self.out.is_empty() {
+            self.out.push_str(self.nl);
+        }
+        self.out
+    }
+
+    /// Starts a line at `indent` after `newlines` line ends in the input.
+    fn start_line(&mut self, newlines: usize, indent: usize) {
+        if !self.out.is_empty() {
+            let blank = newlines.saturating_sub(1).min(self.config.max_blank_lines);
+            for _ in 0..=blank {
+                self.out.push_str(self.nl);
+            }
+        }
+        self.out.extend(std::iter::repeat_n(' ', indent));
+    }
+
+    fn comment_line(&mut self, piece: Piece, level: usize) {
+        self.start_line(piece.newlines, level * self.config.indent_width);
+        self.out.push_str(piece.span.text(self.text));
+    }
+
+    /// Writes the gathered unit and the comments after it.
+    fn flush(&mut self) {
+        let mut unit = std::mem::take(&mut self.unit);
+        let last_token = unit.pieces.iter().rposition(|p| p.kind.is_some()).unwrap_or(0);
+        let head = unit.head.unwrap_or(T::Eof);
+        if is_end(head) {
+            self.blocks.pop();
+        }
+        let level = self.blocks.len();
+        let indent_level = match head {
+            T::Else | T::Elseif | T::Case | T::Default | T::Error | T::Undo | T::Backward => level.saturating_sub(1),
+            T::Header => 0,
+            _ => level,
+        };
+        let indent = indent_level * self.config.indent_width;
+        let first = unit.pieces[0];
+        self.start_line(first.newlines, indent);
+        // A comment on the unit's last line stays there.
+        let mut tail = last_token + 1;
+        if unit.pieces.get(tail).is_some_and(|p| p.newlines == 0) {
+            tail += 1;
+        }
+        if head == T::Header {
+            self.out.push_str(first.span.text(self.text));
+        } else {
+            self.write_unit(&unit.pieces[..tail], head, indent);
+        }
+        if let Some(block) = opened_block(head, unit.last) {
+            self.blocks.push(block);
+        }
+        let after = self.blocks.len();
+        for &piece in &unit.pieces[tail..] {
+            self.comment_line(piece, after);
+        }
+        unit.pieces.clear();
+        self.unit = Unit { pieces: unit.pieces, ..Unit::default() };
+    }
+
+    /// Lays out a unit's tokens and inner comments.
+    fn write_unit(&mut self, pieces: &[Piece], head: T, indent: usize) {
+        self.scratch.clear();
+        self.atoms.clear();
+        let is_decl = matches!(head, T::Var | T::Pers | T::Const);
+        let is_header = matches!(head, T::Proc | T::Func | T::Trap);
+        let mut spacer = Spacer::new(is_decl, head == T::Module, self.config.aggregate_spaces);
+        let mut prev: Option<T> = None;
+        let mut prev_end = pieces[0].span.start as usize;
+        let mut first_width = 0;
+        for piece in pieces {
+            let start = self.scratch.len();
+            let kind = match piece.kind {
+                Some(kind) => {
+                    let depth = spacer.open.len();
+                    let space = spacer.push(kind);
+                    self.token_text(kind, piece.span, prev, is_header);
+                    if prev.is_none() {
+                        first_width = self.scratch[start..].chars().count();
+                    }
+                    prev = Some(kind);
+                    let comma = kind == T::Comma;
+                    let opens = matches!(kind, T::LParen | T::LBracket | T::LBrace);
+                    let closes = matches!(kind, T::RParen | T::RBracket | T::RBrace);
+                    let depth = if closes { depth.saturating_sub(1) } else { depth };
+                    self.atoms.push(Atom {
+                        start,
+                        end: self.scratch.len(),
+                        space,
+                        kind: AtomKind::Token { depth, comma, opens, closes },
+                    });
+                    prev_end = piece.span.end as usize;
+                    continue;
+                }
+                None if piece.newlines == 0 => {
+                    let gap = &self.text[prev_end..piece.span.start as usize];
+                    let gap = if !gap.is_empty() && gap.bytes().all(|b| b == b' ' || b == b'\t') { gap } else { " " };
+                    self.scratch.push_str(gap);
+                    AtomKind::Trailing
+                }
+                None => AtomKind::OwnLine,
+            };
+            self.scratch.push_str(piece.span.text(self.text));
+            self.atoms.push(Atom { start, end: self.scratch.len(), space: false, kind });
+            prev_end = piece.span.end as usize;
+        }
+        let is_call = head == T::Ident && !is_decl;
+        let outer = if is_call { indent + first_width + 1 } else { indent + 2 * self.config.indent_width };
+        let frame = Frame { indent, outer, nl: self.nl };
+        lay_out(&mut self.out, frame, &self.atoms, &self.scratch, self.config);
+    }
+
+    /// Appends a token's text as written out: reserved words in upper case, built-in
+    /// names as the catalogue spells them, everything else as it was.
+    fn token_text(&mut self, kind: T, span: Span, prev: Option<T>, is_header: bool) {
+        let word = span.text(self.text);
+        if kind.is_keyword() {
+            self.scratch.extend(word.chars().map(|c| c.to_ascii_uppercase()));
+            return;
+        }
+        if kind == T::Ident && prev != Some(T::Dot) && !self.declared.contains(word) {
+            // In a routine header, `\` is followed by a parameter's type.
+            let argument_name = prev == Some(T::Backslash) && !is_header;
+            if let Some(spelled) = self.spellings.get(word, argument_name) {
+                self.scratch.push_str(spelled);
+                return;
+            }
+        }
+        self.scratch.push_str(word);
+    }
+}
+
+/// Whether a unit of this head is complete once `kind` is added.
+fn ends_after(unit: &Unit, kind: T) -> bool {
+    let head = unit.head.unwrap_or(kind);
+    if kind == T::Semi && unit.depth == 0 {
+        return true;
+    }
+    match head {
+        T::If | T::Elseif => kind == T::Then && unit.depth == 0,
+        T::While | T::For => kind == T::Do && unit.depth == 0,
+        T::Module | T::Error => {
+            (unit.n_tokens == 2 && head == T::Module)
+                || (unit.n_tokens == 1 && head == T::Error)
+                || (kind == T::RParen && unit.depth == 0)
+        }
+        T::Proc | T::Func => kind == T::RParen && unit.depth == 0,
+        T::Trap | T::Record => unit.pieces.iter().filter(|p| p.kind.is_some()).count() >= 2 && kind == T::Ident,
+        T::Case | T::Default => kind == T::Colon && unit.depth == 0,
+        T::Ident => kind == T::Colon && unit.n_tokens == 2,
+        T::Else | T::Undo | T::Backward | T::Header | T::Placeholder => unit.n_tokens == 1,
+        _ => is_end(head),
+    }
+}
+
+fn is_end(kind: T) -> bool {
+    matches!(
+        kind,
+        T::Endmodule
+            | T::Endproc
+            | T::Endfunc
+            | T::Endtrap
+            | T::Endrecord
+            | T::Endif
+            | T::Endwhile
+            | T::Endfor
+            | T::Endtest
+    )
+}
+
+/// The block a unit opens, if any.
+fn opened_block(head: T, last: Option<T>) -> Option<Block> {
+    match head {
+        T::Module => Some(Block::Module),
+        T::Proc | T::Func | T::Trap => Some(Block::Routine),
+        T::Record => Some(Block::Record),
+        T::If if last == Some(T::Then) => Some(Block::If),
+        T::While | T::For if last == Some(T::Do) => Some(Block::Loop),
+        T::Test => Some(Block::Test),
+        _ => None,
+    }
+}
