@@ -6,7 +6,7 @@
 //! inside aggregates and indexes (`[[0,0,0],[1,0,0,0]]`), nothing inside brackets, none
 //! before `(` or `{` after a name (`Offs(p,0,0,10)`, `a{2}`), none after a sign
 //! (`-1`), none before `\` unless it follows the instruction name (`ConfL \Off`,
-//! `tool0\WObj:=wobj0`).
+//! `tool0\WObj:=wobj0`); late binding spaced as the manual writes it (`% "p" + n % x`).
 
 use rapid_syntax::token::TokenKind as T;
 
@@ -26,7 +26,6 @@ pub(crate) struct Spacer {
     prev2: Option<T>,
     n_tokens: usize,
     after_sign: bool,
-    percent_open: bool,
     assign_spaced: bool,
     /// `:=` of a declaration is tight.
     is_decl: bool,
@@ -43,7 +42,6 @@ impl Spacer {
             prev2: None,
             n_tokens: 0,
             after_sign: false,
-            percent_open: false,
             assign_spaced: true,
             is_decl,
             is_module,
@@ -66,7 +64,6 @@ impl Spacer {
             T::RParen | T::RBracket | T::RBrace => {
                 self.open.pop();
             }
-            T::Percent => self.percent_open = !self.percent_open,
             _ => {}
         }
         self.after_sign = sign;
@@ -85,9 +82,6 @@ impl Spacer {
             return false;
         }
         if matches!(prev, T::LParen | T::LBracket | T::LBrace | T::Dot | T::Backslash | T::Question) {
-            return false;
-        }
-        if self.percent_open && (prev == T::Percent || next == T::Percent) {
             return false;
         }
         if prev == T::Comma {
@@ -161,7 +155,8 @@ mod tests {
         assert_eq!(spaced("MoveL *,v100,fine,tool0;", false), "MoveL *, v100, fine, tool0;");
         assert_eq!(spaced("Foo -1, a{ i , 2 };", false), "Foo -1, a{i,2};");
         assert_eq!(spaced("x := Offs ( p , 0 , 0 , 10 ) . trans . z;", false), "x := Offs(p, 0, 0, 10).trans.z;");
-        assert_eq!(spaced("% \"proc\" + n % a , b;", false), "%\"proc\" + n% a, b;");
+        // Late binding as the manual writes it (§1.5.2's example): `% "proc" + n % x, y;`.
+        assert_eq!(spaced("%\"proc\"+n% a , b;", false), "% \"proc\" + n % a, b;");
         assert_eq!(spaced("Opt \\sw ? sw;", false), "Opt \\sw?sw;");
     }
 

@@ -1,0 +1,110 @@
+//! `rapid fmt` on files in a scratch folder: `--check` names the files that would
+//! change and exits 1, writing nothing; formatting writes them in their own encoding
+//! (Latin-1, UTF-8 with a BOM) and line ends (CRLF); a file with a syntax error is left
+//! byte for byte as it was and reported; `rapid.toml` `[fmt]` applies; `-` formats
+//! stdin to stdout. Every expected text is worked out by hand from docs/fmt.md.
+
+use std::fs;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rapid-fmt-{name}-{}", std::process::id()));
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn rapid(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rapid")).current_dir(dir).args(args).output().expect("rapid runs")
+}
+
+fn stdout(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
+const MESSY: &str = "module m\nproc main()\nmovel p,v10,fine,tool0;\nendproc\nendmodule\n";
+const NEAT: &str = "MODULE m\n    PROC main()\n        MoveL p, v10, fine, tool0;\n    ENDPROC\nENDMODULE\n";
+
+#[test]
+fn check_names_changed_files_and_writes_nothing() {
+    let dir = scratch("check");
+    fs::write(dir.join("a.mod"), MESSY).unwrap();
+    fs::write(dir.join("b.mod"), NEAT).unwrap();
+    let output = rapid(&dir, &["fmt", "--check", "."]);
+    assert_eq!(output.status.code(), Some(1));
+    assert_eq!(stdout(&output), "./a.mod\n");
+    assert_eq!(fs::read_to_string(dir.join("a.mod")).unwrap(), MESSY);
+
+    let output = rapid(&dir, &["fmt", "a.mod", "b.mod"]);
+    assert_eq!(output.status.code(), Some(0), "{output:?}");
+    assert_eq!(fs::read_to_string(dir.join("a.mod")).unwrap(), NEAT);
+    assert_eq!(rapid(&dir, &["fmt", "--check", "."]).status.code(), Some(0));
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn encoding_and_line_ends_are_kept() {
+    let dir = scratch("encoding");
+    // Latin-1: the comment's `é` is one byte 0xE9, and must stay so.
+    let latin1 = b"MODULE m\r\n! caf\xE9\r\nVAR num a;\r\nENDMODULE\r\n".to_vec();
+    fs::write(dir.join("latin1.mod"), &latin1).unwrap();
+    let bom = "\u{feff}MODULE m\nVAR string s:=\"\u{e4}\";\nENDMODULE\n";
+    fs::write(dir.join("bom.mod"), bom).unwrap();
+    let output = rapid(&dir, &["fmt", "latin1.mod", "bom.mod"]);
+    assert_eq!(output.status.code(), Some(0), "{output:?}");
+    assert_eq!(
+        fs::read(dir.join("latin1.mod")).unwrap(),
+        b"MODULE m\r\n    ! caf\xE9\r\n    VAR num a;\r\nENDMODULE\r\n"
+    );
+    let expected_bom = "\u{feff}MODULE m\n    VAR string s:=\"\u{e4}\";\nENDMODULE\n";
+    assert_eq!(fs::read(dir.join("bom.mod")).unwrap(), expected_bom.as_bytes());
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_file_with_syntax_errors_is_left_alone() {
+    let dir = scratch("refused");
+    let broken = "module m\nproc main()\n  x := ;\nendproc\nendmodule\n";
+    fs::write(dir.join("broken.mod"), broken).unwrap();
+    fs::write(dir.join("ok.mod"), MESSY).unwrap();
+    let output = rapid(&dir, &["fmt", "broken.mod", "ok.mod"]);
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("broken.mod: not formatted: 1 syntax error(s) (first at 3:"), "{stderr}");
+    assert_eq!(fs::read_to_string(dir.join("broken.mod")).unwrap(), broken);
+    // The other file is formatted all the same.
+    assert_eq!(fs::read_to_string(dir.join("ok.mod")).unwrap(), NEAT);
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn the_manifest_fmt_table_applies() {
+    let dir = scratch("manifest");
+    fs::write(dir.join("rapid.toml"), "[fmt]\nindent_width = 2\n").unwrap();
+    fs::create_dir_all(dir.join("src")).unwrap();
+    fs::write(dir.join("src/a.mod"), MESSY).unwrap();
+    let output = rapid(&dir, &["fmt", "src"]);
+    assert_eq!(output.status.code(), Some(0), "{output:?}");
+    let expected = "MODULE m\n  PROC main()\n    MoveL p, v10, fine, tool0;\n  ENDPROC\nENDMODULE\n";
+    assert_eq!(fs::read_to_string(dir.join("src/a.mod")).unwrap(), expected);
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn stdin_is_formatted_to_stdout() {
+    let dir = scratch("stdin");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .current_dir(&dir)
+        .args(["fmt", "-"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child.stdin.take().unwrap().write_all(MESSY.as_bytes()).unwrap();
+    let output = child.wait_with_output().unwrap();
+    assert_eq!(output.status.code(), Some(0));
+    assert_eq!(stdout(&output), NEAT);
+    let _ = fs::remove_dir_all(&dir);
+}
