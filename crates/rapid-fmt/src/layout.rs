@@ -10,6 +10,11 @@
 //! around them; a comment after code stays on that line, with the spaces it had
 //! before it. Runs of blank lines between statements are kept, up to
 //! `Config::max_blank_lines`; line ends are the text's own (`\r\n` or `\n`).
+//!
+//! Each stretch of output is checked against the input's pieces as soon as it is
+//! written (`verify.rs`). Names declared inside routines (data, FOR variables) are
+//! noted as their declarations go by: RAPID declares routine data before the
+//! statements, so every use follows.
 
 use rapid_syntax::lexer::Lexer;
 use rapid_syntax::token::TokenKind as T;
@@ -17,11 +22,13 @@ use rapid_syntax::Span;
 
 use crate::names::{spellings, Declared, Spellings};
 use crate::spacing::Spacer;
+use crate::verify::{self, Piece};
 use crate::wrap::{lay_out, Atom, AtomKind, Frame};
-use crate::Config;
+use crate::{Config, Refusal};
 
-/// Formats `text`, which has no syntax errors.
-pub(crate) fn format(text: &str, config: &Config, declared: &Declared) -> String {
+/// Formats `text`, which has no syntax errors in its outline; `declared` holds the
+/// names the outline declares.
+pub(crate) fn format(text: &str, config: &Config, declared: Declared) -> Result<String, Refusal> {
     let mut f = Formatter::new(text, config, declared);
     let mut lexer = Lexer::new(text);
     let mut last_end = 0usize;
@@ -32,7 +39,7 @@ pub(crate) fn format(text: &str, config: &Config, declared: &Declared) -> String
             f.piece(Piece { kind: None, span: comment, newlines });
             last_end = comment.end as usize;
         }
-        if token.kind == T::Eof {
+        if token.kind == T::Eof || f.failure.is_some() {
             break;
         }
         let newlines = count_newlines(&text[last_end..token.span.start as usize]);
@@ -42,16 +49,17 @@ pub(crate) fn format(text: &str, config: &Config, declared: &Declared) -> String
     f.finish()
 }
 
-fn count_newlines(gap: &str) -> usize {
-    gap.bytes().filter(|&b| b == b'\n').count()
+/// Columns a text takes: its characters.
+fn width_of(text: &str) -> usize {
+    if text.is_ascii() {
+        text.len()
+    } else {
+        text.chars().count()
+    }
 }
 
-/// A token (`kind`) or a comment (`None`), with the line ends before it.
-#[derive(Debug, Clone, Copy)]
-struct Piece {
-    kind: Option<T>,
-    span: Span,
-    newlines: usize,
+fn count_newlines(gap: &str) -> usize {
+    gap.bytes().filter(|&b| b == b'\n').count()
 }
 
 /// What a line opened, to be closed by its END keyword.
@@ -81,7 +89,7 @@ struct Unit {
 struct Formatter<'a> {
     text: &'a str,
     config: &'a Config,
-    declared: &'a Declared,
+    declared: Declared,
     spellings: &'static Spellings,
     nl: &'static str,
     out: String,
@@ -89,10 +97,13 @@ struct Formatter<'a> {
     unit: Unit,
     scratch: String,
     atoms: Vec<Atom>,
+    /// How much of `out` is verified.
+    checked: usize,
+    failure: Option<Refusal>,
 }
 
 impl<'a> Formatter<'a> {
-    fn new(text: &'a str, config: &'a Config, declared: &'a Declared) -> Formatter<'a> {
+    fn new(text: &'a str, config: &'a Config, declared: Declared) -> Formatter<'a> {
         let nl = match text.find('\n') {
             Some(idx) if idx > 0 && text.as_bytes()[idx - 1] == b'\r' => "\r\n",
             _ => "\n",
@@ -108,7 +119,19 @@ impl<'a> Formatter<'a> {
             unit: Unit::default(),
             scratch: String::new(),
             atoms: Vec::new(),
+            checked: 0,
+            failure: None,
         }
+    }
+
+    /// Checks what was written since the last check against the pieces laid out.
+    fn verify(&mut self, pieces: &[Piece]) {
+        if self.failure.is_none() {
+            if let Err(refusal) = verify::stretch(self.text, pieces, &self.out, self.checked) {
+                self.failure = Some(refusal);
+            }
+        }
+        self.checked = self.out.len();
     }
 
     fn piece(&mut self, piece: Piece) {
@@ -117,6 +140,7 @@ impl<'a> Formatter<'a> {
                 // Only comments before the first token reach here.
                 let level = self.blocks.len();
                 self.comment_line(piece, level);
+                self.verify(&[piece]);
             } else {
                 self.unit.pieces.push(piece);
             }
@@ -159,14 +183,17 @@ impl<'a> Formatter<'a> {
         !continues
     }
 
-    fn finish(mut self) -> String {
-        if !self.unit.pieces.is_empty() {
+    fn finish(mut self) -> Result<String, Refusal> {
+        if !self.unit.pieces.is_empty() && self.failure.is_none() {
             self.flush();
+        }
+        if let Some(refusal) = self.failure {
+            return Err(refusal);
         }
         if !self.out.is_empty() {
             self.out.push_str(self.nl);
         }
-        self.out
+        Ok(self.out)
     }
 
     /// Starts a line at `indent` after `newlines` line ends in the input.
@@ -200,6 +227,9 @@ impl<'a> Formatter<'a> {
             _ => level,
         };
         let indent = indent_level * self.config.indent_width;
+        if self.blocks.contains(&Block::Routine) {
+            self.note_local(&unit.pieces, head);
+        }
         let first = unit.pieces[0];
         self.start_line(first.newlines, indent);
         // A comment on the unit's last line stays there.
@@ -219,8 +249,32 @@ impl<'a> Formatter<'a> {
         for &piece in &unit.pieces[tail..] {
             self.comment_line(piece, after);
         }
+        self.verify(&unit.pieces);
         unit.pieces.clear();
         self.unit = Unit { pieces: unit.pieces, ..Unit::default() };
+    }
+
+    /// Notes the name a routine's data declaration or FOR loop declares: it is the
+    /// name before the first `{`, `:=` or `;` (data), or the one after FOR.
+    fn note_local(&mut self, pieces: &[Piece], head: T) {
+        let mut tokens = pieces.iter().filter(|p| p.kind.is_some());
+        let name = match head {
+            T::For => tokens.nth(1),
+            T::Var | T::Pers | T::Const => {
+                let mut name = None;
+                for piece in tokens {
+                    if matches!(piece.kind, Some(T::LBrace | T::Assign | T::Semi)) {
+                        break;
+                    }
+                    name = Some(piece);
+                }
+                name
+            }
+            _ => None,
+        };
+        if let Some(piece) = name.filter(|p| p.kind == Some(T::Ident)) {
+            self.declared.add(piece.span.text(self.text));
+        }
     }
 
     /// Lays out a unit's tokens and inner comments.
@@ -241,16 +295,19 @@ impl<'a> Formatter<'a> {
                     let space = spacer.push(kind);
                     self.token_text(kind, piece.span, prev, is_header);
                     if prev.is_none() {
-                        first_width = self.scratch[start..].chars().count();
+                        first_width = width_of(&self.scratch[start..]);
                     }
                     prev = Some(kind);
                     let comma = kind == T::Comma;
                     let opens = matches!(kind, T::LParen | T::LBracket | T::LBrace);
                     let closes = matches!(kind, T::RParen | T::RBracket | T::RBrace);
                     let depth = if closes { depth.saturating_sub(1) } else { depth };
+                    let end = self.scratch.len();
+                    let width = width_of(&self.scratch[start..end]) + usize::from(space);
                     self.atoms.push(Atom {
                         start,
-                        end: self.scratch.len(),
+                        end,
+                        width,
                         space,
                         kind: AtomKind::Token { depth, comma, opens, closes },
                     });
@@ -266,7 +323,9 @@ impl<'a> Formatter<'a> {
                 None => AtomKind::OwnLine,
             };
             self.scratch.push_str(piece.span.text(self.text));
-            self.atoms.push(Atom { start, end: self.scratch.len(), space: false, kind });
+            let end = self.scratch.len();
+            let width = width_of(&self.scratch[start..end]);
+            self.atoms.push(Atom { start, end, width, space: false, kind });
             prev_end = piece.span.end as usize;
         }
         let is_call = head == T::Ident && !is_decl;
@@ -280,15 +339,19 @@ impl<'a> Formatter<'a> {
     fn token_text(&mut self, kind: T, span: Span, prev: Option<T>, is_header: bool) {
         let word = span.text(self.text);
         if kind.is_keyword() {
-            self.scratch.extend(word.chars().map(|c| c.to_ascii_uppercase()));
+            let start = self.scratch.len();
+            self.scratch.push_str(word);
+            self.scratch[start..].make_ascii_uppercase();
             return;
         }
-        if kind == T::Ident && prev != Some(T::Dot) && !self.declared.contains(word) {
+        if kind == T::Ident && prev != Some(T::Dot) {
             // In a routine header, `\` is followed by a parameter's type.
             let argument_name = prev == Some(T::Backslash) && !is_header;
             if let Some(spelled) = self.spellings.get(word, argument_name) {
-                self.scratch.push_str(spelled);
-                return;
+                if !self.declared.contains(word) {
+                    self.scratch.push_str(spelled);
+                    return;
+                }
             }
         }
         self.scratch.push_str(word);

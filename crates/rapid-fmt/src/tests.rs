@@ -197,3 +197,17 @@ fn placeholders_stay_statements() {
     let input = "MODULE m\nPROC p()\n<SMT>\nx:=1;\nENDPROC\nENDMODULE\n";
     assert_eq!(fmt(input), "MODULE m\n    PROC p()\n        <SMT>\n        x := 1;\n    ENDPROC\nENDMODULE\n");
 }
+
+#[test]
+fn long_files_are_parsed_while_laid_out() {
+    // Over 1 MB: the bodies are parsed on a second thread.
+    let body = "x:=x+1;\n".repeat(140_000);
+    let good = format!("MODULE m\nVAR num x;\nPROC p()\nVAR num movel;\n{body}movel:=1;\nENDPROC\nENDMODULE\n");
+    assert!(good.len() > super::PARALLEL_THRESHOLD);
+    let out = format(&good, &Config::default()).unwrap();
+    assert!(out.starts_with("MODULE m\n    VAR num x;\n    PROC p()\n        VAR num movel;\n        x := x + 1;\n"));
+    // The local `movel` keeps its spelling.
+    assert!(out.ends_with("        x := x + 1;\n        movel := 1;\n    ENDPROC\nENDMODULE\n"));
+    let bad = good.replace("movel:=1;", "movel:=;");
+    assert!(matches!(format(&bad, &Config::default()), Err(Refusal::SyntaxErrors(errors)) if errors.len() == 1));
+}

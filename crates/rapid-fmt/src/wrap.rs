@@ -29,14 +29,10 @@ pub(crate) enum AtomKind {
 pub(crate) struct Atom {
     pub(crate) start: usize,
     pub(crate) end: usize,
+    /// Columns it takes, with the space before it.
+    pub(crate) width: usize,
     pub(crate) space: bool,
     pub(crate) kind: AtomKind,
-}
-
-impl Atom {
-    fn width(&self, scratch: &str) -> usize {
-        scratch[self.start..self.end].chars().count() + usize::from(self.space)
-    }
 }
 
 /// Where a statement starts and how its continuation lines are indented.
@@ -52,7 +48,7 @@ pub(crate) struct Frame<'n> {
 /// indented already).
 pub(crate) fn lay_out(out: &mut String, frame: Frame<'_>, atoms: &[Atom], scratch: &str, config: &Config) {
     let has_comment = atoms.iter().any(|a| !matches!(a.kind, AtomKind::Token { .. }));
-    let flat: usize = frame.indent + atoms.iter().map(|a| a.width(scratch)).sum::<usize>();
+    let flat: usize = frame.indent + atoms.iter().map(|a| a.width).sum::<usize>();
     let too_long = config.max_width > 0 && flat > config.max_width;
     if !has_comment && !too_long {
         for atom in atoms {
@@ -73,9 +69,8 @@ pub(crate) fn lay_out(out: &mut String, frame: Frame<'_>, atoms: &[Atom], scratc
                     out.push(' ');
                     col += 1;
                 }
-                let text = &scratch[atom.start..atom.end];
-                out.push_str(text);
-                col += text.chars().count();
+                out.push_str(&scratch[atom.start..atom.end]);
+                col += atom.width - usize::from(atom.space);
                 if opens {
                     groups.push(col);
                 }
@@ -83,7 +78,7 @@ pub(crate) fn lay_out(out: &mut String, frame: Frame<'_>, atoms: &[Atom], scratc
                     groups.pop();
                 }
                 let at_break_depth = comma && break_depth == Some(depth);
-                if at_break_depth && col + segment_width(&atoms[idx + 1..], depth, scratch) > config.max_width {
+                if at_break_depth && col + segment_width(&atoms[idx + 1..], depth) > config.max_width {
                     pending = Some(continuation(&groups, frame, config));
                 }
             }
@@ -92,7 +87,7 @@ pub(crate) fn lay_out(out: &mut String, frame: Frame<'_>, atoms: &[Atom], scratc
                     col = new_line(out, frame.nl, cont);
                 }
                 write_atom(out, atom, scratch);
-                col += atom.width(scratch);
+                col += atom.width;
                 pending = Some(continuation(&groups, frame, config));
             }
             AtomKind::OwnLine => {
@@ -133,7 +128,7 @@ fn comma_depth(atoms: &[Atom]) -> Option<usize> {
 
 /// The width of what follows a comma up to the next comma at `depth` or shallower
 /// (or the end), with the spaces before its atoms.
-fn segment_width(rest: &[Atom], depth: usize, scratch: &str) -> usize {
+fn segment_width(rest: &[Atom], depth: usize) -> usize {
     let mut width = 0;
     for atom in rest {
         if let AtomKind::Token { depth: d, comma: true, .. } = atom.kind {
@@ -143,7 +138,7 @@ fn segment_width(rest: &[Atom], depth: usize, scratch: &str) -> usize {
             }
         }
         if matches!(atom.kind, AtomKind::Token { .. }) {
-            width += atom.width(scratch);
+            width += atom.width;
         }
     }
     width
