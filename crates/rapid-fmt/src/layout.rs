@@ -16,6 +16,8 @@
 //! noted as their declarations go by: RAPID declares routine data before the
 //! statements, so every use follows.
 
+use std::sync::mpsc;
+
 use rapid_syntax::lexer::Lexer;
 use rapid_syntax::token::TokenKind as T;
 use rapid_syntax::Span;
@@ -27,9 +29,32 @@ use crate::wrap::{lay_out, Atom, AtomKind, Frame};
 use crate::{Config, Refusal};
 
 /// Formats `text`, which has no syntax errors in its outline; `declared` holds the
-/// names the outline declares.
-pub(crate) fn format(text: &str, config: &Config, declared: Declared) -> Result<String, Refusal> {
-    let mut f = Formatter::new(text, config, declared);
+/// names the outline declares. With `on_thread`, the output is verified on a thread of
+/// its own, in chunks, while the layout goes on.
+pub(crate) fn format(text: &str, config: &Config, declared: Declared, on_thread: bool) -> Result<String, Refusal> {
+    if !on_thread {
+        return lay_out_file(Formatter::new(text, config, declared, None));
+    }
+    let (chunks, received) = mpsc::sync_channel::<Chunk>(CHUNKS_IN_FLIGHT);
+    std::thread::scope(|scope| {
+        let checker = scope.spawn(move || verify::chunks(text, received));
+        let out = lay_out_file(Formatter::new(text, config, declared, Some(chunks)));
+        let checked =
+            checker.join().unwrap_or_else(|_| Err(Refusal::Unsafe { offset: 0, message: "the check failed".into() }));
+        checked.and(out)
+    })
+}
+
+/// Output written since the last chunk was sent: it must lex as `input[from..to]`.
+pub(crate) type Chunk = (usize, usize, String);
+
+/// Chunks in the channel to the verifier; bounds memory whatever the file's size.
+const CHUNKS_IN_FLIGHT: usize = 16;
+/// A chunk is sent once this much output has gathered.
+const CHUNK_BYTES: usize = 1 << 16;
+
+fn lay_out_file(mut f: Formatter<'_>) -> Result<String, Refusal> {
+    let text = f.text;
     let mut lexer = Lexer::new(text);
     let mut last_end = 0usize;
     loop {
@@ -97,13 +122,25 @@ struct Formatter<'a> {
     unit: Unit,
     scratch: String,
     atoms: Vec<Atom>,
-    /// How much of `out` is verified.
+    /// The spacer's bracket stack, kept between statements.
+    open: Vec<crate::spacing::Open>,
+    /// How much of `out` is verified (or sent to the verifier).
     checked: usize,
+    /// Where the input of the output not yet verified starts.
+    input_checked: usize,
+    chunks: Option<mpsc::SyncSender<Chunk>>,
+    /// Where the input laid out so far ends.
+    pending_end: usize,
     failure: Option<Refusal>,
 }
 
 impl<'a> Formatter<'a> {
-    fn new(text: &'a str, config: &'a Config, declared: Declared) -> Formatter<'a> {
+    fn new(
+        text: &'a str,
+        config: &'a Config,
+        declared: Declared,
+        chunks: Option<mpsc::SyncSender<Chunk>>,
+    ) -> Formatter<'a> {
         let nl = match text.find('\n') {
             Some(idx) if idx > 0 && text.as_bytes()[idx - 1] == b'\r' => "\r\n",
             _ => "\n",
@@ -119,13 +156,31 @@ impl<'a> Formatter<'a> {
             unit: Unit::default(),
             scratch: String::new(),
             atoms: Vec::new(),
+            open: Vec::new(),
             checked: 0,
+            input_checked: 0,
+            chunks,
+            pending_end: 0,
             failure: None,
         }
     }
 
-    /// Checks what was written since the last check against the pieces laid out.
+    /// Checks what was written since the last check against the pieces laid out, or
+    /// sends it to the verifier once a chunk has gathered.
     fn verify(&mut self, pieces: &[Piece]) {
+        if let Some(chunks) = &self.chunks {
+            let input_end = pieces.last().map_or(self.input_checked, |p| p.span.end as usize);
+            if self.out.len() - self.checked >= CHUNK_BYTES {
+                let chunk = (self.input_checked, input_end, self.out[self.checked..].to_owned());
+                if chunks.send(chunk).is_err() {
+                    self.failure = Some(Refusal::Unsafe { offset: 0, message: "the check stopped".into() });
+                }
+                self.checked = self.out.len();
+                self.input_checked = input_end;
+            }
+            self.pending_end = input_end;
+            return;
+        }
         if self.failure.is_none() {
             if let Err(refusal) = verify::stretch(self.text, pieces, &self.out, self.checked) {
                 self.failure = Some(refusal);
@@ -186,6 +241,12 @@ impl<'a> Formatter<'a> {
     fn finish(mut self) -> Result<String, Refusal> {
         if !self.unit.pieces.is_empty() && self.failure.is_none() {
             self.flush();
+        }
+        if let Some(chunks) = self.chunks.take() {
+            let chunk = (self.input_checked, self.pending_end, self.out[self.checked..].to_owned());
+            if chunks.send(chunk).is_err() && self.failure.is_none() {
+                self.failure = Some(Refusal::Unsafe { offset: 0, message: "the check stopped".into() });
+            }
         }
         if let Some(refusal) = self.failure {
             return Err(refusal);
@@ -283,7 +344,8 @@ impl<'a> Formatter<'a> {
         self.atoms.clear();
         let is_decl = matches!(head, T::Var | T::Pers | T::Const);
         let is_header = matches!(head, T::Proc | T::Func | T::Trap);
-        let mut spacer = Spacer::new(is_decl, head == T::Module, self.config.aggregate_spaces);
+        let open = std::mem::take(&mut self.open);
+        let mut spacer = Spacer::new(is_decl, head == T::Module, self.config.aggregate_spaces, open);
         let mut prev: Option<T> = None;
         let mut prev_end = pieces[0].span.start as usize;
         let mut first_width = 0;
@@ -332,6 +394,7 @@ impl<'a> Formatter<'a> {
         let outer = if is_call { indent + first_width + 1 } else { indent + 2 * self.config.indent_width };
         let frame = Frame { indent, outer, nl: self.nl };
         lay_out(&mut self.out, frame, &self.atoms, &self.scratch, self.config);
+        self.open = spacer.open;
     }
 
     /// Appends a token's text as written out: reserved words in upper case, built-in

@@ -60,14 +60,14 @@ pub enum Refusal {
 /// changes).
 pub fn format(text: &str, config: &Config) -> Result<String, Refusal> {
     let outline = syntax::outline(text).map_err(Refusal::SyntaxErrors)?;
-    // The routine bodies are parsed for their errors while the layout runs: a long
-    // file (CAM output) takes half the time on two cores.
+    // The routine bodies are parsed for their errors, and the output is verified,
+    // while the layout runs: a long file (CAM output) keeps two cores busy.
     let (body_errors, out) = if text.len() < PARALLEL_THRESHOLD {
-        (syntax::body_errors(text, outline.bodies), layout::format(text, config, outline.declared))
+        (syntax::body_errors(text, outline.bodies), layout::format(text, config, outline.declared, false))
     } else {
         std::thread::scope(|scope| {
             let checker = scope.spawn(|| syntax::body_errors(text, outline.bodies));
-            let out = layout::format(text, config, outline.declared);
+            let out = layout::format(text, config, outline.declared, true);
             let errors = checker.join().unwrap_or_else(|_| {
                 vec![SyntaxError {
                     kind: rapid_syntax::SyntaxErrorKind::UnexpectedToken,

@@ -35,9 +35,11 @@ pub(crate) struct Spacer {
 }
 
 impl Spacer {
-    pub(crate) fn new(is_decl: bool, is_module: bool, aggregate_spaces: bool) -> Spacer {
+    /// A spacer for one statement; `open` is a recycled (cleared) stack.
+    pub(crate) fn new(is_decl: bool, is_module: bool, aggregate_spaces: bool, mut open: Vec<Open>) -> Spacer {
+        open.clear();
         Spacer {
-            open: Vec::new(),
+            open,
             prev: None,
             prev2: None,
             n_tokens: 0,
@@ -120,7 +122,7 @@ mod tests {
     /// Lays out one statement with single spaces where the rules put one.
     fn spaced(text: &str, is_decl: bool) -> String {
         let mut lexer = Lexer::new(text);
-        let mut spacer = Spacer::new(is_decl, false, false);
+        let mut spacer = Spacer::new(is_decl, false, false, Vec::new());
         let mut out = String::new();
         loop {
             let token = lexer.next_token();

@@ -5,6 +5,8 @@
 //! stretch right after writing it keeps the check cheap (the text is still in cache,
 //! and the input's tokens are at hand).
 
+use std::sync::mpsc;
+
 use rapid_syntax::lexer::Lexer;
 use rapid_syntax::token::TokenKind as T;
 use rapid_syntax::Span;
@@ -55,6 +57,46 @@ pub(crate) fn stretch(input: &str, pieces: &[Piece], output: &str, from: usize) 
     }
 }
 
+/// Verifies the chunks a layout on another thread sends: each chunk of output must lex
+/// as the stretch of input it was laid out from. Keeps receiving after a failure, so
+/// the sender never blocks, and answers the first failure.
+pub(crate) fn chunks(input: &str, received: mpsc::Receiver<crate::layout::Chunk>) -> Result<(), Refusal> {
+    let mut result = Ok(());
+    for (from, to, output) in received {
+        if result.is_ok() {
+            result = same(input, from, to, &output);
+        }
+    }
+    result
+}
+
+/// Checks that `output` lexes as `input[from..to]`.
+fn same(input: &str, from: usize, to: usize, output: &str) -> Result<(), Refusal> {
+    let Some(stretch_text) = input.get(..to) else { return Err(unsafe_at(from, "a chunk is out of range")) };
+    let mut before = Lexer::at(stretch_text, from);
+    let mut after = Lexer::new(output);
+    loop {
+        let old = before.next_token();
+        let new = after.next_token();
+        let old_comments = before.comments.drain(..).map(|c| c.text(input));
+        let new_comments: Vec<&str> = after.comments.drain(..).map(|c| c.text(output)).collect();
+        if !old_comments.eq(new_comments.iter().copied()) {
+            return Err(unsafe_at(old.span.start as usize, "a comment would change or move"));
+        }
+        let (old_text, new_text) = (old.span.text(input), new.span.text(output));
+        let same_text = match old.kind {
+            kind if kind == T::Ident || kind.is_keyword() => old_text.eq_ignore_ascii_case(new_text),
+            _ => old_text == new_text,
+        };
+        if old.kind != new.kind || !same_text {
+            return Err(unsafe_at(old.span.start as usize, &format!("`{old_text}` would become `{new_text}`")));
+        }
+        if old.kind == T::Eof {
+            return Ok(());
+        }
+    }
+}
+
 fn unsafe_at(offset: usize, what: &str) -> Refusal {
     Refusal::Unsafe {
         offset: offset as u32,
@@ -95,5 +137,15 @@ mod tests {
         assert!(stretch(input, &expected, "a < > b; ! C", 0).is_err());
         let strings = "x := \"a\";";
         assert!(stretch(strings, &pieces(strings), "x := \"A\";", 0).is_err());
+    }
+
+    #[test]
+    fn chunks_compare_a_stretch_of_input() {
+        let input = "x := 1;\nif A<>b then ! c\ny := 2;\n";
+        let (from, to) = (input.find("if").unwrap() - 1, input.find("y :=").unwrap() - 1);
+        assert_eq!(same(input, from, to, "\n    IF a <> B THEN ! c"), Ok(()));
+        assert!(same(input, from, to, "\n    IF a<>B THEN").is_err());
+        assert!(same(input, from, to, "\n    IF a < > B THEN ! c").is_err());
+        assert!(same(input, from, to, "\n    IF a <> B THEN ! c\n    y := 2;").is_err());
     }
 }
