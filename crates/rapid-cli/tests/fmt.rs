@@ -108,3 +108,76 @@ fn stdin_is_formatted_to_stdout() {
     assert_eq!(stdout(&output), NEAT);
     let _ = fs::remove_dir_all(&dir);
 }
+
+/// Copies a folder tree.
+fn copy_tree(from: &Path, to: &Path) {
+    fs::create_dir_all(to).unwrap();
+    for entry in fs::read_dir(from).unwrap().flatten() {
+        let path = entry.path();
+        let target = to.join(entry.file_name());
+        if path.is_dir() {
+            copy_tree(&path, &target);
+        } else {
+            fs::copy(&path, &target).unwrap();
+        }
+    }
+}
+
+/// Every folder under `dir` (itself included), for `rapid fmt` to take their modules.
+fn folders(dir: &Path, out: &mut Vec<PathBuf>) {
+    out.push(dir.to_path_buf());
+    for entry in fs::read_dir(dir).unwrap().flatten() {
+        if entry.path().is_dir() {
+            folders(&entry.path(), out);
+        }
+    }
+}
+
+/// The diagnostic codes `rapid check --format json` reports, sorted.
+fn check_codes(dir: &Path, target: &str) -> Vec<String> {
+    let output = rapid(dir, &["check", "--format", "json", target]);
+    assert!(output.status.code().is_some_and(|c| c < 2), "{target}: {output:?}");
+    let diags: serde_json::Value = serde_json::from_slice(&output.stdout).expect("JSON diagnostics");
+    let mut codes: Vec<String> =
+        diags.as_array().unwrap().iter().map(|d| d["code"].as_str().unwrap().to_owned()).collect();
+    codes.sort();
+    codes
+}
+
+#[test]
+fn programs_and_backups_check_the_same_after_formatting() {
+    // Whole programs of several modules (and their .pgf) and backups of several tasks:
+    // `rapid check` finds the same codes, as many of each, before and after.
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/check");
+    let dir = scratch("programs");
+    let mut n_checked = 0;
+    for group in ["programs", "backups"] {
+        for entry in fs::read_dir(root.join(group)).unwrap().flatten() {
+            if !entry.path().is_dir() {
+                continue;
+            }
+            let copy = dir.join(group).join(entry.file_name());
+            copy_tree(&entry.path(), &copy);
+            // A program is checked through its .pgf (as RobotWare loads it), a backup whole.
+            let pgf = fs::read_dir(&copy)
+                .unwrap()
+                .flatten()
+                .map(|e| e.path())
+                .find(|p| p.extension().is_some_and(|x| x == "pgf"));
+            let target = pgf.unwrap_or_else(|| copy.clone()).to_str().unwrap().to_owned();
+            let before = check_codes(&dir, &target);
+            let mut all = Vec::new();
+            folders(&copy, &mut all);
+            let args: Vec<&str> = std::iter::once("fmt").chain(all.iter().map(|p| p.to_str().unwrap())).collect();
+            let formatted = rapid(&dir, &args);
+            assert_eq!(formatted.status.code(), Some(0), "{}: {formatted:?}", entry.path().display());
+            assert_eq!(check_codes(&dir, &target), before, "{}", entry.path().display());
+            let mut again = vec!["fmt", "--check"];
+            again.extend(all.iter().map(|p| p.to_str().unwrap()));
+            assert_eq!(rapid(&dir, &again).status.code(), Some(0), "{}: not idempotent", entry.path().display());
+            n_checked += 1;
+        }
+    }
+    assert!(n_checked >= 7, "only {n_checked} programs and backups");
+    let _ = fs::remove_dir_all(&dir);
+}
