@@ -83,8 +83,8 @@ fn width_of(text: &str) -> usize {
     }
 }
 
-fn count_newlines(gap: &str) -> usize {
-    gap.bytes().filter(|&b| b == b'\n').count()
+fn count_newlines(gap: &str) -> u32 {
+    gap.bytes().filter(|&b| b == b'\n').count().try_into().unwrap_or(u32::MAX)
 }
 
 /// What a line opened, to be closed by its END keyword.
@@ -220,7 +220,7 @@ impl<'a> Formatter<'a> {
     }
 
     /// Whether the gathered unit ends before a token of `kind`.
-    fn closes_before(&self, kind: T, newlines: usize) -> bool {
+    fn closes_before(&self, kind: T, newlines: u32) -> bool {
         let unit = &self.unit;
         if unit.head == Some(T::Test) {
             return unit.depth == 0 && unit.n_tokens >= 2 && matches!(kind, T::Case | T::Default | T::Endtest);
@@ -258,9 +258,9 @@ impl<'a> Formatter<'a> {
     }
 
     /// Starts a line at `indent` after `newlines` line ends in the input.
-    fn start_line(&mut self, newlines: usize, indent: usize) {
+    fn start_line(&mut self, newlines: u32, indent: usize) {
         if !self.out.is_empty() {
-            let blank = newlines.saturating_sub(1).min(self.config.max_blank_lines);
+            let blank = (newlines.saturating_sub(1) as usize).min(self.config.max_blank_lines);
             for _ in 0..=blank {
                 self.out.push_str(self.nl);
             }

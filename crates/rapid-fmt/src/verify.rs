@@ -19,7 +19,7 @@ pub(crate) struct Piece {
     pub(crate) kind: Option<T>,
     pub(crate) span: Span,
     /// Line ends between the previous piece and this one.
-    pub(crate) newlines: usize,
+    pub(crate) newlines: u32,
 }
 
 /// Checks that `output[from..]` lexes to `pieces` of `input`, in order.
