@@ -2,6 +2,8 @@
 
 mod check;
 mod codes;
+mod fmt;
+mod fmt_config;
 mod run;
 mod run_system;
 mod system;
@@ -43,5 +45,6 @@ pub(crate) fn run(cli: Cli) -> anyhow::Result<ExitStatus> {
             run::run(&args)
         }
         Command::Codes => codes::run(),
+        Command::Fmt(args) => fmt::run(&args),
     }
 }
