@@ -16,6 +16,10 @@ use rapid_vm::{Exit, Host};
 use crate::schedule::{Controller, State, SystemExit, INSTRUCTION_TIME};
 use crate::task::TaskEnd;
 
+/// What is left of a wait after the caller moved the clock over it by the length the
+/// wait asked for: the rounding of adding that length to the clock, not a wait.
+const MAX_CLOCK_ERROR: f64 = 1e-12;
+
 impl Controller {
     /// Whether the system is one task run alone: one task, no system inputs or outputs,
     /// the program running (a stop or a step under way runs it a statement at a time).
@@ -23,13 +27,27 @@ impl Controller {
         self.tasks.len() == 1 && !self.ops.system_signals && self.program_state() == crate::ops::ProgramState::Running
     }
 
+    /// The bound on [`Controller::steps`] the caller ends the run at (`--max-steps`):
+    /// a task alone is not charged the computing of the slice that passed it, so the
+    /// run ends at the clock of the slice before, as `rapid run` has always said.
+    pub fn set_step_bound(&mut self, max: Option<u64>) {
+        self.step_bound = max;
+    }
+
     /// Runs the task alone for at most `budget` instructions.
     pub(crate) fn run_alone(&mut self, host: &mut dyn Host, budget: u64) -> SystemExit {
         match self.tasks[0].state {
             State::Ended(_) => return SystemExit::Ended,
-            // The caller moved the clock on over the wait (or a wait that re-checks
-            // looks again).
-            State::Waiting { .. } => self.tasks[0].state = State::Ready,
+            // The VM takes a wait it is resumed from as over: until the clock has
+            // reached its end (or, for a wait that re-checks, the shared state changed)
+            // the task still waits.
+            State::Waiting { until, rechecks, epoch } => {
+                let left = until - self.time;
+                if left > MAX_CLOCK_ERROR && !(rechecks && epoch != self.epoch()) {
+                    return SystemExit::Wait(left);
+                }
+                self.tasks[0].state = State::Ready;
+            }
             State::Ready => {}
         }
         let time = self.time;
@@ -48,7 +66,9 @@ impl Controller {
         let computed = steps.saturating_sub(charged) as f64 * INSTRUCTION_TIME;
         match exit {
             Exit::Budget => {
-                self.charge(steps, computed);
+                if self.step_bound.is_none_or(|max| steps <= max) {
+                    self.charge(steps, computed);
+                }
                 SystemExit::Budget
             }
             Exit::Wait(seconds) => {
@@ -93,5 +113,77 @@ impl Controller {
         }
         self.after_end(0);
         SystemExit::Ended
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use rapid_sema::SourceInput;
+    use rapid_vm::RecordingHost;
+
+    use crate::{Controller, SystemExit, TaskKind, TaskSpec, TrustLevel};
+
+    fn alone(program: &str) -> Controller {
+        let files = [SourceInput::from_text("T_ROB1.mod", program)];
+        let loaded = match rapid_vm::load_with(&files, "main", &rapid_sema::Options::default()) {
+            Ok(loaded) => loaded,
+            Err(err) => panic!("the test program does not load: {err:?}"),
+        };
+        let spec = TaskSpec {
+            name: "T_ROB1".to_owned(),
+            kind: TaskKind::Normal,
+            trust: TrustLevel::SysFail,
+            foreground: None,
+            motion: true,
+            robot: true,
+            rmq: rapid_config::sys::Rmq::default(),
+            shared_files: Vec::new(),
+            robot_of: None,
+        };
+        match Controller::new(vec![(spec, loaded)], None) {
+            Ok(controller) => controller,
+            Err(message) => panic!("{message}"),
+        }
+    }
+
+    /// Runs to the end, each wait moved over whole; the exits seen.
+    fn run(controller: &mut Controller, host: &mut RecordingHost, budget: u64) -> Vec<SystemExit> {
+        let mut exits = Vec::new();
+        for _ in 0..10_000 {
+            let exit = controller.run(host, budget);
+            exits.push(exit);
+            match exit {
+                SystemExit::Wait(seconds) => controller.advance(seconds),
+                SystemExit::Budget => {}
+                SystemExit::Ended | SystemExit::Stopped => return exits,
+            }
+        }
+        panic!("the run did not end");
+    }
+
+    #[test]
+    fn computing_before_a_wait_is_free_and_a_slice_without_one_is_charged() {
+        // 1000 additions, then a wait of 0.25 s: the clock reads the wait alone.
+        let program = "MODULE M\n  PROC main()\n    VAR clock k;\n    VAR num n;\n    ClkStart k;\n    \
+                       FOR i FROM 1 TO 1000 DO\n      n := n + i;\n    ENDFOR\n    WaitTime 0.25;\n    \
+                       TPWrite \"at \" \\Num:=ClkRead(k\\HighRes);\n  ENDPROC\nENDMODULE";
+        let mut c = alone(program);
+        assert!(c.runs_alone());
+        let mut host = RecordingHost::default();
+        let exits = run(&mut c, &mut host, 1 << 16);
+        assert_eq!(exits, [SystemExit::Wait(0.25), SystemExit::Ended]);
+        assert_eq!(host.lines, ["at 0.25"]);
+        // Counted in instructions: the loop alone runs more than its 1000 statements.
+        assert!(c.steps > 2000, "{}", c.steps);
+
+        // In slices of 100 instructions the loop is cut: each slice it computes without
+        // waiting moves the clock by the nominal instruction time, which ClkRead sees.
+        let mut c = alone(program);
+        let mut host = RecordingHost::default();
+        let exits = run(&mut c, &mut host, 100);
+        let budgets = exits.iter().filter(|e| **e == SystemExit::Budget).count() as u64;
+        assert!(budgets >= 20, "{exits:?}");
+        let charged = (c.time - 0.25) / super::INSTRUCTION_TIME;
+        assert!((charged - (100 * budgets) as f64).abs() < 1.0, "{} {budgets}", c.time);
     }
 }

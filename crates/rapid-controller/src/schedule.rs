@@ -91,7 +91,8 @@ pub struct Controller {
     maps: Vec<Vec<TypeMap>>,
     /// The controller clock, seconds.
     pub time: f64,
-    /// Basic steps (statements) executed, all tasks together.
+    /// Basic steps (statements) executed, all tasks together; a task run alone counts
+    /// its VM's instructions ([`Controller::runs_alone`]).
     pub steps: u64,
     /// Set when a static task's stop stopped the NORMAL tasks.
     pub system_stop: Option<SystemStop>,
@@ -103,6 +104,8 @@ pub struct Controller {
     /// A task run alone (`alone.rs`): the instructions executed when the clock was last
     /// charged for computing.
     pub(crate) charged: Option<u64>,
+    /// The run's bound on steps, if it has one ([`Controller::set_step_bound`]).
+    pub(crate) step_bound: Option<u64>,
     /// Instructions run since the last NORMAL task ended.
     drained: u64,
     /// Run mode: the cycles each NORMAL task runs (1: cycle mode; 0: continuous
@@ -172,6 +175,7 @@ impl Controller {
             stop_routines,
             failed_stop_routine: None,
             charged: None,
+            step_bound: None,
             drained: 0,
             cycles: 1,
             cycles_ended,
@@ -366,6 +370,8 @@ impl Controller {
         if self.runs_alone() {
             return self.run_alone(host, budget);
         }
+        // Statements are charged one by one here; a task alone again starts afresh.
+        self.charged = None;
         let mut remaining = budget;
         while remaining > 0 {
             self.operate(host);

@@ -216,6 +216,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         Err(message) => return refuse(&message),
     };
     controller.set_cycles(args.cycles);
+    controller.set_step_bound(args.max_steps);
     if let Err(message) = controller.shared_mut().tasking.number_robots(numbers.clone()) {
         if alone {
             return Err(anyhow::anyhow!("internal error: {message}"));
