@@ -8,6 +8,7 @@
 //! No IO of its own: output and operator input go through the `Host` the caller gives.
 
 mod alone;
+pub mod boot;
 pub mod ops;
 pub mod pers;
 pub mod schedule;

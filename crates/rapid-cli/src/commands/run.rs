@@ -213,12 +213,12 @@ pub(crate) fn with_virtual_signals(
     system: &mut Option<rapid_io::IoSystem>,
     modules: &[SourceInput],
 ) -> Result<(), String> {
-    let signals = crate::virtual_io::aliased_signals(modules);
+    let signals = rapid_controller::boot::virtual_io::aliased_signals(modules);
     if system.is_none() {
         *system = Some(rapid_io::IoSystem::new(Vec::new(), Vec::new()).map_err(|e| e.to_string())?);
     }
     match system {
-        Some(system) => crate::virtual_io::add_to(system, &signals),
+        Some(system) => rapid_controller::boot::virtual_io::add_to(system, &signals),
         None => Ok(()),
     }
 }

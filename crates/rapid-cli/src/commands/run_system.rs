@@ -18,6 +18,7 @@
 use std::io::{self, BufWriter};
 
 use rapid_config::sys::{Sys, TaskType};
+use rapid_controller::boot::motion;
 use rapid_controller::{Controller, SystemExit, TaskEnd, TaskKind, TaskSpec, TrustLevel};
 use rapid_sema::{Options, Severity, SourceInput};
 use rapid_vm::{load_with, LoadError};
@@ -155,7 +156,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         Err(message) => return refuse(&message),
     };
     let (model, model_note) =
-        match crate::motion_out::choose_model(args, tasks[0].inputs.robot.as_deref(), &tasks[0].inputs.syspar) {
+        match motion::choose_model(args.robot.as_deref(), tasks[0].inputs.robot.as_deref(), &tasks[0].inputs.syspar) {
             Ok(chosen) => chosen,
             Err(message) => {
                 eprintln!("error: {message}");
@@ -163,14 +164,23 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             }
         };
     let units = tasks[0].inputs.units.clone();
+    let cell = tasks[0].inputs.cell();
     // The robot each task moves: its group's ROB_n, else by the tasks' order.
     let numbers = match &sys {
-        Some(sys) if !alone => match crate::robots::numbers(sys, &tasks[0].inputs.syspar, &tasks[0].inputs.task_robots)
-        {
-            Ok(numbers) => numbers,
-            Err(found) => return refuse(&format!("{}.cfg:{}: {}", found.domain, found.line, found.message)),
-        },
-        _ => vec![Some(crate::robots::of_single_task(&tasks[0].inputs))],
+        Some(sys) if !alone => {
+            match rapid_controller::boot::robots::numbers(sys, &tasks[0].inputs.syspar, &tasks[0].inputs.task_robots) {
+                Ok(numbers) => numbers,
+                Err(found) => return refuse(&format!("{}.cfg:{}: {}", found.domain, found.line, found.message)),
+            }
+        }
+        _ => {
+            let first = &tasks[0].inputs;
+            vec![Some(rapid_controller::boot::robots::of_single_task(
+                first.sys.as_ref(),
+                &first.syspar,
+                &first.task_robots,
+            ))]
+        }
     };
     let mut first_motion = true;
     for ((spec, program), &number) in loaded.iter_mut().zip(&numbers) {
@@ -179,19 +189,19 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             // A program alone moves the run's model; its units and conveyors are all its.
             let own = number
                 .filter(|_| !alone)
-                .map(|n| crate::motion_out::robot_model(args, &tasks[0].inputs, &spec.name, n, model));
+                .map(|n| motion::robot_model(args.robot.as_deref(), &cell, &spec.name, n, model));
             let task = Some(spec.name.as_str()).filter(|_| !alone);
             let robot = &mut program.vm.resources_mut().robot;
             // A task moving external units only keeps an arm that never moves (its
             // robot instructions are refused), so that its units have a state to live in.
-            crate::motion_out::configure(robot, own.unwrap_or(model), args);
+            motion::configure(robot, own.unwrap_or(model), args.trace.is_some() || args.report.is_some());
             if let Some(n) = number {
-                crate::motion_out::configure_base(robot, &tasks[0].inputs, n, &spec.name);
-                crate::motion_out::configure_ranges(robot, &tasks[0].inputs.syspar, n);
+                motion::configure_base(robot, &cell, n, &spec.name);
+                motion::configure_ranges(robot, &tasks[0].inputs.syspar, n);
             }
-            crate::motion_out::configure_units(robot, &units, task, first_motion);
+            motion::configure_units(robot, &units, task, first_motion);
             let conveyors = &tasks[0].inputs.conveyors;
-            let found = crate::motion_out::configure_conveyors(robot, conveyors, io.as_ref(), task, first_motion);
+            let found = motion::configure_conveyors(robot, conveyors, io.as_ref(), task, first_motion);
             if let Err(message) = found {
                 return refuse(&message);
             }
