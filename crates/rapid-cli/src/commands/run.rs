@@ -207,22 +207,6 @@ impl Host for StdoutHost<'_> {
     }
 }
 
-/// `--virtual-io`: the signals AliasIO names that the configuration lacks, as virtual
-/// signals (an I/O system is made when there is none).
-pub(crate) fn with_virtual_signals(
-    system: &mut Option<rapid_io::IoSystem>,
-    modules: &[SourceInput],
-) -> Result<(), String> {
-    let signals = rapid_controller::boot::virtual_io::aliased_signals(modules);
-    if system.is_none() {
-        *system = Some(rapid_io::IoSystem::new(Vec::new(), Vec::new()).map_err(|e| e.to_string())?);
-    }
-    match system {
-        Some(system) => rapid_controller::boot::virtual_io::add_to(system, &signals),
-        None => Ok(()),
-    }
-}
-
 /// `x` with at most `places` decimals, trailing zeros dropped (times to the
 /// millisecond, values to a millionth).
 fn decimals(x: f64, places: usize) -> String {

@@ -17,8 +17,7 @@
 
 use std::io::{self, BufWriter};
 
-use rapid_config::sys::{Sys, TaskType};
-use rapid_controller::boot::motion;
+use rapid_controller::boot::system::{self as boot, BootError, BootOptions, Booted};
 use rapid_controller::{Controller, SystemExit, TaskEnd, TaskKind, TaskSpec, TrustLevel};
 use rapid_sema::{Options, Severity, SourceInput};
 use rapid_vm::{load_with, LoadError};
@@ -43,22 +42,16 @@ struct LoadedTask {
 
 pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     // One task without system inputs or outputs: a program run alone.
-    let alone = !(first.sys.as_ref().is_some_and(|sys| sys.tasks.len() > 1) || has_system_signals(&first));
-    let sys = match first.sys.clone() {
-        _ if alone => first.sys.clone(),
-        Some(sys) if !sys.tasks.is_empty() => Some(sys),
-        // A SYS.cfg that configures no task: the one task read, with the configuration's
-        // event routines.
-        Some(sys) => Some(Sys { tasks: one_task_system(&first).tasks, ..sys }),
-        None => Some(one_task_system(&first)),
-    };
+    let alone = boot::is_alone(first.sys.as_ref(), &first.syspar);
+    let name = first.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
+    let entry = first.task.as_ref().and_then(|t| t.entry.clone());
+    let sys = boot::system_of(first.sys.as_ref(), alone, &name, entry.as_deref());
     let specs = match &sys {
-        _ if alone => vec![alone_spec(&first)],
-        Some(sys) => match task_specs(sys) {
+        Some(sys) if !alone => match boot::task_specs(sys) {
             Ok(specs) => specs,
             Err(message) => return refuse(&message),
         },
-        None => vec![alone_spec(&first)],
+        _ => vec![boot::alone_spec(&name)],
     };
     let mut tasks: Vec<LoadedTask> = Vec::new();
     let mut first = Some(first);
@@ -141,120 +134,40 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     if !found.is_empty() {
         return single::report_system_errors(&table, &found);
     }
-    let mut io = match io_system(&tasks[0].inputs) {
-        Ok(io) => io,
-        Err(message) => return refuse(&message),
+    let modules: Vec<SourceInput> = match args.virtual_io {
+        true => tasks.iter().flat_map(|t| t.inputs.modules.iter().cloned()).collect(),
+        false => Vec::new(),
     };
-    if args.virtual_io {
-        let modules: Vec<SourceInput> = tasks.iter().flat_map(|t| t.inputs.modules.iter().cloned()).collect();
-        if let Err(message) = single::with_virtual_signals(&mut io, &modules) {
-            return refuse(&message);
-        }
-    }
-    let stimulus = match read_stimulus(io.as_ref(), args, alone) {
-        Ok(stimulus) => stimulus,
-        Err(message) => return refuse(&message),
+    let auto = args.controller_state().mode == rapid_vm::builtins::controller::OpMode::Auto;
+    let options = BootOptions {
+        alone,
+        robot: args.robot.as_deref(),
+        record: args.trace.is_some() || args.report.is_some(),
+        virtual_io: args.virtual_io.then_some(modules.as_slice()),
+        cycles: args.cycles,
+        max_steps: args.max_steps,
+        auto,
     };
-    let (model, model_note) =
-        match motion::choose_model(args.robot.as_deref(), tasks[0].inputs.robot.as_deref(), &tasks[0].inputs.syspar) {
-            Ok(chosen) => chosen,
-            Err(message) => {
-                eprintln!("error: {message}");
-                return Ok(ExitStatus::Error);
-            }
-        };
-    let units = tasks[0].inputs.units.clone();
-    let cell = tasks[0].inputs.cell();
-    // The robot each task moves: its group's ROB_n, else by the tasks' order.
-    let numbers = match &sys {
-        Some(sys) if !alone => {
-            match rapid_controller::boot::robots::numbers(sys, &tasks[0].inputs.syspar, &tasks[0].inputs.task_robots) {
-                Ok(numbers) => numbers,
-                Err(found) => return refuse(&format!("{}.cfg:{}: {}", found.domain, found.line, found.message)),
-            }
+    let booted =
+        boot::boot(loaded, sys.as_ref(), tasks[0].inputs.cell(), &options, &mut |io| read_stimulus(io, args, alone));
+    let Booted { mut controller, robots: numbers, model_note } = match booted {
+        Ok(booted) => booted,
+        Err(BootError::Refused(message)) => return refuse(&message),
+        Err(BootError::UnknownModel(message)) => {
+            eprintln!("error: {message}");
+            return Ok(ExitStatus::Error);
         }
-        _ => {
-            let first = &tasks[0].inputs;
-            vec![Some(rapid_controller::boot::robots::of_single_task(
-                first.sys.as_ref(),
-                &first.syspar,
-                &first.task_robots,
-            ))]
-        }
+        Err(BootError::Internal(message)) => return Err(anyhow::anyhow!("internal error: {message}")),
     };
-    let mut first_motion = true;
-    for ((spec, program), &number) in loaded.iter_mut().zip(&numbers) {
-        if spec.motion {
-            spec.robot = number.is_some();
-            // A program alone moves the run's model; its units and conveyors are all its.
-            let own = number
-                .filter(|_| !alone)
-                .map(|n| motion::robot_model(args.robot.as_deref(), &cell, &spec.name, n, model));
-            let task = Some(spec.name.as_str()).filter(|_| !alone);
-            let robot = &mut program.vm.resources_mut().robot;
-            // A task moving external units only keeps an arm that never moves (its
-            // robot instructions are refused), so that its units have a state to live in.
-            motion::configure(robot, own.unwrap_or(model), args.trace.is_some() || args.report.is_some());
-            if let Some(n) = number {
-                motion::configure_base(robot, &cell, n, &spec.name);
-                motion::configure_ranges(robot, &tasks[0].inputs.syspar, n);
-            }
-            motion::configure_units(robot, &units, task, first_motion);
-            let conveyors = &tasks[0].inputs.conveyors;
-            let found = motion::configure_conveyors(robot, conveyors, io.as_ref(), task, first_motion);
-            if let Err(message) = found {
-                return refuse(&message);
-            }
-            first_motion = false;
-        }
-    }
-    // The robots work in the work objects the other tasks' units carry (MultiMove).
-    let mut linked: Vec<_> = loaded
-        .iter_mut()
-        .filter(|(spec, _)| spec.motion)
-        .map(|(spec, program)| rapid_vm::builtins::motion::foreign::LinkedTask {
-            name: &spec.name,
-            robot: &mut program.vm.resources_mut().robot,
-        })
-        .collect();
-    if !alone {
-        rapid_vm::builtins::motion::foreign::link(&mut linked);
-    }
-    drop(linked);
-    let mut controller = match Controller::new(loaded, io) {
-        Ok(controller) => controller,
-        Err(message) => return refuse(&message),
-    };
-    controller.set_cycles(args.cycles);
-    controller.set_step_bound(args.max_steps);
-    if let Err(message) = controller.shared_mut().tasking.number_robots(numbers.clone()) {
-        if alone {
-            return Err(anyhow::anyhow!("internal error: {message}"));
-        }
-        return refuse(&message);
-    }
-    if let Some((orders, reactions, answers)) = stimulus {
-        let io = &mut controller.shared_mut().io;
-        io.stimulus = orders.into();
-        io.reactions = reactions;
-        io.answers = answers.into();
-    }
-    if let Err(message) = configure_operations(&mut controller, &tasks[0].inputs, sys.as_ref(), args) {
-        return refuse(&message);
-    }
     let mut host =
         StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers: single::pendant_answers(args)? };
     for task in &mut controller.tasks {
         let name = task.spec.name.clone();
         single::log_start(&mut task.loaded.vm, &name);
     }
-    // Power on and a start from main: every task's POWER_ON, then START event routines;
-    // STOP event routines run when a task stops (each task has its routines: the
-    // system findings above).
-    let hooks_for = |name: &str, shelf: &str| -> Vec<String> {
-        sys.as_ref().map(|sys| sys.hooks_for(name, shelf).into_iter().map(str::to_owned).collect()).unwrap_or_default()
-    };
-    controller.stop_routines = controller.tasks.iter().map(|t| hooks_for(&t.spec.name, "STOP")).collect();
+    // Power on and a start from main: every task's POWER_ON, then START event routines
+    // (each task has its routines: the system findings above).
+    let hooks_for = |name: &str, shelf: &str| boot::hooks_for(sys.as_ref(), name, shelf);
     for shelf in ["POWER_ON", "START"] {
         let outcome = run_hooks(&mut controller, &mut host, &hooks_for, shelf);
         if let Err(failure) = outcome {
@@ -322,25 +235,6 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     };
     finish(&controller, &tasks, args, alone)?;
     Ok(status)
-}
-
-/// The one task of a program run alone: a NORMAL motion task moving the robot, named
-/// as its backup or manifest names it (T_ROB1 else).
-// The configuration's type, trust level and message queue of a backup's single task
-// are not applied: a program alone runs one start of its entry routine, as it always
-// has under `rapid run`.
-fn alone_spec(inputs: &Inputs) -> TaskSpec {
-    TaskSpec {
-        name: inputs.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned(),
-        kind: TaskKind::Normal,
-        trust: TrustLevel::default(),
-        foreground: None,
-        motion: true,
-        robot: true,
-        rmq: rapid_config::sys::Rmq::default(),
-        robot_of: None,
-        shared_files: Vec::new(),
-    }
 }
 
 /// What ended a program run alone, said as the program's (no task named): a bound,
@@ -451,60 +345,6 @@ fn report_hook_failure(
     Ok(ExitStatus::Failure)
 }
 
-/// Whether the inputs' I/O configuration has system inputs or outputs.
-pub(crate) fn has_system_signals(inputs: &Inputs) -> bool {
-    eio_of(inputs).is_some_and(|eio| !eio.sys_inputs.is_empty() || !eio.sys_outputs.is_empty())
-}
-
-/// The typed view of the inputs' EIO configuration, if they have one.
-fn eio_of(inputs: &Inputs) -> Option<rapid_config::eio::Eio> {
-    let eio = inputs.syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("EIO"))?;
-    Some(rapid_config::eio::read(&eio.1))
-}
-
-/// The system of a single task without a task configuration: one NORMAL motion task.
-fn one_task_system(inputs: &Inputs) -> Sys {
-    let name = inputs.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
-    let entry = inputs.task.as_ref().and_then(|t| t.entry.clone()).unwrap_or_else(|| "main".to_owned());
-    let task = rapid_config::sys::Task {
-        name,
-        task_type: TaskType::Normal,
-        entry,
-        entry_span: None,
-        trust_level: None,
-        motion_task: true,
-        mechanical_unit_group: None,
-        hidden: false,
-        foreground: None,
-        rmq: rapid_config::sys::Rmq::default(),
-        line: 0,
-    };
-    Sys { tasks: vec![task], ..Sys::default() }
-}
-
-/// The system inputs and outputs and the event routines the operations run.
-fn configure_operations(
-    controller: &mut Controller,
-    inputs: &Inputs,
-    sys: Option<&Sys>,
-    args: &RunArgs,
-) -> Result<(), String> {
-    let auto = args.controller_state().mode == rapid_vm::builtins::controller::OpMode::Auto;
-    if let Some(eio) = eio_of(inputs) {
-        controller.configure_system_signals(&eio, auto)?;
-    }
-    for shelf in ["STOP", "QSTOP", "RESTART", "START", "STEP"] {
-        let routines = controller
-            .tasks
-            .iter()
-            .map(|t| sys.map(|sys| sys.hooks_for(&t.spec.name, shelf).into_iter().map(str::to_owned).collect()))
-            .map(Option::unwrap_or_default)
-            .collect();
-        controller.set_event_routines(shelf, routines);
-    }
-    Ok(())
-}
-
 /// Runs the `shelf` event routines (`hooks_for(task, shelf)`) of every task.
 fn run_hooks(
     controller: &mut Controller,
@@ -532,74 +372,10 @@ fn run_hooks(
     Ok(())
 }
 
-/// The motion task whose mechanical unit group a task that is no motion task uses
-/// (`-UseMechanicalUnitGroup`). A motion task without the attribute uses `rob1`, `rob2`,
-/// … by its place among the motion tasks. Without the attribute, in a system of one
-/// motion task (no MultiMove), the task uses that task's group, the only one.
-// uncertain: both defaults; RobotWare's own configurations name the group of each
-// motion task, and the attribute is needed in MultiMove systems. The second is what
-// open_abb's controller backup relies on: its LOGGER task, configured without the
-// attribute, streams the robot's CRobT and CJointT.
-fn robot_of(sys: &Sys, task: &rapid_config::sys::Task) -> Option<String> {
-    if task.motion_task {
-        return None;
-    }
-    let mut motion = sys.tasks.iter().filter(|t| t.motion_task).enumerate();
-    let Some(group) = task.mechanical_unit_group.as_deref() else {
-        let only = motion.next().filter(|_| sys.tasks.iter().filter(|t| t.motion_task).count() == 1);
-        return only.map(|(_, t)| t.name.clone());
-    };
-    let uses = |(n, t): &(usize, &rapid_config::sys::Task)| match t.mechanical_unit_group.as_deref() {
-        Some(own) => own.eq_ignore_ascii_case(group),
-        None => format!("rob{}", n + 1).eq_ignore_ascii_case(group),
-    };
-    motion.find(uses).map(|(_, t)| t.name.clone())
-}
-
-/// The tasks of SYS.cfg in configuration order.
-fn task_specs(sys: &Sys) -> Result<Vec<TaskSpec>, String> {
-    sys.tasks
-        .iter()
-        .map(|task| {
-            let trust = match &task.trust_level {
-                None => TrustLevel::default(),
-                Some(text) => TrustLevel::parse(text).ok_or_else(|| {
-                    format!("task {}: unknown -TrustLevel `{text}` (SysFail, SysHalt, SysStop, NoSafety)", task.name)
-                })?,
-            };
-            let kind = match task.task_type {
-                TaskType::Normal => TaskKind::Normal,
-                TaskType::Static => TaskKind::Static,
-                TaskType::SemiStatic => TaskKind::SemiStatic,
-            };
-            Ok(TaskSpec {
-                name: task.name.clone(),
-                kind,
-                trust,
-                foreground: task.foreground.clone(),
-                motion: task.motion_task,
-                robot: task.motion_task,
-                rmq: task.rmq,
-                shared_files: Vec::new(),
-                robot_of: robot_of(sys, task),
-            })
-        })
-        .collect()
-}
-
 fn refuse(message: &str) -> anyhow::Result<ExitStatus> {
     eprintln!("error: {message}");
     eprintln!("the system has errors; it was not run");
     Ok(ExitStatus::Failure)
-}
-
-/// The I/O system of the backup's EIO.cfg (one for the whole controller).
-fn io_system(inputs: &Inputs) -> Result<Option<rapid_io::IoSystem>, String> {
-    let eio = inputs.syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("EIO"));
-    match eio {
-        Some((_, eio)) => rapid_vm::builtins::io_config::io_system(&rapid_config::eio::read(eio)).map(Some),
-        None => Ok(None),
-    }
 }
 
 /// A stimulus's input orders, reactions and pendant answers (`rapid_vm::builtins::io`).

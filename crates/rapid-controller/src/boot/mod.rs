@@ -1,10 +1,12 @@
-//! Assembling a running system from what the front end collected: the robots of its
-//! motion tasks and their external units and conveyors (`motion`, `robots`,
-//! `moc_units`), the virtual signals of `--virtual-io` (`virtual_io`), from the
-//! configuration around the tasks (`cell`).
+//! Assembling a running system from what the front end collected (`system::boot`):
+//! the tasks and their configuration, the I/O system, the robots of its motion tasks
+//! and their external units and conveyors (`motion`, `robots`, `moc_units`), the
+//! virtual signals of `--virtual-io` (`virtual_io`), from the configuration around the
+//! tasks (`cell`).
 
 pub mod cell;
 pub mod moc_units;
 pub mod motion;
 pub mod robots;
+pub mod system;
 pub mod virtual_io;
