@@ -11,10 +11,12 @@ mod alone;
 pub mod boot;
 pub mod ops;
 pub mod pers;
+pub mod run;
 pub mod schedule;
 pub mod task;
 mod types;
 
 pub use ops::{ProgramState, StartMode, StopKind};
+pub use run::{Bound, ClockPolicy, RunBounds, WallClock};
 pub use schedule::{Controller, SystemExit};
 pub use task::{TaskEnd, TaskKind, TaskSpec, TrustLevel};

@@ -18,7 +18,7 @@
 use std::io::{self, BufWriter};
 
 use rapid_controller::boot::system::{self as boot, BootError, BootOptions, Booted};
-use rapid_controller::{Controller, SystemExit, TaskEnd, TaskKind, TaskSpec, TrustLevel};
+use rapid_controller::{Bound, ClockPolicy, Controller, RunBounds, TaskEnd, TaskKind, TaskSpec, TrustLevel};
 use rapid_sema::{Options, Severity, SourceInput};
 use rapid_vm::{load_with, LoadError};
 
@@ -27,12 +27,6 @@ use crate::args::RunArgs;
 use crate::commands::system::{self, ConfigFile, TaskFacts, TaskProgram};
 use crate::commands::ExitStatus;
 use crate::inputs::{self, Inputs};
-
-/// Statements (all tasks together) between checks of the bounds.
-const SLICE: u64 = 1 << 14;
-
-/// Instructions of a task run alone between checks of the bounds.
-const SLICE_ALONE: u64 = 1 << 16;
 
 /// One task's inputs, loaded program and configuration.
 struct LoadedTask {
@@ -178,7 +172,9 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             return refuse(&failure.message(&controller));
         }
     }
-    let bounded = drive(&mut controller, &mut host, args);
+    let policy = if args.realtime { ClockPolicy::Realtime } else { ClockPolicy::Virtual };
+    let bounds = RunBounds { max_steps: args.max_steps, max_time: args.max_time };
+    let bounded = controller.run_until(&mut host, &mut crate::pace::Pacer::default(), policy, bounds);
     host.flush();
     // A program alone is reported as it stops: what ended it, then its outputs.
     let alone_status = alone.then(|| report_alone(&controller, &tasks[0].inputs.modules, bounded.as_ref(), args));
@@ -396,66 +392,6 @@ fn read_stimulus(io: Option<&rapid_io::IoSystem>, args: &RunArgs, alone: bool) -
         });
     };
     crate::stimulus::parse(&shown, &text, system).map(Some)
-}
-
-/// Why the run stopped before the system ended, if a bound stopped it.
-enum Bound {
-    Steps(u64),
-    Time(f64),
-    InternalError,
-    /// The user ended the run (Ctrl-C).
-    Interrupted,
-    /// The program was stopped (a system input) and nothing in the stimulus starts it
-    /// again.
-    Stopped,
-}
-
-/// Runs the system to its end or to a bound.
-fn drive(controller: &mut Controller, host: &mut StdoutHost<'_>, args: &RunArgs) -> Option<Bound> {
-    let mut pacer = crate::pace::Pacer::default();
-    let limit = args.max_time.unwrap_or(f64::INFINITY);
-    loop {
-        if crate::interrupt::requested() {
-            return Some(Bound::Interrupted);
-        }
-        let slice = if controller.runs_alone() { SLICE_ALONE } else { SLICE };
-        let step = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| controller.run(host, slice)));
-        let Ok(exit) = step else { return Some(Bound::InternalError) };
-        if let Some(max) = args.max_steps {
-            if controller.steps > max {
-                return Some(Bound::Steps(max));
-            }
-        }
-        match exit {
-            SystemExit::Ended => return None,
-            SystemExit::Stopped => return Some(Bound::Stopped),
-            SystemExit::Budget => {
-                // While the program talks to the outside world the clock is the wall
-                // clock, computing too: a peer's data and --max-time come in its time.
-                let paced = args.realtime || controller.talks_to_outside_world();
-                let to = pacer.wait(paced, controller.time, controller.time, limit);
-                controller.advance(to - controller.time);
-            }
-            SystemExit::Wait(seconds) => {
-                // While a task talks to the outside world (a socket), the clock runs in
-                // wall-clock time; otherwise it jumps.
-                let paced = args.realtime || controller.talks_to_outside_world();
-                if paced {
-                    host.flush();
-                }
-                let from = controller.time;
-                let to = pacer.wait(paced, from, from + seconds, limit);
-                controller.advance(to - from);
-            }
-        }
-        // The clock moves while tasks compute too (the nominal instruction time): a loop
-        // that never waits is bounded as well.
-        if let Some(max) = args.max_time {
-            if controller.time > max {
-                return Some(Bound::Time(max));
-            }
-        }
-    }
 }
 
 /// Prints what ended the run badly: a bound, each task's unhandled error, a static
