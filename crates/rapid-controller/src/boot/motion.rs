@@ -59,7 +59,7 @@ fn model_of_moc(
 
 /// The model of robot ROB_`n`, which motion task `task` moves (`super::robots`):
 /// `--robot`, else the task's own `robot` model in a manifest, else the manifest's
-/// [system] robot, else its MOC.cfg robot's type when we know it, else `system` (the
+/// `[system]` robot, else its MOC.cfg robot's type when we know it, else `system` (the
 /// run's model, [`choose_model`]).
 pub fn robot_model(
     robot_override: Option<&str>,
