@@ -118,33 +118,10 @@ impl Controller {
 
 #[cfg(test)]
 mod tests {
-    use rapid_sema::SourceInput;
     use rapid_vm::RecordingHost;
 
-    use crate::{Controller, SystemExit, TaskKind, TaskSpec, TrustLevel};
-
-    fn alone(program: &str) -> Controller {
-        let files = [SourceInput::from_text("T_ROB1.mod", program)];
-        let loaded = match rapid_vm::load_with(&files, "main", &rapid_sema::Options::default()) {
-            Ok(loaded) => loaded,
-            Err(err) => panic!("the test program does not load: {err:?}"),
-        };
-        let spec = TaskSpec {
-            name: "T_ROB1".to_owned(),
-            kind: TaskKind::Normal,
-            trust: TrustLevel::SysFail,
-            foreground: None,
-            motion: true,
-            robot: true,
-            rmq: rapid_config::sys::Rmq::default(),
-            shared_files: Vec::new(),
-            robot_of: None,
-        };
-        match Controller::new(vec![(spec, loaded)], None) {
-            Ok(controller) => controller,
-            Err(message) => panic!("{message}"),
-        }
-    }
+    use crate::test_support::one_task as alone;
+    use crate::{Controller, SystemExit};
 
     /// Runs to the end, each wait moved over whole; the exits seen.
     fn run(controller: &mut Controller, host: &mut RecordingHost, budget: u64) -> Vec<SystemExit> {

@@ -25,12 +25,16 @@ mod alone;
 pub mod boot;
 pub mod ops;
 pub mod pers;
+mod power_on;
 pub mod run;
 pub mod schedule;
 pub mod task;
+#[cfg(test)]
+mod test_support;
 mod types;
 
 pub use ops::{ProgramState, StartMode, StopKind};
+pub use power_on::EventRoutineFailure;
 pub use run::{Bound, ClockPolicy, RunBounds, WallClock};
 pub use schedule::{Controller, SystemExit};
 pub use task::{TaskEnd, TaskKind, TaskSpec, TrustLevel};

@@ -467,7 +467,7 @@ impl Controller {
         }
     }
 
-    fn hooks_of(&self, shelf: &str, idx: usize) -> Vec<String> {
+    pub(crate) fn hooks_of(&self, shelf: &str, idx: usize) -> Vec<String> {
         self.ops
             .hooks
             .iter()

@@ -120,11 +120,10 @@ impl Controller {
 
 #[cfg(test)]
 mod tests {
-    use rapid_sema::SourceInput;
     use rapid_vm::RecordingHost;
 
     use super::{Bound, ClockPolicy, RunBounds, WallClock};
-    use crate::{Controller, TaskKind, TaskSpec, TrustLevel};
+    use crate::test_support::one_task;
 
     /// A wall clock that is never paced to: it records the paced stretches asked for.
     #[derive(Default)]
@@ -143,29 +142,6 @@ mod tests {
 
         fn interrupted(&self) -> bool {
             self.interrupt
-        }
-    }
-
-    fn one_task(program: &str) -> Controller {
-        let files = [SourceInput::from_text("T_ROB1.mod", program)];
-        let loaded = match rapid_vm::load_with(&files, "main", &rapid_sema::Options::default()) {
-            Ok(loaded) => loaded,
-            Err(err) => panic!("the test program does not load: {err:?}"),
-        };
-        let spec = TaskSpec {
-            name: "T_ROB1".to_owned(),
-            kind: TaskKind::Normal,
-            trust: TrustLevel::SysFail,
-            foreground: None,
-            motion: true,
-            robot: true,
-            rmq: rapid_config::sys::Rmq::default(),
-            shared_files: Vec::new(),
-            robot_of: None,
-        };
-        match Controller::new(vec![(spec, loaded)], None) {
-            Ok(controller) => controller,
-            Err(message) => panic!("{message}"),
         }
     }
 

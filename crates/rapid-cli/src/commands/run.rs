@@ -33,14 +33,6 @@ pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
     super::run_system::run(args, inputs)
 }
 
-/// The event log's entries for a start from main: the program pointer reset, the
-/// program started.
-pub(crate) fn log_start(vm: &mut rapid_vm::Vm, task: &str) {
-    use rapid_vm::events::{PP_RESET, PROGRAM_STARTED};
-    vm.log_state(PP_RESET, format!("The program pointer of task {task} was set to its entry routine."));
-    vm.log_state(PROGRAM_STARTED, format!("Program execution in task {task} has been started."));
-}
-
 /// The event log's entry for the program's stop, with why it stopped.
 pub(crate) fn log_stop(vm: &mut rapid_vm::Vm, task: &str, status: ExitStatus) {
     let why = match status {

@@ -18,7 +18,9 @@
 use std::io::{self, BufWriter};
 
 use rapid_controller::boot::system::{self as boot, BootError, BootOptions, Booted};
-use rapid_controller::{Bound, ClockPolicy, Controller, RunBounds, TaskEnd, TaskKind, TaskSpec, TrustLevel};
+use rapid_controller::{
+    Bound, ClockPolicy, Controller, EventRoutineFailure, RunBounds, TaskEnd, TaskKind, TaskSpec, TrustLevel,
+};
 use rapid_sema::{Options, Severity, SourceInput};
 use rapid_vm::{load_with, LoadError};
 
@@ -155,22 +157,17 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     };
     let mut host =
         StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers: single::pendant_answers(args)? };
-    for task in &mut controller.tasks {
-        let name = task.spec.name.clone();
-        single::log_start(&mut task.loaded.vm, &name);
-    }
     // Power on and a start from main: every task's POWER_ON, then START event routines
     // (each task has its routines: the system findings above).
-    let hooks_for = |name: &str, shelf: &str| boot::hooks_for(sys.as_ref(), name, shelf);
-    for shelf in ["POWER_ON", "START"] {
-        let outcome = run_hooks(&mut controller, &mut host, &hooks_for, shelf);
-        if let Err(failure) = outcome {
-            host.flush();
-            if alone {
-                return report_hook_failure(&controller, &tasks[0].inputs.modules, failure);
+    if let Err(failure) = controller.power_on(&mut host) {
+        host.flush();
+        let routine = failure.routine.as_str();
+        return match (&failure.unhandled, alone) {
+            (Some(unhandled), true) => {
+                report_event_routine_failure(&controller, &tasks[0].inputs.modules, routine, unhandled)
             }
-            return refuse(&failure.message(&controller));
-        }
+            _ => refuse(&refusal(&controller, &failure)),
+        };
     }
     let policy = if args.realtime { ClockPolicy::Realtime } else { ClockPolicy::Virtual };
     let bounds = RunBounds { max_steps: args.max_steps, max_time: args.max_time };
@@ -181,8 +178,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     if alone {
         if let Some((_, routine)) = controller.failed_stop_routine.clone() {
             if let Some(TaskEnd::Failed(unhandled)) = controller.tasks[0].end() {
-                let failure = HookFailure::Unhandled(routine, Box::new(unhandled.clone()));
-                return report_hook_failure(&controller, &tasks[0].inputs.modules, failure);
+                return report_event_routine_failure(&controller, &tasks[0].inputs.modules, &routine, unhandled);
             }
         }
     }
@@ -288,84 +284,33 @@ fn source_location(
     }
 }
 
-/// Why event routines could not run: in task (index) …
-enum HookFailure {
-    /// … the configuration names a routine the task does not have.
-    Missing { task: usize, shelf: &'static str, routine: String },
-    /// … an error no ERROR handler handled while the event routine (named) ran.
-    Unhandled(String, Box<rapid_vm::Unhandled>),
-    /// … the same, in the `shelf` event routine of a system's task.
-    InSystem { task: usize, shelf: &'static str, routine: String, unhandled: Box<rapid_vm::Unhandled> },
-}
-
-impl HookFailure {
-    /// The failure as a system's refusal says it.
-    fn message(&self, controller: &Controller) -> String {
-        match self {
-            HookFailure::Missing { task, shelf, routine } => {
-                let name = &controller.tasks[*task].spec.name;
-                format!("task {name} has no procedure `{routine}` for its {shelf} event routine")
-            }
-            HookFailure::Unhandled(routine, unhandled) => format!("{} in the event routine {routine}", unhandled.error),
-            HookFailure::InSystem { task, shelf, routine, unhandled } => {
-                let name = &controller.tasks[*task].spec.name;
-                let source = controller.tasks[*task].loaded.vm.program_source(unhandled.file);
-                let (path, line, column) =
-                    single::location(source.map(std::slice::from_ref).unwrap_or(&[]), 0, unhandled.span.start);
-                let raised = format!("raised in routine {} at {path}:{line}:{column}", unhandled.routine);
-                format!("{} in the {shelf} event routine {routine} of task {name}, {raised}", unhandled.error)
-            }
-        }
-    }
+/// An event routine of the start that failed, as a system's refusal says it.
+fn refusal(controller: &Controller, failure: &EventRoutineFailure) -> String {
+    let EventRoutineFailure { task, shelf, routine, unhandled } = failure;
+    let name = &controller.tasks[*task].spec.name;
+    let Some(unhandled) = unhandled else {
+        return format!("task {name} has no procedure `{routine}` for its {shelf} event routine");
+    };
+    let source = controller.tasks[*task].loaded.vm.program_source(unhandled.file);
+    let (path, line, column) =
+        single::location(source.map(std::slice::from_ref).unwrap_or(&[]), 0, unhandled.span.start);
+    let raised = format!("raised in routine {} at {path}:{line}:{column}", unhandled.routine);
+    format!("{} in the {shelf} event routine {routine} of task {name}, {raised}", unhandled.error)
 }
 
 /// An event routine of a program alone failed: said as the program's, and nothing
 /// more of the run is reported.
-fn report_hook_failure(
+fn report_event_routine_failure(
     controller: &Controller,
     files: &[SourceInput],
-    failure: HookFailure,
+    routine: &str,
+    unhandled: &rapid_vm::Unhandled,
 ) -> anyhow::Result<ExitStatus> {
-    match failure {
-        HookFailure::Unhandled(routine, unhandled) | HookFailure::InSystem { routine, unhandled, .. } => {
-            let (path, line, column) = source_location(controller, 0, files, &unhandled);
-            eprintln!("error: {}", unhandled.error);
-            eprintln!("  in routine {} at {path}:{line}:{column}", unhandled.routine);
-            eprintln!("  the event routine {routine} stopped (no ERROR handler handled the error)");
-        }
-        missing @ HookFailure::Missing { .. } => {
-            eprintln!("error: {}", missing.message(controller));
-            eprintln!("the system has errors; it was not run");
-        }
-    }
+    let (path, line, column) = source_location(controller, 0, files, unhandled);
+    eprintln!("error: {}", unhandled.error);
+    eprintln!("  in routine {} at {path}:{line}:{column}", unhandled.routine);
+    eprintln!("  the event routine {routine} stopped (no ERROR handler handled the error)");
     Ok(ExitStatus::Failure)
-}
-
-/// Runs the `shelf` event routines (`hooks_for(task, shelf)`) of every task.
-fn run_hooks(
-    controller: &mut Controller,
-    host: &mut StdoutHost<'_>,
-    hooks_for: &dyn Fn(&str, &str) -> Vec<String>,
-    shelf: &'static str,
-) -> Result<(), HookFailure> {
-    let event = rapid_config::sys::SHELVES.iter().position(|s| *s == shelf).map_or(0, |i| i as u8 + 1);
-    let alone = controller.runs_alone();
-    for idx in 0..controller.tasks.len() {
-        let name = controller.tasks[idx].spec.name.clone();
-        for routine in hooks_for(&name, shelf) {
-            match controller.run_event_routine(idx, host, &routine, event) {
-                Ok(true) => {}
-                // A system's findings have named every routine its tasks lack.
-                Ok(false) if !alone => {}
-                Ok(false) => return Err(HookFailure::Missing { task: idx, shelf, routine }),
-                Err(unhandled) if alone => return Err(HookFailure::Unhandled(routine, Box::new(unhandled))),
-                Err(unhandled) => {
-                    return Err(HookFailure::InSystem { task: idx, shelf, routine, unhandled: Box::new(unhandled) })
-                }
-            }
-        }
-    }
-    Ok(())
 }
 
 fn refuse(message: &str) -> anyhow::Result<ExitStatus> {

@@ -267,7 +267,8 @@ pub fn hooks_for(sys: Option<&Sys>, task: &str, shelf: &str) -> Vec<String> {
     sys.map(|sys| sys.hooks_for(task, shelf).into_iter().map(str::to_owned).collect()).unwrap_or_default()
 }
 
-/// The system inputs and outputs and the event routines the operations run.
+/// The system inputs and outputs and the event routines of the start and of the
+/// operations.
 fn configure_operations(
     controller: &mut Controller,
     syspar: &[(String, CfgFile)],
@@ -277,7 +278,7 @@ fn configure_operations(
     if let Some(eio) = eio_of(syspar) {
         controller.configure_system_signals(&eio, auto)?;
     }
-    for shelf in ["STOP", "QSTOP", "RESTART", "START", "STEP"] {
+    for shelf in ["POWER_ON", "STOP", "QSTOP", "RESTART", "START", "STEP"] {
         let routines = controller.tasks.iter().map(|t| hooks_for(sys, &t.spec.name, shelf)).collect();
         controller.set_event_routines(shelf, routines);
     }
