@@ -111,7 +111,8 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             }
         };
         facts.push(program.analysis.as_deref().map(system::facts).unwrap_or_default());
-        // Not needed to run; freed with the process (see `run`).
+        // The checked program is not needed to run, and the process ends with the run:
+        // its memory goes back to the system then, without the time freeing it would take.
         std::mem::forget(program.analysis.take());
         single::configure_files(&mut program, args, &task.inputs.modules, task.inputs.root.clone());
         program.vm.resources_mut().cfgdata.set_config(task.inputs.syspar.clone());
