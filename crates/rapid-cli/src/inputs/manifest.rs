@@ -68,9 +68,9 @@ pub(crate) struct Manifest {
     pub(crate) name: Option<String>,
     pub(crate) robot: Option<String>,
     /// `[[unit]]`: external mechanical units and the tasks they belong to.
-    pub(crate) units: Vec<super::manifest_units::TaskUnit>,
+    pub(crate) units: Vec<super::TaskUnit>,
     /// `[[conveyor]]`: conveyors for conveyor tracking and the tasks they belong to.
-    pub(crate) conveyors: Vec<super::manifest_units::TaskConveyor>,
+    pub(crate) conveyors: Vec<super::TaskConveyor>,
     /// A motion task's `base` and `orientation`: where its robot stands in the world (mm,
     /// a unit quaternion), by task name.
     pub(crate) robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
