@@ -22,6 +22,21 @@ pub(crate) enum Command {
     Serve(ServeArgs),
     /// List every diagnostic code with its severity and meaning.
     Codes,
+    /// Lay out RAPID modules as RobotStudio's editor does (every token and comment kept).
+    Fmt(FmtArgs),
+}
+
+#[derive(Debug, Args)]
+pub(crate) struct FmtArgs {
+    /// Write nothing: print the files that would change and exit 1 if there are any.
+    #[arg(long)]
+    pub(crate) check: bool,
+
+    /// Module files or folders of modules (not their subfolders) to format in place;
+    /// `-` formats stdin to stdout. Options come from the `[fmt]` table of the nearest
+    /// rapid.toml at or above each file (docs/fmt.md).
+    #[arg(required = true, value_name = "PATH")]
+    pub(crate) paths: Vec<PathBuf>,
 }
 
 #[derive(Debug, Args)]
@@ -209,4 +224,6 @@ pub(crate) enum Format {
     Human,
     /// One JSON array of diagnostics.
     Json,
+    /// One SARIF 2.1.0 log, for code scanning (see docs/ci.md).
+    Sarif,
 }

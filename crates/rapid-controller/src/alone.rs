@@ -22,9 +22,14 @@ const MAX_CLOCK_ERROR: f64 = 1e-12;
 
 impl Controller {
     /// Whether the system is one task run alone: one task, no system inputs or outputs,
-    /// the program running (a stop or a step under way runs it a statement at a time).
+    /// the program running (a stop or a step under way runs it a statement at a time),
+    /// and no breakpoint set nor API step under way (the scheduler looks for those
+    /// before each statement; a slice would run past them).
     pub fn runs_alone(&self) -> bool {
-        self.tasks.len() == 1 && !self.ops.system_signals && self.program_state() == crate::ops::ProgramState::Running
+        self.tasks.len() == 1
+            && !self.ops.system_signals
+            && !self.watch.is_active()
+            && self.program_state() == crate::ops::ProgramState::Running
     }
 
     /// The bound on [`Controller::steps`] the caller ends the run at (`--max-steps`):

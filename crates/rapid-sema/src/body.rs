@@ -26,6 +26,9 @@ pub(crate) struct RoutineCtx {
     block_path: Vec<u32>,
     next_block: u32,
     has_return: bool,
+    /// FOR and WHILE loops around the statement being checked: Break inside one ends
+    /// the loop (RW 6.15, manual §1.5) rather than stopping the program.
+    loops: u32,
     /// Length of the data table before this routine's parameters and data.
     data_mark: usize,
     /// Routine data and parameter names with their spans (labels may not reuse them).
@@ -49,6 +52,7 @@ impl Checker<'_> {
             block_path: vec![0],
             next_block: 1,
             has_return: false,
+            loops: 0,
             data_mark: self.datas.len(),
             local_names: FxHashMap::default(),
         });
@@ -241,7 +245,7 @@ impl Checker<'_> {
             StmtKind::For { var, from, to, step, body } => self.for_stmt(arena, *var, *from, *to, *step, body),
             StmtKind::While { cond, body } => {
                 self.condition(arena, *cond);
-                self.stmt_list(arena, body);
+                self.loop_body(arena, body);
             }
             StmtKind::Test { subject, cases, default } => self.test_stmt(arena, *subject, cases, default.as_deref()),
             StmtKind::Goto(label) => {
@@ -346,8 +350,19 @@ impl Checker<'_> {
         self.datas.push(data);
         let idx = self.datas.len() as u32 - 1;
         self.scopes.loop_vars.push((var.sym, idx));
-        self.stmt_list(arena, body);
+        self.loop_body(arena, body);
         self.scopes.loop_vars.pop();
+    }
+
+    /// The statements of a FOR or WHILE loop.
+    fn loop_body(&mut self, arena: &Arena, body: &[Stmt]) {
+        if let Some(ctx) = self.ctx.as_mut() {
+            ctx.loops += 1;
+        }
+        self.stmt_list(arena, body);
+        if let Some(ctx) = self.ctx.as_mut() {
+            ctx.loops -= 1;
+        }
     }
 
     fn test_stmt(
@@ -483,16 +498,19 @@ impl Checker<'_> {
     }
 
     /// Stop and Break are ignored in UNDO; motion instructions are not allowed (§1.13).
+    /// Break inside a loop is the loop's end (RW 6.15), not the debugging stop §1.13
+    /// means: it is not reported.
     fn undo_restrictions(&mut self, name: Name) {
         if self.section() != Section::Undo {
             return;
         }
+        let in_loop = self.ctx.as_ref().is_some_and(|c| c.loops > 0);
         let Some(Def::Routine(idx)) = self.lookup(name.sym) else { return };
         let info = self.routine(idx);
         let Some(chapter) = info.chapter else { return };
         let display = info.display.to_ascii_lowercase();
         let text = self.text(name.span);
-        if matches!(display.as_str(), "stop" | "break") {
+        if display == "stop" || (display == "break" && !in_loop) {
             self.diag(
                 Code::IgnoredInUndo,
                 name.span,

@@ -22,6 +22,14 @@ pub const PP_RESET: (u32, &str) = (2, "Program pointer has been reset");
 pub const PROGRAM_STARTED: (u32, &str) = (150, "Program started");
 pub const PROGRAM_STOPPED: (u32, &str) = (151, "Program stopped");
 
+/// Program-domain warnings of the UNDO context (manual §1.13), as (number, title): an
+/// instruction ignored there (STOP, BREAK, RAISE, RETURN: code 40901), and an UNDO
+/// session cut short by EXIT or a run error (40902). ABB's own numbers and texts for
+/// these warnings are not public: ours, outside the errnum values (1..90 and 1000..)
+/// that the program domain's error entries use as numbers (`exec/undo.rs`).
+pub const IGNORED_IN_UNDO: (u32, &str) = (901, "Instruction ignored in UNDO");
+pub const UNDO_ABORTED: (u32, &str) = (902, "UNDO aborted");
+
 /// How serious an event is (the `\W` and `\I` switches of ErrWrite and ErrLog).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum EventKind {

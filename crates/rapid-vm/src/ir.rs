@@ -86,6 +86,9 @@ pub enum Instr {
     Retry,
     TryNext,
     Exit,
+    /// A RETURN written in an UNDO handler: ignored, with an event-log warning
+    /// (manual §1.13; `exec/undo.rs`).
+    UndoReturn,
     /// FOR: pop FROM, TO and STEP (or none for the default) into slots var, var+1, var+2.
     ForInit {
         var: u32,

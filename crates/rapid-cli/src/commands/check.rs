@@ -86,6 +86,7 @@ pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
     match args.format {
         Format::Human => render::human::render(&mut out, &files, &reported, &summary)?,
         Format::Json => render::json::render(&mut out, &files, &reported)?,
+        Format::Sarif => render::sarif::render(&mut out, &files, &reported)?,
     }
     out.flush()?;
 

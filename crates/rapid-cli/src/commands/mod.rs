@@ -2,6 +2,8 @@
 
 mod check;
 mod codes;
+mod fmt;
+mod fmt_config;
 mod run;
 mod run_system;
 mod serve;
@@ -45,5 +47,6 @@ pub(crate) fn run(cli: Cli) -> anyhow::Result<ExitStatus> {
         }
         Command::Serve(args) => serve::run(&args),
         Command::Codes => codes::run(),
+        Command::Fmt(args) => fmt::run(&args),
     }
 }

@@ -11,7 +11,6 @@ use std::io::{self, BufWriter, Write};
 
 use rapid_sema::{Code, Diagnostic, Severity, SourceInput};
 use rapid_syntax::LineIndex;
-use rapid_vm::builtins::files::ModuleFile;
 use rapid_vm::{Host, LoadError};
 
 use crate::args::RunArgs;
@@ -50,30 +49,10 @@ pub(crate) fn pendant_answers(args: &RunArgs) -> anyhow::Result<std::collections
     Ok(text.lines().filter(|l| !l.starts_with('#')).map(str::to_string).collect())
 }
 
-/// The controller root of the file devices (`--home`, else `rapid-controller` beside
-/// the first PATH) and the loaded modules' files (ModExist, ModTimeDnum).
-pub(crate) fn configure_files(
-    loaded: &mut rapid_vm::Loaded,
-    args: &RunArgs,
-    files: &[SourceInput],
-    backup_root: Option<std::path::PathBuf>,
-) {
-    let root = args.home.clone().or(backup_root).unwrap_or_else(|| default_home(&args.paths));
-    let mut interner = rapid_syntax::Interner::default();
-    let modules = files
-        .iter()
-        .filter(|f| f.unreadable.is_none())
-        .flat_map(|f| {
-            // Only the module names are needed: bodies are scanned over, not parsed.
-            let parse = rapid_syntax::parse_outline(&f.text, &mut interner);
-            let path = std::path::PathBuf::from(&f.path);
-            let names: Vec<String> = parse.file.modules.iter().map(|m| m.name.span.text(&f.text).to_string()).collect();
-            names.into_iter().map(move |name| ModuleFile { name, path: path.clone() })
-        })
-        .collect();
-    let state = &mut loaded.vm.resources_mut().files;
-    state.set_root(root);
-    state.set_modules(modules);
+/// The controller root of the file devices: `--home`, else a backup's (or a
+/// manifest's) own root, else `rapid-controller` beside the first PATH.
+pub(crate) fn home(args: &RunArgs, backup_root: Option<std::path::PathBuf>) -> std::path::PathBuf {
+    args.home.clone().or(backup_root).unwrap_or_else(|| default_home(&args.paths))
 }
 
 /// `rapid-controller` in the folder holding the first PATH (for a folder of modules,

@@ -114,9 +114,15 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         // The checked program is not needed to run, and the process ends with the run:
         // its memory goes back to the system then, without the time freeing it would take.
         std::mem::forget(program.analysis.take());
-        single::configure_files(&mut program, args, &task.inputs.modules, task.inputs.root.clone());
-        program.vm.resources_mut().cfgdata.set_config(task.inputs.syspar.clone());
-        program.vm.resources_mut().controller = args.controller_state();
+        let home = single::home(args, task.inputs.root.clone());
+        let syspar = task.inputs.syspar.clone();
+        rapid_controller::boot::task::configure(
+            &mut program,
+            home,
+            &task.inputs.modules,
+            syspar,
+            args.controller_state(),
+        );
         loaded.push((task.spec.clone(), program));
     }
     // What `rapid check` finds about the system as a whole (persistents declared

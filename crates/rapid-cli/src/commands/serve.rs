@@ -149,11 +149,8 @@ fn assemble(paths: &[PathBuf]) -> Result<(Controller, Vec<TaskFiles>), String> {
         let home = inputs.root.clone().unwrap_or_else(|| default_home(paths));
         let state =
             rapid_vm::builtins::controller::ControllerState::new(rapid_vm::builtins::controller::OpMode::Auto, 100.0);
-        let resources = program.vm.resources_mut();
-        resources.files.set_root(home);
-        resources.cfgdata.set_config(inputs.syspar.clone());
-        resources.controller = state;
-        resources.sockets.set_cooperative(true);
+        boot::task::configure(&mut program, home, &inputs.modules, inputs.syspar.clone(), state);
+        program.vm.resources_mut().sockets.set_cooperative(true);
         loaded.push((spec.clone(), program));
     }
     let options = boot::system::BootOptions { alone: false, cycles: 0, auto: true, ..Default::default() };

@@ -90,6 +90,9 @@ struct RawManifest {
     unit: Vec<Spanned<super::manifest_units::RawUnit>>,
     #[serde(default)]
     conveyor: Vec<Spanned<super::manifest_units::RawConveyor>>,
+    /// `[fmt]`: the formatter's options, read by `rapid fmt` (commands/fmt_config.rs).
+    #[serde(default, rename = "fmt")]
+    _fmt: Option<toml::Table>,
 }
 
 #[derive(Debug, Deserialize)]

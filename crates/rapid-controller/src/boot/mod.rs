@@ -2,11 +2,12 @@
 //! the tasks and their configuration, the I/O system, the robots of its motion tasks
 //! and their external units and conveyors (`motion`, `robots`, `moc_units`), the
 //! virtual signals of `--virtual-io` (`virtual_io`), from the configuration around the
-//! tasks (`cell`).
+//! tasks (`cell`); each task's file devices and configuration data (`task`).
 
 pub mod cell;
 pub mod moc_units;
 pub mod motion;
 pub mod robots;
 pub mod system;
+pub mod task;
 pub mod virtual_io;

@@ -13,7 +13,7 @@ use rapid_sema::SourceInput;
 use rustc_hash::FxHashMap;
 
 use super::files::devices;
-use super::{present, Ctx, Entries};
+use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Opaque, OpaqueState, Value};
@@ -89,16 +89,19 @@ impl ModuleState {
     }
 }
 
-pub(super) static ENTRIES: Entries = &[
-    ("Load", load),
-    ("UnLoad", unload),
-    ("StartLoad", start_load),
-    ("WaitLoad", wait_load),
-    ("CancelLoad", cancel_load),
-    ("CheckProgRef", check_prog_ref),
-    ("Save", save),
-    ("EraseModule", erase_module),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("Load", load),
+        native("UnLoad", unload),
+        native("StartLoad", start_load),
+        native("WaitLoad", wait_load),
+        native("CancelLoad", cancel_load),
+        native("CheckProgRef", check_prog_ref),
+        native("Save", save),
+        native("EraseModule", erase_module),
+    ],
+};
 
 /// An optional string argument.
 fn opt_string(ctx: &Ctx<'_>, arg: Option<&Value>) -> Result<Option<String>, RapidError> {

@@ -5,6 +5,26 @@ use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
 
+/// The built-ins this family runs (see `registry.rs`).
+pub(super) static FAMILY: super::Family = super::Family {
+    file: file!(),
+    builtins: &[
+        super::native("RemainingRetries", remaining_retries),
+        super::native("ResetRetryCount", reset_retry_count),
+        super::native("SkipWarn", skip_warn),
+        super::native("WaitTime", wait_time),
+        super::native("Stop", stop),
+        super::native("ExitCycle", exit_cycle),
+        super::native("Break", break_).compiled_as(super::Compiled::Break),
+        super::native("BookErrNo", book_err_no),
+        super::native("Dim", dim),
+        super::native("IsPers", is_pers),
+        super::native("IsVar", is_var),
+        super::native("ExecHandler", exec_handler),
+        super::native("ExecLevel", exec_level),
+    ],
+};
+
 /// `WaitTime [\InPos] Time`: waits `Time` seconds of controller time; with `\InPos` from
 /// when the robot stands at the end of its last move (a fly-by point there becomes a stop
 /// point: §2.3, the instruction that ends a \Conc sequence).
@@ -48,7 +68,12 @@ pub(super) fn wait_time(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
     Ok(None)
 }
 
+/// `Stop [\NoRegain] | [\AllMoveTasks]`: halts the program. In UNDO context it is
+/// ignored, with its switches, and an event-log warning is written (§1.13).
 pub(super) fn stop(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
+    if ignored_in_undo(ctx, "STOP") {
+        return Ok(None);
+    }
     ctx.stop = super::StopKind::Stop;
     // `\AllMoveTasks`: the programs of the other running NORMAL tasks stop too (the
     // controller stops them). `\NoRegain` concerns a robot moved away while stopped,
@@ -67,10 +92,25 @@ pub(super) fn exit_cycle(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Va
     Ok(None)
 }
 
-/// `Break` stops execution for debugging (no debugger is attached: like Stop).
+/// `Break` stops execution for debugging (no debugger is attached: like Stop); in UNDO
+/// context it is ignored with an event-log warning (§1.13). (Break inside a loop ends
+/// the loop: compiled as a jump, never called.)
 pub(super) fn break_(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
+    if ignored_in_undo(ctx, "BREAK") {
+        return Ok(None);
+    }
     ctx.stop = super::StopKind::Stop;
     Ok(None)
+}
+
+/// In UNDO context `instruction` is not executed: logs the warning (the VM places it at
+/// the call) and answers `true` (§1.13, `exec/undo.rs`).
+fn ignored_in_undo(ctx: &mut Ctx<'_>, instruction: &str) -> bool {
+    if !crate::exec::undo::in_undo_context(ctx.chain) {
+        return false;
+    }
+    crate::exec::undo::log_ignored(ctx.events, ctx.time, instruction, ctx.routine, None);
+    true
 }
 
 /// `BookErrNo ErrorName`: gives the errnum variable a free system error number.

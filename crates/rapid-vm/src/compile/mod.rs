@@ -5,7 +5,7 @@
 //! trusts types and arity; what it cannot run yet it refuses with a clear message.
 
 mod body;
-mod call;
+pub(crate) mod call;
 mod expr;
 mod kernel;
 mod stmt;

@@ -2,7 +2,7 @@
 //! RETURN, RAISE, RETRY, TRYNEXT, EXIT. Each statement's code range is recorded for
 //! error recovery.
 
-use rapid_syntax::ast::{Arena, ExprKind, Stmt, StmtKind};
+use rapid_syntax::ast::{Arena, ExprKind, Section, Stmt, StmtKind};
 
 use super::{CompileError, LocalKind, Resolved, RoutineCompiler};
 use crate::ir::{CallSite, Callee, Instr, StmtRange};
@@ -153,6 +153,11 @@ impl RoutineCompiler<'_> {
             StmtKind::Label(label) => {
                 let here = self.code.here();
                 self.labels.insert(label.sym, here);
+            }
+            // §1.13: a RETURN in the UNDO handler itself is ignored (its value is not
+            // evaluated); one in a routine the handler calls returns (`exec/undo.rs`).
+            StmtKind::Return(_) if self.section == Section::Undo => {
+                self.code.emit(Instr::UndoReturn);
             }
             StmtKind::Return(value) => match value {
                 Some(value) => {

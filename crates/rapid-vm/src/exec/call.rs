@@ -1,6 +1,7 @@
 //! Calls and returns, late binding, and error recovery: ERROR handlers found by table
 //! lookup, RETRY, TRYNEXT, RAISE, propagation to callers, the system error handler
-//! (§1.12), and UNDO handlers run on EXIT (§1.13).
+//! (§1.12), and UNDO handlers run on EXIT (§1.13; what UNDO context forbids is in
+//! `undo.rs`).
 
 use std::rc::Rc;
 
@@ -330,7 +331,9 @@ impl Vm {
     pub(super) fn return_from(&mut self, value: Option<Value>) -> Option<Exit> {
         let Some(frame) = self.frames.pop() else { return Some(Exit::Done) };
         self.release_slots(frame.base as usize);
-        if self.exiting {
+        // The end of an UNDO handler goes on with the next one of the chain; a routine
+        // the handler called returns to it as usual (§1.13: the rest of the handler runs).
+        if self.exiting && frame.undoing {
             return self.continue_exit();
         }
         let Some(caller) = self.frames.last_mut() else { return Some(Exit::Done) };
@@ -462,6 +465,16 @@ impl Vm {
                     return None;
                 }
                 _ if error.fatal || in_handler || self.frames.len() == 1 || frame.interrupted => {
+                    if self.exiting && super::undo::in_undo_context(&self.frames) {
+                        // §1.13: a run error in UNDO context skips the rest of the UNDO.
+                        let place = crate::events::EventPlace {
+                            routine: raised_at.code.name.clone(),
+                            file: raised_at.code.file,
+                            span: raised_at.span,
+                        };
+                        let cause = if error.name.is_empty() { "a run error" } else { error.name };
+                        self.log_undo_aborted(cause, Some(place));
+                    }
                     let exit = Self::unhandled(error, &raised_at);
                     self.frames.clear();
                     return Some(exit);

@@ -24,6 +24,7 @@ mod spy;
 mod statement;
 mod stop;
 pub mod storage;
+pub(crate) mod undo;
 
 use std::rc::Rc;
 
@@ -531,6 +532,10 @@ impl Vm {
             }
             Instr::Raise => {
                 let n = self.pop_num()?;
+                if self.raise_ignored_in_undo() {
+                    self.frame_mut().pc = next;
+                    return Ok(None);
+                }
                 let error = self.user_error(n);
                 // In an ERROR handler, RAISE hands the (new) error to the caller's
                 // handler (§1.12); elsewhere it is raised here.
@@ -550,7 +555,8 @@ impl Vm {
                 next = active.stmt.end;
                 self.frame_mut().retries = 0;
             }
-            Instr::Exit => return Ok(self.exit()),
+            Instr::Exit => return Ok(self.exit_instruction()),
+            Instr::UndoReturn => self.undo_return(),
             Instr::ForInit { var, has_step } => {
                 let step = if has_step { Some(self.pop_num()?) } else { None };
                 let to = self.pop_num()?;
