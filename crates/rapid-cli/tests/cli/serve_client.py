@@ -8,6 +8,8 @@ check exits non-zero."""
 import sys
 import time
 
+import xml.etree.ElementTree as ET
+
 import numpy as np
 from abb_robot_client import rws
 
@@ -177,6 +179,17 @@ check("queue read empty", c.get_ipc_queue("serve_q")["_embedded"]["_state"] == [
 c.send_ipc_message("serve_q", "hello", "serve_q", cmd=7, userdef=3)
 got = c.read_ipc_message("serve_q")
 check("queue message", len(got) == 1 and got[0].data == "hello" and got[0].userdef == "3", got)
+
+# XHTML, the default format (abb_librws reads it): well-formed XML, items as
+# <li class title> with one <span class> per field.
+XHTML = "{http://www.w3.org/1999/xhtml}"
+for path in ["rw/rapid/execution", "rw/rapid/tasks", "rw/iosystem/signals", "rw/elog/0", "rw/panel/ctrlstate",
+             f"fileservice/{ramdisk}", "rw/motionsystem/mechunits/ROB_1/jointtarget", "rw/nothing"]:
+    res = c._session.get(f"{URL}/{path}", auth=c.auth)
+    root = ET.fromstring(res.content)
+    check(f"XHTML of {path}", root.tag == XHTML + "html", res.text[:200])
+spans = {s.get("class"): s.text for s in ET.fromstring(c._session.get(f"{URL}/rw/rapid/execution", auth=c.auth).content).iter(XHTML + "span")}
+check("XHTML execution state", spans.get("ctrlexecstate") == "stopped", spans)
 
 c.logout()
 c.close()
