@@ -236,6 +236,8 @@ pub(crate) struct Hub {
 struct Subs {
     next: u64,
     by_id: HashMap<u64, Arc<Vec<Resource>>>,
+    /// Websockets open per subscription.
+    sockets: HashMap<u64, usize>,
 }
 
 impl Hub {
@@ -250,7 +252,13 @@ impl Hub {
         }
         let mut subs = self.lock();
         if subs.by_id.len() >= MAX_SUBSCRIPTIONS {
-            return Err(RwsError::busy(format!("too many subscriptions ({MAX_SUBSCRIPTIONS})")));
+            // Clients seldom delete their subscriptions (the Python client only closes
+            // its websocket): the oldest one nobody listens to makes room.
+            let idle = subs.by_id.keys().filter(|id| subs.sockets.get(id).is_none_or(|&n| n == 0)).min().copied();
+            let Some(idle) = idle else {
+                return Err(RwsError::busy(format!("too many subscriptions ({MAX_SUBSCRIPTIONS}), all listened to")));
+            };
+            subs.by_id.remove(&idle);
         }
         subs.next += 1;
         let id = subs.next;
@@ -260,6 +268,16 @@ impl Hub {
 
     pub(crate) fn get(&self, id: u64) -> Option<Arc<Vec<Resource>>> {
         self.lock().by_id.get(&id).cloned()
+    }
+
+    /// A websocket of subscription `id` opened (true) or closed.
+    fn socket(&self, id: u64, open: bool) {
+        let mut subs = self.lock();
+        let count = subs.sockets.entry(id).or_insert(0);
+        *count = if open { *count + 1 } else { count.saturating_sub(1) };
+        if *count == 0 {
+            subs.sockets.remove(&id);
+        }
     }
 
     pub(crate) fn remove(&self, id: u64) -> bool {
@@ -304,12 +322,27 @@ pub(crate) async fn pump(
     mut events: broadcast::Receiver<Event>,
 ) {
     let Some(resources) = hub.get(id) else { return };
+    hub.socket(id, true);
+    serve_socket(&mut socket, &hub, id, &host, &resources, &mut events).await;
+    hub.socket(id, false);
+}
+
+/// The loop of [`pump`]: until the client goes, the subscription is deleted, or the
+/// client falls too far behind.
+async fn serve_socket(
+    socket: &mut WebSocket,
+    hub: &Hub,
+    id: u64,
+    host: &str,
+    resources: &[Resource],
+    events: &mut broadcast::Receiver<Event>,
+) {
     let mut check = tokio::time::interval(CHECK);
     loop {
         tokio::select! {
             event = events.recv() => match event {
                 Ok(event) => {
-                    if let Some(text) = render_event(id, &host, &resources, &event) {
+                    if let Some(text) = render_event(id, host, resources, &event) {
                         if socket.send(Message::Text(text.into())).await.is_err() {
                             return;
                         }
@@ -357,6 +390,24 @@ mod tests {
         let pcp = Resource::parse("/rw/rapid/tasks/T_ROB1/pcp;programpointerchange", 1).unwrap();
         assert_eq!(pcp, Resource::ProgramPointer { task: "T_ROB1".into() });
         assert_eq!(Resource::parse("/rw/dipc/q1", 1).unwrap(), Resource::Dipc { queue: "q1".into() });
+    }
+
+    #[test]
+    fn a_full_hub_makes_room_from_the_oldest_subscription_nobody_listens_to() {
+        let hub = Hub::default();
+        let ids: Vec<u64> = (0..MAX_SUBSCRIPTIONS).map(|_| hub.add(vec![Resource::CtrlState]).unwrap()).collect();
+        hub.socket(ids[0], true);
+        let newest = hub.add(vec![Resource::OpMode]).unwrap();
+        // The first is listened to: the second, the oldest idle one, went.
+        assert!(hub.get(ids[0]).is_some() && hub.get(ids[1]).is_none() && hub.get(newest).is_some());
+        for &id in &ids[2..] {
+            hub.socket(id, true);
+        }
+        hub.socket(newest, true);
+        assert!(hub.add(vec![Resource::OpMode]).is_err(), "all listened to: no room");
+        hub.socket(ids[0], false);
+        assert!(hub.add(vec![Resource::OpMode]).is_ok());
+        assert!(hub.get(ids[0]).is_none());
     }
 
     #[test]
