@@ -23,6 +23,9 @@ const DEFAULT_BIND: &str = "127.0.0.1:80";
 const FALLBACK_HINT: &str = "127.0.0.1:8080";
 
 pub(crate) fn run(args: &ServeArgs) -> anyhow::Result<ExitStatus> {
+    // Ctrl-C is caught from the start, so that one that comes while the system boots
+    // still saves and exits 0 (a second one ends the process at once).
+    crate::interrupt::install();
     let mut config = rapid_serve::Config::default();
     if let Some(file) = &args.users {
         let text = std::fs::read_to_string(file)
@@ -75,7 +78,7 @@ pub(crate) fn run(args: &ServeArgs) -> anyhow::Result<ExitStatus> {
     let served = runtime.block_on(async move {
         tokio::select! {
             served = rapid_serve::serve(listener, router, std::future::pending()) => served,
-            _ = tokio::signal::ctrl_c() => Ok(()),
+            () = interrupted() => Ok(()),
         }
     });
     // Open websockets are let go with the runtime.
@@ -88,6 +91,13 @@ pub(crate) fn run(args: &ServeArgs) -> anyhow::Result<ExitStatus> {
             eprintln!("error: {message}");
             Ok(ExitStatus::Failure)
         }
+    }
+}
+
+/// Completes when the user presses Ctrl-C (polled: the handler only sets a flag).
+async fn interrupted() {
+    while !crate::interrupt::requested() {
+        tokio::time::sleep(std::time::Duration::from_millis(50)).await;
     }
 }
 
