@@ -29,10 +29,24 @@ fn free_port() -> u16 {
 }
 
 /// `rapid serve` on `project`, once it says it serves (at most 30 s): the child, its
-/// URL, and its stdout (the pendant's lines) read to the end on a thread.
+/// URL, and its stdout (the pendant's lines) read to the end on a thread. A port
+/// another process took between our look and the server's bind is tried again (at
+/// most three ports).
 fn start_server(project: &Path) -> (Child, String, std::thread::JoinHandle<String>) {
-    let port = free_port();
-    let bind = format!("127.0.0.1:{port}");
+    let mut tried = Vec::new();
+    for _ in 0..3 {
+        match try_start(project) {
+            Ok(started) => return started,
+            Err(seen) if seen.iter().any(|l| l.contains("cannot listen")) => tried.push(seen),
+            Err(seen) => panic!("rapid serve did not start: {seen:?}"),
+        }
+    }
+    panic!("rapid serve found no free port: {tried:?}");
+}
+
+/// One start of [`start_server`]; Err holds what it said on stderr.
+fn try_start(project: &Path) -> Result<(Child, String, std::thread::JoinHandle<String>), Vec<String>> {
+    let bind = format!("127.0.0.1:{}", free_port());
     let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
         .args(["serve", "--bind", &bind, "--speed", "10"])
         .arg(project)
@@ -53,7 +67,7 @@ fn start_server(project: &Path) -> (Child, String, std::thread::JoinHandle<Strin
         match rx.recv_timeout(Duration::from_millis(100)) {
             Ok(line) if line.starts_with("serving RWS on") => {
                 let stdout = read_all(child.stdout.take());
-                return (child, format!("http://{bind}"), stdout);
+                return Ok((child, format!("http://{bind}"), stdout));
             }
             Ok(line) => seen.push(line),
             Err(mpsc::RecvTimeoutError::Timeout) => {}
@@ -62,7 +76,7 @@ fn start_server(project: &Path) -> (Child, String, std::thread::JoinHandle<Strin
     }
     let _ = child.kill();
     let _ = child.wait();
-    panic!("rapid serve did not start: {seen:?}");
+    Err(seen)
 }
 
 /// Waits for `child` at most `limit`; kills it after.
