@@ -137,7 +137,7 @@ impl Sys {
 }
 
 /// At most 20 tasks (RAPID overview, multitasking).
-const MAX_TASKS: usize = 20;
+const MAX_TASKS: usize = rapid_limits::TASKS;
 
 /// Reads the tasks and task modules of a SYS file.
 pub fn read(file: &CfgFile) -> Sys {
