@@ -39,6 +39,7 @@ mod report;
 mod robot_numbers;
 mod run;
 mod save_pers;
+mod scale;
 mod search;
 mod sockets;
 mod sockets_system;
