@@ -5,7 +5,8 @@
 # A crash is written to fuzz/artifacts/TARGET/ and the script fails.
 #
 # Targets: check (bytes -> checker), run (bytes -> interpreter), program (generated
-# RAPID programs -> checker and interpreter), cfg (bytes -> .cfg parser and views).
+# RAPID programs -> checker and interpreter), controller (generated programs as one to
+# three tasks of the controller), cfg (bytes -> .cfg parser and views).
 #
 # Usage: fuzz/fuzz.sh TARGET [SECONDS] [libFuzzer flags...]
 set -euo pipefail
@@ -31,10 +32,10 @@ case "$target" in
     check) seed "$root"/tests/check/ok/*.mod "$root"/examples/*.mod; max_len=65536 ;;
     run) seed "$root"/tests/conformance/*.mod; max_len=16384 ;;
     # The generator reads choices, not text: it starts from nothing.
-    program) max_len=8192 ;;
+    program | controller) max_len=8192 ;;
     cfg) while IFS= read -r -d '' file; do seed "$file"; done < <(find "$root/crates" "$root/examples" -name '*.cfg' -print0)
          max_len=65536 ;;
-    *) echo "unknown target \`$target\` (check, run, program, cfg)" >&2; exit 2 ;;
+    *) echo "unknown target \`$target\` (check, run, program, controller, cfg)" >&2; exit 2 ;;
 esac
 
 "$here/build.sh" "$target"
