@@ -516,6 +516,13 @@ impl Collector {
                 continue;
             }
             let module_path = program_file::resolve(folder, &name);
+            // A program lists modules; RobotWare has no nested programs, so a listed
+            // `.pgf` is refused here rather than read (and parsed) as a module.
+            if file_kind(&module_path) == Some(FileKind::Program) {
+                let message = format!("`{name}` is a program file; a program file lists modules, not programs");
+                self.program_diagnostics.push(entry_diagnostic(program_idx, span, message));
+                continue;
+            }
             if let Err(err) = self.add_module(&module_path) {
                 let message =
                     format!("cannot read module `{}` listed here: {}", module_path.display(), describe_io_error(&err));

@@ -6,9 +6,9 @@ use crate::span::Span;
 use crate::token::{keyword, Placeholder, Token, TokenKind};
 
 /// Identifiers may have at most this many characters (§1.1.2).
-pub const MAX_IDENT_CHARS: usize = 32;
+pub const MAX_IDENT_CHARS: usize = rapid_limits::IDENT_CHARS;
 /// String values may have at most this many characters (§1.1.2).
-pub const MAX_STRING_CHARS: usize = 80;
+pub const MAX_STRING_CHARS: usize = rapid_limits::STRING_CHARS;
 
 /// Streams tokens out of a text.
 pub struct Lexer<'t> {

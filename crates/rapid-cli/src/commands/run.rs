@@ -98,9 +98,11 @@ pub(crate) fn print_notes(inputs: &inputs::Inputs) {
     }
 }
 
-/// Whether the inputs' configuration has errors (the controller would not start).
+/// Whether the inputs' configuration has errors (the controller would not start), or a
+/// `.pgf` entry does (the program is not whole): what `rapid check` refuses, run refuses.
 pub(crate) fn has_config_errors(inputs: &inputs::Inputs) -> bool {
-    inputs.diagnostics.iter().any(|d| d.code == Code::ConfigFile && d.severity() == Severity::Error)
+    let refused = |code| matches!(code, Code::ConfigFile | Code::ProgramFileEntry);
+    inputs.diagnostics.iter().any(|d| refused(d.code) && d.severity() == Severity::Error)
 }
 
 /// Errors in a backup's configuration: the controller would not start, so nothing

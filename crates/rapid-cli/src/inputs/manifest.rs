@@ -23,10 +23,10 @@ use super::glob;
 pub(crate) const FILE_NAME: &str = "rapid.toml";
 
 /// At most 20 tasks (RAPID overview §1.20, multitasking).
-const MAX_TASKS: usize = 20;
+const MAX_TASKS: usize = rapid_limits::TASKS;
 
 /// The longest RAPID identifier.
-const MAX_IDENT: usize = 32;
+const MAX_IDENT: usize = rapid_limits::IDENT_CHARS;
 
 // uncertain: the ranges of ABB's system parameters manual (Controller, Task) as
 // rapid-config reads them from SYS.cfg: at most 3000 bytes and 10 messages.

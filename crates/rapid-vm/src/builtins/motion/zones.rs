@@ -16,7 +16,7 @@ use crate::value::{Opaque, OpaqueState, Record, Value};
 type Res = Result<Option<Value>, RapidError>;
 
 /// At most this many world zones at a time.
-const MAX_ZONES: usize = 20;
+const MAX_ZONES: usize = rapid_limits::WORLD_ZONES;
 
 /// A zone's volume: in world coordinates (mm) or in axis values (degrees).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -220,7 +220,7 @@ fn activate(ctx: &mut Ctx<'_>, args: &[Value], shape: ShapeData, kind: ZoneKind)
     let temporary = !present(args.get(at.stat));
     let zones = &mut ctx.resources.robot.zones;
     if zones.iter().flatten().count() >= MAX_ZONES {
-        return Err(ctx.error(Err::ArgValue, "at most 20 world zones can be active"));
+        return Err(ctx.error(Err::ArgValue, format!("at most {MAX_ZONES} world zones can be active")));
     }
     let zone = Zone { shape, kind, enabled: true, temporary };
     let number = match zones.iter().position(Option::is_none) {
