@@ -10,6 +10,39 @@ use super::{Exit, RapidError, Value, Vm};
 use crate::ir::{ArgSpec, Callee, Instr, Operand};
 use crate::value::{Root, MAX_STRING_CHARS};
 
+/// The instructions the fast loop has no arm for: `Vm::step` runs them. Those whose
+/// declaration says `fast: false` (`crate::instrs`), as the test below checks.
+macro_rules! step_only {
+    () => {
+        Instr::StoreGlobal(..)
+            | Instr::PlaceField(..)
+            | Instr::PlaceIndex(..)
+            | Instr::LoadPlace
+            | Instr::StorePlace
+            | Instr::Index(..)
+            | Instr::Unary(..)
+            | Instr::MakeArray(..)
+            | Instr::Pop
+            | Instr::LateCall(..)
+            | Instr::UnknownFunc(..)
+            | Instr::Raise
+            | Instr::ReRaise
+            | Instr::Retry
+            | Instr::TryNext
+            | Instr::Exit
+            | Instr::UndoReturn
+            | Instr::ForInit { .. }
+            | Instr::Present(..)
+            | Instr::Placeholder
+            | Instr::NameWithNumber
+            | Instr::PushTime
+            | Instr::WaitPop
+            | Instr::RaiseWaitTimeout
+            | Instr::Connect(..)
+            | Instr::ReadSignal(..)
+    };
+}
+
 /// Why the fast loop stopped.
 pub(super) enum Fast {
     /// The budget ran out.
@@ -495,8 +528,7 @@ impl Vm {
                     else {
                         break Fast::Step;
                     };
-                    let done = if *step >= 0.0 { v > to } else { v < to };
-                    pc = if done { exit } else { pc + 1 };
+                    pc = if super::num::for_passed(*v, *to, *step) { exit } else { pc + 1 };
                     continue;
                 }
                 Instr::ForNext { var, check } => {
@@ -511,7 +543,9 @@ impl Vm {
                     pc = check;
                     continue;
                 }
-                _ => break Fast::Step,
+                // Listed, not `_`: a new instruction must be given an arm above or
+                // be added here (and its declaration's `fast` fact agree, tested below).
+                step_only!() | Instr::LoadElem { .. } | Instr::StoreElem { .. } => break Fast::Step,
             }
             pc += 1;
         };
@@ -715,4 +749,17 @@ fn concat(a: &str, b: &str) -> Option<Value> {
     buf[a.len()..a.len() + b.len()].copy_from_slice(b.as_bytes());
     let joined = std::str::from_utf8(&buf[..a.len() + b.len()]).ok()?;
     Some(Value::Str(joined.into()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_fast_loop_falls_back_on_exactly_the_instructions_declared_slow() {
+        for instr in Instr::samples() {
+            let falls_back = matches!(instr, step_only!());
+            assert_eq!(falls_back, !instr.fast_path(), "{instr}: the declaration's `fast` and run_fast disagree");
+        }
+    }
 }

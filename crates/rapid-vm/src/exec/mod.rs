@@ -575,8 +575,7 @@ impl Vm {
                     self.storage.stack[slots + 1].as_f64().unwrap_or(0.0),
                     self.storage.stack[slots + 2].as_f64().unwrap_or(0.0),
                 );
-                let done = if step >= 0.0 { v > to } else { v < to };
-                if done {
+                if num::for_passed(v, to, step) {
                     next = exit;
                 }
             }
