@@ -233,11 +233,7 @@ impl Vm {
                         }
                     }
                 }
-                Instr::MakeRecord(ty, n) => {
-                    let at = stack.len() - n as usize;
-                    let fields = stack.split_off(at);
-                    stack.push(Value::Record(std::rc::Rc::new(crate::value::Record { ty, fields })));
-                }
+                Instr::MakeRecord(ty, n) => super::instr::make_record(stack, ty, n),
                 Instr::BinOp { op: rapid_syntax::ast::BinaryOp::Add, lhs, rhs }
                     if is_str(lhs, stack, base, &code.consts, usize::from(rhs == crate::ir::Operand::Stack))
                         && is_str(rhs, stack, base, &code.consts, 0) =>
@@ -528,7 +524,7 @@ impl Vm {
                     else {
                         break Fast::Step;
                     };
-                    pc = if super::num::for_passed(*v, *to, *step) { exit } else { pc + 1 };
+                    pc = if super::instr::for_passed(*v, *to, *step) { exit } else { pc + 1 };
                     continue;
                 }
                 Instr::ForNext { var, check } => {
@@ -538,7 +534,7 @@ impl Vm {
                     };
                     // In place: assigning a whole `Value` ran the general drop code
                     // on the old num.
-                    let next = v + step;
+                    let next = super::instr::for_next(*v, *step);
                     set_num(&mut stack[slots], next);
                     pc = check;
                     continue;

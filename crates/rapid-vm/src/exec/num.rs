@@ -112,17 +112,6 @@ pub(super) fn fast_num_op(op: rapid_syntax::ast::BinaryOp, a: f32, b: f32) -> Op
     })
 }
 
-/// Whether a FOR loop's variable `v` has passed `to`, counting by `step` (up when it
-/// is 0 or more): the loop ends (`ForCheck`, in both executors).
-#[inline(always)]
-pub(super) fn for_passed<T: PartialOrd + Default>(v: T, to: T, step: T) -> bool {
-    if step >= T::default() {
-        v > to
-    } else {
-        v < to
-    }
-}
-
 /// Discards a value the fast loop knows to be a num or bool (nothing to free), without
 /// running the general drop code.
 #[inline(always)]
