@@ -38,6 +38,7 @@ pub(crate) trait OperandText {
 }
 
 /// A value of each operand type, for tests that build every instruction.
+#[cfg(test)]
 pub(crate) trait Sample {
     fn sample() -> Self;
 }
@@ -49,6 +50,7 @@ macro_rules! plain_operands {
                 let _ = write!(out, "{self}");
             }
         }
+        #[cfg(test)]
         impl Sample for $ty {
             fn sample() -> Self {
                 $sample
@@ -65,6 +67,7 @@ impl OperandText for BinaryOp {
     }
 }
 
+#[cfg(test)]
 impl Sample for BinaryOp {
     fn sample() -> Self {
         BinaryOp::Add
@@ -81,6 +84,7 @@ impl OperandText for UnaryOp {
     }
 }
 
+#[cfg(test)]
 impl Sample for UnaryOp {
     fn sample() -> Self {
         UnaryOp::Neg
@@ -97,6 +101,7 @@ impl OperandText for Operand {
     }
 }
 
+#[cfg(test)]
 impl Sample for Operand {
     fn sample() -> Self {
         Operand::Stack
@@ -113,6 +118,7 @@ impl OperandText for KernelOperand {
     }
 }
 
+#[cfg(test)]
 impl Sample for KernelOperand {
     fn sample() -> Self {
         KernelOperand::Const(1.0)
@@ -125,6 +131,7 @@ impl OperandText for TypeId {
     }
 }
 
+#[cfg(test)]
 impl Sample for TypeId {
     fn sample() -> Self {
         rapid_sema::types::ANY
@@ -345,18 +352,41 @@ mod tests {
         assert_eq!(KernelOp::AddConst(2.5).to_string(), "add_const value=2.5");
     }
 
-    #[test]
-    fn every_instruction_has_its_own_mnemonic() {
-        let samples = Instr::samples();
-        assert_eq!(samples.len(), Instr::MNEMONICS.len());
-        for (instr, mnemonic) in samples.iter().zip(Instr::MNEMONICS) {
-            assert_eq!(instr.mnemonic(), *mnemonic);
-            assert!(instr.to_string().starts_with(mnemonic));
+    /// Each instruction of a set has a mnemonic of its own, which starts its line.
+    fn check_mnemonics<T: fmt::Display>(samples: &[T], mnemonic: impl Fn(&T) -> &'static str, all: &[&str]) {
+        assert_eq!(samples.len(), all.len());
+        for (instr, expected) in samples.iter().zip(all) {
+            assert_eq!(mnemonic(instr), *expected);
+            assert!(instr.to_string().starts_with(expected));
         }
-        let mut sorted = Instr::MNEMONICS.to_vec();
+        let mut sorted = all.to_vec();
         sorted.sort_unstable();
         sorted.dedup();
-        assert_eq!(sorted.len(), Instr::MNEMONICS.len(), "two instructions share a mnemonic");
+        assert_eq!(sorted.len(), all.len(), "two instructions share a mnemonic");
+    }
+
+    #[test]
+    fn every_instruction_has_its_own_mnemonic() {
+        check_mnemonics(&Instr::samples(), Instr::mnemonic, Instr::MNEMONICS);
+        check_mnemonics(&KernelOp::samples(), KernelOp::mnemonic, KernelOp::MNEMONICS);
+    }
+
+    #[test]
+    fn a_listing_names_the_routine_kind_handlers_callees_and_kernels() {
+        let callee = Code { name: "helper".to_owned(), ..Code::default() };
+        let mut code = Code { name: "f".to_owned(), is_func: true, n_params: 1, n_locals: 1, ..Code::default() };
+        code.local_names.push(("n".to_owned(), 0));
+        let site =
+            crate::ir::CallSite { callee: Callee::Routine(0), args: Vec::new(), n_pushed: 0, late_args: Vec::new() };
+        code.sites.push(site);
+        code.kernels.push(crate::ir::Kernel { ops: vec![KernelOp::Local(0), KernelOp::AddConst(1.0)], target: None });
+        code.emit(Instr::KernelReturn { kernel: 0 });
+        code.emit(Instr::Call(0));
+        code.emit(Instr::Pop);
+        code.error_handler = Some(crate::ir::Handler { pc: 2, numbers: Vec::new() });
+        let routines = [Some(callee)];
+        let expected = "FUNC f (file 0, 1 params, 1 locals)\n  slot 0: n\n     0* kernel_return kernel=0  ; kernel: [local slot=0 (slot: n); add_const value=1]\n     1* call site=0  ; site: helper (0 pushed)\n  ERROR:\n     2  pop\n";
+        assert_eq!(list(&Context { code: &code, routines: &routines }, None), expected);
     }
 
     #[test]

@@ -263,7 +263,8 @@ macro_rules! define_ops {
 
             /// One instance of every instruction, in declaration order, operands set to
             /// sample values (for tests that go over the whole set).
-            pub fn samples() -> Vec<$enum> {
+            #[cfg(test)]
+            pub(crate) fn samples() -> Vec<$enum> {
                 use $crate::disas::Sample;
                 vec![$(
                     $enum::$name
