@@ -18,9 +18,9 @@
 //! counts, then the names of its parameters and data by slot. An instruction line is
 //! its offset, `*` when the fast loop has an arm for it, the mnemonic, `name=value` for
 //! each operand, and after `;` what operands point at (`name: what`): a constant's
-//! value, a local's name, a call's callee with how many arguments it pushed, a kernel's
-//! operations. `line N` heads the first instruction of a statement on source line N;
-//! `ERROR:`, `UNDO:` and `BACKWARD:` head the handlers.
+//! value, a local's or global's name, a call's callee with how many arguments it
+//! pushed, a kernel's operations. `line N` heads the first instruction of a statement
+//! on source line N; `ERROR:`, `UNDO:` and `BACKWARD:` head the handlers.
 
 use std::fmt::{self, Write};
 
@@ -113,7 +113,7 @@ impl OperandText for KernelOperand {
         let _ = match self {
             KernelOperand::Local(slot) => write!(out, "local:{slot}"),
             KernelOperand::Global(global) => write!(out, "global:{global}"),
-            KernelOperand::Const(value) => write!(out, "const:{value}"),
+            KernelOperand::Const(value) => write!(out, "{value}"),
         };
     }
 }
@@ -151,6 +151,7 @@ macro_rules! note {
     (@text Site, $op:ident, $cx:expr) => { Some(site_text($cx, $op)) };
     (@text KernelIdx, $op:ident, $cx:expr) => { Some(kernel_text($cx, $op)) };
     (@text RoutineIdx, $op:ident, $cx:expr) => { Some(routine_name($cx, $op)) };
+    (@text Global, $op:ident, $cx:expr) => { $cx.globals.get($op as usize).cloned() };
     (@text Operand, $op:ident, $cx:expr) => {
         match $op {
             Operand::Stack => None,
@@ -161,7 +162,8 @@ macro_rules! note {
     (@text KernelOperand, $op:ident, $cx:expr) => {
         match $op {
             KernelOperand::Local(slot) => local_name($cx.code, slot).map(str::to_owned),
-            KernelOperand::Global(_) | KernelOperand::Const(_) => None,
+            KernelOperand::Global(global) => $cx.globals.get(global as usize).cloned(),
+            KernelOperand::Const(_) => None,
         }
     };
     (@text $other:ident, $op:ident, $cx:expr) => { None::<String> };
@@ -173,6 +175,8 @@ macro_rules! note {
 pub struct Context<'a> {
     pub code: &'a Code,
     pub routines: &'a [Option<Code>],
+    /// The task's data by global index (empty when not known).
+    pub globals: &'a [String],
 }
 
 /// Expands a declaration into `Display` (the instruction alone) and `notes` (what its
@@ -333,7 +337,10 @@ fn kernel_text(cx: &Context<'_>, kernel: u32) -> String {
     let target = match kernel.target {
         None => String::new(),
         Some(KernelTarget::Local(slot)) => format!(" -> local:{slot}"),
-        Some(KernelTarget::Global(global)) => format!(" -> global:{global}"),
+        Some(KernelTarget::Global(global)) => match cx.globals.get(global as usize) {
+            Some(name) => format!(" -> global:{global} ({name})"),
+            None => format!(" -> global:{global}"),
+        },
         Some(KernelTarget::Elem { global, slot }) => format!(" -> elem global={global} slot={slot}"),
     };
     format!("[{}]{target}", ops.join("; "))
@@ -386,7 +393,18 @@ mod tests {
         code.error_handler = Some(crate::ir::Handler { pc: 2, numbers: Vec::new() });
         let routines = [Some(callee)];
         let expected = "FUNC f (file 0, 1 params, 1 locals)\n  slot 0: n\n     0* kernel_return kernel=0  ; kernel: [local slot=0 (slot: n); add_const value=1]\n     1* call site=0  ; site: helper (0 pushed)\n  ERROR:\n     2  pop\n";
-        assert_eq!(list(&Context { code: &code, routines: &routines }, None), expected);
+        assert_eq!(list(&Context { code: &code, routines: &routines, globals: &[] }, None), expected);
+    }
+
+    #[test]
+    fn globals_are_named_when_the_task_is_known() {
+        let mut code = Code { name: "main".to_owned(), ..Code::default() };
+        code.emit(Instr::LoadGlobal(1));
+        code.emit(Instr::StoreGlobal(0));
+        let globals = ["a".to_owned(), "b".to_owned()];
+        let cx = Context { code: &code, routines: &[], globals: &globals };
+        let expected = "PROC main (file 0, 0 params, 0 locals)\n     0* load_global global=1  ; global: b\n     1  store_global global=0  ; global: a\n";
+        assert_eq!(list(&cx, None), expected);
     }
 
     #[test]
@@ -403,6 +421,6 @@ mod tests {
         let text = "one\nx := 7;\nRETURN;\n";
         let expected = "PROC main (file 0, 0 params, 1 locals)\n  slot 0: x\n  line 2\n     0* const k=0  ; k: 7\n     1* store_local slot=0  ; slot: x\n  line 3\n     2* return\n";
         let routines = [];
-        assert_eq!(list(&Context { code: &code, routines: &routines }, Some(text)), expected);
+        assert_eq!(list(&Context { code: &code, routines: &routines, globals: &[] }, Some(text)), expected);
     }
 }

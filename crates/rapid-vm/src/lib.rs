@@ -191,11 +191,20 @@ pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Resul
 /// Checks and compiles the task made of `files` without running anything (not even
 /// the data initialisers): its routines as the VM would run them, for listings
 /// (`rapid dump-ir`, `disas::list`).
-pub fn compile_files(files: &[SourceInput], options: &Options) -> Result<compile::Compiled, LoadError> {
+pub fn compile_files(files: &[SourceInput], options: &Options) -> Result<CompiledTask, LoadError> {
     let (mut prog, _) = checked(files, options)?;
     let parses = outline_parses(files, &mut prog);
     let modules = module_sources(files, &parses);
-    compile_modules(&mut prog, &modules)
+    let compiled = compile_modules(&mut prog, &modules)?;
+    let global_names = prog.datas.iter().map(|d| d.display.clone()).collect();
+    Ok(CompiledTask { compiled, global_names })
+}
+
+/// A task compiled for a listing: its code and the names of its globals (module and
+/// predefined data, by the index `LoadGlobal` and the others name them with).
+pub struct CompiledTask {
+    pub compiled: compile::Compiled,
+    pub global_names: Vec<String>,
 }
 
 /// The checked program with its warnings, or the diagnostics that stop it from loading.

@@ -12,19 +12,20 @@ use crate::inputs;
 pub(crate) fn run(args: &DumpIrArgs) -> anyhow::Result<ExitStatus> {
     let inputs = inputs::collect(&args.paths)?;
     let options = Options { predefined: inputs.predefined.clone(), ..Options::default() };
-    let compiled = match rapid_vm::compile_files(&inputs.modules, &options) {
-        Ok(compiled) => compiled,
+    let task = match rapid_vm::compile_files(&inputs.modules, &options) {
+        Ok(task) => task,
         Err(err) => return super::run::report_load_error(err, &inputs.modules),
     };
     let mut out = BufWriter::new(io::stdout().lock());
     let source = |file: usize| inputs.modules.get(file).map(|f| f.text.as_str());
     let mut first = true;
-    for code in compiled.routines.iter().flatten() {
+    let routines = &task.compiled.routines;
+    for code in routines.iter().flatten() {
         if !first {
             writeln!(out)?;
         }
         first = false;
-        let cx = rapid_vm::disas::Context { code, routines: &compiled.routines };
+        let cx = rapid_vm::disas::Context { code, routines, globals: &task.global_names };
         write!(out, "{}", rapid_vm::disas::list(&cx, source(code.file)))?;
     }
     out.flush()?;
