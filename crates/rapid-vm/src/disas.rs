@@ -392,7 +392,14 @@ mod tests {
         code.emit(Instr::Pop);
         code.error_handler = Some(crate::ir::Handler { pc: 2, numbers: Vec::new() });
         let routines = [Some(callee)];
-        let expected = "FUNC f (file 0, 1 params, 1 locals)\n  slot 0: n\n     0* kernel_return kernel=0  ; kernel: [local slot=0 (slot: n); add_const value=1]\n     1* call site=0  ; site: helper (0 pushed)\n  ERROR:\n     2  pop\n";
+        let expected = "\
+FUNC f (file 0, 1 params, 1 locals)
+  slot 0: n
+     0* kernel_return kernel=0  ; kernel: [local slot=0 (slot: n); add_const value=1]
+     1* call site=0  ; site: helper (0 pushed)
+  ERROR:
+     2  pop
+";
         assert_eq!(list(&Context { code: &code, routines: &routines, globals: &[] }, None), expected);
     }
 
@@ -403,7 +410,11 @@ mod tests {
         code.emit(Instr::StoreGlobal(0));
         let globals = ["a".to_owned(), "b".to_owned()];
         let cx = Context { code: &code, routines: &[], globals: &globals };
-        let expected = "PROC main (file 0, 0 params, 0 locals)\n     0* load_global global=1  ; global: b\n     1  store_global global=0  ; global: a\n";
+        let expected = "\
+PROC main (file 0, 0 params, 0 locals)
+     0* load_global global=1  ; global: b
+     1  store_global global=0  ; global: a
+";
         assert_eq!(list(&cx, None), expected);
     }
 
@@ -419,7 +430,15 @@ mod tests {
         code.stmts.push(crate::ir::StmtRange { start: 0, end: 2, span: span(4), depth: 0, calls: None });
         code.stmts.push(crate::ir::StmtRange { start: 2, end: 3, span: span(12), depth: 0, calls: None });
         let text = "one\nx := 7;\nRETURN;\n";
-        let expected = "PROC main (file 0, 0 params, 1 locals)\n  slot 0: x\n  line 2\n     0* const k=0  ; k: 7\n     1* store_local slot=0  ; slot: x\n  line 3\n     2* return\n";
+        let expected = "\
+PROC main (file 0, 0 params, 1 locals)
+  slot 0: x
+  line 2
+     0* const k=0  ; k: 7
+     1* store_local slot=0  ; slot: x
+  line 3
+     2* return
+";
         let routines = [];
         assert_eq!(list(&Context { code: &code, routines: &routines, globals: &[] }, Some(text)), expected);
     }
