@@ -24,6 +24,17 @@ pub(crate) enum Command {
     Codes,
     /// Lay out RAPID modules as RobotStudio's editor does (every token and comment kept).
     Fmt(FmtArgs),
+    /// Print the compiled form of every routine of a program (docs/dump-ir.md), without
+    /// running it.
+    DumpIr(DumpIrArgs),
+}
+
+#[derive(Debug, Args)]
+pub(crate) struct DumpIrArgs {
+    /// Module files, program files (.pgf) or folders of modules, compiled together as
+    /// one task (as `rapid run` reads them).
+    #[arg(required = true, value_name = "PATH")]
+    pub(crate) paths: Vec<PathBuf>,
 }
 
 #[derive(Debug, Args)]

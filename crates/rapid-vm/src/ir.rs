@@ -7,146 +7,18 @@ use rapid_syntax::ast::{BinaryOp, UnaryOp};
 use rapid_syntax::Span;
 
 use crate::builtins::BuiltinId;
+use crate::instrs::*;
 use crate::value::Value;
 
-/// One instruction. Operands come from and results go to the frame's operand stack.
-/// `repr(u8)`: a plain tag byte, so the fast loop's dispatch reads it without
-/// decoding a niche (two instructions fewer on every instruction executed).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[repr(u8)]
-pub enum Instr {
-    /// Push constant `n` of the pool.
-    Const(u32),
-    /// Push the value of local slot `n` (through it when it holds a reference).
-    LoadLocal(u32),
-    /// Pop a value into local slot `n` (through it when it holds a reference).
-    StoreLocal(u32),
-    LoadGlobal(u32),
-    StoreGlobal(u32),
-    /// Push the place of local slot `n` (the referenced place for a reference).
-    PlaceLocal(u32),
-    PlaceGlobal(u32),
-    /// Replace the place on top with its component `n`.
-    PlaceField(u16),
-    /// Pop `n` indices and a place; push the element's place (bounds checked).
-    PlaceIndex(u8),
-    /// Pop a place, push its value.
-    LoadPlace,
-    /// Pop a value and a place; store the value there.
-    StorePlace,
-    /// Pop `n` indices; push that element of the array in local slot `slot` (through
-    /// a reference) or global `slot`.
-    LoadElem {
-        global: bool,
-        slot: u32,
-        n: u8,
-    },
-    /// Pop a value and `n` indices; store the value in that element.
-    StoreElem {
-        global: bool,
-        slot: u32,
-        n: u8,
-    },
-    /// Pop a record, push its component `n`.
-    Field(u16),
-    /// Pop `n` indices and an array, push the element.
-    Index(u8),
-    Unary(UnaryOp),
-    Binary(BinaryOp),
-    /// A binary operator whose operands may come straight from a local slot or the
-    /// constant pool instead of the stack (the right one popped first).
-    BinOp {
-        op: BinaryOp,
-        lhs: Operand,
-        rhs: Operand,
-    },
-    /// Pop `n` values, push a record of type `ty`.
-    MakeRecord(TypeId, u16),
-    /// Pop `n` values (elements or rows), push an array.
-    MakeArray(u32),
-    Jump(u32),
-    /// Pop a bool; jump when it is FALSE.
-    JumpIfFalse(u32),
-    Pop,
-    /// Call routine or built-in described by call site `n`.
-    Call(u32),
-    /// Pop a string naming a procedure; call it with call site `n`'s arguments.
-    LateCall(u32),
-    /// A call of a function defined nowhere in the task: raise ERR_REFUNKFUN (constant
-    /// `n` names it). The controller links late, so only executing it fails.
-    UnknownFunc(u32),
-    /// End a PROC or TRAP.
-    Return,
-    /// Pop the value a FUNC returns.
-    ReturnValue,
-    /// Pop an error number and raise it.
-    Raise,
-    /// Raise the current error again in the caller (bare RAISE in an ERROR handler).
-    ReRaise,
-    Retry,
-    TryNext,
-    Exit,
-    /// A RETURN written in an UNDO handler: ignored, with an event-log warning
-    /// (manual §1.13; `exec/undo.rs`).
-    UndoReturn,
-    /// FOR: pop FROM, TO and STEP (or none for the default) into slots var, var+1, var+2.
-    ForInit {
-        var: u32,
-        has_step: bool,
-    },
-    /// FOR: jump to `exit` when the loop variable has passed TO.
-    ForCheck {
-        var: u32,
-        exit: u32,
-    },
-    /// FOR: add STEP to the variable and jump back to `check`.
-    ForNext {
-        var: u32,
-        check: u32,
-    },
-    /// Push whether optional parameter slot `n` was passed.
-    Present(u32),
-    /// Executing a placeholder raises ERR_EXECPHR.
-    Placeholder,
-    /// Pop a number and a name; push the name followed by the number (CallByVar).
-    NameWithNumber,
-    /// Push the controller's time in seconds (a dnum).
-    PushTime,
-    /// Pop a number of seconds and wait that long (the run hands control back).
-    WaitPop,
-    /// Raise the predefined error `0` (WaitUntil's timeout).
-    RaiseWaitTimeout,
-    /// CONNECT: pop the intnum's place; give it a new interrupt whose trap is routine `n`
-    /// (ERR_ALRDYCNT when it is connected already).
-    Connect(u32),
-    /// Pop signal data, push the signal's value; data no AliasIO connected raises
-    /// ERR_NO_ALIASIO_DEF (manual §1.9). Constant `n` names the data (for the message).
-    ReadSignal(u32),
-    /// The routine ran off its end without RETURN (in a FUNC: ERR_FNCNORET).
-    FellOffEnd,
-    /// Evaluate kernel `kernel` and store its result at its target, then continue at
-    /// `skip`. When the kernel cannot run (an operand is not a plain num, or an error
-    /// would arise) nothing happens and execution continues with the next instruction:
-    /// the statement's general code, which follows and does it all again (a kernel only
-    /// reads, so starting over is safe).
-    KernelStore {
-        kernel: u32,
-        skip: u32,
-    },
-    /// `RETURN` of a num: evaluate kernel `kernel` and return its result from the FUNC;
-    /// when the kernel or the plain return cannot run, the next instruction (the
-    /// statement's general code).
-    KernelReturn {
-        kernel: u32,
-    },
-    /// Evaluate condition kernel `kernel`: FALSE jumps to `on_false`, TRUE continues at
-    /// `skip`; when it cannot run, the next instruction (the condition's general code).
-    KernelBranch {
-        kernel: u32,
-        on_false: u32,
-        skip: u32,
-    },
-}
+crate::instrs::for_each_instr!(define_ops[
+    /// One instruction. Operands come from and results go to the frame's operand
+    /// stack. Declared in `crate::instrs` (one line each: operands, doc, facts).
+    /// `repr(u8)`: a plain tag byte, so the fast loop's dispatch reads it without
+    /// decoding a niche (two instructions fewer on every instruction executed).
+    #[derive(Debug, Clone, Copy, PartialEq)]
+    #[repr(u8)]
+    pub enum Instr
+]);
 
 /// Most values a kernel holds at once (deeper expressions get no kernel).
 pub const KERNEL_DEPTH: usize = 16;
@@ -162,48 +34,11 @@ pub struct Kernel {
     pub target: Option<KernelTarget>,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum KernelOp {
-    /// A num in local slot `n` (through a reference to a whole num).
-    Local(u32),
-    Global(u32),
-    Const(f32),
-    /// Pop an index; push that element of the one-dimensional num array in local or
-    /// global `slot`.
-    Elem {
-        global: bool,
-        slot: u32,
-    },
-    /// Push element `index + offset` of the one-dimensional num array in local or
-    /// global `slot`, the index read from local slot `index`: `Local(index)`,
-    /// `AddConst(offset)` (when not 0) and `Elem` fused at compile time, the commonest
-    /// element reads (`a{j}`, `a{j + 1}`) in one dispatch instead of two or three.
-    ElemAt {
-        global: bool,
-        slot: u32,
-        index: u32,
-        offset: f32,
-    },
-    /// Arithmetic and comparisons on nums; AND, OR, XOR on bools (1 or 0).
-    Binary(BinaryOp),
-    /// `Binary` whose right operand is read in place instead of pushed: the top
-    /// becomes `top op operand` (a push followed by `Binary`, fused at compile time
-    /// to halve the dispatches of typical expressions such as `acc * 7 + j`).
-    BinaryWith(BinaryOp, KernelOperand),
-    /// `BinaryWith` for the commonest operator and operand pairs, specialised at
-    /// compile time so that the executor dispatches once, not three times (operation,
-    /// operand kind, operator): `top + c`, `top - c`, `top * c`, `top MOD c`,
-    /// `top + local`, `top < c`, `top > c`. Same results as `BinaryWith`.
-    AddConst(f32),
-    SubConst(f32),
-    MulConst(f32),
-    ModConst(f32),
-    AddLocal(u32),
-    LtConst(f32),
-    GtConst(f32),
-    Neg,
-    Not,
-}
+crate::instrs::for_each_kernel_op!(define_ops[
+    /// One operation of a kernel, declared in `crate::instrs`.
+    #[derive(Debug, Clone, Copy, PartialEq)]
+    pub enum KernelOp
+]);
 
 /// The right operand of a fused kernel operation.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -6,12 +6,14 @@
 
 pub mod builtins;
 pub mod compile;
+pub mod disas;
 pub mod errnames;
 pub mod error;
 pub mod events;
 pub mod exec;
 pub mod format;
 pub mod host;
+pub mod instrs;
 pub mod ir;
 pub mod ops;
 pub mod persist;
@@ -95,35 +97,11 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
 /// [`load`] with checking options: the data the system configuration declares (the
 /// signals of a backup's `EIO.cfg`).
 pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Result<Loaded, LoadError> {
-    let analysis = analyze(files, options);
-    if Program::has_errors(&analysis.diagnostics) {
-        return Err(LoadError::Diagnostics(analysis.diagnostics));
-    }
-    let Some(mut prog) = analysis.program else { return Err(LoadError::Diagnostics(analysis.diagnostics)) };
-    let (_, catalogue) = rapid_sema::catalogue();
+    let (mut prog, warnings) = checked(files, options)?;
     // Outlines: each routine's body is parsed as it is compiled, never held whole.
-    let parses: Vec<(usize, rapid_syntax::Parse)> = files
-        .iter()
-        .enumerate()
-        .filter(|(_, f)| f.unreadable.is_none())
-        .map(|(idx, f)| (idx, rapid_syntax::parse_outline(&f.text, &mut prog.interner)))
-        .collect();
-    let modules: Vec<compile::ModuleSource<'_>> = parses
-        .iter()
-        .flat_map(|(file, parse)| {
-            parse.file.modules.iter().map(move |module| compile::ModuleSource {
-                file: *file,
-                text: &files[*file].text,
-                module,
-            })
-        })
-        .collect();
-    // The compiler reads the program while the bodies' parser spells names with its
-    // interner: lent out for the while.
-    let mut interner = std::mem::take(&mut prog.interner);
-    let compiled = compile::compile(&prog, &modules, &catalogue.module, &catalogue.text, &mut interner);
-    prog.interner = interner;
-    let compiled = compiled.map_err(LoadError::Unsupported)?;
+    let parses = outline_parses(files, &mut prog);
+    let modules = module_sources(files, &parses);
+    let compiled = compile_modules(&mut prog, &modules)?;
     let types = ops::OpTypes { pos: prog.core.pos, orient: prog.core.orient };
     let mut procs_by_name: FxHashMap<String, u32> = prog
         .routines
@@ -206,9 +184,75 @@ pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Resul
     let shared_pers = shared_pers(&prog, &modules);
     let module_vars = module_vars(&prog, &modules);
     let types_by_name = prog.types.named().map(|(id, name)| (name.to_ascii_lowercase(), id)).collect();
-    let warnings = analysis.diagnostics;
     let analysis = Some(Box::new(prog));
     Ok(Loaded { vm, warnings, persistents, entry: entry_routine, shared_pers, module_vars, types_by_name, analysis })
+}
+
+/// Checks and compiles the task made of `files` without running anything (not even
+/// the data initialisers): its routines as the VM would run them, for listings
+/// (`rapid dump-ir`, `disas::list`).
+pub fn compile_files(files: &[SourceInput], options: &Options) -> Result<CompiledTask, LoadError> {
+    let (mut prog, _) = checked(files, options)?;
+    let parses = outline_parses(files, &mut prog);
+    let modules = module_sources(files, &parses);
+    let compiled = compile_modules(&mut prog, &modules)?;
+    let global_names = prog.datas.iter().map(|d| d.display.clone()).collect();
+    Ok(CompiledTask { compiled, global_names })
+}
+
+/// A task compiled for a listing: its code and the names of its globals (module and
+/// predefined data, by the index `LoadGlobal` and the others name them with).
+pub struct CompiledTask {
+    pub compiled: compile::Compiled,
+    pub global_names: Vec<String>,
+}
+
+/// The checked program with its warnings, or the diagnostics that stop it from loading.
+fn checked(files: &[SourceInput], options: &Options) -> Result<(Program, Vec<Diagnostic>), LoadError> {
+    let analysis = analyze(files, options);
+    if Program::has_errors(&analysis.diagnostics) {
+        return Err(LoadError::Diagnostics(analysis.diagnostics));
+    }
+    match analysis.program {
+        Some(prog) => Ok((prog, analysis.diagnostics)),
+        None => Err(LoadError::Diagnostics(analysis.diagnostics)),
+    }
+}
+
+/// Every readable file parsed as an outline (routine bodies left for the compiler).
+fn outline_parses(files: &[SourceInput], prog: &mut Program) -> Vec<(usize, rapid_syntax::Parse)> {
+    files
+        .iter()
+        .enumerate()
+        .filter(|(_, f)| f.unreadable.is_none())
+        .map(|(idx, f)| (idx, rapid_syntax::parse_outline(&f.text, &mut prog.interner)))
+        .collect()
+}
+
+fn module_sources<'a>(
+    files: &'a [SourceInput],
+    parses: &'a [(usize, rapid_syntax::Parse)],
+) -> Vec<compile::ModuleSource<'a>> {
+    parses
+        .iter()
+        .flat_map(|(file, parse)| {
+            parse.file.modules.iter().map(move |module| compile::ModuleSource {
+                file: *file,
+                text: &files[*file].text,
+                module,
+            })
+        })
+        .collect()
+}
+
+fn compile_modules(prog: &mut Program, modules: &[compile::ModuleSource<'_>]) -> Result<compile::Compiled, LoadError> {
+    let (_, catalogue) = rapid_sema::catalogue();
+    // The compiler reads the program while the bodies' parser spells names with its
+    // interner: lent out for the while.
+    let mut interner = std::mem::take(&mut prog.interner);
+    let compiled = compile::compile(prog, modules, &catalogue.module, &catalogue.text, &mut interner);
+    prog.interner = interner;
+    compiled.map_err(LoadError::Unsupported)
 }
 
 /// Late binding by `"module:procedure"` (public programs call loaded code as

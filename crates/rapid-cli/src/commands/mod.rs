@@ -2,6 +2,7 @@
 
 mod check;
 mod codes;
+mod dump_ir;
 mod fmt;
 mod fmt_config;
 mod run;
@@ -48,5 +49,6 @@ pub(crate) fn run(cli: Cli) -> anyhow::Result<ExitStatus> {
         Command::Serve(args) => serve::run(&args),
         Command::Codes => codes::run(),
         Command::Fmt(args) => fmt::run(&args),
+        Command::DumpIr(args) => dump_ir::run(&args),
     }
 }

@@ -10,6 +10,39 @@ use super::{Exit, RapidError, Value, Vm};
 use crate::ir::{ArgSpec, Callee, Instr, Operand};
 use crate::value::{Root, MAX_STRING_CHARS};
 
+/// The instructions the fast loop has no arm for: `Vm::step` runs them. Those whose
+/// declaration says `fast: false` (`crate::instrs`), as the test below checks.
+macro_rules! step_only {
+    () => {
+        Instr::StoreGlobal(..)
+            | Instr::PlaceField(..)
+            | Instr::PlaceIndex(..)
+            | Instr::LoadPlace
+            | Instr::StorePlace
+            | Instr::Index(..)
+            | Instr::Unary(..)
+            | Instr::MakeArray(..)
+            | Instr::Pop
+            | Instr::LateCall(..)
+            | Instr::UnknownFunc(..)
+            | Instr::Raise
+            | Instr::ReRaise
+            | Instr::Retry
+            | Instr::TryNext
+            | Instr::Exit
+            | Instr::UndoReturn
+            | Instr::ForInit { .. }
+            | Instr::Present(..)
+            | Instr::Placeholder
+            | Instr::NameWithNumber
+            | Instr::PushTime
+            | Instr::WaitPop
+            | Instr::RaiseWaitTimeout
+            | Instr::Connect(..)
+            | Instr::ReadSignal(..)
+    };
+}
+
 /// Why the fast loop stopped.
 pub(super) enum Fast {
     /// The budget ran out.
@@ -200,11 +233,7 @@ impl Vm {
                         }
                     }
                 }
-                Instr::MakeRecord(ty, n) => {
-                    let at = stack.len() - n as usize;
-                    let fields = stack.split_off(at);
-                    stack.push(Value::Record(std::rc::Rc::new(crate::value::Record { ty, fields })));
-                }
+                Instr::MakeRecord(ty, n) => super::instr::make_record(stack, ty, n),
                 Instr::BinOp { op: rapid_syntax::ast::BinaryOp::Add, lhs, rhs }
                     if is_str(lhs, stack, base, &code.consts, usize::from(rhs == crate::ir::Operand::Stack))
                         && is_str(rhs, stack, base, &code.consts, 0) =>
@@ -495,8 +524,7 @@ impl Vm {
                     else {
                         break Fast::Step;
                     };
-                    let done = if *step >= 0.0 { v > to } else { v < to };
-                    pc = if done { exit } else { pc + 1 };
+                    pc = if super::instr::for_passed(*v, *to, *step) { exit } else { pc + 1 };
                     continue;
                 }
                 Instr::ForNext { var, check } => {
@@ -506,12 +534,14 @@ impl Vm {
                     };
                     // In place: assigning a whole `Value` ran the general drop code
                     // on the old num.
-                    let next = v + step;
+                    let next = super::instr::for_next(*v, *step);
                     set_num(&mut stack[slots], next);
                     pc = check;
                     continue;
                 }
-                _ => break Fast::Step,
+                // Listed, not `_`: a new instruction must be given an arm above or
+                // be added here (and its declaration's `fast` fact agree, tested below).
+                step_only!() | Instr::LoadElem { .. } | Instr::StoreElem { .. } => break Fast::Step,
             }
             pc += 1;
         };
@@ -715,4 +745,17 @@ fn concat(a: &str, b: &str) -> Option<Value> {
     buf[a.len()..a.len() + b.len()].copy_from_slice(b.as_bytes());
     let joined = std::str::from_utf8(&buf[..a.len() + b.len()]).ok()?;
     Some(Value::Str(joined.into()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_fast_loop_falls_back_on_exactly_the_instructions_declared_slow() {
+        for instr in Instr::samples() {
+            let falls_back = matches!(instr, step_only!());
+            assert_eq!(falls_back, !instr.fast_path(), "{instr}: the declaration's `fast` and run_fast disagree");
+        }
+    }
 }

@@ -13,6 +13,7 @@ mod call;
 mod fast;
 mod frames;
 pub mod inspect;
+mod instr;
 mod interrupts;
 mod io;
 mod kernel;
@@ -35,7 +36,7 @@ use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::ir::{Code, Instr, StmtRange};
 use crate::ops::{self, OpTypes};
-use crate::value::{Array, PathStep, Place, Record, Root, Value};
+use crate::value::{Array, PathStep, Place, Root, Value};
 pub(crate) use frames::Frame;
 use frames::Frames;
 use storage::{coerce_like, index_place, Storage};
@@ -496,11 +497,7 @@ impl Vm {
                 let res = ops::binary(op, lhs, rhs, self.types).map_err(|f| self.fault(f))?;
                 self.push(res);
             }
-            Instr::MakeRecord(ty, n) => {
-                let at = self.storage.stack.len() - n as usize;
-                let fields = self.storage.stack.split_off(at);
-                self.push(Value::Record(std::rc::Rc::new(Record { ty, fields })));
-            }
+            Instr::MakeRecord(ty, n) => instr::make_record(&mut self.storage.stack, ty, n),
             Instr::MakeArray(n) => {
                 let at = self.storage.stack.len() - n as usize;
                 let elems = self.storage.stack.split_off(at);
@@ -575,16 +572,17 @@ impl Vm {
                     self.storage.stack[slots + 1].as_f64().unwrap_or(0.0),
                     self.storage.stack[slots + 2].as_f64().unwrap_or(0.0),
                 );
-                let done = if step >= 0.0 { v > to } else { v < to };
-                if done {
+                if instr::for_passed(v, to, step) {
                     next = exit;
                 }
             }
             Instr::ForNext { var, check } => {
                 let slots = (base + var) as usize;
-                let v = self.storage.stack[slots].as_f64().unwrap_or(0.0);
-                let step = self.storage.stack[slots + 2].as_f64().unwrap_or(0.0);
-                self.storage.stack[slots] = Value::Num((v + step) as f32);
+                // The loop variable and STEP are nums (`ForInit` made them): f32 sums,
+                // as the fast loop's (an f64 sum rounded to f32 is the same number).
+                let v = self.storage.stack[slots].as_f64().unwrap_or(0.0) as f32;
+                let step = self.storage.stack[slots + 2].as_f64().unwrap_or(0.0) as f32;
+                self.storage.stack[slots] = Value::Num(instr::for_next(v, step));
                 next = check;
             }
             Instr::Present(slot) => {
