@@ -20,6 +20,15 @@ pub(crate) enum Command {
     Run(Box<RunArgs>),
     /// List every diagnostic code with its severity and meaning.
     Codes,
+    /// Serve the Language Server Protocol over stdin/stdout (for editors).
+    Lsp(LspArgs),
+}
+
+#[derive(Debug, Args)]
+pub(crate) struct LspArgs {
+    /// Accepted for editors that pass it: stdio is the only transport.
+    #[arg(long)]
+    pub(crate) stdio: bool,
 }
 
 #[derive(Debug, Args)]

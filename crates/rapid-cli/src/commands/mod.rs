@@ -2,6 +2,7 @@
 
 mod check;
 mod codes;
+mod lsp;
 mod run;
 mod run_system;
 mod system;
@@ -43,5 +44,6 @@ pub(crate) fn run(cli: Cli) -> anyhow::Result<ExitStatus> {
             run::run(&args)
         }
         Command::Codes => codes::run(),
+        Command::Lsp(_) => lsp::run(),
     }
 }

@@ -27,6 +27,7 @@ mod external_paths;
 mod files;
 mod interrupt;
 mod iomore;
+mod lsp;
 mod manifest;
 mod mech_units;
 mod multimove;

@@ -1,0 +1,231 @@
+//! The server driven through a real protocol client path: `lsp_server`'s in-memory
+//! connection, JSON-RPC messages in and out, as an editor would send them. Every
+//! expected position is counted by hand from the fixture texts below.
+
+mod client;
+
+use client::{Client, Folder};
+use serde_json::{json, Value};
+
+const MAIN: &str = "MODULE Main
+  PROC main()
+    VAR num n;
+    n := Helper(2);
+    cnt := StrLen(\"ä\");
+  ENDPROC
+ENDMODULE
+";
+
+const TOOLS: &str = "MODULE Tools
+  FUNC num Helper(num x)
+    RETURN x * 2;
+  ENDFUNC
+ENDMODULE
+";
+
+fn two_modules() -> (Folder, Client) {
+    let folder = Folder::new("two_modules", &[("Main.mod", MAIN), ("Tools.mod", TOOLS)]);
+    let client = Client::start(&folder, json!({}));
+    (folder, client)
+}
+
+fn range(l1: u32, c1: u32, l2: u32, c2: u32) -> Value {
+    json!({"start": {"line": l1, "character": c1}, "end": {"line": l2, "character": c2}})
+}
+
+#[test]
+fn pushes_the_checkers_findings_for_the_whole_folder() {
+    let (folder, mut client) = two_modules();
+    let main = folder.uri("Main.mod");
+    let diags = client.diagnostics_for(&main);
+    // `cnt` is undeclared: line 4, UTF-16 columns 4..7.
+    assert_eq!(diags.len(), 1, "{diags:?}");
+    assert_eq!(diags[0]["code"], "E0201");
+    assert_eq!(diags[0]["severity"], 1);
+    assert_eq!(diags[0]["range"], range(4, 4, 4, 7));
+    // The message is the checker's, word for word.
+    let inputs = folder.inputs();
+    let found = rapid_sema::check(&inputs, &rapid_sema::Options::default());
+    assert_eq!(found.len(), 1);
+    assert_eq!(diags[0]["message"], found[0].message.as_str());
+    client.shutdown();
+}
+
+#[test]
+fn an_edit_is_checked_again_and_positions_count_utf16_units() {
+    let (folder, mut client) = two_modules();
+    let main = folder.uri("Main.mod");
+    client.open(&main, MAIN);
+    client.diagnostics_for(&main);
+    // Declare cnt (line 3, after `VAR num n;` at column 14) and add an error after a
+    // Latin-1 letter on line 4: `"ä"` is 3 UTF-16 units; `x` is then at column 26.
+    client.change(&main, 2, range(2, 14, 2, 14), "\n    VAR num cnt;");
+    client.change(&main, 3, range(5, 22, 5, 22), " + x");
+    let diags = client.diagnostics_for_version(&main, 3);
+    assert_eq!(diags.len(), 1, "{diags:?}");
+    assert_eq!(diags[0]["code"], "E0201");
+    assert_eq!(diags[0]["range"], range(5, 25, 5, 26));
+    client.shutdown();
+}
+
+#[test]
+fn goes_to_a_definition_in_another_module_and_finds_references() {
+    let (folder, mut client) = two_modules();
+    let main = folder.uri("Main.mod");
+    let tools = folder.uri("Tools.mod");
+    client.open(&main, MAIN);
+    // `Helper` in `    n := Helper(2);` starts at column 9.
+    let def = client.request("textDocument/definition", client::at(&main, 3, 11));
+    assert_eq!(def["uri"], tools.as_str());
+    assert_eq!(def["range"], range(1, 11, 1, 17));
+    let refs = client.request(
+        "textDocument/references",
+        json!({"textDocument": {"uri": main}, "position": {"line": 3, "character": 9}, "context": {"includeDeclaration": true}}),
+    );
+    let mut places: Vec<(String, Value)> =
+        refs.as_array().unwrap().iter().map(|r| (r["uri"].as_str().unwrap().to_owned(), r["range"].clone())).collect();
+    places.sort_by(|a, b| a.0.cmp(&b.0));
+    assert_eq!(places, [(main.clone(), range(3, 9, 3, 15)), (tools.clone(), range(1, 11, 1, 17))]);
+    // A parameter resolves to its routine's declaration, not to anything global.
+    let def = client.request("textDocument/definition", client::at(&tools, 2, 11));
+    assert_eq!(def["range"], range(1, 22, 1, 23));
+    client.shutdown();
+}
+
+#[test]
+fn hovers_builtins_from_the_catalogue_and_user_declarations() {
+    let (folder, mut client) = two_modules();
+    let main = folder.uri("Main.mod");
+    client.open(&main, MAIN);
+    let hover = client.request("textDocument/hover", client::at(&main, 4, 12));
+    let text = hover["contents"]["value"].as_str().unwrap();
+    assert!(text.contains("FUNC num StrLen(string Str)"), "{text}");
+    assert!(text.contains("Returns the number of characters in a string."), "{text}");
+    assert_eq!(hover["range"], range(4, 11, 4, 17));
+    let hover = client.request("textDocument/hover", client::at(&main, 3, 4));
+    let text = hover["contents"]["value"].as_str().unwrap();
+    assert!(text.contains("VAR num n;"), "{text}");
+    assert!(text.contains("in main of module Main"), "{text}");
+    client.shutdown();
+}
+
+#[test]
+fn outlines_a_module() {
+    let (folder, mut client) = two_modules();
+    let tools = folder.uri("Tools.mod");
+    client.open(&tools, TOOLS);
+    let symbols = client.request("textDocument/documentSymbol", json!({"textDocument": {"uri": tools}}));
+    assert_eq!(symbols[0]["name"], "Tools");
+    assert_eq!(symbols[0]["kind"], 2); // Module
+    let helper = &symbols[0]["children"][0];
+    assert_eq!(helper["name"], "Helper");
+    assert_eq!(helper["kind"], 12); // Function
+    assert_eq!(helper["detail"], "FUNC num");
+    assert_eq!(helper["range"], range(1, 2, 3, 9));
+    assert_eq!(helper["children"][0]["name"], "x");
+    let found = client.request("workspace/symbol", json!({"query": "help"}));
+    assert_eq!(found.as_array().unwrap().len(), 1);
+    assert_eq!(found[0]["containerName"], "Tools");
+    client.shutdown();
+}
+
+#[test]
+fn serves_pull_diagnostics_to_a_client_that_asks() {
+    let folder = Folder::new("pull", &[("Main.mod", MAIN), ("Tools.mod", TOOLS)]);
+    let mut client = Client::start(&folder, json!({"textDocument": {"diagnostic": {"dynamicRegistration": false}}}));
+    assert_eq!(client.capabilities["diagnosticProvider"]["identifier"], "rapid");
+    let main = folder.uri("Main.mod");
+    client.open(&main, MAIN);
+    let report = client.request("textDocument/diagnostic", json!({"textDocument": {"uri": main}}));
+    assert_eq!(report["kind"], "full");
+    assert_eq!(report["items"][0]["code"], "E0201");
+    assert_eq!(report["items"][0]["range"], range(4, 4, 4, 7));
+    client.shutdown();
+}
+
+#[test]
+fn renames_across_modules_and_refuses_reserved_words() {
+    let (folder, mut client) = two_modules();
+    let main = folder.uri("Main.mod");
+    let tools = folder.uri("Tools.mod");
+    client.open(&main, MAIN);
+    let edit = client.request(
+        "textDocument/rename",
+        json!({"textDocument": {"uri": main}, "position": {"line": 3, "character": 10}, "newName": "Twice"}),
+    );
+    assert_eq!(edit["changes"][main.as_str()][0]["range"], range(3, 9, 3, 15));
+    assert_eq!(edit["changes"][tools.as_str()][0]["range"], range(1, 11, 1, 17));
+    assert_eq!(edit["changes"][tools.as_str()][0]["newText"], "Twice");
+    let refused = client.request_error(
+        "textDocument/rename",
+        json!({"textDocument": {"uri": main}, "position": {"line": 3, "character": 10}, "newName": "ENDIF"}),
+    );
+    assert!(refused.contains("reserved word"), "{refused}");
+    client.shutdown();
+}
+
+const CELL: &str = "MODULE Cell
+  RECORD part
+    num weight;
+    pos place;
+  ENDRECORD
+  VAR part p;
+  PROC main()
+    p.place.x := 1;
+    p.
+    n := StrFind(\"abc\", 1, \"b\" \\
+  ENDPROC
+ENDMODULE
+";
+
+fn labels(items: &Value) -> Vec<String> {
+    let list = items.as_array().or_else(|| items["items"].as_array()).expect("a completion list");
+    list.iter().map(|i| i["label"].as_str().unwrap().to_owned()).collect()
+}
+
+#[test]
+fn completes_components_optional_arguments_and_names_in_scope() {
+    let folder = Folder::new("complete", &[("Cell.mod", CELL)]);
+    let snippets = json!({"textDocument": {"completion": {"completionItem": {"snippetSupport": true}}}});
+    let signals = vec![("diPartReady".to_owned(), "signaldi".to_owned())];
+    let mut client = Client::start_with(&folder, snippets, signals);
+    let cell = folder.uri("Cell.mod");
+    client.open(&cell, CELL);
+    // After `p.place.` (line 7, column 12): the components of the built-in pos.
+    assert_eq!(labels(&client.request("textDocument/completion", client::at(&cell, 7, 12))), ["x", "y", "z"]);
+    // After `p.` (line 8, column 6): the user record's components.
+    assert_eq!(labels(&client.request("textDocument/completion", client::at(&cell, 8, 6))), ["weight", "place"]);
+    // After the `\` of StrFind's call: its one optional parameter, a switch.
+    let line = "    n := StrFind(\"abc\", 1, \"b\" \\";
+    let after = line.len() as u32;
+    let optional = client.request("textDocument/completion", client::at(&cell, 9, after));
+    assert_eq!(labels(&optional), ["NotInSet"]);
+    // At the start of line 8: data, routines, signals and built-ins in scope.
+    let all = client.request("textDocument/completion", client::at(&cell, 8, 4));
+    let names = labels(&all);
+    for wanted in ["p", "main", "part", "diPartReady", "StrLen", "MoveL"] {
+        assert!(names.iter().any(|n| n == wanted), "{wanted} missing");
+    }
+    let strlen = all.as_array().unwrap().iter().find(|i| i["label"] == "StrLen").unwrap();
+    assert_eq!(strlen["insertText"], "StrLen(${1:Str})");
+    assert_eq!(strlen["insertTextFormat"], 2);
+    client.shutdown();
+}
+
+#[test]
+fn helps_with_the_signature_of_the_call_at_the_cursor() {
+    let folder = Folder::new("signature", &[("Cell.mod", CELL)]);
+    let mut client = Client::start(&folder, json!({}));
+    let cell = folder.uri("Cell.mod");
+    client.open(&cell, CELL);
+    // `StrFind("abc", 1, ` + cursor: the third parameter, Set (index 2).
+    let help = client.request("textDocument/signatureHelp", client::at(&cell, 9, 28));
+    assert_eq!(help["signatures"][0]["label"], "FUNC StrFind(string Str, num ChPos, string Set, \\switch NotInSet)");
+    assert_eq!(help["activeParameter"], 2);
+    // After `\`: the optional parameter NotInSet (index 3) once its name is typed.
+    let mut client2 = client;
+    client2.change(&cell, 2, range(9, 33, 9, 33), "Not");
+    let help = client2.request("textDocument/signatureHelp", client::at(&cell, 9, 36));
+    assert_eq!(help["activeParameter"], 3);
+    client2.shutdown();
+}
