@@ -84,6 +84,9 @@ pub(crate) struct FileIndex {
     /// Every token but the end, in source order.
     pub(crate) tokens: Vec<Token>,
     pub(crate) comments: Vec<Span>,
+    /// The routines' spans with their declaration index, in source order (routines
+    /// never nest), for finding the routine at an offset by binary search.
+    routines: Vec<(Span, usize)>,
 }
 
 /// Folds a name the way RAPID compares names.
@@ -100,6 +103,9 @@ impl FileIndex {
             index.add_module(text, module_idx, module);
         }
         index.add_tokens(text);
+        index.routines =
+            index.decls.iter().enumerate().filter(|(_, d)| d.kind.is_routine()).map(|(at, d)| (d.span, at)).collect();
+        index.routines.sort_by_key(|(span, _)| span.start);
         index
     }
 
@@ -205,7 +211,15 @@ impl FileIndex {
 
     /// The innermost routine declaration holding `offset`.
     pub(crate) fn routine_at(&self, offset: u32) -> Option<usize> {
-        self.decls.iter().position(|d| d.kind.is_routine() && d.span.start <= offset && offset <= d.span.end)
+        let after = self.routines.partition_point(|(span, _)| span.start <= offset);
+        let (span, at) = *self.routines.get(after.checked_sub(1)?)?;
+        (offset <= span.end).then_some(at)
+    }
+
+    /// The parameters and data of routine `routine` (declarations follow their
+    /// routine's, in one run).
+    pub(crate) fn locals(&self, routine: usize) -> impl Iterator<Item = (usize, &Decl)> {
+        self.decls.iter().enumerate().skip(routine + 1).take_while(move |(_, d)| d.routine == Some(routine))
     }
 
     /// The module holding `offset`.

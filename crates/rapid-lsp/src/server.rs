@@ -9,16 +9,18 @@ use lsp_server::{Connection, ErrorCode, Message, Notification, Request, RequestI
 use lsp_types::notification::{self as note, Notification as _};
 use lsp_types::request::{self as req, Request as _};
 use lsp_types::{
-    CompletionOptions, DiagnosticOptions, DiagnosticServerCapabilities, DocumentDiagnosticReport,
-    DocumentDiagnosticReportResult, FullDocumentDiagnosticReport, HoverProviderCapability, InitializeParams,
-    MessageType, OneOf, RelatedFullDocumentDiagnosticReport, ServerCapabilities, ServerInfo, ShowMessageParams,
-    SignatureHelpOptions, TextDocumentSyncCapability, TextDocumentSyncKind, Uri,
+    CodeActionProviderCapability, CompletionOptions, DiagnosticOptions, DiagnosticServerCapabilities,
+    DocumentDiagnosticReport, DocumentDiagnosticReportResult, FoldingRangeProviderCapability,
+    FullDocumentDiagnosticReport, HoverProviderCapability, InitializeParams, MessageType, OneOf,
+    RelatedFullDocumentDiagnosticReport, SemanticTokensFullOptions, SemanticTokensOptions,
+    SemanticTokensServerCapabilities, ServerCapabilities, ServerInfo, ShowMessageParams, SignatureHelpOptions,
+    TextDocumentSyncCapability, TextDocumentSyncKind, Uri,
 };
 use serde::de::DeserializeOwned;
 use serde::Serialize;
 
 use crate::analysis::{self, Job, Worker};
-use crate::features::{complete, hover, navigate, signature, symbols, TaskIndex};
+use crate::features::{actions, complete, folding, hover, navigate, semantic, signature, symbols, TaskIndex};
 use crate::workspace::State;
 use crate::{uri, WorkspaceLoader};
 
@@ -41,6 +43,16 @@ pub fn capabilities(pull: bool) -> ServerCapabilities {
             trigger_characters: Some(vec!["(".into(), ",".into(), "\\".into(), " ".into()]),
             ..SignatureHelpOptions::default()
         }),
+        folding_range_provider: Some(FoldingRangeProviderCapability::Simple(true)),
+        code_action_provider: Some(CodeActionProviderCapability::Simple(true)),
+        semantic_tokens_provider: Some(SemanticTokensServerCapabilities::SemanticTokensOptions(
+            SemanticTokensOptions {
+                legend: semantic::legend(),
+                full: Some(SemanticTokensFullOptions::Bool(true)),
+                range: None,
+                ..SemanticTokensOptions::default()
+            },
+        )),
         diagnostic_provider: pull.then(|| {
             DiagnosticServerCapabilities::Options(DiagnosticOptions {
                 identifier: Some("rapid".into()),
@@ -250,6 +262,19 @@ impl Server<'_> {
                 let p: lsp_types::SignatureHelpParams = params(r.params)?;
                 let at = p.text_document_position_params;
                 json(in_task(state, &at.text_document.uri, |ti, f| signature::help(ti, f, at.position)))
+            }
+            req::FoldingRangeRequest::METHOD => {
+                let p: lsp_types::FoldingRangeParams = params(r.params)?;
+                json(in_task(state, &p.text_document.uri, |ti, f| Some(folding::folding(&ti.files[f], ti.text(f)))))
+            }
+            req::SemanticTokensFullRequest::METHOD => {
+                let p: lsp_types::SemanticTokensParams = params(r.params)?;
+                json(in_task(state, &p.text_document.uri, |ti, f| Some(semantic::tokens(ti, f))))
+            }
+            req::CodeActionRequest::METHOD => {
+                let p: lsp_types::CodeActionParams = params(r.params)?;
+                let diags = p.context.diagnostics;
+                json(in_task(state, &p.text_document.uri, |ti, f| Some(actions::actions(ti, f, &diags))))
             }
             req::Rename::METHOD => {
                 let p: lsp_types::RenameParams = params(r.params)?;

@@ -229,3 +229,101 @@ fn helps_with_the_signature_of_the_call_at_the_cursor() {
     assert_eq!(help["activeParameter"], 3);
     client2.shutdown();
 }
+
+const FIX: &str = "MODULE Fix
+  VAR num counter;
+  PROC main2()
+    countr := 1;
+    total := counter;
+  ENDPROC
+ENDMODULE
+";
+
+const OPEN: &str = "MODULE Open
+  PROC main()
+    IF TRUE THEN
+      TPWrite \"a\";
+  ENDPROC
+ENDMODULE
+";
+
+/// The code actions offered for the diagnostics published for `uri`: (title, the
+/// edit's range and text).
+fn quick_fixes(client: &mut Client, uri: &str) -> Vec<(String, Value, String)> {
+    let diags = client.diagnostics_for(uri);
+    let params = json!({"textDocument": {"uri": uri}, "range": range(0, 0, 0, 0), "context": {"diagnostics": diags}});
+    let actions = client.request("textDocument/codeAction", params);
+    actions
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|a| {
+            let edit = &a["edit"]["changes"][uri][0];
+            (
+                a["title"].as_str().unwrap().to_owned(),
+                edit["range"].clone(),
+                edit["newText"].as_str().unwrap().to_owned(),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn offers_fixes_for_undefined_names_and_an_unclosed_if() {
+    let folder = Folder::new("actions", &[("Fix.mod", FIX), ("Open.mod", OPEN)]);
+    let mut client = Client::start(&folder, json!({}));
+    let fix = folder.uri("Fix.mod");
+    let fixes = quick_fixes(&mut client, &fix);
+    // `countr := 1`: declared as a num under the header (line 3), or corrected.
+    assert!(
+        fixes.contains(&("Declare `VAR num countr`".into(), range(3, 0, 3, 0), "    VAR num countr;\n".into())),
+        "{fixes:?}"
+    );
+    assert!(fixes.contains(&("Change to `counter`".into(), range(3, 4, 3, 10), "counter".into())), "{fixes:?}");
+    // `total := counter`: counter is a num, so total is declared one.
+    assert!(
+        fixes.contains(&("Declare `VAR num total`".into(), range(3, 0, 3, 0), "    VAR num total;\n".into())),
+        "{fixes:?}"
+    );
+    let open = folder.uri("Open.mod");
+    let fixes = quick_fixes(&mut client, &open);
+    // ENDIF before ENDPROC (line 4), indented as the IF.
+    assert_eq!(fixes, [("Add the missing ENDIF".to_owned(), range(4, 0, 4, 0), "    ENDIF\n".to_owned())]);
+    client.shutdown();
+}
+
+#[test]
+fn classifies_tokens_and_folds_blocks() {
+    let text = "MODULE M\n  PROC p()\n    TPWrite \"x\";\n  ENDPROC\nENDMODULE\n";
+    let folder = Folder::new("semantic", &[("M.mod", text)]);
+    let mut client = Client::start(&folder, json!({}));
+    let m = folder.uri("M.mod");
+    client.open(&m, text);
+    let legend = &client.capabilities["semanticTokensProvider"]["legend"];
+    assert_eq!(legend["tokenTypes"][7], "method");
+    assert_eq!(legend["tokenModifiers"], json!(["declaration", "readonly", "defaultLibrary"]));
+    let tokens = client.request("textDocument/semanticTokens/full", json!({"textDocument": {"uri": m}}));
+    // (Δline, Δstart, length, type, modifiers): MODULE, M (namespace, declaration),
+    // PROC, p (method, declaration), TPWrite (method, defaultLibrary), "x", ENDPROC,
+    // ENDMODULE.
+    let expected = [
+        [0, 0, 6, 8, 0],
+        [0, 7, 1, 0, 1],
+        [1, 2, 4, 8, 0],
+        [0, 5, 1, 7, 1],
+        [1, 4, 7, 7, 4],
+        [0, 8, 3, 10, 0],
+        [1, 2, 7, 8, 0],
+        [1, 0, 9, 8, 0],
+    ];
+    assert_eq!(tokens["data"], json!(expected.concat()));
+    let folds = client.request("textDocument/foldingRange", json!({"textDocument": {"uri": m}}));
+    let lines: Vec<(u64, u64)> = folds
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| (f["startLine"].as_u64().unwrap(), f["endLine"].as_u64().unwrap()))
+        .collect();
+    assert_eq!(lines, [(0, 4), (1, 3)]);
+    client.shutdown();
+}

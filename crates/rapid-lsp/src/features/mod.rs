@@ -3,9 +3,12 @@
 //! data and parameters, then the module's own items (LOCAL ones too), then the task's
 //! global items, then the configuration's signals, then the built-ins.
 
+pub(crate) mod actions;
 pub(crate) mod complete;
+pub(crate) mod folding;
 pub(crate) mod hover;
 pub(crate) mod navigate;
+pub(crate) mod semantic;
 pub(crate) mod signature;
 pub(crate) mod symbols;
 
@@ -110,8 +113,7 @@ impl TaskIndex {
     pub(crate) fn lookup(&self, file: usize, offset: u32, key: &str) -> Option<Target<'static>> {
         let index = &self.files[file];
         if let Some(routine) = index.routine_at(offset) {
-            let local = index.decls.iter().position(|d| d.routine == Some(routine) && d.key == key);
-            if let Some(decl) = local {
+            if let Some((decl, _)) = index.locals(routine).find(|(_, d)| d.key == key) {
                 return Some(Target::User { file, decl });
             }
         }

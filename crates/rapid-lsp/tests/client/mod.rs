@@ -161,18 +161,6 @@ impl Client {
         );
     }
 
-    fn next_notification(&mut self) -> Notification {
-        if !self.pending.is_empty() {
-            return self.pending.remove(0);
-        }
-        loop {
-            match self.conn.receiver.recv_timeout(PATIENCE).expect("the server publishes in time") {
-                Message::Notification(n) => return n,
-                _ => continue,
-            }
-        }
-    }
-
     /// The next diagnostics published for `uri`.
     pub(crate) fn diagnostics_for(&mut self, uri: &str) -> Vec<Value> {
         self.published(uri, |_| true)
@@ -183,11 +171,20 @@ impl Client {
         self.published(uri, |p| p["version"] == version)
     }
 
+    /// The first publication for `uri` that `wanted` accepts, in the order they were
+    /// sent; others are kept for later calls.
     fn published(&mut self, uri: &str, wanted: impl Fn(&Value) -> bool) -> Vec<Value> {
+        let matches = |n: &Notification| {
+            n.method == "textDocument/publishDiagnostics" && n.params["uri"] == uri && wanted(&n.params)
+        };
         loop {
-            let n = self.next_notification();
-            if n.method == "textDocument/publishDiagnostics" && n.params["uri"] == uri && wanted(&n.params) {
+            if let Some(at) = self.pending.iter().position(matches) {
+                let n = self.pending.remove(at);
                 return n.params["diagnostics"].as_array().cloned().unwrap_or_default();
+            }
+            match self.conn.receiver.recv_timeout(PATIENCE).expect("the server publishes in time") {
+                Message::Notification(n) => self.pending.push(n),
+                _ => continue,
             }
         }
     }
