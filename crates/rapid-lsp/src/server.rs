@@ -202,17 +202,9 @@ impl Server<'_> {
             note::DidCloseTextDocument::METHOD => {
                 let Ok(p) = params::<lsp_types::DidCloseTextDocumentParams>(n.params) else { return false };
                 self.state.docs.close(&p.text_document.uri);
+                // The module's text is the one on disk again; a loose file leaves the
+                // workspace, and the next check publishes it empty.
                 self.reload();
-                if self.worker.is_none() {
-                    return false;
-                }
-                // A closed loose file has no diagnostics any more.
-                let params = lsp_types::PublishDiagnosticsParams {
-                    uri: p.text_document.uri,
-                    diagnostics: Vec::new(),
-                    version: None,
-                };
-                self.notify(note::PublishDiagnostics::METHOD, params);
                 true
             }
             note::DidSaveTextDocument::METHOD | note::DidChangeWatchedFiles::METHOD => {
