@@ -87,6 +87,8 @@ pub(crate) struct FileIndex {
     /// The routines' spans with their declaration index, in source order (routines
     /// never nest), for finding the routine at an offset by binary search.
     routines: Vec<(Span, usize)>,
+    /// Where each routine's body starts, by declaration index.
+    body_starts: Vec<(usize, u32)>,
 }
 
 /// Folds a name the way RAPID compares names.
@@ -158,6 +160,7 @@ impl FileIndex {
                     let parts = base.with(kind, routine.name.span, routine.span);
                     let ty = routine.ret_ty.map(|n| n.span);
                     let at = self.push(text, DeclParts { local: routine.local, ty, ..parts });
+                    self.body_starts.push((at, routine.body_span.start));
                     for param in &routine.params {
                         let parts = base.with(Kind::Param, param.name.span, param.span);
                         self.push(
@@ -214,6 +217,12 @@ impl FileIndex {
         let after = self.routines.partition_point(|(span, _)| span.start <= offset);
         let (span, at) = *self.routines.get(after.checked_sub(1)?)?;
         (offset <= span.end).then_some(at)
+    }
+
+    /// Where the body of the routine holding `offset` starts.
+    pub(crate) fn body_start(&self, offset: u32) -> Option<u32> {
+        let routine = self.routine_at(offset)?;
+        self.body_starts.iter().find(|(at, _)| *at == routine).map(|(_, start)| *start)
     }
 
     /// The parameters and data of routine `routine` (declarations follow their

@@ -282,9 +282,9 @@ impl Server<'_> {
             }
             req::WorkspaceSymbolRequest::METHOD => {
                 let p: lsp_types::WorkspaceSymbolParams = params(r.params)?;
-                let mut out = Vec::new();
+                let (mut out, mut seen) = (Vec::new(), rustc_hash::FxHashSet::default());
                 for task in state.tasks() {
-                    symbols::workspace(&TaskIndex::new(state, task), &p.query, &mut out);
+                    symbols::workspace(&TaskIndex::new(state, task), &p.query, &mut out, &mut seen);
                 }
                 json(Some(out))
             }

@@ -327,3 +327,19 @@ fn classifies_tokens_and_folds_blocks() {
     assert_eq!(lines, [(0, 4), (1, 3)]);
     client.shutdown();
 }
+
+#[test]
+fn hovers_an_optional_argument_with_its_parameter() {
+    let text = "MODULE M\n  PROC p()\n    TPWrite \"n = \" \\Num:=3;\n  ENDPROC\nENDMODULE\n";
+    let folder = Folder::new("hover_optional", &[("M.mod", text)]);
+    let mut client = Client::start(&folder, json!({}));
+    let m = folder.uri("M.mod");
+    client.open(&m, text);
+    // `\Num` starts at column 19 of line 2 (the name at 20..23).
+    let hover = client.request("textDocument/hover", client::at(&m, 2, 21));
+    let value = hover["contents"]["value"].as_str().unwrap();
+    assert!(value.contains("\\num Num"), "{value}");
+    assert!(value.contains("Optional parameter of TPWrite"), "{value}");
+    assert_eq!(hover["range"], range(2, 20, 2, 23));
+    client.shutdown();
+}

@@ -3,13 +3,16 @@
 
 use lsp_types::{Hover, HoverContents, MarkupContent, MarkupKind, Position};
 
-use super::{header, Target, TaskIndex};
-use crate::index::Kind;
+use super::{header, signature, Target, TaskIndex};
+use crate::index::{fold, Kind};
 
 pub(crate) fn hover(ti: &TaskIndex, file: usize, pos: Position) -> Option<Hover> {
     let offset = ti.offset(file, pos);
     let ident = ti.files[file].ident_at(offset)?;
     let range = ti.range(file, ident.span);
+    if ident.after_backslash {
+        return optional_argument(ti, file, ident).map(|value| markdown(value, range));
+    }
     let text = match ti.resolve(file, ident)? {
         Target::User { file, decl } => user(ti, file, decl),
         Target::Signal(at) => {
@@ -23,10 +26,22 @@ pub(crate) fn hover(ti: &TaskIndex, file: usize, pos: Position) -> Option<Hover>
             format!("```rapid\n{}\n```\n\n{}\n\n*Built-in ({}).*", builtin.signature(), builtin.doc, builtin.chapter)
         }
     };
-    Some(Hover {
-        contents: HoverContents::Markup(MarkupContent { kind: MarkupKind::Markdown, value: text }),
-        range: Some(range),
-    })
+    Some(markdown(text, range))
+}
+
+fn markdown(value: String, range: lsp_types::Range) -> Hover {
+    Hover { contents: HoverContents::Markup(MarkupContent { kind: MarkupKind::Markdown, value }), range: Some(range) }
+}
+
+/// `\Name` in a call: the optional parameter of the routine called.
+fn optional_argument(ti: &TaskIndex, file: usize, ident: &crate::index::Ident) -> Option<String> {
+    let index = &ti.files[file];
+    let call = signature::call_at(index, ident.span.start)?;
+    let name = index.tokens[call.name];
+    let target = ti.lookup(file, name.span.start, &fold(name.span.text(ti.text(file))))?;
+    let sig = signature::Signature::of(ti, target)?;
+    let param = sig.params.iter().find(|p| p.optional && fold(&p.name) == ident.key)?;
+    Some(format!("```rapid\n{}\n```\n\n*Optional parameter of {}.*", param.label, sig.name))
 }
 
 fn user(ti: &TaskIndex, file: usize, at: usize) -> String {

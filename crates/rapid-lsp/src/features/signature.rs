@@ -112,8 +112,14 @@ impl Signature {
 pub(crate) fn call_at(index: &FileIndex, offset: u32) -> Option<Call> {
     let tokens = &index.tokens;
     let end = tokens.partition_point(|t| t.span.end <= offset);
+    // The first statement of a body follows the routine's header, not a `;`.
+    let body = index.body_start(offset).map_or(0, |start| tokens.partition_point(|t| t.span.start < start));
+    let first = end.saturating_sub(MAX_LOOKBACK).max(body);
     let mut depth = 0u32;
-    for j in (end.saturating_sub(MAX_LOOKBACK)..end).rev() {
+    for j in (first..end).rev() {
+        if j == body && depth == 0 && body > 0 && statement_call(tokens, j, end) {
+            return Some(Call { name: j, args: j + 1 });
+        }
         match tokens[j].kind {
             TokenKind::RParen | TokenKind::RBracket | TokenKind::RBrace => depth += 1,
             TokenKind::LParen if depth == 0 && j > 0 && tokens[j - 1].kind == TokenKind::Ident => {
@@ -124,17 +130,23 @@ pub(crate) fn call_at(index: &FileIndex, offset: u32) -> Option<Call> {
             TokenKind::LParen | TokenKind::LBracket | TokenKind::LBrace => depth = depth.saturating_sub(1),
             kind if depth == 0 && starts_statement_after(kind) => {
                 let name = j + 1;
-                let is_call = tokens.get(name).is_some_and(|t| t.kind == TokenKind::Ident)
-                    && tokens.get(name + 1).is_none_or(|t| {
-                        !matches!(t.kind, TokenKind::Assign | TokenKind::Dot | TokenKind::LBrace | TokenKind::Colon)
-                    })
-                    && name < end;
-                return is_call.then_some(Call { name, args: name + 1 });
+                return statement_call(tokens, name, end).then_some(Call { name, args: name + 1 });
             }
             _ => {}
         }
     }
     None
+}
+
+/// Whether the statement starting at token `name` is a procedure call whose
+/// arguments reach the cursor (before token `end`): a name not followed by `:=`, `.`,
+/// `{` or `:` (an assignment or a label).
+fn statement_call(tokens: &[rapid_syntax::token::Token], name: usize, end: usize) -> bool {
+    tokens.get(name).is_some_and(|t| t.kind == TokenKind::Ident)
+        && tokens.get(name + 1).is_none_or(|t| {
+            !matches!(t.kind, TokenKind::Assign | TokenKind::Dot | TokenKind::LBrace | TokenKind::Colon)
+        })
+        && name < end
 }
 
 /// Tokens after which a statement starts.

@@ -90,7 +90,13 @@ pub(crate) fn document(index: &FileIndex, text: &str) -> Vec<DocumentSymbol> {
 }
 
 /// Module-level declarations of the task whose name holds `query` (any case).
-pub(crate) fn workspace(ti: &TaskIndex, query: &str, out: &mut Vec<SymbolInformation>) {
+/// `seen` holds the places already listed (a module several tasks load is listed once).
+pub(crate) fn workspace(
+    ti: &TaskIndex,
+    query: &str,
+    out: &mut Vec<SymbolInformation>,
+    seen: &mut rustc_hash::FxHashSet<(String, u32, u32)>,
+) {
     let query = crate::index::fold(query);
     for (file, index) in ti.files.iter().enumerate() {
         for decl in index.decls.iter().filter(|d| d.routine.is_none() && d.kind != Kind::Component) {
@@ -99,7 +105,8 @@ pub(crate) fn workspace(ti: &TaskIndex, query: &str, out: &mut Vec<SymbolInforma
             }
             let container = index.decls.iter().find(|m| m.kind == Kind::Module && m.module == decl.module);
             let location: Location = ti.location(file, decl.name_span);
-            if out.iter().any(|s| s.location == location) {
+            let place = (location.uri.as_str().to_owned(), location.range.start.line, location.range.start.character);
+            if !seen.insert(place) {
                 continue;
             }
             #[allow(deprecated)]
