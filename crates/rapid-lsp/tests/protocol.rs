@@ -343,3 +343,16 @@ fn hovers_an_optional_argument_with_its_parameter() {
     assert_eq!(hover["range"], range(2, 20, 2, 23));
     client.shutdown();
 }
+
+#[test]
+fn completes_routine_names_in_a_late_binding_string() {
+    let text = "MODULE M\n  PROC station1()\n  ENDPROC\n  PROC p()\n    % \"st\" %;\n  ENDPROC\nENDMODULE\n";
+    let folder = Folder::new("late_binding", &[("M.mod", text)]);
+    let mut client = Client::start(&folder, json!({}));
+    let m = folder.uri("M.mod");
+    client.open(&m, text);
+    // Inside `"st"` (line 4, after `st` at column 9): the task's routines and modules.
+    let names = labels(&client.request("textDocument/completion", client::at(&m, 4, 9)));
+    assert_eq!(names, ["M", "station1", "p"]);
+    client.shutdown();
+}

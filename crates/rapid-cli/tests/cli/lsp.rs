@@ -263,3 +263,17 @@ fn neovim_shows_the_diagnostic_and_jumps_to_a_definition_in_another_module() {
     assert!(result["buffer"].as_str().unwrap().ends_with("Tools.mod"));
     assert_eq!(result["cursor"], json!([2, 11]));
 }
+
+#[test]
+fn a_manifests_tasks_and_signals_are_read() {
+    // Three tasks and an eio.cfg: clean for both tools.
+    assert_eq!(same_as_check(&repo_root().join("examples/press_cell_project")), 0);
+    // An undeclared name in the second task's module is found by both.
+    let dir = scratch_in("lsp", "manifest_error");
+    copy_dir(&repo_root().join("examples/press_cell_project"), dir.path());
+    let module = dir.join("src/Press.mod");
+    let text = std::fs::read_to_string(&module).expect("module");
+    std::fs::write(&module, text.replacen("ENDMODULE", "PROC broken()\n  nowhere := 1;\nENDPROC\nENDMODULE", 1))
+        .expect("write");
+    assert_eq!(same_as_check(dir.path()), 1);
+}
