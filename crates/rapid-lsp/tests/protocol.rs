@@ -356,3 +356,53 @@ fn completes_routine_names_in_a_late_binding_string() {
     assert_eq!(names, ["M", "station1", "p"]);
     client.shutdown();
 }
+
+/// Broken and unusual text: Latin-1 letters, an unterminated string, a statement cut
+/// short, an unclosed aggregate, a stray `\`, a comment, a record chain.
+const ROUGH: &str = "MODULE Rough
+  ! Größe: größer
+  RECORD r
+    pos p;
+  ENDRECORD
+  VAR r rr;
+  PERS num größe := 1;
+  PROC p(\\num opt, INOUT num x)
+    VAR num a{3};
+    a{1} := rr.p.x + größe;
+    TPWrite \"unterminated
+    MoveL [[1,2,3],
+    IF a{1} > 0 THEN x := 1; ENDIF
+    \\ ;
+    %\"p\"% ;
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn every_position_of_rough_text_gets_an_answer() {
+    let folder = Folder::new("rough", &[("Rough.mod", ROUGH)]);
+    let mut client = Client::start(&folder, json!({}));
+    let uri = folder.uri("Rough.mod");
+    client.open(&uri, ROUGH);
+    let methods =
+        ["textDocument/hover", "textDocument/definition", "textDocument/completion", "textDocument/signatureHelp"];
+    for (line, text) in ROUGH.lines().enumerate() {
+        // Every UTF-16 column of the line, and one past its end.
+        for character in 0..=text.encode_utf16().count() as u32 + 1 {
+            for method in methods {
+                client.request(method, client::at(&uri, line as u32, character));
+            }
+        }
+    }
+    for method in ["textDocument/semanticTokens/full", "textDocument/foldingRange", "textDocument/documentSymbol"] {
+        client.request(method, json!({"textDocument": {"uri": uri}}));
+    }
+    // The Latin-1 name resolves across its uses: declaration and one use.
+    let refs = client.request(
+        "textDocument/references",
+        json!({"textDocument": {"uri": uri}, "position": {"line": 9, "character": 22}, "context": {"includeDeclaration": true}}),
+    );
+    let ranges: Vec<Value> = refs.as_array().unwrap().iter().map(|r| r["range"].clone()).collect();
+    assert_eq!(ranges, [range(6, 11, 6, 16), range(9, 21, 9, 26)]);
+    client.shutdown();
+}
