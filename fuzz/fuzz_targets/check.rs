@@ -25,16 +25,8 @@ fuzz_target!(|data: &[u8]| {
         assert_eq!(first, second, "check is not deterministic");
         for diag in &first {
             let text = &files[diag.file].text;
-            assert!(
-                diag.span.start <= diag.span.end,
-                "inverted span {:?}",
-                diag.span
-            );
-            assert!(
-                diag.span.end as usize <= text.len(),
-                "span {:?} past the end",
-                diag.span
-            );
+            assert!(diag.span.start <= diag.span.end, "inverted span {:?}", diag.span);
+            assert!(diag.span.end as usize <= text.len(), "span {:?} past the end", diag.span);
         }
     }
 });

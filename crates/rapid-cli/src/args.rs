@@ -18,8 +18,12 @@ pub(crate) enum Command {
     Check(CheckArgs),
     /// Run a RAPID program (or every task of a backup) on the virtual controller.
     Run(Box<RunArgs>),
+    /// Serve the virtual controller over Robot Web Services (RWS 1.0, RobotWare 6).
+    Serve(ServeArgs),
     /// List every diagnostic code with its severity and meaning.
     Codes,
+    /// Lay out RAPID modules as RobotStudio's editor does (every token and comment kept).
+    Fmt(FmtArgs),
     /// Serve the Language Server Protocol over stdin/stdout (for editors).
     Lsp(LspArgs),
 }
@@ -29,6 +33,42 @@ pub(crate) struct LspArgs {
     /// Accepted for editors that pass it: stdio is the only transport.
     #[arg(long)]
     pub(crate) stdio: bool,
+}
+
+#[derive(Debug, Args)]
+pub(crate) struct FmtArgs {
+    /// Write nothing: print the files that would change and exit 1 if there are any.
+    #[arg(long)]
+    pub(crate) check: bool,
+
+    /// Module files or folders of modules (not their subfolders) to format in place;
+    /// `-` formats stdin to stdout. Options come from the `[fmt]` table of the nearest
+    /// rapid.toml at or above each file (docs/fmt.md).
+    #[arg(required = true, value_name = "PATH")]
+    pub(crate) paths: Vec<PathBuf>,
+}
+
+#[derive(Debug, Args)]
+pub(crate) struct ServeArgs {
+    /// Where to listen (default 127.0.0.1:80, RobotWare's port).
+    #[arg(long, value_name = "HOST:PORT")]
+    pub(crate) bind: Option<String>,
+
+    /// The clock is the wall clock, computing included.
+    #[arg(long, conflicts_with = "speed")]
+    pub(crate) realtime: bool,
+
+    /// Waits take 1/N of their wall-clock time (default 1: paced to the wall clock).
+    #[arg(long, value_name = "N")]
+    pub(crate) speed: Option<f64>,
+
+    /// More users, one `name:password` a line, besides "Default User"/"robotics".
+    #[arg(long, value_name = "FILE")]
+    pub(crate) users: Option<PathBuf>,
+
+    /// The program: as for `rapid run`.
+    #[arg(required = true)]
+    pub(crate) paths: Vec<PathBuf>,
 }
 
 #[derive(Debug, Args)]
@@ -193,4 +233,6 @@ pub(crate) enum Format {
     Human,
     /// One JSON array of diagnostics.
     Json,
+    /// One SARIF 2.1.0 log, for code scanning (see docs/ci.md).
+    Sarif,
 }

@@ -12,7 +12,6 @@ mod backup;
 mod glob;
 mod manifest;
 mod manifest_units;
-mod moc_units;
 mod program_file;
 
 use std::fs;
@@ -26,9 +25,9 @@ use rapid_syntax::Span;
 use rustc_hash::FxHashSet;
 
 pub(crate) use self::backup::TaskFolder;
-pub(crate) use self::manifest_units::{TaskConveyor, TaskUnit};
-pub(crate) use self::moc_units::read as read_moc_units;
 use self::program_file::{Entry, ProgramFile};
+pub(crate) use rapid_controller::boot::cell::{TaskConveyor, TaskUnit};
+pub(crate) use rapid_controller::boot::moc_units::read as read_moc_units;
 
 /// Extensions of RAPID module files, compared without regard to case.
 pub(crate) const MODULE_EXTENSIONS: &[&str] = &["mod", "modx", "sys", "sysx", "prg"];
@@ -80,6 +79,18 @@ pub(crate) struct Inputs {
 }
 
 impl Inputs {
+    /// What sets the system's robots up (`rapid_controller::boot`).
+    pub(crate) fn cell(&self) -> rapid_controller::boot::cell::Cell<'_> {
+        rapid_controller::boot::cell::Cell {
+            syspar: &self.syspar,
+            robot: self.robot.as_deref(),
+            robot_bases: &self.robot_bases,
+            task_robots: &self.task_robots,
+            units: &self.units,
+            conveyors: &self.conveyors,
+        }
+    }
+
     /// Every file, modules first, then program files, then configuration files: the
     /// table diagnostics index.
     pub(crate) fn table(&self) -> Vec<&SourceInput> {
@@ -263,7 +274,7 @@ impl Collector {
         if let Some(sys) = &sys {
             self.add_home_modules(folder, sys, &task.name, &modules);
             // The controller refuses a configuration that gives one robot two tasks.
-            if let Err(found) = crate::robots::numbers(sys, &self.syspar, &[]) {
+            if let Err(found) = rapid_controller::boot::robots::numbers(sys, &self.syspar, &[]) {
                 self.config_finding(found.domain, found.line, found.message);
             }
         }
@@ -343,7 +354,7 @@ impl Collector {
             }
             "MOC" => {
                 // External units RobotWare's way; each is known to programs by its name.
-                let moc = moc_units::read(&parsed);
+                let moc = read_moc_units(&parsed);
                 let names = moc.units.iter().map(|u| u.unit.name.clone());
                 self.predefined.extend(names.map(|name| PredefinedData { name, type_name: "mecunit".to_owned() }));
                 self.units.extend(moc.units);
@@ -505,6 +516,13 @@ impl Collector {
                 continue;
             }
             let module_path = program_file::resolve(folder, &name);
+            // A program lists modules; RobotWare has no nested programs, so a listed
+            // `.pgf` is refused here rather than read (and parsed) as a module.
+            if file_kind(&module_path) == Some(FileKind::Program) {
+                let message = format!("`{name}` is a program file; a program file lists modules, not programs");
+                self.program_diagnostics.push(entry_diagnostic(program_idx, span, message));
+                continue;
+            }
             if let Err(err) = self.add_module(&module_path) {
                 let message =
                     format!("cannot read module `{}` listed here: {}", module_path.display(), describe_io_error(&err));

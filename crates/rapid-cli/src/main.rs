@@ -10,11 +10,9 @@ mod motion_out;
 mod pace;
 mod render;
 mod report;
-mod robots;
 mod save;
 mod stimulus;
 mod trace;
-mod virtual_io;
 
 use std::io::{self, Write};
 use std::process::ExitCode;

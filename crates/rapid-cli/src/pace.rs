@@ -24,12 +24,12 @@ pub(crate) struct Pacer {
     anchor: Option<(Instant, f64)>,
 }
 
-impl Pacer {
+impl rapid_controller::WallClock for Pacer {
     /// The controller clock moves from `from` to `to` (a wait). When `paced`, sleeps
     /// until the wall clock reaches `to` (never past `limit`, the `--max-time`) and
     /// returns the clock then, which is later than `to` when the wall clock was ahead;
     /// otherwise returns `to` and lets the next paced stretch start a new anchor.
-    pub(crate) fn wait(&mut self, paced: bool, from: f64, to: f64, limit: f64) -> f64 {
+    fn wait(&mut self, paced: bool, from: f64, to: f64, limit: f64) -> f64 {
         if !paced {
             self.anchor = None;
             return to;
@@ -46,10 +46,16 @@ impl Pacer {
         let now = clock0 + wall0.elapsed().as_secs_f64();
         to.max(now.min(limit))
     }
+
+    fn interrupted(&self) -> bool {
+        crate::interrupt::requested()
+    }
 }
 
 #[cfg(test)]
 mod tests {
+    use rapid_controller::WallClock;
+
     use super::*;
 
     #[test]

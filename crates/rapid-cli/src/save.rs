@@ -15,12 +15,24 @@ use rapid_syntax::source::{decode, Encoding};
 /// Module). Every file is tried even when one fails, so one unwritable module does
 /// not cost the others their values; the failures are reported together.
 pub(crate) fn save_persistents(loaded: &rapid_vm::Loaded, files: &[SourceInput]) -> anyhow::Result<()> {
+    save_persistents_where(loaded, files, &|_| true)
+}
+
+/// [`save_persistents`] of the persistents `keep` names by their index in
+/// `loaded.persistents` (`rapid serve` saves those that changed since boot).
+pub(crate) fn save_persistents_where(
+    loaded: &rapid_vm::Loaded,
+    files: &[SourceInput],
+    keep: &dyn Fn(usize) -> bool,
+) -> anyhow::Result<()> {
     let mut failures = Vec::new();
     for (file, input) in files.iter().enumerate() {
         let sites: Vec<_> = loaded
             .persistents
             .iter()
-            .filter(|s| s.file == file)
+            .enumerate()
+            .filter(|(idx, s)| s.file == file && keep(*idx))
+            .map(|(_, s)| s)
             .filter_map(|s| loaded.vm.global(s.global).map(|v| (s, v)))
             .collect();
         let Some(new_text) = rapid_vm::persist::rewrite(&input.text, &sites) else { continue };

@@ -21,11 +21,13 @@
 
 use std::ops::Range;
 
-use crate::{line_of, Attr, AttrValue, CfgError, CfgFile, Header, Instance, Section};
+use crate::{Attr, AttrValue, CfgError, CfgFile, Header, Instance, Section};
 
 /// Parses a `.cfg` file's text.
 pub fn parse(text: &str) -> CfgFile {
-    let mut reader = Reader { file: CfgFile { text: text.to_owned(), ..CfgFile::default() }, seen_content: false };
+    let line_starts = std::iter::once(0).chain(text.match_indices('\n').map(|(at, _)| at + 1)).collect();
+    let mut reader =
+        Reader { file: CfgFile { text: text.to_owned(), ..CfgFile::default() }, seen_content: false, line_starts };
     let lines = physical_lines(text);
     let mut idx = 0;
     while idx < lines.len() {
@@ -65,11 +67,20 @@ struct Reader {
     file: CfgFile,
     /// Whether a non-blank line came before (the header must be the first).
     seen_content: bool,
+    /// Where each line starts: a line number is a binary search, not a count from the
+    /// top of the file for every instance (quadratic in a file of many instances).
+    line_starts: Vec<usize>,
 }
 
 impl Reader {
+    /// The 1-based line of byte `offset`.
+    fn line_of(&self, offset: usize) -> u32 {
+        let line = self.line_starts.partition_point(|&start| start <= offset);
+        u32::try_from(line).unwrap_or(u32::MAX)
+    }
+
     fn error(&mut self, span: Range<usize>, message: impl Into<String>) {
-        let line = line_of(&self.file.text, span.start);
+        let line = self.line_of(span.start);
         self.file.errors.push(CfgError { line, span, message: message.into() });
     }
 
@@ -92,7 +103,7 @@ impl Reader {
         if let Some(name) = type_name(trimmed) {
             self.file.sections.push(Section {
                 name: name.to_owned(),
-                line: line_of(&self.file.text, span.start),
+                line: self.line_of(span.start),
                 span,
                 instances: Vec::new(),
             });
@@ -124,7 +135,7 @@ impl Reader {
             }
             kept.push(attr);
         }
-        let line = line_of(&self.file.text, start);
+        let line = self.line_of(start);
         let Some(section) = self.file.sections.last_mut() else {
             self.error(start..end, "an instance before any type line (`EIO_SIGNAL:`); it is ignored");
             return;

@@ -137,14 +137,16 @@ impl Sys {
 }
 
 /// At most 20 tasks (RAPID overview, multitasking).
-const MAX_TASKS: usize = 20;
+const MAX_TASKS: usize = rapid_limits::TASKS;
 
 /// Reads the tasks and task modules of a SYS file.
 pub fn read(file: &CfgFile) -> Sys {
     let mut sys = Sys::default();
+    // Names seen, lower-cased: finding a duplicate must not be a scan per task.
+    let mut names = std::collections::HashSet::new();
     for inst in file.instances("CAB_TASKS") {
         if let Some(task) = task(file, inst, &mut sys.errors) {
-            if sys.task(&task.name).is_some() {
+            if !names.insert(task.name.to_ascii_lowercase()) {
                 error(file, &mut sys.errors, inst, format!("task `{}` is configured twice", task.name));
                 continue;
             }
@@ -157,7 +159,10 @@ pub fn read(file: &CfgFile) -> Sys {
             error(file, &mut sys.errors, inst, format!("at most {MAX_TASKS} tasks; {extra} more are configured"));
         }
     }
-    for inst in file.instances("CAB_TASKS") {
+    // The system-wide limit first: over it the system is refused, and the foreground
+    // chains of a thousand tasks are not followed (each check walks the chain).
+    let tasks = if sys.tasks.len() > MAX_TASKS { 0 } else { usize::MAX };
+    for inst in file.instances("CAB_TASKS").take(tasks) {
         let (Some(name), Some(value)) = (inst.name(), foreground_attr(inst).and_then(|a| a.value.as_ref())) else {
             continue;
         };

@@ -424,3 +424,27 @@ EIO_CROSS:
     let eio = eio::read(&parse(&chain));
     assert!(eio.errors.is_empty(), "{:?}", eio.errors);
 }
+
+/// Line numbers come from a table of line starts, not a count from the top for every
+/// instance (quadratic: a SYS.cfg of a thousand tasks took minutes to check). Each
+/// instance here is a blank line and its `-Name` line, after the 3-line header, so
+/// instance i (from 0) is on line 5 + 2i; a duplicate at the end is found, on its line.
+#[test]
+fn many_instances_keep_their_lines_and_duplicates() {
+    let mut text = String::from("SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n");
+    for i in 0..5000 {
+        text.push_str(&format!("\n      -Name \"T_{i}\" -Type \"NORMAL\"\n"));
+    }
+    text.push_str("\n      -Name \"t_7\" -Type \"NORMAL\"\n");
+    let file = rapid_config::parse(&text);
+    let section = &file.sections[0];
+    assert_eq!(section.instances.len(), 5001);
+    assert_eq!(section.instances[0].line, 5);
+    assert_eq!(section.instances[4999].line, 5 + 2 * 4999);
+    let sys = rapid_config::sys::read(&file);
+    let duplicate: Vec<_> = sys.errors.iter().filter(|e| e.message.contains("configured twice")).collect();
+    assert_eq!(duplicate.len(), 1, "{:?}", sys.errors);
+    assert_eq!(duplicate[0].line, 5 + 2 * 5000);
+    // Over the task limit: that one finding, and no foreground checks past it.
+    assert!(sys.errors.iter().any(|e| e.message == "at most 20 tasks; 4980 more are configured"), "{:?}", sys.errors);
+}

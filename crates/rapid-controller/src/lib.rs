@@ -1,19 +1,41 @@
-//! rapid-controller: the task system of the virtual controller (§1.20). Several
-//! program tasks, each its own `rapid_vm::Vm`, run pseudo-parallel: round-robin one
-//! statement each among the busy tasks of the top level, a background task only
-//! while the tasks it stands behind are idle. What tasks share lives here and is
-//! handed to the task that runs: the I/O system and sync points
-//! (`rapid_vm::builtins::Shared`) and the global persistents ([`pers::PersStore`]).
+//! rapid-controller: the running system of the virtual controller, which every front
+//! end uses.
 //!
-//! No IO of its own: output and operator input go through the `Host` the caller gives.
+//! - [`boot`] assembles it: `boot::system::boot` takes the tasks' loaded programs and
+//!   the configuration around them and builds the [`Controller`] at power on (tasks,
+//!   the one I/O system, the robots, the program operations).
+//! - [`Controller::run_until`] is the one run loop: to the end or a bound, the clock
+//!   moved under a [`ClockPolicy`] with the front end's [`WallClock`].
+//! - A system of one task without system inputs or outputs runs alone (`alone.rs`):
+//!   its VM in slices, as fast as the interpreter. Several tasks are the task system
+//!   of §1.20 (`schedule`): round-robin one statement each among the busy tasks of the
+//!   top level, a background task only while the tasks it stands behind are idle.
+//!   What tasks share lives here and is handed to the task that runs: the I/O system
+//!   and sync points (`rapid_vm::builtins::Shared`) and the global persistents
+//!   ([`pers::PersStore`]).
+//! - [`ops`] holds the program operations (stop, start, motors, system signals).
+//!
+//! What it must not know: no IO of its own (no files, sockets or terminal; the front
+//! end reads the inputs and the stimulus and hands them over as data), no wall clock
+//! (the front end's [`WallClock`]), no command-line options, output formats (trace,
+//! report, logs) or exit statuses. Output and operator input go through the `Host`
+//! the caller gives.
 
+mod alone;
 pub mod api;
+pub mod boot;
 pub mod ops;
 pub mod pers;
+mod power_on;
+pub mod run;
 pub mod schedule;
 pub mod task;
+#[cfg(test)]
+mod test_support;
 mod types;
 
 pub use ops::{ProgramState, StartMode, StopKind};
+pub use power_on::EventRoutineFailure;
+pub use run::{Bound, ClockPolicy, RunBounds, WallClock};
 pub use schedule::{Controller, SystemExit};
 pub use task::{TaskEnd, TaskKind, TaskSpec, TrustLevel};

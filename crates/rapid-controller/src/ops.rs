@@ -113,6 +113,9 @@ pub struct Operations {
     watch_motion: bool,
     /// Which tasks' robots stood still when the outputs were last shown.
     still_shown: Vec<bool>,
+    /// The I/O configuration has system inputs or outputs: the program is operated
+    /// between statements, so even a task alone runs a statement at a time.
+    pub(crate) system_signals: bool,
 }
 
 impl Operations {
@@ -144,6 +147,7 @@ impl Controller {
     /// the system does not have).
     pub fn configure_system_signals(&mut self, eio: &Eio, auto: bool) -> Result<(), String> {
         self.ops.auto = auto;
+        self.ops.system_signals = !eio.sys_inputs.is_empty() || !eio.sys_outputs.is_empty();
         self.ops.errors_shown = vec![false; self.tasks.len()];
         self.ops.errors_seen = vec![false; self.tasks.len()];
         let Some(io) = self.io_system() else { return Ok(()) };
@@ -316,6 +320,11 @@ impl Controller {
         true
     }
 
+    /// Whether the motors are on.
+    pub fn motors_on(&self) -> bool {
+        !self.ops.motors_off
+    }
+
     /// Motors on (true) or off. Motors off stops a running program.
     // uncertain: motors off while the program runs stops it as a quick stop would
     // (the robot cannot move); the controller logs more than we do.
@@ -463,7 +472,7 @@ impl Controller {
         }
     }
 
-    fn hooks_of(&self, shelf: &str, idx: usize) -> Vec<String> {
+    pub(crate) fn hooks_of(&self, shelf: &str, idx: usize) -> Vec<String> {
         self.ops
             .hooks
             .iter()

@@ -91,12 +91,21 @@ pub struct Controller {
     maps: Vec<Vec<TypeMap>>,
     /// The controller clock, seconds.
     pub time: f64,
-    /// Basic steps (statements) executed, all tasks together.
+    /// Basic steps (statements) executed, all tasks together; a task run alone counts
+    /// its VM's instructions ([`Controller::runs_alone`]).
     pub steps: u64,
     /// Set when a static task's stop stopped the NORMAL tasks.
     pub system_stop: Option<SystemStop>,
     /// Each task's STOP event routines, run when it stops (by index).
     pub stop_routines: Vec<Vec<String>>,
+    /// The STOP event routine in which a task failed (its index, the routine), when one
+    /// did: its error is the task's [`TaskEnd::Failed`].
+    pub failed_stop_routine: Option<(usize, String)>,
+    /// A task run alone (`alone.rs`): the instructions executed when the clock was last
+    /// charged for computing.
+    pub(crate) charged: Option<u64>,
+    /// The run's bound on steps, if it has one ([`Controller::set_step_bound`]).
+    pub(crate) step_bound: Option<u64>,
     /// Instructions run since the last NORMAL task ended.
     drained: u64,
     /// Run mode: the cycles each NORMAL task runs (1: cycle mode; 0: continuous
@@ -167,6 +176,9 @@ impl Controller {
             steps: 0,
             system_stop: None,
             stop_routines,
+            failed_stop_routine: None,
+            charged: None,
+            step_bound: None,
             drained: 0,
             cycles: 1,
             cycles_ended,
@@ -242,9 +254,17 @@ impl Controller {
         outcome
     }
 
+    /// Hands the state the tasks share (the I/O system, the stimulus, the task list) to
+    /// task `idx`'s VM, or takes it back when called again: what runs on the task
+    /// outside [`Controller::run`] (finishing its robot's last moves, which set
+    /// outputs and bring the I/O system to the end of the motion) sees the system.
+    pub fn exchange_shared_with(&mut self, idx: usize) {
+        self.tasks[idx].loaded.vm.exchange_shared(&mut self.shared);
+    }
+
     /// Answers the request a task made of the controller (another task's data or
     /// robot), if one waits; the asking task is woken to read the reply.
-    fn serve_request(&mut self, host: &mut dyn Host) {
+    pub(crate) fn serve_request(&mut self, host: &mut dyn Host) {
         use rapid_vm::builtins::tasking::{OtherRobotState, Reply, Request};
         let Some((who, request)) = self.shared.tasking.request.take() else { return };
         let reply = match request {
@@ -348,7 +368,14 @@ impl Controller {
     }
 
     /// Runs at most `budget` basic steps (statements), all tasks together.
+    /// A task run alone ([`Controller::runs_alone`]) counts instructions rather than
+    /// statements, as its VM runs in slices.
     pub fn run(&mut self, host: &mut dyn Host, budget: u64) -> SystemExit {
+        if self.runs_alone() {
+            return self.run_alone(host, budget);
+        }
+        // Statements are charged one by one here; a task alone again starts afresh.
+        self.charged = None;
         let mut remaining = budget;
         while remaining > 0 {
             self.operate(host);
@@ -480,10 +507,11 @@ impl Controller {
 
     /// The STOP event routines of a task that stopped (EVENT_STOP, 3); an error in
     /// one is the task's failure.
-    fn run_stop_routines(&mut self, idx: usize, host: &mut dyn Host) {
+    pub(crate) fn run_stop_routines(&mut self, idx: usize, host: &mut dyn Host) {
         for routine in self.stop_routines[idx].clone() {
             if let Err(unhandled) = self.run_event_routine(idx, host, &routine, 3) {
                 self.tasks[idx].state = State::Ended(TaskEnd::Failed(unhandled));
+                self.failed_stop_routine = Some((idx, routine));
                 return;
             }
         }
@@ -494,7 +522,7 @@ impl Controller {
     /// entry routine again. EXIT ends a task for good (no restart is allowed).
     // uncertain: STATIC and SEMISTATIC tasks run in continuous mode on the controller,
     // so the end of main starts main again rather than stopping the task.
-    fn cycle_end(&mut self, idx: usize, end: TaskEnd) -> State {
+    pub(crate) fn cycle_end(&mut self, idx: usize, end: TaskEnd) -> State {
         let task = &mut self.tasks[idx];
         if task.loaded.vm.ended_by_exit() {
             return State::Ended(end);
@@ -515,7 +543,7 @@ impl Controller {
 
     /// A task ended: the others see it no longer executing; a static task's stop
     /// applies its trust level.
-    fn after_end(&mut self, idx: usize) {
+    pub(crate) fn after_end(&mut self, idx: usize) {
         self.ops.outputs_stale = true;
         let name = self.tasks[idx].spec.name.clone();
         self.shared.tasking.set_executing(&name, false);
@@ -537,7 +565,7 @@ impl Controller {
 
     /// Everything a waiting task may be waiting for: signal changes, sync points,
     /// semaphores and shared persistents.
-    fn epoch(&self) -> u64 {
+    pub(crate) fn epoch(&self) -> u64 {
         self.shared.io.change_count() as u64 + self.shared.tasking.epoch + self.pers.generation
     }
 

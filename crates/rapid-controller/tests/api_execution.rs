@@ -269,3 +269,29 @@ fn a_stop_ends_a_step_over_at_the_next_statement() {
     assert_eq!(pp_line(&session, "T_ROB1"), line_of(ROBOT, "reg1 := reg1 * scale"));
     assert_eq!(session.call_stack("T_ROB1").map(|s| s.len()), Ok(2));
 }
+
+/// A program of one task runs alone, in slices, as fast as the interpreter; a
+/// breakpoint must stop it all the same, before its statement.
+#[test]
+fn a_breakpoint_stops_a_program_of_one_task() {
+    let text = "MODULE MainModule
+  VAR num n := 0;
+  PROC main()
+    FOR i FROM 1 TO 10 DO
+      n := n + 1;
+    ENDFOR
+    n := n + 100;
+  ENDPROC
+ENDMODULE
+";
+    let mut session = api_common::with_signals(text, &[], &[]);
+    let line = line_of(text, "n := n + 100");
+    assert_eq!(session.set_breakpoint("MainModule.mod", line).map(|at| at.len()), Ok(1));
+    assert!(session.start(StartFrom::Pointer).is_ok());
+    match session.run_until(Until::Stopped, 1_000_000) {
+        RunOutcome::Breakpoint(hit) => assert_eq!(hit.at.line, line),
+        other => panic!("no breakpoint hit: {other:?}"),
+    }
+    // The loop ran its ten rounds; the statement at the breakpoint has not run.
+    assert_eq!(read(&mut session, "T_ROB1/MainModule/n"), "10");
+}

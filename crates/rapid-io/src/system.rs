@@ -14,9 +14,9 @@ use crate::value::{check_time, check_value, to_physical, IoError};
 pub type SignalId = u32;
 
 /// At most this many signals pulse at the same time (manual §2.10).
-pub const MAX_PULSING: usize = 10;
+pub const MAX_PULSING: usize = rapid_limits::PULSES;
 /// At most this many signals have a delayed change pending at the same time (manual §2.10).
-pub const MAX_DELAYED: usize = 20;
+pub const MAX_DELAYED: usize = rapid_limits::DELAYED_ORDERS;
 /// PulseDO without `\PLength` pulses for 0.2 s.
 pub const DEFAULT_PULSE_LENGTH: f64 = 0.2;
 

@@ -54,4 +54,10 @@ pub trait WorkspaceLoader {
     /// Reads the workspace at `root`. An error is shown to the user once, and the
     /// server then treats each open module as a task of its own.
     fn load(&self, root: &Path) -> Result<Workspace, String>;
+
+    /// The formatter's options for module `file` (`rapid fmt`'s: the `[fmt]` table of
+    /// the nearest `rapid.toml`); an error is shown instead of formatting.
+    fn fmt_config(&self, _file: &Path) -> Result<rapid_fmt::Config, String> {
+        Ok(rapid_fmt::Config::default())
+    }
 }

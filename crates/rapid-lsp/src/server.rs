@@ -20,7 +20,7 @@ use serde::de::DeserializeOwned;
 use serde::Serialize;
 
 use crate::analysis::{self, Job, Worker};
-use crate::features::{actions, complete, folding, hover, navigate, semantic, signature, symbols, TaskIndex};
+use crate::features::{actions, complete, folding, format, hover, navigate, semantic, signature, symbols, TaskIndex};
 use crate::workspace::State;
 use crate::{uri, WorkspaceLoader};
 
@@ -43,6 +43,7 @@ pub fn capabilities(pull: bool) -> ServerCapabilities {
             trigger_characters: Some(vec!["(".into(), ",".into(), "\\".into(), " ".into()]),
             ..SignatureHelpOptions::default()
         }),
+        document_formatting_provider: Some(OneOf::Left(true)),
         folding_range_provider: Some(FoldingRangeProviderCapability::Simple(true)),
         code_action_provider: Some(CodeActionProviderCapability::Simple(true)),
         semantic_tokens_provider: Some(SemanticTokensServerCapabilities::SemanticTokensOptions(
@@ -267,6 +268,14 @@ impl Server<'_> {
                 let p: lsp_types::CodeActionParams = params(r.params)?;
                 let diags = p.context.diagnostics;
                 json(in_task(state, &p.text_document.uri, |ti, f| Some(actions::actions(ti, f, &diags))))
+            }
+            req::Formatting::METHOD => {
+                let p: lsp_types::DocumentFormattingParams = params(r.params)?;
+                let uri = p.text_document.uri;
+                let Some((ti, f)) = TaskIndex::of(state, &uri) else { return Err("this document is not open".into()) };
+                let path = uri::to_path(&uri).ok_or("only files can be formatted")?;
+                let config = self.loader.fmt_config(&path)?;
+                json(Some(format::edits(ti.text(f), &config)?))
             }
             req::Rename::METHOD => {
                 let p: lsp_types::RenameParams = params(r.params)?;

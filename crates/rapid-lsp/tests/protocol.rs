@@ -406,3 +406,26 @@ fn every_position_of_rough_text_gets_an_answer() {
     assert_eq!(ranges, [range(6, 11, 6, 16), range(9, 21, 9, 26)]);
     client.shutdown();
 }
+
+#[test]
+fn formats_as_rapid_fmt_does_and_refuses_broken_text() {
+    let text = "module M\nproc p()\ntpwrite \"x\";\nendproc\nendmodule\n";
+    let folder = Folder::new("format", &[("M.mod", text)]);
+    let mut client = Client::start(&folder, json!({}));
+    let m = folder.uri("M.mod");
+    client.open(&m, text);
+    let params = json!({"textDocument": {"uri": m}, "options": {"tabSize": 4, "insertSpaces": true}});
+    let edits = client.request("textDocument/formatting", params.clone());
+    // Reserved words upper case, TPWrite as the catalogue spells it, four spaces a level
+    // (module items one level, statements two); the edit spans the whole text.
+    let formatted = "MODULE M\n    PROC p()\n        TPWrite \"x\";\n    ENDPROC\nENDMODULE\n";
+    assert_eq!(edits, json!([{"range": range(0, 0, 5, 0), "newText": formatted}]));
+    // Formatted already: no edit.
+    client.change(&m, 2, range(0, 0, 5, 0), formatted);
+    assert_eq!(client.request("textDocument/formatting", params.clone()), json!([]));
+    // A syntax error: refused, as rapid fmt refuses it.
+    client.change(&m, 3, range(2, 0, 2, 0), "IF\n");
+    let refused = client.request_error("textDocument/formatting", params);
+    assert!(refused.contains("syntax error"), "{refused}");
+    client.shutdown();
+}

@@ -99,6 +99,7 @@ diagnostic_codes! {
     "E0309" Error   ReadOnlyWrite:             "a write to a constant, a FOR loop variable or a read-only system variable";
     "E0310" Error   ConditionNotBool:          "a condition that is not a bool";
     "E0312" Error   BadArrayDimension:         "an array dimension that is not a positive integer constant";
+    "E0313" Error   ArrayTooLarge:             "an array with more elements than the limit every array shares";
     "E0314" Error   NumLiteralRange:           "a num literal outside the single-precision range of num";
 
     // Routine calls.

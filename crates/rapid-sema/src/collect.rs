@@ -76,7 +76,8 @@ impl Checker<'_> {
                     self.declare_data(decl, Level::Builtin, read_only, &cat.module.arena, cat.text.as_str(), origin);
                 }
                 Item::Routine(routine) => {
-                    self.declare_routine(routine, Level::Builtin, Some(entry.chapter), cat.text.as_str(), origin)
+                    let builtin = Some((entry.chapter, entry.entry.flags));
+                    self.declare_routine(routine, Level::Builtin, builtin, cat.text.as_str(), origin)
                 }
                 _ => {}
             }
@@ -430,7 +431,7 @@ impl Checker<'_> {
         &mut self,
         routine: &Routine,
         level: Level,
-        chapter: Option<&'static str>,
+        builtin_entry: Option<(&'static str, rapid_lib::catalogue::RoutineFlags)>,
         text: &str,
         origin: DeclOrigin,
     ) {
@@ -452,7 +453,8 @@ impl Checker<'_> {
             ret,
             params: params.into(),
             groups,
-            chapter,
+            chapter: builtin_entry.map(|(chapter, _)| chapter),
+            flags: builtin_entry.map(|(_, flags)| flags).unwrap_or_default(),
             has_placeholders,
             origin,
         };

@@ -10,9 +10,6 @@ use crate::codes::Code;
 use crate::expr::{Expect, What};
 use crate::types::{self, ValueClass};
 
-/// Array dimensions larger than this are refused (E0312) rather than believed.
-const MAX_DIM_SIZE: f64 = 1.0e7;
-
 impl Checker<'_> {
     /// Checks one data declaration, module-level or routine data, whose entry in the
     /// data table is `data`.
@@ -111,9 +108,12 @@ impl Checker<'_> {
         }
     }
 
-    /// Dimensions must be positive integer constant expressions.
+    /// Dimensions must be positive integer constant expressions, and the array must fit
+    /// the one limit the interpreter applies too (`rapid_limits::ARRAY_ELEMENTS`), so
+    /// every array `rapid check` accepts, `rapid run` can hold.
     fn check_dims(&mut self, decl: &DataDecl, arena: &Arena) -> [u32; 3] {
         let mut dims = [0u32; 3];
+        let mut sizes = Vec::with_capacity(decl.dims.len());
         for (slot, &dim) in dims.iter_mut().zip(&decl.dims) {
             let expr = arena.expr(dim);
             if matches!(expr.kind, ExprKind::Placeholder(_) | ExprKind::Error) {
@@ -121,7 +121,10 @@ impl Checker<'_> {
             }
             self.expect_value(arena, dim, Expect::scalar(self.core.num), What::Text("an array dimension"));
             match self.const_num(arena, dim) {
-                Some(v) if v >= 1.0 && v.fract() == 0.0 && v <= MAX_DIM_SIZE => *slot = v as u32,
+                Some(v) if v >= 1.0 && v.fract() == 0.0 && v.is_finite() => {
+                    sizes.push(v);
+                    *slot = v.min(f64::from(u32::MAX)) as u32;
+                }
                 Some(v) => {
                     self.diag(
                         Code::BadArrayDimension,
@@ -137,6 +140,13 @@ impl Checker<'_> {
                     );
                 }
             }
+        }
+        let elements = rapid_limits::array_elements(&sizes);
+        if elements > rapid_limits::ARRAY_ELEMENTS as f64 {
+            let name = self.text(decl.name.span);
+            self.diag(Code::ArrayTooLarge, decl.span, rapid_limits::array_too_large(name, elements));
+            // Unknown sizes from here on: nothing downstream sizes anything by them.
+            dims = [0; 3];
         }
         dims
     }

@@ -131,7 +131,9 @@ impl Checker<'_> {
         let text = self.text(span);
         // Only literals near ±3.4E38 are converted for the range check.
         let may_exceed = rapid_syntax::literal::decimal_magnitude_bound(text) >= 38;
-        if may_exceed && !wants_dnum && num_value(text).unwrap_or(0.0).abs() > NUM_MAX {
+        // A literal beyond even f64 (`1e400`) already has the lexer's one error.
+        let value = num_value(text).filter(|v| v.is_finite()).unwrap_or(0.0);
+        if may_exceed && !wants_dnum && value.abs() > NUM_MAX {
             let text = self.text(span);
             self.diag(
                 Code::NumLiteralRange,

@@ -86,6 +86,9 @@ pub struct RoutineInfo {
     pub groups: Rc<[(usize, usize)]>,
     /// The catalogue chapter of a built-in (`None` for user routines).
     pub chapter: Option<&'static str>,
+    /// How a built-in takes some of its arguments (its catalogue entry's flags; none
+    /// for user routines).
+    pub flags: rapid_lib::catalogue::RoutineFlags,
     /// The parameter list holds placeholders, so calls cannot be checked.
     pub has_placeholders: bool,
     /// Where the routine was declared.

@@ -6,9 +6,9 @@ use crate::span::Span;
 use crate::token::{keyword, Placeholder, Token, TokenKind};
 
 /// Identifiers may have at most this many characters (§1.1.2).
-pub const MAX_IDENT_CHARS: usize = 32;
+pub const MAX_IDENT_CHARS: usize = rapid_limits::IDENT_CHARS;
 /// String values may have at most this many characters (§1.1.2).
-pub const MAX_STRING_CHARS: usize = 80;
+pub const MAX_STRING_CHARS: usize = rapid_limits::STRING_CHARS;
 
 /// Streams tokens out of a text.
 pub struct Lexer<'t> {
@@ -358,8 +358,13 @@ impl<'t> Lexer<'t> {
                 frac_digits = self.eat_decimal_digits();
             }
             well_formed &= int_digits + frac_digits > 0;
-            may_overflow = int_digits > 300 || matches!(self.peek_byte(0), Some(b'e' | b'E'));
+            let exponent_start = self.pos;
             well_formed &= self.eat_exponent();
+            // Below 10^(200 + 99) a number is finite: only more integer digits or an
+            // exponent of three digits or more can leave the f64 range (CAM output
+            // writes `9E9` six times a line, which needs no conversion).
+            let exponent_digits = self.text[exponent_start..self.pos].bytes().filter(u8::is_ascii_digit).count();
+            may_overflow = int_digits > 200 || exponent_digits > 2;
         }
         // Letters or digits glued to a number (`1.5E`, `0x1G`, `12abc`) make it malformed.
         well_formed &= self.eat_glued();

@@ -13,9 +13,9 @@ use crate::span::Span;
 use crate::token::{Token, TokenKind, TokenSet};
 
 /// Expressions nested deeper than this are refused (E0122), not recursed into.
-pub const MAX_EXPR_DEPTH: u32 = 256;
+pub const MAX_EXPR_DEPTH: u32 = rapid_limits::EXPR_DEPTH;
 /// Statements nested deeper than this are refused (E0122), not recursed into.
-pub const MAX_STMT_DEPTH: u32 = 256;
+pub const MAX_STMT_DEPTH: u32 = rapid_limits::STMT_DEPTH;
 
 /// The result of parsing one file: always a tree, plus what went wrong.
 #[derive(Debug)]

@@ -82,6 +82,11 @@ pub fn keyword(word: &str) -> Option<TokenKind> {
     if word.len() > LONGEST || word.len() < 2 {
         return None;
     }
+    // Reserved words are letters only: names with digits or `_` (`p10`, `tool0`,
+    // `Target_10`) are never one, and need no comparison.
+    if !word.bytes().all(|b| b.is_ascii_alphabetic()) {
+        return None;
+    }
     let mut upper = [0u8; LONGEST];
     for (slot, byte) in upper.iter_mut().zip(word.bytes()) {
         *slot = byte.to_ascii_uppercase();

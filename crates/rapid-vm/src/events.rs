@@ -40,7 +40,7 @@ pub enum EventKind {
 
 /// The log keeps the newest entries up to this many, like the controller's bounded
 /// event log (its real size per domain is not in the public record: uncertain).
-pub const LOG_CAPACITY: usize = 1000;
+pub const LOG_CAPACITY: usize = rapid_limits::EVENT_LOG_ENTRIES;
 
 /// The event log: entries oldest first, each with a sequence number.
 #[derive(Debug, Default)]

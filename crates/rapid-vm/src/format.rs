@@ -18,7 +18,7 @@ use digits::Digits;
 use std::fmt;
 
 /// A RAPID string holds at most this many characters.
-pub const MAX_STRING_LEN: usize = 80;
+pub const MAX_STRING_LEN: usize = rapid_limits::STRING_CHARS;
 /// Significant digits of the standard format for `num`.
 pub const NUM_SIGNIFICANT_DIGITS: usize = 6;
 /// Significant digits of the standard format for `dnum` `(?)`.

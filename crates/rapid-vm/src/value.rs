@@ -4,7 +4,7 @@
 use rapid_sema::types::TypeId;
 
 /// Strings may hold at most this many characters (§1.1.2).
-pub const MAX_STRING_CHARS: usize = 80;
+pub const MAX_STRING_CHARS: usize = rapid_limits::STRING_CHARS;
 
 /// A RAPID value. Cloning copies, as assignment does in RAPID.
 #[derive(Debug, Clone, PartialEq)]

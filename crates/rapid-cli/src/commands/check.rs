@@ -86,6 +86,7 @@ pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
     match args.format {
         Format::Human => render::human::render(&mut out, &files, &reported, &summary)?,
         Format::Json => render::json::render(&mut out, &files, &reported)?,
+        Format::Sarif => render::sarif::render(&mut out, &files, &reported)?,
     }
     out.flush()?;
 
@@ -103,6 +104,12 @@ fn check_task(inputs: &inputs::Inputs, options: &Options) -> (Vec<Diagnostic>, O
 /// The inputs of a backup's tasks other than the one `inputs` holds.
 fn other_tasks(args: &CheckArgs, inputs: &inputs::Inputs) -> anyhow::Result<Vec<inputs::Inputs>> {
     let (Some(sys), Some(read)) = (&inputs.sys, &inputs.task) else { return Ok(Vec::new()) };
+    // System-wide limits first: a system over the task limit is refused by its
+    // configuration finding (E0701, as `rapid run` refuses it), and its tasks are not
+    // read one by one (1000 tasks would each read the whole backup again).
+    if sys.tasks.len() > rapid_limits::TASKS {
+        return Ok(Vec::new());
+    }
     sys.tasks
         .iter()
         .filter(|task| !task.name.eq_ignore_ascii_case(&read.name))

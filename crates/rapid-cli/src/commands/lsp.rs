@@ -40,6 +40,11 @@ impl WorkspaceLoader for FolderLoader {
         }
         Ok(workspace)
     }
+
+    fn fmt_config(&self, file: &Path) -> Result<rapid_fmt::Config, String> {
+        let folder = file.parent().unwrap_or(Path::new("."));
+        super::fmt_config::Configs::default().for_folder(folder).map_err(|e| format!("{e:#}"))
+    }
 }
 
 fn task(inputs: &Inputs) -> Task {

@@ -2,9 +2,12 @@
 
 mod check;
 mod codes;
+mod fmt;
+mod fmt_config;
 mod lsp;
 mod run;
 mod run_system;
+mod serve;
 mod system;
 
 use std::process::ExitCode;
@@ -43,7 +46,9 @@ pub(crate) fn run(cli: Cli) -> anyhow::Result<ExitStatus> {
             crate::interrupt::install();
             run::run(&args)
         }
+        Command::Serve(args) => serve::run(&args),
         Command::Codes => codes::run(),
         Command::Lsp(_) => lsp::run(),
+        Command::Fmt(args) => fmt::run(&args),
     }
 }

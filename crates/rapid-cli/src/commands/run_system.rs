@@ -1,10 +1,13 @@
-//! `rapid run BACKUP` for a system of several tasks (SYS.cfg `CAB_TASKS`): every task
-//! is loaded from its `RAPID/TASKn` folder, and the controller runs them
-//! pseudo-parallel (`rapid_controller`), sharing the I/O system and the global
-//! persistents. The run ends when every NORMAL task has ended; each task's unhandled
-//! error is reported with the task's name.
+//! `rapid run`'s one path: every program runs under the controller
+//! (`rapid_controller::Controller`). A module, a folder, a `.pgf` or a backup of one
+//! task is a system of one task run alone (the controller runs it in slices,
+//! `Controller::runs_alone`), reported as a program: its error and its event log name
+//! no task. A system of several tasks (SYS.cfg `CAB_TASKS`) has every task loaded
+//! from its `RAPID/TASKn` folder, and the controller runs them pseudo-parallel, sharing
+//! the I/O system and the global persistents. The run ends when every NORMAL task has
+//! ended; each task's unhandled error is reported with the task's name.
 //!
-//! A single task runs here too when the I/O configuration has system inputs or
+//! A single task runs as a system too when the I/O configuration has system inputs or
 //! outputs (`SYSSIG_IN`, `SYSSIG_OUT`): the controller stops and starts the program
 //! on their rising edges and sets the outputs (`rapid_controller::ops`). A program
 //! stopped that nothing in the stimulus starts again ends the run (exit 0).
@@ -14,8 +17,10 @@
 
 use std::io::{self, BufWriter};
 
-use rapid_config::sys::{Sys, TaskType};
-use rapid_controller::{Controller, SystemExit, TaskEnd, TaskKind, TaskSpec, TrustLevel};
+use rapid_controller::boot::system::{self as boot, BootError, BootOptions, Booted};
+use rapid_controller::{
+    Bound, ClockPolicy, Controller, EventRoutineFailure, RunBounds, TaskEnd, TaskKind, TaskSpec, TrustLevel,
+};
 use rapid_sema::{Options, Severity, SourceInput};
 use rapid_vm::{load_with, LoadError};
 
@@ -25,9 +30,6 @@ use crate::commands::system::{self, ConfigFile, TaskFacts, TaskProgram};
 use crate::commands::ExitStatus;
 use crate::inputs::{self, Inputs};
 
-/// Instructions (all tasks together) between checks of the bounds.
-const SLICE: u64 = 1 << 14;
-
 /// One task's inputs, loaded program and configuration.
 struct LoadedTask {
     inputs: Inputs,
@@ -35,17 +37,17 @@ struct LoadedTask {
 }
 
 pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
-    let sys = match first.sys.clone() {
-        Some(sys) if !sys.tasks.is_empty() => sys,
-        // A SYS.cfg that configures no task: the one task read, with the configuration's
-        // event routines.
-        Some(sys) if has_system_signals(&first) => Sys { tasks: one_task_system(&first).tasks, ..sys },
-        None if has_system_signals(&first) => one_task_system(&first),
-        _ => return single::run(args),
-    };
-    let specs = match task_specs(&sys) {
-        Ok(specs) => specs,
-        Err(message) => return refuse(&message),
+    // One task without system inputs or outputs: a program run alone.
+    let alone = boot::is_alone(first.sys.as_ref(), &first.syspar);
+    let name = first.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
+    let entry = first.task.as_ref().and_then(|t| t.entry.clone());
+    let sys = boot::system_of(first.sys.as_ref(), alone, &name, entry.as_deref());
+    let specs = match &sys {
+        Some(sys) if !alone => match boot::task_specs(sys) {
+            Ok(specs) => specs,
+            Err(message) => return refuse(&message),
+        },
+        _ => vec![boot::alone_spec(&name)],
     };
     let mut tasks: Vec<LoadedTask> = Vec::new();
     let mut first = Some(first);
@@ -85,10 +87,12 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     let mut loaded = Vec::new();
     let mut facts: Vec<TaskFacts> = Vec::new();
     for (idx, task) in tasks.iter().enumerate() {
-        let configured = sys.task(&task.spec.name);
-        let entry = match (&args.entry, configured) {
-            (Some(entry), _) if idx == 0 => entry.clone(),
-            (_, Some(config)) => config.entry.clone(),
+        let configured = sys.as_ref().filter(|_| !alone).and_then(|sys| sys.task(&task.spec.name));
+        let own_entry = task.inputs.task.as_ref().and_then(|t| t.entry.as_ref()).filter(|_| alone);
+        let entry = match (&args.entry, configured, own_entry) {
+            (Some(entry), _, _) if idx == 0 => entry.clone(),
+            (_, Some(config), _) => config.entry.clone(),
+            (_, _, Some(entry)) => entry.clone(),
             _ => "main".to_owned(),
         };
         let options = Options { predefined: task.inputs.predefined.clone(), ..Options::default() };
@@ -100,16 +104,25 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
                 return single::report_system_errors(&table, &[system::entry_finding(configured, config)]);
             }
             (Err(err), _, _) => {
-                eprintln!("error: task {} cannot start:", task.spec.name);
+                if !alone {
+                    eprintln!("error: task {} cannot start:", task.spec.name);
+                }
                 return single::report_load_error(err, &task.inputs.modules);
             }
         };
         facts.push(program.analysis.as_deref().map(system::facts).unwrap_or_default());
-        // Not needed to run; freed with the process (see `run`).
+        // The checked program is not needed to run, and the process ends with the run:
+        // its memory goes back to the system then, without the time freeing it would take.
         std::mem::forget(program.analysis.take());
-        single::configure_files(&mut program, args, &task.inputs.modules, task.inputs.root.clone());
-        program.vm.resources_mut().cfgdata.set_config(task.inputs.syspar.clone());
-        program.vm.resources_mut().controller = args.controller_state();
+        let home = single::home(args, task.inputs.root.clone());
+        let syspar = task.inputs.syspar.clone();
+        rapid_controller::boot::task::configure(
+            &mut program,
+            home,
+            &task.inputs.modules,
+            syspar,
+            args.controller_state(),
+        );
         loaded.push((task.spec.clone(), program));
     }
     // What `rapid check` finds about the system as a whole (persistents declared
@@ -120,104 +133,62 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         .zip(&facts)
         .map(|((task, &file_offset), facts)| TaskProgram { name: &task.spec.name, file_offset, facts })
         .collect();
-    let found = system::findings(&sys, config, &programs);
+    let found = sys.as_ref().map(|sys| system::findings(sys, config, &programs)).unwrap_or_default();
     if !found.is_empty() {
         return single::report_system_errors(&table, &found);
     }
-    let mut io = match io_system(&tasks[0].inputs) {
-        Ok(io) => io,
-        Err(message) => return refuse(&message),
+    let modules: Vec<SourceInput> = match args.virtual_io {
+        true => tasks.iter().flat_map(|t| t.inputs.modules.iter().cloned()).collect(),
+        false => Vec::new(),
     };
-    if args.virtual_io {
-        let modules: Vec<SourceInput> = tasks.iter().flat_map(|t| t.inputs.modules.iter().cloned()).collect();
-        if let Err(message) = single::with_virtual_signals(&mut io, &modules) {
-            return refuse(&message);
+    let auto = args.controller_state().mode == rapid_vm::builtins::controller::OpMode::Auto;
+    let options = BootOptions {
+        alone,
+        robot: args.robot.as_deref(),
+        record: args.trace.is_some() || args.report.is_some(),
+        virtual_io: args.virtual_io.then_some(modules.as_slice()),
+        cycles: args.cycles,
+        max_steps: args.max_steps,
+        auto,
+    };
+    let booted =
+        boot::boot(loaded, sys.as_ref(), tasks[0].inputs.cell(), &options, &mut |io| read_stimulus(io, args, alone));
+    let Booted { mut controller, robots: numbers, model_note } = match booted {
+        Ok(booted) => booted,
+        Err(BootError::Refused(message)) => return refuse(&message),
+        Err(BootError::UnknownModel(message)) => {
+            eprintln!("error: {message}");
+            return Ok(ExitStatus::Error);
         }
-    }
-    let (model, model_note) =
-        match crate::motion_out::choose_model(args, tasks[0].inputs.robot.as_deref(), &tasks[0].inputs.syspar) {
-            Ok(chosen) => chosen,
-            Err(message) => {
-                eprintln!("error: {message}");
-                return Ok(ExitStatus::Error);
-            }
-        };
-    let units = tasks[0].inputs.units.clone();
-    // The robot each task moves: its group's ROB_n, else by the tasks' order.
-    let numbers = match crate::robots::numbers(&sys, &tasks[0].inputs.syspar, &tasks[0].inputs.task_robots) {
-        Ok(numbers) => numbers,
-        Err(found) => return refuse(&format!("{}.cfg:{}: {}", found.domain, found.line, found.message)),
+        Err(BootError::Internal(message)) => return Err(anyhow::anyhow!("internal error: {message}")),
     };
-    let mut first_motion = true;
-    for ((spec, program), &number) in loaded.iter_mut().zip(&numbers) {
-        if spec.motion {
-            spec.robot = number.is_some();
-            let own = number.map(|n| crate::motion_out::robot_model(args, &tasks[0].inputs, &spec.name, n, model));
-            let robot = &mut program.vm.resources_mut().robot;
-            // A task moving external units only keeps an arm that never moves (its
-            // robot instructions are refused), so that its units have a state to live in.
-            crate::motion_out::configure(robot, own.unwrap_or(model), args);
-            if let Some(n) = number {
-                crate::motion_out::configure_base(robot, &tasks[0].inputs, n, &spec.name);
-                crate::motion_out::configure_ranges(robot, &tasks[0].inputs.syspar, n);
-            }
-            crate::motion_out::configure_units(robot, &units, Some(&spec.name), first_motion);
-            let conveyors = &tasks[0].inputs.conveyors;
-            let found =
-                crate::motion_out::configure_conveyors(robot, conveyors, io.as_ref(), Some(&spec.name), first_motion);
-            if let Err(message) = found {
-                return refuse(&message);
-            }
-            first_motion = false;
-        }
-    }
-    // The robots work in the work objects the other tasks' units carry (MultiMove).
-    let mut linked: Vec<_> = loaded
-        .iter_mut()
-        .filter(|(spec, _)| spec.motion)
-        .map(|(spec, program)| rapid_vm::builtins::motion::foreign::LinkedTask {
-            name: &spec.name,
-            robot: &mut program.vm.resources_mut().robot,
-        })
-        .collect();
-    rapid_vm::builtins::motion::foreign::link(&mut linked);
-    drop(linked);
-    let mut controller = match Controller::new(loaded, io) {
-        Ok(controller) => controller,
-        Err(message) => return refuse(&message),
-    };
-    controller.set_cycles(args.cycles);
-    if let Err(message) = controller.shared_mut().tasking.number_robots(numbers.clone()) {
-        return refuse(&message);
-    }
-    if let Err(message) = install_stimulus(&mut controller, args) {
-        return refuse(&message);
-    }
-    if let Err(message) = configure_operations(&mut controller, &tasks[0].inputs, &sys, args) {
-        return refuse(&message);
-    }
     let mut host =
         StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers: single::pendant_answers(args)? };
-    for task in &mut controller.tasks {
-        let name = task.spec.name.clone();
-        single::log_start(&mut task.loaded.vm, &name);
+    // Power on and a start from main: every task's POWER_ON, then START event routines
+    // (each task has its routines: the system findings above).
+    if let Err(failure) = controller.power_on(&mut host) {
+        host.flush();
+        let routine = failure.routine.as_str();
+        return match (&failure.unhandled, alone) {
+            (Some(unhandled), true) => {
+                report_event_routine_failure(&controller, &tasks[0].inputs.modules, routine, unhandled)
+            }
+            _ => refuse(&refusal(&controller, &failure)),
+        };
     }
-    // Power on and a start from main: every task's POWER_ON, then START event routines;
-    // STOP event routines run when a task stops (each task has its routines: the
-    // system findings above).
-    controller.stop_routines = controller
-        .tasks
-        .iter()
-        .map(|t| sys.hooks_for(&t.spec.name, "STOP").into_iter().map(str::to_owned).collect())
-        .collect();
-    for shelf in ["POWER_ON", "START"] {
-        if let Err(message) = run_hooks(&mut controller, &mut host, &sys, shelf, |_| true) {
-            host.flush();
-            return refuse(&message);
+    let policy = if args.realtime { ClockPolicy::Realtime } else { ClockPolicy::Virtual };
+    let bounds = RunBounds { max_steps: args.max_steps, max_time: args.max_time };
+    let bounded = controller.run_until(&mut host, &mut crate::pace::Pacer::default(), policy, bounds);
+    host.flush();
+    // A program alone is reported as it stops: what ended it, then its outputs.
+    let alone_status = alone.then(|| report_alone(&controller, &tasks[0].inputs.modules, bounded.as_ref(), args));
+    if alone {
+        if let Some((_, routine)) = controller.failed_stop_routine.clone() {
+            if let Some(TaskEnd::Failed(unhandled)) = controller.tasks[0].end() {
+                return report_event_routine_failure(&controller, &tasks[0].inputs.modules, &routine, unhandled);
+            }
         }
     }
-    let bounded = drive(&mut controller, &mut host, args);
-    host.flush();
     let program_end = controller.time;
     for task in &mut controller.tasks {
         let name = task.spec.name.clone();
@@ -229,160 +200,124 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     }
     let mut cycle = program_end;
     let robot_names: Vec<Option<String>> = numbers.iter().map(|n| n.map(|n| format!("ROB_{n}"))).collect();
-    for (idx, task) in controller.tasks.iter_mut().enumerate() {
+    for idx in 0..controller.tasks.len() {
+        // A program alone finishes its motion with the I/O system in hand: the outputs
+        // its last moves set and the I/O system brought to the motion's end.
+        if alone {
+            controller.exchange_shared_with(idx);
+        }
+        let task = &mut controller.tasks[idx];
         let name = task.spec.name.clone();
         let resources = task.loaded.vm.resources_mut();
         let robot_name = robot_names.get(idx).cloned().flatten();
         let who = (name.as_str(), robot_name.as_deref());
-        cycle = cycle.max(crate::motion_out::finish(resources, program_end, who, model_note.as_deref(), args)?);
-        task.loaded.vm.log_corner_failures();
+        let finished = crate::motion_out::finish(resources, program_end, who, model_note.as_deref(), args);
+        if alone {
+            controller.exchange_shared_with(idx);
+        }
+        cycle = cycle.max(finished?);
+        controller.tasks[idx].loaded.vm.log_corner_failures();
     }
     write_motion_outputs(&mut controller, &tasks, &robot_names, cycle, args)?;
     if controller.tasks.iter_mut().any(|task| task.loaded.vm.resources_mut().controller.warm_start) {
         eprintln!("{}", single::WARM_START);
     }
-    let status = report(&controller, &tasks, bounded);
-    if args.cycles == 1 {
-        note_exit_cycles(&controller);
-    }
-    finish(&controller, &tasks, args)?;
+    let status = match alone_status {
+        Some(status) => status,
+        None => {
+            let status = report(&controller, &tasks, bounded);
+            if args.cycles == 1 {
+                note_exit_cycles(&controller);
+            }
+            status
+        }
+    };
+    finish(&controller, &tasks, args, alone)?;
     Ok(status)
 }
 
-/// Whether the inputs' I/O configuration has system inputs or outputs.
-pub(crate) fn has_system_signals(inputs: &Inputs) -> bool {
-    eio_of(inputs).is_some_and(|eio| !eio.sys_inputs.is_empty() || !eio.sys_outputs.is_empty())
-}
-
-/// The typed view of the inputs' EIO configuration, if they have one.
-fn eio_of(inputs: &Inputs) -> Option<rapid_config::eio::Eio> {
-    let eio = inputs.syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("EIO"))?;
-    Some(rapid_config::eio::read(&eio.1))
-}
-
-/// The system of a single task without a task configuration: one NORMAL motion task.
-fn one_task_system(inputs: &Inputs) -> Sys {
-    let name = inputs.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
-    let entry = inputs.task.as_ref().and_then(|t| t.entry.clone()).unwrap_or_else(|| "main".to_owned());
-    let task = rapid_config::sys::Task {
-        name,
-        task_type: TaskType::Normal,
-        entry,
-        entry_span: None,
-        trust_level: None,
-        motion_task: true,
-        mechanical_unit_group: None,
-        hidden: false,
-        foreground: None,
-        rmq: rapid_config::sys::Rmq::default(),
-        line: 0,
-    };
-    Sys { tasks: vec![task], ..Sys::default() }
-}
-
-/// The system inputs and outputs and the event routines the operations run.
-fn configure_operations(controller: &mut Controller, inputs: &Inputs, sys: &Sys, args: &RunArgs) -> Result<(), String> {
-    let auto = args.controller_state().mode == rapid_vm::builtins::controller::OpMode::Auto;
-    if let Some(eio) = eio_of(inputs) {
-        controller.configure_system_signals(&eio, auto)?;
-    }
-    for shelf in ["STOP", "QSTOP", "RESTART", "START", "STEP"] {
-        let routines = controller
-            .tasks
-            .iter()
-            .map(|t| sys.hooks_for(&t.spec.name, shelf).into_iter().map(str::to_owned).collect())
-            .collect();
-        controller.set_event_routines(shelf, routines);
-    }
-    Ok(())
-}
-
-/// Runs the `shelf` event routines of every task `which` selects.
-fn run_hooks(
-    controller: &mut Controller,
-    host: &mut StdoutHost<'_>,
-    sys: &Sys,
-    shelf: &str,
-    which: impl Fn(usize) -> bool,
-) -> Result<(), String> {
-    let event = rapid_config::sys::SHELVES.iter().position(|s| *s == shelf).map_or(0, |i| i as u8 + 1);
-    for idx in 0..controller.tasks.len() {
-        if !which(idx) {
-            continue;
+/// What ended a program run alone, said as the program's (no task named): a bound,
+/// its unhandled error, ExitCycle in cycle mode. Its exit status.
+fn report_alone(controller: &Controller, files: &[SourceInput], bound: Option<&Bound>, args: &RunArgs) -> ExitStatus {
+    match bound {
+        Some(Bound::Steps(max)) => {
+            eprintln!("error: stopped after {max} steps (--max-steps); the program did not end");
+            return ExitStatus::Failure;
         }
-        let name = controller.tasks[idx].spec.name.clone();
-        for routine in sys.hooks_for(&name, shelf) {
-            match controller.run_event_routine(idx, host, routine, event) {
-                Ok(_) => {}
-                Err(unhandled) => {
-                    let source = controller.tasks[idx].loaded.vm.program_source(unhandled.file);
-                    let (path, line, column) =
-                        single::location(source.map(std::slice::from_ref).unwrap_or(&[]), 0, unhandled.span.start);
-                    let raised = format!("raised in routine {} at {path}:{line}:{column}", unhandled.routine);
-                    return Err(format!(
-                        "{} in the {shelf} event routine {routine} of task {name}, {raised}",
-                        unhandled.error
-                    ));
-                }
-            }
+        Some(Bound::Time(max)) => {
+            eprintln!("error: stopped at {max} s of controller time (--max-time); the program did not end");
+            return ExitStatus::Failure;
         }
+        Some(Bound::Interrupted) => {
+            eprintln!("{}", single::interrupted_at(controller.time));
+            return ExitStatus::Interrupted;
+        }
+        Some(Bound::InternalError) => {
+            eprintln!("internal error: the interpreter failed; please report this program");
+            return ExitStatus::Error;
+        }
+        Some(Bound::Stopped) | None => {}
     }
-    Ok(())
+    let task = &controller.tasks[0];
+    match task.end() {
+        Some(TaskEnd::Failed(unhandled)) if controller.failed_stop_routine.is_none() => {
+            let (path, line, column) = source_location(controller, 0, files, unhandled);
+            eprintln!("error: {}", unhandled.error);
+            eprintln!("  in routine {} at {path}:{line}:{column}", unhandled.routine);
+            eprintln!("  the program stopped (no ERROR handler handled the error)");
+            ExitStatus::Failure
+        }
+        Some(TaskEnd::Failed(_)) => ExitStatus::Failure,
+        Some(TaskEnd::CycleEnded) if args.cycles == 1 => {
+            eprintln!("{}", single::exit_cycle_note("the cycle"));
+            ExitStatus::Success
+        }
+        _ => ExitStatus::Success,
+    }
 }
 
-/// The motion task whose mechanical unit group a task that is no motion task uses
-/// (`-UseMechanicalUnitGroup`). A motion task without the attribute uses `rob1`, `rob2`,
-/// … by its place among the motion tasks. Without the attribute, in a system of one
-/// motion task (no MultiMove), the task uses that task's group, the only one.
-// uncertain: both defaults; RobotWare's own configurations name the group of each
-// motion task, and the attribute is needed in MultiMove systems. The second is what
-// open_abb's controller backup relies on: its LOGGER task, configured without the
-// attribute, streams the robot's CRobT and CJointT.
-fn robot_of(sys: &Sys, task: &rapid_config::sys::Task) -> Option<String> {
-    if task.motion_task {
-        return None;
+/// Where an unhandled error of task `idx` was raised: its file (one of the task's
+/// `files`, or a module loaded at run time), line and column.
+fn source_location(
+    controller: &Controller,
+    idx: usize,
+    files: &[SourceInput],
+    unhandled: &rapid_vm::Unhandled,
+) -> (String, u32, u32) {
+    let loaded_module = controller.tasks[idx].loaded.vm.program_source(unhandled.file);
+    match files.get(unhandled.file).or(loaded_module) {
+        Some(source) => single::location(std::slice::from_ref(source), 0, unhandled.span.start),
+        None => single::location(&[], 0, 0),
     }
-    let mut motion = sys.tasks.iter().filter(|t| t.motion_task).enumerate();
-    let Some(group) = task.mechanical_unit_group.as_deref() else {
-        let only = motion.next().filter(|_| sys.tasks.iter().filter(|t| t.motion_task).count() == 1);
-        return only.map(|(_, t)| t.name.clone());
-    };
-    let uses = |(n, t): &(usize, &rapid_config::sys::Task)| match t.mechanical_unit_group.as_deref() {
-        Some(own) => own.eq_ignore_ascii_case(group),
-        None => format!("rob{}", n + 1).eq_ignore_ascii_case(group),
-    };
-    motion.find(uses).map(|(_, t)| t.name.clone())
 }
 
-/// The tasks of SYS.cfg in configuration order.
-fn task_specs(sys: &Sys) -> Result<Vec<TaskSpec>, String> {
-    sys.tasks
-        .iter()
-        .map(|task| {
-            let trust = match &task.trust_level {
-                None => TrustLevel::default(),
-                Some(text) => TrustLevel::parse(text).ok_or_else(|| {
-                    format!("task {}: unknown -TrustLevel `{text}` (SysFail, SysHalt, SysStop, NoSafety)", task.name)
-                })?,
-            };
-            let kind = match task.task_type {
-                TaskType::Normal => TaskKind::Normal,
-                TaskType::Static => TaskKind::Static,
-                TaskType::SemiStatic => TaskKind::SemiStatic,
-            };
-            Ok(TaskSpec {
-                name: task.name.clone(),
-                kind,
-                trust,
-                foreground: task.foreground.clone(),
-                motion: task.motion_task,
-                robot: task.motion_task,
-                rmq: task.rmq,
-                shared_files: Vec::new(),
-                robot_of: robot_of(sys, task),
-            })
-        })
-        .collect()
+/// An event routine of the start that failed, as a system's refusal says it.
+fn refusal(controller: &Controller, failure: &EventRoutineFailure) -> String {
+    let EventRoutineFailure { task, shelf, routine, unhandled } = failure;
+    let name = &controller.tasks[*task].spec.name;
+    let Some(unhandled) = unhandled else {
+        return format!("task {name} has no procedure `{routine}` for its {shelf} event routine");
+    };
+    let source = controller.tasks[*task].loaded.vm.program_source(unhandled.file);
+    let (path, line, column) =
+        single::location(source.map(std::slice::from_ref).unwrap_or(&[]), 0, unhandled.span.start);
+    let raised = format!("raised in routine {} at {path}:{line}:{column}", unhandled.routine);
+    format!("{} in the {shelf} event routine {routine} of task {name}, {raised}", unhandled.error)
+}
+
+/// An event routine of a program alone failed: said as the program's, and nothing
+/// more of the run is reported.
+fn report_event_routine_failure(
+    controller: &Controller,
+    files: &[SourceInput],
+    routine: &str,
+    unhandled: &rapid_vm::Unhandled,
+) -> anyhow::Result<ExitStatus> {
+    let (path, line, column) = source_location(controller, 0, files, unhandled);
+    eprintln!("error: {}", unhandled.error);
+    eprintln!("  in routine {} at {path}:{line}:{column}", unhandled.routine);
+    eprintln!("  the event routine {routine} stopped (no ERROR handler handled the error)");
+    Ok(ExitStatus::Failure)
 }
 
 fn refuse(message: &str) -> anyhow::Result<ExitStatus> {
@@ -391,87 +326,24 @@ fn refuse(message: &str) -> anyhow::Result<ExitStatus> {
     Ok(ExitStatus::Failure)
 }
 
-/// The I/O system of the backup's EIO.cfg (one for the whole controller).
-fn io_system(inputs: &Inputs) -> Result<Option<rapid_io::IoSystem>, String> {
-    let eio = inputs.syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("EIO"));
-    match eio {
-        Some((_, eio)) => rapid_vm::builtins::io_config::io_system(&rapid_config::eio::read(eio)).map(Some),
-        None => Ok(None),
-    }
-}
+/// A stimulus's input orders, reactions and pendant answers (`rapid_vm::builtins::io`).
+type Stimulus = (Vec<(f64, u32, f64)>, Vec<rapid_vm::builtins::io::Reaction>, Vec<(f64, String)>);
 
-fn install_stimulus(controller: &mut Controller, args: &RunArgs) -> Result<(), String> {
-    let Some(path) = &args.stimulus else { return Ok(()) };
+/// `--stimulus`, read against the system's I/O system `io`.
+fn read_stimulus(io: Option<&rapid_io::IoSystem>, args: &RunArgs, alone: bool) -> Result<Option<Stimulus>, String> {
+    let Some(path) = &args.stimulus else { return Ok(None) };
     let shown = path.display().to_string();
     let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read the stimulus `{shown}`: {e}"))?;
-    let io = &mut controller.shared_mut().io;
-    let Some(system) = &io.system else {
-        return Err(format!("`{shown}`: a stimulus needs an I/O configuration (the system has none: SYSPAR/EIO.cfg in a backup, `io` in a manifest)"));
+    let Some(system) = io else {
+        return Err(if alone {
+            format!(
+                "`{shown}`: a stimulus needs an I/O configuration (a backup with SYSPAR/EIO.cfg, or a manifest with `io`)"
+            )
+        } else {
+            format!("`{shown}`: a stimulus needs an I/O configuration (the system has none: SYSPAR/EIO.cfg in a backup, `io` in a manifest)")
+        });
     };
-    let (orders, reactions, answers) = crate::stimulus::parse(&shown, &text, system)?;
-    io.stimulus = orders.into();
-    io.reactions = reactions;
-    io.answers = answers.into();
-    Ok(())
-}
-
-/// Why the run stopped before the system ended, if a bound stopped it.
-enum Bound {
-    Steps(u64),
-    Time(f64),
-    InternalError,
-    /// The user ended the run (Ctrl-C).
-    Interrupted,
-    /// The program was stopped (a system input) and nothing in the stimulus starts it
-    /// again.
-    Stopped,
-}
-
-/// Runs the system to its end or to a bound.
-fn drive(controller: &mut Controller, host: &mut StdoutHost<'_>, args: &RunArgs) -> Option<Bound> {
-    let mut pacer = crate::pace::Pacer::default();
-    let limit = args.max_time.unwrap_or(f64::INFINITY);
-    loop {
-        if crate::interrupt::requested() {
-            return Some(Bound::Interrupted);
-        }
-        let step = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| controller.run(host, SLICE)));
-        let Ok(exit) = step else { return Some(Bound::InternalError) };
-        if let Some(max) = args.max_steps {
-            if controller.steps > max {
-                return Some(Bound::Steps(max));
-            }
-        }
-        match exit {
-            SystemExit::Ended => return None,
-            SystemExit::Stopped => return Some(Bound::Stopped),
-            SystemExit::Budget => {
-                // While the program talks to the outside world the clock is the wall
-                // clock, computing too: a peer's data and --max-time come in its time.
-                let paced = args.realtime || controller.talks_to_outside_world();
-                let to = pacer.wait(paced, controller.time, controller.time, limit);
-                controller.advance(to - controller.time);
-            }
-            SystemExit::Wait(seconds) => {
-                // While a task talks to the outside world (a socket), the clock runs in
-                // wall-clock time; otherwise it jumps.
-                let paced = args.realtime || controller.talks_to_outside_world();
-                if paced {
-                    host.flush();
-                }
-                let from = controller.time;
-                let to = pacer.wait(paced, from, from + seconds, limit);
-                controller.advance(to - from);
-            }
-        }
-        // The clock moves while tasks compute too (the nominal instruction time): a loop
-        // that never waits is bounded as well.
-        if let Some(max) = args.max_time {
-            if controller.time > max {
-                return Some(Bound::Time(max));
-            }
-        }
-    }
+    crate::stimulus::parse(&shown, &text, system).map(Some)
 }
 
 /// Prints what ended the run badly: a bound, each task's unhandled error, a static
@@ -583,16 +455,23 @@ fn write_motion_outputs(
             (0, true) => crate::motion_out::write_outputs(&outputs, args)?,
             _ => crate::motion_out::write_task_trace(&outputs, args)?,
         }
+        // The recorded path (every planned move of the run) goes back to the system
+        // when the process ends, without the time freeing it piece by piece would take.
+        std::mem::forget(robot);
     }
     Ok(())
 }
 
 /// The logs and saves asked for, after the run.
-fn finish(controller: &Controller, tasks: &[LoadedTask], args: &RunArgs) -> anyhow::Result<()> {
+fn finish(controller: &Controller, tasks: &[LoadedTask], args: &RunArgs, alone: bool) -> anyhow::Result<()> {
     if args.event_log {
         for task in &controller.tasks {
             for event in task.loaded.vm.event_log() {
-                eprintln!("event {} {event}", task.spec.name);
+                // A program alone: its entries name no task.
+                match alone {
+                    true => eprintln!("event {event}"),
+                    false => eprintln!("event {} {event}", task.spec.name),
+                }
             }
         }
     }
@@ -613,7 +492,8 @@ fn finish(controller: &Controller, tasks: &[LoadedTask], args: &RunArgs) -> anyh
             .iter()
             .zip(tasks)
             .map(|(task, input)| crate::elog::TaskEvents {
-                task: &task.spec.name,
+                // A program alone is the controller's main task.
+                task: if alone { crate::elog::MAIN_TASK } else { &task.spec.name },
                 vm: &task.loaded.vm,
                 files: &input.inputs.modules,
             })

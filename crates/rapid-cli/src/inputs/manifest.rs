@@ -23,10 +23,10 @@ use super::glob;
 pub(crate) const FILE_NAME: &str = "rapid.toml";
 
 /// At most 20 tasks (RAPID overview §1.20, multitasking).
-const MAX_TASKS: usize = 20;
+const MAX_TASKS: usize = rapid_limits::TASKS;
 
 /// The longest RAPID identifier.
-const MAX_IDENT: usize = 32;
+const MAX_IDENT: usize = rapid_limits::IDENT_CHARS;
 
 // uncertain: the ranges of ABB's system parameters manual (Controller, Task) as
 // rapid-config reads them from SYS.cfg: at most 3000 bytes and 10 messages.
@@ -68,9 +68,9 @@ pub(crate) struct Manifest {
     pub(crate) name: Option<String>,
     pub(crate) robot: Option<String>,
     /// `[[unit]]`: external mechanical units and the tasks they belong to.
-    pub(crate) units: Vec<super::manifest_units::TaskUnit>,
+    pub(crate) units: Vec<super::TaskUnit>,
     /// `[[conveyor]]`: conveyors for conveyor tracking and the tasks they belong to.
-    pub(crate) conveyors: Vec<super::manifest_units::TaskConveyor>,
+    pub(crate) conveyors: Vec<super::TaskConveyor>,
     /// A motion task's `base` and `orientation`: where its robot stands in the world (mm,
     /// a unit quaternion), by task name.
     pub(crate) robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
@@ -90,6 +90,9 @@ struct RawManifest {
     unit: Vec<Spanned<super::manifest_units::RawUnit>>,
     #[serde(default)]
     conveyor: Vec<Spanned<super::manifest_units::RawConveyor>>,
+    /// `[fmt]`: the formatter's options, read by `rapid fmt` (commands/fmt_config.rs).
+    #[serde(default, rename = "fmt")]
+    _fmt: Option<toml::Table>,
 }
 
 #[derive(Debug, Deserialize)]

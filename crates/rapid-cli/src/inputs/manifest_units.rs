@@ -4,14 +4,10 @@
 
 use std::ops::Range;
 
+use rapid_controller::boot::cell::{TaskConveyor, TaskUnit, RAMP_TIME};
 use rapid_motion::external::{ExternalAxis, ExternalUnit};
 use serde::Deserialize;
 use toml::Spanned;
-
-/// Every axis reaches its highest speed in this time unless the manifest gives an
-/// acceleration (the arm's axes are modelled the same way).
-// uncertain: ABB derives accelerations from the unit's dynamic model; not public.
-pub(super) const RAMP_TIME: f64 = 0.15;
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -40,14 +36,6 @@ struct RawAxis {
     start: Option<Spanned<f64>>,
     base: Option<Spanned<Vec<f64>>>,
     orientation: Option<Spanned<Vec<f64>>>,
-}
-
-/// A unit read from the manifest and the task it belongs to (`None`: the first
-/// motion task).
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct TaskUnit {
-    pub(crate) task: Option<String>,
-    pub(crate) unit: ExternalUnit,
 }
 
 /// Reads the units, reporting each problem with its place through `find`.
@@ -186,22 +174,6 @@ pub(super) struct RawConveyor {
     start_window: Spanned<f64>,
     max_dist: Spanned<f64>,
     active: Option<bool>,
-}
-
-/// A conveyor read from the manifest: its signals by name (checked against the I/O
-/// configuration when the system starts) and its base frame.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct TaskConveyor {
-    pub(crate) task: Option<String>,
-    pub(crate) name: String,
-    pub(crate) sync: String,
-    pub(crate) speed: String,
-    pub(crate) base: [f64; 3],
-    pub(crate) orientation: [f64; 4],
-    pub(crate) start_window: f64,
-    pub(crate) max_dist: f64,
-    /// The conveyor's mechanical unit is active when the system starts.
-    pub(crate) active: bool,
 }
 
 /// Reads the conveyors; `taken` are the unit names already used.

@@ -1,4 +1,5 @@
-//! Turning diagnostics into what users read: text with source excerpts, or JSON.
+//! Turning diagnostics into what users read: text with source excerpts, JSON, or a
+//! SARIF log for code-scanning services.
 //!
 //! Diagnostics carry byte spans; lines and columns are computed here, only for the
 //! files that have something to report. The renderers never panic: a span past the end
@@ -10,6 +11,7 @@
 
 pub(crate) mod human;
 pub(crate) mod json;
+pub(crate) mod sarif;
 
 use std::cell::OnceCell;
 

@@ -115,7 +115,7 @@ impl Session {
         self.anchor = None;
     }
 
-    fn must_be_stopped(&self) -> Result<(), ApiError> {
+    pub(super) fn must_be_stopped(&self) -> Result<(), ApiError> {
         match self.controller.program_state() {
             ProgramState::Stopped => Ok(()),
             other => {
@@ -187,7 +187,7 @@ impl Session {
     }
 
     /// Lets a stop under way reach every task's instruction boundary.
-    fn settle(&mut self) {
+    pub(super) fn settle(&mut self) {
         for _ in 0..MAX_SETTLE_ROUNDS {
             if !matches!(self.controller.program_state(), ProgramState::Stopping { .. }) {
                 return;

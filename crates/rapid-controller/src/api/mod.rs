@@ -12,11 +12,15 @@
 //!
 //! Modules: `debug` (breakpoints, steps, locations), `data` (data and signals by
 //! name), `pendant` (the `Host` the tasks run with), `stream` (subscriptions),
-//! `exec` (run, clock policies, start/stop, program pointers, call stacks).
+//! `exec` (run, clock policies, start/stop, program pointers, call stacks), `panel`
+//! (motors, run mode, the robots' positions, the file devices' folder), `modules`
+//! (list, load, unload a task's modules).
 
 pub mod data;
 pub mod debug;
 mod exec;
+mod modules;
+pub mod panel;
 pub mod pendant;
 pub mod stream;
 
@@ -25,6 +29,7 @@ use std::fmt;
 pub use data::{DataInfo, DataValue};
 pub use debug::{BreakpointHit, Location, StepKind};
 pub use exec::{ClockPolicy, RunOutcome, StackFrame, StartFrom, TaskView, Until};
+pub use panel::MechUnitView;
 pub use pendant::PendingPrompt;
 pub use stream::{Batch, Change, Subscription};
 

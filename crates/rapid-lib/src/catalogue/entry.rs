@@ -29,45 +29,78 @@ pub enum EntryKind {
     ReadOnlyData,
 }
 
-/// One predefined thing: its declaration in RAPID syntax and one line of documentation.
+/// One predefined thing: its declaration in RAPID syntax, one line of documentation,
+/// and for a routine what its signature cannot say about how arguments are passed.
 #[derive(Debug, Clone, Copy)]
 pub struct Entry {
     pub kind: EntryKind,
     pub text: &'static str,
     pub doc: &'static str,
+    pub flags: RoutineFlags,
+}
+
+/// How a built-in routine takes some of its arguments, beyond what RAPID's parameter
+/// syntax can say. Set on an entry with [`Entry::names_data`] and
+/// [`Entry::takes_signals`]; the compiler reads them from the routine it calls.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct RoutineFlags {
+    /// The built-in knows an argument by the name of the data object passed, not only
+    /// by its value: a syncident is the same sync point in every task by its name, a
+    /// taskid names its task (`T_ROB2Id`), a mecunit is the unit of that name, and
+    /// GetDataVal/SetDataVal name data. The call records where each argument came from.
+    pub names_data: bool,
+    /// Its `anytype` parameters take a signal itself rather than the signal's value
+    /// (AliasIO, ValidIO: a signal parameter of a signal type always does).
+    pub takes_signals: bool,
+}
+
+impl RoutineFlags {
+    const NONE: RoutineFlags = RoutineFlags { names_data: false, takes_signals: false };
+}
+
+impl Entry {
+    /// The routine knows arguments by the names of the data passed ([`RoutineFlags::names_data`]).
+    pub const fn names_data(self) -> Entry {
+        Entry { flags: RoutineFlags { names_data: true, ..self.flags }, ..self }
+    }
+
+    /// The routine's `anytype` parameters take signals themselves ([`RoutineFlags::takes_signals`]).
+    pub const fn takes_signals(self) -> Entry {
+        Entry { flags: RoutineFlags { takes_signals: true, ..self.flags }, ..self }
+    }
 }
 
 /// A built-in instruction (`PROC`) or function (`FUNC`).
 pub const fn routine(text: &'static str, doc: &'static str) -> Entry {
-    Entry { kind: EntryKind::Routine, text, doc }
+    Entry { kind: EntryKind::Routine, text, doc, flags: RoutineFlags::NONE }
 }
 
 /// A predefined RECORD or ALIAS type.
 pub const fn type_decl(text: &'static str, doc: &'static str) -> Entry {
-    Entry { kind: EntryKind::TypeDecl, text, doc }
+    Entry { kind: EntryKind::TypeDecl, text, doc, flags: RoutineFlags::NONE }
 }
 
 /// An atomic value type.
 pub const fn atomic(name: &'static str, doc: &'static str) -> Entry {
-    Entry { kind: EntryKind::AtomicValue, text: name, doc }
+    Entry { kind: EntryKind::AtomicValue, text: name, doc, flags: RoutineFlags::NONE }
 }
 
 /// A non-value type.
 pub const fn non_value(name: &'static str, doc: &'static str) -> Entry {
-    Entry { kind: EntryKind::NonValue, text: name, doc }
+    Entry { kind: EntryKind::NonValue, text: name, doc, flags: RoutineFlags::NONE }
 }
 
 /// A semi-value type: `"name base"`.
 pub const fn semi_value(name_and_base: &'static str, doc: &'static str) -> Entry {
-    Entry { kind: EntryKind::SemiValue, text: name_and_base, doc }
+    Entry { kind: EntryKind::SemiValue, text: name_and_base, doc, flags: RoutineFlags::NONE }
 }
 
 /// Predefined data (constants, variables, persistents).
 pub const fn data(text: &'static str, doc: &'static str) -> Entry {
-    Entry { kind: EntryKind::Data, text, doc }
+    Entry { kind: EntryKind::Data, text, doc, flags: RoutineFlags::NONE }
 }
 
 /// A read-only system variable.
 pub const fn read_only(text: &'static str, doc: &'static str) -> Entry {
-    Entry { kind: EntryKind::ReadOnlyData, text, doc }
+    Entry { kind: EntryKind::ReadOnlyData, text, doc, flags: RoutineFlags::NONE }
 }

@@ -65,12 +65,14 @@ pub(crate) const ENTRIES: &[Entry] = &[
         "Waits until an analog output is below or above a value.",
     ),
     routine("FUNC bool TestDI(signaldi Signal)", "TRUE when a digital input is 1."),
-    routine("FUNC bool ValidIO(anytype Signal)", "TRUE when a signal of any type can be accessed without error now."),
+    routine("FUNC bool ValidIO(anytype Signal)", "TRUE when a signal of any type can be accessed without error now.")
+        .takes_signals(),
     // uncertain: SignalName receives the configured name; VAR assumed.
     routine(
         "FUNC signalorigin GetSignalOrigin(anytype Signal, VAR string SignalName)",
         "Tells whether a signal is configured, aliased or unknown, and gives its configured name.",
-    ),
+    )
+    .takes_signals(),
     // ---- I/O devices and networks -------------------------------------------------------
     routine(
         "PROC IODisable(string UnitName, num MaxTime)",
@@ -95,11 +97,14 @@ pub(crate) const ENTRIES: &[Entry] = &[
     routine(
         "PROC AliasIO(anytype FromSignal, VAR anytype ToSignal)",
         "Connects a signal variable declared in RAPID to a configured signal.",
-    ),
-    routine("PROC AliasIOReset(VAR anytype Signal)", "Disconnects a signal variable connected earlier by AliasIO."),
+    )
+    .takes_signals(),
+    routine("PROC AliasIOReset(VAR anytype Signal)", "Disconnects a signal variable connected earlier by AliasIO.")
+        .takes_signals(),
     // uncertain: access modes of the optional outputs assumed VAR.
     routine(
         r#"PROC GetGroupSignalInfo(anytype Signal, \VAR dnum MaxDvalue, \VAR string Label, \VAR string DeviceName)"#,
         "Reads the maximum value, label and device of a digital group signal.",
-    ),
+    )
+    .takes_signals(),
 ];

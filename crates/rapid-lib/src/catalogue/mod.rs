@@ -17,7 +17,7 @@ mod system;
 mod time;
 mod types;
 
-pub use entry::{Entry, EntryKind};
+pub use entry::{Entry, EntryKind, RoutineFlags};
 
 /// Every chapter: (chapter name, its entries).
 pub const ALL_CHAPTERS: &[(&str, &[Entry])] = &[

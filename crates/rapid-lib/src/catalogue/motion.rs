@@ -14,14 +14,14 @@ pub(crate) const ENTRIES: &[Entry] = &[
     routine("FUNC num MaxExtReorientSpeed()", "Returns the highest speed, in deg/s, of the rotating external axes in this task."),
     routine("PROC VelSet(num Override, num Max)", "Scales programmed speeds by Override percent and caps the TCP speed at Max mm/s."),
     routine("PROC SpeedRefresh(num Override)", "Changes the speed override of the ongoing movement, 0..100 percent."),
-    routine("PROC SpeedLimAxis(VAR mecunit MechUnit, num AxisNo, num AxisSpeed)", "Sets a speed limit for one axis, applied when the limiting system input is set."),
+    routine("PROC SpeedLimAxis(VAR mecunit MechUnit, num AxisNo, num AxisSpeed)", "Sets a speed limit for one axis, applied when the limiting system input is set.").names_data(),
     routine("PROC SpeedLimCheckPoint(num RobSpeed)", "Sets a speed limit for the robot check points, applied by a system input."),
     routine(r#"PROC AccSet(num Acc, num Ramp, \num FinePointRamp)"#, "Limits acceleration and its rate of change to percentages of normal."),
     routine(r#"PROC WorldAccLim(\num On | switch Off)"#, "Limits tool acceleration in the world frame to On m/s2, or removes the limit."),
     routine(r#"PROC PathAccLim(bool AccLim, \num AccMax, bool DecelLim, \num DecelMax)"#, "Sets or clears limits on TCP acceleration and deceleration along the path."),
     routine(r#"PROC ConfJ(\switch On | switch Off)"#, "Turns configuration control of joint moves on (default) or off."),
     routine(r#"PROC ConfL(\switch On | switch Off)"#, "Turns configuration monitoring of linear and circular moves on (default) or off."),
-    routine("PROC GripLoad(PERS loaddata Load)", "Declares the payload now held in the gripper."),
+    routine("PROC GripLoad(PERS loaddata Load)", "Declares the payload now held in the gripper.").names_data(),
     routine(r#"PROC SingArea(\switch Wrist | switch LockAxis4 | switch Off)"#, "Chooses how the robot passes near singular points."),
     routine("PROC ActEventBuffer()", "Activates the configured event buffer for this motion task."),
     routine("PROC DeactEventBuffer()", "Deactivates the event buffer for this motion task."),
@@ -41,9 +41,9 @@ pub(crate) const ENTRIES: &[Entry] = &[
     routine(r#"FUNC robtarget ORobT(robtarget OrgPoint, \switch InPDisp | switch InEOffs)"#, "Removes program displacement and/or external axis offsets from a position."),
 
     // ---- Soft servo and tuning ----------------------------------------------------------
-    routine(r#"PROC SoftAct(\VAR mecunit MechUnit, num Axis, num Softness, \num Ramp)"#, "Makes one axis compliant (soft servo), Softness 0..100 percent."),
+    routine(r#"PROC SoftAct(\VAR mecunit MechUnit, num Axis, num Softness, \num Ramp)"#, "Makes one axis compliant (soft servo), Softness 0..100 percent.").names_data(),
     routine(r#"PROC SoftDeact(\num Ramp)"#, "Turns soft servo off for all axes."),
-    routine(r#"PROC TuneServo(VAR mecunit MecUnit, num Axis, num TuneValue, \tunetype Type)"#, "Tunes one servo parameter of an axis, in percent of normal."),
+    routine(r#"PROC TuneServo(VAR mecunit MecUnit, num Axis, num TuneValue, \tunetype Type)"#, "Tunes one servo parameter of an axis, in percent of normal.").names_data(),
     routine("PROC TuneReset()", "Resets all servo tuning to normal."),
     routine("PROC PathResol(num PathSampleTime)", "Changes the geometric path sample time, in percent of the configured value."),
     routine(r#"PROC CirPathMode(\switch PathFrame | switch ObjectFrame | switch CirPointOri | switch Wrist45 | switch Wrist46 | switch Wrist56)"#, "Chooses how the tool is reoriented during circular moves."),
@@ -68,10 +68,10 @@ pub(crate) const ENTRIES: &[Entry] = &[
 
     // ==== §1.8 Motion ======================================================================
     // ---- Positioning instructions -------------------------------------------------------
-    routine(r#"PROC MoveC(\switch Conc, robtarget CirPoint, robtarget ToPoint, \identno ID, speeddata Speed, \num V | num T, zonedata Zone, \num Z, \stoppointdata Inpos, PERS tooldata Tool, \PERS wobjdata WObj, \switch Corr, \PERS loaddata TLoad)"#, "Moves the TCP along a circle through CirPoint to ToPoint."),
-    routine(r#"PROC MoveJ(\switch Conc, robtarget ToPoint, \identno ID, speeddata Speed, \num V | num T, zonedata Zone, \num Z, \stoppointdata Inpos, PERS tooldata Tool, \PERS wobjdata WObj, \PERS loaddata TLoad)"#, "Moves the robot to ToPoint with all axes interpolated together (joint move)."),
-    routine(r#"PROC MoveL(\switch Conc, robtarget ToPoint, \identno ID, speeddata Speed, \num V | num T, zonedata Zone, \num Z, \stoppointdata Inpos, PERS tooldata Tool, \PERS wobjdata WObj, \switch Corr, \PERS loaddata TLoad)"#, "Moves the TCP in a straight line to ToPoint."),
-    routine(r#"PROC MoveAbsJ(\switch Conc, jointtarget ToJointPos, \identno ID, \switch NoEOffs, speeddata Speed, \num V | num T, zonedata Zone, \num Z, \stoppointdata Inpos, PERS tooldata Tool, \PERS wobjdata WObj, \PERS loaddata TLoad)"#, "Moves robot and external axes to absolute axis positions; no displacement applies."),
+    routine(r#"PROC MoveC(\switch Conc, robtarget CirPoint, robtarget ToPoint, \identno ID, speeddata Speed, \num V | num T, zonedata Zone, \num Z, \stoppointdata Inpos, PERS tooldata Tool, \PERS wobjdata WObj, \switch Corr, \PERS loaddata TLoad)"#, "Moves the TCP along a circle through CirPoint to ToPoint.").names_data(),
+    routine(r#"PROC MoveJ(\switch Conc, robtarget ToPoint, \identno ID, speeddata Speed, \num V | num T, zonedata Zone, \num Z, \stoppointdata Inpos, PERS tooldata Tool, \PERS wobjdata WObj, \PERS loaddata TLoad)"#, "Moves the robot to ToPoint with all axes interpolated together (joint move).").names_data(),
+    routine(r#"PROC MoveL(\switch Conc, robtarget ToPoint, \identno ID, speeddata Speed, \num V | num T, zonedata Zone, \num Z, \stoppointdata Inpos, PERS tooldata Tool, \PERS wobjdata WObj, \switch Corr, \PERS loaddata TLoad)"#, "Moves the TCP in a straight line to ToPoint.").names_data(),
+    routine(r#"PROC MoveAbsJ(\switch Conc, jointtarget ToJointPos, \identno ID, \switch NoEOffs, speeddata Speed, \num V | num T, zonedata Zone, \num Z, \stoppointdata Inpos, PERS tooldata Tool, \PERS wobjdata WObj, \PERS loaddata TLoad)"#, "Moves robot and external axes to absolute axis positions; no displacement applies.").names_data(),
     routine(r#"PROC MoveExtJ(\switch Conc, jointtarget ToJointPos, \identno ID, \switch UseEOffs, speeddata Speed, \num T, zonedata Zone, \stoppointdata Inpos)"#, "Moves only external axes, without a TCP, to absolute positions."),
     routine(r#"PROC MoveCAO(robtarget CirPoint, robtarget ToPoint, \identno ID, speeddata Speed, \num T, zonedata Zone, PERS tooldata Tool, \PERS wobjdata WObj, signalao Signal, num Value, \PERS loaddata TLoad)"#, "Circular move that sets an analog output at the middle of the corner path."),
     routine(r#"PROC MoveCDO(robtarget CirPoint, robtarget ToPoint, \identno ID, speeddata Speed, \num T, zonedata Zone, PERS tooldata Tool, \PERS wobjdata WObj, signaldo Signal, dionum Value, \PERS loaddata TLoad)"#, "Circular move that sets a digital output at the middle of the corner path."),
@@ -102,7 +102,7 @@ pub(crate) const ENTRIES: &[Entry] = &[
     routine(r#"PROC TriggIO(VAR triggdata TriggData, num Distance, \switch Start | switch Time, \signaldo DOp | signalgo GOp | signalao AOp | num ProcID, num SetValue | dnum SetDvalue, \num DODelay, \PERS bool Inhib, \PERS anytype InhibSetValue, \triggmode Mode)"#, "Defines a trigger that sets an output at a distance or time along the next path."),
     routine(r#"PROC TriggEquip(VAR triggdata TriggData, num Distance, \switch Start | switch Next, num EquipLag, \signaldo DOp | signalgo GOp | signalao AOp | num ProcID, num SetValue | dnum SetDvalue, \PERS bool Inhib, \PERS anytype InhibSetValue, \triggmode Mode)"#, "Defines a trigger that sets an output early to make up for equipment lag."),
     routine(r#"PROC TriggInt(VAR triggdata TriggData, num Distance, \switch Start | switch Next | switch Time, VAR intnum Interrupt, \PERS bool Inhib, \triggmode Mode)"#, "Defines a trigger that raises an interrupt at a position on the next path."),
-    routine(r#"PROC TriggCheckIO(VAR triggdata TriggData, num Distance, \switch Start | switch Next | switch Time, anytype Signal, opnum Relation, num CheckValue | dnum CheckDvalue, \switch StopMove, VAR intnum Interrupt, \PERS bool Inhib, \triggmode Mode)"#, "Defines a trigger that checks a signal at a position and interrupts if it fails."),
+    routine(r#"PROC TriggCheckIO(VAR triggdata TriggData, num Distance, \switch Start | switch Next | switch Time, anytype Signal, opnum Relation, num CheckValue | dnum CheckDvalue, \switch StopMove, VAR intnum Interrupt, \PERS bool Inhib, \triggmode Mode)"#, "Defines a trigger that checks a signal at a position and interrupts if it fails.").takes_signals(),
     routine(r#"PROC TriggRampAO(VAR triggdata TriggData, num Distance, \switch Start | switch Next, num EquipLag, signalao AOutput, num SetValue, num RampLength, \switch Time, \PERS bool Inhib, \PERS anytype InhibSetValue, \triggmode Mode)"#, "Defines a trigger that ramps an analog output up or down along the path."),
     routine(r#"PROC TriggSpeed(VAR triggdata TriggData, num Distance, \switch Start | switch Next, num ScaleLag, signalao AOp, num ScaleValue, \num DipLag, \signaldo ErrDO, \PERS bool Inhib, \PERS anytype InhibSetValue, \triggmode Mode)"#, "Defines a trigger that drives an analog output in proportion to TCP speed."),
     routine("PROC TriggDataCopy(VAR triggdata Source, VAR triggdata Destination)", "Copies the contents of one triggdata variable into another."),
@@ -128,26 +128,26 @@ pub(crate) const ENTRIES: &[Entry] = &[
     routine("FUNC string RobName()", "Returns the name of the TCP robot controlled by this task, or an empty string."),
 
     // ---- External axes ------------------------------------------------------------------
-    routine("PROC ActUnit(VAR mecunit MechUnit)", "Activates a mechanical unit."),
-    routine("PROC DeactUnit(VAR mecunit MechUnit)", "Deactivates a mechanical unit."),
-    routine("PROC MechUnitLoad(VAR mecunit MechUnit, num AxisNo, PERS loaddata Load)", "Declares the payload carried by an axis of an external mechanical unit."),
+    routine("PROC ActUnit(VAR mecunit MechUnit)", "Activates a mechanical unit.").names_data(),
+    routine("PROC DeactUnit(VAR mecunit MechUnit)", "Deactivates a mechanical unit.").names_data(),
+    routine("PROC MechUnitLoad(VAR mecunit MechUnit, num AxisNo, PERS loaddata Load)", "Declares the payload carried by an axis of an external mechanical unit.").names_data(),
     // uncertain: the public extract shows only the two optionals; an output argument for the margin is assumed.
     routine(r#"PROC GetTorqueMargin(\VAR mecunit MechUnit, \num AxisNo, INOUT num TorqueMargin)"#, "Reads the smallest torque margin of an axis since ResetTorqueMargin."),
     routine(r#"PROC ResetTorqueMargin(\VAR mecunit MechUnit, \num AxisNo)"#, "Restarts the measurement of the smallest torque margin."),
-    routine(r#"FUNC num GetMotorTorque(\VAR mecunit MecUnit, num AxisNo)"#, "Returns the current motor torque of a robot or external axis."),
+    routine(r#"FUNC num GetMotorTorque(\VAR mecunit MecUnit, num AxisNo)"#, "Returns the current motor torque of a robot or external axis.").names_data(),
     // uncertain: access modes of the output arguments assumed INOUT, MecRef VAR.
     routine(r#"FUNC bool GetNextMechUnit(INOUT num ListNumber, INOUT string UnitName, \VAR mecunit MecRef, \INOUT bool TCPRob, \INOUT num NoOfAxes, \INOUT num MecTaskNo, \INOUT num MotPlanNo, \INOUT bool Active, \INOUT num DriveModule, \INOUT bool OKToDeact)"#, "Steps through the mechanical units of the system, returning name and data."),
-    routine("FUNC bool IsMechUnitActive(VAR mecunit MechUnit)", "TRUE when a mechanical unit is active."),
+    routine("FUNC bool IsMechUnitActive(VAR mecunit MechUnit)", "TRUE when a mechanical unit is active.").names_data(),
 
     // ---- Independent axes ---------------------------------------------------------------
-    routine(r#"PROC IndAMove(VAR mecunit MecUnit, num Axis, \robtarget ToAbsPos | num ToAbsNum, num Speed, \num Ramp)"#, "Puts an axis in independent mode and moves it to an absolute position."),
-    routine(r#"PROC IndCMove(VAR mecunit MecUnit, num Axis, num Speed, \num Ramp)"#, "Puts an axis in independent mode and starts it rotating continuously."),
-    routine(r#"PROC IndDMove(VAR mecunit MecUnit, num Axis, num Delta, num Speed, \num Ramp)"#, "Puts an axis in independent mode and moves it by a distance."),
-    routine(r#"PROC IndRMove(VAR mecunit MecUnit, num Axis, \robtarget ToRelPos | num ToRelNum, \switch Short | switch Fwd | switch Bwd, num Speed, \num Ramp)"#, "Puts a rotating axis in independent mode and moves it within one turn."),
-    routine(r#"PROC IndReset(VAR mecunit MecUnit, num Axis, \robtarget RefPos | num RefNum, \switch Short | switch Fwd | switch Bwd | switch Old)"#, "Returns an independent axis to normal mode, optionally moving its range."),
+    routine(r#"PROC IndAMove(VAR mecunit MecUnit, num Axis, \robtarget ToAbsPos | num ToAbsNum, num Speed, \num Ramp)"#, "Puts an axis in independent mode and moves it to an absolute position.").names_data(),
+    routine(r#"PROC IndCMove(VAR mecunit MecUnit, num Axis, num Speed, \num Ramp)"#, "Puts an axis in independent mode and starts it rotating continuously.").names_data(),
+    routine(r#"PROC IndDMove(VAR mecunit MecUnit, num Axis, num Delta, num Speed, \num Ramp)"#, "Puts an axis in independent mode and moves it by a distance.").names_data(),
+    routine(r#"PROC IndRMove(VAR mecunit MecUnit, num Axis, \robtarget ToRelPos | num ToRelNum, \switch Short | switch Fwd | switch Bwd, num Speed, \num Ramp)"#, "Puts a rotating axis in independent mode and moves it within one turn.").names_data(),
+    routine(r#"PROC IndReset(VAR mecunit MecUnit, num Axis, \robtarget RefPos | num RefNum, \switch Short | switch Fwd | switch Bwd | switch Old)"#, "Returns an independent axis to normal mode, optionally moving its range.").names_data(),
     routine("PROC HollowWristReset()", "Resets the wrist axis position on hollow-wrist robots (IRB 5402/5403)."),
-    routine("FUNC bool IndInpos(VAR mecunit MecUnit, num Axis)", "TRUE when an independent axis has reached its position."),
-    routine(r#"FUNC bool IndSpeed(VAR mecunit MecUnit, num Axis, \switch InSpeed | switch ZeroSpeed)"#, "TRUE when an independent axis has reached its set speed or zero speed."),
+    routine("FUNC bool IndInpos(VAR mecunit MecUnit, num Axis)", "TRUE when an independent axis has reached its position.").names_data(),
+    routine(r#"FUNC bool IndSpeed(VAR mecunit MecUnit, num Axis, \switch InSpeed | switch ZeroSpeed)"#, "TRUE when an independent axis has reached its set speed or zero speed.").names_data(),
 
     // ---- Path correction ----------------------------------------------------------------
     routine("PROC CorrCon(VAR corrdescr Descr)", "Connects a path correction generator."),
@@ -188,7 +188,7 @@ pub(crate) const ENTRIES: &[Entry] = &[
     routine(r#"PROC MotionSup(\switch On | switch Off, \num TuneValue, \switch NoBackoff)"#, "Turns motion supervision (collision detection) on or off and tunes it."),
     // uncertain: Pos and AxValid access modes assumed VAR.
     routine(r#"FUNC bool ParIdPosValid(paridnum ParIdType, VAR jointtarget Pos, VAR bool AxValid{*}, \num ConfAngle)"#, "Checks whether the robot position suits a parameter identification."),
-    routine(r#"FUNC paridvalidnum ParIdRobValid(paridnum ParIdType, \VAR mecunit MechUnit, \num AxisNo)"#, "Checks whether the robot or manipulator type supports the identification."),
+    routine(r#"FUNC paridvalidnum ParIdRobValid(paridnum ParIdType, \VAR mecunit MechUnit, \num AxisNo)"#, "Checks whether the robot or manipulator type supports the identification.").names_data(),
     // uncertain: argument list after ParIdType recalled from the manual, not in the public extract.
     routine(r#"PROC LoadId(paridnum ParIdType, loadidnum LoadIdType, PERS tooldata Tool, \PERS loaddata PayLoad, \PERS wobjdata WObj, \num ConfAngle, \switch SlowTest, \INOUT num Accuracy)"#, "Identifies the load of a tool or payload by running test moves."),
     routine(r#"PROC ManLoadIdProc(\paridnum ParIdType, \VAR mecunit MechUnit | string MechUnitName, \num AxisNumber, \PERS loaddata PayLoad, \num ConfigAngle, \switch DeactAll | switch AlreadyActive, \INOUT bool DefinedFlag, \bool DoExit)"#, "Identifies the payload of an external manipulator."),
@@ -199,9 +199,9 @@ pub(crate) const ENTRIES: &[Entry] = &[
     routine(r#"FUNC robtarget CalcRobT(jointtarget Joint_target, PERS tooldata Tool, \PERS wobjdata WObj)"#, "Computes the robtarget reached at given axis positions (forward kinematics)."),
     routine(r#"FUNC jointtarget CalcJointT(\switch UseCurWObjPos, robtarget Rob_target, PERS tooldata Tool, \PERS wobjdata WObj, \INOUT errnum ErrorNumber)"#, "Computes the axis positions that reach a robtarget (inverse kinematics)."),
     routine(r#"FUNC pos CPos(\PERS tooldata Tool, \PERS wobjdata WObj)"#, "Returns the current TCP position (x, y, z only)."),
-    routine(r#"FUNC robtarget CRobT(\VAR taskid TaskRef | string TaskName, \PERS tooldata Tool, \PERS wobjdata WObj)"#, "Returns the current robot and external axis position as a robtarget."),
-    routine(r#"FUNC jointtarget CJointT(\VAR taskid TaskRef | string TaskName)"#, "Returns the current robot and external axis angles."),
-    routine(r#"FUNC num ReadMotor(\VAR mecunit MecUnit, num Axis)"#, "Returns the current motor angle of an axis, in radians."),
+    routine(r#"FUNC robtarget CRobT(\VAR taskid TaskRef | string TaskName, \PERS tooldata Tool, \PERS wobjdata WObj)"#, "Returns the current robot and external axis position as a robtarget.").names_data(),
+    routine(r#"FUNC jointtarget CJointT(\VAR taskid TaskRef | string TaskName)"#, "Returns the current robot and external axis angles.").names_data(),
+    routine(r#"FUNC num ReadMotor(\VAR mecunit MecUnit, num Axis)"#, "Returns the current motor angle of an axis, in radians.").names_data(),
     routine(r#"FUNC tooldata CTool(\VAR taskid TaskRef | string TaskName)"#, "Returns the data of the tool now in use."),
     routine(r#"FUNC wobjdata CWObj(\VAR taskid TaskRef | string TaskName)"#, "Returns the data of the work object now in use."),
     routine(r#"FUNC robtarget MirPos(robtarget Point, wobjdata MirPlane, \wobjdata WObj, \switch MirY)"#, "Returns Point mirrored in the xy plane of MirPlane."),

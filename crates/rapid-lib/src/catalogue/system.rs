@@ -179,11 +179,11 @@ pub(crate) const ENTRIES: &[Entry] = &[
     routine(
         r#"PROC GetSysData(\taskid TaskRef | string TaskName, PERS anytype DestObject \INOUT string ObjectName)"#,
         "Copies the active system data (e.g. tool, work object) into a persistent.",
-    ),
+    ).names_data(),
     routine(
         r#"PROC SetSysData(PERS anytype SourceObject \string ObjectName)"#,
         "Makes the given persistent the active system data of its type.",
-    ),
+    ).names_data(),
     routine(r#"PROC ResetPPMoved()"#, "Clears the flag telling that the program pointer was moved in manual mode."),
     routine(r#"FUNC bool IsSysId(string SystemId)"#, "Tells whether the controller's serial number equals SystemId."),
     routine(
@@ -252,16 +252,16 @@ pub(crate) const ENTRIES: &[Entry] = &[
     routine(
         r#"FUNC bool TaskIsExecuting(taskid TaskRef | string TaskName)"#,
         "Tells whether the given program task is executing.",
-    ),
+    ).names_data(),
     // note: the Chinese overview spells this TasksActive.
     routine(
         r#"FUNC bool TaskIsActive(taskid TaskRef | string TaskName)"#,
         "Tells whether a normal task is selected in the Task Selection Panel.",
-    ),
+    ).names_data(),
     routine(
         r#"FUNC tsp_status GetTSPStatus(taskid TaskRef | string TaskName)"#,
         "Returns the Task Selection Panel status of a task.",
-    ),
+    ).names_data(),
     routine(r#"FUNC event_type EventType()"#, "Returns the type of the event routine being executed, if any."),
     routine(
         r#"FUNC handler_type ExecHandler()"#,
@@ -280,11 +280,11 @@ pub(crate) const ENTRIES: &[Entry] = &[
     routine(
         r#"PROC GetDataVal(string Object \VAR datapos Block | taskid TaskRef | string TaskName, VAR anytype Value)"#,
         "Reads the value of a data object named by a string.",
-    ),
+    ).names_data(),
     routine(
         r#"PROC SetDataVal(string Object \VAR datapos Block | taskid TaskRef | string TaskName, anytype Value)"#,
         "Sets the value of a data object named by a string.",
-    ),
+    ).names_data(),
     routine(
         r#"PROC SetAllDataVal(string Type \string TypeMod \string Object \switch Hidden, anytype Value)"#,
         "Sets every data object of a type (optionally matching a name pattern) to a value.",
@@ -293,7 +293,7 @@ pub(crate) const ENTRIES: &[Entry] = &[
     routine(
         r#"FUNC string GetServiceInfo(mecunit MechUnit \switch DutyTimeCnt)"#,
         "Returns service information, such as the duty time counter, of a mechanical unit.",
-    ),
+    ).names_data(),
     // --- §1.18 Calibration and service -------------------------------------------------------------------------------------
     routine(
         r#"PROC MToolRotCalib(jointtarget RefTip, jointtarget ZPos \jointtarget XPos, PERS tooldata Tool)"#,
@@ -314,7 +314,7 @@ pub(crate) const ENTRIES: &[Entry] = &[
     routine(
         r#"FUNC pose CalcRotAxisFrame(mecunit MechUnit \num AxisNo, robtarget TargetList{*}, num TargetsInList, VAR num MaxErr, VAR num MeanErr)"#,
         "Computes the user frame of a rotational axis from taught points.",
-    ),
+    ).names_data(),
     routine(
         r#"FUNC pose CalcRotAxFrameZ(robtarget TargetList{*}, num TargetsInList, robtarget PositiveZPoint, VAR num MaxErr, VAR num MeanErr)"#,
         "Computes a rotational axis frame from taught points and a positive-Z point.",
@@ -322,7 +322,7 @@ pub(crate) const ENTRIES: &[Entry] = &[
     routine(
         r#"PROC TestSignDefine(num Channel, testsignal SignalId, mecunit MechUnit, num Axis, num SampleTime)"#,
         "Defines a motion-system test signal on a channel (1-12).",
-    ),
+    ).names_data(),
     routine(r#"PROC TestSignReset()"#, "Removes all test signal definitions."),
     routine(r#"FUNC num TestSignRead(num Channel)"#, "Returns the current value of the test signal on a channel."),
     routine(r#"PROC SpyStart(string File)"#, "Starts logging instruction and timing data to a file."),
@@ -331,7 +331,7 @@ pub(crate) const ENTRIES: &[Entry] = &[
     routine(
         r#"PROC WaitSyncTask(\switch InPos, VAR syncident SyncID, PERS tasks TaskList{*} \num TimeOut)"#,
         "Waits until all listed tasks reach the same synchronisation point.",
-    ),
+    ).names_data(),
     routine(
         r#"FUNC bool TestAndSet(INOUT bool Object)"#,
         "Takes a bool semaphore if it is free (returns TRUE), else returns FALSE.",
@@ -339,12 +339,12 @@ pub(crate) const ENTRIES: &[Entry] = &[
     routine(r#"PROC WaitTestAndSet(INOUT bool Object)"#, "Waits until a bool semaphore is free and then takes it."),
     routine(r#"FUNC bool TaskRunMec()"#, "Tells whether the task controls any mechanical unit."),
     routine(r#"FUNC bool TaskRunRob()"#, "Tells whether the task controls a robot with a TCP."),
-    routine(r#"FUNC string GetMecUnitName(mecunit MechUnit)"#, "Returns the configured name of a mechanical unit."),
+    routine(r#"FUNC string GetMecUnitName(mecunit MechUnit)"#, "Returns the configured name of a mechanical unit.").names_data(),
     routine(
         r#"PROC SyncMoveOn(VAR syncident SyncID, PERS tasks TaskList{*} \num TimeOut)"#,
         "Starts synchronized movement with the listed motion tasks.",
-    ),
-    routine(r#"PROC SyncMoveOff(VAR syncident SyncID \num TimeOut)"#, "Ends synchronized movement at a meeting point."),
+    ).names_data(),
+    routine(r#"PROC SyncMoveOff(VAR syncident SyncID \num TimeOut)"#, "Ends synchronized movement at a meeting point.").names_data(),
     routine(r#"PROC SyncMoveUndo()"#, "Forces a return from synchronized to independent movement."),
     routine(r#"FUNC bool IsSyncMoveOn()"#, "Tells whether the motion task is in synchronized movement mode."),
     routine(

@@ -6,6 +6,7 @@
 pub(crate) mod actions;
 pub(crate) mod complete;
 pub(crate) mod folding;
+pub(crate) mod format;
 pub(crate) mod hover;
 pub(crate) mod navigate;
 pub(crate) mod semantic;

@@ -8,7 +8,7 @@ use crate::span::Span;
 use crate::token::{Placeholder, TokenKind as T, TokenSet};
 
 /// Arrays have at most three dimensions (§1.2.2).
-pub(crate) const MAX_DIMS: usize = 3;
+pub(crate) const MAX_DIMS: usize = rapid_limits::ARRAY_DIMENSIONS;
 
 /// Tokens that may follow a name, so a reserved word there was meant as a name.
 const AFTER_NAME: TokenSet =

@@ -7,14 +7,15 @@
 
 use std::rc::Rc;
 
-use super::{present, Ctx, Entries};
+use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::exec::Frame;
 use crate::ir::{ArgOrigin, Instr};
 use crate::value::Value;
 
-pub(super) static ENTRIES: Entries = &[("ArgName", arg_name)];
+pub(super) static FAMILY: Family =
+    Family { file: file!(), builtins: &[native("ArgName", arg_name).compiled_as(super::Compiled::ArgName)] };
 
 /// `ArgName(Parameter [\ErrorNumber])`: the name of the whole data object (constant,
 /// variable or persistent) the argument stands for. An expression, an optional

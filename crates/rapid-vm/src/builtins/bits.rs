@@ -13,6 +13,33 @@ use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
 
+/// The built-ins this family runs (see `registry.rs`).
+pub(super) static FAMILY: super::Family = super::Family {
+    file: file!(),
+    builtins: &[
+        super::native("BitAnd", bit_and),
+        super::native("BitOr", bit_or),
+        super::native("BitXOr", bit_xor),
+        super::native("BitNeg", bit_neg),
+        super::native("BitLSh", bit_lsh),
+        super::native("BitRSh", bit_rsh),
+        super::native("BitCheck", bit_check),
+        super::native("BitSet", bit_set),
+        super::native("BitClear", bit_clear),
+        super::native("BitAndDnum", bit_and_dnum),
+        super::native("BitOrDnum", bit_or_dnum),
+        super::native("BitXOrDnum", bit_xor_dnum),
+        super::native("BitNegDnum", bit_neg_dnum),
+        super::native("BitLShDnum", bit_lsh_dnum),
+        super::native("BitRShDnum", bit_rsh_dnum),
+        super::native("BitCheckDnum", bit_check_dnum),
+        super::native("ByteToStr", byte_to_str),
+        super::native("StrToByte", str_to_byte),
+        super::native("DecToHex", dec_to_hex),
+        super::native("HexToDec", hex_to_dec),
+    ],
+};
+
 type Res = Result<Option<Value>, RapidError>;
 
 /// The largest integer the dnum bit functions take: 2^52 - 1.

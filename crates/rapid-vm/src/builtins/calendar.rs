@@ -8,6 +8,12 @@ use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
 
+/// The built-ins this family runs (see `registry.rs`).
+pub(super) static FAMILY: super::Family = super::Family {
+    file: file!(),
+    builtins: &[super::native("CDate", c_date), super::native("CTime", c_time), super::native("GetTime", get_time)],
+};
+
 type Res = Result<Option<Value>, RapidError>;
 
 /// A moment split into calendar fields (UTC).

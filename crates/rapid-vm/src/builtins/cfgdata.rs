@@ -7,6 +7,8 @@
 //! END_OF_LIST, -1, after the last). Attribute values have the type the file gives them:
 //! a quoted value is a string, a bare number a num, a flag a bool.
 //!
+//! GetModalPayLoadMode reads one parameter of it (SYS, ModalPayLoadMode).
+//!
 //! Writes change the configuration in memory (the controller uses most parameters after
 //! a restart); SaveCfgData writes a domain's file, every other byte as it was read.
 
@@ -16,7 +18,7 @@ use std::path::Path;
 use rapid_config::{CfgFile, Instance};
 
 use super::files::devices;
-use super::{present, Ctx, Entries};
+use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
@@ -324,6 +326,35 @@ fn save_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// Writes a file so a crash leaves the old or the new contents, never a torn file:
 /// a temporary file beside it, flushed to disk, then renamed over it.
+/// `GetModalPayLoadMode()`: the system parameter ModalPayLoadMode (topic Controller,
+/// type General Rapid) of the configuration the run was started with: 1 when the
+/// payload is modal (GripLoad declares it for the moves that follow), 0 when it is not
+/// (each move gives its own with `\TLoad`).
+fn get_modal_pay_load_mode(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+    Ok(Some(Value::Num(modal_pay_load_mode(&ctx.resources.cfgdata))))
+}
+
+/// ModalPayLoadMode's default: payload modal, as a controller without the parameter in
+/// its SYS.cfg runs.
+const MODAL_PAY_LOAD_DEFAULT: f32 = 1.0;
+
+/// The value of ModalPayLoadMode: SYS.cfg's `GENERAL_RAPID` instance of that `-Name`,
+/// its `-Value`; the default without a SYS domain, without the instance, or with a
+/// value that is not a number.
+// uncertain: the SYS.cfg form (type GENERAL_RAPID, one instance per parameter with
+// -Name and -Value) is as RobotWare 6 backups write General Rapid parameters; ABB's
+// system parameters manual gives 0 and 1 as the values and 1 as the default.
+fn modal_pay_load_mode(state: &CfgState) -> f32 {
+    let Some(domain) = state.domain("SYS") else { return MODAL_PAY_LOAD_DEFAULT };
+    state.domains[domain]
+        .1
+        .instances("GENERAL_RAPID")
+        .find(|inst| inst.name().is_some_and(|n| n.eq_ignore_ascii_case("ModalPayLoadMode")))
+        .and_then(|inst| inst.value("Value"))
+        .and_then(|v| v.trim().parse::<f32>().ok())
+        .unwrap_or(MODAL_PAY_LOAD_DEFAULT)
+}
+
 fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let Some(parent) = path.parent() else { return Err(std::io::Error::other("the path has no folder")) };
     if !parent.is_dir() {
@@ -343,8 +374,15 @@ fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     result
 }
 
-pub(super) static ENTRIES: Entries =
-    &[("ReadCfgData", read_cfg_data), ("WriteCfgData", write_cfg_data), ("SaveCfgData", save_cfg_data)];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("ReadCfgData", read_cfg_data),
+        native("WriteCfgData", write_cfg_data),
+        native("SaveCfgData", save_cfg_data),
+        native("GetModalPayLoadMode", get_modal_pay_load_mode),
+    ],
+};
 
 #[cfg(test)]
 mod tests {
@@ -371,5 +409,30 @@ mod tests {
         assert_eq!(format_number(4.0), "4");
         assert_eq!(format_number(-1.0), "-1");
         assert_eq!(format_number(0.05), "0.05");
+    }
+
+    fn with_sys(text: &str) -> CfgState {
+        let mut state = CfgState::default();
+        state.set_config(vec![("SYS".to_owned(), rapid_config::parse(text))]);
+        state
+    }
+
+    #[test]
+    fn modal_pay_load_mode_reads_general_rapid() {
+        let off = "SYS:CFG_1.0:6:0::\n#\nGENERAL_RAPID:\n\n      -Name \"SimulateMenu\" -Value 1\n\n      -Name \"ModalPayLoadMode\" -Value 0\n";
+        assert_eq!(modal_pay_load_mode(&with_sys(off)), 0.0);
+        let on = "SYS:CFG_1.0:6:0::\n#\nGENERAL_RAPID:\n\n      -name \"modalpayloadmode\" -value 1\n";
+        assert_eq!(modal_pay_load_mode(&with_sys(on)), 1.0);
+    }
+
+    #[test]
+    fn modal_pay_load_mode_defaults_to_modal() {
+        // No configuration at all, a SYS.cfg without the parameter, another domain only.
+        assert_eq!(modal_pay_load_mode(&CfgState::default()), 1.0);
+        let other = "SYS:CFG_1.0:6:0::\n#\nGENERAL_RAPID:\n\n      -Name \"SimulateMenu\" -Value 0\n";
+        assert_eq!(modal_pay_load_mode(&with_sys(other)), 1.0);
+        let mut eio_only = CfgState::default();
+        eio_only.set_config(vec![("EIO".to_owned(), rapid_config::parse("EIO:CFG_1.0:6:0::\n"))]);
+        assert_eq!(modal_pay_load_mode(&eio_only), 1.0);
     }
 }

@@ -6,6 +6,17 @@ use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Opaque, OpaqueState, Value};
 
+/// The built-ins this family runs (see `registry.rs`).
+pub(super) static FAMILY: super::Family = super::Family {
+    file: file!(),
+    builtins: &[
+        super::native("ClkReset", clk_reset),
+        super::native("ClkStart", clk_start),
+        super::native("ClkStop", clk_stop),
+        super::native("ClkRead", clk_read),
+    ],
+};
+
 type Res = Result<Option<Value>, RapidError>;
 
 /// A clock overflows after 2^32 ms (about 49.7 days).

@@ -16,6 +16,25 @@ use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
 
+/// The built-ins this family runs (see `registry.rs`).
+pub(super) static FAMILY: super::Family = super::Family {
+    file: file!(),
+    builtins: &[
+        super::native("TPReadNum", tp_read_num),
+        super::native("TPReadDnum", tp_read_num),
+        super::native("TPReadFK", tp_read_fk),
+        super::native("UINumEntry", ui_num_entry),
+        super::native("UIDnumEntry", ui_dnum_entry),
+        super::native("UIAlphaEntry", ui_alpha_entry),
+        super::native("UIClientExist", ui_client_exist),
+        super::native("UIMsgBox", ui_msg_box),
+        super::native("UIMessageBox", ui_message_box),
+        super::native("UIListView", ui_list_view),
+        super::native("UINumTune", ui_num_tune),
+        super::native("UIDnumTune", ui_dnum_tune),
+    ],
+};
+
 #[cfg(test)]
 #[path = "dialogs_tests.rs"]
 mod dialogs_tests;

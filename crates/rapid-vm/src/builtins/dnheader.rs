@@ -16,14 +16,14 @@
 //! manual accepts both and stores characters, not parsed numbers. RawData is cleared
 //! first, so the header always starts at index 1.
 
-use super::{Ctx, Entries};
+use super::{native, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Opaque, OpaqueState, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
-pub(super) static ENTRIES: Entries = &[("PackDNHeader", pack_dn_header)];
+pub(super) static FAMILY: Family = Family { file: file!(), builtins: &[native("PackDNHeader", pack_dn_header)] };
 
 /// The format byte.
 // uncertain: the manual calls it an "internal IRC5 code for DeviceNet" and does not

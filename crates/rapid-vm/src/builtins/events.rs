@@ -7,6 +7,12 @@ use crate::error::RapidError;
 use crate::events::{expand_errstr, Event, EventKind, USER_DOMAIN};
 use crate::value::Value;
 
+/// The built-ins this family runs (see `registry.rs`).
+pub(super) static FAMILY: super::Family = super::Family {
+    file: file!(),
+    builtins: &[super::native("ErrLog", err_log), super::native("ErrRaise", err_raise)],
+};
+
 /// ErrLog and ErrRaise take event numbers 4800..4999 of the user domain. The public
 /// record does not say which error an out-of-range number gives; we raise
 /// ERR_ARGVALERR (uncertain).

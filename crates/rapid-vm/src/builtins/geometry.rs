@@ -7,6 +7,19 @@ use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Record, Value};
 
+/// The built-ins this family runs (see `registry.rs`).
+pub(super) static FAMILY: super::Family = super::Family {
+    file: file!(),
+    builtins: &[
+        super::native("OrientZYX", orient_zyx),
+        super::native("EulerZYX", euler_zyx),
+        super::native("NOrient", n_orient),
+        super::native("PoseMult", pose_mult),
+        super::native("PoseInv", pose_inv),
+        super::native("PoseVect", pose_vect),
+    ],
+};
+
 type Res = Result<Option<Value>, RapidError>;
 type Quat = [f64; 4];
 type Vec3 = [f64; 3];

@@ -15,7 +15,7 @@
 //! again the queued safe interrupts run first, in the order they came.
 
 use super::io::connected;
-use super::{present, Ctx, Entries};
+use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
@@ -259,20 +259,47 @@ pub(super) fn interrupt_number(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, Ra
     Ok(n)
 }
 
+super::signature::layout! {
+    static ITIMER: TimerArgs = "ITimer" {
+        single: "Single", single_safe: "SingleSafe", time: "Time", interrupt: "Interrupt",
+    }
+    static ISIGNAL_D: DigitalArgs = "ISignalDI" | "ISignalDO" {
+        single: "Single", single_safe: "SingleSafe", signal: "Signal", trigg_value: "TriggValue", interrupt: "Interrupt",
+    }
+    static ISIGNAL_G: GroupArgs = "ISignalGI" | "ISignalGO" {
+        single: "Single", single_safe: "SingleSafe", signal: "Signal", interrupt: "Interrupt",
+    }
+    static ISIGNAL_A: AnalogArgs = "ISignalAI" | "ISignalAO" {
+        single: "Single", single_safe: "SingleSafe", signal: "Signal", condition: "Condition", high: "HighValue",
+        low: "LowValue", delta: "DeltaValue", dpos: "DPos", dneg: "DNeg", interrupt: "Interrupt",
+    }
+    static IPERS: PersArgs = "IPers" {
+        single: "Single", single_safe: "SingleSafe", name: "Name", interrupt: "Interrupt",
+    }
+    static IERROR: ErrorArgs = "IError" {
+        domain: "ErrorDomain", id: "ErrorId", kind: "ErrorType", interrupt: "Interrupt",
+    }
+    static READ_ERR_DATA: ReadErrArgs = "ReadErrData" {
+        trap_event: "TrapEvent", domain: "ErrorDomain", id: "ErrorId", kind: "ErrorType", title: "Title",
+        str1: "Str1", str5: "Str5",
+    }
+}
+
 /// `ITimer [\Single] | [\SingleSafe] Time Interrupt`.
 fn itimer(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let single = present(args.first()) || present(args.get(1));
-    let period = ctx.num(&args[2])?;
+    let at = *ITIMER;
+    let single = present(args.get(at.single)) || present(args.get(at.single_safe));
+    let period = ctx.num(&args[at.time])?;
     // uncertain: the manual's lower limit for Time is not public; 0.1 s (the controller's
     // timer resolution) is our floor, below it ERR_ARGVALERR.
     if !period.is_finite() || period < 0.1 {
         return Err(ctx.error(Err::ArgValue, format!("ITimer time {period} s is below 0.1 s")));
     }
-    let n = interrupt_number(ctx, &args[3])?;
+    let n = interrupt_number(ctx, &args[at.interrupt])?;
     let next = ctx.time + period;
     if let Some(interrupt) = ctx.resources.interrupts.get_mut(n) {
         interrupt.source = Some(super::interrupts::Source::Timer { period, next, single });
-        interrupt.safe = present(args.get(1));
+        interrupt.safe = present(args.get(at.single_safe));
     }
     Ok(None)
 }
@@ -280,24 +307,26 @@ fn itimer(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `ISignalDI/ISignalDO [\Single] | [\SingleSafe] Signal TriggValue Interrupt`:
 /// TriggValue 0 (falling to 0), 1 (rising to 1) or 2 (any change).
 fn isignal_digital(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let single = present(args.first()) || present(args.get(1));
-    let id = connected(ctx, &args[2])?;
-    let value = ctx.num(&args[3])?;
+    let at = *ISIGNAL_D;
+    let single = present(args.get(at.single)) || present(args.get(at.single_safe));
+    let id = connected(ctx, &args[at.signal])?;
+    let value = ctx.num(&args[at.trigg_value])?;
     if ![0.0, 1.0, 2.0].contains(&value) {
         return Err(ctx.error(Err::ArgValue, format!("TriggValue {value} is not 0, 1 or 2")));
     }
-    let n = interrupt_number(ctx, &args[4])?;
-    watch_signal(ctx, n, Source::Signal { id, value, single }, present(args.get(1)));
+    let n = interrupt_number(ctx, &args[at.interrupt])?;
+    watch_signal(ctx, n, Source::Signal { id, value, single }, present(args.get(at.single_safe)));
     Ok(None)
 }
 
 /// `ISignalGI/ISignalGO [\Single] | [\SingleSafe] Signal Interrupt`: every change of the
 /// group's value.
 fn isignal_group(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let single = present(args.first()) || present(args.get(1));
-    let id = connected(ctx, &args[2])?;
-    let n = interrupt_number(ctx, &args[3])?;
-    watch_signal(ctx, n, Source::Signal { id, value: 2.0, single }, present(args.get(1)));
+    let at = *ISIGNAL_G;
+    let single = present(args.get(at.single)) || present(args.get(at.single_safe));
+    let id = connected(ctx, &args[at.signal])?;
+    let n = interrupt_number(ctx, &args[at.interrupt])?;
+    watch_signal(ctx, n, Source::Signal { id, value: 2.0, single }, present(args.get(at.single_safe)));
     Ok(None)
 }
 
@@ -305,13 +334,14 @@ fn isignal_group(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// DeltaValue [\DPos] | [\DNeg] Interrupt`: new values of an analog signal that meet
 /// the condition (`rapid_io::AnalogTrigger`); the reference value is the signal's value now.
 fn isignal_analog(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let single = present(args.first()) || present(args.get(1));
-    let id = connected(ctx, &args[2])?;
-    let condition = ctx.num(&args[3])?;
-    let (high, low, delta) = (ctx.num(&args[4])?, ctx.num(&args[5])?, ctx.num(&args[6])?);
-    let direction = if present(args.get(7)) {
+    let at = *ISIGNAL_A;
+    let single = present(args.get(at.single)) || present(args.get(at.single_safe));
+    let id = connected(ctx, &args[at.signal])?;
+    let condition = ctx.num(&args[at.condition])?;
+    let (high, low, delta) = (ctx.num(&args[at.high])?, ctx.num(&args[at.low])?, ctx.num(&args[at.delta])?);
+    let direction = if present(args.get(at.dpos)) {
         rapid_io::AioDirection::Pos
-    } else if present(args.get(8)) {
+    } else if present(args.get(at.dneg)) {
         rapid_io::AioDirection::Neg
     } else {
         rapid_io::AioDirection::Both
@@ -319,8 +349,8 @@ fn isignal_analog(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let current = ctx.resources.io.system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0);
     let trigger = rapid_io::AnalogTrigger::new(condition, high, low, delta, direction, current)
         .map_err(|err| ctx.error(Err::ArgValue, err.to_string()))?;
-    let n = interrupt_number(ctx, &args[9])?;
-    watch_signal(ctx, n, Source::Analog { id, trigger, single }, present(args.get(1)));
+    let n = interrupt_number(ctx, &args[at.interrupt])?;
+    watch_signal(ctx, n, Source::Analog { id, trigger, single }, present(args.get(at.single_safe)));
     Ok(None)
 }
 
@@ -339,14 +369,15 @@ fn watch_signal(ctx: &mut Ctx<'_>, n: u32, source: Source, safe: bool) {
 /// `IPers [\Single] | [\SingleSafe] Name Interrupt`: every change of a persistent's
 /// value.
 fn ipers(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let single = present(args.first()) || present(args.get(1));
-    let Value::Ref(place) = &args[2] else { return Err(ctx.error(Err::ArgValue, "IPers needs a persistent")) };
+    let at = *IPERS;
+    let single = present(args.get(at.single)) || present(args.get(at.single_safe));
+    let Value::Ref(place) = &args[at.name] else { return Err(ctx.error(Err::ArgValue, "IPers needs a persistent")) };
     let place = (**place).clone();
-    let last = ctx.value(&args[2])?;
-    let n = interrupt_number(ctx, &args[3])?;
+    let last = ctx.value(&args[at.name])?;
+    let n = interrupt_number(ctx, &args[at.interrupt])?;
     if let Some(interrupt) = ctx.resources.interrupts.get_mut(n) {
         interrupt.source = Some(Source::Pers { place, last, single });
-        interrupt.safe = present(args.get(1));
+        interrupt.safe = present(args.get(at.single_safe));
     }
     Ok(None)
 }
@@ -354,10 +385,11 @@ fn ipers(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `IError ErrorDomain [\ErrorId] ErrorType Interrupt`: an interrupt for event-log
 /// entries (manual §1.11, §1.12): errors, warnings or state changes of a domain.
 fn ierror(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let domain = ctx.num(&args[0])? as u32;
-    let id = ctx.opt_num(args.get(1))?.map(|n| n as u32);
-    let kind = ctx.num(&args[2])? as u32;
-    let n = interrupt_number(ctx, &args[3])?;
+    let at = *IERROR;
+    let domain = ctx.num(&args[at.domain])? as u32;
+    let id = ctx.opt_num(args.get(at.id))?.map(|n| n as u32);
+    let kind = ctx.num(&args[at.kind])? as u32;
+    let n = interrupt_number(ctx, &args[at.interrupt])?;
     // Only entries from now on count (this task's and the other tasks').
     let next = ctx.events.entries().last().map_or(0, |e| e.seq + 1);
     let foreign = ctx.resources.tasking.shared.events.len();
@@ -386,7 +418,8 @@ fn get_trap_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `ReadErrData TrapEvent ErrorDomain ErrorId ErrorType [\Title] [\Str1] … [\Str5]`.
 fn read_err_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let seq = match ctx.value(&args[0])? {
+    let at = *READ_ERR_DATA;
+    let seq = match ctx.value(&args[at.trap_event])? {
         Value::Opaque(o) => match o.state {
             crate::value::OpaqueState::Handle(seq) => Some(u64::from(seq)),
             _ => None,
@@ -403,13 +436,14 @@ fn read_err_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let Some(event) = event else {
         return Err(ctx.error(Err::ArgValue, "TrapEvent holds no event (GetTrapData first)"));
     };
-    ctx.store(&args[1], Value::Num(event.domain as f32))?;
-    ctx.store(&args[2], Value::Num(event.number as f32))?;
-    ctx.store(&args[3], Value::Num(event_type(event.kind) as f32))?;
-    if present(args.get(4)) {
-        ctx.store(&args[4], Value::Str(limit(&event.title).into()))?;
+    ctx.store(&args[at.domain], Value::Num(event.domain as f32))?;
+    ctx.store(&args[at.id], Value::Num(event.number as f32))?;
+    ctx.store(&args[at.kind], Value::Num(event_type(event.kind) as f32))?;
+    if present(args.get(at.title)) {
+        ctx.store(&args[at.title], Value::Str(limit(&event.title).into()))?;
     }
-    for (k, line) in (5..10).zip(event.lines.iter().map(Some).chain(std::iter::repeat(None))) {
+    // \Str1 … \Str5 follow one another.
+    for (k, line) in (at.str1..=at.str5).zip(event.lines.iter().map(Some).chain(std::iter::repeat(None))) {
         if present(args.get(k)) {
             ctx.store(&args[k], Value::Str(limit(line.map_or("", |l| l.as_str())).into()))?;
         }
@@ -469,24 +503,27 @@ fn ienable(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     Ok(None)
 }
 
-pub(super) static ENTRIES: Entries = &[
-    ("ITimer", itimer),
-    ("ISignalDI", isignal_digital),
-    ("ISignalDO", isignal_digital),
-    ("ISignalGI", isignal_group),
-    ("IPers", ipers),
-    ("IError", ierror),
-    ("GetTrapData", get_trap_data),
-    ("ReadErrData", read_err_data),
-    ("ISignalGO", isignal_group),
-    ("ISignalAI", isignal_analog),
-    ("ISignalAO", isignal_analog),
-    ("IDelete", idelete),
-    ("ISleep", isleep),
-    ("IWatch", iwatch),
-    ("IDisable", idisable),
-    ("IEnable", ienable),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("ITimer", itimer),
+        native("ISignalDI", isignal_digital),
+        native("ISignalDO", isignal_digital),
+        native("ISignalGI", isignal_group),
+        native("IPers", ipers),
+        native("IError", ierror),
+        native("GetTrapData", get_trap_data),
+        native("ReadErrData", read_err_data),
+        native("ISignalGO", isignal_group),
+        native("ISignalAI", isignal_analog),
+        native("ISignalAO", isignal_analog),
+        native("IDelete", idelete),
+        native("ISleep", isleep),
+        native("IWatch", iwatch),
+        native("IDisable", idisable),
+        native("IEnable", ienable),
+    ],
+};
 
 #[cfg(test)]
 mod tests {

@@ -13,7 +13,7 @@
 use rapid_io::{IoSystem, SignalKind};
 use rapid_sema::types::TypeId;
 
-use super::{present, Ctx, Entries, Resources};
+use super::{native, present, Ctx, Family, Resources};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Opaque, OpaqueState, Value};
@@ -437,26 +437,29 @@ fn alias_io_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-pub(super) static ENTRIES: Entries = &[
-    ("AliasIO", alias_io),
-    ("AliasIOReset", alias_io_reset),
-    ("Set", set),
-    ("Reset", reset),
-    ("SetDO", set_do),
-    ("SetAO", set_ao),
-    ("SetGO", set_go),
-    ("InvertDO", invert_do),
-    ("PulseDO", pulse_do),
-    ("TestDI", test_di),
-    ("ValidIO", valid_io),
-    ("GInputDnum", group_dnum),
-    ("DInput", signal_value),
-    ("DOutput", signal_value),
-    ("GInput", signal_value),
-    ("GOutput", signal_value),
-    ("AInput", signal_value),
-    ("AOutput", signal_value),
-    ("GOutputDnum", group_dnum),
-    ("GetSignalOrigin", get_signal_origin),
-    ("GetGroupSignalInfo", get_group_signal_info),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("AliasIO", alias_io),
+        native("AliasIOReset", alias_io_reset),
+        native("Set", set),
+        native("Reset", reset),
+        native("SetDO", set_do),
+        native("SetAO", set_ao),
+        native("SetGO", set_go),
+        native("InvertDO", invert_do),
+        native("PulseDO", pulse_do),
+        native("TestDI", test_di),
+        native("ValidIO", valid_io),
+        native("GInputDnum", group_dnum),
+        native("DInput", signal_value),
+        native("DOutput", signal_value),
+        native("GInput", signal_value),
+        native("GOutput", signal_value),
+        native("AInput", signal_value),
+        native("AOutput", signal_value),
+        native("GOutputDnum", group_dnum),
+        native("GetSignalOrigin", get_signal_origin),
+        native("GetGroupSignalInfo", get_group_signal_info),
+    ],
+};

@@ -10,7 +10,7 @@
 //! (ERR_IODISABLE cannot happen; uncertain). Every network runs, so IOBusStart has
 //! nothing to start. Unknown names raise ERR_NAME_INVALID.
 
-use super::{present, Ctx, Entries, StopKind};
+use super::{native, present, Ctx, Family, StopKind};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
@@ -174,11 +174,14 @@ fn io_event_message(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-pub(super) static ENTRIES: Entries = &[
-    ("IODisable", io_disable),
-    ("IOEnable", io_enable),
-    ("IOUnitState", io_unit_state),
-    ("IOBusState", io_bus_state),
-    ("IOBusStart", io_bus_start),
-    ("IOEventMessage", io_event_message),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("IODisable", io_disable),
+        native("IOEnable", io_enable),
+        native("IOUnitState", io_unit_state),
+        native("IOBusState", io_bus_state),
+        native("IOBusStart", io_bus_start),
+        native("IOEventMessage", io_event_message),
+    ],
+};

@@ -7,8 +7,10 @@
 //! is run again (`StopKind::Repeat`). The start of the wait is kept per call depth and
 //! instruction, so the deadline counts from the first try.
 
+use std::sync::LazyLock;
+
 use super::io::signal;
-use super::{present, Ctx, Entries, StopKind};
+use super::{native, present, Ctx, Family, StopKind};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
@@ -39,10 +41,15 @@ impl Compare {
     }
 }
 
-/// Where the arguments of one wait instruction are.
+/// Where the arguments of one wait instruction are (`signature::ABSENT` where it has
+/// no such parameter).
+#[derive(Debug, PartialEq, Eq)]
 struct Layout {
     signal: usize,
-    compare: Option<[usize; 3]>,
+    /// WaitGI/GO's `\NOTEQ`, `\LT`, `\GT`; WaitAI/AO's `\LT`, `\GT`.
+    not_eq: usize,
+    lt: usize,
+    gt: usize,
     value: usize,
     dvalue: Option<usize>,
     max_time: usize,
@@ -52,56 +59,56 @@ struct Layout {
     visualize: usize,
 }
 
-const DIGITAL: Layout = Layout {
-    signal: 0,
-    compare: None,
-    value: 1,
-    dvalue: None,
-    max_time: 2,
-    time_flag: Some(3),
-    at_timeout: None,
-    visualize: 4,
-};
-const GROUP: Layout = Layout {
-    signal: 0,
-    compare: Some([1, 2, 3]),
-    value: 4,
-    dvalue: Some(5),
-    max_time: 6,
-    time_flag: None,
-    at_timeout: Some((7, Some(8))),
-    visualize: 9,
-};
-const ANALOG: Layout = Layout {
-    signal: 0,
-    compare: None,
-    value: 3,
-    dvalue: None,
-    max_time: 4,
-    time_flag: None,
-    at_timeout: Some((5, None)),
-    visualize: 6,
-};
+impl Layout {
+    /// The layout of wait instruction `name`, by the parameter names of its
+    /// declaration (see `signature.rs`).
+    fn of(name: &str) -> Layout {
+        let sig = super::signature::of(name);
+        Layout {
+            signal: sig.at("Signal"),
+            not_eq: sig.at("NOTEQ"),
+            lt: sig.at("LT"),
+            gt: sig.at("GT"),
+            value: sig.at("Value"),
+            dvalue: sig.opt("Dvalue"),
+            max_time: sig.at("MaxTime"),
+            time_flag: sig.opt("TimeFlag"),
+            at_timeout: sig.opt("ValueAtTimeout").map(|at| (at, sig.opt("DvalueAtTimeout"))),
+            visualize: sig.at("Visualize"),
+        }
+    }
+}
+
+/// WaitDI and WaitDO share a layout, as do WaitGI/WaitGO and WaitAI/WaitAO (a test
+/// checks they agree).
+static DIGITAL: LazyLock<Layout> = LazyLock::new(|| Layout::of("WaitDI"));
+static GROUP: LazyLock<Layout> = LazyLock::new(|| Layout::of("WaitGI"));
+static ANALOG: LazyLock<Layout> = LazyLock::new(|| Layout::of("WaitAI"));
 
 fn wait_digital(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     wait(ctx, args, &DIGITAL, Compare::Eq)
 }
 
+/// WaitGI/WaitGO compare with `\NOTEQ`, `\LT` or `\GT`, else for equality.
 fn wait_group(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let compare =
-        match GROUP.compare.map(|[ne, lt, gt]| (present(args.get(ne)), present(args.get(lt)), present(args.get(gt)))) {
-            Some((true, _, _)) => Compare::NotEq,
-            Some((_, true, _)) => Compare::Lt,
-            Some((_, _, true)) => Compare::Gt,
-            _ => Compare::Eq,
-        };
-    wait(ctx, args, &GROUP, compare)
+    let layout = &*GROUP;
+    let compare = if present(args.get(layout.not_eq)) {
+        Compare::NotEq
+    } else if present(args.get(layout.lt)) {
+        Compare::Lt
+    } else if present(args.get(layout.gt)) {
+        Compare::Gt
+    } else {
+        Compare::Eq
+    };
+    wait(ctx, args, layout, compare)
 }
 
 /// WaitAI/WaitAO take `\LT` or `\GT` (one of them).
 fn wait_analog(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let compare = if present(args.get(1)) { Compare::Lt } else { Compare::Gt };
-    wait(ctx, args, &ANALOG, compare)
+    let layout = &*ANALOG;
+    let compare = if present(args.get(layout.lt)) { Compare::Lt } else { Compare::Gt };
+    wait(ctx, args, layout, compare)
 }
 
 fn wait(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, compare: Compare) -> Res {
@@ -184,11 +191,70 @@ fn wait_key(ctx: &Ctx<'_>) -> (usize, u32) {
     (ctx.chain.len(), pc)
 }
 
-pub(super) static ENTRIES: Entries = &[
-    ("WaitDI", wait_digital),
-    ("WaitDO", wait_digital),
-    ("WaitGI", wait_group),
-    ("WaitGO", wait_group),
-    ("WaitAI", wait_analog),
-    ("WaitAO", wait_analog),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("WaitDI", wait_digital),
+        native("WaitDO", wait_digital),
+        native("WaitGI", wait_group),
+        native("WaitGO", wait_group),
+        native("WaitAI", wait_analog),
+        native("WaitAO", wait_analog),
+    ],
+};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::builtins::signature::ABSENT;
+
+    // Positions counted by hand from the manual's syntax:
+    // WaitDI Signal Value [\MaxTime] [\TimeFlag] [\Visualize] …
+    // WaitGI Signal [\NOTEQ]|[\LT]|[\GT] Value|Dvalue [\MaxTime] [\ValueAtTimeout]|[\DvalueAtTimeout] [\Visualize] …
+    // WaitAI Signal [\LT]|[\GT] Value [\MaxTime] [\ValueAtTimeout] [\Visualize] …
+    #[test]
+    fn layouts_from_the_signatures() {
+        let digital = Layout {
+            signal: 0,
+            not_eq: ABSENT,
+            lt: ABSENT,
+            gt: ABSENT,
+            value: 1,
+            dvalue: None,
+            max_time: 2,
+            time_flag: Some(3),
+            at_timeout: None,
+            visualize: 4,
+        };
+        assert_eq!(*DIGITAL, digital);
+        assert_eq!(Layout::of("WaitDO"), digital);
+        let group = Layout {
+            signal: 0,
+            not_eq: 1,
+            lt: 2,
+            gt: 3,
+            value: 4,
+            dvalue: Some(5),
+            max_time: 6,
+            time_flag: None,
+            at_timeout: Some((7, Some(8))),
+            visualize: 9,
+        };
+        assert_eq!(*GROUP, group);
+        assert_eq!(Layout::of("WaitGO"), group);
+        let analog = Layout {
+            signal: 0,
+            not_eq: ABSENT,
+            lt: 1,
+            gt: 2,
+            value: 3,
+            dvalue: None,
+            max_time: 4,
+            time_flag: None,
+            at_timeout: Some((5, None)),
+            visualize: 6,
+        };
+        assert_eq!(*ANALOG, analog);
+        assert_eq!(Layout::of("WaitAO"), analog);
+    }
+}

@@ -6,6 +6,50 @@ use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
 
+/// The built-ins this family runs (see `registry.rs`).
+pub(super) static FAMILY: super::Family = super::Family {
+    file: file!(),
+    builtins: &[
+        super::native("Max", max),
+        super::native("Min", min),
+        super::native("Abs", abs).with_pure(super::pure::abs),
+        super::native("AbsDnum", abs).with_pure(super::pure::abs),
+        super::native("Sqrt", sqrt).with_pure(super::pure::sqrt),
+        super::native("SqrtDnum", sqrt).with_pure(super::pure::sqrt),
+        super::native("Pow", pow),
+        super::native("PowDnum", pow),
+        super::native("Exp", exp),
+        super::native("Round", round).with_pure(super::pure::round),
+        super::native("RoundDnum", round).with_pure(super::pure::round),
+        super::native("Trunc", trunc).with_pure(super::pure::trunc),
+        super::native("TruncDnum", trunc).with_pure(super::pure::trunc),
+        super::native("Sin", sin).with_pure(super::pure::sin),
+        super::native("Cos", cos).with_pure(super::pure::cos),
+        super::native("Tan", tan).with_pure(super::pure::tan),
+        super::native("ASin", asin),
+        super::native("ACos", acos),
+        super::native("ATan", atan),
+        super::native("ATan2", atan2).with_pure(super::pure::atan2),
+        super::native("SinDnum", sin_dnum),
+        super::native("CosDnum", cos_dnum),
+        super::native("TanDnum", tan_dnum),
+        super::native("ASinDnum", asin_dnum),
+        super::native("ACosDnum", acos_dnum),
+        super::native("ATanDnum", atan_dnum),
+        super::native("ATan2Dnum", atan2_dnum),
+        super::native("TryInt", try_int),
+        super::native("Incr", incr),
+        super::native("Decr", decr),
+        super::native("Add", add),
+        super::native("Clear", clear),
+        super::native("DotProd", dot_prod),
+        super::native("CrossProd", cross_prod),
+        super::native("VectMagn", vect_magn),
+        super::native("NumToDnum", num_to_dnum),
+        super::native("DnumToNum", dnum_to_num),
+    ],
+};
+
 type Res = Result<Option<Value>, RapidError>;
 
 /// A result of the same numeric kind as `like`.

@@ -1,7 +1,8 @@
 //! The implementations of built-in instructions and functions, one file per family.
-//! Their signatures are declared once in rapid-lib's catalogue; this table maps a
-//! built-in's name to the Rust function that runs it. A built-in missing here is
-//! refused by the compiler with "not supported by `rapid run` yet".
+//! Their signatures (and how they take some arguments) are declared once in
+//! rapid-lib's catalogue; each family registers its built-ins beside their code
+//! (`FAMILY`, see `registry.rs`). A catalogue routine no family registers is listed
+//! in `not_yet.rs` and refused by the compiler with "not supported by `rapid run` yet".
 
 mod argname;
 mod bits;
@@ -23,10 +24,14 @@ mod math;
 mod matrix;
 pub mod modules;
 pub mod motion;
+mod not_yet;
 mod pendant;
 pub mod pure;
 mod random;
 mod rawbytes;
+mod registry;
+pub(crate) mod signature;
+pub use registry::{compiled, native, Builtin, Compiled, Family};
 pub mod rmq;
 pub mod sockets;
 pub mod spy;
@@ -302,182 +307,89 @@ pub fn present(arg: Option<&Value>) -> bool {
     arg.is_some_and(|a| !a.is_absent())
 }
 
-/// One family's built-ins: (name as the catalogue spells it, implementation).
-pub type Entries = &'static [(&'static str, BuiltinFn)];
-
-/// Every family's table; a built-in's id is its position in their concatenation.
-static FAMILIES: &[Entries] = &[
-    CORE,
-    files::ENTRIES,
-    sockets::ENTRIES,
-    matrix::ENTRIES,
-    sysinfo::ENTRIES,
-    strdig::ENTRIES,
-    strformat::ENTRIES,
-    argname::ENTRIES,
-    texttab::ENTRIES,
-    symsearch::ENTRIES,
-    dnheader::ENTRIES,
-    modules::ENTRIES,
-    random::ENTRIES,
-    io::ENTRIES,
-    interrupts::ENTRIES,
-    io_wait::ENTRIES,
-    io_units::ENTRIES,
-    spy::ENTRIES,
-    cfgdata::ENTRIES,
-    tasking::ENTRIES,
-    syncmove::ENTRIES,
-    motion::ENTRIES,
-    rmq::ENTRIES,
-    controller::ENTRIES,
+/// Every family's registrations; a built-in's id is its position in their
+/// concatenation. A new family file adds its `FAMILY` here.
+pub(crate) static FAMILIES: &[&Family] = &[
+    &crate::compile::call::FAMILY,
+    &pendant::FAMILY,
+    &dialogs::FAMILY,
+    &rawbytes::FAMILY,
+    &system::FAMILY,
+    &events::FAMILY,
+    &clock::FAMILY,
+    &math::FAMILY,
+    &geometry::FAMILY,
+    &bits::FAMILY,
+    &strings::FAMILY,
+    &calendar::FAMILY,
+    &symbols::FAMILY,
+    &files::FAMILY,
+    &sockets::FAMILY,
+    &matrix::FAMILY,
+    &sysinfo::FAMILY,
+    &strdig::FAMILY,
+    &strformat::FAMILY,
+    &argname::FAMILY,
+    &texttab::FAMILY,
+    &symsearch::FAMILY,
+    &dnheader::FAMILY,
+    &modules::FAMILY,
+    &random::FAMILY,
+    &io::FAMILY,
+    &interrupts::FAMILY,
+    &io_wait::FAMILY,
+    &io_units::FAMILY,
+    &spy::FAMILY,
+    &cfgdata::FAMILY,
+    &tasking::FAMILY,
+    &syncmove::FAMILY,
+    &motion::FAMILY,
+    &rmq::FAMILY,
+    &controller::FAMILY,
 ];
 
-static TABLE: std::sync::LazyLock<Vec<(&'static str, BuiltinFn)>> =
-    std::sync::LazyLock::new(|| FAMILIES.iter().flat_map(|family| family.iter().copied()).collect());
+static REGISTRY: std::sync::LazyLock<registry::Registry> =
+    std::sync::LazyLock::new(|| registry::Registry::build(FAMILIES));
 
-/// The built-ins implemented before the library was split into families.
-static CORE: Entries = &[
-    ("TPWrite", pendant::tp_write),
-    ("TPErase", pendant::tp_erase),
-    ("TPShow", pendant::tp_show),
-    ("ClearRawBytes", rawbytes::clear_raw_bytes),
-    ("CopyRawBytes", rawbytes::copy_raw_bytes),
-    ("PackRawBytes", rawbytes::pack_raw_bytes),
-    ("UnpackRawBytes", rawbytes::unpack_raw_bytes),
-    ("RawBytesLen", rawbytes::raw_bytes_len),
-    ("ErrWrite", pendant::err_write),
-    ("TPReadNum", dialogs::tp_read_num),
-    ("TPReadDnum", dialogs::tp_read_num),
-    ("TPReadFK", dialogs::tp_read_fk),
-    ("UINumEntry", dialogs::ui_num_entry),
-    ("UIDnumEntry", dialogs::ui_dnum_entry),
-    ("UIAlphaEntry", dialogs::ui_alpha_entry),
-    ("UIClientExist", dialogs::ui_client_exist),
-    ("UIMsgBox", dialogs::ui_msg_box),
-    ("UIMessageBox", dialogs::ui_message_box),
-    ("UIListView", dialogs::ui_list_view),
-    ("UINumTune", dialogs::ui_num_tune),
-    ("UIDnumTune", dialogs::ui_dnum_tune),
-    ("RemainingRetries", system::remaining_retries),
-    ("ResetRetryCount", system::reset_retry_count),
-    ("SkipWarn", system::skip_warn),
-    ("ErrLog", events::err_log),
-    ("ErrRaise", events::err_raise),
-    ("WaitTime", system::wait_time),
-    ("ClkReset", clock::clk_reset),
-    ("ClkStart", clock::clk_start),
-    ("ClkStop", clock::clk_stop),
-    ("ClkRead", clock::clk_read),
-    ("Stop", system::stop),
-    ("ExitCycle", system::exit_cycle),
-    ("Break", system::break_),
-    ("BookErrNo", system::book_err_no),
-    ("Dim", system::dim),
-    ("IsPers", system::is_pers),
-    ("IsVar", system::is_var),
-    ("Max", math::max),
-    ("Min", math::min),
-    ("StrOrder", strings::str_order),
-    ("StrToVal", strings::str_to_val),
-    ("Abs", math::abs),
-    ("AbsDnum", math::abs),
-    ("Sqrt", math::sqrt),
-    ("SqrtDnum", math::sqrt),
-    ("Pow", math::pow),
-    ("PowDnum", math::pow),
-    ("Exp", math::exp),
-    ("Round", math::round),
-    ("RoundDnum", math::round),
-    ("Trunc", math::trunc),
-    ("TruncDnum", math::trunc),
-    ("Sin", math::sin),
-    ("Cos", math::cos),
-    ("Tan", math::tan),
-    ("ASin", math::asin),
-    ("ACos", math::acos),
-    ("ATan", math::atan),
-    ("ATan2", math::atan2),
-    ("SinDnum", math::sin_dnum),
-    ("CosDnum", math::cos_dnum),
-    ("TanDnum", math::tan_dnum),
-    ("ASinDnum", math::asin_dnum),
-    ("ACosDnum", math::acos_dnum),
-    ("ATanDnum", math::atan_dnum),
-    ("ATan2Dnum", math::atan2_dnum),
-    ("TryInt", math::try_int),
-    ("CDate", calendar::c_date),
-    ("CTime", calendar::c_time),
-    ("GetTime", calendar::get_time),
-    ("ExecHandler", system::exec_handler),
-    ("ExecLevel", system::exec_level),
-    ("GetDataVal", symbols::get_data_val),
-    ("SetDataVal", symbols::set_data_val),
-    ("Incr", math::incr),
-    ("Decr", math::decr),
-    ("Add", math::add),
-    ("Clear", math::clear),
-    ("DotProd", math::dot_prod),
-    ("CrossProd", math::cross_prod),
-    ("VectMagn", math::vect_magn),
-    ("OrientZYX", geometry::orient_zyx),
-    ("EulerZYX", geometry::euler_zyx),
-    ("NOrient", geometry::n_orient),
-    ("PoseMult", geometry::pose_mult),
-    ("PoseInv", geometry::pose_inv),
-    ("PoseVect", geometry::pose_vect),
-    ("NumToDnum", math::num_to_dnum),
-    ("DnumToNum", math::dnum_to_num),
-    ("StrLen", strings::str_len),
-    ("StrPart", strings::str_part),
-    ("StrFind", strings::str_find),
-    ("StrMatch", strings::str_match),
-    ("StrMemb", strings::str_memb),
-    ("StrMap", strings::str_map),
-    ("NumToStr", strings::num_to_str),
-    ("DnumToStr", strings::dnum_to_str),
-    ("ValToStr", strings::val_to_str),
-    ("BitAnd", bits::bit_and),
-    ("BitOr", bits::bit_or),
-    ("BitXOr", bits::bit_xor),
-    ("BitNeg", bits::bit_neg),
-    ("BitLSh", bits::bit_lsh),
-    ("BitRSh", bits::bit_rsh),
-    ("BitCheck", bits::bit_check),
-    ("BitSet", bits::bit_set),
-    ("BitClear", bits::bit_clear),
-    ("BitAndDnum", bits::bit_and_dnum),
-    ("BitOrDnum", bits::bit_or_dnum),
-    ("BitXOrDnum", bits::bit_xor_dnum),
-    ("BitNegDnum", bits::bit_neg_dnum),
-    ("BitLShDnum", bits::bit_lsh_dnum),
-    ("BitRShDnum", bits::bit_rsh_dnum),
-    ("BitCheckDnum", bits::bit_check_dnum),
-    ("ByteToStr", bits::byte_to_str),
-    ("StrToByte", bits::str_to_byte),
-    ("DecToHex", bits::dec_to_hex),
-    ("HexToDec", bits::hex_to_dec),
-];
-
-/// The implementation of the built-in named `name` (any letter case).
+/// The built-in named `name` (any letter case), if `rapid run` runs it. The compiler
+/// asks once per call site; running the call goes by the id.
 pub fn lookup(name: &str) -> Option<BuiltinId> {
-    TABLE.iter().position(|(n, _)| n.eq_ignore_ascii_case(name)).map(|i| BuiltinId(i as u16))
+    REGISTRY.lookup(name)
 }
-
-/// Built-ins the compiler turns into instructions of their own instead of a call
-/// (see `compile/call.rs`): they run although they are in no family's table.
-const COMPILED_INLINE: &[&str] = &["Present", "CallByVar", "Type", "WaitUntil"];
 
 /// Whether `rapid run` runs the built-in named `name` (any letter case); a program
 /// calling one that is not is refused when it is loaded.
 pub fn implemented(name: &str) -> bool {
-    lookup(name).is_some() || COMPILED_INLINE.iter().any(|n| n.eq_ignore_ascii_case(name))
+    lookup(name).is_some()
 }
 
+/// Why `rapid run` does not run the catalogue routine `name` yet, if it is listed.
+pub fn not_supported_reason(name: &str) -> Option<&'static str> {
+    not_yet::reason(name)
+}
+
+/// The registration of built-in `id`.
+pub fn builtin(id: BuiltinId) -> &'static Builtin {
+    &REGISTRY.builtins[id.0 as usize]
+}
+
+/// Every registration with the file of its family, in registry order.
+pub fn registered() -> impl Iterator<Item = (&'static Builtin, &'static str)> {
+    let registry: &'static registry::Registry = &REGISTRY;
+    registry.builtins.iter().enumerate().map(|(idx, b)| (b, FAMILIES[registry.family_of(BuiltinId(idx as u16))].file))
+}
+
+#[inline]
 pub fn function(id: BuiltinId) -> BuiltinFn {
-    TABLE[id.0 as usize].1
+    REGISTRY.builtins[id.0 as usize].run
+}
+
+/// The pure form of built-in `id`, if it has one (`pure.rs`).
+#[inline]
+pub fn pure_form(id: BuiltinId) -> Option<pure::PureFn> {
+    REGISTRY.builtins[id.0 as usize].pure
 }
 
 pub fn name(id: BuiltinId) -> &'static str {
-    TABLE[id.0 as usize].0
+    REGISTRY.builtins[id.0 as usize].name
 }

@@ -13,7 +13,7 @@ use rapid_sema::SourceInput;
 use rustc_hash::FxHashMap;
 
 use super::files::devices;
-use super::{present, Ctx, Entries};
+use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Opaque, OpaqueState, Value};
@@ -89,16 +89,19 @@ impl ModuleState {
     }
 }
 
-pub(super) static ENTRIES: Entries = &[
-    ("Load", load),
-    ("UnLoad", unload),
-    ("StartLoad", start_load),
-    ("WaitLoad", wait_load),
-    ("CancelLoad", cancel_load),
-    ("CheckProgRef", check_prog_ref),
-    ("Save", save),
-    ("EraseModule", erase_module),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("Load", load),
+        native("UnLoad", unload),
+        native("StartLoad", start_load),
+        native("WaitLoad", wait_load),
+        native("CancelLoad", cancel_load),
+        native("CheckProgRef", check_prog_ref),
+        native("Save", save),
+        native("EraseModule", erase_module),
+    ],
+};
 
 /// An optional string argument.
 fn opt_string(ctx: &Ctx<'_>, arg: Option<&Value>) -> Result<Option<String>, RapidError> {
@@ -138,6 +141,25 @@ fn read_module(ctx: &Ctx<'_>, path: &Value, file: Option<&Value>, dynamic: bool)
     let bytes = std::fs::read(&host).map_err(|e| ctx.error(Err::IoError, format!("`{path}` cannot be read: {e}")))?;
     let source = SourceInput::from_bytes(path.clone(), bytes);
     Ok(LoadFile { path, host, source, dynamic })
+}
+
+/// A Load of the module file at RAPID path `text` (`HOME:/x.mod`) under the controller
+/// root `root`, as a front end asks for it (RWS `loadmod`): the file read, checked for
+/// size. Err says why not, as Load's error would.
+pub fn front_end_load(root: Option<&std::path::Path>, text: &str) -> Result<ModuleRequest, String> {
+    let resolved = devices::resolve(root, text).map_err(|fault| format!("`{text}`: {}", fault.message()))?;
+    let host = resolved.path;
+    match std::fs::metadata(&host) {
+        Ok(meta) if meta.is_file() && meta.len() <= MAX_MODULE_BYTES => {}
+        Ok(meta) if meta.is_file() => {
+            return Err(format!("`{text}` is larger than the program memory ({MAX_MODULE_BYTES} bytes)"))
+        }
+        _ => return Err(format!("the module file `{text}` was not found")),
+    }
+    let bytes = std::fs::read(&host).map_err(|e| format!("`{text}` cannot be read: {e}"))?;
+    let source = SourceInput::from_bytes(text.to_owned(), bytes);
+    let file = LoadFile { path: text.to_owned(), host, source, dynamic: false };
+    Ok(ModuleRequest::Load { file, check_ref: false })
 }
 
 /// `Load [\Dynamic] FilePath [\File] [\CheckRef]`.

@@ -7,6 +7,17 @@ use crate::events::{Event, EventKind, USER_DOMAIN};
 use crate::format::{bool_to_text, dnum_to_text, num_to_text, orient_to_text, pos_to_text};
 use crate::value::Value;
 
+/// The built-ins this family runs (see `registry.rs`).
+pub(super) static FAMILY: super::Family = super::Family {
+    file: file!(),
+    builtins: &[
+        super::native("TPWrite", tp_write),
+        super::native("TPErase", tp_erase),
+        super::native("TPShow", tp_show),
+        super::native("ErrWrite", err_write),
+    ],
+};
+
 /// `TPWrite String [\Num] | [\Bool] | [\Pos] | [\Orient] | [\Dnum]` (parameter order
 /// as the catalogue declares it).
 pub(super) fn tp_write(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {

@@ -4,58 +4,18 @@
 //! whenever anything is unusual (a wrong type, a value the function refuses), and the
 //! call then takes the general path through the built-in's own implementation, which
 //! raises the RAPID error. Each must give exactly what that implementation gives.
+//! A family registers a pure form beside the built-in's implementation
+//! (`native("Abs", abs).with_pure(pure::abs)`).
 
-use super::{math, BuiltinId};
+use super::math;
 use crate::value::Value;
 
 /// A pure function on the arguments passed (optional ones not passed are left off
 /// the end).
 pub type PureFn = fn(&[Value]) -> Option<Value>;
 
-/// The pure functions, by the catalogue's name; each mirrors the entry of the same
-/// name in its family (`strings.rs`, `math.rs`).
-static PURE: &[(&str, PureFn)] = &[
-    ("StrLen", str_len),
-    ("NumToStr", num_to_str),
-    ("StrPart", str_part),
-    ("StrFind", str_find),
-    ("StrMap", str_map),
-    ("Abs", abs),
-    ("AbsDnum", abs),
-    ("Sqrt", sqrt),
-    ("SqrtDnum", sqrt),
-    ("Round", round),
-    ("RoundDnum", round),
-    ("Trunc", trunc),
-    ("TruncDnum", trunc),
-    ("Sin", sin),
-    ("Cos", cos),
-    ("Tan", tan),
-    ("ATan2", atan2),
-];
-
-static BY_ID: std::sync::LazyLock<Vec<Option<PureFn>>> = std::sync::LazyLock::new(|| {
-    let mut table = Vec::new();
-    for &(name, function) in PURE {
-        if let Some(id) = super::lookup(name) {
-            let at = id.0 as usize;
-            if table.len() <= at {
-                table.resize(at + 1, None);
-            }
-            table[at] = Some(function);
-        }
-    }
-    table
-});
-
-/// The pure form of built-in `id`, if it has one.
-#[inline]
-pub fn pure(id: BuiltinId) -> Option<PureFn> {
-    BY_ID.get(id.0 as usize).copied().flatten()
-}
-
 /// `StrLen(Str)`: characters, not bytes.
-fn str_len(args: &[Value]) -> Option<Value> {
+pub(super) fn str_len(args: &[Value]) -> Option<Value> {
     match args {
         [Value::Str(s)] => Some(Value::Num(s.chars().count() as f32)),
         _ => None,
@@ -63,7 +23,7 @@ fn str_len(args: &[Value]) -> Option<Value> {
 }
 
 /// `NumToStr(Val, Dec [\Exp])`.
-fn num_to_str(args: &[Value]) -> Option<Value> {
+pub(super) fn num_to_str(args: &[Value]) -> Option<Value> {
     let (value, dec, exp) = match args {
         [Value::Num(v), Value::Num(d)] => (*v, *d, false),
         [Value::Num(v), Value::Num(d), Value::SwitchOn] => (*v, *d, true),
@@ -75,7 +35,7 @@ fn num_to_str(args: &[Value]) -> Option<Value> {
 }
 
 /// `StrPart(Str, ChPos, Len)`.
-fn str_part(args: &[Value]) -> Option<Value> {
+pub(super) fn str_part(args: &[Value]) -> Option<Value> {
     match args {
         [Value::Str(s), Value::Num(start), Value::Num(len)] => {
             super::strings::part(s, f64::from(*start), f64::from(*len)).ok()
@@ -85,7 +45,7 @@ fn str_part(args: &[Value]) -> Option<Value> {
 }
 
 /// `StrFind(Str, ChPos, Set)` (with `\NotInSet` the call takes the general path).
-fn str_find(args: &[Value]) -> Option<Value> {
+pub(super) fn str_find(args: &[Value]) -> Option<Value> {
     match args {
         [Value::Str(s), Value::Num(start), Value::Str(set)] => {
             super::strings::find(s, f64::from(*start), set, false).ok()
@@ -95,7 +55,7 @@ fn str_find(args: &[Value]) -> Option<Value> {
 }
 
 /// `StrMap(Str, FromMap, ToMap)`.
-fn str_map(args: &[Value]) -> Option<Value> {
+pub(super) fn str_map(args: &[Value]) -> Option<Value> {
     match args {
         [Value::Str(s), Value::Str(from), Value::Str(to)] => Some(super::strings::map(s, from, to)),
         _ => None,
@@ -112,13 +72,13 @@ fn number(value: &Value) -> Option<f64> {
 }
 
 /// `Abs(Input)`, `AbsDnum`.
-fn abs(args: &[Value]) -> Option<Value> {
+pub(super) fn abs(args: &[Value]) -> Option<Value> {
     let [v] = args else { return None };
     Some(math::same_kind(v, number(v)?.abs()))
 }
 
 /// `Sqrt(Value)`, `SqrtDnum`: a negative value takes the general path (its error).
-fn sqrt(args: &[Value]) -> Option<Value> {
+pub(super) fn sqrt(args: &[Value]) -> Option<Value> {
     let [v] = args else { return None };
     let x = number(v).filter(|x| *x >= 0.0)?;
     Some(math::same_kind(v, x.sqrt()))
@@ -133,12 +93,12 @@ fn value_and_decimals(args: &[Value]) -> Option<(&Value, f64, i32)> {
     }
 }
 
-fn round(args: &[Value]) -> Option<Value> {
+pub(super) fn round(args: &[Value]) -> Option<Value> {
     let (v, x, dec) = value_and_decimals(args)?;
     Some(math::same_kind(v, math::round_to(x, dec)))
 }
 
-fn trunc(args: &[Value]) -> Option<Value> {
+pub(super) fn trunc(args: &[Value]) -> Option<Value> {
     let (v, x, dec) = value_and_decimals(args)?;
     Some(math::same_kind(v, math::trunc_to(x, dec)))
 }
@@ -149,20 +109,20 @@ fn degrees(args: &[Value], f: fn(f64) -> f64) -> Option<Value> {
     Some(math::trig_result(false, f(number(v)?.to_radians())))
 }
 
-fn sin(args: &[Value]) -> Option<Value> {
+pub(super) fn sin(args: &[Value]) -> Option<Value> {
     degrees(args, f64::sin)
 }
 
-fn cos(args: &[Value]) -> Option<Value> {
+pub(super) fn cos(args: &[Value]) -> Option<Value> {
     degrees(args, f64::cos)
 }
 
-fn tan(args: &[Value]) -> Option<Value> {
+pub(super) fn tan(args: &[Value]) -> Option<Value> {
     degrees(args, f64::tan)
 }
 
 /// `ATan2(Y, X)` in degrees.
-fn atan2(args: &[Value]) -> Option<Value> {
+pub(super) fn atan2(args: &[Value]) -> Option<Value> {
     let [y, x] = args else { return None };
     Some(math::trig_result(false, number(y)?.atan2(number(x)?).to_degrees()))
 }
@@ -173,7 +133,7 @@ mod tests {
 
     fn call(name: &str, args: &[Value]) -> Option<Value> {
         let id = super::super::lookup(name).expect("a built-in");
-        pure(id).unwrap_or_else(|| panic!("no pure form of {name}"))(args)
+        super::super::pure_form(id).unwrap_or_else(|| panic!("no pure form of {name}"))(args)
     }
 
     #[test]
@@ -200,6 +160,6 @@ mod tests {
         assert_eq!(call("Round", &[Value::Num(1.0), Value::Num(16.0)]), None);
         assert_eq!(call("Cos", &[Value::Num(0.0)]), Some(Value::Num(1.0)));
         assert_eq!(call("ATan2", &[Value::Num(1.0), Value::Num(0.0)]), Some(Value::Num(90.0)));
-        assert!(pure(super::super::lookup("TPWrite").expect("TPWrite")).is_none());
+        assert!(super::super::pure_form(super::super::lookup("TPWrite").expect("TPWrite")).is_none());
     }
 }

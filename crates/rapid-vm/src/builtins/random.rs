@@ -5,7 +5,7 @@
 // every run (a fixed seed), because the virtual controller is deterministic by design:
 // the same program gives the same output.
 
-use super::{Ctx, Entries};
+use super::{native, Ctx, Family};
 use crate::error::RapidError;
 use crate::value::Value;
 
@@ -43,7 +43,7 @@ fn rand(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError>
     Ok(Some(Value::Num(ctx.resources.random.next_num())))
 }
 
-pub(super) static ENTRIES: Entries = &[("Rand", rand)];
+pub(super) static FAMILY: Family = Family { file: file!(), builtins: &[native("Rand", rand)] };
 
 #[cfg(test)]
 mod tests {

@@ -16,6 +16,18 @@ use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Opaque, OpaqueState, Value, MAX_STRING_CHARS};
 
+/// The built-ins this family runs (see `registry.rs`).
+pub(super) static FAMILY: super::Family = super::Family {
+    file: file!(),
+    builtins: &[
+        super::native("ClearRawBytes", clear_raw_bytes),
+        super::native("CopyRawBytes", copy_raw_bytes),
+        super::native("PackRawBytes", pack_raw_bytes),
+        super::native("UnpackRawBytes", unpack_raw_bytes),
+        super::native("RawBytesLen", raw_bytes_len),
+    ],
+};
+
 type Res = Result<Option<Value>, RapidError>;
 type Fault = (Err, String);
 

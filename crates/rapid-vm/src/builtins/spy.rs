@@ -122,7 +122,10 @@ pub fn spy_stop(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     Ok(None)
 }
 
-pub(super) static ENTRIES: super::Entries = &[("SpyStart", spy_start), ("SpyStop", spy_stop)];
+pub(super) static FAMILY: super::Family = super::Family {
+    file: file!(),
+    builtins: &[super::native("SpyStart", spy_start), super::native("SpyStop", spy_stop)],
+};
 
 #[cfg(test)]
 mod tests {

@@ -11,14 +11,15 @@
 //! uncertain: the range and the errnos are recalled from ABB's manual (3HAC050917), not
 //! confirmed from a public copy; so is the handling of the empty string.
 
-use super::{Ctx, Entries};
+use super::{native, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
 
 type Res = Result<Option<Value>, RapidError>;
 
-pub(super) static ENTRIES: Entries = &[("StrDigCmp", str_dig_cmp), ("StrDigCalc", str_dig_calc)];
+pub(super) static FAMILY: Family =
+    Family { file: file!(), builtins: &[native("StrDigCmp", str_dig_cmp), native("StrDigCalc", str_dig_calc)] };
 
 /// The largest value a stringdig may hold.
 const STRDIG_MAX: u64 = 4_294_967_295;

@@ -9,14 +9,14 @@
 //! extract and programs such as abb-motion-program-exec); the catalogue accepts ten.
 //! What happens to a placeholder without its argument is not documented.
 
-use super::{present, Ctx, Entries};
+use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{string_len, Value, MAX_STRING_CHARS};
 
 type Res = Result<Option<Value>, RapidError>;
 
-pub(super) static ENTRIES: Entries = &[("StrFormat", str_format)];
+pub(super) static FAMILY: Family = Family { file: file!(), builtins: &[native("StrFormat", str_format)] };
 
 fn str_format(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let text = ctx.string(&args[0])?;

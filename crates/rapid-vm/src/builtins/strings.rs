@@ -6,6 +6,24 @@ use crate::error::RapidError;
 use crate::format::dnum_to_str as dnum_text;
 use crate::value::{Value, MAX_STRING_CHARS};
 
+/// The built-ins this family runs (see `registry.rs`).
+pub(super) static FAMILY: super::Family = super::Family {
+    file: file!(),
+    builtins: &[
+        super::native("StrOrder", str_order),
+        super::native("StrToVal", str_to_val),
+        super::native("StrLen", str_len).with_pure(super::pure::str_len),
+        super::native("StrPart", str_part).with_pure(super::pure::str_part),
+        super::native("StrFind", str_find).with_pure(super::pure::str_find),
+        super::native("StrMatch", str_match),
+        super::native("StrMemb", str_memb),
+        super::native("StrMap", str_map).with_pure(super::pure::str_map),
+        super::native("NumToStr", num_to_str).with_pure(super::pure::num_to_str),
+        super::native("DnumToStr", dnum_to_str),
+        super::native("ValToStr", val_to_str),
+    ],
+};
+
 type Res = Result<Option<Value>, RapidError>;
 
 fn chars(s: &str) -> Vec<char> {

@@ -10,6 +10,12 @@ use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{OpaqueState, Value};
 
+/// The built-ins this family runs (see `registry.rs`).
+pub(super) static FAMILY: super::Family = super::Family {
+    file: file!(),
+    builtins: &[super::native("GetDataVal", get_data_val), super::native("SetDataVal", set_data_val)],
+};
+
 type Res = Result<Option<Value>, RapidError>;
 
 /// Finds `Object` in this task (with `\Block`, as seen from that module).

@@ -10,7 +10,7 @@
 //! given that time as if by `\T`.
 
 use super::tasking::{meet, sync_point, task_list};
-use super::{present, Ctx, Entries, StopKind};
+use super::{native, present, Ctx, Family, StopKind};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Record, Value};
@@ -283,12 +283,15 @@ fn time_alone(
     Ok(planner.flush().map_or(0.0, |m| m.zone_entry - m.start))
 }
 
-pub(super) static ENTRIES: Entries = &[
-    ("SyncMoveOn", sync_move_on),
-    ("SyncMoveOff", sync_move_off),
-    ("SyncMoveUndo", sync_move_undo),
-    ("SyncMoveSuspend", sync_move_suspend),
-    ("SyncMoveResume", sync_move_resume),
-    ("IsSyncMoveOn", is_sync_move_on),
-    ("TasksInSync", tasks_in_sync),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("SyncMoveOn", sync_move_on),
+        native("SyncMoveOff", sync_move_off),
+        native("SyncMoveUndo", sync_move_undo),
+        native("SyncMoveSuspend", sync_move_suspend),
+        native("SyncMoveResume", sync_move_resume),
+        native("IsSyncMoveOn", is_sync_move_on),
+        native("TasksInSync", tasks_in_sync),
+    ],
+};

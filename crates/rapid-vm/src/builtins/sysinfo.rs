@@ -6,25 +6,28 @@
 //! ExecHandler and ExecLevel are not here: they need to know whether the caller runs in
 //! an ERROR/BACKWARD/UNDO handler or a trap routine, which `Ctx` does not tell.
 
-use super::{present, Ctx, Entries};
+use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
 
 type Res = Result<Option<Value>, RapidError>;
 
-pub(super) static ENTRIES: Entries = &[
-    ("GetSysInfo", get_sys_info),
-    ("IsSysId", is_sys_id),
-    ("RobOS", rob_os),
-    ("OpMode", op_mode),
-    ("RunMode", run_mode),
-    ("NonMotionMode", non_motion_mode),
-    ("ProgMemFree", prog_mem_free),
-    ("GetNextOption", get_next_option),
-    ("GetNextProduct", get_next_product),
-    ("EventType", event_type),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("GetSysInfo", get_sys_info),
+        native("IsSysId", is_sys_id),
+        native("RobOS", rob_os),
+        native("OpMode", op_mode),
+        native("RunMode", run_mode),
+        native("NonMotionMode", non_motion_mode),
+        native("ProgMemFree", prog_mem_free),
+        native("GetNextOption", get_next_option),
+        native("GetNextProduct", get_next_product),
+        native("EventType", event_type),
+    ],
+};
 
 // uncertain: what a real virtual controller reports is not public; these are ours.
 /// The controller's serial number (GetSysInfo \SerialNo, IsSysId).

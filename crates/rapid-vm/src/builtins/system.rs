@@ -5,6 +5,26 @@ use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
 
+/// The built-ins this family runs (see `registry.rs`).
+pub(super) static FAMILY: super::Family = super::Family {
+    file: file!(),
+    builtins: &[
+        super::native("RemainingRetries", remaining_retries),
+        super::native("ResetRetryCount", reset_retry_count),
+        super::native("SkipWarn", skip_warn),
+        super::native("WaitTime", wait_time),
+        super::native("Stop", stop),
+        super::native("ExitCycle", exit_cycle),
+        super::native("Break", break_).compiled_as(super::Compiled::Break),
+        super::native("BookErrNo", book_err_no),
+        super::native("Dim", dim),
+        super::native("IsPers", is_pers),
+        super::native("IsVar", is_var),
+        super::native("ExecHandler", exec_handler),
+        super::native("ExecLevel", exec_level),
+    ],
+};
+
 /// `WaitTime [\InPos] Time`: waits `Time` seconds of controller time; with `\InPos` from
 /// when the robot stands at the end of its last move (a fly-by point there becomes a stop
 /// point: §2.3, the instruction that ends a \Conc sequence).

@@ -14,7 +14,7 @@ use rustc_hash::FxHashMap;
 
 use super::rmq::RmqMessage;
 
-use super::{present, Ctx, Entries, StopKind};
+use super::{native, present, Ctx, Family, StopKind};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
@@ -550,16 +550,19 @@ fn task_is_executing(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(Value::Bool(named_task(ctx, args)?.executing)))
 }
 
-pub(super) static ENTRIES: Entries = &[
-    ("WaitSyncTask", wait_sync_task),
-    ("TestAndSet", test_and_set),
-    ("WaitTestAndSet", wait_test_and_set),
-    ("GetTaskName", get_task_name),
-    ("TaskRunRob", task_run_rob),
-    ("TaskRunMec", task_run_mec),
-    ("TaskIsActive", task_is_active),
-    ("TaskIsExecuting", task_is_executing),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("WaitSyncTask", wait_sync_task),
+        native("TestAndSet", test_and_set),
+        native("WaitTestAndSet", wait_test_and_set),
+        native("GetTaskName", get_task_name),
+        native("TaskRunRob", task_run_rob),
+        native("TaskRunMec", task_run_mec),
+        native("TaskIsActive", task_is_active),
+        native("TaskIsExecuting", task_is_executing),
+    ],
+};
 
 #[cfg(test)]
 mod tests {

@@ -20,19 +20,22 @@
 
 use rustc_hash::FxHashMap;
 
-use super::{present, Ctx, Entries};
+use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Value, MAX_STRING_CHARS};
 
 type Res = Result<Option<Value>, RapidError>;
 
-pub(super) static ENTRIES: Entries = &[
-    ("TextTabInstall", text_tab_install),
-    ("TextTabGet", text_tab_get),
-    ("TextGet", text_get),
-    ("TextTabFreeToUse", text_tab_free_to_use),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("TextTabInstall", text_tab_install),
+        native("TextTabGet", text_tab_get),
+        native("TextGet", text_get),
+        native("TextTabFreeToUse", text_tab_free_to_use),
+    ],
+};
 
 /// The installed text tables; a table's number is its position plus one.
 #[derive(Default)]

@@ -8,56 +8,22 @@ use rapid_syntax::{Span, Symbol};
 
 use super::expr::expected_dims;
 use super::{CompileError, LocalKind, Resolved, RoutineCompiler};
-use crate::builtins;
+use crate::builtins::{self, Compiled};
 use crate::ir::{ArgOrigin, ArgSpec, CallSite, Callee, Instr, LateArg};
 
-/// Built-ins whose `anytype` parameters take a signal itself rather than its value.
-/// Built-ins that know an argument by the name of the data passed: a syncident is the
-/// same sync point in every task by its name, a taskid names its task (`T_ROB2Id`).
-const NAME_TAKING: &[&str] = &[
-    "GetDataVal",
-    "SetDataVal",
-    "CJointT",
-    "CRobT",
-    "MoveJ",
-    "MoveL",
-    "MoveC",
-    "MoveAbsJ",
-    "WaitSyncTask",
-    "SyncMoveOn",
-    "SyncMoveOff",
-    "IndAMove",
-    "IndCMove",
-    "IndDMove",
-    "IndRMove",
-    "IndReset",
-    "IndInpos",
-    "IndSpeed",
-    "TaskIsActive",
-    "TaskIsExecuting",
-    "GetSysData",
-    "SetSysData",
-    "GripLoad",
-    "GetTSPStatus",
-    "GetMecUnitName",
-    "GetServiceInfo",
-    // The mechanical-unit family: a mecunit is known by the data object passed.
-    "IsMechUnitActive",
-    "ActUnit",
-    "DeactUnit",
-    "MechUnitLoad",
-    "ReadMotor",
-    "GetMotorTorque",
-    "ParIdRobValid",
-    "SoftAct",
-    "TuneServo",
-    "SpeedLimAxis",
-    "TestSignDefine",
-    "CalcRotAxisFrame",
-];
-
-const SIGNAL_TAKING: &[&str] =
-    &["AliasIO", "AliasIOReset", "ValidIO", "GetSignalOrigin", "GetGroupSignalInfo", "TriggCheckIO"];
+/// The built-ins the compiler turns into instructions of its own (registered here,
+/// beside the code that compiles them; Break and ArgName, which also run as
+/// functions, are registered with their families).
+pub(crate) static FAMILY: builtins::Family = builtins::Family {
+    file: file!(),
+    builtins: &[
+        builtins::compiled("Present", Compiled::Present),
+        builtins::compiled("CallByVar", Compiled::CallByVar),
+        builtins::compiled("Type", Compiled::Type),
+        builtins::compiled("WaitUntil", Compiled::WaitUntil),
+        builtins::compiled("Continue", Compiled::Continue),
+    ],
+};
 
 impl RoutineCompiler<'_> {
     /// A call of `name` with `args`; `in_expr` for function calls (the result is pushed).
@@ -91,42 +57,34 @@ impl RoutineCompiler<'_> {
         let callee = match info.chapter {
             None => Callee::Routine(idx),
             Some(_) => {
-                if info.display.eq_ignore_ascii_case("Present") {
-                    return self.present(arena, args, span);
-                }
-                if info.display.eq_ignore_ascii_case("CallByVar") {
-                    return self.call_by_var(arena, args);
-                }
-                if info.display.eq_ignore_ascii_case("Break") && !self.loops.is_empty() {
-                    // RW 6.15 (manual §1.5): Break ends the innermost enclosing loop.
-                    // Outside a loop it keeps its older meaning, a debugging stop.
-                    let jump = self.code.emit(Instr::Jump(0));
-                    if let Some(jumps) = self.loops.last_mut() {
-                        jumps.breaks.push(jump);
+                let Some(id) = builtins::lookup(&info.display) else {
+                    return Err(self.unsupported(span, &format!("the built-in `{}`", info.display)));
+                };
+                match builtins::builtin(id).compiled {
+                    Some(Compiled::Present) => return self.present(arena, args, span),
+                    Some(Compiled::CallByVar) => return self.call_by_var(arena, args),
+                    Some(Compiled::Break) if !self.loops.is_empty() => {
+                        // RW 6.15 (manual §1.5): Break ends the innermost enclosing loop.
+                        // Outside a loop it keeps its older meaning, a debugging stop.
+                        let jump = self.code.emit(Instr::Jump(0));
+                        if let Some(jumps) = self.loops.last_mut() {
+                            jumps.breaks.push(jump);
+                        }
+                        return Ok(());
                     }
-                    return Ok(());
-                }
-                if info.display.eq_ignore_ascii_case("Continue") {
-                    // Manual §1.5: skip the rest of the loop, start its next iteration.
-                    let Some(jumps) = self.loops.last_mut() else {
-                        return Err(self.error(span, "Continue is only allowed inside a FOR or WHILE loop"));
-                    };
-                    let jump = self.code.emit(Instr::Jump(0));
-                    jumps.continues.push(jump);
-                    return Ok(());
-                }
-                if info.display.eq_ignore_ascii_case("Type") {
-                    return self.type_name(arena, args, span);
-                }
-                if info.display.eq_ignore_ascii_case("WaitUntil") {
-                    return self.wait_until(arena, &info, args, span);
-                }
-                if info.display.eq_ignore_ascii_case("ArgName") {
-                    return self.arg_name(arena, &info, args, span);
-                }
-                match builtins::lookup(&info.display) {
-                    Some(id) => Callee::Builtin(id),
-                    None => return Err(self.unsupported(span, &format!("the built-in `{}`", info.display))),
+                    Some(Compiled::Continue) => {
+                        // Manual §1.5: skip the rest of the loop, start its next iteration.
+                        let Some(jumps) = self.loops.last_mut() else {
+                            return Err(self.error(span, "Continue is only allowed inside a FOR or WHILE loop"));
+                        };
+                        let jump = self.code.emit(Instr::Jump(0));
+                        jumps.continues.push(jump);
+                        return Ok(());
+                    }
+                    Some(Compiled::Type) => return self.type_name(arena, args, span),
+                    Some(Compiled::WaitUntil) => return self.wait_until(arena, &info, args, span),
+                    Some(Compiled::ArgName) => return self.arg_name(arena, &info, id, args),
+                    Some(Compiled::Break) | None => Callee::Builtin(id),
                 }
             }
         };
@@ -134,8 +92,7 @@ impl RoutineCompiler<'_> {
         let bound = bind_args(&info, arena.args(args), |id, param| self.arg_fits(arena, id, param));
         let mut specs = Vec::with_capacity(info.params.len());
         let mut n_pushed = 0u16;
-        let takes_signals =
-            info.chapter.is_some() && SIGNAL_TAKING.iter().any(|n| info.display.eq_ignore_ascii_case(n));
+        let takes_signals = info.flags.takes_signals;
         for (param, arg) in info.params.iter().zip(&bound) {
             let spec = match arg {
                 None => ArgSpec::Absent,
@@ -148,7 +105,7 @@ impl RoutineCompiler<'_> {
         }
         // ArgName in the callee looks through its parameters to these arguments.
         // Built-ins that identify data by its name (a syncident, a taskid) read it there too.
-        let names_data = info.chapter.is_some() && NAME_TAKING.iter().any(|n| info.display.eq_ignore_ascii_case(n));
+        let names_data = info.flags.names_data;
         let origins = match callee {
             Callee::Routine(_) => Some(self.origins(arena, &bound, &specs)),
             Callee::Builtin(_) if names_data => Some(self.origins(arena, &bound, &specs)),
@@ -178,10 +135,13 @@ impl RoutineCompiler<'_> {
     /// `ArgName(Parameter [\ErrorNumber])`: the Parameter argument is never evaluated
     /// (an absent optional parameter or a switch must give ERR_ARGNAME, not
     /// ERR_NOTPRES); the call site records which data object it names instead.
-    fn arg_name(&mut self, arena: &Arena, info: &RoutineInfo, args: ArgList, span: Span) -> Result<(), CompileError> {
-        let Some(id) = builtins::lookup(&info.display) else {
-            return Err(self.unsupported(span, "the built-in `ArgName`"));
-        };
+    fn arg_name(
+        &mut self,
+        arena: &Arena,
+        info: &RoutineInfo,
+        id: builtins::BuiltinId,
+        args: ArgList,
+    ) -> Result<(), CompileError> {
         let bound = bind_args(info, arena.args(args), |id, param| self.arg_fits(arena, id, param));
         let mut specs = Vec::with_capacity(info.params.len());
         let mut n_pushed = 0u16;

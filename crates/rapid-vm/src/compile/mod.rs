@@ -5,7 +5,7 @@
 //! trusts types and arity; what it cannot run yet it refuses with a clear message.
 
 mod body;
-mod call;
+pub(crate) mod call;
 mod expr;
 mod kernel;
 mod stmt;
@@ -219,19 +219,19 @@ fn compile_init(
     init.code
 }
 
-/// Arrays may hold at most this many elements: the controller's program memory is a
-/// few megabytes (a million nums is 4 MB there), and a bigger array would only
-/// exhaust the host's and make every copy of it slow.
-pub const MAX_ARRAY_ELEMENTS: u64 = 1 << 20;
+/// Arrays may hold at most this many elements (the one table of limits; the checker
+/// refuses bigger ones first, E0313, so this guards programs that bypass it).
+pub const MAX_ARRAY_ELEMENTS: u64 = rapid_limits::ARRAY_ELEMENTS;
 
 /// The element count of an array with `dims` when it is over the limit.
-fn too_many_elements(dims: &[u32]) -> Option<u64> {
-    let n = dims.iter().fold(1u64, |acc, &d| acc.saturating_mul(u64::from(d.max(1))));
-    (n > MAX_ARRAY_ELEMENTS).then_some(n)
+fn too_many_elements(dims: &[u32]) -> Option<f64> {
+    let sizes: Vec<f64> = dims.iter().map(|&d| f64::from(d.max(1))).collect();
+    let n = rapid_limits::array_elements(&sizes);
+    (n > MAX_ARRAY_ELEMENTS as f64).then_some(n)
 }
 
-fn array_too_large(name: &str, n: u64) -> String {
-    format!("array `{name}` has {n} elements; at most {MAX_ARRAY_ELEMENTS} fit in program memory")
+fn array_too_large(name: &str, n: f64) -> String {
+    rapid_limits::array_too_large(name, n)
 }
 
 fn item_span(item: &Item) -> Span {

@@ -355,7 +355,7 @@ impl Vm {
         let n_int = n as i32;
         let booked = super::is_booked(n_int, self.next_booked);
         let predefined = self.errnos.values().any(|&v| v == n_int);
-        if n.fract() == 0.0 && ((1..=90).contains(&n_int) || booked || predefined) {
+        if n.fract() == 0.0 && ((1..=rapid_limits::RAISE_ERRNO_MAX).contains(&n_int) || booked || predefined) {
             let name = self.errnos.iter().find(|(_, &v)| v == n_int).map_or("", |(k, _)| *k);
             return RapidError {
                 errno: n_int,

@@ -433,7 +433,7 @@ impl Vm {
                     let at = stack.len() - site.n_pushed as usize;
                     // A pure function reads its arguments where they lie; anything
                     // unusual takes the general path below.
-                    if let Some(pure) = crate::builtins::pure::pure(id).filter(|_| only_trailing_absent(site)) {
+                    if let Some(pure) = crate::builtins::pure_form(id).filter(|_| only_trailing_absent(site)) {
                         if let Some(value) = pure(&stack[at..]) {
                             stack.truncate(at);
                             stack.push(value);

@@ -43,7 +43,7 @@ use storage::{coerce_like, index_place, Storage};
 /// RETRY may restart a failing instruction this many times (§1.12: "up to four").
 pub const MAX_RETRIES: u32 = 4;
 /// Calls nested deeper than this stop the program (runaway recursion).
-pub const MAX_CALL_DEPTH: usize = 10_000;
+pub const MAX_CALL_DEPTH: usize = rapid_limits::CALL_DEPTH;
 /// The first number BookErrNo hands out.
 const FIRST_BOOKED_ERRNO: i32 = 5000;
 

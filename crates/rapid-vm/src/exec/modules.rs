@@ -244,6 +244,13 @@ impl TaskModules {
 }
 
 impl Vm {
+    /// The names of the task's live modules, as they are written: the ones it started
+    /// with, then those loaded since, in load order.
+    pub fn module_names(&self) -> Vec<String> {
+        let base = self.modules.base_modules.iter().filter(|m| m.live).map(|m| m.name.clone());
+        base.chain(self.modules.units.iter().filter(|u| u.live).map(|u| u.name.clone())).collect()
+    }
+
     /// Source file `file` of the running program: one it started with or a module it
     /// loaded since (for error locations).
     pub fn program_source(&self, file: usize) -> Option<&SourceInput> {
@@ -258,6 +265,16 @@ impl Vm {
     /// How the task was checked, so modules loaded later are checked the same way.
     pub fn set_program_options(&mut self, options: Options) {
         self.modules.options = options;
+    }
+
+    /// Carries out a module request of a front end (RWS loading or unloading a module
+    /// while the program is stopped): what the built-in would have asked for.
+    pub fn front_end_module_request(
+        &mut self,
+        request: ModuleRequest,
+        host: &mut dyn crate::host::Host,
+    ) -> Result<(), RapidError> {
+        self.module_request(request, host)
     }
 
     /// Carries out what a module built-in asked for.

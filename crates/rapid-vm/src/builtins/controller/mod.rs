@@ -15,27 +15,30 @@ pub mod sysdata;
 mod units;
 pub(crate) use units::planner_no;
 
-use super::{present, Ctx, Entries, StopKind};
+use super::{native, present, Ctx, Family, StopKind};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
 
 type Res = Result<Option<Value>, RapidError>;
 
-pub(super) static ENTRIES: Entries = &[
-    ("ResetPPMoved", reset_pp_moved),
-    ("PPMovedInManMode", pp_moved_in_man_mode),
-    ("IsStopStateEvent", is_stop_state_event),
-    ("WarmStart", warm_start),
-    ("GetSysData", sysdata::get_sys_data),
-    ("SetSysData", sysdata::set_sys_data),
-    ("GetTSPStatus", units::get_tsp_status),
-    ("MotionPlannerNo", units::motion_planner_no),
-    ("GetMecUnitName", units::get_mec_unit_name),
-    ("GetServiceInfo", units::get_service_info),
-    ("CTool", sysdata::c_tool),
-    ("CWObj", sysdata::c_wobj),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("ResetPPMoved", reset_pp_moved),
+        native("PPMovedInManMode", pp_moved_in_man_mode),
+        native("IsStopStateEvent", is_stop_state_event),
+        native("WarmStart", warm_start),
+        native("GetSysData", sysdata::get_sys_data),
+        native("SetSysData", sysdata::set_sys_data),
+        native("GetTSPStatus", units::get_tsp_status),
+        native("MotionPlannerNo", units::motion_planner_no),
+        native("GetMecUnitName", units::get_mec_unit_name),
+        native("GetServiceInfo", units::get_service_info),
+        native("CTool", sysdata::c_tool),
+        native("CWObj", sysdata::c_wobj),
+    ],
+};
 
 /// The TCP speed limit of manual reduced speed mode, in mm/s (manual: in manual
 /// reduced speed the robot moves at most 250 mm/s, whatever the program asks).

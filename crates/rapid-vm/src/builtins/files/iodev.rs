@@ -169,6 +169,12 @@ pub(super) fn open(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if handle.is_some_and(|h| ctx.resources.files.files.contains_key(&h)) {
         return Err(ctx.error(Err::FileOpen, "the I/O device is already open; Close it first"));
     }
+    // Ours (the controller's figure is not public): a program opening in a loop must
+    // not exhaust the host's file handles.
+    if ctx.resources.files.files.len() >= rapid_limits::OPEN_FILES {
+        let limit = rapid_limits::OPEN_FILES;
+        return Err(ctx.error(Err::FileOpen, format!("at most {limit} files may be open at once; Close one first")));
+    }
     let (read, write, append, bin) =
         (present(args.get(3)), present(args.get(4)), present(args.get(5)), present(args.get(6)));
     let path_text = super::devices::join_object(&object, file_name.as_deref());

@@ -23,7 +23,7 @@ use std::path::{Path, PathBuf};
 
 use rustc_hash::FxHashMap;
 
-use super::{Ctx, Entries};
+use super::{native, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Opaque, OpaqueState, Value};
@@ -91,37 +91,40 @@ impl FileState {
     }
 }
 
-pub(super) static ENTRIES: Entries = &[
-    ("Open", iodev::open),
-    ("Close", iodev::close),
-    ("Rewind", iodev::rewind),
-    ("ClearIOBuff", iodev::clear_io_buff),
-    ("Write", io::write),
-    ("ReadNum", io::read_num),
-    ("ReadStr", io::read_str),
-    ("ReadBin", io::read_bin),
-    ("ReadStrBin", io::read_str_bin),
-    ("WriteBin", io::write_bin),
-    ("WriteStrBin", io::write_str_bin),
-    ("WriteAnyBin", io::write_any_bin),
-    ("ReadAnyBin", io::read_any_bin),
-    ("WriteRawBytes", io::write_raw_bytes),
-    ("ReadRawBytes", io::read_raw_bytes),
-    ("MakeDir", folders::make_dir),
-    ("RemoveDir", folders::remove_dir),
-    ("OpenDir", folders::open_dir),
-    ("ReadDir", folders::read_dir),
-    ("CloseDir", folders::close_dir),
-    ("RemoveFile", folders::remove_file),
-    ("RenameFile", folders::rename_file),
-    ("CopyFile", folders::copy_file),
-    ("IsFile", folders::is_file),
-    ("FSSize", folders::fs_size),
-    ("FileSize", folders::file_size),
-    ("FileTimeDnum", folders::file_time_dnum),
-    ("ModExist", folders::mod_exist),
-    ("ModTimeDnum", folders::mod_time_dnum),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("Open", iodev::open),
+        native("Close", iodev::close),
+        native("Rewind", iodev::rewind),
+        native("ClearIOBuff", iodev::clear_io_buff),
+        native("Write", io::write),
+        native("ReadNum", io::read_num),
+        native("ReadStr", io::read_str),
+        native("ReadBin", io::read_bin),
+        native("ReadStrBin", io::read_str_bin),
+        native("WriteBin", io::write_bin),
+        native("WriteStrBin", io::write_str_bin),
+        native("WriteAnyBin", io::write_any_bin),
+        native("ReadAnyBin", io::read_any_bin),
+        native("WriteRawBytes", io::write_raw_bytes),
+        native("ReadRawBytes", io::read_raw_bytes),
+        native("MakeDir", folders::make_dir),
+        native("RemoveDir", folders::remove_dir),
+        native("OpenDir", folders::open_dir),
+        native("ReadDir", folders::read_dir),
+        native("CloseDir", folders::close_dir),
+        native("RemoveFile", folders::remove_file),
+        native("RenameFile", folders::rename_file),
+        native("CopyFile", folders::copy_file),
+        native("IsFile", folders::is_file),
+        native("FSSize", folders::fs_size),
+        native("FileSize", folders::file_size),
+        native("FileTimeDnum", folders::file_time_dnum),
+        native("ModExist", folders::mod_exist),
+        native("ModTimeDnum", folders::mod_time_dnum),
+    ],
+};
 
 // ---- helpers shared by the family ---------------------------------------------------------
 

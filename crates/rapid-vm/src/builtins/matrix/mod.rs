@@ -20,25 +20,28 @@ mod fit;
 
 use nalgebra::DMatrix;
 
-use super::{Ctx, Entries};
+use super::{native, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Array, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
-pub(super) static ENTRIES: Entries = &[
-    ("MatrixAdd", matrix_add),
-    ("MatrixSub", matrix_sub),
-    ("MatrixMult", matrix_mult),
-    ("MatrixTranspose", matrix_transpose),
-    ("MatrixReset", matrix_reset),
-    ("MatrixInverse", decomp::matrix_inverse),
-    ("MatrixSolve", decomp::matrix_solve),
-    ("MatrixSolveQR", decomp::matrix_solve_qr),
-    ("MatrixSVD", decomp::matrix_svd),
-    ("FitCircle", fit::fit_circle),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("MatrixAdd", matrix_add),
+        native("MatrixSub", matrix_sub),
+        native("MatrixMult", matrix_mult),
+        native("MatrixTranspose", matrix_transpose),
+        native("MatrixReset", matrix_reset),
+        native("MatrixInverse", decomp::matrix_inverse),
+        native("MatrixSolve", decomp::matrix_solve),
+        native("MatrixSolveQR", decomp::matrix_solve_qr),
+        native("MatrixSVD", decomp::matrix_svd),
+        native("FitCircle", fit::fit_circle),
+    ],
+};
 
 /// `MatrixAdd A [\A_m] [\A_n] B C`: C := A + B, element by element.
 fn matrix_add(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {

@@ -179,22 +179,8 @@ impl super::robot::RobotState {
 }
 
 /// MoveExtJ: `[\Conc] ToJointPos [\ID] [\UseEOffs] Speed [\T] Zone [\Inpos]`.
-const MOVE_EXT_J: super::moves::Layout = super::moves::Layout {
-    conc: 0,
-    cir: None,
-    to: 1,
-    id: 2,
-    speed: 4,
-    v: super::moves::NONE,
-    t: 5,
-    zone: 6,
-    z: super::moves::NONE,
-    inpos: 7,
-    tool: super::moves::NONE,
-    wobj: super::moves::NONE,
-    corr: None,
-    eoffs: super::moves::EOffsRule::Only(3),
-};
+static MOVE_EXT_J: std::sync::LazyLock<super::moves::Layout> =
+    std::sync::LazyLock::new(|| super::moves::Layout::of("MoveExtJ"));
 
 /// `MoveExtJ`: the external axes move to ToJointPos's `extax` while the arm stands
 /// (its `robax` is not used); `v_leax`/`v_reax` and the axes' maxima set the pace.

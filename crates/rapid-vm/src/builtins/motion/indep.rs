@@ -247,11 +247,25 @@ fn start(ctx: &mut Ctx<'_>, axis: usize, goal: Goal, speed: f64, acc: f64) {
     ctx.resources.robot.publish_tail();
 }
 
+crate::builtins::signature::layout! {
+    static IND_A: AbsArgs = "IndAMove" { to_pos: "ToAbsPos", to_num: "ToAbsNum", speed: "Speed", ramp: "Ramp" }
+    static IND_C: TurnArgs = "IndCMove" { speed: "Speed", ramp: "Ramp" }
+    static IND_D: DeltaArgs = "IndDMove" { delta: "Delta", speed: "Speed", ramp: "Ramp" }
+    static IND_R: RelArgs = "IndRMove" {
+        to_pos: "ToRelPos", to_num: "ToRelNum", fwd: "Fwd", bwd: "Bwd", speed: "Speed", ramp: "Ramp",
+    }
+    static IND_RESET: ResetArgs = "IndReset" {
+        ref_pos: "RefPos", ref_num: "RefNum", short: "Short", fwd: "Fwd", bwd: "Bwd",
+    }
+    static IND_SPEED: SpeedArgs = "IndSpeed" { zero_speed: "ZeroSpeed" }
+}
+
 /// `IndAMove MecUnit, Axis, \ToAbsNum, Speed [\Ramp]`: to an absolute position.
 pub(crate) fn ind_a_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let axis = axis(ctx, args)?;
-    let target = position_arg(ctx, args, 2, "ToAbsPos", axis)?;
-    let (speed, acc) = speed_and_acc(ctx, axis, ctx.num(&args[4])?, args.get(5))?;
+    let at = *IND_A;
+    let target = position_arg(ctx, args, (at.to_pos, at.to_num), "ToAbsPos", axis)?;
+    let (speed, acc) = speed_and_acc(ctx, axis, ctx.num(&args[at.speed])?, args.get(at.ramp))?;
     start(ctx, axis, Goal::To(target), speed, acc);
     Ok(None)
 }
@@ -260,8 +274,8 @@ pub(crate) fn ind_a_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// the direction).
 pub(crate) fn ind_c_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let axis = axis(ctx, args)?;
-    let signed = ctx.num(&args[2])?;
-    let (speed, acc) = speed_and_acc(ctx, axis, signed, args.get(3))?;
+    let signed = ctx.num(&args[IND_C.speed])?;
+    let (speed, acc) = speed_and_acc(ctx, axis, signed, args.get(IND_C.ramp))?;
     start(ctx, axis, Goal::Turn(speed * signed.signum()), speed, acc);
     Ok(None)
 }
@@ -269,8 +283,9 @@ pub(crate) fn ind_c_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `IndDMove MecUnit, Axis, Delta, Speed [\Ramp]`: by a distance from where it is.
 pub(crate) fn ind_d_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let axis = axis(ctx, args)?;
-    let delta = ctx.num(&args[2])?;
-    let (speed, acc) = speed_and_acc(ctx, axis, ctx.num(&args[3])?, args.get(4))?;
+    let at = *IND_D;
+    let delta = ctx.num(&args[at.delta])?;
+    let (speed, acc) = speed_and_acc(ctx, axis, ctx.num(&args[at.speed])?, args.get(at.ramp))?;
     let target = position_now(ctx, axis) + delta;
     start(ctx, axis, Goal::To(target), speed, acc);
     Ok(None)
@@ -280,13 +295,14 @@ pub(crate) fn ind_d_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// position within one turn (0..360), the shortest way, forwards or backwards.
 pub(crate) fn ind_r_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let axis = axis(ctx, args)?;
-    let within = position_arg(ctx, args, 2, "ToRelPos", axis)?.rem_euclid(360.0);
-    let (speed, acc) = speed_and_acc(ctx, axis, ctx.num(&args[7])?, args.get(8))?;
+    let at = *IND_R;
+    let within = position_arg(ctx, args, (at.to_pos, at.to_num), "ToRelPos", axis)?.rem_euclid(360.0);
+    let (speed, acc) = speed_and_acc(ctx, axis, ctx.num(&args[at.speed])?, args.get(at.ramp))?;
     let here = position_now(ctx, axis);
     let ahead = (within - here).rem_euclid(360.0);
-    let delta = if present(args.get(5)) {
+    let delta = if present(args.get(at.fwd)) {
         ahead
-    } else if present(args.get(6)) {
+    } else if present(args.get(at.bwd)) {
         ahead - if ahead > 0.0 { 360.0 } else { 0.0 }
     } else if ahead > 180.0 {
         ahead - 360.0
@@ -297,16 +313,22 @@ pub(crate) fn ind_r_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-/// A position argument: `\ToAbsNum`-like number at `index + 1`. The robtarget form at
-/// `index` names the axis's value in the target's external axes (`extax`); for robot
+/// A position argument: the `\ToAbsNum`-like number at `num`. The robtarget form at
+/// `pos` names the axis's value in the target's external axes (`extax`); for robot
 /// axes the manual asks for the number form, so it raises ERR_ARGVALERR here.
 // uncertain: the manual says only that robot axes use the number form; that the
 // controller answers the robtarget form on a robot axis with ERR_ARGVALERR is our choice.
-fn position_arg(ctx: &Ctx<'_>, args: &[Value], index: usize, robtarget: &str, slot: usize) -> Result<f64, RapidError> {
-    if present(args.get(index)) {
-        return robtarget_position(ctx, &args[index], robtarget, slot);
+fn position_arg(
+    ctx: &Ctx<'_>,
+    args: &[Value],
+    (pos, num): (usize, usize),
+    robtarget: &str,
+    slot: usize,
+) -> Result<f64, RapidError> {
+    if present(args.get(pos)) {
+        return robtarget_position(ctx, &args[pos], robtarget, slot);
     }
-    ctx.num(&args[index + 1])
+    ctx.num(&args[num])
 }
 
 /// An external axis's value in a robtarget (`\ToAbsPos`, `\ToRelPos`, `\RefPos`);
@@ -360,11 +382,12 @@ impl Reset {
 // \Old, and wants it inside the axis's working range; those faults raise ERR_ARGVALERR
 // here. \Short, \Fwd or \Bwd without a reference take 0 as the reference.
 fn reset_kind(ctx: &Ctx<'_>, args: &[Value], axis: usize) -> Result<Reset, RapidError> {
-    let reference = match args.get(2).filter(|a| present(Some(a))) {
+    let at = *IND_RESET;
+    let reference = match args.get(at.ref_pos).filter(|a| present(Some(a))) {
         Some(target) => Some(robtarget_position(ctx, target, "RefPos", axis)?),
-        None => ctx.opt_num(args.get(3))?,
+        None => ctx.opt_num(args.get(at.ref_num))?,
     };
-    let (short, fwd, bwd) = (present(args.get(4)), present(args.get(5)), present(args.get(6)));
+    let (short, fwd, bwd) = (present(args.get(at.short)), present(args.get(at.fwd)), present(args.get(at.bwd)));
     let Some(reference) = reference else {
         return Ok(if short {
             Reset::Short(0.0)
@@ -454,7 +477,7 @@ pub(crate) fn ind_speed(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         return Err(ctx.error(Err::AxisInd, format!("axis {} is not in independent mode", axis + 1)));
     };
     let (_, v) = ind.at(now);
-    let answer = if present(args.get(3)) {
+    let answer = if present(args.get(IND_SPEED.zero_speed)) {
         v.abs() < 1e-9
     } else {
         let set = match ind.goal {

@@ -11,113 +11,15 @@ use rapid_motion::MotionError;
 
 use super::super::{present, Ctx};
 use super::data;
+pub(super) use super::layout::{EOffsRule, Layout};
+use super::layout::{
+    MOVE_ABS_J, MOVE_C, MOVE_C_AO, MOVE_C_DO, MOVE_C_GO, MOVE_C_SYNC, MOVE_J, MOVE_J_AO, MOVE_J_DO, MOVE_J_GO,
+    MOVE_J_SYNC, MOVE_L, MOVE_L_AO, MOVE_L_DO, MOVE_L_GO, MOVE_L_SYNC,
+};
 use crate::error::RapidError;
 use crate::value::Value;
 
 type Res = Result<Option<Value>, RapidError>;
-
-/// Where a move instruction's arguments are.
-pub(super) struct Layout {
-    pub(super) conc: usize,
-    pub(super) cir: Option<usize>,
-    pub(super) to: usize,
-    pub(super) id: usize,
-    pub(super) speed: usize,
-    pub(super) v: usize,
-    pub(super) t: usize,
-    pub(super) zone: usize,
-    pub(super) z: usize,
-    pub(super) inpos: usize,
-    pub(super) tool: usize,
-    pub(super) wobj: usize,
-    pub(super) corr: Option<usize>,
-    /// Whether the external axis offsets (EOffs) apply to the target.
-    pub(super) eoffs: EOffsRule,
-}
-
-/// When EOffsOn/EOffsSet offsets move a target's external axes.
-#[derive(Debug, Clone, Copy)]
-pub(super) enum EOffsRule {
-    /// Always (moves to robtargets).
-    Always,
-    /// Unless the switch at this place is given (MoveAbsJ `\NoEOffs`).
-    Unless(usize),
-    /// Only when the switch at this place is given (MoveExtJ `\UseEOffs`).
-    Only(usize),
-}
-
-const MOVE_J: Layout = Layout {
-    conc: 0,
-    cir: None,
-    to: 1,
-    id: 2,
-    speed: 3,
-    v: 4,
-    t: 5,
-    zone: 6,
-    z: 7,
-    inpos: 8,
-    tool: 9,
-    wobj: 10,
-    corr: None,
-    eoffs: EOffsRule::Always,
-};
-const MOVE_L: Layout = Layout { corr: Some(11), ..MOVE_J };
-const MOVE_C: Layout = Layout {
-    conc: 0,
-    cir: Some(1),
-    to: 2,
-    id: 3,
-    speed: 4,
-    v: 5,
-    t: 6,
-    zone: 7,
-    z: 8,
-    inpos: 9,
-    tool: 10,
-    wobj: 11,
-    corr: Some(12),
-    eoffs: EOffsRule::Always,
-};
-/// No such argument (the `Move*DO/AO/GO` family has no `\Conc`, `\V`, `\Z`, `\Inpos`).
-pub(super) const NONE: usize = usize::MAX;
-/// MoveJDO/MoveLDO/MoveJAO/…: ToPoint, \ID, Speed, \T, Zone, Tool, \WObj, Signal, Value.
-const MOVE_X_IO: Layout = Layout {
-    conc: NONE,
-    cir: None,
-    to: 0,
-    id: 1,
-    speed: 2,
-    v: NONE,
-    t: 3,
-    zone: 4,
-    z: NONE,
-    inpos: NONE,
-    tool: 5,
-    wobj: 6,
-    corr: None,
-    eoffs: EOffsRule::Always,
-};
-/// MoveCDO/MoveCAO/MoveCGO: CirPoint first.
-const MOVE_C_IO: Layout = Layout { cir: Some(0), to: 1, id: 2, speed: 3, t: 4, zone: 5, tool: 6, wobj: 7, ..MOVE_X_IO };
-
-/// MoveAbsJ has `\NoEOffs` at 3.
-const MOVE_ABS_J: Layout = Layout {
-    conc: 0,
-    cir: None,
-    to: 1,
-    id: 2,
-    speed: 4,
-    v: 5,
-    t: 6,
-    zone: 7,
-    z: 8,
-    inpos: 9,
-    tool: 10,
-    wobj: 11,
-    corr: None,
-    eoffs: EOffsRule::Unless(3),
-};
 
 /// The controller's motion errors: execution stops (they are not program errors an
 /// ERROR handler can take). Event numbers as RobotWare logs them.
@@ -546,21 +448,78 @@ pub(super) fn circular_move(
 }
 
 /// The output a Move*DO/AO/GO sets: its signal and value (a group's `\Dvalue` too).
-fn path_event(ctx: &mut Ctx<'_>, args: &[Value], signal: usize) -> Result<Vec<super::robot::PathEvent>, RapidError> {
+fn path_event(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout) -> Result<Vec<super::robot::PathEvent>, RapidError> {
     use super::robot::{Action, At, PathEvent};
-    let id = super::super::io::signal(ctx, &args[signal])?;
-    let value = match args.get(signal + 2) {
+    let id = super::super::io::signal(ctx, &args[layout.signal])?;
+    let value = match layout.dvalue.and_then(|at| args.get(at)) {
         Some(dvalue) if present(Some(dvalue)) => ctx.num(dvalue)?,
-        _ => ctx.num(&args[signal + 1])?,
+        _ => ctx.num(&args[layout.value])?,
     };
     Ok(vec![PathEvent { at: At::Point, shift: 0.0, action: Action::Set { signal: id, value } }])
 }
 
-/// `MoveJDO`, `MoveJAO`, `MoveJGO`: MoveJ setting an output in the middle of the
-/// corner path (at a stop point, when the robot stands there).
-pub(crate) fn move_j_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let event = path_event(ctx, args, 7)?;
-    joint_move(ctx, args, &MOVE_X_IO, event)
+/// MoveJ setting an output in the middle of the corner path (at a stop point, when
+/// the robot stands there).
+fn joint_move_io(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout) -> Res {
+    let event = path_event(ctx, args, layout)?;
+    joint_move(ctx, args, layout, event)
+}
+
+/// MoveL setting an output in the middle of the corner path.
+fn linear_move_io(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout) -> Res {
+    let event = path_event(ctx, args, layout)?;
+    linear_move(ctx, args, layout, event)
+}
+
+/// MoveC setting an output in the middle of the corner path.
+fn circular_move_io(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout) -> Res {
+    let event = path_event(ctx, args, layout)?;
+    circular_move(ctx, args, layout, event)
+}
+
+/// `MoveJDO`.
+pub(crate) fn move_j_do(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    joint_move_io(ctx, args, &MOVE_J_DO)
+}
+
+/// `MoveJAO`.
+pub(crate) fn move_j_ao(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    joint_move_io(ctx, args, &MOVE_J_AO)
+}
+
+/// `MoveJGO`.
+pub(crate) fn move_j_go(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    joint_move_io(ctx, args, &MOVE_J_GO)
+}
+
+/// `MoveLDO`.
+pub(crate) fn move_l_do(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    linear_move_io(ctx, args, &MOVE_L_DO)
+}
+
+/// `MoveLAO`.
+pub(crate) fn move_l_ao(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    linear_move_io(ctx, args, &MOVE_L_AO)
+}
+
+/// `MoveLGO`.
+pub(crate) fn move_l_go(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    linear_move_io(ctx, args, &MOVE_L_GO)
+}
+
+/// `MoveCDO`.
+pub(crate) fn move_c_do(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    circular_move_io(ctx, args, &MOVE_C_DO)
+}
+
+/// `MoveCAO`.
+pub(crate) fn move_c_ao(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    circular_move_io(ctx, args, &MOVE_C_AO)
+}
+
+/// `MoveCGO`.
+pub(crate) fn move_c_go(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    circular_move_io(ctx, args, &MOVE_C_GO)
 }
 
 /// `MoveJSync`, `MoveLSync`, `MoveCSync`: the move runs procedure ProcName (no
@@ -570,18 +529,18 @@ pub(crate) fn move_j_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // uncertain: the procedure runs like a trap (IDisable holds it back); a name that is
 // no loaded procedure is ERR_REFUNKPRC, a procedure with parameters ERR_CALLPROC.
 pub(crate) fn move_j_sync(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let event = sync_event(ctx, &args[7])?;
-    joint_move(ctx, args, &MOVE_X_IO, event)
+    let event = sync_event(ctx, &args[MOVE_J_SYNC.proc_name])?;
+    joint_move(ctx, args, &MOVE_J_SYNC, event)
 }
 
 pub(crate) fn move_l_sync(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let event = sync_event(ctx, &args[7])?;
-    linear_move(ctx, args, &MOVE_X_IO, event)
+    let event = sync_event(ctx, &args[MOVE_L_SYNC.proc_name])?;
+    linear_move(ctx, args, &MOVE_L_SYNC, event)
 }
 
 pub(crate) fn move_c_sync(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let event = sync_event(ctx, &args[8])?;
-    circular_move(ctx, args, &MOVE_C_IO, event)
+    let event = sync_event(ctx, &args[MOVE_C_SYNC.proc_name])?;
+    circular_move(ctx, args, &MOVE_C_SYNC, event)
 }
 
 /// The path event of Move*Sync: the named procedure, run at the point.
@@ -597,18 +556,6 @@ fn sync_event(ctx: &mut Ctx<'_>, name: &Value) -> Result<Vec<super::robot::PathE
     let number = ctx.resources.interrupts.once(routine);
     let action = super::robot::Action::Interrupt(number);
     Ok(vec![super::robot::PathEvent { at: super::robot::At::Point, shift: 0.0, action }])
-}
-
-/// `MoveLDO`, `MoveLAO`, `MoveLGO`.
-pub(crate) fn move_l_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let event = path_event(ctx, args, 7)?;
-    linear_move(ctx, args, &MOVE_X_IO, event)
-}
-
-/// `MoveCDO`, `MoveCAO`, `MoveCGO`.
-pub(crate) fn move_c_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let event = path_event(ctx, args, 8)?;
-    circular_move(ctx, args, &MOVE_C_IO, event)
 }
 
 /// Gives the I/O system the outputs of path events whose time is now known: at their

@@ -173,6 +173,19 @@ fn tool0_like(ctx: &Ctx<'_>) -> Result<Value, RapidError> {
         .ok_or_else(|| RapidError::fatal("the program has no tool0"))
 }
 
+crate::builtins::signature::layout! {
+    static CROBT: CRobTArgs = "CRobT" { tool: "Tool", wobj: "WObj" }
+    static CPOS: CPosArgs = "CPos" { tool: "Tool", wobj: "WObj" }
+    static CALC_ROB_T: CalcRobTArgs = "CalcRobT" { target: "Joint_target", tool: "Tool", wobj: "WObj" }
+    static CALC_JOINT_T: CalcJointTArgs = "CalcJointT" {
+        use_cur: "UseCurWObjPos", target: "Rob_target", tool: "Tool", wobj: "WObj", error_number: "ErrorNumber",
+    }
+    static PDISP_ON: PDispOnArgs = "PDispOn" {
+        rot: "Rot", exe_p: "ExeP", prog_point: "ProgPoint", tool: "Tool", wobj: "WObj",
+    }
+    static EOFFS_ON: EOffsOnArgs = "EOffsOn" { exe_p: "ExeP", prog_point: "ProgPoint" }
+}
+
 /// `CJointT([\TaskRef] | [\TaskName])`: the axis values now.
 pub(crate) fn c_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     super::tracking::refresh(ctx);
@@ -220,12 +233,13 @@ pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         // The other task has not answered yet.
         Some(None) => {}
     }
-    let mut chain = read_frames(ctx, args.get(2), args.get(3))?;
+    let at = *CROBT;
+    let mut chain = read_frames(ctx, args.get(at.tool), args.get(at.wobj))?;
     let now = ctx.time;
     let (flange, conf, extax) = match other {
         // The other task's active frames stand in for the arguments not given.
         Some(Some(other)) => {
-            if !present(args.get(2)) && !present(args.get(3)) {
+            if !present(args.get(at.tool)) && !present(args.get(at.wobj)) {
                 chain = other.frames;
             } else {
                 // The given tool and work object on the other robot, which stands where
@@ -250,8 +264,11 @@ pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 pub(crate) fn c_pos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if linked_motion_task(ctx).is_some() {
         // The robot of the motion task whose unit group this task uses: CRobT's position.
+        let (crobt, cpos) = (*CROBT, *CPOS);
         let arg = |i: usize| args.get(i).cloned().unwrap_or(Value::Absent);
-        let target = c_rob_t(ctx, &[Value::Absent, Value::Absent, arg(0), arg(1)])?;
+        let mut call = vec![Value::Absent; crobt.tool.max(crobt.wobj) + 1];
+        (call[crobt.tool], call[crobt.wobj]) = (arg(cpos.tool), arg(cpos.wobj));
+        let target = c_rob_t(ctx, &call)?;
         return Ok(match target {
             Some(Value::Record(record)) => record.fields.first().cloned(),
             other => other,
@@ -259,7 +276,7 @@ pub(crate) fn c_pos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     }
     super::tracking::refresh(ctx);
     require_tcp(ctx, None, "CPos")?;
-    let chain = read_frames(ctx, args.first(), args.get(1))?;
+    let chain = read_frames(ctx, args.get(CPOS.tool), args.get(CPOS.wobj))?;
     let now = ctx.time;
     let robot = &mut ctx.resources.robot;
     let joints = robot.joints_at(now);
@@ -270,10 +287,11 @@ pub(crate) fn c_pos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `CalcRobT(Joint_target, Tool [\WObj])`: the robtarget of axis values.
 // The external axis values are carried over unchanged.
 pub(crate) fn calc_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let target = ctx.value(&args[0])?;
+    let at = *CALC_ROB_T;
+    let target = ctx.value(&args[at.target])?;
     let joints = data::jointtarget(ctx, &target)?;
     let extax = data::target_extax(ctx, &target)?;
-    let chain = target_frames(ctx, args.get(1), args.get(2), &extax, false)?;
+    let chain = target_frames(ctx, args.get(at.tool), args.get(at.wobj), &extax, false)?;
     let (pose, conf) = chain.robtarget_of(&ctx.resources.robot.kin, &joints);
     Ok(Some(super::frame::with_extax(&data::robtarget_value(ctx, &pose, conf)?, &extax)))
 }
@@ -286,14 +304,15 @@ pub(crate) fn calc_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // uncertain: what CalcJointT returns when it stores the error in \ErrorNumber.
 // The external axis values are carried over unchanged.
 pub(crate) fn calc_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let target = ctx.value(&args[1])?;
+    let at = *CALC_JOINT_T;
+    let target = ctx.value(&args[at.target])?;
     let (pose, conf) = data::robtarget(ctx, &target)?;
     let extax = data::target_extax(ctx, &target)?;
-    let chain = target_frames(ctx, args.get(2), args.get(3), &extax, present(args.first()))?;
+    let chain = target_frames(ctx, args.get(at.tool), args.get(at.wobj), &extax, present(args.get(at.use_cur)))?;
     let now = ctx.time;
     let seed = ctx.resources.robot.joints_at(now);
     let found = chain.joints_for(&ctx.resources.robot.kin, &pose, &conf, &seed, ConfMatch::Compliant);
-    let error_number = args.get(4).filter(|a| present(Some(a)));
+    let error_number = args.get(at.error_number).filter(|a| present(Some(a)));
     if let Some(var) = error_number {
         ctx.store(var, Value::Num(0.0))?;
     }
@@ -318,19 +337,20 @@ pub(crate) fn calc_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // uncertain: the robot's current position is taken without the displacement active
 // before (the displacement is replaced, not added to).
 pub(crate) fn pdisp_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (prog, _) = data::robtarget(ctx, &ctx.value(&args[2])?)?;
-    let actual = if present(args.get(1)) {
-        data::robtarget(ctx, &ctx.value(&args[1])?)?.0
+    let at = *PDISP_ON;
+    let (prog, _) = data::robtarget(ctx, &ctx.value(&args[at.prog_point])?)?;
+    let actual = if present(args.get(at.exe_p)) {
+        data::robtarget(ctx, &ctx.value(&args[at.exe_p])?)?.0
     } else {
-        let tool = ctx.value(&args[3])?;
-        let wobj = if present(args.get(4)) { Some(ctx.value(&args[4])?) } else { None };
+        let tool = ctx.value(&args[at.tool])?;
+        let wobj = if present(args.get(at.wobj)) { Some(ctx.value(&args[at.wobj])?) } else { None };
         let chain = data::chain(ctx, &tool, wobj.as_ref(), nalgebra::Isometry3::identity())?;
         let now = ctx.time;
         let robot = &mut ctx.resources.robot;
         let joints = robot.joints_at(now);
         chain.target_of(&robot.kin.forward(&joints))
     };
-    let disp = rapid_motion::frames::pdisp_from(&prog, &actual, present(args.first()));
+    let disp = rapid_motion::frames::pdisp_from(&prog, &actual, present(args.get(at.rot)));
     super::settings::set_pdisp(ctx, disp)
 }
 
@@ -338,10 +358,11 @@ pub(crate) fn pdisp_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// ExeP's (or where the axes are now); an axis unused in either (9E9), or one the
 /// system does not have, gets no offset.
 pub(crate) fn eoffs_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let prog = data::target_extax(ctx, &ctx.value(&args[1])?)?;
+    let at = *EOFFS_ON;
+    let prog = data::target_extax(ctx, &ctx.value(&args[at.prog_point])?)?;
     let now = ctx.time;
-    let actual = match present(args.first()) {
-        true => data::target_extax(ctx, &ctx.value(&args[0])?)?,
+    let actual = match present(args.get(at.exe_p)) {
+        true => data::target_extax(ctx, &ctx.value(&args[at.exe_p])?)?,
         false => ctx.resources.robot.extax_read(now),
     };
     let mut offsets = [0.0; 6];

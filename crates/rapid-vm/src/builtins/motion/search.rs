@@ -11,6 +11,8 @@
 //! (or the persistent's value) at every wake, so a hit has its exact time for a
 //! signal, and the time of the wake for a persistent another task changed.
 
+use std::sync::LazyLock;
+
 use rapid_motion::plan::{MoveRequest, Target};
 
 use super::super::{present, Ctx, StopKind};
@@ -22,20 +24,48 @@ use crate::value::Value;
 
 type Res = Result<Option<Value>, RapidError>;
 
-/// Arguments of SearchL.
-const STOP: usize = 0;
-const PSTOP: usize = 1;
-const SSTOP: usize = 2;
-const SUP: usize = 3;
-const SIGNAL: usize = 4;
-const PERS_BOOL: usize = 5;
-const FLANKS: usize = 6;
-const NEG_FLANK: usize = 8;
-const HIGH_LEVEL: usize = 9;
-const LOW_LEVEL: usize = 10;
-const SEARCH_POINT: usize = 11;
+/// Where the arguments up to SearchPoint are: the same in SearchL, SearchC and
+/// SearchExtJ (a test checks), read from SearchL's declaration once.
+#[derive(Debug, PartialEq, Eq)]
+struct Head {
+    stop: usize,
+    pstop: usize,
+    sstop: usize,
+    sup: usize,
+    signal: usize,
+    pers_bool: usize,
+    flanks: usize,
+    neg_flank: usize,
+    high_level: usize,
+    low_level: usize,
+    /// SearchPoint (SearchExtJ: SearchJointPos).
+    search_point: usize,
+}
 
-/// Where the arguments after SearchPoint are (SearchC has CirPoint first).
+impl Head {
+    fn of(name: &str) -> Head {
+        let sig = crate::builtins::signature::of(name);
+        Head {
+            stop: sig.at("Stop"),
+            pstop: sig.at("PStop"),
+            sstop: sig.at("SStop"),
+            sup: sig.at("Sup"),
+            signal: sig.at("Signal"),
+            pers_bool: sig.at("PersBool"),
+            flanks: sig.at("Flanks"),
+            neg_flank: sig.at("NegFlank"),
+            high_level: sig.at("HighLevel"),
+            low_level: sig.at("LowLevel"),
+            search_point: sig.first_of(&["SearchPoint", "SearchJointPos"]),
+        }
+    }
+}
+
+static HEAD: LazyLock<Head> = LazyLock::new(|| Head::of("SearchL"));
+
+/// Where the arguments after SearchPoint are (SearchC has CirPoint first;
+/// `signature::ABSENT` where the instruction has no such parameter).
+#[derive(Debug, PartialEq, Eq)]
 struct Places {
     cir: Option<usize>,
     to: usize,
@@ -50,23 +80,30 @@ struct Places {
     ext_only: Option<usize>,
 }
 
-const NONE: usize = super::moves::NONE;
-const SEARCH_L: Places =
-    Places { cir: None, to: 12, id: 13, speed: 14, v: 15, t: 16, tool: 17, wobj: 18, corr: 19, ext_only: None };
-const SEARCH_C: Places =
-    Places { cir: Some(12), to: 13, id: 14, speed: 15, v: 16, t: 17, tool: 18, wobj: 19, corr: 20, ext_only: None };
-const SEARCH_EXT_J: Places = Places {
-    cir: None,
-    to: 12,
-    id: 13,
-    speed: 15,
-    v: NONE,
-    t: 16,
-    tool: NONE,
-    wobj: NONE,
-    corr: NONE,
-    ext_only: Some(14),
-};
+impl Places {
+    /// Where search instruction `name`'s arguments after SearchPoint are, by the
+    /// parameter names of its declaration (see `signature.rs`).
+    fn of(name: &str) -> Places {
+        let sig = crate::builtins::signature::of(name);
+        let ext_only = sig.opt("UseEOffs");
+        Places {
+            cir: sig.opt("CirPoint"),
+            to: sig.first_of(&["ToPoint", "ToJointPos"]),
+            id: sig.at("ID"),
+            speed: sig.at("Speed"),
+            v: sig.at("V"),
+            t: sig.at("T"),
+            tool: sig.at("Tool"),
+            wobj: sig.at("WObj"),
+            corr: sig.at("Corr"),
+            ext_only,
+        }
+    }
+}
+
+static SEARCH_L: LazyLock<Places> = LazyLock::new(|| Places::of("SearchL"));
+static SEARCH_C: LazyLock<Places> = LazyLock::new(|| Places::of("SearchC"));
+static SEARCH_EXT_J: LazyLock<Places> = LazyLock::new(|| Places::of("SearchExtJ"));
 
 /// What counts as a hit.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -80,13 +117,13 @@ enum Trigger {
 
 impl Trigger {
     fn of(args: &[Value]) -> Trigger {
-        if present(args.get(FLANKS)) {
+        if present(args.get(HEAD.flanks)) {
             Trigger::Both
-        } else if present(args.get(NEG_FLANK)) {
+        } else if present(args.get(HEAD.neg_flank)) {
             Trigger::Falling
-        } else if present(args.get(HIGH_LEVEL)) {
+        } else if present(args.get(HEAD.high_level)) {
             Trigger::High
-        } else if present(args.get(LOW_LEVEL)) {
+        } else if present(args.get(HEAD.low_level)) {
             Trigger::Low
         } else {
             Trigger::Rising
@@ -136,7 +173,7 @@ pub(crate) fn search_ext_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 fn search(ctx: &mut Ctx<'_>, args: &[Value], places: &Places) -> Res {
     // SearchExtJ moves external axes only; SearchL and SearchC move the TCP.
-    match std::ptr::eq(places, &SEARCH_EXT_J) {
+    match places.ext_only.is_some() {
         true => super::moves::require_motion_task(ctx)?,
         false => super::moves::require_robot(ctx)?,
     }
@@ -222,10 +259,10 @@ fn path_of(
 
 /// The signal's (or persistent's) level now, and how long the change log is.
 fn level_now(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<(bool, usize), RapidError> {
-    if present(args.get(PERS_BOOL)) {
-        return Ok((matches!(ctx.value(&args[PERS_BOOL])?, Value::Bool(true)), 0));
+    if present(args.get(HEAD.pers_bool)) {
+        return Ok((matches!(ctx.value(&args[HEAD.pers_bool])?, Value::Bool(true)), 0));
     }
-    let id = super::super::io::signal(ctx, &args[SIGNAL])?;
+    let id = super::super::io::signal(ctx, &args[HEAD.signal])?;
     ctx.resources.io.advance(ctx.time);
     let io = ctx.resources.io.system.as_ref();
     let level = io.and_then(|io| io.value(id)).unwrap_or(0.0) != 0.0;
@@ -243,7 +280,7 @@ fn look(ctx: &mut Ctx<'_>, args: &[Value], mut search: Search) -> Res {
             first_hit.get_or_insert(time);
         }
     }
-    let stops = [STOP, PSTOP, SSTOP].iter().any(|&i| present(args.get(i)));
+    let stops = [HEAD.stop, HEAD.pstop, HEAD.sstop].iter().any(|&i| present(args.get(i)));
     if let Some(t) = first_hit {
         if search.hits == 1 {
             store_hit(ctx, args, t)?;
@@ -275,9 +312,9 @@ fn look(ctx: &mut Ctx<'_>, args: &[Value], mut search: Search) -> Res {
 // all three (\Stop leaves the path a little on the real robot).
 fn stop_time(args: &[Value]) -> f64 {
     const AT_50: f64 = 50.0;
-    let mm = if present(args.get(STOP)) {
+    let mm = if present(args.get(HEAD.stop)) {
         2.0
-    } else if present(args.get(SSTOP)) {
+    } else if present(args.get(HEAD.sstop)) {
         6.0
     } else {
         20.0
@@ -290,7 +327,7 @@ fn finish(ctx: &mut Ctx<'_>, args: &[Value], search: &Search) -> Res {
     if search.hits == 0 {
         return Err(ctx.error(Err::WhlSearch, "the search reached ToPoint without a hit"));
     }
-    if present(args.get(SUP)) && search.hits > 1 {
+    if present(args.get(HEAD.sup)) && search.hits > 1 {
         return Err(ctx.error(Err::SigSupSearch, "more than one hit during a supervised search (\\Sup)"));
     }
     Ok(None)
@@ -298,12 +335,12 @@ fn finish(ctx: &mut Ctx<'_>, args: &[Value], search: &Search) -> Res {
 
 /// The level changes since the last look: (time, old, new).
 fn events(ctx: &mut Ctx<'_>, args: &[Value], search: &mut Search) -> Result<Vec<(f64, bool, bool)>, RapidError> {
-    if present(args.get(PERS_BOOL)) {
-        let level = matches!(ctx.value(&args[PERS_BOOL])?, Value::Bool(true));
+    if present(args.get(HEAD.pers_bool)) {
+        let level = matches!(ctx.value(&args[HEAD.pers_bool])?, Value::Bool(true));
         let old = std::mem::replace(&mut search.last, level);
         return Ok(if old != level { vec![(ctx.time, old, level)] } else { Vec::new() });
     }
-    let id = super::super::io::signal(ctx, &args[SIGNAL])?;
+    let id = super::super::io::signal(ctx, &args[HEAD.signal])?;
     ctx.resources.io.advance(ctx.time);
     let Some(io) = ctx.resources.io.system.as_ref() else { return Ok(Vec::new()) };
     let changes = io.changes();
@@ -328,9 +365,75 @@ fn store_hit(ctx: &mut Ctx<'_>, args: &[Value], t: f64) -> Result<(), RapidError
     let extax = robot.extax_read(t);
     let pose = chain.target_of(&rapid_motion::Kinematics::forward(&robot.kin, &joints));
     let conf = rapid_motion::confdata::confdata_of(&robot.kin, &joints);
-    let value = match ctx.value(&args[SEARCH_POINT])? {
+    let value = match ctx.value(&args[HEAD.search_point])? {
         Value::Record(r) if r.fields.len() == 2 => data::jointtarget_value(ctx, &joints)?,
         _ => data::robtarget_value(ctx, &pose, conf)?,
     };
-    ctx.store(&args[SEARCH_POINT], super::frame::with_extax(&value, &extax))
+    ctx.store(&args[HEAD.search_point], super::frame::with_extax(&value, &extax))
+}
+
+#[cfg(test)]
+mod layout_tests {
+    use super::*;
+    use crate::builtins::signature::ABSENT;
+
+    // SearchL [\Stop]|[\PStop]|[\SStop]|[\Sup] Signal|PersBool [\Flanks]|[\PosFlank]|
+    // [\NegFlank]|[\HighLevel]|[\LowLevel] SearchPoint ToPoint [\ID] Speed [\V]|[\T] Tool
+    // [\WObj] [\Corr]: eleven parameters before SearchPoint (11), then the move's.
+    #[test]
+    fn places_after_search_point() {
+        let l = &*SEARCH_L;
+        let expected =
+            Places { cir: None, to: 12, id: 13, speed: 14, v: 15, t: 16, tool: 17, wobj: 18, corr: 19, ext_only: None };
+        assert_eq!(*l, expected);
+        let c = Places {
+            cir: Some(12),
+            to: 13,
+            id: 14,
+            speed: 15,
+            v: 16,
+            t: 17,
+            tool: 18,
+            wobj: 19,
+            corr: 20,
+            ext_only: None,
+        };
+        assert_eq!(*SEARCH_C, c);
+        // SearchExtJ … SearchJointPos ToJointPos [\ID] [\UseEOffs] Speed [\T].
+        let ext = Places {
+            cir: None,
+            to: 12,
+            id: 13,
+            speed: 15,
+            v: ABSENT,
+            t: 16,
+            tool: ABSENT,
+            wobj: ABSENT,
+            corr: ABSENT,
+            ext_only: Some(14),
+        };
+        assert_eq!(*SEARCH_EXT_J, ext);
+    }
+
+    // The eleven parameters before SearchPoint: \Stop|\PStop|\SStop|\Sup (0–3),
+    // Signal|PersBool (4, 5), \Flanks|\PosFlank|\NegFlank|\HighLevel|\LowLevel (6–10).
+    #[test]
+    fn head_is_shared() {
+        let head = Head {
+            stop: 0,
+            pstop: 1,
+            sstop: 2,
+            sup: 3,
+            signal: 4,
+            pers_bool: 5,
+            flanks: 6,
+            neg_flank: 8,
+            high_level: 9,
+            low_level: 10,
+            search_point: 11,
+        };
+        assert_eq!(*HEAD, head);
+        assert_eq!(Head::of("SearchC"), head);
+        assert_eq!(Head::of("SearchExtJ"), head);
+    }
 }

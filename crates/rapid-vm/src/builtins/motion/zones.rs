@@ -16,7 +16,7 @@ use crate::value::{Opaque, OpaqueState, Record, Value};
 type Res = Result<Option<Value>, RapidError>;
 
 /// At most this many world zones at a time.
-const MAX_ZONES: usize = 20;
+const MAX_ZONES: usize = rapid_limits::WORLD_ZONES;
 
 /// A zone's volume: in world coordinates (mm) or in axis values (degrees).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -104,9 +104,26 @@ fn pos(ctx: &Ctx<'_>, arg: &Value) -> Result<[f64; 3], RapidError> {
     Ok([v.x, v.y, v.z])
 }
 
+crate::builtins::signature::layout! {
+    /// `[\Inside] | [\Outside] Shape`, first in every WZ…Def.
+    static DEF: DefArgs = "WZBoxDef" | "WZCylDef" | "WZSphDef" | "WZHomeJointDef" | "WZLimJointDef" {
+        outside: "Outside", shape: "Shape",
+    }
+    static BOX: BoxArgs = "WZBoxDef" { low: "LowPoint", high: "HighPoint" }
+    static CYL: CylArgs = "WZCylDef" { centre: "CentrePoint", radius: "Radius", height: "Height" }
+    static SPH: SphArgs = "WZSphDef" { centre: "CentrePoint", radius: "Radius" }
+    static HOME: HomeArgs = "WZHomeJointDef" { middle: "MiddleJointVal", delta: "DeltaJointVal" }
+    static LIM: LimArgs = "WZLimJointDef" { low: "LowJointVal", high: "HighJointVal" }
+    /// `[\Temp] | [\Stat] WorldZone`, first in WZDOSet and WZLimSup.
+    static ACTIVATE: ActivateArgs = "WZDOSet" | "WZLimSup" { stat: "Stat", zone: "WorldZone" }
+    static DO_SET: DoSetArgs = "WZDOSet" { before: "Before", shape: "Shape", signal: "Signal", value: "SetValue" }
+    static LIM_SUP: LimSupArgs = "WZLimSup" { shape: "Shape" }
+}
+
 fn define(ctx: &mut Ctx<'_>, args: &[Value], shape: Shape) -> Res {
-    let data = ShapeData { shape, outside: present(args.get(1)) };
-    let (opaque, handle) = ctx.handle_arg(&args[2], "a shapedata")?;
+    let at = *DEF;
+    let data = ShapeData { shape, outside: present(args.get(at.outside)) };
+    let (opaque, handle) = ctx.handle_arg(&args[at.shape], "a shapedata")?;
     let shapes = &mut ctx.resources.robot.shapes;
     let index = match handle.map(|h| h as usize).filter(|&h| h < shapes.len()) {
         Some(h) => {
@@ -119,13 +136,13 @@ fn define(ctx: &mut Ctx<'_>, args: &[Value], shape: Shape) -> Res {
         }
     };
     let stored = Opaque { ty: opaque.ty, state: OpaqueState::Handle(index as u32) };
-    ctx.store(&args[2], Value::Opaque(Box::new(stored)))?;
+    ctx.store(&args[at.shape], Value::Opaque(Box::new(stored)))?;
     Ok(None)
 }
 
 /// `WZBoxDef [\Inside] | [\Outside] Shape, LowPoint, HighPoint`.
 pub(crate) fn wz_box_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (low, high) = (pos(ctx, &args[3])?, pos(ctx, &args[4])?);
+    let (low, high) = (pos(ctx, &args[BOX.low])?, pos(ctx, &args[BOX.high])?);
     if (0..3).any(|i| low[i] == high[i]) {
         return Err(ctx.error(Err::ArgValue, "a box zone needs a size along every axis"));
     }
@@ -135,8 +152,8 @@ pub(crate) fn wz_box_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `WZCylDef [\Inside] | [\Outside] Shape, CentrePoint, Radius, Height` (a cylinder
 /// along the world z axis from its centre point's height).
 pub(crate) fn wz_cyl_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let centre = pos(ctx, &args[3])?;
-    let (radius, height) = (ctx.num(&args[4])?, ctx.num(&args[5])?);
+    let centre = pos(ctx, &args[CYL.centre])?;
+    let (radius, height) = (ctx.num(&args[CYL.radius])?, ctx.num(&args[CYL.height])?);
     if radius <= 0.0 {
         return Err(ctx.error(Err::ArgValue, "a cylinder zone needs a radius above 0"));
     }
@@ -146,8 +163,8 @@ pub(crate) fn wz_cyl_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `WZSphDef [\Inside] | [\Outside] Shape, CentrePoint, Radius`.
 pub(crate) fn wz_sph_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let centre = pos(ctx, &args[3])?;
-    let radius = ctx.num(&args[4])?;
+    let centre = pos(ctx, &args[SPH.centre])?;
+    let radius = ctx.num(&args[SPH.radius])?;
     if radius <= 0.0 {
         return Err(ctx.error(Err::ArgValue, "a sphere zone needs a radius above 0"));
     }
@@ -158,8 +175,8 @@ pub(crate) fn wz_sph_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// axes within Delta of Middle.
 // uncertain: an external axis whose middle value is 9E9 is not checked.
 pub(crate) fn wz_home_joint_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let middle = all_axes(ctx, &args[3])?;
-    let delta = all_axes(ctx, &args[4])?;
+    let middle = all_axes(ctx, &args[HOME.middle])?;
+    let delta = all_axes(ctx, &args[HOME.delta])?;
     let unused = |i: usize| i >= 6 && rapid_motion::external::is_unused(middle[i]);
     let low = std::array::from_fn(|i| if unused(i) { f64::NEG_INFINITY } else { middle[i] - delta[i].abs() });
     let high = std::array::from_fn(|i| if unused(i) { f64::INFINITY } else { middle[i] + delta[i].abs() });
@@ -177,8 +194,8 @@ fn all_axes(ctx: &Ctx<'_>, arg: &Value) -> Result<[f64; 12], RapidError> {
 /// `WZLimJointDef [\Inside] | [\Outside] Shape, LowJointVal, HighJointVal`.
 // uncertain: an axis whose low and high are both 9E9 is not limited.
 pub(crate) fn wz_lim_joint_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let mut low = all_axes(ctx, &args[3])?;
-    let mut high = all_axes(ctx, &args[4])?;
+    let mut low = all_axes(ctx, &args[LIM.low])?;
+    let mut high = all_axes(ctx, &args[LIM.high])?;
     for i in 0..12 {
         if rapid_motion::external::is_unused(low[i]) {
             low[i] = f64::NEG_INFINITY;
@@ -199,10 +216,11 @@ fn shape_of(ctx: &Ctx<'_>, arg: &Value) -> Result<ShapeData, RapidError> {
 
 /// Activates a zone and gives its number to the WorldZone record.
 fn activate(ctx: &mut Ctx<'_>, args: &[Value], shape: ShapeData, kind: ZoneKind) -> Res {
-    let temporary = !present(args.get(1));
+    let at = *ACTIVATE;
+    let temporary = !present(args.get(at.stat));
     let zones = &mut ctx.resources.robot.zones;
     if zones.iter().flatten().count() >= MAX_ZONES {
-        return Err(ctx.error(Err::ArgValue, "at most 20 world zones can be active"));
+        return Err(ctx.error(Err::ArgValue, format!("at most {MAX_ZONES} world zones can be active")));
     }
     let zone = Zone { shape, kind, enabled: true, temporary };
     let number = match zones.iter().position(Option::is_none) {
@@ -215,11 +233,11 @@ fn activate(ctx: &mut Ctx<'_>, args: &[Value], shape: ShapeData, kind: ZoneKind)
             zones.len()
         }
     };
-    let Value::Record(record) = ctx.value(&args[2])? else {
+    let Value::Record(record) = ctx.value(&args[at.zone])? else {
         return Err(ctx.error(Err::ArgValue, "WorldZone must be a wztemporary or wzstationary"));
     };
     let record = Record { ty: record.ty, fields: vec![Value::Num(number as f32)] };
-    ctx.store(&args[2], Value::Record(std::rc::Rc::new(record)))?;
+    ctx.store(&args[at.zone], Value::Record(std::rc::Rc::new(record)))?;
     let now = ctx.time;
     ctx.resources.robot.start_zone(number - 1, now);
     super::moves::apply_due_events(ctx)?;
@@ -234,10 +252,11 @@ fn activate(ctx: &mut Ctx<'_>, args: &[Value], shape: ShapeData, kind: ZoneKind)
 // planned with (AccSet, PathAccLim), v²/2a ahead of the TCP, within the move; the
 // output goes back when that place has left the zone (the manual speaks of entering).
 pub(crate) fn wz_do_set(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let before = present(args.get(4));
-    let shape = shape_of(ctx, &args[5])?;
-    let signal = super::super::io::signal(ctx, &args[6])?;
-    let value = ctx.num(&args[7])?;
+    let at = *DO_SET;
+    let before = present(args.get(at.before));
+    let shape = shape_of(ctx, &args[at.shape])?;
+    let signal = super::super::io::signal(ctx, &args[at.signal])?;
+    let value = ctx.num(&args[at.value])?;
     activate(ctx, args, shape, ZoneKind::DoSet { signal, value, before })
 }
 
@@ -269,7 +288,7 @@ pub fn braking_places(samples: &[rapid_motion::plan::Sample], decel: f64) -> Vec
 
 /// `WZLimSup [\Temp] | [\Stat] WorldZone, Shape`.
 pub(crate) fn wz_lim_sup(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let shape = shape_of(ctx, &args[3])?;
+    let shape = shape_of(ctx, &args[LIM_SUP.shape])?;
     activate(ctx, args, shape, ZoneKind::LimSup)
 }
 

@@ -14,7 +14,7 @@ mod datum;
 
 pub use datum::{Datum, TypeNames};
 
-use super::{present, Ctx, Entries, StopKind};
+use super::{native, present, Ctx, Family, StopKind};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Opaque, OpaqueState, Record, Value};
@@ -337,15 +337,18 @@ fn irmq_message(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-pub(super) static ENTRIES: Entries = &[
-    ("RMQFindSlot", find_slot),
-    ("RMQGetSlotName", get_slot_name),
-    ("RMQSendMessage", send_message),
-    ("RMQSendWait", send_wait),
-    ("RMQGetMessage", get_message),
-    ("RMQGetMsgHeader", get_msg_header),
-    ("RMQGetMsgData", get_msg_data),
-    ("RMQReadWait", read_wait),
-    ("RMQEmptyQueue", empty_queue),
-    ("IRMQMessage", irmq_message),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("RMQFindSlot", find_slot),
+        native("RMQGetSlotName", get_slot_name),
+        native("RMQSendMessage", send_message),
+        native("RMQSendWait", send_wait),
+        native("RMQGetMessage", get_message),
+        native("RMQGetMsgHeader", get_msg_header),
+        native("RMQGetMsgData", get_msg_data),
+        native("RMQReadWait", read_wait),
+        native("RMQEmptyQueue", empty_queue),
+        native("IRMQMessage", irmq_message),
+    ],
+};

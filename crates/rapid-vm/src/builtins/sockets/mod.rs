@@ -36,7 +36,7 @@ use std::str::FromStr;
 use std::time::{Duration, Instant};
 
 use super::io_wait::{wait_again, wait_started};
-use super::{present, Ctx, Entries};
+use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Opaque, OpaqueState, Value};
@@ -51,20 +51,23 @@ const DEFAULT_TIME: f64 = 60.0;
 /// controller's 4 ms period.
 const POLL_PERIOD: f64 = 0.004;
 
-pub(super) static ENTRIES: Entries = &[
-    ("SocketCreate", socket_create),
-    ("SocketConnect", socket_connect),
-    ("SocketBind", socket_bind),
-    ("SocketListen", socket_listen),
-    ("SocketAccept", socket_accept),
-    ("SocketSend", socket_send),
-    ("SocketSendTo", socket_send_to),
-    ("SocketReceive", socket_receive),
-    ("SocketReceiveFrom", socket_receive_from),
-    ("SocketClose", socket_close),
-    ("SocketGetStatus", socket_get_status),
-    ("SocketPeek", socket_peek),
-];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("SocketCreate", socket_create),
+        native("SocketConnect", socket_connect),
+        native("SocketBind", socket_bind),
+        native("SocketListen", socket_listen),
+        native("SocketAccept", socket_accept),
+        native("SocketSend", socket_send),
+        native("SocketSendTo", socket_send_to),
+        native("SocketReceive", socket_receive),
+        native("SocketReceiveFrom", socket_receive_from),
+        native("SocketClose", socket_close),
+        native("SocketGetStatus", socket_get_status),
+        native("SocketPeek", socket_peek),
+    ],
+};
 
 /// `SocketCreate Socket [\UDP]`: a new TCP (stream) or UDP (datagram) socket.
 fn socket_create(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
@@ -85,9 +88,10 @@ fn socket_create(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `SocketConnect Socket Address Port [\Time]`: connects to a remote computer.
 fn socket_connect(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (_, handle) = socket_arg(ctx, &args[0])?;
-    let to = remote_addr(ctx, &args[1], &args[2])?;
-    let timeout = time_arg(ctx, args.get(3))?;
+    let at = *CONNECT;
+    let (_, handle) = socket_arg(ctx, &args[at.socket])?;
+    let to = remote_addr(ctx, &args[at.address], &args[at.port])?;
+    let timeout = time_arg(ctx, args.get(at.time))?;
     let started = Instant::now();
     let res = ctx.resources.sockets.connect(handle, to, deadline(started, timeout));
     finish_wait(ctx, started, res)?;
@@ -114,27 +118,48 @@ fn socket_listen(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `SocketAccept Socket ClientSocket [\ClientAddress] [\Time]`: waits for a client;
 /// ClientSocket becomes the connection, ClientAddress the client's IP address.
 fn socket_accept(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (_, handle) = socket_arg(ctx, &args[0])?;
-    let (client, client_handle) = socket_arg(ctx, &args[1])?;
-    let timeout = time_arg(ctx, args.get(3))?;
+    let at = *ACCEPT;
+    let (_, handle) = socket_arg(ctx, &args[at.socket])?;
+    let (client, client_handle) = socket_arg(ctx, &args[at.client])?;
+    let timeout = time_arg(ctx, args.get(at.time))?;
     let Some((new, ip)) = wait_for(ctx, timeout, |sockets, deadline| sockets.accept(handle, deadline))? else {
         return Ok(None);
     };
     // uncertain: a ClientSocket still in use is replaced (its connection closed); the
     // manual documents no error for it.
     ctx.resources.sockets.close(client_handle);
-    set_handle(ctx, &args[1], client, Some(new))?;
-    if present(args.get(2)) {
-        ctx.store(&args[2], Value::Str(ip.to_string().into()))?;
+    set_handle(ctx, &args[at.client], client, Some(new))?;
+    if present(args.get(at.client_address)) {
+        ctx.store(&args[at.client_address], Value::Str(ip.to_string().into()))?;
     }
     Ok(None)
 }
 
+super::signature::layout! {
+    static CONNECT: ConnectArgs = "SocketConnect" { socket: "Socket", address: "Address", port: "Port", time: "Time" }
+    static ACCEPT: AcceptArgs = "SocketAccept" {
+        socket: "Socket", client: "ClientSocket", client_address: "ClientAddress", time: "Time",
+    }
+    static SEND: SendArgs = "SocketSend" { socket: "Socket", str: "Str", no_of_bytes: "NoOfBytes" }
+    static SEND_TO: SendToArgs = "SocketSendTo" {
+        socket: "Socket", address: "RemoteAddress", port: "RemotePort", str: "Str", no_of_bytes: "NoOfBytes",
+    }
+    static RECEIVE: ReceiveArgs = "SocketReceive" {
+        socket: "Socket", str: "Str", read_no_of_bytes: "ReadNoOfBytes", no_rec_bytes: "NoRecBytes", time: "Time",
+    }
+    static RECEIVE_FROM: ReceiveFromArgs = "SocketReceiveFrom" {
+        socket: "Socket", str: "Str", read_no_of_bytes: "ReadNoOfBytes", no_rec_bytes: "NoRecBytes",
+        address: "RemoteAddress", port: "RemotePort", time: "Time",
+    }
+}
+
 /// `SocketSend Socket [\Str] | [\RawData] | [\Data] [\NoOfBytes]`.
 fn socket_send(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (_, handle) = socket_arg(ctx, &args[0])?;
-    let slot = payload::chosen(ctx, args, 1)?;
-    let no_of_bytes = ctx.opt_num(args.get(4))?;
+    let at = *SEND;
+    let (_, handle) = socket_arg(ctx, &args[at.socket])?;
+    // The payload is one of \Str, \RawData, \Data, declared in that order.
+    let slot = payload::chosen(ctx, args, at.str)?;
+    let no_of_bytes = ctx.opt_num(args.get(at.no_of_bytes))?;
     let bytes = payload::bytes_to_send(ctx, args, slot, no_of_bytes)?;
     let started = Instant::now();
     // uncertain: the manual gives no send timeout; a peer that reads nothing may hold
@@ -147,10 +172,11 @@ fn socket_send(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `SocketSendTo Socket RemoteAddress RemotePort [\Str] | [\RawData] | [\Data]
 /// [\NoOfBytes]`: one datagram.
 fn socket_send_to(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (_, handle) = socket_arg(ctx, &args[0])?;
-    let to = remote_addr(ctx, &args[1], &args[2])?;
-    let slot = payload::chosen(ctx, args, 3)?;
-    let no_of_bytes = ctx.opt_num(args.get(6))?;
+    let at = *SEND_TO;
+    let (_, handle) = socket_arg(ctx, &args[at.socket])?;
+    let to = remote_addr(ctx, &args[at.address], &args[at.port])?;
+    let slot = payload::chosen(ctx, args, at.str)?;
+    let no_of_bytes = ctx.opt_num(args.get(at.no_of_bytes))?;
     let bytes = payload::bytes_to_send(ctx, args, slot, no_of_bytes)?;
     ctx.resources.sockets.send_to(handle, &bytes, to).map_err(|f| fault(ctx, f))?;
     Ok(None)
@@ -160,23 +186,24 @@ fn socket_send_to(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// [\Time]`: waits for data; without \ReadNoOfBytes takes what has arrived (at least
 /// one byte, at most what the data holds), with it waits for exactly that many.
 fn socket_receive(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (_, handle) = socket_arg(ctx, &args[0])?;
-    let slot = payload::chosen(ctx, args, 1)?;
+    let at = *RECEIVE;
+    let (_, handle) = socket_arg(ctx, &args[at.socket])?;
+    let slot = payload::chosen(ctx, args, at.str)?;
     let capacity = payload::capacity(ctx, args, slot)?;
-    let want = match ctx.opt_num(args.get(4))? {
+    let want = match ctx.opt_num(args.get(at.read_no_of_bytes))? {
         Some(n) => {
             let n = payload::read_count(ctx, n, capacity)?;
             table::Want { min: n, max: n }
         }
         None => table::Want { min: 1, max: capacity },
     };
-    let timeout = time_arg(ctx, args.get(6))?;
+    let timeout = time_arg(ctx, args.get(at.time))?;
     let Some(bytes) = wait_for(ctx, timeout, |sockets, deadline| sockets.receive(handle, want, deadline))? else {
         return Ok(None);
     };
     payload::store_received(ctx, args, slot, &bytes)?;
-    if present(args.get(5)) {
-        ctx.store(&args[5], Value::Num(bytes.len() as f32))?;
+    if present(args.get(at.no_rec_bytes)) {
+        ctx.store(&args[at.no_rec_bytes], Value::Num(bytes.len() as f32))?;
     }
     Ok(None)
 }
@@ -184,27 +211,28 @@ fn socket_receive(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `SocketReceiveFrom Socket [\Str] | [\RawData] | [\Data] [\ReadNoOfBytes]
 /// [\NoRecBytes] RemoteAddress RemotePort [\Time]`: the next datagram and its sender.
 fn socket_receive_from(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (_, handle) = socket_arg(ctx, &args[0])?;
-    let slot = payload::chosen(ctx, args, 1)?;
+    let at = *RECEIVE_FROM;
+    let (_, handle) = socket_arg(ctx, &args[at.socket])?;
+    let slot = payload::chosen(ctx, args, at.str)?;
     let capacity = payload::capacity(ctx, args, slot)?;
     // uncertain: for a datagram, \ReadNoOfBytes is read as the most bytes to keep.
-    let max = match ctx.opt_num(args.get(4))? {
+    let max = match ctx.opt_num(args.get(at.read_no_of_bytes))? {
         Some(n) => payload::read_count(ctx, n, capacity)?,
         None => capacity,
     };
-    let timeout = time_arg(ctx, args.get(8))?;
+    let timeout = time_arg(ctx, args.get(at.time))?;
     let wait = wait_for(ctx, timeout, |sockets, deadline| sockets.receive_from(handle, max, deadline))?;
     let Some((bytes, from)) = wait else { return Ok(None) };
     payload::store_received(ctx, args, slot, &bytes)?;
-    if present(args.get(5)) {
-        ctx.store(&args[5], Value::Num(bytes.len() as f32))?;
+    if present(args.get(at.no_rec_bytes)) {
+        ctx.store(&args[at.no_rec_bytes], Value::Num(bytes.len() as f32))?;
     }
     let (ip, port) = match from {
         SocketAddr::V4(v4) => (*v4.ip(), v4.port()),
         SocketAddr::V6(v6) => (v6.ip().to_ipv4_mapped().unwrap_or(Ipv4Addr::UNSPECIFIED), v6.port()),
     };
-    ctx.store(&args[6], Value::Str(ip.to_string().into()))?;
-    ctx.store(&args[7], Value::Num(f32::from(port)))?;
+    ctx.store(&args[at.address], Value::Str(ip.to_string().into()))?;
+    ctx.store(&args[at.port], Value::Num(f32::from(port)))?;
     Ok(None)
 }
 

@@ -22,7 +22,7 @@ pub(super) type Fault = (Err, String);
 /// How many sockets a task may hold open at once.
 // uncertain: the manual's SocketCreate limitations name 32 sockets; the error for
 // going past it is not documented (ERR_SOCK_UNSPEC here).
-pub(super) const MAX_SOCKETS: usize = 32;
+pub(super) const MAX_SOCKETS: usize = rapid_limits::SOCKETS;
 
 /// Bytes read ahead of the program but not yet received by it, at most.
 const PENDING_CAP: usize = 64 * 1024;

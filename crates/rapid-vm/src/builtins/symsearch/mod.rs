@@ -15,15 +15,21 @@ mod pattern;
 
 use pattern::Pattern;
 
-use super::{present, Ctx, Entries, NamedData};
+use super::{native, present, Ctx, Family, NamedData};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{OpaqueState, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
-pub(super) static ENTRIES: Entries =
-    &[("SetDataSearch", set_data_search), ("GetNextSym", get_next_sym), ("SetAllDataVal", set_all_data_val)];
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("SetDataSearch", set_data_search),
+        native("GetNextSym", get_next_sym),
+        native("SetAllDataVal", set_all_data_val),
+    ],
+};
 
 /// How a datum is stored.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -10,28 +10,37 @@ use crate::errnames::Err;
 use crate::exec::storage::Storage;
 use crate::value::{Place, Value};
 
+crate::builtins::signature::layout! {
+    static TRIGG_CHECK: CheckArgs = "TriggCheckIO" {
+        data: "TriggData", distance: "Distance", start: "Start", next: "Next", time: "Time", signal: "Signal",
+        relation: "Relation", value: "CheckValue", dvalue: "CheckDvalue", stop_move: "StopMove",
+        interrupt: "Interrupt", inhib: "Inhib", mode: "Mode",
+    }
+}
+
 /// `TriggCheckIO TriggData, Distance [\Start] | [\Time], Signal, Relation, CheckValue |
 /// CheckDvalue [\StopMove], Interrupt [\Inhib]`: at the place the signal is compared
 /// with the value; when the comparison fails the interrupt fires, and with
 /// `\StopMove` the robot stops on its path (StartMove goes on).
 pub(crate) fn trigg_check_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    refuse(args, &[(3, "\\Next"), (12, "\\Mode")])?;
-    let at = place(ctx, args, 2, Some(4))?;
-    let data = ctx.value(&args[5])?;
+    let ch = *TRIGG_CHECK;
+    refuse(args, &[(ch.next, "\\Next"), (ch.mode, "\\Mode")])?;
+    let at = place(ctx, args, (ch.distance, ch.start, ch.time))?;
+    let data = ctx.value(&args[ch.signal])?;
     if !matches!(data, Value::Opaque(_)) {
         return Err(ctx.error(Err::ArgValue, "TriggCheckIO's Signal must be signal data (signaldi … signalgo)"));
     }
-    let signal = super::super::super::io::signal(ctx, &args[5])?;
-    let relation = ctx.num(&args[6])?;
+    let signal = super::super::super::io::signal(ctx, &args[ch.signal])?;
+    let relation = ctx.num(&args[ch.relation])?;
     let Some(relation) = Relation::from_opnum(relation) else {
         return Err(ctx.error(Err::ArgValue, format!("Relation {relation} is not an opnum (LT … GT)")));
     };
-    let value = if present(args.get(8)) { ctx.num(&args[8])? } else { ctx.num(&args[7])? };
+    let value = if present(args.get(ch.dvalue)) { ctx.num(&args[ch.dvalue])? } else { ctx.num(&args[ch.value])? };
     check_value(ctx, signal, value)?;
-    let interrupt = super::super::super::interrupts::interrupt_number(ctx, &args[10])?;
-    let stop = present(args.get(9));
-    let special = Special::Check { signal, relation, value, stop, interrupt, inhib: inhib_place(args, 11) };
-    define(ctx, &args[0], PathEvent { at, shift: 0.0, action: Action::Special(0) }, Some(special))
+    let interrupt = super::super::super::interrupts::interrupt_number(ctx, &args[ch.interrupt])?;
+    let stop = present(args.get(ch.stop_move));
+    let special = Special::Check { signal, relation, value, stop, interrupt, inhib: inhib_place(args, ch.inhib) };
+    define(ctx, &args[ch.data], PathEvent { at, shift: 0.0, action: Action::Special(0) }, Some(special))
 }
 
 /// A deferred action's time is known: it waits for the executor, which a scheduled

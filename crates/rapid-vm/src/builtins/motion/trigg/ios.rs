@@ -3,7 +3,7 @@
 //! `signalname`, `setvalue`, `xxx`), each signal found by its name when the move runs.
 
 use super::super::super::{present, Ctx};
-use super::super::moves::{joint_move, linear_move};
+use super::super::moves::{joint_move, linear_move, Layout};
 use super::super::robot::{Action, At, PathEvent};
 use super::moves::{TRIGG_J_IOS, TRIGG_L_IOS};
 use super::{check_value, Res};
@@ -51,10 +51,10 @@ fn element(ctx: &mut Ctx<'_>, elem: &Value) -> Result<Option<PathEvent>, RapidEr
     Ok(Some(PathEvent { at, shift: -lag, action: Action::Set { signal: id, value } }))
 }
 
-/// The events of `\TriggData1`, `\TriggData2` and `\TriggData3` (arguments from `first`).
-fn io_events(ctx: &mut Ctx<'_>, args: &[Value], first: usize) -> Result<Vec<PathEvent>, RapidError> {
+/// The events of `\TriggData1`, `\TriggData2` and `\TriggData3` (the arguments up to Zone).
+fn io_events(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout) -> Result<Vec<PathEvent>, RapidError> {
     let mut events = Vec::new();
-    for idx in first..first + 3 {
+    for idx in layout.trigg..layout.zone {
         if !present(args.get(idx)) {
             continue;
         }
@@ -68,12 +68,12 @@ fn io_events(ctx: &mut Ctx<'_>, args: &[Value], first: usize) -> Result<Vec<Path
 
 /// `TriggLIOs`: MoveL setting the outputs of its trigger arrays.
 pub(crate) fn trigg_l_ios(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = io_events(ctx, args, 5)?;
+    let events = io_events(ctx, args, &TRIGG_L_IOS)?;
     linear_move(ctx, args, &TRIGG_L_IOS, events)
 }
 
 /// `TriggJIOs`: MoveJ setting the outputs of its trigger arrays.
 pub(crate) fn trigg_j_ios(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = io_events(ctx, args, 5)?;
+    let events = io_events(ctx, args, &TRIGG_J_IOS)?;
     joint_move(ctx, args, &TRIGG_J_IOS, events)
 }

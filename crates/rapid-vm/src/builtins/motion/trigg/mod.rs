@@ -48,15 +48,16 @@ fn refuse(args: &[Value], options: &[(usize, &str)]) -> Result<(), RapidError> {
 }
 
 /// Where the trigger is: Distance mm before the point, after the start (`\Start`), or
-/// seconds before the point (`\Time`).
-fn place(ctx: &Ctx<'_>, args: &[Value], start: usize, time: Option<usize>) -> Result<At, RapidError> {
-    let distance = ctx.num(&args[1])?;
+/// seconds before the point (`\Time`); the arguments' positions (`time` is
+/// `signature::ABSENT` for a trigger without `\Time`).
+fn place(ctx: &Ctx<'_>, args: &[Value], (distance, start, time): (usize, usize, usize)) -> Result<At, RapidError> {
+    let distance = ctx.num(&args[distance])?;
     if !distance.is_finite() || distance < 0.0 {
         return Err(ctx.error(Err::ArgValue, "a trigger's Distance must be 0 or more"));
     }
     Ok(if present(args.get(start)) {
         At::AfterStart(distance)
-    } else if time.is_some_and(|t| present(args.get(t))) {
+    } else if present(args.get(time)) {
         At::SecondsBefore(distance)
     } else {
         At::BeforePoint(distance)

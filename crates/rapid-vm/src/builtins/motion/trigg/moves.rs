@@ -2,16 +2,18 @@
 //! (Trigg_1 or every element of TriggArray, and T2 … T8).
 
 use super::super::super::{present, Ctx};
-use super::super::moves::{abs_joint_move, circular_move, joint_move, linear_move, EOffsRule, Layout, NONE};
+use std::sync::LazyLock;
+
+use super::super::moves::{abs_joint_move, circular_move, joint_move, linear_move, Layout};
 use super::super::robot::{Action, PathEvent};
 use super::{value_after_orders, Res, Special};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{OpaqueState, Value};
 
-/// The trigger handles of the triggdata arguments from `first` on (Trigg_1,
+/// The trigger handles of the triggdata arguments: Trigg_1 up to Zone (Trigg_1,
 /// TriggArray, T2 … T8).
-fn handles(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<Vec<usize>, RapidError> {
+fn handles(ctx: &Ctx<'_>, args: &[Value], layout: &Layout) -> Result<Vec<usize>, RapidError> {
     let mut handles = Vec::new();
     let mut add = |value: &Value| {
         if let Value::Opaque(o) = value {
@@ -20,7 +22,7 @@ fn handles(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<Vec<usize>, Ra
             }
         }
     };
-    for idx in first..first + 9 {
+    for idx in layout.trigg..layout.zone {
         if !present(args.get(idx)) {
             continue;
         }
@@ -35,9 +37,10 @@ fn handles(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<Vec<usize>, Ra
 /// The events of the triggers a move names; the move takes its own copy of each
 /// special definition (a ramp's start value resolved now). A TriggSpeed whose value
 /// at the programmed speed exceeds its output's limit is ERR_AO_LIM.
-fn triggers_of(ctx: &mut Ctx<'_>, args: &[Value], first: usize, speed: usize) -> Result<Vec<PathEvent>, RapidError> {
+fn triggers_of(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout) -> Result<Vec<PathEvent>, RapidError> {
+    let speed = layout.speed;
     let mut events = Vec::new();
-    for h in handles(ctx, args, first)? {
+    for h in handles(ctx, args, layout)? {
         let Some(&event) = ctx.resources.robot.triggers.get(h) else {
             return Err(ctx.error(Err::ArgValue, "a triggdata was never defined (TriggIO)"));
         };
@@ -67,75 +70,35 @@ fn triggers_of(ctx: &mut Ctx<'_>, args: &[Value], first: usize, speed: usize) ->
     Ok(events)
 }
 
-const TRIGG_L: Layout = Layout {
-    conc: 0,
-    cir: None,
-    to: 1,
-    id: 2,
-    speed: 3,
-    v: NONE,
-    t: 4,
-    zone: 14,
-    z: NONE,
-    inpos: 15,
-    tool: 16,
-    wobj: 17,
-    corr: Some(18),
-    eoffs: EOffsRule::Always,
-};
-const TRIGG_J: Layout = Layout { corr: None, ..TRIGG_L };
-const TRIGG_C: Layout = Layout {
-    cir: Some(1),
-    to: 2,
-    id: 3,
-    speed: 4,
-    t: 5,
-    zone: 15,
-    inpos: 16,
-    tool: 17,
-    wobj: 18,
-    corr: Some(19),
-    ..TRIGG_L
-};
-/// TriggAbsJ: `\NoEOffs` at 3.
-const TRIGG_ABS_J: Layout = Layout {
-    to: 1,
-    id: 2,
-    speed: 4,
-    t: 5,
-    zone: 15,
-    inpos: 16,
-    tool: 17,
-    wobj: 18,
-    corr: None,
-    eoffs: EOffsRule::Unless(3),
-    ..TRIGG_L
-};
+static TRIGG_L: LazyLock<Layout> = LazyLock::new(|| Layout::of("TriggL"));
+static TRIGG_J: LazyLock<Layout> = LazyLock::new(|| Layout::of("TriggJ"));
+static TRIGG_C: LazyLock<Layout> = LazyLock::new(|| Layout::of("TriggC"));
+static TRIGG_ABS_J: LazyLock<Layout> = LazyLock::new(|| Layout::of("TriggAbsJ"));
 
 /// `TriggL`: MoveL firing its triggers.
 pub(crate) fn trigg_l(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = triggers_of(ctx, args, 5, TRIGG_L.speed)?;
+    let events = triggers_of(ctx, args, &TRIGG_L)?;
     linear_move(ctx, args, &TRIGG_L, events)
 }
 
 /// `TriggJ`: MoveJ firing its triggers.
 pub(crate) fn trigg_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = triggers_of(ctx, args, 5, TRIGG_J.speed)?;
+    let events = triggers_of(ctx, args, &TRIGG_J)?;
     joint_move(ctx, args, &TRIGG_J, events)
 }
 
 /// `TriggC`: MoveC firing its triggers.
 pub(crate) fn trigg_c(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = triggers_of(ctx, args, 6, TRIGG_C.speed)?;
+    let events = triggers_of(ctx, args, &TRIGG_C)?;
     circular_move(ctx, args, &TRIGG_C, events)
 }
 
 /// `TriggAbsJ`: MoveAbsJ firing its triggers.
 pub(crate) fn trigg_abs_j(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let events = triggers_of(ctx, args, 6, TRIGG_ABS_J.speed)?;
+    let events = triggers_of(ctx, args, &TRIGG_ABS_J)?;
     abs_joint_move(ctx, args, &TRIGG_ABS_J, events)
 }
 
 /// The layouts of TriggLIOs and TriggJIOs (for `ios.rs`).
-pub(super) const TRIGG_L_IOS: Layout = Layout { zone: 8, inpos: 9, tool: 10, wobj: 11, corr: Some(12), ..TRIGG_L };
-pub(super) const TRIGG_J_IOS: Layout = Layout { corr: None, ..TRIGG_L_IOS };
+pub(super) static TRIGG_L_IOS: LazyLock<Layout> = LazyLock::new(|| Layout::of("TriggLIOs"));
+pub(super) static TRIGG_J_IOS: LazyLock<Layout> = LazyLock::new(|| Layout::of("TriggJIOs"));

@@ -12,26 +12,26 @@ use rapid_config::sys::{Sys, Task};
 use rapid_config::CfgFile;
 
 /// A mechanical unit group as the configuration writes it.
-pub(crate) struct Group {
+pub struct Group {
     /// `-Robot`; none for a positioner's group.
-    pub(crate) robot: Option<String>,
+    pub robot: Option<String>,
     /// Where it is written: the file's domain (`SYS`, `MOC`) and the line.
-    pub(crate) domain: &'static str,
-    pub(crate) line: u32,
+    pub domain: &'static str,
+    pub line: u32,
 }
 
 /// What the configuration says wrong about the robots: at `line` of the file of
 /// configuration domain `domain`.
 #[derive(Debug)]
-pub(crate) struct Finding {
-    pub(crate) domain: &'static str,
-    pub(crate) line: u32,
-    pub(crate) message: String,
+pub struct Finding {
+    pub domain: &'static str,
+    pub line: u32,
+    pub message: String,
 }
 
 /// The mechanical unit group task `task` uses, looked for in SYS.cfg, then MOC.cfg;
 /// `None` when the task names none or no file has it.
-pub(crate) fn group(syspar: &[(String, CfgFile)], task: &Task) -> Option<Group> {
+pub fn group(syspar: &[(String, CfgFile)], task: &Task) -> Option<Group> {
     let name = task.mechanical_unit_group.as_deref()?;
     ["SYS", "MOC"].into_iter().find_map(|domain| {
         let file = config(syspar, domain)?;
@@ -42,7 +42,7 @@ pub(crate) fn group(syspar: &[(String, CfgFile)], task: &Task) -> Option<Group> 
 
 /// Whether motion task `task` moves a robot: not when a manifest gives it `robot =
 /// false`, nor when its group has no robot (a positioner's task).
-pub(crate) fn has_robot(syspar: &[(String, CfgFile)], task_robots: &[(String, Option<String>)], task: &Task) -> bool {
+pub fn has_robot(syspar: &[(String, CfgFile)], task_robots: &[(String, Option<String>)], task: &Task) -> bool {
     let own = task_robots.iter().find(|(t, _)| t.eq_ignore_ascii_case(&task.name)).map(|(_, m)| m);
     let robotless = group(syspar, task).is_some_and(|g| g.robot.is_none());
     task.motion_task && !matches!(own, Some(None)) && !robotless
@@ -52,7 +52,7 @@ pub(crate) fn has_robot(syspar: &[(String, CfgFile)], task_robots: &[(String, Op
 /// `None` for a task without a robot. Fails on a group naming a robot MOC.cfg does not
 /// have (or, without MOC.cfg's robots, a name that is no ROB_n), and on two tasks moving
 /// one robot.
-pub(crate) fn numbers(
+pub fn numbers(
     sys: &Sys,
     syspar: &[(String, CfgFile)],
     task_robots: &[(String, Option<String>)],
@@ -102,9 +102,13 @@ pub(crate) fn numbers(
 }
 
 /// The `n` of the robot ROB_n a program run alone (one task) moves: its group's, else 1.
-pub(crate) fn of_single_task(inputs: &crate::inputs::Inputs) -> usize {
-    let Some(sys) = &inputs.sys else { return 1 };
-    let numbers = numbers(sys, &inputs.syspar, &inputs.task_robots).unwrap_or_default();
+pub fn of_single_task(
+    sys: Option<&Sys>,
+    syspar: &[(String, CfgFile)],
+    task_robots: &[(String, Option<String>)],
+) -> usize {
+    let Some(sys) = sys else { return 1 };
+    let numbers = numbers(sys, syspar, task_robots).unwrap_or_default();
     numbers.into_iter().flatten().next().unwrap_or(1)
 }
 

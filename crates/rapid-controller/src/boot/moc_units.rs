@@ -1,6 +1,6 @@
 //! External units from a backup's `SYSPAR/MOC.cfg` (`rapid_config::moc::mechanical_units`):
 //! what can be read of them becomes the unit a manifest's `[[unit]]` gives; the rest is
-//! named in a note (`motion_out::choose_model`). The attribute names and their links are
+//! named in a note (`super::motion::choose_model`). The attribute names and their links are
 //! those RobotWare writes (a public backup with a track was our source).
 // uncertain: only the mechanics `TRACK` is known to us (a linear axis); a unit with any
 // other is not read. The highest speed is the motor's (`STRESS_DUTY_CYCLE
@@ -12,22 +12,22 @@ use rapid_config::moc::{MechUnit, SingleAxis};
 use rapid_config::CfgFile;
 use rapid_motion::external::{ExternalAxis, ExternalUnit};
 
-use super::manifest_units::{TaskUnit, RAMP_TIME};
+use super::cell::{TaskUnit, RAMP_TIME};
 
 /// MOC.cfg gives lengths in metres, programs see millimetres.
 const MM_PER_M: f64 = 1000.0;
 
 /// The units read from MOC.cfg, and those that could not be, with why.
 #[derive(Debug, Default)]
-pub(crate) struct MocUnits {
-    pub(crate) units: Vec<TaskUnit>,
-    pub(crate) unread: Vec<(String, String)>,
+pub struct MocUnits {
+    pub units: Vec<TaskUnit>,
+    pub unread: Vec<(String, String)>,
 }
 
 /// Reads the external units of a MOC file. They belong to the first motion task.
 // uncertain: SYS.cfg's mechanical unit groups are not read; a MultiMove system's units
 // go to the first motion task.
-pub(crate) fn read(file: &CfgFile) -> MocUnits {
+pub fn read(file: &CfgFile) -> MocUnits {
     let mut read = MocUnits::default();
     for mech in rapid_config::moc::mechanical_units(file) {
         match unit(&mech) {

@@ -10,7 +10,7 @@ use rapid_sema::SourceInput;
 /// The signals `AliasIO "NAME", var` calls name, with the kind of `var` as the modules
 /// declare it (`VAR signaldi var`); calls whose variable is not declared so are left
 /// out.
-pub(crate) fn aliased_signals(modules: &[SourceInput]) -> Vec<(String, SignalKind)> {
+pub fn aliased_signals(modules: &[SourceInput]) -> Vec<(String, SignalKind)> {
     let mut found: Vec<(String, SignalKind)> = Vec::new();
     for module in modules {
         let lower = module.text.to_ascii_lowercase();
@@ -74,7 +74,7 @@ fn declared_kind(lower: &str, var: &str) -> Option<SignalKind> {
 }
 
 /// Adds a virtual signal for each aliased name the system lacks (groups 32 bits wide).
-pub(crate) fn add_to(system: &mut IoSystem, signals: &[(String, SignalKind)]) -> Result<(), String> {
+pub fn add_to(system: &mut IoSystem, signals: &[(String, SignalKind)]) -> Result<(), String> {
     for (name, kind) in signals {
         if system.id(name).is_some() {
             continue;

@@ -1,0 +1,43 @@
+//! A task's program modules for front ends (RWS `loadmod`/`unloadmod`): list them,
+//! load a module file from a file device, unload one by name. Loading and unloading
+//! are the task's own Load and EraseModule (`rapid_vm::exec::modules`), asked for
+//! while the program is stopped, as the controller asks for it.
+
+use super::{ApiError, Session};
+
+impl Session {
+    /// The modules of task `task`: those it started with, then those loaded since.
+    pub fn modules(&self, task: &str) -> Result<Vec<String>, ApiError> {
+        let idx = self.task_index(task)?;
+        Ok(self.controller.tasks[idx].loaded.vm.module_names())
+    }
+
+    /// Loads the module file at RAPID path `path` (`HOME:/extra.mod`) into task `task`
+    /// of the stopped program: it is checked against the task's program and linked,
+    /// its data initialised.
+    pub fn load_module(&mut self, task: &str, path: &str) -> Result<(), ApiError> {
+        self.must_be_stopped()?;
+        let idx = self.task_index(task)?;
+        let root = self.controller.tasks[idx].loaded.vm.resources().files.root().map(std::path::Path::to_path_buf);
+        let request = rapid_vm::builtins::modules::front_end_load(root.as_deref(), path).map_err(ApiError::NotFound)?;
+        let outcome =
+            self.controller.with_task(idx, &mut self.pendant, |vm, host| vm.front_end_module_request(request, host));
+        self.gather();
+        outcome.map_err(|e| ApiError::Refused(format!("task {task} cannot load `{path}`: {}", e.message)))
+    }
+
+    /// Unloads module `module` from task `task` of the stopped program (as
+    /// EraseModule does).
+    pub fn unload_module(&mut self, task: &str, module: &str) -> Result<(), ApiError> {
+        self.must_be_stopped()?;
+        let idx = self.task_index(task)?;
+        if !self.modules(task)?.iter().any(|m| m.eq_ignore_ascii_case(module)) {
+            return Err(ApiError::NotFound(format!("task {task} has no module `{module}`")));
+        }
+        let request = rapid_vm::builtins::modules::ModuleRequest::Erase { module: module.to_owned() };
+        let outcome =
+            self.controller.with_task(idx, &mut self.pendant, |vm, host| vm.front_end_module_request(request, host));
+        self.gather();
+        outcome.map_err(|e| ApiError::Refused(format!("task {task} cannot unload `{module}`: {}", e.message)))
+    }
+}

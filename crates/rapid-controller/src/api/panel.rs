@@ -1,0 +1,89 @@
+//! The controller's panel and motion system for front ends (an RWS server's
+//! `/rw/panel` and `/rw/motionsystem`): motors on/off, the run mode's cycles, and each
+//! robot's axes and flange as the controller reports them at its current time.
+
+use super::Session;
+use crate::ProgramState;
+
+/// A robot (mechanical unit) as the motion system reports it now.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MechUnitView {
+    /// The task that moves it.
+    pub task: String,
+    /// Axes 1..6, degrees.
+    pub joints: [f64; 6],
+    /// External axes a..f (9E9 where the unit has none).
+    pub extax: [f64; 6],
+    /// The flange (tool0) in the robot's base frame: x, y, z in mm.
+    pub trans: [f64; 3],
+    /// The flange's orientation, q1..q4 (scalar first).
+    pub orient: [f64; 4],
+    /// cf1, cf4, cf6, cfx.
+    pub conf: [i32; 4],
+    /// The robot's base frame in the world now (on a track, where the track has it).
+    pub base_trans: [f64; 3],
+    pub base_orient: [f64; 4],
+}
+
+impl Session {
+    /// Whether the motors are on (they are from power on in automatic mode).
+    pub fn motors_on(&self) -> bool {
+        self.controller.motors_on()
+    }
+
+    /// Motors on or off; motors off stops a running program at once (a quick stop).
+    pub fn set_motors(&mut self, on: bool) {
+        self.controller.set_motors(on);
+        if !on && matches!(self.controller.program_state(), ProgramState::Stopping { .. }) {
+            self.settle();
+        }
+        self.gather();
+    }
+
+    /// The run mode from the next start on: each NORMAL task runs `cycles` cycles
+    /// (1: cycle mode, "once"; 0: continuous until stopped, "forever").
+    pub fn set_cycles(&mut self, cycles: u64) {
+        self.controller.set_cycles(cycles);
+    }
+
+    /// Whether every NORMAL task has ended (the cycle is over: a new start begins
+    /// at Main).
+    pub fn all_normal_ended(&self) -> bool {
+        let mut normal = self.controller.tasks.iter().filter(|t| t.spec.kind == crate::TaskKind::Normal).peekable();
+        normal.peek().is_some() && normal.all(|t| t.end().is_some())
+    }
+
+    /// The robots of the tasks that move one, in task order (ROB_1 first).
+    pub fn mechunits(&mut self) -> Vec<MechUnitView> {
+        let time = self.controller.time;
+        let mut units = Vec::new();
+        for task in &mut self.controller.tasks {
+            if !task.spec.robot {
+                continue;
+            }
+            let robot = &mut task.loaded.vm.resources_mut().robot;
+            let joints = robot.joints_at(time);
+            let extax = robot.extax_read(time);
+            let (flange, conf) = robot.flange_of(&joints);
+            let base = robot.track_base_at(time);
+            units.push(MechUnitView {
+                base_trans: rapid_motion::pose::trans(&base),
+                base_orient: rapid_motion::pose::orient(&base),
+                task: task.spec.name.clone(),
+                joints,
+                extax,
+                trans: rapid_motion::pose::trans(&flange),
+                orient: rapid_motion::pose::orient(&flange),
+                conf,
+            });
+        }
+        units
+    }
+
+    /// The folder the file devices live in (`HOME:` is `<root>/HOME`), as the first
+    /// task was given it.
+    pub fn file_root(&self) -> Option<std::path::PathBuf> {
+        let task = self.controller.tasks.first()?;
+        task.loaded.vm.resources().files.root().map(std::path::Path::to_path_buf)
+    }
+}

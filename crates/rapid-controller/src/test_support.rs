@@ -1,0 +1,29 @@
+//! What the unit tests of this crate share: a controller of one task.
+
+use rapid_sema::SourceInput;
+
+use crate::{Controller, TaskKind, TaskSpec, TrustLevel};
+
+/// A controller of one NORMAL motion task, T_ROB1, running `program` from `main`.
+pub(crate) fn one_task(program: &str) -> Controller {
+    let files = [SourceInput::from_text("T_ROB1.mod", program)];
+    let loaded = match rapid_vm::load_with(&files, "main", &rapid_sema::Options::default()) {
+        Ok(loaded) => loaded,
+        Err(err) => panic!("the test program does not load: {err:?}"),
+    };
+    let spec = TaskSpec {
+        name: "T_ROB1".to_owned(),
+        kind: TaskKind::Normal,
+        trust: TrustLevel::SysFail,
+        foreground: None,
+        motion: true,
+        robot: true,
+        rmq: rapid_config::sys::Rmq::default(),
+        shared_files: Vec::new(),
+        robot_of: None,
+    };
+    match Controller::new(vec![(spec, loaded)], None) {
+        Ok(controller) => controller,
+        Err(message) => panic!("{message}"),
+    }
+}

@@ -1,0 +1,76 @@
+//! The panel part of the API: motors, run mode, the robots' positions.
+
+mod api_common;
+
+use rapid_controller::api::{RunOutcome, StartFrom, Until};
+
+#[test]
+fn motors_off_refuses_a_start_and_on_allows_it() {
+    let mut s = api_common::session();
+    assert!(s.motors_on());
+    s.set_motors(false);
+    assert!(!s.motors_on());
+    assert!(s.start(StartFrom::Pointer).is_err());
+    s.set_motors(true);
+    assert!(s.start(StartFrom::Pointer).is_ok());
+}
+
+#[test]
+fn the_robot_stands_at_the_target_it_moved_to() {
+    let mut s = api_common::session();
+    s.start(StartFrom::Pointer).expect("starts");
+    // T_ROB1 moves to p10 then p20 ([400, 0, 400], tool0) and then waits for nothing;
+    // T_OTHER waits for `shared`, so run to a time well past both moves.
+    let outcome = s.run_until(Until::Time(20.0), 10_000_000);
+    assert!(matches!(outcome, RunOutcome::Running | RunOutcome::Stopped | RunOutcome::Ended), "{outcome:?}");
+    let units = s.mechunits();
+    assert_eq!(units.len(), 1, "one robot: T_ROB1's");
+    let rob = &units[0];
+    assert_eq!(rob.task, "T_ROB1");
+    for (got, want) in rob.trans.iter().zip([400.0, 0.0, 400.0]) {
+        assert!((got - want).abs() < 0.01, "flange at {:?}", rob.trans);
+    }
+    // The orientation [0, 0, 1, 0] (q1 >= 0 as the controller shows it).
+    for (got, want) in rob.orient.iter().zip([0.0, 0.0, 1.0, 0.0]) {
+        assert!((got - want).abs() < 1e-6, "orient {:?}", rob.orient);
+    }
+    // No external axes: 9E9.
+    assert!(rob.extax.iter().all(|&e| e > 8.9e9), "{:?}", rob.extax);
+}
+
+#[test]
+fn cycle_once_ends_every_normal_task() {
+    let mut s =
+        api_common::with_signals("MODULE M\n  PROC main()\n    WaitTime 0.1;\n  ENDPROC\nENDMODULE\n", &[], &[]);
+    assert!(!s.all_normal_ended());
+    s.set_cycles(1);
+    s.start(StartFrom::Pointer).expect("starts");
+    s.run_until(Until::Time(1.0), 100_000);
+    assert!(s.all_normal_ended());
+}
+
+#[test]
+fn a_module_loaded_from_home_is_linked_and_unloaded_again() {
+    let root = std::env::temp_dir().join(format!("rapid-api-modules-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&root);
+    std::fs::create_dir_all(root.join("HOME")).unwrap();
+    std::fs::write(root.join("HOME/Extra.mod"), "MODULE Extra\n  PERS num extra := 42;\nENDMODULE\n").unwrap();
+    let mut s = api_common::session();
+    s.controller_mut().tasks[0].loaded.vm.resources_mut().files.set_root(&root);
+    assert_eq!(s.modules("T_ROB1").unwrap(), vec!["MainModule".to_owned()]);
+    assert_eq!(s.modules("T_OTHER").unwrap(), vec!["Other".to_owned()]);
+    assert!(s.read_data("T_ROB1/extra").is_err());
+    s.load_module("T_ROB1", "HOME:/Extra.mod").expect("loads");
+    assert!(s.modules("T_ROB1").unwrap().iter().any(|m| m == "Extra"));
+    // A second load of the same module is refused (ERR_LOADED).
+    assert!(s.load_module("T_ROB1", "HOME:/Extra.mod").is_err());
+    s.unload_module("T_ROB1", "Extra").expect("unloads");
+    assert!(!s.modules("T_ROB1").unwrap().iter().any(|m| m == "Extra"));
+    assert!(s.unload_module("T_ROB1", "Extra").is_err());
+    assert!(s.load_module("T_ROB1", "HOME:/Missing.mod").is_err());
+    assert!(s.load_module("T_ROB1", "HOME:/../Extra.mod").is_err(), "a path leaving the device");
+    // Not while the program runs.
+    s.start(StartFrom::Pointer).unwrap();
+    assert!(s.load_module("T_ROB1", "HOME:/Extra.mod").is_err());
+    let _ = std::fs::remove_dir_all(&root);
+}

@@ -1,0 +1,55 @@
+//! Fuzz target `controller`: one to three tasks, each a program of the structure-aware
+//! generator (`rapid_fuzz::program`), run together by the controller (round-robin,
+//! shared persistents, one motion task) for a bounded number of steps, the clock moved
+//! on through every wait. Nothing may panic.
+#![no_main]
+
+use arbitrary::Unstructured;
+use libfuzzer_sys::fuzz_target;
+use rapid_controller::{Controller, SystemExit, TaskKind, TaskSpec, TrustLevel};
+use rapid_sema::SourceInput;
+use rapid_vm::{load, RecordingHost};
+
+fuzz_target!(|data: &[u8]| {
+    let mut u = Unstructured::new(data);
+    let Ok(n_tasks) = u.int_in_range(1..=3usize) else { return };
+    let mut tasks = Vec::new();
+    for idx in 0..n_tasks {
+        let Ok(program) = rapid_fuzz::program::generate(&mut u) else { return };
+        let files: Vec<SourceInput> = program
+            .modules
+            .iter()
+            .enumerate()
+            .map(|(m, text)| SourceInput::from_bytes(format!("t{idx}m{m}.mod"), text.clone().into_bytes()))
+            .collect();
+        let Ok(mut loaded) = load(&files, "main") else { return };
+        loaded.vm.resources_mut().sockets.set_offline(true);
+        let kind = match u.int_in_range(0..=3u8).unwrap_or(0) {
+            0 => TaskKind::Static,
+            1 => TaskKind::SemiStatic,
+            _ => TaskKind::Normal,
+        };
+        let spec = TaskSpec {
+            name: if idx == 0 { "T_ROB1".to_owned() } else { format!("T_{idx}") },
+            kind,
+            trust: TrustLevel::SysFail,
+            foreground: None,
+            motion: idx == 0,
+            robot: idx == 0,
+            rmq: rapid_config::sys::Rmq::default(),
+            shared_files: Vec::new(),
+            robot_of: None,
+        };
+        tasks.push((spec, loaded));
+    }
+    // Two tasks declaring one PERS with different types is a load error: fine.
+    let Ok(mut controller) = Controller::new(tasks, None) else { return };
+    let mut host = RecordingHost::default();
+    for _ in 0..40 {
+        match controller.run(&mut host, 1_000) {
+            SystemExit::Budget => {}
+            SystemExit::Wait(seconds) => controller.advance(seconds.min(10.0)),
+            SystemExit::Ended | SystemExit::Stopped => break,
+        }
+    }
+});
