@@ -27,6 +27,8 @@ pub(crate) enum Command {
     /// Print the compiled form of every routine of a program (docs/dump-ir.md), without
     /// running it.
     DumpIr(DumpIrArgs),
+    /// Serve the Language Server Protocol over stdin/stdout (for editors).
+    Lsp(LspArgs),
 }
 
 #[derive(Debug, Args)]
@@ -35,6 +37,13 @@ pub(crate) struct DumpIrArgs {
     /// one task (as `rapid run` reads them).
     #[arg(required = true, value_name = "PATH")]
     pub(crate) paths: Vec<PathBuf>,
+}
+
+#[derive(Debug, Args)]
+pub(crate) struct LspArgs {
+    /// Accepted for editors that pass it: stdio is the only transport.
+    #[arg(long)]
+    pub(crate) stdio: bool,
 }
 
 #[derive(Debug, Args)]

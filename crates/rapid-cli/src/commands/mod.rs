@@ -5,6 +5,7 @@ mod codes;
 mod dump_ir;
 mod fmt;
 mod fmt_config;
+mod lsp;
 mod run;
 mod run_system;
 mod serve;
@@ -48,6 +49,7 @@ pub(crate) fn run(cli: Cli) -> anyhow::Result<ExitStatus> {
         }
         Command::Serve(args) => serve::run(&args),
         Command::Codes => codes::run(),
+        Command::Lsp(_) => lsp::run(),
         Command::Fmt(args) => fmt::run(&args),
         Command::DumpIr(args) => dump_ir::run(&args),
     }

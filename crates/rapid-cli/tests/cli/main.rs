@@ -30,6 +30,7 @@ mod fmt;
 mod interrupt;
 mod iomore;
 mod limits;
+mod lsp;
 mod manifest;
 mod mech_units;
 mod multimove;

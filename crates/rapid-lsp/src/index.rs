@@ -1,0 +1,354 @@
+//! What the editor features need of one file: every declaration with its scope and
+//! every name written, in source order. Built from the full syntax tree and the
+//! tokens of the file's current text; nothing here resolves across files (that is
+//! `features::resolve`).
+
+use rapid_syntax::ast::{DataDecl, Item, Module, RoutineKind, Stmt, StmtKind, Storage, TypeDefKind};
+use rapid_syntax::lexer::Lexer;
+use rapid_syntax::token::{Token, TokenKind};
+use rapid_syntax::{parse, Interner, Span};
+
+/// What a declaration declares.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Kind {
+    Module,
+    Record,
+    Alias,
+    /// A component of the RECORD `Decl::parent`.
+    Component,
+    Var,
+    Pers,
+    Const,
+    Proc,
+    Func,
+    Trap,
+    Param,
+    /// Routine data, or a FOR loop variable.
+    Local,
+}
+
+impl Kind {
+    pub(crate) fn is_routine(self) -> bool {
+        matches!(self, Kind::Proc | Kind::Func | Kind::Trap)
+    }
+
+    pub(crate) fn is_data(self) -> bool {
+        matches!(self, Kind::Var | Kind::Pers | Kind::Const | Kind::Param | Kind::Local)
+    }
+}
+
+/// One declaration of the file.
+#[derive(Debug, Clone)]
+pub(crate) struct Decl {
+    /// The name as written.
+    pub(crate) name: String,
+    /// The name folded as RAPID compares names (ASCII and Latin-1 capitals lowered).
+    pub(crate) key: String,
+    pub(crate) kind: Kind,
+    pub(crate) name_span: Span,
+    /// The whole declaration (a routine from PROC to ENDPROC).
+    pub(crate) span: Span,
+    /// The module of the file it belongs to (index into `FileIndex::modules`).
+    pub(crate) module: usize,
+    /// The routine it is declared in (a declaration index), for parameters and
+    /// routine data.
+    pub(crate) routine: Option<usize>,
+    /// Declared LOCAL: visible in its module only.
+    pub(crate) local: bool,
+    /// The data type of data and parameters, the return type of a FUNC, the base of
+    /// an ALIAS, the type of a component.
+    pub(crate) ty: Option<String>,
+    /// The record of a component (a declaration index).
+    pub(crate) parent: Option<usize>,
+    /// An optional parameter (`\name`).
+    pub(crate) optional: bool,
+}
+
+/// A name written in the file.
+#[derive(Debug, Clone)]
+pub(crate) struct Ident {
+    pub(crate) span: Span,
+    pub(crate) key: String,
+    /// Written after `.`: a record component.
+    pub(crate) after_dot: bool,
+    /// Written after `\`: an optional parameter's name in a call.
+    pub(crate) after_backslash: bool,
+}
+
+/// The index of one file.
+#[derive(Debug, Default)]
+pub(crate) struct FileIndex {
+    pub(crate) decls: Vec<Decl>,
+    /// Every identifier token, in source order.
+    pub(crate) idents: Vec<Ident>,
+    /// Every token but the end, in source order.
+    pub(crate) tokens: Vec<Token>,
+    pub(crate) comments: Vec<Span>,
+    /// The routines' spans with their declaration index, in source order (routines
+    /// never nest), for finding the routine at an offset by binary search.
+    routines: Vec<(Span, usize)>,
+    /// Where each routine's body starts, by declaration index.
+    body_starts: Vec<(usize, u32)>,
+}
+
+/// Folds a name the way RAPID compares names.
+pub(crate) fn fold(name: &str) -> String {
+    name.chars().map(rapid_syntax::intern::fold_char).collect()
+}
+
+impl FileIndex {
+    pub(crate) fn build(text: &str) -> FileIndex {
+        let mut interner = Interner::default();
+        let parsed = parse(text, &mut interner);
+        let mut index = FileIndex { comments: parsed.comments.clone(), ..FileIndex::default() };
+        for (module_idx, module) in parsed.file.modules.iter().enumerate() {
+            index.add_module(text, module_idx, module);
+        }
+        index.add_tokens(text);
+        index.routines =
+            index.decls.iter().enumerate().filter(|(_, d)| d.kind.is_routine()).map(|(at, d)| (d.span, at)).collect();
+        index.routines.sort_by_key(|(span, _)| span.start);
+        index
+    }
+
+    fn push(&mut self, text: &str, decl: DeclParts) -> usize {
+        let name = decl.name_span.text(text).to_owned();
+        self.decls.push(Decl {
+            key: fold(&name),
+            name,
+            kind: decl.kind,
+            name_span: decl.name_span,
+            span: decl.span,
+            module: decl.module,
+            routine: decl.routine,
+            local: decl.local,
+            ty: decl.ty.map(|span| span.text(text).to_owned()),
+            parent: decl.parent,
+            optional: decl.optional,
+        });
+        self.decls.len() - 1
+    }
+
+    fn add_module(&mut self, text: &str, module_idx: usize, module: &Module) {
+        let base = DeclParts { module: module_idx, ..DeclParts::new(Kind::Module, module.name.span, module.span) };
+        self.push(text, base);
+        for item in &module.items {
+            match item {
+                Item::Type(def) => {
+                    let (kind, name, ty) = match &def.kind {
+                        TypeDefKind::Record { name, .. } => (Kind::Record, name, None),
+                        TypeDefKind::Alias { base, name } => (Kind::Alias, name, Some(base.span)),
+                    };
+                    let record =
+                        self.push(text, DeclParts { local: def.local, ty, ..base.with(kind, name.span, def.span) });
+                    if let TypeDefKind::Record { components, .. } = &def.kind {
+                        for comp in components {
+                            let parts = base.with(Kind::Component, comp.name.span, comp.span);
+                            self.push(text, DeclParts { ty: Some(comp.ty.span), parent: Some(record), ..parts });
+                        }
+                    }
+                }
+                Item::Data(decl) => {
+                    self.push(text, data_parts(&base, decl, None));
+                }
+                Item::Routine(routine) => {
+                    let kind = match routine.kind {
+                        RoutineKind::Proc => Kind::Proc,
+                        RoutineKind::Func => Kind::Func,
+                        RoutineKind::Trap => Kind::Trap,
+                    };
+                    let parts = base.with(kind, routine.name.span, routine.span);
+                    let ty = routine.ret_ty.map(|n| n.span);
+                    let at = self.push(text, DeclParts { local: routine.local, ty, ..parts });
+                    self.body_starts.push((at, routine.body_span.start));
+                    for param in &routine.params {
+                        let parts = base.with(Kind::Param, param.name.span, param.span);
+                        self.push(
+                            text,
+                            DeclParts { routine: Some(at), ty: Some(param.ty.span), optional: param.optional, ..parts },
+                        );
+                    }
+                    if let Some(body) = &routine.body {
+                        for decl in &body.decls {
+                            self.push(text, data_parts(&base, decl, Some(at)));
+                        }
+                        let mut loops = Vec::new();
+                        for_vars(&body.stmts, &mut loops);
+                        for (name, span) in loops {
+                            self.push(text, DeclParts { routine: Some(at), ..base.with(Kind::Local, name, span) });
+                        }
+                    }
+                }
+                Item::Placeholder(..) => {}
+            }
+        }
+    }
+
+    fn add_tokens(&mut self, text: &str) {
+        let mut lexer = Lexer::new(text);
+        let mut prev = TokenKind::Eof;
+        loop {
+            let token = lexer.next_token();
+            if token.kind == TokenKind::Eof {
+                break;
+            }
+            if token.kind == TokenKind::Ident {
+                self.idents.push(Ident {
+                    span: token.span,
+                    key: fold(token.span.text(text)),
+                    after_dot: prev == TokenKind::Dot,
+                    after_backslash: prev == TokenKind::Backslash,
+                });
+            }
+            self.tokens.push(token);
+            prev = token.kind;
+        }
+    }
+
+    /// The identifier whose span holds `offset` (or ends there: the cursor just after
+    /// a name is on it).
+    pub(crate) fn ident_at(&self, offset: u32) -> Option<&Ident> {
+        let at = self.idents.partition_point(|id| id.span.end < offset);
+        self.idents.get(at).filter(|id| id.span.start <= offset)
+    }
+
+    /// The innermost routine declaration holding `offset`.
+    pub(crate) fn routine_at(&self, offset: u32) -> Option<usize> {
+        let after = self.routines.partition_point(|(span, _)| span.start <= offset);
+        let (span, at) = *self.routines.get(after.checked_sub(1)?)?;
+        (offset <= span.end).then_some(at)
+    }
+
+    /// Where the body of the routine holding `offset` starts.
+    pub(crate) fn body_start(&self, offset: u32) -> Option<u32> {
+        let routine = self.routine_at(offset)?;
+        self.body_starts.iter().find(|(at, _)| *at == routine).map(|(_, start)| *start)
+    }
+
+    /// The parameters and data of routine `routine` (declarations follow their
+    /// routine's, in one run).
+    pub(crate) fn locals(&self, routine: usize) -> impl Iterator<Item = (usize, &Decl)> {
+        self.decls.iter().enumerate().skip(routine + 1).take_while(move |(_, d)| d.routine == Some(routine))
+    }
+
+    /// The module holding `offset`.
+    pub(crate) fn module_at(&self, offset: u32) -> Option<usize> {
+        self.decls
+            .iter()
+            .find(|d| d.kind == Kind::Module && d.span.start <= offset && offset <= d.span.end)
+            .map(|d| d.module)
+    }
+}
+
+/// The fields of a declaration before its name is read from the text.
+#[derive(Debug, Clone, Copy)]
+struct DeclParts {
+    kind: Kind,
+    name_span: Span,
+    span: Span,
+    module: usize,
+    routine: Option<usize>,
+    local: bool,
+    ty: Option<Span>,
+    parent: Option<usize>,
+    optional: bool,
+}
+
+impl DeclParts {
+    fn new(kind: Kind, name_span: Span, span: Span) -> DeclParts {
+        DeclParts {
+            kind,
+            name_span,
+            span,
+            module: 0,
+            routine: None,
+            local: false,
+            ty: None,
+            parent: None,
+            optional: false,
+        }
+    }
+
+    /// Another declaration of the same module.
+    fn with(&self, kind: Kind, name_span: Span, span: Span) -> DeclParts {
+        DeclParts { module: self.module, ..DeclParts::new(kind, name_span, span) }
+    }
+}
+
+fn data_parts(base: &DeclParts, decl: &DataDecl, routine: Option<usize>) -> DeclParts {
+    let kind = match (routine, decl.storage) {
+        (Some(_), _) => Kind::Local,
+        (None, Storage::Var) => Kind::Var,
+        (None, Storage::Pers) => Kind::Pers,
+        (None, Storage::Const) => Kind::Const,
+    };
+    let local = matches!(decl.scope, rapid_syntax::ast::DeclScope::Local);
+    DeclParts { routine, local, ty: Some(decl.ty.span), ..base.with(kind, decl.name.span, decl.span) }
+}
+
+/// The FOR loop variables of a statement list, nested ones included.
+fn for_vars(stmts: &[Stmt], out: &mut Vec<(Span, Span)>) {
+    for stmt in stmts {
+        match &stmt.kind {
+            StmtKind::For { var, body, .. } => {
+                out.push((var.span, stmt.span));
+                for_vars(body, out);
+            }
+            StmtKind::If { then, elifs, els, .. } => {
+                for_vars(then, out);
+                for elif in elifs {
+                    for_vars(&elif.body, out);
+                }
+                for_vars(els.as_deref().unwrap_or(&[]), out);
+            }
+            StmtKind::While { body, .. } => for_vars(body, out),
+            StmtKind::Test { cases, default, .. } => {
+                for case in cases {
+                    for_vars(&case.body, out);
+                }
+                for_vars(default.as_deref().unwrap_or(&[]), out);
+            }
+            _ => {}
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const TEXT: &str = "MODULE M\n  RECORD pt\n    num x;\n  ENDRECORD\n  LOCAL VAR num n := 1;\n  PROC main(num a)\n    VAR pt p;\n    FOR i FROM 1 TO 2 DO\n      p.x := a + n;\n    ENDFOR\n  ENDPROC\nENDMODULE\n";
+
+    #[test]
+    fn collects_declarations_with_their_scopes() {
+        let index = FileIndex::build(TEXT);
+        let names: Vec<(&str, Kind)> = index.decls.iter().map(|d| (d.name.as_str(), d.kind)).collect();
+        assert_eq!(
+            names,
+            [
+                ("M", Kind::Module),
+                ("pt", Kind::Record),
+                ("x", Kind::Component),
+                ("n", Kind::Var),
+                ("main", Kind::Proc),
+                ("a", Kind::Param),
+                ("p", Kind::Local),
+                ("i", Kind::Local),
+            ]
+        );
+        assert!(index.decls[3].local);
+        assert_eq!(index.decls[5].routine, Some(4));
+        assert_eq!(index.decls[2].parent, Some(1));
+        assert_eq!(index.decls[6].ty.as_deref(), Some("pt"));
+    }
+
+    #[test]
+    fn marks_component_names() {
+        let index = FileIndex::build(TEXT);
+        let x = TEXT.find("p.x").unwrap() as u32 + 2;
+        let ident = index.ident_at(x).unwrap();
+        assert_eq!(ident.key, "x");
+        assert!(ident.after_dot);
+        assert_eq!(index.routine_at(x), Some(4));
+    }
+}
