@@ -75,6 +75,25 @@ pub struct TaskSpec {
     pub shared_files: Vec<usize>,
 }
 
+impl TaskSpec {
+    /// A NORMAL task named `name` (trust level SysFail, in the foreground, no message
+    /// queue, no shared modules) that moves its own robot when `motion`: the task of a
+    /// program alone, and what tests and front ends build systems of.
+    pub fn normal(name: &str, motion: bool) -> TaskSpec {
+        TaskSpec {
+            name: name.to_owned(),
+            kind: TaskKind::Normal,
+            trust: TrustLevel::SysFail,
+            foreground: None,
+            motion,
+            robot: motion,
+            rmq: rapid_config::sys::Rmq::default(),
+            robot_of: None,
+            shared_files: Vec::new(),
+        }
+    }
+}
+
 /// Why a task is no longer running.
 #[derive(Debug, Clone, PartialEq)]
 pub enum TaskEnd {

@@ -2,7 +2,7 @@
 
 use rapid_sema::SourceInput;
 
-use crate::{Controller, TaskKind, TaskSpec, TrustLevel};
+use crate::{Controller, TaskSpec};
 
 /// A controller of one NORMAL motion task, T_ROB1, running `program` from `main`.
 pub(crate) fn one_task(program: &str) -> Controller {
@@ -11,17 +11,7 @@ pub(crate) fn one_task(program: &str) -> Controller {
         Ok(loaded) => loaded,
         Err(err) => panic!("the test program does not load: {err:?}"),
     };
-    let spec = TaskSpec {
-        name: "T_ROB1".to_owned(),
-        kind: TaskKind::Normal,
-        trust: TrustLevel::SysFail,
-        foreground: None,
-        motion: true,
-        robot: true,
-        rmq: rapid_config::sys::Rmq::default(),
-        shared_files: Vec::new(),
-        robot_of: None,
-    };
+    let spec = TaskSpec::normal("T_ROB1", true);
     match Controller::new(vec![(spec, loaded)], None) {
         Ok(controller) => controller,
         Err(message) => panic!("{message}"),

@@ -9,7 +9,7 @@ use axum::http::{header, Request, Response, StatusCode};
 use axum::Router;
 use md5::{Digest, Md5};
 use rapid_controller::api::{ClockPolicy, Session};
-use rapid_controller::{Controller, TaskKind, TaskSpec, TrustLevel};
+use rapid_controller::{Controller, TaskSpec};
 use rapid_sema::SourceInput;
 use tower::ServiceExt;
 
@@ -49,17 +49,7 @@ fn boot(root: std::path::PathBuf) -> Result<Session, String> {
         names.iter().map(|(n, _, kind)| format!("\n      -Name \"{n}\" -SignalType \"{kind}\"\n")).collect();
     let eio = rapid_config::eio::read(&rapid_config::parse(&format!("EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n{signals}")));
     let io = rapid_vm::builtins::io_config::io_system(&eio)?;
-    let spec = TaskSpec {
-        name: "T_ROB1".into(),
-        kind: TaskKind::Normal,
-        trust: TrustLevel::SysFail,
-        foreground: None,
-        motion: true,
-        robot: true,
-        rmq: rapid_config::sys::Rmq::default(),
-        shared_files: Vec::new(),
-        robot_of: None,
-    };
+    let spec = TaskSpec::normal("T_ROB1", true);
     Ok(Session::new(Controller::new(vec![(spec, loaded)], Some(io))?))
 }
 

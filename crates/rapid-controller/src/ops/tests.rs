@@ -4,7 +4,7 @@
 use rapid_sema::SourceInput;
 use rapid_vm::RecordingHost;
 
-use crate::{Controller, ProgramState, StartMode, StopKind, SystemExit, TaskKind, TaskSpec, TrustLevel};
+use crate::{Controller, ProgramState, StartMode, StopKind, SystemExit, TaskSpec};
 
 fn controller(program: &str) -> Controller {
     with_signals(program, "")
@@ -24,17 +24,7 @@ fn with_signals(program: &str, inputs: &str) -> Controller {
         Ok(loaded) => loaded,
         Err(err) => panic!("the test program does not load: {err:?}"),
     };
-    let spec = TaskSpec {
-        name: "T_ROB1".to_owned(),
-        kind: TaskKind::Normal,
-        trust: TrustLevel::SysFail,
-        foreground: None,
-        motion: true,
-        robot: true,
-        rmq: rapid_config::sys::Rmq::default(),
-        shared_files: Vec::new(),
-        robot_of: None,
-    };
+    let spec = TaskSpec::normal("T_ROB1", true);
     let io = (!names.is_empty()).then(|| {
         let signals: String = names.iter().map(|n| format!("\n      -Name \"{n}\" -SignalType \"DI\"\n")).collect();
         let eio =

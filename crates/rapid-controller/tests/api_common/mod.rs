@@ -4,7 +4,7 @@
 #![allow(dead_code)]
 
 use rapid_controller::api::Session;
-use rapid_controller::{Controller, TaskKind, TaskSpec, TrustLevel};
+use rapid_controller::{Controller, TaskSpec};
 use rapid_sema::SourceInput;
 
 /// T_ROB1's module. Lines are counted by [`line_of`].
@@ -60,17 +60,7 @@ pub(crate) fn line_of(text: &str, needle: &str) -> u32 {
 }
 
 fn spec(name: &str, motion: bool) -> TaskSpec {
-    TaskSpec {
-        name: name.to_owned(),
-        kind: TaskKind::Normal,
-        trust: TrustLevel::SysFail,
-        foreground: None,
-        motion,
-        robot: motion,
-        rmq: rapid_config::sys::Rmq::default(),
-        shared_files: Vec::new(),
-        robot_of: None,
-    }
+    TaskSpec::normal(name, motion)
 }
 
 fn load(path: &str, text: &str, options: &rapid_sema::Options) -> rapid_vm::Loaded {
