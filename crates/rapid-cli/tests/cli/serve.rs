@@ -173,7 +173,11 @@ fn required() -> bool {
 
 /// The virtualenv's python with the pinned clients, made once per target folder;
 /// None (after a loud note) when this machine cannot make it and CI does not require it.
+/// The tests that need it run in parallel: one makes the virtualenv while the others
+/// wait (two pips installing into one fresh virtualenv break each other).
 fn client_python() -> Option<PathBuf> {
+    static MAKING: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _one_at_a_time = MAKING.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     let venv = Path::new(env!("CARGO_TARGET_TMPDIR")).join("rws-client-venv");
     let python = venv.join("bin/python");
     let marker = venv.join(format!("installed {}", PACKAGES.join(" ")));
