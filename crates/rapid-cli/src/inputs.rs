@@ -293,10 +293,7 @@ impl Collector {
     // uncertain: shared modules of RobotWare itself (BASE_SHARED and the like) are not
     // modelled; their routines are in the catalogue.
     fn add_home_modules(&mut self, folder: &Path, sys: &sys::Sys, task: &str, task_files: &[PathBuf]) {
-        let mine = |m: &&sys::TaskModule| {
-            m.shared || m.all_tasks || m.task.as_deref().is_some_and(|t| t.eq_ignore_ascii_case(task))
-        };
-        for module in sys.modules.iter().filter(mine) {
+        for module in sys.modules.iter().filter(|m| m.loads_into(task)) {
             let Some(rest) =
                 module.file.get(..5).filter(|d| d.eq_ignore_ascii_case("HOME:")).map(|_| &module.file[5..])
             else {
@@ -339,8 +336,12 @@ impl Collector {
         self.order.push(FileRef::Config(config_idx));
         self.configs.push(SourceInput::from_bytes(shown.to_string(), bytes));
         let parsed = rapid_config::parse(&self.configs[config_idx].text);
-        self.config_findings(config_idx, &parsed.errors);
         let domain = domain(&parsed, path);
+        if INTERPRETED_DOMAINS.contains(&domain.as_str()) {
+            self.config_findings(config_idx, &parsed.errors);
+        } else {
+            self.uninterpreted_findings(config_idx, &domain, &parsed.errors);
+        }
         let mut sys = None;
         match domain.as_str() {
             "EIO" => {
@@ -472,6 +473,23 @@ impl Collector {
         }));
     }
 
+    /// The lines a domain we do not interpret (MMC, PROC, SIO…) could not be read in:
+    /// RobotWare accepts what it wrote, and nothing of the domain is used, so each is a
+    /// warning at its line (W0702), never a reason to refuse the system.
+    fn uninterpreted_findings(&mut self, config_idx: usize, domain: &str, errors: &[CfgError]) {
+        let warnings: Vec<CfgError> = errors
+            .iter()
+            .map(|error| CfgError {
+                message: format!(
+                    "{} (the {domain} configuration is not interpreted: the line is ignored)",
+                    error.message
+                ),
+                ..error.clone()
+            })
+            .collect();
+        self.config_warnings(config_idx, &warnings);
+    }
+
     /// Settings the configuration accepts but `rapid run` does not simulate (W0702).
     fn config_warnings(&mut self, config_idx: usize, warnings: &[CfgError]) {
         self.config_diagnostics.extend(warnings.iter().map(|warning| {
@@ -590,6 +608,11 @@ impl Collector {
         }
     }
 }
+
+/// The configuration domains whose content `rapid` reads (signals, tasks, mechanical
+/// units): a line of theirs that cannot be read is an error. The content of the
+/// others (MMC, PROC, SIO, …) is kept for ReadCfgData only.
+const INTERPRETED_DOMAINS: &[&str] = &["EIO", "SYS", "MOC"];
 
 /// The domain of a configuration file: its header's, else its file name's (`EIO.cfg`).
 fn domain(file: &CfgFile, path: &Path) -> String {

@@ -223,6 +223,7 @@ pub fn read(file: &CfgFile) -> Eio {
             eio.signals.push(signal);
         }
     }
+    drive_module_signals(file, &mut eio);
     let mut cross_errors = Vec::new();
     for inst in file.instances("EIO_CROSS") {
         check_cross(inst, &eio, &mut cross_errors);
@@ -236,6 +237,53 @@ pub fn read(file: &CfgFile) -> Eio {
         error.line = file.line_of(error.span.start);
     }
     eio
+}
+
+/// The drive module's internal signals a cross-connection names (`-Act1 "DRV1BRAKE"`):
+/// RobotWare configures them itself, on each drive module's internal device, so a
+/// backup's EIO.cfg uses them without defining them. Each becomes a read-only digital
+/// output that stays 0 (`rapid run` has no drive module), with a warning at its line.
+// uncertain: the names follow RobotWare's `DRV<n><NAME>` pattern (DRV1BRAKE, DRV1K1,
+// DRV1CHAIN1, …); which of them are inputs and which outputs is not known to us.
+fn drive_module_signals(file: &CfgFile, eio: &mut Eio) {
+    for inst in file.instances("EIO_CROSS") {
+        for attr in &inst.attrs {
+            let lower = attr.name.to_ascii_lowercase();
+            let is_actor = lower.starts_with("act") && lower[3..].parse::<usize>().is_ok();
+            let Some(value) = attr.value.as_ref().filter(|_| is_actor) else { continue };
+            if !is_drive_signal(&value.text) || eio.signal(&value.text).is_some() {
+                continue;
+            }
+            let message = format!(
+                "`{}` is an internal signal of the drive module, which RobotWare configures itself: \
+                 accepted, and it stays 0 in `rapid run`",
+                value.text
+            );
+            eio.warnings.push(CfgError { line: file.line_of(value.span.start), span: value.span.clone(), message });
+            eio.signals.push(Signal {
+                name: value.text.clone(),
+                signal_type: SignalType::Do,
+                device: None,
+                device_map: None,
+                bits: Vec::new(),
+                default: None,
+                access: Some("ReadOnly".to_owned()),
+                label: None,
+                analog: Analog::default(),
+                line: inst.line,
+                span: value.span.clone(),
+            });
+        }
+    }
+}
+
+/// `DRV1BRAKE`: `DRV`, the drive module's number, a name.
+fn is_drive_signal(name: &str) -> bool {
+    let Some(rest) = name.get(..3).filter(|p| p.eq_ignore_ascii_case("DRV")).map(|_| &name[3..]) else {
+        return false;
+    };
+    let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
+    digits > 0 && rest.len() > digits && rest[digits..].bytes().all(|b| b.is_ascii_alphanumeric())
 }
 
 /// A device starts disabled with `-StateWhenStartup "Deactivated"` (RobotWare 6) or the

@@ -43,11 +43,15 @@ pub struct Header {
     pub span: Range<usize>,
 }
 
-/// A type section: `#` and then `EIO_SIGNAL:` and its instances.
+/// A type section: `#` and then `EIO_SIGNAL:` and its instances. A type line may name
+/// the section too, `MMC_MC1 = MMC_PALETTE:` (a named instance list of a type, as
+/// RobotWare writes the pendant's instruction palettes in MMC.cfg).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Section {
-    /// The type name as written (`EIO_SIGNAL`).
+    /// The type name as written (`EIO_SIGNAL`, `MMC_PALETTE`).
     pub name: String,
+    /// The section's own name before `=` (`MMC_MC1`), when the type line gives one.
+    pub label: Option<String>,
     pub line: u32,
     /// The span of the type line.
     pub span: Range<usize>,
@@ -122,9 +126,18 @@ impl CfgFile {
 
 impl Instance {
     /// The attribute of a name, compared without regard to case (`-Name` and `-name`
-    /// both occur in files RobotWare wrote).
+    /// both occur in files RobotWare wrote); the first when it is repeated.
     pub fn attr(&self, name: &str) -> Option<&Attr> {
         self.attrs.iter().find(|a| a.name.eq_ignore_ascii_case(name))
+    }
+
+    /// Every value of an attribute, in order: an attribute RobotWare lets repeat
+    /// (`-Task "A" -Task "B"`) gives one value each time it is written.
+    pub fn values<'a>(&'a self, name: &'a str) -> impl Iterator<Item = &'a str> + 'a {
+        self.attrs
+            .iter()
+            .filter(move |a| a.name.eq_ignore_ascii_case(name))
+            .filter_map(|a| a.value.as_ref().map(|v| v.text.as_str()))
     }
 
     /// The value of an attribute; `None` when absent or a flag.

@@ -61,6 +61,12 @@ pub fn parse(text: &str) -> CfgFile {
     reader.file
 }
 
+/// Attributes an instance may give more than once, each time meaning one more value:
+/// `-Task "T_ROB1" -Task "T_ROB2"` in `CAB_TASK_MODULES` loads the module into both
+/// tasks, as the configuration RobotStudio writes for a module of several tasks does.
+// uncertain: the one repeated attribute we have seen in public configurations.
+const REPEATABLE: &[&str] = &["Task"];
+
 const MISSING_HEADER: &str = "the file does not start with a header line such as `EIO:CFG_1.0:6:1::`";
 
 struct Reader {
@@ -100,9 +106,10 @@ impl Reader {
             // uncertain: RobotWare writes `#` alone; we take any `#` line as a comment.
             return;
         }
-        if let Some(name) = type_name(trimmed) {
+        if let Some((label, name)) = type_name(trimmed) {
             self.file.sections.push(Section {
                 name: name.to_owned(),
+                label: label.map(str::to_owned),
                 line: self.line_of(span.start),
                 span,
                 instances: Vec::new(),
@@ -128,7 +135,8 @@ impl Reader {
         let end = last.start + self.file.text[last].trim_end().len();
         let mut kept: Vec<Attr> = Vec::with_capacity(attrs.len());
         for attr in attrs {
-            if kept.iter().any(|k| k.name.eq_ignore_ascii_case(&attr.name)) {
+            let repeated = kept.iter().any(|k| k.name.eq_ignore_ascii_case(&attr.name));
+            if repeated && !REPEATABLE.iter().any(|r| r.eq_ignore_ascii_case(&attr.name)) {
                 let message = format!("attribute `-{}` given twice in one instance; the first is kept", attr.name);
                 self.error(attr.name_span.clone(), message);
                 continue;
@@ -174,10 +182,15 @@ fn header(line: &str, span: Range<usize>) -> Option<Header> {
     Some(Header { domain: domain.to_owned(), format: format.to_owned(), version, span })
 }
 
-/// `EIO_SIGNAL:` → `EIO_SIGNAL`.
-fn type_name(line: &str) -> Option<&str> {
+/// `EIO_SIGNAL:` → (None, `EIO_SIGNAL`); `MMC_MC1 = MMC_PALETTE:` → (`MMC_MC1`,
+/// `MMC_PALETTE`): a section of a type with a name of its own.
+fn type_name(line: &str) -> Option<(Option<&str>, &str)> {
     let name = line.strip_suffix(':')?.trim_end();
-    is_word(name).then_some(name)
+    if let Some((label, ty)) = name.split_once('=') {
+        let (label, ty) = (label.trim(), ty.trim());
+        return (is_word(label) && is_word(ty)).then_some((Some(label), ty));
+    }
+    is_word(name).then_some((None, name))
 }
 
 fn is_word(s: &str) -> bool {

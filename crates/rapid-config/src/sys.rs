@@ -95,8 +95,9 @@ pub struct TaskModule {
     /// `-File`, e.g. `HOME:/user.sys`.
     pub file: String,
     pub module: Option<String>,
-    /// `-Task`, or none with `-AllTask`.
-    pub task: Option<String>,
+    /// The tasks `-Task` names (once per task: `-Task "T_ROB1" -Task "T_ROB2"` loads
+    /// the module into both); none with `-AllTask`.
+    pub tasks: Vec<String>,
     pub all_tasks: bool,
     /// `-Shared`: one instance visible in every task.
     pub shared: bool,
@@ -178,7 +179,7 @@ pub fn read(file: &CfgFile) -> Sys {
         sys.modules.push(TaskModule {
             file: path.to_owned(),
             module: inst.value("ModName").map(str::to_owned),
-            task: inst.value("Task").map(str::to_owned),
+            tasks: inst.values("Task").map(str::to_owned).collect(),
             all_tasks: inst.has("AllTask"),
             shared: inst.has("Shared"),
             line: inst.line,
@@ -222,6 +223,14 @@ fn read_hooks(file: &CfgFile, sys: &mut Sys) {
             all_tasks: inst.has("AllTask"),
             line: inst.line,
         });
+    }
+}
+
+impl TaskModule {
+    /// Whether the module is loaded into task `task`: shared (one module every task
+    /// sees), every task's (`-AllTask`), or one of the tasks `-Task` names.
+    pub fn loads_into(&self, task: &str) -> bool {
+        self.shared || self.all_tasks || self.tasks.iter().any(|t| t.eq_ignore_ascii_case(task))
     }
 }
 

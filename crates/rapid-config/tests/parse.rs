@@ -448,3 +448,58 @@ fn many_instances_keep_their_lines_and_duplicates() {
     // Over the task limit: that one finding, and no foreground checks past it.
     assert!(sys.errors.iter().any(|e| e.message == "at most 20 tasks; 4980 more are configured"), "{:?}", sys.errors);
 }
+
+/// MMC.cfg names its instruction palettes: `NAME = TYPE:` starts a section of the type
+/// with a name of its own, and its instances belong to it. RobotWare writes the line
+/// with a blank on each side of `=` and a CR LF line end.
+#[test]
+fn a_named_section_is_a_section_of_its_type() {
+    let text =
+        "MMC:CFG_1.0:6:0::\r\n#\r\nMMC_PAL_A = MMC_PALETTE:\r\n\r\n      -name \"MoveJ\" -only_mec_task \r\n\r\n      \
+                -name \"Set\"\r\n#\r\nMMC_PAL_B=MMC_PALETTE:\r\n\r\n      -name \"WaitTime\"\r\n";
+    let file = parse(text);
+    assert!(file.errors.is_empty(), "{:?}", file.errors);
+    let sections: Vec<(&str, Option<&str>, usize)> =
+        file.sections.iter().map(|s| (s.name.as_str(), s.label.as_deref(), s.instances.len())).collect();
+    assert_eq!(sections, [("MMC_PALETTE", Some("MMC_PAL_A"), 2), ("MMC_PALETTE", Some("MMC_PAL_B"), 1)]);
+    let names: Vec<&str> = file.instances("MMC_PALETTE").filter_map(|i| i.value("name")).collect();
+    assert_eq!(names, ["MoveJ", "Set", "WaitTime"]);
+    // `A = B = C:` and `= T:` name no section: still errors.
+    let bad = parse("MMC:CFG_1.0:6:0::\n#\nA = B = C:\n#\n= T:\n");
+    let lines: Vec<u32> = bad.errors.iter().map(|e| e.line).collect();
+    assert_eq!(lines, [3, 5]);
+}
+
+/// `-Task` given twice in a CAB_TASK_MODULES instance loads the module into each task
+/// it names (and no other); any other attribute given twice stays a finding.
+#[test]
+fn a_task_module_of_two_tasks() {
+    let text = "SYS:CFG_1.0:6:0::\n#\nCAB_TASK_MODULES:\n\n      -File \"HOME:/both.mod\" -Task \"T_ROB1\" \
+                -Task \"T_ROB2\"\n\n      -File \"HOME:/a.mod\" -File \"HOME:/b.mod\" -Task \"T_ROB1\"\n";
+    let file = parse(text);
+    let found: Vec<(u32, &str)> = file.errors.iter().map(|e| (e.line, e.message.as_str())).collect();
+    assert_eq!(found, [(7, "attribute `-File` given twice in one instance; the first is kept")]);
+    let sys = sys::read(&file);
+    assert_eq!(sys.modules[0].tasks, ["T_ROB1", "T_ROB2"]);
+    assert!(sys.modules[0].loads_into("t_rob2") && !sys.modules[0].loads_into("T_ROB3"));
+    assert_eq!(sys.modules[1].file, "HOME:/a.mod");
+}
+
+/// A cross-connection may read the drive module's internal signals (DRV1BRAKE), which
+/// RobotWare configures itself: each is accepted with a warning at its line.
+#[test]
+fn a_cross_connection_reads_a_drive_module_signal() {
+    let text =
+        "EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n      -Name \"doBrakeOff\" -SignalType \"DO\"\n#\nEIO_CROSS:\n\n      \
+                -Name \"brake\" -Res \"doBrakeOff\"\\\n      -Act1 \"DRV1BRAKE\" -Act1_invert\n\n      \
+                -Name \"other\" -Res \"doBrakeOff\" -Act1 \"DRVX\"\n";
+    let eio = eio::read(&parse(text));
+    // `DRVX` has no drive module number: an unknown signal as before.
+    let errors: Vec<(u32, &str)> = eio.errors.iter().map(|e| (e.line, e.message.as_str())).collect();
+    assert_eq!(errors, [(12, "cross-connection names `DRVX`, which is not a configured signal")]);
+    let warnings: Vec<u32> = eio.warnings.iter().map(|w| w.line).collect();
+    assert_eq!(warnings, [10]);
+    assert!(eio.warnings[0].message.contains("`DRV1BRAKE` is an internal signal of the drive module"));
+    let brake = eio.signal("drv1brake").expect("the drive module's signal");
+    assert_eq!((brake.signal_type, brake.access.as_deref()), (eio::SignalType::Do, Some("ReadOnly")));
+}
