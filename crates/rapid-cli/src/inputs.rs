@@ -76,6 +76,9 @@ pub(crate) struct Inputs {
     /// What the user should know about how the inputs were read (a backup's module
     /// left out): printed to stderr as notes.
     pub(crate) notes: Vec<String>,
+    /// The other task folders of a backup that no SYS.cfg configures, by task name:
+    /// `rapid check` checks each as a task of its own.
+    pub(crate) unconfigured_tasks: Vec<String>,
 }
 
 impl Inputs {
@@ -189,6 +192,7 @@ struct Collector {
     /// Canonical paths already read, so a file named twice is checked once.
     seen: FxHashSet<PathBuf>,
     notes: Vec<String>,
+    unconfigured_tasks: Vec<String>,
 }
 
 impl Collector {
@@ -199,9 +203,8 @@ impl Collector {
             return self.add_manifest(&file);
         }
         if meta.is_dir() {
-            let tasks = backup::task_folders(path);
-            if !tasks.is_empty() {
-                return self.add_backup(path, &tasks);
+            if backup::is_system(path) {
+                return self.add_backup(path, &backup::task_folders(path));
             }
             return self.add_folder(path);
         }
@@ -227,6 +230,13 @@ impl Collector {
             }
         }
         if files.is_empty() {
+            let systems = backup::system_subfolders(folder);
+            if !systems.is_empty() {
+                bail!(
+                    "folder `{shown}` holds no RAPID module files; these folders in it are systems (name one): {}",
+                    systems.iter().map(|p| format!("`{}`", p.display())).collect::<Vec<_>>().join(", ")
+                );
+            }
             bail!("folder `{shown}` holds no RAPID module files ({})", extension_list());
         }
         files.sort();
@@ -237,7 +247,8 @@ impl Collector {
         Ok(())
     }
 
-    /// Adds a backup: its configuration, then the modules of its T_ROB1 task.
+    /// Adds a backup (or another system layout, `backup.rs`): its configuration, then
+    /// the modules of its T_ROB1 task, from its task folder and from HOME.
     fn add_backup(&mut self, folder: &Path, tasks: &[(u32, PathBuf)]) -> anyhow::Result<()> {
         let mut sys = None;
         for path in backup::config_files(folder) {
@@ -251,12 +262,13 @@ impl Collector {
             self.add_task_ids(sys);
         }
         let Some(task) = backup::choose_task(folder, tasks, sys.as_ref(), self.wanted_task.as_deref()) else {
-            bail!("backup `{shown}` holds no RAPID/TASKn folder");
+            bail!("`{shown}` holds no RAPID/TASKn folder, and no SYS.cfg configures a task");
         };
-        if !task.folder.is_dir() {
-            bail!("backup `{shown}`: task {} has no task folder `{}`", task.name, task.folder.display());
+        if self.wanted_task.is_none() {
+            self.note_task_folders(folder, tasks, sys.as_ref());
         }
-        let modules = backup::task_modules(folder, &task.folder)?;
+        let has_folder = task.folder.is_dir();
+        let modules = if has_folder { backup::task_modules(folder, &task.folder)? } else { Vec::new() };
         for left_out in backup::unlisted_modules(&task.folder, &modules) {
             self.notes.push(format!(
                 "`{}` is not among the modules backinfo.txt lists for task {}: it is not loaded",
@@ -264,24 +276,96 @@ impl Collector {
                 task.name
             ));
         }
-        if modules.is_empty() {
-            bail!("backup `{shown}`: task folder `{}` holds no modules in PROGMOD or SYSMOD", task.folder.display());
-        }
         for path in &modules {
             let shown = path.display();
             self.add_module(path).with_context(|| format!("cannot read `{shown}`"))?;
         }
+        let home = backup::home_folder(folder);
         if let Some(sys) = &sys {
-            self.add_home_modules(folder, sys, &task.name, &modules);
+            self.add_home_modules(home.as_deref(), sys, &task.name, &modules);
             // The controller refuses a configuration that gives one robot two tasks.
             if let Err(found) = rapid_controller::boot::robots::numbers(sys, &self.syspar, &[]) {
                 self.config_finding(found.domain, found.line, found.message);
             }
         }
+        if self.modules.is_empty() {
+            if !has_folder {
+                bail!(
+                    "backup `{shown}`: task {} has no task folder `{}`, and SYS.cfg loads no module of HOME into it",
+                    task.name,
+                    task.folder.display()
+                );
+            }
+            bail!("backup `{shown}`: task folder `{}` holds no modules in PROGMOD or SYSMOD", task.folder.display());
+        }
+        // Without any task folder every task is such a task: one note says so.
+        if tasks.is_empty() && self.wanted_task.is_none() {
+            self.notes.push(format!(
+                "`{shown}` has no task folders (RAPID/TASKn): each task's modules are those SYS.cfg loads from HOME \
+                 (CAB_TASK_MODULES), here `{}`",
+                home.as_deref().map_or_else(|| "(none)".to_owned(), |h| h.display().to_string())
+            ));
+        }
+        if !has_folder && (!tasks.is_empty() || backup::listed_modules(folder, &task.folder) > 0) {
+            self.note_folderless_task(folder, &task);
+        }
+        if sys.as_ref().is_none_or(|sys| sys.tasks.is_empty()) && self.wanted_task.is_none() {
+            let names = backup::folder_task_names(folder, tasks);
+            self.unconfigured_tasks = names.into_iter().filter(|n| !n.eq_ignore_ascii_case(&task.name)).collect();
+        }
         self.task = Some(task);
         self.sys = sys;
-        self.root = Some(folder.to_path_buf());
+        // The controller root holds HOME: the backup, or the folder beside which a
+        // configuration folder found its HOME.
+        self.root = Some(home.and_then(|h| h.parent().map(Path::to_path_buf)).unwrap_or_else(|| folder.to_path_buf()));
         Ok(())
+    }
+
+    /// Says which task folders of the system are not checked or run: those no
+    /// configured task uses (named by backinfo.txt only, or by nothing), and, without a
+    /// task configuration, those `rapid check` checks but `rapid run` does not run.
+    fn note_task_folders(&mut self, folder: &Path, tasks: &[(u32, PathBuf)], sys: Option<&sys::Sys>) {
+        let configured = sys.is_some_and(|sys| !sys.tasks.is_empty());
+        for (path, name) in backup::unused_task_folders(folder, tasks, sys) {
+            let shown = path.display();
+            self.notes.push(match (configured, name) {
+                (true, Some(name)) => format!(
+                    "`{shown}` holds task {name} (backinfo.txt), which SYS.cfg does not configure: it is not checked \
+                     or run"
+                ),
+                (true, None) => {
+                    format!("`{shown}` is the folder of no task SYS.cfg configures: it is not checked or run")
+                }
+                (false, _) => format!(
+                    "backinfo.txt names no task for `{shown}`: it is checked as task {} (no SYS.cfg says how it runs)",
+                    path.file_name().and_then(|n| n.to_str()).unwrap_or("?")
+                ),
+            });
+        }
+        if !configured && tasks.len() > 1 {
+            let names = backup::folder_task_names(folder, tasks);
+            self.notes.push(format!(
+                "no SYS.cfg configures the tasks of `{}` ({}): `rapid check` checks each; `rapid run` runs the first \
+                 alone",
+                folder.display(),
+                names.join(", ")
+            ));
+        }
+    }
+
+    /// Says where a task without a task folder gets its program: the modules SYS.cfg
+    /// loads from HOME (and what backinfo.txt listed for the folder, now missing).
+    fn note_folderless_task(&mut self, folder: &Path, task: &TaskFolder) {
+        let listed = backup::listed_modules(folder, &task.folder);
+        let missing = match listed {
+            0 => String::new(),
+            n => format!("; backinfo.txt lists {n} module(s) of that folder, which the backup does not hold"),
+        };
+        self.notes.push(format!(
+            "task {} has no task folder `{}`: its modules are those SYS.cfg loads from HOME (CAB_TASK_MODULES){missing}",
+            task.name,
+            task.folder.display()
+        ));
     }
 
     /// The modules SYS.cfg loads from HOME (`CAB_TASK_MODULES`): a shared one
@@ -292,7 +376,7 @@ impl Collector {
     /// `RELEASE:/…`) is not in a backup and is left out.
     // uncertain: shared modules of RobotWare itself (BASE_SHARED and the like) are not
     // modelled; their routines are in the catalogue.
-    fn add_home_modules(&mut self, folder: &Path, sys: &sys::Sys, task: &str, task_files: &[PathBuf]) {
+    fn add_home_modules(&mut self, home: Option<&Path>, sys: &sys::Sys, task: &str, task_files: &[PathBuf]) {
         for module in sys.modules.iter().filter(|m| m.loads_into(task)) {
             let Some(rest) =
                 module.file.get(..5).filter(|d| d.eq_ignore_ascii_case("HOME:")).map(|_| &module.file[5..])
@@ -307,7 +391,8 @@ impl Collector {
             if in_task {
                 continue;
             }
-            let path = backup::child(folder, "HOME").map(|home| {
+            let path = home.map(|home| {
+                let home = home.to_path_buf();
                 rest.split(['/', '\\'])
                     .fold(home, |dir, part| backup::child(&dir, part).unwrap_or_else(|| dir.join(part)))
             });
@@ -605,6 +690,7 @@ impl Collector {
             diagnostics,
             rank,
             notes: self.notes,
+            unconfigured_tasks: self.unconfigured_tasks,
         }
     }
 }

@@ -103,6 +103,10 @@ fn check_task(inputs: &inputs::Inputs, options: &Options) -> (Vec<Diagnostic>, O
 
 /// The inputs of a backup's tasks other than the one `inputs` holds.
 fn other_tasks(args: &CheckArgs, inputs: &inputs::Inputs) -> anyhow::Result<Vec<inputs::Inputs>> {
+    // A backup's task folders that no SYS.cfg configures are each checked on their own.
+    if inputs.sys.as_ref().is_none_or(|sys| sys.tasks.is_empty()) {
+        return inputs.unconfigured_tasks.iter().map(|name| inputs::collect_task(&args.paths, Some(name))).collect();
+    }
     let (Some(sys), Some(read)) = (&inputs.sys, &inputs.task) else { return Ok(Vec::new()) };
     // System-wide limits first: a system over the task limit is refused by its
     // configuration finding (E0701, as `rapid run` refuses it), and its tasks are not

@@ -10,11 +10,22 @@
 //!   SYSPAR/EIO.cfg SYS.cfg MOC.cfg …
 //! ```
 //!
-//! A folder holding `RAPID/TASKn` is a backup. The task checked and run is T_ROB1 (the
-//! task SYS.cfg names so, else its first task; the folder is found through
-//! backinfo.txt, else by the task's place in SYS.cfg, else the first task folder).
-//! Names are matched without regard to case: backups copied from Windows keep
-//! whatever case their files happen to have.
+//! and the other layouts public systems come in (docs/real-systems.md):
+//!
+//! - a system without task folders: `SYSPAR/*.cfg` and `HOME/`, whose tasks get their
+//!   modules from HOME as SYS.cfg's `CAB_TASK_MODULES` says (a backup whose `RAPID`
+//!   folder is empty is one too);
+//! - a configuration folder: `SYS.cfg` and the other `.cfg` files at its root, HOME in
+//!   it or beside it (`robot/config_params/SYS.cfg` with `robot/HOME/`), as programs
+//!   that install themselves on a controller ship their configuration;
+//! - a single task folder straight in `RAPID` (`RAPID/PROGMOD`, `RAPID/SYSMOD`), the
+//!   task T_ROB1 of a system without configuration.
+//!
+//! The task checked and run first is T_ROB1 (the task SYS.cfg names so, else its first
+//! task; the folder is found through backinfo.txt, else by the task's place in
+//! SYS.cfg, else the first task folder). A task may have no folder: its modules are
+//! then those of HOME that SYS.cfg loads into it. Names are matched without regard to
+//! case: backups copied from Windows keep whatever case their files happen to have.
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -44,7 +55,9 @@ pub(crate) fn child(dir: &Path, name: &str) -> Option<PathBuf> {
         .map(|entry| entry.path())
 }
 
-/// The `RAPID/TASKn` folders of a backup, ordered by n; empty when `folder` is no backup.
+/// The `RAPID/TASKn` folders of a backup, ordered by n; empty when `folder` has none. A
+/// `RAPID` folder holding `PROGMOD` or `SYSMOD` itself (and no `TASKn`) is the one task
+/// folder of its system, numbered 1.
 pub(crate) fn task_folders(folder: &Path) -> Vec<(u32, PathBuf)> {
     let Some(rapid) = child(folder, "RAPID").filter(|p| p.is_dir()) else { return Vec::new() };
     let Ok(entries) = fs::read_dir(&rapid) else { return Vec::new() };
@@ -58,13 +71,42 @@ pub(crate) fn task_folders(folder: &Path) -> Vec<(u32, PathBuf)> {
         })
         .collect();
     tasks.sort();
+    if tasks.is_empty() && ["PROGMOD", "SYSMOD"].iter().any(|sub| child(&rapid, sub).is_some_and(|p| p.is_dir())) {
+        tasks.push((1, rapid));
+    }
     tasks
 }
 
-/// The `SYSPAR/*.cfg` files of a backup, sorted by name.
+/// Whether `folder` is a system (a backup or one of the other layouts the module doc
+/// lists) rather than a folder of modules.
+pub(crate) fn is_system(folder: &Path) -> bool {
+    !task_folders(folder).is_empty() || !config_files(folder).is_empty()
+}
+
+/// The folders in `folder` that are systems, sorted: what a user who named their parent
+/// (a repository's `robot` folder holding `HOME` and several configuration folders)
+/// may have meant.
+pub(crate) fn system_subfolders(folder: &Path) -> Vec<PathBuf> {
+    let Ok(entries) = fs::read_dir(folder) else { return Vec::new() };
+    let mut found: Vec<PathBuf> = entries.filter_map(Result::ok).map(|e| e.path()).filter(|p| p.is_dir()).collect();
+    found.retain(|p| is_system(p));
+    found.sort();
+    found
+}
+
+/// The configuration files of a system, sorted by name: `SYSPAR/*.cfg`, else the
+/// `.cfg` files at its root when `SYS.cfg` is one of them.
 pub(crate) fn config_files(folder: &Path) -> Vec<PathBuf> {
-    let Some(syspar) = child(folder, "SYSPAR").filter(|p| p.is_dir()) else { return Vec::new() };
-    let Ok(entries) = fs::read_dir(&syspar) else { return Vec::new() };
+    match child(folder, "SYSPAR").filter(|p| p.is_dir()) {
+        Some(syspar) => cfg_files(&syspar),
+        None if child(folder, "SYS.cfg").is_some_and(|p| p.is_file()) => cfg_files(folder),
+        None => Vec::new(),
+    }
+}
+
+/// The `.cfg` files of a folder, sorted by name.
+fn cfg_files(dir: &Path) -> Vec<PathBuf> {
+    let Ok(entries) = fs::read_dir(dir) else { return Vec::new() };
     let mut files: Vec<PathBuf> = entries
         .filter_map(Result::ok)
         .map(|e| e.path())
@@ -76,15 +118,29 @@ pub(crate) fn config_files(folder: &Path) -> Vec<PathBuf> {
     files
 }
 
+/// The system's HOME folder: its own `HOME`, else, for a configuration folder (its
+/// `.cfg` files at its root, no `SYSPAR`), the `HOME` beside it. None when neither is.
+pub(crate) fn home_folder(folder: &Path) -> Option<PathBuf> {
+    if let Some(home) = child(folder, "HOME").filter(|p| p.is_dir()) {
+        return Some(home);
+    }
+    if child(folder, "SYSPAR").is_some() {
+        return None;
+    }
+    let parent = folder.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    child(parent, "HOME").filter(|p| p.is_dir())
+}
+
 /// The task to read: `wanted`, else T_ROB1, else SYS.cfg's first task, else the first
-/// task folder.
+/// task folder. None when the system has neither a task folder nor a configured task.
+/// The folder returned may be missing: a task without a folder has no program of its
+/// own (the caller reports it, or loads the modules SYS.cfg gives the task).
 pub(crate) fn choose_task(
     folder: &Path,
     tasks: &[(u32, PathBuf)],
     sys: Option<&Sys>,
     wanted: Option<&str>,
 ) -> Option<TaskFolder> {
-    let first = tasks.first()?;
     let names = backinfo_tasks(folder);
     let wanted = match wanted {
         Some(name) => Some(name.to_owned()),
@@ -93,24 +149,73 @@ pub(crate) fn choose_task(
     let wanted =
         wanted.or_else(|| names.iter().find(|(_, n)| n.eq_ignore_ascii_case("T_ROB1")).map(|(_, n)| n.clone()));
     let Some(wanted) = wanted else {
+        let first = tasks.first()?;
         let name = names.iter().find(|(n, _)| *n == first.0).map_or_else(|| folder_name(&first.1), |(_, n)| n.clone());
         return Some(TaskFolder { name, folder: first.1.clone(), entry: None });
     };
-    // The folder of the task: backinfo.txt says; else the task's place in SYS.cfg.
+    // The folder of the task: backinfo.txt says; else the task's place in SYS.cfg; else
+    // the folder of its name (a task named after its folder, as a system without
+    // configuration has them).
     // uncertain: RobotWare numbers TASKn folders in CAB_TASKS order; backinfo.txt is
     // what backups we have seen use to say it.
-    let number = names.iter().find(|(_, n)| n.eq_ignore_ascii_case(&wanted)).map(|(n, _)| *n).or_else(|| {
-        let place = sys?.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(&wanted))?;
-        u32::try_from(place + 1).ok()
-    });
-    // A task whose folder is missing has no program: never another task's (the caller
-    // reports the missing folder).
-    let folder = match number {
+    let number = names
+        .iter()
+        .find(|(_, n)| n.eq_ignore_ascii_case(&wanted))
+        .map(|(n, _)| *n)
+        .or_else(|| {
+            let place = sys?.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(&wanted))?;
+            u32::try_from(place + 1).ok()
+        })
+        .or_else(|| tasks.iter().find(|(_, path)| folder_name(path).eq_ignore_ascii_case(&wanted)).map(|(n, _)| *n));
+    // A task whose folder is missing has no program: never another task's.
+    let found = match number {
         Some(n) => tasks.iter().find(|(m, _)| *m == n).map_or_else(|| rapid_task_folder(folder, n), |f| f.1.clone()),
-        None => first.1.clone(),
+        None => tasks.first().map_or_else(|| rapid_task_folder(folder, 1), |f| f.1.clone()),
     };
     let entry = sys.and_then(|sys| sys.task(&wanted)).map(|t| t.entry.clone());
-    Some(TaskFolder { name: wanted, folder, entry })
+    Some(TaskFolder { name: wanted, folder: found, entry })
+}
+
+/// The task folders of a system that no configured task uses, each with the name
+/// backinfo.txt gives it (if any): with SYS.cfg, a folder is a configured task's by
+/// backinfo.txt, else by the task's place in CAB_TASKS; without it, every folder
+/// backinfo.txt names is used (when it names any).
+pub(crate) fn unused_task_folders(
+    folder: &Path,
+    tasks: &[(u32, PathBuf)],
+    sys: Option<&Sys>,
+) -> Vec<(PathBuf, Option<String>)> {
+    let names = backinfo_tasks(folder);
+    let configured = sys.filter(|sys| !sys.tasks.is_empty());
+    let used = |n: u32| match configured {
+        Some(sys) => sys.tasks.iter().enumerate().any(|(place, task)| {
+            let by_name = names.iter().find(|(_, name)| name.eq_ignore_ascii_case(&task.name)).map(|(k, _)| *k);
+            by_name.or_else(|| u32::try_from(place + 1).ok()) == Some(n)
+        }),
+        None => names.is_empty() || names.iter().any(|(k, _)| *k == n),
+    };
+    tasks
+        .iter()
+        .filter(|(n, _)| !used(*n))
+        .map(|(n, path)| (path.clone(), names.iter().find(|(k, _)| k == n).map(|(_, name)| name.clone())))
+        .collect()
+}
+
+/// The name of each task folder of a system without a task configuration: backinfo.txt's,
+/// else the folder's own.
+pub(crate) fn folder_task_names(folder: &Path, tasks: &[(u32, PathBuf)]) -> Vec<String> {
+    let names = backinfo_tasks(folder);
+    tasks
+        .iter()
+        .map(|(n, path)| names.iter().find(|(k, _)| k == n).map_or_else(|| folder_name(path), |(_, name)| name.clone()))
+        .collect()
+}
+
+/// The modules backinfo.txt lists for the task of folder number `n`, if any: a task
+/// whose folder is missing had them when the backup was taken.
+pub(crate) fn listed_modules(backup: &Path, task: &Path) -> usize {
+    let number = task.file_name().and_then(|n| n.to_str()).and_then(task_number);
+    number.and_then(|n| backinfo_modules(backup, n)).map_or(0, |listed| listed.len())
 }
 
 /// Where task folder `n` of a backup would be: `RAPID/TASKn`.
@@ -118,8 +223,14 @@ fn rapid_task_folder(folder: &Path, n: u32) -> PathBuf {
     child(folder, "RAPID").unwrap_or_else(|| folder.join("RAPID")).join(format!("TASK{n}"))
 }
 
+/// The name of a task known by its folder only: `TASKn`, or T_ROB1 for a `RAPID`
+/// folder that is itself the one task folder (the name of a single robot's task).
 fn folder_name(path: &Path) -> String {
-    path.file_name().and_then(|n| n.to_str()).unwrap_or("TASK").to_owned()
+    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("TASK");
+    if name.eq_ignore_ascii_case("RAPID") {
+        return "T_ROB1".to_owned();
+    }
+    name.to_owned()
 }
 
 /// `>>TASK1: (T_ROB1,,)` lines of `BACKINFO/backinfo.txt`: (1, "T_ROB1").

@@ -29,6 +29,7 @@ mod files;
 mod fmt;
 mod interrupt;
 mod iomore;
+mod layouts;
 mod limits;
 mod lsp;
 mod manifest;

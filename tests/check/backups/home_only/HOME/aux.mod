@@ -1,0 +1,5 @@
+MODULE aux
+  PROC main()
+    report "main, cell loaded: " + ValToStr(ModExist("cell"));
+  ENDPROC
+ENDMODULE

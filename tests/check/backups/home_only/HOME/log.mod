@@ -1,0 +1,5 @@
+MODULE log
+  PROC log_main()
+    report "log_main, common loaded: " + ValToStr(ModExist("common"));
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,6 @@
+MODULE watch
+  PROC watch_main()
+    WaitDO doProgDone, 1;
+    TPWrite greeting("watcher");
+  ENDPROC
+ENDMODULE
