@@ -115,6 +115,8 @@ pub struct ExecHook {
     pub shelf: String,
     pub task: Option<String>,
     pub all_tasks: bool,
+    /// `-AllMotionTask`: the routine runs in every motion task too.
+    pub all_motion_tasks: bool,
     pub line: u32,
 }
 
@@ -221,6 +223,7 @@ fn read_hooks(file: &CfgFile, sys: &mut Sys) {
             shelf,
             task,
             all_tasks: inst.has("AllTask"),
+            all_motion_tasks: inst.has("AllMotionTask"),
             line: inst.line,
         });
     }
@@ -237,7 +240,13 @@ impl TaskModule {
 impl Sys {
     /// The event routines of `shelf` for task `task`, in configuration order.
     pub fn hooks_for(&self, task: &str, shelf: &str) -> Vec<&str> {
-        self.hooks.iter().filter(|h| h.shelf == shelf && h.runs_in(task)).map(|h| h.routine.as_str()).collect()
+        self.hooks.iter().filter(|h| h.shelf == shelf && self.runs_hook(h, task)).map(|h| h.routine.as_str()).collect()
+    }
+
+    /// Whether event routine `hook` runs in task `task`: as [`ExecHook::runs_in`] says,
+    /// or, with `-AllMotionTask`, because `task` is a motion task.
+    pub fn runs_hook(&self, hook: &ExecHook, task: &str) -> bool {
+        hook.runs_in(task) || (hook.all_motion_tasks && self.task(task).is_some_and(|t| t.motion_task))
     }
 }
 

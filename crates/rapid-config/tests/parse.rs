@@ -503,3 +503,16 @@ fn a_cross_connection_reads_a_drive_module_signal() {
     let brake = eio.signal("drv1brake").expect("the drive module's signal");
     assert_eq!((brake.signal_type, brake.access.as_deref()), (eio::SignalType::Do, Some("ReadOnly")));
 }
+
+/// `-AllMotionTask` on an event routine: it runs in every motion task (and in the task
+/// `-Task` names), not in a task that moves nothing.
+#[test]
+fn an_event_routine_of_every_motion_task() {
+    let text = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n\n      \
+                -Name \"T_ROB2\" -Type \"NORMAL\" -MotionTask\n\n      -Name \"T_IO\" -Type \"STATIC\"\n#\n\
+                CAB_EXEC_HOOKS:\n\n      -Routine \"on_start\" -Shelf \"START\" -Task \"T_ROB1\" -AllMotionTask\n";
+    let sys = sys::read(&parse(text));
+    assert!(sys.errors.is_empty(), "{:?}", sys.errors);
+    let runs: Vec<usize> = ["T_ROB1", "T_ROB2", "T_IO"].iter().map(|t| sys.hooks_for(t, "START").len()).collect();
+    assert_eq!(runs, [1, 1, 0]);
+}

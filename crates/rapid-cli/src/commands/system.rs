@@ -151,7 +151,7 @@ fn missing_event_routines<'s>(
     facts: &'s TaskFacts,
     config: ConfigFile<'s>,
 ) -> impl Iterator<Item = Diagnostic> + 's {
-    sys.hooks.iter().filter(move |hook| hook.runs_in(task)).filter_map(move |hook| {
+    sys.hooks.iter().filter(move |hook| sys.runs_hook(hook, task)).filter_map(move |hook| {
         let name = hook.routine.to_lowercase();
         if facts.procedures.contains(&name) {
             return None;
