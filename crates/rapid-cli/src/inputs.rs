@@ -288,6 +288,7 @@ impl Collector {
                 self.config_finding(found.domain, found.line, found.message);
             }
         }
+        self.system_output_findings(sys.as_ref(), &task.name);
         if self.modules.is_empty() {
             if !has_folder {
                 bail!(
@@ -319,6 +320,54 @@ impl Collector {
         // configuration folder found its HOME.
         self.root = Some(home.and_then(|h| h.parent().map(Path::to_path_buf)).unwrap_or_else(|| folder.to_path_buf()));
         Ok(())
+    }
+
+    /// The system outputs (`SYSSIG_OUT`) whose task (`-Arg2`) or mechanical unit
+    /// (`-Arg1`) the system lacks: `rapid run` refuses to start such a system
+    /// (`rapid_controller::ops`), so `rapid check` finds the same at the output's line.
+    /// The tasks are SYS.cfg's, or the one task read; the robots are those the tasks
+    /// move (`robots::numbers`), an external unit of MOC.cfg is refused as `rapid run`
+    /// refuses it (robots only).
+    fn system_output_findings(&mut self, sys: Option<&sys::Sys>, task: &str) {
+        use rapid_config::eio::syssig::{status_name, SysStatus};
+        let Some(eio) = self.syspar.iter().find(|(d, _)| d == "EIO").map(|(_, file)| eio::read(file)) else { return };
+        let configured = sys.filter(|sys| !sys.tasks.is_empty());
+        let tasks: Vec<&str> =
+            configured.map_or_else(|| vec![task], |sys| sys.tasks.iter().map(|t| t.name.as_str()).collect());
+        let robots: Vec<usize> = match configured {
+            Some(sys) => rapid_controller::boot::robots::numbers(sys, &self.syspar, &[])
+                .map(|n| n.into_iter().flatten().collect())
+                .unwrap_or_default(),
+            None => vec![rapid_controller::boot::robots::of_single_task(sys, &self.syspar, &[])],
+        };
+        let shown: Vec<(u32, String)> = eio
+            .sys_outputs
+            .iter()
+            .filter(|out| !matches!(out.status, SysStatus::NotSimulated(_)))
+            .filter_map(|out| {
+                let signal = &out.signal;
+                if let Some(unit) = &out.unit {
+                    let number = unit.to_ascii_uppercase().strip_prefix("ROB_").and_then(|n| n.parse::<usize>().ok());
+                    if number.is_some_and(|n| robots.contains(&n)) {
+                        return None;
+                    }
+                    let status = status_name(out.status);
+                    let message = match self.units.iter().any(|u| u.unit.name.eq_ignore_ascii_case(unit)) {
+                        true => format!(
+                            "system output `{signal}`: {status} of external unit `{unit}` is not supported yet (robots only)"
+                        ),
+                        false => format!("system output `{signal}` names mechanical unit `{unit}`, which the system does not have"),
+                    };
+                    return Some((out.line, message));
+                }
+                let name = out.task.as_deref()?;
+                let known = tasks.iter().any(|t| t.eq_ignore_ascii_case(name));
+                (!known).then(|| (out.line, format!("system output `{signal}` names task `{name}`, which the system does not have")))
+            })
+            .collect();
+        for (line, message) in shown {
+            self.config_finding("EIO", line, message);
+        }
     }
 
     /// Says which task folders of the system are not checked or run: those no

@@ -216,3 +216,35 @@ fn a_system_path_may_end_in_a_separator() {
     let out = rapid_in(&dir, &["check", &path]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
 }
+
+#[test]
+fn a_system_output_for_a_task_or_robot_the_system_lacks_is_a_check_finding() {
+    // `rapid run` refuses to start a system whose SYSSIG_OUT names a task (-Arg2) or a
+    // robot (-Arg1) it does not have; `rapid check` finds the same, at the output's
+    // line (11 and 13), and the run shows those findings.
+    let dir = scratch("system_output_targets");
+    let eio = "EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n\n      -Name \"doExec\" -SignalType \"DO\"\n\n      \
+               -Name \"doStill\" -SignalType \"DO\"\n#\nSYSSIG_OUT:\n\n      \
+               -Status \"TaskExecuting\" -Signal \"doExec\" -Arg2 \"T_NOPE\"\n\n      \
+               -Status \"MechUnitNotMoving\" -Signal \"doStill\" -Arg1 \"ROB_2\"\n";
+    let files = [
+        ("cell/SYSPAR/SYS.cfg", SYS_T_ROB1),
+        ("cell/SYSPAR/EIO.cfg", eio),
+        ("cell/RAPID/TASK1/PROGMOD/M.mod", MAIN_SAYS),
+    ];
+    write_files(&dir, &files);
+    let out = rapid_in(&dir, &["check", "cell"]);
+    assert_eq!(out.status.code(), Some(1));
+    let stdout = text(&out.stdout);
+    assert_eq!(locations(&stdout), ["cell/SYSPAR/EIO.cfg:11:1", "cell/SYSPAR/EIO.cfg:13:1"], "{stdout}");
+    assert!(stdout.contains("system output `doExec` names task `T_NOPE`, which the system does not have"));
+    assert!(stdout.contains("system output `doStill` names mechanical unit `ROB_2`, which the system does not have"));
+    let out = rapid_in(&dir, &["run", "cell"]);
+    assert_eq!((out.status.code(), text(&out.stdout)), (Some(1), String::new()));
+    assert_eq!(locations(&text(&out.stderr)), ["cell/SYSPAR/EIO.cfg:11:1", "cell/SYSPAR/EIO.cfg:13:1"]);
+    // The task it names, on the one robot the system has: clean, and it runs.
+    let fixed = eio.replace("T_NOPE", "T_ROB1").replace("ROB_2", "ROB_1");
+    write_files(&dir, &[("cell/SYSPAR/EIO.cfg", &fixed)]);
+    assert_eq!(text(&rapid_in(&dir, &["check", "cell"]).stdout), "checked 3 files: no problems found\n");
+    assert_eq!(text(&rapid_in(&dir, &["run", "cell"]).stdout), "task 1\n");
+}
