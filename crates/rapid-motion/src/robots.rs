@@ -84,6 +84,26 @@ pub fn find_model(name: &str) -> Option<&'static RobotModel> {
     best.map(|(_, model)| model)
 }
 
+/// Whether a name names a robot family at all (`ROB1_910SC_0.55_3` does, by its
+/// number; a bare `ROB1` does not), whether or not we have a model of it.
+pub fn names_a_family(name: &str) -> bool {
+    ParsedName::of(name).is_some()
+}
+
+/// The robot family a name belongs to when it is one real cells use that we have no
+/// kinematics for yet (`ROB_L_14000_0.5_0.5` → the IRB 14000 YuMi), so that the
+/// refusal can say so; `None` for families we have and names we do not recognise.
+pub fn unsupported_family(name: &str) -> Option<&'static str> {
+    let family = ParsedName::of(name)?.family;
+    Some(match family.as_str() {
+        "14000" | "14050" => "IRB 14000 YuMi (7-axis arms, the arm angle in extax.eax_a)",
+        "910sc" | "910" | "920" | "920t" => "IRB 910SC/920 SCARA (4 axes)",
+        "360" | "365" | "390" => "IRB 360/365/390 FlexPicker (a delta robot)",
+        "260" | "460" | "660" | "760" => "IRB 260/460/660/760 palletizer (4 axes)",
+        _ => return None,
+    })
+}
+
 /// A robot name split into its family and the numbers after it.
 struct ParsedName {
     family: String,
@@ -306,6 +326,16 @@ mod tests {
         assert_eq!(name_of("IRB 4600-999/9.9"), None);
         assert_eq!(name_of("IRB 120-3/2.5"), None);
         assert_eq!(name_of("KUKA KR6"), None);
+    }
+
+    #[test]
+    fn families_we_lack_are_named() {
+        assert!(unsupported_family("ROB_L_14000_0.5_0.5").is_some_and(|f| f.contains("YuMi")));
+        assert!(unsupported_family("ROB1_910SC_0.55_3").is_some_and(|f| f.contains("SCARA")));
+        assert_eq!(unsupported_family("ROB1_120_0.58_3"), None);
+        assert_eq!(unsupported_family("KUKA KR6"), None);
+        assert!(names_a_family("ROB1_910SC_0.55_3") && names_a_family("IRB 999"));
+        assert!(!names_a_family("ROB1") && !names_a_family("ROB_L"));
     }
 
     #[test]
