@@ -374,7 +374,7 @@ impl Reader<'_> {
             toml::Value::Boolean(false) => None,
             toml::Value::String(name) => {
                 if rapid_motion::find_model(name).is_none() {
-                    let known: Vec<&str> = rapid_motion::models().iter().map(|m| m.name).collect();
+                    let known: Vec<&str> = rapid_motion::robots::all_models().map(|m| m.name).collect();
                     let message = format!("task `{task}`: unknown robot model `{name}` (known: {})", known.join(", "));
                     self.find(robot.span(), message);
                 }

@@ -165,3 +165,51 @@ fn robots_named_rob_l_and_rob_r_run_and_every_unit_is_mecunit_data() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "ROB_L 0.0TRUE\nROB_R 1000.0TRUE\n");
 }
+
+#[test]
+fn a_palletizer_backup_moves_its_four_axes_with_the_flange_level() {
+    // MOC.cfg's IRB 460 (ROB1_460_2.4_110). Hand-worked from its links (d1 = 745,
+    // a1 = 260, l2 = 945, l3 = 1025, a4 = 225, d5 = 251.5; see rapid-motion's
+    // palletizers.rs): at zero the flange is at (1510, 0, 1438.5), pointing down
+    // ([0, 0, 1, 0]); a 300 mm gripper along tool0's z puts the TCP 300 mm lower, at
+    // (1510, 0, 1138.5). At (30, 20, 30, 0, 0, −60): r = 260 + 945·sin 20° + 1025·cos 30°
+    // + 225 = 260 + 323.205 + 887.676 + 225 = 1695.881, x = r·cos 30° = 1468.676,
+    // y = r·sin 30° = 847.941, z = 745 + 945·cos 20° − 1025·sin 30° − 251.5 − 300 =
+    // 745 + 888.011 − 512.5 − 551.5 = 569.011; cf6 = ⌊−60/90⌋ = −1. Tilting the gripper
+    // is out of a palletizer's reach (50050). GetNextMechUnit counts four axes.
+    let dir = scratch("palletizer");
+    let moc = "MOC:CFG_1.0:6:0::\n#\nROBOT:\n\n      -name \"ROB_1\" -use_robot_type \"ROB1_460_2.4_110\"\n";
+    let program = "MODULE MainModule
+  PERS tooldata grip := [TRUE,[[0,0,300],[1,0,0,0]],[50,[0,0,150],[1,0,0,0],0,0,0]];
+  PROC main()
+    VAR robtarget p;
+    VAR num n := 0;
+    VAR string name;
+    VAR num axes;
+    p := CRobT(\\Tool:=grip \\WObj:=wobj0);
+    TPWrite \"at \" + NumToStr(p.trans.x, 2) + \" \" + NumToStr(p.trans.y, 2) + \" \" + NumToStr(p.trans.z, 2)
+      + \" \" + ValToStr(p.rot);
+    MoveL Offs(p, 0, 0, -500), v1000, z50, grip;
+    MoveAbsJ [[30,20,30,0,0,-60],[9E9,9E9,9E9,9E9,9E9,9E9]], v1000, fine, grip;
+    p := CRobT(\\Tool:=grip \\WObj:=wobj0);
+    TPWrite \"at \" + NumToStr(p.trans.x, 2) + \" \" + NumToStr(p.trans.y, 2) + \" \" + NumToStr(p.trans.z, 2)
+      + \" \" + ValToStr(p.robconf);
+    MoveJ p, v1000, fine, grip;
+    IF GetNextMechUnit(n, name \\NoOfAxes:=axes) TPWrite name + \" axes \" \\Num:=axes;
+    MoveL RelTool(p, 0, 0, 0 \\Rx:=5), v100, fine, grip;
+  ENDPROC
+ENDMODULE
+";
+    write(&dir, &[("cell/SYSPAR/MOC.cfg", moc), ("cell/RAPID/TASK1/PROGMOD/MainModule.mod", program)]);
+    let out = rapid_in(&dir, &["run", "cell"]);
+    assert_eq!(
+        text(&out.stdout),
+        "at 1510.00 0.00 1138.50 [0,0,1,0]\nat 1468.68 847.94 569.01 [0,0,-1,0]\nROB_1 axes 4\n",
+        "{}",
+        text(&out.stderr)
+    );
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("50050") && stderr.contains("MainModule.mod:18:"), "{stderr}");
+    assert!(stderr.contains("ROB_1 IRB 460-110/2.4"), "{stderr}");
+}

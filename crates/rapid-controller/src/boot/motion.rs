@@ -16,7 +16,7 @@ pub fn choose_model(
     syspar: &[(String, rapid_config::CfgFile)],
 ) -> Result<(&'static rapid_motion::RobotModel, Option<String>), String> {
     if let Some(name) = robot_override.or(manifest_robot) {
-        let known: Vec<&str> = rapid_motion::models().iter().map(|m| m.name).collect();
+        let known: Vec<&str> = rapid_motion::robots::all_models().map(|m| m.name).collect();
         return rapid_motion::find_model(name)
             .map(|m| (m, None))
             .ok_or_else(|| format!("unknown robot model `{name}` (known: {})", known.join(", ")));
@@ -65,7 +65,7 @@ pub fn unknown_type(ty: &str, robot: &str) -> String {
         Some(family) => format!("the {family}, which is not supported yet"),
         None => "a robot type we have no model of".to_owned(),
     };
-    let known: Vec<&str> = rapid_motion::models().iter().map(|m| m.name).collect();
+    let known: Vec<&str> = rapid_motion::robots::all_models().map(|m| m.name).collect();
     format!(
         "MOC.cfg's robot {robot} is of robot type `{ty}`: {what}; no other robot is moved in its place. \
          Give the model to move with --robot (known: {})",

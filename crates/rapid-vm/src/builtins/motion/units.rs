@@ -188,7 +188,13 @@ pub(crate) fn get_next_mech_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     }
     let at = list as usize;
     let (unit, facts) = match at.checked_sub(robots.len()) {
-        None => (robots[at].0, robot_facts(robots[at].1, robots[at].0)),
+        None => {
+            let n = robots[at].0;
+            // A 4-axis palletizer has axes 1, 2, 3 and 6.
+            // uncertain: another task's robot is taken to have six axes.
+            let palletizer = own_unit(ctx) == Some(n) && ctx.resources.robot.model.is_palletizer();
+            (n, robot_facts(robots[at].1, n, if palletizer { 4 } else { ROBOT_AXES }))
+        }
         Some(i) => (EXTERNAL_BASE + i, external_facts(ctx, i)),
     };
     ctx.store(&args[0], Value::Num((list + 1.0) as f32))?;
@@ -206,12 +212,12 @@ pub(crate) fn get_next_mech_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(Value::Bool(true)))
 }
 
-/// GetNextMechUnit's outputs for robot `n` of task number `task_no`: TCPRob, NoOfAxes,
-/// MecTaskNo, MotPlanNo, Active, DriveModule, OKToDeact.
-fn robot_facts(task_no: usize, n: usize) -> [Value; 7] {
+/// GetNextMechUnit's outputs for robot `n` of task number `task_no` with `axes` axes:
+/// TCPRob, NoOfAxes, MecTaskNo, MotPlanNo, Active, DriveModule, OKToDeact.
+fn robot_facts(task_no: usize, n: usize, axes: usize) -> [Value; 7] {
     [
         Value::Bool(true),
-        Value::Num(ROBOT_AXES as f32),
+        Value::Num(axes as f32),
         Value::Num(task_no as f32),
         Value::Num(n as f32),
         Value::Bool(true),
