@@ -77,6 +77,10 @@ pub(crate) struct ServeArgs {
     #[arg(long, value_name = "FILE")]
     pub(crate) users: Option<PathBuf>,
 
+    /// Where the robots stand at the start: as for `rapid run`.
+    #[arg(long, value_name = "J1,...,J6", value_parser = parse_start_joints, allow_hyphen_values = true)]
+    pub(crate) start_joints: Option<[f64; 6]>,
+
     /// The program: as for `rapid run`.
     #[arg(required = true)]
     pub(crate) paths: Vec<PathBuf>,
@@ -159,6 +163,12 @@ pub(crate) struct RunArgs {
     /// `ROB1_120_0.58`). Default: the backup's MOC.cfg robot type, else IRB 120-3/0.58.
     #[arg(long, value_name = "MODEL")]
     pub(crate) robot: Option<String>,
+
+    /// The axis values in degrees every robot stands at when the run starts, six
+    /// numbers separated by commas (`0,0,0,0,30,0`). Default: a manifest's
+    /// `start_joints`, else the calibration position (all axes 0).
+    #[arg(long, value_name = "J1,...,J6", value_parser = parse_start_joints, allow_hyphen_values = true)]
+    pub(crate) start_joints: Option<[f64; 6]>,
 
     /// When the program ends, write the robot's trajectory to FILE, as JSON when FILE
     /// ends in `.json`, else CSV: time, axis values, TCP pose in the world frame and in
@@ -246,4 +256,15 @@ pub(crate) enum Format {
     Json,
     /// One SARIF 2.1.0 log, for code scanning (see docs/ci.md).
     Sarif,
+}
+
+/// `--start-joints`: six axis values in degrees, separated by commas.
+fn parse_start_joints(text: &str) -> Result<[f64; 6], String> {
+    let values: Vec<f64> = text
+        .split(',')
+        .map(|v| v.trim().parse::<f64>().ok().filter(|q| q.is_finite()))
+        .collect::<Option<_>>()
+        .ok_or_else(|| format!("`{text}` is not a list of numbers separated by commas"))?;
+    <[f64; 6]>::try_from(values.as_slice())
+        .map_err(|_| format!("six axis values are needed (axes 1 to 6), `{text}` has {}", values.len()))
 }

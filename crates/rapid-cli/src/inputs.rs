@@ -62,6 +62,8 @@ pub(crate) struct Inputs {
     pub(crate) robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
     /// A manifest's robot models by motion task; `None`: the task moves no robot.
     pub(crate) task_robots: Vec<(String, Option<String>)>,
+    /// A manifest's `[system] start_joints`: where the robots stand at the start.
+    pub(crate) start_joints: Option<[f64; 6]>,
     /// The external units a manifest configures (`[[unit]]`), with their tasks.
     pub(crate) units: Vec<TaskUnit>,
     /// The conveyors a manifest configures (`[[conveyor]]`), with their tasks.
@@ -91,6 +93,7 @@ impl Inputs {
             task_robots: &self.task_robots,
             units: &self.units,
             conveyors: &self.conveyors,
+            start_joints: self.start_joints,
         }
     }
 
@@ -184,6 +187,7 @@ struct Collector {
     robot: Option<String>,
     robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
     task_robots: Vec<(String, Option<String>)>,
+    start_joints: Option<[f64; 6]>,
     units: Vec<TaskUnit>,
     conveyors: Vec<TaskConveyor>,
     shared_modules: Vec<usize>,
@@ -488,9 +492,10 @@ impl Collector {
                 }));
             }
             "MOC" => {
-                // External units RobotWare's way; each is known to programs by its name.
+                // External units RobotWare's way. Every mechanical unit, read or not,
+                // and every robot (ROB_L too) is known to programs by its name.
                 let moc = read_moc_units(&parsed);
-                let names = moc.units.iter().map(|u| u.unit.name.clone());
+                let names = rapid_config::moc::unit_names(&parsed).into_iter();
                 self.predefined.extend(names.map(|name| PredefinedData { name, type_name: "mecunit".to_owned() }));
                 self.units.extend(moc.units);
             }
@@ -542,6 +547,7 @@ impl Collector {
         self.robot = manifest.robot.clone();
         self.robot_bases = manifest.robot_bases.clone();
         self.task_robots = manifest.task_robots.clone();
+        self.start_joints = manifest.start_joints;
         self.units = manifest.units.clone();
         self.conveyors = manifest.conveyors.clone();
         // Each unit is known to programs by its name, a mecunit (ActUnit TRACK).
@@ -733,6 +739,7 @@ impl Collector {
             robot: self.robot,
             robot_bases: self.robot_bases,
             task_robots: self.task_robots,
+            start_joints: self.start_joints,
             units: self.units,
             conveyors: self.conveyors,
             shared_modules: self.shared_modules,

@@ -149,6 +149,21 @@ pub fn mechanical_units(file: &CfgFile) -> Vec<MechUnit> {
         .collect()
 }
 
+/// The name of every mechanical unit of a MOC file, in configuration order: each
+/// `MECHANICAL_UNIT` (robots, tracks, positioners, whatever their mechanics) and each
+/// `ROBOT` (`ROB_1`, `ROB_L`); each is predefined `mecunit` data of the system.
+pub fn unit_names(file: &CfgFile) -> Vec<String> {
+    let mut names: Vec<String> = Vec::new();
+    for inst in file.instances("MECHANICAL_UNIT").chain(file.instances("ROBOT")) {
+        if let Some(name) = inst.name().filter(|n| !n.is_empty()) {
+            if !names.iter().any(|known| known.eq_ignore_ascii_case(name)) {
+                names.push(name.to_owned());
+            }
+        }
+    }
+    names
+}
+
 /// The instance of a type with this `-name`.
 fn named<'a>(file: &'a CfgFile, type_name: &'a str, name: &str) -> Option<&'a crate::Instance> {
     file.instances(type_name).find(|inst| inst.name().is_some_and(|n| n.eq_ignore_ascii_case(name)))

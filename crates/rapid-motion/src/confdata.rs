@@ -27,7 +27,8 @@ pub enum ConfMatch {
 /// and cfx from the wrist centre's side of axis 1, its side of the lower arm and the
 /// sign of axis 5 (motion.md §3.7 table).
 pub fn confdata_of(kin: &Opw, joints: &Joints) -> ConfData {
-    [quadrant(joints[0]), quadrant(joints[3]), quadrant(joints[5]), cfx_of(kin.params(), joints)]
+    let cfx = kin.pallet_cfx(joints).unwrap_or_else(|| cfx_of(kin.params(), joints));
+    [quadrant(joints[0]), quadrant(joints[3]), quadrant(joints[5]), cfx]
 }
 
 /// The quadrant number of an axis angle: 0 for [0°, 90°), 1 for [90°, 180°), −1 for
@@ -78,10 +79,10 @@ pub fn inverse_conf(
     // configuration, even if another configuration would be within limits.
     let mut solution = branches[cfx].ok_or(MotionError::Configuration)?;
     let limits = kin.limits_ref();
-    if solution[4] == 0.0 {
-        // The solver returns q5 exactly 0 only at the wrist singularity, where axes 4
-        // and 6 can share their sum in any way: share it so both land in the asked
-        // quadrants when that is possible.
+    if solution[4].abs() < NEAR_SINGULAR_Q5 && kin.pallet().is_none() {
+        // At (or, within rounding, near) the wrist singularity axes 4 and 6 can share
+        // their sum in any way: share it so both land in the asked quadrants when that
+        // is possible.
         if let Some((q4, q6)) = split_wrist(solution[3] + solution[5], conf[1], conf[2], seed[3], limits) {
             solution[3] = q4;
             solution[5] = q6;
@@ -103,6 +104,10 @@ pub fn inverse_conf(
     }
     Ok(res)
 }
+
+/// Axis 5 closer than this to 0 (degrees) is the wrist singularity for the choice of
+/// axes 4 and 6: the solver's near-singular band (`WRIST_NEAR_SINGULAR`, 1e-5 rad).
+const NEAR_SINGULAR_Q5: f64 = 1e-5 * 180.0 / std::f64::consts::PI;
 
 /// ConfJ\Off: the solution closest to `seed` over every configuration and turn
 /// (the same as `Kinematics::inverse_near`).

@@ -5,7 +5,7 @@
 //! (rs-opw-kinematics presets and the ROS-Industrial URDFs, cross-checked there).
 //! Lengths are stored in millimetres.
 
-use crate::kinematics::{Opw, OpwParams};
+use crate::kinematics::{Opw, OpwParams, PalletParams};
 
 /// One robot variant: its name as ABB writes it, what its name may be written as,
 /// its arm geometry and its axis data.
@@ -19,8 +19,10 @@ pub struct RobotModel {
     payloads: &'static [u32],
     /// Reaches in metres that name this geometry (`IRB 4600-60/2.05` → 2.05).
     reaches: &'static [f64],
-    /// OPW link lengths, mm.
+    /// OPW link lengths, mm (unused for a palletizer).
     pub opw: OpwParams,
+    /// A 4-axis palletizer's link lengths, mm.
+    pub pallet: Option<PalletParams>,
     /// Lower and upper limit of each axis, degrees.
     pub limits: [(f64, f64); 6],
     /// Maximum speed of each axis, degrees per second.
@@ -41,16 +43,29 @@ impl RobotModel {
         if let Some(v) = self.max_tcp_speed {
             return v;
         }
-        let p = &self.opw;
-        let lower = p.c2.hypot(p.a2);
-        let wrist = p.c3 + p.c4;
-        let radii = [p.a1 + lower + wrist, lower + wrist, wrist];
+        let radii = match &self.pallet {
+            Some(p) => [p.a1 + p.l2 + p.l3 + p.a4, p.l2 + p.l3 + p.a4, p.l3 + p.a4],
+            None => {
+                let p = &self.opw;
+                let lower = p.c2.hypot(p.a2);
+                let wrist = p.c3 + p.c4;
+                [p.a1 + lower + wrist, lower + wrist, wrist]
+            }
+        };
         radii.iter().zip(&self.max_speeds).map(|(r, w)| r * w.to_radians()).sum()
     }
 
     /// The kinematics of this model, with its nominal joint limits.
     pub fn kinematics(&self) -> Opw {
-        Opw::new(self.opw, self.limits, self.max_speeds)
+        match self.pallet {
+            Some(pallet) => Opw::palletizer(pallet, self.limits, self.max_speeds),
+            None => Opw::new(self.opw, self.limits, self.max_speeds),
+        }
+    }
+
+    /// Whether the model is a 4-axis palletizer (axes 1, 2, 3 and 6).
+    pub fn is_palletizer(&self) -> bool {
+        self.pallet.is_some()
     }
 }
 
@@ -59,9 +74,19 @@ pub fn default_model() -> &'static RobotModel {
     &MODELS[0]
 }
 
-/// Every built-in model, the default first, then by family.
+/// Every built-in 6-axis arm, the default first, then by family.
 pub fn models() -> &'static [RobotModel] {
     MODELS
+}
+
+/// The built-in 4-axis palletizers (IRB 260, 460, 660, 760).
+pub fn palletizers() -> &'static [RobotModel] {
+    PALLETIZERS
+}
+
+/// Every built-in model: the 6-axis arms, then the palletizers.
+pub fn all_models() -> impl Iterator<Item = &'static RobotModel> {
+    MODELS.iter().chain(PALLETIZERS)
 }
 
 /// The model a name stands for, or `None` when no built-in model fits.
@@ -75,13 +100,32 @@ pub fn models() -> &'static [RobotModel] {
 pub fn find_model(name: &str) -> Option<&'static RobotModel> {
     let parsed = ParsedName::of(name)?;
     let mut best: Option<(usize, &'static RobotModel)> = None;
-    for model in MODELS.iter().filter(|m| m.families.contains(&parsed.family.as_str())) {
+    for model in all_models().filter(|m| m.families.contains(&parsed.family.as_str())) {
         let Some(score) = parsed.score(model) else { continue };
         if best.is_none_or(|(s, _)| score > s) {
             best = Some((score, model));
         }
     }
     best.map(|(_, model)| model)
+}
+
+/// Whether a name names a robot family at all (`ROB1_910SC_0.55_3` does, by its
+/// number; a bare `ROB1` does not), whether or not we have a model of it.
+pub fn names_a_family(name: &str) -> bool {
+    ParsedName::of(name).is_some()
+}
+
+/// The robot family a name belongs to when it is one real cells use that we have no
+/// kinematics for yet (`ROB_L_14000_0.5_0.5` → the IRB 14000 YuMi), so that the
+/// refusal can say so; `None` for families we have and names we do not recognise.
+pub fn unsupported_family(name: &str) -> Option<&'static str> {
+    let family = ParsedName::of(name)?.family;
+    Some(match family.as_str() {
+        "14000" | "14050" => "IRB 14000 YuMi (7-axis arms, the arm angle in extax.eax_a)",
+        "910sc" | "910" | "920" | "920t" => "IRB 910SC/920 SCARA (4 axes)",
+        "360" | "365" | "390" => "IRB 360/365/390 FlexPicker (a delta robot)",
+        _ => return None,
+    })
 }
 
 /// A robot name split into its family and the numbers after it.
@@ -171,6 +215,25 @@ const fn opw(a1: f64, a2: f64, c1: f64, c2: f64, c3: f64, c4: f64) -> OpwParams 
     }
 }
 
+const fn pallet(d1: f64, a1: f64, l2: f64, l3: f64, a4: f64, d5: f64) -> PalletParams {
+    PalletParams { d1, a1, l2, l3, a4, d5 }
+}
+
+const NO_OPW: OpwParams = OpwParams { a1: 0.0, a2: 0.0, b: 0.0, c1: 0.0, c2: 0.0, c3: 0.0, c4: 0.0 };
+const IRB660: PalletParams = pallet(800.0, 300.0, 1280.0, 1350.0, 260.0, 247.0);
+
+/// A palletizer's axis ranges: axis 1 symmetric, axes 2 and 3 as given, axis 6 ±300°;
+/// axes 4 and 5 do not exist (held at 0).
+const fn pallet_limits(ax1: f64, ax2: (f64, f64), ax3: (f64, f64)) -> [(f64, f64); 6] {
+    [sym(ax1), ax2, ax3, (0.0, 0.0), (0.0, 0.0), sym(300.0)]
+}
+
+/// A palletizer's axis speeds; the absent axes 4 and 5 get axis 6's so that no
+/// computation divides by zero (they never move).
+const fn pallet_speeds(ax1: f64, ax2: f64, ax3: f64, ax6: f64) -> [f64; 6] {
+    [ax1, ax2, ax3, ax6, ax6, ax6]
+}
+
 const fn sym(x: f64) -> (f64, f64) {
     (-x, x)
 }
@@ -192,78 +255,118 @@ static MODELS: &[RobotModel] = &[
     RobotModel { name: "IRB 120-3/0.58", families: &["120"], payloads: &[3], reaches: &[0.58],
         opw: opw(0.0, -0.070, 0.290, 0.270, 0.302, 0.072), limits: IRB120_LIMITS,
         max_speeds: [250.0, 250.0, 250.0, 320.0, 320.0, 420.0],
-        max_tcp_speed: Some(6200.0) },
+        max_tcp_speed: Some(6200.0), pallet: None },
     RobotModel { name: "IRB 120T-3/0.58", families: &["120t"], payloads: &[3], reaches: &[0.58],
         opw: opw(0.0, -0.070, 0.290, 0.270, 0.302, 0.072), limits: IRB120_LIMITS,
         max_speeds: [250.0, 250.0, 250.0, 420.0, 590.0, 600.0],
-        max_tcp_speed: Some(6200.0) },
+        max_tcp_speed: Some(6200.0), pallet: None },
     // uncertain: motion.md gives the limits of the 140T only; the 140 is taken to share them.
     RobotModel { name: "IRB 140-6/0.81", families: &["140", "140t"], payloads: &[6], reaches: &[0.81],
         opw: opw(0.070, 0.0, 0.352, 0.360, 0.380, 0.065),
         limits: [sym(180.0), (-90.0, 110.0), (-230.0, 50.0), sym(200.0), sym(115.0), sym(400.0)],
         max_speeds: [250.0, 250.0, 260.0, 360.0, 360.0, 450.0],
-        max_tcp_speed: Some(2500.0) },
+        max_tcp_speed: Some(2500.0), pallet: None },
     RobotModel { name: "IRB 1200-5/0.9", families: &["1200"], payloads: &[5], reaches: &[0.9],
         opw: IRB1200_GEOMETRY_5_90,
         limits: [sym(170.0), (-100.0, 130.0), (-200.0, 70.0), sym(270.0), sym(130.0), sym(360.0)],
         max_speeds: [288.0, 240.0, 300.0, 400.0, 405.0, 600.0],
-        max_tcp_speed: Some(8400.0) },
+        max_tcp_speed: Some(8400.0), pallet: None },
     RobotModel { name: "IRB 1200-7/0.7", families: &["1200"], payloads: &[7], reaches: &[0.7],
         opw: opw(0.0, -0.042, 0.3991, 0.350, 0.351, 0.082),
         limits: [sym(170.0), (-100.0, 135.0), (-200.0, 70.0), sym(270.0), sym(130.0), sym(360.0)],
         max_speeds: [288.0, 240.0, 300.0, 400.0, 405.0, 600.0],
-        max_tcp_speed: None },
+        max_tcp_speed: None, pallet: None },
     RobotModel { name: "IRB 1600-6/1.2", families: &["1600"], payloads: &[6, 10], reaches: &[1.2],
         opw: opw(0.150, 0.0, 0.4865, 0.475, 0.600, 0.065), limits: IRB1600_LIMITS_12,
         max_speeds: [150.0, 160.0, 170.0, 320.0, 400.0, 450.0],
-        max_tcp_speed: None },
+        max_tcp_speed: None, pallet: None },
     RobotModel { name: "IRB 1600-10/1.45", families: &["1600"], payloads: &[8, 10], reaches: &[1.45],
         opw: opw(0.150, 0.0, 0.4865, 0.700, 0.600, 0.065),
         limits: [sym(180.0), (-90.0, 120.0), (-245.0, 65.0), sym(200.0), sym(115.0), sym(400.0)],
         max_speeds: [180.0, 180.0, 200.0, 400.0, 400.0, 460.0],
-        max_tcp_speed: None },
+        max_tcp_speed: None, pallet: None },
     // uncertain: the reaches that name the 2400 (1.55 m for /10, 1.5 m for /16) are from memory.
     RobotModel { name: "IRB 2400-10/1.55", families: &["2400"], payloads: &[10, 16], reaches: &[1.55, 1.5],
         opw: opw(0.100, -0.135, 0.615, 0.705, 0.755, 0.085),
         limits: [sym(180.0), (-100.0, 110.0), (-60.0, 65.0), sym(200.0), sym(120.0), sym(400.0)],
         max_speeds: [150.0, 150.0, 150.0, 360.0, 360.0, 450.0],
-        max_tcp_speed: None },
+        max_tcp_speed: None, pallet: None },
     RobotModel { name: "IRB 2600-12/1.65", families: &["2600"], payloads: &[12], reaches: &[1.65],
         opw: opw(0.150, -0.115, 0.445, 0.700, 0.795, 0.085),
         limits: [sym(180.0), (-155.0, 95.0), (-155.0, 75.0), sym(400.0), sym(120.0), sym(400.0)],
         max_speeds: [175.0, 175.0, 175.0, 360.0, 360.0, 500.0],
-        max_tcp_speed: None },
+        max_tcp_speed: None, pallet: None },
     RobotModel { name: "IRB 4600-60/2.05", families: &["4600"], payloads: &[60], reaches: &[2.05],
         opw: opw(0.175, -0.175, 0.495, 0.900, 0.960, 0.135), limits: IRB4600_LIMITS,
         max_speeds: [175.0, 175.0, 175.0, 250.0, 250.0, 360.0],
-        max_tcp_speed: None },
+        max_tcp_speed: None, pallet: None },
     RobotModel { name: "IRB 4600-40/2.55", families: &["4600"], payloads: &[40], reaches: &[2.55],
         opw: opw(0.175, -0.175, 0.495, 1.095, 1.270, 0.135), limits: IRB4600_LIMITS,
         max_speeds: [175.0, 175.0, 175.0, 250.0, 250.0, 360.0],
-        max_tcp_speed: None },
+        max_tcp_speed: None, pallet: None },
     RobotModel { name: "IRB 4600-20/2.50", families: &["4600"], payloads: &[20], reaches: &[2.50],
         opw: opw(0.175, -0.175, 0.495, 1.095, 1.2305, 0.085), limits: IRB4600_LIMITS,
         max_speeds: [175.0, 175.0, 175.0, 360.0, 360.0, 500.0],
-        max_tcp_speed: None },
+        max_tcp_speed: None, pallet: None },
     RobotModel { name: "IRB 6640-185/2.8", families: &["6640"], payloads: &[185], reaches: &[2.8],
         opw: opw(0.320, -0.200, 0.780, 1.075, 1.392, 0.200),
         limits: [sym(170.0), (-65.0, 85.0), (-180.0, 70.0), sym(300.0), sym(120.0), sym(360.0)],
         max_speeds: [100.0, 90.0, 90.0, 170.0, 140.0, 190.0],
-        max_tcp_speed: None },
+        max_tcp_speed: None, pallet: None },
     RobotModel { name: "IRB 6700-200/2.60", families: &["6700"], payloads: &[200], reaches: &[2.60],
         opw: opw(0.320, -0.200, 0.780, 1.125, 1.1425, 0.200),
         limits: [sym(170.0), (-65.0, 85.0), (-180.0, 70.0), sym(300.0), sym(130.0), sym(360.0)],
         max_speeds: [110.0, 110.0, 110.0, 190.0, 150.0, 210.0],
-        max_tcp_speed: None },
+        max_tcp_speed: None, pallet: None },
     RobotModel { name: "IRB 6700-235/2.65", families: &["6700"], payloads: &[235], reaches: &[2.65],
         opw: opw(0.320, -0.200, 0.780, 1.135, 1.1825, 0.200),
         limits: [sym(170.0), (-65.0, 85.0), (-180.0, 70.0), sym(300.0), sym(130.0), sym(360.0)],
         max_speeds: [100.0, 90.0, 90.0, 170.0, 120.0, 190.0],
-        max_tcp_speed: None },
+        max_tcp_speed: None, pallet: None },
     RobotModel { name: "IRB 7600-150/3.5", families: &["7600"], payloads: &[150], reaches: &[3.5],
         opw: opw(0.410, -0.165, 0.780, 1.075, 2.012, 0.250),
         limits: [sym(180.0), (-60.0, 85.0), (-180.0, 60.0), sym(300.0), sym(100.0), sym(360.0)],
         max_speeds: [100.0, 60.0, 60.0, 100.0, 100.0, 190.0],
+        max_tcp_speed: None, pallet: None },
+];
+
+#[rustfmt::skip]
+static PALLETIZERS: &[RobotModel] = &[
+    // The 4-axis palletizers. Link lengths: the modified Denavit-Hartenberg tables of
+    // SaltworkerMLU/robotkinematicscatalogue (robotKinematics/inverseKinematics/__4DOF/
+    // __palletizing/ABB_IRB260.py, ABB_IRB460.py, ABB_IRB660_180.py, ABB_IRB660_250.py,
+    // ABB_IRB760.py, checked there against RoboDK's ABB models), as (axis-2 height,
+    // axis-2 offset, lower arm, upper arm, flange offset, flange drop); axis ranges 1, 2,
+    // 3 and 6 from the same files. The zero-axis flange is at x = a1 + l3 + a4,
+    // z = d1 + l2 − d5 (tests/kinematics.rs checks the table).
+    // uncertain: the axis speeds are the product specifications' as we remember them
+    // (IRB 460: 145/110/120/400 °/s; IRB 660-180: 130/130/130/300, -250: 95/95/95/240;
+    // IRB 760: 85/85/85/190 is a guess from the 660-250's class; IRB 260: 150 on the arm
+    // axes, 400 on axis 6); axes 4 and 5 do not exist and are held at 0.
+    RobotModel { name: "IRB 260-30/1.53", families: &["260"], payloads: &[30], reaches: &[1.53, 1.5],
+        opw: NO_OPW, pallet: Some(pallet(615.0, 100.0, 705.0, 650.0, 120.0, 181.0)),
+        limits: pallet_limits(180.0, (-28.0, 85.0), (-17.0, 119.0)),
+        max_speeds: pallet_speeds(150.0, 150.0, 150.0, 400.0),
+        max_tcp_speed: None },
+    RobotModel { name: "IRB 460-110/2.4", families: &["460"], payloads: &[110], reaches: &[2.4],
+        opw: NO_OPW, pallet: Some(pallet(745.0, 260.0, 945.0, 1025.0, 225.0, 251.5)),
+        limits: pallet_limits(165.0, (-40.0, 85.0), (-20.0, 120.0)),
+        max_speeds: pallet_speeds(145.0, 110.0, 120.0, 400.0),
+        max_tcp_speed: None },
+    RobotModel { name: "IRB 660-180/3.15", families: &["660"], payloads: &[180], reaches: &[3.15],
+        opw: NO_OPW, pallet: Some(IRB660),
+        limits: pallet_limits(180.0, (-42.0, 82.0), (-20.0, 120.0)),
+        max_speeds: pallet_speeds(130.0, 130.0, 130.0, 300.0),
+        max_tcp_speed: None },
+    RobotModel { name: "IRB 660-250/3.15", families: &["660"], payloads: &[250], reaches: &[3.15],
+        opw: NO_OPW, pallet: Some(IRB660),
+        limits: pallet_limits(180.0, (-42.0, 82.0), (-20.0, 120.0)),
+        max_speeds: pallet_speeds(95.0, 95.0, 95.0, 240.0),
+        max_tcp_speed: None },
+    RobotModel { name: "IRB 760-450/3.18", families: &["760"], payloads: &[450], reaches: &[3.18],
+        opw: NO_OPW, pallet: Some(pallet(814.5, 300.0, 1280.0, 1350.0, 290.0, 269.0)),
+        limits: pallet_limits(180.0, (-42.0, 82.0), (-20.0, 120.0)),
+        max_speeds: pallet_speeds(85.0, 85.0, 85.0, 190.0),
         max_tcp_speed: None },
 ];
 
@@ -306,6 +409,16 @@ mod tests {
         assert_eq!(name_of("IRB 4600-999/9.9"), None);
         assert_eq!(name_of("IRB 120-3/2.5"), None);
         assert_eq!(name_of("KUKA KR6"), None);
+    }
+
+    #[test]
+    fn families_we_lack_are_named() {
+        assert!(unsupported_family("ROB_L_14000_0.5_0.5").is_some_and(|f| f.contains("YuMi")));
+        assert!(unsupported_family("ROB1_910SC_0.55_3").is_some_and(|f| f.contains("SCARA")));
+        assert_eq!(unsupported_family("ROB1_120_0.58_3"), None);
+        assert_eq!(unsupported_family("KUKA KR6"), None);
+        assert!(names_a_family("ROB1_910SC_0.55_3") && names_a_family("IRB 999"));
+        assert!(!names_a_family("ROB1") && !names_a_family("ROB_L"));
     }
 
     #[test]

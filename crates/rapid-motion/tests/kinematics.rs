@@ -341,3 +341,52 @@ fn calc_joint_t_and_calc_rob_t_through_tool_wobj_and_displacement() {
     let back = held.joints_for(&kin, &target, &conf, &[0.0; 6], ConfMatch::Exact).unwrap();
     assert_joints(&back, &joints, 1e-6);
 }
+
+/// A robtarget as a RAPID program holds it: `num` is single precision, so the pose
+/// CRobT reports reaches the next move rounded to f32.
+fn as_rapid_data(p: &Pose) -> Pose {
+    let t = trans(p).map(|v| f64::from(v as f32));
+    let o = orient(p).map(|v| f64::from(v as f32));
+    pose(t, o)
+}
+
+/// Issue 20 item 6: `MoveJ CRobT(\Tool:=t \WObj:=w), v100, fine, t;` from the
+/// calibration position (a wrist singularity, axis 5 at 0) must move nowhere, for every
+/// model and for tools turned about any axis. Rounded to single precision, the pose is
+/// no longer exactly singular: the solver's axis 4 and 6 then come from rounding noise,
+/// and a configuration check against CRobT's cf4/cf6 used to fail (50080).
+#[test]
+fn crobt_at_the_wrist_singularity_moves_back() {
+    use rapid_motion::FrameChain;
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    let tools = [
+        pose([0.0, 0.0, 100.0], [1.0, 0.0, 0.0, 0.0]),
+        pose([0.0, 0.0, 100.0], [h, 0.0, 0.0, h]),
+        pose([0.0, 0.0, 100.0], [h, 0.0, 0.0, -h]),
+        pose([10.0, -20.0, 150.0], [0.5, 0.5, 0.5, 0.5]),
+        pose([0.0, 0.0, 100.0], [0.0, 0.0, 0.0, 1.0]),
+        pose([0.0, 0.0, 100.0], [0.866_025, 0.0, 0.5, 0.0]),
+        pose([0.0, 0.0, 100.0], [0.923_880, 0.0, 0.0, -0.382_683]),
+    ];
+    // The calibration position, and q5 = 0 with axes 4 and 6 in other quadrants.
+    let starts: [Joints; 3] =
+        [[0.0; 6], [30.0, 10.0, 20.0, 45.0, 0.0, -100.0], [-20.0, 5.0, -10.0, -120.0, 0.0, 135.0]];
+    for m in models() {
+        let kin = m.kinematics();
+        for tframe in tools {
+            for start in starts {
+                let chain = FrameChain { tframe, ..FrameChain::default() };
+                let (target, conf) = chain.robtarget_of(&kin, &start);
+                let target = as_rapid_data(&target);
+                let got = chain
+                    .joints_for(&kin, &target, &conf, &start, ConfMatch::Compliant)
+                    .unwrap_or_else(|e| panic!("{}: {tframe:?} from {start:?} conf {conf:?}: {e}", m.name));
+                // The move goes nowhere: every axis within rounding of where it is.
+                assert_joints(&got, &start, 1e-2);
+                assert_eq!(confdata_of(&kin, &got)[..3], conf[..3], "{}", m.name);
+                // Exact configuration too (ConfJ\On with the reported configuration).
+                chain.joints_for(&kin, &target, &conf, &start, ConfMatch::Exact).expect("exact");
+            }
+        }
+    }
+}

@@ -151,8 +151,9 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         max_steps: args.max_steps,
         auto,
     };
-    let booted =
-        boot::boot(loaded, sys.as_ref(), tasks[0].inputs.cell(), &options, &mut |io| read_stimulus(io, args, alone));
+    let mut cell = tasks[0].inputs.cell();
+    cell.start_joints = args.start_joints.or(cell.start_joints);
+    let booted = boot::boot(loaded, sys.as_ref(), cell, &options, &mut |io| read_stimulus(io, args, alone));
     let Booted { mut controller, robots: numbers, model_note } = match booted {
         Ok(booted) => booted,
         Err(BootError::Refused(message)) => return refuse(&message),

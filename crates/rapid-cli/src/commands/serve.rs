@@ -54,7 +54,7 @@ pub(crate) fn run(args: &ServeArgs) -> anyhow::Result<ExitStatus> {
     let local: SocketAddr = listener.local_addr()?;
     let modules: Arc<Mutex<Vec<TaskFiles>>> = Arc::default();
     let boot = rapid_serve::Boot {
-        session: boot_closure(args.paths.clone(), modules.clone()),
+        session: boot_closure(args.paths.clone(), args.start_joints, modules.clone()),
         clock,
         on_exit: Some(Box::new(move |session: &mut Session| save_persistents(session, &modules))),
         // The pendant's lines go to stdout, as `rapid run` writes them.
@@ -103,9 +103,13 @@ async fn interrupted() {
 
 /// Builds the session on the controller thread; each task's module files go to
 /// `modules` for the save at the end.
-fn boot_closure(paths: Vec<PathBuf>, modules: Arc<Mutex<Vec<TaskFiles>>>) -> rapid_serve::BuildSession {
+fn boot_closure(
+    paths: Vec<PathBuf>,
+    start_joints: Option<[f64; 6]>,
+    modules: Arc<Mutex<Vec<TaskFiles>>>,
+) -> rapid_serve::BuildSession {
     Box::new(move || {
-        let (controller, files) = assemble(&paths)?;
+        let (controller, files) = assemble(&paths, start_joints)?;
         if let Ok(mut kept) = modules.lock() {
             *kept = files;
         }
@@ -130,7 +134,7 @@ fn pers_literals(loaded: &rapid_vm::Loaded) -> Vec<Option<String>> {
 /// components of data are read and written through them).
 // Not configured as `rapid run` does: a stimulus, --virtual-io, --robot; the POWER_ON
 // and START event routines do not run (the program is started by a client).
-fn assemble(paths: &[PathBuf]) -> Result<(Controller, Vec<TaskFiles>), String> {
+fn assemble(paths: &[PathBuf], start_joints: Option<[f64; 6]>) -> Result<(Controller, Vec<TaskFiles>), String> {
     let first = inputs::collect(paths).map_err(|e| format!("{e:#}"))?;
     config_errors(&first)?;
     let name = first.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
@@ -164,7 +168,8 @@ fn assemble(paths: &[PathBuf]) -> Result<(Controller, Vec<TaskFiles>), String> {
         loaded.push((spec.clone(), program));
     }
     let options = boot::system::BootOptions { alone: false, cycles: 0, auto: true, ..Default::default() };
-    let cell = collected[0].1.cell();
+    let mut cell = collected[0].1.cell();
+    cell.start_joints = start_joints.or(cell.start_joints);
     let booted = boot::system::boot(loaded, Some(&sys), cell, &options, &mut |_| Ok(None));
     let booted = booted.map_err(|e| match e {
         boot::system::BootError::Refused(m)

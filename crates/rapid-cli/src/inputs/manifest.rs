@@ -77,6 +77,8 @@ pub(crate) struct Manifest {
     /// A motion task's own `robot`: its model's name, or `None` for a task that moves
     /// external units only (a positioner's), by task name.
     pub(crate) task_robots: Vec<(String, Option<String>)>,
+    /// `[system] start_joints`: the axis values (degrees) the robots start at.
+    pub(crate) start_joints: Option<[f64; 6]>,
     pub(crate) findings: Vec<Finding>,
 }
 
@@ -103,6 +105,7 @@ struct RawSystem {
     io: Option<Spanned<String>>,
     home: Option<Spanned<String>>,
     shared: Option<Spanned<Vec<Spanned<String>>>>,
+    start_joints: Option<Spanned<Vec<f64>>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -228,6 +231,12 @@ impl Reader<'_> {
         if let Some(robot) = system.robot {
             self.non_empty(&robot, "robot");
             self.manifest.robot = Some(robot.into_inner());
+        }
+        if let Some(joints) = system.start_joints {
+            match <[f64; 6]>::try_from(joints.get_ref().as_slice()) {
+                Ok(values) if values.iter().all(|q| q.is_finite()) => self.manifest.start_joints = Some(values),
+                _ => self.find(joints.span(), "`start_joints` is six axis values in degrees, e.g. [0, 0, 0, 0, 30, 0]"),
+            }
         }
         if let Some(io) = system.io {
             let path = self.dir.join(io.get_ref());
@@ -365,7 +374,7 @@ impl Reader<'_> {
             toml::Value::Boolean(false) => None,
             toml::Value::String(name) => {
                 if rapid_motion::find_model(name).is_none() {
-                    let known: Vec<&str> = rapid_motion::models().iter().map(|m| m.name).collect();
+                    let known: Vec<&str> = rapid_motion::robots::all_models().map(|m| m.name).collect();
                     let message = format!("task `{task}`: unknown robot model `{name}` (known: {})", known.join(", "));
                     self.find(robot.span(), message);
                 }

@@ -41,6 +41,7 @@ mod path;
 mod pers_writes;
 mod report;
 mod robot_numbers;
+mod robots;
 mod run;
 mod sarif;
 mod save_pers;

@@ -49,4 +49,8 @@ pub struct Cell<'a> {
     pub units: &'a [TaskUnit],
     /// The conveyors, with their tasks.
     pub conveyors: &'a [TaskConveyor],
+    /// The axis values (degrees) every robot stands at when the system starts:
+    /// `--start-joints`, else a manifest's `[system] start_joints`; the calibration
+    /// position (all axes 0) without either.
+    pub start_joints: Option<[f64; 6]>,
 }

@@ -7,15 +7,16 @@ use rapid_vm::builtins::motion::robot::RobotState;
 use super::cell::{Cell, TaskConveyor, TaskUnit};
 
 /// The robot model the run moves: `--robot`, else a manifest's `robot` (an unknown
-/// name is an error), else the MOC.cfg robot type when it is a known model, else the default. The second
-/// value is a note for the user when MOC.cfg names a type we have no model of.
+/// name is an error), else the MOC.cfg robot type (a type we have no model of is an
+/// error, never silently another robot), else the default. The second value is a note
+/// for the user (MOC.cfg's units that are not read).
 pub fn choose_model(
     robot_override: Option<&str>,
     manifest_robot: Option<&str>,
     syspar: &[(String, rapid_config::CfgFile)],
 ) -> Result<(&'static rapid_motion::RobotModel, Option<String>), String> {
     if let Some(name) = robot_override.or(manifest_robot) {
-        let known: Vec<&str> = rapid_motion::models().iter().map(|m| m.name).collect();
+        let known: Vec<&str> = rapid_motion::robots::all_models().map(|m| m.name).collect();
         return rapid_motion::find_model(name)
             .map(|m| (m, None))
             .ok_or_else(|| format!("unknown robot model `{name}` (known: {})", known.join(", ")));
@@ -35,48 +36,70 @@ pub fn choose_model(
     Ok((model, Some(note.map_or(unread.clone(), |n| format!("{n}; {unread}")))))
 }
 
-/// The model MOC.cfg's robot type names, else the default (with a note when the type
-/// is not a model we know).
+/// The model MOC.cfg's (first) robot type names, else the default when MOC.cfg names
+/// none. A type we have no model of is an error: moving another robot in its place
+/// would give a program reach, joint values and cycle times its cell never has.
 fn model_of_moc(
     moc: Option<&rapid_config::CfgFile>,
 ) -> Result<(&'static rapid_motion::RobotModel, Option<String>), String> {
-    let robot_type = moc.and_then(|file| rapid_config::moc::robots(file).into_iter().find_map(|r| r.robot_type));
+    let typed =
+        moc.and_then(|file| rapid_config::moc::robots(file).into_iter().find_map(|r| Some((r.robot_type?, r.name))));
     let default = rapid_motion::default_model();
-    Ok(match robot_type {
-        Some(ty) => match rapid_motion::find_model(&ty) {
-            Some(model) => (model, None),
-            None => (
-                default,
-                Some(format!(
-                    "MOC.cfg's robot type `{ty}` is not a model we know; {} moved (use --robot)",
-                    default.name
-                )),
-            ),
-        },
-        None => (default, None),
-    })
+    match typed {
+        Some((ty, _)) if !rapid_motion::robots::names_a_family(&ty) => {
+            // A type with no model number in it (`ROB1`) names no robot to refuse.
+            // uncertain: RobotWare's own types always carry the family; such a name is
+            // a hand-written or stripped configuration.
+            let note =
+                format!("MOC.cfg's robot type `{ty}` names no robot model; {} moved (use --robot)", default.name);
+            Ok((default, Some(note)))
+        }
+        Some((ty, robot)) => rapid_motion::find_model(&ty).map(|m| (m, None)).ok_or_else(|| unknown_type(&ty, &robot)),
+        None => Ok((default, None)),
+    }
+}
+
+/// Why MOC.cfg's robot type `ty` of robot `robot` stops the run, naming the way on.
+pub fn unknown_type(ty: &str, robot: &str) -> String {
+    let what = match rapid_motion::robots::unsupported_family(ty) {
+        Some(family) => format!("the {family}, which is not supported yet"),
+        None => "a robot type we have no model of".to_owned(),
+    };
+    let known: Vec<&str> = rapid_motion::robots::all_models().map(|m| m.name).collect();
+    format!(
+        "MOC.cfg's robot {robot} is of robot type `{ty}`: {what}; no other robot is moved in its place. \
+         Give the model to move with --robot (known: {})",
+        known.join(", ")
+    )
 }
 
 /// The model of robot ROB_`n`, which motion task `task` moves (`super::robots`):
 /// `--robot`, else the task's own `robot` model in a manifest, else the manifest's
-/// `[system]` robot, else its MOC.cfg robot's type when we know it, else `system` (the
-/// run's model, [`choose_model`]).
+/// `[system]` robot, else its MOC.cfg robot's type (an error when we have no model of
+/// it), else `system` (the run's model, [`choose_model`]).
 pub fn robot_model(
     robot_override: Option<&str>,
     cell: &Cell,
     task: &str,
     n: usize,
     system: &'static rapid_motion::RobotModel,
-) -> &'static rapid_motion::RobotModel {
+) -> Result<&'static rapid_motion::RobotModel, String> {
     let own = cell.task_robots.iter().find(|(t, _)| t.eq_ignore_ascii_case(task)).map(|(_, m)| m);
     let named = own.and_then(|m| m.as_deref()).and_then(rapid_motion::find_model);
     // `--robot` stands above all; a manifest's [system] robot above MOC.cfg, as in
     // `choose_model`.
     if robot_override.is_some() || (named.is_none() && cell.robot.is_some()) {
-        return system;
+        return Ok(system);
     }
-    let of_moc = || moc_robot(cell.syspar, n).and_then(|r| r.robot_type).and_then(|ty| rapid_motion::find_model(&ty));
-    named.or_else(of_moc).unwrap_or(system)
+    if let Some(model) = named {
+        return Ok(model);
+    }
+    match moc_robot(cell.syspar, n).and_then(|r| Some((r.robot_type?, r.name))) {
+        Some((ty, robot)) if rapid_motion::robots::names_a_family(&ty) => {
+            rapid_motion::find_model(&ty).ok_or_else(|| unknown_type(&ty, &robot))
+        }
+        _ => Ok(system),
+    }
 }
 
 /// Sets the task's robot up for the run; with `record` (a trace or a report is
@@ -105,6 +128,22 @@ pub fn configure_base(robot: &mut RobotState, cell: &Cell, n: usize, task: &str)
     robot.active.base = base;
 }
 
+/// Gives robot number `n` its MOC.cfg name when that is not `ROB_n` (`ROB_L`, `ROB_R`
+/// of a two-arm system), so RobName and mecunit arguments know it by it, and puts it
+/// at the cell's start axis values. Call after [`configure_ranges`]: a start outside
+/// the axis ranges is refused, naming the axis.
+pub fn configure_arm(robot: &mut RobotState, cell: &Cell, n: usize) -> Result<(), String> {
+    if let Some(found) = moc_robot(cell.syspar, n) {
+        if !found.name.eq_ignore_ascii_case(&format!("ROB_{n}")) {
+            robot.name = Some(found.name);
+        }
+    }
+    match cell.start_joints {
+        Some(joints) => robot.start_at(joints),
+        None => Ok(()),
+    }
+}
+
 /// Narrows (or widens) the robot `ROB_n`'s axis ranges to those its backup's MOC.cfg
 /// configures (`ARM -lower_joint_bound -upper_joint_bound`); the model's own elsewhere.
 pub fn configure_ranges(robot: &mut RobotState, syspar: &[(String, rapid_config::CfgFile)], n: usize) {
@@ -118,11 +157,9 @@ pub fn configure_ranges(robot: &mut RobotState, syspar: &[(String, rapid_config:
     robot.kin = robot.kin.with_limits(limits);
 }
 
-/// MOC.cfg's `ROBOT` instance of robot `ROB_n`, if the system has a MOC.cfg naming it.
+/// MOC.cfg's `ROBOT` instance of robot number `n` (`super::robots::moc_robot`).
 fn moc_robot(syspar: &[(String, rapid_config::CfgFile)], n: usize) -> Option<rapid_config::moc::Robot> {
-    let (_, file) = syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("MOC"))?;
-    let name = format!("ROB_{n}");
-    rapid_config::moc::robots(file).into_iter().find(|r| r.name.eq_ignore_ascii_case(&name))
+    super::robots::moc_robot(syspar, n)
 }
 
 /// Gives the robot the external units configured for its task: those naming it, and

@@ -112,17 +112,36 @@ pub fn of_single_task(
     numbers.into_iter().flatten().next().unwrap_or(1)
 }
 
-/// The `n` of a robot named `ROB_n`. With MOC.cfg's robots `known`, it must be one of
-/// them. Fails with why not.
+/// The `n` the run numbers robot `name` by: n for `ROB_n`; a robot named otherwise
+/// (`ROB_L`, `ROB_R` of a two-arm system) takes its place among MOC.cfg's robots
+/// (`known`, in configuration order) plus one. With MOC.cfg's robots, the name must be
+/// one of them. Fails with why not.
+// uncertain: RobotWare numbers motion planners by the mechanical unit groups; a system
+// mixing ROB_n names with others could number them differently.
 fn robot_number(name: &str, known: &[String]) -> Result<usize, String> {
-    if !known.is_empty() && !known.iter().any(|k| k.eq_ignore_ascii_case(name)) {
+    let place = known.iter().position(|k| k.eq_ignore_ascii_case(name));
+    if !known.is_empty() && place.is_none() {
         return Err(format!("which MOC.cfg does not have (its robots: {})", known.join(", ")));
     }
-    let upper = name.to_ascii_uppercase();
-    match upper.strip_prefix("ROB_").and_then(|n| n.parse::<usize>().ok()) {
-        Some(n) if n >= 1 => Ok(n),
-        _ => Err("which is no ROB_n: robots named otherwise are not supported yet".to_owned()),
+    match (numbered(name), place) {
+        (Some(n), _) => Ok(n),
+        (None, Some(i)) => Ok(i + 1),
+        (None, None) => Err("which is no ROB_n, and the system has no MOC.cfg naming its robots".to_owned()),
     }
+}
+
+/// The n of a robot named `ROB_n` (n ≥ 1).
+fn numbered(name: &str) -> Option<usize> {
+    let upper = name.to_ascii_uppercase();
+    upper.strip_prefix("ROB_").and_then(|n| n.parse::<usize>().ok()).filter(|&n| n >= 1)
+}
+
+/// MOC.cfg's `ROBOT` instance the run numbers `n` (`ROB_n`, or the n-th robot named
+/// otherwise), if the system has a MOC.cfg naming it.
+pub fn moc_robot(syspar: &[(String, CfgFile)], n: usize) -> Option<rapid_config::moc::Robot> {
+    let robots = rapid_config::moc::robots(config(syspar, "MOC")?);
+    let known: Vec<String> = robots.iter().map(|r| r.name.clone()).collect();
+    robots.into_iter().find(|r| robot_number(&r.name, &known) == Ok(n))
 }
 
 /// The configuration file of domain `domain`, if the system has one.
@@ -191,5 +210,17 @@ mod tests {
         let odd = groups.replace("ROB_3", "ARM_B");
         let found = numbered(&format!("{TASKS}{odd}"), "").expect_err("refused");
         assert!(found.message.contains("which is no ROB_n"), "{}", found.message);
+    }
+
+    #[test]
+    fn robots_named_otherwise_take_their_place_in_moc_cfg() {
+        // A two-arm system: ROB_L first in MOC.cfg, so ROB_1's number; ROB_R second.
+        let groups = "#\nMECHANICAL_UNIT_GROUP:\n\n      -Name \"rob1\" -Robot \"ROB_R\"\n\n      -Name \"rob2\" -Robot \"ROB_L\"\n";
+        let moc = "MOC:CFG_1.0:6:0::\n#\nROBOT:\n\n      -name \"ROB_L\" -use_robot_type \"T_L\"\n\n      -name \"ROB_R\" -use_robot_type \"T_R\"\n";
+        // T_ROB2 uses rob2 (ROB_L, 1), T_ROB1 uses rob1 (ROB_R, 2).
+        assert_eq!(numbered(&format!("{TASKS}{groups}"), moc).expect("numbered"), [Some(1), None, Some(2)]);
+        let syspar = syspar("", moc);
+        assert_eq!(moc_robot(&syspar, 2).map(|r| r.name), Some("ROB_R".to_owned()));
+        assert_eq!(moc_robot(&syspar, 3).map(|r| r.name), None);
     }
 }

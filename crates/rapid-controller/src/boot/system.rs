@@ -215,8 +215,11 @@ pub fn boot(
         if spec.motion {
             spec.robot = number.is_some();
             // A program alone moves the run's model; its units and conveyors are all its.
-            let own =
-                number.filter(|_| !alone).map(|n| motion::robot_model(options.robot, &cell, &spec.name, n, model));
+            let own = number
+                .filter(|_| !alone)
+                .map(|n| motion::robot_model(options.robot, &cell, &spec.name, n, model))
+                .transpose()
+                .map_err(BootError::UnknownModel)?;
             let task = Some(spec.name.as_str()).filter(|_| !alone);
             let robot = &mut program.vm.resources_mut().robot;
             // A task moving external units only keeps an arm that never moves (its
@@ -225,6 +228,7 @@ pub fn boot(
             if let Some(n) = number {
                 motion::configure_base(robot, &cell, n, &spec.name);
                 motion::configure_ranges(robot, cell.syspar, n);
+                motion::configure_arm(robot, &cell, n).map_err(BootError::Refused)?;
             }
             motion::configure_units(robot, cell.units, task, first_motion);
             motion::configure_conveyors(robot, cell.conveyors, io.as_ref(), task, first_motion)

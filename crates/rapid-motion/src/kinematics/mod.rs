@@ -4,8 +4,10 @@
 //! flange frame is ABB's `tool0`.
 //!
 //! The solver is our own closed form (`solve.rs`); `turns.rs` maps its principal
-//! angles onto the multi-turn ranges of axes such as ±400° on axis 6.
+//! angles onto the multi-turn ranges of axes such as ±400° on axis 6. The 4-axis
+//! palletizers (`pallet.rs`) answer the same interface, axes 4 and 5 held at 0.
 
+mod pallet;
 mod solve;
 mod turns;
 
@@ -13,6 +15,7 @@ use nalgebra::{Translation3, UnitQuaternion, Vector3};
 
 use crate::{Joints, Kinematics, MotionError, Pose};
 
+pub use pallet::PalletParams;
 pub use solve::Branches;
 pub use turns::{nearest_within_limits, LIMIT_TOLERANCE};
 
@@ -33,17 +36,31 @@ pub struct OpwParams {
     pub c4: f64,
 }
 
-/// An OPW arm with its joint limits and axis speeds: the kinematics the VM asks.
+/// An OPW arm (or a 4-axis palletizer) with its joint limits and axis speeds: the
+/// kinematics the VM asks.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Opw {
     params: OpwParams,
+    /// A palletizer's geometry; `params` is then unused.
+    pallet: Option<PalletParams>,
     limits: [(f64, f64); 6],
     speeds: [f64; 6],
 }
 
 impl Opw {
     pub fn new(params: OpwParams, limits: [(f64, f64); 6], speeds: [f64; 6]) -> Opw {
-        Opw { params, limits, speeds }
+        Opw { params, pallet: None, limits, speeds }
+    }
+
+    /// A 4-axis palletizer: axes 1, 2, 3 and 6; the limits of axes 4 and 5 are 0.
+    pub fn palletizer(pallet: PalletParams, limits: [(f64, f64); 6], speeds: [f64; 6]) -> Opw {
+        let zero = OpwParams { a1: 0.0, a2: 0.0, b: 0.0, c1: 0.0, c2: 0.0, c3: 0.0, c4: 0.0 };
+        Opw { params: zero, pallet: Some(pallet), limits, speeds }
+    }
+
+    /// The palletizer's geometry, for a 4-axis palletizer.
+    pub fn pallet(&self) -> Option<&PalletParams> {
+        self.pallet.as_ref()
     }
 
     /// The same arm with other joint limits (a backup's MOC.cfg `ARM` bounds, in degrees).
@@ -66,7 +83,15 @@ impl Opw {
     pub fn branches(&self, flange: &Pose, seed: Option<&Joints>) -> Branches {
         // A seed that is not a number cannot guide a free axis; free axes then take 0.
         let seed = seed.filter(|s| s.iter().all(|q| q.is_finite()));
-        solve::branches(&self.params, flange, seed)
+        match &self.pallet {
+            Some(pallet) => pallet::branches(pallet, flange, seed),
+            None => solve::branches(&self.params, flange, seed),
+        }
+    }
+
+    /// cfx of a palletizer's joints (`confdata_of`).
+    pub(crate) fn pallet_cfx(&self, joints: &Joints) -> Option<i32> {
+        self.pallet.as_ref().map(|p| pallet::cfx(p, joints))
     }
 
     /// The 1-based axis of the first joint outside its limits, if any.
@@ -88,6 +113,9 @@ impl Opw {
 
 impl Kinematics for Opw {
     fn forward(&self, joints: &Joints) -> Pose {
+        if let Some(pallet) = &self.pallet {
+            return pallet::forward(pallet, joints);
+        }
         let [q1, q2, q3, q4, q5, q6] = joints.map(f64::to_radians);
         let y = Vector3::y_axis();
         let z = Vector3::z_axis();
@@ -123,8 +151,10 @@ impl Kinematics for Opw {
     /// all, `JointLimit` when every solution leaves the limits.
     fn inverse_near(&self, flange: &Pose, seed: &Joints) -> Result<Joints, MotionError> {
         let seed = finite_seed(seed);
-        if let Some(joints) = solve::seeded(&self.params, flange, &seed, &self.limits) {
-            return Ok(joints);
+        if self.pallet.is_none() {
+            if let Some(joints) = solve::seeded(&self.params, flange, &seed, &self.limits) {
+                return Ok(joints);
+            }
         }
         let branches = self.branches(flange, Some(&seed));
         nearest_within_limits(&branches, &seed, &self.limits)

@@ -17,6 +17,15 @@ pub type Branches = [Option<Joints>; 8];
 
 /// Below this, `sin q5` counts as zero and axes 4 and 6 only have a sum (or difference).
 const WRIST_SINGULAR: f64 = 1e-10;
+/// Below this `sin q5` (about 0.0006°) axes 4 and 6 are still found from the pose, but
+/// their split is rounding noise: a pose read back at the singularity and stored in
+/// RAPID's single-precision `num` (CRobT, a robtarget printed with six decimals) is off
+/// the singularity by some 1e-7. With a seed, axis 4 then keeps the seed's value and
+/// axis 6 the rest of their sum, as at the singularity itself; the pose moves by less
+/// than 2e-5 rad (a hundredth of a millimetre at half a metre from the wrist).
+// uncertain: the real controller's band is not public; it must at least hold the f32
+// rounding of a robtarget (issue 20 item 6: MoveJ CRobT() from the calibration position).
+pub(crate) const WRIST_NEAR_SINGULAR: f64 = 1e-5;
 /// Below this distance (mm) from axis 1 the wrist centre counts as on the axis.
 const SHOULDER_SINGULAR: f64 = 1e-9;
 /// How far past a stretched arm (in the cosine of the elbow angle) still counts as
@@ -72,7 +81,7 @@ pub(super) fn seeded(p: &OpwParams, flange: &Pose, seed: &Joints, limits: &[(f64
     let (near, far) = if gap23(first) <= gap23(second) { (first, second) } else { (second, first) };
     let (_, q2, q3) = near;
     let w = wrist_rotation(q1, q2 + q3, &rotation);
-    if w[(0, 2)].hypot(w[(1, 2)]) <= WRIST_SINGULAR {
+    if w[(0, 2)].hypot(w[(1, 2)]) <= WRIST_NEAR_SINGULAR {
         return None;
     }
     let [(_, up), (_, down)] = wrist_angles(&w, Some(&seed_rad));
@@ -151,8 +160,14 @@ fn wrist_angles(w: &Matrix3<f64>, seed: Option<&Joints>) -> [(bool, [f64; 3]); 2
     let sin5 = w[(0, 2)].hypot(w[(1, 2)]);
     if sin5 > WRIST_SINGULAR {
         let q5 = sin5.atan2(w[(2, 2)]);
-        let q4 = w[(1, 2)].atan2(w[(0, 2)]);
-        let q6 = w[(2, 1)].atan2(-w[(2, 0)]);
+        let mut q4 = w[(1, 2)].atan2(w[(0, 2)]);
+        let mut q6 = w[(2, 1)].atan2(-w[(2, 0)]);
+        if let Some(seed) = seed.filter(|_| sin5 < WRIST_NEAR_SINGULAR && w[(2, 2)] > 0.0) {
+            // Nearly singular: the split of q4 + q6 is noise, keep axis 4 where it is.
+            q6 += q4 - seed[3];
+            q4 = seed[3];
+            return [(false, [q4, q5, q6]), (true, [q4, -q5, q6])];
+        }
         return [(false, [q4, q5, q6]), (true, [q4 + PI, -q5, q6 + PI])];
     }
     // Axes 4 and 6 are parallel: only their sum (q5 = 0) or difference (q5 = 180°) is

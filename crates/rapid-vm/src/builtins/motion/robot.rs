@@ -213,6 +213,9 @@ pub struct RobotState {
     pub(super) next_foreign: Option<usize>,
     /// The active work object rides this unit of another task (its frame follows it).
     pub(super) active_foreign: Option<usize>,
+    /// The robot's configured name when it is not `ROB_n` (MOC.cfg's `ROBOT -name`,
+    /// `ROB_L` of a two-arm system): what RobName returns and mecunit data names it.
+    pub name: Option<String>,
 }
 
 impl Default for RobotState {
@@ -266,7 +269,25 @@ impl RobotState {
             next_external: None,
             next_foreign: None,
             active_foreign: None,
+            name: None,
         }
+    }
+
+    /// Puts the robot, before it has moved, at axis values `joints` (degrees) instead of
+    /// the calibration position: the start pose a cell configures. Fails, naming the
+    /// axis, when one is outside its range or not a number.
+    pub fn start_at(&mut self, joints: Joints) -> Result<(), String> {
+        let limits = self.kin.limits();
+        for (axis, (q, (lo, hi))) in joints.iter().zip(limits).enumerate() {
+            if !q.is_finite() || self.kin.limit_violation(&joints) == Some(axis + 1) {
+                return Err(format!(
+                    "the start position puts axis {} of the robot at {q}°, outside its range {lo}° … {hi}°",
+                    axis + 1
+                ));
+            }
+        }
+        self.planner = Planner::new(joints, AccelLimits::nominal(&self.model.max_speeds));
+        Ok(())
     }
 
     /// Keeps every final move, for a trace.

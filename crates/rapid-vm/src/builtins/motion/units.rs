@@ -29,11 +29,22 @@ pub(super) fn external_index(ctx: &Ctx<'_>, unit: usize) -> Option<usize> {
     (i < ctx.resources.robot.external.units.len()).then_some(i)
 }
 
-/// The name of unit number `unit` (ROB_n, or an external unit's).
+/// The name of unit number `unit` (ROB_n, this task's robot's own name, or an
+/// external unit's).
 fn unit_name(ctx: &Ctx<'_>, unit: usize) -> String {
     match external_index(ctx, unit) {
         Some(i) => ctx.resources.robot.external.units[i].unit.name.clone(),
-        None => format!("ROB_{unit}"),
+        None => robot_name(ctx, unit),
+    }
+}
+
+/// The name of robot number `n`: this task's robot's configured name (`ROB_L`) when it
+/// has one, else `ROB_n`.
+// uncertain: another task's robot named otherwise is still called ROB_n here.
+fn robot_name(ctx: &Ctx<'_>, n: usize) -> String {
+    match &ctx.resources.robot.name {
+        Some(name) if own_unit(ctx) == Some(n) => name.clone(),
+        _ => format!("ROB_{n}"),
     }
 }
 
@@ -59,8 +70,12 @@ fn has_robot(ctx: &Ctx<'_>, n: usize) -> bool {
     robot_tasks(ctx).iter().any(|(robot, _, _)| *robot == n)
 }
 
-/// The unit number of `ROB_n`, if the system has it.
+/// The unit number of `ROB_n` (or of this task's robot by its own name), if the
+/// system has it.
 pub(super) fn unit_named(ctx: &Ctx<'_>, name: &str) -> Option<usize> {
+    if ctx.resources.robot.name.as_deref().is_some_and(|own| own.eq_ignore_ascii_case(name)) {
+        return own_unit(ctx);
+    }
     let upper = name.to_ascii_uppercase();
     let n: usize = upper.strip_prefix("ROB_")?.parse().ok()?;
     has_robot(ctx, n).then_some(n)
@@ -139,7 +154,7 @@ pub(super) fn axis_arg(ctx: &Ctx<'_>, value: f64, err: Err) -> Result<usize, Rap
 /// `RobName()`: the name of the TCP robot this task controls ("ROB_1"), or "" in a
 /// task without a robot (manual: RobName).
 pub(crate) fn rob_name(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    let name = own_unit(ctx).map(|n| format!("ROB_{n}")).unwrap_or_default();
+    let name = own_unit(ctx).map(|n| robot_name(ctx, n)).unwrap_or_default();
     Ok(Some(Value::Str(name.into())))
 }
 
@@ -173,7 +188,13 @@ pub(crate) fn get_next_mech_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     }
     let at = list as usize;
     let (unit, facts) = match at.checked_sub(robots.len()) {
-        None => (robots[at].0, robot_facts(robots[at].1, robots[at].0)),
+        None => {
+            let n = robots[at].0;
+            // A 4-axis palletizer has axes 1, 2, 3 and 6.
+            // uncertain: another task's robot is taken to have six axes.
+            let palletizer = own_unit(ctx) == Some(n) && ctx.resources.robot.model.is_palletizer();
+            (n, robot_facts(robots[at].1, n, if palletizer { 4 } else { ROBOT_AXES }))
+        }
         Some(i) => (EXTERNAL_BASE + i, external_facts(ctx, i)),
     };
     ctx.store(&args[0], Value::Num((list + 1.0) as f32))?;
@@ -191,12 +212,12 @@ pub(crate) fn get_next_mech_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(Value::Bool(true)))
 }
 
-/// GetNextMechUnit's outputs for robot `n` of task number `task_no`: TCPRob, NoOfAxes,
-/// MecTaskNo, MotPlanNo, Active, DriveModule, OKToDeact.
-fn robot_facts(task_no: usize, n: usize) -> [Value; 7] {
+/// GetNextMechUnit's outputs for robot `n` of task number `task_no` with `axes` axes:
+/// TCPRob, NoOfAxes, MecTaskNo, MotPlanNo, Active, DriveModule, OKToDeact.
+fn robot_facts(task_no: usize, n: usize, axes: usize) -> [Value; 7] {
     [
         Value::Bool(true),
-        Value::Num(ROBOT_AXES as f32),
+        Value::Num(axes as f32),
         Value::Num(task_no as f32),
         Value::Num(n as f32),
         Value::Bool(true),
