@@ -27,6 +27,7 @@ pub mod boot;
 pub mod ops;
 pub mod pers;
 mod power_on;
+mod progress;
 pub mod run;
 pub mod schedule;
 pub mod task;
@@ -36,6 +37,7 @@ mod types;
 
 pub use ops::{ProgramState, StartMode, StopKind};
 pub use power_on::EventRoutineFailure;
+pub use progress::StuckWait;
 pub use run::{Bound, ClockPolicy, RunBounds, WallClock};
 pub use schedule::{Controller, SystemExit};
 pub use task::{TaskEnd, TaskKind, TaskSpec, TrustLevel};

@@ -41,6 +41,7 @@ mod pers_writes;
 mod report;
 mod robot_numbers;
 mod run;
+mod run_loop;
 mod sarif;
 mod save_pers;
 mod scale;
