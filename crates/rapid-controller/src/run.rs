@@ -227,4 +227,28 @@ mod tests {
         assert_eq!(end, Some(Bound::Interrupted));
         assert_eq!(c.time, 0.0);
     }
+
+    #[test]
+    fn each_policy_follows_the_wall_clock_where_it_says() {
+        // (while computing, while waiting); the outside world paces in real time.
+        assert_eq!(ClockPolicy::Virtual.rates(false), (None, None));
+        assert_eq!(ClockPolicy::Virtual.rates(true), (Some(1.0), Some(1.0)));
+        assert_eq!(ClockPolicy::Paced { rate: 4.0 }.rates(false), (None, Some(4.0)));
+        assert_eq!(ClockPolicy::Paced { rate: 0.0 }.rates(false), (None, Some(1.0)));
+        assert_eq!(ClockPolicy::Paced { rate: 4.0 }.rates(true), (Some(1.0), Some(1.0)));
+        assert_eq!(ClockPolicy::Realtime.rates(false), (Some(1.0), Some(1.0)));
+    }
+
+    #[test]
+    fn a_paced_wait_is_cut_at_the_time_bound() {
+        // WaitTime 2 then 3, paced at twice real time, bounded at 3 s: the second wait
+        // is asked for up to the bound only, and the run ends there.
+        let mut c = one_task(WAITS);
+        let (mut host, mut clock) = (RecordingHost::default(), Recorded::default());
+        let bounds = RunBounds { max_time: Some(3.0), ..RunBounds::default() };
+        let end = c.run_until(&mut host, &mut clock, ClockPolicy::Paced { rate: 2.0 }, bounds);
+        assert_eq!(end, Some(Bound::Time(3.0)));
+        assert_eq!(clock.paced, [(0.0, 2.0), (2.0, 3.0)]);
+        assert_eq!(c.time, 3.0);
+    }
 }
