@@ -16,11 +16,12 @@ use rustc_hash::FxHashMap;
 use crate::args::RunArgs;
 
 /// After the run: the robot finishes its last move; the cycle time (program and
-/// motion, whichever ends later) is printed unless `--quiet`, and returned. `robot_name`
-/// is the task's robot (`ROB_n`), none for a positioner's task.
+/// motion, whichever ends later, never past `limit`: the `--max-time` that stopped the
+/// run) is printed unless `--quiet`, and returned. `robot_name` is the task's robot
+/// (`ROB_n`), none for a positioner's task.
 pub(crate) fn finish(
     resources: &mut rapid_vm::builtins::Resources,
-    program_end: f64,
+    (program_end, limit): (f64, f64),
     (task, robot_name): (&str, Option<&str>),
     note: Option<&str>,
     args: &RunArgs,
@@ -37,7 +38,7 @@ pub(crate) fn finish(
     // The conveyors' whole input history, for the trace of a tracking robot.
     resources.robot.refresh_conveyors(resources.io.system.as_ref());
     let robot = &mut resources.robot;
-    let cycle = program_end.max(motion_end);
+    let cycle = program_end.max(motion_end).min(limit);
     if robot.moves == 0 {
         return Ok(cycle);
     }

@@ -25,25 +25,26 @@ pub(crate) struct Pacer {
 }
 
 impl rapid_controller::WallClock for Pacer {
-    /// The controller clock moves from `from` to `to` (a wait). When `paced`, sleeps
-    /// until the wall clock reaches `to` (never past `limit`, the `--max-time`) and
-    /// returns the clock then, which is later than `to` when the wall clock was ahead;
-    /// otherwise returns `to` and lets the next paced stretch start a new anchor.
-    fn wait(&mut self, paced: bool, from: f64, to: f64, limit: f64) -> f64 {
-        if !paced {
+    /// The controller clock moves from `from` to `to` (a wait). Paced at `rate`
+    /// (controller seconds per wall-clock second), sleeps until the wall clock reaches
+    /// `to` (never past `limit`, the `--max-time`) and returns the clock then, which is
+    /// later than `to` when the wall clock was ahead; otherwise returns `to` and lets
+    /// the next paced stretch start a new anchor.
+    fn wait(&mut self, rate: Option<f64>, from: f64, to: f64, limit: f64) -> f64 {
+        let Some(rate) = rate else {
             self.anchor = None;
             return to;
-        }
+        };
         let (wall0, clock0) = *self.anchor.get_or_insert_with(|| (Instant::now(), from));
         let target = to.min(limit);
-        let due = wall0 + Duration::from_secs_f64((target - clock0).clamp(0.0, MAX_SLEEP));
+        let due = wall0 + Duration::from_secs_f64(((target - clock0) / rate).clamp(0.0, MAX_SLEEP));
         while let Some(left) = due.checked_duration_since(Instant::now()) {
             if crate::interrupt::requested() {
                 break;
             }
             std::thread::sleep(left.min(SLICE));
         }
-        let now = clock0 + wall0.elapsed().as_secs_f64();
+        let now = clock0 + wall0.elapsed().as_secs_f64() * rate;
         to.max(now.min(limit))
     }
 
@@ -62,13 +63,13 @@ mod tests {
     fn an_unpaced_wait_jumps_and_a_paced_one_keeps_to_the_wall_clock() {
         let mut pacer = Pacer::default();
         let started = Instant::now();
-        assert_eq!(pacer.wait(false, 0.0, 100.0, f64::INFINITY), 100.0);
+        assert_eq!(pacer.wait(None, 0.0, 100.0, f64::INFINITY), 100.0);
         assert!(pacer.anchor.is_none());
         // Ten 10 ms waits take 100 ms of wall-clock time in all, however long each
         // sleep overshoots: the anchor set at the first holds them to it.
         let mut clock = 100.0;
         for _ in 0..10 {
-            clock = pacer.wait(true, clock, clock + 0.010, f64::INFINITY);
+            clock = pacer.wait(Some(1.0), clock, clock + 0.010, f64::INFINITY);
         }
         let elapsed = started.elapsed().as_secs_f64();
         assert!(elapsed >= 0.100, "{elapsed}");
@@ -81,7 +82,7 @@ mod tests {
         let mut pacer = Pacer::default();
         let started = Instant::now();
         // The wall clock is at the limit, short of the wait's end: the clock says `to`.
-        assert_eq!(pacer.wait(true, 0.0, 0.05, 0.02), 0.05);
+        assert_eq!(pacer.wait(Some(1.0), 0.0, 0.05, 0.02), 0.05);
         assert!(started.elapsed() >= Duration::from_millis(20));
     }
 }

@@ -5,7 +5,9 @@
 //!   the configuration around them and builds the [`Controller`] at power on (tasks,
 //!   the one I/O system, the robots, the program operations).
 //! - [`Controller::run_until`] is the one run loop: to the end or a bound, the clock
-//!   moved under a [`ClockPolicy`] with the front end's [`WallClock`].
+//!   moved under a [`ClockPolicy`] with the front end's [`WallClock`]
+//!   ([`Controller::move_clock`], which the API's turns share); a run nothing outside
+//!   changes ends when it can no longer progress (`progress.rs`).
 //! - A system of one task without system inputs or outputs runs alone (`alone.rs`):
 //!   its VM in slices, as fast as the interpreter. Several tasks are the task system
 //!   of §1.20 (`schedule`): round-robin one statement each among the busy tasks of the
@@ -27,6 +29,7 @@ pub mod boot;
 pub mod ops;
 pub mod pers;
 mod power_on;
+mod progress;
 pub mod run;
 pub mod schedule;
 pub mod task;
@@ -36,6 +39,7 @@ mod types;
 
 pub use ops::{ProgramState, StartMode, StopKind};
 pub use power_on::EventRoutineFailure;
+pub use progress::StuckWait;
 pub use run::{Bound, ClockPolicy, RunBounds, WallClock};
 pub use schedule::{Controller, SystemExit};
 pub use task::{TaskEnd, TaskKind, TaskSpec, TrustLevel};

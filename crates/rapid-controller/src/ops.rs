@@ -92,6 +92,9 @@ pub struct Operations {
     held: Vec<Option<State>>,
     /// The time of the stop.
     stopped_at: f64,
+    /// Where the task of the step under way stood when it began (call depth and
+    /// instruction): a waiting statement repeated there has not run yet (`ops/step.rs`).
+    pub(crate) step_from: Option<(usize, u32)>,
     /// The motors are off (they are on from power on: `rapid run` is in automatic mode).
     motors_off: bool,
     /// The operating mode is automatic (AutoOn).

@@ -1,11 +1,16 @@
 //! Running a system to its end or to a bound, the controller clock moved under a
-//! clock policy: every front end's one run loop ([`Controller::run_until`]).
+//! clock policy: every front end's one run loop. [`Controller::run_until`] runs it
+//! to the end (`rapid run`); the API's [`crate::api::Session`] runs it a bounded turn
+//! at a time and moves the clock with the same [`Controller::move_clock`].
 //!
 //! The controller keeps no wall clock of its own: the front end's [`WallClock`] says
-//! where the wall clock is (and sleeps to it) and whether the user asked the run to
-//! end. While a task talks to the outside world (a socket open or waited on) the
-//! clock is paced whatever the policy: a peer must see the controller's time pass as
-//! its own does.
+//! where the wall clock is (and sleeps to it, or tells its caller when to come back)
+//! and whether the user asked the run to end. While a task talks to the outside world
+//! (a socket open or waited on) the clock is paced whatever the policy: a peer must
+//! see the controller's time pass as its own does.
+//!
+//! A run nothing outside the system can change ([`RunBounds::closed`]) also ends when
+//! it can no longer progress ([`Bound::Stuck`], the rule in `progress.rs`).
 
 use rapid_vm::Host;
 
@@ -18,23 +23,45 @@ const SLICE: u64 = 1 << 14;
 const SLICE_ALONE: u64 = 1 << 16;
 
 /// How the controller clock keeps to the wall clock.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum ClockPolicy {
-    /// Virtual time: waits are jumped over at once (paced only while a task talks to
-    /// the outside world).
+    /// Virtual time: waits are jumped over at once (simulation as fast as the host
+    /// computes). It follows the wall clock while a task talks to the outside world,
+    /// and (the API's pendant) while a dialog waits for the operator.
     #[default]
     Virtual,
-    /// Paced throughout: the controller clock keeps to the wall clock (`--realtime`).
+    /// Waits take wall-clock time divided by `rate` (2.0: twice as fast as real);
+    /// computing moves the clock by the nominal instruction time only.
+    Paced { rate: f64 },
+    /// The wall clock throughout (`--realtime`): waits take their time, and computing
+    /// moves the clock too.
     Realtime,
+}
+
+impl ClockPolicy {
+    /// The rates (controller seconds per wall-clock second) the clock follows the
+    /// wall clock at while tasks compute and while every task waits; None: it does
+    /// not. `outside`: a task talks to the outside world, which paces in real time.
+    fn rates(self, outside: bool) -> (Option<f64>, Option<f64>) {
+        match self {
+            ClockPolicy::Realtime => (Some(1.0), Some(1.0)),
+            ClockPolicy::Virtual | ClockPolicy::Paced { .. } if outside => (Some(1.0), Some(1.0)),
+            ClockPolicy::Virtual => (None, None),
+            ClockPolicy::Paced { rate } if rate > 0.0 && rate.is_finite() => (None, Some(rate)),
+            ClockPolicy::Paced { .. } => (None, Some(1.0)),
+        }
+    }
 }
 
 /// The wall clock as the front end keeps it.
 pub trait WallClock {
     /// The controller clock moves from `from` to `to` (a wait; `from == to` for a
-    /// stretch of computing). When `paced`, waits until the wall clock reaches `to`
-    /// (never past `limit`) and returns the controller time then, later than `to` when
-    /// the wall clock was ahead; otherwise returns `to`.
-    fn wait(&mut self, paced: bool, from: f64, to: f64, limit: f64) -> f64;
+    /// stretch of computing). Paced (`rate` controller seconds per wall-clock second):
+    /// the controller time the wall clock allows, never past `limit` — a blocking
+    /// clock sleeps until `to` and may return later when the wall clock was ahead; a
+    /// clock that must not block returns earlier and tells its caller when to come
+    /// back. Not paced (`None`): returns `to`.
+    fn wait(&mut self, rate: Option<f64>, from: f64, to: f64, limit: f64) -> f64;
 
     /// Whether the user asked the run to end (Ctrl-C).
     fn interrupted(&self) -> bool;
@@ -47,6 +74,10 @@ pub struct RunBounds {
     pub max_steps: Option<u64>,
     /// Controller seconds the run may last.
     pub max_time: Option<f64>,
+    /// Nothing outside the system changes it while it runs (no front end sets
+    /// signals or answers prompts; `rapid run`): a run that can no longer progress
+    /// ends ([`Bound::Stuck`]).
+    pub closed: bool,
 }
 
 /// Why [`Controller::run_until`] returned before the system ended.
@@ -54,7 +85,7 @@ pub struct RunBounds {
 pub enum Bound {
     /// More steps than the bound.
     Steps(u64),
-    /// The clock passed the bound.
+    /// The clock reached the bound short of a wait's end, or passed it computing.
     Time(f64),
     /// The interpreter failed (a panic caught): our fault, not the program's.
     InternalError,
@@ -63,6 +94,9 @@ pub enum Bound {
     /// The program was stopped (a system input) and nothing in the stimulus starts it
     /// again.
     Stopped,
+    /// Every NORMAL task waits for something only a change from outside the system
+    /// could bring ([`Controller::stuck_waits`] says what).
+    Stuck,
 }
 
 impl Controller {
@@ -91,29 +125,44 @@ impl Controller {
                     return Some(Bound::Steps(max));
                 }
             }
-            // While the program talks to the outside world the clock is the wall
-            // clock, computing too: a peer's data and the time bound come in its time.
-            let paced = policy == ClockPolicy::Realtime || self.talks_to_outside_world();
             match exit {
                 SystemExit::Ended => return None,
                 SystemExit::Stopped => return Some(Bound::Stopped),
-                SystemExit::Budget => {
-                    let to = clock.wait(paced, self.time, self.time, limit);
-                    self.advance(to - self.time);
-                }
-                SystemExit::Wait(seconds) => {
-                    let from = self.time;
-                    let to = clock.wait(paced, from, from + seconds, limit);
-                    self.advance(to - from);
-                }
+                SystemExit::Wait(_) if bounds.closed && self.cannot_progress() => return Some(Bound::Stuck),
+                SystemExit::Budget | SystemExit::Wait(_) => {}
             }
+            let clipped = self.move_clock(exit, clock, policy, limit);
             // The clock moves while tasks compute too (the nominal instruction time): a
             // loop that never waits is bounded as well.
             if let Some(max) = bounds.max_time {
-                if self.time > max {
+                if clipped || self.time > max {
                     return Some(Bound::Time(max));
                 }
             }
+        }
+    }
+
+    /// Moves the clock after [`Controller::run`] returned `exit`: over a wait
+    /// (never past `limit`), or, while it follows the wall clock, over the time a
+    /// stretch of computing took. True when `limit` cut a wait short.
+    pub fn move_clock(&mut self, exit: SystemExit, clock: &mut dyn WallClock, policy: ClockPolicy, limit: f64) -> bool {
+        // While the program talks to the outside world the clock is the wall clock,
+        // computing too: a peer's data and the time bound come in its time.
+        let (computing, waiting) = policy.rates(self.talks_to_outside_world());
+        let from = self.time;
+        match exit {
+            SystemExit::Budget if computing.is_some() || waiting.is_none() => {
+                let to = clock.wait(computing, from, from, limit);
+                self.advance(to - from);
+                false
+            }
+            SystemExit::Wait(seconds) => {
+                let end = from + seconds;
+                let to = clock.wait(waiting, from, end.min(limit).max(from), limit);
+                self.advance(to - from);
+                end > limit
+            }
+            SystemExit::Budget | SystemExit::Ended | SystemExit::Stopped => false,
         }
     }
 }
@@ -133,8 +182,8 @@ mod tests {
     }
 
     impl WallClock for Recorded {
-        fn wait(&mut self, paced: bool, from: f64, to: f64, _limit: f64) -> f64 {
-            if paced {
+        fn wait(&mut self, rate: Option<f64>, from: f64, to: f64, _limit: f64) -> f64 {
+            if rate.is_some() {
                 self.paced.push((from, to));
             }
             to
@@ -177,5 +226,29 @@ mod tests {
         let end = c.run_until(&mut host, &mut clock, ClockPolicy::Virtual, RunBounds::default());
         assert_eq!(end, Some(Bound::Interrupted));
         assert_eq!(c.time, 0.0);
+    }
+
+    #[test]
+    fn each_policy_follows_the_wall_clock_where_it_says() {
+        // (while computing, while waiting); the outside world paces in real time.
+        assert_eq!(ClockPolicy::Virtual.rates(false), (None, None));
+        assert_eq!(ClockPolicy::Virtual.rates(true), (Some(1.0), Some(1.0)));
+        assert_eq!(ClockPolicy::Paced { rate: 4.0 }.rates(false), (None, Some(4.0)));
+        assert_eq!(ClockPolicy::Paced { rate: 0.0 }.rates(false), (None, Some(1.0)));
+        assert_eq!(ClockPolicy::Paced { rate: 4.0 }.rates(true), (Some(1.0), Some(1.0)));
+        assert_eq!(ClockPolicy::Realtime.rates(false), (Some(1.0), Some(1.0)));
+    }
+
+    #[test]
+    fn a_paced_wait_is_cut_at_the_time_bound() {
+        // WaitTime 2 then 3, paced at twice real time, bounded at 3 s: the second wait
+        // is asked for up to the bound only, and the run ends there.
+        let mut c = one_task(WAITS);
+        let (mut host, mut clock) = (RecordingHost::default(), Recorded::default());
+        let bounds = RunBounds { max_time: Some(3.0), ..RunBounds::default() };
+        let end = c.run_until(&mut host, &mut clock, ClockPolicy::Paced { rate: 2.0 }, bounds);
+        assert_eq!(end, Some(Bound::Time(3.0)));
+        assert_eq!(clock.paced, [(0.0, 2.0), (2.0, 3.0)]);
+        assert_eq!(c.time, 3.0);
     }
 }

@@ -26,6 +26,9 @@ pub(crate) enum ExitStatus {
     Error,
     /// The user ended the run with Ctrl-C (exit 130, as a shell reports SIGINT).
     Interrupted,
+    /// The run can no longer progress: every NORMAL task waits for a change only the
+    /// outside world could make (exit 3).
+    Stuck,
 }
 
 impl From<ExitStatus> for ExitCode {
@@ -35,6 +38,7 @@ impl From<ExitStatus> for ExitCode {
             ExitStatus::Failure => ExitCode::from(1),
             ExitStatus::Error => ExitCode::from(2),
             ExitStatus::Interrupted => ExitCode::from(130),
+            ExitStatus::Stuck => ExitCode::from(3),
         }
     }
 }

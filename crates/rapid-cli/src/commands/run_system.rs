@@ -17,6 +17,7 @@
 
 use std::io::{self, BufWriter};
 
+use rapid_controller::api::Session;
 use rapid_controller::boot::system::{self as boot, BootError, BootOptions, Booted};
 use rapid_controller::{
     Bound, ClockPolicy, Controller, EventRoutineFailure, RunBounds, TaskEnd, TaskKind, TaskSpec, TrustLevel,
@@ -177,10 +178,18 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             _ => refuse(&refusal(&controller, &failure)),
         };
     }
-    let policy = if args.realtime { ClockPolicy::Realtime } else { ClockPolicy::Virtual };
-    let bounds = RunBounds { max_steps: args.max_steps, max_time: args.max_time };
-    let bounded = controller.run_until(&mut host, &mut crate::pace::Pacer::default(), policy, bounds);
+    // The one run loop, through the controller API as every front end drives it;
+    // nothing outside the system changes a run of `rapid run` (the stimulus is part
+    // of it), so a run that can no longer progress ends.
+    let mut session = Session::running(controller);
+    session.set_clock(if args.realtime { ClockPolicy::Realtime } else { ClockPolicy::Virtual });
+    let bounds = RunBounds { max_steps: args.max_steps, max_time: args.max_time, closed: true };
+    let bounded = session.run_to_end(&mut host, &mut crate::pace::Pacer::default(), bounds);
+    let mut controller = session.into_controller();
     host.flush();
+    if bounded == Some(Bound::Stuck) {
+        report_stuck(&controller, alone);
+    }
     // A program alone is reported as it stops: what ended it, then its outputs.
     let alone_status = alone.then(|| report_alone(&controller, &tasks[0].inputs.modules, bounded.as_ref(), args));
     if alone {
@@ -190,7 +199,13 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             }
         }
     }
-    let program_end = controller.time;
+    // A run the time bound stopped ends at the bound: the last wait may have moved the
+    // clock past it, and neither the program nor the motion is reported beyond it.
+    let limit = match bounded {
+        Some(Bound::Time(max)) => max,
+        _ => f64::INFINITY,
+    };
+    let program_end = controller.time.min(limit);
     for task in &mut controller.tasks {
         let name = task.spec.name.clone();
         let bound = bounded.as_ref().is_some_and(|b| !matches!(b, Bound::Stopped));
@@ -202,20 +217,18 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     let mut cycle = program_end;
     let robot_names: Vec<Option<String>> = numbers.iter().map(|n| n.map(|n| format!("ROB_{n}"))).collect();
     for idx in 0..controller.tasks.len() {
-        // A program alone finishes its motion with the I/O system in hand: the outputs
-        // its last moves set and the I/O system brought to the motion's end.
-        if alone {
-            controller.exchange_shared_with(idx);
-        }
+        // Each task finishes its motion with the system's I/O in hand: the outputs its
+        // last moves set and the I/O system brought to the motion's end (a system of
+        // tasks as a program alone: the tasks share the one I/O system).
+        controller.exchange_shared_with(idx);
         let task = &mut controller.tasks[idx];
         let name = task.spec.name.clone();
         let resources = task.loaded.vm.resources_mut();
         let robot_name = robot_names.get(idx).cloned().flatten();
         let who = (name.as_str(), robot_name.as_deref());
-        let finished = crate::motion_out::finish(resources, program_end, who, model_note.as_deref(), args);
-        if alone {
-            controller.exchange_shared_with(idx);
-        }
+        let ends = (program_end, limit);
+        let finished = crate::motion_out::finish(resources, ends, who, model_note.as_deref(), args);
+        controller.exchange_shared_with(idx);
         cycle = cycle.max(finished?);
         controller.tasks[idx].loaded.vm.log_corner_failures();
     }
@@ -257,6 +270,7 @@ fn report_alone(controller: &Controller, files: &[SourceInput], bound: Option<&B
             eprintln!("internal error: the interpreter failed; please report this program");
             return ExitStatus::Error;
         }
+        Some(Bound::Stuck) => return ExitStatus::Stuck,
         Some(Bound::Stopped) | None => {}
     }
     let task = &controller.tasks[0];
@@ -274,6 +288,24 @@ fn report_alone(controller: &Controller, files: &[SourceInput], bound: Option<&B
             ExitStatus::Success
         }
         _ => ExitStatus::Success,
+    }
+}
+
+/// A run that can no longer progress: what each NORMAL task waits for, where and
+/// since when (a program alone names no task).
+fn report_stuck(controller: &Controller, alone: bool) {
+    eprintln!(
+        "error: the run can no longer progress at {:.3} s of controller time: every NORMAL task waits for \
+         an input nothing in the system sets (no stimulus line, reaction, cross-connection or task), or for \
+         tasks that wait so",
+        controller.time
+    );
+    for wait in controller.stuck_waits() {
+        let who = if alone { "the program".to_owned() } else { format!("task {}", wait.task) };
+        eprintln!(
+            "  {who} waits at {}:{} since {:.3} s: {} ({})",
+            wait.file, wait.line, wait.since, wait.statement, wait.why
+        );
     }
 }
 
@@ -374,6 +406,7 @@ fn report(controller: &Controller, tasks: &[LoadedTask], bound: Option<Bound>) -
             eprintln!("internal error: the interpreter failed; please report this program");
             return ExitStatus::Error;
         }
+        Some(Bound::Stuck) => status = ExitStatus::Stuck,
         None => {}
     }
     for (task, input) in controller.tasks.iter().zip(tasks) {

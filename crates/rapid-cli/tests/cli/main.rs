@@ -43,6 +43,7 @@ mod report;
 mod robot_numbers;
 mod robots;
 mod run;
+mod run_loop;
 mod sarif;
 mod save_pers;
 mod scale;

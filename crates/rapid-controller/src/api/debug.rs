@@ -274,8 +274,7 @@ impl Controller {
     /// the scheduler runs the next statement in the same round.
     fn step_done_before(&self, idx: usize) -> bool {
         let ProgramState::Stepping { task, from_steps } = self.program_state() else { return false };
-        let vm = &self.tasks[idx].loaded.vm;
-        task == idx && vm.steps > from_steps && vm.at_instruction_boundary() && self.target_met(idx)
+        task == idx && self.statement_done(idx, from_steps) && self.target_met(idx)
     }
 
     /// Whether the step under way in task `idx` has reached its target depth.

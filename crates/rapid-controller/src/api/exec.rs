@@ -4,8 +4,11 @@
 
 use std::time::{Duration, Instant};
 
+use rapid_vm::Host;
+
 use super::debug::{BreakpointHit, Location, StepKind};
 use super::{ApiError, Session};
+use crate::run::{Bound, ClockPolicy, RunBounds, WallClock};
 use crate::schedule::State;
 use crate::task::TaskKind;
 use crate::{ProgramState, StartMode, StopKind, SystemExit};
@@ -16,18 +19,6 @@ const ROUND: u64 = 1000;
 const MAX_SETTLE_ROUNDS: u32 = 100_000;
 /// The longest sleep a paced clock asks for at once.
 const MAX_SLEEP: f64 = 60.0;
-
-/// How the controller clock moves while every task waits.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum ClockPolicy {
-    /// It jumps to the end of the wait (simulation as fast as the host computes);
-    /// while a pendant dialog waits for the operator it follows the wall clock.
-    Virtual,
-    /// Waits take wall-clock time divided by `rate` (2.0: twice as fast as real).
-    Paced { rate: f64 },
-    /// The wall clock: waits take their time, and computing moves the clock too.
-    Realtime,
-}
 
 /// Where a start begins.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -112,7 +103,17 @@ impl Session {
     /// The clock policy from now on.
     pub fn set_clock(&mut self, policy: ClockPolicy) {
         self.clock = policy;
-        self.anchor = None;
+        self.wall = Anchor::default();
+    }
+
+    /// Runs the program to its end or a bound with the front end's own pendant
+    /// `host` and `clock` (which may block): the one run loop
+    /// ([`crate::Controller::run_until`]) under the session's clock policy. `rapid
+    /// run` is this call.
+    pub fn run_to_end(&mut self, host: &mut dyn Host, clock: &mut dyn WallClock, bounds: RunBounds) -> Option<Bound> {
+        let bound = self.controller.run_until(host, clock, self.clock, bounds);
+        self.gather();
+        bound
     }
 
     pub(super) fn must_be_stopped(&self) -> Result<(), ApiError> {
@@ -156,7 +157,7 @@ impl Session {
         if !started {
             return Err(ApiError::WrongState("the motors are off".into()));
         }
-        self.anchor = None;
+        self.wall = Anchor::default();
         self.gather();
         Ok(())
     }
@@ -400,17 +401,27 @@ impl Session {
         }
     }
 
-    /// [`Session::run`] with the clock moving no further than `limit`.
+    /// [`Session::run`] with the clock moving no further than `limit`: one turn of
+    /// the run loop, the clock moved by [`crate::Controller::move_clock`].
     fn run_limited(&mut self, budget: u64, limit: f64) -> RunOutcome {
         let exit = self.controller.run(&mut self.pendant, budget);
         let mut outcome = match exit {
-            SystemExit::Budget => {
-                if self.clock == ClockPolicy::Realtime {
-                    self.catch_up(limit);
+            SystemExit::Budget | SystemExit::Wait(_) => {
+                // While a dialog waits for the operator, a person is part of the loop:
+                // the clock is the wall clock (a virtual clock would jump over the hour
+                // a dialog without \MaxTime polls in), as a run's clock is while a task
+                // talks to a socket.
+                let operator = self.pendant.pending().next().is_some();
+                let policy = match self.clock {
+                    ClockPolicy::Virtual if operator => ClockPolicy::Paced { rate: 1.0 },
+                    policy => policy,
+                };
+                self.controller.move_clock(exit, &mut self.wall, policy, limit);
+                match self.wall.sleep.take() {
+                    Some(sleep) => RunOutcome::Sleep(sleep),
+                    None => RunOutcome::Running,
                 }
-                RunOutcome::Running
             }
-            SystemExit::Wait(seconds) => self.wait(seconds, limit),
             SystemExit::Ended => RunOutcome::Ended,
             SystemExit::Stopped => RunOutcome::Stopped,
         };
@@ -424,45 +435,40 @@ impl Session {
         self.gather();
         outcome
     }
+}
 
-    /// Every task waits `seconds`: the clock moves as the policy says.
-    fn wait(&mut self, seconds: f64, limit: f64) -> RunOutcome {
-        let time = self.controller.time;
-        let to = (time + seconds).min(limit).max(time);
-        // While a dialog waits for the operator, a person is part of the loop: the
-        // clock is the wall clock (a virtual clock would jump over the hour a dialog
-        // without \MaxTime polls in), as a run's clock is while a task talks to a socket.
-        let operator = self.pendant.pending().next().is_some();
-        let rate = match self.clock {
-            ClockPolicy::Virtual if !operator => {
-                self.anchor = None;
-                self.controller.advance(to - time);
-                return RunOutcome::Running;
-            }
-            ClockPolicy::Virtual => 1.0,
-            ClockPolicy::Paced { rate } if rate > 0.0 && rate.is_finite() => rate,
-            ClockPolicy::Paced { .. } | ClockPolicy::Realtime => 1.0,
+/// The session's wall clock: it never blocks. A paced wait the wall clock has not
+/// reached yet moves the controller clock as far as the wall clock has come and says
+/// how long the caller should sleep.
+#[derive(Debug, Default)]
+pub(super) struct Anchor {
+    /// Wall-clock instant and controller time tied together.
+    tied: Option<(Instant, f64)>,
+    /// How long the caller should sleep before the next turn.
+    sleep: Option<Duration>,
+}
+
+impl WallClock for Anchor {
+    fn wait(&mut self, rate: Option<f64>, from: f64, to: f64, limit: f64) -> f64 {
+        let Some(rate) = rate else {
+            self.tied = None;
+            return to;
         };
-        let (wall0, clock0) = *self.anchor.get_or_insert((Instant::now(), time));
+        let (wall0, clock0) = *self.tied.get_or_insert((Instant::now(), from));
         let wall_clock = clock0 + wall0.elapsed().as_secs_f64() * rate;
+        if from == to {
+            // Computing: the clock catches up with the wall clock.
+            return to.max(wall_clock.min(limit));
+        }
         if wall_clock >= to {
-            self.controller.advance(to - time);
-            return RunOutcome::Running;
+            return to;
         }
-        if wall_clock > time {
-            self.controller.advance(wall_clock - time);
-        }
-        RunOutcome::Sleep(Duration::from_secs_f64(((to - wall_clock) / rate).min(MAX_SLEEP)))
+        self.sleep = Some(Duration::from_secs_f64(((to - wall_clock) / rate).min(MAX_SLEEP)));
+        wall_clock.max(from)
     }
 
-    /// A real-time clock follows the wall clock while tasks compute too.
-    fn catch_up(&mut self, limit: f64) {
-        let time = self.controller.time;
-        let (wall0, clock0) = *self.anchor.get_or_insert((Instant::now(), time));
-        let wall_clock = (clock0 + wall0.elapsed().as_secs_f64()).min(limit);
-        if wall_clock > time {
-            self.controller.advance(wall_clock - time);
-        }
+    fn interrupted(&self) -> bool {
+        false
     }
 }
 

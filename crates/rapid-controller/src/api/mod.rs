@@ -26,9 +26,10 @@ pub mod stream;
 
 use std::fmt;
 
+pub use crate::run::ClockPolicy;
 pub use data::{DataInfo, DataValue};
 pub use debug::{BreakpointHit, Location, StepKind};
-pub use exec::{ClockPolicy, RunOutcome, StackFrame, StartFrom, TaskView, Until};
+pub use exec::{RunOutcome, StackFrame, StartFrom, TaskView, Until};
 pub use panel::MechUnitView;
 pub use pendant::PendingPrompt;
 pub use stream::{Batch, Change, Subscription};
@@ -93,8 +94,8 @@ pub struct Session {
     pendant: pendant::Pendant,
     stream: stream::Stream,
     clock: ClockPolicy,
-    /// Wall-clock instant and controller time tied together by a paced clock.
-    anchor: Option<(std::time::Instant, f64)>,
+    /// The wall clock a paced clock follows (never blocking).
+    wall: exec::Anchor,
     seen: Seen,
 }
 
@@ -104,16 +105,28 @@ impl Session {
     /// as the session runs); the clock is virtual.
     pub fn new(mut controller: Controller) -> Session {
         controller.stand_stopped();
+        Session::running(controller)
+    }
+
+    /// A session on `controller` as it stands: a front end that powered it on and
+    /// started it itself (`rapid run`: power on ran the event routines) drives it from
+    /// there. The clock is virtual.
+    pub fn running(controller: Controller) -> Session {
         let mut session = Session {
             controller,
             pendant: pendant::Pendant::default(),
             stream: stream::Stream::default(),
             clock: ClockPolicy::Virtual,
-            anchor: None,
+            wall: exec::Anchor::default(),
             seen: Seen::default(),
         };
         session.mark_seen();
         session
+    }
+
+    /// The controller, the session ended (what a front end reports after the run).
+    pub fn into_controller(self) -> Controller {
+        self.controller
     }
 
     /// The controller, to read what the API does not offer.

@@ -35,6 +35,7 @@ impl Controller {
             return false;
         }
         let from_steps = self.tasks[task].loaded.vm.steps;
+        self.ops.step_from = position(&self.tasks[task].loaded.vm);
         self.ops.state = Some(ProgramState::Stepping { task, from_steps });
         self.with_task(task, host, |vm, host| vm.step_started(host));
         // No trap runs in a step, so a wait under way goes on with the time it still
@@ -52,10 +53,7 @@ impl Controller {
     pub(super) fn follow_step(&mut self, host: &mut dyn Host, task: usize, from_steps: u64) {
         let done = match &self.tasks[task].state {
             State::Ended(_) => true,
-            State::Ready => {
-                let vm = &self.tasks[task].loaded.vm;
-                vm.steps > from_steps && vm.at_instruction_boundary()
-            }
+            State::Ready => self.statement_done(task, from_steps),
             _ => false,
         };
         // API hook: a step over or out goes on to its target depth.
@@ -69,4 +67,22 @@ impl Controller {
         }
         self.note(format!("step of task {} done", self.tasks[task].spec.name));
     }
+}
+
+impl Controller {
+    /// Whether the step of task `task` (which had run `from_steps` before) has run a
+    /// whole statement and stands at the next one. A waiting statement that looks
+    /// again (WaitDI, WaitUntil, a sync point) stands where it started between its
+    /// looks: the step goes on until it has passed, as the step of a WaitTime lasts
+    /// its wait.
+    pub(crate) fn statement_done(&self, task: usize, from_steps: u64) -> bool {
+        let vm = &self.tasks[task].loaded.vm;
+        let repeats = vm.wait_rechecks && position(vm) == self.ops.step_from;
+        vm.steps > from_steps && vm.at_instruction_boundary() && !repeats
+    }
+}
+
+/// Where a task stands: its call depth and instruction.
+fn position(vm: &rapid_vm::Vm) -> Option<(usize, u32)> {
+    vm.top_position().map(|(_, pc)| (vm.depth(), pc))
 }

@@ -66,6 +66,11 @@ impl SharedIo {
 }
 
 impl IoState {
+    /// When the waiting instruction under way (WaitDI …) began, if one is.
+    pub fn wait_started(&self) -> Option<f64> {
+        self.waiting.map(|(_, _, at)| at)
+    }
+
     /// An output the robot's path sets at `time` (kept in time order).
     pub fn order_on_path(&mut self, time: f64, signal: u32, value: f64) {
         let at = self.path_orders.partition_point(|&(t, _, _)| t <= time);

@@ -253,6 +253,11 @@ pub struct TaskingState {
 }
 
 impl TaskingState {
+    /// When the WaitSyncTask under way began, if one is.
+    pub fn sync_wait_started(&self) -> Option<f64> {
+        self.waiting.as_ref().map(|w| w.2)
+    }
+
     /// The task's name (T_ROB1 when run alone).
     pub fn name(&self) -> &str {
         if self.me.is_empty() {
