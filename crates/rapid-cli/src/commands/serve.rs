@@ -115,7 +115,7 @@ fn boot_closure(paths: Vec<PathBuf>, modules: Arc<Mutex<Vec<TaskFiles>>>) -> rap
 
 /// A task's name, the module files it was loaded from, and its persistents' values
 /// at boot as RAPID literals (by index in `Loaded::persistents`).
-type TaskFiles = (String, Vec<SourceInput>, Vec<Option<String>>);
+pub(super) type TaskFiles = (String, Vec<SourceInput>, Vec<Option<String>>);
 
 /// Each persistent's value now, as RAPID literal text.
 fn pers_literals(loaded: &rapid_vm::Loaded) -> Vec<Option<String>> {
@@ -131,6 +131,14 @@ fn pers_literals(loaded: &rapid_vm::Loaded) -> Vec<Option<String>> {
 // Not configured as `rapid run` does: a stimulus, --virtual-io, --robot; the POWER_ON
 // and START event routines do not run (the program is started by a client).
 fn assemble(paths: &[PathBuf]) -> Result<(Controller, Vec<TaskFiles>), String> {
+    assemble_with(paths, &mut |_| Ok(None))
+}
+
+/// [`assemble`] with a stimulus read against the system's I/O (`rapid dap` takes one).
+pub(super) fn assemble_with(
+    paths: &[PathBuf],
+    stimulus: &mut boot::system::ReadStimulus<'_>,
+) -> Result<(Controller, Vec<TaskFiles>), String> {
     let first = inputs::collect(paths).map_err(|e| format!("{e:#}"))?;
     config_errors(&first)?;
     let name = first.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
@@ -165,7 +173,7 @@ fn assemble(paths: &[PathBuf]) -> Result<(Controller, Vec<TaskFiles>), String> {
     }
     let options = boot::system::BootOptions { alone: false, cycles: 0, auto: true, ..Default::default() };
     let cell = collected[0].1.cell();
-    let booted = boot::system::boot(loaded, Some(&sys), cell, &options, &mut |_| Ok(None));
+    let booted = boot::system::boot(loaded, Some(&sys), cell, &options, stimulus);
     let booted = booted.map_err(|e| match e {
         boot::system::BootError::Refused(m)
         | boot::system::BootError::UnknownModel(m)
