@@ -16,7 +16,8 @@ pub(crate) fn run() -> anyhow::Result<ExitStatus> {
     Ok(ExitStatus::Success)
 }
 
-/// Boots a module, folder, backup or manifest as `rapid serve` does.
+/// Boots a module, folder, backup or manifest as `rapid serve` does, in cycle mode
+/// (one cycle, as `rapid run` runs by default: the session ends when the program does).
 struct SystemLauncher;
 
 impl Launcher for SystemLauncher {
@@ -24,7 +25,7 @@ impl Launcher for SystemLauncher {
         // Canonical paths: the client names breakpoints' files by absolute paths.
         let paths: Vec<PathBuf> = args.program.iter().map(|p| canonical(p)).collect::<Result<_, _>>()?;
         let mut read_stimulus = |io: Option<&rapid_io::IoSystem>| read_stimulus(args.stimulus.as_deref(), io);
-        let (controller, _files) = super::serve::assemble_with(&paths, &mut read_stimulus)?;
+        let (controller, _files) = super::serve::assemble_with(&paths, &mut read_stimulus, 1)?;
         let answers = match &args.tp_input {
             Some(path) => pendant_answers(path)?,
             None => Vec::new(),

@@ -131,13 +131,15 @@ fn pers_literals(loaded: &rapid_vm::Loaded) -> Vec<Option<String>> {
 // Not configured as `rapid run` does: a stimulus, --virtual-io, --robot; the POWER_ON
 // and START event routines do not run (the program is started by a client).
 fn assemble(paths: &[PathBuf]) -> Result<(Controller, Vec<TaskFiles>), String> {
-    assemble_with(paths, &mut |_| Ok(None))
+    assemble_with(paths, &mut |_| Ok(None), 0)
 }
 
-/// [`assemble`] with a stimulus read against the system's I/O (`rapid dap` takes one).
+/// [`assemble`] with a stimulus read against the system's I/O and the cycles each
+/// NORMAL task runs (0: continuous; `rapid dap` debugs one cycle, as `rapid run` runs).
 pub(super) fn assemble_with(
     paths: &[PathBuf],
     stimulus: &mut boot::system::ReadStimulus<'_>,
+    cycles: u64,
 ) -> Result<(Controller, Vec<TaskFiles>), String> {
     let first = inputs::collect(paths).map_err(|e| format!("{e:#}"))?;
     config_errors(&first)?;
@@ -171,7 +173,7 @@ pub(super) fn assemble_with(
         program.vm.resources_mut().sockets.set_cooperative(true);
         loaded.push((spec.clone(), program));
     }
-    let options = boot::system::BootOptions { alone: false, cycles: 0, auto: true, ..Default::default() };
+    let options = boot::system::BootOptions { alone: false, cycles, auto: true, ..Default::default() };
     let cell = collected[0].1.cell();
     let booted = boot::system::boot(loaded, Some(&sys), cell, &options, stimulus);
     let booted = booted.map_err(|e| match e {

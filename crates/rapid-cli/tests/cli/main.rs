@@ -19,6 +19,7 @@ mod controller_state;
 mod conveyor;
 mod coordinated;
 mod correction;
+mod dap;
 mod dump_ir;
 mod elog;
 mod error_location;
