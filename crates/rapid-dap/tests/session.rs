@@ -58,23 +58,26 @@ fn line_of(text: &str, needle: &str) -> u64 {
     text.lines().position(|l| l.contains(needle)).map(|at| at as u64 + 1).expect("the line is in the module")
 }
 
-/// Boots the two tasks from the texts above (the launch's paths are not read).
-struct TwoTasks;
+/// Boots its tasks (name, module path, module text) from texts: the launch's paths
+/// are not read.
+struct Program(Vec<(&'static str, &'static str, &'static str)>);
 
-impl Launcher for TwoTasks {
+impl Launcher for Program {
     fn launch(&self, _args: &LaunchArgs) -> Result<Launched, String> {
         let options = rapid_sema::Options::default();
-        let load = |path: &str, text: &str| {
-            rapid_vm::load_with(&[SourceInput::from_text(path, text)], "main", &options)
-                .map_err(|e| format!("{path}: {e:?}"))
-        };
-        let tasks = vec![
-            (TaskSpec::normal("T_ROB1", true), load("/dap/T_ROB1/MainModule.mod", ROBOT)?),
-            (TaskSpec::normal("T_OTHER", false), load("/dap/T_OTHER/Other.mod", OTHER)?),
-        ];
+        let mut tasks = Vec::new();
+        for (at, (name, path, text)) in self.0.iter().enumerate() {
+            let loaded = rapid_vm::load_with(&[SourceInput::from_text(*path, *text)], "main", &options)
+                .map_err(|e| format!("{path}: {e:?}"))?;
+            tasks.push((TaskSpec::normal(name, at == 0), loaded));
+        }
         let controller = Controller::new(tasks, None).map_err(|e| format!("{e:?}"))?;
         Ok(Launched { session: Session::new(controller), answers: Vec::new() })
     }
+}
+
+fn two_tasks() -> Program {
+    Program(vec![("T_ROB1", "/dap/T_ROB1/MainModule.mod", ROBOT), ("T_OTHER", "/dap/T_OTHER/Other.mod", OTHER)])
 }
 
 /// The client's end of the adapter's streams.
@@ -118,12 +121,12 @@ impl Write for ChannelWriter {
 }
 
 impl Client {
-    fn start() -> Client {
+    fn start(program: Program) -> Client {
         let (to_adapter, adapter_in) = mpsc::channel();
         let (adapter_out, from_adapter) = mpsc::channel();
         std::thread::spawn(move || {
             let mut output = ChannelWriter(adapter_out);
-            let _ = rapid_dap::serve(ChannelReader(adapter_in, VecDeque::new()), &mut output, &TwoTasks);
+            let _ = rapid_dap::serve(ChannelReader(adapter_in, VecDeque::new()), &mut output, &program);
         });
         Client { to_adapter, from_adapter, buffer: Vec::new(), seq: 0, events: VecDeque::new() }
     }
@@ -184,6 +187,16 @@ impl Client {
         }
     }
 
+    /// Waits for an output event holding `needle`.
+    fn output_with(&mut self, needle: &str) {
+        loop {
+            let (event, _) = self.event("output");
+            if event["output"].as_str().unwrap_or_default().contains(needle) {
+                return;
+            }
+        }
+    }
+
     /// The innermost frame of thread 1: (id, routine, line).
     fn top_frame(&mut self, thread: u64) -> (i64, String, u64) {
         let trace = self.ok("stackTrace", json!({"threadId": thread}));
@@ -211,9 +224,13 @@ impl Client {
     }
 
     fn launch_with_breakpoints(&mut self, file: &str, points: Value) -> Value {
+        self.launch(json!({"program": "/dap"}), file, points)
+    }
+
+    fn launch(&mut self, arguments: Value, file: &str, points: Value) -> Value {
         let init = self.ok("initialize", json!({"adapterID": "rapid"}));
         assert_eq!(init["supportsStepBack"], true);
-        self.ok("launch", json!({"program": "/dap"}));
+        self.ok("launch", arguments);
         self.event("initialized");
         let set = self.ok("setBreakpoints", json!({"source": {"path": file}, "breakpoints": points}));
         self.ok("configurationDone", json!({}));
@@ -227,7 +244,7 @@ fn value_of<'v>(vars: &'v [(String, String, i64)], name: &str) -> &'v (String, S
 
 #[test]
 fn a_whole_session_on_two_tasks() {
-    let mut client = Client::start();
+    let mut client = Client::start(two_tasks());
     let at_call = line_of(ROBOT, "Helper 5;");
     let set = client.launch_with_breakpoints("/dap/T_ROB1/MainModule.mod", json!([{"line": at_call}]));
     assert_eq!(set["breakpoints"][0]["verified"], true);
@@ -314,7 +331,7 @@ fn a_whole_session_on_two_tasks() {
 
 #[test]
 fn a_conditional_breakpoint_stops_only_where_it_holds() {
-    let mut client = Client::start();
+    let mut client = Client::start(two_tasks());
     let line = line_of(OTHER, "ticks := ticks + 1;");
     client.launch_with_breakpoints("/dap/T_OTHER/Other.mod", json!([{"line": line, "condition": "ticks = 3"}]));
     let (stopped, _) = client.event("stopped");
@@ -323,5 +340,50 @@ fn a_conditional_breakpoint_stops_only_where_it_holds() {
     assert_eq!((at, client.evaluate(frame, "ticks")), (line, "3".to_owned()));
     let failed = client.request("evaluate", json!({"expression": "Abs(ticks)", "frameId": frame}));
     assert!(failed["message"].as_str().unwrap_or_default().contains("not supported yet"), "{failed}");
+    client.ok("disconnect", json!({}));
+}
+
+const SPIN: &str = "MODULE Spin
+  VAR num n := 0;
+  VAR num answer := 0;
+  PROC main()
+    TPReadNum answer, \"How many?\";
+    TPWrite \"got \" \\Num:=answer;
+    WHILE TRUE DO
+      n := n + 1;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn a_dialog_is_answered_from_the_console_and_pause_stops_a_loop() {
+    let mut client = Client::start(Program(vec![("T_ROB1", "/dap/Spin.mod", SPIN)]));
+    client.launch(json!({"program": "/dap", "stopOnEntry": true}), "/dap/Spin.mod", json!([]));
+    let (stopped, _) = client.event("stopped");
+    assert_eq!(stopped["reason"], "entry");
+    let (frame, routine, line) = client.top_frame(1);
+    assert_eq!((routine.as_str(), line), ("main", line_of(SPIN, "TPReadNum")));
+    // Nothing precedes main's first statement: RAPID refuses the step backward.
+    assert_eq!(client.request("stepBack", json!({"threadId": 1}))["success"], false);
+    // A routine's data cannot be written yet; the refusal says so.
+    let scopes = client.ok("scopes", json!({"frameId": frame}));
+    let locals = scopes["scopes"][0]["variablesReference"].as_i64().unwrap();
+    let refused = client.request("setVariable", json!({"variablesReference": locals, "name": "x", "value": "1"}));
+    assert!(refused["message"].as_str().unwrap_or_default().contains("not supported yet"), "{refused}");
+
+    client.ok("continue", json!({"threadId": 1}));
+    client.output_with("How many?");
+    let answered = client.ok("evaluate", json!({"expression": ":answer 3", "context": "repl"}));
+    assert_eq!(answered["result"], "answered \"How many?\"");
+    client.output_with("got 3");
+
+    client.ok("pause", json!({"threadId": 1}));
+    let (stopped, _) = client.event("stopped");
+    assert_eq!((stopped["reason"].as_str(), stopped["threadId"].as_u64()), (Some("pause"), Some(1)));
+    let (frame, _, line) = client.top_frame(1);
+    assert!(line == line_of(SPIN, "WHILE TRUE") || line == line_of(SPIN, "n := n + 1;"), "paused at line {line}");
+    assert_eq!(client.evaluate(frame, "answer"), "3");
+    assert_eq!(client.evaluate(frame, "n > 0"), "TRUE");
     client.ok("disconnect", json!({}));
 }
