@@ -29,6 +29,8 @@ pub(crate) enum Command {
     DumpIr(DumpIrArgs),
     /// Serve the Language Server Protocol over stdin/stdout (for editors).
     Lsp(LspArgs),
+    /// Serve the Debug Adapter Protocol over stdin/stdout (for debuggers).
+    Dap(LspArgs),
 }
 
 #[derive(Debug, Args)]

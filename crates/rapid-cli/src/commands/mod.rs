@@ -2,6 +2,7 @@
 
 mod check;
 mod codes;
+mod dap;
 mod dump_ir;
 mod fmt;
 mod fmt_config;
@@ -54,6 +55,7 @@ pub(crate) fn run(cli: Cli) -> anyhow::Result<ExitStatus> {
         Command::Serve(args) => serve::run(&args),
         Command::Codes => codes::run(),
         Command::Lsp(_) => lsp::run(),
+        Command::Dap(_) => dap::run(),
         Command::Fmt(args) => fmt::run(&args),
         Command::DumpIr(args) => dump_ir::run(&args),
     }

@@ -119,7 +119,7 @@ fn boot_closure(
 
 /// A task's name, the module files it was loaded from, and its persistents' values
 /// at boot as RAPID literals (by index in `Loaded::persistents`).
-type TaskFiles = (String, Vec<SourceInput>, Vec<Option<String>>);
+pub(super) type TaskFiles = (String, Vec<SourceInput>, Vec<Option<String>>);
 
 /// Each persistent's value now, as RAPID literal text.
 fn pers_literals(loaded: &rapid_vm::Loaded) -> Vec<Option<String>> {
@@ -135,6 +135,17 @@ fn pers_literals(loaded: &rapid_vm::Loaded) -> Vec<Option<String>> {
 // Not configured as `rapid run` does: a stimulus, --virtual-io, --robot; the POWER_ON
 // and START event routines do not run (the program is started by a client).
 fn assemble(paths: &[PathBuf], start_joints: Option<[f64; 6]>) -> Result<(Controller, Vec<TaskFiles>), String> {
+    assemble_with(paths, start_joints, &mut |_| Ok(None), 0)
+}
+
+/// [`assemble`] with a stimulus read against the system's I/O and the cycles each
+/// NORMAL task runs (0: continuous; `rapid dap` debugs one cycle, as `rapid run` runs).
+pub(super) fn assemble_with(
+    paths: &[PathBuf],
+    start_joints: Option<[f64; 6]>,
+    stimulus: &mut boot::system::ReadStimulus<'_>,
+    cycles: u64,
+) -> Result<(Controller, Vec<TaskFiles>), String> {
     let first = inputs::collect(paths).map_err(|e| format!("{e:#}"))?;
     config_errors(&first)?;
     let name = first.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
@@ -167,10 +178,10 @@ fn assemble(paths: &[PathBuf], start_joints: Option<[f64; 6]>) -> Result<(Contro
         program.vm.resources_mut().sockets.set_cooperative(true);
         loaded.push((spec.clone(), program));
     }
-    let options = boot::system::BootOptions { alone: false, cycles: 0, auto: true, ..Default::default() };
+    let options = boot::system::BootOptions { alone: false, cycles, auto: true, ..Default::default() };
     let mut cell = collected[0].1.cell();
     cell.start_joints = start_joints.or(cell.start_joints);
-    let booted = boot::system::boot(loaded, Some(&sys), cell, &options, &mut |_| Ok(None));
+    let booted = boot::system::boot(loaded, Some(&sys), cell, &options, stimulus);
     let booted = booted.map_err(|e| match e {
         boot::system::BootError::Refused(m)
         | boot::system::BootError::UnknownModel(m)

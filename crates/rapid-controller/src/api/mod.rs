@@ -14,11 +14,13 @@
 //! name), `pendant` (the `Host` the tasks run with), `stream` (subscriptions),
 //! `exec` (run, clock policies, start/stop, program pointers, call stacks), `panel`
 //! (motors, run mode, the robots' positions, the file devices' folder), `modules`
-//! (list, load, unload a task's modules).
+//! (list, load, unload a task's modules), `inspect` (values as trees, expressions
+//! evaluated in a frame).
 
 pub mod data;
 pub mod debug;
 mod exec;
+mod inspect;
 mod modules;
 pub mod panel;
 pub mod pendant;
@@ -30,6 +32,7 @@ pub use crate::run::ClockPolicy;
 pub use data::{DataInfo, DataValue};
 pub use debug::{BreakpointHit, Location, StepKind};
 pub use exec::{RunOutcome, StackFrame, StartFrom, TaskView, Until};
+pub use inspect::ValueTree;
 pub use panel::MechUnitView;
 pub use pendant::PendingPrompt;
 pub use stream::{Batch, Change, Subscription};

@@ -1,0 +1,612 @@
+//! Requests, responses and events: the adapter's state between messages and how
+//! each request maps onto the session (threads are the controller's tasks, their
+//! ids the task's position plus one; a frame id packs the task and the frame's
+//! depth; variables references are handles valid while the program stands still).
+//!
+//! The program runs in slices ([`Adapter::advance`]) between requests; what the
+//! session reports (a breakpoint, a step done, the end) becomes a `stopped` or
+//! `terminated` event, and the change stream's pendant lines and dialogs become
+//! `output` events.
+
+use std::collections::{HashMap, VecDeque};
+use std::path::{Path, PathBuf};
+
+use rapid_controller::api::{ApiError, Change, RunOutcome, Session, StartFrom, StepKind, Subscription, ValueTree};
+use rapid_controller::StopKind;
+use serde_json::{json, Value};
+
+use crate::vars::{child_path, Handle, Handles};
+use crate::{LaunchArgs, Launcher};
+
+/// Statements one slice of [`Adapter::advance`] runs (all tasks together).
+const SLICE: u64 = 5_000;
+
+/// Frames per task a frame id can tell apart.
+const FRAMES_PER_TASK: i64 = 100_000;
+
+/// A request's failure, shown to the user.
+type Failure = String;
+
+/// The debug session's state.
+pub(crate) struct Adapter<'l> {
+    launcher: &'l dyn Launcher,
+    session: Option<Session>,
+    subscription: Option<Subscription>,
+    seq: i64,
+    outgoing: Vec<Value>,
+    /// The program runs (or a step is carried out): the loop advances it.
+    running: bool,
+    /// Why the program will have stopped when it next stands still, and in which task.
+    stop_reason: Option<(&'static str, usize)>,
+    /// The program was started once (the first start is from Main).
+    started: bool,
+    stop_on_entry: bool,
+    /// Breakpoints by file (as the client named it): their lines and conditions.
+    breakpoints: HashMap<String, Vec<(u32, Option<String>)>>,
+    handles: Handles,
+    answers: VecDeque<String>,
+    done: bool,
+}
+
+impl<'l> Adapter<'l> {
+    pub(crate) fn new(launcher: &'l dyn Launcher) -> Adapter<'l> {
+        Adapter {
+            launcher,
+            session: None,
+            subscription: None,
+            seq: 0,
+            outgoing: Vec::new(),
+            running: false,
+            stop_reason: None,
+            started: false,
+            stop_on_entry: false,
+            breakpoints: HashMap::new(),
+            handles: Handles::default(),
+            answers: VecDeque::new(),
+            done: false,
+        }
+    }
+
+    pub(crate) fn is_running(&self) -> bool {
+        self.running
+    }
+
+    /// The client disconnected: the loop ends.
+    pub(crate) fn is_done(&self) -> bool {
+        self.done
+    }
+
+    /// The messages to write, in order.
+    pub(crate) fn take_outgoing(&mut self) -> Vec<Value> {
+        std::mem::take(&mut self.outgoing)
+    }
+
+    /// Handles one message from the client (only requests are expected).
+    pub(crate) fn handle(&mut self, message: &Value) {
+        if message["type"] != "request" {
+            return;
+        }
+        let command = message["command"].as_str().unwrap_or_default().to_owned();
+        let args = &message["arguments"];
+        let outcome = self.request(&command, args);
+        let request_seq = message["seq"].as_i64().unwrap_or(0);
+        let response = match outcome {
+            Ok(body) => json!({"type": "response", "request_seq": request_seq, "success": true,
+                "command": command, "body": body}),
+            Err(why) => json!({"type": "response", "request_seq": request_seq, "success": false,
+                "command": command, "message": why, "body": {"error": {"id": 1, "format": why}}}),
+        };
+        self.send(response);
+        self.after(&command);
+    }
+
+    fn request(&mut self, command: &str, args: &Value) -> Result<Value, Failure> {
+        match command {
+            "initialize" => Ok(capabilities()),
+            "launch" => self.launch(args),
+            "setBreakpoints" => self.set_breakpoints(args),
+            "setExceptionBreakpoints" => Ok(json!({"breakpoints": []})),
+            "configurationDone" => Ok(Value::Null),
+            "threads" => self.threads(),
+            "stackTrace" => self.stack_trace(args),
+            "scopes" => self.scopes(args),
+            "variables" => self.variables(args),
+            "setVariable" => self.set_variable(args),
+            "evaluate" => self.evaluate(args),
+            "continue" => self.resume().map(|()| json!({"allThreadsContinued": true})),
+            "next" => self.step(args, StepKind::Over),
+            "stepIn" => self.step(args, StepKind::Into),
+            "stepOut" => self.step(args, StepKind::Out),
+            "stepBack" => self.step_back(args),
+            "pause" => self.pause(args),
+            "rapidAnswer" => self.answer(args),
+            "terminate" | "disconnect" => {
+                self.running = false;
+                Ok(Value::Null)
+            }
+            other => Err(format!("the request `{other}` is not supported")),
+        }
+    }
+
+    /// What follows a request's response: the `initialized` event after launch, the
+    /// program's start after the configuration, the end after a disconnect.
+    fn after(&mut self, command: &str) {
+        match command {
+            "launch" if self.session.is_some() => self.event("initialized", Value::Null),
+            "configurationDone" if self.session.is_some() => self.configured(),
+            "terminate" => {
+                self.event("terminated", Value::Null);
+            }
+            "disconnect" => self.done = true,
+            _ => {}
+        }
+    }
+
+    fn send(&mut self, mut message: Value) {
+        self.seq += 1;
+        message["seq"] = json!(self.seq);
+        self.outgoing.push(message);
+    }
+
+    fn event(&mut self, event: &str, body: Value) {
+        self.send(json!({"type": "event", "event": event, "body": body}));
+    }
+
+    fn output(&mut self, category: &str, text: String) {
+        self.event("output", json!({"category": category, "output": text}));
+    }
+
+    fn session(&mut self) -> Result<&mut Session, Failure> {
+        self.session.as_mut().ok_or_else(|| "no program is launched".to_owned())
+    }
+
+    fn launch(&mut self, args: &Value) -> Result<Value, Failure> {
+        let program: Vec<PathBuf> = match &args["program"] {
+            Value::String(path) => vec![PathBuf::from(path)],
+            Value::Array(paths) => paths.iter().filter_map(Value::as_str).map(PathBuf::from).collect(),
+            _ => Vec::new(),
+        };
+        if program.is_empty() {
+            return Err("launch needs `program`: a module, folder, backup or manifest".to_owned());
+        }
+        let path = |key: &str| args[key].as_str().map(PathBuf::from);
+        let launch = LaunchArgs {
+            program,
+            stimulus: path("stimulus"),
+            tp_input: path("tpInput"),
+            stop_on_entry: args["stopOnEntry"].as_bool().unwrap_or(false),
+        };
+        let launched = self.launcher.launch(&launch)?;
+        let mut session = launched.session;
+        self.subscription = Some(session.subscribe());
+        self.session = Some(session);
+        self.answers = launched.answers.into();
+        self.stop_on_entry = launch.stop_on_entry;
+        Ok(Value::Null)
+    }
+
+    /// The configuration is done: the program starts (or stands at its entry).
+    fn configured(&mut self) {
+        if self.stop_on_entry {
+            self.stopped("entry", 0);
+            return;
+        }
+        if let Err(why) = self.resume() {
+            self.output("stderr", format!("the program cannot start: {why}\n"));
+        }
+    }
+
+    fn set_breakpoints(&mut self, args: &Value) -> Result<Value, Failure> {
+        let given = args["source"]["path"].as_str().ok_or("setBreakpoints needs `source.path`")?.to_owned();
+        let file = canonical(&given);
+        let wanted: Vec<(u32, Option<String>)> = args["breakpoints"]
+            .as_array()
+            .map(|list| {
+                list.iter()
+                    .filter_map(|b| {
+                        let line = u32::try_from(b["line"].as_u64()?).ok()?;
+                        let condition = b["condition"].as_str().filter(|c| !c.trim().is_empty()).map(str::to_owned);
+                        Some((line, condition))
+                    })
+                    .collect()
+            })
+            .unwrap_or_default();
+        self.session()?;
+        for (line, _) in self.breakpoints.remove(&file).unwrap_or_default() {
+            self.session()?.clear_breakpoint(&file, line);
+        }
+        let mut answered = Vec::new();
+        let mut kept = Vec::new();
+        for (line, condition) in wanted {
+            match self.session()?.set_breakpoint(&file, line) {
+                Ok(at) => {
+                    let line = at.first().map_or(line, |l| l.line);
+                    answered.push(json!({"verified": true, "line": line}));
+                    kept.push((line, condition));
+                }
+                Err(why) => answered.push(json!({"verified": false, "line": line, "message": why.to_string()})),
+            }
+        }
+        self.breakpoints.insert(file, kept);
+        Ok(json!({"breakpoints": answered}))
+    }
+
+    fn threads(&mut self) -> Result<Value, Failure> {
+        let tasks = self.session()?.tasks();
+        let threads: Vec<Value> =
+            tasks.iter().enumerate().map(|(at, t)| json!({"id": at + 1, "name": t.name})).collect();
+        Ok(json!({"threads": threads}))
+    }
+
+    /// The name of the task thread `id` stands for.
+    fn task_of_thread(&mut self, id: i64) -> Result<String, Failure> {
+        let tasks = self.session()?.tasks();
+        let at = usize::try_from(id - 1).map_err(|_| format!("no thread {id}"))?;
+        tasks.get(at).map(|t| t.name.clone()).ok_or_else(|| format!("no thread {id}"))
+    }
+
+    /// The task and frame a frame id names.
+    fn frame_of(&mut self, id: i64) -> Result<(String, usize), Failure> {
+        let task = self.task_of_thread(id / FRAMES_PER_TASK)?;
+        Ok((task, (id % FRAMES_PER_TASK) as usize))
+    }
+
+    fn stack_trace(&mut self, args: &Value) -> Result<Value, Failure> {
+        let thread = args["threadId"].as_i64().ok_or("stackTrace needs `threadId`")?;
+        let task = self.task_of_thread(thread)?;
+        let stack = self.session()?.call_stack(&task).map_err(|e| e.to_string())?;
+        let start = args["startFrame"].as_u64().unwrap_or(0) as usize;
+        let levels = args["levels"].as_u64().filter(|&n| n > 0).map_or(stack.len(), |n| n as usize);
+        let frames: Vec<Value> = stack
+            .iter()
+            .enumerate()
+            .skip(start)
+            .take(levels)
+            .map(|(depth, frame)| {
+                let name = match frame.handler {
+                    Some(handler) => format!("{} ({handler})", frame.at.routine),
+                    None => frame.at.routine.clone(),
+                };
+                let file = absolute(&frame.at.file);
+                let source_name =
+                    Path::new(&file).file_name().map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+                json!({"id": thread * FRAMES_PER_TASK + depth as i64, "name": name,
+                    "source": {"name": source_name, "path": file},
+                    "line": frame.at.line, "column": frame.at.column})
+            })
+            .collect();
+        Ok(json!({"stackFrames": frames, "totalFrames": stack.len()}))
+    }
+
+    fn scopes(&mut self, args: &Value) -> Result<Value, Failure> {
+        let (task, frame) = self.frame_of(args["frameId"].as_i64().ok_or("scopes needs `frameId`")?)?;
+        let has_io = self.session()?.controller().io_system().is_some();
+        let mut scopes = vec![
+            ("Locals", self.handles.add(Handle::Locals { task: task.clone(), frame })),
+            ("Module data", self.handles.add(Handle::ModuleData { task: task.clone() })),
+            ("Persistents", self.handles.add(Handle::Persistents { task })),
+        ];
+        if has_io {
+            scopes.push(("Signals", self.handles.add(Handle::Signals)));
+        }
+        let scopes: Vec<Value> = scopes
+            .into_iter()
+            .map(|(name, reference)| json!({"name": name, "variablesReference": reference, "expensive": false}))
+            .collect();
+        Ok(json!({"scopes": scopes}))
+    }
+
+    fn variables(&mut self, args: &Value) -> Result<Value, Failure> {
+        let reference = args["variablesReference"].as_i64().ok_or("variables needs `variablesReference`")?;
+        let handle = self.handles.get(reference).cloned().ok_or_else(|| format!("no variables {reference}"))?;
+        let mut variables = Vec::new();
+        match handle {
+            Handle::Locals { task, frame } => {
+                for tree in self.session()?.frame_trees(&task, frame).map_err(|e| e.to_string())? {
+                    variables.push(self.variable(tree, None));
+                }
+            }
+            Handle::ModuleData { task } | Handle::Persistents { task } => {
+                let persistents = matches!(self.handles.get(reference), Some(Handle::Persistents { .. }));
+                let data = self.session()?.list_data(&task).map_err(|e| e.to_string())?;
+                for datum in data.iter().filter(|d| (d.kind == "PERS") == persistents) {
+                    let session = self.session()?;
+                    let Ok(tree) = session.data_tree(&task, &datum.module, &datum.name) else { continue };
+                    let path = format!("{task}/{}/{}", datum.module, datum.name);
+                    variables.push(self.variable(tree, Some(path)));
+                }
+            }
+            Handle::Signals => {
+                let names: Vec<String> = self
+                    .session()?
+                    .controller()
+                    .io_system()
+                    .map(|io| io.defs().iter().map(|d| d.name.clone()).collect())
+                    .unwrap_or_default();
+                for name in names {
+                    let value = self.session()?.signal(&name).map_err(|e| e.to_string())?;
+                    variables.push(json!({"name": name, "value": number_text(value), "variablesReference": 0}));
+                }
+            }
+            Handle::Tree { tree, path } => {
+                for child in tree.children {
+                    let child_path = path.as_deref().map(|p| child_path(p, &child.name));
+                    variables.push(self.variable(child, child_path));
+                }
+            }
+        }
+        Ok(json!({"variables": variables}))
+    }
+
+    /// A variable of the response, expandable when its value has parts.
+    fn variable(&mut self, tree: ValueTree, path: Option<String>) -> Value {
+        let (name, value, type_name) = (tree.name.clone(), tree.value.clone(), tree.type_name.clone());
+        let reference = match tree.children.is_empty() {
+            true => 0,
+            false => self.handles.add(Handle::Tree { tree, path }),
+        };
+        json!({"name": name, "value": value, "type": type_name, "variablesReference": reference})
+    }
+
+    fn set_variable(&mut self, args: &Value) -> Result<Value, Failure> {
+        let reference = args["variablesReference"].as_i64().ok_or("setVariable needs `variablesReference`")?;
+        let name = args["name"].as_str().ok_or("setVariable needs `name`")?.to_owned();
+        let value = args["value"].as_str().ok_or("setVariable needs `value`")?.to_owned();
+        let handle = self.handles.get(reference).cloned().ok_or_else(|| format!("no variables {reference}"))?;
+        let path = match handle {
+            Handle::Locals { .. } | Handle::Tree { path: None, .. } => {
+                return Err(ApiError::Unsupported("writing a routine's data from the debugger".into()).to_string())
+            }
+            Handle::Signals => {
+                let number: f64 = value.trim().parse().map_err(|_| format!("`{value}` is no signal value"))?;
+                self.session()?.set_signal(&name, number).map_err(|e| e.to_string())?;
+                let now = self.session()?.signal(&name).map_err(|e| e.to_string())?;
+                return Ok(json!({"value": number_text(now)}));
+            }
+            Handle::ModuleData { task } | Handle::Persistents { task } => {
+                let data = self.session()?.list_data(&task).map_err(|e| e.to_string())?;
+                let datum = data.iter().find(|d| d.name.eq_ignore_ascii_case(&name)).ok_or("no such data")?;
+                format!("{task}/{}/{}", datum.module, datum.name)
+            }
+            Handle::Tree { path: Some(path), .. } => child_path(&path, &name),
+        };
+        let session = self.session()?;
+        session.write_data(&path, &value).map_err(|e| e.to_string())?;
+        let now = session.read_data(&path).map_err(|e| e.to_string())?;
+        // What the client showed of the program's data is out of date.
+        self.event("invalidated", json!({"areas": ["variables"]}));
+        Ok(json!({"value": now.value}))
+    }
+
+    fn evaluate(&mut self, args: &Value) -> Result<Value, Failure> {
+        let expression = args["expression"].as_str().ok_or("evaluate needs `expression`")?.trim().to_owned();
+        if let Some(command) = expression.strip_prefix(':') {
+            return self.console_command(command.trim());
+        }
+        let (task, frame) = match args["frameId"].as_i64() {
+            Some(id) => self.frame_of(id)?,
+            None => (self.task_of_thread(1)?, 0),
+        };
+        let tree = self.session()?.evaluate(&task, frame, &expression).map_err(|e| e.to_string())?;
+        let (value, type_name) = (tree.value.clone(), tree.type_name.clone());
+        let reference = match tree.children.is_empty() {
+            true => 0,
+            false => self.handles.add(Handle::Tree { tree, path: None }),
+        };
+        Ok(json!({"result": value, "type": type_name, "variablesReference": reference}))
+    }
+
+    /// The debug console's commands (`:answer TEXT`, `:prompts`): a dialog of the
+    /// pendant answered from the console.
+    fn console_command(&mut self, command: &str) -> Result<Value, Failure> {
+        let (word, rest) = command.split_once(char::is_whitespace).unwrap_or((command, ""));
+        match word {
+            "answer" => {
+                let prompt = self.session()?.prompts().into_iter().next().ok_or("no pendant dialog waits")?;
+                self.session()?.answer(prompt.id, rest.trim()).map_err(|e| e.to_string())?;
+                Ok(json!({"result": format!("answered \"{}\"", prompt.text), "variablesReference": 0}))
+            }
+            "prompts" => {
+                let prompts = self.session()?.prompts();
+                let lines: Vec<String> = prompts.iter().map(|p| format!("{} [{}] {}", p.id, p.task, p.text)).collect();
+                Ok(json!({"result": lines.join("\n"), "variablesReference": 0}))
+            }
+            _ => Err(format!("unknown console command `:{word}` (:answer TEXT, :prompts)")),
+        }
+    }
+
+    /// `rapidAnswer {id?, text}`: answers a pendant dialog (the oldest without `id`).
+    fn answer(&mut self, args: &Value) -> Result<Value, Failure> {
+        let text = args["text"].as_str().ok_or("rapidAnswer needs `text`")?.to_owned();
+        let id = match args["id"].as_u64() {
+            Some(id) => id,
+            None => self.session()?.prompts().first().map(|p| p.id).ok_or("no pendant dialog waits")?,
+        };
+        self.session()?.answer(id, &text).map_err(|e| e.to_string())?;
+        Ok(Value::Null)
+    }
+
+    /// Continues the stopped program (from Main the first time, as `rapid run` starts).
+    fn resume(&mut self) -> Result<(), Failure> {
+        let from = if self.started { StartFrom::Pointer } else { StartFrom::Main };
+        self.session()?.start(from).map_err(|e| e.to_string())?;
+        self.started = true;
+        self.go_on("pause", 0);
+        Ok(())
+    }
+
+    /// The program runs on: handles are forgotten, a stop is reported as `reason`.
+    fn go_on(&mut self, reason: &'static str, task: usize) {
+        self.handles.clear();
+        self.running = true;
+        self.stop_reason = Some((reason, task));
+    }
+
+    fn step(&mut self, args: &Value, kind: StepKind) -> Result<Value, Failure> {
+        let thread = args["threadId"].as_i64().ok_or("a step needs `threadId`")?;
+        let task = self.task_of_thread(thread)?;
+        self.session()?.step(&task, kind).map_err(|e| e.to_string())?;
+        self.started = true;
+        self.go_on("step", (thread - 1) as usize);
+        Ok(Value::Null)
+    }
+
+    /// One step backward (§1.21), done at once: the program stands stopped after it.
+    fn step_back(&mut self, args: &Value) -> Result<Value, Failure> {
+        let thread = args["threadId"].as_i64().ok_or("stepBack needs `threadId`")?;
+        let task = self.task_of_thread(thread)?;
+        let done = self.session()?.step_backward(&task).map_err(|e| e.to_string())?;
+        if let rapid_vm::BackStep::RanBackwardHandler(routine) = done {
+            self.output("console", format!("{routine}'s BACKWARD handler ran\n"));
+        }
+        self.handles.clear();
+        self.forward_changes();
+        self.stopped("step", (thread - 1) as usize);
+        Ok(Value::Null)
+    }
+
+    fn pause(&mut self, args: &Value) -> Result<Value, Failure> {
+        let thread = args["threadId"].as_i64().unwrap_or(1);
+        if !self.running {
+            return Ok(Value::Null);
+        }
+        self.session()?.stop(StopKind::Stop).map_err(|e| e.to_string())?;
+        self.stop_reason = Some(("pause", usize::try_from(thread - 1).unwrap_or(0)));
+        Ok(Value::Null)
+    }
+
+    /// Runs one slice of the program and reports what became of it.
+    pub(crate) fn advance(&mut self) {
+        let Some(session) = self.session.as_mut() else {
+            self.running = false;
+            return;
+        };
+        let outcome = session.run(SLICE);
+        self.forward_changes();
+        match outcome {
+            RunOutcome::Running => {}
+            RunOutcome::Sleep(wait) => std::thread::sleep(wait.min(std::time::Duration::from_millis(20))),
+            RunOutcome::Breakpoint(hit) => self.at_breakpoint(&hit),
+            RunOutcome::Stopped => {
+                let (reason, task) = self.stop_reason.unwrap_or(("pause", 0));
+                self.stopped(reason, task);
+            }
+            RunOutcome::Ended => {
+                self.running = false;
+                self.event("terminated", Value::Null);
+                self.event("exited", json!({"exitCode": 0}));
+            }
+        }
+    }
+
+    /// The program stopped at a breakpoint: reported when its condition holds, else
+    /// the program goes on.
+    fn at_breakpoint(&mut self, hit: &rapid_controller::api::BreakpointHit) {
+        let task = self
+            .session
+            .as_ref()
+            .map_or(0, |s| s.tasks().iter().position(|t| t.name.eq_ignore_ascii_case(&hit.at.task)).unwrap_or(0));
+        let condition = self
+            .breakpoints
+            .get(&hit.file)
+            .and_then(|points| points.iter().find(|(line, _)| *line == hit.line))
+            .and_then(|(_, condition)| condition.clone());
+        if let Some(condition) = condition {
+            let holds = self.session.as_mut().map(|s| s.evaluate(&hit.at.task, 0, &condition));
+            match holds {
+                Some(Ok(tree)) if tree.value == "FALSE" => {
+                    if let Err(why) =
+                        self.session().and_then(|s| s.start(StartFrom::Pointer).map_err(|e| e.to_string()))
+                    {
+                        self.output("stderr", format!("the program cannot go on: {why}\n"));
+                        self.stopped("breakpoint", task);
+                    }
+                    return;
+                }
+                Some(Ok(tree)) if tree.value == "TRUE" => {}
+                Some(Ok(tree)) => {
+                    self.output("stderr", format!("breakpoint condition `{condition}` is no bool: {}\n", tree.value));
+                }
+                Some(Err(why)) => self.output("stderr", format!("breakpoint condition `{condition}`: {why}\n")),
+                None => {}
+            }
+        }
+        self.stopped("breakpoint", task);
+    }
+
+    fn stopped(&mut self, reason: &str, task: usize) {
+        self.running = false;
+        self.stop_reason = None;
+        self.handles.clear();
+        self.event("stopped", json!({"reason": reason, "threadId": task + 1, "allThreadsStopped": true}));
+    }
+
+    /// The pendant's lines and dialogs, and tasks that failed, as output events; a
+    /// dialog is answered from the launch's answers while they last.
+    fn forward_changes(&mut self) {
+        let (Some(session), Some(sub)) = (self.session.as_mut(), self.subscription) else { return };
+        let Ok(batch) = session.poll(sub) else { return };
+        for change in batch.changes {
+            match change {
+                Change::TpWrite { text } => self.output("stdout", format!("{text}\n")),
+                Change::PromptOpened { id, task, text } => self.prompt_opened(id, &task, &text),
+                Change::Task { task, state } if state.starts_with("ended: ") && state != "ended: cycle" => {
+                    self.output("stderr", format!("task {task} {state}\n"));
+                }
+                _ => {}
+            }
+        }
+    }
+
+    fn prompt_opened(&mut self, id: u64, task: &str, text: &str) {
+        if let Some(answer) = self.answers.pop_front() {
+            self.output("console", format!("[pendant {task}] {text} -> {answer} (from tpInput)\n"));
+            if let Some(session) = self.session.as_mut() {
+                let _ = session.answer(id, &answer);
+            }
+            return;
+        }
+        self.output(
+            "console",
+            format!("[pendant {task}] {text}\n  answer in the debug console with `:answer TEXT` (dialog {id})\n"),
+        );
+    }
+}
+
+/// What the adapter can do (the `initialize` response).
+fn capabilities() -> Value {
+    json!({
+        "supportsConfigurationDoneRequest": true,
+        "supportsConditionalBreakpoints": true,
+        "supportsSetVariable": true,
+        "supportsEvaluateForHovers": true,
+        "supportsStepBack": true,
+        "supportsTerminateRequest": true,
+        "supportsSingleThreadExecutionRequests": false,
+    })
+}
+
+/// The path a breakpoint's file is known by: the file's canonical path, as the
+/// launcher loads modules (the text as given when the file cannot be found).
+fn canonical(path: &str) -> String {
+    std::fs::canonicalize(path).map_or_else(|_| path.to_owned(), |p| p.to_string_lossy().into_owned())
+}
+
+/// A loaded file's path made absolute for the client (relative to the adapter's
+/// working folder).
+fn absolute(path: &str) -> String {
+    let given = Path::new(path);
+    if given.is_absolute() {
+        return path.to_owned();
+    }
+    std::env::current_dir().map_or_else(|_| path.to_owned(), |d| d.join(given).to_string_lossy().into_owned())
+}
+
+/// A signal's value as RAPID writes a number (integers without a fraction).
+fn number_text(value: f64) -> String {
+    if value.fract() == 0.0 && value.abs() < 1e15 {
+        format!("{}", value as i64)
+    } else {
+        format!("{value}")
+    }
+}

@@ -1,0 +1,389 @@
+//! A whole debug session in-process: the adapter serves on a thread, a scripted
+//! client speaks the protocol to it over channels, on a two-task program.
+
+use std::collections::VecDeque;
+use std::io::{self, Read, Write};
+use std::sync::mpsc::{self, Receiver, Sender};
+use std::time::Duration;
+
+use rapid_controller::api::Session;
+use rapid_controller::{Controller, TaskSpec};
+use rapid_dap::{LaunchArgs, Launched, Launcher};
+use rapid_sema::SourceInput;
+use serde_json::{json, Value};
+
+const ROBOT: &str = "MODULE MainModule
+  RECORD part
+    num id;
+    string label;
+  ENDRECORD
+  VAR num count := 0;
+  VAR part item := [7, \"bolt\"];
+  PERS num total := 0;
+  PROC main()
+    count := 1;
+    Helper 5;
+    count := count + 1;
+    TPWrite \"count \" \\Num:=count;
+    Bump;
+    total := count;
+  ENDPROC
+  PROC Helper(num n)
+    VAR num twice;
+    twice := n * 2;
+    count := count + twice;
+  ENDPROC
+  PROC Bump()
+    count := count + 100;
+  BACKWARD
+    count := count - 100;
+  ENDPROC
+ENDMODULE
+";
+
+const OTHER: &str = "MODULE Other
+  VAR num ticks := 0;
+  PROC main()
+    WHILE ticks < 5 DO
+      ticks := ticks + 1;
+      WaitTime 0.1;
+    ENDWHILE
+    TPWrite \"other done\";
+  ENDPROC
+ENDMODULE
+";
+
+/// The 1-based line of `text` holding `needle`.
+fn line_of(text: &str, needle: &str) -> u64 {
+    text.lines().position(|l| l.contains(needle)).map(|at| at as u64 + 1).expect("the line is in the module")
+}
+
+/// Boots its tasks (name, module path, module text) from texts: the launch's paths
+/// are not read.
+struct Program(Vec<(&'static str, &'static str, &'static str)>);
+
+impl Launcher for Program {
+    fn launch(&self, _args: &LaunchArgs) -> Result<Launched, String> {
+        let options = rapid_sema::Options::default();
+        let mut tasks = Vec::new();
+        for (at, (name, path, text)) in self.0.iter().enumerate() {
+            let loaded = rapid_vm::load_with(&[SourceInput::from_text(*path, *text)], "main", &options)
+                .map_err(|e| format!("{path}: {e:?}"))?;
+            tasks.push((TaskSpec::normal(name, at == 0), loaded));
+        }
+        let controller = Controller::new(tasks, None).map_err(|e| format!("{e:?}"))?;
+        Ok(Launched { session: Session::new(controller), answers: Vec::new() })
+    }
+}
+
+fn two_tasks() -> Program {
+    Program(vec![("T_ROB1", "/dap/T_ROB1/MainModule.mod", ROBOT), ("T_OTHER", "/dap/T_OTHER/Other.mod", OTHER)])
+}
+
+/// The client's end of the adapter's streams.
+struct Client {
+    to_adapter: Sender<Vec<u8>>,
+    from_adapter: Receiver<Vec<u8>>,
+    buffer: Vec<u8>,
+    seq: i64,
+    /// Events received and not yet looked at.
+    events: VecDeque<Value>,
+}
+
+struct ChannelReader(Receiver<Vec<u8>>, VecDeque<u8>);
+
+impl Read for ChannelReader {
+    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+        while self.1.is_empty() {
+            match self.0.recv() {
+                Ok(bytes) => self.1.extend(bytes),
+                Err(_) => return Ok(0),
+            }
+        }
+        let n = buf.len().min(self.1.len());
+        for (slot, byte) in buf.iter_mut().zip(self.1.drain(..n)) {
+            *slot = byte;
+        }
+        Ok(n)
+    }
+}
+
+struct ChannelWriter(Sender<Vec<u8>>);
+
+impl Write for ChannelWriter {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        self.0.send(buf.to_vec()).map_err(|_| io::Error::from(io::ErrorKind::BrokenPipe))?;
+        Ok(buf.len())
+    }
+    fn flush(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+}
+
+impl Client {
+    fn start(program: Program) -> Client {
+        let (to_adapter, adapter_in) = mpsc::channel();
+        let (adapter_out, from_adapter) = mpsc::channel();
+        std::thread::spawn(move || {
+            let mut output = ChannelWriter(adapter_out);
+            let _ = rapid_dap::serve(ChannelReader(adapter_in, VecDeque::new()), &mut output, &program);
+        });
+        Client { to_adapter, from_adapter, buffer: Vec::new(), seq: 0, events: VecDeque::new() }
+    }
+
+    /// The next message, at most 20 s away.
+    fn next_message(&mut self) -> Value {
+        loop {
+            if let Some(end) = self.buffer.windows(4).position(|w| w == b"\r\n\r\n") {
+                let header = String::from_utf8_lossy(&self.buffer[..end]).to_string();
+                let length: usize = header.trim_start_matches("Content-Length: ").parse().expect("a length");
+                if self.buffer.len() >= end + 4 + length {
+                    let body: Vec<u8> = self.buffer.drain(..end + 4 + length).skip(end + 4).collect();
+                    return serde_json::from_slice(&body).expect("JSON");
+                }
+            }
+            let bytes = self.from_adapter.recv_timeout(Duration::from_secs(20)).expect("the adapter answers");
+            self.buffer.extend(bytes);
+        }
+    }
+
+    /// Sends a request and returns its response (events met meanwhile are kept).
+    fn request(&mut self, command: &str, arguments: Value) -> Value {
+        self.seq += 1;
+        let body = json!({"seq": self.seq, "type": "request", "command": command, "arguments": arguments}).to_string();
+        let framed = format!("Content-Length: {}\r\n\r\n{body}", body.len());
+        self.to_adapter.send(framed.into_bytes()).expect("the adapter reads");
+        loop {
+            let message = self.next_message();
+            match message["type"].as_str() {
+                Some("response") if message["request_seq"] == self.seq => return message,
+                Some("event") => self.events.push_back(message),
+                _ => {}
+            }
+        }
+    }
+
+    /// A request that must succeed: its body.
+    fn ok(&mut self, command: &str, arguments: Value) -> Value {
+        let response = self.request(command, arguments);
+        assert_eq!(response["success"], true, "{command}: {response}");
+        response["body"].clone()
+    }
+
+    /// Waits for event `name`; the output events passed on the way are returned too.
+    fn event(&mut self, name: &str) -> (Value, Vec<String>) {
+        let mut output = Vec::new();
+        loop {
+            let event = match self.events.pop_front() {
+                Some(event) => event,
+                None => self.next_message(),
+            };
+            if event["event"] == "output" {
+                output.push(event["body"]["output"].as_str().unwrap_or_default().to_owned());
+            }
+            if event["event"] == name {
+                return (event["body"].clone(), output);
+            }
+        }
+    }
+
+    /// Waits for an output event holding `needle`.
+    fn output_with(&mut self, needle: &str) {
+        loop {
+            let (event, _) = self.event("output");
+            if event["output"].as_str().unwrap_or_default().contains(needle) {
+                return;
+            }
+        }
+    }
+
+    /// The innermost frame of thread 1: (id, routine, line).
+    fn top_frame(&mut self, thread: u64) -> (i64, String, u64) {
+        let trace = self.ok("stackTrace", json!({"threadId": thread}));
+        let top = &trace["stackFrames"][0];
+        (top["id"].as_i64().unwrap(), top["name"].as_str().unwrap().to_owned(), top["line"].as_u64().unwrap())
+    }
+
+    fn evaluate(&mut self, frame: i64, expression: &str) -> String {
+        let body = self.ok("evaluate", json!({"expression": expression, "frameId": frame}));
+        body["result"].as_str().unwrap().to_owned()
+    }
+
+    /// The variables of `reference` as (name, value, reference).
+    fn variables(&mut self, reference: i64) -> Vec<(String, String, i64)> {
+        let body = self.ok("variables", json!({"variablesReference": reference}));
+        body["variables"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| {
+                let name = v["name"].as_str().unwrap().to_owned();
+                (name, v["value"].as_str().unwrap().to_owned(), v["variablesReference"].as_i64().unwrap())
+            })
+            .collect()
+    }
+
+    fn launch_with_breakpoints(&mut self, file: &str, points: Value) -> Value {
+        self.launch(json!({"program": "/dap"}), file, points)
+    }
+
+    fn launch(&mut self, arguments: Value, file: &str, points: Value) -> Value {
+        let init = self.ok("initialize", json!({"adapterID": "rapid"}));
+        assert_eq!(init["supportsStepBack"], true);
+        self.ok("launch", arguments);
+        self.event("initialized");
+        let set = self.ok("setBreakpoints", json!({"source": {"path": file}, "breakpoints": points}));
+        self.ok("configurationDone", json!({}));
+        set
+    }
+}
+
+fn value_of<'v>(vars: &'v [(String, String, i64)], name: &str) -> &'v (String, String, i64) {
+    vars.iter().find(|v| v.0 == name).unwrap_or_else(|| panic!("no variable {name} in {vars:?}"))
+}
+
+#[test]
+fn a_whole_session_on_two_tasks() {
+    let mut client = Client::start(two_tasks());
+    let at_call = line_of(ROBOT, "Helper 5;");
+    let set = client.launch_with_breakpoints("/dap/T_ROB1/MainModule.mod", json!([{"line": at_call}]));
+    assert_eq!(set["breakpoints"][0]["verified"], true);
+    let (stopped, _) = client.event("stopped");
+    assert_eq!((stopped["reason"].as_str(), stopped["threadId"].as_u64()), (Some("breakpoint"), Some(1)));
+
+    let threads = client.ok("threads", json!({}));
+    let names: Vec<&str> = threads["threads"].as_array().unwrap().iter().map(|t| t["name"].as_str().unwrap()).collect();
+    assert_eq!(names, ["T_ROB1", "T_OTHER"]);
+
+    let trace = client.ok("stackTrace", json!({"threadId": 1}));
+    let top = &trace["stackFrames"][0];
+    assert_eq!((top["name"].as_str(), top["line"].as_u64()), (Some("main"), Some(at_call)));
+    assert_eq!(top["source"]["path"], "/dap/T_ROB1/MainModule.mod");
+    let frame = top["id"].as_i64().unwrap();
+
+    // Module data: count is 1 (main's first statement ran), the record expands.
+    let scopes = client.ok("scopes", json!({"frameId": frame}));
+    let names: Vec<&str> = scopes["scopes"].as_array().unwrap().iter().map(|s| s["name"].as_str().unwrap()).collect();
+    assert_eq!(names, ["Locals", "Module data", "Persistents"]);
+    let module_ref = scopes["scopes"][1]["variablesReference"].as_i64().unwrap();
+    let data = client.variables(module_ref);
+    assert_eq!(value_of(&data, "count").1, "1");
+    let item = value_of(&data, "item").clone();
+    assert_eq!(item.1, "[7,\"bolt\"]");
+    let parts = client.variables(item.2);
+    assert_eq!(parts, [("id".to_owned(), "7".to_owned(), 0), ("label".to_owned(), "\"bolt\"".to_owned(), 0)]);
+    let pers_ref = scopes["scopes"][2]["variablesReference"].as_i64().unwrap();
+    assert_eq!(value_of(&client.variables(pers_ref), "total").1, "0");
+
+    // Set a datum and a record's component; evaluate with both.
+    let set = client.ok("setVariable", json!({"variablesReference": module_ref, "name": "count", "value": "41"}));
+    assert_eq!(set["value"], "41");
+    let set = client.ok("setVariable", json!({"variablesReference": item.2, "name": "id", "value": "9"}));
+    assert_eq!(set["value"], "9");
+    assert_eq!(client.evaluate(frame, "count + item.id"), "50");
+    assert_eq!(client.evaluate(frame, "item.label + \"s\""), "\"bolts\"");
+    let refused =
+        client.request("setVariable", json!({"variablesReference": module_ref, "name": "count", "value": "\"x\""}));
+    assert_eq!(refused["success"], false);
+
+    // Into Helper: its parameter and routine data are the frame's locals.
+    client.ok("stepIn", json!({"threadId": 1}));
+    assert_eq!(client.event("stopped").0["reason"], "step");
+    let (frame, routine, line) = client.top_frame(1);
+    assert_eq!((routine.as_str(), line), ("Helper", line_of(ROBOT, "twice := n * 2;")));
+    let scopes = client.ok("scopes", json!({"frameId": frame}));
+    let locals = client.variables(scopes["scopes"][0]["variablesReference"].as_i64().unwrap());
+    assert_eq!(value_of(&locals, "n").1, "5");
+    assert_eq!(value_of(&locals, "twice").1, "0");
+    assert_eq!(client.evaluate(frame, "n * 2 + count"), "51");
+
+    client.ok("next", json!({"threadId": 1}));
+    client.event("stopped");
+    assert_eq!(client.top_frame(1).2, line_of(ROBOT, "count := count + twice;"));
+    client.ok("stepOut", json!({"threadId": 1}));
+    client.event("stopped");
+    let (frame, routine, line) = client.top_frame(1);
+    assert_eq!((routine.as_str(), line), ("main", line_of(ROBOT, "count := count + 1;")));
+    assert_eq!(client.evaluate(frame, "count"), "51");
+
+    // Over the TPWrite: its line comes out; over Bump, then back over it.
+    client.ok("next", json!({"threadId": 1}));
+    client.event("stopped");
+    client.ok("next", json!({"threadId": 1}));
+    let (_, output) = client.event("stopped");
+    assert!(output.contains(&"count 52\n".to_owned()), "{output:?}");
+    client.ok("next", json!({"threadId": 1}));
+    client.event("stopped");
+    let (frame, _, line) = client.top_frame(1);
+    assert_eq!((line, client.evaluate(frame, "count")), (line_of(ROBOT, "total := count;"), "152".to_owned()));
+    client.ok("stepBack", json!({"threadId": 1}));
+    client.event("stopped");
+    let (frame, _, line) = client.top_frame(1);
+    assert_eq!((line, client.evaluate(frame, "count")), (line_of(ROBOT, "Bump;"), "52".to_owned()));
+
+    client.ok("continue", json!({"threadId": 1}));
+    let (_, output) = client.event("terminated");
+    // T_OTHER stood stopped with the program: its loop ends only now.
+    assert!(output.contains(&"other done\n".to_owned()), "{output:?}");
+    client.event("exited");
+    client.ok("disconnect", json!({}));
+}
+
+#[test]
+fn a_conditional_breakpoint_stops_only_where_it_holds() {
+    let mut client = Client::start(two_tasks());
+    let line = line_of(OTHER, "ticks := ticks + 1;");
+    client.launch_with_breakpoints("/dap/T_OTHER/Other.mod", json!([{"line": line, "condition": "ticks = 3"}]));
+    let (stopped, _) = client.event("stopped");
+    assert_eq!((stopped["reason"].as_str(), stopped["threadId"].as_u64()), (Some("breakpoint"), Some(2)));
+    let (frame, _, at) = client.top_frame(2);
+    assert_eq!((at, client.evaluate(frame, "ticks")), (line, "3".to_owned()));
+    let failed = client.request("evaluate", json!({"expression": "Abs(ticks)", "frameId": frame}));
+    assert!(failed["message"].as_str().unwrap_or_default().contains("not supported yet"), "{failed}");
+    client.ok("disconnect", json!({}));
+}
+
+const SPIN: &str = "MODULE Spin
+  VAR num n := 0;
+  VAR num answer := 0;
+  PROC main()
+    TPReadNum answer, \"How many?\";
+    TPWrite \"got \" \\Num:=answer;
+    WHILE TRUE DO
+      n := n + 1;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn a_dialog_is_answered_from_the_console_and_pause_stops_a_loop() {
+    let mut client = Client::start(Program(vec![("T_ROB1", "/dap/Spin.mod", SPIN)]));
+    client.launch(json!({"program": "/dap", "stopOnEntry": true}), "/dap/Spin.mod", json!([]));
+    let (stopped, _) = client.event("stopped");
+    assert_eq!(stopped["reason"], "entry");
+    let (frame, routine, line) = client.top_frame(1);
+    assert_eq!((routine.as_str(), line), ("main", line_of(SPIN, "TPReadNum")));
+    // Nothing precedes main's first statement: RAPID refuses the step backward.
+    assert_eq!(client.request("stepBack", json!({"threadId": 1}))["success"], false);
+    // A routine's data cannot be written yet; the refusal says so.
+    let scopes = client.ok("scopes", json!({"frameId": frame}));
+    let locals = scopes["scopes"][0]["variablesReference"].as_i64().unwrap();
+    let refused = client.request("setVariable", json!({"variablesReference": locals, "name": "x", "value": "1"}));
+    assert!(refused["message"].as_str().unwrap_or_default().contains("not supported yet"), "{refused}");
+
+    client.ok("continue", json!({"threadId": 1}));
+    client.output_with("How many?");
+    let answered = client.ok("evaluate", json!({"expression": ":answer 3", "context": "repl"}));
+    assert_eq!(answered["result"], "answered \"How many?\"");
+    client.output_with("got 3");
+
+    client.ok("pause", json!({"threadId": 1}));
+    let (stopped, _) = client.event("stopped");
+    assert_eq!((stopped["reason"].as_str(), stopped["threadId"].as_u64()), (Some("pause"), Some(1)));
+    let (frame, _, line) = client.top_frame(1);
+    assert!(line == line_of(SPIN, "WHILE TRUE") || line == line_of(SPIN, "n := n + 1;"), "paused at line {line}");
+    assert_eq!(client.evaluate(frame, "answer"), "3");
+    assert_eq!(client.evaluate(frame, "n > 0"), "TRUE");
+    client.ok("disconnect", json!({}));
+}
