@@ -248,3 +248,23 @@ fn a_system_output_for_a_task_or_robot_the_system_lacks_is_a_check_finding() {
     assert_eq!(text(&rapid_in(&dir, &["check", "cell"]).stdout), "checked 3 files: no problems found\n");
     assert_eq!(text(&rapid_in(&dir, &["run", "cell"]).stdout), "task 1\n");
 }
+
+#[test]
+fn a_manifests_system_output_for_a_task_it_lacks_is_found_in_its_io_file() {
+    // The manifest is the first configuration file, its `io` the second: the finding
+    // is in the I/O file, at the output's line (9), for check and run alike.
+    let dir = scratch("manifest_output");
+    let manifest =
+        "[system]\nio = \"eio.cfg\"\n\n[[task]]\nname = \"T_ROB1\"\ntype = \"NORMAL\"\nmodules = [\"M.mod\"]\n\
+                    motion = true\n";
+    let eio =
+        "EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n\n      -Name \"doExec\" -SignalType \"DO\"\n#\nSYSSIG_OUT:\n\n      \
+               -Status \"TaskExecuting\" -Signal \"doExec\" -Arg2 \"T_OTHER\"\n";
+    write_files(&dir, &[("p/rapid.toml", manifest), ("p/eio.cfg", eio), ("p/M.mod", MAIN_SAYS)]);
+    let out = rapid_in(&dir, &["check", "p"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
+    assert_eq!(locations(&text(&out.stdout)), ["p/eio.cfg:9:1"], "{}", text(&out.stdout));
+    let out = rapid_in(&dir, &["run", "p"]);
+    assert_eq!((out.status.code(), text(&out.stdout)), (Some(1), String::new()));
+    assert!(text(&out.stderr).contains("names task `T_OTHER`, which the system does not have"));
+}
