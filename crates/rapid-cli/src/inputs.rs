@@ -269,6 +269,7 @@ impl Collector {
         };
         if self.wanted_task.is_none() {
             self.note_task_folders(folder, tasks, sys.as_ref());
+            self.note_other_devices(sys.as_ref());
         }
         let has_folder = task.folder.is_dir();
         let modules = if has_folder { backup::task_modules(folder, &task.folder)? } else { Vec::new() };
@@ -362,6 +363,20 @@ impl Collector {
                  alone",
                 folder.display(),
                 names.join(", ")
+            ));
+        }
+    }
+
+    /// Says which task modules SYS.cfg loads from a device other than HOME
+    /// (`RELEASE:/options/…`: RobotWare's own, which no backup holds): they are left out.
+    fn note_other_devices(&mut self, sys: Option<&sys::Sys>) {
+        let Some(sys) = sys else { return };
+        let is_home = |file: &str| file.get(..5).is_some_and(|d| d.eq_ignore_ascii_case("HOME:"));
+        for module in sys.modules.iter().filter(|m| !is_home(&m.file)) {
+            self.notes.push(format!(
+                "SYS.cfg (line {}) loads `{}`, which is outside HOME (RELEASE: holds RobotWare's own modules) and \
+                 not in the backup: it is left out",
+                module.line, module.file
             ));
         }
     }

@@ -188,10 +188,15 @@ fn a_task_folder_sys_cfg_does_not_configure_is_named_in_a_note() {
     // RobotWare configures itself): not checked, not run, and said so.
     let dir = scratch("unconfigured_folder");
     let broken = "MODULE P\n  PROC main()\n    not_here;\n  ENDPROC\nENDMODULE\n";
+    // SYS.cfg also loads a module of RobotWare's own, which no backup holds (line 9:
+    // CAB_TASKS takes five lines, then `#`, the type line and a blank).
+    let sys = format!(
+        "{SYS_T_ROB1}#\nCAB_TASK_MODULES:\n\n      -File \"RELEASE:/options/gui/Screens.sys\" -ModName \"Screens\" -AllTask\n"
+    );
     write_files(
         &dir,
         &[
-            ("cell/SYSPAR/SYS.cfg", SYS_T_ROB1),
+            ("cell/SYSPAR/SYS.cfg", &sys),
             ("cell/BACKINFO/backinfo.txt", ">>TASK1: (T_ROB1,,)\n\n>>TASK2: (PSC_TASK,,)\n\n>>EOF:\n"),
             ("cell/RAPID/TASK1/PROGMOD/M.mod", MAIN_SAYS),
             ("cell/RAPID/TASK2/SYSMOD/P.sys", broken),
@@ -202,6 +207,8 @@ fn a_task_folder_sys_cfg_does_not_configure_is_named_in_a_note() {
         assert_eq!(out.status.code(), Some(0), "{command}: {}", text(&out.stdout));
         let stderr = text(&out.stderr);
         let note = "`cell/RAPID/TASK2` holds task PSC_TASK (backinfo.txt), which SYS.cfg does not configure";
+        assert!(stderr.contains(note), "{command}: {stderr}");
+        let note = "SYS.cfg (line 9) loads `RELEASE:/options/gui/Screens.sys`, which is outside HOME";
         assert!(stderr.contains(note), "{command}: {stderr}");
     }
 }
