@@ -13,6 +13,7 @@ mod glob;
 mod manifest;
 mod manifest_units;
 mod program_file;
+mod system_outputs;
 
 use std::fs;
 use std::io;
@@ -197,6 +198,8 @@ struct Collector {
     seen: FxHashSet<PathBuf>,
     notes: Vec<String>,
     unconfigured_tasks: Vec<String>,
+    /// For each file of `syspar`, its index in `configs`.
+    syspar_configs: Vec<usize>,
 }
 
 impl Collector {
@@ -270,6 +273,7 @@ impl Collector {
         };
         if self.wanted_task.is_none() {
             self.note_task_folders(folder, tasks, sys.as_ref());
+            self.note_other_devices(sys.as_ref());
         }
         let has_folder = task.folder.is_dir();
         let modules = if has_folder { backup::task_modules(folder, &task.folder)? } else { Vec::new() };
@@ -326,50 +330,11 @@ impl Collector {
         Ok(())
     }
 
-    /// The system outputs (`SYSSIG_OUT`) whose task (`-Arg2`) or mechanical unit
-    /// (`-Arg1`) the system lacks: `rapid run` refuses to start such a system
-    /// (`rapid_controller::ops`), so `rapid check` finds the same at the output's line.
-    /// The tasks are SYS.cfg's, or the one task read; the robots are those the tasks
-    /// move (`robots::numbers`), an external unit of MOC.cfg is refused as `rapid run`
-    /// refuses it (robots only).
+    /// The findings of the system outputs whose task or robot the system lacks
+    /// (`system_outputs.rs`), at their lines of EIO.cfg.
     fn system_output_findings(&mut self, sys: Option<&sys::Sys>, task: &str) {
-        use rapid_config::eio::syssig::{status_name, SysStatus};
-        let Some(eio) = self.syspar.iter().find(|(d, _)| d == "EIO").map(|(_, file)| eio::read(file)) else { return };
-        let configured = sys.filter(|sys| !sys.tasks.is_empty());
-        let tasks: Vec<&str> =
-            configured.map_or_else(|| vec![task], |sys| sys.tasks.iter().map(|t| t.name.as_str()).collect());
-        let robots: Vec<usize> = match configured {
-            Some(sys) => rapid_controller::boot::robots::numbers(sys, &self.syspar, &[])
-                .map(|n| n.into_iter().flatten().collect())
-                .unwrap_or_default(),
-            None => vec![rapid_controller::boot::robots::of_single_task(sys, &self.syspar, &[])],
-        };
-        let shown: Vec<(u32, String)> = eio
-            .sys_outputs
-            .iter()
-            .filter(|out| !matches!(out.status, SysStatus::NotSimulated(_)))
-            .filter_map(|out| {
-                let signal = &out.signal;
-                if let Some(unit) = &out.unit {
-                    let number = unit.to_ascii_uppercase().strip_prefix("ROB_").and_then(|n| n.parse::<usize>().ok());
-                    if number.is_some_and(|n| robots.contains(&n)) {
-                        return None;
-                    }
-                    let status = status_name(out.status);
-                    let message = match self.units.iter().any(|u| u.unit.name.eq_ignore_ascii_case(unit)) {
-                        true => format!(
-                            "system output `{signal}`: {status} of external unit `{unit}` is not supported yet (robots only)"
-                        ),
-                        false => format!("system output `{signal}` names mechanical unit `{unit}`, which the system does not have"),
-                    };
-                    return Some((out.line, message));
-                }
-                let name = out.task.as_deref()?;
-                let known = tasks.iter().any(|t| t.eq_ignore_ascii_case(name));
-                (!known).then(|| (out.line, format!("system output `{signal}` names task `{name}`, which the system does not have")))
-            })
-            .collect();
-        for (line, message) in shown {
+        let found = system_outputs::findings(&self.syspar, sys, task, &self.task_robots, &self.units);
+        for (line, message) in found {
             self.config_finding("EIO", line, message);
         }
     }
@@ -402,6 +367,20 @@ impl Collector {
                  alone",
                 folder.display(),
                 names.join(", ")
+            ));
+        }
+    }
+
+    /// Says which task modules SYS.cfg loads from a device other than HOME
+    /// (`RELEASE:/options/…`: RobotWare's own, which no backup holds): they are left out.
+    fn note_other_devices(&mut self, sys: Option<&sys::Sys>) {
+        let Some(sys) = sys else { return };
+        let is_home = |file: &str| file.get(..5).is_some_and(|d| d.eq_ignore_ascii_case("HOME:"));
+        for module in sys.modules.iter().filter(|m| !is_home(&m.file)) {
+            self.notes.push(format!(
+                "SYS.cfg (line {}) loads `{}`, which is outside HOME (RELEASE: holds RobotWare's own modules) and \
+                 not in the backup: it is left out",
+                module.line, module.file
             ));
         }
     }
@@ -507,6 +486,7 @@ impl Collector {
             _ => {}
         }
         self.syspar.push((domain.clone(), parsed));
+        self.syspar_configs.push(config_idx);
         Ok((domain, sys))
     }
 
@@ -585,6 +565,7 @@ impl Collector {
             }
         }
         let task = &manifest.sys.tasks[idx];
+        self.system_output_findings(Some(&manifest.sys), &task.name);
         let folder = path.parent().map_or_else(|| PathBuf::from("."), Path::to_path_buf);
         self.task = Some(TaskFolder { name: task.name.clone(), folder, entry: Some(task.entry.clone()) });
         self.sys = Some(manifest.sys);
@@ -598,7 +579,9 @@ impl Collector {
 
     /// A finding at line `line` of the backup's configuration file of domain `domain`.
     fn config_finding(&mut self, domain: &str, line: u32, message: String) {
-        let Some(idx) = self.syspar.iter().position(|(d, _)| d == domain) else { return };
+        let Some(at) = self.syspar.iter().position(|(d, _)| d == domain) else { return };
+        // A manifest is a configuration file too, but not of `syspar`.
+        let Some(&idx) = self.syspar_configs.get(at) else { return };
         let text = &self.configs[idx].text;
         let start: usize = text.split_inclusive('\n').take(line.saturating_sub(1) as usize).map(str::len).sum();
         let end = text[start.min(text.len())..].find('\n').map_or(text.len(), |n| start + n);

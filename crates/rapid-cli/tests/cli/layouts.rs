@@ -188,10 +188,15 @@ fn a_task_folder_sys_cfg_does_not_configure_is_named_in_a_note() {
     // RobotWare configures itself): not checked, not run, and said so.
     let dir = scratch("unconfigured_folder");
     let broken = "MODULE P\n  PROC main()\n    not_here;\n  ENDPROC\nENDMODULE\n";
+    // SYS.cfg also loads a module of RobotWare's own, which no backup holds (line 9:
+    // CAB_TASKS takes five lines, then `#`, the type line and a blank).
+    let sys = format!(
+        "{SYS_T_ROB1}#\nCAB_TASK_MODULES:\n\n      -File \"RELEASE:/options/gui/Screens.sys\" -ModName \"Screens\" -AllTask\n"
+    );
     write_files(
         &dir,
         &[
-            ("cell/SYSPAR/SYS.cfg", SYS_T_ROB1),
+            ("cell/SYSPAR/SYS.cfg", &sys),
             ("cell/BACKINFO/backinfo.txt", ">>TASK1: (T_ROB1,,)\n\n>>TASK2: (PSC_TASK,,)\n\n>>EOF:\n"),
             ("cell/RAPID/TASK1/PROGMOD/M.mod", MAIN_SAYS),
             ("cell/RAPID/TASK2/SYSMOD/P.sys", broken),
@@ -202,6 +207,8 @@ fn a_task_folder_sys_cfg_does_not_configure_is_named_in_a_note() {
         assert_eq!(out.status.code(), Some(0), "{command}: {}", text(&out.stdout));
         let stderr = text(&out.stderr);
         let note = "`cell/RAPID/TASK2` holds task PSC_TASK (backinfo.txt), which SYS.cfg does not configure";
+        assert!(stderr.contains(note), "{command}: {stderr}");
+        let note = "SYS.cfg (line 9) loads `RELEASE:/options/gui/Screens.sys`, which is outside HOME";
         assert!(stderr.contains(note), "{command}: {stderr}");
     }
 }
@@ -247,4 +254,24 @@ fn a_system_output_for_a_task_or_robot_the_system_lacks_is_a_check_finding() {
     write_files(&dir, &[("cell/SYSPAR/EIO.cfg", &fixed)]);
     assert_eq!(text(&rapid_in(&dir, &["check", "cell"]).stdout), "checked 3 files: no problems found\n");
     assert_eq!(text(&rapid_in(&dir, &["run", "cell"]).stdout), "task 1\n");
+}
+
+#[test]
+fn a_manifests_system_output_for_a_task_it_lacks_is_found_in_its_io_file() {
+    // The manifest is the first configuration file, its `io` the second: the finding
+    // is in the I/O file, at the output's line (9), for check and run alike.
+    let dir = scratch("manifest_output");
+    let manifest =
+        "[system]\nio = \"eio.cfg\"\n\n[[task]]\nname = \"T_ROB1\"\ntype = \"NORMAL\"\nmodules = [\"M.mod\"]\n\
+                    motion = true\n";
+    let eio =
+        "EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n\n      -Name \"doExec\" -SignalType \"DO\"\n#\nSYSSIG_OUT:\n\n      \
+               -Status \"TaskExecuting\" -Signal \"doExec\" -Arg2 \"T_OTHER\"\n";
+    write_files(&dir, &[("p/rapid.toml", manifest), ("p/eio.cfg", eio), ("p/M.mod", MAIN_SAYS)]);
+    let out = rapid_in(&dir, &["check", "p"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
+    assert_eq!(locations(&text(&out.stdout)), ["p/eio.cfg:9:1"], "{}", text(&out.stdout));
+    let out = rapid_in(&dir, &["run", "p"]);
+    assert_eq!((out.status.code(), text(&out.stdout)), (Some(1), String::new()));
+    assert!(text(&out.stderr).contains("names task `T_OTHER`, which the system does not have"));
 }
