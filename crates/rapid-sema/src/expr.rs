@@ -297,23 +297,37 @@ impl Checker<'_> {
         }
     }
 
-    /// Types both operands; for `=` and `<>` an aggregate takes the other side's type.
+    /// Types both operands. An aggregate beside typed data takes that data's type
+    /// (§1.3.3: the type comes from the context, and the other operand is the
+    /// context): `p1 + [10,10,30]` is a pos, `o * [0,0,0,1]` an orient. An aggregate
+    /// beside an aggregate has no context and stays E0303, as the manual's
+    /// `[1,-100,12] = [a,b,b]` example says. Beside an atomic operand of an arithmetic
+    /// operator (`2 * [1,2,3]`) no aggregate type is possible, so that stays E0303 too.
     fn operand_types(&mut self, arena: &Arena, op: BinaryOp, lhs: ExprId, rhs: ExprId) -> (Ty, Ty) {
-        let is_agg = |id: ExprId| matches!(arena.expr(id).kind, ExprKind::Aggregate(_));
-        if matches!(op, BinaryOp::Eq | BinaryOp::Ne) && is_agg(lhs) != is_agg(rhs) {
-            let (typed, agg) = if is_agg(lhs) { (rhs, lhs) } else { (lhs, rhs) };
+        let (lhs_agg, rhs_agg) = (is_aggregate(arena, lhs), is_aggregate(arena, rhs));
+        if lhs_agg != rhs_agg {
+            let (typed, agg) = if lhs_agg { (rhs, lhs) } else { (lhs, rhs) };
             let typed_ty = self.expr(arena, typed, None);
+            let comparison = matches!(op, BinaryOp::Eq | BinaryOp::Ne);
             let agg_ty = if typed_ty.ty == types::ERROR {
                 Ty::ERROR
+            } else if !comparison && typed_ty.rank == 0 && !self.is_record(typed_ty.ty) {
+                self.expr(arena, agg, None)
             } else {
                 let dims = vec![0u32; typed_ty.rank as usize];
                 self.expr(arena, agg, Some(Expect { ty: typed_ty.ty, dims: &dims }))
             };
-            return if is_agg(lhs) { (agg_ty, typed_ty) } else { (typed_ty, agg_ty) };
+            return if lhs_agg { (agg_ty, typed_ty) } else { (typed_ty, agg_ty) };
         }
         let l = self.expr(arena, lhs, None);
         let r = self.expr(arena, rhs, None);
         (l, r)
+    }
+
+    /// Whether `ty` is a record type (through aliases); lenient types count as records,
+    /// since they take any aggregate.
+    fn is_record(&self, ty: TypeId) -> bool {
+        self.types.is_lenient(ty) || self.types.record_fields(self.types.value_of(ty)).is_some()
     }
 
     /// The result type of `l op r` per §1.3.1, or `None` when not defined.
@@ -407,5 +421,14 @@ impl Checker<'_> {
     /// Whether `ty` is a record or atomic value type that a condition can test.
     pub(crate) fn is_bool(&self, ty: Ty) -> bool {
         ty.rank == 0 && (self.types.value_of(ty.ty) == self.core.bool_ || self.types.is_lenient(ty.ty))
+    }
+}
+
+/// Whether `id` is an aggregate, seen through parentheses.
+fn is_aggregate(arena: &Arena, id: ExprId) -> bool {
+    match arena.expr(id).kind {
+        ExprKind::Aggregate(_) => true,
+        ExprKind::Paren(inner) => is_aggregate(arena, inner),
+        _ => false,
     }
 }
