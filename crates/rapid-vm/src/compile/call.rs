@@ -9,7 +9,7 @@ use rapid_syntax::{Span, Symbol};
 use super::expr::expected_dims;
 use super::{CompileError, LocalKind, Resolved, RoutineCompiler};
 use crate::builtins::{self, Compiled};
-use crate::ir::{ArgOrigin, ArgSpec, CallSite, Callee, Instr, LateArg};
+use crate::ir::{ArgOrigin, ArgSpec, CallSite, Callee, Instr, LateArg, LateArgKind};
 
 /// The built-ins the compiler turns into instructions of its own (registered here,
 /// beside the code that compiles them; Break and ArgName, which also run as
@@ -405,33 +405,68 @@ impl RoutineCompiler<'_> {
         Ok(())
     }
 
-    /// A late-bound call: the callee's name is on the stack; arguments are positional.
+    /// A late-bound call: the callee's name is on the stack. Arguments are kept as
+    /// written (position, name, `\`, switch, conditional) and matched to the
+    /// callee's parameters when the call runs, since only then is the callee known.
     pub(crate) fn late_site(&mut self, arena: &Arena, args: ArgList, mut site: CallSite) -> Result<u32, CompileError> {
         let mut origins = Vec::new();
+        let mut positional = true;
         for arg in arena.args(args) {
-            let Some(value) = arg.value else {
-                return Err(self.unsupported(arg.span, "an optional argument in a late-bound call"));
+            let name = arg.name.map(|n| n.span.text(self.text).to_ascii_lowercase().into_boxed_str());
+            let optional = arg.kind != ArgKind::Required;
+            positional &= !optional && name.is_none();
+            let (kind, by_ref) = match (arg.kind, arg.value) {
+                (ArgKind::Placeholder, _) => {
+                    return Err(self.unsupported(arg.span, "a placeholder argument in a late-bound call"))
+                }
+                (ArgKind::Conditional, Some(value)) => {
+                    (LateArgKind::Conditional(self.conditional_slot(arena, value)?), false)
+                }
+                (ArgKind::Optional, None) => (LateArgKind::Switch, false),
+                (_, Some(value)) => {
+                    let by_ref = self.late_value(arena, value)?;
+                    origins.push(self.data_origin(arena, value));
+                    site.n_pushed += 1;
+                    (LateArgKind::Pushed, by_ref)
+                }
+                (_, None) => return Err(self.error(arg.span, "an argument without a value")),
             };
-            if arg.kind != ArgKind::Required || arg.name.is_some() {
-                return Err(self.unsupported(arg.span, "a named or optional argument in a late-bound call"));
-            }
-            let is_data = self.static_type(arena, value).is_some()
-                && matches!(
-                    arena.expr(value).kind,
-                    ExprKind::Name(_) | ExprKind::Index { .. } | ExprKind::Field { .. }
-                );
-            if is_data {
-                self.place(arena, value)?;
-            } else {
-                self.expr(arena, value, None)?;
-            }
-            site.late_args.push(LateArg { by_ref: is_data });
-            site.n_pushed += 1;
-            origins.push(self.data_origin(arena, value));
+            site.late_args.push(LateArg { by_ref, name, optional, kind });
         }
         let site = self.site(site);
-        self.code.arg_origins.push((site, origins.into_boxed_slice()));
+        // ArgName follows arguments by parameter position: known here only when every
+        // argument is positional (otherwise the callee decides where each one goes).
+        if positional {
+            self.code.arg_origins.push((site, origins.into_boxed_slice()));
+        }
         Ok(site)
+    }
+
+    /// Pushes a late-bound call's argument: a place when it is data (the callee may
+    /// want a reference), else its value. Answers whether it pushed a place.
+    fn late_value(&mut self, arena: &Arena, value: rapid_syntax::ast::ExprId) -> Result<bool, CompileError> {
+        let is_data = self.static_type(arena, value).is_some()
+            && matches!(arena.expr(value).kind, ExprKind::Name(_) | ExprKind::Index { .. } | ExprKind::Field { .. });
+        if is_data {
+            self.place(arena, value)?;
+        } else {
+            self.expr(arena, value, None)?;
+        }
+        Ok(is_data)
+    }
+
+    /// The local slot of the optional parameter a conditional argument (`\A?p`) forwards.
+    fn conditional_slot(&self, arena: &Arena, value: rapid_syntax::ast::ExprId) -> Result<u32, CompileError> {
+        let expr = arena.expr(value);
+        match expr.kind {
+            ExprKind::Name(sym) => match self.resolve(sym) {
+                Some(Resolved::Local(local)) if matches!(local.kind, LocalKind::Param { optional: true, .. }) => {
+                    Ok(local.slot)
+                }
+                _ => Err(self.error(expr.span, "a conditional argument must name an optional parameter")),
+            },
+            _ => Err(self.error(expr.span, "a conditional argument must name an optional parameter")),
+        }
     }
 }
 

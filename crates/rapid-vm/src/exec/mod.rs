@@ -17,6 +17,7 @@ mod instr;
 mod interrupts;
 mod io;
 mod kernel;
+mod late;
 mod log;
 pub mod modules;
 mod num;
