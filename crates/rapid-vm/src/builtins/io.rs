@@ -43,6 +43,8 @@ pub struct IoState {
     seen_changes: usize,
     /// The waiting instruction under way (WaitDI …): (call depth, pc, started at).
     pub(crate) waiting: Option<(usize, u32, f64)>,
+    /// The message boxes of waits with `\Visualize` under way, one per call depth.
+    pub(crate) boxes: Vec<super::io_visualize::ShownBox>,
 }
 
 /// The part of the I/O state every task of a controller shares: the signals, what the
