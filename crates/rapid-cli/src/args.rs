@@ -155,6 +155,12 @@ pub(crate) struct RunArgs {
     #[arg(long)]
     pub(crate) virtual_io: bool,
 
+    /// The controller's own IP address in its cell (its LAN port). A SocketBind to it,
+    /// or to the service port's 192.168.125.1, binds the loopback instead, as a virtual
+    /// controller maps its addresses.
+    #[arg(long, value_name = "IPV4")]
+    pub(crate) controller_ip: Option<std::net::Ipv4Addr>,
+
     /// The robot model (`IRB120`, `IRB 4600-60/2.05`, a MOC.cfg robot type such as
     /// `ROB1_120_0.58`). Default: the backup's MOC.cfg robot type, else IRB 120-3/0.58.
     #[arg(long, value_name = "MODEL")]

@@ -162,6 +162,11 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         }
         Err(BootError::Internal(message)) => return Err(anyhow::anyhow!("internal error: {message}")),
     };
+    if let Some(ip) = args.controller_ip {
+        for task in &mut controller.tasks {
+            task.loaded.vm.resources_mut().sockets.add_controller_addr(ip);
+        }
+    }
     let mut host =
         StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers: single::pendant_answers(args)? };
     // Power on and a start from main: every task's POWER_ON, then START event routines

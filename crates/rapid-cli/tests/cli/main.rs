@@ -47,6 +47,7 @@ mod scale;
 mod search;
 mod serve;
 mod sockets;
+mod sockets_controller_ip;
 mod sockets_system;
 mod stepbwd;
 mod symsearch;
