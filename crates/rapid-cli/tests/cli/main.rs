@@ -53,4 +53,5 @@ mod stepbwd;
 mod symsearch;
 mod system_signals;
 mod triggers;
+mod virtual_signals;
 mod zones;
