@@ -155,11 +155,20 @@ pub(crate) struct RunArgs {
     #[arg(long, value_name = "FILE")]
     pub(crate) io_log: Option<PathBuf>,
 
-    /// Every signal an `AliasIO "NAME", var` names that the I/O configuration lacks is
-    /// made a virtual signal of the variable's kind (a simulation aid for modules run
-    /// without their cell's EIO.cfg; a real controller raises ERR_ALIASIO_DEF).
+    /// Every signal an `AliasIO "NAME", var` names that the I/O configuration lacks
+    /// (also a name computed at run time) is made a virtual signal of the variable's
+    /// kind, and so is a name nothing declares that the program uses where a signal is
+    /// wanted (`SetDO doGrip, 1;`); each is listed once on stderr (a simulation aid for
+    /// modules run without their cell's EIO.cfg; a real controller raises
+    /// ERR_ALIASIO_DEF).
     #[arg(long)]
     pub(crate) virtual_io: bool,
+
+    /// The controller's own IP address in its cell (its LAN port). A SocketBind to it,
+    /// or to the service port's 192.168.125.1, binds the loopback instead, as a virtual
+    /// controller maps its addresses.
+    #[arg(long, value_name = "IPV4")]
+    pub(crate) controller_ip: Option<std::net::Ipv4Addr>,
 
     /// The robot model (`IRB120`, `IRB 4600-60/2.05`, a MOC.cfg robot type such as
     /// `ROB1_120_0.58`). Default: the backup's MOC.cfg robot type, else IRB 120-3/0.58.
@@ -238,6 +247,12 @@ pub(crate) struct CheckArgs {
     /// Report lexical and syntax errors only.
     #[arg(long)]
     pub(crate) syntax_only: bool,
+
+    /// As `rapid run --virtual-io`: a name nothing declares, used where a signal is
+    /// wanted (`SetDO doGrip, 1;`), is a signal of the I/O configuration not at hand,
+    /// not undefined data.
+    #[arg(long)]
+    pub(crate) virtual_io: bool,
 
     /// How to print the diagnostics.
     #[arg(long, value_enum, default_value_t = Format::Human)]

@@ -46,7 +46,7 @@ struct Line<'a> {
     code: u32,
     #[serde(rename = "type")]
     kind: &'static str,
-    title: &'a str,
+    title: std::borrow::Cow<'a, str>,
     description: &'a [String],
     routine: Option<&'a str>,
     file: Option<&'a str>,
@@ -76,7 +76,7 @@ pub(crate) fn render(tasks: &[TaskEvents<'_>]) -> String {
             number: event.number,
             code: event.code(),
             kind: kind_name(event.kind),
-            title: &event.title,
+            title: full_title(event),
             description: &event.lines,
             routine: event.place.as_ref().map(|p| p.routine.as_str()),
             file,
@@ -91,6 +91,15 @@ pub(crate) fn render(tasks: &[TaskEvents<'_>]) -> String {
         }
     }
     out
+}
+
+/// The title with a system error's detail after it (the event keeps them apart, as
+/// the controller does; the file gives the whole message in one place).
+fn full_title(event: &Event) -> std::borrow::Cow<'_, str> {
+    if event.details.is_empty() {
+        return std::borrow::Cow::Borrowed(&event.title);
+    }
+    std::borrow::Cow::Owned(format!("{}: {}", event.title, event.details.join(" ")))
 }
 
 fn kind_name(kind: EventKind) -> &'static str {

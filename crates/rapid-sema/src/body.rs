@@ -185,6 +185,7 @@ impl Checker<'_> {
         self.datas.truncate(ctx.data_mark);
         self.scopes.routine.clear();
         self.scopes.loop_vars.clear();
+        self.declare_virtual_signals();
     }
 
     fn section(&self) -> Section {

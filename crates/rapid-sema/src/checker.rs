@@ -39,6 +39,14 @@ pub(crate) struct Checker<'a> {
     /// The file of each module.
     pub(crate) module_files: Vec<usize>,
     diags_in_file: usize,
+    /// `--virtual-io`: a name no declaration defines, where a signal is wanted,
+    /// becomes configured signal data of that type ([`crate::Options::virtual_signals`]).
+    pub(crate) virtual_signals: bool,
+    /// The signal data it declared so, in order.
+    pub(crate) virtual_found: Vec<crate::PredefinedData>,
+    /// Such names met in the routine being checked: declared when it ends (its own
+    /// data is dropped from `datas` then, so global data cannot be added before).
+    pub(crate) virtual_pending: Vec<(rapid_syntax::Symbol, String, crate::types::TypeId)>,
 }
 
 impl<'a> Checker<'a> {
@@ -68,6 +76,9 @@ impl<'a> Checker<'a> {
             module_files: Vec::new(),
             filled_scratch: Vec::new(),
             diags_in_file: 0,
+            virtual_signals: false,
+            virtual_found: Vec::new(),
+            virtual_pending: Vec::new(),
         }
     }
 

@@ -64,7 +64,7 @@ impl Checker<'_> {
             ExprKind::Str => Ty::scalar(self.core.string),
             ExprKind::Bool(_) => Ty::scalar(self.core.bool_),
             ExprKind::Placeholder(_) | ExprKind::Error => Ty::ERROR,
-            ExprKind::Name(sym) => self.name_expr(sym, expr.span),
+            ExprKind::Name(sym) => self.name_expr(sym, expr.span, expect),
             ExprKind::Index { base, indices } => self.index_expr(arena, base, indices, expr.span),
             ExprKind::Field { base, field } => self.field_expr(arena, base, field, expr.span),
             ExprKind::Call { name, args } => self.call_expr(arena, name, args, expr.span),
@@ -144,7 +144,7 @@ impl Checker<'_> {
         Ty::scalar(if wants_dnum { self.core.dnum } else { self.core.num })
     }
 
-    fn name_expr(&mut self, sym: rapid_syntax::Symbol, span: Span) -> Ty {
+    fn name_expr(&mut self, sym: rapid_syntax::Symbol, span: Span, expect: Option<Expect<'_>>) -> Ty {
         match self.lookup(sym) {
             Some(Def::Data(data)) => {
                 let info = self.data(data);
@@ -157,6 +157,15 @@ impl Checker<'_> {
                 Ty::ERROR
             }
             None if sym == self.known.placeholder_id => Ty::ERROR,
+            None if self.virtual_signals && self.virtual_pending.iter().any(|(s, _, _)| *s == sym) => {
+                let ty = self.virtual_pending.iter().find(|(s, _, _)| *s == sym).map_or(types::ERROR, |p| p.2);
+                Ty::scalar(ty)
+            }
+            None if self.virtual_signals && expect.is_some_and(|e| e.dims.is_empty() && self.is_signal_type(e.ty)) => {
+                let ty = expect.map_or(types::ERROR, |e| e.ty);
+                self.declare_virtual_signal(sym, span, ty);
+                Ty::scalar(ty)
+            }
             None => {
                 let text = self.text(span);
                 self.diag(Code::UndefinedData, span, format!("undefined data `{text}`"));
@@ -297,23 +306,76 @@ impl Checker<'_> {
         }
     }
 
-    /// Types both operands; for `=` and `<>` an aggregate takes the other side's type.
+    /// Types both operands. An aggregate beside typed data takes that data's type
+    /// (§1.3.3: the type comes from the context, and the other operand is the
+    /// context): `p1 + [10,10,30]` is a pos, `o * [0,0,0,1]` an orient. An aggregate
+    /// beside an aggregate has no context and stays E0303, as the manual's
+    /// `[1,-100,12] = [a,b,b]` example says. Beside an atomic operand of an arithmetic
+    /// operator (`2 * [1,2,3]`) no aggregate type is possible, so that stays E0303 too.
     fn operand_types(&mut self, arena: &Arena, op: BinaryOp, lhs: ExprId, rhs: ExprId) -> (Ty, Ty) {
-        let is_agg = |id: ExprId| matches!(arena.expr(id).kind, ExprKind::Aggregate(_));
-        if matches!(op, BinaryOp::Eq | BinaryOp::Ne) && is_agg(lhs) != is_agg(rhs) {
-            let (typed, agg) = if is_agg(lhs) { (rhs, lhs) } else { (lhs, rhs) };
+        let (lhs_agg, rhs_agg) = (is_aggregate(arena, lhs), is_aggregate(arena, rhs));
+        if lhs_agg != rhs_agg {
+            let (typed, agg) = if lhs_agg { (rhs, lhs) } else { (lhs, rhs) };
             let typed_ty = self.expr(arena, typed, None);
+            let comparison = matches!(op, BinaryOp::Eq | BinaryOp::Ne);
             let agg_ty = if typed_ty.ty == types::ERROR {
                 Ty::ERROR
+            } else if !comparison && typed_ty.rank == 0 && !self.is_record(typed_ty.ty) {
+                self.expr(arena, agg, None)
             } else {
                 let dims = vec![0u32; typed_ty.rank as usize];
                 self.expr(arena, agg, Some(Expect { ty: typed_ty.ty, dims: &dims }))
             };
-            return if is_agg(lhs) { (agg_ty, typed_ty) } else { (typed_ty, agg_ty) };
+            return if lhs_agg { (agg_ty, typed_ty) } else { (typed_ty, agg_ty) };
         }
         let l = self.expr(arena, lhs, None);
         let r = self.expr(arena, rhs, None);
         (l, r)
+    }
+
+    /// Whether `ty` is one of the signal types (signaldi … signalgo).
+    fn is_signal_type(&self, ty: TypeId) -> bool {
+        let name = self.types.name(ty);
+        ["signaldi", "signaldo", "signalai", "signalao", "signalgi", "signalgo"]
+            .iter()
+            .any(|n| name.eq_ignore_ascii_case(n))
+    }
+
+    /// Takes `sym` as signal data of the configuration (`--virtual-io`): the name is a
+    /// signal of the cell's I/O configuration, which is not at hand. Declared when the
+    /// routine ends; until then its uses find it here.
+    fn declare_virtual_signal(&mut self, sym: rapid_syntax::Symbol, span: Span, ty: TypeId) {
+        if self.virtual_pending.iter().any(|(s, _, _)| *s == sym) {
+            return;
+        }
+        let name = self.text(span).to_string();
+        self.virtual_pending.push((sym, name, ty));
+    }
+
+    /// Declares the names [`Checker::declare_virtual_signal`] took as global signal data.
+    pub(crate) fn declare_virtual_signals(&mut self) {
+        for (sym, name, ty) in std::mem::take(&mut self.virtual_pending) {
+            self.datas.push(crate::symbols::DataInfo {
+                display: name.clone(),
+                ty,
+                rank: 0,
+                dims: [0; 3],
+                kind: crate::symbols::DataKind::Var,
+                const_value: None,
+                optional: false,
+                origin: crate::symbols::DeclOrigin::CONFIGURED,
+                system_global: false,
+            });
+            self.scopes.builtins.insert(sym, Def::Data(self.datas.len() as u32 - 1));
+            let type_name = self.types.name(ty).to_string();
+            self.virtual_found.push(crate::PredefinedData { name, type_name });
+        }
+    }
+
+    /// Whether `ty` is a record type (through aliases); lenient types count as records,
+    /// since they take any aggregate.
+    fn is_record(&self, ty: TypeId) -> bool {
+        self.types.is_lenient(ty) || self.types.record_fields(self.types.value_of(ty)).is_some()
     }
 
     /// The result type of `l op r` per §1.3.1, or `None` when not defined.
@@ -407,5 +469,14 @@ impl Checker<'_> {
     /// Whether `ty` is a record or atomic value type that a condition can test.
     pub(crate) fn is_bool(&self, ty: Ty) -> bool {
         ty.rank == 0 && (self.types.value_of(ty.ty) == self.core.bool_ || self.types.is_lenient(ty.ty))
+    }
+}
+
+/// Whether `id` is an aggregate, seen through parentheses.
+fn is_aggregate(arena: &Arena, id: ExprId) -> bool {
+    match arena.expr(id).kind {
+        ExprKind::Aggregate(_) => true,
+        ExprKind::Paren(inner) => is_aggregate(arena, inner),
+        _ => false,
     }
 }

@@ -41,6 +41,12 @@ pub struct Options {
     /// Data the system's configuration declares beyond the catalogue (the I/O signals
     /// of `EIO.cfg`), known in the task like predefined data.
     pub predefined: Vec<PredefinedData>,
+    /// `--virtual-io`: a name that nothing declares, used where a signal is wanted
+    /// (`SetDO doGrip, 1;`, `WaitDI diStart, 1;`, `DInput(diPart)`), is signal data
+    /// of the configuration (of the type its place wants), as it would be on the cell
+    /// whose I/O configuration is not at hand. The analysis lists them
+    /// ([`Program::virtual_signals`]).
+    pub virtual_signals: bool,
 }
 
 /// One configured data object: a name and the name of its (built-in) type, such as
@@ -79,6 +85,8 @@ pub struct Program {
     pub scopes: symbols::Scopes,
     /// The file of each module, in module order (the order of `DeclOrigin::Module`).
     pub module_files: Vec<usize>,
+    /// The signal data [`Options::virtual_signals`] declared: (name, type name).
+    pub virtual_signals: Vec<PredefinedData>,
 }
 
 impl Program {
@@ -135,6 +143,7 @@ pub fn analyze(files: &[SourceInput], options: &Options) -> Analysis {
             routines: ck.routines,
             scopes: ck.scopes,
             module_files: ck.module_files,
+            virtual_signals: ck.virtual_found,
         });
     }
     for (file, errors) in syntax_errors.into_iter().enumerate() {
@@ -179,6 +188,7 @@ fn check_semantics<'a>(
     let mut ck = Checker::new(files, known);
     ck.load_builtins(catalogue, interner);
     ck.declare_predefined(&options.predefined, interner);
+    ck.virtual_signals = options.virtual_signals;
     ck.declare_modules(modules);
     check_module_items(&mut ck, modules);
     for (idx, m) in modules.iter().enumerate() {
@@ -191,6 +201,7 @@ fn check_semantics<'a>(
             ck.end_routine();
         }
     }
+    ck.declare_virtual_signals();
     diags.append(&mut ck.diags);
     ck
 }

@@ -89,7 +89,7 @@ impl Elog {
                 EventKind::Error => 3,
             };
             let mut args = vec![event.title.clone()];
-            args.extend(event.lines.iter().cloned());
+            args.extend(event.details.iter().chain(&event.lines).cloned());
             let source = tasks.get(idx).map_or_else(String::new, |t| t.name.clone());
             numbers.push(self.push(msgtype, event.code(), event.title.clone(), args, source));
         }

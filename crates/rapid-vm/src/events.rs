@@ -116,6 +116,10 @@ pub struct Event {
     pub title: String,
     /// The message lines after the title, unused arguments left out.
     pub lines: Vec<String>,
+    /// The detail of an error the system logs, in short strings before `lines`: what
+    /// ReadErrData's `\Str1`… return first (empty for the program's own messages,
+    /// whose lines are their arguments).
+    pub details: Vec<String>,
     /// Where it was logged, when it came from running code.
     pub place: Option<EventPlace>,
 }
@@ -137,11 +141,86 @@ impl fmt::Display for Event {
             EventKind::Info => "information",
         };
         write!(f, "{} {kind}: {}", self.code(), self.title)?;
-        for line in &self.lines {
+        for line in self.details.iter().chain(&self.lines) {
             write!(f, "\n    {line}")?;
         }
         Ok(())
     }
+}
+
+/// The longest title an event gets: what ErrWrite's header may hold (46 characters,
+/// RAPID instructions manual), so a title framed in a program's own text still fits
+/// a string (80 characters).
+pub const TITLE_MAX_CHARS: usize = 46;
+/// The longest detail string of a system error: detail is split at word ends into
+/// strings of at most this many characters.
+// uncertain: the controller's message arguments are short (names, numbers); 40 keeps
+// each one short enough to be framed in a line of a program's own report.
+pub const DETAIL_MAX_CHARS: usize = 40;
+/// At most this many detail strings (ReadErrData has five, `\Str1`…`\Str5`, and the
+/// place of the error comes after them).
+pub const DETAIL_MAX_STRINGS: usize = 4;
+
+/// The title and detail strings of an error's entry, split as the controller splits
+/// its messages: a short title (the error's name, the motion system's text without
+/// its number) and the rest of the message in short strings.
+// uncertain: the controller titles its program errors with texts of its own ("Division
+// by zero"), whose list is not public; the error's name is as short and names it.
+pub fn split_error_text(name: &str, errno: i32, message: &str, motion: bool) -> (String, Vec<String>) {
+    let (title, detail) = if motion {
+        // "50050 Position outside reach" or "50080 Position not compatible (why)".
+        let text = message.trim_start_matches(|c: char| c.is_ascii_digit()).trim_start();
+        match text.split_once(" (") {
+            Some((title, rest)) => (title.to_string(), rest.trim_end_matches(')').to_string()),
+            None => (text.to_string(), String::new()),
+        }
+    } else if !name.is_empty() {
+        (name.to_string(), message.to_string())
+    } else if errno != 0 {
+        (format!("Error {errno}"), message.to_string())
+    } else {
+        // uncertain: the controller's title for a stop of its own limits; "Execution
+        // error" is the generic title of its program-domain entries as we remember them.
+        ("Execution error".to_string(), message.to_string())
+    };
+    (title.chars().take(TITLE_MAX_CHARS).collect(), wrap_words(&detail, DETAIL_MAX_CHARS, DETAIL_MAX_STRINGS))
+}
+
+/// `text` cut at word ends into at most `max_strings` strings of at most `width`
+/// characters (a word longer than `width` is cut); what does not fit is left out.
+fn wrap_words(text: &str, width: usize, max_strings: usize) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    let mut current = String::new();
+    for word in text.split_whitespace() {
+        let mut word: String = word.to_string();
+        loop {
+            let used = current.chars().count();
+            let need = word.chars().count() + usize::from(used > 0);
+            if used + need <= width {
+                if used > 0 {
+                    current.push(' ');
+                }
+                current.push_str(&word);
+                break;
+            }
+            if used > 0 {
+                out.push(std::mem::take(&mut current));
+                continue;
+            }
+            // A word longer than a whole string: cut it.
+            let head: String = word.chars().take(width).collect();
+            word = word.chars().skip(width).collect();
+            out.push(head);
+            if word.is_empty() {
+                break;
+            }
+        }
+    }
+    if !current.is_empty() {
+        out.push(current);
+    }
+    out.truncate(max_strings);
+    out
 }
 
 /// The four predefined `errstr` markers (declared in the catalogue's data.rs). The
@@ -160,5 +239,42 @@ pub fn expand_errstr(text: &str, task: &str, context: &str) -> Option<String> {
         ERRSTR_TASK => Some(task.to_string()),
         ERRSTR_CONTEXT => Some(context.to_string()),
         other => Some(other.to_string()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_named_error_has_its_name_as_title_and_the_message_in_short_strings() {
+        let message = "the argument of the instruction is outside the range the manual allows for it";
+        let (title, detail) = split_error_text("ERR_ARGVALERR", 1050, message, false);
+        assert_eq!(title, "ERR_ARGVALERR");
+        assert_eq!(detail, ["the argument of the instruction is", "outside the range the manual allows for", "it"]);
+        assert!(detail.iter().all(|d| d.chars().count() <= DETAIL_MAX_CHARS));
+    }
+
+    #[test]
+    fn a_motion_error_loses_its_number_and_moves_its_reason_to_the_detail() {
+        let (title, detail) =
+            split_error_text("", 0, "50080 Position not compatible (the programmed configuration)", true);
+        assert_eq!(title, "Position not compatible");
+        assert_eq!(detail, ["the programmed configuration"]);
+        let (title, detail) = split_error_text("", 0, "50050 Position outside reach", true);
+        assert_eq!((title.as_str(), detail.len()), ("Position outside reach", 0));
+    }
+
+    #[test]
+    fn long_words_are_cut_and_at_most_four_strings_are_kept() {
+        let word = "x".repeat(100);
+        let (title, detail) = split_error_text("", 0, &word, false);
+        assert_eq!(title, "Execution error");
+        assert_eq!(detail.iter().map(|d| d.chars().count()).collect::<Vec<_>>(), [40, 40, 20]);
+        let many = "word ".repeat(60);
+        let (_, detail) = split_error_text("", 7, &many, false);
+        assert_eq!(detail.len(), DETAIL_MAX_STRINGS);
+        let (title, _) = split_error_text("", 7, "", false);
+        assert_eq!(title, "Error 7");
     }
 }

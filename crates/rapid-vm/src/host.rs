@@ -27,6 +27,15 @@ pub trait Host {
     }
     /// A dialog left [`PromptReply::Pending`] gave up waiting (`\MaxTime` ran out).
     fn tp_prompt_closed(&mut self, _prompt: &Prompt<'_>) {}
+    /// A line about the run for its user, not the pendant's (how the virtual controller
+    /// stands in for the real one); `rapid run` writes it on stderr.
+    fn note(&mut self, _text: &str) {}
+    /// A wait with `\Visualize` (WaitUntil, WaitDI…) shows a message box while it
+    /// waits; the box takes no answer, the wait ends as it would without it.
+    fn visualize_open(&mut self, _prompt: &Prompt<'_>) {}
+    /// The box of [`Host::visualize_open`] closes: the wait ended, or `\VisualizeTime`
+    /// ran out while it goes on.
+    fn visualize_close(&mut self, _prompt: &Prompt<'_>) {}
 }
 
 /// A pendant dialog waiting for the operator (TPReadNum, TPReadFK, UI...).
@@ -57,6 +66,11 @@ pub struct RecordingHost {
     pub answers: std::collections::VecDeque<String>,
     /// The windows TPShow brought to the front, in order.
     pub shown: Vec<i32>,
+    /// The message boxes of waits with `\Visualize`: (text, opened) as they opened
+    /// (`true`) and closed (`false`), in order.
+    pub boxes: Vec<(String, bool)>,
+    /// The notes about the run, in order.
+    pub notes: Vec<String>,
 }
 
 impl Host for RecordingHost {
@@ -70,5 +84,17 @@ impl Host for RecordingHost {
 
     fn tp_show(&mut self, window: i32) {
         self.shown.push(window);
+    }
+
+    fn note(&mut self, text: &str) {
+        self.notes.push(text.to_string());
+    }
+
+    fn visualize_open(&mut self, prompt: &Prompt<'_>) {
+        self.boxes.push((prompt.text.to_string(), true));
+    }
+
+    fn visualize_close(&mut self, prompt: &Prompt<'_>) {
+        self.boxes.push((prompt.text.to_string(), false));
     }
 }

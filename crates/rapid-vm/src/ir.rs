@@ -111,11 +111,40 @@ pub enum ArgOrigin {
     None,
 }
 
-/// A late-bound call's argument: positional values only (places when the callee
-/// wants references).
+/// A late-bound call's argument, as written: matched to the callee's parameters
+/// by position or name only when the call runs (the callee is not known before).
 #[derive(Debug, Clone, PartialEq)]
 pub struct LateArg {
+    /// The value pushed is a place (the argument is data), so a VAR, INOUT or PERS
+    /// parameter can take it.
     pub by_ref: bool,
+    /// The parameter name written (`a := x`, `\Opt := x`, `\Switch`), lowercased.
+    pub name: Option<Box<str>>,
+    /// Written with `\`: it goes to an optional parameter.
+    pub optional: bool,
+    pub kind: LateArgKind,
+}
+
+/// What a late-bound call's argument passes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LateArgKind {
+    /// A value (or place) the caller pushed.
+    Pushed,
+    /// `\Name` without a value: a switch.
+    Switch,
+    /// `\Name ? param`: the caller's optional parameter in local slot `slot`.
+    Conditional(u32),
+}
+
+/// What a late-bound call needs to know of a parameter to match arguments to it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ParamMeta {
+    /// The name, lowercased.
+    pub name: Box<str>,
+    pub optional: bool,
+    pub switch: bool,
+    /// Parameters with the same group are alternatives (`\A | \B`).
+    pub group: u16,
 }
 
 /// A statement's code range, for RETRY (restart it) and TRYNEXT (go past it).
@@ -157,6 +186,8 @@ pub struct Code {
     pub param_likes: Vec<Option<Value>>,
     /// For each parameter: VAR, INOUT or PERS.
     pub param_by_ref: Vec<bool>,
+    /// For each parameter: its name, optional or switch, its group (late binding).
+    pub param_meta: Vec<ParamMeta>,
     /// A FUNC's result is converted to the numeric kind of this value.
     pub ret_like: Option<Value>,
     /// The kernels of `KernelStore` and `KernelBranch`.

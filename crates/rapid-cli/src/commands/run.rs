@@ -178,6 +178,10 @@ impl Host for StdoutHost<'_> {
     fn tp_answer(&mut self, _prompt: &str) -> Option<String> {
         self.answers.pop_front()
     }
+
+    fn note(&mut self, text: &str) {
+        eprintln!("note: {text}");
+    }
 }
 
 /// `x` with at most `places` decimals, trailing zeros dropped (times to the

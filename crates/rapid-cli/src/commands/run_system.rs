@@ -96,7 +96,11 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             (_, _, Some(entry)) => entry.clone(),
             _ => "main".to_owned(),
         };
-        let options = Options { predefined: task.inputs.predefined.clone(), ..Options::default() };
+        let options = Options {
+            predefined: task.inputs.predefined.clone(),
+            virtual_signals: args.virtual_io,
+            ..Options::default()
+        };
         let mut program = match (load_with(&task.inputs.modules, &entry, &options), configured, config) {
             (Ok(program), _, _) => program,
             // `--entry` reaches the first task only: the configuration is where this
@@ -164,6 +168,11 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         }
         Err(BootError::Internal(message)) => return Err(anyhow::anyhow!("internal error: {message}")),
     };
+    if let Some(ip) = args.controller_ip {
+        for task in &mut controller.tasks {
+            task.loaded.vm.resources_mut().sockets.add_controller_addr(ip);
+        }
+    }
     let mut host =
         StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers: single::pendant_answers(args)? };
     // Power on and a start from main: every task's POWER_ON, then START event routines

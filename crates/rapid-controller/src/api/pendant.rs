@@ -33,6 +33,9 @@ pub(crate) struct Pendant {
     next_id: u64,
     /// What happened on the pendant since the API last took it, in order.
     pub(crate) changes: Vec<Change>,
+    /// The message boxes of waits with `\Visualize` on the screen: (id, task, text).
+    /// They are shown as prompts that take no answer.
+    boxes: Vec<(u64, String, String)>,
 }
 
 impl Pendant {
@@ -87,6 +90,21 @@ impl Host for Pendant {
         self.changes.push(Change::PromptOpened { id, task: task.clone(), text: text.clone() });
         self.prompts.push(PendingPrompt { id, task, text, answer: None });
         PromptReply::Pending
+    }
+
+    fn visualize_open(&mut self, prompt: &Prompt<'_>) {
+        self.next_id += 1;
+        let id = self.next_id;
+        let (task, text) = (prompt.task.to_owned(), prompt.text.to_owned());
+        self.changes.push(Change::PromptOpened { id, task: task.clone(), text: text.clone() });
+        self.boxes.push((id, task, text));
+    }
+
+    fn visualize_close(&mut self, prompt: &Prompt<'_>) {
+        if let Some(at) = self.boxes.iter().position(|(_, task, text)| task == prompt.task && text == prompt.text) {
+            let (id, _, _) = self.boxes.remove(at);
+            self.changes.push(Change::PromptClosed { id });
+        }
     }
 
     fn tp_prompt_closed(&mut self, prompt: &Prompt<'_>) {

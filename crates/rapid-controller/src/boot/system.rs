@@ -199,7 +199,24 @@ pub fn boot(
     let alone = options.alone;
     let mut io = io_system(cell.syspar).map_err(BootError::Refused)?;
     if let Some(modules) = options.virtual_io {
-        with_virtual_signals(&mut io, modules).map_err(BootError::Refused)?;
+        let mut made = with_virtual_signals(&mut io, modules).map_err(BootError::Refused)?;
+        // The signals the programs name directly that no configuration defines (the
+        // checker made them configured data of the type their place wants).
+        if let Some(system) = io.as_mut() {
+            for (_, program) in &tasks {
+                let named = program.vm.configured_signals();
+                made.extend(virtual_io::add_to(system, &named).map_err(BootError::Refused)?);
+            }
+        }
+        for (_, program) in tasks.iter_mut() {
+            program.vm.resources_mut().io.virtual_io = true;
+        }
+        if let Some((_, first)) = tasks.first_mut() {
+            for (name, kind) in made {
+                let kind = rapid_vm::builtins::io::kind_name(kind);
+                first.vm.resources_mut().io.note_later(format!("virtual signal {name} ({kind}) (--virtual-io)"));
+            }
+        }
     }
     let stimulus = stimulus(io.as_ref()).map_err(BootError::Refused)?;
     let (model, model_note) =
@@ -300,13 +317,17 @@ fn io_system(syspar: &[(String, CfgFile)]) -> Result<Option<rapid_io::IoSystem>,
 
 /// `--virtual-io`: the signals AliasIO names that the configuration lacks, as virtual
 /// signals (an I/O system is made when there is none).
-pub fn with_virtual_signals(system: &mut Option<rapid_io::IoSystem>, modules: &[SourceInput]) -> Result<(), String> {
+/// Answers the signals it made.
+pub fn with_virtual_signals(
+    system: &mut Option<rapid_io::IoSystem>,
+    modules: &[SourceInput],
+) -> Result<Vec<(String, rapid_io::SignalKind)>, String> {
     let signals = virtual_io::aliased_signals(modules);
     if system.is_none() {
         *system = Some(rapid_io::IoSystem::new(Vec::new(), Vec::new()).map_err(|e| e.to_string())?);
     }
     match system {
         Some(system) => virtual_io::add_to(system, &signals),
-        None => Ok(()),
+        None => Ok(Vec::new()),
     }
 }

@@ -3,6 +3,11 @@
 //! with this option every such name the configuration lacks becomes a virtual signal
 //! of the variable's kind, so the program runs (and a stimulus can drive its inputs).
 //! A real controller raises ERR_ALIASIO_DEF instead; this is a simulation aid.
+//! The same goes for names the program uses where a signal is wanted and nothing
+//! declares (`SetDO doGrip, 1;`: the checker makes them configuration data of the
+//! type their place wants, `rapid_sema::Options::virtual_signals`), and for AliasIO
+//! names computed at run time (the VM makes those, `IoState::virtual_io`). Each
+//! virtual signal is listed once on stderr.
 
 use rapid_io::{IoSystem, SignalDef, SignalKind};
 use rapid_sema::SourceInput;
@@ -73,8 +78,10 @@ fn declared_kind(lower: &str, var: &str) -> Option<SignalKind> {
     None
 }
 
-/// Adds a virtual signal for each aliased name the system lacks (groups 32 bits wide).
-pub fn add_to(system: &mut IoSystem, signals: &[(String, SignalKind)]) -> Result<(), String> {
+/// Adds a virtual signal for each name the system lacks (groups 32 bits wide);
+/// answers those it added.
+pub fn add_to(system: &mut IoSystem, signals: &[(String, SignalKind)]) -> Result<Vec<(String, SignalKind)>, String> {
+    let mut added = Vec::new();
     for (name, kind) in signals {
         if system.id(name).is_some() {
             continue;
@@ -85,8 +92,9 @@ pub fn add_to(system: &mut IoSystem, signals: &[(String, SignalKind)]) -> Result
             def.group_bits = 32;
         }
         system.add_virtual(def).map_err(|e| format!("virtual signal `{name}`: {e}"))?;
+        added.push((name.clone(), *kind));
     }
-    Ok(())
+    Ok(added)
 }
 
 #[cfg(test)]

@@ -35,7 +35,17 @@ fn user_event(ctx: &Ctx<'_>, number: u32, kind: EventKind, texts: &[Value]) -> R
     let title = expanded.next().flatten().unwrap_or_default();
     let lines = expanded.flatten().collect();
     // The VM adds where the program logged it (it knows the calling statement).
-    Ok(Event { seq: 0, domain: USER_DOMAIN, number, kind, time: ctx.time, title, lines, place: None })
+    Ok(Event {
+        seq: 0,
+        domain: USER_DOMAIN,
+        number,
+        kind,
+        time: ctx.time,
+        title,
+        lines,
+        details: Vec::new(),
+        place: None,
+    })
 }
 
 /// `ErrLog ErrorId [\W] | [\I] Argument1 .. Argument5`: logs a user message; the

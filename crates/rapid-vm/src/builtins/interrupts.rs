@@ -442,8 +442,9 @@ fn read_err_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if present(args.get(at.title)) {
         ctx.store(&args[at.title], Value::Str(limit(&event.title).into()))?;
     }
-    // \Str1 … \Str5 follow one another.
-    for (k, line) in (at.str1..=at.str5).zip(event.lines.iter().map(Some).chain(std::iter::repeat(None))) {
+    // \Str1 … \Str5 follow one another: a system error's detail, then the lines.
+    let strings = event.details.iter().chain(&event.lines).map(Some).chain(std::iter::repeat(None));
+    for (k, line) in (at.str1..=at.str5).zip(strings) {
         if present(args.get(k)) {
             ctx.store(&args[k], Value::Str(limit(line.map_or("", |l| l.as_str())).into()))?;
         }

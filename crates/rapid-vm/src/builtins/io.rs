@@ -43,6 +43,13 @@ pub struct IoState {
     seen_changes: usize,
     /// The waiting instruction under way (WaitDI …): (call depth, pc, started at).
     pub(crate) waiting: Option<(usize, u32, f64)>,
+    /// `--virtual-io`: AliasIO makes a virtual signal of a name the configuration
+    /// lacks (also one computed at run time) instead of raising ERR_ALIASIO_DEF.
+    pub virtual_io: bool,
+    /// Notes for the run's user not yet told (see [`IoState::note_later`]).
+    notes: Vec<String>,
+    /// The message boxes of waits with `\Visualize` under way, one per call depth.
+    pub(crate) boxes: Vec<super::io_visualize::ShownBox>,
 }
 
 /// The part of the I/O state every task of a controller shares: the signals, what the
@@ -71,6 +78,16 @@ impl IoState {
         self.waiting.map(|(_, _, at)| at)
     }
 
+
+    /// A note for the run's user (on stderr in `rapid run`), told when the task next
+    /// runs: what `--virtual-io` made of a signal, for one.
+    pub fn note_later(&mut self, text: String) {
+        self.notes.push(text);
+    }
+
+    pub(crate) fn take_notes(&mut self) -> Vec<String> {
+        std::mem::take(&mut self.notes)
+    }
     /// An output the robot's path sets at `time` (kept in time order).
     pub fn order_on_path(&mut self, time: f64, signal: u32, value: f64) {
         let at = self.path_orders.partition_point(|&(t, _, _)| t <= time);
@@ -368,16 +385,20 @@ fn valid_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// two are of different signal types, ERR_NO_ALIASIO_DEF when FromSignal is signal data
 /// that is not connected.
 fn alias_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let from = match ctx.value(&args[0])? {
-        Value::Str(name) => {
-            let id = ctx.resources.io.system.as_ref().and_then(|io| io.id(&name));
-            id.ok_or_else(|| ctx.error(Err::AliasIoDef, format!("no signal `{name}` in the I/O configuration")))?
-        }
-        other => connected(ctx, &other)?,
-    };
     let Value::Ref(_) = &args[1] else { return Err(ctx.error(Err::ArgValue, "ToSignal must be signal data")) };
     let Value::Opaque(target) = ctx.value(&args[1])? else {
         return Err(ctx.error(Err::ArgValue, "ToSignal must be signal data"));
+    };
+    let from = match ctx.value(&args[0])? {
+        Value::Str(name) => {
+            let id = ctx.resources.io.system.as_ref().and_then(|io| io.id(&name));
+            match id {
+                Some(id) => id,
+                None if ctx.resources.io.virtual_io => virtual_signal(ctx, &name, target.ty)?,
+                None => return Err(ctx.error(Err::AliasIoDef, format!("no signal `{name}` in the I/O configuration"))),
+            }
+        }
+        other => connected(ctx, &other)?,
     };
     let from_kind = ctx.resources.io.system.as_ref().and_then(|io| io.def(from)).map(|def| def.kind);
     let to_kind = ctx.resources.io.kinds.iter().find(|(ty, _)| *ty == target.ty).map(|(_, kind)| *kind);
@@ -387,6 +408,40 @@ fn alias_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let connected = Opaque { ty: target.ty, state: OpaqueState::Handle(from | ALIAS_BIT) };
     ctx.store(&args[1], Value::Opaque(Box::new(connected)))?;
     Ok(None)
+}
+
+/// `--virtual-io`: a signal AliasIO names (a name computed at run time the text of
+/// the program did not show) that the configuration lacks becomes a virtual signal of
+/// the kind of the data it connects, told once.
+fn virtual_signal(ctx: &mut Ctx<'_>, name: &str, ty: TypeId) -> Result<u32, RapidError> {
+    let Some(kind) = ctx.resources.io.kinds.iter().find(|(t, _)| *t == ty).map(|(_, k)| *k) else {
+        return Err(ctx.error(Err::AliasIoType, "ToSignal is no signal data"));
+    };
+    let mut def = rapid_io::SignalDef::new(name, kind);
+    if matches!(kind, SignalKind::GI | SignalKind::GO) {
+        // uncertain: a group's width is unknown without its configuration: 32 bits.
+        def.group_bits = 32;
+    }
+    // `rapid run --virtual-io` always has an I/O system (an empty one at least).
+    let Some(system) = ctx.resources.io.system.as_mut() else {
+        return Err(ctx.error(Err::AliasIoDef, format!("no signal `{name}`: there is no I/O system")));
+    };
+    let added = system.add_virtual(def);
+    let id = added.map_err(|e| ctx.error(Err::AliasIoDef, format!("virtual signal `{name}`: {e:?}")))?;
+    ctx.host.note(&format!("virtual signal {name} ({}) for AliasIO (--virtual-io)", kind_name(kind)));
+    Ok(id)
+}
+
+/// The configuration's word for a signal kind (`-SignalType`).
+pub fn kind_name(kind: SignalKind) -> &'static str {
+    match kind {
+        SignalKind::DI => "DI",
+        SignalKind::DO => "DO",
+        SignalKind::AI => "AI",
+        SignalKind::AO => "AO",
+        SignalKind::GI => "GI",
+        SignalKind::GO => "GO",
+    }
 }
 
 /// signalorigin values (manual §1.9 data type signalorigin).

@@ -10,6 +10,7 @@
 use std::sync::LazyLock;
 
 use super::io::signal;
+use super::io_visualize::{self, BoxArgs};
 use super::{native, present, Ctx, Family, StopKind};
 use crate::errnames::Err;
 use crate::error::RapidError;
@@ -84,9 +85,13 @@ impl Layout {
 static DIGITAL: LazyLock<Layout> = LazyLock::new(|| Layout::of("WaitDI"));
 static GROUP: LazyLock<Layout> = LazyLock::new(|| Layout::of("WaitGI"));
 static ANALOG: LazyLock<Layout> = LazyLock::new(|| Layout::of("WaitAI"));
+/// Where their `\Visualize` arguments are.
+static DIGITAL_BOX: LazyLock<BoxArgs> = LazyLock::new(|| BoxArgs::of("WaitDI"));
+static GROUP_BOX: LazyLock<BoxArgs> = LazyLock::new(|| BoxArgs::of("WaitGI"));
+static ANALOG_BOX: LazyLock<BoxArgs> = LazyLock::new(|| BoxArgs::of("WaitAI"));
 
 fn wait_digital(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    wait(ctx, args, &DIGITAL, Compare::Eq)
+    wait(ctx, args, &DIGITAL, &DIGITAL_BOX, Compare::Eq)
 }
 
 /// WaitGI/WaitGO compare with `\NOTEQ`, `\LT` or `\GT`, else for equality.
@@ -101,22 +106,17 @@ fn wait_group(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     } else {
         Compare::Eq
     };
-    wait(ctx, args, layout, compare)
+    wait(ctx, args, layout, &GROUP_BOX, compare)
 }
 
 /// WaitAI/WaitAO take `\LT` or `\GT` (one of them).
 fn wait_analog(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let layout = &*ANALOG;
     let compare = if present(args.get(layout.lt)) { Compare::Lt } else { Compare::Gt };
-    wait(ctx, args, layout, compare)
+    wait(ctx, args, layout, &ANALOG_BOX, compare)
 }
 
-fn wait(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, compare: Compare) -> Res {
-    if present(args.get(layout.visualize)) {
-        return Err(RapidError::fatal(
-            "\\Visualize (a pendant dialog while waiting) is not supported by `rapid run` yet",
-        ));
-    }
+fn wait(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, shown: &BoxArgs, compare: Compare) -> Res {
     let id = signal(ctx, &args[layout.signal])?;
     let target = match layout.dvalue {
         Some(d) if present(args.get(d)) => ctx.num(&args[d])?,
@@ -127,6 +127,7 @@ fn wait(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, compare: Compare) ->
     let started = wait_started(ctx);
     if compare.holds(value, target) {
         ctx.resources.io.waiting = None;
+        io_visualize::step(ctx, args, shown, true)?;
         if let Some(flag) = layout.time_flag.filter(|&f| present(args.get(f))) {
             ctx.store(&args[flag], Value::Bool(false))?;
         }
@@ -135,9 +136,12 @@ fn wait(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, compare: Compare) ->
     let deadline = ctx.opt_num(args.get(layout.max_time))?.map(|max| started + max);
     if deadline.is_some_and(|d| now >= d) {
         ctx.resources.io.waiting = None;
+        io_visualize::step(ctx, args, shown, true)?;
         return timed_out(ctx, args, layout, value);
     }
-    wait_again(ctx, started, deadline, None);
+    // The box (with \Visualize) is shown while the wait goes on, unchanged.
+    let box_closes = io_visualize::step(ctx, args, shown, false)?;
+    wait_again(ctx, started, deadline, box_closes);
     Ok(None)
 }
 

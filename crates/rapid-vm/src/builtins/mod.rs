@@ -19,6 +19,7 @@ pub mod interrupts;
 pub mod io;
 pub mod io_config;
 mod io_units;
+pub(crate) mod io_visualize;
 mod io_wait;
 mod math;
 mod matrix;

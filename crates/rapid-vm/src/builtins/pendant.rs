@@ -76,7 +76,17 @@ pub(super) fn err_write(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
     let title = texts.next().unwrap_or_default();
     let lines = texts.collect();
     // The VM adds where the program logged it (it knows the calling statement).
-    let event = Event { seq: 0, domain: USER_DOMAIN, number, kind, time: ctx.time, title, lines, place: None };
+    let event = Event {
+        seq: 0,
+        domain: USER_DOMAIN,
+        number,
+        kind,
+        time: ctx.time,
+        title,
+        lines,
+        details: Vec::new(),
+        place: None,
+    };
     ctx.events.push(event);
     Ok(None)
 }

@@ -9,7 +9,7 @@ use rapid_syntax::{Span, Symbol};
 use super::expr::expected_dims;
 use super::{CompileError, LocalKind, Resolved, RoutineCompiler};
 use crate::builtins::{self, Compiled};
-use crate::ir::{ArgOrigin, ArgSpec, CallSite, Callee, Instr, LateArg};
+use crate::ir::{ArgOrigin, ArgSpec, CallSite, Callee, Instr, LateArg, LateArgKind};
 
 /// The built-ins the compiler turns into instructions of its own (registered here,
 /// beside the code that compiles them; Break and ArgName, which also run as
@@ -20,7 +20,8 @@ pub(crate) static FAMILY: builtins::Family = builtins::Family {
         builtins::compiled("Present", Compiled::Present),
         builtins::compiled("CallByVar", Compiled::CallByVar),
         builtins::compiled("Type", Compiled::Type),
-        builtins::compiled("WaitUntil", Compiled::WaitUntil),
+        // Its compiled loop calls `run` only for the \Visualize box.
+        builtins::native("WaitUntil", builtins::io_visualize::wait_until_box).compiled_as(Compiled::WaitUntil),
         builtins::compiled("Continue", Compiled::Continue),
     ],
 };
@@ -308,9 +309,11 @@ impl RoutineCompiler<'_> {
         }
     }
 
-    /// `WaitUntil [\InPos] Cond [\MaxTime] [\TimeFlag] [\PollRate]`: the condition is
-    /// evaluated again every poll (0.1 s of controller time by default); past \MaxTime
-    /// ERR_WAIT_MAXTIME, or with \TimeFlag the flag is set TRUE and execution goes on.
+    /// `WaitUntil [\InPos] Cond [\MaxTime] [\TimeFlag] [\PollRate] [\Visualize] …`: the
+    /// condition is evaluated again every poll (0.1 s of controller time by default);
+    /// past \MaxTime ERR_WAIT_MAXTIME, or with \TimeFlag the flag is set TRUE and
+    /// execution goes on. `\Visualize` shows a message box while it waits
+    /// (`builtins/io_visualize.rs`).
     fn wait_until(&mut self, arena: &Arena, info: &RoutineInfo, args: ArgList, span: Span) -> Result<(), CompileError> {
         let bound = bind_args(info, arena.args(args), |id, param| self.arg_fits(arena, id, param));
         let arg_of = |name: &str| {
@@ -321,9 +324,11 @@ impl RoutineCompiler<'_> {
                 .and_then(|a| a.value)
         };
         let Some(cond) = arg_of("Cond") else { return Err(self.error(span, "WaitUntil needs a condition")) };
-        if ["Visualize", "Header", "Message", "MsgArray"].iter().any(|n| arg_of(n).is_some()) {
-            return Err(self.unsupported(span, "WaitUntil with \\Visualize"));
-        }
+        let visualize = info
+            .params
+            .iter()
+            .position(|p| p.display.eq_ignore_ascii_case("Visualize"))
+            .is_some_and(|i| bound[i].is_some());
         let (max_time, time_flag, poll_rate) = (arg_of("MaxTime"), arg_of("TimeFlag"), arg_of("PollRate"));
         let in_pos = info.params.iter().position(|p| p.display.eq_ignore_ascii_case("InPos")).and_then(|i| bound[i]);
         if in_pos.is_some() {
@@ -348,6 +353,10 @@ impl RoutineCompiler<'_> {
         let to_done = self.code.emit(Instr::Jump(0));
         let here = self.code.here();
         self.code.patch(to_wait, here);
+        if visualize {
+            // Each poll that waits: the box opens at the first, closes after \VisualizeTime.
+            self.visualize_call(arena, info, &bound, false)?;
+        }
         if let Some(max_time) = max_time {
             // elapsed >= MaxTime ?
             self.code.emit(Instr::PushTime);
@@ -369,6 +378,9 @@ impl RoutineCompiler<'_> {
                     self.exits.push(jump);
                 }
                 None => {
+                    if visualize {
+                        self.visualize_call(arena, info, &bound, true)?;
+                    }
                     self.code.emit(Instr::RaiseWaitTimeout);
                 }
             }
@@ -385,10 +397,51 @@ impl RoutineCompiler<'_> {
         self.code.emit(Instr::WaitPop);
         self.code.emit(Instr::Jump(top));
         let done = self.code.here();
+        if visualize {
+            // The box closes as the wait ends (no box was shown if it never waited).
+            self.visualize_call(arena, info, &bound, true)?;
+        }
         self.code.patch(to_done, done);
         for jump in std::mem::take(&mut self.exits) {
             self.code.patch(jump, done);
         }
+        Ok(())
+    }
+
+    /// A call of WaitUntil's own `run` for its `\Visualize` box: `Cond` is `done` (the
+    /// wait ends), the box's arguments are passed as written, the others left out.
+    fn visualize_call(
+        &mut self,
+        arena: &Arena,
+        info: &RoutineInfo,
+        bound: &[Option<&Arg>],
+        done: bool,
+    ) -> Result<(), CompileError> {
+        let Some(id) = builtins::lookup("WaitUntil") else { return Ok(()) };
+        const BOX: [&str; 9] =
+            ["Visualize", "Header", "Message", "MsgArray", "Wrap", "Icon", "Image", "VisualizeTime", "UIActiveSignal"];
+        let mut specs = Vec::with_capacity(info.params.len());
+        let mut n_pushed = 0u16;
+        for (param, arg) in info.params.iter().zip(bound) {
+            let spec = if param.display.eq_ignore_ascii_case("Cond") {
+                let idx = self.code.constant(crate::value::Value::Bool(done));
+                self.code.emit(Instr::Const(idx));
+                ArgSpec::Value
+            } else {
+                match arg {
+                    Some(arg) if BOX.iter().any(|n| param.display.eq_ignore_ascii_case(n)) => {
+                        self.arg(arena, param, arg, info.flags.takes_signals)?
+                    }
+                    _ => ArgSpec::Absent,
+                }
+            };
+            if matches!(spec, ArgSpec::Value | ArgSpec::Place) {
+                n_pushed += 1;
+            }
+            specs.push(spec);
+        }
+        let site = self.site(CallSite { callee: Callee::Builtin(id), args: specs, n_pushed, late_args: Vec::new() });
+        self.code.emit(Instr::Call(site));
         Ok(())
     }
 
@@ -405,33 +458,68 @@ impl RoutineCompiler<'_> {
         Ok(())
     }
 
-    /// A late-bound call: the callee's name is on the stack; arguments are positional.
+    /// A late-bound call: the callee's name is on the stack. Arguments are kept as
+    /// written (position, name, `\`, switch, conditional) and matched to the
+    /// callee's parameters when the call runs, since only then is the callee known.
     pub(crate) fn late_site(&mut self, arena: &Arena, args: ArgList, mut site: CallSite) -> Result<u32, CompileError> {
         let mut origins = Vec::new();
+        let mut positional = true;
         for arg in arena.args(args) {
-            let Some(value) = arg.value else {
-                return Err(self.unsupported(arg.span, "an optional argument in a late-bound call"));
+            let name = arg.name.map(|n| n.span.text(self.text).to_ascii_lowercase().into_boxed_str());
+            let optional = arg.kind != ArgKind::Required;
+            positional &= !optional && name.is_none();
+            let (kind, by_ref) = match (arg.kind, arg.value) {
+                (ArgKind::Placeholder, _) => {
+                    return Err(self.unsupported(arg.span, "a placeholder argument in a late-bound call"))
+                }
+                (ArgKind::Conditional, Some(value)) => {
+                    (LateArgKind::Conditional(self.conditional_slot(arena, value)?), false)
+                }
+                (ArgKind::Optional, None) => (LateArgKind::Switch, false),
+                (_, Some(value)) => {
+                    let by_ref = self.late_value(arena, value)?;
+                    origins.push(self.data_origin(arena, value));
+                    site.n_pushed += 1;
+                    (LateArgKind::Pushed, by_ref)
+                }
+                (_, None) => return Err(self.error(arg.span, "an argument without a value")),
             };
-            if arg.kind != ArgKind::Required || arg.name.is_some() {
-                return Err(self.unsupported(arg.span, "a named or optional argument in a late-bound call"));
-            }
-            let is_data = self.static_type(arena, value).is_some()
-                && matches!(
-                    arena.expr(value).kind,
-                    ExprKind::Name(_) | ExprKind::Index { .. } | ExprKind::Field { .. }
-                );
-            if is_data {
-                self.place(arena, value)?;
-            } else {
-                self.expr(arena, value, None)?;
-            }
-            site.late_args.push(LateArg { by_ref: is_data });
-            site.n_pushed += 1;
-            origins.push(self.data_origin(arena, value));
+            site.late_args.push(LateArg { by_ref, name, optional, kind });
         }
         let site = self.site(site);
-        self.code.arg_origins.push((site, origins.into_boxed_slice()));
+        // ArgName follows arguments by parameter position: known here only when every
+        // argument is positional (otherwise the callee decides where each one goes).
+        if positional {
+            self.code.arg_origins.push((site, origins.into_boxed_slice()));
+        }
         Ok(site)
+    }
+
+    /// Pushes a late-bound call's argument: a place when it is data (the callee may
+    /// want a reference), else its value. Answers whether it pushed a place.
+    fn late_value(&mut self, arena: &Arena, value: rapid_syntax::ast::ExprId) -> Result<bool, CompileError> {
+        let is_data = self.static_type(arena, value).is_some()
+            && matches!(arena.expr(value).kind, ExprKind::Name(_) | ExprKind::Index { .. } | ExprKind::Field { .. });
+        if is_data {
+            self.place(arena, value)?;
+        } else {
+            self.expr(arena, value, None)?;
+        }
+        Ok(is_data)
+    }
+
+    /// The local slot of the optional parameter a conditional argument (`\A?p`) forwards.
+    fn conditional_slot(&self, arena: &Arena, value: rapid_syntax::ast::ExprId) -> Result<u32, CompileError> {
+        let expr = arena.expr(value);
+        match expr.kind {
+            ExprKind::Name(sym) => match self.resolve(sym) {
+                Some(Resolved::Local(local)) if matches!(local.kind, LocalKind::Param { optional: true, .. }) => {
+                    Ok(local.slot)
+                }
+                _ => Err(self.error(expr.span, "a conditional argument must name an optional parameter")),
+            },
+            _ => Err(self.error(expr.span, "a conditional argument must name an optional parameter")),
+        }
     }
 }
 

@@ -404,6 +404,12 @@ impl<'p> RoutineCompiler<'p> {
             self.code.local_names.push((param.name.span.text(self.text).to_owned(), local.slot));
             let by_ref = param.mode != ParamMode::In;
             self.code.param_by_ref.push(by_ref);
+            self.code.param_meta.push(crate::ir::ParamMeta {
+                name: param.name.span.text(self.text).to_ascii_lowercase().into(),
+                optional: param.optional,
+                switch: ty == rapid_sema::types::SWITCH,
+                group: param.group,
+            });
             self.code.param_likes.push(if by_ref { None } else { numeric_like(self.prog, ty, param.rank) });
         }
         self.code.n_params = self.n_locals;

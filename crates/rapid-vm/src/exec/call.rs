@@ -251,7 +251,7 @@ impl Vm {
         Ok(None)
     }
 
-    fn enter(&mut self, callee: Rc<Code>, mut args: Vec<Value>) -> Result<Option<Exit>, RapidError> {
+    pub(super) fn enter(&mut self, callee: Rc<Code>, mut args: Vec<Value>) -> Result<Option<Exit>, RapidError> {
         if self.frames.len() >= MAX_CALL_DEPTH {
             return Err(RapidError::fatal(format!(
                 "more than {MAX_CALL_DEPTH} nested routine calls (runaway recursion?)"
@@ -282,7 +282,7 @@ impl Vm {
     }
 
     /// A conditional argument: the caller's optional parameter, when it was passed.
-    fn forward(&self, index: u32, by_ref: bool) -> Result<Value, RapidError> {
+    pub(super) fn forward(&self, index: u32, by_ref: bool) -> Result<Value, RapidError> {
         let raw = &self.storage.stack[index as usize];
         Ok(match raw {
             Value::Absent => Value::Absent,
@@ -292,39 +292,6 @@ impl Vm {
             _ if by_ref => Value::Ref(Box::new(Place { root: Root::Stack(index), path: Vec::new() })),
             value => value.clone(),
         })
-    }
-
-    /// `% name % args`: finds the procedure by name at run time.
-    pub(super) fn late_call(&mut self, code: &Code, site: u32) -> Result<Option<Exit>, RapidError> {
-        let site = &code.sites[site as usize];
-        let at = self.storage.stack.len() - site.n_pushed as usize;
-        let pushed = self.storage.stack.split_off(at);
-        let name = match self.pop() {
-            Value::Str(name) => name,
-            _ => return Err(self.error(Err::CallProc, "the procedure name is not a string")),
-        };
-        let Some(&idx) = self.procs_by_name.get(&name.to_lowercase()) else {
-            return Err(self.error(Err::RefUnknownProc, format!("no procedure `{name}` is loaded")));
-        };
-        let Some(callee) = self.routines.get(idx as usize).cloned().flatten() else {
-            return Err(self.error(Err::RefUnknownProc, format!("no procedure `{name}` is loaded")));
-        };
-        if callee.is_func || callee.is_trap || callee.n_params as usize != pushed.len() {
-            return Err(self.error(Err::CallProc, format!("`{name}` cannot be called with these arguments")));
-        }
-        let mut args = Vec::with_capacity(pushed.len());
-        for ((value, late), by_ref) in pushed.into_iter().zip(&site.late_args).zip(&callee.param_by_ref) {
-            args.push(match (value, late.by_ref, by_ref) {
-                (Value::Ref(place), true, true) => Value::Ref(place),
-                (Value::Ref(place), true, false) => self.storage.get(&place).map_err(|f| self.fault(f))?.clone(),
-                (value, false, false) => value,
-                (_, false, true) => {
-                    return Err(self.error(Err::CallProc, format!("`{name}` needs data, not a value, for an argument")))
-                }
-                (value, _, _) => value,
-            });
-        }
-        self.enter(callee, args)
     }
 
     /// Leaves the top frame; the caller continues after its call.

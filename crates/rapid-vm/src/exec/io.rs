@@ -22,6 +22,20 @@ impl Vm {
         }
     }
 
+    /// The configuration's signals the program names as data, with the kind of its
+    /// data (`--virtual-io` adds those the I/O system lacks as virtual signals).
+    pub fn configured_signals(&self) -> Vec<(String, rapid_io::SignalKind)> {
+        let io = &self.resources.io;
+        io.configured
+            .iter()
+            .filter_map(|(global, name)| {
+                let crate::value::Value::Opaque(data) = self.storage.globals.get(*global)? else { return None };
+                let kind = io.kinds.iter().find(|(ty, _)| *ty == data.ty)?.1;
+                Some((name.clone(), kind))
+            })
+            .collect()
+    }
+
     /// The task's I/O system, if it has one (its signals, their change log).
     pub fn io_system(&self) -> Option<&rapid_io::IoSystem> {
         self.resources.io.system.as_ref()

@@ -35,13 +35,18 @@ impl Vm {
             Some(code) => (code / 10_000, code % 10_000),
             None => (crate::events::PROGRAM_DOMAIN, u32::try_from(error.errno).unwrap_or(0)),
         };
+        // A short title and the message in short strings, as the controller logs its
+        // errors (a program that joins them into one string of its own still fits).
+        let (title, details) =
+            crate::events::split_error_text(error.name, error.errno, &error.message, error.event.is_some());
         self.events.push(crate::events::Event {
             seq: 0,
             domain,
             number,
             kind,
             time: self.time,
-            title: error.to_string(),
+            title,
+            details,
             lines: vec![format!("routine {}", place.routine)],
             place: Some(place),
         })
@@ -70,6 +75,7 @@ impl Vm {
                 kind: crate::events::EventKind::Warning,
                 time: self.time,
                 title: CORNER_PATH_FAILURE.1.to_string(),
+                details: Vec::new(),
                 lines: vec!["The fly-by point was run as a stop point: no next move was ready in time.".to_string()],
                 place,
             });

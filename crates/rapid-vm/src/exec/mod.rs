@@ -17,6 +17,7 @@ mod instr;
 mod interrupts;
 mod io;
 mod kernel;
+mod late;
 mod log;
 pub mod modules;
 mod num;
@@ -316,6 +317,11 @@ impl Vm {
     /// Executes at most `budget` instructions.
     pub fn run(&mut self, host: &mut dyn crate::host::Host, budget: u64) -> Exit {
         let mut remaining = budget;
+        // Notes about the run made where no host was at hand (the virtual signals of
+        // `--virtual-io`), told once.
+        for text in self.resources.io.take_notes() {
+            host.note(&text);
+        }
         // Messages another task sent while this one did not run.
         self.dispatch_messages();
         while remaining > 0 {

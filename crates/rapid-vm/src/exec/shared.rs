@@ -56,6 +56,7 @@ impl Vm {
             kind: crate::events::EventKind::Info,
             time: self.time,
             title: title.to_string(),
+            details: Vec::new(),
             lines: vec![line],
             place: None,
         });

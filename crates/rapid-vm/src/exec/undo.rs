@@ -49,6 +49,7 @@ pub(crate) fn log_ignored(
         kind: EventKind::Warning,
         time,
         title: IGNORED_IN_UNDO.1.to_string(),
+        details: Vec::new(),
         lines: vec![
             format!("{instruction} is not allowed in UNDO context: it was not executed."),
             format!("routine {routine}"),
@@ -109,6 +110,7 @@ impl Vm {
             kind: EventKind::Warning,
             time: self.time,
             title: UNDO_ABORTED.1.to_string(),
+            details: Vec::new(),
             lines: vec![
                 match skipped {
                     0 => format!("{cause} in UNDO context: the rest of the running UNDO handler was skipped."),

@@ -40,7 +40,7 @@ use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Opaque, OpaqueState, Value};
-pub use table::{SocketState, Status};
+pub use table::{SocketState, Status, SERVICE_PORT_ADDR};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -99,11 +99,18 @@ fn socket_connect(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 }
 
 /// `SocketBind Socket LocalAddress LocalPort`: binds to a local address and port
-/// (port 0: one the OS chooses).
+/// (port 0: one the OS chooses). The controller's own addresses bind the loopback.
 fn socket_bind(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (_, handle) = socket_arg(ctx, &args[0])?;
-    let ip = ip_arg(ctx, &args[1])?;
+    let asked = ip_arg(ctx, &args[1])?;
     let port = port_arg(ctx, &args[2], true)?;
+    let (ip, first) = ctx.resources.sockets.bind_addr(asked);
+    if first {
+        ctx.host.note(&format!(
+            "SocketBind to {asked}, an address of the controller itself, binds {ip} (the virtual controller's \
+             address; clients connect to {ip})"
+        ));
+    }
     ctx.resources.sockets.bind(handle, SocketAddrV4::new(ip, port)).map_err(|f| fault(ctx, f))?;
     Ok(None)
 }

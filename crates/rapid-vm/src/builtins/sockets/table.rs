@@ -92,7 +92,14 @@ pub struct SocketState {
     cooperative: bool,
     /// A socket wait of the task is under way in cooperative mode.
     polling: bool,
+    /// The controller's own addresses beside its service port's (`--controller-ip`).
+    controller_addrs: Vec<Ipv4Addr>,
+    /// The controller addresses a bind was moved to the loopback for, each told once.
+    mapped: Vec<Ipv4Addr>,
 }
+
+/// The address of the controller's service port (RobotWare's fixed 192.168.125.1).
+pub const SERVICE_PORT_ADDR: Ipv4Addr = Ipv4Addr::new(192, 168, 125, 1);
 
 impl SocketState {
     /// Takes the network away from (or gives it back to) the task.
@@ -102,6 +109,30 @@ impl SocketState {
 
     pub fn is_offline(&self) -> bool {
         self.offline
+    }
+
+    /// One more address of the controller's own (its LAN port's, as the system was
+    /// given it): a SocketBind to it binds the loopback.
+    pub fn add_controller_addr(&mut self, ip: Ipv4Addr) {
+        if !self.controller_addrs.contains(&ip) {
+            self.controller_addrs.push(ip);
+        }
+    }
+
+    /// Where a SocketBind to `ip` binds: a virtual controller has none of the real
+    /// one's network ports, so its own addresses (the service port's, and those given
+    /// with [`SocketState::add_controller_addr`]) are mapped to the loopback, as a
+    /// virtual controller in RobotStudio maps them. The second answer is true the first
+    /// time an address is mapped, when the run says so.
+    pub(super) fn bind_addr(&mut self, ip: Ipv4Addr) -> (Ipv4Addr, bool) {
+        if ip != SERVICE_PORT_ADDR && !self.controller_addrs.contains(&ip) {
+            return (ip, false);
+        }
+        let first = !self.mapped.contains(&ip);
+        if first {
+            self.mapped.push(ip);
+        }
+        (Ipv4Addr::LOCALHOST, first)
     }
 
     /// Makes the task's socket waits polls that give way to other tasks (a task of a
