@@ -41,12 +41,14 @@ pub enum ClockPolicy {
 impl ClockPolicy {
     /// The rates (controller seconds per wall-clock second) the clock follows the
     /// wall clock at while tasks compute and while every task waits; None: it does
-    /// not. `outside`: a task talks to the outside world, which paces in real time.
+    /// not. `outside`: a task talks to the outside world, which paces a virtual clock
+    /// in real time.
     fn rates(self, outside: bool) -> (Option<f64>, Option<f64>) {
         match self {
             ClockPolicy::Realtime => (Some(1.0), Some(1.0)),
-            ClockPolicy::Virtual | ClockPolicy::Paced { .. } if outside => (Some(1.0), Some(1.0)),
+            ClockPolicy::Virtual if outside => (Some(1.0), Some(1.0)),
             ClockPolicy::Virtual => (None, None),
+            // The front end chose the rate: the outside world sees it too.
             ClockPolicy::Paced { rate } if rate > 0.0 && rate.is_finite() => (None, Some(rate)),
             ClockPolicy::Paced { .. } => (None, Some(1.0)),
         }
@@ -230,12 +232,13 @@ mod tests {
 
     #[test]
     fn each_policy_follows_the_wall_clock_where_it_says() {
-        // (while computing, while waiting); the outside world paces in real time.
+        // (while computing, while waiting); the outside world paces a virtual clock in
+        // real time.
         assert_eq!(ClockPolicy::Virtual.rates(false), (None, None));
         assert_eq!(ClockPolicy::Virtual.rates(true), (Some(1.0), Some(1.0)));
         assert_eq!(ClockPolicy::Paced { rate: 4.0 }.rates(false), (None, Some(4.0)));
         assert_eq!(ClockPolicy::Paced { rate: 0.0 }.rates(false), (None, Some(1.0)));
-        assert_eq!(ClockPolicy::Paced { rate: 4.0 }.rates(true), (Some(1.0), Some(1.0)));
+        assert_eq!(ClockPolicy::Paced { rate: 4.0 }.rates(true), (None, Some(4.0)));
         assert_eq!(ClockPolicy::Realtime.rates(false), (Some(1.0), Some(1.0)));
     }
 
