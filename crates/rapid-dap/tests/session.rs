@@ -20,6 +20,7 @@ const ROBOT: &str = "MODULE MainModule
   VAR num count := 0;
   VAR part item := [7, \"bolt\"];
   PERS num total := 0;
+  VAR num grid{2, 2} := [[1, 2], [3, 4]];
   PROC main()
     count := 1;
     Helper 5;
@@ -272,6 +273,15 @@ fn a_whole_session_on_two_tasks() {
     assert_eq!(item.1, "[7,\"bolt\"]");
     let parts = client.variables(item.2);
     assert_eq!(parts, [("id".to_owned(), "7".to_owned(), 0), ("label".to_owned(), "\"bolt\"".to_owned(), 0)]);
+    // A two-dimensional array expands row by row; an element is written and read back.
+    let grid = value_of(&data, "grid").clone();
+    assert_eq!(grid.1, "[[1,2],[3,4]]");
+    let cells = client.variables(grid.2);
+    let names: Vec<&str> = cells.iter().map(|c| c.0.as_str()).collect();
+    assert_eq!(names, ["{1,1}", "{1,2}", "{2,1}", "{2,2}"]);
+    assert_eq!(value_of(&cells, "{2,1}").1, "3");
+    let set = client.ok("setVariable", json!({"variablesReference": grid.2, "name": "{2,1}", "value": "30"}));
+    assert_eq!(set["value"], "30");
     let pers_ref = scopes["scopes"][2]["variablesReference"].as_i64().unwrap();
     assert_eq!(value_of(&client.variables(pers_ref), "total").1, "0");
 
@@ -282,6 +292,7 @@ fn a_whole_session_on_two_tasks() {
     assert_eq!(set["value"], "9");
     assert_eq!(client.evaluate(frame, "count + item.id"), "50");
     assert_eq!(client.evaluate(frame, "item.label + \"s\""), "\"bolts\"");
+    assert_eq!(client.evaluate(frame, "grid{2, 1} + grid{1, 2}"), "32");
     let refused =
         client.request("setVariable", json!({"variablesReference": module_ref, "name": "count", "value": "\"x\""}));
     assert_eq!(refused["success"], false);
