@@ -398,3 +398,15 @@ fn a_dialog_is_answered_from_the_console_and_pause_stops_a_loop() {
     assert_eq!(client.evaluate(frame, "n > 0"), "TRUE");
     client.ok("disconnect", json!({}));
 }
+
+#[test]
+fn a_speed_must_be_positive() {
+    let mut client = Client::start(two_tasks());
+    client.ok("initialize", json!({"adapterID": "rapid"}));
+    let refused = client.request("launch", json!({"program": "/dap", "speed": 0}));
+    assert_eq!(refused["success"], false);
+    assert!(refused["message"].as_str().unwrap_or_default().contains("speed"), "{refused}");
+    client.ok("launch", json!({"program": "/dap", "speed": 4}));
+    client.event("initialized");
+    client.ok("disconnect", json!({}));
+}

@@ -12,8 +12,9 @@ mod inspect;
 
 use std::collections::{HashMap, VecDeque};
 use std::path::PathBuf;
+use std::time::Duration;
 
-use rapid_controller::api::{Change, RunOutcome, Session, StartFrom, StepKind, Subscription};
+use rapid_controller::api::{Change, ClockPolicy, RunOutcome, Session, StartFrom, StepKind, Subscription};
 use rapid_controller::StopKind;
 use serde_json::{json, Value};
 
@@ -38,6 +39,8 @@ pub(crate) struct Adapter<'l> {
     outgoing: Vec<Value>,
     /// The program runs (or a step is carried out): the loop advances it.
     running: bool,
+    /// The paced clock asked the loop to wait this long before the next slice.
+    idle: Option<Duration>,
     /// Why the program will have stopped when it next stands still, and in which task.
     stop_reason: Option<(&'static str, usize)>,
     /// The program was started once (the first start is from Main).
@@ -59,6 +62,7 @@ impl<'l> Adapter<'l> {
             seq: 0,
             outgoing: Vec::new(),
             running: false,
+            idle: None,
             stop_reason: None,
             started: false,
             stop_on_entry: false,
@@ -71,6 +75,12 @@ impl<'l> Adapter<'l> {
 
     pub(crate) fn is_running(&self) -> bool {
         self.running
+    }
+
+    /// How long the loop may wait for a request before the next slice (the clock
+    /// is paced: nothing runs before then).
+    pub(crate) fn take_idle(&mut self) -> Option<Duration> {
+        self.idle.take()
     }
 
     /// The client disconnected: the loop ends.
@@ -178,8 +188,16 @@ impl<'l> Adapter<'l> {
             tp_input: path("tpInput"),
             stop_on_entry: args["stopOnEntry"].as_bool().unwrap_or(false),
         };
+        let speed = match &args["speed"] {
+            Value::Null => 1.0,
+            speed => speed.as_f64().filter(|s| *s > 0.0 && s.is_finite()).ok_or("`speed` must be a positive number")?,
+        };
         let launched = self.launcher.launch(&launch)?;
         let mut session = launched.session;
+        // The controller's clock follows the wall clock (`speed` times as fast), as
+        // on the controller and in `rapid serve`: a program waiting without end then
+        // waits, rather than racing a virtual clock on.
+        session.set_clock(ClockPolicy::Paced { rate: speed });
         self.subscription = Some(session.subscribe());
         self.session = Some(session);
         self.answers = launched.answers.into();
@@ -312,7 +330,7 @@ impl<'l> Adapter<'l> {
         self.forward_changes();
         match outcome {
             RunOutcome::Running => {}
-            RunOutcome::Sleep(wait) => std::thread::sleep(wait.min(std::time::Duration::from_millis(20))),
+            RunOutcome::Sleep(wait) => self.idle = Some(wait),
             RunOutcome::Breakpoint(hit) => self.at_breakpoint(&hit),
             RunOutcome::Stopped => {
                 let (reason, task) = self.stop_reason.unwrap_or(("pause", 0));
