@@ -410,3 +410,24 @@ fn a_speed_must_be_positive() {
     client.event("initialized");
     client.ok("disconnect", json!({}));
 }
+
+#[test]
+fn a_log_point_writes_and_a_hit_count_stops_late() {
+    let mut client = Client::start(two_tasks());
+    let log = json!({"line": line_of(OTHER, "ticks := ticks + 1;"), "logMessage": "tick {ticks} of {5}"});
+    let third = json!({"line": line_of(OTHER, "WaitTime 0.1;"), "hitCondition": "3"});
+    let set = client.launch_with_breakpoints("/dap/T_OTHER/Other.mod", json!([log, third]));
+    assert_eq!(
+        (set["breakpoints"][0]["verified"].as_bool(), set["breakpoints"][1]["verified"].as_bool()),
+        (Some(true), Some(true))
+    );
+    // The log point is passed before each increment: ticks is 0, 1, 2 before the
+    // third WaitTime, where ticks is 3.
+    let (stopped, output) = client.event("stopped");
+    assert_eq!((stopped["reason"].as_str(), stopped["threadId"].as_u64()), (Some("breakpoint"), Some(2)));
+    let logged: Vec<&str> = output.iter().filter(|o| o.starts_with("tick")).map(String::as_str).collect();
+    assert_eq!(logged, ["tick 0 of 5\n", "tick 1 of 5\n", "tick 2 of 5\n"]);
+    let (frame, _, _) = client.top_frame(2);
+    assert_eq!(client.evaluate(frame, "ticks"), "3");
+    client.ok("disconnect", json!({}));
+}

@@ -8,6 +8,7 @@
 //! `terminated` event, and the change stream's pendant lines and dialogs become
 //! `output` events.
 
+mod breakpoints;
 mod inspect;
 
 use std::collections::{HashMap, VecDeque};
@@ -47,7 +48,7 @@ pub(crate) struct Adapter<'l> {
     started: bool,
     stop_on_entry: bool,
     /// Breakpoints by file (as the client named it): their lines and conditions.
-    breakpoints: HashMap<String, Vec<(u32, Option<String>)>>,
+    breakpoints: HashMap<String, Vec<breakpoints::Point>>,
     handles: Handles,
     answers: VecDeque<String>,
     done: bool,
@@ -216,41 +217,6 @@ impl<'l> Adapter<'l> {
         }
     }
 
-    fn set_breakpoints(&mut self, args: &Value) -> Result<Value, Failure> {
-        let given = args["source"]["path"].as_str().ok_or("setBreakpoints needs `source.path`")?.to_owned();
-        let file = canonical(&given);
-        let wanted: Vec<(u32, Option<String>)> = args["breakpoints"]
-            .as_array()
-            .map(|list| {
-                list.iter()
-                    .filter_map(|b| {
-                        let line = u32::try_from(b["line"].as_u64()?).ok()?;
-                        let condition = b["condition"].as_str().filter(|c| !c.trim().is_empty()).map(str::to_owned);
-                        Some((line, condition))
-                    })
-                    .collect()
-            })
-            .unwrap_or_default();
-        self.session()?;
-        for (line, _) in self.breakpoints.remove(&file).unwrap_or_default() {
-            self.session()?.clear_breakpoint(&file, line);
-        }
-        let mut answered = Vec::new();
-        let mut kept = Vec::new();
-        for (line, condition) in wanted {
-            match self.session()?.set_breakpoint(&file, line) {
-                Ok(at) => {
-                    let line = at.first().map_or(line, |l| l.line);
-                    answered.push(json!({"verified": true, "line": line}));
-                    kept.push((line, condition));
-                }
-                Err(why) => answered.push(json!({"verified": false, "line": line, "message": why.to_string()})),
-            }
-        }
-        self.breakpoints.insert(file, kept);
-        Ok(json!({"breakpoints": answered}))
-    }
-
     fn threads(&mut self) -> Result<Value, Failure> {
         let tasks = self.session()?.tasks();
         let threads: Vec<Value> =
@@ -344,42 +310,7 @@ impl<'l> Adapter<'l> {
         }
     }
 
-    /// The program stopped at a breakpoint: reported when its condition holds, else
-    /// the program goes on.
-    fn at_breakpoint(&mut self, hit: &rapid_controller::api::BreakpointHit) {
-        let task = self
-            .session
-            .as_ref()
-            .map_or(0, |s| s.tasks().iter().position(|t| t.name.eq_ignore_ascii_case(&hit.at.task)).unwrap_or(0));
-        let condition = self
-            .breakpoints
-            .get(&hit.file)
-            .and_then(|points| points.iter().find(|(line, _)| *line == hit.line))
-            .and_then(|(_, condition)| condition.clone());
-        if let Some(condition) = condition {
-            let holds = self.session.as_mut().map(|s| s.evaluate(&hit.at.task, 0, &condition));
-            match holds {
-                Some(Ok(tree)) if tree.value == "FALSE" => {
-                    if let Err(why) =
-                        self.session().and_then(|s| s.start(StartFrom::Pointer).map_err(|e| e.to_string()))
-                    {
-                        self.output("stderr", format!("the program cannot go on: {why}\n"));
-                        self.stopped("breakpoint", task);
-                    }
-                    return;
-                }
-                Some(Ok(tree)) if tree.value == "TRUE" => {}
-                Some(Ok(tree)) => {
-                    self.output("stderr", format!("breakpoint condition `{condition}` is no bool: {}\n", tree.value));
-                }
-                Some(Err(why)) => self.output("stderr", format!("breakpoint condition `{condition}`: {why}\n")),
-                None => {}
-            }
-        }
-        self.stopped("breakpoint", task);
-    }
-
-    fn stopped(&mut self, reason: &str, task: usize) {
+    pub(super) fn stopped(&mut self, reason: &str, task: usize) {
         self.running = false;
         self.stop_reason = None;
         self.handles.clear();
@@ -423,16 +354,12 @@ fn capabilities() -> Value {
     json!({
         "supportsConfigurationDoneRequest": true,
         "supportsConditionalBreakpoints": true,
+        "supportsHitConditionalBreakpoints": true,
+        "supportsLogPoints": true,
         "supportsSetVariable": true,
         "supportsEvaluateForHovers": true,
         "supportsStepBack": true,
         "supportsTerminateRequest": true,
         "supportsSingleThreadExecutionRequests": false,
     })
-}
-
-/// The path a breakpoint's file is known by: the file's canonical path, as the
-/// launcher loads modules (the text as given when the file cannot be found).
-fn canonical(path: &str) -> String {
-    std::fs::canonicalize(path).map_or_else(|_| path.to_owned(), |p| p.to_string_lossy().into_owned())
 }
