@@ -383,8 +383,13 @@ fn a_dialog_is_answered_from_the_console_and_pause_stops_a_loop() {
     let refused = client.request("setVariable", json!({"variablesReference": locals, "name": "x", "value": "1"}));
     assert!(refused["message"].as_str().unwrap_or_default().contains("not supported yet"), "{refused}");
 
+    // A datum changed at the entry keeps its value when the program starts.
+    let data = scopes["scopes"][1]["variablesReference"].as_i64().unwrap();
+    client.ok("setVariable", json!({"variablesReference": data, "name": "n", "value": "100"}));
     client.ok("continue", json!({"threadId": 1}));
     client.output_with("How many?");
+    // The task waits in its dialog, before the loop: n is still what was set.
+    assert_eq!(client.evaluate(frame, "n"), "100");
     let answered = client.ok("evaluate", json!({"expression": ":answer 3", "context": "repl"}));
     assert_eq!(answered["result"], "answered \"How many?\"");
     client.output_with("got 3");
@@ -395,7 +400,7 @@ fn a_dialog_is_answered_from_the_console_and_pause_stops_a_loop() {
     let (frame, _, line) = client.top_frame(1);
     assert!(line == line_of(SPIN, "WHILE TRUE") || line == line_of(SPIN, "n := n + 1;"), "paused at line {line}");
     assert_eq!(client.evaluate(frame, "answer"), "3");
-    assert_eq!(client.evaluate(frame, "n > 0"), "TRUE");
+    assert_eq!(client.evaluate(frame, "n > 100"), "TRUE");
     client.ok("disconnect", json!({}));
 }
 

@@ -209,6 +209,10 @@ impl<'l> Adapter<'l> {
     /// The configuration is done: the program starts (or stands at its entry).
     fn configured(&mut self) {
         if self.stop_on_entry {
+            // The program pointers stand at the entry routines already; going on from
+            // them keeps what the user changes meanwhile (a start from Main would
+            // give the data its initial values again).
+            self.started = true;
             self.stopped("entry", 0);
             return;
         }
