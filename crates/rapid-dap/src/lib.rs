@@ -11,7 +11,7 @@
 //! into a booted session (as `rapid run` reads a module, folder, backup or manifest).
 //!
 //! Modules: `wire` (the base protocol's framing), `adapter` (requests, responses and
-//! events), `vars` (variable handles), `run` (the loop that reads requests while the
+//! events; `adapter/inspect.rs` what a stopped program shows), `vars` (variable handles), `run` (the loop that reads requests while the
 //! program runs).
 
 mod adapter;

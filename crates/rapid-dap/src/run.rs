@@ -35,14 +35,16 @@ pub fn serve(input: impl Read + Send + 'static, output: &mut dyn Write, launcher
     });
     let mut adapter = Adapter::new(launcher);
     loop {
-        let next = if adapter.is_running() {
+        let idle = adapter.take_idle();
+        let next = if adapter.is_running() && idle.is_none() {
             match requests.try_recv() {
                 Ok(message) => Some(message),
                 Err(mpsc::TryRecvError::Empty) => None,
                 Err(mpsc::TryRecvError::Disconnected) => break,
             }
         } else {
-            match requests.recv_timeout(IDLE_WAIT) {
+            // A paced clock's wait, or a program standing still: a request may come.
+            match requests.recv_timeout(idle.unwrap_or(IDLE_WAIT).min(IDLE_WAIT)) {
                 Ok(message) => Some(message),
                 Err(mpsc::RecvTimeoutError::Timeout) => None,
                 Err(mpsc::RecvTimeoutError::Disconnected) => break,

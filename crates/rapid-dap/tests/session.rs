@@ -20,6 +20,7 @@ const ROBOT: &str = "MODULE MainModule
   VAR num count := 0;
   VAR part item := [7, \"bolt\"];
   PERS num total := 0;
+  VAR num grid{2, 2} := [[1, 2], [3, 4]];
   PROC main()
     count := 1;
     Helper 5;
@@ -272,6 +273,15 @@ fn a_whole_session_on_two_tasks() {
     assert_eq!(item.1, "[7,\"bolt\"]");
     let parts = client.variables(item.2);
     assert_eq!(parts, [("id".to_owned(), "7".to_owned(), 0), ("label".to_owned(), "\"bolt\"".to_owned(), 0)]);
+    // A two-dimensional array expands row by row; an element is written and read back.
+    let grid = value_of(&data, "grid").clone();
+    assert_eq!(grid.1, "[[1,2],[3,4]]");
+    let cells = client.variables(grid.2);
+    let names: Vec<&str> = cells.iter().map(|c| c.0.as_str()).collect();
+    assert_eq!(names, ["{1,1}", "{1,2}", "{2,1}", "{2,2}"]);
+    assert_eq!(value_of(&cells, "{2,1}").1, "3");
+    let set = client.ok("setVariable", json!({"variablesReference": grid.2, "name": "{2,1}", "value": "30"}));
+    assert_eq!(set["value"], "30");
     let pers_ref = scopes["scopes"][2]["variablesReference"].as_i64().unwrap();
     assert_eq!(value_of(&client.variables(pers_ref), "total").1, "0");
 
@@ -282,6 +292,7 @@ fn a_whole_session_on_two_tasks() {
     assert_eq!(set["value"], "9");
     assert_eq!(client.evaluate(frame, "count + item.id"), "50");
     assert_eq!(client.evaluate(frame, "item.label + \"s\""), "\"bolts\"");
+    assert_eq!(client.evaluate(frame, "grid{2, 1} + grid{1, 2}"), "32");
     let refused =
         client.request("setVariable", json!({"variablesReference": module_ref, "name": "count", "value": "\"x\""}));
     assert_eq!(refused["success"], false);
@@ -372,8 +383,13 @@ fn a_dialog_is_answered_from_the_console_and_pause_stops_a_loop() {
     let refused = client.request("setVariable", json!({"variablesReference": locals, "name": "x", "value": "1"}));
     assert!(refused["message"].as_str().unwrap_or_default().contains("not supported yet"), "{refused}");
 
+    // A datum changed at the entry keeps its value when the program starts.
+    let data = scopes["scopes"][1]["variablesReference"].as_i64().unwrap();
+    client.ok("setVariable", json!({"variablesReference": data, "name": "n", "value": "100"}));
     client.ok("continue", json!({"threadId": 1}));
     client.output_with("How many?");
+    // The task waits in its dialog, before the loop: n is still what was set.
+    assert_eq!(client.evaluate(frame, "n"), "100");
     let answered = client.ok("evaluate", json!({"expression": ":answer 3", "context": "repl"}));
     assert_eq!(answered["result"], "answered \"How many?\"");
     client.output_with("got 3");
@@ -384,6 +400,39 @@ fn a_dialog_is_answered_from_the_console_and_pause_stops_a_loop() {
     let (frame, _, line) = client.top_frame(1);
     assert!(line == line_of(SPIN, "WHILE TRUE") || line == line_of(SPIN, "n := n + 1;"), "paused at line {line}");
     assert_eq!(client.evaluate(frame, "answer"), "3");
-    assert_eq!(client.evaluate(frame, "n > 0"), "TRUE");
+    assert_eq!(client.evaluate(frame, "n > 100"), "TRUE");
+    client.ok("disconnect", json!({}));
+}
+
+#[test]
+fn a_speed_must_be_positive() {
+    let mut client = Client::start(two_tasks());
+    client.ok("initialize", json!({"adapterID": "rapid"}));
+    let refused = client.request("launch", json!({"program": "/dap", "speed": 0}));
+    assert_eq!(refused["success"], false);
+    assert!(refused["message"].as_str().unwrap_or_default().contains("speed"), "{refused}");
+    client.ok("launch", json!({"program": "/dap", "speed": 4}));
+    client.event("initialized");
+    client.ok("disconnect", json!({}));
+}
+
+#[test]
+fn a_log_point_writes_and_a_hit_count_stops_late() {
+    let mut client = Client::start(two_tasks());
+    let log = json!({"line": line_of(OTHER, "ticks := ticks + 1;"), "logMessage": "tick {ticks} of {5}"});
+    let third = json!({"line": line_of(OTHER, "WaitTime 0.1;"), "hitCondition": "3"});
+    let set = client.launch_with_breakpoints("/dap/T_OTHER/Other.mod", json!([log, third]));
+    assert_eq!(
+        (set["breakpoints"][0]["verified"].as_bool(), set["breakpoints"][1]["verified"].as_bool()),
+        (Some(true), Some(true))
+    );
+    // The log point is passed before each increment: ticks is 0, 1, 2 before the
+    // third WaitTime, where ticks is 3.
+    let (stopped, output) = client.event("stopped");
+    assert_eq!((stopped["reason"].as_str(), stopped["threadId"].as_u64()), (Some("breakpoint"), Some(2)));
+    let logged: Vec<&str> = output.iter().filter(|o| o.starts_with("tick")).map(String::as_str).collect();
+    assert_eq!(logged, ["tick 0 of 5\n", "tick 1 of 5\n", "tick 2 of 5\n"]);
+    let (frame, _, _) = client.top_frame(2);
+    assert_eq!(client.evaluate(frame, "ticks"), "3");
     client.ok("disconnect", json!({}));
 }

@@ -1,6 +1,8 @@
 //! `rapid dap` end to end with a real DAP client: VS Code's adapter test library
 //! (`@vscode/debugadapter-testsupport`, pinned, from npm, installed once per target
-//! folder) drives `dap_client.cjs` through a whole session on a two-task manifest.
+//! folder) drives `dap_client.cjs` through a whole session on a two-task manifest. A
+//! scripted client of our own checks a backup's signals and a stimulus, and a launch
+//! that cannot boot.
 //!
 //! Without node, npm or the registry the test is skipped loudly; under CI (`CI=true`
 //! or `OPENRAPID_REQUIRE_DAP_CLIENT=1`) it fails instead.
@@ -9,7 +11,11 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
-use crate::fixture::{copy_dir, repo_root, scratch_in, text};
+use std::io::{BufRead, BufReader, Read, Write};
+
+use serde_json::{json, Value};
+
+use crate::fixture::{copy_dir, repo_root, scratch_in, system, text, TaskDef};
 
 /// The client library the test installs.
 const PACKAGE: &str = "@vscode/debugadapter-testsupport@1.68.0";
@@ -86,4 +92,164 @@ fn a_real_dap_client_debugs_a_two_task_program() {
     let out = output_bounded(&mut node, Duration::from_secs(120)).expect("the client finishes within 120 s");
     assert!(out.status.success(), "the DAP session failed:\n{}\n{}", text(&out.stdout), text(&out.stderr));
     assert!(text(&out.stdout).contains("dap session passed"), "{}", text(&out.stdout));
+}
+
+/// `rapid dap` as a process, spoken to by a scripted client.
+struct Adapter {
+    child: std::process::Child,
+    messages: std::sync::mpsc::Receiver<Value>,
+    seq: i64,
+}
+
+impl Adapter {
+    fn start() -> Adapter {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
+            .arg("dap")
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+            .expect("start rapid dap");
+        let stdout = child.stdout.take().expect("stdout");
+        let (tx, messages) = std::sync::mpsc::channel();
+        std::thread::spawn(move || {
+            let mut reader = BufReader::new(stdout);
+            loop {
+                let mut header = String::new();
+                if reader.read_line(&mut header).unwrap_or(0) == 0 {
+                    return;
+                }
+                let Some(length) = header.trim().strip_prefix("Content-Length: ").and_then(|n| n.parse().ok()) else {
+                    continue;
+                };
+                let mut blank = String::new();
+                let _ = reader.read_line(&mut blank);
+                let mut body = vec![0; length];
+                if reader.read_exact(&mut body).is_err() {
+                    return;
+                }
+                if tx.send(serde_json::from_slice(&body).expect("JSON")).is_err() {
+                    return;
+                }
+            }
+        });
+        Adapter { child, messages, seq: 0 }
+    }
+
+    /// The next message that `pick` accepts, at most 20 s away.
+    fn wait_for(&mut self, pick: impl Fn(&Value) -> bool) -> Value {
+        loop {
+            let message = self.messages.recv_timeout(Duration::from_secs(20)).expect("rapid dap answers");
+            if pick(&message) {
+                return message;
+            }
+        }
+    }
+
+    fn request(&mut self, command: &str, arguments: Value) -> Value {
+        self.seq += 1;
+        let body = json!({"seq": self.seq, "type": "request", "command": command, "arguments": arguments}).to_string();
+        let stdin = self.child.stdin.as_mut().expect("stdin");
+        write!(stdin, "Content-Length: {}\r\n\r\n{body}", body.len()).expect("write");
+        stdin.flush().expect("flush");
+        let seq = self.seq;
+        self.wait_for(|m| m["type"] == "response" && m["request_seq"] == seq)
+    }
+
+    fn ok(&mut self, command: &str, arguments: Value) -> Value {
+        let response = self.request(command, arguments);
+        assert_eq!(response["success"], true, "{command}: {response}");
+        response["body"].clone()
+    }
+
+    fn event(&mut self, name: &str) -> Value {
+        self.wait_for(|m| m["type"] == "event" && m["event"] == name)["body"].clone()
+    }
+
+    /// Disconnects; the process must end by itself.
+    fn finish(mut self) {
+        self.ok("disconnect", json!({}));
+        drop(self.child.stdin.take());
+        let deadline = Instant::now() + Duration::from_secs(10);
+        while Instant::now() < deadline {
+            if let Ok(Some(status)) = self.child.try_wait() {
+                assert!(status.success(), "rapid dap ended with {status}");
+                return;
+            }
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        let _ = self.child.kill();
+        panic!("rapid dap did not end after disconnect");
+    }
+}
+
+const WAITER: &str = "MODULE Main
+  VAR num seen := 0;
+  PROC main()
+    WaitDI diPart, 1;
+    seen := 1;
+    SetDO doGrip, 1;
+    seen := 2;
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn a_backup_runs_with_its_stimulus_and_shows_its_signals() {
+    let dir = scratch_in("dap", "signals");
+    let signals = "\n      -Name \"diPart\" -SignalType \"DI\"\n\n      -Name \"doGrip\" -SignalType \"DO\"\n";
+    let root = system(
+        dir.path(),
+        &[TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: WAITER }],
+        signals,
+    );
+    let stimulus = dir.join("part.stimulus");
+    std::fs::write(&stimulus, "at 0.5 set diPart 1\n").expect("stimulus");
+    let module = root.join("RAPID/TASK1/PROGMOD/Main.mod");
+    let line = WAITER.lines().position(|l| l.contains("seen := 2;")).map(|at| at + 1).expect("line");
+
+    let mut dap = Adapter::start();
+    dap.ok("initialize", json!({"adapterID": "rapid"}));
+    dap.ok("launch", json!({"program": root, "stimulus": stimulus}));
+    dap.event("initialized");
+    let set = dap.ok("setBreakpoints", json!({"source": {"path": module}, "breakpoints": [{"line": line}]}));
+    assert_eq!(set["breakpoints"][0]["verified"], true, "{set}");
+    dap.ok("configurationDone", json!({}));
+    let stopped = dap.event("stopped");
+    assert_eq!(stopped["reason"], "breakpoint");
+
+    let trace = dap.ok("stackTrace", json!({"threadId": 1}));
+    let frame = trace["stackFrames"][0]["id"].clone();
+    // The stimulus set diPart, so WaitDI let the task on, and it set doGrip.
+    let scopes = dap.ok("scopes", json!({"frameId": frame}));
+    let signals_scope = scopes["scopes"].as_array().and_then(|s| s.iter().find(|s| s["name"] == "Signals")).cloned();
+    let reference = signals_scope.expect("a Signals scope")["variablesReference"].clone();
+    let vars = dap.ok("variables", json!({"variablesReference": reference}));
+    let value = |vars: &Value, name: &str| {
+        vars["variables"].as_array().and_then(|v| v.iter().find(|v| v["name"] == name)).map(|v| v["value"].clone())
+    };
+    assert_eq!(value(&vars, "diPart"), Some(json!("1")), "{vars}");
+    assert_eq!(value(&vars, "doGrip"), Some(json!("1")), "{vars}");
+    let set = dap.ok("setVariable", json!({"variablesReference": reference, "name": "doGrip", "value": "0"}));
+    assert_eq!(set["value"], "0");
+    let seen = dap.ok("evaluate", json!({"expression": "seen", "frameId": frame}));
+    assert_eq!(seen["result"], "1");
+
+    dap.ok("continue", json!({"threadId": 1}));
+    dap.event("terminated");
+    assert_eq!(dap.event("exited")["exitCode"], 0);
+    dap.finish();
+}
+
+#[test]
+fn a_launch_that_cannot_boot_says_why() {
+    let dir = scratch_in("dap", "no_program");
+    let mut dap = Adapter::start();
+    dap.ok("initialize", json!({"adapterID": "rapid"}));
+    let missing = dir.join("missing.mod");
+    let response = dap.request("launch", json!({"program": missing}));
+    assert_eq!(response["success"], false);
+    let message = response["message"].as_str().unwrap_or_default();
+    assert!(message.contains("missing.mod"), "{message}");
+    dap.finish();
 }

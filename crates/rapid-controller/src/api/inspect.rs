@@ -73,6 +73,7 @@ impl Session {
     fn tree(&self, idx: usize, name: String, value: &Value) -> ValueTree {
         let program = self.controller.tasks[idx].loaded.analysis.as_deref();
         let text = match value {
+            Value::Array(array) if array.rank() > 1 => nested_literal(array),
             Value::Absent => "<not present>".to_owned(),
             Value::SwitchOn => "<present>".to_owned(),
             other => rapid_vm::builtins::value_literal(other).unwrap_or_else(|| "<no literal>".to_owned()),
@@ -162,6 +163,27 @@ fn declares_module(text: &str, name: &str) -> bool {
         words.next().is_some_and(|w| w.eq_ignore_ascii_case("MODULE"))
             && words.next().is_some_and(|w| w.eq_ignore_ascii_case(name))
     })
+}
+
+/// A multi-dimensional array as RAPID writes its aggregate: one bracket per
+/// dimension, `[[1,2],[3,4]]` for a 2×2 array (`value_literal` writes the elements
+/// in one flat list).
+fn nested_literal(array: &rapid_vm::value::Array) -> String {
+    let texts: Option<Vec<String>> = array.elems.iter().map(rapid_vm::builtins::value_literal).collect();
+    let Some(texts) = texts else { return "<no literal>".to_owned() };
+    let dims: Vec<usize> = array.dims.iter().take_while(|&&d| d > 0).map(|&d| d as usize).collect();
+    nest(&texts, &dims)
+}
+
+/// `texts` (row-major) grouped by `dims`, outermost first.
+fn nest(texts: &[String], dims: &[usize]) -> String {
+    let Some((&first, rest)) = dims.split_first() else { return texts.first().cloned().unwrap_or_default() };
+    if rest.is_empty() {
+        return format!("[{}]", texts.join(","));
+    }
+    let size = texts.len() / first.max(1);
+    let rows: Vec<String> = texts.chunks(size.max(1)).map(|row| nest(row, rest)).collect();
+    format!("[{}]", rows.join(","))
 }
 
 /// How a debugger names element `at` of an array of sizes `dims`: `{i}`, `{i,j}`…
@@ -321,7 +343,7 @@ impl Scope<'_> {
 
 #[cfg(test)]
 mod tests {
-    use super::{declares_module, element_name, parse_expression};
+    use super::{declares_module, element_name, nest, parse_expression};
 
     #[test]
     fn elements_are_named_by_their_indices() {
@@ -329,6 +351,14 @@ mod tests {
         assert_eq!(element_name([3, 0, 0], 2), "{3}");
         // Row-major: element 4 of a 2×3 array is row 2, column 2.
         assert_eq!(element_name([2, 3, 0], 4), "{2,2}");
+    }
+
+    #[test]
+    fn arrays_nest_by_dimension() {
+        let texts: Vec<String> = (1..=6).map(|n| n.to_string()).collect();
+        assert_eq!(nest(&texts, &[2, 3]), "[[1,2,3],[4,5,6]]");
+        assert_eq!(nest(&texts, &[3, 2]), "[[1,2],[3,4],[5,6]]");
+        assert_eq!(nest(&texts[..2], &[2]), "[1,2]");
     }
 
     #[test]
