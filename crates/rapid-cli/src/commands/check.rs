@@ -32,7 +32,11 @@ pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
         (Some(folder), false) => vec![folder.name.clone()],
         _ => Vec::new(),
     };
-    let options = Options { syntax_only: args.syntax_only, predefined: inputs.predefined.clone() };
+    let options = Options {
+        syntax_only: args.syntax_only,
+        predefined: inputs.predefined.clone(),
+        system_options: inputs.system_options.clone(),
+    };
     let (found, facts) = check_task(&inputs, &options);
     let mut reported = tag(found, &names(&inputs));
     // The configuration is read again with each task: its findings are compared across
@@ -52,7 +56,11 @@ pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
     for other in &others {
         // The other tasks add their modules only: the configuration was read once.
         let offset = table.len();
-        let options = Options { syntax_only: args.syntax_only, predefined: other.predefined.clone() };
+        let options = Options {
+            syntax_only: args.syntax_only,
+            predefined: other.predefined.clone(),
+            system_options: other.system_options.clone(),
+        };
         let (found, facts) = check_task(other, &options);
         let found = found.into_iter().map(|d| Diagnostic { file: d.file + offset, ..d }).collect();
         reported.extend(tag(found, &names(other)));

@@ -95,7 +95,11 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             (_, _, Some(entry)) => entry.clone(),
             _ => "main".to_owned(),
         };
-        let options = Options { predefined: task.inputs.predefined.clone(), ..Options::default() };
+        let options = Options {
+            predefined: task.inputs.predefined.clone(),
+            system_options: task.inputs.system_options.clone(),
+            ..Options::default()
+        };
         let mut program = match (load_with(&task.inputs.modules, &entry, &options), configured, config) {
             (Ok(program), _, _) => program,
             // `--entry` reaches the first task only: the configuration is where this

@@ -67,6 +67,9 @@ pub(crate) struct Manifest {
     /// `[system] name`, and `robot`: the model the motion tasks move (`motion_out.rs`).
     pub(crate) name: Option<String>,
     pub(crate) robot: Option<String>,
+    /// `[system] options`: the software options the system has (`rapid check` knows
+    /// their names); `None` when not given.
+    pub(crate) options: Option<Vec<String>>,
     /// `[[unit]]`: external mechanical units and the tasks they belong to.
     pub(crate) units: Vec<super::TaskUnit>,
     /// `[[conveyor]]`: conveyors for conveyor tracking and the tasks they belong to.
@@ -100,6 +103,7 @@ struct RawManifest {
 struct RawSystem {
     name: Option<Spanned<String>>,
     robot: Option<Spanned<String>>,
+    options: Option<Vec<String>>,
     io: Option<Spanned<String>>,
     home: Option<Spanned<String>>,
     shared: Option<Spanned<Vec<Spanned<String>>>>,
@@ -229,6 +233,7 @@ impl Reader<'_> {
             self.non_empty(&robot, "robot");
             self.manifest.robot = Some(robot.into_inner());
         }
+        self.manifest.options = system.options;
         if let Some(io) = system.io {
             let path = self.dir.join(io.get_ref());
             if io.get_ref().trim().is_empty() {

@@ -70,7 +70,11 @@ impl WorkspaceLoader for TestLoader {
     fn load(&self, root: &Path) -> Result<Workspace, String> {
         let predefined =
             self.signals.iter().map(|(n, t)| PredefinedData { name: n.clone(), type_name: t.clone() }).collect();
-        let task = Task { name: None, modules: read_folder(root), options: Options { syntax_only: false, predefined } };
+        let task = Task {
+            name: None,
+            modules: read_folder(root),
+            options: Options { syntax_only: false, predefined, ..Options::default() },
+        };
         Ok(Workspace { tasks: vec![task], ..Workspace::default() })
     }
 }
