@@ -17,6 +17,7 @@ pub mod instrs;
 pub mod ir;
 pub mod ops;
 pub mod persist;
+mod refusals;
 pub mod value;
 
 use rapid_sema::symbols::{DeclOrigin, Def};
@@ -213,36 +214,19 @@ fn checked(files: &[SourceInput], options: &Options) -> Result<(Program, Vec<Dia
     if Program::has_errors(&analysis.diagnostics) {
         return Err(LoadError::Diagnostics(analysis.diagnostics));
     }
-    if let Some(refusal) = needs_encrypted(files, &analysis.diagnostics) {
+    if let Some(refusal) = refusals::needs_encrypted(files, &analysis.diagnostics) {
         return Err(LoadError::Unsupported(vec![refusal]));
     }
     match analysis.program {
-        Some(prog) => Ok((prog, analysis.diagnostics)),
+        Some(prog) => {
+            let opaque = refusals::opaque_data(&prog);
+            if !opaque.is_empty() {
+                return Err(LoadError::Unsupported(opaque));
+            }
+            Ok((prog, analysis.diagnostics))
+        }
         None => Err(LoadError::Diagnostics(analysis.diagnostics)),
     }
-}
-
-/// Names only an encrypted module can define (W0218) mean the task needs that module's
-/// code, which cannot be read: it cannot run here. One refusal, at the first such
-/// name, naming them all and the encrypted modules; given before anything runs.
-fn needs_encrypted(files: &[SourceInput], diagnostics: &[Diagnostic]) -> Option<compile::CompileError> {
-    let uses: Vec<&Diagnostic> =
-        diagnostics.iter().filter(|d| d.code == rapid_sema::Code::UndefinedBesideEncrypted).collect();
-    let first = uses.first()?;
-    let name_of = |d: &Diagnostic| {
-        let text = files[d.file].text.get(d.span.start as usize..d.span.end as usize).unwrap_or("");
-        format!("`{}`", text.split('(').next().unwrap_or("").trim())
-    };
-    let mut names: Vec<String> = uses.iter().map(|d| name_of(d)).collect();
-    names.dedup();
-    let modules: Vec<String> =
-        files.iter().filter(|f| f.unreadable.is_some()).map(|f| format!("`{}`", f.path)).collect();
-    let message = format!(
-        "the task cannot run: it needs code from the encrypted module {}, which cannot be read ({} defined in no readable module)",
-        modules.join(", "),
-        names.join(", ")
-    );
-    Some(compile::CompileError { file: first.file, span: first.span, message })
 }
 
 /// Every readable file parsed as an outline (routine bodies left for the compiler).

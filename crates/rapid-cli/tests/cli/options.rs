@@ -100,3 +100,26 @@ fn an_encrypted_module_makes_undefined_names_warnings_and_the_task_unrunnable() 
         "{err}"
     );
 }
+
+#[test]
+fn module_data_of_an_opaque_option_type_checks_but_does_not_run() {
+    // be_device's components are not public: declaring and passing it checks (no
+    // system information: every option assumed present), running it is refused.
+    let dir = scratch_in("options", "opaque_data");
+    let module = "MODULE Be\n  PERS be_device dev1 := [\"diBE\", TRUE, [6, 45, 100, 100], 0.1];\n  \
+                  PROC show(be_device d)\n    TPWrite \"passed\";\n  ENDPROC\n  \
+                  PROC main()\n    show dev1;\n  ENDPROC\nENDMODULE\n";
+    write_files(dir.path(), &[("Be.mod", module)]);
+    let out = rapid_in(dir.path(), &["check", "Be.mod"]);
+    assert_eq!(stdout(&out), "checked 1 file: no problems found\n");
+    let out = rapid_in(dir.path(), &["run", "Be.mod"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        stderr(&out).contains(
+            "error: `dev1` is data of `be_device`, a type of option BullsEye whose components are not public"
+        ),
+        "{}",
+        stderr(&out)
+    );
+    assert_eq!(stdout(&out), "");
+}
