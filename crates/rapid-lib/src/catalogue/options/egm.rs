@@ -48,16 +48,18 @@ pub(super) const ENTRIES: &[Entry] = &[
     )
     .names_data(),
     // ---- Activation ---------------------------------------------------------------------
+    // \StreamStart (start position streaming with the activation) is the manual's
+    // from RobotWare 6.07 on.
     routine(
-        r#"PROC EGMActJoint(VAR egmident EGMid, \PERS tooldata Tool, \PERS wobjdata WObj, \egm_minmax J1, \egm_minmax J2, \egm_minmax J3, \egm_minmax J4, \egm_minmax J5, \egm_minmax J6, \egm_minmax J7, \num LpFilter, \num SampleRate, \num MaxPosDeviation, \num MaxSpeedDeviation)"#,
+        r#"PROC EGMActJoint(VAR egmident EGMid, \switch StreamStart, \PERS tooldata Tool, \PERS wobjdata WObj, \egm_minmax J1, \egm_minmax J2, \egm_minmax J3, \egm_minmax J4, \egm_minmax J5, \egm_minmax J6, \egm_minmax J7, \num LpFilter, \num SampleRate, \num MaxPosDeviation, \num MaxSpeedDeviation)"#,
         "Activates joint guidance for an EGM process, with convergence ranges per axis.",
     ),
     routine(
-        r#"PROC EGMActPose(VAR egmident EGMid, \PERS tooldata Tool, \PERS wobjdata WObj, pose CorrFrame, egmframetype CorrFrType, pose SensorFrame, egmframetype SensorFrType, \egm_minmax x, \egm_minmax y, \egm_minmax z, \egm_minmax rx, \egm_minmax ry, \egm_minmax rz, \num LpFilter, \num SampleRate, \num MaxPosDeviation, \num MaxSpeedDeviation)"#,
+        r#"PROC EGMActPose(VAR egmident EGMid, \switch StreamStart, \PERS tooldata Tool, \PERS wobjdata WObj, pose CorrFrame, egmframetype CorrFrType, pose SensorFrame, egmframetype SensorFrType, \egm_minmax x, \egm_minmax y, \egm_minmax z, \egm_minmax rx, \egm_minmax ry, \egm_minmax rz, \num LpFilter, \num SampleRate, \num MaxPosDeviation, \num MaxSpeedDeviation)"#,
         "Activates pose guidance for an EGM process, with its correction and sensor frames.",
     ),
     routine(
-        r#"PROC EGMActMove(VAR egmident EGMid, pose SensorFrame, \num LpFilter, \num SampleRate, \num MaxSpeedDeviation)"#,
+        r#"PROC EGMActMove(VAR egmident EGMid, \switch StreamStart, pose SensorFrame, \num LpFilter, \num SampleRate, \num MaxSpeedDeviation)"#,
         "Activates path correction for an EGM process (EGMMoveL, EGMMoveC).",
     ),
     // ---- Movement -----------------------------------------------------------------------
