@@ -262,7 +262,7 @@ fn compile_modules(prog: &mut Program, modules: &[compile::ModuleSource<'_>]) ->
     let mut interner = std::mem::take(&mut prog.interner);
     let compiled = compile::compile(prog, modules, &catalogue.module, &catalogue.text, &mut interner);
     prog.interner = interner;
-    compiled.map_err(LoadError::Unsupported)
+    compiled.map_err(|errors| LoadError::Unsupported(refusals::one_per_option(errors)))
 }
 
 /// Late binding by `"module:procedure"` (public programs call loaded code as
