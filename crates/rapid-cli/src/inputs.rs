@@ -12,6 +12,7 @@ mod backup;
 mod glob;
 mod manifest;
 mod manifest_units;
+mod options;
 mod program_file;
 mod system_outputs;
 
@@ -71,6 +72,9 @@ pub(crate) struct Inputs {
     pub(crate) conveyors: Vec<TaskConveyor>,
     /// Which of `modules` are installed shared (one instance for every task).
     pub(crate) shared_modules: Vec<usize>,
+    /// The software options the system has (system.xml, backinfo.txt, a manifest's
+    /// `options`); `None` when nothing says (`rapid_sema::Options::system_options`).
+    pub(crate) system_options: Option<Vec<String>>,
     /// Diagnostics found while reading the inputs. Their `file` indexes [`Inputs::table`].
     pub(crate) diagnostics: Vec<Diagnostic>,
     /// For each file of [`Inputs::table`], its place in the order the files were found,
@@ -192,6 +196,7 @@ struct Collector {
     units: Vec<TaskUnit>,
     conveyors: Vec<TaskConveyor>,
     shared_modules: Vec<usize>,
+    system_options: Option<Vec<String>>,
     /// Diagnostics whose `file` is an index into `configs`.
     config_diagnostics: Vec<Diagnostic>,
     /// Canonical paths already read, so a file named twice is checked once.
@@ -327,6 +332,7 @@ impl Collector {
         // The controller root holds HOME: the backup, or the folder beside which a
         // configuration folder found its HOME.
         self.root = Some(home.and_then(|h| h.parent().map(Path::to_path_buf)).unwrap_or_else(|| folder.to_path_buf()));
+        self.system_options = options::of_backup(folder);
         Ok(())
     }
 
@@ -524,6 +530,7 @@ impl Collector {
         }));
         self.add_task_ids(&manifest.sys);
         self.root = Some(manifest.root.clone());
+        self.system_options = manifest.options.clone();
         self.robot = manifest.robot.clone();
         self.robot_bases = manifest.robot_bases.clone();
         self.task_robots = manifest.task_robots.clone();
@@ -726,6 +733,7 @@ impl Collector {
             units: self.units,
             conveyors: self.conveyors,
             shared_modules: self.shared_modules,
+            system_options: self.system_options,
             diagnostics,
             rank,
             notes: self.notes,

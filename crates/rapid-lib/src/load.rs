@@ -4,6 +4,7 @@
 use rapid_syntax::ast::{Item, Module};
 use rapid_syntax::{parse, Interner, SyntaxError};
 
+use crate::catalogue::options::{SoftwareOption, ALL_OPTIONS};
 use crate::catalogue::{Entry, EntryKind, ALL_CHAPTERS};
 
 /// One catalogue entry with where to find its parsed declaration.
@@ -12,6 +13,8 @@ pub struct LoadedEntry {
     pub chapter: &'static str,
     pub entry: Entry,
     pub item: BuiltinItem,
+    /// The software option that declares it (`None`: RobotWare itself).
+    pub option: Option<&'static SoftwareOption>,
 }
 
 /// What an entry turned into.
@@ -19,7 +22,7 @@ pub struct LoadedEntry {
 pub enum BuiltinItem {
     /// Index into `LoadedCatalogue::module.items`.
     Parsed(usize),
-    /// An atomic, non-value or semi-value type, known by name alone.
+    /// An atomic, non-value, semi-value or opaque type, known by name alone.
     NamedType,
 }
 
@@ -40,17 +43,21 @@ pub fn load(interner: &mut Interner) -> LoadedCatalogue {
     let mut text = String::from("MODULE builtin\n");
     let mut entries = Vec::new();
     let mut n_parsed = 0;
-    for &(chapter, chapter_entries) in ALL_CHAPTERS {
+    let base = ALL_CHAPTERS.iter().map(|&(chapter, entries)| (chapter, entries, None));
+    let options = ALL_OPTIONS.iter().map(|option| (option.chapter, option.entries, Some(option)));
+    for (chapter, chapter_entries, option) in base.chain(options) {
         for &entry in chapter_entries {
             let item = match entry.kind {
-                EntryKind::AtomicValue | EntryKind::NonValue | EntryKind::SemiValue => BuiltinItem::NamedType,
+                EntryKind::AtomicValue | EntryKind::NonValue | EntryKind::SemiValue | EntryKind::Opaque => {
+                    BuiltinItem::NamedType
+                }
                 _ => {
                     append_declaration(&mut text, entry);
                     n_parsed += 1;
                     BuiltinItem::Parsed(n_parsed - 1)
                 }
             };
-            entries.push(LoadedEntry { chapter, entry, item });
+            entries.push(LoadedEntry { chapter, entry, item, option });
         }
     }
     text.push_str("ENDMODULE\n");
@@ -129,8 +136,9 @@ mod tests {
 
     #[test]
     fn every_entry_has_a_doc_line() {
-        for (chapter, entries) in ALL_CHAPTERS {
-            for entry in *entries {
+        let options = ALL_OPTIONS.iter().map(|o| (o.chapter, o.entries));
+        for (chapter, entries) in ALL_CHAPTERS.iter().copied().chain(options) {
+            for entry in entries {
                 assert!(!entry.doc.trim().is_empty(), "{chapter}: {} has no doc", entry.text);
             }
         }

@@ -33,7 +33,7 @@ impl Checker<'_> {
                 let message = format!(
                     "no function `{name_text}` is defined in this task; calling it raises ERR_REFUNKFUN at run time{note}"
                 );
-                self.diag(Code::UndefinedFunction, span, message);
+                self.undefined(Code::UndefinedFunction, span, name, message);
                 self.type_args_leniently(arena, args);
                 Ty::ERROR
             }
@@ -74,7 +74,7 @@ impl Checker<'_> {
                     "no procedure `{text}` is defined in this task; calling it raises ERR_REFUNKPRC at run time{}",
                     crate::options::note_for(text)
                 );
-                self.diag(Code::UndefinedProcedure, name.span, message);
+                self.undefined(Code::UndefinedProcedure, name.span, name.sym, message);
                 self.type_args_leniently(arena, args);
             }
         }
@@ -92,7 +92,8 @@ impl Checker<'_> {
 
     fn check_args(&mut self, routine: u32, arena: &Arena, args: ArgList, call_span: Span) {
         let info = self.routine(routine);
-        if info.has_placeholders {
+        // An option routine whose parameter list is not public: only its name is known.
+        if info.has_placeholders || info.flags.unchecked_args {
             return self.type_args_leniently(arena, args);
         }
         let (params, groups, builtin) = (info.params.clone(), info.groups.clone(), info.chapter.is_some());

@@ -38,6 +38,8 @@ pub(crate) struct Checker<'a> {
     pub(crate) filled_scratch: Vec<Option<usize>>,
     /// The file of each module.
     pub(crate) module_files: Vec<usize>,
+    /// Names of options the system lacks, opaque option types, encrypted modules.
+    pub(crate) unknowns: crate::options::Unknowns,
     diags_in_file: usize,
     /// `--virtual-io`: a name no declaration defines, where a signal is wanted,
     /// becomes configured signal data of that type ([`crate::Options::virtual_signals`]).
@@ -75,6 +77,7 @@ impl<'a> Checker<'a> {
             ctx: None,
             module_files: Vec::new(),
             filled_scratch: Vec::new(),
+            unknowns: Default::default(),
             diags_in_file: 0,
             virtual_signals: false,
             virtual_found: Vec::new(),

@@ -67,6 +67,7 @@ diagnostic_codes! {
     "E0126" Error   ReservedWordAsName:        "a reserved word used where a name is expected";
     "E0127" Error   TooManyDimensions:         "an array with more than 3 dimensions";
     "E0128" Error   OutsideModule:             "text outside MODULE ... ENDMODULE";
+    "W0131" Warning EncryptedModuleOpaque:     "an ABB-encrypted module of a task, loaded unread: the names it defines are unknown";
     "E0130" Error   ProgramFileEntry:          "a .pgf program file entry that names no readable module";
 
     // Names and scopes.
@@ -86,6 +87,8 @@ diagnostic_codes! {
     "E0214" Error   NotATrap:                  "CONNECT ... WITH a name that is not a TRAP routine";
     "E0215" Error   TrapCalled:                "a TRAP routine called like a procedure";
     "E0216" Error   DuplicateModule:           "two modules of one name in the task";
+    "E0217" Error   OptionMissing:             "a name of a software option (Arc, EGM, ...) that this system does not have";
+    "W0218" Warning UndefinedBesideEncrypted:  "a name defined nowhere readable in a task that loads an encrypted module, which may define it";
 
     // Types and expressions.
     "E0301" Error   TypeMismatch:              "a value of one type where another type is required";

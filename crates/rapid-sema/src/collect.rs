@@ -33,9 +33,22 @@ enum Level {
 impl Checker<'_> {
     // ---- built-ins ---------------------------------------------------------------
 
-    pub(crate) fn load_builtins(&mut self, cat: &LoadedCatalogue, interner: &mut Interner) {
+    /// Declares the catalogue. Entries of software options the system lacks
+    /// (`system_options`, `None`: unknown, all present) are not declared: their names
+    /// are remembered, for E0217 where the task uses them.
+    pub(crate) fn load_builtins(
+        &mut self,
+        cat: &LoadedCatalogue,
+        system_options: Option<&[String]>,
+        interner: &mut Interner,
+    ) {
+        let present = |entry: &rapid_lib::LoadedEntry| crate::options::has_option(system_options, entry.option);
         let mut semi_bases = Vec::new();
         for entry in &cat.entries {
+            if !present(entry) {
+                self.unknowns.note_absent(cat, entry, interner);
+                continue;
+            }
             let kind = match entry.entry.kind {
                 EntryKind::AtomicValue => TypeKind::Atomic(match entry.entry.text {
                     "num" => Atomic::Num,
@@ -45,17 +58,23 @@ impl Checker<'_> {
                 }),
                 EntryKind::NonValue => TypeKind::NonValue,
                 EntryKind::SemiValue => TypeKind::Pending,
+                // An option type whose components are not public accepts any value
+                // and any use, like an unresolved type; a component read is E0305.
+                EntryKind::Opaque => TypeKind::Error,
                 _ => continue,
             };
             let mut words = entry.entry.text.split_whitespace();
             let name = words.next().unwrap_or("");
             let ty = self.types.add(TypeInfo { display: name.into(), kind, span: Span::default() });
+            if let (EntryKind::Opaque, Some(option)) = (entry.entry.kind, entry.option) {
+                self.unknowns.opaque.insert(ty, option);
+            }
             self.scopes.builtins.insert(interner.intern(name), Def::Type(ty));
             if let Some(base) = words.next() {
                 semi_bases.push((ty, interner.intern(base)));
             }
         }
-        let items: Vec<&Item> = cat.entries.iter().filter_map(|e| cat.item(e)).collect();
+        let items: Vec<&Item> = cat.entries.iter().filter(|e| present(e)).filter_map(|e| cat.item(e)).collect();
         self.declare_types(&items, Level::Builtin, cat.text.as_str());
         for (ty, base) in semi_bases {
             let base = match self.scopes.builtins.get(&base) {
@@ -66,7 +85,7 @@ impl Checker<'_> {
         }
         self.resolve_types(&items, Level::Builtin, cat.text.as_str());
         self.find_core_types(interner);
-        for entry in &cat.entries {
+        for entry in cat.entries.iter().filter(|e| present(e)) {
             let Some(item) = cat.item(entry) else { continue };
             let rapid_lib::BuiltinItem::Parsed(item_idx) = entry.item else { continue };
             let origin = DeclOrigin::Builtin(item_idx);
@@ -366,7 +385,8 @@ impl Checker<'_> {
             _ if !builtin => {
                 let text = self.text(name.span);
                 let note = crate::options::note_for(text);
-                self.diag(Code::UndefinedType, name.span, format!("undefined data type `{text}`{note}"));
+                let message = format!("undefined data type `{text}`{note}");
+                self.undefined(Code::UndefinedType, name.span, name.sym, message);
                 types::ERROR
             }
             _ => types::ERROR,

@@ -167,8 +167,8 @@ impl Checker<'_> {
                 Ty::scalar(ty)
             }
             None => {
-                let text = self.text(span);
-                self.diag(Code::UndefinedData, span, format!("undefined data `{text}`"));
+                let message = format!("undefined data `{}`", self.text(span));
+                self.undefined(Code::UndefinedData, span, sym, message);
                 Ty::ERROR
             }
         }
@@ -202,10 +202,19 @@ impl Checker<'_> {
 
     fn field_expr(&mut self, arena: &Arena, base: ExprId, field: rapid_syntax::Symbol, span: Span) -> Ty {
         let base_ty = self.expr(arena, base, None);
+        let field_text = self.text(span).rsplit('.').next().unwrap_or("").trim();
+        if let Some(option) = self.unknowns.opaque.get(&base_ty.ty) {
+            let ty = self.type_name(base_ty.ty);
+            let message = format!(
+                "the components of `{ty}` (option {}) are not public, so `{field_text}` cannot be checked or used here",
+                option.name
+            );
+            self.diag(Code::UnknownComponent, span, message);
+            return Ty::ERROR;
+        }
         if base_ty.ty == types::ERROR || self.types.is_lenient(base_ty.ty) {
             return Ty::ERROR;
         }
-        let field_text = self.text(span).rsplit('.').next().unwrap_or("").trim();
         if base_ty.rank > 0 {
             self.diag(
                 Code::UnknownComponent,
@@ -416,8 +425,11 @@ impl Checker<'_> {
     fn aggregate(&mut self, arena: &Arena, items: rapid_syntax::ast::ListRange, span: Span, expect: Expect<'_>) -> Ty {
         let items = arena.list(items);
         if self.types.is_lenient(expect.ty) {
+            // An unresolved or opaque type accepts any shape: nested aggregates too,
+            // so one undefined type (or an option type whose components are not
+            // public) gives no second diagnostic.
             for &item in items {
-                self.expr(arena, item, None);
+                self.expr(arena, item, Some(Expect::scalar(expect.ty)));
             }
             return Ty { ty: expect.ty, rank: expect.rank() };
         }

@@ -47,6 +47,11 @@ pub struct Options {
     /// whose I/O configuration is not at hand. The analysis lists them
     /// ([`Program::virtual_signals`]).
     pub virtual_signals: bool,
+    /// The software options the system has, as its backup or manifest names them
+    /// (`689-1 Externally Guided Motion (EGM)`, `Arc`); names of the catalogue's
+    /// options it lacks are E0217. `None`: nothing says (a loose module), and every
+    /// option's names are known.
+    pub system_options: Option<Vec<String>>,
 }
 
 /// One configured data object: a name and the name of its (built-in) type, such as
@@ -101,10 +106,23 @@ pub fn analyze(files: &[SourceInput], options: &Options) -> Analysis {
     let (base_interner, catalogue) = catalogue();
     let mut interner = base_interner.clone();
     let mut diags = Vec::new();
+    // An encrypted module beside readable ones is part of a task the controller
+    // loads whole: it is loaded unread (W0131) and the names it may define are not
+    // errors (W0218). Alone, there is nothing to check: E0109.
+    let in_task = files.iter().any(|f| f.unreadable.is_none());
     let parses: Vec<Option<Parse>> = files
         .iter()
         .enumerate()
         .map(|(file, input)| match input.unreadable {
+            Some(_) if in_task => {
+                diags.push(Diagnostic::new(
+                    file,
+                    Code::EncryptedModuleOpaque,
+                    Span::default(),
+                    "this is an ABB-encrypted module: it is loaded unread, so the names it defines are unknown here",
+                ));
+                None
+            }
             Some(_) => {
                 diags.push(Diagnostic::new(
                     file,
@@ -186,7 +204,8 @@ fn check_semantics<'a>(
         placeholder_id: interner.intern("<ID>"),
     };
     let mut ck = Checker::new(files, known);
-    ck.load_builtins(catalogue, interner);
+    ck.unknowns.encrypted = files.iter().filter(|f| f.unreadable.is_some()).map(|f| f.path.clone()).collect();
+    ck.load_builtins(catalogue, options.system_options.as_deref(), interner);
     ck.declare_predefined(&options.predefined, interner);
     ck.virtual_signals = options.virtual_signals;
     ck.declare_modules(modules);

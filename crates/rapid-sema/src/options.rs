@@ -1,7 +1,83 @@
-//! Names of ABB software options that OpenRAPID does not provide: a program written for a
-//! controller with one of them names instructions and data types the catalogue lacks.
-//! `rapid check` still reports them as undefined, and says which option they belong to,
-//! so the user knows the program is not wrong but needs what we do not simulate.
+//! Software options and unreadable code in name resolution.
+//!
+//! - The catalogue declares the options real systems use most (`rapid_lib::catalogue::
+//!   options`). On a system that lacks one (its backup or manifest names its options),
+//!   the option's names are not declared: a use is E0217 "belongs to option X, which
+//!   this system does not have", never "undefined". Without system information every
+//!   option is assumed present: a user checking a loose module cannot say what the
+//!   target controller has installed.
+//! - Names of options the catalogue does not declare are still reported as undefined,
+//!   with a note naming the option (`note_for`), so the user knows the program is not
+//!   wrong but needs what we do not provide.
+//! - In a task that loads an encrypted module, a name defined nowhere readable may be
+//!   defined in that module: W0218, a warning naming the module, instead of the error.
+
+use rapid_lib::catalogue::options::{self as catalogue_options, SoftwareOption};
+use rapid_lib::{LoadedCatalogue, LoadedEntry};
+use rapid_syntax::ast::Item;
+use rapid_syntax::{Interner, Span, Symbol};
+use rustc_hash::FxHashMap;
+
+use crate::checker::Checker;
+use crate::codes::Code;
+use crate::types::TypeId;
+
+/// What name resolution must know about names it cannot see.
+#[derive(Debug, Default)]
+pub(crate) struct Unknowns {
+    /// Names of the catalogue's options the system lacks, with their option.
+    pub(crate) absent: FxHashMap<Symbol, &'static SoftwareOption>,
+    /// Option types whose components are not public.
+    pub(crate) opaque: FxHashMap<TypeId, &'static SoftwareOption>,
+    /// The display paths of the task's encrypted modules.
+    pub(crate) encrypted: Vec<String>,
+}
+
+impl Unknowns {
+    /// Remembers the name an entry of an absent option would declare.
+    pub(crate) fn note_absent(&mut self, cat: &LoadedCatalogue, entry: &LoadedEntry, interner: &mut Interner) {
+        let Some(option) = entry.option else { return };
+        let sym = match cat.item(entry) {
+            Some(Item::Type(def)) => def.name().sym,
+            Some(Item::Data(decl)) => decl.name.sym,
+            Some(Item::Routine(routine)) => routine.name.sym,
+            Some(Item::Placeholder(..)) => return,
+            None => interner.intern(entry.entry.text.split_whitespace().next().unwrap_or("")),
+        };
+        self.absent.insert(sym, option);
+    }
+}
+
+/// Whether a system with `system_options` (`None`: unknown) has `option` (`None`:
+/// RobotWare itself, always present).
+pub(crate) fn has_option(system_options: Option<&[String]>, option: Option<&'static SoftwareOption>) -> bool {
+    match (system_options, option) {
+        (_, None) | (None, _) => true,
+        (Some(names), Some(option)) => {
+            names.iter().any(|name| catalogue_options::find(name).is_some_and(|found| found.short == option.short))
+        }
+    }
+}
+
+impl Checker<'_> {
+    /// Reports a name defined nowhere in the task: E0217 for a name of an option the
+    /// system lacks, W0218 in a task with an encrypted module, else `code` with
+    /// `message`.
+    pub(crate) fn undefined(&mut self, code: Code, span: Span, sym: Symbol, message: String) {
+        let text = self.text(span).split('(').next().unwrap_or("").trim().to_string();
+        if let Some(option) = self.unknowns.absent.get(&sym) {
+            let message = format!("`{text}` belongs to option {}, which this system does not have", option.name);
+            return self.diag(Code::OptionMissing, span, message);
+        }
+        if !self.unknowns.encrypted.is_empty() {
+            let modules = self.unknowns.encrypted.iter().map(|p| format!("`{p}`")).collect::<Vec<_>>().join(", ");
+            let message =
+                format!("{message}; it may be defined in the encrypted module {modules}, which cannot be read");
+            return self.diag(Code::UndefinedBesideEncrypted, span, message);
+        }
+        self.diag(code, span, message)
+    }
+}
 
 /// The option whose instruction, function or data type `name` is, when it is one of the
 /// names we know of (compared without case).

@@ -201,21 +201,21 @@ fn configured_data_is_known_like_predefined_data() {
 
 #[test]
 fn names_of_options_we_do_not_provide_say_which_option() {
-    // An EGM program and an arc-welding one: their names are undefined here (the
-    // options are not simulated), and each message names the option they belong to.
-    let text = "MODULE Cell\nVAR egmident egm_id;\nPROC main()\n  EGMGetId egm_id;\n  \
-                reg1 := 1;\nENDPROC\nPROC weld()\n  VAR welddata w;\nENDPROC\nENDMODULE";
+    // A spot-welding program: the catalogue does not declare Spot welding, so its
+    // names are undefined, and each message names the option they belong to. (Arc
+    // and EGM names are declared: `tests/options.rs`.)
+    let text = "MODULE Cell\nVAR spotdata spot1;\nPROC main()\n  SpotL p10, v100, spot1, tool0;\n  \
+                reg1 := 1;\nENDPROC\nENDMODULE";
     let inputs = [SourceInput::from_text("cell.mod", text)];
     let messages: Vec<String> = check(&inputs, &Options::default()).iter().map(|d| d.message.clone()).collect();
     assert_eq!(
         messages,
         [
-            "undefined data type `egmident` (`egmident` belongs to ABB's Externally Guided Motion (EGM) option, \
+            "undefined data type `spotdata` (`spotdata` belongs to ABB's Spot welding option, \
              which OpenRAPID does not provide)",
-            "no procedure `EGMGetId` is defined in this task; calling it raises ERR_REFUNKPRC at run time \
-             (`EGMGetId` belongs to ABB's Externally Guided Motion (EGM) option, which OpenRAPID does not provide)",
-            "undefined data type `welddata` (`welddata` belongs to ABB's Arc welding (RobotWare Arc) option, \
-             which OpenRAPID does not provide)",
+            "no procedure `SpotL` is defined in this task; calling it raises ERR_REFUNKPRC at run time \
+             (`SpotL` belongs to ABB's Spot welding option, which OpenRAPID does not provide)",
+            "undefined data `p10`",
         ]
     );
 }

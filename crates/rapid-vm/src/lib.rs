@@ -17,6 +17,7 @@ pub mod instrs;
 pub mod ir;
 pub mod ops;
 pub mod persist;
+mod refusals;
 pub mod value;
 
 use rapid_sema::symbols::{DeclOrigin, Def};
@@ -213,8 +214,17 @@ fn checked(files: &[SourceInput], options: &Options) -> Result<(Program, Vec<Dia
     if Program::has_errors(&analysis.diagnostics) {
         return Err(LoadError::Diagnostics(analysis.diagnostics));
     }
+    if let Some(refusal) = refusals::needs_encrypted(files, &analysis.diagnostics) {
+        return Err(LoadError::Unsupported(vec![refusal]));
+    }
     match analysis.program {
-        Some(prog) => Ok((prog, analysis.diagnostics)),
+        Some(prog) => {
+            let opaque = refusals::opaque_data(&prog);
+            if !opaque.is_empty() {
+                return Err(LoadError::Unsupported(opaque));
+            }
+            Ok((prog, analysis.diagnostics))
+        }
         None => Err(LoadError::Diagnostics(analysis.diagnostics)),
     }
 }
@@ -252,7 +262,7 @@ fn compile_modules(prog: &mut Program, modules: &[compile::ModuleSource<'_>]) ->
     let mut interner = std::mem::take(&mut prog.interner);
     let compiled = compile::compile(prog, modules, &catalogue.module, &catalogue.text, &mut interner);
     prog.interner = interner;
-    compiled.map_err(LoadError::Unsupported)
+    compiled.map_err(|errors| LoadError::Unsupported(refusals::one_per_option(errors)))
 }
 
 /// Late binding by `"module:procedure"` (public programs call loaded code as

@@ -36,6 +36,7 @@ pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
         syntax_only: args.syntax_only,
         predefined: inputs.predefined.clone(),
         virtual_signals: args.virtual_io,
+        system_options: inputs.system_options.clone(),
     };
     let (found, facts) = check_task(&inputs, &options);
     let mut reported = tag(found, &names(&inputs));
@@ -60,6 +61,7 @@ pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
             syntax_only: args.syntax_only,
             predefined: other.predefined.clone(),
             virtual_signals: args.virtual_io,
+            system_options: other.system_options.clone(),
         };
         let (found, facts) = check_task(other, &options);
         let found = found.into_iter().map(|d| Diagnostic { file: d.file + offset, ..d }).collect();

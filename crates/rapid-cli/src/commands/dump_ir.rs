@@ -11,7 +11,11 @@ use crate::inputs;
 
 pub(crate) fn run(args: &DumpIrArgs) -> anyhow::Result<ExitStatus> {
     let inputs = inputs::collect(&args.paths)?;
-    let options = Options { predefined: inputs.predefined.clone(), ..Options::default() };
+    let options = Options {
+        predefined: inputs.predefined.clone(),
+        system_options: inputs.system_options.clone(),
+        ..Options::default()
+    };
     let task = match rapid_vm::compile_files(&inputs.modules, &options) {
         Ok(task) => task,
         Err(err) => return super::run::report_load_error(err, &inputs.modules),

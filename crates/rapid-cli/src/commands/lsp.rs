@@ -51,6 +51,10 @@ fn task(inputs: &Inputs) -> Task {
     Task {
         name: inputs.task.as_ref().map(|t| t.name.clone()),
         modules: inputs.modules.clone(),
-        options: Options { predefined: inputs.predefined.clone(), ..Options::default() },
+        options: Options {
+            predefined: inputs.predefined.clone(),
+            system_options: inputs.system_options.clone(),
+            ..Options::default()
+        },
     }
 }

@@ -99,6 +99,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         let options = Options {
             predefined: task.inputs.predefined.clone(),
             virtual_signals: args.virtual_io,
+            system_options: task.inputs.system_options.clone(),
             ..Options::default()
         };
         let mut program = match (load_with(&task.inputs.modules, &entry, &options), configured, config) {

@@ -168,7 +168,11 @@ pub(super) fn assemble_with(
     let mut loaded = Vec::new();
     for (spec, inputs) in &collected {
         let entry = sys.task(&spec.name).map_or_else(|| "main".to_owned(), |t| t.entry.clone());
-        let options = Options { predefined: inputs.predefined.clone(), ..Options::default() };
+        let options = Options {
+            predefined: inputs.predefined.clone(),
+            system_options: inputs.system_options.clone(),
+            ..Options::default()
+        };
         let mut program = rapid_vm::load_with(&inputs.modules, &entry, &options)
             .map_err(|e| format!("task {} cannot start: {e:?} (`rapid check` shows why)", spec.name))?;
         let home = inputs.root.clone().unwrap_or_else(|| default_home(paths));

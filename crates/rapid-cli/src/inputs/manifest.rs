@@ -67,6 +67,9 @@ pub(crate) struct Manifest {
     /// `[system] name`, and `robot`: the model the motion tasks move (`motion_out.rs`).
     pub(crate) name: Option<String>,
     pub(crate) robot: Option<String>,
+    /// `[system] options`: the software options the system has (`rapid check` knows
+    /// their names); `None` when not given.
+    pub(crate) options: Option<Vec<String>>,
     /// `[[unit]]`: external mechanical units and the tasks they belong to.
     pub(crate) units: Vec<super::TaskUnit>,
     /// `[[conveyor]]`: conveyors for conveyor tracking and the tasks they belong to.
@@ -102,6 +105,7 @@ struct RawManifest {
 struct RawSystem {
     name: Option<Spanned<String>>,
     robot: Option<Spanned<String>>,
+    options: Option<Vec<String>>,
     io: Option<Spanned<String>>,
     home: Option<Spanned<String>>,
     shared: Option<Spanned<Vec<Spanned<String>>>>,
@@ -238,6 +242,7 @@ impl Reader<'_> {
                 _ => self.find(joints.span(), "`start_joints` is six axis values in degrees, e.g. [0, 0, 0, 0, 30, 0]"),
             }
         }
+        self.manifest.options = system.options;
         if let Some(io) = system.io {
             let path = self.dir.join(io.get_ref());
             if io.get_ref().trim().is_empty() {

@@ -38,6 +38,7 @@ mod mech_units;
 mod multimove;
 mod multitask;
 mod multitask_steps;
+mod options;
 mod path;
 mod pers_writes;
 mod report;

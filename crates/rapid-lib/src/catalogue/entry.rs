@@ -22,6 +22,10 @@ pub enum EntryKind {
     /// A semi-value type (the signal types): `text` is `"name base"`, where `base`
     /// is the value type the signal reads as in expressions (`"signaldi dionum"`).
     SemiValue,
+    /// A data type of a software option whose components ABB does not publish: `text`
+    /// is its name. Data of it may be declared (with any initialiser) and passed;
+    /// reading a component is an error that names the option.
+    Opaque,
     /// `CONST type name := value;`, `VAR type name;` or `PERS type name := value;`.
     Data,
     /// Like `Data`, but a system variable that programs may read and never write
@@ -52,16 +56,26 @@ pub struct RoutineFlags {
     /// Its `anytype` parameters take a signal itself rather than the signal's value
     /// (AliasIO, ValidIO: a signal parameter of a signal type always does).
     pub takes_signals: bool,
+    /// The arguments are not checked against the parameters: the routine belongs to a
+    /// software option whose full parameter list is not public, so only its name and
+    /// its kind (instruction or function) are known (the arguments' own names are
+    /// still resolved).
+    pub unchecked_args: bool,
 }
 
 impl RoutineFlags {
-    const NONE: RoutineFlags = RoutineFlags { names_data: false, takes_signals: false };
+    const NONE: RoutineFlags = RoutineFlags { names_data: false, takes_signals: false, unchecked_args: false };
 }
 
 impl Entry {
     /// The routine knows arguments by the names of the data passed ([`RoutineFlags::names_data`]).
     pub const fn names_data(self) -> Entry {
         Entry { flags: RoutineFlags { names_data: true, ..self.flags }, ..self }
+    }
+
+    /// The routine's arguments are not checked ([`RoutineFlags::unchecked_args`]).
+    pub const fn unchecked_args(self) -> Entry {
+        Entry { flags: RoutineFlags { unchecked_args: true, ..self.flags }, ..self }
     }
 
     /// The routine's `anytype` parameters take signals themselves ([`RoutineFlags::takes_signals`]).
@@ -93,6 +107,11 @@ pub const fn non_value(name: &'static str, doc: &'static str) -> Entry {
 /// A semi-value type: `"name base"`.
 pub const fn semi_value(name_and_base: &'static str, doc: &'static str) -> Entry {
     Entry { kind: EntryKind::SemiValue, text: name_and_base, doc, flags: RoutineFlags::NONE }
+}
+
+/// An option's data type whose components are not public.
+pub const fn opaque(name: &'static str, doc: &'static str) -> Entry {
+    Entry { kind: EntryKind::Opaque, text: name, doc, flags: RoutineFlags::NONE }
 }
 
 /// Predefined data (constants, variables, persistents).

@@ -1,9 +1,11 @@
 //! The catalogue of predefined RAPID: one file per chapter of the manual.
 //!
 //! Each chapter file exposes `ENTRIES: &[Entry]`. `ALL_CHAPTERS` lists them; nothing
-//! else in the workspace may declare a built-in.
+//! else in the workspace may declare a built-in. The software options (Arc, EGM, …)
+//! are in `options/`, one file per option, listed in `options::ALL_OPTIONS`.
 
 pub mod entry;
+pub mod options;
 
 mod data;
 mod files;

@@ -369,6 +369,19 @@ pub fn not_supported_reason(name: &str) -> Option<&'static str> {
     not_yet::reason(name)
 }
 
+/// Why a program calling `name`, a routine of catalogue chapter `chapter`, is refused
+/// at load when the chapter is a software option's: no option is simulated, and a
+/// refusal before anything runs leaves nothing half-done.
+pub fn option_refusal(name: &str, chapter: &str) -> Option<String> {
+    let option = rapid_lib::catalogue::options::of_chapter(chapter)?;
+    Some(format!("`{name}` {OPTION_REFUSAL_MIDDLE}{}{OPTION_REFUSAL_TAIL}", option.name))
+}
+
+/// The parts of an [`option_refusal`] message (`crate::refusals` reads them back to
+/// give one refusal per option).
+pub(crate) const OPTION_REFUSAL_MIDDLE: &str = "belongs to option ";
+pub(crate) const OPTION_REFUSAL_TAIL: &str = ", which `rapid run` does not simulate";
+
 /// The registration of built-in `id`.
 pub fn builtin(id: BuiltinId) -> &'static Builtin {
     &REGISTRY.builtins[id.0 as usize]

@@ -57,9 +57,12 @@ impl RoutineCompiler<'_> {
         let info = self.prog.routines[idx as usize].clone();
         let callee = match info.chapter {
             None => Callee::Routine(idx),
-            Some(_) => {
+            Some(chapter) => {
                 let Some(id) = builtins::lookup(&info.display) else {
-                    return Err(self.unsupported(span, &format!("the built-in `{}`", info.display)));
+                    return Err(match builtins::option_refusal(&info.display, chapter) {
+                        Some(message) => self.error(span, message),
+                        None => self.unsupported(span, &format!("the built-in `{}`", info.display)),
+                    });
                 };
                 match builtins::builtin(id).compiled {
                     Some(Compiled::Present) => return self.present(arena, args, span),
