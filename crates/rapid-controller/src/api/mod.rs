@@ -20,6 +20,7 @@ pub mod data;
 pub mod debug;
 mod exec;
 mod modules;
+pub mod motion;
 pub mod panel;
 pub mod pendant;
 pub mod stream;
