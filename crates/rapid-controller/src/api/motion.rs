@@ -141,3 +141,59 @@ fn frame_of(value: &Value, name: &str) -> Result<Pose, ApiError> {
         _ => Err(bad()),
     }
 }
+
+/// A robot arm drawn from its kinematic model, in the world frame (mm): the points a
+/// viewer joins with links, and the TCP of the tool the last move used.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ArmView {
+    /// The task that moves it.
+    pub task: String,
+    /// Axes 1..6, degrees.
+    pub joints: [f64; 6],
+    /// Base, top of the base column, axis 2, axis 3, wrist centre, flange.
+    pub points: Vec<[f64; 3]>,
+    /// The active tool's TCP.
+    pub tcp: [f64; 3],
+}
+
+impl Session {
+    /// Every robot's arm as its OPW model places its axes now (ROB_1 first), for a
+    /// viewer; the links between the points are the model's, not the robot's shape.
+    pub fn arms(&mut self) -> Vec<ArmView> {
+        use rapid_motion::Kinematics;
+        let time = self.controller.time;
+        let mut arms = Vec::new();
+        for task in &mut self.controller.tasks {
+            if !task.spec.robot {
+                continue;
+            }
+            let robot = &mut task.loaded.vm.resources_mut().robot;
+            let joints = robot.joints_at(time);
+            let base = robot.track_base_at(time);
+            let p = *robot.kin.params();
+            let [q1, q2, ..] = joints.map(f64::to_radians);
+            let (s1, c1) = q1.sin_cos();
+            // A point of the arm's plane (reach x along the arm, height z) turned by axis 1.
+            let turned = |x: f64, z: f64| [x * c1 - p.b * s1, x * s1 + p.b * c1, z];
+            let flange = robot.kin.forward(&joints);
+            let wrist = robot.kin.wrist_centre(&joints);
+            let tcp = FrameChain { base, ..robot.active }.tcp_in_world(&flange);
+            let local = [
+                [0.0, 0.0, 0.0],
+                [0.0, 0.0, p.c1],
+                turned(p.a1, p.c1),
+                turned(p.a1 + p.c2 * q2.sin(), p.c1 + p.c2 * q2.cos()),
+                [wrist.x, wrist.y, wrist.z],
+                trans(&flange),
+            ];
+            let world = |v: [f64; 3]| trans(&(base * pose(v, [1.0, 0.0, 0.0, 0.0])));
+            arms.push(ArmView {
+                task: task.spec.name.clone(),
+                joints,
+                points: local.into_iter().map(world).collect(),
+                tcp: trans(&tcp),
+            });
+        }
+        arms
+    }
+}

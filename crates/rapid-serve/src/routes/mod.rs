@@ -40,6 +40,12 @@ const MAX_BODY: usize = 64 * 1024 * 1024;
 pub(crate) fn router(app: Arc<App>) -> Router {
     Router::new()
         .route("/poll/{id}", get(poll))
+        .route("/", get(crate::pendant::index))
+        .route("/pendant/{file}", get(crate::pendant::file))
+        .route("/pendant/api/screen", get(crate::pendant::screen))
+        .route("/pendant/api/answer", axum::routing::post(crate::pendant::answer))
+        .route("/pendant/api/arms", get(crate::pendant::arms))
+        .route("/pendant/api/program", get(crate::pendant::program))
         .fallback(dispatch)
         .layer(DefaultBodyLimit::max(MAX_BODY))
         .layer(middleware::from_fn_with_state(app.clone(), authenticate))
