@@ -24,7 +24,7 @@ mod routes;
 use std::net::SocketAddr;
 use std::sync::Arc;
 
-pub use crate::auth::{Auth, DEFAULT_USER, REALM};
+pub use crate::auth::{digest_authorization, Auth, DEFAULT_USER, REALM};
 pub use crate::core::{Boot, BuildSession, Controller, OnExit, OnTpWrite};
 pub use rapid_controller::api::{ClockPolicy, Session};
 

@@ -46,6 +46,7 @@ mod save_pers;
 mod scale;
 mod search;
 mod serve;
+mod serve_faults;
 mod sockets;
 mod sockets_system;
 mod stepbwd;
