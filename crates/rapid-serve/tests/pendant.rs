@@ -4,7 +4,8 @@
 //! already use). It logs in with Digest as a person would (the browser's own
 //! authentication, credentials given when asked), starts the program, answers a
 //! TPReadFK dialog, toggles the DI the program waits on, and sees the pendant's
-//! lines and the robot's joints change.
+//! lines and the robot's joints change; then it writes a datum from the data watch
+//! and sets the program pointer to Main.
 //!
 //! Without Chromium the test is skipped loudly; under CI (`OPENRAPID_REQUIRE_BROWSER=1`)
 //! it fails instead. `OPENRAPID_PENDANT_SHOTS=DIR` keeps its screenshots in DIR (the
@@ -151,6 +152,22 @@ async fn drive(page: &cdp::Page, base: &str) -> Result<(), String> {
     check(page, "a TCP path was drawn", "view.paths[0].length > 10").await?;
     wait_for(page, "the program stopped", &format!("{} === 'stopped'", text("exec"))).await?;
     page.shot("pendant-done.png").await?;
+
+    // The data watch writes a datum: click its value, type a literal, Enter.
+    wait_for(page, "moves counted", "document.querySelector('td[data-url$=\"/moves\"]').textContent === '1'").await?;
+    page.eval("document.querySelector('td[data-url$=\"/moves\"]').click()").await?;
+    page.eval(
+        "(() => { const i = document.querySelector('td[data-url$=\"/moves\"] input'); i.value = '41'; \
+         i.dispatchEvent(new KeyboardEvent('keydown', {key: 'Enter'})); })()",
+    )
+    .await?;
+    wait_for(page, "moves written", "document.querySelector('td[data-url$=\"/moves\"]').textContent === '41'").await?;
+    // PP to Main: the pointer goes to main's first statement (line 7).
+    page.eval("document.getElementById('ppmain').click()").await?;
+    // (The program ended at its Stop: RWS shows it stopped, so PP to Main is taken.)
+    wait_for(page, "the pointer at main's start", &format!("{}.endsWith('main line 7')", text("pointer"))).await?;
+    check(page, "no action failed", &format!("{} === ''", text("status"))).await?;
+    check(page, "the program view marks line 7", "document.querySelector('#program .pp').dataset.line === '7'").await?;
     check(page, "no script error", "!document.body.dataset.errors").await?;
     Ok(())
 }
