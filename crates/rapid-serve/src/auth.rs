@@ -166,6 +166,30 @@ fn remember(set: &mut HashSet<String>, order: &mut VecDeque<String>, value: Stri
     order.push_back(value);
 }
 
+/// The client's side of the login, for tests, the load bench and Rust clients: the
+/// `Authorization` value that answers `challenge` (a `WWW-Authenticate: Digest …`
+/// value) for `method` and `uri` (path and query as sent) with `cnonce`; None when
+/// the challenge is no Digest challenge with a nonce.
+pub fn digest_authorization(
+    challenge: &str,
+    (user, password): (&str, &str),
+    method: &str,
+    uri: &str,
+    cnonce: &str,
+) -> Option<String> {
+    let fields = parse_fields(challenge.trim().strip_prefix("Digest ")?);
+    let nonce = fields.get("nonce")?;
+    let realm = fields.get("realm").map_or(REALM, String::as_str);
+    let ha1 = md5_hex(&format!("{user}:{realm}:{password}"));
+    let ha2 = md5_hex(&format!("{method}:{uri}"));
+    let response = md5_hex(&format!("{ha1}:{nonce}:00000001:{cnonce}:auth:{ha2}"));
+    let opaque = fields.get("opaque").map_or_else(String::new, |o| format!(", opaque=\"{o}\""));
+    Some(format!(
+        "Digest username=\"{user}\", realm=\"{realm}\", nonce=\"{nonce}\", uri=\"{uri}\", \
+         response=\"{response}\", qop=auth, nc=00000001, cnonce=\"{cnonce}\", algorithm=MD5{opaque}"
+    ))
+}
+
 /// The `key=value` / `key="value"` pairs of a Digest header.
 fn parse_fields(text: &str) -> HashMap<String, String> {
     let mut fields = HashMap::new();
@@ -255,6 +279,17 @@ mod tests {
         assert_eq!(auth.check("POST", "/x", &cookies, None), Verdict::Session);
         auth.logout(&cookies);
         assert!(matches!(auth.check("POST", "/x", &cookies, None), Verdict::Challenge(_)));
+    }
+
+    #[test]
+    fn the_client_side_answers_the_servers_challenge() {
+        let auth = Auth::new([("u".to_owned(), "p".to_owned())]);
+        let Verdict::Challenge(challenge) = auth.check("GET", "/x", &[], None) else { panic!("a challenge") };
+        let good = digest_authorization(&challenge, ("u", "p"), "GET", "/x", "c1").unwrap();
+        assert!(matches!(auth.check("GET", "/x", &[], Some(&good)), Verdict::NewSession(_)));
+        let bad = digest_authorization(&challenge, ("u", "q"), "GET", "/x", "c1").unwrap();
+        assert!(matches!(auth.check("GET", "/x", &[], Some(&bad)), Verdict::Challenge(_)));
+        assert_eq!(digest_authorization("Basic realm=\"x\"", ("u", "p"), "GET", "/", "c"), None);
     }
 
     #[test]

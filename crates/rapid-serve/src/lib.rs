@@ -7,7 +7,8 @@
 //! (axum on tokio) send it jobs through a bounded queue and never hold it across an
 //! await. Modules: `auth` (Digest and session cookies), `model` (items rendered as
 //! XHTML or JSON, error bodies), `hub` (subscriptions and their websockets), `elog`
-//! (the event log's numbering), `routes` (one module per resource family).
+//! (the event log's numbering), `routes` (one module per resource family), `pendant`
+//! (the web pendant at `/` and its JSON resources under `/pendant/api/`).
 //!
 //! A front end that wants more (a web pendant, a load test) reuses [`router`]'s
 //! state: the controller handle for jobs and events, and the subscription hub.
@@ -17,12 +18,13 @@ mod core;
 mod elog;
 mod hub;
 mod model;
+mod pendant;
 mod routes;
 
 use std::net::SocketAddr;
 use std::sync::Arc;
 
-pub use crate::auth::{Auth, DEFAULT_USER, REALM};
+pub use crate::auth::{digest_authorization, Auth, DEFAULT_USER, REALM};
 pub use crate::core::{Boot, BuildSession, Controller, OnExit, OnTpWrite};
 pub use rapid_controller::api::{ClockPolicy, Session};
 

@@ -618,3 +618,48 @@ async fn dipc_queues_between_clients_and_not_yet_to_tasks() {
     let empty = json_of(server.send(get("/rw/dipc/T_mine?action=dipc-read&json=1", Some(&cookie))).await).await;
     assert_eq!(empty["_embedded"]["_state"].as_array().map(Vec::len), Some(0));
 }
+
+#[tokio::test]
+async fn the_pendant_page_and_its_json_resources_are_behind_the_login() {
+    let server = Server::new("pendant");
+    assert_eq!(server.send(get("/", None)).await.status(), StatusCode::UNAUTHORIZED);
+    assert_eq!(server.send(get("/pendant/api/arms", None)).await.status(), StatusCode::UNAUTHORIZED);
+    let cookie = server.login().await;
+    let page = server.send(get("/", Some(&cookie))).await;
+    assert_eq!(page.status(), StatusCode::OK);
+    assert!(header_text(&page, "content-type").starts_with("text/html"));
+    assert!(body_text(page).await.contains("/pendant/pendant.js"));
+    let script = server.send(get("/pendant/pendant.js", Some(&cookie))).await;
+    assert!(header_text(&script, "content-type").starts_with("text/javascript"));
+    assert_eq!(server.send(get("/pendant/other.js", Some(&cookie))).await.status(), StatusCode::NOT_FOUND);
+
+    let screen = json_of(server.send(get("/pendant/api/screen", Some(&cookie))).await).await;
+    assert_eq!(screen, serde_json::json!({"lines": [], "prompts": []}));
+    let no_such = server.send(post("/pendant/api/answer", &cookie, "id=99&answer=1")).await;
+    assert_eq!(no_such.status(), StatusCode::BAD_REQUEST);
+    assert_eq!(server.send(post("/pendant/api/answer", &cookie, "answer=1")).await.status(), StatusCode::BAD_REQUEST);
+
+    // The arm's points: the base at the world's origin, the column straight up, and the
+    // flange where the robtarget of tool0 in the world says it is.
+    let arms = json_of(server.send(get("/pendant/api/arms", Some(&cookie))).await).await;
+    let arm = &arms["arms"][0];
+    assert_eq!(arm["task"], "T_ROB1");
+    let points: Vec<Vec<f64>> = serde_json::from_value(arm["points"].clone()).unwrap();
+    assert_eq!(points.len(), 6);
+    assert_eq!(points[0], vec![0.0, 0.0, 0.0]);
+    assert!(points[1][0].abs() < 1e-9 && points[1][1].abs() < 1e-9 && points[1][2] > 0.0, "{points:?}");
+    let (flange, _) = robtarget(&server, &cookie, "tool=tool0&coordinate=World").await;
+    for axis in 0..3 {
+        assert!((points[5][axis] - flange[axis]).abs() < 0.01, "{points:?} vs {flange:?}");
+        // No tool moved yet: the active tool is tool0, its TCP the flange.
+        assert!((arm["tcp"][axis].as_f64().unwrap() - flange[axis]).abs() < 0.01);
+    }
+
+    let program = json_of(server.send(get("/pendant/api/program?task=T_ROB1", Some(&cookie))).await).await;
+    assert_eq!(program["pointer"]["routine"], "main");
+    assert_eq!(program["text"], serde_json::Value::Null, "the module is not on disk");
+    let unknown = server.send(get("/pendant/api/program?task=NOPE", Some(&cookie))).await;
+    assert_eq!(unknown.status(), StatusCode::BAD_REQUEST);
+    let missing = server.send(get("/pendant/api/program", Some(&cookie))).await;
+    assert_eq!(missing.status(), StatusCode::BAD_REQUEST);
+}

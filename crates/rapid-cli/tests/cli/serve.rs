@@ -32,7 +32,7 @@ fn free_port() -> u16 {
 /// URL, and its stdout (the pendant's lines) read to the end on a thread. A port
 /// another process took between our look and the server's bind is tried again (at
 /// most three ports).
-fn start_server(project: &Path) -> (Child, String, std::thread::JoinHandle<String>) {
+pub(crate) fn start_server(project: &Path) -> (Child, String, std::thread::JoinHandle<String>) {
     let mut tried = Vec::new();
     for _ in 0..3 {
         match try_start(project) {
@@ -80,7 +80,7 @@ fn try_start(project: &Path) -> Result<(Child, String, std::thread::JoinHandle<S
 }
 
 /// Waits for `child` at most `limit`; kills it after.
-fn wait_bounded(child: &mut Child, limit: Duration) -> Option<ExitStatus> {
+pub(crate) fn wait_bounded(child: &mut Child, limit: Duration) -> Option<ExitStatus> {
     let deadline = Instant::now() + limit;
     while Instant::now() < deadline {
         if let Ok(Some(status)) = child.try_wait() {
@@ -130,7 +130,7 @@ fn read_all(pipe: Option<std::process::ChildStdout>) -> std::thread::JoinHandle<
     })
 }
 
-fn interrupt(child: &Child) {
+pub(crate) fn interrupt(child: &Child) {
     let sent = Command::new("kill").args(["-INT", &child.id().to_string()]).status().expect("kill");
     assert!(sent.success());
 }

@@ -22,6 +22,7 @@ pub mod debug;
 mod exec;
 mod inspect;
 mod modules;
+pub mod motion;
 pub mod panel;
 pub mod pendant;
 pub mod stream;

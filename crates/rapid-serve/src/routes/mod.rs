@@ -40,8 +40,15 @@ const MAX_BODY: usize = 64 * 1024 * 1024;
 pub(crate) fn router(app: Arc<App>) -> Router {
     Router::new()
         .route("/poll/{id}", get(poll))
+        .route("/", get(crate::pendant::index))
+        .route("/pendant/{file}", get(crate::pendant::file))
+        .route("/pendant/api/screen", get(crate::pendant::screen))
+        .route("/pendant/api/answer", axum::routing::post(crate::pendant::answer))
+        .route("/pendant/api/arms", get(crate::pendant::arms))
+        .route("/pendant/api/program", get(crate::pendant::program))
         .fallback(dispatch)
         .layer(DefaultBodyLimit::max(MAX_BODY))
+        .layer(middleware::from_fn(refuse_huge))
         .layer(middleware::from_fn_with_state(app.clone(), authenticate))
         .with_state(app)
 }
@@ -122,6 +129,31 @@ async fn authenticate(State(app): State<Arc<App>>, request: Request, next: Next)
             response
         }
     }
+}
+
+/// A body announced larger than [`MAX_BODY`] is refused (413) at once, from its
+/// `Content-Length`, rather than waited for: the limit alone fails only once that
+/// much has come, and a client that announces more than it sends would hold the
+/// handler until it hangs up.
+async fn refuse_huge(request: Request, next: Next) -> Response {
+    let announced = request
+        .headers()
+        .get(header::CONTENT_LENGTH)
+        .and_then(|v| v.to_str().ok())
+        .and_then(|v| v.trim().parse::<u64>().ok());
+    if announced.is_some_and(|n| n > MAX_BODY as u64) {
+        let json = request.uri().query().is_some_and(|q| q.split('&').any(|p| p == "json=1"));
+        let err = RwsError::new(
+            StatusCode::PAYLOAD_TOO_LARGE,
+            crate::model::CODE_BAD_REQUEST,
+            format!("the body is larger than {} MiB", MAX_BODY / (1024 * 1024)),
+        );
+        let mut response = error_response(&err, json);
+        // The rest of the body is not read: the connection cannot be reused.
+        response.headers_mut().insert(header::CONNECTION, HeaderValue::from_static("close"));
+        return response;
+    }
+    next.run(request).await
 }
 
 /// `ws://HOST/poll/{id}`: a subscription's events.

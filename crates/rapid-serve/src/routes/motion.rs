@@ -1,14 +1,13 @@
 //! `/rw/motionsystem/mechunits`: the robots (ROB_1 is the first task that moves one),
 //! each one's `jointtarget` and its `robtarget`: the TCP of `tool` (default tool0, the
-//! flange) in the `Base` frame, the `World` or the object frame of `wobj`, the tool and
-//! work object read from the robot's task as RAPID data.
+//! flange) in the `Base` frame, the `World` or the object frame of `wobj`, computed by
+//! the controller (`Session::tcp_pose`) and formatted here.
 
 use std::sync::Arc;
 
 use axum::http::Method;
+use rapid_controller::api::motion::{Coordinate, TcpPose};
 use rapid_controller::api::{MechUnitView, Session};
-use rapid_motion::pose::{orient, pose, trans};
-use rapid_motion::Pose;
 
 use super::{not_found, Req, Res};
 use crate::model::{number, Item, Reply, RwsError};
@@ -74,13 +73,6 @@ struct Frames {
     coordinate: Coordinate,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Coordinate {
-    Base,
-    World,
-    Wobj,
-}
-
 impl Frames {
     fn parse(req: &Req) -> Result<Frames, RwsError> {
         let tool = req.query("tool").filter(|t| !t.is_empty()).unwrap_or("tool0").to_owned();
@@ -100,85 +92,30 @@ impl Frames {
 
 /// The robtarget of mechanical unit `name` in `frames`, on the controller thread.
 fn robtarget_of(session: &mut Session, name: &str, frames: &Frames) -> Result<Item, RwsError> {
-    let units = session.mechunits();
+    let count = session.mechunits().len();
     let index = name
         .strip_prefix("ROB_")
         .and_then(|n| n.parse::<usize>().ok())
         .and_then(|n| n.checked_sub(1))
-        .filter(|&i| i < units.len())
+        .filter(|&i| i < count)
         .ok_or_else(|| RwsError::not_found(format!("no mechanical unit `{name}`")))?;
-    let u = &units[index];
-    let flange = pose(u.trans, u.orient);
-    let tcp = flange * tool_frame(session, &u.task, &frames.tool)?;
-    let base = pose(u.base_trans, u.base_orient);
-    let shown = match frames.coordinate {
-        Coordinate::Base => tcp,
-        Coordinate::World => base * tcp,
-        Coordinate::Wobj => object_frame(session, &u.task, &frames.wobj)?.inverse() * base * tcp,
-    };
-    Ok(robtarget(u, trans(&shown), orient(&shown)))
+    let tcp =
+        session.tcp_pose(index, &frames.tool, &frames.wobj, frames.coordinate).map_err(|e| RwsError::from_api(&e))?;
+    Ok(robtarget(&tcp))
 }
 
-/// The tool's frame on the flange (`tframe` of a tooldata the robot holds).
-fn tool_frame(session: &mut Session, task: &str, tool: &str) -> Result<Pose, RwsError> {
-    if tool.eq_ignore_ascii_case("tool0") {
-        return Ok(Pose::identity());
-    }
-    if read(session, task, tool, "robhold")? != "TRUE" {
-        return Err(RwsError::unsupported(format!("robtarget with the stationary tool `{tool}`")));
-    }
-    pose_of(&read(session, task, tool, "tframe")?, tool)
-}
-
-/// A work object's object frame in the world (`uframe` then `oframe`), for a fixed
-/// work object the robot does not hold.
-fn object_frame(session: &mut Session, task: &str, wobj: &str) -> Result<Pose, RwsError> {
-    if wobj.eq_ignore_ascii_case("wobj0") {
-        return Ok(Pose::identity());
-    }
-    let fixed = read(session, task, wobj, "robhold")? == "FALSE" && read(session, task, wobj, "ufprog")? == "TRUE";
-    if !fixed {
-        return Err(RwsError::unsupported(format!(
-            "robtarget in the work object `{wobj}` (held by the robot or moved by a unit)"
-        )));
-    }
-    Ok(pose_of(&read(session, task, wobj, "uframe")?, wobj)? * pose_of(&read(session, task, wobj, "oframe")?, wobj)?)
-}
-
-/// Component `part` of datum `name` of task `task`, as RAPID literal text.
-fn read(session: &mut Session, task: &str, name: &str, part: &str) -> Result<String, RwsError> {
-    let path = format!("{task}/{name}.{part}");
-    session.read_data(&path).map(|d| d.value).map_err(|e| RwsError::from_api(&e))
-}
-
-/// A pose literal `[[x,y,z],[q1,q2,q3,q4]]`.
-fn pose_of(literal: &str, name: &str) -> Result<Pose, RwsError> {
-    let numbers: Vec<f64> = literal
-        .split(['[', ']', ','])
-        .map(str::trim)
-        .filter(|t| !t.is_empty())
-        .map(str::parse)
-        .collect::<Result<_, _>>()
-        .map_err(|_| RwsError::bad_request(format!("`{name}`: `{literal}` is no pose")))?;
-    match numbers.as_slice() {
-        [x, y, z, q1, q2, q3, q4] => rapid_motion::pose::checked_pose([*x, *y, *z], [*q1, *q2, *q3, *q4])
-            .ok_or_else(|| RwsError::bad_request(format!("`{name}`: the orientation is not normalised"))),
-        _ => Err(RwsError::bad_request(format!("`{name}`: `{literal}` is no pose"))),
-    }
-}
-
-fn robtarget(u: &MechUnitView, position: [f64; 3], rotation: [f64; 4]) -> Item {
+fn robtarget(tcp: &TcpPose) -> Item {
     let mut item = Item::new("ms-robtargets", "robtarget");
-    for (key, v) in ["x", "y", "z"].iter().zip(position) {
+    for (key, v) in ["x", "y", "z"].iter().zip(tcp.trans) {
         item = item.with(key, number(v));
     }
-    for (key, v) in ["q1", "q2", "q3", "q4"].iter().zip(rotation) {
+    for (key, v) in ["q1", "q2", "q3", "q4"].iter().zip(tcp.orient) {
         item = item.with(key, number(v));
     }
-    for (key, v) in ["cf1", "cf4", "cf6", "cfx"].iter().zip(u.conf) {
+    for (key, v) in ["cf1", "cf4", "cf6", "cfx"].iter().zip(tcp.conf) {
         item = item.with(key, v.to_string());
     }
-    for (name, e) in EAX.iter().zip(u.extax) {
+    for (name, e) in EAX.iter().zip(tcp.extax) {
         item = item.with(&format!("eax{name}"), number(e));
     }
     item

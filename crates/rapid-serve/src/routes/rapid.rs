@@ -84,7 +84,7 @@ async fn execution(app: &Arc<App>, req: &Req) -> Res {
             Ok(Reply::NoContent)
         }
         (Some("resetpp"), &Method::POST) => {
-            app.controller.call(|core| core.session.pp_to_main().map_err(|e| RwsError::from_api(&e))).await??;
+            app.controller.call(reset_pp).await??;
             Ok(Reply::NoContent)
         }
         _ => Err(not_found(req)),
@@ -169,6 +169,19 @@ fn start(core: &mut Core, order: &StartOrder) -> Result<(), RwsError> {
         None => core.session.start(StartFrom::Pointer),
     };
     result.map_err(|e| RwsError::from_api(&e))
+}
+
+/// PP to Main. A program whose NORMAL tasks have all ended (a `Stop` or the end of a
+/// cycle) is shown to clients as stopped, while the session still counts it as
+/// running: it is stopped first, so that PP to Main is accepted as the state shown
+/// says it should be.
+fn reset_pp(core: &mut Core) -> Result<(), RwsError> {
+    use rapid_controller::ProgramState as P;
+    let running = matches!(core.session.program_state(), P::Running | P::Stopping { .. } | P::Stepping { .. });
+    if running && core.exec_state() == "stopped" {
+        core.session.stop(StopKind::Stop).map_err(|e| RwsError::from_api(&e))?;
+    }
+    core.session.pp_to_main().map_err(|e| RwsError::from_api(&e))
 }
 
 /// Stops the program; a program that is not running stays as it is (no error, as a
