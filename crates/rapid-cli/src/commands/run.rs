@@ -11,7 +11,7 @@ use std::io::{self, BufWriter, Write};
 
 use rapid_sema::{Code, Diagnostic, Severity, SourceInput};
 use rapid_syntax::LineIndex;
-use rapid_vm::{Host, LoadError};
+use rapid_vm::{Host, LoadError, Prompt};
 
 use crate::args::RunArgs;
 use crate::commands::ExitStatus;
@@ -181,6 +181,16 @@ impl Host for StdoutHost<'_> {
 
     fn note(&mut self, text: &str) {
         eprintln!("note: {text}");
+    }
+
+    // A `\Visualize` box takes no answer: the run shows it on stderr (stdout is the
+    // pendant's TP output, which the box is not part of) when it opens and closes.
+    fn visualize_open(&mut self, prompt: &Prompt<'_>) {
+        eprintln!("pendant: {} shows a message box while it waits: {}", prompt.task, prompt.text.replace('\n', " / "));
+    }
+
+    fn visualize_close(&mut self, prompt: &Prompt<'_>) {
+        eprintln!("pendant: {} closes the message box: {}", prompt.task, prompt.text.replace('\n', " / "));
     }
 }
 

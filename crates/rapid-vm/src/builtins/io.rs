@@ -78,7 +78,6 @@ impl IoState {
         self.waiting.map(|(_, _, at)| at)
     }
 
-
     /// A note for the run's user (on stderr in `rapid run`), told when the task next
     /// runs: what `--virtual-io` made of a signal, for one.
     pub fn note_later(&mut self, text: String) {
