@@ -50,6 +50,7 @@ mod save_pers;
 mod scale;
 mod search;
 mod serve;
+mod serve_ampe;
 mod sockets;
 mod sockets_system;
 mod stepbwd;
