@@ -1,7 +1,8 @@
 //! abb-motion-program-exec (0.7.4 from PyPI, unmodified, in a virtualenv made here)
 //! runs motion programs on its own RAPID system under `rapid serve`: its three tasks
 //! (T_ROB1, the logger, the error reporter) booted from its own `config_params/` +
-//! `HOME/` layout, driven by `serve_ampe.py` through `execute_motion_program`.
+//! `HOME/` layout, driven by `serve_ampe.py` through `execute_motion_program`; and its
+//! MultiMove layout (T_ROB1 and T_ROB2) through `execute_multimove_motion_program`.
 //!
 //! The RAPID system is public code we do not copy into this repository, and PyPI's
 //! package holds only the Python client: the test takes the system from
@@ -64,26 +65,36 @@ fn robot_folder() -> Option<PathBuf> {
     Some(robot)
 }
 
-#[test]
-fn execute_motion_program_runs_on_its_own_system() {
-    let Some(robot) = robot_folder() else { return };
-    let Some(python) = venv_python("ampe-client-venv", &PACKAGES) else { return };
-    let dir = scratch_in("serve", "ampe");
+/// The system copied to a scratch folder, served from its `layout` folder, with
+/// `serve_ampe.py URL mode…` run against it: the script's last line, the server's exit
+/// code, and the system's folder (kept while the scratch lives).
+fn serve_and_drive(name: &str, layout: &str, mode: &[&str]) -> Option<(String, Option<i32>, crate::fixture::Scratch)> {
+    let robot = robot_folder()?;
+    let python = venv_python("ampe-client-venv", &PACKAGES)?;
+    let dir = scratch_in("serve", name);
     let system = dir.join("robot");
     copy_dir(&robot, &system);
     std::fs::create_dir_all(system.join("RAMDISK")).expect("RAMDISK folder");
-    let (mut child, url, _pendant) = start_server(&system.join("config_params"));
+    let (mut child, url, _pendant) = start_server(&system.join(layout));
     let script = repo_root().join("crates/rapid-cli/tests/cli/serve_ampe.py");
-    let out = output_bounded(Command::new(&python).arg(&script).arg(&url), Duration::from_secs(180));
+    let out = output_bounded(Command::new(&python).arg(&script).arg(&url).args(mode), Duration::from_secs(180));
     interrupt(&child);
     let status = wait_bounded(&mut child, Duration::from_secs(20));
     let out = out.expect("the client script ends within 180 s");
     let stdout = String::from_utf8_lossy(&out.stdout);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "the client failed:\n{stdout}\n{stderr}");
+    let last = stdout.lines().last().unwrap_or_default().to_owned();
+    Some((last, status.and_then(|s| s.code()), dir))
+}
+
+#[test]
+fn execute_motion_program_runs_on_its_own_system() {
+    let Some((last, code, dir)) = serve_and_drive("ampe", "config_params", &[]) else { return };
+    let system = dir.join("robot");
     // 14 checks: each program's log and last row, the command numbers, the state.
-    assert_eq!(stdout.lines().last(), Some("14 passed, 0 failed"), "{stdout}");
-    assert_eq!(status.and_then(|s| s.code()), Some(0));
+    assert_eq!(last, "14 passed, 0 failed");
+    assert_eq!(code, Some(0));
     // The client read its joint logs back and deleted them; its program file stays.
     let left: Vec<String> = std::fs::read_dir(system.join("RAMDISK"))
         .expect("RAMDISK")
@@ -97,4 +108,14 @@ fn execute_motion_program_runs_on_its_own_system() {
     let saved = "PERS motion_program_state_type motion_program_state{2} := [[FALSE,5,6,0,\"\",";
     assert!(shared.contains(saved), "{shared}");
     assert!(shared.contains("[[10,5,15,-20,50,30],"), "{shared}");
+}
+
+#[test]
+fn execute_multimove_motion_program_runs_on_its_multimove_layout() {
+    let Some((last, code, _dir)) = serve_and_drive("ampe_multimove", "config_params_multimove", &["multimove"]) else {
+        return;
+    };
+    // 9 checks: both robots' last rows in both logs, the command number, the state.
+    assert_eq!(last, "9 passed, 0 failed");
+    assert_eq!(code, Some(0));
 }
