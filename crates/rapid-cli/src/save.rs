@@ -4,6 +4,7 @@
 //! it, fsync of the folder: [`rapid_vm::persist::write_atomic`]), so a crash or a kill
 //! at any moment leaves the old or the new file, never half a file.
 
+use std::collections::HashSet;
 use std::fs;
 use std::path::Path;
 
@@ -14,8 +15,17 @@ use rapid_syntax::source::{decode, Encoding};
 /// `--save-pers`: writes each changed persistent's value into its module file (Save
 /// Module). Every file is tried even when one fails, so one unwritable module does
 /// not cost the others their values; the failures are reported together.
-pub(crate) fn save_persistents(loaded: &rapid_vm::Loaded, files: &[SourceInput]) -> anyhow::Result<()> {
-    save_persistents_where(loaded, files, &|_| true)
+///
+/// `written` holds the module files saved so far by the other tasks of the system: a
+/// shared module (`-Shared`) is in every task's file list, its persistents one object,
+/// so it is written once, by the first task that changed one of them (the others
+/// would find it changed on disk).
+pub(crate) fn save_persistents(
+    loaded: &rapid_vm::Loaded,
+    files: &[SourceInput],
+    written: &mut HashSet<String>,
+) -> anyhow::Result<()> {
+    save_persistents_where(loaded, files, &|_| true, written)
 }
 
 /// [`save_persistents`] of the persistents `keep` names by their index in
@@ -24,9 +34,13 @@ pub(crate) fn save_persistents_where(
     loaded: &rapid_vm::Loaded,
     files: &[SourceInput],
     keep: &dyn Fn(usize) -> bool,
+    written: &mut HashSet<String>,
 ) -> anyhow::Result<()> {
     let mut failures = Vec::new();
     for (file, input) in files.iter().enumerate() {
+        if written.contains(&input.path) {
+            continue;
+        }
         let sites: Vec<_> = loaded
             .persistents
             .iter()
@@ -36,8 +50,11 @@ pub(crate) fn save_persistents_where(
             .filter_map(|s| loaded.vm.global(s.global).map(|v| (s, v)))
             .collect();
         let Some(new_text) = rapid_vm::persist::rewrite(&input.text, &sites) else { continue };
-        if let Err(e) = write_module(Path::new(&input.path), &input.text, &new_text) {
-            failures.push(format!("{e:#}"));
+        match write_module(Path::new(&input.path), &input.text, &new_text) {
+            Ok(()) => {
+                written.insert(input.path.clone());
+            }
+            Err(e) => failures.push(format!("{e:#}")),
         }
     }
     match failures.len() {

@@ -423,6 +423,19 @@ impl Controller {
         !self.stopped_tasks().is_empty()
     }
 
+    /// Every NORMAL task has ended and the controller lives on
+    /// ([`Controller::set_lives_on`]): a running program stops there, with no STOP
+    /// event routines (no task stands to run them), as the end of a cycle stops it.
+    pub(crate) fn cycle_over(&mut self) {
+        if self.ops.state() != ProgramState::Running {
+            return;
+        }
+        self.ops.state = Some(ProgramState::Stopped);
+        self.ops.stopped_at = self.time;
+        self.ops.stop_at_cycle_end = false;
+        self.note("program stopped: the cycle is over".to_owned());
+    }
+
     /// Every NORMAL task stands at a boundary (or waits): the program stops.
     fn complete_stop(&mut self, host: &mut dyn Host, kind: StopKind) {
         self.ops.state = Some(ProgramState::Stopped);

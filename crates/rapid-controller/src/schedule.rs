@@ -108,6 +108,10 @@ pub struct Controller {
     pub(crate) step_bound: Option<u64>,
     /// Instructions run since the last NORMAL task ended.
     drained: u64,
+    /// The controller lives on after the program's cycle (a served controller): the
+    /// end of every NORMAL task stops the program, STATIC and SEMISTATIC tasks run on
+    /// ([`Controller::set_lives_on`]). Without it (`rapid run`) the run ends there.
+    lives_on: bool,
     /// Run mode: the cycles each NORMAL task runs (1: cycle mode; 0: continuous
     /// until stopped), and how many each has ended.
     cycles: u64,
@@ -180,6 +184,7 @@ impl Controller {
             charged: None,
             step_bound: None,
             drained: 0,
+            lives_on: false,
             cycles: 1,
             cycles_ended,
             ops: crate::ops::Operations::default(),
@@ -381,7 +386,13 @@ impl Controller {
             self.operate(host);
             self.wake();
             let mut runnable = self.runnable();
-            if self.is_over() {
+            if self.lives_on && self.is_over() {
+                // The cycle is over: the program stops, the static tasks run on.
+                self.cycle_over();
+                if runnable.is_empty() {
+                    return self.idle();
+                }
+            } else if self.is_over() {
                 // The other tasks finish the interrupts under way now (a trap for the
                 // last error, say), without the clock moving on to their next wait:
                 // each looks once, then only those with a trap to run go on.
@@ -610,6 +621,14 @@ impl Controller {
                 _ => None,
             })
             .min_by(f64::total_cmp)
+    }
+
+    /// Whether the controller lives on after the program's cycle (a served
+    /// controller): the end of every NORMAL task then stops the program as the end
+    /// of a cycle does on the controller, and STATIC and SEMISTATIC tasks (a logger,
+    /// an error reporter) run on, as they do on the controller, until it is shut down.
+    pub fn set_lives_on(&mut self, lives_on: bool) {
+        self.lives_on = lives_on;
     }
 
     /// Over when every NORMAL task has ended; a system of static tasks only runs

@@ -259,6 +259,8 @@ impl Controller {
                 };
                 let mut core = Core::new(session, thread_events, boot.on_tp_write);
                 core.session.set_clock(boot.clock);
+                // A served controller lives on after the cycle: its static tasks too.
+                core.session.set_lives_on(true);
                 let _ = ready_tx.send(Ok(core.session.file_root()));
                 drive(&mut core, &rx, &thread_stop);
                 match boot.on_exit {

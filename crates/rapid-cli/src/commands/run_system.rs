@@ -522,9 +522,10 @@ fn finish(controller: &Controller, tasks: &[LoadedTask], args: &RunArgs, alone: 
     // Every task's save and the log are attempted even when one fails.
     let mut saved = Ok(());
     if args.save_pers {
+        let mut written = std::collections::HashSet::new();
         for (task, input) in controller.tasks.iter().zip(tasks) {
             let modules: &[SourceInput] = &input.inputs.modules;
-            let result = crate::save::save_persistents(&task.loaded, modules);
+            let result = crate::save::save_persistents(&task.loaded, modules, &mut written);
             if saved.is_ok() {
                 saved = result;
             }

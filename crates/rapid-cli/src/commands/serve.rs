@@ -219,11 +219,12 @@ fn default_home(paths: &[PathBuf]) -> PathBuf {
 fn save_persistents(session: &mut Session, modules: &Mutex<Vec<TaskFiles>>) -> Result<(), String> {
     let files = modules.lock().map_err(|_| "the module list is unreadable".to_owned())?;
     let mut failures = Vec::new();
+    let mut written = std::collections::HashSet::new();
     for (task, (name, task_files, at_boot)) in session.controller().tasks.iter().zip(files.iter()) {
         debug_assert_eq!(&task.spec.name, name);
         let now = pers_literals(&task.loaded);
         let changed = |idx: usize| now.get(idx) != at_boot.get(idx);
-        if let Err(e) = crate::save::save_persistents_where(&task.loaded, task_files, &changed) {
+        if let Err(e) = crate::save::save_persistents_where(&task.loaded, task_files, &changed, &mut written) {
             failures.push(format!("{e:#}"));
         }
     }

@@ -51,6 +51,7 @@ mod save_pers;
 mod scale;
 mod search;
 mod serve;
+mod serve_ampe;
 mod serve_faults;
 mod sockets;
 mod sockets_controller_ip;

@@ -253,3 +253,28 @@ fn store_path_leaves_synchronized_movement_unless_keep_sync() {
     assert_eq!(rob1_lines, ["T_ROB1 level 2 TRUE"]);
     assert!(text(&out.stderr).contains("needs \\ID"), "{}", text(&out.stderr));
 }
+
+#[test]
+fn synchronized_moves_of_robots_already_at_their_targets_are_no_error() {
+    let dir = scratch("zero_length");
+    // Both robots stand at the jointtarget their synchronized MoveAbsJ \ID:=10 asks
+    // for: the common time is 0, which is no move time to give (a \T of 0 is invalid);
+    // each move is the zero-length move it would be alone, and the program goes on
+    // (abb-motion-program-exec's first MoveAbsJ of a MultiMove program does this).
+    let body = "MODULE M\n  VAR syncident sync1;\n  VAR syncident sync2;\n  \
+                PERS tasks all{2} := [[\"T_ROB1\"],[\"T_ROB2\"]];\n  \
+                CONST jointtarget j := [[0,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n  PROC main()\n    \
+                MoveAbsJ j, v1000, fine, tool0;\n    SyncMoveOn sync1, all;\n    \
+                MoveAbsJ j \\ID:=10, v1000, fine, tool0;\n    SyncMoveOff sync2;\n    \
+                TPWrite GetTaskName() + \" stood\";\n  ENDPROC\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module: body },
+        TaskDef { name: "T_ROB2", attrs: "-Type \"NORMAL\" -MotionTask", module: body },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "--quiet", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let mut lines: Vec<String> = text(&out.stdout).lines().map(str::to_owned).collect();
+    lines.sort();
+    assert_eq!(lines, ["T_ROB1 stood", "T_ROB2 stood"]);
+}

@@ -94,7 +94,7 @@ pub(crate) fn wait_bounded(child: &mut Child, limit: Duration) -> Option<ExitSta
 }
 
 /// Runs `cmd` to its end, at most `limit`.
-fn output_bounded(cmd: &mut Command, limit: Duration) -> Option<Output> {
+pub(super) fn output_bounded(cmd: &mut Command, limit: Duration) -> Option<Output> {
     let mut child = cmd.stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().ok()?;
     let out = child.stdout.take();
     let err = child.stderr.take();
@@ -166,7 +166,7 @@ fn a_port_in_use_is_reported() {
 }
 
 /// Whether a missing Python client must fail the test rather than skip it.
-fn required() -> bool {
+pub(super) fn required() -> bool {
     std::env::var("CI").is_ok_and(|v| v == "true")
         || std::env::var("OPENRAPID_REQUIRE_RWS_CLIENT").is_ok_and(|v| v == "1")
 }
@@ -176,12 +176,21 @@ fn required() -> bool {
 /// The tests that need it run in parallel: one makes the virtualenv while the others
 /// wait (two pips installing into one fresh virtualenv break each other).
 fn client_python() -> Option<PathBuf> {
+    venv_python("rws-client-venv", &PACKAGES)
+}
+
+/// The python of virtualenv `name` (in the target's scratch folder) with `packages`
+/// installed, made once per target folder and package list; None as for
+/// [`client_python`]. One virtualenv is made at a time, whichever its name.
+pub(super) fn venv_python(name: &str, packages: &[&str]) -> Option<PathBuf> {
     static MAKING: std::sync::Mutex<()> = std::sync::Mutex::new(());
     let _one_at_a_time = MAKING.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-    let venv = Path::new(env!("CARGO_TARGET_TMPDIR")).join("rws-client-venv");
+    let venv = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
     let python = venv.join("bin/python");
-    let marker = venv.join(format!("installed {}", PACKAGES.join(" ")));
-    if marker.exists() && python.exists() {
+    // The package list is the marker's text (a long list is no file name).
+    let marker = venv.join("installed");
+    let wanted = packages.join(" ");
+    if std::fs::read_to_string(&marker).is_ok_and(|had| had == wanted) && python.exists() {
         return Some(python);
     }
     let _ = std::fs::remove_dir_all(&venv);
@@ -193,7 +202,7 @@ fn client_python() -> Option<PathBuf> {
         }),
         ("pip install", {
             let mut cmd = Command::new(venv.join("bin/pip"));
-            cmd.args(["install", "--quiet", "--disable-pip-version-check"]).args(PACKAGES);
+            cmd.args(["install", "--quiet", "--disable-pip-version-check"]).args(packages);
             cmd
         }),
     ];
@@ -207,12 +216,12 @@ fn client_python() -> Option<PathBuf> {
             assert!(!required(), "{what} failed (CI requires the RWS client test): {why}");
             #[allow(clippy::print_stderr)]
             {
-                eprintln!("*** skipped: {what} failed, abb-robot-client was not run against rapid serve: {why} ***");
+                eprintln!("*** skipped: {what} failed, {} was not run against rapid serve: {why} ***", packages[0]);
             }
             return None;
         }
     }
-    std::fs::write(&marker, "").expect("marker");
+    std::fs::write(&marker, wanted).expect("marker");
     Some(python)
 }
 

@@ -46,6 +46,12 @@ impl Session {
         self.controller.set_cycles(cycles);
     }
 
+    /// The controller lives on after the program's cycle, as a served one does
+    /// ([`crate::Controller::set_lives_on`]).
+    pub fn set_lives_on(&mut self, lives_on: bool) {
+        self.controller.set_lives_on(lives_on);
+    }
+
     /// Whether every NORMAL task has ended (the cycle is over: a new start begins
     /// at Main).
     pub fn all_normal_ended(&self) -> bool {

@@ -183,7 +183,10 @@ pub(super) fn go_with(
     match crate::builtins::syncmove::coordinate(ctx, args.get(layout.id), &request, &settings, external.as_ref())? {
         crate::builtins::syncmove::Coordination::Alone => {}
         crate::builtins::syncmove::Coordination::Wait => return Ok(None),
-        crate::builtins::syncmove::Coordination::Time(time) => settings.move_time = Some(time),
+        crate::builtins::syncmove::Coordination::Time(time) if time > 0.0 => settings.move_time = Some(time),
+        // Every robot of the group already stands at its target: no common time to
+        // give (a zero \T is invalid), each move is the zero-length move it is alone.
+        crate::builtins::syncmove::Coordination::Time(_) => {}
     }
     note_facts(ctx, &request, &chain);
     let now = ctx.time;
