@@ -481,6 +481,7 @@ impl Collector {
             "SYS" => {
                 let view = sys::read(&parsed);
                 self.config_findings(config_idx, &view.errors);
+                self.config_warnings(config_idx, &view.warnings);
                 sys = Some(view);
             }
             _ => {}
