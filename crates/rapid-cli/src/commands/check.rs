@@ -73,7 +73,12 @@ pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
     if let Some(sys) = &inputs.sys {
         let tasks: Vec<TaskProgram<'_>> = programs
             .iter()
-            .map(|(name, file_offset, facts)| TaskProgram { name, file_offset: *file_offset, facts })
+            .map(|(name, file_offset, facts)| TaskProgram {
+                name,
+                file_offset: *file_offset,
+                facts,
+                entry_given: false,
+            })
             .collect();
         let found = system::findings(sys, ConfigFile::of(inputs.sys_file, &table), &tasks);
         reported.extend(found.into_iter().map(Reported::from));
