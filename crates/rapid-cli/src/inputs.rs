@@ -297,15 +297,21 @@ impl Collector {
             }
         }
         self.system_output_findings(sys.as_ref(), &task.name);
-        if self.modules.is_empty() {
-            if !has_folder {
-                bail!(
-                    "backup `{shown}`: task {} has no task folder `{}`, and SYS.cfg loads no module of HOME into it",
-                    task.name,
-                    task.folder.display()
-                );
+        // A task SYS.cfg configures that has no module cannot run: a finding at its
+        // CAB_TASKS line, as `rapid run` refuses it (check and run agree).
+        let line = sys.as_ref().and_then(|sys| sys.task(&task.name)).map(|t| t.line);
+        let without_modules = self.modules.is_empty();
+        match (without_modules, line) {
+            (false, _) => {}
+            (true, Some(line)) => self.sys_finding(line, no_program(&task, has_folder)),
+            (true, None) if !has_folder => bail!(
+                "backup `{shown}`: task {} has no task folder `{}`, and SYS.cfg loads no module of HOME into it",
+                task.name,
+                task.folder.display()
+            ),
+            (true, None) => {
+                bail!("backup `{shown}`: task folder `{}` holds no modules in PROGMOD or SYSMOD", task.folder.display())
             }
-            bail!("backup `{shown}`: task folder `{}` holds no modules in PROGMOD or SYSMOD", task.folder.display());
         }
         // Without any task folder every task is such a task: one note says so.
         if tasks.is_empty() && self.wanted_task.is_none() {
@@ -315,7 +321,8 @@ impl Collector {
                 home.as_deref().map_or_else(|| "(none)".to_owned(), |h| h.display().to_string())
             ));
         }
-        if !has_folder && (!tasks.is_empty() || backup::listed_modules(folder, &task.folder) > 0) {
+        let noted = !without_modules && (!tasks.is_empty() || backup::listed_modules(folder, &task.folder) > 0);
+        if !has_folder && noted {
             self.note_folderless_task(folder, &task);
         }
         if sys.as_ref().is_none_or(|sys| sys.tasks.is_empty()) && self.wanted_task.is_none() {
@@ -733,6 +740,17 @@ impl Collector {
             unconfigured_tasks: self.unconfigured_tasks,
         }
     }
+}
+
+/// Why task `task`, which SYS.cfg configures, has no program: no task folder (or an
+/// empty one) and no module of HOME loaded into it.
+fn no_program(task: &TaskFolder, has_folder: bool) -> String {
+    let folder = task.folder.display();
+    let why = match has_folder {
+        true => format!("its task folder `{folder}` holds no modules in PROGMOD or SYSMOD"),
+        false => format!("it has no task folder `{folder}`"),
+    };
+    format!("task {} has no program: {why}, and SYS.cfg loads no module of HOME into it (CAB_TASK_MODULES)", task.name)
 }
 
 /// The configuration domains whose content `rapid` reads (signals, tasks, mechanical
