@@ -303,7 +303,7 @@ impl Collector {
         let without_modules = self.modules.is_empty();
         match (without_modules, line) {
             (false, _) => {}
-            (true, Some(line)) => self.sys_finding(line, no_program(&task, has_folder)),
+            (true, Some(line)) => self.sys_finding(line, backup::no_program(&task, has_folder)),
             (true, None) if !has_folder => bail!(
                 "backup `{shown}`: task {} has no task folder `{}`, and SYS.cfg loads no module of HOME into it",
                 task.name,
@@ -740,17 +740,6 @@ impl Collector {
             unconfigured_tasks: self.unconfigured_tasks,
         }
     }
-}
-
-/// Why task `task`, which SYS.cfg configures, has no program: no task folder (or an
-/// empty one) and no module of HOME loaded into it.
-fn no_program(task: &TaskFolder, has_folder: bool) -> String {
-    let folder = task.folder.display();
-    let why = match has_folder {
-        true => format!("its task folder `{folder}` holds no modules in PROGMOD or SYSMOD"),
-        false => format!("it has no task folder `{folder}`"),
-    };
-    format!("task {} has no program: {why}, and SYS.cfg loads no module of HOME into it (CAB_TASK_MODULES)", task.name)
 }
 
 /// The configuration domains whose content `rapid` reads (signals, tasks, mechanical
