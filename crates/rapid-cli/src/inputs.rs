@@ -302,15 +302,21 @@ impl Collector {
             }
         }
         self.system_output_findings(sys.as_ref(), &task.name);
-        if self.modules.is_empty() {
-            if !has_folder {
-                bail!(
-                    "backup `{shown}`: task {} has no task folder `{}`, and SYS.cfg loads no module of HOME into it",
-                    task.name,
-                    task.folder.display()
-                );
+        // A task SYS.cfg configures that has no module cannot run: a finding at its
+        // CAB_TASKS line, as `rapid run` refuses it (check and run agree).
+        let line = sys.as_ref().and_then(|sys| sys.task(&task.name)).map(|t| t.line);
+        let without_modules = self.modules.is_empty();
+        match (without_modules, line) {
+            (false, _) => {}
+            (true, Some(line)) => self.sys_finding(line, backup::no_program(&task, has_folder)),
+            (true, None) if !has_folder => bail!(
+                "backup `{shown}`: task {} has no task folder `{}`, and SYS.cfg loads no module of HOME into it",
+                task.name,
+                task.folder.display()
+            ),
+            (true, None) => {
+                bail!("backup `{shown}`: task folder `{}` holds no modules in PROGMOD or SYSMOD", task.folder.display())
             }
-            bail!("backup `{shown}`: task folder `{}` holds no modules in PROGMOD or SYSMOD", task.folder.display());
         }
         // Without any task folder every task is such a task: one note says so.
         if tasks.is_empty() && self.wanted_task.is_none() {
@@ -320,7 +326,8 @@ impl Collector {
                 home.as_deref().map_or_else(|| "(none)".to_owned(), |h| h.display().to_string())
             ));
         }
-        if !has_folder && (!tasks.is_empty() || backup::listed_modules(folder, &task.folder) > 0) {
+        let noted = !without_modules && (!tasks.is_empty() || backup::listed_modules(folder, &task.folder) > 0);
+        if !has_folder && noted {
             self.note_folderless_task(folder, &task);
         }
         if sys.as_ref().is_none_or(|sys| sys.tasks.is_empty()) && self.wanted_task.is_none() {
@@ -487,6 +494,7 @@ impl Collector {
             "SYS" => {
                 let view = sys::read(&parsed);
                 self.config_findings(config_idx, &view.errors);
+                self.config_warnings(config_idx, &view.warnings);
                 sys = Some(view);
             }
             _ => {}

@@ -130,6 +130,9 @@ pub struct Sys {
     pub modules: Vec<TaskModule>,
     pub hooks: Vec<ExecHook>,
     pub errors: Vec<CfgError>,
+    /// What RobotWare accepts but means nothing to us, at its line (a task naming
+    /// itself as its foreground task).
+    pub warnings: Vec<CfgError>,
 }
 
 impl Sys {
@@ -169,8 +172,13 @@ pub fn read(file: &CfgFile) -> Sys {
         let (Some(name), Some(value)) = (inst.name(), foreground_attr(inst).and_then(|a| a.value.as_ref())) else {
             continue;
         };
-        if let Some(message) = foreground_finding(&sys, name, &value.text) {
-            sys.errors.push(CfgError { line: file.line_of(value.span.start), span: value.span.clone(), message });
+        let at = |message| CfgError { line: file.line_of(value.span.start), span: value.span.clone(), message };
+        if value.text.eq_ignore_ascii_case(name) {
+            sys.warnings.push(at(format!(
+                "task `{name}` names itself as its foreground task: it has none (it runs at the top level)"
+            )));
+        } else if let Some(message) = foreground_finding(&sys, name, &value.text) {
+            sys.errors.push(at(message));
         }
     }
     for inst in file.instances("CAB_TASK_MODULES") {
@@ -300,10 +308,14 @@ fn task(file: &CfgFile, inst: &Instance, errors: &mut Vec<CfgError>) -> Option<T
         motion_task: inst.has("MotionTask"),
         mechanical_unit_group: inst.value("UseMechanicalUnitGroup").map(str::to_owned),
         hidden: inst.has("Hidden"),
+        // A task naming itself has no foreground task: RobotWare loads such a line
+        // (a SYS.cfg a controller wrote has one, on a STATIC task), and a task cannot
+        // wait for itself to idle.
+        // uncertain: what RobotWare does with it; running at the top level is ours.
         foreground: foreground_attr(inst)
             .and_then(|a| a.value.as_ref())
             .map(|v| v.text.clone())
-            .filter(|t| !t.is_empty()),
+            .filter(|t| !t.is_empty() && !t.eq_ignore_ascii_case(name)),
         rmq: rmq(file, inst, name, errors),
         line: inst.line,
     })

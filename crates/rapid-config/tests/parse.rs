@@ -277,7 +277,10 @@ fn sys_entry_and_event_routine_spans() {
 #[test]
 fn foreground_tasks_in_either_spelling_and_no_cycles() {
     // `-Task_in_forground` is how SYS.cfg files controllers write spell the attribute;
-    // a task in its own background, or a cycle of them, could never run.
+    // a cycle of tasks in each other's background could never run. T_SELF naming
+    // itself was an error here too; issue 20 decided otherwise on evidence (a SYS.cfg a
+    // controller wrote, in a public backup, has it): it is a warning, T_SELF has no
+    // foreground task (`a_task_naming_itself_as_its_foreground_has_none`).
     let file = parse(
         "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n  -Name \"T_ROB1\" -Type \"NORMAL\"\n\n  \
          -Name \"T_BG\" -Task_in_forground \"T_ROB1\"\n\n  -Name \"T_SELF\" -TaskInForeground \"T_SELF\"\n\n  \
@@ -289,7 +292,6 @@ fn foreground_tasks_in_either_spelling_and_no_cycles() {
     assert_eq!(
         found,
         [
-            (9, "task `T_SELF` cannot run in its own background"),
             (
                 11,
                 "task `T_A` runs in the background of `T_B`, which runs (through its foreground tasks) in the \
@@ -301,6 +303,25 @@ fn foreground_tasks_in_either_spelling_and_no_cycles() {
                  background of `T_B`: none of them could run"
             ),
         ]
+    );
+}
+
+#[test]
+fn a_task_naming_itself_as_its_foreground_has_none() {
+    // T_UI names itself (line 7, either spelling): a warning at its line, no foreground
+    // task; T_BG behind it runs in its background as usual, and nothing is an error.
+    let file = parse(
+        "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n  -Name \"T_ROB1\" -Type \"NORMAL\"\n\n  \
+         -Name \"T_UI\" -Type \"STATIC\" -Task_in_forground \"t_ui\"\n\n  -Name \"T_BG\" -TaskInForeground \"T_UI\"\n",
+    );
+    let sys = sys::read(&file);
+    assert!(sys.errors.is_empty(), "{:?}", sys.errors);
+    assert_eq!(sys.task("T_UI").map(|t| t.foreground.clone()), Some(None));
+    assert_eq!(sys.task("T_BG").and_then(|t| t.foreground.as_deref()), Some("T_UI"));
+    let warned: Vec<(u32, &str)> = sys.warnings.iter().map(|w| (w.line, w.message.as_str())).collect();
+    assert_eq!(
+        warned,
+        [(7, "task `T_UI` names itself as its foreground task: it has none (it runs at the top level)")]
     );
 }
 

@@ -76,7 +76,8 @@ struct SysOutput {
     id: u32,
     status: SysStatus,
     /// The task (by index) a TaskExecuting or Error output watches, or the task that
-    /// moves the unit of a MechUnit… output; None: any.
+    /// moves the unit of a MechUnit… output; None: any task (Error), every unit
+    /// (MechUnit… without `-Arg1`).
     task: Option<usize>,
 }
 
@@ -595,8 +596,15 @@ impl Controller {
                     // No emergency stop, and never in simulated mode (the Sim Mode input
                     // is not simulated).
                     SysStatus::EmStop | SysStatus::SimMode => false,
-                    SysStatus::MechUnitNotMoving => o.task.is_some_and(|i| self.robot_still(&self.tasks[i])),
-                    // A TCP robot is always active (DeactUnit refuses it).
+                    // Without `-Arg1`, every unit: 1 while none moves (a task that moves
+                    // nothing always stands still).
+                    // uncertain: RobotWare's meaning of the output without `-Arg1`.
+                    SysStatus::MechUnitNotMoving => match o.task {
+                        Some(i) => self.robot_still(&self.tasks[i]),
+                        None => self.tasks.iter().all(|t| self.robot_still(t)),
+                    },
+                    // A TCP robot is always active (DeactUnit refuses it), with or without
+                    // `-Arg1` (external units are refused by `unit_task`).
                     SysStatus::MechUnitActive => true,
                     // Left out when configured (configure_system_signals).
                     SysStatus::NotSimulated(_) => false,

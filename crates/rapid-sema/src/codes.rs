@@ -148,10 +148,10 @@ diagnostic_codes! {
     // System configuration (a backup's SYSPAR/*.cfg, a manifest; read by rapid-cli) and the
     // system of tasks as a whole.
     "E0701" Error   ConfigFile:                "a line of a .cfg configuration file that cannot be read, or a configuration the controller refuses";
-    "W0702" Warning ConfigNotSimulated:        "a standard configuration setting `rapid run` accepts but does not simulate (a system input action or output status)";
+    "W0702" Warning ConfigNotSimulated:        "a configuration setting RobotWare accepts that `rapid run` does not simulate or interpret (a system input action or output status, a line of a domain not interpreted, a task naming itself as its foreground task)";
     "E0703" Error   SharedPersMismatch:        "a global PERS declared with another type or array size than in another task of the system (one persistent for all tasks, §1.20)";
     "E0704" Error   EventRoutineMissing:       "an event routine (SYS.cfg CAB_EXEC_HOOKS) that is not a procedure of a task it is configured for";
-    "E0705" Error   EntryRoutineMissing:       "a task other than the first whose entry routine (SYS.cfg -Entry, a manifest's entry; main by default) is not a global procedure of the task";
+    "E0705" Error   EntryRoutineMissing:       "a configured task whose entry routine (SYS.cfg -Entry, a manifest's entry; main by default) is not a global procedure of the task (the first task's unless `rapid run --entry` gives another)";
 }
 
 #[cfg(test)]

@@ -83,7 +83,12 @@ pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
     if let Some(sys) = &inputs.sys {
         let tasks: Vec<TaskProgram<'_>> = programs
             .iter()
-            .map(|(name, file_offset, facts)| TaskProgram { name, file_offset: *file_offset, facts })
+            .map(|(name, file_offset, facts)| TaskProgram {
+                name,
+                file_offset: *file_offset,
+                facts,
+                entry_given: false,
+            })
             .collect();
         let found = system::findings(sys, ConfigFile::of(inputs.sys_file, &table), &tasks);
         reported.extend(found.into_iter().map(Reported::from));
@@ -104,10 +109,12 @@ pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
 }
 
 /// Checks one task's modules: the diagnostics, and what the system findings need of its
-/// program when the task belongs to a system (none when only the syntax was checked).
+/// program when the task belongs to a system (none when only the syntax was checked,
+/// or when the task has no module: its configuration finding says so already).
 fn check_task(inputs: &inputs::Inputs, options: &Options) -> (Vec<Diagnostic>, Option<TaskFacts>) {
     let analysis = rapid_sema::analyze(&inputs.modules, options);
-    let facts = analysis.program.as_ref().filter(|_| inputs.sys.is_some()).map(system::facts);
+    let in_system = inputs.sys.is_some() && !inputs.modules.is_empty();
+    let facts = analysis.program.as_ref().filter(|_| in_system).map(system::facts);
     (analysis.diagnostics, facts)
 }
 

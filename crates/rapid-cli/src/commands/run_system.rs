@@ -86,7 +86,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     }
     let config = ConfigFile::of(tasks[0].inputs.sys_file, &table);
     let mut loaded = Vec::new();
-    let mut facts: Vec<TaskFacts> = Vec::new();
+    let mut facts: Vec<(TaskFacts, bool)> = Vec::new();
     for (idx, task) in tasks.iter().enumerate() {
         let configured = sys.as_ref().filter(|_| !alone).and_then(|sys| sys.task(&task.spec.name));
         let own_entry = task.inputs.task.as_ref().and_then(|t| t.entry.as_ref()).filter(|_| alone);
@@ -102,12 +102,16 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
             system_options: task.inputs.system_options.clone(),
             ..Options::default()
         };
-        let mut program = match (load_with(&task.inputs.modules, &entry, &options), configured, config) {
+        // The task as SYS.cfg or the manifest configures it (also for a task run alone):
+        // where its entry routine is named.
+        let declared = tasks[0].inputs.sys.as_ref().and_then(|sys| sys.task(&task.spec.name));
+        let entry_given = idx == 0 && args.entry.is_some();
+        let mut program = match (load_with(&task.inputs.modules, &entry, &options), declared, config) {
             (Ok(program), _, _) => program,
-            // `--entry` reaches the first task only: the configuration is where this
-            // task's entry routine is named.
-            (Err(LoadError::NoEntry(_)), Some(configured), Some(config)) if idx > 0 => {
-                return single::report_system_errors(&table, &[system::entry_finding(configured, config)]);
+            // Not started for want of its configured entry: `rapid check`'s finding, at
+            // the configuration (`--entry` replaces the first task's).
+            (Err(LoadError::NoEntry(_)), Some(declared), Some(config)) if !entry_given => {
+                return single::report_system_errors(&table, &[system::entry_finding(declared, config)]);
             }
             (Err(err), _, _) => {
                 if !alone {
@@ -116,7 +120,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
                 return single::report_load_error(err, &task.inputs.modules);
             }
         };
-        facts.push(program.analysis.as_deref().map(system::facts).unwrap_or_default());
+        facts.push((program.analysis.as_deref().map(system::facts).unwrap_or_default(), entry_given));
         // The checked program is not needed to run, and the process ends with the run:
         // its memory goes back to the system then, without the time freeing it would take.
         std::mem::forget(program.analysis.take());
@@ -137,7 +141,12 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         .iter()
         .zip(&offsets)
         .zip(&facts)
-        .map(|((task, &file_offset), facts)| TaskProgram { name: &task.spec.name, file_offset, facts })
+        .map(|((task, &file_offset), (facts, entry_given))| TaskProgram {
+            name: &task.spec.name,
+            file_offset,
+            facts,
+            entry_given: *entry_given,
+        })
         .collect();
     let found = sys.as_ref().map(|sys| system::findings(sys, config, &programs)).unwrap_or_default();
     if !found.is_empty() {

@@ -1,6 +1,7 @@
 //! Findings about a system of tasks as a whole, which no one task's check can see:
 //! a global persistent declared differently in two tasks (E0703), an event routine a
-//! task it runs in lacks (E0704), a task's entry routine the task lacks (E0705).
+//! task it runs in lacks (E0704), a task's entry routine the task lacks (E0705; the
+//! first task's too, unless `rapid run --entry` gives it another).
 //!
 //! `rapid check` reports them with the other diagnostics; `rapid run` refuses to start
 //! a system with any of them and shows the same diagnostics, so both name one place.
@@ -46,6 +47,9 @@ pub(crate) struct TaskProgram<'a> {
     /// Where the task's modules start in the table the diagnostics index.
     pub(crate) file_offset: usize,
     pub(crate) facts: &'a TaskFacts,
+    /// The command line gave the task its entry routine (`rapid run --entry`, the first
+    /// task's): the configured one is not looked for.
+    pub(crate) entry_given: bool,
 }
 
 /// Where the system's description is: its index in the diagnostics' table and its text
@@ -115,11 +119,12 @@ pub(crate) fn findings(sys: &Sys, config: Option<ConfigFile<'_>>, tasks: &[TaskP
         .collect();
     let mut found = Vec::new();
     if let Some(config) = config {
-        // The first task's entry may be given on the command line (`rapid run --entry`),
-        // which says so itself when it is missing.
-        let others = ordered.iter().filter(|(idx, _, _)| *idx > 0);
+        // Every task the configuration names, the first too: without its entry routine
+        // it cannot start, which the controller shows at its configuration. Only an
+        // entry given on the command line (`rapid run --entry`) replaces it.
+        let configured = ordered.iter().filter(|(_, _, program)| !program.entry_given);
         let without_entry =
-            others.filter(|(_, task, program)| !program.facts.entries.contains(&task.entry.to_lowercase()));
+            configured.filter(|(_, task, program)| !program.facts.entries.contains(&task.entry.to_lowercase()));
         found.extend(without_entry.map(|(_, task, _)| entry_finding(task, config)));
         // Every task given, also when SYS.cfg configures none (the hooks then run in T_ROB1).
         for program in tasks {

@@ -315,6 +315,17 @@ fn folder_modules(task: &Path) -> Vec<PathBuf> {
     modules
 }
 
+/// Why task `task`, which SYS.cfg configures, has no program: no task folder (or an
+/// empty one) and no module of HOME loaded into it.
+pub(super) fn no_program(task: &TaskFolder, has_folder: bool) -> String {
+    let folder = task.folder.display();
+    let why = match has_folder {
+        true => format!("its task folder `{folder}` holds no modules in PROGMOD or SYSMOD"),
+        false => format!("it has no task folder `{folder}`"),
+    };
+    format!("task {} has no program: {why}, and SYS.cfg loads no module of HOME into it (CAB_TASK_MODULES)", task.name)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -125,8 +125,11 @@ fn a_single_tasks_missing_event_routine_is_refused_before_the_program_runs() {
 fn an_entry_routine_a_later_task_lacks_is_reported_at_its_configuration() {
     // T_B's -Entry names a LOCAL procedure (not found among the task's global names, as
     // `rapid run` looks; line 7, column 41); T_C configures no entry and has no main
-    // (line 9, from its -Name at column 7). T_ROB1's -Entry is missing too, but the
-    // first task's entry is `rapid run --entry`'s to give: not reported.
+    // (line 9, from its -Name at column 7). T_ROB1's -Entry is missing too (line 5,
+    // column 44): reported as well. It was not, the first task's entry being `rapid run
+    // --entry`'s to give; issue 20 decided that check and run agree on what keeps a
+    // system from starting (a public backup's first task has no `main`), so `run`
+    // without `--entry` refuses with this same finding.
     let dir = scratch("entry");
     let cell = "MODULE Cell\n  PROC main()\n    TPWrite \"cell\";\n  ENDPROC\nENDMODULE\n";
     let feeder = "MODULE Feeder\n  LOCAL PROC start_b()\n    TPWrite \"feeder\";\n  ENDPROC\nENDMODULE\n";
@@ -139,12 +142,16 @@ fn an_entry_routine_a_later_task_lacks_is_reported_at_its_configuration() {
     backup(&dir, &tasks, "");
     assert_cmd_snapshot!(rapid_cmd(&dir, &["check", "sys"]));
 
-    // The first task's hint is `--entry`, which reaches it.
+    // Without `--entry`, T_ROB1 is the first that cannot start: at its -Entry.
     let run = rapid_in(&dir, &["run", "sys"]);
-    assert_eq!(run.status.code(), Some(2));
+    assert_eq!(run.status.code(), Some(1));
+    assert_eq!(text(&run.stdout), "");
     assert_eq!(
         text(&run.stderr),
-        "error: task T_ROB1 cannot start:\nerror: no procedure `NoSuch` without parameters to start (use --entry NAME)\n"
+        "error[E0705]: task T_ROB1 has no procedure `NoSuch` to start: its entry routine must be a global procedure \
+         of the task\n --> sys/SYSPAR/SYS.cfg:5:44\n  |\n5 |       -Name \"T_ROB1\" -Type \"NORMAL\" -Entry \
+         \"NoSuch\"\n  |                                            ^^^^^^^^\n\nfound 1 error and 0 warnings in 4 \
+         files\nthe system has errors; it was not run\n"
     );
     // With it given, T_B is the first that cannot start: at its -Entry, not `--entry`.
     let run = rapid_in(&dir, &["run", "--entry", "main", "sys"]);
@@ -181,4 +188,36 @@ fn a_manifest_tasks_missing_entry_is_reported_at_its_entry_key() {
     let run = rapid_in(&dir, &["run", "rapid.toml"]);
     assert_eq!(run.status.code(), Some(1));
     assert_eq!(text(&run.stderr), format!("{expected}the system has errors; it was not run\n"));
+}
+
+#[test]
+fn the_first_tasks_missing_entry_is_reported_and_refused_alike() {
+    // One task configured by SYS.cfg (line 5, -Name from column 7), without `main`:
+    // `rapid run` cannot start it, so `rapid check` says so at its configuration
+    // (issue 20: check and run agree), and `run` refuses with the same finding. An
+    // entry given on the command line replaces the configured one.
+    let dir = scratch("first_entry");
+    let cell = "MODULE Cell\n  PROC start()\n    TPWrite \"started\";\n  ENDPROC\nENDMODULE\n";
+    backup(&dir, &[("T_ROB1", "-Type \"NORMAL\" -MotionTask", cell)], "");
+    let check = rapid_in(&dir, &["check", "sys"]);
+    assert_eq!(check.status.code(), Some(1));
+    assert_eq!(
+        text(&check.stdout),
+        "error[E0705]: task T_ROB1 has no procedure `main` to start: no entry routine is configured, so it starts \
+         in `main`\n --> sys/SYSPAR/SYS.cfg:5:7\n  |\n5 |       -Name \"T_ROB1\" -Type \"NORMAL\" -MotionTask\n  |       \
+         ^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^\n\nfound 1 error and 0 warnings in 2 files\n"
+    );
+    run_refuses_as_check_reports(&dir, &["run", "sys"]);
+    let run = rapid_in(&dir, &["run", "--entry", "start", "sys"]);
+    assert_eq!(run.status.code(), Some(0), "{}", text(&run.stderr));
+    assert_eq!(text(&run.stdout), "started\n");
+
+    // The same module alone, with no configuration: nothing names an entry, so check
+    // finds nothing and run asks for `--entry` as before.
+    fs::write(dir.join("Cell.mod"), cell).expect("module");
+    let check = rapid_in(&dir, &["check", "Cell.mod"]);
+    assert_eq!((check.status.code(), text(&check.stdout)), (Some(0), "checked 1 file: no problems found\n".to_owned()));
+    let run = rapid_in(&dir, &["run", "Cell.mod"]);
+    assert_eq!(run.status.code(), Some(2));
+    assert!(text(&run.stderr).contains("no procedure `main` without parameters to start (use --entry NAME)"));
 }

@@ -126,6 +126,47 @@ fn a_backup_without_its_task_folder_runs_what_sys_cfg_gives_the_task() {
 }
 
 #[test]
+fn a_configured_task_without_a_program_is_a_finding_at_its_cab_tasks_line() {
+    // SYS.cfg (T_ROB1 at line 5, T_AUX at 7) loads HOME:/main.mod into T_ROB1 only; the
+    // backup has no task folders. T_AUX has neither a folder nor a module of HOME: run
+    // could not start it, so check and run both report it at line 7 (exit 1), as a
+    // finding, not a tool failure.
+    let dir = scratch("task_without_program");
+    let sys = format!(
+        "{SYS_T_ROB1}\n      -Name \"T_AUX\" -Type \"NORMAL\"\n#\nCAB_TASK_MODULES:\n\n      \
+         -File \"HOME:/main.mod\" -Task \"T_ROB1\"\n"
+    );
+    let main = "MODULE Main\n  PROC main()\n    TPWrite \"main\";\n  ENDPROC\nENDMODULE\n";
+    write_files(&dir, &[("cell/SYSPAR/SYS.cfg", &sys), ("cell/HOME/main.mod", main)]);
+    let finding = "task T_AUX has no program: it has no task folder `cell/RAPID/TASK2`, and SYS.cfg loads no module \
+                   of HOME into it (CAB_TASK_MODULES)";
+    let check = rapid_in(&dir, &["check", "cell"]);
+    assert_eq!(check.status.code(), Some(1), "{}", text(&check.stderr));
+    let stdout = text(&check.stdout);
+    assert_eq!(locations(&stdout), ["cell/SYSPAR/SYS.cfg:7:1"], "{stdout}");
+    assert!(stdout.contains(finding), "{stdout}");
+    let run = rapid_in(&dir, &["run", "cell"]);
+    assert_eq!(run.status.code(), Some(1), "{}", text(&run.stderr));
+    assert_eq!(text(&run.stdout), "");
+    assert_eq!(locations(&text(&run.stderr)), ["cell/SYSPAR/SYS.cfg:7:1"], "{}", text(&run.stderr));
+    assert!(text(&run.stderr).contains(finding), "{}", text(&run.stderr));
+
+    // The first task the same: its task folder is there but empty (RAPID/TASK1/PROGMOD
+    // holds no module), and T_AUX now gets main.mod. At line 5, for check and run.
+    let sys = sys.replace("-Task \"T_ROB1\"", "-Task \"T_AUX\"");
+    write_files(&dir, &[("cell/SYSPAR/SYS.cfg", &sys), ("cell/RAPID/TASK1/PROGMOD/notes.txt", "none\n")]);
+    let finding = "task T_ROB1 has no program: its task folder `cell/RAPID/TASK1` holds no modules in PROGMOD or \
+                   SYSMOD, and SYS.cfg loads no module of HOME into it (CAB_TASK_MODULES)";
+    for command in ["check", "run"] {
+        let out = rapid_in(&dir, &[command, "cell"]);
+        assert_eq!(out.status.code(), Some(1), "{command}: {}", text(&out.stderr));
+        let report = if command == "run" { text(&out.stderr) } else { text(&out.stdout) };
+        assert_eq!(locations(&report), ["cell/SYSPAR/SYS.cfg:5:1"], "{command}: {report}");
+        assert!(report.contains(finding), "{command}: {report}");
+    }
+}
+
+#[test]
 fn a_rapid_folder_with_progmod_is_the_one_task() {
     // RAPID/PROGMOD straight, no TASKn and no SYSPAR: task T_ROB1, its modules SYSMOD's
     // then PROGMOD's.

@@ -409,13 +409,14 @@ fn a_mech_unit_output_names_a_unit_the_system_has() {
              -Status \"MechUnitNotMoving\" -Signal \"doStill\"{arg}\n"
         )
     };
-    // Without -Arg1 the output shows nothing: a finding at its line (9).
+    // Without -Arg1 the output is accepted (it follows every unit: see
+    // `a_mech_unit_output_without_a_unit_follows_every_robot`). This was a finding;
+    // issue 20 decided otherwise on evidence: RobotWare loads such a line, EIO.cfg
+    // files a controller wrote (in public backups) have it.
     one_task_cell(&dir, module, &eio(""));
     let out = rapid_in(&dir, &["check", "cell"]);
-    assert_eq!(out.status.code(), Some(1));
-    let stdout = text(&out.stdout);
-    assert!(stdout.contains("MechUnitNotMoving needs the mechanical unit as `-Arg1`"), "{stdout}");
-    assert!(stdout.contains("EIO.cfg:9:"), "{stdout}");
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stdout));
+    assert_eq!(text(&out.stdout), "checked 3 files: no problems found\n");
     // A robot the system does not have: nothing runs.
     one_task_cell(&dir, module, &eio(" -Arg1 \"ROB_2\""));
     let out = rapid_in(&dir, &["run", "cell"]);
@@ -423,6 +424,61 @@ fn a_mech_unit_output_names_a_unit_the_system_has() {
     assert_eq!(text(&out.stdout), "");
     let stderr = text(&out.stderr);
     assert!(stderr.contains("names mechanical unit `ROB_2`, which the system does not have"), "{stderr}");
+}
+
+#[test]
+fn a_mech_unit_output_without_a_unit_follows_every_robot() {
+    // Two robots (MultiMove): T_ROB1 moves ROB_1 from the start, T_ROB2 moves ROB_2
+    // from 0.5 s, each the same 2 s joint move, so their moves overlap and ROB_2's
+    // ends last. doStill1 and doStill2 show each robot (-Arg1); doAllStill has no
+    // -Arg1: 1 while neither moves, so it falls when ROB_1 starts and rises only when
+    // ROB_2, the last, stops.
+    // uncertain: RobotWare's meaning of the output without -Arg1 (every unit is ours).
+    let dir = scratch("mech_unit_every_robot");
+    let root = dir.join("cell");
+    let task = |n: u32, wait: &str| {
+        format!(
+            "MODULE Main\n  PROC main()\n{wait}    MoveAbsJ [[30,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]], v100, fine, \
+             tool0;\n    TPWrite \"T_ROB{n} done\";\n  ENDPROC\nENDMODULE\n"
+        )
+    };
+    let sys = "SYS:CFG_1.0:6:0::\n#\nCAB_TASKS:\n\n      \
+               -Name \"T_ROB1\" -Type \"NORMAL\" -UseMechanicalUnitGroup \"rob1\" -MotionTask\n\n      \
+               -Name \"T_ROB2\" -Type \"NORMAL\" -UseMechanicalUnitGroup \"rob2\" -MotionTask\n#\n\
+               MECHANICAL_UNIT_GROUP:\n\n      -Name \"rob1\" -Robot \"ROB_1\" -MechanicalUnit_1 \"ROB_1\"\n\n      \
+               -Name \"rob2\" -Robot \"ROB_2\" -MechanicalUnit_1 \"ROB_2\"\n";
+    let moc = "MOC:CFG_1.0:6:0::\n#\nROBOT:\n\n      -name \"ROB_1\" -use_robot_type \"ROB1_120_0.58_3\"\n\n      \
+               -name \"ROB_2\" -use_robot_type \"ROB1_120_0.58_3\" -base_frame_pos_x 2\n";
+    let eio = "EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n\n      -Name \"doAllStill\" -SignalType \"DO\"\n\n      \
+               -Name \"doStill1\" -SignalType \"DO\"\n\n      -Name \"doStill2\" -SignalType \"DO\"\n#\n\
+               SYSSIG_OUT:\n\n      -Status \"MechUnitNotMoving\" -Signal \"doAllStill\"\n\n      \
+               -Status \"MechUnitNotMoving\" -Signal \"doStill1\" -Arg1 \"ROB_1\"\n\n      \
+               -Status \"MechUnitNotMoving\" -Signal \"doStill2\" -Arg1 \"ROB_2\"\n";
+    for (path, content) in [
+        ("RAPID/TASK1/PROGMOD/Main.mod", task(1, "")),
+        ("RAPID/TASK2/PROGMOD/Main.mod", task(2, "    WaitTime 0.5;\n")),
+        ("SYSPAR/SYS.cfg", sys.to_owned()),
+        ("SYSPAR/MOC.cfg", moc.to_owned()),
+        ("SYSPAR/EIO.cfg", eio.to_owned()),
+    ] {
+        let path = root.join(path);
+        fs::create_dir_all(path.parent().expect("parent")).expect("folder");
+        fs::write(path, content).expect("write");
+    }
+    let check = rapid_in(&dir, &["check", "cell"]);
+    assert_eq!(check.status.code(), Some(0), "{}", text(&check.stdout));
+    let out = rapid_in(&dir, &["run", "--quiet", "--io-log", "io.csv", "cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let log = fs::read_to_string(dir.join("io.csv")).expect("io log");
+    let (one, two, all) = (changes(&log, "doStill1"), changes(&log, "doStill2"), changes(&log, "doAllStill"));
+    // Each robot: still at power on, moving, still.
+    let values = |c: &[(&str, &str)]| c.iter().map(|c| c.1).collect::<Vec<&str>>().join(" ");
+    assert_eq!((values(&one), values(&two)), ("1 0 1".to_owned(), "1 0 1".to_owned()), "{log}");
+    let at = |c: &[(&str, &str)], i: usize| c[i].0.parse::<f64>().expect("time");
+    // The moves overlap: ROB_2 starts before ROB_1 stops, and stops after it.
+    assert!(at(&two, 1) < at(&one, 2) && at(&one, 2) < at(&two, 2), "{log}");
+    // Every robot: falls with ROB_1's start, rises with ROB_2's stop, once.
+    assert_eq!(all, [("0", "1"), (one[1].0, "0"), (two[2].0, "1")], "{log}");
 }
 
 #[test]

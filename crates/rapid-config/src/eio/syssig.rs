@@ -112,9 +112,11 @@ pub enum SysStatus {
     EmStop,
     /// Simulated mode (the Sim Mode input, not simulated): 0.
     SimMode,
-    /// 1 while the mechanical unit `-Arg1` stands still.
+    /// 1 while the mechanical unit `-Arg1` stands still (without `-Arg1`: while no
+    /// mechanical unit moves).
     MechUnitNotMoving,
-    /// 1 while the mechanical unit `-Arg1` is active.
+    /// 1 while the mechanical unit `-Arg1` is active (without `-Arg1`: while every one
+    /// is).
     MechUnitActive,
     /// A standard status `rapid run` does not simulate (its configuration spelling):
     /// accepted with a warning, the controller never sets the output.
@@ -178,8 +180,12 @@ pub struct SysOutput {
     pub status: SysStatus,
     /// `-Arg2`: the task (TaskExecuting, Error).
     pub task: Option<String>,
-    /// `-Arg1`: the mechanical unit (MechUnitNotMoving, MechUnitActive).
-    // uncertain: the argument that names the unit, as we remember the manual.
+    /// `-Arg1`: the mechanical unit (MechUnitNotMoving, MechUnitActive). None: every
+    /// mechanical unit of the system, so MechUnitNotMoving is 1 while none of them
+    /// moves and MechUnitActive while all of them are active.
+    // uncertain: the argument that names the unit, as we remember the manual; and
+    // what RobotWare shows when it is left out (controller-written EIO.cfg files leave
+    // it out, the manual's default is not public to us): every unit is our reading.
     pub unit: Option<String>,
     pub line: u32,
 }
@@ -281,12 +287,10 @@ pub(super) fn read(file: &CfgFile, eio: &mut Eio) {
             push(&mut errors, inst, None, message);
             continue;
         }
+        // MechUnitNotMoving and MechUnitActive without `-Arg1` are accepted: RobotWare
+        // loads such lines (EIO.cfg files controllers wrote have them), and the output
+        // then follows every mechanical unit of the system (SysOutput::unit).
         let unit = inst.value("Arg1").map(str::to_owned);
-        if matches!(status, SysStatus::MechUnitNotMoving | SysStatus::MechUnitActive) && unit.is_none() {
-            let message = format!("system output `{signal}`: {text} needs the mechanical unit as `-Arg1`");
-            push(&mut errors, inst, None, message);
-            continue;
-        }
         // One output shows one status: a second would fight the first.
         if eio.sys_outputs.iter().any(|o| o.signal.eq_ignore_ascii_case(&signal)) {
             let message = format!("signal `{signal}` is a system output twice");
@@ -429,6 +433,32 @@ SYSSIG_OUT:
         assert!(eio.errors[1].message.contains("a DO signal; it must be a DI signal"));
         assert!(eio.errors[3].message.contains("a system input twice"));
         assert_eq!(eio.sys_inputs.len(), 1);
+    }
+
+    #[test]
+    fn mech_unit_outputs_without_a_unit_are_read_and_task_executing_needs_its_task() {
+        // MechUnitNotMoving and MechUnitActive without -Arg1 (as controllers write
+        // them) are read for every unit; TaskExecuting without -Arg2 watches nothing
+        // and stays a finding (line 19).
+        let text = format!(
+            "{SIGNALS}#
+SYSSIG_OUT:
+
+      -Status \"MechUnitNotMoving\" -Signal \"doCycleOn\"
+
+      -Status \"MechUnitActive\" -Signal \"doExec\" -Arg1 \"ROB_1\"
+
+      -Status \"TaskExecuting\" -Signal \"doCycleOn\"
+"
+        );
+        let eio = read(&crate::parse(&text));
+        let outputs: Vec<(SysStatus, Option<&str>)> =
+            eio.sys_outputs.iter().map(|o| (o.status, o.unit.as_deref())).collect();
+        assert_eq!(outputs, [(SysStatus::MechUnitNotMoving, None), (SysStatus::MechUnitActive, Some("ROB_1"))]);
+        assert!(eio.warnings.is_empty(), "{:?}", eio.warnings);
+        let refused: Vec<u32> = eio.errors.iter().map(|e| e.line).collect();
+        assert_eq!(refused, [19], "{:?}", eio.errors);
+        assert!(eio.errors[0].message.contains("TaskExecuting needs the task as `-Arg2`"), "{:?}", eio.errors);
     }
 
     #[test]
