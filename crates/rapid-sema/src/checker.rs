@@ -5,7 +5,7 @@ use rapid_syntax::ast::{Arena, ExprId, ExprKind};
 use rapid_syntax::{Span, Symbol};
 
 use crate::body::RoutineCtx;
-use crate::codes::Code;
+use crate::codes::{Code, Severity};
 use crate::diagnostic::{Diagnostic, SourceInput};
 use crate::symbols::{DataInfo, Def, RoutineInfo, Scopes};
 use crate::types::{CoreTypes, TypeId, Types};
@@ -41,6 +41,10 @@ pub(crate) struct Checker<'a> {
     /// Names of options the system lacks, opaque option types, encrypted modules.
     pub(crate) unknowns: crate::options::Unknowns,
     diags_in_file: usize,
+    /// Whether an error has been reported in the current file (the cap's severity).
+    errors_in_file: bool,
+    /// Whether the cap was told as an error (E0111) in the current file.
+    cap_error_told: bool,
     /// `--virtual-io`: a name no declaration defines, where a signal is wanted,
     /// becomes configured signal data of that type ([`crate::Options::virtual_signals`]).
     pub(crate) virtual_signals: bool,
@@ -79,6 +83,8 @@ impl<'a> Checker<'a> {
             filled_scratch: Vec::new(),
             unknowns: Default::default(),
             diags_in_file: 0,
+            errors_in_file: false,
+            cap_error_told: false,
             virtual_signals: false,
             virtual_found: Vec::new(),
             virtual_pending: Vec::new(),
@@ -89,6 +95,8 @@ impl<'a> Checker<'a> {
     pub(crate) fn enter(&mut self, file: usize, module: usize) {
         if file != self.file {
             self.diags_in_file = 0;
+            self.errors_in_file = false;
+            self.cap_error_told = false;
         }
         self.file = file;
         self.module = module;
@@ -101,23 +109,35 @@ impl<'a> Checker<'a> {
 
     pub(crate) fn diag(&mut self, code: Code, span: Span, message: String) {
         self.diags_in_file += 1;
-        if self.diags_in_file > MAX_DIAGNOSTICS_PER_FILE {
-            return;
-        }
-        if self.diags_in_file == MAX_DIAGNOSTICS_PER_FILE {
-            let message = format!("{MAX_DIAGNOSTICS_PER_FILE} diagnostics in this file; reporting stopped here");
+        let error = code.severity() == Severity::Error;
+        self.errors_in_file |= error;
+        if self.diags_in_file < MAX_DIAGNOSTICS_PER_FILE {
+            self.diags.push(Diagnostic::new(self.file, code, span, message));
+        } else if self.errors_in_file && !self.cap_error_told {
+            // The cap is an error only when an error is among what it holds back or
+            // shows: a file of many warnings must not fail the check for their number.
+            self.cap_error_told = true;
+            let message = match self.diags_in_file {
+                MAX_DIAGNOSTICS_PER_FILE => {
+                    format!("{MAX_DIAGNOSTICS_PER_FILE} diagnostics in this file; reporting stopped here")
+                }
+                _ => format!("an error beyond the first {MAX_DIAGNOSTICS_PER_FILE} diagnostics of this file"),
+            };
             self.diags.push(Diagnostic::new(self.file, Code::TooManyErrors, span, message));
-            return;
+        } else if self.diags_in_file == MAX_DIAGNOSTICS_PER_FILE {
+            let message = format!("{MAX_DIAGNOSTICS_PER_FILE} warnings in this file; reporting stopped here");
+            self.diags.push(Diagnostic::new(self.file, Code::TooManyWarnings, span, message));
         }
-        self.diags.push(Diagnostic::new(self.file, code, span, message));
     }
 
     /// Runs `f` and drops the diagnostics it reports (for work done twice).
     pub(crate) fn with_diagnostics_muted<T>(&mut self, f: impl FnOnce(&mut Self) -> T) -> T {
         let (n_diags, n_in_file) = (self.diags.len(), self.diags_in_file);
+        let (errors, told) = (self.errors_in_file, self.cap_error_told);
         let res = f(self);
         self.diags.truncate(n_diags);
         self.diags_in_file = n_in_file;
+        (self.errors_in_file, self.cap_error_told) = (errors, told);
         res
     }
 

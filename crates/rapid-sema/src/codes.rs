@@ -58,6 +58,7 @@ diagnostic_codes! {
     "E0109" Error   EncryptedModule:           "an ABB-encrypted module, which cannot be read";
     "E0110" Error   UnterminatedHeader:        "a %%% file header without its closing %%%";
     "E0111" Error   TooManyErrors:             "so many errors that the file is probably not RAPID; reporting stopped";
+    "W0112" Warning TooManyWarnings:           "so many warnings (and no error) in a file that reporting stopped";
     "E0120" Error   UnexpectedToken:           "a token the grammar does not allow here";
     "E0121" Error   UnclosedBlock:             "a MODULE, routine, RECORD, IF, FOR, WHILE or TEST without its END keyword";
     "E0122" Error   NestingTooDeep:            "expressions or statements nested too deeply to process";

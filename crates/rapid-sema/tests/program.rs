@@ -219,3 +219,51 @@ fn names_of_options_we_do_not_provide_say_which_option() {
         ]
     );
 }
+
+/// A module whose `main` calls `n` procedures defined nowhere (W0202 each), then
+/// `tail` (a statement of its own).
+fn many_warnings(n: usize, tail: &str) -> String {
+    let calls: String = (0..n).map(|i| format!("    Missing{i};\n")).collect();
+    format!("MODULE m\n  PROC main()\n{calls}{tail}  ENDPROC\nENDMODULE\n")
+}
+
+fn count(found: &[(String, &'static str, u32)], code: &str) -> usize {
+    found.iter().filter(|d| d.1 == code).count()
+}
+
+#[test]
+fn a_file_of_many_warnings_stops_reporting_with_a_warning() {
+    // 600 W0202: the first 499 are shown, the 500th place says reporting stopped, as
+    // a warning (W0112) — no error is among them, so the file does not fail the check.
+    let text = many_warnings(600, "");
+    let found = codes(&[("m.mod", &text)]);
+    assert_eq!(count(&found, "W0202"), 499);
+    assert_eq!(count(&found, "W0112"), 1);
+    assert_eq!(found.len(), 500, "{:?}", &found[495..]);
+    assert!(found.iter().all(|d| d.1.starts_with('W')));
+}
+
+#[test]
+fn an_error_held_back_by_the_cap_is_still_an_error() {
+    // 600 warnings, then an undefined variable (E0201) past the cap: the error itself is
+    // not shown, but E0111 says one was held back, so the check fails as it must.
+    let text = many_warnings(600, "    undefined_x := 1;\n");
+    let found = codes(&[("m.mod", &text)]);
+    assert_eq!(count(&found, "W0202"), 499);
+    assert_eq!(count(&found, "W0112"), 1);
+    assert_eq!(count(&found, "E0111"), 1);
+    assert_eq!(count(&found, "E0201"), 0);
+    assert_eq!(found.last().map(|d| d.1), Some("E0111"));
+}
+
+#[test]
+fn a_file_with_an_error_among_many_diagnostics_stops_with_an_error() {
+    // An error first, then 600 warnings: the cap at the 500th place is E0111.
+    let text = many_warnings(600, "").replace("  PROC main()\n", "  PROC main()\n    undefined_x := 1;\n");
+    let found = codes(&[("m.mod", &text)]);
+    assert_eq!(count(&found, "E0201"), 1);
+    assert_eq!(count(&found, "W0202"), 498);
+    assert_eq!(count(&found, "E0111"), 1);
+    assert_eq!(count(&found, "W0112"), 0);
+    assert_eq!(found.len(), 500);
+}
