@@ -205,6 +205,9 @@ impl FileIndex {
                         }
                         let mut loops = Vec::new();
                         for_vars(&body.arena, &body.stmts, &mut loops);
+                        for handler in [&body.backward, &body.error, &body.undo].into_iter().flatten() {
+                            for_vars(&body.arena, &handler.stmts, &mut loops);
+                        }
                         for (name, span, scope) in loops {
                             let parts = base.with(Kind::Local, name, span);
                             self.push(text, DeclParts { routine: Some(at), scope: Some(scope), ..parts });
@@ -405,6 +408,23 @@ mod tests {
         assert_eq!(index.decls[5].routine, Some(4));
         assert_eq!(index.decls[2].parent, Some(1));
         assert_eq!(index.decls[6].ty.as_deref(), Some("pt"));
+    }
+
+    #[test]
+    fn a_loop_variable_is_visible_in_its_loop_only() {
+        let text = "MODULE M\n  PROC main()\n    VAR num i;\n    FOR i FROM i TO 2 DO\n      i2 := i;\n    ENDFOR\n    i := 0;\n  ERROR\n    FOR i FROM 1 TO 2 DO\n      i3 := i;\n    ENDFOR\n  ENDPROC\nENDMODULE\n";
+        let index = FileIndex::build(text);
+        let keys: Vec<(&str, bool)> = index.decls.iter().map(|d| (d.name.as_str(), d.scope.is_some())).collect();
+        // main's data `i`, then the body's loop variable and the ERROR handler's.
+        assert_eq!(keys, [("M", false), ("main", false), ("i", false), ("i", true), ("i", true)]);
+        let at = |needle: &str, skip: usize| (text.find(needle).unwrap() + skip) as u32;
+        // The loop's own name, its body, and after it: main's `i` again. The FROM value
+        // is read before the loop variable exists.
+        assert_eq!(index.local_at(1, at("FOR i", 4), "i"), Some(3));
+        assert_eq!(index.local_at(1, at("FROM i", 5), "i"), Some(2));
+        assert_eq!(index.local_at(1, at("i2 := i", 6), "i"), Some(3));
+        assert_eq!(index.local_at(1, at("    i := 0", 4), "i"), Some(2));
+        assert_eq!(index.local_at(1, at("i3 := i", 6), "i"), Some(4));
     }
 
     #[test]
