@@ -37,14 +37,14 @@ const ALLOWED: &[(&str, &[&str])] = &[
     ("rapid-config", &["rapid-limits"]),
     ("rapid-io", &["rapid-limits"]),
     ("rapid-lib", &["rapid-syntax"]),
-    ("rapid-sema", &["rapid-limits", "rapid-syntax", "rapid-lib"]),
+    ("rapid-sema", &["rapid-limits", "rapid-syntax", "rapid-lib", "rapid-config"]),
     ("rapid-fmt", &["rapid-syntax", "rapid-lib"]),
     (
         "rapid-vm",
         &["rapid-limits", "rapid-syntax", "rapid-sema", "rapid-lib", "rapid-config", "rapid-motion", "rapid-io"],
     ),
     ("rapid-controller", &["rapid-syntax", "rapid-vm", "rapid-sema", "rapid-io", "rapid-config", "rapid-motion"]),
-    ("rapid-lsp", &["rapid-syntax", "rapid-sema", "rapid-lib", "rapid-fmt"]),
+    ("rapid-lsp", &["rapid-syntax", "rapid-sema", "rapid-lib", "rapid-fmt", "rapid-config"]),
     ("rapid-serve", &["rapid-controller", "rapid-vm"]),
     ("rapid-dap", &["rapid-controller", "rapid-vm"]),
     (

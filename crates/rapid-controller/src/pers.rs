@@ -184,12 +184,6 @@ fn check_same_shape(entry: &Entry, pers: &SharedPers, task_name: &str) -> Result
     ))
 }
 
-/// A persistent's type with its array sizes, as declared: `num{2,3}`.
-pub fn shape(type_name: &str, dims: [u32; 3]) -> String {
-    let sizes: Vec<String> = dims.iter().take_while(|&&d| d > 0).map(u32::to_string).collect();
-    if sizes.is_empty() {
-        type_name.to_owned()
-    } else {
-        format!("{type_name}{{{}}}", sizes.join(","))
-    }
-}
+/// A persistent's type with its array sizes, as declared: `num{2,3}` (the same words
+/// as `rapid check`'s system finding).
+pub use rapid_sema::system::shape;

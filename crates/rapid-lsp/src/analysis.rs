@@ -1,5 +1,6 @@
 //! Diagnostics: each task checked by `rapid_sema::analyze` exactly as `rapid check`
-//! checks it, the findings turned into LSP diagnostics per document. Checking runs on
+//! checks it, and a system's tasks then as a whole (`rapid_sema::system`), the
+//! findings turned into LSP diagnostics per document. Checking runs on
 //! a worker thread, so the editor's requests never wait for a large file's check;
 //! edits that arrive while a check runs are checked together afterwards.
 
@@ -10,11 +11,13 @@ use crossbeam_channel::Sender;
 use lsp_server::{Message, Notification};
 use lsp_types::notification::{Notification as _, PublishDiagnostics};
 use lsp_types::{Diagnostic, DiagnosticSeverity, NumberOrString, PublishDiagnosticsParams, Uri};
+use rapid_sema::system::{ConfigFile, TaskFacts, TaskProgram};
 use rapid_sema::{Severity, SourceInput};
 use rustc_hash::FxHashMap;
 
 use crate::position::LineMap;
 use crate::workspace::TaskView;
+use crate::System;
 
 /// Diagnostics by document.
 pub(crate) type ByUri = FxHashMap<Uri, Vec<Diagnostic>>;
@@ -26,6 +29,8 @@ pub(crate) struct Job {
     /// The workspace's other files with their URIs, and their findings.
     pub(crate) others: Vec<(Uri, SourceInput)>,
     pub(crate) other_findings: Vec<rapid_sema::Diagnostic>,
+    /// The workspace's system, when it is one: its findings as a whole are made too.
+    pub(crate) system: Option<System>,
     /// The version of each open document, published with its diagnostics.
     pub(crate) versions: FxHashMap<Uri, i32>,
 }
@@ -35,11 +40,16 @@ pub(crate) struct Job {
 /// place is given once.
 pub(crate) fn diagnose(job: &Job) -> ByUri {
     let mut out = ByUri::default();
-    for task in &job.tasks {
+    let mut facts: Vec<(usize, TaskFacts)> = Vec::new();
+    for (at, task) in job.tasks.iter().enumerate() {
         for u in &task.uris {
             out.entry(u.clone()).or_default();
         }
         let analysis = rapid_sema::analyze(&task.files, &task.options);
+        // What the system findings need of a system's task, as `rapid check` takes it.
+        if let (Some(_), Some(_), Some(program)) = (&job.system, &task.name, &analysis.program) {
+            facts.push((at, rapid_sema::system::facts(program)));
+        }
         let maps: Vec<LineMap> = task.files.iter().map(|f| LineMap::new(&f.text)).collect();
         for diag in &analysis.diagnostics {
             let file = &task.files[diag.file];
@@ -55,10 +65,35 @@ pub(crate) fn diagnose(job: &Job) -> ByUri {
         let converted = convert(&LineMap::new(&file.text), &file.text, diag);
         push_once(out.entry(u.clone()).or_default(), converted);
     }
+    if let Some(system) = &job.system {
+        system_findings(job, system, &facts, &mut out);
+    }
     for list in out.values_mut() {
         list.sort_by_key(|d| (d.range.start.line, d.range.start.character, d.range.end.line, d.range.end.character));
     }
     out
+}
+
+/// The findings about the system as a whole, on the files they point at: the
+/// configuration's lines (an entry or event routine a task lacks) and modules (a
+/// persistent declared differently in two tasks).
+fn system_findings(job: &Job, system: &System, facts: &[(usize, TaskFacts)], out: &mut ByUri) {
+    // The findings index one table: the other files (the configuration among them),
+    // then each task's modules.
+    let mut table: Vec<(&Uri, &SourceInput)> = job.others.iter().map(|(u, f)| (u, f)).collect();
+    let mut programs: Vec<TaskProgram<'_>> = Vec::with_capacity(facts.len());
+    for (at, task_facts) in facts {
+        let task = &job.tasks[*at];
+        let Some(name) = &task.name else { continue };
+        programs.push(TaskProgram { name, file_offset: table.len(), facts: task_facts, entry_given: false });
+        table.extend(task.uris.iter().zip(&task.files));
+    }
+    let config = system.file.and_then(|file| Some(ConfigFile { file, text: &job.others.get(file)?.1.text }));
+    for diag in rapid_sema::system::findings(&system.sys, config, &programs) {
+        let Some(&(u, file)) = table.get(diag.file) else { continue };
+        let converted = convert(&LineMap::new(&file.text), &file.text, &diag);
+        push_once(out.entry(u.clone()).or_default(), converted);
+    }
 }
 
 fn push_once(list: &mut Vec<Diagnostic>, diag: Diagnostic) {

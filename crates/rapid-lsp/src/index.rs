@@ -3,7 +3,7 @@
 //! tokens of the file's current text; nothing here resolves across files (that is
 //! `features::resolve`).
 
-use rapid_syntax::ast::{DataDecl, Item, Module, RoutineKind, Stmt, StmtKind, Storage, TypeDefKind};
+use rapid_syntax::ast::{Arena, DataDecl, Item, Module, RoutineKind, Stmt, StmtKind, Storage, TypeDefKind};
 use rapid_syntax::lexer::Lexer;
 use rapid_syntax::token::{Token, TokenKind};
 use rapid_syntax::{parse, Interner, Span};
@@ -62,6 +62,18 @@ pub(crate) struct Decl {
     pub(crate) parent: Option<usize>,
     /// An optional parameter (`\name`).
     pub(crate) optional: bool,
+    /// Where a FOR loop variable is visible: the loop after its header, to `ENDFOR`
+    /// (the FROM, TO and STEP values are read before the variable exists). `None`
+    /// for every other declaration.
+    pub(crate) scope: Option<Span>,
+}
+
+impl Decl {
+    /// The declaration is visible at `offset` of its routine (a FOR loop variable
+    /// only inside its loop, and at its own name).
+    pub(crate) fn visible_at(&self, offset: u32) -> bool {
+        self.scope.is_none_or(|s| (s.start <= offset && offset <= s.end) || self.name_span.start == offset)
+    }
 }
 
 /// A name written in the file.
@@ -89,6 +101,9 @@ pub(crate) struct FileIndex {
     routines: Vec<(Span, usize)>,
     /// Where each routine's body starts, by declaration index.
     body_starts: Vec<(usize, u32)>,
+    /// Where each record component's name starts, with its declaration index, in
+    /// source order: a component's own name resolves to it.
+    component_names: Vec<(u32, usize)>,
 }
 
 /// Folds a name the way RAPID compares names.
@@ -108,7 +123,22 @@ impl FileIndex {
         index.routines =
             index.decls.iter().enumerate().filter(|(_, d)| d.kind.is_routine()).map(|(at, d)| (d.span, at)).collect();
         index.routines.sort_by_key(|(span, _)| span.start);
+        index.component_names = index
+            .decls
+            .iter()
+            .enumerate()
+            .filter(|(_, d)| d.kind == Kind::Component)
+            .map(|(at, d)| (d.name_span.start, at))
+            .collect();
+        index.component_names.sort_unstable();
         index
+    }
+
+    /// The record component whose declared name is the identifier at `span`.
+    pub(crate) fn component_named_at(&self, span: Span) -> Option<usize> {
+        let at = self.component_names.partition_point(|&(start, _)| start < span.start);
+        let &(start, decl) = self.component_names.get(at)?;
+        (start == span.start && self.decls[decl].name_span == span).then_some(decl)
     }
 
     fn push(&mut self, text: &str, decl: DeclParts) -> usize {
@@ -125,6 +155,7 @@ impl FileIndex {
             ty: decl.ty.map(|span| span.text(text).to_owned()),
             parent: decl.parent,
             optional: decl.optional,
+            scope: decl.scope,
         });
         self.decls.len() - 1
     }
@@ -173,9 +204,13 @@ impl FileIndex {
                             self.push(text, data_parts(&base, decl, Some(at)));
                         }
                         let mut loops = Vec::new();
-                        for_vars(&body.stmts, &mut loops);
-                        for (name, span) in loops {
-                            self.push(text, DeclParts { routine: Some(at), ..base.with(Kind::Local, name, span) });
+                        for_vars(&body.arena, &body.stmts, &mut loops);
+                        for handler in [&body.backward, &body.error, &body.undo].into_iter().flatten() {
+                            for_vars(&body.arena, &handler.stmts, &mut loops);
+                        }
+                        for (name, span, scope) in loops {
+                            let parts = base.with(Kind::Local, name, span);
+                            self.push(text, DeclParts { routine: Some(at), scope: Some(scope), ..parts });
                         }
                     }
                 }
@@ -226,9 +261,33 @@ impl FileIndex {
     }
 
     /// The parameters and data of routine `routine` (declarations follow their
-    /// routine's, in one run).
+    /// routine's, in one run), FOR loop variables of every loop included.
     pub(crate) fn locals(&self, routine: usize) -> impl Iterator<Item = (usize, &Decl)> {
         self.decls.iter().enumerate().skip(routine + 1).take_while(move |(_, d)| d.routine == Some(routine))
+    }
+
+    /// The local declaration of routine `routine` the folded name `key` written at
+    /// `offset` denotes, as the checker resolves it: the loop variable of the
+    /// innermost FOR around `offset`, then the routine's data and parameters.
+    pub(crate) fn local_at(&self, routine: usize, offset: u32, key: &str) -> Option<usize> {
+        let mut loop_var: Option<(usize, u32)> = None;
+        let mut data = None;
+        for (at, decl) in self.locals(routine).filter(|(_, d)| d.key == key) {
+            if decl.name_span.start == offset {
+                return Some(at);
+            }
+            match decl.scope {
+                // Loops nest: the innermost holding `offset` starts last.
+                Some(scope) if decl.visible_at(offset) => {
+                    if loop_var.is_none_or(|(_, start)| scope.start > start) {
+                        loop_var = Some((at, scope.start));
+                    }
+                }
+                Some(_) => {}
+                None => data = data.or(Some(at)),
+            }
+        }
+        loop_var.map(|(at, _)| at).or(data)
     }
 
     /// The module holding `offset`.
@@ -252,6 +311,7 @@ struct DeclParts {
     ty: Option<Span>,
     parent: Option<usize>,
     optional: bool,
+    scope: Option<Span>,
 }
 
 impl DeclParts {
@@ -266,6 +326,7 @@ impl DeclParts {
             ty: None,
             parent: None,
             optional: false,
+            scope: None,
         }
     }
 
@@ -286,27 +347,34 @@ fn data_parts(base: &DeclParts, decl: &DataDecl, routine: Option<usize>) -> Decl
     DeclParts { routine, local, ty: Some(decl.ty.span), ..base.with(kind, decl.name.span, decl.span) }
 }
 
-/// The FOR loop variables of a statement list, nested ones included.
-fn for_vars(stmts: &[Stmt], out: &mut Vec<(Span, Span)>) {
+/// The FOR loop variables of a statement list, nested ones included: each name, its
+/// FOR statement, and where it is visible (after the header's last value to ENDFOR).
+fn for_vars(arena: &Arena, stmts: &[Stmt], out: &mut Vec<(Span, Span, Span)>) {
     for stmt in stmts {
         match &stmt.kind {
-            StmtKind::For { var, body, .. } => {
-                out.push((var.span, stmt.span));
-                for_vars(body, out);
+            StmtKind::For { var, from, to, step, body } => {
+                let values = [Some(*from), Some(*to), *step];
+                let header_end = values.iter().flatten().map(|&e| arena.expr(e).span.end).max().unwrap_or(var.span.end);
+                out.push((
+                    var.span,
+                    stmt.span,
+                    Span::new(header_end.max(var.span.end) as usize, stmt.span.end as usize),
+                ));
+                for_vars(arena, body, out);
             }
             StmtKind::If { then, elifs, els, .. } => {
-                for_vars(then, out);
+                for_vars(arena, then, out);
                 for elif in elifs {
-                    for_vars(&elif.body, out);
+                    for_vars(arena, &elif.body, out);
                 }
-                for_vars(els.as_deref().unwrap_or(&[]), out);
+                for_vars(arena, els.as_deref().unwrap_or(&[]), out);
             }
-            StmtKind::While { body, .. } => for_vars(body, out),
+            StmtKind::While { body, .. } => for_vars(arena, body, out),
             StmtKind::Test { cases, default, .. } => {
                 for case in cases {
-                    for_vars(&case.body, out);
+                    for_vars(arena, &case.body, out);
                 }
-                for_vars(default.as_deref().unwrap_or(&[]), out);
+                for_vars(arena, default.as_deref().unwrap_or(&[]), out);
             }
             _ => {}
         }
@@ -340,6 +408,23 @@ mod tests {
         assert_eq!(index.decls[5].routine, Some(4));
         assert_eq!(index.decls[2].parent, Some(1));
         assert_eq!(index.decls[6].ty.as_deref(), Some("pt"));
+    }
+
+    #[test]
+    fn a_loop_variable_is_visible_in_its_loop_only() {
+        let text = "MODULE M\n  PROC main()\n    VAR num i;\n    FOR i FROM i TO 2 DO\n      i2 := i;\n    ENDFOR\n    i := 0;\n  ERROR\n    FOR i FROM 1 TO 2 DO\n      i3 := i;\n    ENDFOR\n  ENDPROC\nENDMODULE\n";
+        let index = FileIndex::build(text);
+        let keys: Vec<(&str, bool)> = index.decls.iter().map(|d| (d.name.as_str(), d.scope.is_some())).collect();
+        // main's data `i`, then the body's loop variable and the ERROR handler's.
+        assert_eq!(keys, [("M", false), ("main", false), ("i", false), ("i", true), ("i", true)]);
+        let at = |needle: &str, skip: usize| (text.find(needle).unwrap() + skip) as u32;
+        // The loop's own name, its body, and after it: main's `i` again. The FROM value
+        // is read before the loop variable exists.
+        assert_eq!(index.local_at(1, at("FOR i", 4), "i"), Some(3));
+        assert_eq!(index.local_at(1, at("FROM i", 5), "i"), Some(2));
+        assert_eq!(index.local_at(1, at("i2 := i", 6), "i"), Some(3));
+        assert_eq!(index.local_at(1, at("    i := 0", 4), "i"), Some(2));
+        assert_eq!(index.local_at(1, at("i3 := i", 6), "i"), Some(4));
     }
 
     #[test]

@@ -47,6 +47,18 @@ pub struct Workspace {
     pub other_files: Vec<SourceInput>,
     /// Findings in `other_files`: `Diagnostic::file` indexes that list.
     pub other_findings: Vec<Diagnostic>,
+    /// The system the tasks make (a backup's SYS.cfg, a manifest), whose findings as a
+    /// whole `rapid check` reports too (`rapid_sema::system`).
+    pub system: Option<System>,
+}
+
+/// A workspace's system description.
+#[derive(Debug, Clone)]
+pub struct System {
+    pub sys: rapid_config::sys::Sys,
+    /// The file `sys` was read from (SYS.cfg or the manifest): an index into
+    /// `Workspace::other_files`.
+    pub file: Option<usize>,
 }
 
 /// Turns the workspace folder into its tasks, as `rapid check FOLDER` would read it.

@@ -152,9 +152,11 @@ impl Server<'_> {
         }
     }
 
-    /// The state to check: every task, or those holding `only`.
+    /// The state to check: every task, or those holding `only`. A system is checked
+    /// whole for any one document: its findings compare the tasks.
     fn job(&self, only: Option<&Uri>) -> Job {
         let loaded = &self.state.loaded;
+        let only = only.filter(|_| loaded.system.is_none());
         let others = match only {
             Some(_) => Vec::new(),
             None => loaded
@@ -170,6 +172,7 @@ impl Server<'_> {
             },
             other_findings: if only.is_some() { Vec::new() } else { loaded.other_findings.clone() },
             others,
+            system: loaded.system.clone(),
             versions: self.state.docs.iter().map(|(u, d)| (u.clone(), d.version)).collect(),
         }
     }

@@ -18,6 +18,8 @@ use crate::{uri, Workspace};
 /// One task as the editor sees it now.
 #[derive(Debug, Clone)]
 pub(crate) struct TaskView {
+    /// The task's name in the workspace's system; `None` for a folder or a loose file.
+    pub(crate) name: Option<String>,
     /// The modules, with open documents' text.
     pub(crate) files: Vec<SourceInput>,
     /// The URI of each of `files` (the editor's own URI for an open document).
@@ -50,6 +52,7 @@ impl State {
         let mut tasks: Vec<TaskView> = Vec::new();
         for task in &self.loaded.tasks {
             let mut view = TaskView {
+                name: task.name.clone(),
                 files: Vec::with_capacity(task.modules.len()),
                 uris: Vec::with_capacity(task.modules.len()),
                 options: task.options.clone(),
@@ -77,6 +80,7 @@ impl State {
             }
             let path = uri::to_path(u).map_or_else(|| u.as_str().to_owned(), |p| p.display().to_string());
             tasks.push(TaskView {
+                name: None,
                 files: vec![SourceInput::from_text(path, doc.text.clone())],
                 uris: vec![u.clone()],
                 options: Options::default(),

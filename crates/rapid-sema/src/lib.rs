@@ -20,6 +20,7 @@ mod expr;
 mod options;
 pub mod symbols;
 mod syntax;
+pub mod system;
 pub mod types;
 
 use std::sync::OnceLock;

@@ -16,10 +16,10 @@ use rapid_syntax::Span;
 use rustc_hash::FxHashMap;
 
 use crate::args::{CheckArgs, Format};
-use crate::commands::system::{self, ConfigFile, TaskFacts, TaskProgram};
 use crate::commands::ExitStatus;
 use crate::inputs;
 use crate::render::{self, Files, Reported, Summary};
+use rapid_sema::system::{self, ConfigFile, TaskFacts, TaskProgram};
 
 pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
     let inputs = inputs::collect(&args.paths)?;

@@ -4,7 +4,7 @@
 
 use std::path::Path;
 
-use rapid_lsp::{Task, Workspace, WorkspaceLoader};
+use rapid_lsp::{System, Task, Workspace, WorkspaceLoader};
 use rapid_sema::Options;
 
 use crate::commands::ExitStatus;
@@ -28,6 +28,8 @@ impl WorkspaceLoader for FolderLoader {
             tasks: vec![task(&first)],
             other_files: first.table().into_iter().cloned().collect(),
             other_findings: first.diagnostics.clone(),
+            // SYS.cfg's index in `table()`, as `rapid check` finds its system findings.
+            system: first.sys.clone().map(|sys| System { sys, file: first.sys_file }),
         };
         // The other tasks of a backup or manifest; their configuration findings are
         // numbered in the first task's files, as `rapid check` reports them.

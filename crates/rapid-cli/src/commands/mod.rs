@@ -10,7 +10,6 @@ mod lsp;
 mod run;
 mod run_system;
 mod serve;
-mod system;
 
 use std::process::ExitCode;
 

@@ -27,9 +27,9 @@ use rapid_vm::{load_with, LoadError};
 
 use super::run::{self as single, has_config_errors, StdoutHost};
 use crate::args::RunArgs;
-use crate::commands::system::{self, ConfigFile, TaskFacts, TaskProgram};
 use crate::commands::ExitStatus;
 use crate::inputs::{self, Inputs};
+use rapid_sema::system::{self, ConfigFile, TaskFacts, TaskProgram};
 
 /// One task's inputs, loaded program and configuration.
 struct LoadedTask {

@@ -192,6 +192,28 @@ fn a_backups_signals_are_declared_and_its_tasks_checked() {
     assert_eq!(same_as_check(dir.path()), 1);
 }
 
+#[test]
+fn a_backups_findings_about_the_system_as_a_whole_are_the_same() {
+    // T_LOGGER (the first task) declares the global persistent `placed` a string, and
+    // T_ROB1 a num: E0703 at T_ROB1's declaration. T_ROB1's configured entry routine
+    // `cell_start` does not exist: E0705 at its `-Entry` in SYS.cfg.
+    let dir = scratch_in("lsp", "backup_system");
+    copy_dir(&repo_root().join("tests/check/backups/palletizer"), dir.path());
+    let logger = dir.join("RAPID/TASK1/PROGMOD/Logger.mod");
+    let text = std::fs::read_to_string(&logger).expect("module");
+    std::fs::write(&logger, text.replacen("MODULE Logger\n", "MODULE Logger\n    PERS string placed := \"\";\n", 1))
+        .expect("write");
+    let sys = dir.join("SYSPAR/SYS.cfg");
+    let text = std::fs::read_to_string(&sys).expect("SYS.cfg");
+    std::fs::write(&sys, text.replacen("-Entry \"cell_main\"", "-Entry \"cell_start\"", 1)).expect("write");
+    assert_eq!(same_as_check(dir.path()), 2);
+    let root = dir.path().canonicalize().expect("root");
+    let found = checked(&root);
+    let places: Vec<(&str, u64, &str)> = found.iter().map(|f| (f.0.as_str(), f.1, f.5.as_str())).collect();
+    assert!(places[0].0.ends_with("MainModule.mod") && places[0].1 == 2 && places[0].2 == "E0703", "{places:?}");
+    assert!(places[1].0.ends_with("SYS.cfg") && places[1].1 == 15 && places[1].2 == "E0705", "{places:?}");
+}
+
 /// Neovim, when it is installed (Debian's `neovim`; `.ci/run` installs it, and under
 /// `CI=true` its absence fails the test).
 fn neovim() -> Option<&'static str> {

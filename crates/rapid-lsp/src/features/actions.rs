@@ -95,7 +95,7 @@ fn inferred_type(ti: &TaskIndex, file: usize, offset: u32) -> Option<String> {
         TokenKind::True | TokenKind::False => Some("bool".into()),
         TokenKind::Ident => match ti.lookup(file, value.span.start, &fold(value.span.text(text)))? {
             Target::User { file, decl } => ti.decl(file, decl).ty.clone(),
-            Target::Signal(_) => None,
+            Target::Signal(_) | Target::BuiltinComponent { .. } => None,
             Target::Builtin(b) => b.ty.clone(),
         },
         _ => None,
@@ -116,7 +116,7 @@ fn nearest(ti: &TaskIndex, file: usize, offset: u32, name: &str, sort: Sort) -> 
     };
     let index = &ti.files[file];
     if let Some(routine) = index.routine_at(offset) {
-        for (_, decl) in index.locals(routine) {
+        for (_, decl) in index.locals(routine).filter(|(_, d)| d.visible_at(offset)) {
             if sort == Sort::Data {
                 consider(&decl.name);
             }

@@ -12,7 +12,7 @@ use rapid_lib::catalogue::EntryKind;
 use rapid_syntax::token::TokenKind;
 
 use super::signature::{call_at, Signature};
-use super::{Target, TaskIndex};
+use super::TaskIndex;
 use crate::builtins::{self, Builtin};
 use crate::index::{fold, Decl, Kind};
 
@@ -71,7 +71,11 @@ fn in_scope(ti: &TaskIndex, file: usize, offset: u32, snippets: bool) -> Vec<Com
         }
     };
     if let Some(routine) = routine {
-        for decl in index.decls.iter().filter(|d| d.routine == Some(routine)) {
+        // A FOR loop variable only inside its loop; an inner loop's before an outer one's.
+        let visible = |d: &&Decl| d.routine == Some(routine) && d.visible_at(offset);
+        let mut locals: Vec<&Decl> = index.decls.iter().filter(visible).collect();
+        locals.sort_by_key(|d| std::cmp::Reverse(d.scope.map(|s| s.start)));
+        for decl in locals {
             add(user_item(ti, file, decl), decl.key.clone(), &mut items);
         }
     }
@@ -167,52 +171,11 @@ fn routine_snippet(item: &mut CompletionItem, sig: &Signature, snippets: bool) {
     item.insert_text_format = Some(InsertTextFormat::SNIPPET);
 }
 
-/// The components of the record the expression before the `.` at token `dot` has.
+/// The components of the record the expression before the `.` at token `dot` has
+/// (`p.trans.`, `arr{2}.`, `Offs(p, 0, 0, 10).`): by the expression's type, not by
+/// the component's name.
 fn components_after(ti: &TaskIndex, file: usize, dot: usize) -> Vec<CompletionItem> {
-    let index = &ti.files[file];
-    let text = ti.text(file);
-    let tokens = &index.tokens;
-    // Walk back over `a{i}.b.` to the chain's names, first one first.
-    let mut names: Vec<(String, u32)> = Vec::new();
-    let mut j = dot;
-    while let Some(mut k) = j.checked_sub(1) {
-        if tokens[k].kind == TokenKind::RBrace {
-            let mut depth = 0;
-            loop {
-                match tokens[k].kind {
-                    TokenKind::RBrace => depth += 1,
-                    TokenKind::LBrace => depth -= 1,
-                    _ => {}
-                }
-                if depth == 0 || k == 0 {
-                    break;
-                }
-                k -= 1;
-            }
-            let Some(before) = k.checked_sub(1) else { break };
-            k = before;
-        }
-        if tokens[k].kind != TokenKind::Ident {
-            break;
-        }
-        names.push((fold(tokens[k].span.text(text)), tokens[k].span.start));
-        if k > 0 && tokens[k - 1].kind == TokenKind::Dot {
-            j = k - 1;
-        } else {
-            break;
-        }
-    }
-    names.reverse();
-    let Some(((first, offset), rest)) = names.split_first() else { return Vec::new() };
-    let mut ty = match ti.lookup(file, *offset, first) {
-        Some(Target::User { file, decl }) => ti.decl(file, decl).ty.clone(),
-        Some(Target::Builtin(b)) if b.kind != EntryKind::Routine => b.ty.clone(),
-        _ => None,
-    };
-    for (name, _) in rest {
-        ty = ty.and_then(|t| components(ti, &t).into_iter().find(|(n, _)| fold(n) == *name).map(|(_, t)| t));
-    }
-    let Some(ty) = ty else { return Vec::new() };
+    let Some(ty) = dot.checked_sub(1).and_then(|last| ti.type_ending_at(file, last, 0)) else { return Vec::new() };
     components(ti, &ty)
         .into_iter()
         .map(|(name, ty)| CompletionItem {
@@ -224,9 +187,10 @@ fn components_after(ti: &TaskIndex, file: usize, dot: usize) -> Vec<CompletionIt
         .collect()
 }
 
-/// The components (name, type) of record type `ty`: a user RECORD or a built-in one.
+/// The components (name, type) of record type `ty`: a user RECORD or a built-in one,
+/// through user ALIASes.
 fn components(ti: &TaskIndex, ty: &str) -> Vec<(String, String)> {
-    let key = fold(ty);
+    let key = ti.unalias(ty);
     if let Some((file, record)) = ti.record(&key) {
         return ti.files[file]
             .decls

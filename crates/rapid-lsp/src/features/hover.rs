@@ -22,6 +22,10 @@ pub(crate) fn hover(ti: &TaskIndex, file: usize, pos: Position) -> Option<Hover>
                 signal.type_name, signal.name
             )
         }
+        Target::BuiltinComponent { record, at } => {
+            let (name, ty) = &record.components[at];
+            format!("```rapid\n{ty} {name}\n```\n\n*Component of {} (built-in record).*", record.name)
+        }
         Target::Builtin(builtin) => {
             format!("```rapid\n{}\n```\n\n{}\n\n*Built-in ({}).*", builtin.signature(), builtin.doc, builtin.chapter)
         }
@@ -48,6 +52,8 @@ fn user(ti: &TaskIndex, file: usize, at: usize) -> String {
     let decl = ti.decl(file, at);
     let text = ti.text(file);
     let shown = match decl.kind {
+        // A FOR loop variable by its loop's header.
+        _ if decl.scope.is_some() => header(text, decl),
         // Data as declared, its initial value included.
         k if k.is_data() || k == Kind::Component || k == Kind::Alias => {
             let full = decl.span.text(text);

@@ -18,7 +18,7 @@ pub(crate) fn target_at(ti: &TaskIndex, file: usize, pos: Position) -> Option<Ta
 pub(crate) fn definition(ti: &TaskIndex, file: usize, pos: Position) -> Option<Location> {
     match target_at(ti, file, pos)? {
         Target::User { file, decl } => Some(ti.location(file, ti.decl(file, decl).name_span)),
-        Target::Signal(_) | Target::Builtin(_) => None,
+        Target::Signal(_) | Target::Builtin(_) | Target::BuiltinComponent { .. } => None,
     }
 }
 

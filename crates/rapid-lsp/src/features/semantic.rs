@@ -92,6 +92,7 @@ pub(crate) fn tokens(ti: &TaskIndex, file: usize) -> SemanticTokens {
                         Some((ty, mods | if declared { DECLARATION } else { 0 }))
                     }
                     Target::Signal(_) => Some((VARIABLE, 0)),
+                    Target::BuiltinComponent { .. } => Some((PROPERTY, DEFAULT_LIBRARY)),
                     Target::Builtin(b) => Some(match b.kind {
                         EntryKind::Routine if b.is_func => (FUNCTION, DEFAULT_LIBRARY),
                         EntryKind::Routine => (METHOD, DEFAULT_LIBRARY),

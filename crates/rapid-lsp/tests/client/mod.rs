@@ -30,7 +30,9 @@ impl Folder {
         let _ = std::fs::remove_dir_all(&root);
         std::fs::create_dir_all(&root).unwrap();
         for (file, text) in files {
-            std::fs::write(root.join(file), text).unwrap();
+            let path = root.join(file);
+            std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+            std::fs::write(path, text).unwrap();
         }
         Folder { root }
     }
@@ -51,7 +53,7 @@ impl Drop for Folder {
     }
 }
 
-fn read_folder(root: &Path) -> Vec<SourceInput> {
+pub(crate) fn read_folder(root: &Path) -> Vec<SourceInput> {
     let mut paths: Vec<PathBuf> = std::fs::read_dir(root)
         .unwrap()
         .map(|e| e.unwrap().path())
@@ -95,9 +97,18 @@ impl Client {
     }
 
     pub(crate) fn start_with(folder: &Folder, capabilities: Value, signals: Vec<(String, String)>) -> Client {
+        Client::start_loader(folder, capabilities, TestLoader { signals })
+    }
+
+    /// Starts the server with its own loader.
+    pub(crate) fn start_loader(
+        folder: &Folder,
+        capabilities: Value,
+        loader: impl WorkspaceLoader + Send + 'static,
+    ) -> Client {
         let (server_end, client_end) = Connection::memory();
         let server = thread::spawn(move || {
-            rapid_lsp::serve(server_end, &TestLoader { signals }).unwrap();
+            rapid_lsp::serve(server_end, &loader).unwrap();
         });
         let mut client = Client {
             conn: client_end,

@@ -7,17 +7,17 @@
 //! a system with any of them and shows the same diagnostics, so both name one place.
 //! Each task's part is taken from its checked program ([`facts`]) and then dropped.
 
+use crate::symbols::{DataKind, DeclOrigin, Def};
+use crate::types::ERROR;
+use crate::{Code, Diagnostic, Program, SourceInput};
 use rapid_config::sys::{Sys, Task};
-use rapid_sema::symbols::{DataKind, DeclOrigin, Def};
-use rapid_sema::types::ERROR;
-use rapid_sema::{Code, Diagnostic, Program, SourceInput};
 use rapid_syntax::ast::RoutineKind;
 use rapid_syntax::Span;
 use rustc_hash::FxHashMap;
 
 /// What the system findings need of one task's checked program.
 #[derive(Debug, Default)]
-pub(crate) struct TaskFacts {
+pub struct TaskFacts {
     /// The lower-case names of the task's procedures, of any scope: an event routine
     /// may be any of them (the interpreter finds a procedure of any scope by name).
     procedures: Vec<String>,
@@ -42,34 +42,34 @@ struct Persistent {
 }
 
 /// One task of the system with its program's facts.
-pub(crate) struct TaskProgram<'a> {
-    pub(crate) name: &'a str,
+pub struct TaskProgram<'a> {
+    pub name: &'a str,
     /// Where the task's modules start in the table the diagnostics index.
-    pub(crate) file_offset: usize,
-    pub(crate) facts: &'a TaskFacts,
+    pub file_offset: usize,
+    pub facts: &'a TaskFacts,
     /// The command line gave the task its entry routine (`rapid run --entry`, the first
     /// task's): the configured one is not looked for.
-    pub(crate) entry_given: bool,
+    pub entry_given: bool,
 }
 
 /// Where the system's description is: its index in the diagnostics' table and its text
 /// (SYS.cfg or the manifest; the spans of [`Sys`] are in it).
 #[derive(Clone, Copy)]
-pub(crate) struct ConfigFile<'a> {
-    pub(crate) file: usize,
-    pub(crate) text: &'a str,
+pub struct ConfigFile<'a> {
+    pub file: usize,
+    pub text: &'a str,
 }
 
 impl<'a> ConfigFile<'a> {
     /// The file `sys` was read from, found in `table`.
-    pub(crate) fn of(sys_file: Option<usize>, table: &[&'a SourceInput]) -> Option<ConfigFile<'a>> {
+    pub fn of(sys_file: Option<usize>, table: &[&'a SourceInput]) -> Option<ConfigFile<'a>> {
         let file = sys_file?;
         Some(ConfigFile { file, text: &table.get(file)?.text })
     }
 }
 
 /// The facts of a task's checked program.
-pub(crate) fn facts(program: &Program) -> TaskFacts {
+pub fn facts(program: &Program) -> TaskFacts {
     let user_procs = program.routines.iter().filter(|r| r.chapter.is_none() && r.kind == RoutineKind::Proc);
     let procedures = user_procs.map(|r| r.display.to_lowercase()).collect();
     let mut entries = Vec::new();
@@ -108,7 +108,7 @@ pub(crate) fn facts(program: &Program) -> TaskFacts {
 
 /// Every finding about the system `sys` of the tasks `tasks` (in any order; a task
 /// without a program, such as one not checked, is left out).
-pub(crate) fn findings(sys: &Sys, config: Option<ConfigFile<'_>>, tasks: &[TaskProgram<'_>]) -> Vec<Diagnostic> {
+pub fn findings(sys: &Sys, config: Option<ConfigFile<'_>>, tasks: &[TaskProgram<'_>]) -> Vec<Diagnostic> {
     // In configuration order: the first task is the one `--entry` reaches, and a
     // persistent is the object of the first task declaring it.
     let ordered: Vec<(usize, &Task, &TaskProgram<'_>)> = sys
@@ -137,7 +137,7 @@ pub(crate) fn findings(sys: &Sys, config: Option<ConfigFile<'_>>, tasks: &[TaskP
 
 /// The task `task` has no procedure to start: found at its entry routine (at the
 /// task's line when the entry is `main` by default).
-pub(crate) fn entry_finding(task: &Task, config: ConfigFile<'_>) -> Diagnostic {
+pub fn entry_finding(task: &Task, config: ConfigFile<'_>) -> Diagnostic {
     let (span, why) = match &task.entry_span {
         Some(span) => (Span::new(span.start, span.end), "its entry routine must be a global procedure of the task"),
         None => (line_span(config.text, task.line), "no entry routine is configured, so it starts in `main`"),
@@ -185,8 +185,8 @@ fn persistent_mismatches(ordered: &[(usize, &Task, &TaskProgram<'_>)]) -> Vec<Di
                 "persistent `{}` is declared `{}` here and `{}` in task {other_task}: global persistents of one name \
                  must have the same type and size in every task",
                 pers.name,
-                rapid_controller::pers::shape(&pers.type_name, pers.dims),
-                rapid_controller::pers::shape(&other.type_name, other.dims)
+                shape(&pers.type_name, pers.dims),
+                shape(&other.type_name, other.dims)
             );
             found.push(Diagnostic::new(program.file_offset + pers.file, Code::SharedPersMismatch, pers.span, message));
         }
@@ -201,4 +201,14 @@ fn line_span(text: &str, line: u32) -> Span {
     let end = text[start..].find(['\r', '\n']).map_or(text.len(), |n| start + n);
     let indent = text[start..end].len() - text[start..end].trim_start().len();
     Span::new(start + indent, end)
+}
+
+/// A persistent's type with its array sizes, as declared: `num{2,3}`.
+pub fn shape(type_name: &str, dims: [u32; 3]) -> String {
+    let sizes: Vec<String> = dims.iter().take_while(|&&d| d > 0).map(u32::to_string).collect();
+    if sizes.is_empty() {
+        type_name.to_owned()
+    } else {
+        format!("{type_name}{{{}}}", sizes.join(","))
+    }
 }
