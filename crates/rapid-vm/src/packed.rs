@@ -217,46 +217,65 @@ pub enum Whole {
     Array,
 }
 
-/// The draft of the value `whole` builds from parts whose drafts are given in order,
-/// as the instruction would build it at run time; `None` when it cannot be packed
-/// (the instruction is kept). An array's elements must all have one shape; an array
-/// of rows becomes one array of up to three dimensions (`compile::flatten_array`).
-pub fn draft_parts(parts: Vec<Draft>, whole: Whole) -> Option<Draft> {
-    let n = u32::try_from(parts.len()).ok()?;
-    let mut draft = Draft::default();
-    match whole {
-        Whole::Record(ty) => {
-            draft.nodes.push(Node::Record { ty, n: u16::try_from(n).ok()? });
-            for part in &parts {
-                draft.nodes.extend_from_slice(&part.nodes);
-            }
-        }
-        Whole::Array => {
-            let first = parts.first()?;
-            if parts.iter().any(|p| p.nodes != first.nodes) {
-                return None;
-            }
-            match first.nodes.first() {
-                // Rows: their elements, one after the other.
-                Some(&Node::Array { dims, n: per_row }) => {
-                    if dims[2] != 0 {
-                        return None;
+/// An aggregate being packed: its parts' shapes and leaves go, in order, into one
+/// draft behind a place for its head (no allocation per part).
+#[derive(Debug)]
+pub struct Builder {
+    draft: Draft,
+    /// Where each part's nodes start in `draft.nodes`.
+    starts: Vec<u32>,
+}
+
+impl Builder {
+    pub fn with_parts(n: usize) -> Builder {
+        // Node 0 is the head's place, written by `finish`.
+        Builder { draft: Draft { nodes: vec![Node::Bool], words: Vec::new() }, starts: Vec::with_capacity(n) }
+    }
+
+    /// The next part is leaf `value`; `false` when it cannot be packed.
+    pub fn leaf(&mut self, pool: &mut Pool, value: &Value) -> bool {
+        self.starts.push(self.draft.nodes.len() as u32);
+        pool.draft_leaf(&mut self.draft, value)
+    }
+
+    /// The next part is packed constant `k`.
+    pub fn entry(&mut self, pool: &Pool, k: u32) -> bool {
+        self.starts.push(self.draft.nodes.len() as u32);
+        pool.draft_entry(&mut self.draft, k)
+    }
+
+    /// The draft of the value `whole` builds from the parts, as the instruction would
+    /// build it at run time; `None` when it cannot be packed (the instruction is kept).
+    /// An array's elements must all have one shape; an array of rows becomes one array
+    /// of up to three dimensions (`compile::flatten_array`).
+    pub fn finish(self, whole: Whole) -> Option<Draft> {
+        let Builder { mut draft, starts } = self;
+        let n = u32::try_from(starts.len()).ok()?;
+        match whole {
+            Whole::Record(ty) => draft.nodes[0] = Node::Record { ty, n: u16::try_from(n).ok()? },
+            Whole::Array => {
+                let range = |i: usize| starts[i] as usize..starts.get(i + 1).map_or(draft.nodes.len(), |&s| s as usize);
+                starts.first()?;
+                let first = range(0);
+                if (1..starts.len()).any(|i| draft.nodes[range(i)] != draft.nodes[first.clone()]) {
+                    return None;
+                }
+                draft.nodes.truncate(first.end);
+                match draft.nodes[1] {
+                    // Rows: their elements, one after the other.
+                    Node::Array { dims, n: per_row } => {
+                        if dims[2] != 0 {
+                            return None;
+                        }
+                        draft.nodes[0] = Node::Array { dims: [n, dims[0], dims[1]], n: n.checked_mul(per_row)? };
+                        draft.nodes.remove(1);
                     }
-                    let n_all = n.checked_mul(per_row)?;
-                    draft.nodes.push(Node::Array { dims: [n, dims[0], dims[1]], n: n_all });
-                    draft.nodes.extend_from_slice(&first.nodes[1..]);
-                }
-                _ => {
-                    draft.nodes.push(Node::Array { dims: [n, 0, 0], n });
-                    draft.nodes.extend_from_slice(&first.nodes);
+                    _ => draft.nodes[0] = Node::Array { dims: [n, 0, 0], n },
                 }
             }
         }
+        Some(draft)
     }
-    for part in parts {
-        draft.words.extend(part.words);
-    }
-    Some(draft)
 }
 
 #[cfg(test)]
@@ -264,15 +283,11 @@ mod tests {
     use super::*;
 
     fn pack(pool: &mut Pool, shapes: &mut FxHashMap<Box<[Node]>, u32>, leaves: &[Value], whole: Whole) -> u32 {
-        let parts = leaves
-            .iter()
-            .map(|v| {
-                let mut d = Draft::default();
-                assert!(pool.draft_leaf(&mut d, v));
-                d
-            })
-            .collect();
-        pool.add(draft_parts(parts, whole).expect("packable"), shapes)
+        let mut builder = Builder::with_parts(leaves.len());
+        for leaf in leaves {
+            assert!(builder.leaf(pool, leaf));
+        }
+        pool.add(builder.finish(whole).expect("packable"), shapes)
     }
 
     #[test]
@@ -297,13 +312,12 @@ mod tests {
         let mut shapes = FxHashMap::default();
         let ty = rapid_sema::types::ANY;
         let inner = pack(&mut pool, &mut shapes, &[Value::Num(1.0), Value::Num(2.0)], Whole::Record(ty));
-        let mut outer = Draft::default();
-        assert!(pool.draft_entry(&mut outer, inner));
-        let mut leaf = Draft::default();
-        assert!(pool.draft_leaf(&mut leaf, &Value::Num(3.0)));
+        let mut outer = Builder::with_parts(2);
+        assert!(outer.entry(&pool, inner));
+        assert!(outer.leaf(&mut pool, &Value::Num(3.0)));
         pool.truncate(inner);
         assert!(pool.is_empty());
-        let k = pool.add(draft_parts(vec![outer, leaf], Whole::Record(ty)).unwrap(), &mut shapes);
+        let k = pool.add(outer.finish(Whole::Record(ty)).unwrap(), &mut shapes);
         let pair = Value::Record(Rc::new(Record { ty, fields: vec![Value::Num(1.0), Value::Num(2.0)] }));
         let expected = Value::Record(Rc::new(Record { ty, fields: vec![pair, Value::Num(3.0)] }));
         assert_eq!(pool.value(k), Some(expected));
@@ -319,18 +333,16 @@ mod tests {
         let mut pool = Pool::default();
         let mut shapes = FxHashMap::default();
         let rows = [[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]];
-        let mut drafts = Vec::new();
         let mut built = Vec::new();
         for row in rows {
             let nums: Vec<Value> = row.iter().map(|&x| Value::Num(x)).collect();
             let k = pack(&mut pool, &mut shapes, &nums, Whole::Array);
-            let mut draft = Draft::default();
-            assert!(pool.draft_entry(&mut draft, k));
-            drafts.push(draft);
             built.push(pool.value(k).expect("a row"));
         }
+        let mut whole = Builder::with_parts(2);
+        assert!(whole.entry(&pool, 0) && whole.entry(&pool, 1));
         pool.truncate(0);
-        let k = pool.add(draft_parts(drafts, Whole::Array).expect("rows of one shape"), &mut shapes);
+        let k = pool.add(whole.finish(Whole::Array).expect("rows of one shape"), &mut shapes);
         let expected = crate::compile::flatten_array(Array { dims: [2, 0, 0], elems: built });
         assert_eq!(pool.value(k), Some(expected));
         assert!(matches!(pool.value(k), Some(Value::Array(a)) if a.dims == [2, 3, 0]));
@@ -339,11 +351,11 @@ mod tests {
     #[test]
     fn elements_of_different_shapes_are_not_packed() {
         let mut pool = Pool::default();
-        let mut num = Draft::default();
-        let mut text = Draft::default();
-        assert!(pool.draft_leaf(&mut num, &Value::Num(1.0)));
-        assert!(pool.draft_leaf(&mut text, &Value::Str("x".into())));
-        assert!(draft_parts(vec![num, text], Whole::Array).is_none());
-        assert!(!pool.draft_leaf(&mut Draft::default(), &Value::Absent));
+        let mut mixed = Builder::with_parts(2);
+        assert!(mixed.leaf(&mut pool, &Value::Num(1.0)));
+        assert!(mixed.leaf(&mut pool, &Value::Str("x".into())));
+        assert!(mixed.finish(Whole::Array).is_none());
+        assert!(!Builder::with_parts(1).leaf(&mut pool, &Value::Absent));
+        assert!(Builder::with_parts(0).finish(Whole::Array).is_none());
     }
 }

@@ -7,7 +7,7 @@ use rapid_syntax::literal::{num_value, string_value};
 
 use super::{CompileError, Resolved, RoutineCompiler};
 use crate::ir::{Instr, Operand};
-use crate::packed::{Draft, Whole};
+use crate::packed::{Builder, Whole};
 use crate::value::Value;
 
 /// How far a routine's code and constants reach at some point of compiling it.
@@ -209,29 +209,27 @@ impl RoutineCompiler<'_> {
             return None;
         }
         let (mut next_const, mut next_packed) = (start.consts, start.packed);
-        let mut parts = Vec::with_capacity(n);
+        let mut builder = Builder::with_parts(n);
         for instr in emitted {
-            let mut draft = Draft::default();
             let packable = match *instr {
                 Instr::Const(k) if k as usize == next_const => {
                     next_const += 1;
-                    self.code.aggregates.draft_leaf(&mut draft, &self.code.consts[k as usize])
+                    builder.leaf(&mut self.code.aggregates, &self.code.consts[k as usize])
                 }
                 Instr::Aggregate(k) if k as usize == next_packed => {
                     next_packed += 1;
-                    self.code.aggregates.draft_entry(&mut draft, k)
+                    builder.entry(&self.code.aggregates, k)
                 }
                 _ => false,
             };
             if !packable {
                 return None;
             }
-            parts.push(draft);
         }
         if next_const != self.code.consts.len() || next_packed != self.code.aggregates.len() {
             return None;
         }
-        let draft = crate::packed::draft_parts(parts, whole)?;
+        let draft = builder.finish(whole)?;
         self.code.instrs.truncate(start.instrs);
         self.code.consts.truncate(start.consts);
         self.code.aggregates.truncate(start.packed as u32);
