@@ -147,6 +147,7 @@ macro_rules! note {
         }
     };
     (@text Konst, $op:ident, $cx:expr) => { Some(const_text($cx.code.consts.get($op as usize))) };
+    (@text Packed, $op:ident, $cx:expr) => { Some(const_text($cx.code.aggregates.value($op).as_ref())) };
     (@text Slot, $op:ident, $cx:expr) => { local_name($cx.code, $op).map(str::to_owned) };
     (@text Site, $op:ident, $cx:expr) => { Some(site_text($cx, $op)) };
     (@text KernelIdx, $op:ident, $cx:expr) => { Some(kernel_text($cx, $op)) };
@@ -301,9 +302,16 @@ fn const_text(value: Option<&Value>) -> String {
         Some(Value::Dnum(n)) => crate::format::dnum_to_text(*n),
         Some(Value::Bool(b)) => crate::format::bool_to_text(*b).to_owned(),
         Some(Value::Str(s)) => crate::format::string_to_literal(s),
+        // A packed constant aggregate, written as its literal.
+        Some(Value::Record(r)) => crate::format::aggregate_to_text(&parts_text(&r.fields)),
+        Some(Value::Array(a)) => crate::format::aggregate_to_text(&parts_text(&a.elems)),
         Some(_) => "<aggregate>".to_owned(),
         None => "<missing>".to_owned(),
     }
+}
+
+fn parts_text(parts: &[Value]) -> Vec<String> {
+    parts.iter().map(|part| const_text(Some(part))).collect()
 }
 
 fn local_name(code: &Code, slot: u32) -> Option<&str> {

@@ -34,6 +34,8 @@ pub type Global = u32;
 pub type Konst = u32;
 /// An instruction offset in the same routine.
 pub type Target = u32;
+/// An entry of the routine's packed constant aggregates (`crate::packed`).
+pub type Packed = u32;
 /// An entry of the routine's call-site table.
 pub type Site = u32;
 /// An entry of the routine's kernel table.
@@ -52,6 +54,9 @@ macro_rules! for_each_instr {
             [$($extra)*]
             /// Push constant `k` of the pool.
             Const(k: Konst) => "const", fast: true;
+            /// Push packed constant aggregate `k`, built anew (a record or an array
+            /// whose leaves are all literals, `crate::packed`).
+            Aggregate(k: Packed) => "aggregate", fast: false;
             /// Push the value of local `slot` (through it when it holds a reference).
             LoadLocal(slot: Slot) => "load_local", fast: true;
             /// Pop a value into local `slot` (through it when it holds a reference).

@@ -66,7 +66,7 @@ pub enum Operand {
 }
 
 /// How a call passes each parameter, in parameter order.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum ArgSpec {
     /// A value computed by the caller (IN parameters).
     Value,
@@ -81,7 +81,7 @@ pub enum ArgSpec {
     Conditional { slot: u32, by_ref: bool },
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Callee {
     Routine(u32),
     Builtin(BuiltinId),
@@ -89,7 +89,10 @@ pub enum Callee {
     Late,
 }
 
-#[derive(Debug, Clone, PartialEq)]
+/// What a call passes and to whom. Identical sites of a routine are one entry (a CAM
+/// module's moves share a handful), so the table grows with the kinds of calls, not
+/// with the calls.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct CallSite {
     pub callee: Callee,
     pub args: Vec<ArgSpec>,
@@ -101,7 +104,7 @@ pub struct CallSite {
 
 /// Where a call's argument came from, for ArgName: the data object it names, a
 /// parameter of the calling routine (look one call further out), or nothing.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum ArgOrigin {
     /// The whole data object the argument names (also for an element or component).
     Data(std::rc::Rc<str>),
@@ -113,7 +116,7 @@ pub enum ArgOrigin {
 
 /// A late-bound call's argument, as written: matched to the callee's parameters
 /// by position or name only when the call runs (the callee is not known before).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct LateArg {
     /// The value pushed is a place (the argument is data), so a VAR, INOUT or PERS
     /// parameter can take it.
@@ -126,7 +129,7 @@ pub struct LateArg {
 }
 
 /// What a late-bound call's argument passes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum LateArgKind {
     /// A value (or place) the caller pushed.
     Pushed,
@@ -167,6 +170,8 @@ pub struct Code {
     pub file: usize,
     pub instrs: Vec<Instr>,
     pub consts: Vec<Value>,
+    /// Constant aggregates, packed (`Instr::Aggregate`).
+    pub aggregates: crate::packed::Pool,
     pub sites: Vec<CallSite>,
     /// Local slots: parameters first, then routine data, loop variables, temporaries.
     pub n_locals: u32,
@@ -244,6 +249,18 @@ impl Code {
         if let Instr::KernelStore { skip, .. } | Instr::KernelBranch { skip, .. } = &mut self.instrs[at as usize] {
             *skip = target;
         }
+    }
+
+    /// Gives back what the tables hold beyond their contents: they grew by doubling
+    /// while the routine was compiled, and a CAM routine's are megabytes.
+    pub fn shrink_to_fit(&mut self) {
+        self.instrs.shrink_to_fit();
+        self.consts.shrink_to_fit();
+        self.aggregates.shrink_to_fit();
+        self.sites.shrink_to_fit();
+        self.stmts.shrink_to_fit();
+        self.arg_origins.shrink_to_fit();
+        self.kernels.shrink_to_fit();
     }
 
     pub fn constant(&mut self, value: Value) -> u32 {

@@ -16,6 +16,7 @@ pub mod host;
 pub mod instrs;
 pub mod ir;
 pub mod ops;
+pub mod packed;
 pub mod persist;
 mod refusals;
 pub mod value;

@@ -108,6 +108,7 @@ impl RoutineCompiler<'_> {
         self.close_section();
         self.resolve_gotos(&mut errors);
         self.finish_locals();
+        self.code.shrink_to_fit();
         if errors.is_empty() {
             Ok(std::mem::take(&mut self.code))
         } else {

@@ -115,10 +115,7 @@ impl RoutineCompiler<'_> {
             Callee::Builtin(_) if names_data => Some(self.origins(arena, &bound, &specs)),
             _ => None,
         };
-        let site = self.site(CallSite { callee, args: specs, n_pushed, late_args: Vec::new() });
-        if let Some(origins) = origins {
-            self.code.arg_origins.push((site, origins));
-        }
+        let site = self.site_with(CallSite { callee, args: specs, n_pushed, late_args: Vec::new() }, origins);
         self.code.emit(Instr::Call(site));
         Ok(())
     }
@@ -164,8 +161,8 @@ impl RoutineCompiler<'_> {
             Some(value) => self.data_origin(arena, value),
             None => ArgOrigin::None,
         };
-        let site = self.site(CallSite { callee: Callee::Builtin(id), args: specs, n_pushed, late_args: Vec::new() });
-        self.code.arg_origins.push((site, Box::new([origin])));
+        let site = CallSite { callee: Callee::Builtin(id), args: specs, n_pushed, late_args: Vec::new() };
+        let site = self.site_with(site, Some(Box::new([origin])));
         self.code.emit(Instr::Call(site));
         Ok(())
     }
@@ -212,8 +209,25 @@ impl RoutineCompiler<'_> {
     }
 
     fn site(&mut self, site: CallSite) -> u32 {
-        self.code.sites.push(site);
-        self.code.sites.len() as u32 - 1
+        self.site_with(site, None)
+    }
+
+    /// The index of call site `site` whose arguments come from `origins` (recorded
+    /// for ArgName): the one made before for an identical call, else a new one.
+    /// Sharing is safe because a site is read only, never written, when it runs.
+    fn site_with(&mut self, site: CallSite, origins: Option<Box<[ArgOrigin]>>) -> u32 {
+        let key = (site, origins);
+        if let Some(&idx) = self.sites_seen.get(&key) {
+            return idx;
+        }
+        let idx = self.code.sites.len() as u32;
+        self.code.sites.push(key.0.clone());
+        // New sites have rising indices: `arg_origins` stays sorted by site.
+        if let Some(origins) = &key.1 {
+            self.code.arg_origins.push((idx, origins.clone()));
+        }
+        self.sites_seen.insert(key, idx);
+        idx
     }
 
     fn arg(
@@ -489,13 +503,10 @@ impl RoutineCompiler<'_> {
             };
             site.late_args.push(LateArg { by_ref, name, optional, kind });
         }
-        let site = self.site(site);
         // ArgName follows arguments by parameter position: known here only when every
         // argument is positional (otherwise the callee decides where each one goes).
-        if positional {
-            self.code.arg_origins.push((site, origins.into_boxed_slice()));
-        }
-        Ok(site)
+        let origins = positional.then(|| origins.into_boxed_slice());
+        Ok(self.site_with(site, origins))
     }
 
     /// Pushes a late-bound call's argument: a place when it is data (the callee may

@@ -2,12 +2,21 @@
 //! expected type, function calls, operators.
 
 use rapid_sema::types::{Atomic, TypeId, TypeKind};
-use rapid_syntax::ast::{Arena, ExprId, ExprKind};
+use rapid_syntax::ast::{Arena, ExprId, ExprKind, UnaryOp};
 use rapid_syntax::literal::{num_value, string_value};
 
 use super::{CompileError, Resolved, RoutineCompiler};
 use crate::ir::{Instr, Operand};
+use crate::packed::{Builder, Whole};
 use crate::value::Value;
+
+/// How far a routine's code and constants reach at some point of compiling it.
+#[derive(Debug, Clone, Copy)]
+struct Mark {
+    instrs: usize,
+    consts: usize,
+    packed: usize,
+}
 
 /// The type (and known dimension sizes) the context expects.
 pub(crate) type Expected = Option<(TypeId, [u32; 3])>;
@@ -61,8 +70,11 @@ impl RoutineCompiler<'_> {
             }
             ExprKind::Call { name, args } => self.call(arena, name, args, expr.span, true)?,
             ExprKind::Unary { op, operand } => {
+                let start = self.mark();
                 self.expr(arena, operand, expect)?;
-                self.code.emit(Instr::Unary(op));
+                if !self.fold_sign(op, start) {
+                    self.code.emit(Instr::Unary(op));
+                }
             }
             ExprKind::Binary { op, lhs, rhs } => {
                 // Aggregates compared with typed data take that data's type (§1.3.3).
@@ -140,12 +152,13 @@ impl RoutineCompiler<'_> {
     ) -> Result<(), CompileError> {
         let Some((ty, dims)) = expect else { return Err(self.error(span, "an aggregate without a type")) };
         let items = arena.list(items);
+        let start = self.mark();
         if dims[0] > 0 {
             let inner = [dims[1], dims[2], 0];
             for &item in items {
                 self.expr(arena, item, Some((ty, inner)))?;
             }
-            self.code.emit(Instr::MakeArray(items.len() as u32));
+            self.make(start, items.len(), Whole::Array);
             return Ok(());
         }
         let record = self.prog.types.value_of(ty);
@@ -156,15 +169,92 @@ impl RoutineCompiler<'_> {
                 for &item in items {
                     self.expr(arena, item, Some((ty, [0; 3])))?;
                 }
-                self.code.emit(Instr::MakeArray(items.len() as u32));
+                self.make(start, items.len(), Whole::Array);
                 return Ok(());
             }
         };
         for (&item, &field_ty) in items.iter().zip(&field_types) {
             self.expr(arena, item, Some((field_ty, [0; 3])))?;
         }
-        self.code.emit(Instr::MakeRecord(record, items.len() as u16));
+        self.make(start, items.len(), Whole::Record(record));
         Ok(())
+    }
+
+    /// Where the code, the constants and the packed aggregates end now.
+    fn mark(&self) -> Mark {
+        Mark { instrs: self.code.instrs.len(), consts: self.code.consts.len(), packed: self.code.aggregates.len() }
+    }
+
+    /// Ends an aggregate whose `n` parts were compiled since `start`: one packed
+    /// constant when every part is a literal or a constant aggregate, else the
+    /// instruction that builds it at run time.
+    fn make(&mut self, start: Mark, n: usize, whole: Whole) {
+        if let Some(k) = self.fold(start, n, whole) {
+            self.code.emit(Instr::Aggregate(k));
+            return;
+        }
+        match whole {
+            Whole::Array => self.code.emit(Instr::MakeArray(n as u32)),
+            Whole::Record(ty) => self.code.emit(Instr::MakeRecord(ty, n as u16)),
+        };
+    }
+
+    /// Packs the aggregate whose `n` parts were compiled since `start` when each part
+    /// is one instruction pushing a constant made for it alone (a literal, or an
+    /// aggregate packed already): those constants are taken back, in order, into the
+    /// new one, which is the value `MakeRecord` or `MakeArray` would build from them.
+    fn fold(&mut self, start: Mark, n: usize, whole: Whole) -> Option<u32> {
+        let emitted = &self.code.instrs[start.instrs..];
+        if emitted.len() != n {
+            return None;
+        }
+        let (mut next_const, mut next_packed) = (start.consts, start.packed);
+        let mut builder = Builder::with_parts(n);
+        for instr in emitted {
+            let packable = match *instr {
+                Instr::Const(k) if k as usize == next_const => {
+                    next_const += 1;
+                    builder.leaf(&mut self.code.aggregates, &self.code.consts[k as usize])
+                }
+                Instr::Aggregate(k) if k as usize == next_packed => {
+                    next_packed += 1;
+                    builder.entry(&self.code.aggregates, k)
+                }
+                _ => false,
+            };
+            if !packable {
+                return None;
+            }
+        }
+        if next_const != self.code.consts.len() || next_packed != self.code.aggregates.len() {
+            return None;
+        }
+        let draft = builder.finish(whole)?;
+        self.code.instrs.truncate(start.instrs);
+        self.code.consts.truncate(start.consts);
+        self.code.aggregates.truncate(start.packed as u32);
+        Some(self.code.aggregates.add(draft, &mut self.shapes))
+    }
+
+    /// `-literal` and `+literal` are constants: when the operand compiled since
+    /// `start` is one constant num or dnum made for it alone, it is negated in place
+    /// (as `ops::unary` would negate it at run time) or kept as it is, so that
+    /// aggregates of signed numbers pack too. Whether it folded.
+    fn fold_sign(&mut self, op: UnaryOp, start: Mark) -> bool {
+        let single = self.code.instrs.len() == start.instrs + 1
+            && self.code.consts.len() == start.consts + 1
+            && matches!(self.code.instrs[start.instrs], Instr::Const(k) if k as usize == start.consts);
+        if !single {
+            return false;
+        }
+        let value = &mut self.code.consts[start.consts];
+        match (op, &*value) {
+            (UnaryOp::Neg, Value::Num(n)) => *value = Value::Num(-n),
+            (UnaryOp::Neg, Value::Dnum(d)) => *value = Value::Dnum(-d),
+            (UnaryOp::Plus, Value::Num(_) | Value::Dnum(_)) => {}
+            _ => return false,
+        }
+        true
     }
 
     /// An array named directly (`a` in `a{i}`): (global?, slot).

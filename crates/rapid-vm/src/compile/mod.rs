@@ -314,7 +314,15 @@ pub(crate) struct RoutineCompiler<'p> {
     pub(crate) loops: Vec<LoopJumps>,
     /// The part of the routine being compiled: the body or one of its handlers.
     pub(crate) section: Section,
+    /// The shapes of the packed constant aggregates, each stored once.
+    pub(crate) shapes: FxHashMap<Box<[crate::packed::Node]>, u32>,
+    /// The call sites made so far, with what their arguments name (ArgName): an
+    /// identical call reuses its site.
+    pub(crate) sites_seen: FxHashMap<SiteKey, u32>,
 }
+
+/// A call site with the origins of its arguments (ArgName), when recorded.
+pub(crate) type SiteKey = (crate::ir::CallSite, Option<Box<[crate::ir::ArgOrigin]>>);
 
 /// A loop's Break and Continue jumps, patched when the loop's code is complete.
 #[derive(Debug, Default)]
@@ -343,6 +351,8 @@ impl<'p> RoutineCompiler<'p> {
             stmt_depth: 0,
             exits: Vec::new(),
             section: Section::Body,
+            shapes: FxHashMap::default(),
+            sites_seen: FxHashMap::default(),
         }
     }
 

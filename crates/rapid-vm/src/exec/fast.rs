@@ -15,6 +15,7 @@ use crate::value::{Root, MAX_STRING_CHARS};
 macro_rules! step_only {
     () => {
         Instr::StoreGlobal(..)
+            | Instr::Aggregate(..)
             | Instr::PlaceField(..)
             | Instr::PlaceIndex(..)
             | Instr::LoadPlace

@@ -15,6 +15,12 @@ pub(super) fn make_record(stack: &mut Vec<Value>, ty: TypeId, n: u16) {
     stack.push(Value::Record(std::rc::Rc::new(crate::value::Record { ty, fields })));
 }
 
+/// `Aggregate`: packed constant aggregate `k` of `code`, built anew.
+#[inline(always)]
+pub(super) fn aggregate(code: &crate::ir::Code, k: u32) -> Result<Value, super::RapidError> {
+    code.aggregates.value(k).ok_or_else(|| super::RapidError::fatal("a constant aggregate is missing from its routine"))
+}
+
 /// `ForCheck`: whether a FOR loop's variable `v` has passed `to`, counting by `step`
 /// (up when it is 0 or more), which ends the loop.
 #[inline(always)]

@@ -404,6 +404,7 @@ impl Vm {
         let mut next = pc + 1;
         match instr {
             Instr::Const(i) => self.push(code.consts[i as usize].clone()),
+            Instr::Aggregate(k) => self.push(instr::aggregate(&code, k)?),
             // The fast loop runs kernels; here the statement's general code, which
             // follows, does the work.
             Instr::KernelStore { .. } | Instr::KernelBranch { .. } | Instr::KernelReturn { .. } => {}
