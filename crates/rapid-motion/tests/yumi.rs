@@ -46,6 +46,18 @@ fn axis_1_sits_on_the_body_where_the_urdf_puts_it() {
     }
 }
 
+#[test]
+fn a_second_urdf_puts_the_left_axis_1_on_the_same_line() {
+    // An independent public YuMi URDF (a `yumi_driver` package's) places the left axis 1
+    // through (47.607, 70, 411.486) mm: a point 7.3 mm back along our axis 1.
+    let b = base(Side::Left);
+    let axis = b.rotation * Vector3::z();
+    let d = Vector3::new(47.607, 70.0, 411.486) - b.translation.vector;
+    let off_line = (d - axis * axis.dot(&d)).norm();
+    assert!(off_line < 0.05, "{off_line}");
+    assert!((axis.dot(&d) + 7.3).abs() < 0.05, "{}", axis.dot(&d));
+}
+
 /// Joints, then tool0's position, x axis and z axis in the arm's own frame.
 type Row = (Joints7, [f64; 3], [f64; 3], [f64; 3]);
 
