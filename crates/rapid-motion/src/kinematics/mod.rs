@@ -5,11 +5,13 @@
 //!
 //! The solver is our own closed form (`solve.rs`); `turns.rs` maps its principal
 //! angles onto the multi-turn ranges of axes such as ±400° on axis 6. The 4-axis
-//! palletizers (`pallet.rs`) answer the same interface, axes 4 and 5 held at 0.
+//! palletizers (`pallet.rs`) answer the same interface, axes 4 and 5 held at 0. The
+//! IRB 14000 YuMi's 7-axis arms (`yumi.rs`) have their own, numeric, kinematics.
 
 mod pallet;
 mod solve;
 mod turns;
+pub mod yumi;
 
 use nalgebra::{Translation3, UnitQuaternion, Vector3};
 
