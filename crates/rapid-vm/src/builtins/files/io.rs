@@ -119,12 +119,16 @@ pub(super) fn read_str_bin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(Value::Str(text.into())))
 }
 
+crate::builtins::signature::layout! {
+    static WRITE_BIN: WriteBinArgs = "WriteBin" { buffer: "Buffer", n_char: "NChar" }
+}
+
 /// `WriteBin IODevice Buffer NChar`: the first NChar numbers of Buffer, each a byte.
 pub(super) fn write_bin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let Value::Array(buffer) = ctx.value(&args[1])? else {
+    let Value::Array(buffer) = ctx.value(&args[WRITE_BIN.buffer])? else {
         return Err(ctx.error(Err::ArgValue, "Buffer must be an array of num"));
     };
-    let count = ctx.num(&args[2])?;
+    let count = ctx.num(&args[WRITE_BIN.n_char])?;
     if count.fract() != 0.0 || count < 0.0 || count > buffer.elems.len() as f64 {
         // uncertain: the manual names no error for NChar beyond the array.
         return Err(ctx.error(
