@@ -182,14 +182,19 @@ pub(super) fn bit_check_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 // --- BitSet / BitClear -------------------------------------------------------------------
 
+crate::builtins::signature::layout! {
+    static SET_BIT: SetBitArgs = "BitSet" | "BitClear" { bit_data: "BitData", dnum_data: "DnumData", bit_pos: "BitPos" }
+}
+
 /// `BitSet BitData | DnumData, BitPos` (and BitClear): args are BitData, DnumData, BitPos.
 /// A dnum gets bit positions 1..52, a byte 1..8.
 fn set_bit(ctx: &mut Ctx<'_>, args: &[Value], on: bool) -> Res {
-    let target = if present(args.first()) { &args[0] } else { &args[1] };
+    let at = *SET_BIT;
+    let target = if present(args.get(at.bit_data)) { &args[at.bit_data] } else { &args[at.dnum_data] };
     // The kind of the data itself decides: a dnum variable may arrive in either position.
     let is_dnum = matches!(ctx.value(target)?, Value::Dnum(_));
     let (value, max) = if is_dnum { (dnum(ctx, target)?, 52) } else { (u64::from(byte(ctx, target)?), 8) };
-    let pos = steps(ctx, &args[2], max, "BitPos")?;
+    let pos = steps(ctx, &args[at.bit_pos], max, "BitPos")?;
     let bit = 1u64 << (pos - 1);
     let new = if on { value | bit } else { value & !bit };
     let new = if is_dnum { Value::Dnum(new as f64) } else { Value::Num(new as f32) };

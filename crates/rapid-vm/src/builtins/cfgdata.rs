@@ -172,12 +172,18 @@ fn wanted_kind(value: &Value) -> Option<Kind> {
     }
 }
 
+super::signature::layout! {
+    static CFG_DATA: CfgDataArgs = "ReadCfgData" | "WriteCfgData" { cfg_data: "CfgData", list_no: "ListNo" }
+    static SAVE: SaveArgs = "SaveCfgData" { file: "File", domain: "Domain" }
+}
+
 /// `ReadCfgData InstancePath, Attribute, CfgData [\ListNo]`.
 fn read_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let path = ctx.string(&args[0])?;
     let attr_name = ctx.string(&args[1])?;
-    let target = ctx.value(&args[2])?;
-    let found = find(ctx, &path, args.get(3))?;
+    let at = *CFG_DATA;
+    let target = ctx.value(&args[at.cfg_data])?;
+    let found = find(ctx, &path, args.get(at.list_no))?;
     let Some(inst) = instance(&ctx.resources.cfgdata, &found) else {
         return Err(ctx.error(Err::CfgNotFound, format!("no instance `{path}`")));
     };
@@ -208,9 +214,9 @@ fn read_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
             }
         }
     };
-    ctx.store(&args[2], value)?;
+    ctx.store(&args[at.cfg_data], value)?;
     if let Some(next) = found.next {
-        ctx.store(&args[3], Value::Num(next))?;
+        ctx.store(&args[at.list_no], Value::Num(next))?;
     }
     Ok(None)
 }
@@ -219,8 +225,9 @@ fn read_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 fn write_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let path = ctx.string(&args[0])?;
     let attr_name = ctx.string(&args[1])?;
-    let value = ctx.value(&args[2])?;
-    let found = find(ctx, &path, args.get(3))?;
+    let at = *CFG_DATA;
+    let value = ctx.value(&args[at.cfg_data])?;
+    let found = find(ctx, &path, args.get(at.list_no))?;
     let Some(wanted) = wanted_kind(&value) else {
         return Err(ctx.error(Err::CfgIllType, "CfgData must be num, dnum, bool or string"));
     };
@@ -258,7 +265,7 @@ fn write_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         ctx.resources.cfgdata.domains[found.domain].1 = rapid_config::parse(&text);
     }
     if let Some(next) = found.next {
-        ctx.store(&args[3], Value::Num(next))?;
+        ctx.store(&args[at.list_no], Value::Num(next))?;
     }
     Ok(None)
 }
@@ -288,12 +295,13 @@ fn format_number(n: f64) -> String {
 
 /// `SaveCfgData FilePath [\File], Domain`.
 fn save_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *SAVE;
     let file_path = ctx.string(&args[0])?;
-    let file = match args.get(1) {
+    let file = match args.get(at.file) {
         Some(arg) if present(Some(arg)) => Some(ctx.string(arg)?),
         _ => None,
     };
-    let domain = ctx.string(&args[2])?;
+    let domain = ctx.string(&args[at.domain])?;
     let all = domain.eq_ignore_ascii_case("ALL");
     let chosen: Vec<usize> = if all {
         (0..ctx.resources.cfgdata.domains.len()).collect()

@@ -50,19 +50,23 @@ fn service_code(service: &str) -> Option<u8> {
     u8::from_str_radix(service, 16).ok()
 }
 
+crate::builtins::signature::layout! {
+    static PACK: PackArgs = "PackDNHeader" { path: "Path", raw_data: "RawData" }
+}
+
 /// `PackDNHeader Service Path RawData`: clears RawData and packs the header into it.
 // uncertain: the manual names no error for a malformed Service; ERR_ARGVALERR is the
 // controller's error for an argument value it cannot use.
 fn pack_dn_header(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let service = ctx.string(&args[0])?;
-    let path = ctx.string(&args[1])?;
+    let path = ctx.string(&args[PACK.path])?;
     let bytes = header(&service, &path).map_err(|why| ctx.error(Err::ArgValue, why))?;
-    let shell = match ctx.value(&args[2])? {
+    let shell = match ctx.value(&args[PACK.raw_data])? {
         Value::Opaque(opaque) if matches!(opaque.state, OpaqueState::RawBytes(_) | OpaqueState::None) => *opaque,
         _ => return Err(ctx.error(Err::ArgValue, "PackDNHeader needs a rawbytes for RawData")),
     };
     let packed = Opaque { ty: shell.ty, state: OpaqueState::RawBytes(bytes) };
-    ctx.store(&args[2], Value::Opaque(Box::new(packed)))?;
+    ctx.store(&args[PACK.raw_data], Value::Opaque(Box::new(packed)))?;
     Ok(None)
 }
 

@@ -90,9 +90,15 @@ fn axis_angle(axis: usize, degrees: f64) -> Quat {
     q
 }
 
+super::signature::layout! {
+    static ORIENT_ZYX: OrientZyxArgs = "OrientZYX" { z: "ZAngle", y: "YAngle", x: "XAngle" }
+    static EULER_ZYX: EulerZyxArgs = "EulerZYX" { x: "X", y: "Y", rotation: "Rotation" }
+}
+
 /// `OrientZYX(ZAngle, YAngle, XAngle)`.
 pub(super) fn orient_zyx(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (z, y, x) = (ctx.num(&args[0])?, ctx.num(&args[1])?, ctx.num(&args[2])?);
+    let at = *ORIENT_ZYX;
+    let (z, y, x) = (ctx.num(&args[at.z])?, ctx.num(&args[at.y])?, ctx.num(&args[at.x])?);
     let q = mul(mul(axis_angle(2, z), axis_angle(1, y)), axis_angle(0, x));
     Ok(Some(Value::Record(std::rc::Rc::new(Record {
         ty: ctx.types.orient,
@@ -102,11 +108,13 @@ pub(super) fn orient_zyx(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `EulerZYX(\X | \Y | \Z, Rotation)`: one of the Z-Y-X angles of an orientation.
 pub(super) fn euler_zyx(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let q = normalize(quat(ctx, &ctx.value(&args[3])?)?).ok_or_else(|| ctx.error(Err::ArgValue, "zero orientation"))?;
+    let at = *EULER_ZYX;
+    let rotation = ctx.value(&args[at.rotation])?;
+    let q = normalize(quat(ctx, &rotation)?).ok_or_else(|| ctx.error(Err::ArgValue, "zero orientation"))?;
     let (w, x, y, z) = (q[0], q[1], q[2], q[3]);
-    let angle = if super::present(args.first()) {
+    let angle = if super::present(args.get(at.x)) {
         (2.0 * (w * x + y * z)).atan2(1.0 - 2.0 * (x * x + y * y))
-    } else if super::present(args.get(1)) {
+    } else if super::present(args.get(at.y)) {
         (2.0 * (w * y - z * x)).clamp(-1.0, 1.0).asin()
     } else {
         (2.0 * (w * z + x * y)).atan2(1.0 - 2.0 * (y * y + z * z))

@@ -297,12 +297,22 @@ fn reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     order(ctx, |io, t| io.set(id, 0.0, t))
 }
 
+super::signature::layout! {
+    static SET_DO: SetDoArgs = "SetDO" { s_delay: "SDelay", signal: "Signal", value: "Value" }
+    static SET_GO: SetGoArgs = "SetGO" { s_delay: "SDelay", signal: "Signal", value: "Value", dvalue: "Dvalue" }
+    static PULSE_DO: PulseDoArgs = "PulseDO" { high: "High", p_length: "PLength", signal: "Signal" }
+    static GROUP_INFO: GroupInfoArgs = "GetGroupSignalInfo" {
+        max_dvalue: "MaxDvalue", label: "Label", device_name: "DeviceName",
+    }
+}
+
 /// `SetDO [\SDelay] | [\Sync] Signal Value`. `\Sync` waits until the physical output has
 /// changed; the simulated output changes at once, so there is nothing to wait for.
 fn set_do(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let id = signal(ctx, &args[2])?;
-    let value = ctx.num(&args[3])?;
-    match ctx.opt_num(args.first())? {
+    let at = *SET_DO;
+    let id = signal(ctx, &args[at.signal])?;
+    let value = ctx.num(&args[at.value])?;
+    match ctx.opt_num(args.get(at.s_delay))? {
         Some(delay) => order(ctx, |io, t| io.set_delayed(id, value, t, delay)),
         None => order(ctx, |io, t| io.set(id, value, t)),
     }
@@ -317,9 +327,10 @@ fn set_ao(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `SetGO [\SDelay] Signal Value | Dvalue`.
 fn set_go(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let id = signal(ctx, &args[1])?;
-    let value = if present(args.get(2)) { ctx.num(&args[2])? } else { ctx.num(&args[3])? };
-    match ctx.opt_num(args.first())? {
+    let at = *SET_GO;
+    let id = signal(ctx, &args[at.signal])?;
+    let value = if present(args.get(at.value)) { ctx.num(&args[at.value])? } else { ctx.num(&args[at.dvalue])? };
+    match ctx.opt_num(args.get(at.s_delay))? {
         Some(delay) => order(ctx, |io, t| io.set_delayed(id, value, t, delay)),
         None => order(ctx, |io, t| io.set(id, value, t)),
     }
@@ -333,9 +344,10 @@ fn invert_do(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `PulseDO [\High] [\PLength] Signal` (0.2 s without `\PLength`).
 fn pulse_do(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let id = signal(ctx, &args[2])?;
-    let high = present(args.first());
-    let length = ctx.opt_num(args.get(1))?;
+    let at = *PULSE_DO;
+    let id = signal(ctx, &args[at.signal])?;
+    let high = present(args.get(at.high));
+    let length = ctx.opt_num(args.get(at.p_length))?;
     order(ctx, |io, t| io.pulse(id, high, length, t))
 }
 
@@ -474,14 +486,15 @@ fn get_group_signal_info(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let Some(def) = def.filter(|d| d.kind.is_group()) else {
         return Err(ctx.error(Err::ArgValue, "GetGroupSignalInfo needs a group signal (GI or GO)"));
     };
-    if present(args.get(1)) {
-        ctx.store(&args[1], Value::Dnum(rapid_io::group_max(def.group_bits)))?;
+    let at = *GROUP_INFO;
+    if present(args.get(at.max_dvalue)) {
+        ctx.store(&args[at.max_dvalue], Value::Dnum(rapid_io::group_max(def.group_bits)))?;
     }
-    if present(args.get(2)) {
-        ctx.store(&args[2], Value::Str(def.label.as_str().into()))?;
+    if present(args.get(at.label)) {
+        ctx.store(&args[at.label], Value::Str(def.label.as_str().into()))?;
     }
-    if present(args.get(3)) {
-        ctx.store(&args[3], Value::Str(def.device.unwrap_or_default().into()))?;
+    if present(args.get(at.device_name)) {
+        ctx.store(&args[at.device_name], Value::Str(def.device.unwrap_or_default().into()))?;
     }
     Ok(None)
 }

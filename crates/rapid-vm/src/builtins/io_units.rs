@@ -167,10 +167,14 @@ fn io_bus_start(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
+crate::builtins::signature::layout! {
+    static EVENT_MESSAGE: EventMessageArgs = "IOEventMessage" { device_name: "DeviceName" }
+}
+
 /// `IOEventMessage [\On] | [\Off] DeviceName`: the simulated devices log no events, so
 /// only the name is checked.
 fn io_event_message(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    device_name(ctx, &args[2])?;
+    device_name(ctx, &args[EVENT_MESSAGE.device_name])?;
     Ok(None)
 }
 

@@ -162,17 +162,33 @@ pub fn front_end_load(root: Option<&std::path::Path>, text: &str) -> Result<Modu
     Ok(ModuleRequest::Load { file, check_ref: false })
 }
 
+super::signature::layout! {
+    static LOAD: LoadArgs = "Load" { dynamic: "Dynamic", file_path: "FilePath", file: "File", check_ref: "CheckRef" }
+    static UNLOAD: UnloadArgs = "UnLoad" {
+        err_if_changed: "ErrIfChanged", save: "Save", file_path: "FilePath", file: "File",
+    }
+    static START_LOAD: StartLoadArgs = "StartLoad" {
+        dynamic: "Dynamic", file_path: "FilePath", file: "File", load_no: "LoadNo",
+    }
+    static WAIT_LOAD: WaitLoadArgs = "WaitLoad" {
+        unload_path: "UnloadPath", unload_file: "UnloadFile", load_no: "LoadNo", check_ref: "CheckRef",
+    }
+    static SAVE: SaveArgs = "Save" { task_ref: "TaskRef", module_name: "ModuleName", file_path: "FilePath", file: "File" }
+}
+
 /// `Load [\Dynamic] FilePath [\File] [\CheckRef]`.
 fn load(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let file = read_module(ctx, &args[1], args.get(2), present(args.first()))?;
-    ctx.resources.modules.request = Some(ModuleRequest::Load { file, check_ref: present(args.get(3)) });
+    let at = *LOAD;
+    let file = read_module(ctx, &args[at.file_path], args.get(at.file), present(args.get(at.dynamic)))?;
+    ctx.resources.modules.request = Some(ModuleRequest::Load { file, check_ref: present(args.get(at.check_ref)) });
     Ok(None)
 }
 
 /// `UnLoad [\ErrIfChanged] | [\Save] FilePath [\File]`.
 fn unload(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (path, host) = resolve(ctx, &args[2], args.get(3), Err::Unload)?;
-    let (err_if_changed, save) = (present(args.first()), present(args.get(1)));
+    let at = *UNLOAD;
+    let (path, host) = resolve(ctx, &args[at.file_path], args.get(at.file), Err::Unload)?;
+    let (err_if_changed, save) = (present(args.get(at.err_if_changed)), present(args.get(at.save)));
     ctx.resources.modules.request = Some(ModuleRequest::Unload { host, path, err_if_changed, save });
     Ok(None)
 }
@@ -184,18 +200,19 @@ fn session_of(ctx: &Ctx<'_>, arg: &Value) -> Result<(Opaque, Option<u32>), Rapid
 
 /// `StartLoad [\Dynamic] FilePath [\File] LoadNo`: the file is read now; WaitLoad links it.
 fn start_load(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (shell, handle) = session_of(ctx, &args[3])?;
+    let at = *START_LOAD;
+    let (shell, handle) = session_of(ctx, &args[at.load_no])?;
     // uncertain: StartLoad on a session still waiting for its WaitLoad raises
     // ERR_LOADNO_INUSE (the name of that error says so; the manual's page is not public).
     if handle.is_some_and(|h| ctx.resources.modules.sessions.contains_key(&h)) {
         return Err(ctx.error(Err::LoadNoInUse, "the load session is in use; WaitLoad or CancelLoad it first"));
     }
-    let file = read_module(ctx, &args[1], args.get(2), present(args.first()))?;
+    let file = read_module(ctx, &args[at.file_path], args.get(at.file), present(args.get(at.dynamic)))?;
     let state = &mut ctx.resources.modules;
     state.last_session = state.last_session.wrapping_add(1).max(1);
     let id = state.last_session;
     state.sessions.insert(id, file);
-    ctx.store(&args[3], Value::Opaque(Box::new(Opaque { ty: shell.ty, state: OpaqueState::Handle(id) })))?;
+    ctx.store(&args[at.load_no], Value::Opaque(Box::new(Opaque { ty: shell.ty, state: OpaqueState::Handle(id) })))?;
     Ok(None)
 }
 
@@ -211,15 +228,17 @@ fn end_session(ctx: &mut Ctx<'_>, arg: &Value, err: Err, what: &str) -> Result<L
 
 /// `WaitLoad [\UnloadPath] [\UnloadFile] LoadNo [\CheckRef]`.
 fn wait_load(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let unload = match args.first() {
-        Some(path) if present(Some(path)) => Some(resolve(ctx, path, args.get(1), Err::Unload)?),
+    let at = *WAIT_LOAD;
+    let unload = match args.get(at.unload_path) {
+        Some(path) if present(Some(path)) => Some(resolve(ctx, path, args.get(at.unload_file), Err::Unload)?),
         _ => None,
     };
     let unload = unload.map(|(path, host)| (host, path));
     // uncertain: a loadsession with no StartLoad behind it raises ERR_UNKPROC in WaitLoad
     // (the catalogue's description of that error).
-    let file = end_session(ctx, &args[2], Err::UnknownLoad, "WaitLoad")?;
-    ctx.resources.modules.request = Some(ModuleRequest::WaitLoad { unload, file, check_ref: present(args.get(3)) });
+    let file = end_session(ctx, &args[at.load_no], Err::UnknownLoad, "WaitLoad")?;
+    let check_ref = present(args.get(at.check_ref));
+    ctx.resources.modules.request = Some(ModuleRequest::WaitLoad { unload, file, check_ref });
     Ok(None)
 }
 
@@ -238,11 +257,13 @@ fn check_prog_ref(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 
 /// `Save [\TaskRef] | [\TaskName] ModuleName [\FilePath] [\File]`.
 fn save(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let other = super::tasking::other_task(ctx, args, 0)?;
-    let module = ctx.string(&args[2])?;
-    let dest = match args.get(3) {
+    let at = *SAVE;
+    // \TaskRef | \TaskName: `other_task` reads the pair from the first.
+    let other = super::tasking::other_task(ctx, args, at.task_ref)?;
+    let module = ctx.string(&args[at.module_name])?;
+    let dest = match args.get(at.file_path) {
         Some(path) if present(Some(path)) => {
-            let (text, host) = resolve(ctx, path, args.get(4), Err::IoError)?;
+            let (text, host) = resolve(ctx, path, args.get(at.file), Err::IoError)?;
             Some((host, text))
         }
         // uncertain: \File without \FilePath names a file beside the module's own.

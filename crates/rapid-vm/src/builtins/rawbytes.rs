@@ -287,19 +287,20 @@ fn fault(ctx: &Ctx<'_>, (err, message): Fault) -> RapidError {
     ctx.error(err, message)
 }
 
-/// The layout chosen by `\Hex1 | \IntX | \Float4 | \ASCII` at `args[first..first + 4]`;
+/// The layout chosen by `\Hex1 | \IntX | \Float4 | \ASCII`, at the positions `at` (in that order);
 /// `ascii_count` says whether \ASCII carries a character count (UnpackRawBytes).
-fn chosen_layout(ctx: &Ctx<'_>, args: &[Value], first: usize, ascii_count: bool) -> Result<Layout, RapidError> {
-    if present(args.get(first)) {
+fn chosen_layout(ctx: &Ctx<'_>, args: &[Value], at: [usize; 4], ascii_count: bool) -> Result<Layout, RapidError> {
+    let [hex1, int_x, float4, ascii] = at;
+    if present(args.get(hex1)) {
         return Ok(Layout::Hex1);
     }
-    if let Some(t) = ctx.opt_num(args.get(first + 1))? {
+    if let Some(t) = ctx.opt_num(args.get(int_x))? {
         return int_layout(t).map_err(|f| fault(ctx, f));
     }
-    if present(args.get(first + 2)) {
+    if present(args.get(float4)) {
         return Ok(Layout::Float4);
     }
-    match args.get(first + 3) {
+    match args.get(ascii) {
         Some(a) if !a.is_absent() => {
             if !ascii_count {
                 return Ok(Layout::Ascii(0));
@@ -326,25 +327,38 @@ pub(super) fn clear_raw_bytes(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
+super::signature::layout! {
+    static COPY: CopyArgs = "CopyRawBytes" { to: "ToRawData", to_index: "ToIndex", no_of_bytes: "NoOfBytes" }
+    static PACK: PackArgs = "PackRawBytes" {
+        network: "Network", start: "StartIndex", hex1: "Hex1", int_x: "IntX", float4: "Float4", ascii: "ASCII",
+    }
+    static UNPACK: UnpackArgs = "UnpackRawBytes" {
+        network: "Network", start: "StartIndex", value: "Value", hex1: "Hex1", int_x: "IntX", float4: "Float4",
+        ascii: "ASCII",
+    }
+}
+
 /// `CopyRawBytes FromRawData FromIndex ToRawData ToIndex [\NoOfBytes]`.
 pub(super) fn copy_raw_bytes(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *COPY;
     let (from, _) = raw_state(ctx, &args[0])?;
     let from_index = ctx.num(&args[1])?;
-    let (mut to, opaque) = raw_state(ctx, &args[2])?;
-    let to_index = ctx.num(&args[3])?;
-    let count = ctx.opt_num(args.get(4))?;
+    let (mut to, opaque) = raw_state(ctx, &args[at.to])?;
+    let to_index = ctx.num(&args[at.to_index])?;
+    let count = ctx.opt_num(args.get(at.no_of_bytes))?;
     copy(&from, from_index, &mut to, to_index, count).map_err(|f| fault(ctx, f))?;
-    set_raw(ctx, &args[2], opaque, to)?;
+    set_raw(ctx, &args[at.to], opaque, to)?;
     Ok(None)
 }
 
 /// `PackRawBytes Value RawData [\Network] StartIndex [\Hex1]|[\IntX]|[\Float4]|[\ASCII]`.
 pub(super) fn pack_raw_bytes(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *PACK;
     let value = ctx.value(&args[0])?;
     let (mut bytes, opaque) = raw_state(ctx, &args[1])?;
-    let network = present(args.get(2));
-    let start = ctx.num(&args[3])?;
-    let layout = chosen_layout(ctx, args, 4, false)?;
+    let network = present(args.get(at.network));
+    let start = ctx.num(&args[at.start])?;
+    let layout = chosen_layout(ctx, args, [at.hex1, at.int_x, at.float4, at.ascii], false)?;
     pack(&mut bytes, &value, start, layout, network).map_err(|f| fault(ctx, f))?;
     set_raw(ctx, &args[1], opaque, bytes)?;
     Ok(None)
@@ -352,13 +366,14 @@ pub(super) fn pack_raw_bytes(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `UnpackRawBytes RawData [\Network] StartIndex Value [\Hex1]|[\IntX]|[\Float4]|[\ASCII:=n]`.
 pub(super) fn unpack_raw_bytes(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *UNPACK;
     let (bytes, _) = raw_state(ctx, &args[0])?;
-    let network = present(args.get(1));
-    let start = ctx.num(&args[2])?;
-    let like = ctx.value(&args[3])?;
-    let layout = chosen_layout(ctx, args, 4, true)?;
+    let network = present(args.get(at.network));
+    let start = ctx.num(&args[at.start])?;
+    let like = ctx.value(&args[at.value])?;
+    let layout = chosen_layout(ctx, args, [at.hex1, at.int_x, at.float4, at.ascii], true)?;
     let value = unpack(&bytes, start, layout, network, &like).map_err(|f| fault(ctx, f))?;
-    ctx.store(&args[3], value)?;
+    ctx.store(&args[at.value], value)?;
     Ok(None)
 }
 

@@ -37,11 +37,17 @@ const OP_MULT: f64 = 3.0;
 const OP_DIV: f64 = 4.0;
 const OP_MOD: f64 = 5.0;
 
+super::signature::layout! {
+    static STR_DIG_CMP: StrDigCmpArgs = "StrDigCmp" { relation: "Relation", b: "StrDig2" }
+    static STR_DIG_CALC: StrDigCalcArgs = "StrDigCalc" { operation: "Operation", b: "StrDig2" }
+}
+
 /// `StrDigCmp(StrDig1, Relation, StrDig2)`: StrDig1 Relation StrDig2, as integers.
 fn str_dig_cmp(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *STR_DIG_CMP;
     let a = digits(ctx, &args[0])?;
-    let relation = ctx.num(&args[1])?;
-    let b = digits(ctx, &args[2])?;
+    let relation = ctx.num(&args[at.relation])?;
+    let b = digits(ctx, &args[at.b])?;
     let result = match relation {
         LT => a < b,
         LTEQ => a <= b,
@@ -56,9 +62,10 @@ fn str_dig_cmp(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `StrDigCalc(StrDig1, Operation, StrDig2)`: the result of the operation, as digits.
 fn str_dig_calc(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *STR_DIG_CALC;
     let a = digits(ctx, &args[0])?;
-    let operation = ctx.num(&args[1])?;
-    let b = digits(ctx, &args[2])?;
+    let operation = ctx.num(&args[at.operation])?;
+    let b = digits(ctx, &args[at.b])?;
     let result = match operation {
         OP_ADD => a + b,
         OP_SUB => a.checked_sub(b).ok_or_else(|| ctx.error(Err::CalcNeg, format!("{a} - {b} is negative")))?,

@@ -103,9 +103,19 @@ pub(super) fn str_len(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     }
 }
 
+super::signature::layout! {
+    static PART: PartArgs = "StrPart" { ch_pos: "ChPos", len: "Len" }
+    static FIND: FindArgs = "StrFind" { ch_pos: "ChPos", set: "Set", not_in_set: "NotInSet" }
+    static MATCH: MatchArgs = "StrMatch" { ch_pos: "ChPos", pattern: "Pattern" }
+    static MEMB: MembArgs = "StrMemb" { ch_pos: "ChPos", set: "Set" }
+    static MAP: MapArgs = "StrMap" { from: "FromMap", to: "ToMap" }
+    static ORDER: OrderArgs = "StrOrder" { str2: "Str2", order: "Order" }
+}
+
 pub(super) fn str_part(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *PART;
     let source = ctx.str_arg(&args[0])?;
-    let (start, len) = (ctx.num(&args[1])?, ctx.num(&args[2])?);
+    let (start, len) = (ctx.num(&args[at.ch_pos])?, ctx.num(&args[at.len])?);
     part(&source, start, len).map(Some).map_err(|e| str_error(ctx, e))
 }
 
@@ -121,9 +131,10 @@ pub(super) fn part(source: &str, start: f64, len: f64) -> Result<Value, StrError
 }
 
 pub(super) fn str_find(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (source, set) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[2])?);
-    let start = ctx.num(&args[1])?;
-    find(&source, start, &set, present(args.get(3))).map(Some).map_err(|e| str_error(ctx, e))
+    let at = *FIND;
+    let (source, set) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[at.set])?);
+    let start = ctx.num(&args[at.ch_pos])?;
+    find(&source, start, &set, present(args.get(at.not_in_set))).map(Some).map_err(|e| str_error(ctx, e))
 }
 
 /// `StrFind(Str, ChPos, Set [\NotInSet])` on plain values.
@@ -136,9 +147,10 @@ pub(super) fn find(source: &str, start: f64, set: &str, not_in_set: bool) -> Res
 }
 
 pub(super) fn str_match(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (source, pattern) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[2])?);
+    let at = *MATCH;
+    let (source, pattern) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[at.pattern])?);
     with_chars(&source, |s| {
-        let start = position(ctx.num(&args[1])?, s.len(), true).map_err(|e| str_error(ctx, e))?;
+        let start = position(ctx.num(&args[at.ch_pos])?, s.len(), true).map_err(|e| str_error(ctx, e))?;
         with_chars(&pattern, |pattern| {
             let found = (start - 1..s.len()).find(|&i| s[i..].starts_with(pattern)).map(|i| i + 1);
             Ok(Some(Value::Num(found.unwrap_or(s.len() + 1) as f32)))
@@ -147,15 +159,17 @@ pub(super) fn str_match(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 }
 
 pub(super) fn str_memb(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (source, set) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[2])?);
+    let at = *MEMB;
+    let (source, set) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[at.set])?);
     with_chars(&source, |s| {
-        let pos = position(ctx.num(&args[1])?, s.len(), false).map_err(|e| str_error(ctx, e))?;
+        let pos = position(ctx.num(&args[at.ch_pos])?, s.len(), false).map_err(|e| str_error(ctx, e))?;
         Ok(Some(Value::Bool(set.contains(s[pos - 1]))))
     })
 }
 
 pub(super) fn str_map(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (source, from, to) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[1])?, ctx.str_arg(&args[2])?);
+    let at = *MAP;
+    let (source, from, to) = (ctx.str_arg(&args[0])?, ctx.str_arg(&args[at.from])?, ctx.str_arg(&args[at.to])?);
     Ok(Some(map(&source, &from, &to)))
 }
 
@@ -232,7 +246,9 @@ fn literal(value: &Value) -> String {
 /// characters sort by their position in Order (characters missing from Order sort
 /// after all listed ones, by code); a prefix sorts first.
 pub(super) fn str_order(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let (a, b, order) = (chars(&ctx.string(&args[0])?), chars(&ctx.string(&args[1])?), chars(&ctx.string(&args[2])?));
+    let at = *ORDER;
+    let (a, b) = (chars(&ctx.string(&args[0])?), chars(&ctx.string(&args[at.str2])?));
+    let order = chars(&ctx.string(&args[at.order])?);
     let rank = |c: char| order.iter().position(|&o| o == c).map_or(order.len() + c as usize, |p| p);
     for (x, y) in a.iter().zip(&b) {
         if x != y {

@@ -65,10 +65,16 @@ fn type_error(ctx: &Ctx<'_>, name: &str) -> RapidError {
     ctx.error(Err::SymbolType, format!("`{name}` is not of the type of the Value argument"))
 }
 
+super::signature::layout! {
+    /// `\TaskRef | \TaskName`: `other_task` reads the pair from the first.
+    static DATA_VAL: DataValArgs = "GetDataVal" | "SetDataVal" { task_ref: "TaskRef", value: "Value" }
+}
+
 /// `GetDataVal Object [\Block]|[\TaskRef]|[\TaskName] Value`: copies the named data
 /// into Value, which must be of the same type (else ERR_SYMBOL_TYPE).
 pub(super) fn get_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let found = match super::tasking::other_task(ctx, args, 2)? {
+    let at = *DATA_VAL;
+    let found = match super::tasking::other_task(ctx, args, at.task_ref)? {
         Some(task) => {
             let name = ctx.string(&args[0])?;
             match super::tasking::ask(ctx, Request::ReadData { task, name: name.clone() }) {
@@ -82,7 +88,7 @@ pub(super) fn get_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
             ctx.storage.globals.get(named.global).cloned().ok_or_else(|| RapidError::fatal("a data slot is missing"))?
         }
     };
-    let target = &args[4];
+    let target = &args[at.value];
     if !same_type(&found, &ctx.value(target)?) {
         return Err(type_error(ctx, &ctx.string(&args[0])?));
     }
@@ -93,7 +99,8 @@ pub(super) fn get_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `SetDataVal Object [\Block]|[\TaskRef]|[\TaskName] Value`: writes Value into the
 /// named data. A constant cannot be written (ERR_SYM_ACCESS).
 pub(super) fn set_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    if let Some(task) = super::tasking::other_task(ctx, args, 2)? {
+    let at = *DATA_VAL;
+    if let Some(task) = super::tasking::other_task(ctx, args, at.task_ref)? {
         return set_in_other_task(ctx, args, task);
     }
     let named = lookup(ctx, args)?;
@@ -101,7 +108,7 @@ pub(super) fn set_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if named.constant {
         return Err(ctx.error(Err::SymAccess, format!("`{name}` is a constant")));
     }
-    let value = ctx.value(&args[4])?;
+    let value = ctx.value(&args[at.value])?;
     let current = ctx.storage.globals.get(named.global).ok_or_else(|| RapidError::fatal("a data slot is missing"))?;
     if !same_type(current, &value) {
         return Err(type_error(ctx, &name));
@@ -115,7 +122,7 @@ pub(super) fn set_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// SetDataVal in another task, through the controller.
 fn set_in_other_task(ctx: &mut Ctx<'_>, args: &[Value], task: usize) -> Res {
     let name = ctx.string(&args[0])?;
-    let value = ctx.value(&args[4])?;
+    let value = ctx.value(&args[DATA_VAL.value])?;
     match super::tasking::ask(ctx, Request::WriteData { task, name: name.clone(), value }) {
         None | Some(Reply::Done) => Ok(None),
         Some(Reply::Constant) => Err(ctx.error(Err::SymAccess, format!("`{name}` is a constant"))),

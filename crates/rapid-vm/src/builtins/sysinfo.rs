@@ -114,13 +114,17 @@ fn get_next_option(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(Value::Bool(true)))
 }
 
+crate::builtins::signature::layout! {
+    static NEXT_PRODUCT: NextProductArgs = "GetNextProduct" { version: "Version" }
+}
+
 /// `GetNextProduct(ListNumber, Name [\Version])`: as GetNextOption, for products.
 fn get_next_product(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let index = next_index(ctx, &args[0])?;
     let Some((name, version)) = PRODUCTS.get(index) else { return Ok(Some(Value::Bool(false))) };
     ctx.store(&args[1], Value::Str((*name).into()))?;
-    if present(args.get(2)) {
-        ctx.store(&args[2], Value::Str((*version).into()))?;
+    if present(args.get(NEXT_PRODUCT.version)) {
+        ctx.store(&args[NEXT_PRODUCT.version], Value::Str((*version).into()))?;
     }
     Ok(Some(Value::Bool(true)))
 }

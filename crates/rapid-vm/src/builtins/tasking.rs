@@ -301,6 +301,12 @@ impl TaskingState {
     }
 }
 
+crate::builtins::signature::layout! {
+    static WAIT_SYNC_TASK: WaitSyncTaskArgs = "WaitSyncTask" {
+        in_pos: "InPos", sync_id: "SyncID", task_list: "TaskList", time_out: "TimeOut",
+    }
+}
+
 /// `WaitSyncTask [\InPos] SyncID, TaskList [\TimeOut]`: waits until every task of the
 /// list has reached the sync point of this name (the syncident's data name, the same
 /// in every task). Tasks of the list that are not executing are not waited for. With
@@ -309,10 +315,11 @@ impl TaskingState {
 // uncertain: a task in the list the system does not have raises ERR_TASKNAME.
 // uncertain: `\InPos` in a task that moves no robot (no motion task) waits for nothing.
 fn wait_sync_task(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let point = sync_point(ctx, 1)?;
-    let list = task_list(ctx, &args[2])?;
-    let timeout = ctx.opt_num(args.get(3))?;
-    if present(args.first()) && !super::syncmove::robot_stands(ctx)? {
+    let at = *WAIT_SYNC_TASK;
+    let point = sync_point(ctx, at.sync_id)?;
+    let list = task_list(ctx, &args[at.task_list])?;
+    let timeout = ctx.opt_num(args.get(at.time_out))?;
+    if present(args.get(at.in_pos)) && !super::syncmove::robot_stands(ctx)? {
         return Ok(None);
     }
     meet(

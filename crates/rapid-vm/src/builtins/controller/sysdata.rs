@@ -135,12 +135,17 @@ fn value_in(ctx: &mut Ctx<'_>, task: &str, kind: usize) -> Result<Option<(Rc<str
     }
 }
 
+crate::builtins::signature::layout! {
+    static GET_SYS_DATA: GetSysDataArgs = "GetSysData" { dest: "DestObject", object_name: "ObjectName" }
+}
+
 /// `GetSysData [\TaskRef | \TaskName] DestObject [\ObjectName]`: copies the active
 /// tool, work object or payload (the type of DestObject says which) into DestObject,
 /// and its name into ObjectName.
 pub(crate) fn get_sys_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *GET_SYS_DATA;
     let owner = data_owner(ctx, args)?;
-    let dest = ctx.value(&args[2])?;
+    let dest = ctx.value(&args[at.dest])?;
     let kind = kind_of(ctx, &dest).ok_or_else(|| not_sysdata(ctx, "DestObject"))?;
     let (name, value) = match owner {
         Some(task) => match value_in(ctx, &task, kind)? {
@@ -153,9 +158,9 @@ pub(crate) fn get_sys_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
             (name, ctx.storage.get(&place).map_err(|(e, m)| ctx.error(e, m))?.clone())
         }
     };
-    ctx.store(&args[2], value)?;
-    if present(args.get(3)) {
-        ctx.store(&args[3], Value::Str(name))?;
+    ctx.store(&args[at.dest], value)?;
+    if present(args.get(at.object_name)) {
+        ctx.store(&args[at.object_name], Value::Str(name))?;
     }
     Ok(None)
 }

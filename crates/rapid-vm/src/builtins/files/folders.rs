@@ -143,6 +143,14 @@ pub(super) fn copy_file(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
+crate::builtins::signature::layout! {
+    static IS_FILE: IsFileArgs = "IsFile" {
+        directory: "Directory", fifo: "Fifo", reg_file: "RegFile", block_spec: "BlockSpec", char_spec: "CharSpec",
+    }
+    static FS_SIZE: FsSizeArgs = "FSSize" { total: "Total", kbyte: "Kbyte", mbyte: "Mbyte" }
+    static FILE_TIME: FileTimeArgs = "FileTimeDnum" { access_time: "AccessTime", stat_c_time: "StatCTime", str_dig: "StrDig" }
+}
+
 /// `IsFile(Path [\Directory] | [\Fifo] | [\RegFile] | [\BlockSpec] | [\CharSpec])`:
 /// whether the path exists, or, with a kind, whether it is of that kind.
 ///
@@ -150,23 +158,25 @@ pub(super) fn copy_file(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// public RAPID programs test `IsFile(dir \Directory)` and make the missing directory in
 /// their ERR_FILEACC handler, while `IsFile(file)` alone answers FALSE for a new file.
 pub(super) fn is_file(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *IS_FILE;
     let (text, path, _) = path_arg(ctx, &args[0])?;
-    let kind_given = args.get(1..6).unwrap_or_default().iter().any(|a| present(Some(a)));
+    let kinds = [at.directory, at.fifo, at.reg_file, at.block_spec, at.char_spec];
+    let kind_given = kinds.iter().any(|&k| present(args.get(k)));
     let meta = match std::fs::metadata(&path) {
         Ok(meta) => meta,
         Err(_) if !kind_given => return Ok(Some(Value::Bool(false))),
         Err(e) => return Err(access(ctx, format!("`{text}`: {e}"))),
     };
     let kind = meta.file_type();
-    let answer = if present(args.get(1)) {
+    let answer = if present(args.get(at.directory)) {
         kind.is_dir()
-    } else if present(args.get(2)) {
+    } else if present(args.get(at.fifo)) {
         special(&kind, Special::Fifo)
-    } else if present(args.get(3)) {
+    } else if present(args.get(at.reg_file)) {
         kind.is_file()
-    } else if present(args.get(4)) {
+    } else if present(args.get(at.block_spec)) {
         special(&kind, Special::Block)
-    } else if present(args.get(5)) {
+    } else if present(args.get(at.char_spec)) {
         special(&kind, Special::Char)
     } else {
         true
@@ -214,10 +224,11 @@ pub(super) fn fs_size(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         return Err(access(ctx, format!("`{text}` does not exist")));
     }
     let (total, free) = space(&path).map_err(|e| access(ctx, format!("the file system of `{text}`: {e}")))?;
-    let bytes = if present(args.get(1)) { total } else { free };
-    let divisor = if present(args.get(4)) {
+    let at = *FS_SIZE;
+    let bytes = if present(args.get(at.total)) { total } else { free };
+    let divisor = if present(args.get(at.mbyte)) {
         1024 * 1024
-    } else if present(args.get(3)) {
+    } else if present(args.get(at.kbyte)) {
         1024
     } else {
         1
@@ -265,15 +276,16 @@ fn time_result(ctx: &mut Ctx<'_>, seconds: f64, strdig: Option<&Value>) -> Res {
 pub(super) fn file_time_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (text, path, _) = path_arg(ctx, &args[0])?;
     let meta = std::fs::metadata(&path).map_err(|e| access(ctx, format!("`{text}`: {e}")))?;
-    let seconds = if present(args.get(2)) {
+    let at = *FILE_TIME;
+    let seconds = if present(args.get(at.access_time)) {
         meta.accessed().map(epoch_seconds)
-    } else if present(args.get(3)) {
+    } else if present(args.get(at.stat_c_time)) {
         status_change(&meta)
     } else {
         meta.modified().map(epoch_seconds)
     }
     .map_err(|e| access(ctx, format!("`{text}`: {e}")))?;
-    time_result(ctx, seconds, args.get(4))
+    time_result(ctx, seconds, args.get(at.str_dig))
 }
 
 #[cfg(unix)]

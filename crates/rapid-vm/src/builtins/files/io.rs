@@ -27,17 +27,30 @@ const EOF_STR: &str = "EOF";
 /// A rawbytes holds at most this many bytes (ReadRawBytes reads at most that).
 const RAWBYTES_CAPACITY: usize = 1024;
 
+crate::builtins::signature::layout! {
+    static WRITE: WriteArgs = "Write" { num: "Num", dnum: "Dnum", no_new_line: "NoNewLine" }
+    static READ_NUM: ReadNumArgs = "ReadNum" { delim: "Delim", time: "Time" }
+    static READ_STR: ReadStrArgs = "ReadStr" {
+        delim: "Delim", remove_cr: "RemoveCR", discard_headers: "DiscardHeaders", time: "Time", line: "Line",
+    }
+    /// The binary reads after IODevice and one more argument: only `\Time` is looked up.
+    static READ_TIMED: ReadTimedArgs = "ReadStrBin" | "ReadAnyBin" | "ReadRawBytes" { time: "Time" }
+    static WRITE_RAW: WriteRawArgs = "WriteRawBytes" { no_of_bytes: "NoOfBytes" }
+}
+
 /// `Write IODevice String [\Num] | [\Bool] | [\Pos] | [\Orient] | [\Dnum] [\NoNewLine]`:
 /// the text, the value in the format TPWrite uses, and a line feed unless `\NoNewLine`.
 pub(super) fn write(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let text = ctx.str_arg(&args[1])?;
     let mut bytes = Vec::with_capacity(text.len() + 24);
     push_latin1(&mut bytes, &text);
-    let values = args.get(2..7).unwrap_or_default();
+    let at = *WRITE;
+    // \Num | \Bool | \Pos | \Orient | \Dnum: the alternatives are declared side by side.
+    let values = args.get(at.num..=at.dnum).unwrap_or_default();
     if let Some(value) = values.iter().find(|a| present(Some(a))) {
         push_latin1(&mut bytes, &crate::builtins::pendant::value_text(ctx, &ctx.value(value)?));
     }
-    if !present(args.get(7)) {
+    if !present(args.get(at.no_new_line)) {
         bytes.push(b'\n');
     }
     with_file(ctx, &args[0], Need::Write, |file| file.write_bytes(&bytes).map_err(|e| io_fault("Write failed", &e)))?;
@@ -47,8 +60,8 @@ pub(super) fn write(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `ReadNum(IODevice [\Delim] [\Time])`: the next number; EOF_NUM at end of file;
 /// ERR_RCVDATA when the field is not a number.
 pub(super) fn read_num(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let delims = delimiters(opt_string(ctx, args.get(1))?.as_deref());
-    check_time(ctx, args.get(2))?;
+    let delims = delimiters(opt_string(ctx, args.get(READ_NUM.delim))?.as_deref());
+    check_time(ctx, args.get(READ_NUM.time))?;
     let field = with_file(ctx, &args[0], Need::Read, |file| {
         read_field(file, &delims, true).map_err(|e| io_fault("ReadNum failed", &e))
     })?;
@@ -63,12 +76,13 @@ pub(super) fn read_num(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// to the next delimiter (at most 80 characters); "EOF" at end of file. `\Line:=n` reads
 /// from the start of line n of the file.
 pub(super) fn read_str(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let delims = delimiters(opt_string(ctx, args.get(1))?.as_deref());
-    let remove_cr = present(args.get(2));
-    let discard = present(args.get(3));
-    check_time(ctx, args.get(4))?;
+    let at = *READ_STR;
+    let delims = delimiters(opt_string(ctx, args.get(at.delim))?.as_deref());
+    let remove_cr = present(args.get(at.remove_cr));
+    let discard = present(args.get(at.discard_headers));
+    check_time(ctx, args.get(at.time))?;
     // uncertain: \Line counts lines from the start of the file, 1 being the first.
-    let line = match ctx.opt_num(args.get(5))? {
+    let line = match ctx.opt_num(args.get(at.line))? {
         Some(n) if n.fract() == 0.0 && n >= 1.0 => Some(n as u64),
         Some(n) => return Err(ctx.error(Err::ArgValue, format!("\\Line:={n} is not a line number"))),
         None => None,
@@ -111,7 +125,7 @@ pub(super) fn read_str_bin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if count.fract() != 0.0 || !(1.0..=MAX_STRING_CHARS as f64).contains(&count) {
         return Err(ctx.error(Err::ArgValue, format!("NoOfChars {count} is not in 1..80")));
     }
-    check_time(ctx, args.get(2))?;
+    check_time(ctx, args.get(READ_TIMED.time))?;
     let bytes = with_file(ctx, &args[0], Need::Read, |file| {
         file.read_bytes(count as usize).map_err(|e| io_fault("ReadStrBin failed", &e))
     })?;
@@ -119,12 +133,16 @@ pub(super) fn read_str_bin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(Value::Str(text.into())))
 }
 
+crate::builtins::signature::layout! {
+    static WRITE_BIN: WriteBinArgs = "WriteBin" { buffer: "Buffer", n_char: "NChar" }
+}
+
 /// `WriteBin IODevice Buffer NChar`: the first NChar numbers of Buffer, each a byte.
 pub(super) fn write_bin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let Value::Array(buffer) = ctx.value(&args[1])? else {
+    let Value::Array(buffer) = ctx.value(&args[WRITE_BIN.buffer])? else {
         return Err(ctx.error(Err::ArgValue, "Buffer must be an array of num"));
     };
-    let count = ctx.num(&args[2])?;
+    let count = ctx.num(&args[WRITE_BIN.n_char])?;
     if count.fract() != 0.0 || count < 0.0 || count > buffer.elems.len() as f64 {
         // uncertain: the manual names no error for NChar beyond the array.
         return Err(ctx.error(
@@ -169,7 +187,7 @@ pub(super) fn write_any_bin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// ERR_RANYBIN_EOF when the file ends before the whole value is read; ERR_RANYBIN_CHK
 /// on a checksum error (or data of another type than Data).
 pub(super) fn read_any_bin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    check_time(ctx, args.get(2))?;
+    check_time(ctx, args.get(READ_TIMED.time))?;
     let like = ctx.value(&args[1])?;
     let value = with_file(ctx, &args[0], Need::Read, |file| {
         let short = || (Err::AnyBinEof, "end of file before the whole value was read".to_string());
@@ -206,7 +224,7 @@ fn raw_bytes(ctx: &Ctx<'_>, arg: &Value) -> Result<(Vec<u8>, Opaque), RapidError
 /// first NoOfBytes of them).
 pub(super) fn write_raw_bytes(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (bytes, _) = raw_bytes(ctx, &args[1])?;
-    let count = match ctx.opt_num(args.get(2))? {
+    let count = match ctx.opt_num(args.get(WRITE_RAW.no_of_bytes))? {
         None => bytes.len(),
         Some(n) if n.fract() == 0.0 && n >= 0.0 && n <= bytes.len() as f64 => n as usize,
         // uncertain: the error for more bytes than RawData holds (rawbytes family: ERR_OUTOFBND).
@@ -230,7 +248,7 @@ pub(super) fn write_raw_bytes(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // on ERR_RANYBIN_EOF (docs/semantics.md). uncertain: whether a last, short chunk already
 // raises the error on the controller; we deliver it and raise at the next read.
 pub(super) fn read_raw_bytes(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    check_time(ctx, args.get(2))?;
+    check_time(ctx, args.get(READ_TIMED.time))?;
     let (_, mut shell) = raw_bytes(ctx, &args[1])?;
     let bytes = with_file(ctx, &args[0], Need::Read, |file| {
         file.read_bytes(RAWBYTES_CAPACITY).map_err(|e| io_fault("ReadRawBytes failed", &e))

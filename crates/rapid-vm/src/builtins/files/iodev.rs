@@ -160,11 +160,18 @@ pub(super) fn with_file<T>(
     result.map_err(|f| fault(ctx, f))
 }
 
+crate::builtins::signature::layout! {
+    static OPEN: OpenArgs = "Open" {
+        file: "File", io_device: "IODevice", read: "Read", write: "Write", append: "Append", bin: "Bin",
+    }
+}
+
 /// `Open Object [\File] IODevice [\Read] | [\Write] | [\Append] [\Bin]`.
 pub(super) fn open(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *OPEN;
     let object = ctx.string(&args[0])?;
-    let file_name = opt_string(ctx, args.get(1))?;
-    let (shell, handle) = handle_of(ctx, &args[2])?;
+    let file_name = opt_string(ctx, args.get(at.file))?;
+    let (shell, handle) = handle_of(ctx, &args[at.io_device])?;
     // uncertain: opening an iodev that is already open; we raise ERR_FILEOPEN.
     if handle.is_some_and(|h| ctx.resources.files.files.contains_key(&h)) {
         return Err(ctx.error(Err::FileOpen, "the I/O device is already open; Close it first"));
@@ -175,8 +182,12 @@ pub(super) fn open(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         let limit = rapid_limits::OPEN_FILES;
         return Err(ctx.error(Err::FileOpen, format!("at most {limit} files may be open at once; Close one first")));
     }
-    let (read, write, append, bin) =
-        (present(args.get(3)), present(args.get(4)), present(args.get(5)), present(args.get(6)));
+    let (read, write, append, bin) = (
+        present(args.get(at.read)),
+        present(args.get(at.write)),
+        present(args.get(at.append)),
+        present(args.get(at.bin)),
+    );
     let path_text = super::devices::join_object(&object, file_name.as_deref());
     let resolved = resolve(ctx, &path_text, Err::FileOpen)?;
     // Only regular files: a directory cannot be read as a file, and opening a FIFO or a
@@ -218,7 +229,7 @@ pub(super) fn open(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         .files
         .files
         .insert(handle, OpenFile { file, readable, writable, buf: Vec::new(), pos: 0, pending: Vec::new() });
-    set_handle(ctx, &args[2], shell, OpaqueState::Handle(handle))
+    set_handle(ctx, &args[at.io_device], shell, OpaqueState::Handle(handle))
         .inspect_err(|_| {
             ctx.resources.files.files.remove(&handle);
         })

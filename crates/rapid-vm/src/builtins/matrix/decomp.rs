@@ -24,11 +24,20 @@ use crate::value::Value;
 /// At most this many QR sweeps in the SVD (far more than any matrix a program holds needs).
 const SVD_MAX_ITERATIONS: usize = 100_000;
 
+crate::builtins::signature::layout! {
+    static INVERSE: InverseArgs = "MatrixInverse" { a_n: "A_n", a_inv: "AInv" }
+    static SOLVE: SolveArgs = "MatrixSolve" { a_m: "A_m", a_n: "A_n", b: "b", x: "x" }
+    static SOLVE_QR: SolveQrArgs = "MatrixSolveQR" { a_m: "A_m", a_n: "A_n", q: "Q", r: "R" }
+    static SVD_ARGS: SvdArgs = "MatrixSVD" { a_m: "A_m", a_n: "A_n", u: "U", s: "S", v: "V", econ: "Econ" }
+}
+
 /// `MatrixInverse A [\A_n] AInv`: AInv := the inverse of the square matrix A (or of its
 /// top-left n x n block).
 pub(super) fn matrix_inverse(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let a = read_matrix(ctx, &args[0], args.get(1), args.get(1), "A")?;
-    if !present(args.get(1)) && a.nrows() != a.ncols() {
+    let at = *INVERSE;
+    // \A_n gives both sides of the square block.
+    let a = read_matrix(ctx, &args[0], args.get(at.a_n), args.get(at.a_n), "A")?;
+    if !present(args.get(at.a_n)) && a.nrows() != a.ncols() {
         let (m, n) = (a.nrows(), a.ncols());
         return Err(ctx.error(Err::ArraySize, format!("MatrixInverse needs a square matrix, A is {m}x{n}")));
     }
@@ -36,23 +45,24 @@ pub(super) fn matrix_inverse(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let Some(inverse) = a.full_piv_lu().try_inverse() else {
         return Err(singular(ctx));
     };
-    store_matrix(ctx, &args[2], &inverse, "AInv")?;
+    store_matrix(ctx, &args[at.a_inv], &inverse, "AInv")?;
     Ok(None)
 }
 
 /// `MatrixSolve A [\A_m] [\A_n] b x`: solves A x = b; for m > n the least-squares
 /// solution (smallest |A x - b|).
 pub(super) fn matrix_solve(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let a = read_matrix(ctx, &args[0], args.get(1), args.get(2), "A")?;
+    let at = *SOLVE;
+    let a = read_matrix(ctx, &args[0], args.get(at.a_m), args.get(at.a_n), "A")?;
     let (m, n) = (a.nrows(), a.ncols());
     if m < n {
         return Err(ctx.error(Err::ArraySize, format!("MatrixSolve needs m >= n, A is {m}x{n}")));
     }
-    let b = DVector::from_vec(read_vector(ctx, &args[3], m, "b")?);
+    let b = DVector::from_vec(read_vector(ctx, &args[at.b], m, "b")?);
     check_full_rank(ctx, &a)?;
     let x = if m == n { a.full_piv_lu().solve(&b) } else { least_squares(a, b) };
     let Some(x) = x else { return Err(singular(ctx)) };
-    store_vector(ctx, &args[4], x.as_slice(), "x")?;
+    store_vector(ctx, &args[at.x], x.as_slice(), "x")?;
     Ok(None)
 }
 
@@ -68,10 +78,11 @@ fn least_squares(a: DMatrix<f64>, mut b: DVector<f64>) -> Option<DVector<f64>> {
 
 /// `MatrixSolveQR A [\A_m] [\A_n] Q R`: A = Q R.
 pub(super) fn matrix_solve_qr(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let a = read_matrix(ctx, &args[0], args.get(1), args.get(2), "A")?;
+    let at = *SOLVE_QR;
+    let a = read_matrix(ctx, &args[0], args.get(at.a_m), args.get(at.a_n), "A")?;
     let (q, r) = full_qr(&a);
-    store_matrix(ctx, &args[3], &q, "Q")?;
-    store_matrix(ctx, &args[4], &r, "R")?;
+    store_matrix(ctx, &args[at.q], &q, "Q")?;
+    store_matrix(ctx, &args[at.r], &r, "R")?;
     Ok(None)
 }
 
@@ -100,15 +111,16 @@ fn full_qr(a: &DMatrix<f64>) -> (DMatrix<f64>, DMatrix<f64>) {
 
 /// `MatrixSVD A [\A_m] [\A_n] U S V [\Econ]`: A = U diag(S) V^T.
 pub(super) fn matrix_svd(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let a = read_matrix(ctx, &args[0], args.get(1), args.get(2), "A")?;
+    let at = *SVD_ARGS;
+    let a = read_matrix(ctx, &args[0], args.get(at.a_m), args.get(at.a_n), "A")?;
     let (m, n) = (a.nrows(), a.ncols());
     let (u, s, v) = thin_svd(ctx, a)?;
-    let econ = present(args.get(6));
+    let econ = present(args.get(at.econ));
     let u = if econ && m > n { u } else { complete_basis(&u) };
     let v = complete_basis(&v);
-    store_matrix(ctx, &args[3], &u, "U")?;
-    store_vector(ctx, &args[4], s.as_slice(), "S")?;
-    store_matrix(ctx, &args[5], &v, "V")?;
+    store_matrix(ctx, &args[at.u], &u, "U")?;
+    store_vector(ctx, &args[at.s], s.as_slice(), "S")?;
+    store_matrix(ctx, &args[at.v], &v, "V")?;
     Ok(None)
 }
 

@@ -50,17 +50,24 @@ struct Fit {
     index_worst: usize,
 }
 
+crate::builtins::signature::layout! {
+    static FIT_CIRCLE: FitCircleArgs = "FitCircle" {
+        center: "Center", radius: "Radius", normal: "Normal", rms: "RMS", max_err: "MaxErr", index_worst: "IndexWorst",
+    }
+}
+
 pub(super) fn fit_circle(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *FIT_CIRCLE;
     let points = read_points(ctx, args)?;
     let fit = fit(&points).ok_or_else(|| ctx.error(Err::CalcDivZero, "the points do not define a circle"))?;
     let center = pos(ctx, fit.center)?;
     let normal = pos(ctx, fit.normal)?;
-    ctx.store(&args[2], center)?;
-    ctx.store(&args[3], num(ctx, fit.radius)?)?;
-    ctx.store(&args[4], normal)?;
-    let extras = [fit.rms, fit.max_err, (fit.index_worst + 1) as f64];
-    for (arg, value) in args.iter().skip(5).zip(extras) {
-        if present(Some(arg)) {
+    ctx.store(&args[at.center], center)?;
+    ctx.store(&args[at.radius], num(ctx, fit.radius)?)?;
+    ctx.store(&args[at.normal], normal)?;
+    let extras = [(at.rms, fit.rms), (at.max_err, fit.max_err), (at.index_worst, (fit.index_worst + 1) as f64)];
+    for (slot, value) in extras {
+        if let Some(arg) = args.get(slot).filter(|a| present(Some(a))) {
             let value = num(ctx, value)?;
             ctx.store(arg, value)?;
         }

@@ -43,6 +43,13 @@ pub(super) static FAMILY: Family = Family {
     ],
 };
 
+super::signature::layout! {
+    static ELEMENTWISE: ElementwiseArgs = "MatrixAdd" | "MatrixSub" { a_m: "A_m", a_n: "A_n", b: "B", c: "C" }
+    static MULT: MultArgs = "MatrixMult" { a_m: "A_m", a_n: "A_n", b: "B", scalar: "Scalar", c: "C" }
+    static TRANSPOSE: TransposeArgs = "MatrixTranspose" { a_m: "A_m", a_n: "A_n", a_t: "AT" }
+    static RESET: ResetArgs = "MatrixReset" { a_m: "A_m", a_n: "A_n" }
+}
+
 /// `MatrixAdd A [\A_m] [\A_n] B C`: C := A + B, element by element.
 fn matrix_add(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     elementwise(ctx, args, |a, b| a + b)
@@ -54,20 +61,22 @@ fn matrix_sub(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 }
 
 fn elementwise(ctx: &mut Ctx<'_>, args: &[Value], op: fn(f64, f64) -> f64) -> Res {
-    let a = read_matrix(ctx, &args[0], args.get(1), args.get(2), "A")?;
-    let b = read_block(ctx, &args[3], a.nrows(), a.ncols(), "B")?;
+    let at = *ELEMENTWISE;
+    let a = read_matrix(ctx, &args[0], args.get(at.a_m), args.get(at.a_n), "A")?;
+    let b = read_block(ctx, &args[at.b], a.nrows(), a.ncols(), "B")?;
     let c = a.zip_map(&b, op);
-    store_matrix(ctx, &args[4], &c, "C")?;
+    store_matrix(ctx, &args[at.c], &c, "C")?;
     Ok(None)
 }
 
 /// `MatrixMult A [\A_m] [\A_n] B | Scalar C`: C := A * B (B has as many rows as the
 /// block of A has columns; all of B's columns are used), or C := Scalar * A.
 fn matrix_mult(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let a = read_matrix(ctx, &args[0], args.get(1), args.get(2), "A")?;
+    let at = *MULT;
+    let a = read_matrix(ctx, &args[0], args.get(at.a_m), args.get(at.a_n), "A")?;
     // B and Scalar are alternatives: whichever was passed (the compiler binds a
     // positional argument by its type and rank; a value of unknown shape goes to B).
-    let operand = if super::present(args.get(4)) { &args[4] } else { &args[3] };
+    let operand = if super::present(args.get(at.scalar)) { &args[at.scalar] } else { &args[at.b] };
     let c = match ctx.value(operand)? {
         Value::Array(b) => {
             let (rows, cols) = (a.ncols(), b.dims[1] as usize);
@@ -75,20 +84,22 @@ fn matrix_mult(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         }
         _ => a * ctx.num(operand)?,
     };
-    store_matrix(ctx, &args[5], &c, "C")?;
+    store_matrix(ctx, &args[at.c], &c, "C")?;
     Ok(None)
 }
 
 /// `MatrixTranspose A [\A_m] [\A_n] AT`: AT := the transpose of A.
 fn matrix_transpose(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let a = read_matrix(ctx, &args[0], args.get(1), args.get(2), "A")?;
-    store_matrix(ctx, &args[3], &a.transpose(), "AT")?;
+    let at = *TRANSPOSE;
+    let a = read_matrix(ctx, &args[0], args.get(at.a_m), args.get(at.a_n), "A")?;
+    store_matrix(ctx, &args[at.a_t], &a.transpose(), "AT")?;
     Ok(None)
 }
 
 /// `MatrixReset A [\A_m] [\A_n]`: sets the block of A to zero.
 fn matrix_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let a = read_matrix(ctx, &args[0], args.get(1), args.get(2), "A")?;
+    let at = *RESET;
+    let a = read_matrix(ctx, &args[0], args.get(at.a_m), args.get(at.a_n), "A")?;
     store_matrix(ctx, &args[0], &DMatrix::zeros(a.nrows(), a.ncols()), "A")?;
     Ok(None)
 }

@@ -26,6 +26,19 @@ type Res = Result<Option<Value>, RapidError>;
 const MIN_TARGETS: f64 = 4.0;
 const MAX_TARGETS: f64 = 100.0;
 
+crate::builtins::signature::layout! {
+    static TCP_CALIB: TcpCalibArgs = "MToolTCPCalib" | "SToolTCPCalib" {
+        tool: "Tool", max_err: "MaxErr", mean_err: "MeanErr",
+    }
+    static ROT_CALIB: RotCalibArgs = "MToolRotCalib" | "SToolRotCalib" { x_pos: "XPos", tool: "Tool" }
+    static AXIS_FRAME: AxisFrameArgs = "CalcRotAxisFrame" {
+        list: "TargetList", count: "TargetsInList", max_err: "MaxErr", mean_err: "MeanErr",
+    }
+    static AXIS_FRAME_Z: AxisFrameZArgs = "CalcRotAxFrameZ" {
+        list: "TargetList", count: "TargetsInList", positive: "PositiveZPoint", max_err: "MaxErr", mean_err: "MeanErr",
+    }
+}
+
 /// A tool calibration that cannot be done stops execution: the manual names no
 /// error to catch.
 // uncertain: the controller's reaction to unsuitable approach positions (an event
@@ -99,12 +112,13 @@ fn store_errors(ctx: &mut Ctx<'_>, max: &Value, mean: &Value, errs: (f64, f64)) 
 /// robot-held tool from four jointtargets where it touched one fixed point; its
 /// orientation is kept.
 pub(crate) fn m_tool_tcp_calib(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *TCP_CALIB;
     let poses = flange_poses(ctx, &args[..4])?;
-    let tool = tool_of(ctx, &args[4], true)?;
+    let tool = tool_of(ctx, &args[at.tool], true)?;
     let fit = tcp_fit(&poses).map_err(|e| calib_failed("MToolTCPCalib", &e))?;
     let q = tframe_of(ctx, &tool)?.rotation.into_inner();
-    store_tframe(ctx, &args[4], &tool, &fit.tcp, &q)?;
-    store_errors(ctx, &args[5], &args[6], (fit.max_err, fit.mean_err))?;
+    store_tframe(ctx, &args[at.tool], &tool, &fit.tcp, &q)?;
+    store_errors(ctx, &args[at.max_err], &args[at.mean_err], (fit.max_err, fit.mean_err))?;
     Ok(None)
 }
 
@@ -112,17 +126,18 @@ pub(crate) fn m_tool_tcp_calib(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// whose TCP is calibrated, from the fixed tip touched at RefTip and seen on the
 /// tool's z axis (ZPos) and x axis (XPos).
 pub(crate) fn m_tool_rot_calib(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *ROT_CALIB;
     let ref_tip = flange_poses(ctx, &args[..1])?[0];
     let z_pos = flange_poses(ctx, &args[1..2])?[0];
-    let x_pos = match args.get(2).filter(|a| present(Some(a))) {
+    let x_pos = match args.get(at.x_pos).filter(|a| present(Some(a))) {
         Some(arg) => Some(flange_poses(ctx, std::slice::from_ref(arg))?[0]),
         None => None,
     };
-    let tool = tool_of(ctx, &args[3], true)?;
+    let tool = tool_of(ctx, &args[at.tool], true)?;
     let tcp = tframe_of(ctx, &tool)?.translation.vector;
     let rotation =
         moving_tool_rotation(&tcp, &ref_tip, &z_pos, x_pos.as_ref()).map_err(|e| calib_failed("MToolRotCalib", &e))?;
-    store_tframe(ctx, &args[3], &tool, &tcp, &rotation.into_inner())
+    store_tframe(ctx, &args[at.tool], &tool, &tcp, &rotation.into_inner())
 }
 
 /// `SToolTCPCalib Pos1, Pos2, Pos3, Pos4, Tool, MaxErr, MeanErr`: the TCP of a
@@ -132,23 +147,25 @@ pub(crate) fn m_tool_rot_calib(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // fit finds the point the poses share, whether they were taught with tool0 or with a
 // calibrated pointer.
 pub(crate) fn s_tool_tcp_calib(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *TCP_CALIB;
     let poses = target_poses(ctx, &args[..4])?;
-    let tool = tool_of(ctx, &args[4], false)?;
+    let tool = tool_of(ctx, &args[at.tool], false)?;
     let fit = tcp_fit(&poses).map_err(|e| calib_failed("SToolTCPCalib", &e))?;
     let q = tframe_of(ctx, &tool)?.rotation.into_inner();
-    store_tframe(ctx, &args[4], &tool, &fit.point, &q)?;
-    store_errors(ctx, &args[5], &args[6], (fit.max_err, fit.mean_err))?;
+    store_tframe(ctx, &args[at.tool], &tool, &fit.point, &q)?;
+    store_errors(ctx, &args[at.max_err], &args[at.mean_err], (fit.max_err, fit.mean_err))?;
     Ok(None)
 }
 
 /// `SToolRotCalib RefTip, ZPos, XPos, Tool`: the TCP and orientation of a stationary
 /// tool from the pointer at its TCP, on its z axis and on its x axis.
 pub(crate) fn s_tool_rot_calib(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *ROT_CALIB;
     let p = target_poses(ctx, &args[..3])?;
-    let tool = tool_of(ctx, &args[3], false)?;
+    let tool = tool_of(ctx, &args[at.tool], false)?;
     let [tip, z, x] = [0, 1, 2].map(|i| p[i].translation.vector);
     let f = stationary_tool_frame(&tip, &z, &x).map_err(|e| calib_failed("SToolRotCalib", &e))?;
-    store_tframe(ctx, &args[3], &tool, &f.translation.vector, &f.rotation.into_inner())
+    store_tframe(ctx, &args[at.tool], &tool, &f.translation.vector, &f.rotation.into_inner())
 }
 
 /// The first `TargetsInList` points of a robtarget array (4..100 of them).
@@ -184,15 +201,17 @@ fn axis_result(ctx: &mut Ctx<'_>, fit: Result<AxisFit, MotionError>, max: &Value
 // uncertain: the system has no external axes; the unit is only checked to exist and
 // the axis is taken from the targets alone.
 pub(crate) fn calc_rot_axis_frame(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *AXIS_FRAME;
     unit_arg(ctx, args, 0)?;
-    let points = axis_points(ctx, &args[2], &args[3])?;
-    axis_result(ctx, rotation_axis_fit(&points, None), &args[4], &args[5])
+    let points = axis_points(ctx, &args[at.list], &args[at.count])?;
+    axis_result(ctx, rotation_axis_fit(&points, None), &args[at.max_err], &args[at.mean_err])
 }
 
 /// `CalcRotAxFrameZ(TargetList, TargetsInList, PositiveZPoint, MaxErr, MeanErr)`:
 /// as CalcRotAxisFrame, with z turned to the side of PositiveZPoint.
 pub(crate) fn calc_rot_ax_frame_z(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let points = axis_points(ctx, &args[0], &args[1])?;
-    let positive = frame::trans_rot(ctx, &ctx.value(&args[2])?)?.0;
-    axis_result(ctx, rotation_axis_fit(&points, Some(&positive)), &args[3], &args[4])
+    let at = *AXIS_FRAME_Z;
+    let points = axis_points(ctx, &args[at.list], &args[at.count])?;
+    let positive = frame::trans_rot(ctx, &ctx.value(&args[at.positive])?)?.0;
+    axis_result(ctx, rotation_axis_fit(&points, Some(&positive)), &args[at.max_err], &args[at.mean_err])
 }

@@ -54,12 +54,24 @@ fn three_point_frame(p: [Vector3<f64>; 3], origin: u8) -> Option<Isometry3<f64>>
     Some(Isometry3::from_parts(Translation3::from(at), rotation))
 }
 
+crate::builtins::signature::layout! {
+    static DEF_FRAME: DefFrameArgs = "DefFrame" { p1: "NewP1", p2: "NewP2", p3: "NewP3", origin: "Origin" }
+    static DEF_D_FRAME: DefDFrameArgs = "DefDFrame" {
+        old1: "OldP1", old2: "OldP2", old3: "OldP3", new1: "NewP1", new2: "NewP2", new3: "NewP3",
+    }
+    static DEF_ACC_FRAME: DefAccFrameArgs = "DefAccFrame" {
+        list_one: "TargetListOne", list_two: "TargetListTwo", count: "TargetsInList", max_err: "MaxErr",
+        mean_err: "MeanErr",
+    }
+}
+
 /// `DefFrame(NewP1, NewP2, NewP3 [\Origin])`: the frame the three points define, in
 /// their own coordinate system.
 // uncertain: an \Origin other than 1, 2 or 3 raises ERR_ARGVALERR.
 pub(crate) fn def_frame(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let points = [point(ctx, &args[0])?, point(ctx, &args[1])?, point(ctx, &args[2])?];
-    let origin = match ctx.opt_num(args.get(3))? {
+    let at = *DEF_FRAME;
+    let points = [point(ctx, &args[at.p1])?, point(ctx, &args[at.p2])?, point(ctx, &args[at.p3])?];
+    let origin = match ctx.opt_num(args.get(at.origin))? {
         None => 1,
         Some(n) if n == 1.0 || n == 2.0 || n == 3.0 => n as u8,
         Some(_) => return Err(ctx.error(Err::ArgValue, "DefFrame \\Origin must be 1, 2 or 3")),
@@ -71,8 +83,9 @@ pub(crate) fn def_frame(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `DefDFrame(OldP1, OldP2, OldP3, NewP1, NewP2, NewP3)`: the displacement D with
 /// NewPi = D · OldPi, from the frames each triple defines (D = F_new · F_old⁻¹).
 pub(crate) fn def_d_frame(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let old = [point(ctx, &args[0])?, point(ctx, &args[1])?, point(ctx, &args[2])?];
-    let new = [point(ctx, &args[3])?, point(ctx, &args[4])?, point(ctx, &args[5])?];
+    let at = *DEF_D_FRAME;
+    let old = [point(ctx, &args[at.old1])?, point(ctx, &args[at.old2])?, point(ctx, &args[at.old3])?];
+    let new = [point(ctx, &args[at.new1])?, point(ctx, &args[at.new2])?, point(ctx, &args[at.new3])?];
     let (Some(f_old), Some(f_new)) = (three_point_frame(old, 1), three_point_frame(new, 1)) else {
         return Err(frame_error(ctx));
     };
@@ -133,13 +146,14 @@ fn rigid_fit(from: &[Vector3<f64>], to: &[Vector3<f64>]) -> Option<Isometry3<f64
 // uncertain: a TargetsInList that is not a whole number in 3..10, or larger than a
 // list, raises ERR_ARGVALERR.
 pub(crate) fn def_acc_frame(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let count = ctx.num(&args[2])?;
+    let at = *DEF_ACC_FRAME;
+    let count = ctx.num(&args[at.count])?;
     if count.fract() != 0.0 || !(3.0..=10.0).contains(&count) {
         return Err(ctx.error(Err::ArgValue, "TargetsInList must be a whole number from 3 to 10"));
     }
     let n = count as usize;
-    let from = point_list(ctx, &args[0], n)?;
-    let to = point_list(ctx, &args[1], n)?;
+    let from = point_list(ctx, &args[at.list_one], n)?;
+    let to = point_list(ctx, &args[at.list_two], n)?;
     let fit = rigid_fit(&from, &to).ok_or_else(|| frame_error(ctx))?;
     let errors: Vec<f64> = from
         .iter()
@@ -148,8 +162,8 @@ pub(crate) fn def_acc_frame(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         .collect();
     let max = errors.iter().copied().fold(0.0, f64::max);
     let mean = errors.iter().sum::<f64>() / n as f64;
-    ctx.store(&args[3], Value::Num(max as f32))?;
-    ctx.store(&args[4], Value::Num(mean as f32))?;
+    ctx.store(&args[at.max_err], Value::Num(max as f32))?;
+    ctx.store(&args[at.mean_err], Value::Num(mean as f32))?;
     Ok(Some(frame::pose_value(ctx, &fit)?))
 }
 

@@ -14,12 +14,18 @@ type Res = Result<Option<Value>, RapidError>;
 /// External axis values at or above this mark an axis that is not used (9E9).
 const UNUSED_AXIS: f64 = 8.9e9;
 
+crate::builtins::signature::layout! {
+    static OFFS: OffsArgs = "Offs" { x: "XOffset", y: "YOffset", z: "ZOffset" }
+    static REL_TOOL: RelToolArgs = "RelTool" { dx: "Dx", dy: "Dy", dz: "Dz", rx: "Rx", ry: "Ry", rz: "Rz" }
+}
+
 /// `Offs(Point, XOffset, YOffset, ZOffset)`: Point moved by the offsets along the axes
 /// of its own (object) frame; orientation, configuration and external axes kept.
 pub(crate) fn offs(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let point = ctx.value(&args[0])?;
     let (t, q) = frame::trans_rot(ctx, &point)?;
-    let d = Vector3::new(ctx.num(&args[1])?, ctx.num(&args[2])?, ctx.num(&args[3])?);
+    let at = *OFFS;
+    let d = Vector3::new(ctx.num(&args[at.x])?, ctx.num(&args[at.y])?, ctx.num(&args[at.z])?);
     Ok(Some(frame::with_trans_rot(&point, &(t + d), &q)))
 }
 
@@ -30,8 +36,9 @@ pub(crate) fn rel_tool(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let point = ctx.value(&args[0])?;
     let (t, q) = frame::trans_rot(ctx, &point)?;
     let rot = frame::unit(ctx, q)?;
-    let d = Vector3::new(ctx.num(&args[1])?, ctx.num(&args[2])?, ctx.num(&args[3])?);
-    let angles = [ctx.opt_num(args.get(4))?, ctx.opt_num(args.get(5))?, ctx.opt_num(args.get(6))?];
+    let at = *REL_TOOL;
+    let d = Vector3::new(ctx.num(&args[at.dx])?, ctx.num(&args[at.dy])?, ctx.num(&args[at.dz])?);
+    let angles = [ctx.opt_num(args.get(at.rx))?, ctx.opt_num(args.get(at.ry))?, ctx.opt_num(args.get(at.rz))?];
     let moved = t + rot * d;
     // Without a rotation the orient is passed on exactly as given.
     if angles.iter().all(Option::is_none) {

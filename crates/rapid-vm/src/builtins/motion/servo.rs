@@ -104,15 +104,22 @@ pub(crate) fn motion_sup(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
+crate::builtins::signature::layout! {
+    static SOFT_ACT: SoftActArgs = "SoftAct" { axis: "Axis", softness: "Softness", ramp: "Ramp" }
+    static TUNE_SERVO: TuneServoArgs = "TuneServo" { axis: "Axis", tune_value: "TuneValue", ty: "Type" }
+    static SPEED_LIM_AXIS: SpeedLimAxisArgs = "SpeedLimAxis" { axis_no: "AxisNo", axis_speed: "AxisSpeed" }
+}
+
 /// `SoftAct [\MechUnit,] Axis, Softness [\Ramp]`: the axis becomes soft, Softness
 /// 0 (stiffest soft servo) .. 100 % (softest); Ramp, at least 100 %, slows the change.
 // uncertain: Softness outside 0..100 or a Ramp below 100 raises ERR_ARGVALERR.
 pub(crate) fn soft_act(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *SOFT_ACT;
     let unit = opt_unit_arg(ctx, args, 0)?;
     own_only(ctx, unit)?;
-    let axis = axis_arg(ctx, ctx.num(&args[1])?, Err::ArgValue)?;
-    let softness = percent(ctx, ctx.num(&args[2])?, 0.0, 100.0, "SoftAct Softness")?;
-    let ramp = match ctx.opt_num(args.get(3))? {
+    let axis = axis_arg(ctx, ctx.num(&args[at.axis])?, Err::ArgValue)?;
+    let softness = percent(ctx, ctx.num(&args[at.softness])?, 0.0, 100.0, "SoftAct Softness")?;
+    let ramp = match ctx.opt_num(args.get(at.ramp))? {
         Some(r) => percent(ctx, r, 100.0, f64::MAX, "SoftAct Ramp")?,
         None => 100.0,
     };
@@ -135,11 +142,12 @@ pub(crate) fn soft_deact(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // narrower ranges for some types are not checked); outside it, or an unknown Type,
 // raises ERR_ARGVALERR.
 pub(crate) fn tune_servo(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *TUNE_SERVO;
     let unit = unit_arg(ctx, args, 0)?;
     own_only(ctx, unit)?;
-    let axis = axis_arg(ctx, ctx.num(&args[1])?, Err::ArgValue)?;
-    let value = percent(ctx, ctx.num(&args[2])?, 1.0, 500.0, "TuneServo TuneValue")?;
-    let ty = ctx.opt_num(args.get(3))?.unwrap_or(0.0);
+    let axis = axis_arg(ctx, ctx.num(&args[at.axis])?, Err::ArgValue)?;
+    let value = percent(ctx, ctx.num(&args[at.tune_value])?, 1.0, 500.0, "TuneServo TuneValue")?;
+    let ty = ctx.opt_num(args.get(at.ty))?.unwrap_or(0.0);
     if ty.fract() != 0.0 || !(0.0..TUNE_TYPES as f64).contains(&ty) {
         return Err(ctx.error(Err::ArgValue, format!("{ty} is not a tunetype")));
     }
@@ -173,10 +181,11 @@ pub(crate) fn deact_event_buffer(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 // uncertain: the lowest speed the controller accepts is not public; any positive
 // speed is taken.
 pub(crate) fn speed_lim_axis(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *SPEED_LIM_AXIS;
     let unit = unit_arg(ctx, args, 0)?;
     own_only(ctx, unit)?;
-    let axis = axis_arg(ctx, ctx.num(&args[1])?, Err::AxisPar)?;
-    let speed = ctx.num(&args[2])?;
+    let axis = axis_arg(ctx, ctx.num(&args[at.axis_no])?, Err::AxisPar)?;
+    let speed = ctx.num(&args[at.axis_speed])?;
     if speed <= 0.0 || !speed.is_finite() {
         return Err(ctx.error(Err::SpeedLimValue, format!("SpeedLimAxis speed {speed} is too low")));
     }

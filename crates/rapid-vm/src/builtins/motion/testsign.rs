@@ -53,19 +53,26 @@ fn channel(ctx: &Ctx<'_>, value: f64) -> Result<usize, RapidError> {
     Err(ctx.error(Err::ArgValue, format!("test signal channel {value} is not 1..12")))
 }
 
+crate::builtins::signature::layout! {
+    static TEST_SIGN_DEFINE: TestSignDefineArgs = "TestSignDefine" {
+        mech_unit: "MechUnit", axis: "Axis", sample_time: "SampleTime",
+    }
+}
+
 /// `TestSignDefine Channel, SignalId, MechUnit, Axis, SampleTime`: the channel
 /// watches a signal of an axis; a sample time below 4 ms is taken as 4 ms.
 // uncertain: an unknown SignalId or a negative SampleTime raises ERR_ARGVALERR.
 pub(crate) fn test_sign_define(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *TEST_SIGN_DEFINE;
     let channel = channel(ctx, ctx.num(&args[0])?)?;
     let signal = ctx.num(&args[1])?;
     if ![RESOLVER_ANGLE, SPEED_REF, SPEED, TORQUE_REF, DIG_INPUT1, DIG_INPUT2].contains(&signal) {
         return Err(ctx.error(Err::ArgValue, format!("{signal} is not a test signal")));
     }
-    let unit = unit_arg(ctx, args, 2)?;
+    let unit = unit_arg(ctx, args, at.mech_unit)?;
     own_only(ctx, unit)?;
-    let axis = axis_arg(ctx, ctx.num(&args[3])?, Err::ArgValue)?;
-    let sample_time = ctx.num(&args[4])?;
+    let axis = axis_arg(ctx, ctx.num(&args[at.axis])?, Err::ArgValue)?;
+    let sample_time = ctx.num(&args[at.sample_time])?;
     if sample_time.is_nan() || sample_time < 0.0 || sample_time.is_infinite() {
         return Err(ctx.error(Err::ArgValue, format!("sample time {sample_time} is not a time")));
     }

@@ -289,6 +289,10 @@ fn set_active(ctx: &mut Ctx<'_>, i: usize, active: bool) {
     super::moves::wait_for_robot(ctx, end);
 }
 
+crate::builtins::signature::layout! {
+    static MECH_UNIT_LOAD: MechUnitLoadArgs = "MechUnitLoad" { load: "Load" }
+}
+
 /// `MechUnitLoad MechUnit, AxisNo, Load`: the payload on an axis of an external unit
 /// (kept with the unit; the simulated motion does not depend on loads). The robots'
 /// payload is GripLoad's: execution stops for a TCP robot.
@@ -307,7 +311,7 @@ pub(crate) fn mech_unit_load(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         let name = unit_name(ctx, unit);
         return Err(ctx.error(Err::ArgValue, format!("axis {axis} is not an axis of {name} (1..{axes})")));
     }
-    let mass = match ctx.value(&args[2])? {
+    let mass = match ctx.value(&args[MECH_UNIT_LOAD.load])? {
         Value::Record(load) => match load.fields.first() {
             Some(Value::Num(mass)) => f64::from(*mass),
             _ => return Err(ctx.error(Err::ArgValue, "the load is no loaddata")),

@@ -102,8 +102,9 @@ fn socket_connect(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// (port 0: one the OS chooses). The controller's own addresses bind the loopback.
 fn socket_bind(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (_, handle) = socket_arg(ctx, &args[0])?;
-    let asked = ip_arg(ctx, &args[1])?;
-    let port = port_arg(ctx, &args[2], true)?;
+    let at = *BIND;
+    let asked = ip_arg(ctx, &args[at.address])?;
+    let port = port_arg(ctx, &args[at.port], true)?;
     let (ip, first) = ctx.resources.sockets.bind_addr(asked);
     if first {
         ctx.host.note(&format!(
@@ -143,6 +144,7 @@ fn socket_accept(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 }
 
 super::signature::layout! {
+    static BIND: BindArgs = "SocketBind" { address: "LocalAddress", port: "LocalPort" }
     static CONNECT: ConnectArgs = "SocketConnect" { socket: "Socket", address: "Address", port: "Port", time: "Time" }
     static ACCEPT: AcceptArgs = "SocketAccept" {
         socket: "Socket", client: "ClientSocket", client_address: "ClientAddress", time: "Time",

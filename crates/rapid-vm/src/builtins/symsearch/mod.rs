@@ -198,6 +198,10 @@ fn get_next_sym(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(Value::Bool(true)))
 }
 
+crate::builtins::signature::layout! {
+    static SET_ALL_DATA_VAL: SetAllDataValArgs = "SetAllDataVal" { object: "Object", value: "Value" }
+}
+
 /// `SetAllDataVal Type [\TypeMod] [\Object] [\Hidden] Value`: sets every VAR and PERS
 /// of the type (whose name matches Object) to Value; ERR_SYMBOL_TYPE if Value is not of
 /// that type.
@@ -205,9 +209,10 @@ fn get_next_sym(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // (Value is one value of the type). \Hidden concerns routine data hidden by the call
 // chain, which this search never reaches, so it changes nothing here.
 fn set_all_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *SET_ALL_DATA_VAL;
     let ty = ctx.string(&args[0])?;
-    let pattern = object_pattern(ctx, args.get(2))?;
-    let value = ctx.value(&args[4])?;
+    let pattern = object_pattern(ctx, args.get(at.object))?;
+    let value = ctx.value(&args[at.value])?;
     let filter = Filter { kinds: Some(vec![SymKind::Var, SymKind::Pers]), module: None, local: None };
     let hits = select(&ctx.resources.symsearch, &ty, pattern.as_ref(), &filter);
     let mut targets = Vec::with_capacity(hits.len());

@@ -27,10 +27,17 @@ pub struct StopProc {
     shadow: u32,
 }
 
+crate::builtins::signature::layout! {
+    static TRIGG_STOP_PROC: TriggStopProcArgs = "TriggStopProc" {
+        do1: "DO1", go1: "GO1", go2: "GO2", go3: "GO3", go4: "GO4", shadow: "ShadowDO",
+    }
+}
+
 /// `TriggStopProc RestartRef [\DO1] [\GO1] [\GO2] [\GO3] [\GO4] ShadowDO`: from now on,
 /// every program stop sets the process outputs to 0 and fills RestartRef.
 // uncertain: a second TriggStopProc replaces the first (one supervision per task).
 pub(crate) fn trigg_stop_proc(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+    let at = *TRIGG_STOP_PROC;
     let Value::Ref(restart) = &args[0] else {
         return Err(ctx.error(Err::ArgValue, "TriggStopProc's RestartRef must be a persistent restartdata"));
     };
@@ -42,9 +49,9 @@ pub(crate) fn trigg_stop_proc(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
             Ok(None)
         }
     };
-    let do1 = signal(1)?;
-    let go = [signal(2)?, signal(3)?, signal(4)?, signal(5)?];
-    let shadow = super::super::super::io::signal(ctx, &args[6])?;
+    let do1 = signal(at.do1)?;
+    let go = [signal(at.go1)?, signal(at.go2)?, signal(at.go3)?, signal(at.go4)?];
+    let shadow = super::super::super::io::signal(ctx, &args[at.shadow])?;
     ctx.resources.robot.trigg.stop_proc = Some(StopProc { restart, do1, go, shadow });
     Ok(None)
 }
