@@ -62,6 +62,8 @@ pub(crate) struct Core {
     pub(crate) opmode: &'static str,
     /// The run mode of the last start: `once`, `forever` (RobotWare's default).
     pub(crate) cycle: String,
+    /// Module loads and unloads asked through RWS: a module text's `change-count`.
+    pub(crate) module_changes: u64,
     /// Tasks deactivated through `/rw/rapid/tasks/{task}?action=deactivate`.
     pub(crate) inactive: Vec<String>,
     pub(crate) elog: Elog,
@@ -85,6 +87,7 @@ impl Core {
             speedratio: 100,
             opmode: "AUTO",
             cycle: "forever".to_owned(),
+            module_changes: 0,
             inactive: Vec::new(),
             elog: Elog::default(),
             failed: false,

@@ -663,3 +663,38 @@ async fn the_pendant_page_and_its_json_resources_are_behind_the_login() {
     let missing = server.send(get("/pendant/api/program", Some(&cookie))).await;
     assert_eq!(missing.status(), StatusCode::BAD_REQUEST);
 }
+
+#[tokio::test]
+async fn a_module_text_is_the_module_in_program_memory() {
+    let server = Server::new("module-text");
+    let cookie = server.login().await;
+    let text_of = |module: &str| format!("/rw/rapid/modules/{module}?task=T_ROB1&resource=module-text&json=1");
+    let answer = json_of(server.send(get(&text_of("MainModule"), Some(&cookie))).await).await;
+    let item = &answer["_embedded"]["_state"][0];
+    assert_eq!(item["_type"], "rap-module-text");
+    assert_eq!(item["_title"], "moduletext");
+    let text = item["module-text"].as_str().unwrap();
+    assert!(text.starts_with("MODULE MainModule") && text.contains("ENDMODULE"), "{text}");
+    assert!(text.contains("PERS num count := 0;"), "{text}");
+    assert_eq!(item["module-length"].as_str().unwrap(), text.len().to_string());
+    // A persistent set through RWS: program memory holds the new value, so does the text.
+    let set = server.send(post("/rw/rapid/symbol/data/RAPID/T_ROB1/count?action=set", &cookie, "value=42")).await;
+    assert_eq!(set.status(), StatusCode::NO_CONTENT);
+    let text = state_field(&server, &text_of("MainModule"), &cookie, "module-text").await;
+    assert!(text.contains("PERS num count := 42;"), "{text}");
+    // A module loaded through RWS has its text too; an unknown one is not found.
+    std::fs::create_dir_all(server.root.join("HOME")).unwrap();
+    let extra = "MODULE Extra\n  PROC extra_proc()\n  ENDPROC\nENDMODULE\n";
+    std::fs::write(server.root.join("HOME/Extra.mod"), extra).unwrap();
+    let load =
+        server.send(post("/rw/rapid/tasks/T_ROB1?action=loadmod", &cookie, "modulepath=%24HOME%2FExtra.mod")).await;
+    assert_eq!(load.status(), StatusCode::NO_CONTENT);
+    assert_eq!(state_field(&server, &text_of("Extra"), &cookie, "module-text").await, extra);
+    let missing = server.send(get(&text_of("NoSuch"), Some(&cookie))).await;
+    assert!(missing.status().is_client_error());
+    // XHTML keeps the document on one line: the text's line breaks are escaped.
+    let page =
+        body_text(server.send(get("/rw/rapid/modules/Extra?task=T_ROB1&resource=module-text", Some(&cookie))).await)
+            .await;
+    assert!(page.contains("class=\"module-text\">MODULE Extra&#10;"), "{page}");
+}

@@ -645,6 +645,23 @@ impl Vm {
         self.save_module(name, dest)
     }
 
+    /// The text of live module `name` as program memory holds it, current persistent
+    /// values written in (what Save would write; RWS's module text). `None` when the
+    /// task has no such module or its program does not check.
+    pub fn module_text_now(&self, name: &str) -> Option<String> {
+        let n_base = self.modules.base.len();
+        let unit = self.modules.units.iter().position(|u| u.live && u.name.eq_ignore_ascii_case(name));
+        let (file, index) = match unit {
+            Some(unit) => (n_base + unit, 0),
+            None => {
+                let m = self.modules.base_modules.iter().find(|m| m.live && m.name.eq_ignore_ascii_case(name))?;
+                (m.file, m.index)
+            }
+        };
+        let checked = check(self.modules.sources(), &self.modules.options).ok()?;
+        Some(self.module_text(&checked, file, index, unit.is_some()))
+    }
+
     fn save_module(&mut self, name: &str, dest: Option<(PathBuf, String)>) -> Result<(), RapidError> {
         let n_base = self.modules.base.len();
         let unit = self.modules.units.iter().position(|u| u.live && u.name.eq_ignore_ascii_case(name));
