@@ -698,3 +698,61 @@ async fn a_module_text_is_the_module_in_program_memory() {
             .await;
     assert!(page.contains("class=\"module-text\">MODULE Extra&#10;"), "{page}");
 }
+
+#[tokio::test]
+async fn the_data_of_a_module_loaded_through_rws_is_found_by_name_until_unloaded() {
+    let server = Server::new("loaded-data");
+    let cookie = server.login().await;
+    std::fs::create_dir_all(server.root.join("HOME")).unwrap();
+    let extra = "MODULE Extra\n  PERS num extra_count := 7;\n  LOCAL VAR string extra_name := \"x\";\nENDMODULE\n";
+    std::fs::write(server.root.join("HOME/Extra.mod"), extra).unwrap();
+    let value = "/rw/rapid/symbol/data/RAPID/T_ROB1/extra_count?json=1";
+    let before = server.send(get(value, Some(&cookie))).await;
+    assert!(before.status().is_client_error(), "not loaded yet");
+    let load =
+        server.send(post("/rw/rapid/tasks/T_ROB1?action=loadmod", &cookie, "modulepath=%24HOME%2FExtra.mod")).await;
+    assert_eq!(load.status(), StatusCode::NO_CONTENT);
+    // Read by its global name and through its module; set, read back.
+    assert_eq!(state_field(&server, value, &cookie, "value").await, "7");
+    let local = "/rw/rapid/symbol/data/RAPID/T_ROB1/Extra/extra_name?json=1";
+    assert_eq!(state_field(&server, local, &cookie, "value").await, "\"x\"");
+    let set =
+        server.send(post("/rw/rapid/symbol/data/RAPID/T_ROB1/Extra/extra_count?action=set", &cookie, "value=12")).await;
+    assert_eq!(set.status(), StatusCode::NO_CONTENT);
+    assert_eq!(state_field(&server, value, &cookie, "value").await, "12");
+    // Properties and search see it too.
+    let props = "/rw/rapid/symbol/properties/RAPID/T_ROB1/Extra/extra_count?json=1";
+    assert_eq!(state_field(&server, props, &cookie, "symtyp").await, "per");
+    let search = server
+        .send(post(
+            "/rw/rapid/symbols?action=search-symbols&json=1",
+            &cookie,
+            "blockurl=RAPID%2FT_ROB1%2FExtra&symtyp=any",
+        ))
+        .await;
+    assert_eq!(search.status(), StatusCode::OK);
+    let found: Vec<String> = json_of(search).await["_embedded"]["_state"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| d["name"].as_str().unwrap().to_owned())
+        .collect();
+    assert_eq!(found, ["extra_count", "extra_name"]);
+    // The booted module's data is still found as before.
+    assert_eq!(state_field(&server, "/rw/rapid/symbol/data/RAPID/T_ROB1/count?json=1", &cookie, "value").await, "0");
+    // Unloaded: its data is no more.
+    let unload = server.send(post("/rw/rapid/tasks/T_ROB1?action=unloadmod", &cookie, "module=Extra")).await;
+    assert_eq!(unload.status(), StatusCode::NO_CONTENT);
+    for uri in [value, local, props] {
+        let gone = server.send(get(uri, Some(&cookie))).await;
+        assert!(gone.status().is_client_error(), "{uri}");
+        let body = json_of(gone).await;
+        assert_eq!(body["_embedded"]["status"]["code"], not_found_code(&server, &cookie).await, "{uri}");
+    }
+}
+
+/// The status code RWS answers for a symbol that does not exist (one never declared).
+async fn not_found_code(server: &Server, cookie: &str) -> serde_json::Value {
+    let never = server.send(get("/rw/rapid/symbol/data/RAPID/T_ROB1/never_declared?json=1", Some(cookie))).await;
+    json_of(never).await["_embedded"]["status"]["code"].clone()
+}

@@ -371,6 +371,7 @@ impl Vm {
             init: init.clone(),
             saved_pers: Vec::new(),
         });
+        self.refresh_symbols(Some(&checked));
         let res = self.run_init(init, host);
         let unit = self.modules.units.len() - 1;
         self.snapshot_pers(unit);
@@ -590,9 +591,28 @@ impl Vm {
         // Loaded modules compiled again without it: a call of one of its procedures then
         // raises ERR_REFUNKPRC, as a call of a procedure defined nowhere does. (Code
         // using its data no longer compiles and is kept; CheckProgRef reports it.)
-        if let Ok(checked) = check(self.modules.sources(), &self.modules.options) {
-            let modules = checked.modules();
-            self.relink_units(&checked, &modules);
+        match check(self.modules.sources(), &self.modules.options) {
+            Ok(checked) => {
+                let modules = checked.modules();
+                self.relink_units(&checked, &modules);
+                self.refresh_symbols(Some(&checked));
+            }
+            Err(_) => self.refresh_symbols(None),
+        }
+    }
+
+    /// Makes the symbol catalogue (SetDataSearch, a front end's data by name) again
+    /// from `checked`, the program as it now stands, so that it lists the data of the
+    /// live modules: those loaded since the task started, not those unloaded.
+    /// Without a checked program the unloaded modules' data is only dropped.
+    fn refresh_symbols(&mut self, checked: Option<&Checked>) {
+        let live = self.module_names();
+        match checked {
+            Some(checked) => {
+                let fresh = crate::builtins::symsearch::catalog::task_symbols(&checked.prog, &checked.modules());
+                self.resources.symsearch.replace_catalogue(fresh, &live);
+            }
+            None => self.resources.symsearch.keep_modules(&live),
         }
     }
 
