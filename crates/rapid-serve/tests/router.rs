@@ -34,15 +34,15 @@ const PROGRAM: &str = "MODULE MainModule
 ENDMODULE
 ";
 
-/// A controller for PROGRAM with `di1` and `do1`, its file devices under `root`.
-fn boot(root: std::path::PathBuf) -> Result<Session, String> {
+/// A controller for `program` with `di1` and `do1`, its file devices under `root`.
+fn boot_program(root: std::path::PathBuf, program: &str) -> Result<Session, String> {
     let names = [("di1", "signaldi", "DI"), ("do1", "signaldo", "DO")];
     let predefined = names
         .iter()
         .map(|(n, ty, _)| rapid_sema::PredefinedData { name: (*n).to_owned(), type_name: (*ty).to_owned() })
         .collect();
     let options = rapid_sema::Options { predefined, ..rapid_sema::Options::default() };
-    let mut loaded = rapid_vm::load_with(&[SourceInput::from_text("T_ROB1/MainModule.mod", PROGRAM)], "main", &options)
+    let mut loaded = rapid_vm::load_with(&[SourceInput::from_text("T_ROB1/MainModule.mod", program)], "main", &options)
         .map_err(|e| format!("{e:?}"))?;
     loaded.vm.resources_mut().files.set_root(root);
     let signals: String =
@@ -62,12 +62,16 @@ struct Server {
 
 impl Server {
     fn new(name: &str) -> Server {
+        Server::with_program(name, PROGRAM)
+    }
+
+    fn with_program(name: &str, program: &'static str) -> Server {
         let root = std::env::temp_dir().join(format!("rapid-serve-test-{name}-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&root);
         std::fs::create_dir_all(&root).expect("scratch folder");
         let for_boot = root.clone();
         let boot = rapid_serve::Boot {
-            session: Box::new(move || boot(for_boot)),
+            session: Box::new(move || boot_program(for_boot, program)),
             clock: ClockPolicy::Paced { rate: 20.0 },
             on_exit: None,
             on_tp_write: None,
@@ -755,4 +759,45 @@ async fn the_data_of_a_module_loaded_through_rws_is_found_by_name_until_unloaded
 async fn not_found_code(server: &Server, cookie: &str) -> serde_json::Value {
     let never = server.send(get("/rw/rapid/symbol/data/RAPID/T_ROB1/never_declared?json=1", Some(cookie))).await;
     json_of(never).await["_embedded"]["status"]["code"].clone()
+}
+
+#[tokio::test]
+async fn the_speed_ratio_slows_the_robot() {
+    const TIMED: &str = "MODULE MainModule
+  VAR clock c;
+  VAR num took := -1;
+  PROC main()
+    MoveAbsJ [[0, 0, 0, 0, 30, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]], v1000, fine, tool0;
+    ClkReset c;
+    ClkStart c;
+    MoveL Offs(CRobT(), 0, 200, 0), v100, fine, tool0;
+    ClkStop c;
+    took := ClkRead(c \\HighRes);
+  ENDPROC
+ENDMODULE
+";
+    let server = Server::with_program("speedratio", TIMED);
+    let cookie = server.login().await;
+    let ratio = "/rw/panel/speedratio?json=1";
+    assert_eq!(state_field(&server, ratio, &cookie, "speedratio").await, "100");
+    let zero = server.send(post("/rw/panel/speedratio?action=setspeedratio", &cookie, "speed-ratio=0")).await;
+    assert!(zero.status().is_client_error(), "0 % is not supported yet");
+    let set = server.send(post("/rw/panel/speedratio?action=setspeedratio", &cookie, "speed-ratio=50")).await;
+    assert_eq!(set.status(), StatusCode::NO_CONTENT);
+    assert_eq!(state_field(&server, ratio, &cookie, "speedratio").await, "50");
+    let start = server.send(post("/rw/rapid/execution?action=start", &cookie, "regain=continue&cycle=once")).await;
+    assert_eq!(start.status(), StatusCode::NO_CONTENT);
+    let took = "/rw/rapid/symbol/data/RAPID/T_ROB1/took?json=1";
+    let mut value = String::new();
+    for _ in 0..200 {
+        value = state_field(&server, took, &cookie, "value").await;
+        if value != "-1" {
+            break;
+        }
+        tokio::time::sleep(Duration::from_millis(50)).await;
+    }
+    // 200 mm at 50 % of 100 mm/s: 4 s, plus the short ramps from and to a stand-still
+    // (at full speed it is 2 s: `the_speed_override_slows_the_programmed_moves`).
+    let took: f64 = value.parse().expect("a number");
+    assert!((4.0..4.1).contains(&took), "{took}");
 }
