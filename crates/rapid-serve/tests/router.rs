@@ -34,8 +34,13 @@ const PROGRAM: &str = "MODULE MainModule
 ENDMODULE
 ";
 
-/// A controller for `program` with `di1` and `do1`, its file devices under `root`.
-fn boot_program(root: std::path::PathBuf, program: &str) -> Result<Session, String> {
+/// A controller for `program` with `di1` and `do1`, its file devices under `root`,
+/// T_ROB1's RAPID Message Queue of type `rmq`.
+fn boot_with_queue(
+    root: std::path::PathBuf,
+    program: &str,
+    rmq: rapid_config::sys::RmqType,
+) -> Result<Session, String> {
     let names = [("di1", "signaldi", "DI"), ("do1", "signaldo", "DO")];
     let predefined = names
         .iter()
@@ -49,7 +54,8 @@ fn boot_program(root: std::path::PathBuf, program: &str) -> Result<Session, Stri
         names.iter().map(|(n, _, kind)| format!("\n      -Name \"{n}\" -SignalType \"{kind}\"\n")).collect();
     let eio = rapid_config::eio::read(&rapid_config::parse(&format!("EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n{signals}")));
     let io = rapid_vm::builtins::io_config::io_system(&eio)?;
-    let spec = TaskSpec::normal("T_ROB1", true);
+    let mut spec = TaskSpec::normal("T_ROB1", true);
+    spec.rmq.rmq_type = rmq;
     Ok(Session::new(Controller::new(vec![(spec, loaded)], Some(io))?))
 }
 
@@ -66,12 +72,16 @@ impl Server {
     }
 
     fn with_program(name: &str, program: &'static str) -> Server {
+        Server::with_queue(name, program, rapid_config::sys::RmqType::None)
+    }
+
+    fn with_queue(name: &str, program: &'static str, rmq: rapid_config::sys::RmqType) -> Server {
         let root = std::env::temp_dir().join(format!("rapid-serve-test-{name}-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&root);
         std::fs::create_dir_all(&root).expect("scratch folder");
         let for_boot = root.clone();
         let boot = rapid_serve::Boot {
-            session: Box::new(move || boot_program(for_boot, program)),
+            session: Box::new(move || boot_with_queue(for_boot, program, rmq)),
             clock: ClockPolicy::Paced { rate: 20.0 },
             on_exit: None,
             on_tp_write: None,
@@ -609,9 +619,10 @@ async fn dipc_queues_between_clients_and_not_yet_to_tasks() {
     assert_eq!(json_of(again).await["_embedded"]["status"]["code"], -1_073_445_879_i64);
     let task = server.send(post("/rw/dipc?action=dipc-create&json=1", &cookie, &create("t_rob1"))).await;
     assert_eq!(task.status(), StatusCode::BAD_REQUEST);
+    // T_ROB1 has no queue here (RmqType None): `a_dipc_message_to_a_task_reaches_its_rmq`.
     let to_task = server.send(post("/rw/dipc/RMQ_T_ROB1?action=dipc-send&json=1", &cookie, "dipc-data=x")).await;
     let msg = json_of(to_task).await["_embedded"]["status"]["msg"].as_str().unwrap_or_default().to_owned();
-    assert!(msg.contains("not supported"), "{msg}");
+    assert!(msg.contains("no RAPID message queue"), "{msg}");
     let long =
         server.send(post("/rw/dipc/T_mine?action=dipc-send&json=1", &cookie, "dipc-data=012345678901234567890")).await;
     assert_eq!(long.status(), StatusCode::BAD_REQUEST);
@@ -800,4 +811,63 @@ ENDMODULE
     // (at full speed it is 2 s: `the_speed_override_slows_the_programmed_moves`).
     let took: f64 = value.parse().expect("a number");
     assert!((4.0..4.1).contains(&took), "{took}");
+}
+
+#[tokio::test]
+async fn a_dipc_message_to_a_task_reaches_its_rmq() {
+    const RECEIVER: &str = "MODULE MainModule
+  VAR intnum on_text;
+  VAR intnum on_num;
+  VAR rmqmessage msg;
+  VAR string text := \"\";
+  VAR num n := 0;
+  VAR num userdef := 0;
+  TRAP got_text
+    RMQGetMessage msg;
+    RMQGetMsgData msg, text;
+    RMQGetMsgHeader msg \\UserDef:=userdef;
+  ENDTRAP
+  TRAP got_num
+    RMQGetMessage msg;
+    RMQGetMsgData msg, n;
+  ENDTRAP
+  PROC main()
+    CONNECT on_text WITH got_text;
+    IRMQMessage text, on_text;
+    CONNECT on_num WITH got_num;
+    IRMQMessage n, on_num;
+    WHILE TRUE DO
+      WaitTime 0.05;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+";
+    let server = Server::with_queue("rmq", RECEIVER, rapid_config::sys::RmqType::Remote);
+    let cookie = server.login().await;
+    let start = server.send(post("/rw/rapid/execution?action=start", &cookie, "regain=continue")).await;
+    assert_eq!(start.status(), StatusCode::NO_CONTENT);
+    let send = |data: &str| post("/rw/dipc/RMQ_T_ROB1?action=dipc-send&json=1", &cookie, data);
+    let sent = server.send(send("dipc-data=string%3B%22hello%22&dipc-userdef=7")).await;
+    assert_eq!(sent.status(), StatusCode::NO_CONTENT);
+    let sent = server.send(send("dipc-data=num%3B42&dipc-userdef=1")).await;
+    assert_eq!(sent.status(), StatusCode::NO_CONTENT);
+    let read = |name: &str| format!("/rw/rapid/symbol/data/RAPID/T_ROB1/{name}?json=1");
+    let mut got = (String::new(), String::new(), String::new());
+    for _ in 0..200 {
+        got = (
+            state_field(&server, &read("text"), &cookie, "value").await,
+            state_field(&server, &read("n"), &cookie, "value").await,
+            state_field(&server, &read("userdef"), &cookie, "value").await,
+        );
+        if got.1 == "42" && got.0 != "\"\"" {
+            break;
+        }
+        tokio::time::sleep(Duration::from_millis(50)).await;
+    }
+    assert_eq!(got, ("\"hello\"".to_owned(), "42".to_owned(), "7".to_owned()));
+    // Not `<datatype>;<value>`, no literal of its type, a record type (not yet).
+    for bad in ["dipc-data=hello", "dipc-data=num%3Babc", "dipc-data=pos%3B%5B1%2C2%2C3%5D"] {
+        let refused = server.send(send(bad)).await;
+        assert_eq!(refused.status(), StatusCode::BAD_REQUEST, "{bad}");
+    }
 }
