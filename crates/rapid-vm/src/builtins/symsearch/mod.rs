@@ -83,11 +83,12 @@ impl SymSearchState {
         &self.data
     }
 
-    /// Takes `fresh`, the catalogue made again after modules were loaded or unloaded,
-    /// keeping only the data of modules `live` names (an unloaded module's stand-in
-    /// is no module of the task). A search under way goes on over the objects it had
-    /// left that still exist.
-    pub(crate) fn replace_catalogue(&mut self, mut fresh: SymSearchState, live: &[String]) {
+    /// Takes `fresh`, the catalogue made again after modules were loaded or unloaded
+    /// (this one when it could not be made), keeping only the data of modules `live`
+    /// names (an unloaded module's stand-in is no module of the task). A search under
+    /// way goes on over the objects it had left that still exist.
+    pub(crate) fn refresh(&mut self, fresh: Option<SymSearchState>, live: &[String]) {
+        let mut fresh = fresh.unwrap_or_else(|| SymSearchState::new(self.modules.clone(), self.data.clone()));
         let modules = &fresh.modules;
         fresh
             .data
@@ -101,13 +102,6 @@ impl SymSearchState {
             fresh.search = Some((left, handed));
         }
         *self = fresh;
-    }
-
-    /// Drops the data of modules that `live` does not name (an unloaded module's),
-    /// when the catalogue cannot be made again.
-    pub(crate) fn keep_modules(&mut self, live: &[String]) {
-        let fresh = SymSearchState::new(self.modules.clone(), self.data.clone());
-        self.replace_catalogue(fresh, live);
     }
 
     /// Forgets the current search (PP to Main).
