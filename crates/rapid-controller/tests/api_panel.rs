@@ -74,3 +74,50 @@ fn a_module_loaded_from_home_is_linked_and_unloaded_again() {
     assert!(s.load_module("T_ROB1", "HOME:/Extra.mod").is_err());
     let _ = std::fs::remove_dir_all(&root);
 }
+
+/// A MoveL of 200 mm at v100 from a stand-still to a stand-still, timed by the program.
+const TIMED_MOVE: &str = "MODULE MainModule
+  VAR clock c;
+  VAR num took := -1;
+  PROC main()
+    MoveAbsJ [[0, 0, 0, 0, 30, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]], v1000, fine, tool0;
+    ClkReset c;
+    ClkStart c;
+    MoveL Offs(CRobT(), 0, 200, 0), v100, fine, tool0;
+    ClkStop c;
+    took := ClkRead(c \\HighRes);
+  ENDPROC
+ENDMODULE
+";
+
+/// The virtual time the timed MoveL takes at speed override `percent`.
+fn timed_move(percent: Option<f64>) -> f64 {
+    let mut s = api_common::with_signals(TIMED_MOVE, &[], &[]);
+    if let Some(percent) = percent {
+        s.set_speed_override(percent).expect("1..100 is taken");
+    }
+    s.set_cycles(1);
+    s.start(StartFrom::Pointer).expect("starts");
+    s.run_until(Until::Time(30.0), 10_000_000);
+    assert!(s.all_normal_ended());
+    s.read_data("T_ROB1/took").expect("took").value.parse().expect("a number")
+}
+
+#[test]
+fn the_speed_override_slows_the_programmed_moves() {
+    assert_eq!(api_common::session().speed_override(), 100.0);
+    // 200 mm at 100 mm/s is 2 s at full speed, 200 mm at 50 mm/s 4 s at 50 %, each
+    // plus the short ramps from and to a stand-still (well under 0.1 s at 1 g).
+    let full = timed_move(None);
+    let half = timed_move(Some(50.0));
+    assert!((2.0..2.1).contains(&full), "{full}");
+    assert!((4.0..4.1).contains(&half), "{half}");
+    assert!((half / full - 2.0).abs() < 0.05, "{full} {half}");
+    // 0 % (the robot standing still in its move) and more than 100 % are refused.
+    let mut s = api_common::session();
+    assert!(s.set_speed_override(0.0).is_err());
+    assert!(s.set_speed_override(101.0).is_err());
+    assert_eq!(s.speed_override(), 100.0);
+    s.set_speed_override(25.0).unwrap();
+    assert_eq!(s.speed_override(), 25.0);
+}

@@ -4,8 +4,8 @@
 //! blocks the controller (a subscriber that falls behind loses events and is told).
 //!
 //! A job is a closure run between two rounds of the controller; it gets the whole
-//! [`Core`] (the session plus what RWS adds: the panel's speed ratio and operating
-//! mode, the run mode, task activation, the event log's numbering) and its answer
+//! [`Core`] (the session plus what RWS adds: the panel's operating mode, the run
+//! mode, task activation, the event log's numbering) and its answer
 //! goes back on a oneshot channel. The session is not `Send` (RAPID values share
 //! their parts), so it is built on the thread itself from the boot closure.
 
@@ -56,12 +56,12 @@ pub struct Boot {
 /// The controller and what RWS keeps beside it.
 pub(crate) struct Core {
     pub(crate) session: Session,
-    /// `/rw/panel/speedratio`, 0..100.
-    pub(crate) speedratio: u32,
     /// `/rw/panel/opmode`.
     pub(crate) opmode: &'static str,
     /// The run mode of the last start: `once`, `forever` (RobotWare's default).
     pub(crate) cycle: String,
+    /// Module loads and unloads asked through RWS: a module text's `change-count`.
+    pub(crate) module_changes: u64,
     /// Tasks deactivated through `/rw/rapid/tasks/{task}?action=deactivate`.
     pub(crate) inactive: Vec<String>,
     pub(crate) elog: Elog,
@@ -82,9 +82,9 @@ impl Core {
         let stream = session.subscribe();
         let mut core = Core {
             session,
-            speedratio: 100,
             opmode: "AUTO",
             cycle: "forever".to_owned(),
+            module_changes: 0,
             inactive: Vec::new(),
             elog: Elog::default(),
             failed: false,

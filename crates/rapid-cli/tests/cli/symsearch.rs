@@ -72,3 +72,45 @@ fn local_data_of_two_modules_through_datapos() {
     let expected = "count=1\ncount=2\nothermod: count\nothermod: shared\ntotal=10\ncount=1\nother=22\n";
     assert_eq!(String::from_utf8_lossy(&out.stdout), expected);
 }
+
+#[test]
+fn a_search_sees_the_data_of_modules_loaded_and_no_longer_of_those_unloaded() {
+    let dir = temp_dir("loaded");
+    fs::create_dir_all(dir.join("home").join("HOME")).unwrap();
+    fs::write(dir.join("home").join("HOME").join("extra.mod"), "MODULE extra\n    PERS num extra_n := 5;\nENDMODULE\n")
+        .unwrap();
+    let main = r#"MODULE mainmod
+    VAR num main_n := 1;
+
+    PROC list(string title)
+        VAR string name;
+        VAR datapos block;
+        SetDataSearch "num" \Object:=".*_n";
+        WHILE GetNextSym(name, block) DO
+            TPWrite title + ": " + name;
+        ENDWHILE
+    ENDPROC
+
+    PROC main()
+        list "before";
+        Load "HOME:/extra.mod";
+        list "loaded";
+        UnLoad "HOME:/extra.mod";
+        list "unloaded";
+    ENDPROC
+ENDMODULE
+"#;
+    fs::write(dir.join("mainmod.mod"), main).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .arg("run")
+        .arg("--home")
+        .arg(dir.join("home"))
+        .arg(dir.join("mainmod.mod"))
+        .output()
+        .expect("run rapid");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    // The loaded module's persistent is the task's data while it is loaded (§1.17).
+    let expected = "before: main_n\nloaded: main_n\nloaded: extra_n\nunloaded: main_n\n";
+    assert_eq!(String::from_utf8_lossy(&out.stdout), expected);
+}

@@ -14,7 +14,8 @@
 //! name), `pendant` (the `Host` the tasks run with), `stream` (subscriptions),
 //! `exec` (run, clock policies, start/stop, program pointers, call stacks), `panel`
 //! (motors, run mode, the robots' positions, the file devices' folder), `modules`
-//! (list, load, unload a task's modules), `inspect` (values as trees, expressions
+//! (list, load, unload a task's modules, a module's text), `rmq` (messages to a
+//! task's RAPID Message Queue), `inspect` (values as trees, expressions
 //! evaluated in a frame).
 
 pub mod data;
@@ -25,6 +26,7 @@ mod modules;
 pub mod motion;
 pub mod panel;
 pub mod pendant;
+mod rmq;
 pub mod stream;
 
 use std::fmt;

@@ -1,5 +1,6 @@
-//! A task's program modules for front ends (RWS `loadmod`/`unloadmod`): list them,
-//! load a module file from a file device, unload one by name. Loading and unloading
+//! A task's program modules for front ends (RWS `loadmod`/`unloadmod`, module text):
+//! list them, show one's text, load a module file from a file device, unload one by
+//! name. Loading and unloading
 //! are the task's own Load and EraseModule (`rapid_vm::exec::modules`), asked for
 //! while the program is stopped, as the controller asks for it.
 
@@ -10,6 +11,19 @@ impl Session {
     pub fn modules(&self, task: &str) -> Result<Vec<String>, ApiError> {
         let idx = self.task_index(task)?;
         Ok(self.controller.tasks[idx].loaded.vm.module_names())
+    }
+
+    /// The text of module `module` of task `task` as program memory holds it: the
+    /// module as loaded, with its persistents' current values written in (what Save
+    /// would write). Allowed while the program runs: it only reads.
+    pub fn module_text(&self, task: &str, module: &str) -> Result<String, ApiError> {
+        let idx = self.task_index(task)?;
+        let vm = &self.controller.tasks[idx].loaded.vm;
+        if !vm.module_names().iter().any(|m| m.eq_ignore_ascii_case(module)) {
+            return Err(ApiError::NotFound(format!("task {task} has no module `{module}`")));
+        }
+        vm.module_text_now(module)
+            .ok_or_else(|| ApiError::Failed(format!("the text of module `{module}` cannot be made")))
     }
 
     /// Loads the module file at RAPID path `path` (`HOME:/extra.mod`) into task `task`

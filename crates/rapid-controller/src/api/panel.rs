@@ -1,8 +1,9 @@
 //! The controller's panel and motion system for front ends (an RWS server's
-//! `/rw/panel` and `/rw/motionsystem`): motors on/off, the run mode's cycles, and each
-//! robot's axes and flange as the controller reports them at its current time.
+//! `/rw/panel` and `/rw/motionsystem`): motors on/off, the run mode's cycles, the
+//! operator's speed override, and each robot's axes and flange as the controller
+//! reports them at its current time.
 
-use super::Session;
+use super::{ApiError, Session};
 use crate::ProgramState;
 
 /// A robot (mechanical unit) as the motion system reports it now.
@@ -38,6 +39,29 @@ impl Session {
             self.settle();
         }
         self.gather();
+    }
+
+    /// The operator's speed override in percent (the FlexPendant's, RWS's speed
+    /// ratio): 100 unless set.
+    pub fn speed_override(&self) -> f64 {
+        self.controller.tasks.first().map_or(100.0, |t| t.loaded.vm.resources().controller.speed_override)
+    }
+
+    /// Sets the operator's speed override, 1 to 100 percent, for every task: the
+    /// programmed speeds of the moves planned from now on are scaled by it, as the
+    /// planner scales them by VelSet's override and SpeedRefresh (CSpeedOverride
+    /// reads it). A move already under way keeps the speed it was planned with,
+    /// where the real controller slows it at once.
+    pub fn set_speed_override(&mut self, percent: f64) -> Result<(), ApiError> {
+        if !(1.0..=100.0).contains(&percent) {
+            // A real controller takes 0 %: the robot then stands still within its
+            // move, which the planner cannot hold (a zero speed is an error to it).
+            return Err(ApiError::Unsupported(format!("a speed override of {percent} % (1 to 100 are)")));
+        }
+        for task in &mut self.controller.tasks {
+            task.loaded.vm.resources_mut().controller.speed_override = percent;
+        }
+        Ok(())
     }
 
     /// The run mode from the next start on: each NORMAL task runs `cycles` cycles

@@ -46,8 +46,8 @@ pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
             }
         }
         (["speedratio"], None) if req.is(Method::GET) => {
-            let ratio = app.controller.call(|core| core.speedratio).await?;
-            Ok(items(Item::new("pnl-speedratio", "speedratio").with("speedratio", ratio.to_string())))
+            let ratio = app.controller.call(|core| core.session.speed_override()).await?;
+            Ok(items(Item::new("pnl-speedratio", "speedratio").with("speedratio", ratio.round().to_string())))
         }
         (["speedratio"], Some("setspeedratio")) if req.is(Method::POST) => {
             let text = req.need("speed-ratio")?;
@@ -57,7 +57,12 @@ pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
                 .ok()
                 .filter(|r| (0.0..=100.0).contains(r))
                 .ok_or_else(|| RwsError::bad_request(format!("speed-ratio `{text}`: a number from 0 to 100")))?;
-            app.controller.call(move |core| core.speedratio = ratio.round() as u32).await?;
+            // RWS's speed ratio is the operator's override, in whole percent.
+            let ratio = ratio.round();
+            app.controller
+                .call(move |core| core.session.set_speed_override(ratio))
+                .await?
+                .map_err(|e| RwsError::from_api(&e))?;
             Ok(Reply::NoContent)
         }
         _ => Err(not_found(req)),

@@ -42,6 +42,7 @@ pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
         }
         ["symbols"] if req.action() == Some("search-symbols") && req.is(Method::POST) => search_symbols(app, req).await,
         ["modules"] if req.is(Method::GET) => modules(app, req).await,
+        ["modules", module] if req.is(Method::GET) && req.action().is_none() => module_text(app, req, module).await,
         _ => Err(not_found(req)),
     }
 }
@@ -249,6 +250,7 @@ async fn task_route(app: &Arc<App>, req: &Req, task: &str) -> Res {
                             core.session.unload_module(&name, &module)?;
                         }
                     }
+                    core.module_changes += 1;
                     core.session.load_module(&name, &path)
                 })
                 .await?
@@ -258,7 +260,10 @@ async fn task_route(app: &Arc<App>, req: &Req, task: &str) -> Res {
         (Some("unloadmod"), &Method::POST) => {
             let module = req.need("module")?.to_owned();
             app.controller
-                .call(move |core| core.session.unload_module(&name, &module))
+                .call(move |core| {
+                    core.module_changes += 1;
+                    core.session.unload_module(&name, &module)
+                })
                 .await?
                 .map_err(|e| RwsError::from_api(&e))?;
             Ok(Reply::NoContent)
@@ -374,6 +379,36 @@ async fn modules(app: &Arc<App>, req: &Req) -> Res {
         })
         .await??;
     Ok(Reply::Items { base: BASE.into(), items })
+}
+
+/// `GET /rw/rapid/modules/{module}?task=T&resource=module-text`: the module's text as
+/// program memory holds it (class `rap-module-text`, title `moduletext`, fields
+/// `change-count` and `module-text`, as RobotWare 6's answers in the public record
+/// show them). RobotWare hands a long module over as a file (`file-path` under
+/// `/TEMP`) instead; the length where it does so is not in the public record, so the
+/// text always comes inline here.
+async fn module_text(app: &Arc<App>, req: &Req, module: &str) -> Res {
+    match req.query("resource") {
+        Some("module-text") => {}
+        // uncertain: without `resource` RobotWare answers the module's attributes
+        // (its file name among them); their fields are not in the public record.
+        None => return Err(RwsError::unsupported("a module's attributes (ask resource=module-text for its text)")),
+        Some(other) => return Err(RwsError::unsupported(format!("module resource `{other}`"))),
+    }
+    let task = req.query("task").unwrap_or("T_ROB1").to_owned();
+    let module = module.to_owned();
+    let (text, changes) = app
+        .controller
+        .call(move |core| core.session.module_text(&task, &module).map(|text| (text, core.module_changes)))
+        .await?
+        .map_err(|e| RwsError::from_api(&e))?;
+    let item = Item::new("rap-module-text", "moduletext")
+        // uncertain: RobotWare's count of the task's program changes; ours counts the
+        // modules loaded and unloaded through RWS.
+        .with("change-count", changes.to_string())
+        .with("module-length", text.len().to_string())
+        .with("module-text", text);
+    Ok(Reply::Items { base: BASE.into(), items: vec![item] })
 }
 
 /// A datum as symbol search and symbol properties show it.

@@ -6,8 +6,10 @@
 //! releases are accepted and change nothing).
 //!
 //! DIPC queues are kept here: a client creates its queue, sends to a queue created
-//! this way and reads its own. Sending to a RAPID task's RMQ (`RMQ_T_ROB1`, or the
-//! task's name) is not supported yet and says so.
+//! this way and reads its own. A message sent to a RAPID task's RMQ (`RMQ_T_ROB1`, or
+//! the task's name) goes into the task's queue through the controller
+//! (`Session::send_rmq`): `dipc-data` is `<datatype>;<value>`, as RobotWare's IPC
+//! messages to RAPID are.
 
 use std::collections::{HashMap, VecDeque};
 use std::sync::{Arc, Mutex};
@@ -77,8 +79,17 @@ pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
                 cmd: req.field("dipc-cmd").unwrap_or("111").to_owned(),
                 from: req.field("dipc-src-queue-name").unwrap_or("").to_owned(),
             };
-            if is_task_queue(app, queue).await? {
-                return Err(RwsError::unsupported(format!("sending to a RAPID task's queue (`{queue}`)")));
+            if let Some(task) = task_of_queue(app, queue).await? {
+                let userdef = message
+                    .userdef
+                    .trim()
+                    .parse::<f64>()
+                    .map_err(|_| RwsError::bad_request(format!("dipc-userdef `{}`: a number", message.userdef)))?;
+                app.controller
+                    .call(move |core| core.session.send_rmq(&task, &message.data, userdef))
+                    .await?
+                    .map_err(|e| RwsError::from_api(&e))?;
+                return Ok(Reply::NoContent);
             }
             let event = crate::hub::Event::Dipc {
                 queue: (*queue).to_owned(),
@@ -158,11 +169,16 @@ impl Dipc {
 /// Whether `name` is a RAPID task's RMQ queue: `RMQ_<task>`, or the task's name,
 /// which clients may give for it.
 async fn is_task_queue(app: &Arc<App>, name: &str) -> Result<bool, RwsError> {
+    Ok(task_of_queue(app, name).await?.is_some())
+}
+
+/// The task whose RMQ queue `name` is (`RMQ_<task>` or the task's name), if any.
+async fn task_of_queue(app: &Arc<App>, name: &str) -> Result<Option<String>, RwsError> {
     let name = name.to_owned();
     app.controller
         .call(move |core| {
             let bare = name.get(..4).filter(|p| p.eq_ignore_ascii_case("RMQ_")).map_or(name.as_str(), |_| &name[4..]);
-            core.session.tasks().iter().any(|t| t.name.eq_ignore_ascii_case(bare))
+            core.session.tasks().into_iter().find(|t| t.name.eq_ignore_ascii_case(bare)).map(|t| t.name)
         })
         .await
 }

@@ -371,6 +371,7 @@ impl Vm {
             init: init.clone(),
             saved_pers: Vec::new(),
         });
+        self.refresh_symbols(Some(&checked));
         let res = self.run_init(init, host);
         let unit = self.modules.units.len() - 1;
         self.snapshot_pers(unit);
@@ -590,10 +591,23 @@ impl Vm {
         // Loaded modules compiled again without it: a call of one of its procedures then
         // raises ERR_REFUNKPRC, as a call of a procedure defined nowhere does. (Code
         // using its data no longer compiles and is kept; CheckProgRef reports it.)
-        if let Ok(checked) = check(self.modules.sources(), &self.modules.options) {
-            let modules = checked.modules();
-            self.relink_units(&checked, &modules);
+        match check(self.modules.sources(), &self.modules.options) {
+            Ok(checked) => {
+                let modules = checked.modules();
+                self.relink_units(&checked, &modules);
+                self.refresh_symbols(Some(&checked));
+            }
+            Err(_) => self.refresh_symbols(None),
         }
+    }
+
+    /// Makes the symbol catalogue (SetDataSearch, a front end's data by name) again
+    /// from `checked`, the program as it now stands: the live modules' data, those
+    /// loaded since the task started included. Unchecked, the unloaded ones' is dropped.
+    fn refresh_symbols(&mut self, checked: Option<&Checked>) {
+        let live = self.module_names();
+        let fresh = checked.map(|c| crate::builtins::symsearch::catalog::task_symbols(&c.prog, &c.modules()));
+        self.resources.symsearch.refresh(fresh, &live);
     }
 
     /// `EraseModule`: removes any module of the task by name.
@@ -643,6 +657,24 @@ impl Vm {
         dest: Option<(PathBuf, String)>,
     ) -> Result<(), RapidError> {
         self.save_module(name, dest)
+    }
+
+    /// The text of live module `name` as program memory holds it, current persistent
+    /// values written in (what Save would write; RWS's module text). `None` when the
+    /// task has no such module or its program does not check.
+    pub fn module_text_now(&self, name: &str) -> Option<String> {
+        let unit = self.modules.units.iter().position(|u| u.live && u.name.eq_ignore_ascii_case(name));
+        let (file, index) = match unit {
+            Some(unit) => (self.modules.base.len() + unit, 0),
+            None => self
+                .modules
+                .base_modules
+                .iter()
+                .find(|m| m.live && m.name.eq_ignore_ascii_case(name))
+                .map(|m| (m.file, m.index))?,
+        };
+        let checked = check(self.modules.sources(), &self.modules.options).ok()?;
+        Some(self.module_text(&checked, file, index, unit.is_some()))
     }
 
     fn save_module(&mut self, name: &str, dest: Option<(PathBuf, String)>) -> Result<(), RapidError> {
@@ -758,33 +790,5 @@ fn grow(values: &mut Vec<Value>, n: usize) {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Types, data and routines a program declares (the checker's numbering).
-    fn counts(text: &str) -> (rapid_sema::types::TypeId, usize, usize) {
-        let mut checked = check(vec![SourceInput::from_text("m.mod", text)], &Options::default())
-            .unwrap_or_else(|_| panic!("no program"));
-        let errors = checked.diagnostics.iter().filter(|d| d.severity() == Severity::Error).count();
-        assert_eq!(errors, 0, "{:?}", checked.diagnostics);
-        let (routines, datas) = members(&checked.prog, 0);
-        // The next type's number tells how many there are.
-        let info = rapid_sema::types::TypeInfo {
-            display: String::new(),
-            kind: rapid_sema::types::TypeKind::Pending,
-            span: Default::default(),
-        };
-        (checked.prog.types.add(info), datas.len(), routines.len())
-    }
-
-    #[test]
-    fn a_stand_in_declares_as_much_as_the_module_it_replaces() {
-        let text = "MODULE m\nRECORD r num a; num b; ENDRECORD\nALIAS num n2;\nVAR r v1;\nPERS num p := 1;\n\
-                    CONST num c := 2;\nPROC p1(num x) VAR num l; ENDPROC\nFUNC num f1() RETURN 1; ENDFUNC\n\
-                    TRAP t1 ENDTRAP\nENDMODULE\n";
-        let mut interner = rapid_syntax::Interner::default();
-        let parse = rapid_syntax::parse(text, &mut interner);
-        let replacement = stand_in(&parse.file.modules[0], 3);
-        assert_eq!(counts(text), counts(&replacement));
-    }
-}
+#[path = "modules_tests.rs"]
+mod tests;

@@ -141,6 +141,76 @@ fn send(ctx: &mut Ctx<'_>, task: usize, data: &Value, userdef: f64) -> Result<()
     Ok(())
 }
 
+/// Who sent a message that came from outside the tasks (a client of the controller):
+/// no task. Its slot (RMQGetMsgHeader `\SenderId`) names no queue, so an answer to
+/// it raises ERR_RMQ_INVALID.
+// uncertain: the manual does not say what the sender slot of a message from a PC
+// application holds.
+fn outside_sender(shared: &super::tasking::SharedTasking) -> usize {
+    shared.tasks.len()
+}
+
+/// Why a message from outside the tasks was not queued.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum OutsideRefusal {
+    /// Not `<datatype>;<value>`, or no literal of the type.
+    BadData(String),
+    /// A type that cannot be sent from outside yet.
+    Unsupported(String),
+    /// The queue's rules: no queue, a message too large, the queue full.
+    Queue(String),
+}
+
+/// Puts a message from outside the tasks into task `task`'s queue (an RWS client's
+/// DIPC send to `RMQ_<task>`): `data` as the controller's IPC messages to RAPID carry
+/// it, `<datatype>;<value>` (`num;42`, `string;"hi"`), the value a RAPID literal. The
+/// queue's rules are RMQSendMessage's. Only atomic value types travel this way yet
+/// (num, dnum, bool, string): a record's value cannot be read without its task's type
+/// table here, and is refused as not supported.
+pub fn send_from_outside(
+    shared: &mut super::tasking::SharedTasking,
+    task: usize,
+    data: &str,
+    userdef: f64,
+) -> Result<(), OutsideRefusal> {
+    use OutsideRefusal::{BadData, Queue, Unsupported};
+    let Some((type_name, literal)) = data.split_once(';') else {
+        return Err(BadData(format!("`{data}`: a message to a RAPID task is `<datatype>;<value>`")));
+    };
+    let template = match type_name.trim().to_ascii_lowercase().as_str() {
+        "num" => Value::Num(0.0),
+        "dnum" => Value::Dnum(0.0),
+        "bool" => Value::Bool(false),
+        "string" => Value::Str("".into()),
+        other => return Err(Unsupported(format!("messages of type `{other}` from outside the tasks"))),
+    };
+    let value = super::read_literal(literal.trim(), &template)
+        .ok_or_else(|| BadData(format!("`{}` is no {} literal", literal.trim(), type_name.trim())))?;
+    let names = TypeNames::default();
+    let (Some((datatype, dims)), Some(datum)) = (datum::type_of(&value, &names), datum::to_datum(&value, &names))
+    else {
+        return Err(BadData(format!("`{data}` cannot be sent")));
+    };
+    let Some(config) = shared.tasks.get(task).map(|t| t.rmq) else { return Err(Queue("no such task".to_owned())) };
+    if config.rmq_type == rapid_config::sys::RmqType::None {
+        return Err(Queue("the task has no message queue (its RmqType is None)".to_owned()));
+    }
+    let size = datum::size(&datum);
+    if size > config.max_msg_size as usize {
+        return Err(Queue(format!("a {size}-byte message is larger than the queue's {} bytes", config.max_msg_size)));
+    }
+    if shared.queues.get(task).map_or(0, |q| q.len()) >= config.max_no_of_msg as usize {
+        return Err(Queue("the queue is full".to_owned()));
+    }
+    let sender = outside_sender(shared);
+    let message = RmqMessage { datatype, dims, data: datum, sender, userdef, dispatched: false };
+    if let Some(queue) = shared.queues.get_mut(task) {
+        queue.push_back(message);
+    }
+    shared.epoch += 1;
+    Ok(())
+}
+
 /// Keeps `message` in the rmqmessage argument (reusing the entry it holds).
 fn hold(ctx: &mut Ctx<'_>, arg: &Value, message: RmqMessage) -> Result<(), RapidError> {
     let (opaque, handle) = ctx.handle_arg(arg, "an rmqmessage")?;

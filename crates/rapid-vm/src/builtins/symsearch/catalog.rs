@@ -1,5 +1,6 @@
 //! The list of the task's module-level data that the symbol search walks: name, module,
-//! declared type, storage class and LOCAL, built once when the program is loaded.
+//! declared type, storage class and LOCAL, built when the program is loaded and again
+//! when a module is loaded or unloaded (`exec::modules`).
 
 use rapid_sema::symbols::{DataKind, DeclOrigin};
 use rapid_sema::Program;

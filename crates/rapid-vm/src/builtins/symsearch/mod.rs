@@ -2,8 +2,9 @@
 //! SetAllDataVal and the `datapos` a found object comes with (GetDataVal and SetDataVal
 //! take it as `\Block`).
 //!
-//! The task's module-level data, in declaration order, is listed once when the program
-//! is loaded ([`catalog::task_symbols`]). SetDataSearch picks the matching ones at once;
+//! The task's module-level data, in declaration order, is listed when the program is
+//! loaded ([`catalog::task_symbols`]) and again whenever a module is loaded or
+//! unloaded. SetDataSearch picks the matching ones at once;
 //! GetNextSym hands them out one by one. A `datapos` holds `OpaqueState::Handle(m + 1)`
 //! for the module `m` that declares the object.
 //!
@@ -80,6 +81,27 @@ impl SymSearchState {
     /// The task's module-level data, in declaration order.
     pub fn data(&self) -> &[SymData] {
         &self.data
+    }
+
+    /// Takes `fresh`, the catalogue made again after modules were loaded or unloaded
+    /// (this one when it could not be made), keeping only the data of modules `live`
+    /// names (an unloaded module's stand-in is no module of the task). A search under
+    /// way goes on over the objects it had left that still exist.
+    pub(crate) fn refresh(&mut self, fresh: Option<SymSearchState>, live: &[String]) {
+        let mut fresh = fresh.unwrap_or_else(|| SymSearchState::new(self.modules.clone(), self.data.clone()));
+        let modules = &fresh.modules;
+        fresh
+            .data
+            .retain(|d| modules.get(d.module as usize).is_some_and(|m| live.iter().any(|l| l.eq_ignore_ascii_case(m))));
+        if let Some((left, handed)) = self.search.take() {
+            let left = left
+                .iter()
+                .filter_map(|&i| self.data.get(i).map(|d| d.global))
+                .filter_map(|global| fresh.data.iter().position(|d| d.global == global))
+                .collect();
+            fresh.search = Some((left, handed));
+        }
+        *self = fresh;
     }
 
     /// Forgets the current search (PP to Main).
