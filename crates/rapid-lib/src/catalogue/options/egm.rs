@@ -11,6 +11,10 @@
 //! `robot/HOME/motion_program_exec_egm.mod`). The names of the data types, constants and
 //! instructions are also those the vim-rapid syntax file lists for EGM
 //! (KnoP-01/rapid-for-vim `syntax/rapid.vim`).
+//!
+//! The manual may document optional arguments no public program passes (later
+//! RobotWare versions add some): the routines take optional arguments they do not
+//! declare (`open_optionals`); every argument declared is checked.
 
 use super::super::entry::*;
 
@@ -40,9 +44,12 @@ pub(super) const ENTRIES: &[Entry] = &[
     data("CONST egmframetype EGM_FRAME_JOINT := 4;", "EGM frame: joint values."),
     // ---- Identity and state ---------------------------------------------------------------
     // Verified (ABB's state machine add-in, motion-program-exec): one egmident.
-    routine("PROC EGMGetId(VAR egmident EGMid)", "Reserves an EGM process identity."),
-    routine("FUNC egmstate EGMGetState(VAR egmident EGMid)", "Returns the state of an EGM process."),
-    routine("PROC EGMReset(VAR egmident EGMid)", "Releases an EGM process identity and resets its process."),
+    routine("PROC EGMGetId(VAR egmident EGMid)", "Reserves an EGM process identity.")
+        .open_optionals(),
+    routine("FUNC egmstate EGMGetState(VAR egmident EGMid)", "Returns the state of an EGM process.")
+        .open_optionals(),
+    routine("PROC EGMReset(VAR egmident EGMid)", "Releases an EGM process identity and resets its process.")
+        .open_optionals(),
     // ---- Setup ---------------------------------------------------------------------------
     // EGMSetupUC verified: ABB's state machine add-in and motion-program-exec pass
     // (ROB_1, id, config, device) with \Joint, \Pose or \PathCorr \APTR and \CommTimeout.
@@ -52,17 +59,20 @@ pub(super) const ENTRIES: &[Entry] = &[
         r#"PROC EGMSetupUC(VAR mecunit MecUnit, VAR egmident EGMid, string ExtConfigName, string UCDevice, \switch Joint | switch Pose | switch PathCorr, \switch APTR | switch LATR, \num CommTimeout)"#,
         "Sets up an EGM process whose references come over UdpUc (UDP) from an external device.",
     )
-    .names_data(),
+    .names_data()
+    .open_optionals(),
     routine(
         r#"PROC EGMSetupAI(VAR mecunit MecUnit, VAR egmident EGMid, string ExtConfigName, \switch Joint | switch Pose | switch PathCorr, \switch APTR | switch LATR, \signalai AiJ1orX, \signalai AiJ2orY, \signalai AiJ3orZ, \signalai AiJ4orRX, \signalai AiJ5orRY, \signalai AiJ6orRZ, \signalai AiJ7)"#,
         "Sets up an EGM process whose references are analog input signals.",
     )
-    .names_data(),
+    .names_data()
+    .open_optionals(),
     routine(
         r#"PROC EGMSetupGI(VAR mecunit MecUnit, VAR egmident EGMid, string ExtConfigName, \switch Joint | switch Pose | switch PathCorr, \switch APTR | switch LATR, \signalgi GiJ1orX, \signalgi GiJ2orY, \signalgi GiJ3orZ, \signalgi GiJ4orRX, \signalgi GiJ5orRY, \signalgi GiJ6orRZ, \signalgi GiJ7)"#,
         "Sets up an EGM process whose references are group input signals.",
     )
-    .names_data(),
+    .names_data()
+    .open_optionals(),
     // ---- Activation ---------------------------------------------------------------------
     // Verified: ABB's state machine add-in calls EGMActJoint and EGMActPose with \Tool,
     // \WObj, \TLoad (in this order), the convergence ranges, \LpFilter, \SampleRate and
@@ -72,17 +82,20 @@ pub(super) const ENTRIES: &[Entry] = &[
     routine(
         r#"PROC EGMActJoint(VAR egmident EGMid, \switch StreamStart, \PERS tooldata Tool, \PERS wobjdata WObj, \PERS loaddata TLoad, \egm_minmax J1, \egm_minmax J2, \egm_minmax J3, \egm_minmax J4, \egm_minmax J5, \egm_minmax J6, \egm_minmax J7, \num LpFilter, \num SampleRate, \num MaxPosDeviation, \num MaxSpeedDeviation)"#,
         "Activates joint guidance for an EGM process, with convergence ranges per axis.",
-    ),
+    )
+    .open_optionals(),
     routine(
         r#"PROC EGMActPose(VAR egmident EGMid, \switch StreamStart, \PERS tooldata Tool, \PERS wobjdata WObj, \PERS loaddata TLoad, pose CorrFrame, egmframetype CorrFrType, pose SensorFrame, egmframetype SensorFrType, \egm_minmax x, \egm_minmax y, \egm_minmax z, \egm_minmax rx, \egm_minmax ry, \egm_minmax rz, \num LpFilter, \num SampleRate, \num MaxPosDeviation, \num MaxSpeedDeviation)"#,
         "Activates pose guidance for an EGM process, with its correction and sensor frames.",
-    ),
+    )
+    .open_optionals(),
     // Verified (motion-program-exec, public path-correction examples): id, a sensor
     // frame (a pose, often a tool's tframe) and \SampleRate.
     routine(
         r#"PROC EGMActMove(VAR egmident EGMid, \switch StreamStart, pose SensorFrame, \num LpFilter, \num SampleRate, \num MaxSpeedDeviation)"#,
         "Activates path correction for an EGM process (EGMMoveL, EGMMoveC).",
-    ),
+    )
+    .open_optionals(),
     // ---- Movement -----------------------------------------------------------------------
     // Verified: ABB's state machine add-in and motion-program-exec call EGMRunJoint and
     // EGMRunPose with a stop mode, \NoWaitCond, the axis switches, \CondTime,
@@ -92,31 +105,39 @@ pub(super) const ENTRIES: &[Entry] = &[
     routine(
         r#"PROC EGMRunJoint(VAR egmident EGMid, egmstopmode Mode, \switch NoWaitCond, \switch J1, \switch J2, \switch J3, \switch J4, \switch J5, \switch J6, \switch J7, \num CondTime, \num RampInTime, \num RampOutTime, \jointtarget Offset, \num PosCorrGain)"#,
         "Moves the robot by joint references from the external device until the convergence condition holds.",
-    ),
+    )
+    .open_optionals(),
     routine(
         r#"PROC EGMRunPose(VAR egmident EGMid, egmstopmode Mode, \switch NoWaitCond, \switch x, \switch y, \switch z, \switch Rx, \switch Ry, \switch Rz, \num CondTime, \num RampInTime, \num RampOutTime, \pose Offset, \num PosCorrGain)"#,
         "Moves the robot by pose references from the external device until the convergence condition holds.",
-    ),
+    )
+    .open_optionals(),
     routine(
         r#"PROC EGMStop(VAR egmident EGMid, egmstopmode Mode, \num RampOutTime)"#,
         "Stops an EGM movement.",
-    ),
+    )
+    .open_optionals(),
     routine(
         r#"PROC EGMWaitCond(VAR egmident EGMid)"#,
         "Waits until the convergence condition of an EGM movement started with \\NoWaitCond holds.",
-    ),
+    )
+    .open_optionals(),
     // Verified (motion-program-exec, public path-correction examples): id, then
     // MoveL's/MoveC's own arguments with \WObj.
     routine(
         r#"PROC EGMMoveL(VAR egmident EGMid, robtarget ToPoint, speeddata Speed, zonedata Zone, PERS tooldata Tool, \PERS wobjdata WObj, \PERS loaddata TLoad)"#,
         "A linear move corrected by EGM path correction.",
-    ),
+    )
+    .open_optionals(),
     routine(
         r#"PROC EGMMoveC(VAR egmident EGMid, robtarget CirPoint, robtarget ToPoint, speeddata Speed, zonedata Zone, PERS tooldata Tool, \PERS wobjdata WObj, \PERS loaddata TLoad)"#,
         "A circular move corrected by EGM path correction.",
-    ),
+    )
+    .open_optionals(),
     // ---- Position streaming -------------------------------------------------------------
     // Verified (ABB's state machine add-in, motion-program-exec): id and \SampleRate.
-    routine(r#"PROC EGMStreamStart(VAR egmident EGMid, \num SampleRate)"#, "Starts streaming the robot's positions to the external device."),
-    routine("PROC EGMStreamStop(VAR egmident EGMid)", "Stops streaming the robot's positions."),
+    routine(r#"PROC EGMStreamStart(VAR egmident EGMid, \num SampleRate)"#, "Starts streaming the robot's positions to the external device.")
+        .open_optionals(),
+    routine("PROC EGMStreamStop(VAR egmident EGMid)", "Stops streaming the robot's positions.")
+        .open_optionals(),
 ];
