@@ -28,6 +28,7 @@ pub(super) const ENTRIES: &[Entry] = &[
         "Force Control: a force (N) and a torque (Nm) along and about x, y, z.",
     ),
     opaque("fcframe", "Force Control: the reference frame of force control; values not public."),
+    // uncertain: no public caller found; as we know the manual (no argument).
     routine("FUNC bool FCIsForceMode()", "Force Control: whether force control is active."),
     routine(r#"FUNC fcforcevector FCGetForce(\switch ContactForce)"#, "Force Control: the measured force and torque.")
         .open_optionals(),
