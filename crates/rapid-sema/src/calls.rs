@@ -158,6 +158,11 @@ impl Checker<'_> {
         if let Some(name) = arg.name {
             let text = self.text(name.span);
             let Some(idx) = params.iter().position(|p| p.name == name.sym) else {
+                // An option routine whose manual is not public may take optional
+                // arguments its declaration does not list: the caller types the value.
+                if info.flags.open_optionals && arg.kind != ArgKind::Required {
+                    return None;
+                }
                 let shown = if arg.kind == ArgKind::Required { text.to_string() } else { format!("\\{text}") };
                 let message = format!("`{}` has no parameter `{shown}`", info.display);
                 self.diag(Code::UnknownArgument, name.span, message);

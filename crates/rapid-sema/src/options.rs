@@ -129,6 +129,39 @@ const OPTION_NAMES: &[(&[&str], &str)] = &[
         "Arc welding (RobotWare Arc)",
     ),
     (&["spotl", "spotj", "spotml", "spotmj", "spotdata", "gundata", "forcedata"], "Spot welding"),
+    // The names KnoP-01/rapid-for-vim `syntax/rapid.vim` lists for these options; public
+    // arc welding backups (taeyangshim-stack/s25016, zwj12/ZhongXunRapid) use them.
+    (
+        &[
+            "arcrepl",
+            "arcadaptlstart",
+            "arcadaptl",
+            "arcadaptc",
+            "arcadaptlend",
+            "arcadaptcend",
+            "arcadaptrepl",
+            "arccalclstart",
+            "arccalcl",
+            "arccalcc",
+            "arccalclend",
+            "arccalccend",
+            "mpsavepath",
+            "mploadpath",
+            "mpreadinpath",
+            "mpoffseaxonpath",
+            "multidata",
+            "adaptdata",
+        ],
+        "WeldGuide and MultiPass",
+    ),
+    (
+        &["capl", "capc", "capdata", "captrackdata", "capweavedata", "capspeeddata", "weavestartdata", "caprefresh"],
+        "Continuous Application Platform",
+    ),
+    (
+        &["daactproc", "dadeactproc", "dadefextsig", "dadefprocsig", "dadefprocdata", "dagetcurrdata", "dasetcurrdata"],
+        "Discrete Application Platform",
+    ),
     (
         &[
             "fcact",
@@ -163,6 +196,9 @@ mod tests {
         assert_eq!(option_of("egmident"), Some("Externally Guided Motion (EGM)"));
         assert_eq!(option_of("ArcLStart"), Some("Arc welding (RobotWare Arc)"));
         assert_eq!(option_of("FCAct"), Some("Force Control"));
+        assert_eq!(option_of("ArcRepL"), Some("WeldGuide and MultiPass"));
+        assert_eq!(option_of("multidata"), Some("WeldGuide and MultiPass"));
+        assert_eq!(option_of("DaGetCurrData"), Some("Discrete Application Platform"));
         assert_eq!(option_of("MoveL"), None);
         assert_eq!(option_of("my_proc"), None);
         // A user's own routine that happens to start with `egm` is no EGM name.

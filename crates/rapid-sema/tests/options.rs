@@ -130,3 +130,121 @@ fn undefined_names_beside_an_encrypted_module_are_warnings_naming_it() {
     assert!(got[1].2.starts_with("undefined data `tune_gain`"), "{}", got[1].2);
     assert!(!diagnostics(&files, None).iter().any(|d| d.severity() == rapid_sema::Severity::Error));
 }
+
+/// Calls of option routines written the way public RobotWare programs write them:
+/// ABB's BullsEye user template, SmarTac and arc welding programs, Force Control
+/// programs, ABB's EGM state machine add-in and a Production Manager system (the
+/// sources are named in the catalogue files, `rapid-lib/src/catalogue/options/`).
+const PUBLIC_CALLS: &str = "MODULE Calls
+TASK PERS menudata mdClean:=[\"Clean\",\"\",\"Clean\",1,\"\",255,TRUE,2,0,FALSE,12];
+TASK PERS tooldata tGun:=[TRUE,[[0,0,380],[1,0,0,0]],[3,[0,0,100],[1,0,0,0],0,0,0]];
+TASK PERS wobjdata woTable:=[FALSE,TRUE,\"\",[[800,0,0],[1,0,0,0]],[[0,0,0],[1,0,0,0]]];
+TASK PERS loaddata ldTool:=[2,[0,0,60],[1,0,0,0],0,0,0];
+TASK PERS pose peFound:=[[0,0,0],[1,0,0,0]];
+TASK PERS num nWidth:=0;
+TASK PERS num nTime:=0;
+CONST robtarget pA:=[[600,0,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+CONST robtarget pB:=[[650,0,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+CONST jointtarget jA:=[[0,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+VAR be_device dev;
+VAR be_scan scan;
+VAR be_tooldesign design;
+VAR egmident egmId;
+PROC calls()
+  BESetupToolJ jA,jA,15,design,scan,dev,v100,fine,tGun\\ElapsedTime:=nTime;
+  BECheckTcp tGun\\XYZOnly\\SingleScan;
+  Search_1D \\Wire,peFound\\SearchStop:=pStop,pA,pB,v100,tGun\\WObj:=woTable;
+  Search_Groove peFound,nWidth,pA,pB,25,v100,tGun;
+  ldTool:=FCLoadId(\\MaxMoveAx5:=30\\MaxMoveAx6:=60);
+  FCCalib ldTool;
+  FCPress1LStart pA,v50\\Fz:=40,20\\ForceChange:=80,z5,tGun\\WObj:=woTable;
+  EGMActJoint egmId\\Tool:=tGun\\WObj:=woTable\\TLoad:=ldTool;
+  ArcL pB,v100,seamx,weldx,z1,tGun\\PreProcessTracking;
+  ExecEngine;
+ENDPROC
+VAR seamdata seamx;
+VAR welddata weldx;
+TASK PERS robtarget pStop:=[[600,0,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+ENDMODULE
+";
+
+#[test]
+fn option_calls_as_public_programs_write_them_check_clean() {
+    let files = [SourceInput::from_text("calls.mod", PUBLIC_CALLS)];
+    assert_eq!(found(&files, None), vec![]);
+    let all = ["633-4 Arc with MultiProcess", "652-1 BullsEye", "657-1 SmarTac IO version", "661-2 Force Control Base"];
+    let all = [&all[..], &["689-1 Externally Guided Motion (EGM)", "812-1 Production Manager"]].concat();
+    assert_eq!(found(&files, Some(&all)), vec![]);
+}
+
+#[test]
+fn option_calls_without_their_options_belong_to_them() {
+    let files = [SourceInput::from_text("calls.mod", PUBLIC_CALLS)];
+    let got = found(&files, Some(&["RobotWare Base"]));
+    let names: Vec<(u32, &str)> = got
+        .iter()
+        .map(|d| {
+            assert_eq!(d.0, "E0217", "{d:?}");
+            (d.1, d.2.split('`').nth(1).unwrap_or(""))
+        })
+        .collect();
+    // One E0217 per use, at its line: the menu data's type (2), the BullsEye types
+    // (12-14), egmident (15), each call (17-26), the arc data types (28, 29).
+    let expected = [
+        (2, "menudata"),
+        (12, "be_device"),
+        (13, "be_scan"),
+        (14, "be_tooldesign"),
+        (15, "egmident"),
+        (17, "BESetupToolJ"),
+        (18, "BECheckTcp"),
+        (19, "Search_1D"),
+        (20, "Search_Groove"),
+        (21, "FCLoadId"),
+        (22, "FCCalib"),
+        (23, "FCPress1LStart"),
+        (24, "EGMActJoint"),
+        (25, "ArcL"),
+        (26, "ExecEngine"),
+        (28, "seamdata"),
+        (29, "welddata"),
+    ];
+    assert_eq!(names, expected, "{got:?}");
+}
+
+#[test]
+fn wrong_calls_of_option_routines_still_get_their_errors() {
+    // Each line gets the error any RAPID routine would: open optional arguments do not
+    // excuse a missing required argument, a positional argument too many, a wrong type
+    // or a function called as a procedure, and the value of an optional argument the
+    // declaration does not list is still checked.
+    let text = "MODULE Wrong
+TASK PERS tooldata tGun:=[TRUE,[[0,0,380],[1,0,0,0]],[3,[0,0,100],[1,0,0,0],0,0,0]];
+TASK PERS pose peFound:=[[0,0,0],[1,0,0,0]];
+CONST robtarget pA:=[[600,0,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+VAR egmident egmId;
+PROC wrong()
+  Search_1D peFound,pA,pA,v100;
+  BECheckTcp tGun,5;
+  FCCalib;
+  FCLoadId;
+  PDispAdd pA;
+  EGMActJoint egmId\\TLoad:=tGun;
+  BECheckTcp tGun\\Progress:=nowhere;
+ENDPROC
+ENDMODULE
+";
+    let files = [SourceInput::from_text("wrong.mod", text)];
+    let got: Vec<(String, u32)> = found(&files, None).into_iter().map(|d| (d.0, d.1)).collect();
+    let expected = [
+        ("E0402", 7),  // Search_1D needs Tool
+        ("E0401", 8),  // BECheckTcp takes one required argument
+        ("E0402", 9),  // FCCalib needs Load
+        ("E0209", 10), // FCLoadId is a function
+        ("E0301", 11), // PDispAdd takes a pose, not a robtarget
+        ("E0301", 12), // \TLoad is loaddata
+        ("E0201", 13), // an undeclared optional argument's value is still resolved
+    ];
+    let expected: Vec<(String, u32)> = expected.iter().map(|&(c, l)| (c.to_owned(), l)).collect();
+    assert_eq!(got, expected);
+}

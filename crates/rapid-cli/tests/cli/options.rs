@@ -129,3 +129,65 @@ fn module_data_of_an_opaque_option_type_checks_but_does_not_run() {
     );
     assert_eq!(stdout(&out), "");
 }
+
+#[test]
+fn option_calls_as_public_programs_write_them_check_clean_on_a_system_with_the_options() {
+    // weld_cell's system.xml lists EGM, Force Control, Production Manager and Arc with
+    // BullsEye and SmarTac; its modules call each option the way public programs do.
+    let out = rapid_in(&options_dir(), &["check", "weld_cell"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stdout(&out));
+    assert_eq!(stdout(&out), "checked 2 files: no problems found\n");
+}
+
+#[test]
+fn option_calls_on_a_system_without_the_options_belong_to_them() {
+    // The same modules with only RobotWare Base: every option name is E0217, once per
+    // use. Counted by hand from the modules: Production Manager 3 (menudata, partdata,
+    // ExecEngine), Arc 9 (seamdata, welddata, weavedata, trackdata, ArcLStart, ArcL,
+    // ArcCEnd, ArcRefresh, ArcMoveExtJ), SmarTac 4 (Search_1D twice, PDispAdd,
+    // Search_Groove), Force Control 7 (fcforcevector, FCLoadId, FCCalib, FCAct,
+    // FCPress1LStart, FCPressL, FCGetForce), EGM 8 (egmident, egm_minmax, EGMGetId,
+    // EGMSetupUC, EGMActJoint, EGMRunJoint, EGM_STOP_HOLD, EGMReset), BullsEye 9
+    // (be_device, be_scan, be_tooldesign, BEDebugState, BESetupToolJ, BECheckTcp,
+    // BEUpdateTcp, BERefPointer, BETcpExtend): 40.
+    let dir = scratch_in("options", "weld_cell_without_options");
+    let source = options_dir().join("weld_cell/RAPID/TASK1");
+    let cell = std::fs::read_to_string(source.join("PROGMOD/Cell.mod")).expect("Cell.mod");
+    let torch = std::fs::read_to_string(source.join("SYSMOD/TorchCheck.sys")).expect("TorchCheck.sys");
+    let system = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<SystemProperties>\n  <ControlModule>\n    \
+                  <Option descr=\"RobotWare Base\">\n    </Option>\n  </ControlModule>\n</SystemProperties>\n";
+    write_files(
+        dir.path(),
+        &[
+            ("cell/system.xml", system),
+            ("cell/RAPID/TASK1/PROGMOD/Cell.mod", &cell),
+            ("cell/RAPID/TASK1/SYSMOD/TorchCheck.sys", &torch),
+        ],
+    );
+    let out = rapid_in(dir.path(), &["check", "cell"]);
+    let report = stdout(&out);
+    assert_eq!(out.status.code(), Some(1), "{report}");
+    for (option, count) in [
+        ("Production Manager", 3),
+        ("Arc (RobotWare Arc)", 9),
+        ("SmarTac", 4),
+        ("Force Control", 7),
+        ("Externally Guided Motion (EGM)", 8),
+        ("BullsEye", 9),
+    ] {
+        let needle = format!("belongs to option {option}, which this system does not have");
+        assert_eq!(report.matches(&needle).count(), count, "{option}: {report}");
+    }
+    assert!(report.contains("error[E0217]: `FCLoadId` belongs to option Force Control"), "{report}");
+    assert!(report.ends_with("found 40 errors and 0 warnings in 2 files\n"), "{report}");
+}
+
+#[test]
+fn run_refuses_the_production_manager_loop_naming_its_option() {
+    // menudata and partdata are opaque: module data of them cannot be given a value.
+    let out = rapid_in(&options_dir(), &["run", "weld_cell"]);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    let err = stderr(&out);
+    assert!(err.contains("`mdCleanTorch` is data of `menudata`, a type of option Production Manager"), "{err}");
+    assert_eq!(stdout(&out), "");
+}

@@ -61,10 +61,16 @@ pub struct RoutineFlags {
     /// its kind (instruction or function) are known (the arguments' own names are
     /// still resolved).
     pub unchecked_args: bool,
+    /// Optional arguments the declaration does not list are accepted (their values are
+    /// still resolved): the routine belongs to a software option whose manual is not
+    /// public, public programs show its required parameters and some of its optional
+    /// ones, and the manual may document more. Everything declared is checked.
+    pub open_optionals: bool,
 }
 
 impl RoutineFlags {
-    const NONE: RoutineFlags = RoutineFlags { names_data: false, takes_signals: false, unchecked_args: false };
+    const NONE: RoutineFlags =
+        RoutineFlags { names_data: false, takes_signals: false, unchecked_args: false, open_optionals: false };
 }
 
 impl Entry {
@@ -76,6 +82,11 @@ impl Entry {
     /// The routine's arguments are not checked ([`RoutineFlags::unchecked_args`]).
     pub const fn unchecked_args(self) -> Entry {
         Entry { flags: RoutineFlags { unchecked_args: true, ..self.flags }, ..self }
+    }
+
+    /// Optional arguments it does not declare are accepted ([`RoutineFlags::open_optionals`]).
+    pub const fn open_optionals(self) -> Entry {
+        Entry { flags: RoutineFlags { open_optionals: true, ..self.flags }, ..self }
     }
 
     /// The routine's `anytype` parameters take signals themselves ([`RoutineFlags::takes_signals`]).

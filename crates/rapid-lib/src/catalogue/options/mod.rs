@@ -15,6 +15,7 @@ mod arc;
 mod bullseye;
 mod egm;
 mod force;
+mod production_manager;
 mod smartac;
 
 /// One software option: how controllers name it and what it declares.
@@ -64,7 +65,8 @@ pub static ALL_OPTIONS: &[SoftwareOption] = &[
         short: "SmarTac",
         name: "SmarTac",
         chapter: "options/smartac",
-        numbers: &[],
+        // `657-1 SmarTac IO version` in public backups' system.xml.
+        numbers: &["657"],
         words: &["SmarTac"],
         entries: smartac::ENTRIES,
     },
@@ -75,6 +77,14 @@ pub static ALL_OPTIONS: &[SoftwareOption] = &[
         numbers: &["661"],
         words: &["Force Control"],
         entries: force::ENTRIES,
+    },
+    SoftwareOption {
+        short: "ProductionManager",
+        name: "Production Manager",
+        chapter: "options/production_manager",
+        numbers: &["812"],
+        words: &["Production Manager"],
+        entries: production_manager::ENTRIES,
     },
 ];
 
@@ -139,10 +149,12 @@ mod tests {
         assert_eq!(short("633-1 Arc"), Some("Arc"));
         assert_eq!(short("652-1 BullsEye"), Some("BullsEye"));
         assert_eq!(short("SmarTac"), Some("SmarTac"));
+        assert_eq!(short("657-1 SmarTac IO version"), Some("SmarTac"));
         // Manifest spellings: the short name or the manual's name, any case.
         assert_eq!(short("egm"), Some("EGM"));
         assert_eq!(short("arc"), Some("Arc"));
         assert_eq!(short("Force Control"), Some("ForceControl"));
+        assert_eq!(short("812-1 Production Manager"), Some("ProductionManager"));
         // Other products are no option of ours; "Arc" must be a whole word.
         assert_eq!(short("623-1 Multitasking"), None);
         assert_eq!(short("653-2 Binzel - TC97"), None);
