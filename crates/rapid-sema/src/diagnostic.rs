@@ -12,12 +12,14 @@ use crate::codes::{Code, Severity};
 /// The text is shared, not owned: the front end keeps the files for its messages, the
 /// interpreter keeps them to link modules loaded at run time and to serve and save
 /// module text, and a clone is a reference count, so a run holds each source once.
+/// An `Arc<String>` rather than an `Arc<str>`: the decoded `String` moves in as it is,
+/// where an `Arc<str>` would copy it (twice the file's size for a moment).
 #[derive(Debug, Clone)]
 pub struct SourceInput {
     /// The path as the user should see it in messages.
     pub path: String,
     /// The decoded text (empty when the file could not be read as text).
-    pub text: Arc<str>,
+    pub text: Arc<String>,
     /// Why the bytes are not RAPID text, if they are not.
     pub unreadable: Option<Unreadable>,
 }
@@ -27,14 +29,14 @@ impl SourceInput {
     pub fn from_bytes(path: impl Into<String>, bytes: Vec<u8>) -> SourceInput {
         let path = path.into();
         match decode(bytes) {
-            Ok(source) => SourceInput { path, text: source.text.into(), unreadable: None },
-            Err(why) => SourceInput { path, text: Arc::from(""), unreadable: Some(why) },
+            Ok(source) => SourceInput { path, text: Arc::new(source.text), unreadable: None },
+            Err(why) => SourceInput { path, text: Arc::default(), unreadable: Some(why) },
         }
     }
 
     /// A file given as text.
     pub fn from_text(path: impl Into<String>, text: impl Into<String>) -> SourceInput {
-        SourceInput { path: path.into(), text: text.into().into(), unreadable: None }
+        SourceInput { path: path.into(), text: Arc::new(text.into()), unreadable: None }
     }
 }
 

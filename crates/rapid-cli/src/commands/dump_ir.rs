@@ -21,7 +21,7 @@ pub(crate) fn run(args: &DumpIrArgs) -> anyhow::Result<ExitStatus> {
         Err(err) => return super::run::report_load_error(err, &inputs.modules),
     };
     let mut out = BufWriter::new(io::stdout().lock());
-    let source = |file: usize| inputs.modules.get(file).map(|f| &*f.text);
+    let source = |file: usize| inputs.modules.get(file).map(|f| f.text.as_str());
     let mut first = true;
     let routines = &task.compiled.routines;
     for code in routines.iter().flatten() {
