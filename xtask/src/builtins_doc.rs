@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 
 use rapid_lib::catalogue::options::ALL_OPTIONS;
 use rapid_lib::catalogue::{Entry, EntryKind, ALL_CHAPTERS};
-use rapid_syntax::ast::Item;
+use rapid_syntax::ast::{Item, RoutineKind};
 use rapid_syntax::Interner;
 
 /// The command that regenerates the file (printed when it is stale).
@@ -21,19 +21,23 @@ pub(crate) const PATH: &str = "docs/builtins.md";
 const SHOWN_TESTS: usize = 3;
 
 /// What `rapid run` does with one built-in.
-enum Status {
+pub(crate) enum Status {
     /// Runs it: the family file that registers it.
     Runs(String),
-    /// Refuses it at load, for this reason (a routine of a software option: the
-    /// option's name).
+    /// Refuses it at load, for the reason `builtins/not_yet.rs` gives.
     NotYet(String),
+    /// Refuses it at load because it is a routine of a software option `rapid run`
+    /// does not simulate: the message, and the option's name.
+    Option(String, &'static str),
 }
 
 /// One built-in instruction or function.
-struct Row {
-    name: String,
-    chapter: &'static str,
-    status: Status,
+pub(crate) struct Row {
+    pub(crate) name: String,
+    pub(crate) chapter: &'static str,
+    /// An instruction (PROC), else a function (FUNC).
+    pub(crate) instruction: bool,
+    pub(crate) status: Status,
     tests: Vec<String>,
 }
 
@@ -42,8 +46,9 @@ pub(crate) fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
 }
 
-/// Every routine the catalogue declares, with its chapter, in catalogue order.
-fn catalogue_routines() -> Vec<(String, &'static str)> {
+/// Every routine the catalogue declares, with its chapter and whether it is an
+/// instruction, in catalogue order.
+fn catalogue_routines() -> Vec<(String, &'static str, bool)> {
     let mut interner = Interner::default();
     let cat = rapid_lib::load(&mut interner);
     let mut out = Vec::new();
@@ -52,7 +57,8 @@ fn catalogue_routines() -> Vec<(String, &'static str)> {
             continue;
         }
         if let Some(Item::Routine(routine)) = cat.item(loaded) {
-            out.push((routine.name.span.text(&cat.text).to_string(), loaded.chapter));
+            let instruction = routine.kind == RoutineKind::Proc;
+            out.push((routine.name.span.text(&cat.text).to_string(), loaded.chapter, instruction));
         }
     }
     out
@@ -116,25 +122,28 @@ fn family_files() -> BTreeMap<String, String> {
         .collect()
 }
 
-fn rows(root: &Path) -> Vec<Row> {
+/// Every catalogue instruction and function with what `rapid run` does with it, by
+/// chapter (the catalogue's order of chapter files) and name.
+pub(crate) fn rows(root: &Path) -> Vec<Row> {
     let programs = conformance_words(root);
     let families = family_files();
     let order: Vec<&str> = chapters().map(|(name, _)| name).collect();
     let mut rows: Vec<Row> = catalogue_routines()
         .into_iter()
-        .map(|(name, chapter)| {
+        .map(|(name, chapter, instruction)| {
             let key = name.to_ascii_lowercase();
             let tests = programs.iter().filter(|(_, words)| words.contains(&key)).map(|(p, _)| p.clone()).collect();
-            let reason = rapid_vm::builtins::not_supported_reason(&name)
-                .map(str::to_owned)
-                .or_else(|| rapid_vm::builtins::option_refusal(&name, chapter));
-            let status = match (families.get(&key), reason) {
-                (Some(file), _) => Status::Runs(file.clone()),
-                (None, Some(reason)) => Status::NotYet(reason),
+            let not_yet = rapid_vm::builtins::not_supported_reason(&name).map(str::to_owned);
+            let option = rapid_lib::catalogue::options::of_chapter(chapter)
+                .and_then(|option| Some((rapid_vm::builtins::option_refusal(&name, chapter)?, option.name)));
+            let status = match (families.get(&key), not_yet, option) {
+                (Some(file), _, _) => Status::Runs(file.clone()),
+                (None, Some(reason), _) => Status::NotYet(reason),
+                (None, None, Some((message, option))) => Status::Option(message, option),
                 // The registry's own test refuses this; say so rather than hide it.
-                (None, None) => Status::NotYet("(neither registered nor listed in not_yet.rs)".to_owned()),
+                (None, None, None) => Status::NotYet("(neither registered nor listed in not_yet.rs)".to_owned()),
             };
-            Row { name, chapter, status, tests }
+            Row { name, chapter, instruction, status, tests }
         })
         .collect();
     let rank = |chapter: &str| order.iter().position(|c| *c == chapter).unwrap_or(usize::MAX);
@@ -184,7 +193,9 @@ pub(crate) fn render(root: &Path) -> String {
     for row in &rows {
         let (status, place) = match &row.status {
             Status::Runs(file) => ("run".to_string(), format!("`{file}`")),
-            Status::NotYet(reason) => (format!("refused at load: {reason}"), "—".to_string()),
+            Status::NotYet(reason) | Status::Option(reason, _) => {
+                (format!("refused at load: {reason}"), "—".to_string())
+            }
         };
         out.push_str(&format!(
             "| {} | `{}.rs` | {status} | {place} | {} |\n",
@@ -224,7 +235,7 @@ fn catalogue_summary() -> String {
 }
 
 /// Every chapter of the catalogue, then every software option's, with its entries.
-fn chapters() -> impl Iterator<Item = (&'static str, &'static [Entry])> {
+pub(crate) fn chapters() -> impl Iterator<Item = (&'static str, &'static [Entry])> {
     ALL_CHAPTERS.iter().copied().chain(ALL_OPTIONS.iter().map(|option| (option.chapter, option.entries)))
 }
 
@@ -245,13 +256,18 @@ fn tests_cell(tests: &[String]) -> String {
     cell
 }
 
-/// Writes `docs/builtins.md` (through a temporary file, so a failed write leaves the
-/// old copy whole).
+/// Writes `docs/builtins.md`, then the generated section of `docs/coverage.md`.
 pub(crate) fn write(root: &Path) -> std::io::Result<()> {
-    let path = root.join(PATH);
+    write_atomic(&root.join(PATH), &render(root))?;
+    crate::coverage_doc::write(root)
+}
+
+/// Writes `text` to `path` through a temporary file, so a failed write leaves the old
+/// copy whole.
+pub(crate) fn write_atomic(path: &Path, text: &str) -> std::io::Result<()> {
     let tmp = path.with_extension("md.tmp");
-    fs::write(&tmp, render(root))?;
-    fs::rename(&tmp, &path)
+    fs::write(&tmp, text)?;
+    fs::rename(&tmp, path)
 }
 
 #[cfg(test)]
@@ -281,5 +297,8 @@ mod tests {
         assert!(matches!(status("Continue"), Status::Runs(file) if file == "compile/call.rs"));
         assert!(matches!(status("StrLen"), Status::Runs(file) if file == "builtins/strings.rs"));
         assert!(matches!(status("WaitSensor"), Status::NotYet(reason) if !reason.is_empty()));
+        assert!(matches!(status("EGMReset"), Status::Option(_, option) if option.contains("EGM")));
+        assert!(rows.iter().find(|r| r.name == "MoveL").is_some_and(|r| r.instruction));
+        assert!(rows.iter().find(|r| r.name == "StrLen").is_some_and(|r| !r.instruction));
     }
 }

@@ -82,6 +82,25 @@ pub const PULSES: usize = 10;
 /// Signal orders delayed at once (overview §2.10: at most 20).
 pub const DELAYED_ORDERS: usize = 20;
 
+/// Bytes of source text one task's program may have before program memory is said to
+/// be full: every module of the task (program and system modules) counted as the bytes
+/// of its text as read (UTF-8; a Latin-1 letter past ASCII counts two), summed.
+///
+/// **Ours**, and only a warning (W0706), the same in check and run. A real controller
+/// refuses a module that does not fit its program memory (Load raises ERR_PRGMEMFULL,
+/// "program memory full"; ProgMemFree reports what is left), and the manual presents
+/// Load/UnLoad as the way to run a program larger than that memory (overview §1.6,
+/// "Loading program modules").
+/// But ABB publishes neither the size of an IRC5's program memory nor how a program is
+/// counted against it (the controller holds the program compiled, in a form that is not
+/// public), and no public event-log message gives a figure. Source bytes are what a
+/// user can see and split; our own compiled size is not used because it would make the
+/// finding change with the interpreter's version. 64 MiB lets the largest programs we
+/// know pass (a 357,000-line, 50 MB CAM module) and notes a synthetic 1,000,000-line
+/// (140 MB) one, which no controller is known to hold; with the figure not public that
+/// is a warning, not a refusal.
+pub const PROGRAM_MEMORY_BYTES: u64 = 64 << 20;
+
 /// Every limit with its value and source, for documentation and tests.
 pub const TABLE: &[Limit] = &[
     Limit { what: "identifier characters", value: IDENT_CHARS as u64, source: "overview §1.1.2" },
@@ -99,6 +118,7 @@ pub const TABLE: &[Limit] = &[
     Limit { what: "world zones", value: WORLD_ZONES as u64, source: "overview §2.9" },
     Limit { what: "pulsed signals", value: PULSES as u64, source: "overview §2.10" },
     Limit { what: "delayed signal orders", value: DELAYED_ORDERS as u64, source: "overview §2.10" },
+    Limit { what: "program source bytes", value: PROGRAM_MEMORY_BYTES, source: "ours: not public (warning)" },
 ];
 
 /// The element count of an array with dimensions `dims` (each at least 1) as a number
@@ -123,6 +143,18 @@ pub fn array_too_large(name: &str, elements: f64) -> String {
     format!("array `{name}` has {} elements; at most {ARRAY_ELEMENTS} fit", count_text(elements))
 }
 
+/// The note for a task's program over [`PROGRAM_MEMORY_BYTES`], the same in check and
+/// run: "the task's program is 146000000 bytes of source text; program memory holds at
+/// most 67108864 …".
+pub fn program_too_large(bytes: u64) -> String {
+    format!(
+        "the task's program is {bytes} bytes of source text; program memory holds at most \
+         {PROGRAM_MEMORY_BYTES} (our figure: ABB does not publish an IRC5's), so a controller may \
+         refuse to load it (program memory full, ERR_PRGMEMFULL): split it into modules loaded \
+         when needed (Load, UnLoad)"
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -137,6 +169,14 @@ mod tests {
     #[test]
     fn message_names_the_limit() {
         assert_eq!(array_too_large("a", 1e8), "array `a` has 100000000 elements; at most 1048576 fit");
+    }
+
+    #[test]
+    fn program_memory_message_names_the_limit_and_the_size() {
+        let text = program_too_large(146_000_000);
+        assert!(text.starts_with("the task's program is 146000000 bytes of source text;"), "{text}");
+        assert!(text.contains("at most 67108864 "), "{text}");
+        assert!(text.contains("ERR_PRGMEMFULL"), "{text}");
     }
 
     #[test]

@@ -153,6 +153,7 @@ diagnostic_codes! {
     "E0703" Error   SharedPersMismatch:        "a global PERS declared with another type or array size than in another task of the system (one persistent for all tasks, §1.20)";
     "E0704" Error   EventRoutineMissing:       "an event routine (SYS.cfg CAB_EXEC_HOOKS) that is not a procedure of a task it is configured for";
     "E0705" Error   EntryRoutineMissing:       "a configured task whose entry routine (SYS.cfg -Entry, a manifest's entry; main by default) is not a global procedure of the task (the first task's unless `rapid run --entry` gives another)";
+    "W0706" Warning ProgramMemoryFull:         "a task's program with more source text than program memory holds (64 MiB, our figure: ABB's is not public); a controller may refuse to load it";
 }
 
 #[cfg(test)]

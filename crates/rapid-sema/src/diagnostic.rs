@@ -1,17 +1,25 @@
 //! Diagnostics as data, and the inputs they point into.
 
+use std::sync::Arc;
+
 use rapid_syntax::source::{decode, Unreadable};
 use rapid_syntax::Span;
 
 use crate::codes::{Code, Severity};
 
 /// One file of the program: its display path and decoded text.
+///
+/// The text is shared, not owned: the front end keeps the files for its messages, the
+/// interpreter keeps them to link modules loaded at run time and to serve and save
+/// module text, and a clone is a reference count, so a run holds each source once.
+/// An `Arc<String>` rather than an `Arc<str>`: the decoded `String` moves in as it is,
+/// where an `Arc<str>` would copy it (twice the file's size for a moment).
 #[derive(Debug, Clone)]
 pub struct SourceInput {
     /// The path as the user should see it in messages.
     pub path: String,
     /// The decoded text (empty when the file could not be read as text).
-    pub text: String,
+    pub text: Arc<String>,
     /// Why the bytes are not RAPID text, if they are not.
     pub unreadable: Option<Unreadable>,
 }
@@ -21,14 +29,14 @@ impl SourceInput {
     pub fn from_bytes(path: impl Into<String>, bytes: Vec<u8>) -> SourceInput {
         let path = path.into();
         match decode(bytes) {
-            Ok(source) => SourceInput { path, text: source.text, unreadable: None },
-            Err(why) => SourceInput { path, text: String::new(), unreadable: Some(why) },
+            Ok(source) => SourceInput { path, text: Arc::new(source.text), unreadable: None },
+            Err(why) => SourceInput { path, text: Arc::default(), unreadable: Some(why) },
         }
     }
 
     /// A file given as text.
     pub fn from_text(path: impl Into<String>, text: impl Into<String>) -> SourceInput {
-        SourceInput { path: path.into(), text: text.into(), unreadable: None }
+        SourceInput { path: path.into(), text: Arc::new(text.into()), unreadable: None }
     }
 }
 

@@ -17,6 +17,7 @@ mod consteval;
 mod decls;
 mod diagnostic;
 mod expr;
+mod memory;
 mod options;
 pub mod symbols;
 mod syntax;
@@ -106,7 +107,8 @@ impl Program {
 pub fn analyze(files: &[SourceInput], options: &Options) -> Analysis {
     let (base_interner, catalogue) = catalogue();
     let mut interner = base_interner.clone();
-    let mut diags = Vec::new();
+    let mut diags: Vec<Diagnostic> =
+        memory::program_memory(files, rapid_limits::PROGRAM_MEMORY_BYTES).into_iter().collect();
     // An encrypted module beside readable ones is part of a task the controller
     // loads whole: it is loaded unread (W0131) and the names it may define are not
     // errors (W0218). Alone, there is nothing to check: E0109.

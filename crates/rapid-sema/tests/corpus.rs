@@ -92,7 +92,7 @@ fn program_folders_check_clean() {
 /// `(code, line)` pairs a fixture expects.
 fn expectations(path: &Path, input: &SourceInput) -> BTreeSet<(String, u32)> {
     let sidecar = path.with_extension("expect");
-    let text = if sidecar.exists() { fs::read_to_string(&sidecar).unwrap_or_default() } else { input.text.clone() };
+    let text = if sidecar.exists() { fs::read_to_string(&sidecar).unwrap_or_default() } else { input.text.to_string() };
     let mut expected = BTreeSet::new();
     for line in text.lines() {
         let line = line.trim();

@@ -267,3 +267,17 @@ fn a_file_with_an_error_among_many_diagnostics_stops_with_an_error() {
     assert_eq!(count(&found, "W0112"), 0);
     assert_eq!(found.len(), 500);
 }
+
+/// W0706: a task's program over `rapid_limits::PROGRAM_MEMORY_BYTES` of source text in
+/// all (65 comment lines of 1 MiB in one module, a small main module beside it) is
+/// noted at the start of its largest file, and still checks: it is a warning.
+#[test]
+fn a_program_larger_than_program_memory_is_noted_at_its_largest_file() {
+    let line = format!("! {}\n", "x".repeat((1 << 20) - 3));
+    let big = format!("MODULE Points\n{}ENDMODULE\n", line.repeat(65));
+    let main = "MODULE MainModule\nPROC main()\nENDPROC\nENDMODULE";
+    let total = (big.len() + main.len()) as u64;
+    assert!(total > rapid_limits::PROGRAM_MEMORY_BYTES && (big.len() as u64) < 66 << 20);
+    let found = codes(&[("main.mod", main), ("points.mod", &big)]);
+    assert_eq!(found, vec![("points.mod".into(), "W0706", 1)]);
+}

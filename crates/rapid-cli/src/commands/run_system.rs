@@ -120,6 +120,7 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
                 return single::report_load_error(err, &task.inputs.modules);
             }
         };
+        print_program_memory_note(&program.warnings, &task.inputs.modules);
         facts.push((program.analysis.as_deref().map(system::facts).unwrap_or_default(), entry_given));
         // The checked program is not needed to run, and the process ends with the run:
         // its memory goes back to the system then, without the time freeing it would take.
@@ -271,6 +272,16 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
 
 /// What ended a program run alone, said as the program's (no task named): a bound,
 /// its unhandled error, ExitCycle in cycle mode. Its exit status.
+/// The program-memory note (W0706) `rapid check` gives, on stderr before the run: a
+/// real controller may refuse such a program, so the run says so too (the program still
+/// runs; other warnings are `rapid check`'s business).
+fn print_program_memory_note(warnings: &[rapid_sema::Diagnostic], files: &[SourceInput]) {
+    for note in warnings.iter().filter(|d| d.code == rapid_sema::Code::ProgramMemoryFull) {
+        let (path, line, column) = single::location(files, note.file, note.span.start);
+        eprintln!("warning[{}]: {path}:{line}:{column}: {}", note.code.as_str(), note.message);
+    }
+}
+
 fn report_alone(controller: &Controller, files: &[SourceInput], bound: Option<&Bound>, args: &RunArgs) -> ExitStatus {
     match bound {
         Some(Bound::Steps(max)) => {

@@ -59,3 +59,23 @@ fn open_files_are_bounded() {
     let run = rapid_in(&dir, &["run", "--home", &home, "m.mod"]);
     assert_eq!(stdout(&run), "refused after 64\n", "{}", stderr(&run));
 }
+
+/// W0706, the program-memory note: a module of 65 comment lines of 1 MiB (over the
+/// 64 MiB = 67108864 bytes of `rapid-limits`) is noted by check and by run alike, with
+/// its size in bytes, and still runs: the figure is ours, so it is a warning.
+#[test]
+fn check_and_run_note_a_program_larger_than_program_memory_alike() {
+    let dir = scratch_in("limits", "program_memory");
+    let line = format!("! {}\n", "x".repeat((1 << 20) - 3));
+    let text = format!("MODULE Points\n{}  PROC main()\n    TPWrite \"ran\";\n  ENDPROC\nENDMODULE\n", line.repeat(65));
+    std::fs::write(dir.join("points.mod"), &text).expect("write points.mod");
+    let message =
+        format!("the task's program is {} bytes of source text; program memory holds at most 67108864 ", text.len());
+    let check = rapid_in(&dir, &["check", "points.mod"]);
+    assert_eq!(check.status.code(), Some(0), "{}", stdout(&check));
+    assert!(stdout(&check).contains(&format!("warning[W0706]: {message}")), "{}", stdout(&check));
+    let run = rapid_in(&dir, &["run", "points.mod"]);
+    assert!(run.status.success(), "{}", stderr(&run));
+    assert_eq!(stdout(&run), "ran\n");
+    assert!(stderr(&run).contains(&format!("warning[W0706]: points.mod:1:1: {message}")), "{}", stderr(&run));
+}

@@ -640,7 +640,7 @@ impl Vm {
         let text = &self.modules.base[file].text;
         let (start, end) = (module.span.start as usize, (module.span.end as usize).min(text.len()));
         let spliced = format!("{}{}{}", &text[..start], stand_in(module, 1_000_000 + idx), &text[end..]);
-        self.modules.base[file].text = spliced;
+        self.modules.base[file].text = std::sync::Arc::new(spliced);
         self.modules.base_modules[idx].live = false;
         self.forget(&routines, &datas, name);
         Ok(())
@@ -720,7 +720,7 @@ impl Vm {
         let text = &checked.files[file].text;
         let Some(module) = checked.parses.iter().find(|(f, _)| *f == file).and_then(|(_, p)| p.file.modules.get(index))
         else {
-            return text.clone();
+            return text.as_str().to_owned();
         };
         let modules = checked.modules();
         let sites = crate::pers_sites(&checked.prog, &modules);
@@ -733,7 +733,7 @@ impl Vm {
                 self.storage.globals.get(slot).map(|v| (s, v))
             })
             .collect();
-        let new = crate::persist::rewrite(text, &values).unwrap_or_else(|| text.clone());
+        let new = crate::persist::rewrite(text, &values).unwrap_or_else(|| text.as_str().to_owned());
         if whole_file {
             return new;
         }
