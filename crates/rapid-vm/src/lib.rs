@@ -20,6 +20,7 @@ pub mod packed;
 pub mod persist;
 mod refusals;
 pub mod value;
+pub mod world;
 
 use rapid_sema::symbols::{DeclOrigin, Def};
 use rapid_sema::{analyze, Diagnostic, Options, Program, SourceInput};
