@@ -1,7 +1,7 @@
 //! Writing a module file back safely: the file is re-read and must still be what was
 //! loaded; the new text is encoded as the file was (UTF-8 with or without BOM, or
 //! Latin-1) and written atomically (a temporary file beside it, fsync, rename over
-//! it, fsync of the folder: [`rapid_vm::persist::write_atomic`]), so a crash or a kill
+//! it, fsync of the folder: [`rapid_controller::host_std::atomic::write_atomic`]), so a crash or a kill
 //! at any moment leaves the old or the new file, never half a file.
 
 use std::collections::HashSet;
@@ -84,12 +84,14 @@ pub(crate) fn write_module(path: &Path, loaded_text: &str, new_text: &str) -> an
             .collect::<anyhow::Result<Vec<u8>>>()?,
         Encoding::Utf16 => bail!("`{shown}` is UTF-16; saving persistents into it is not supported"),
     };
-    rapid_vm::persist::write_atomic(path, &encoded).with_context(|| format!("cannot save persistents into `{shown}`"))
+    rapid_controller::host_std::atomic::write_atomic(path, &encoded)
+        .with_context(|| format!("cannot save persistents into `{shown}`"))
 }
 
 /// Writes a file the run produces (a log) atomically, like a module.
 pub(crate) fn write_new(path: &Path, bytes: &[u8]) -> anyhow::Result<()> {
-    rapid_vm::persist::write_atomic(path, bytes).with_context(|| format!("cannot write `{}`", path.display()))
+    rapid_controller::host_std::atomic::write_atomic(path, bytes)
+        .with_context(|| format!("cannot write `{}`", path.display()))
 }
 
 /// [`write_new`] with the content streamed by `fill`.
@@ -97,5 +99,6 @@ pub(crate) fn write_new_with(
     path: &Path,
     fill: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>,
 ) -> anyhow::Result<()> {
-    rapid_vm::persist::write_atomic_with(path, fill).with_context(|| format!("cannot write `{}`", path.display()))
+    rapid_controller::host_std::atomic::write_atomic_with(path, fill)
+        .with_context(|| format!("cannot write `{}`", path.display()))
 }

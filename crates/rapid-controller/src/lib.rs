@@ -17,8 +17,12 @@
 //!   ([`pers::PersStore`]).
 //! - [`ops`] holds the program operations (stop, start, motors, system signals).
 //!
-//! What it must not know: no IO of its own (no files, sockets or terminal; the front
-//! end reads the inputs and the stimulus and hands them over as data), no wall clock
+//! - [`host_std`] is the std world every task gets by default: the host's disk,
+//!   network and clocks behind the VM's host traits (`rapid_vm::world`).
+//!
+//! What it must not know: no IO of its own outside [`host_std`] (no files, sockets or
+//! terminal; the front end reads the inputs and the stimulus and hands them over as
+//! data; a task's programs reach the host only through its world), no wall clock
 //! (the front end's [`WallClock`]), no command-line options, output formats (trace,
 //! report, logs) or exit statuses. Output and operator input go through the `Host`
 //! the caller gives.
@@ -26,6 +30,7 @@
 mod alone;
 pub mod api;
 pub mod boot;
+pub mod host_std;
 pub mod ops;
 pub mod pers;
 mod power_on;

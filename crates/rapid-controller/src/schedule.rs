@@ -152,6 +152,8 @@ impl Controller {
         for (idx, (spec, mut loaded)) in tasks.into_iter().enumerate() {
             let view = pers.register(idx, &spec.name, &loaded, &spec.shared_files)?;
             loaded.vm.resources_mut().tasking.me = spec.name.clone();
+            // The host's disk, network and clocks, unless the embedder gave its own.
+            crate::host_std::install(&mut loaded.vm);
             // A socket wait must not block the process: the other tasks run meanwhile.
             loaded.vm.resources_mut().sockets.set_cooperative(true);
             loaded.vm.exchange_shared(&mut shared);

@@ -1,5 +1,5 @@
-//! The world outside the interpreter: the teach pendant (and, later, files, sockets
-//! and I/O), behind a trait so tests and the server provide their own.
+//! The teach pendant, behind a trait so tests and the server provide their own. The
+//! rest of the outside world (files, sockets, clocks) is the task's [`crate::world`].
 
 /// What the program's pendant instructions reach.
 pub trait Host {

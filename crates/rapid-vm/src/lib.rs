@@ -1,8 +1,10 @@
 //! rapid-vm: executes RAPID programs checked by rapid-sema.
 //!
-//! Invariant: no IO of its own except the program's files (sandboxed under the
-//! controller root) and sockets (builtins::Resources). Output, input and clocks reach it through host
-//! traits; RAPID call depth lives in explicit frames, never on the Rust stack.
+//! Invariant: no IO of its own. The pendant reaches it through the [`Host`] trait, the
+//! file system, the network and the clocks through the [`world::World`] its embedder
+//! gives each task (the std ones live in `rapid_controller::host_std`); the sandbox
+//! of the file devices is the VM's own. RAPID call depth lives in explicit frames,
+//! never on the Rust stack.
 
 pub mod builtins;
 pub mod compile;
@@ -20,6 +22,7 @@ pub mod packed;
 pub mod persist;
 mod refusals;
 pub mod value;
+pub mod world;
 
 use rapid_sema::symbols::{DeclOrigin, Def};
 use rapid_sema::{analyze, Diagnostic, Options, Program, SourceInput};

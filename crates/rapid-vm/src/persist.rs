@@ -2,11 +2,8 @@
 //! does (§1.2.2: "the initial value of a persistent declaration is updated when the
 //! module is saved"): only the value text of each changed `PERS` declaration is
 //! replaced; every other byte of the file stays as it was. The file itself is replaced
-//! atomically ([`write_atomic`]), so no crash leaves a torn module.
-
-pub mod atomic;
-
-pub use atomic::{write_atomic, write_atomic_with};
+//! atomically (`crate::world::FileSystem::write_atomic`: in the std world,
+//! `rapid_controller::host_std::atomic`), so no crash leaves a torn module.
 
 use rapid_syntax::Span;
 

@@ -4,7 +4,15 @@
 //! this needs the API.
 
 use rapid_sema::SourceInput;
+use rapid_vm::world::memory::MemoryFs;
+use rapid_vm::world::World;
 use rapid_vm::{load, Exit, RecordingHost};
+
+/// A world whose disk is `fs`, in memory: the modules the program writes and loads
+/// never touch the host's disk.
+fn memory_world(fs: MemoryFs) -> World {
+    World { files: Box::new(fs), ..World::closed() }
+}
 
 const PROGRAM: &str = r#"MODULE t
 VAR iodev f;
@@ -43,6 +51,7 @@ fn pp_to_main_unloads_dynamic_modules_and_reinitialises_static_ones() {
     };
     let (mut machine, entry) = (loaded.vm, loaded.entry);
     machine.resources_mut().files.set_root(&root);
+    machine.set_world(memory_world(MemoryFs::new()));
     let mut host = RecordingHost::default();
     assert_eq!(machine.run(&mut host, 100_000), Exit::Done);
     machine.pp_to_main(&mut host, entry).expect("pp to main");
@@ -56,9 +65,8 @@ fn pp_to_main_unloads_dynamic_modules_and_reinitialises_static_ones() {
 fn a_module_that_does_not_check_is_refused_with_its_diagnostics() {
     let root = std::env::temp_dir().join(format!("rapid-dynload-syntax-{}", std::process::id()));
     let module = root.join("HOME");
-    std::fs::create_dir_all(&module).expect("a temporary folder");
-    std::fs::write(module.join("bad.mod"), "MODULE bad\nPROC bad_p()\n  x := ;\nENDPROC\nENDMODULE\n")
-        .expect("a module file");
+    let fs = MemoryFs::new();
+    fs.put(module.join("bad.mod"), b"MODULE bad\nPROC bad_p()\n  x := ;\nENDPROC\nENDMODULE\n");
     let program = "MODULE t\nPROC main()\n  Load \"HOME:/bad.mod\";\nENDPROC\nENDMODULE\n";
     let loaded = match load(&[SourceInput::from_text("t.mod", program)], "main") {
         Ok(loaded) => loaded,
@@ -66,6 +74,7 @@ fn a_module_that_does_not_check_is_refused_with_its_diagnostics() {
     };
     let mut machine = loaded.vm;
     machine.resources_mut().files.set_root(&root);
+    machine.set_world(memory_world(fs));
     let mut host = RecordingHost::default();
     let exit = machine.run(&mut host, 100_000);
     let _ = std::fs::remove_dir_all(&root);

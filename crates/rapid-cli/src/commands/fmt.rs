@@ -108,8 +108,10 @@ fn format_file(path: &Path, config: &rapid_fmt::Config, check: bool) -> anyhow::
     if !check {
         let written = match source.encoding {
             // UTF-8 is written as it is, without a copy (a CAM module is 150 MB).
-            Encoding::Utf8 => rapid_vm::persist::write_atomic_with(path, |out| write_utf8(out, &formatted, had_bom)),
-            _ => rapid_vm::persist::write_atomic(path, &encode(&formatted, source.encoding, had_bom)?),
+            Encoding::Utf8 => {
+                rapid_controller::host_std::atomic::write_atomic_with(path, |out| write_utf8(out, &formatted, had_bom))
+            }
+            _ => rapid_controller::host_std::atomic::write_atomic(path, &encode(&formatted, source.encoding, had_bom)?),
         };
         written.with_context(|| format!("cannot write `{}`", path.display()))?;
     }

@@ -58,10 +58,13 @@ fn rapid_run(name: &str, module: &str, port: u16) -> String {
 
 fn vm(src: &str) -> Vm {
     let text = src.replace("ERROR_NAMES", ERROR_NAMES);
-    match load(&[SourceInput::from_text("t.mod", text)], "main") {
+    let mut vm = match load(&[SourceInput::from_text("t.mod", text)], "main") {
         Ok(loaded) => loaded.vm,
         Err(err) => panic!("load failed: {err:?}"),
-    }
+    };
+    // The host's network and clocks, as the controller gives every task it builds.
+    rapid_controller::host_std::install(&mut vm);
+    vm
 }
 
 /// Runs the program one instruction at a time until it has bound a socket; its address.

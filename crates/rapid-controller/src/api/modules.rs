@@ -32,8 +32,8 @@ impl Session {
     pub fn load_module(&mut self, task: &str, path: &str) -> Result<(), ApiError> {
         self.must_be_stopped()?;
         let idx = self.task_index(task)?;
-        let root = self.controller.tasks[idx].loaded.vm.resources().files.root().map(std::path::Path::to_path_buf);
-        let request = rapid_vm::builtins::modules::front_end_load(root.as_deref(), path).map_err(ApiError::NotFound)?;
+        let files = &self.controller.tasks[idx].loaded.vm.resources().files;
+        let request = rapid_vm::builtins::modules::front_end_load(files, path).map_err(ApiError::NotFound)?;
         let outcome =
             self.controller.with_task(idx, &mut self.pendant, |vm, host| vm.front_end_module_request(request, host));
         self.gather();

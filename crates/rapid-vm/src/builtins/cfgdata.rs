@@ -12,7 +12,6 @@
 //! Writes change the configuration in memory (the controller uses most parameters after
 //! a restart); SaveCfgData writes a domain's file, every other byte as it was read.
 
-use std::io::Write;
 use std::path::Path;
 
 use rapid_config::{CfgFile, Instance};
@@ -22,6 +21,7 @@ use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
+use crate::world::{FileKind, FileSystem};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -320,13 +320,14 @@ fn save_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         } else {
             target.clone()
         };
-        let resolved = devices::resolve(ctx.resources.files.root(), &text)
-            .map_err(|fault| ctx.error(Err::CfgWriteFile, fault.message()))?;
-        if resolved.is_device_root || resolved.path.is_dir() {
+        let resolved =
+            ctx.resources.files.resolve(&text).map_err(|fault| ctx.error(Err::CfgWriteFile, fault.message()))?;
+        let fs = ctx.resources.files.file_system();
+        if resolved.is_device_root || fs.metadata(&resolved.path).is_ok_and(|m| m.kind == FileKind::Dir) {
             return Err(ctx.error(Err::CfgWriteFile, format!("`{text}` is a folder, not a file")));
         }
         let contents = ctx.resources.cfgdata.domains[idx].1.text.clone();
-        write_atomically(&resolved.path, contents.as_bytes())
+        write_atomically(ctx.resources.files.file_system(), &resolved.path, contents.as_bytes())
             .map_err(|e| ctx.error(Err::CfgWriteFile, format!("cannot write `{text}`: {e}")))?;
     }
     Ok(None)
@@ -363,23 +364,12 @@ fn modal_pay_load_mode(state: &CfgState) -> f32 {
         .unwrap_or(MODAL_PAY_LOAD_DEFAULT)
 }
 
-fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+fn write_atomically(fs: &dyn FileSystem, path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let Some(parent) = path.parent() else { return Err(std::io::Error::other("the path has no folder")) };
-    if !parent.is_dir() {
+    if !fs.metadata(parent).is_ok_and(|m| m.kind == FileKind::Dir) {
         return Err(std::io::Error::new(std::io::ErrorKind::NotFound, "the folder does not exist"));
     }
-    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("cfg");
-    let temp = parent.join(format!(".{name}.saving"));
-    let result = (|| {
-        let mut out = std::fs::File::create(&temp)?;
-        out.write_all(bytes)?;
-        out.sync_all()?;
-        std::fs::rename(&temp, path)
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&temp);
-    }
-    result
+    fs.write_atomic(path, bytes)
 }
 
 pub(super) static FAMILY: Family = Family {

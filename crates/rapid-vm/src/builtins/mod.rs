@@ -101,7 +101,7 @@ pub struct Ctx<'a> {
     pub routines: &'a [Option<std::rc::Rc<crate::ir::Code>>],
     /// The routine that made the call (ERRSTR_CONTEXT).
     pub routine: &'a str,
-    /// Wall-clock seconds since 1970 when the program was loaded (CDate, CTime).
+    /// Wall-clock seconds since 1970 when the task was given its world (CDate, CTime).
     pub wall_epoch: f64,
     /// Open files, directories and sockets of the task.
     pub resources: &'a mut Resources,

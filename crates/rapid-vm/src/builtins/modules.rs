@@ -17,6 +17,7 @@ use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Opaque, OpaqueState, Value};
+use crate::world::FileKind;
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -116,7 +117,7 @@ fn resolve(ctx: &Ctx<'_>, path: &Value, file: Option<&Value>, err: Err) -> Resul
     let path = ctx.string(path)?;
     let file = opt_string(ctx, file)?;
     let text = devices::join_object(&path, file.as_deref());
-    match devices::resolve(ctx.resources.files.root(), &text) {
+    match ctx.resources.files.resolve(&text) {
         Ok(resolved) => Ok((text, resolved.path)),
         Err(fault) => Err(ctx.error(err, format!("`{text}`: {}", fault.message()))),
     }
@@ -125,10 +126,11 @@ fn resolve(ctx: &Ctx<'_>, path: &Value, file: Option<&Value>, err: Err) -> Resul
 /// Reads the module file named by FilePath and \File.
 fn read_module(ctx: &Ctx<'_>, path: &Value, file: Option<&Value>, dynamic: bool) -> Result<LoadFile, RapidError> {
     let (path, host) = resolve(ctx, path, file, Err::FileNotFound)?;
-    let meta = std::fs::metadata(&host);
+    let fs = ctx.resources.files.file_system();
+    let meta = fs.metadata(&host);
     match meta {
-        Ok(meta) if meta.is_file() => {
-            if meta.len() > MAX_MODULE_BYTES {
+        Ok(meta) if meta.kind == FileKind::File => {
+            if meta.len > MAX_MODULE_BYTES {
                 return Err(ctx.error(
                     Err::IoError,
                     format!("`{path}` is larger than the program memory ({MAX_MODULE_BYTES} bytes)"),
@@ -138,25 +140,26 @@ fn read_module(ctx: &Ctx<'_>, path: &Value, file: Option<&Value>, dynamic: bool)
         // uncertain: the manual names ERR_FILNOTFND for a module file that is not there.
         _ => return Err(ctx.error(Err::FileNotFound, format!("the module file `{path}` was not found"))),
     }
-    let bytes = std::fs::read(&host).map_err(|e| ctx.error(Err::IoError, format!("`{path}` cannot be read: {e}")))?;
+    let bytes = fs.read(&host).map_err(|e| ctx.error(Err::IoError, format!("`{path}` cannot be read: {e}")))?;
     let source = SourceInput::from_bytes(path.clone(), bytes);
     Ok(LoadFile { path, host, source, dynamic })
 }
 
-/// A Load of the module file at RAPID path `text` (`HOME:/x.mod`) under the controller
-/// root `root`, as a front end asks for it (RWS `loadmod`): the file read, checked for
-/// size. Err says why not, as Load's error would.
-pub fn front_end_load(root: Option<&std::path::Path>, text: &str) -> Result<ModuleRequest, String> {
-    let resolved = devices::resolve(root, text).map_err(|fault| format!("`{text}`: {}", fault.message()))?;
+/// A Load of the module file at RAPID path `text` (`HOME:/x.mod`) on the task's file
+/// devices `files`, as a front end asks for it (RWS `loadmod`): the file read, checked
+/// for size. Err says why not, as Load's error would.
+pub fn front_end_load(files: &super::files::FileState, text: &str) -> Result<ModuleRequest, String> {
+    let resolved = files.resolve(text).map_err(|fault| format!("`{text}`: {}", fault.message()))?;
     let host = resolved.path;
-    match std::fs::metadata(&host) {
-        Ok(meta) if meta.is_file() && meta.len() <= MAX_MODULE_BYTES => {}
-        Ok(meta) if meta.is_file() => {
+    let fs = files.file_system();
+    match fs.metadata(&host) {
+        Ok(meta) if meta.kind == FileKind::File && meta.len <= MAX_MODULE_BYTES => {}
+        Ok(meta) if meta.kind == FileKind::File => {
             return Err(format!("`{text}` is larger than the program memory ({MAX_MODULE_BYTES} bytes)"))
         }
         _ => return Err(format!("the module file `{text}` was not found")),
     }
-    let bytes = std::fs::read(&host).map_err(|e| format!("`{text}` cannot be read: {e}"))?;
+    let bytes = fs.read(&host).map_err(|e| format!("`{text}` cannot be read: {e}"))?;
     let source = SourceInput::from_bytes(text.to_owned(), bytes);
     let file = LoadFile { path: text.to_owned(), host, source, dynamic: false };
     Ok(ModuleRequest::Load { file, check_ref: false })

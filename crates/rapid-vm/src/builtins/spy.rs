@@ -16,13 +16,13 @@
 // CODE READY for an instruction that ran through, WAIT for one that waited); the exact
 // column widths are ours.
 
-use std::fs::File;
 use std::io::{BufWriter, Write};
 
 use super::Ctx;
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
+use crate::world::{HostFile, OpenMode};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -54,7 +54,7 @@ pub struct SpyState {
 }
 
 struct SpyLog {
-    out: BufWriter<File>,
+    out: BufWriter<Box<dyn HostFile>>,
     /// Controller time (seconds) at SpyStart: the log's zero.
     started_at: f64,
 }
@@ -104,9 +104,13 @@ const HEADER: &str = "TASK    INSTR                                    IN    COD
 pub fn spy_start(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let path = ctx.string(&args[0])?;
     ctx.resources.files.flush_all();
-    let resolved = super::files::devices::resolve(ctx.resources.files.root(), &path)
-        .map_err(|fault| ctx.error(Err::FileOpen, fault.message()))?;
-    let file = File::create(&resolved.path)
+    let resolved = ctx.resources.files.resolve(&path).map_err(|fault| ctx.error(Err::FileOpen, fault.message()))?;
+    let create = OpenMode { write: true, create: true, truncate: true, ..OpenMode::default() };
+    let file = ctx
+        .resources
+        .files
+        .file_system()
+        .open(&resolved.path, create)
         .map_err(|e| ctx.error(Err::FileOpen, format!("the spy file `{path}` cannot be made: {e}")))?;
     let mut out = BufWriter::new(file);
     writeln!(out, "{HEADER}").map_err(|e| ctx.error(Err::FileOpen, format!("the spy file `{path}`: {e}")))?;
@@ -148,8 +152,8 @@ mod tests {
         let path = dir.join("spy.log");
         let mut spy = SpyState::default();
         spy.record("T_ROB1", "ignored;", 0.0, SpyCode::Ready, 0.0);
-        let file = File::create(&path).expect("file");
-        spy.log = Some(SpyLog { out: BufWriter::new(file), started_at: 1.0 });
+        let file = std::fs::File::create(&path).expect("file");
+        spy.log = Some(SpyLog { out: BufWriter::new(Box::new(file)), started_at: 1.0 });
         assert!(spy.is_active());
         spy.record("T_ROB1", "a := 1;", 1.0, SpyCode::Ready, 1.0);
         spy.record("T_ROB1", "WaitTime 0.5;", 1.0, SpyCode::Wait, 1.5);

@@ -123,9 +123,12 @@ fn parse_tables(bytes: &[u8]) -> Result<Vec<TextTable>, FormatFault> {
 fn text_tab_install(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let file = ctx.string(&args[0])?;
     ctx.resources.files.flush_all();
-    let resolved = super::files::devices::resolve(ctx.resources.files.root(), &file)
-        .map_err(|fault| ctx.error(Err::FileOpen, fault.message()))?;
-    let bytes = std::fs::read(&resolved.path)
+    let resolved = ctx.resources.files.resolve(&file).map_err(|fault| ctx.error(Err::FileOpen, fault.message()))?;
+    let bytes = ctx
+        .resources
+        .files
+        .file_system()
+        .read(&resolved.path)
         .map_err(|e| ctx.error(Err::FileOpen, format!("the text table file `{file}` cannot be opened: {e}")))?;
     // uncertain: a badly formed file stops the program (the controller reports it in
     // the event log); the manual names no RAPID error for it.

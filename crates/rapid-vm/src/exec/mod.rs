@@ -27,6 +27,7 @@ mod statement;
 mod stop;
 pub mod storage;
 pub(crate) mod undo;
+mod world;
 
 use std::rc::Rc;
 
@@ -139,9 +140,10 @@ pub struct Vm {
     events: crate::events::EventLog,
     /// Module-level data by lower-case name (ErrRaise names its errnum as text).
     data_by_name: FxHashMap<String, crate::builtins::NamedData>,
-    /// Wall-clock seconds since 1970 when the VM was made: the calendar clock is this
-    /// plus the controller time.
+    /// Wall-clock seconds since 1970 on the world's clock when the world was given
+    /// ([`Vm::set_world`]): the calendar clock is this plus the controller time.
     wall_epoch: f64,
+    world_given: bool, // Vm::set_world gave the task its outside world
     /// Open files, directories and sockets.
     resources: crate::builtins::Resources,
     /// The program's sources and the modules loaded at run time (Load, UnLoad).
@@ -186,9 +188,8 @@ impl Vm {
             wait_rechecks: false,
             events: crate::events::EventLog::default(),
             data_by_name: FxHashMap::default(),
-            wall_epoch: std::time::SystemTime::now()
-                .duration_since(std::time::UNIX_EPOCH)
-                .map_or(0.0, |d| d.as_secs_f64()),
+            wall_epoch: 0.0, // the closed world's clock (1970) until set_world
+            world_given: false,
             resources: crate::builtins::Resources::default(),
             modules: modules::TaskModules::default(),
             spy_open: Vec::new(),

@@ -697,7 +697,10 @@ impl Vm {
                 // uncertain: the task's own modules came from the host, not a device; their
                 // "own file" is taken to be the same name on HOME:.
                 let text = format!("HOME:/{file_name}");
-                let own = crate::builtins::files::devices::resolve(self.resources.files.root(), &text)
+                let own = self
+                    .resources
+                    .files
+                    .resolve(&text)
                     .map_err(|f| self.error(Err::IoError, format!("`{text}`: {}", f.message())))?;
                 (m.file, m.index, (own.path, text))
             }
@@ -706,7 +709,10 @@ impl Vm {
         let checked = check(self.modules.sources(), &self.modules.options)
             .map_err(|_| self.error(Err::IoError, "the task's program does not check"))?;
         let text = self.module_text(&checked, file, index, unit.is_some());
-        crate::persist::write_atomic(&host, &latin1_bytes(&text))
+        self.resources
+            .files
+            .file_system()
+            .write_atomic(&host, &latin1_bytes(&text))
             .map_err(|e| self.error(Err::IoError, format!("module `{name}` cannot be saved to `{shown}`: {e}")))?;
         if let Some(unit) = unit {
             self.snapshot_pers(unit);

@@ -7,15 +7,22 @@
 //! refused, never followed, when it names an unknown device, is an absolute host path,
 //! climbs out of its device with `..`, or reaches through a symbolic link to somewhere
 //! outside its device.
+//!
+//! The VM owns this mapping (device name → folder under the root) and the checks, not
+//! the world's [`FileSystem`]: the sandbox is a rule of the controller, so it holds the
+//! same for every embedder; the file system only sees the host paths it let through.
+//! The root itself is configuration the controller gives ([`super::FileState::set_root`]).
 
 use std::path::{Path, PathBuf};
+
+use crate::world::{FileKind, FileSystem};
 
 /// The file devices of an IRC5 controller (RobotWare 6) that the virtual controller
 /// offers. `HOME:`, `TEMP:` and `RAMDISK:` are the ones ABB's manual and public
 /// programs use; `BACKUP:` is the controller's backup folder.
 // uncertain: the controller may know further names (removable disks such as `usb:`),
 // which depend on the hardware; they are refused here as unknown devices.
-pub(crate) const DEVICES: &[&str] = &["HOME", "TEMP", "RAMDISK", "BACKUP"];
+pub const DEVICES: &[&str] = &["HOME", "TEMP", "RAMDISK", "BACKUP"];
 
 /// The device of a path that names none (manual: a relative path is relative to the
 /// program's home directory).
@@ -24,7 +31,7 @@ const DEFAULT_DEVICE: &str = "HOME";
 
 /// Why a path cannot be used.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub(crate) enum PathFault {
+pub enum PathFault {
     /// No controller root was configured (the VM is used without `rapid run`).
     NoRoot,
     /// A serial channel (`com1:`, `pc:`), which the virtual controller has not.
@@ -34,7 +41,7 @@ pub(crate) enum PathFault {
 }
 
 impl PathFault {
-    pub(crate) fn message(&self) -> String {
+    pub fn message(&self) -> String {
         match self {
             PathFault::NoRoot => {
                 "no controller root is configured for the file devices (rapid run --home DIR)".to_string()
@@ -49,15 +56,15 @@ impl PathFault {
 
 /// A RAPID path resolved to a host path inside its device.
 #[derive(Debug, Clone)]
-pub(crate) struct Resolved {
-    pub(crate) path: PathBuf,
+pub struct Resolved {
+    pub path: PathBuf,
     /// The path is the device's own folder (`"HOME:"`).
-    pub(crate) is_device_root: bool,
+    pub is_device_root: bool,
 }
 
 /// The Object of Open with its optional `\File`: `"HOME:"` and `"a.txt"` make
 /// `"HOME:/a.txt"`; a File alone is relative to Object.
-pub(crate) fn join_object(object: &str, file: Option<&str>) -> String {
+pub fn join_object(object: &str, file: Option<&str>) -> String {
     match file {
         None => object.to_string(),
         Some(file) if object.ends_with('/') || object.ends_with(':') => format!("{object}{file}"),
@@ -65,21 +72,22 @@ pub(crate) fn join_object(object: &str, file: Option<&str>) -> String {
     }
 }
 
-/// Resolves `text` under `root`, creating the device folder if it does not exist yet.
-pub(crate) fn resolve(root: Option<&Path>, text: &str) -> Result<Resolved, PathFault> {
+/// Resolves `text` under `root` on `fs`, creating the device folder if it does not
+/// exist yet.
+pub fn resolve(fs: &dyn FileSystem, root: Option<&Path>, text: &str) -> Result<Resolved, PathFault> {
     let root = root.ok_or(PathFault::NoRoot)?;
     let (device, rest) = split_device(text)?;
     let segments = normalise(text, rest)?;
     let device_root = root.join(device);
-    std::fs::create_dir_all(&device_root).map_err(|e| {
+    fs.create_dir_all(&device_root).map_err(|e| {
         PathFault::Refused(format!("the device folder `{}` cannot be made: {e}", device_root.display()))
     })?;
     let mut path = device_root.clone();
     for segment in &segments {
-        let name = existing_spelling(&path, segment);
+        let name = existing_spelling(fs, &path, segment);
         path.push(name);
     }
-    check_links(&device_root, &path, text)?;
+    check_links(fs, &device_root, &path, text)?;
     Ok(Resolved { path, is_device_root: segments.is_empty() })
 }
 
@@ -132,33 +140,29 @@ fn normalise<'a>(text: &str, rest: &'a str) -> Result<Vec<&'a str>, PathFault> {
 /// exists exactly, or nowhere, is kept as written.
 // uncertain: we take the IRC5 mass storage to be a FAT-style file system that keeps
 // but ignores letter case.
-fn existing_spelling(dir: &Path, segment: &str) -> String {
-    if dir.join(segment).symlink_metadata().is_ok() {
+fn existing_spelling(fs: &dyn FileSystem, dir: &Path, segment: &str) -> String {
+    if fs.symlink_metadata(&dir.join(segment)).is_ok() {
         return segment.to_string();
     }
-    let Ok(entries) = std::fs::read_dir(dir) else { return segment.to_string() };
-    let mut matches: Vec<String> = entries
-        .filter_map(|e| e.ok())
-        .map(|e| e.file_name().to_string_lossy().into_owned())
-        .filter(|name| name.eq_ignore_ascii_case(segment))
-        .collect();
+    let Ok(entries) = fs.read_dir(dir) else { return segment.to_string() };
+    let mut matches: Vec<String> = entries.into_iter().filter(|name| name.eq_ignore_ascii_case(segment)).collect();
     matches.sort();
     matches.into_iter().next().unwrap_or_else(|| segment.to_string())
 }
 
 /// Refuses a path that reaches, through a symbolic link, somewhere outside its device
 /// (or through a link that leads nowhere, which a write would follow).
-fn check_links(device_root: &Path, path: &Path, text: &str) -> Result<(), PathFault> {
+fn check_links(fs: &dyn FileSystem, device_root: &Path, path: &Path, text: &str) -> Result<(), PathFault> {
     let outside = || PathFault::Refused(format!("`{text}` leads outside its device through a link"));
-    let Ok(device_canon) = device_root.canonicalize() else { return Err(outside()) };
+    let Ok(device_canon) = fs.canonicalize(device_root) else { return Err(outside()) };
     for existing in path.ancestors() {
-        let Ok(meta) = std::fs::symlink_metadata(existing) else { continue };
+        let Ok(meta) = fs.symlink_metadata(existing) else { continue };
         if existing == device_root || !existing.starts_with(device_root) {
             return Ok(());
         }
-        let canon = match existing.canonicalize() {
+        let canon = match fs.canonicalize(existing) {
             Ok(canon) => canon,
-            Err(_) if meta.file_type().is_symlink() => return Err(outside()),
+            Err(_) if meta.kind == FileKind::Symlink => return Err(outside()),
             Err(_) => return Ok(()),
         };
         return if canon.starts_with(&device_canon) { Ok(()) } else { Err(outside()) };
@@ -168,66 +172,22 @@ fn check_links(device_root: &Path, path: &Path, text: &str) -> Result<(), PathFa
 
 #[cfg(test)]
 mod tests {
+    // The sandbox on the host's disk (links included) is tested with the std world in
+    // `rapid_controller::host_std`; here on a disk in memory.
     use super::*;
-
-    fn temp_root(name: &str) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!("rapid-devices-{name}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        dir
-    }
+    use crate::world::memory::MemoryFs;
 
     #[test]
-    fn devices_map_to_folders() {
-        let root = temp_root("map");
-        let r = resolve(Some(&root), "HOME:/logs/a.txt").unwrap();
-        assert_eq!(r.path, root.join("HOME").join("logs").join("a.txt"));
-        assert!(!r.is_device_root);
-        assert_eq!(resolve(Some(&root), "temp:x").unwrap().path, root.join("TEMP").join("x"));
-        assert_eq!(resolve(Some(&root), "a/./b/../c").unwrap().path, root.join("HOME").join("a").join("c"));
-        assert!(resolve(Some(&root), "RAMDISK:").unwrap().is_device_root);
-        assert!(root.join("RAMDISK").is_dir());
-        let _ = std::fs::remove_dir_all(&root);
-    }
-
-    #[test]
-    fn letter_case_is_ignored() {
-        let root = temp_root("case");
-        std::fs::create_dir_all(root.join("HOME").join("Logs")).unwrap();
-        std::fs::write(root.join("HOME").join("Logs").join("Day.txt"), "x").unwrap();
-        let r = resolve(Some(&root), "HOME:/LOGS/day.TXT").unwrap();
-        assert_eq!(r.path, root.join("HOME").join("Logs").join("Day.txt"));
-        // A new name keeps the spelling it was given.
-        let r = resolve(Some(&root), "home:/logs/New.txt").unwrap();
-        assert_eq!(r.path, root.join("HOME").join("Logs").join("New.txt"));
-        let _ = std::fs::remove_dir_all(&root);
-    }
-
-    #[test]
-    fn escapes_are_refused() {
-        let root = temp_root("escape");
-        for bad in ["HOME:/../x", "..", "a/../../b", "/etc/passwd", "\\x", "C:/x", "FOO:x"] {
-            assert!(matches!(resolve(Some(&root), bad), Err(PathFault::Refused(_))), "{bad}");
-        }
-        assert!(matches!(resolve(Some(&root), "com1:"), Err(PathFault::Serial(_))));
-        assert_eq!(resolve(None, "HOME:a").unwrap_err(), PathFault::NoRoot);
-        let _ = std::fs::remove_dir_all(&root);
-    }
-
-    #[cfg(unix)]
-    #[test]
-    fn links_out_of_the_device_are_refused() {
-        let root = temp_root("links");
-        let outside = temp_root("links-outside");
-        std::fs::create_dir_all(root.join("HOME").join("inner")).unwrap();
-        std::os::unix::fs::symlink(&outside, root.join("HOME").join("out")).unwrap();
-        std::os::unix::fs::symlink(root.join("HOME").join("inner"), root.join("HOME").join("in")).unwrap();
-        std::os::unix::fs::symlink(outside.join("nowhere"), root.join("HOME").join("dangling")).unwrap();
-        assert!(matches!(resolve(Some(&root), "HOME:out/x.txt"), Err(PathFault::Refused(_))));
-        assert!(matches!(resolve(Some(&root), "HOME:out"), Err(PathFault::Refused(_))));
-        assert!(matches!(resolve(Some(&root), "HOME:dangling"), Err(PathFault::Refused(_))));
-        assert!(resolve(Some(&root), "HOME:in/x.txt").is_ok());
-        let _ = std::fs::remove_dir_all(&root);
-        let _ = std::fs::remove_dir_all(&outside);
+    fn devices_are_folders_under_the_root_and_names_ignore_case() {
+        let fs = MemoryFs::new();
+        let root = Path::new("/ctrl");
+        fs.put("/ctrl/HOME/Logs/Day.txt", b"x");
+        let r = resolve(&fs, Some(root), "home:/LOGS/day.TXT").unwrap();
+        assert_eq!(r.path, Path::new("/ctrl/HOME/Logs/Day.txt"));
+        let r = resolve(&fs, Some(root), "RAMDISK:").unwrap();
+        assert!(r.is_device_root);
+        assert!(fs.paths().contains(&PathBuf::from("/ctrl/RAMDISK")), "the device folder is made");
+        assert!(matches!(resolve(&fs, Some(root), "HOME:/../x"), Err(PathFault::Refused(_))));
+        assert_eq!(resolve(&fs, None, "HOME:a").unwrap_err(), PathFault::NoRoot);
     }
 }

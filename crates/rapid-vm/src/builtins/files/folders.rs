@@ -12,6 +12,8 @@
 use std::path::Path;
 use std::time::SystemTime;
 
+use crate::world::{FileKind, FileMeta, FileSystem};
+
 use super::{handle_of, resolve, set_handle, Res};
 use crate::builtins::{present, Ctx};
 use crate::errnames::Err;
@@ -38,10 +40,20 @@ fn access(ctx: &Ctx<'_>, message: String) -> RapidError {
     ctx.error(Err::FileAccess, message)
 }
 
+fn fs<'a>(ctx: &'a Ctx<'_>) -> &'a dyn FileSystem {
+    ctx.resources.files.file_system()
+}
+
+/// What `path` is (links followed), if it exists: `Path::is_dir` and its kin, asked of
+/// the world's file system.
+fn kind_of(ctx: &Ctx<'_>, path: &Path) -> Option<FileKind> {
+    fs(ctx).metadata(path).ok().map(|m| m.kind)
+}
+
 /// `MakeDir Path`: a new directory (its parent must exist).
 pub(super) fn make_dir(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (text, path, _) = path_arg(ctx, &args[0])?;
-    std::fs::create_dir(&path).map_err(|e| access(ctx, format!("the directory `{text}` cannot be made: {e}")))?;
+    fs(ctx).create_dir(&path).map_err(|e| access(ctx, format!("the directory `{text}` cannot be made: {e}")))?;
     Ok(None)
 }
 
@@ -51,7 +63,7 @@ pub(super) fn remove_dir(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if device {
         return Err(access(ctx, format!("`{text}` is a device; it cannot be removed")));
     }
-    std::fs::remove_dir(&path).map_err(|e| access(ctx, format!("the directory `{text}` cannot be removed: {e}")))?;
+    fs(ctx).remove_dir(&path).map_err(|e| access(ctx, format!("the directory `{text}` cannot be removed: {e}")))?;
     Ok(None)
 }
 
@@ -65,9 +77,7 @@ pub(super) fn remove_dir(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 pub(super) fn open_dir(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (shell, _) = handle_of(ctx, &args[0])?;
     let (text, path, _) = path_arg(ctx, &args[1])?;
-    let entries = std::fs::read_dir(&path).map_err(|e| access(ctx, format!("`{text}` cannot be opened: {e}")))?;
-    let mut names: Vec<String> =
-        entries.filter_map(|e| e.ok()).map(|e| e.file_name().to_string_lossy().into_owned()).collect();
+    let mut names = fs(ctx).read_dir(&path).map_err(|e| access(ctx, format!("`{text}` cannot be opened: {e}")))?;
     names.sort();
     names.splice(0..0, [".".to_string(), "..".to_string()]);
     let handle = ctx.resources.files.new_handle();
@@ -105,10 +115,10 @@ pub(super) fn close_dir(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `RemoveFile Path`: deletes a file (not a directory).
 pub(super) fn remove_file(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (text, path, _) = path_arg(ctx, &args[0])?;
-    if path.is_dir() {
+    if kind_of(ctx, &path) == Some(FileKind::Dir) {
         return Err(access(ctx, format!("`{text}` is a directory; use RemoveDir")));
     }
-    std::fs::remove_file(&path).map_err(|e| access(ctx, format!("`{text}` cannot be removed: {e}")))?;
+    fs(ctx).remove_file(&path).map_err(|e| access(ctx, format!("`{text}` cannot be removed: {e}")))?;
     Ok(None)
 }
 
@@ -120,10 +130,10 @@ fn source_and_target(
 ) -> Result<(std::path::PathBuf, std::path::PathBuf), RapidError> {
     let (old_text, old, _) = path_arg(ctx, &args[0])?;
     let (new_text, new, _) = path_arg(ctx, &args[1])?;
-    if !old.is_file() {
+    if kind_of(ctx, &old) != Some(FileKind::File) {
         return Err(access(ctx, format!("`{old_text}` is not an existing file")));
     }
-    if new.exists() {
+    if kind_of(ctx, &new).is_some() {
         return Err(ctx.error(Err::FileExists, format!("`{new_text}` already exists")));
     }
     Ok((old, new))
@@ -132,14 +142,14 @@ fn source_and_target(
 /// `RenameFile OldPath NewPath`.
 pub(super) fn rename_file(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (old, new) = source_and_target(ctx, args)?;
-    std::fs::rename(&old, &new).map_err(|e| access(ctx, format!("the file cannot be renamed: {e}")))?;
+    fs(ctx).rename(&old, &new).map_err(|e| access(ctx, format!("the file cannot be renamed: {e}")))?;
     Ok(None)
 }
 
 /// `CopyFile OldPath NewPath`.
 pub(super) fn copy_file(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (old, new) = source_and_target(ctx, args)?;
-    std::fs::copy(&old, &new).map_err(|e| access(ctx, format!("the file cannot be copied: {e}")))?;
+    fs(ctx).copy(&old, &new).map_err(|e| access(ctx, format!("the file cannot be copied: {e}")))?;
     Ok(None)
 }
 
@@ -162,47 +172,26 @@ pub(super) fn is_file(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (text, path, _) = path_arg(ctx, &args[0])?;
     let kinds = [at.directory, at.fifo, at.reg_file, at.block_spec, at.char_spec];
     let kind_given = kinds.iter().any(|&k| present(args.get(k)));
-    let meta = match std::fs::metadata(&path) {
+    let meta = match fs(ctx).metadata(&path) {
         Ok(meta) => meta,
         Err(_) if !kind_given => return Ok(Some(Value::Bool(false))),
         Err(e) => return Err(access(ctx, format!("`{text}`: {e}"))),
     };
-    let kind = meta.file_type();
+    let kind = meta.kind;
     let answer = if present(args.get(at.directory)) {
-        kind.is_dir()
+        kind == FileKind::Dir
     } else if present(args.get(at.fifo)) {
-        special(&kind, Special::Fifo)
+        kind == FileKind::Fifo
     } else if present(args.get(at.reg_file)) {
-        kind.is_file()
+        kind == FileKind::File
     } else if present(args.get(at.block_spec)) {
-        special(&kind, Special::Block)
+        kind == FileKind::BlockDevice
     } else if present(args.get(at.char_spec)) {
-        special(&kind, Special::Char)
+        kind == FileKind::CharDevice
     } else {
         true
     };
     Ok(Some(Value::Bool(answer)))
-}
-
-enum Special {
-    Fifo,
-    Block,
-    Char,
-}
-
-#[cfg(unix)]
-fn special(kind: &std::fs::FileType, which: Special) -> bool {
-    use std::os::unix::fs::FileTypeExt;
-    match which {
-        Special::Fifo => kind.is_fifo(),
-        Special::Block => kind.is_block_device(),
-        Special::Char => kind.is_char_device(),
-    }
-}
-
-#[cfg(not(unix))]
-fn special(_: &std::fs::FileType, _: Special) -> bool {
-    false
 }
 
 /// A size in bytes as FSSize/FileSize return it: divided for `\Kbyte`/`\Mbyte` (whole
@@ -220,10 +209,10 @@ fn size_value(ctx: &Ctx<'_>, bytes: u64, divisor: u64) -> Res {
 // uncertain: the default when neither \Total nor \Free is given; we return the free space.
 pub(super) fn fs_size(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (text, path, _) = path_arg(ctx, &args[0])?;
-    if !path.exists() {
+    if kind_of(ctx, &path).is_none() {
         return Err(access(ctx, format!("`{text}` does not exist")));
     }
-    let (total, free) = space(&path).map_err(|e| access(ctx, format!("the file system of `{text}`: {e}")))?;
+    let (total, free) = fs(ctx).space(&path).map_err(|e| access(ctx, format!("the file system of `{text}`: {e}")))?;
     let at = *FS_SIZE;
     let bytes = if present(args.get(at.total)) { total } else { free };
     let divisor = if present(args.get(at.mbyte)) {
@@ -236,23 +225,11 @@ pub(super) fn fs_size(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     size_value(ctx, bytes, divisor)
 }
 
-/// Total and free (available to the program) bytes of the file system holding `path`.
-#[cfg(unix)]
-fn space(path: &Path) -> std::io::Result<(u64, u64)> {
-    let stat = rustix::fs::statvfs(path)?;
-    Ok((stat.f_blocks.saturating_mul(stat.f_frsize), stat.f_bavail.saturating_mul(stat.f_frsize)))
-}
-
-#[cfg(not(unix))]
-fn space(_: &Path) -> std::io::Result<(u64, u64)> {
-    Err(std::io::Error::new(std::io::ErrorKind::Unsupported, "file system sizes are not available on this host"))
-}
-
 /// `FileSize(Path)`: the size of a file in bytes.
 pub(super) fn file_size(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (text, path, _) = path_arg(ctx, &args[0])?;
-    let meta = std::fs::metadata(&path).map_err(|e| access(ctx, format!("`{text}`: {e}")))?;
-    size_value(ctx, meta.len(), 1)
+    let meta = fs(ctx).metadata(&path).map_err(|e| access(ctx, format!("`{text}`: {e}")))?;
+    size_value(ctx, meta.len, 1)
 }
 
 /// Seconds since 1970-01-01 00:00 UTC of a file time (whole seconds).
@@ -275,29 +252,22 @@ fn time_result(ctx: &mut Ctx<'_>, seconds: f64, strdig: Option<&Value>) -> Res {
 /// file's modification (default), access or status-change time, in seconds since 1970.
 pub(super) fn file_time_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (text, path, _) = path_arg(ctx, &args[0])?;
-    let meta = std::fs::metadata(&path).map_err(|e| access(ctx, format!("`{text}`: {e}")))?;
+    let meta = fs(ctx).metadata(&path).map_err(|e| access(ctx, format!("`{text}`: {e}")))?;
     let at = *FILE_TIME;
     let seconds = if present(args.get(at.access_time)) {
-        meta.accessed().map(epoch_seconds)
+        meta.accessed
     } else if present(args.get(at.stat_c_time)) {
-        status_change(&meta)
+        meta.changed
     } else {
-        meta.modified().map(epoch_seconds)
+        meta.modified
     }
-    .map_err(|e| access(ctx, format!("`{text}`: {e}")))?;
+    .map(epoch_seconds)
+    .ok_or_else(|| access(ctx, format!("`{text}`: {}", NO_TIME)))?;
     time_result(ctx, seconds, args.get(at.str_dig))
 }
 
-#[cfg(unix)]
-fn status_change(meta: &std::fs::Metadata) -> std::io::Result<f64> {
-    use std::os::unix::fs::MetadataExt;
-    Ok(meta.ctime() as f64)
-}
-
-#[cfg(not(unix))]
-fn status_change(meta: &std::fs::Metadata) -> std::io::Result<f64> {
-    meta.modified().map(epoch_seconds)
-}
+/// Why a file time is missing: the world's file system keeps no such time.
+const NO_TIME: &str = "the file system keeps no such time for it";
 
 /// The loaded module named `name` (any letter case).
 fn module<'a>(ctx: &'a Ctx<'_>, name: &str) -> Option<&'a super::ModuleFile> {
@@ -317,8 +287,9 @@ pub(super) fn mod_time_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let Some(path) = module(ctx, &name).map(|m| m.path.clone()) else {
         return Err(ctx.error(Err::ModuleNotLoaded, format!("no module `{name}` is loaded")));
     };
-    let seconds = std::fs::metadata(&path)
-        .and_then(|m| m.modified())
+    let seconds = fs(ctx)
+        .metadata(&path)
+        .and_then(|m: FileMeta| m.modified.ok_or_else(|| std::io::Error::other(NO_TIME)))
         .map(epoch_seconds)
         .map_err(|e| access(ctx, format!("the file of module `{name}`: {e}")))?;
     time_result(ctx, seconds, args.get(1))

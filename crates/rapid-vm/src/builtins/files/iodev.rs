@@ -8,8 +8,7 @@
 //! position at the end of the file.
 // uncertain: the no-switch rules are from our reading of the manual's Open page.
 
-use std::fs::{File, OpenOptions};
-use std::io::{self, Read, Seek, SeekFrom, Write};
+use std::io::{self, SeekFrom};
 
 use super::text::ByteSource;
 use super::{fault, handle_of, io_fault, opt_string, resolve, set_handle, Fault, Res};
@@ -17,6 +16,7 @@ use crate::builtins::{present, Ctx};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{OpaqueState, Value};
+use crate::world::{FileKind, HostFile, OpenMode};
 
 /// Bytes read ahead from the host file at a time.
 const READ_AHEAD: usize = 4096;
@@ -29,7 +29,7 @@ const WRITE_BUFFER: usize = 8192;
 
 /// An open file.
 pub(super) struct OpenFile {
-    file: File,
+    file: Box<dyn HostFile>,
     readable: bool,
     writable: bool,
     /// Read ahead but not yet consumed: `buf[pos..]`.
@@ -192,12 +192,12 @@ pub(super) fn open(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let resolved = resolve(ctx, &path_text, Err::FileOpen)?;
     // Only regular files: a directory cannot be read as a file, and opening a FIFO or a
     // device placed in the root would block the controller or reach hardware.
-    if let Ok(meta) = std::fs::metadata(&resolved.path) {
-        if !meta.is_file() {
+    if let Ok(meta) = ctx.resources.files.file_system().metadata(&resolved.path) {
+        if meta.kind != FileKind::File {
             return Err(ctx.error(Err::FileOpen, format!("`{path_text}` is not a file")));
         }
     }
-    let mut options = OpenOptions::new();
+    let mut options = OpenMode::default();
     let (readable, writable, at_end) = match (read, write, append, bin) {
         (true, _, _, _) => (true, false, false),
         (_, true, _, _) => (false, true, false),
@@ -205,16 +205,16 @@ pub(super) fn open(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         (_, _, _, false) => (false, true, false),
         (_, _, _, true) => (true, true, true),
     };
-    options.read(readable);
+    options.read = readable;
     if writable {
-        options.write(true).create(true);
+        (options.write, options.create) = (true, true);
         if append {
-            options.append(true);
+            options.append = true;
         } else if !at_end {
-            options.truncate(true);
+            options.truncate = true;
         }
     }
-    let opened = options.open(&resolved.path).and_then(|mut file| {
+    let opened = ctx.resources.files.file_system().open(&resolved.path, options).and_then(|mut file| {
         if at_end {
             file.seek(SeekFrom::End(0))?;
         }

@@ -13,7 +13,7 @@
 //! PP to Main) is simply not found: ERR_FILEACC.
 
 mod anybin;
-pub(crate) mod devices;
+pub mod devices;
 mod folders;
 mod io;
 mod iodev;
@@ -27,15 +27,17 @@ use super::{native, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Opaque, OpaqueState, Value};
+use crate::world::FileSystem;
 
 type Res = Result<Option<Value>, RapidError>;
 /// An error before it becomes a RAPID error (the tables are borrowed while it is made).
 type Fault = (Err, String);
 
-/// Open files and directories of the task, the controller root the devices live under
-/// and the loaded modules' files (ModExist, ModTimeDnum).
-#[derive(Default)]
+/// Open files and directories of the task, the file system and the controller root the
+/// devices live under, and the loaded modules' files (ModExist, ModTimeDnum).
 pub struct FileState {
+    /// The world's disk (none until the embedder gives one: [`crate::Vm::set_world`]).
+    fs: Box<dyn FileSystem>,
     root: Option<PathBuf>,
     modules: Vec<ModuleFile>,
     files: FxHashMap<u32, iodev::OpenFile>,
@@ -50,7 +52,34 @@ pub struct ModuleFile {
     pub path: PathBuf,
 }
 
+impl Default for FileState {
+    fn default() -> FileState {
+        FileState {
+            fs: Box::new(crate::world::NoFileSystem),
+            root: None,
+            modules: Vec::new(),
+            files: FxHashMap::default(),
+            dirs: FxHashMap::default(),
+            last_handle: 0,
+        }
+    }
+}
+
 impl FileState {
+    /// The file system the devices live on.
+    pub fn set_file_system(&mut self, fs: Box<dyn FileSystem>) {
+        self.fs = fs;
+    }
+
+    pub fn file_system(&self) -> &dyn FileSystem {
+        &*self.fs
+    }
+
+    /// Resolves RAPID path `text` on its device (see [`devices`]).
+    pub fn resolve(&self, text: &str) -> Result<devices::Resolved, devices::PathFault> {
+        devices::resolve(&*self.fs, self.root.as_deref(), text)
+    }
+
     /// The folder the devices live in: `HOME:` is `<root>/HOME`, and so on. Without a
     /// root every file built-in raises an error.
     pub fn set_root(&mut self, root: impl Into<PathBuf>) {
@@ -144,7 +173,7 @@ fn set_handle(ctx: &mut Ctx<'_>, arg: &Value, mut shell: Opaque, state: OpaqueSt
 /// holds in its write buffers reaches the files before anything looks at them.
 fn resolve(ctx: &mut Ctx<'_>, text: &str, err: Err) -> Result<devices::Resolved, RapidError> {
     ctx.resources.files.flush_all();
-    devices::resolve(ctx.resources.files.root(), text).map_err(|fault| ctx.error(err, fault.message()))
+    ctx.resources.files.resolve(text).map_err(|fault| ctx.error(err, fault.message()))
 }
 
 fn fault(ctx: &Ctx<'_>, (err, message): Fault) -> RapidError {

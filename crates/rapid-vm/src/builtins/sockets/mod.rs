@@ -1,12 +1,13 @@
 //! Socket Messaging (§1.10): SocketCreate, SocketConnect, SocketBind, SocketListen,
 //! SocketAccept, SocketSend, SocketSendTo, SocketReceive, SocketReceiveFrom,
-//! SocketClose, SocketGetStatus, SocketPeek, on real TCP and UDP sockets (std::net).
+//! SocketClose, SocketGetStatus, SocketPeek, on the TCP and UDP sockets of the task's
+//! world (`crate::world::Network`: std::net in the controller's std world).
 //!
 //! A `socketdev` holds `OpaqueState::Handle(n)`, the number of its entry in the task's
 //! [`SocketState`] (table.rs); a fresh or closed one holds nothing and reports
 //! SOCKET_CLOSED. Argument data is converted in payload.rs.
 //!
-//! Time. A wait on a real socket runs in wall-clock time, and the controller's virtual
+//! Time. A wait on a real socket runs in wall-clock time (the world's clock), and the controller's virtual
 //! clock must not skip past it. The VM is single-threaded, so a waiting built-in
 //! blocks, with an OS timeout that never goes past the RAPID `\Time` (60 s when not
 //! given; WAIT_MAX is honoured as about 97 days), and then reports the wall time it
@@ -33,7 +34,7 @@ mod table;
 
 use std::net::{Ipv4Addr, SocketAddr, SocketAddrV4};
 use std::str::FromStr;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use super::io_wait::{wait_again, wait_started};
 use super::{native, present, Ctx, Family};
@@ -92,7 +93,7 @@ fn socket_connect(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (_, handle) = socket_arg(ctx, &args[at.socket])?;
     let to = remote_addr(ctx, &args[at.address], &args[at.port])?;
     let timeout = time_arg(ctx, args.get(at.time))?;
-    let started = Instant::now();
+    let started = ctx.resources.sockets.now();
     let res = ctx.resources.sockets.connect(handle, to, deadline(started, timeout));
     finish_wait(ctx, started, res)?;
     Ok(None)
@@ -170,7 +171,7 @@ fn socket_send(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let slot = payload::chosen(ctx, args, at.str)?;
     let no_of_bytes = ctx.opt_num(args.get(at.no_of_bytes))?;
     let bytes = payload::bytes_to_send(ctx, args, slot, no_of_bytes)?;
-    let started = Instant::now();
+    let started = ctx.resources.sockets.now();
     // uncertain: the manual gives no send timeout; a peer that reads nothing may hold
     // a send for at most the default 60 s before ERR_SOCK_TIMEOUT.
     let res = ctx.resources.sockets.send(handle, &bytes, deadline(started, Duration::from_secs(60)));
@@ -289,16 +290,17 @@ fn set_handle(ctx: &mut Ctx<'_>, arg: &Value, mut opaque: Opaque, handle: Option
 fn wait_for<T>(
     ctx: &mut Ctx<'_>,
     timeout: Duration,
-    op: impl FnOnce(&mut SocketState, Instant) -> Result<T, table::Fault>,
+    op: impl FnOnce(&mut SocketState, table::Deadline) -> Result<T, table::Fault>,
 ) -> Result<Option<T>, RapidError> {
     if !ctx.resources.sockets.is_cooperative() {
-        let started = Instant::now();
+        let started = ctx.resources.sockets.now();
         let res = op(&mut ctx.resources.sockets, deadline(started, timeout));
         return finish_wait(ctx, started, res).map(Some);
     }
     let started = wait_started(ctx);
     let until = started + timeout.as_secs_f64();
-    match op(&mut ctx.resources.sockets, Instant::now()) {
+    let now = ctx.resources.sockets.now();
+    match op(&mut ctx.resources.sockets, now) {
         Err((Err::SockTimeout, _)) if ctx.time < until => {
             ctx.resources.sockets.set_polling(true);
             let next = ctx.time + POLL_PERIOD;
@@ -315,8 +317,8 @@ fn wait_for<T>(
 
 /// Reports the wall time a socket operation took as a wait of the controller clock,
 /// and turns its fault into the RAPID error.
-fn finish_wait<T>(ctx: &mut Ctx<'_>, started: Instant, res: Result<T, table::Fault>) -> Result<T, RapidError> {
-    ctx.waited = started.elapsed().as_secs_f64();
+fn finish_wait<T>(ctx: &mut Ctx<'_>, started: table::Deadline, res: Result<T, table::Fault>) -> Result<T, RapidError> {
+    ctx.waited = ctx.resources.sockets.now().saturating_sub(started).as_secs_f64();
     res.map_err(|f| fault(ctx, f))
 }
 
@@ -333,7 +335,7 @@ fn time_arg(ctx: &Ctx<'_>, arg: Option<&Value>) -> Result<Duration, RapidError> 
 }
 
 /// The instant `timeout` after `started` (far in the future if that overflows).
-fn deadline(started: Instant, timeout: Duration) -> Instant {
+fn deadline(started: table::Deadline, timeout: Duration) -> table::Deadline {
     started.checked_add(timeout).unwrap_or_else(|| started + Duration::from_secs(86_400 * 365))
 }
 

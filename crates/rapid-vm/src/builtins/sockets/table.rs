@@ -1,6 +1,7 @@
-//! The task's socket table: one entry per created `socketdev`, holding the real OS
-//! socket (std::net) and the state SocketGetStatus reports. Every operation that can
-//! wait takes a deadline and never blocks past it.
+//! The task's socket table: one entry per created `socketdev`, holding the endpoint
+//! the world's network made (`crate::world::Network`) and the state SocketGetStatus
+//! reports. Every operation that can wait takes a deadline on the world's clock and
+//! never blocks past it.
 //!
 //! Waiting is split in two so that a scheduler can later poll instead of block: the
 //! `poll_*` functions make whatever progress is possible without waiting and say
@@ -8,13 +9,18 @@
 //! (with an OS timeout, or a short sleep where std offers no timed call) until the
 //! deadline.
 
-use std::io::{self, Read, Write};
-use std::net::{Ipv4Addr, SocketAddr, SocketAddrV4, TcpListener, TcpStream, UdpSocket};
-use std::time::{Duration, Instant};
+use std::io;
+use std::net::{Ipv4Addr, SocketAddr, SocketAddrV4};
+use std::rc::Rc;
+use std::time::Duration;
 
 use rustc_hash::FxHashMap;
 
 use crate::errnames::Err;
+use crate::world::{Clock, Network, NoNetwork, StoppedClock, TcpConn, TcpListen, UdpConn};
+
+/// A moment on the world's monotonic clock ([`Clock::elapsed`]).
+pub(super) type Deadline = Duration;
 
 /// A RAPID error to raise: its name and a message.
 pub(super) type Fault = (Err, String);
@@ -49,7 +55,7 @@ pub(super) struct Want {
 
 /// A connected TCP stream and the bytes read from it ahead of the program.
 struct Stream {
-    tcp: TcpStream,
+    tcp: Box<dyn TcpConn>,
     pending: Vec<u8>,
     /// The peer closed its side: no byte will follow `pending`.
     eof: bool,
@@ -63,7 +69,7 @@ enum Endpoint {
     // uncertain: std binds and listens in one call, so a client connecting between
     // SocketBind and SocketListen is queued instead of refused.
     TcpBound {
-        listener: TcpListener,
+        listener: Box<dyn TcpListen>,
         listening: bool,
     },
     TcpConnected(Stream),
@@ -71,7 +77,7 @@ enum Endpoint {
     /// first SocketSendTo (which binds to any free port, as sendto does).
     UdpNew,
     Udp {
-        socket: UdpSocket,
+        socket: Box<dyn UdpConn>,
         bound: bool,
         connected: bool,
     },
@@ -81,8 +87,10 @@ enum Endpoint {
 }
 
 /// Open sockets of the task, by the handle their `socketdev` holds.
-#[derive(Default)]
 pub struct SocketState {
+    /// The world's network and clock (none until the embedder gives a world).
+    net: Box<dyn Network>,
+    clock: Rc<dyn Clock>,
     entries: FxHashMap<u32, Endpoint>,
     /// Handles are never reused, so a stale `socketdev` never reaches a new socket.
     next_handle: u32,
@@ -101,14 +109,42 @@ pub struct SocketState {
 /// The address of the controller's service port (RobotWare's fixed 192.168.125.1).
 pub const SERVICE_PORT_ADDR: Ipv4Addr = Ipv4Addr::new(192, 168, 125, 1);
 
+impl Default for SocketState {
+    fn default() -> SocketState {
+        SocketState {
+            net: Box::new(NoNetwork),
+            clock: Rc::new(StoppedClock::default()),
+            entries: FxHashMap::default(),
+            next_handle: 0,
+            offline: false,
+            cooperative: false,
+            polling: false,
+            controller_addrs: Vec::new(),
+            mapped: Vec::new(),
+        }
+    }
+}
+
 impl SocketState {
+    /// The network the sockets reach and the clock their waits run on.
+    pub fn set_network(&mut self, net: Box<dyn Network>, clock: Rc<dyn Clock>) {
+        self.net = net;
+        self.clock = clock;
+    }
+
+    /// Now on the world's monotonic clock.
+    pub(super) fn now(&self) -> Deadline {
+        self.clock.elapsed()
+    }
+
     /// Takes the network away from (or gives it back to) the task.
     pub fn set_offline(&mut self, offline: bool) {
         self.offline = offline;
     }
 
+    /// Whether the task has no network: taken away, or its world has none.
     pub fn is_offline(&self) -> bool {
-        self.offline
+        self.offline || self.net.is_closed()
     }
 
     /// One more address of the controller's own (its LAN port's, as the system was
@@ -220,27 +256,24 @@ impl SocketState {
 
     /// The entry of a socket in use; ERR_SOCK_CLOSED otherwise.
     fn entry(&mut self, handle: Option<u32>) -> Result<&mut Endpoint, Fault> {
-        match handle.and_then(|h| self.entries.get_mut(&h)) {
-            None => Err((Err::SockClosed, "the socket is not created or was closed".into())),
-            Some(Endpoint::Broken) => Err((Err::SockClosed, "the connection was closed or broken".into())),
-            Some(entry) => Ok(entry),
-        }
+        entry_of(&mut self.entries, handle)
     }
 
     /// SocketConnect.
-    pub(super) fn connect(&mut self, handle: Option<u32>, to: SocketAddrV4, deadline: Instant) -> Result<(), Fault> {
-        let entry = self.entry(handle)?;
+    pub(super) fn connect(&mut self, handle: Option<u32>, to: SocketAddrV4, deadline: Deadline) -> Result<(), Fault> {
+        let (net, clock) = (&self.net, &self.clock);
+        let entry = entry_of(&mut self.entries, handle)?;
         match entry {
             Endpoint::TcpNew => {
-                let timeout = remaining(deadline).max(Duration::from_millis(1));
-                let tcp = TcpStream::connect_timeout(&SocketAddr::V4(to), timeout).map_err(|e| io_fault(&e))?;
+                let timeout = remaining(&**clock, deadline).max(Duration::from_millis(1));
+                let tcp = net.tcp_connect(to, timeout).map_err(|e| io_fault(&e))?;
                 *entry = Endpoint::TcpConnected(Stream { tcp, pending: Vec::new(), eof: false });
                 Ok(())
             }
             // uncertain: the manual does not say whether a UDP socket may connect; BSD
             // sockets allow it (it fixes the peer of SocketSend / SocketReceive).
             Endpoint::UdpNew => {
-                let socket = UdpSocket::bind(any_port()).map_err(|e| io_fault(&e))?;
+                let mut socket = net.udp_bind(any_port()).map_err(|e| io_fault(&e))?;
                 socket.connect(to).map_err(|e| io_fault(&e))?;
                 *entry = Endpoint::Udp { socket, bound: false, connected: true };
                 Ok(())
@@ -259,15 +292,16 @@ impl SocketState {
 
     /// SocketBind.
     pub(super) fn bind(&mut self, handle: Option<u32>, at: SocketAddrV4) -> Result<(), Fault> {
-        let entry = self.entry(handle)?;
+        let net = &self.net;
+        let entry = entry_of(&mut self.entries, handle)?;
         match entry {
             Endpoint::TcpNew => {
-                let listener = TcpListener::bind(at).map_err(|e| io_fault(&e))?;
+                let listener = net.tcp_bind(at).map_err(|e| io_fault(&e))?;
                 *entry = Endpoint::TcpBound { listener, listening: false };
                 Ok(())
             }
             Endpoint::UdpNew => {
-                let socket = UdpSocket::bind(at).map_err(|e| io_fault(&e))?;
+                let socket = net.udp_bind(at).map_err(|e| io_fault(&e))?;
                 *entry = Endpoint::Udp { socket, bound: true, connected: false };
                 Ok(())
             }
@@ -298,11 +332,12 @@ impl SocketState {
 
     /// SocketAccept: waits for a connection on a listening socket; the new socket's
     /// handle and the client's address.
-    pub(super) fn accept(&mut self, handle: Option<u32>, deadline: Instant) -> Result<(u32, Ipv4Addr), Fault> {
+    pub(super) fn accept(&mut self, handle: Option<u32>, deadline: Deadline) -> Result<(u32, Ipv4Addr), Fault> {
         if self.entries.len() >= MAX_SOCKETS {
             return Err((Err::SockUnspec, format!("a task can hold at most {MAX_SOCKETS} sockets")));
         }
-        let listener = match self.entry(handle)? {
+        let clock = self.clock.clone();
+        let listener = match entry_of(&mut self.entries, handle)? {
             Endpoint::TcpBound { listener, listening: true } => listener,
             Endpoint::TcpNew => return Err(not_bound()),
             Endpoint::TcpConnected(_) => return Err(is_connected()),
@@ -313,10 +348,10 @@ impl SocketState {
             }
             _ => return Err((Err::SockUnspec, "a UDP socket cannot accept connections".into())),
         };
-        let (tcp, peer) = loop {
-            match poll_accept(listener)? {
+        let (mut tcp, peer) = loop {
+            match poll_accept(&mut **listener)? {
                 Some(accepted) => break accepted,
-                None => sleep_step(deadline, "no connection was accepted")?,
+                None => sleep_step(&*clock, deadline, "no connection was accepted")?,
             }
         };
         tcp.set_nonblocking(false).map_err(|e| io_fault(&e))?;
@@ -330,11 +365,12 @@ impl SocketState {
     }
 
     /// SocketSend on a connected socket.
-    pub(super) fn send(&mut self, handle: Option<u32>, bytes: &[u8], deadline: Instant) -> Result<(), Fault> {
-        let entry = self.entry(handle)?;
+    pub(super) fn send(&mut self, handle: Option<u32>, bytes: &[u8], deadline: Deadline) -> Result<(), Fault> {
+        let clock = &self.clock;
+        let entry = entry_of(&mut self.entries, handle)?;
         let res = match entry {
             Endpoint::TcpConnected(stream) => {
-                let timeout = remaining(deadline).max(Duration::from_millis(1));
+                let timeout = remaining(&**clock, deadline).max(Duration::from_millis(1));
                 stream.tcp.set_write_timeout(Some(timeout)).map_err(|e| io_fault(&e))?;
                 stream.tcp.write_all(bytes).and_then(|()| stream.tcp.flush())
             }
@@ -346,9 +382,10 @@ impl SocketState {
 
     /// SocketSendTo on a UDP socket.
     pub(super) fn send_to(&mut self, handle: Option<u32>, bytes: &[u8], to: SocketAddrV4) -> Result<(), Fault> {
-        let entry = self.entry(handle)?;
+        let net = &self.net;
+        let entry = entry_of(&mut self.entries, handle)?;
         if let Endpoint::UdpNew = entry {
-            let socket = UdpSocket::bind(any_port()).map_err(|e| io_fault(&e))?;
+            let socket = net.udp_bind(any_port()).map_err(|e| io_fault(&e))?;
             *entry = Endpoint::Udp { socket, bound: false, connected: false };
         }
         match entry {
@@ -360,12 +397,13 @@ impl SocketState {
     }
 
     /// SocketReceive: waits until `want.min` bytes are there, returns up to `want.max`.
-    pub(super) fn receive(&mut self, handle: Option<u32>, want: Want, deadline: Instant) -> Result<Vec<u8>, Fault> {
-        let entry = self.entry(handle)?;
+    pub(super) fn receive(&mut self, handle: Option<u32>, want: Want, deadline: Deadline) -> Result<Vec<u8>, Fault> {
+        let clock = &self.clock;
+        let entry = entry_of(&mut self.entries, handle)?;
         let res = match entry {
-            Endpoint::TcpConnected(stream) => receive_stream(stream, want, deadline),
+            Endpoint::TcpConnected(stream) => receive_stream(&**clock, stream, want, deadline),
             Endpoint::Udp { socket, connected: true, .. } => {
-                receive_datagram(socket, want.max, deadline).map(|(bytes, _)| bytes)
+                receive_datagram(&**clock, &mut **socket, want.max, deadline).map(|(bytes, _)| bytes)
             }
             _ => return Err(not_connected()),
         };
@@ -377,10 +415,11 @@ impl SocketState {
         &mut self,
         handle: Option<u32>,
         max: usize,
-        deadline: Instant,
+        deadline: Deadline,
     ) -> Result<(Vec<u8>, SocketAddr), Fault> {
-        match self.entry(handle)? {
-            Endpoint::Udp { socket, .. } => receive_datagram(socket, max, deadline),
+        let clock = &self.clock;
+        match entry_of(&mut self.entries, handle)? {
+            Endpoint::Udp { socket, .. } => receive_datagram(&**clock, &mut **socket, max, deadline),
             Endpoint::UdpNew => Err(not_bound()),
             // uncertain: SocketReceiveFrom is for UDP; on a TCP socket no error is documented.
             _ => Err((Err::SockUnspec, "SocketReceiveFrom needs a UDP socket (SocketCreate \\UDP)".into())),
@@ -411,25 +450,36 @@ impl SocketState {
     }
 }
 
+/// The entry of a socket in use in `entries`; ERR_SOCK_CLOSED otherwise.
+fn entry_of(entries: &mut FxHashMap<u32, Endpoint>, handle: Option<u32>) -> Result<&mut Endpoint, Fault> {
+    match handle.and_then(|h| entries.get_mut(&h)) {
+        None => Err((Err::SockClosed, "the socket is not created or was closed".into())),
+        Some(Endpoint::Broken) => Err((Err::SockClosed, "the connection was closed or broken".into())),
+        Some(entry) => Ok(entry),
+    }
+}
+
 // ---- waiting --------------------------------------------------------------------------
 
 /// Time left until `deadline` (zero when past).
-fn remaining(deadline: Instant) -> Duration {
-    deadline.saturating_duration_since(Instant::now())
+fn remaining(clock: &dyn Clock, deadline: Deadline) -> Duration {
+    deadline.saturating_sub(clock.elapsed())
 }
 
 /// Sleeps one poll step (never past the deadline); ERR_SOCK_TIMEOUT once it is reached.
-fn sleep_step(deadline: Instant, what: &str) -> Result<(), Fault> {
-    let left = remaining(deadline);
+fn sleep_step(clock: &dyn Clock, deadline: Deadline, what: &str) -> Result<(), Fault> {
+    let left = remaining(clock, deadline);
     if left.is_zero() {
         return Err((Err::SockTimeout, format!("{what} within the time allowed")));
     }
-    std::thread::sleep(left.min(POLL_STEP));
+    clock.sleep(left.min(POLL_STEP));
     Ok(())
 }
 
 /// One non-blocking accept: the connection if one is queued.
-fn poll_accept(listener: &TcpListener) -> Result<Option<(TcpStream, SocketAddr)>, Fault> {
+type Accepted = (Box<dyn TcpConn>, SocketAddr);
+
+fn poll_accept(listener: &mut dyn TcpListen) -> Result<Option<Accepted>, Fault> {
     listener.set_nonblocking(true).map_err(|e| io_fault(&e))?;
     let res = listener.accept();
     listener.set_nonblocking(false).map_err(|e| io_fault(&e))?;
@@ -478,12 +528,12 @@ fn poll_stream(stream: &mut Stream, want: Want) -> Result<Option<Vec<u8>>, Fault
     Ok(None)
 }
 
-fn receive_stream(stream: &mut Stream, want: Want, deadline: Instant) -> Result<Vec<u8>, Fault> {
+fn receive_stream(clock: &dyn Clock, stream: &mut Stream, want: Want, deadline: Deadline) -> Result<Vec<u8>, Fault> {
     loop {
         if let Some(bytes) = poll_stream(stream, want)? {
             return Ok(bytes);
         }
-        let left = remaining(deadline);
+        let left = remaining(clock, deadline);
         if left.is_zero() {
             return Err((Err::SockTimeout, "no data arrived within the time allowed".into()));
         }
@@ -501,10 +551,15 @@ fn receive_stream(stream: &mut Stream, want: Want, deadline: Instant) -> Result<
 }
 
 /// The next datagram, cut to `max` bytes (the rest of it is lost, as with recvfrom).
-fn receive_datagram(socket: &UdpSocket, max: usize, deadline: Instant) -> Result<(Vec<u8>, SocketAddr), Fault> {
+fn receive_datagram(
+    clock: &dyn Clock,
+    socket: &mut dyn UdpConn,
+    max: usize,
+    deadline: Deadline,
+) -> Result<(Vec<u8>, SocketAddr), Fault> {
     let mut buf = vec![0u8; 65_536];
     loop {
-        let left = remaining(deadline);
+        let left = remaining(clock, deadline);
         let res = if left.is_zero() {
             socket.set_nonblocking(true).map_err(|e| io_fault(&e))?;
             let res = socket.recv_from(&mut buf);
@@ -521,7 +576,7 @@ fn receive_datagram(socket: &UdpSocket, max: usize, deadline: Instant) -> Result
             }
             Err(e) if e.kind() == io::ErrorKind::Interrupted => {}
             Err(e) if matches!(e.kind(), io::ErrorKind::WouldBlock | io::ErrorKind::TimedOut) => {
-                if remaining(deadline).is_zero() {
+                if remaining(clock, deadline).is_zero() {
                     return Err((Err::SockTimeout, "no datagram arrived within the time allowed".into()));
                 }
             }
@@ -592,9 +647,18 @@ mod tests {
         SocketAddrV4::new(Ipv4Addr::LOCALHOST, 0)
     }
 
+    /// A table on a network where no peer ever sends, on a clock that moves only when
+    /// the table waits (the std network is tested in `rapid_controller::host_std`).
+    fn silent_table() -> SocketState {
+        let clock = Rc::new(StoppedClock::default());
+        let mut table = SocketState::default();
+        table.set_network(Box::new(crate::world::memory::SilentNetwork::new(clock.clone())), clock);
+        table
+    }
+
     #[test]
     fn states_follow_the_instructions() {
-        let mut table = SocketState::default();
+        let mut table = silent_table();
         assert_eq!(table.status(None), Status::Closed);
         let tcp = Some(table.create(false).unwrap());
         assert_eq!(table.status(tcp), Status::Created);
@@ -644,13 +708,13 @@ mod tests {
 
     #[test]
     fn a_receive_waits_no_longer_than_its_deadline() {
-        let mut table = SocketState::default();
+        let mut table = silent_table();
         let udp = Some(table.create(true).unwrap());
         table.bind(udp, loopback_any_port()).unwrap();
-        let started = Instant::now();
+        let started = table.now();
         let fault = table.receive_from(udp, 80, started + Duration::from_millis(50)).unwrap_err();
         assert_eq!(fault.0, Err::SockTimeout);
-        let waited = started.elapsed();
+        let waited = table.now() - started;
         assert!(waited >= Duration::from_millis(50) && waited < Duration::from_secs(5), "{waited:?}");
     }
 }

@@ -1,0 +1,20 @@
+//! How a task is given its outside world (`crate::world`): the file system its devices
+//! live on, its network and its clocks.
+
+use super::Vm;
+
+impl Vm {
+    /// Gives the task its outside world (the calendar starts from the world clock's
+    /// time now). Without one the task has none (see [`crate::world`]).
+    pub fn set_world(&mut self, world: crate::world::World) {
+        self.wall_epoch = world.clock.wall_seconds();
+        self.resources.files.set_file_system(world.files);
+        self.resources.sockets.set_network(world.net, world.clock);
+        self.world_given = true;
+    }
+
+    /// Whether [`Vm::set_world`] gave the task a world.
+    pub fn has_world(&self) -> bool {
+        self.world_given
+    }
+}
