@@ -43,7 +43,10 @@ const ALLOWED: &[(&str, &[&str])] = &[
         "rapid-vm",
         &["rapid-limits", "rapid-syntax", "rapid-sema", "rapid-lib", "rapid-config", "rapid-motion", "rapid-io"],
     ),
-    ("rapid-controller", &["rapid-syntax", "rapid-vm", "rapid-sema", "rapid-io", "rapid-config", "rapid-motion"]),
+    (
+        "rapid-controller",
+        &["rapid-limits", "rapid-syntax", "rapid-vm", "rapid-sema", "rapid-io", "rapid-config", "rapid-motion"],
+    ),
     ("rapid-lsp", &["rapid-syntax", "rapid-sema", "rapid-lib", "rapid-fmt", "rapid-config"]),
     ("rapid-serve", &["rapid-controller", "rapid-vm"]),
     ("rapid-dap", &["rapid-controller", "rapid-vm"]),

@@ -17,14 +17,19 @@
 //!   ([`pers::PersStore`]).
 //! - [`ops`] holds the program operations (stop, start, motors, system signals).
 //!
-//! What it must not know: no IO of its own (no files, sockets or terminal; the front
-//! end reads the inputs and the stimulus and hands them over as data), no wall clock
+//! - [`assembly`] turns PATHs (a module, a folder, a `.pgf`, a backup, a manifest) and
+//!   plain options into a booted system: the one assembly path of every front end, and
+//!   the only part of the crate that reads files (the inputs and the stimulus).
+//!
+//! What it must not know: no IO of its own outside [`assembly`] (no sockets or
+//! terminal; the VM's file devices and sockets are the task's), no wall clock
 //! (the front end's [`WallClock`]), no command-line options, output formats (trace,
 //! report, logs) or exit statuses. Output and operator input go through the `Host`
 //! the caller gives.
 
 mod alone;
 pub mod api;
+pub mod assembly;
 pub mod boot;
 pub mod ops;
 pub mod pers;

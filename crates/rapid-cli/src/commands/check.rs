@@ -17,8 +17,8 @@ use rustc_hash::FxHashMap;
 
 use crate::args::{CheckArgs, Format};
 use crate::commands::ExitStatus;
-use crate::inputs;
 use crate::render::{self, Files, Reported, Summary};
+use rapid_controller::assembly::inputs;
 use rapid_sema::system::{self, ConfigFile, TaskFacts, TaskProgram};
 
 pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {

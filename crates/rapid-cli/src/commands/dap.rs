@@ -49,7 +49,7 @@ fn read_stimulus(
     let io = io.ok_or_else(|| {
         format!("`{shown}`: a stimulus needs an I/O configuration (SYSPAR/EIO.cfg in a backup, `io` in a manifest)")
     })?;
-    crate::stimulus::parse(&shown, &text, io).map(Some)
+    rapid_controller::assembly::stimulus::parse(&shown, &text, io).map(Some)
 }
 
 /// The operator's answers of a `--tp-input` file: one per line, `#` lines skipped.

@@ -15,8 +15,8 @@ use rapid_vm::{Host, LoadError, Prompt};
 
 use crate::args::RunArgs;
 use crate::commands::ExitStatus;
-use crate::inputs;
 use crate::render::{self, Files, Reported, Summary};
+use rapid_controller::assembly::inputs;
 
 /// What `rapid run` says when the program executed WarmStart (the run ends there).
 pub(crate) const WARM_START: &str =

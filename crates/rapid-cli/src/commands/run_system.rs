@@ -28,7 +28,7 @@ use rapid_vm::{load_with, LoadError};
 use super::run::{self as single, has_config_errors, StdoutHost};
 use crate::args::RunArgs;
 use crate::commands::ExitStatus;
-use crate::inputs::{self, Inputs};
+use rapid_controller::assembly::inputs::{self, Inputs};
 use rapid_sema::system::{self, ConfigFile, TaskFacts, TaskProgram};
 
 /// One task's inputs, loaded program and configuration.
@@ -395,7 +395,7 @@ fn read_stimulus(io: Option<&rapid_io::IoSystem>, args: &RunArgs, alone: bool) -
             format!("`{shown}`: a stimulus needs an I/O configuration (the system has none: SYSPAR/EIO.cfg in a backup, `io` in a manifest)")
         });
     };
-    crate::stimulus::parse(&shown, &text, system).map(Some)
+    rapid_controller::assembly::stimulus::parse(&shown, &text, system).map(Some)
 }
 
 /// Prints what ended the run badly: a bound, each task's unhandled error, a static

@@ -16,7 +16,7 @@ use rapid_sema::{Options, SourceInput};
 
 use super::ExitStatus;
 use crate::args::ServeArgs;
-use crate::inputs;
+use rapid_controller::assembly::inputs;
 
 /// The port RobotWare serves on, and where to go when it is not ours to take.
 const DEFAULT_BIND: &str = "127.0.0.1:80";

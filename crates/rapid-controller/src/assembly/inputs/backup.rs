@@ -34,12 +34,12 @@ use rapid_config::sys::Sys;
 
 /// The task the backup's program is read from.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub(crate) struct TaskFolder {
+pub struct TaskFolder {
     /// The task's name (`T_ROB1`), or the folder's when no configuration names it.
-    pub(crate) name: String,
-    pub(crate) folder: PathBuf,
+    pub name: String,
+    pub folder: PathBuf,
     /// The routine the task starts in (`-Entry` in SYS.cfg), when SYS.cfg has the task.
-    pub(crate) entry: Option<String>,
+    pub entry: Option<String>,
 }
 
 /// A child of `dir` named `name` in any letter case.

@@ -26,7 +26,7 @@ use rapid_vm::builtins::io::Reaction;
 
 /// A stimulus: timed input changes (time, signal id, value) in time order, reactions,
 /// and timed operator answers (time, text) in time order.
-pub(crate) type Stimulus = (Vec<(f64, u32, f64)>, Vec<Reaction>, Vec<(f64, String)>);
+pub type Stimulus = (Vec<(f64, u32, f64)>, Vec<Reaction>, Vec<(f64, String)>);
 
 /// The pendant dialogs an `answer` line may name.
 const DIALOGS: &[&str] = &[
@@ -44,7 +44,7 @@ const DIALOGS: &[&str] = &[
 ];
 
 /// The stimulus of `text` (from file `path`).
-pub(crate) fn parse(path: &str, text: &str, io: &IoSystem) -> Result<Stimulus, String> {
+pub fn parse(path: &str, text: &str, io: &IoSystem) -> Result<Stimulus, String> {
     let (mut orders, mut reactions, mut answers) = (Vec::new(), Vec::new(), Vec::new());
     for (n, line) in text.lines().enumerate() {
         let line = line.split('#').next().unwrap_or("").trim();
