@@ -25,7 +25,7 @@ pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
     let inputs = inputs::collect(&args.paths)?;
     let others = other_tasks(args, &inputs)?;
     for task in std::iter::once(&inputs).chain(&others) {
-        super::run::print_notes(task);
+        super::run::print_notes(&task.notes);
     }
     // A task is named only where the check covers several.
     let names = |task: &inputs::Inputs| match (&task.task, others.is_empty()) {
