@@ -57,7 +57,6 @@ const ALLOWED: &[(&str, &[&str])] = &[
             "rapid-syntax",
             "rapid-sema",
             "rapid-vm",
-            "rapid-config",
             "rapid-io",
             "rapid-controller",
             "rapid-motion",

@@ -122,7 +122,8 @@ fn check_task(inputs: &inputs::Inputs, options: &Options) -> (Vec<Diagnostic>, O
 fn other_tasks(args: &CheckArgs, inputs: &inputs::Inputs) -> anyhow::Result<Vec<inputs::Inputs>> {
     // A backup's task folders that no SYS.cfg configures are each checked on their own.
     if inputs.sys.as_ref().is_none_or(|sys| sys.tasks.is_empty()) {
-        return inputs.unconfigured_tasks.iter().map(|name| inputs::collect_task(&args.paths, Some(name))).collect();
+        let tasks = inputs.unconfigured_tasks.iter().map(|name| inputs::collect_task(&args.paths, Some(name)));
+        return Ok(tasks.collect::<Result<_, _>>()?);
     }
     let (Some(sys), Some(read)) = (&inputs.sys, &inputs.task) else { return Ok(Vec::new()) };
     // System-wide limits first: a system over the task limit is refused by its
@@ -135,7 +136,8 @@ fn other_tasks(args: &CheckArgs, inputs: &inputs::Inputs) -> anyhow::Result<Vec<
         .iter()
         .filter(|task| !task.name.eq_ignore_ascii_case(&read.name))
         .map(|task| inputs::collect_task(&args.paths, Some(&task.name)))
-        .collect()
+        .collect::<Result<_, _>>()
+        .map_err(Into::into)
 }
 
 /// Diagnostics a task's check found, naming the task (`names`, empty for a check of one

@@ -60,7 +60,7 @@ fn load_options(args: &RunArgs) -> LoadOptions {
 /// findings), as the program's load error, or as a refusal.
 fn report_assembly_error(err: AssemblyError) -> anyhow::Result<ExitStatus> {
     match err {
-        AssemblyError::Unreadable(err) => Err(err),
+        AssemblyError::Unreadable(err) => Err(err.into()),
         AssemblyError::Inputs(inputs) => report_input_errors(&inputs),
         AssemblyError::System { files, diagnostics } => {
             let table: Vec<&SourceInput> = files.iter().collect();

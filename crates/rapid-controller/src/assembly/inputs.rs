@@ -9,6 +9,7 @@
 //! entry is.
 
 mod backup;
+mod error;
 mod glob;
 pub mod manifest;
 mod manifest_units;
@@ -20,13 +21,14 @@ use std::fs;
 use std::io;
 use std::path::{Path, PathBuf};
 
-use anyhow::{bail, Context};
 use rapid_config::{eio, sys, CfgError, CfgFile};
 use rapid_sema::{Code, Diagnostic, PredefinedData, SourceInput};
 use rapid_syntax::Span;
 use rustc_hash::FxHashSet;
 
 pub use self::backup::TaskFolder;
+pub use self::error::InputError;
+use self::error::{bail, Context};
 use self::program_file::{Entry, ProgramFile};
 use crate::boot::cell::{TaskConveyor, TaskUnit};
 use crate::boot::moc_units::read as read_moc_units;
@@ -134,12 +136,12 @@ impl Inputs {
 }
 
 /// Reads every PATH. Fails, with a message naming the PATH, when one cannot be used.
-pub fn collect(paths: &[PathBuf]) -> anyhow::Result<Inputs> {
+pub fn collect(paths: &[PathBuf]) -> Result<Inputs, InputError> {
     collect_task(paths, None)
 }
 
 /// [`collect`], reading task `task` of a backup (T_ROB1 when none is named).
-pub fn collect_task(paths: &[PathBuf], task: Option<&str>) -> anyhow::Result<Inputs> {
+pub fn collect_task(paths: &[PathBuf], task: Option<&str>) -> Result<Inputs, InputError> {
     let mut collector = Collector { wanted_task: task.map(str::to_owned), ..Collector::default() };
     for path in paths {
         collector.add_path(path)?;
@@ -208,7 +210,7 @@ struct Collector {
 }
 
 impl Collector {
-    fn add_path(&mut self, path: &Path) -> anyhow::Result<()> {
+    fn add_path(&mut self, path: &Path) -> Result<(), InputError> {
         let shown = path.display();
         let meta = fs::metadata(path).with_context(|| format!("cannot read `{shown}`"))?;
         if let Some(file) = manifest::manifest_path(path) {
@@ -231,7 +233,7 @@ impl Collector {
     }
 
     /// Adds the module files of a folder (not of its subfolders), sorted by name.
-    fn add_folder(&mut self, folder: &Path) -> anyhow::Result<()> {
+    fn add_folder(&mut self, folder: &Path) -> Result<(), InputError> {
         let shown = folder.display();
         let mut files = Vec::new();
         for entry in fs::read_dir(folder).with_context(|| format!("cannot read folder `{shown}`"))? {
@@ -261,7 +263,7 @@ impl Collector {
 
     /// Adds a backup (or another system layout, `backup.rs`): its configuration, then
     /// the modules of its T_ROB1 task, from its task folder and from HOME.
-    fn add_backup(&mut self, folder: &Path, tasks: &[(u32, PathBuf)]) -> anyhow::Result<()> {
+    fn add_backup(&mut self, folder: &Path, tasks: &[(u32, PathBuf)]) -> Result<(), InputError> {
         let mut sys = None;
         for path in backup::config_files(folder) {
             if let (_, Some(view)) = self.add_config(&path)? {
@@ -459,7 +461,7 @@ impl Collector {
 
     /// Reads one configuration file: its findings, its signals (EIO) or its tasks
     /// (SYS, returned). Returns the file's domain too.
-    fn add_config(&mut self, path: &Path) -> anyhow::Result<(String, Option<sys::Sys>)> {
+    fn add_config(&mut self, path: &Path) -> Result<(String, Option<sys::Sys>), InputError> {
         let shown = path.display();
         let bytes = fs::read(path).with_context(|| format!("cannot read `{shown}`"))?;
         let config_idx = self.configs.len();
@@ -516,7 +518,7 @@ impl Collector {
 
     /// Adds a project manifest: its findings, its I/O configuration, then the modules
     /// of the task asked for (the first task when none is named).
-    fn add_manifest(&mut self, path: &Path) -> anyhow::Result<()> {
+    fn add_manifest(&mut self, path: &Path) -> Result<(), InputError> {
         let shown = path.display();
         let bytes = fs::read(path).with_context(|| format!("cannot read `{shown}`"))?;
         let config_idx = self.configs.len();
@@ -646,7 +648,7 @@ impl Collector {
     }
 
     /// Adds a `.pgf`: either the modules it lists, or the module it holds itself.
-    fn add_program(&mut self, path: &Path) -> anyhow::Result<()> {
+    fn add_program(&mut self, path: &Path) -> Result<(), InputError> {
         if !self.first_sight(path) {
             return Ok(());
         }

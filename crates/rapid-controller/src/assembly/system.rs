@@ -100,7 +100,7 @@ pub struct Assembled {
 pub enum AssemblyError {
     /// A PATH cannot be used at all (missing, unreadable, not a RAPID file): a tool
     /// failure, not a finding.
-    Unreadable(anyhow::Error),
+    Unreadable(inputs::InputError),
     /// The inputs' configuration has errors, or a `.pgf` entry does: what `rapid check`
     /// refuses (the inputs carry every finding, warnings too).
     Inputs(Box<Inputs>),

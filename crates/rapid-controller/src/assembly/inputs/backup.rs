@@ -253,7 +253,7 @@ fn parse_backinfo_task(line: &str) -> Option<(u32, String)> {
 /// it, in its order (the controller saved exactly these; another file in the folder is
 /// not part of the task), else every module file, `SYSMOD` then `PROGMOD`, each sorted
 /// by name. A listed module the folder lacks is an error.
-pub(crate) fn task_modules(backup: &Path, task: &Path) -> anyhow::Result<Vec<PathBuf>> {
+pub(crate) fn task_modules(backup: &Path, task: &Path) -> Result<Vec<PathBuf>, super::InputError> {
     let number = task.file_name().and_then(|n| n.to_str()).and_then(task_number);
     let Some(listed) = number.and_then(|n| backinfo_modules(backup, n)) else { return Ok(folder_modules(task)) };
     listed
@@ -261,11 +261,11 @@ pub(crate) fn task_modules(backup: &Path, task: &Path) -> anyhow::Result<Vec<Pat
         .map(|entry| {
             let found = entry.split(['\\', '/']).try_fold(task.to_path_buf(), |dir, part| child(&dir, part));
             found.filter(|p| p.is_file()).ok_or_else(|| {
-                anyhow::anyhow!(
+                super::InputError::new(format!(
                     "backup `{}`: backinfo.txt lists module `{entry}` for `{}`, which the folder does not hold",
                     backup.display(),
                     task.display()
-                )
+                ))
             })
         })
         .collect()
