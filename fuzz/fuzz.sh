@@ -6,7 +6,8 @@
 #
 # Targets: check (bytes -> checker), run (bytes -> interpreter), program (generated
 # RAPID programs -> checker and interpreter), controller (generated programs as one to
-# three tasks of the controller), cfg (bytes -> .cfg parser and views).
+# three tasks of the controller), cfg (bytes -> .cfg parser and views), manifest
+# (bytes -> rapid.toml reader), stimulus (bytes -> --stimulus parser).
 #
 # Usage: fuzz/fuzz.sh TARGET [SECONDS] [libFuzzer flags...]
 set -euo pipefail
@@ -28,6 +29,12 @@ seed() {
     [[ "${FUZZ_SEED:-1}" == 0 ]] && return 0
     for file in "$@"; do [[ -f "$file" ]] && cp "$file" "$corpus/"; done; true
 }
+# Seeds that share a file name (every manifest is `rapid.toml`), each kept under its
+# folder's name.
+seed_by_folder() {
+    [[ "${FUZZ_SEED:-1}" == 0 ]] && return 0
+    for file in "$@"; do [[ -f "$file" ]] && cp "$file" "$corpus/$(basename "$(dirname "$file")").$(basename "$file")"; done; true
+}
 case "$target" in
     check) seed "$root"/tests/check/ok/*.mod "$root"/examples/*.mod; max_len=65536 ;;
     run) seed "$root"/tests/conformance/*.mod; max_len=16384 ;;
@@ -35,7 +42,11 @@ case "$target" in
     program | controller) max_len=8192 ;;
     cfg) while IFS= read -r -d '' file; do seed "$file"; done < <(find "$root/crates" "$root/examples" -name '*.cfg' -print0)
          max_len=65536 ;;
-    *) echo "unknown target \`$target\` (check, run, program, controller, cfg)" >&2; exit 2 ;;
+    manifest) while IFS= read -r -d '' file; do seed_by_folder "$file"; done < <(find "$root/examples" "$root/tests" -name '*.toml' -print0)
+         max_len=16384 ;;
+    stimulus) seed "$root"/examples/*.stimulus "$root"/examples/*/*.stim; max_len=4096
+              set -- -dict="$here/dict/stimulus.dict" "$@" ;;
+    *) echo "unknown target \`$target\` (check, run, program, controller, cfg, manifest, stimulus)" >&2; exit 2 ;;
 esac
 
 "$here/build.sh" "$target"

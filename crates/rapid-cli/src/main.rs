@@ -4,14 +4,12 @@
 mod args;
 mod commands;
 mod elog;
-mod inputs;
 mod interrupt;
 mod motion_out;
 mod pace;
 mod render;
 mod report;
 mod save;
-mod stimulus;
 mod trace;
 
 use std::io::{self, Write};

@@ -19,16 +19,20 @@
 //!
 //! - [`host_std`] is the std world every task gets by default: the host's disk,
 //!   network and clocks behind the VM's host traits (`rapid_vm::world`).
+//! - [`assembly`] turns PATHs (a module, a folder, a `.pgf`, a backup, a manifest) and
+//!   plain options into a booted system: the one assembly path of every front end, and
+//!   the only part of the crate that reads files of its own (the inputs and the
+//!   stimulus).
 //!
-//! What it must not know: no IO of its own outside [`host_std`] (no files, sockets or
-//! terminal; the front end reads the inputs and the stimulus and hands them over as
-//! data; a task's programs reach the host only through its world), no wall clock
+//! What it must not know: no IO of its own outside [`assembly`] and [`host_std`] (no
+//! sockets or terminal; a task's programs reach the host only through its world), no wall clock
 //! (the front end's [`WallClock`]), no command-line options, output formats (trace,
 //! report, logs) or exit statuses. Output and operator input go through the `Host`
 //! the caller gives.
 
 mod alone;
 pub mod api;
+pub mod assembly;
 pub mod boot;
 pub mod host_std;
 pub mod ops;

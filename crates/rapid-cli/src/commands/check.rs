@@ -17,15 +17,15 @@ use rustc_hash::FxHashMap;
 
 use crate::args::{CheckArgs, Format};
 use crate::commands::ExitStatus;
-use crate::inputs;
 use crate::render::{self, Files, Reported, Summary};
+use rapid_controller::assembly::inputs;
 use rapid_sema::system::{self, ConfigFile, TaskFacts, TaskProgram};
 
 pub(crate) fn run(args: &CheckArgs) -> anyhow::Result<ExitStatus> {
     let inputs = inputs::collect(&args.paths)?;
     let others = other_tasks(args, &inputs)?;
     for task in std::iter::once(&inputs).chain(&others) {
-        super::run::print_notes(task);
+        super::run::print_notes(&task.notes);
     }
     // A task is named only where the check covers several.
     let names = |task: &inputs::Inputs| match (&task.task, others.is_empty()) {
@@ -122,7 +122,8 @@ fn check_task(inputs: &inputs::Inputs, options: &Options) -> (Vec<Diagnostic>, O
 fn other_tasks(args: &CheckArgs, inputs: &inputs::Inputs) -> anyhow::Result<Vec<inputs::Inputs>> {
     // A backup's task folders that no SYS.cfg configures are each checked on their own.
     if inputs.sys.as_ref().is_none_or(|sys| sys.tasks.is_empty()) {
-        return inputs.unconfigured_tasks.iter().map(|name| inputs::collect_task(&args.paths, Some(name))).collect();
+        let tasks = inputs.unconfigured_tasks.iter().map(|name| inputs::collect_task(&args.paths, Some(name)));
+        return Ok(tasks.collect::<Result<_, _>>()?);
     }
     let (Some(sys), Some(read)) = (&inputs.sys, &inputs.task) else { return Ok(Vec::new()) };
     // System-wide limits first: a system over the task limit is refused by its
@@ -135,7 +136,8 @@ fn other_tasks(args: &CheckArgs, inputs: &inputs::Inputs) -> anyhow::Result<Vec<
         .iter()
         .filter(|task| !task.name.eq_ignore_ascii_case(&read.name))
         .map(|task| inputs::collect_task(&args.paths, Some(&task.name)))
-        .collect()
+        .collect::<Result<_, _>>()
+        .map_err(Into::into)
 }
 
 /// Diagnostics a task's check found, naming the task (`names`, empty for a check of one

@@ -5,6 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use rapid_controller::api::Session;
+use rapid_controller::assembly::{self, LoadOptions};
 use rapid_dap::{LaunchArgs, Launched, Launcher};
 
 use super::ExitStatus;
@@ -16,40 +17,28 @@ pub(crate) fn run() -> anyhow::Result<ExitStatus> {
     Ok(ExitStatus::Success)
 }
 
-/// Boots a module, folder, backup or manifest as `rapid serve` does, in cycle mode
-/// (one cycle, as `rapid run` runs by default: the session ends when the program does).
+/// Boots a module, folder, backup or manifest through the controller's assembly as
+/// `rapid serve` does, in cycle mode (one cycle, as `rapid run` runs by default: the
+/// session ends when the program does).
 struct SystemLauncher;
 
 impl Launcher for SystemLauncher {
     fn launch(&self, args: &LaunchArgs) -> Result<Launched, String> {
         // Canonical paths: the client names breakpoints' files by absolute paths.
         let paths: Vec<PathBuf> = args.program.iter().map(|p| canonical(p)).collect::<Result<_, _>>()?;
-        let mut read_stimulus = |io: Option<&rapid_io::IoSystem>| read_stimulus(args.stimulus.as_deref(), io);
-        let (controller, _files) = super::serve::assemble_with(&paths, None, &mut read_stimulus, 1)?;
+        let options =
+            LoadOptions { operated: true, cycles: 1, stimulus: args.stimulus.clone(), ..LoadOptions::default() };
+        let assembled = assembly::assemble(&paths, &options).outcome.map_err(|e| e.message())?;
         let answers = match &args.tp_input {
             Some(path) => pendant_answers(path)?,
             None => Vec::new(),
         };
-        Ok(Launched { session: Session::new(controller), answers })
+        Ok(Launched { session: Session::new(assembled.controller), answers })
     }
 }
 
 fn canonical(path: &Path) -> Result<PathBuf, String> {
     std::fs::canonicalize(path).map_err(|e| format!("cannot read `{}`: {e}", path.display()))
-}
-
-/// The stimulus file read against the system's I/O, as `rapid run --stimulus`.
-fn read_stimulus(
-    path: Option<&Path>,
-    io: Option<&rapid_io::IoSystem>,
-) -> Result<Option<rapid_controller::boot::system::Stimulus>, String> {
-    let Some(path) = path else { return Ok(None) };
-    let shown = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read the stimulus `{shown}`: {e}"))?;
-    let io = io.ok_or_else(|| {
-        format!("`{shown}`: a stimulus needs an I/O configuration (SYSPAR/EIO.cfg in a backup, `io` in a manifest)")
-    })?;
-    crate::stimulus::parse(&shown, &text, io).map(Some)
 }
 
 /// The operator's answers of a `--tp-input` file: one per line, `#` lines skipped.

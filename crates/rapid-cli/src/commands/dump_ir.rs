@@ -7,7 +7,7 @@ use rapid_sema::Options;
 
 use crate::args::DumpIrArgs;
 use crate::commands::ExitStatus;
-use crate::inputs;
+use rapid_controller::assembly::inputs;
 
 pub(crate) fn run(args: &DumpIrArgs) -> anyhow::Result<ExitStatus> {
     let inputs = inputs::collect(&args.paths)?;

@@ -24,7 +24,7 @@ use rapid_syntax::LineIndex;
 use crate::args::FmtArgs;
 use crate::commands::fmt_config::Configs;
 use crate::commands::ExitStatus;
-use crate::inputs::MODULE_EXTENSIONS;
+use rapid_controller::assembly::inputs::MODULE_EXTENSIONS;
 
 pub(crate) fn run(args: &FmtArgs) -> anyhow::Result<ExitStatus> {
     let stdin_dash = args.paths.iter().any(|p| p.as_os_str() == "-");

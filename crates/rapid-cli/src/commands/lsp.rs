@@ -8,7 +8,7 @@ use rapid_lsp::{System, Task, Workspace, WorkspaceLoader};
 use rapid_sema::Options;
 
 use crate::commands::ExitStatus;
-use crate::inputs::{self, Inputs};
+use rapid_controller::assembly::inputs::{self, Inputs};
 
 pub(crate) fn run() -> anyhow::Result<ExitStatus> {
     let (connection, io_threads) = lsp_server::Connection::stdio();

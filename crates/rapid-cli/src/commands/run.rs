@@ -1,6 +1,7 @@
-//! `rapid run PATH…`: reads the inputs like `rapid check` and hands them to the one
-//! run path (`run_system.rs`: the controller runs every program, a single task as a
-//! system of one); what both need lives here: pendant output goes to stdout, one line
+//! `rapid run PATH…`: has the controller assemble the system of PATH
+//! (`rapid_controller::assembly`, the path every front end takes), says why when it
+//! cannot start, and hands it to the one run path (`run_system.rs`: the controller runs
+//! every program, a single task as a system of one); what both need lives here: pendant output goes to stdout, one line
 //! per write, an unhandled error is reported on stderr as the system error handler's
 //! event-log entry would be, and the logs written after the run.
 
@@ -9,13 +10,16 @@
 
 use std::io::{self, BufWriter, Write};
 
-use rapid_sema::{Code, Diagnostic, Severity, SourceInput};
+use rapid_sema::{Diagnostic, SourceInput};
 use rapid_syntax::LineIndex;
 use rapid_vm::{Host, LoadError, Prompt};
 
+use rapid_controller::assembly::inputs::Inputs;
+use rapid_controller::assembly::{self, AssemblyError, LoadOptions};
+use rapid_controller::boot::system::BootError;
+
 use crate::args::RunArgs;
 use crate::commands::ExitStatus;
-use crate::inputs;
 use crate::render::{self, Files, Reported, Summary};
 
 /// What `rapid run` says when the program executed WarmStart (the run ends there).
@@ -23,13 +27,65 @@ pub(crate) const WARM_START: &str =
     "warm start: the program requested a restart of the controller (WarmStart); the run ends here";
 
 pub(crate) fn run(args: &RunArgs) -> anyhow::Result<ExitStatus> {
-    let inputs = inputs::collect(&args.paths)?;
-    print_notes(&inputs);
-    if has_config_errors(&inputs) {
-        return report_input_errors(&inputs);
+    // Every program runs under the controller: one task alone, or a system of tasks,
+    // assembled by the one path every front end takes.
+    let assembly = assembly::assemble(&args.paths, &load_options(args));
+    print_notes(&assembly.notes);
+    let assembled = match assembly.outcome {
+        Ok(assembled) => assembled,
+        Err(err) => return report_assembly_error(err),
+    };
+    super::run_system::run(args, assembled)
+}
+
+/// The command line's run options as the controller's assembly takes them.
+fn load_options(args: &RunArgs) -> LoadOptions {
+    LoadOptions {
+        operated: false,
+        entry: args.entry.clone(),
+        virtual_io: args.virtual_io,
+        state: args.controller_state(),
+        home: args.home.clone(),
+        robot: args.robot.clone(),
+        record: args.trace.is_some() || args.report.is_some(),
+        cycles: args.cycles,
+        max_steps: args.max_steps,
+        start_joints: args.start_joints,
+        stimulus: args.stimulus.clone(),
+        controller_ip: args.controller_ip,
     }
-    // Every program runs under the controller: one task alone, or a system of tasks.
-    super::run_system::run(args, inputs)
+}
+
+/// Why the system was not run, said as `rapid check` says findings (input and system
+/// findings), as the program's load error, or as a refusal.
+fn report_assembly_error(err: AssemblyError) -> anyhow::Result<ExitStatus> {
+    match err {
+        AssemblyError::Unreadable(err) => Err(err.into()),
+        AssemblyError::Inputs(inputs) => report_input_errors(&inputs),
+        AssemblyError::System { files, diagnostics } => {
+            let table: Vec<&SourceInput> = files.iter().collect();
+            report_system_errors(&table, &diagnostics)
+        }
+        AssemblyError::Load { task, alone, error, files } => {
+            if !alone {
+                eprintln!("error: task {task} cannot start:");
+            }
+            report_load_error(*error, &files)
+        }
+        AssemblyError::Boot(BootError::Refused(message)) => refuse(&message),
+        AssemblyError::Boot(BootError::UnknownModel(message)) => {
+            eprintln!("error: {message}");
+            Ok(ExitStatus::Error)
+        }
+        AssemblyError::Boot(BootError::Internal(message)) => Err(anyhow::anyhow!("internal error: {message}")),
+    }
+}
+
+/// A system that cannot start: the message, and that nothing ran.
+pub(crate) fn refuse(message: &str) -> anyhow::Result<ExitStatus> {
+    eprintln!("error: {message}");
+    eprintln!("the system has errors; it was not run");
+    Ok(ExitStatus::Failure)
 }
 
 /// The event log's entry for the program's stop, with why it stopped.
@@ -47,23 +103,6 @@ pub(crate) fn pendant_answers(args: &RunArgs) -> anyhow::Result<std::collections
     let text = std::fs::read_to_string(path)
         .map_err(|e| anyhow::anyhow!("cannot read the pendant answers `{}`: {e}", path.display()))?;
     Ok(text.lines().filter(|l| !l.starts_with('#')).map(str::to_string).collect())
-}
-
-/// The controller root of the file devices: `--home`, else a backup's (or a
-/// manifest's) own root, else `rapid-controller` beside the first PATH.
-pub(crate) fn home(args: &RunArgs, backup_root: Option<std::path::PathBuf>) -> std::path::PathBuf {
-    args.home.clone().or(backup_root).unwrap_or_else(|| default_home(&args.paths))
-}
-
-/// `rapid-controller` in the folder holding the first PATH (for a folder of modules,
-/// beside that folder).
-fn default_home(paths: &[std::path::PathBuf]) -> std::path::PathBuf {
-    let first = paths.first().map(|p| p.as_path()).unwrap_or(std::path::Path::new("."));
-    let parent = match first.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-        _ => std::path::PathBuf::from("."),
-    };
-    parent.join("rapid-controller")
 }
 
 pub(crate) fn location(files: &[SourceInput], file: usize, offset: u32) -> (String, u32, u32) {
@@ -92,28 +131,21 @@ pub(crate) fn exit_cycle_note(what: &str) -> String {
 }
 
 /// Prints the notes on how the inputs were read (a backup's module left out) to stderr.
-pub(crate) fn print_notes(inputs: &inputs::Inputs) {
-    for note in &inputs.notes {
+pub(crate) fn print_notes(notes: &[String]) {
+    for note in notes {
         eprintln!("note: {note}");
     }
 }
 
-/// Whether the inputs' configuration has errors (the controller would not start), or a
-/// `.pgf` entry does (the program is not whole): what `rapid check` refuses, run refuses.
-pub(crate) fn has_config_errors(inputs: &inputs::Inputs) -> bool {
-    let refused = |code| matches!(code, Code::ConfigFile | Code::ProgramFileEntry);
-    inputs.diagnostics.iter().any(|d| refused(d.code) && d.severity() == Severity::Error)
-}
-
 /// Errors in a backup's configuration: the controller would not start, so nothing
 /// runs (the report shows every input finding, warnings and `.pgf` entries too).
-pub(crate) fn report_input_errors(inputs: &inputs::Inputs) -> anyhow::Result<ExitStatus> {
+fn report_input_errors(inputs: &Inputs) -> anyhow::Result<ExitStatus> {
     report_system_errors(&inputs.table(), &inputs.diagnostics)
 }
 
 /// Findings that keep the system from starting, shown as `rapid check` shows them
 /// (`files` is the table their `file` indexes).
-pub(crate) fn report_system_errors(files: &[&SourceInput], diagnostics: &[Diagnostic]) -> anyhow::Result<ExitStatus> {
+fn report_system_errors(files: &[&SourceInput], diagnostics: &[Diagnostic]) -> anyhow::Result<ExitStatus> {
     let (files, reported) = (Files::new(files), Reported::untagged(diagnostics));
     let summary = Summary::of(&reported, &files);
     let mut out = io::stderr().lock();

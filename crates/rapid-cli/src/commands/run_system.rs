@@ -1,6 +1,6 @@
 //! `rapid run`'s one path: every program runs under the controller
-//! (`rapid_controller::Controller`). A module, a folder, a `.pgf` or a backup of one
-//! task is a system of one task run alone (the controller runs it in slices,
+//! (`rapid_controller::Controller`, assembled by `rapid_controller::assembly`). A
+//! module, a folder, a `.pgf` or a backup of one task is a system of one task run alone (the controller runs it in slices,
 //! `Controller::runs_alone`), reported as a program: its error and its event log name
 //! no task. A system of several tasks (SYS.cfg `CAB_TASKS`) has every task loaded
 //! from its `RAPID/TASKn` folder, and the controller runs them pseudo-parallel, sharing
@@ -18,183 +18,27 @@
 use std::io::{self, BufWriter};
 
 use rapid_controller::api::Session;
-use rapid_controller::boot::system::{self as boot, BootError, BootOptions, Booted};
-use rapid_controller::{
-    Bound, ClockPolicy, Controller, EventRoutineFailure, RunBounds, TaskEnd, TaskKind, TaskSpec, TrustLevel,
-};
-use rapid_sema::{Options, Severity, SourceInput};
-use rapid_vm::{load_with, LoadError};
+use rapid_controller::assembly::inputs::Inputs;
+use rapid_controller::assembly::Assembled;
+use rapid_controller::{Bound, ClockPolicy, Controller, EventRoutineFailure, RunBounds, TaskEnd, TaskKind, TrustLevel};
+use rapid_sema::SourceInput;
 
-use super::run::{self as single, has_config_errors, StdoutHost};
+use super::run::{self as single, refuse, StdoutHost};
 use crate::args::RunArgs;
 use crate::commands::ExitStatus;
-use crate::inputs::{self, Inputs};
-use rapid_sema::system::{self, ConfigFile, TaskFacts, TaskProgram};
 
-/// One task's inputs, loaded program and configuration.
-struct LoadedTask {
-    inputs: Inputs,
-    spec: TaskSpec,
-}
-
-pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
-    // One task without system inputs or outputs: a program run alone.
-    let alone = boot::is_alone(first.sys.as_ref(), &first.syspar);
-    let name = first.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
-    let entry = first.task.as_ref().and_then(|t| t.entry.clone());
-    let sys = boot::system_of(first.sys.as_ref(), alone, &name, entry.as_deref());
-    let specs = match &sys {
-        Some(sys) if !alone => match boot::task_specs(sys) {
-            Ok(specs) => specs,
-            Err(message) => return refuse(&message),
-        },
-        _ => vec![boot::alone_spec(&name)],
-    };
-    let mut tasks: Vec<LoadedTask> = Vec::new();
-    let mut first = Some(first);
-    let mut own_findings = Vec::new();
-    for spec in specs {
-        let inputs = match first.take().filter(|f| f.task.as_ref().is_none_or(|t| t.name == spec.name)) {
-            Some(inputs) => inputs,
-            None => {
-                let inputs = inputs::collect_task(&args.paths, Some(&spec.name))?;
-                single::print_notes(&inputs);
-                // What is wrong for this task alone (a module of HOME it loads is missing).
-                match tasks.first() {
-                    Some(first) => own_findings.extend(inputs.task_config_findings(&first.inputs)),
-                    None if has_config_errors(&inputs) => return single::report_input_errors(&inputs),
-                    None => {}
-                }
-                inputs
-            }
-        };
-        let spec = TaskSpec { shared_files: inputs.shared_modules.clone(), ..spec };
-        tasks.push(LoadedTask { inputs, spec });
-    }
-    if own_findings.iter().any(|d| d.severity() == Severity::Error) {
-        let mut first = tasks.swap_remove(0).inputs;
-        first.diagnostics.extend(own_findings);
-        return single::report_input_errors(&first);
-    }
-    // Every task's files in one table, as `rapid check` shows them: the first task's
-    // inputs (with the configuration), then the other tasks' modules.
-    let mut table = tasks[0].inputs.table();
-    let mut offsets = vec![0];
-    for task in &tasks[1..] {
-        offsets.push(table.len());
-        table.extend(task.inputs.modules.iter());
-    }
-    let config = ConfigFile::of(tasks[0].inputs.sys_file, &table);
-    let mut loaded = Vec::new();
-    let mut facts: Vec<(TaskFacts, bool)> = Vec::new();
-    for (idx, task) in tasks.iter().enumerate() {
-        let configured = sys.as_ref().filter(|_| !alone).and_then(|sys| sys.task(&task.spec.name));
-        let own_entry = task.inputs.task.as_ref().and_then(|t| t.entry.as_ref()).filter(|_| alone);
-        let entry = match (&args.entry, configured, own_entry) {
-            (Some(entry), _, _) if idx == 0 => entry.clone(),
-            (_, Some(config), _) => config.entry.clone(),
-            (_, _, Some(entry)) => entry.clone(),
-            _ => "main".to_owned(),
-        };
-        let options = Options {
-            predefined: task.inputs.predefined.clone(),
-            virtual_signals: args.virtual_io,
-            system_options: task.inputs.system_options.clone(),
-            ..Options::default()
-        };
-        // The task as SYS.cfg or the manifest configures it (also for a task run alone):
-        // where its entry routine is named.
-        let declared = tasks[0].inputs.sys.as_ref().and_then(|sys| sys.task(&task.spec.name));
-        let entry_given = idx == 0 && args.entry.is_some();
-        let mut program = match (load_with(&task.inputs.modules, &entry, &options), declared, config) {
-            (Ok(program), _, _) => program,
-            // Not started for want of its configured entry: `rapid check`'s finding, at
-            // the configuration (`--entry` replaces the first task's).
-            (Err(LoadError::NoEntry(_)), Some(declared), Some(config)) if !entry_given => {
-                return single::report_system_errors(&table, &[system::entry_finding(declared, config)]);
-            }
-            (Err(err), _, _) => {
-                if !alone {
-                    eprintln!("error: task {} cannot start:", task.spec.name);
-                }
-                return single::report_load_error(err, &task.inputs.modules);
-            }
-        };
-        print_program_memory_note(&program.warnings, &task.inputs.modules);
-        facts.push((program.analysis.as_deref().map(system::facts).unwrap_or_default(), entry_given));
-        // The checked program is not needed to run, and the process ends with the run:
-        // its memory goes back to the system then, without the time freeing it would take.
-        std::mem::forget(program.analysis.take());
-        let home = single::home(args, task.inputs.root.clone());
-        let syspar = task.inputs.syspar.clone();
-        rapid_controller::boot::task::configure(
-            &mut program,
-            home,
-            &task.inputs.modules,
-            syspar,
-            args.controller_state(),
-        );
-        loaded.push((task.spec.clone(), program));
-    }
-    // What `rapid check` finds about the system as a whole (persistents declared
-    // differently, missing event routines) keeps it from starting.
-    let programs: Vec<TaskProgram<'_>> = tasks
-        .iter()
-        .zip(&offsets)
-        .zip(&facts)
-        .map(|((task, &file_offset), (facts, entry_given))| TaskProgram {
-            name: &task.spec.name,
-            file_offset,
-            facts,
-            entry_given: *entry_given,
-        })
-        .collect();
-    let found = sys.as_ref().map(|sys| system::findings(sys, config, &programs)).unwrap_or_default();
-    if !found.is_empty() {
-        return single::report_system_errors(&table, &found);
-    }
-    let modules: Vec<SourceInput> = match args.virtual_io {
-        true => tasks.iter().flat_map(|t| t.inputs.modules.iter().cloned()).collect(),
-        false => Vec::new(),
-    };
-    let auto = args.controller_state().mode == rapid_vm::builtins::controller::OpMode::Auto;
-    let options = BootOptions {
-        alone,
-        robot: args.robot.as_deref(),
-        record: args.trace.is_some() || args.report.is_some(),
-        virtual_io: args.virtual_io.then_some(modules.as_slice()),
-        cycles: args.cycles,
-        max_steps: args.max_steps,
-        auto,
-    };
-    let mut cell = tasks[0].inputs.cell();
-    cell.start_joints = args.start_joints.or(cell.start_joints);
-    let booted = boot::boot(loaded, sys.as_ref(), cell, &options, &mut |io| read_stimulus(io, args, alone));
-    let Booted { mut controller, robots: numbers, model_note } = match booted {
-        Ok(booted) => booted,
-        Err(BootError::Refused(message)) => return refuse(&message),
-        Err(BootError::UnknownModel(message)) => {
-            eprintln!("error: {message}");
-            return Ok(ExitStatus::Error);
-        }
-        Err(BootError::Internal(message)) => return Err(anyhow::anyhow!("internal error: {message}")),
-    };
-    if let Some(ip) = args.controller_ip {
-        for task in &mut controller.tasks {
-            task.loaded.vm.resources_mut().sockets.add_controller_addr(ip);
-        }
-    }
+pub(crate) fn run(args: &RunArgs, assembled: Assembled) -> anyhow::Result<ExitStatus> {
+    let Assembled { mut controller, alone, robots: numbers, model_note, inputs: tasks, program_memory } = assembled;
+    print_program_memory_notes(&program_memory, &tasks);
     let mut host =
         StdoutHost { out: BufWriter::new(io::stdout().lock()), broken: false, answers: single::pendant_answers(args)? };
     // Power on and a start from main: every task's POWER_ON, then START event routines
-    // (each task has its routines: the system findings above).
+    // (each task has its routines: the assembly's system findings).
     if let Err(failure) = controller.power_on(&mut host) {
         host.flush();
         let routine = failure.routine.as_str();
         return match (&failure.unhandled, alone) {
-            (Some(unhandled), true) => {
-                report_event_routine_failure(&controller, &tasks[0].inputs.modules, routine, unhandled)
-            }
+            (Some(unhandled), true) => report_event_routine_failure(&controller, &tasks[0].modules, routine, unhandled),
             _ => refuse(&refusal(&controller, &failure)),
         };
     }
@@ -211,11 +55,11 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
         report_stuck(&controller, alone);
     }
     // A program alone is reported as it stops: what ended it, then its outputs.
-    let alone_status = alone.then(|| report_alone(&controller, &tasks[0].inputs.modules, bounded.as_ref(), args));
+    let alone_status = alone.then(|| report_alone(&controller, &tasks[0].modules, bounded.as_ref(), args));
     if alone {
         if let Some((_, routine)) = controller.failed_stop_routine.clone() {
             if let Some(TaskEnd::Failed(unhandled)) = controller.tasks[0].end() {
-                return report_event_routine_failure(&controller, &tasks[0].inputs.modules, &routine, unhandled);
+                return report_event_routine_failure(&controller, &tasks[0].modules, &routine, unhandled);
             }
         }
     }
@@ -270,18 +114,18 @@ pub(crate) fn run(args: &RunArgs, first: Inputs) -> anyhow::Result<ExitStatus> {
     Ok(status)
 }
 
-/// What ended a program run alone, said as the program's (no task named): a bound,
-/// its unhandled error, ExitCycle in cycle mode. Its exit status.
-/// The program-memory note (W0706) `rapid check` gives, on stderr before the run: a
+/// The program-memory notes (W0706) `rapid check` gives, on stderr before the run: a
 /// real controller may refuse such a program, so the run says so too (the program still
 /// runs; other warnings are `rapid check`'s business).
-fn print_program_memory_note(warnings: &[rapid_sema::Diagnostic], files: &[SourceInput]) {
-    for note in warnings.iter().filter(|d| d.code == rapid_sema::Code::ProgramMemoryFull) {
-        let (path, line, column) = single::location(files, note.file, note.span.start);
+fn print_program_memory_notes(notes: &[(usize, rapid_sema::Diagnostic)], tasks: &[Inputs]) {
+    for (task, note) in notes {
+        let (path, line, column) = single::location(&tasks[*task].modules, note.file, note.span.start);
         eprintln!("warning[{}]: {path}:{line}:{column}: {}", note.code.as_str(), note.message);
     }
 }
 
+/// What ended a program run alone, said as the program's (no task named): a bound,
+/// its unhandled error, ExitCycle in cycle mode. Its exit status.
 fn report_alone(controller: &Controller, files: &[SourceInput], bound: Option<&Bound>, args: &RunArgs) -> ExitStatus {
     match bound {
         Some(Bound::Steps(max)) => {
@@ -383,35 +227,9 @@ fn report_event_routine_failure(
     Ok(ExitStatus::Failure)
 }
 
-fn refuse(message: &str) -> anyhow::Result<ExitStatus> {
-    eprintln!("error: {message}");
-    eprintln!("the system has errors; it was not run");
-    Ok(ExitStatus::Failure)
-}
-
-/// A stimulus's input orders, reactions and pendant answers (`rapid_vm::builtins::io`).
-type Stimulus = (Vec<(f64, u32, f64)>, Vec<rapid_vm::builtins::io::Reaction>, Vec<(f64, String)>);
-
-/// `--stimulus`, read against the system's I/O system `io`.
-fn read_stimulus(io: Option<&rapid_io::IoSystem>, args: &RunArgs, alone: bool) -> Result<Option<Stimulus>, String> {
-    let Some(path) = &args.stimulus else { return Ok(None) };
-    let shown = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read the stimulus `{shown}`: {e}"))?;
-    let Some(system) = io else {
-        return Err(if alone {
-            format!(
-                "`{shown}`: a stimulus needs an I/O configuration (a backup with SYSPAR/EIO.cfg, or a manifest with `io`)"
-            )
-        } else {
-            format!("`{shown}`: a stimulus needs an I/O configuration (the system has none: SYSPAR/EIO.cfg in a backup, `io` in a manifest)")
-        });
-    };
-    crate::stimulus::parse(&shown, &text, system).map(Some)
-}
-
 /// Prints what ended the run badly: a bound, each task's unhandled error, a static
 /// task's stop that stopped the system. Success when none.
-fn report(controller: &Controller, tasks: &[LoadedTask], bound: Option<Bound>) -> ExitStatus {
+fn report(controller: &Controller, tasks: &[Inputs], bound: Option<Bound>) -> ExitStatus {
     let mut status = ExitStatus::Success;
     match bound {
         Some(Bound::Steps(max)) => {
@@ -441,7 +259,7 @@ fn report(controller: &Controller, tasks: &[LoadedTask], bound: Option<Bound>) -
     }
     for (task, input) in controller.tasks.iter().zip(tasks) {
         let Some(TaskEnd::Failed(unhandled)) = task.end() else { continue };
-        let modules = &input.inputs.modules;
+        let modules = &input.modules;
         let loaded_module = task.loaded.vm.program_source(unhandled.file);
         let (path, line, column) = match modules.get(unhandled.file).or(loaded_module) {
             Some(source) => single::location(std::slice::from_ref(source), 0, unhandled.span.start),
@@ -486,7 +304,7 @@ fn note_exit_cycles(controller: &Controller) {
 /// motion task's; `robot_names` are the tasks' robots (`ROB_n`), by task.
 fn write_motion_outputs(
     controller: &mut Controller,
-    tasks: &[LoadedTask],
+    tasks: &[Inputs],
     robot_names: &[Option<String>],
     cycle: f64,
     args: &RunArgs,
@@ -504,7 +322,7 @@ fn write_motion_outputs(
         let arm = controller.tasks[at].spec.robot;
         let robot = std::mem::take(&mut controller.tasks[at].loaded.vm.resources_mut().robot);
         let vm = &controller.tasks[at].loaded.vm;
-        let files: &[SourceInput] = tasks.get(at).map_or(&[], |t| &t.inputs.modules);
+        let files: &[SourceInput] = tasks.get(at).map_or(&[], |t| &t.modules);
         let sources = |file: usize| files.get(file).or_else(|| vm.program_source(file));
         let outputs = crate::motion_out::RunOutputs {
             robot: &robot,
@@ -527,7 +345,7 @@ fn write_motion_outputs(
 }
 
 /// The logs and saves asked for, after the run.
-fn finish(controller: &Controller, tasks: &[LoadedTask], args: &RunArgs, alone: bool) -> anyhow::Result<()> {
+fn finish(controller: &Controller, tasks: &[Inputs], args: &RunArgs, alone: bool) -> anyhow::Result<()> {
     if args.event_log {
         for task in &controller.tasks {
             for event in task.loaded.vm.event_log() {
@@ -544,7 +362,7 @@ fn finish(controller: &Controller, tasks: &[LoadedTask], args: &RunArgs, alone: 
     if args.save_pers {
         let mut written = std::collections::HashSet::new();
         for (task, input) in controller.tasks.iter().zip(tasks) {
-            let modules: &[SourceInput] = &input.inputs.modules;
+            let modules: &[SourceInput] = &input.modules;
             let result = crate::save::save_persistents(&task.loaded, modules, &mut written);
             if saved.is_ok() {
                 saved = result;
@@ -560,7 +378,7 @@ fn finish(controller: &Controller, tasks: &[LoadedTask], args: &RunArgs, alone: 
                 // A program alone is the controller's main task.
                 task: if alone { crate::elog::MAIN_TASK } else { &task.spec.name },
                 vm: &task.loaded.vm,
-                files: &input.inputs.modules,
+                files: &input.modules,
             })
             .collect();
         crate::elog::write(path, &events)

@@ -1,22 +1,23 @@
 //! `rapid serve`: boots a system and serves Robot Web Services (RWS 1.0, RobotWare 6)
 //! for it until Ctrl-C, which saves the persistents as `--save-pers` would and exits 0.
-//! The HTTP side is `rapid_serve`; this module only reads the command line, boots
-//! the system (on the controller thread: a session is not `Send`) and binds.
+//! The HTTP side is `rapid_serve`; this module only reads the command line, has the
+//! controller assemble the system (on the controller thread: a session is not `Send`)
+//! and binds.
 
 // The CLI reports to the terminal.
 #![allow(clippy::print_stderr)]
 
 use std::net::SocketAddr;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
 use rapid_controller::api::{ClockPolicy, Session};
-use rapid_controller::{boot, Controller, TaskSpec};
-use rapid_sema::{Options, SourceInput};
+use rapid_controller::assembly::{self, LoadOptions};
+use rapid_controller::Controller;
+use rapid_sema::SourceInput;
 
 use super::ExitStatus;
 use crate::args::ServeArgs;
-use crate::inputs;
 
 /// The port RobotWare serves on, and where to go when it is not ours to take.
 const DEFAULT_BIND: &str = "127.0.0.1:80";
@@ -129,89 +130,19 @@ fn pers_literals(loaded: &rapid_vm::Loaded) -> Vec<Option<String>> {
 }
 
 /// The system of PATH (modules, a folder, a .pgf, a backup or a manifest; one task or
-/// several) booted by `rapid_controller::boot` as `rapid run` boots it, but standing
-/// stopped for the clients to start: the tasks' checked programs are kept (record
-/// components of data are read and written through them).
+/// several) assembled by `rapid_controller::assembly` as `rapid run` assembles it, but
+/// operated: standing stopped for the clients to start, the tasks' checked programs
+/// kept (record components of data are read and written through them), continuous.
 // Not configured as `rapid run` does: a stimulus, --virtual-io, --robot; the POWER_ON
 // and START event routines do not run (the program is started by a client).
 fn assemble(paths: &[PathBuf], start_joints: Option<[f64; 6]>) -> Result<(Controller, Vec<TaskFiles>), String> {
-    assemble_with(paths, start_joints, &mut |_| Ok(None), 0)
-}
-
-/// [`assemble`] with a stimulus read against the system's I/O and the cycles each
-/// NORMAL task runs (0: continuous; `rapid dap` debugs one cycle, as `rapid run` runs).
-pub(super) fn assemble_with(
-    paths: &[PathBuf],
-    start_joints: Option<[f64; 6]>,
-    stimulus: &mut boot::system::ReadStimulus<'_>,
-    cycles: u64,
-) -> Result<(Controller, Vec<TaskFiles>), String> {
-    let first = inputs::collect(paths).map_err(|e| format!("{e:#}"))?;
-    config_errors(&first)?;
-    let name = first.task.as_ref().map_or("T_ROB1", |t| t.name.as_str()).to_owned();
-    let entry = first.task.as_ref().and_then(|t| t.entry.clone());
-    // Served, the program is operated by the controller: never "alone".
-    let sys = boot::system::system_of(first.sys.as_ref(), false, &name, entry.as_deref())
-        .ok_or_else(|| "no task to serve".to_owned())?;
-    let specs = boot::system::task_specs(&sys)?;
-    let mut first = Some(first);
-    let mut collected = Vec::new();
-    for spec in specs {
-        let inputs = match first.take().filter(|f| f.task.as_ref().is_none_or(|t| t.name == spec.name)) {
-            Some(inputs) => inputs,
-            None => inputs::collect_task(paths, Some(&spec.name)).map_err(|e| format!("{e:#}"))?,
-        };
-        config_errors(&inputs)?;
-        let spec = TaskSpec { shared_files: inputs.shared_modules.clone(), ..spec };
-        collected.push((spec, inputs));
-    }
-    let mut loaded = Vec::new();
-    for (spec, inputs) in &collected {
-        let entry = sys.task(&spec.name).map_or_else(|| "main".to_owned(), |t| t.entry.clone());
-        let options = Options {
-            predefined: inputs.predefined.clone(),
-            system_options: inputs.system_options.clone(),
-            ..Options::default()
-        };
-        let mut program = rapid_vm::load_with(&inputs.modules, &entry, &options)
-            .map_err(|e| format!("task {} cannot start: {e:?} (`rapid check` shows why)", spec.name))?;
-        let home = inputs.root.clone().unwrap_or_else(|| default_home(paths));
-        let state =
-            rapid_vm::builtins::controller::ControllerState::new(rapid_vm::builtins::controller::OpMode::Auto, 100.0);
-        boot::task::configure(&mut program, home, &inputs.modules, inputs.syspar.clone(), state);
-        program.vm.resources_mut().sockets.set_cooperative(true);
-        loaded.push((spec.clone(), program));
-    }
-    let options = boot::system::BootOptions { alone: false, cycles, auto: true, ..Default::default() };
-    let mut cell = collected[0].1.cell();
-    cell.start_joints = start_joints.or(cell.start_joints);
-    let booted = boot::system::boot(loaded, Some(&sys), cell, &options, stimulus);
-    let booted = booted.map_err(|e| match e {
-        boot::system::BootError::Refused(m)
-        | boot::system::BootError::UnknownModel(m)
-        | boot::system::BootError::Internal(m) => m,
-    })?;
-    let at_boot = booted.controller.tasks.iter().map(|t| pers_literals(&t.loaded));
-    let files =
-        collected.into_iter().zip(at_boot).map(|((spec, inputs), pers)| (spec.name, inputs.modules, pers)).collect();
-    Ok((booted.controller, files))
-}
-
-/// The inputs' configuration errors, as one message.
-fn config_errors(inputs: &inputs::Inputs) -> Result<(), String> {
-    match inputs.diagnostics.iter().find(|d| d.severity() == rapid_sema::Severity::Error) {
-        Some(d) => Err(format!("the system has errors (`rapid check` shows them all): {}", d.message)),
-        None => Ok(()),
-    }
-}
-
-/// `rapid-controller` beside the first PATH, as `rapid run` defaults it.
-fn default_home(paths: &[PathBuf]) -> PathBuf {
-    let first = paths.first().map_or(Path::new("."), |p| p.as_path());
-    match first.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.join("rapid-controller"),
-        _ => PathBuf::from("rapid-controller"),
-    }
+    let options = LoadOptions { operated: true, cycles: 0, start_joints, ..LoadOptions::default() };
+    let assembled = assembly::assemble(paths, &options).outcome.map_err(|e| e.message())?;
+    let at_boot = assembled.controller.tasks.iter().map(|t| pers_literals(&t.loaded));
+    let names = assembled.controller.tasks.iter().map(|t| t.spec.name.clone());
+    let files = names.zip(assembled.inputs).zip(at_boot).map(|((name, inputs), pers)| (name, inputs.modules, pers));
+    let files = files.collect();
+    Ok((assembled.controller, files))
 }
 
 /// Ctrl-C: every task's persistents that changed since boot written back into their

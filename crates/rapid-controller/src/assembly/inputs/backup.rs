@@ -34,12 +34,12 @@ use rapid_config::sys::Sys;
 
 /// The task the backup's program is read from.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub(crate) struct TaskFolder {
+pub struct TaskFolder {
     /// The task's name (`T_ROB1`), or the folder's when no configuration names it.
-    pub(crate) name: String,
-    pub(crate) folder: PathBuf,
+    pub name: String,
+    pub folder: PathBuf,
     /// The routine the task starts in (`-Entry` in SYS.cfg), when SYS.cfg has the task.
-    pub(crate) entry: Option<String>,
+    pub entry: Option<String>,
 }
 
 /// A child of `dir` named `name` in any letter case.
@@ -253,7 +253,7 @@ fn parse_backinfo_task(line: &str) -> Option<(u32, String)> {
 /// it, in its order (the controller saved exactly these; another file in the folder is
 /// not part of the task), else every module file, `SYSMOD` then `PROGMOD`, each sorted
 /// by name. A listed module the folder lacks is an error.
-pub(crate) fn task_modules(backup: &Path, task: &Path) -> anyhow::Result<Vec<PathBuf>> {
+pub(crate) fn task_modules(backup: &Path, task: &Path) -> Result<Vec<PathBuf>, super::InputError> {
     let number = task.file_name().and_then(|n| n.to_str()).and_then(task_number);
     let Some(listed) = number.and_then(|n| backinfo_modules(backup, n)) else { return Ok(folder_modules(task)) };
     listed
@@ -261,11 +261,11 @@ pub(crate) fn task_modules(backup: &Path, task: &Path) -> anyhow::Result<Vec<Pat
         .map(|entry| {
             let found = entry.split(['\\', '/']).try_fold(task.to_path_buf(), |dir, part| child(&dir, part));
             found.filter(|p| p.is_file()).ok_or_else(|| {
-                anyhow::anyhow!(
+                super::InputError::new(format!(
                     "backup `{}`: backinfo.txt lists module `{entry}` for `{}`, which the folder does not hold",
                     backup.display(),
                     task.display()
-                )
+                ))
             })
         })
         .collect()

@@ -4,7 +4,7 @@
 
 use std::ops::Range;
 
-use rapid_controller::boot::cell::{TaskConveyor, TaskUnit, RAMP_TIME};
+use crate::boot::cell::{TaskConveyor, TaskUnit, RAMP_TIME};
 use rapid_motion::external::{ExternalAxis, ExternalUnit};
 use serde::Deserialize;
 use toml::Spanned;

@@ -1,13 +1,13 @@
 //! System outputs (`SYSSIG_OUT`) that name what the assembled system lacks: a task
 //! (`-Arg2`) that is not one of its tasks, or a mechanical unit (`-Arg1`) that is no
 //! robot a task moves. `rapid run` refuses to start such a system
-//! (`rapid_controller::ops`); these findings let `rapid check` report the same, at the
+//! (`crate::ops`); these findings let `rapid check` report the same, at the
 //! output's line, before anything runs.
 
+use crate::boot::cell::TaskUnit;
+use crate::boot::robots;
 use rapid_config::eio::syssig::{status_name, SysStatus};
 use rapid_config::{eio, sys, CfgFile};
-use rapid_controller::boot::cell::TaskUnit;
-use rapid_controller::boot::robots;
 
 /// The (line, message) of each such output of the EIO configuration in `syspar`. The
 /// tasks are `sys`'s (or the one task `task` when it configures none); the robots are

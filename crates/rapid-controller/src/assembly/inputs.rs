@@ -9,8 +9,9 @@
 //! entry is.
 
 mod backup;
+mod error;
 mod glob;
-mod manifest;
+pub mod manifest;
 mod manifest_units;
 mod options;
 mod program_file;
@@ -20,78 +21,79 @@ use std::fs;
 use std::io;
 use std::path::{Path, PathBuf};
 
-use anyhow::{bail, Context};
 use rapid_config::{eio, sys, CfgError, CfgFile};
 use rapid_sema::{Code, Diagnostic, PredefinedData, SourceInput};
 use rapid_syntax::Span;
 use rustc_hash::FxHashSet;
 
-pub(crate) use self::backup::TaskFolder;
+pub use self::backup::TaskFolder;
+pub use self::error::InputError;
+use self::error::{bail, Context};
 use self::program_file::{Entry, ProgramFile};
-pub(crate) use rapid_controller::boot::cell::{TaskConveyor, TaskUnit};
-pub(crate) use rapid_controller::boot::moc_units::read as read_moc_units;
+use crate::boot::cell::{TaskConveyor, TaskUnit};
+use crate::boot::moc_units::read as read_moc_units;
 
 /// Extensions of RAPID module files, compared without regard to case.
-pub(crate) const MODULE_EXTENSIONS: &[&str] = &["mod", "modx", "sys", "sysx", "prg"];
+pub const MODULE_EXTENSIONS: &[&str] = &["mod", "modx", "sys", "sysx", "prg"];
 
 /// The files of one task.
 #[derive(Debug, Default)]
-pub(crate) struct Inputs {
+pub struct Inputs {
     /// The module files, in the order `check` receives them.
-    pub(crate) modules: Vec<SourceInput>,
+    pub modules: Vec<SourceInput>,
     /// Program files that list modules. They are not given to `check`; they are kept so
     /// that a diagnostic about one of their entries can show the entry.
-    pub(crate) programs: Vec<SourceInput>,
+    pub programs: Vec<SourceInput>,
     /// A backup's configuration files (`SYSPAR/*.cfg`), kept for their diagnostics.
-    pub(crate) configs: Vec<SourceInput>,
+    pub configs: Vec<SourceInput>,
     /// The parsed configuration files with their domains (`EIO`), for ReadCfgData.
-    pub(crate) syspar: Vec<(String, CfgFile)>,
+    pub syspar: Vec<(String, CfgFile)>,
     /// The data the configuration declares: the signals of `EIO.cfg`.
-    pub(crate) predefined: Vec<PredefinedData>,
+    pub predefined: Vec<PredefinedData>,
     /// The task read from a backup, when a PATH was one.
-    pub(crate) task: Option<TaskFolder>,
+    pub task: Option<TaskFolder>,
     /// The backup's task configuration (SYS.cfg), or the manifest's tasks.
-    pub(crate) sys: Option<sys::Sys>,
+    pub sys: Option<sys::Sys>,
     /// The file of [`Inputs::table`] that `sys` was read from (SYS.cfg or the manifest):
     /// the spans of `sys` are in its text.
-    pub(crate) sys_file: Option<usize>,
+    pub sys_file: Option<usize>,
     /// The controller root of a backup (the backup folder) or a manifest (the folder
     /// holding its HOME folder): the file devices are its subfolders.
-    pub(crate) root: Option<PathBuf>,
+    pub root: Option<PathBuf>,
     /// The robot model a manifest names (`[system] robot`).
-    pub(crate) robot: Option<String>,
+    pub robot: Option<String>,
     /// A manifest's robot base frames by motion task (mm, quaternion).
-    pub(crate) robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
+    pub robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
     /// A manifest's robot models by motion task; `None`: the task moves no robot.
-    pub(crate) task_robots: Vec<(String, Option<String>)>,
+    pub task_robots: Vec<(String, Option<String>)>,
     /// A manifest's `[system] start_joints`: where the robots stand at the start.
-    pub(crate) start_joints: Option<[f64; 6]>,
+    pub start_joints: Option<[f64; 6]>,
     /// The external units a manifest configures (`[[unit]]`), with their tasks.
-    pub(crate) units: Vec<TaskUnit>,
+    pub units: Vec<TaskUnit>,
     /// The conveyors a manifest configures (`[[conveyor]]`), with their tasks.
-    pub(crate) conveyors: Vec<TaskConveyor>,
+    pub conveyors: Vec<TaskConveyor>,
     /// Which of `modules` are installed shared (one instance for every task).
-    pub(crate) shared_modules: Vec<usize>,
+    pub shared_modules: Vec<usize>,
     /// The software options the system has (system.xml, backinfo.txt, a manifest's
     /// `options`); `None` when nothing says (`rapid_sema::Options::system_options`).
-    pub(crate) system_options: Option<Vec<String>>,
+    pub system_options: Option<Vec<String>>,
     /// Diagnostics found while reading the inputs. Their `file` indexes [`Inputs::table`].
-    pub(crate) diagnostics: Vec<Diagnostic>,
+    pub diagnostics: Vec<Diagnostic>,
     /// For each file of [`Inputs::table`], its place in the order the files were found,
     /// so output follows the command line even though modules come first in the table.
-    pub(crate) rank: Vec<usize>,
+    pub rank: Vec<usize>,
     /// What the user should know about how the inputs were read (a backup's module
     /// left out): printed to stderr as notes.
-    pub(crate) notes: Vec<String>,
+    pub notes: Vec<String>,
     /// The other task folders of a backup that no SYS.cfg configures, by task name:
     /// `rapid check` checks each as a task of its own.
-    pub(crate) unconfigured_tasks: Vec<String>,
+    pub unconfigured_tasks: Vec<String>,
 }
 
 impl Inputs {
-    /// What sets the system's robots up (`rapid_controller::boot`).
-    pub(crate) fn cell(&self) -> rapid_controller::boot::cell::Cell<'_> {
-        rapid_controller::boot::cell::Cell {
+    /// What sets the system's robots up (`crate::boot`).
+    pub fn cell(&self) -> crate::boot::cell::Cell<'_> {
+        crate::boot::cell::Cell {
             syspar: &self.syspar,
             robot: self.robot.as_deref(),
             robot_bases: &self.robot_bases,
@@ -104,7 +106,7 @@ impl Inputs {
 
     /// Every file, modules first, then program files, then configuration files: the
     /// table diagnostics index.
-    pub(crate) fn table(&self) -> Vec<&SourceInput> {
+    pub fn table(&self) -> Vec<&SourceInput> {
         self.modules.iter().chain(&self.programs).chain(&self.configs).collect()
     }
 
@@ -112,7 +114,7 @@ impl Inputs {
     /// the same backup, whose configuration is the same files in the same order) does
     /// not have: those about this task alone (a module of HOME it loads), numbered
     /// as files of `first`'s table.
-    pub(crate) fn task_config_findings(&self, first: &Inputs) -> Vec<Diagnostic> {
+    pub fn task_config_findings(&self, first: &Inputs) -> Vec<Diagnostic> {
         self.config_findings(first)
             .filter(|d| {
                 !first.diagnostics.iter().any(|f| f.file == d.file && f.span == d.span && f.message == d.message)
@@ -123,7 +125,7 @@ impl Inputs {
     /// Every finding in the configuration files of this task's inputs (those of
     /// `first`'s too, where `first`, another task of the same backup or `self`, has
     /// them), numbered as files of `first`'s table.
-    pub(crate) fn config_findings<'a>(&'a self, first: &Inputs) -> impl Iterator<Item = Diagnostic> + 'a {
+    pub fn config_findings<'a>(&'a self, first: &Inputs) -> impl Iterator<Item = Diagnostic> + 'a {
         let own_configs = self.modules.len() + self.programs.len();
         let first_configs = first.modules.len() + first.programs.len();
         self.diagnostics
@@ -134,12 +136,12 @@ impl Inputs {
 }
 
 /// Reads every PATH. Fails, with a message naming the PATH, when one cannot be used.
-pub(crate) fn collect(paths: &[PathBuf]) -> anyhow::Result<Inputs> {
+pub fn collect(paths: &[PathBuf]) -> Result<Inputs, InputError> {
     collect_task(paths, None)
 }
 
 /// [`collect`], reading task `task` of a backup (T_ROB1 when none is named).
-pub(crate) fn collect_task(paths: &[PathBuf], task: Option<&str>) -> anyhow::Result<Inputs> {
+pub fn collect_task(paths: &[PathBuf], task: Option<&str>) -> Result<Inputs, InputError> {
     let mut collector = Collector { wanted_task: task.map(str::to_owned), ..Collector::default() };
     for path in paths {
         collector.add_path(path)?;
@@ -208,7 +210,7 @@ struct Collector {
 }
 
 impl Collector {
-    fn add_path(&mut self, path: &Path) -> anyhow::Result<()> {
+    fn add_path(&mut self, path: &Path) -> Result<(), InputError> {
         let shown = path.display();
         let meta = fs::metadata(path).with_context(|| format!("cannot read `{shown}`"))?;
         if let Some(file) = manifest::manifest_path(path) {
@@ -231,7 +233,7 @@ impl Collector {
     }
 
     /// Adds the module files of a folder (not of its subfolders), sorted by name.
-    fn add_folder(&mut self, folder: &Path) -> anyhow::Result<()> {
+    fn add_folder(&mut self, folder: &Path) -> Result<(), InputError> {
         let shown = folder.display();
         let mut files = Vec::new();
         for entry in fs::read_dir(folder).with_context(|| format!("cannot read folder `{shown}`"))? {
@@ -261,7 +263,7 @@ impl Collector {
 
     /// Adds a backup (or another system layout, `backup.rs`): its configuration, then
     /// the modules of its T_ROB1 task, from its task folder and from HOME.
-    fn add_backup(&mut self, folder: &Path, tasks: &[(u32, PathBuf)]) -> anyhow::Result<()> {
+    fn add_backup(&mut self, folder: &Path, tasks: &[(u32, PathBuf)]) -> Result<(), InputError> {
         let mut sys = None;
         for path in backup::config_files(folder) {
             if let (_, Some(view)) = self.add_config(&path)? {
@@ -297,7 +299,7 @@ impl Collector {
         if let Some(sys) = &sys {
             self.add_home_modules(home.as_deref(), sys, &task.name, &modules);
             // The controller refuses a configuration that gives one robot two tasks.
-            if let Err(found) = rapid_controller::boot::robots::numbers(sys, &self.syspar, &[]) {
+            if let Err(found) = crate::boot::robots::numbers(sys, &self.syspar, &[]) {
                 self.config_finding(found.domain, found.line, found.message);
             }
         }
@@ -459,7 +461,7 @@ impl Collector {
 
     /// Reads one configuration file: its findings, its signals (EIO) or its tasks
     /// (SYS, returned). Returns the file's domain too.
-    fn add_config(&mut self, path: &Path) -> anyhow::Result<(String, Option<sys::Sys>)> {
+    fn add_config(&mut self, path: &Path) -> Result<(String, Option<sys::Sys>), InputError> {
         let shown = path.display();
         let bytes = fs::read(path).with_context(|| format!("cannot read `{shown}`"))?;
         let config_idx = self.configs.len();
@@ -516,7 +518,7 @@ impl Collector {
 
     /// Adds a project manifest: its findings, its I/O configuration, then the modules
     /// of the task asked for (the first task when none is named).
-    fn add_manifest(&mut self, path: &Path) -> anyhow::Result<()> {
+    fn add_manifest(&mut self, path: &Path) -> Result<(), InputError> {
         let shown = path.display();
         let bytes = fs::read(path).with_context(|| format!("cannot read `{shown}`"))?;
         let config_idx = self.configs.len();
@@ -646,7 +648,7 @@ impl Collector {
     }
 
     /// Adds a `.pgf`: either the modules it lists, or the module it holds itself.
-    fn add_program(&mut self, path: &Path) -> anyhow::Result<()> {
+    fn add_program(&mut self, path: &Path) -> Result<(), InputError> {
         if !self.first_sight(path) {
             return Ok(());
         }

@@ -26,7 +26,7 @@ use rapid_vm::builtins::io::Reaction;
 
 /// A stimulus: timed input changes (time, signal id, value) in time order, reactions,
 /// and timed operator answers (time, text) in time order.
-pub(crate) type Stimulus = (Vec<(f64, u32, f64)>, Vec<Reaction>, Vec<(f64, String)>);
+pub type Stimulus = (Vec<(f64, u32, f64)>, Vec<Reaction>, Vec<(f64, String)>);
 
 /// The pendant dialogs an `answer` line may name.
 const DIALOGS: &[&str] = &[
@@ -44,7 +44,7 @@ const DIALOGS: &[&str] = &[
 ];
 
 /// The stimulus of `text` (from file `path`).
-pub(crate) fn parse(path: &str, text: &str, io: &IoSystem) -> Result<Stimulus, String> {
+pub fn parse(path: &str, text: &str, io: &IoSystem) -> Result<Stimulus, String> {
     let (mut orders, mut reactions, mut answers) = (Vec::new(), Vec::new(), Vec::new());
     for (n, line) in text.lines().enumerate() {
         let line = line.split('#').next().unwrap_or("").trim();
@@ -115,7 +115,7 @@ fn parse_reaction(line: &str, io: &IoSystem) -> Result<Reaction, String> {
         _ => return Err(format!("expected `when SIGNAL = VALUE [after SECONDS] set SIGNAL VALUE`, found `{line}`")),
     };
     let watch_id = io.id(watch).ok_or_else(|| format!("no signal `{watch}` in the I/O configuration"))?;
-    let value: f64 = value.parse().map_err(|_| format!("`{value}` is not a number"))?;
+    let value = number(value)?;
     let delay = delay.map_or(Ok(0.0), |d| seconds(d))?;
     let (target, set) = input(io, target, set)?;
     Ok(Reaction { watch: watch_id, value, delay, target, set })
@@ -126,8 +126,9 @@ fn without_units(line: &str) -> Vec<&str> {
     let words: Vec<&str> = line.split_whitespace().collect();
     let mut out = Vec::with_capacity(words.len());
     for (i, word) in words.iter().enumerate() {
+        // Two words back: `at`/`after`, then the time (a line may start with a number).
         let after_time =
-            i > 0 && words[i - 1].parse::<f64>().is_ok() && matches!(words.get(i - 2), Some(&"at" | &"after"));
+            i >= 2 && words[i - 1].parse::<f64>().is_ok() && matches!(words.get(i - 2), Some(&"at" | &"after"));
         if *word == "s" && after_time {
             continue;
         }
@@ -144,6 +145,13 @@ fn seconds(text: &str) -> Result<f64, String> {
     Ok(time)
 }
 
+/// A finite number. Rust reads `inf` and `NaN` as numbers too; no signal takes them,
+/// and a reaction waiting for NaN would never fire, so they are refused as text that is
+/// not a number (fuzz finding, `stimulus` target).
+fn number(text: &str) -> Result<f64, String> {
+    text.parse::<f64>().ok().filter(|v| v.is_finite()).ok_or_else(|| format!("`{text}` is not a number"))
+}
+
 /// An input of the configuration, or an output every client may write (`-Access
 /// "All"`: a remote client such as an RWS application sets it), and a value it can take.
 fn input(io: &IoSystem, name: &str, value: &str) -> Result<(u32, f64), String> {
@@ -155,7 +163,7 @@ fn input(io: &IoSystem, name: &str, value: &str) -> Result<(u32, f64), String> {
             "`{name}` is an output; a stimulus sets inputs, and outputs every client may write (-Access \"All\")"
         ));
     }
-    let value: f64 = value.parse().map_err(|_| format!("`{value}` is not a number"))?;
+    let value = number(value)?;
     if kind == SignalKind::DI && value != 0.0 && value != 1.0 {
         return Err(format!("digital input `{name}` takes 0 or 1, not {value}"));
     }
@@ -218,6 +226,30 @@ mod tests {
         ];
         for (text, message) in cases {
             assert_eq!(super::parse("s.txt", text, &io), Err(message.to_string()));
+        }
+    }
+
+    #[test]
+    fn a_line_starting_with_a_time_and_its_unit_is_refused_not_a_panic() {
+        // Fuzz finding (`stimulus` target): a number then `s` as the first two words
+        // looked two words back from the second, before the line's start.
+        let expected = "s.txt:1: expected `at SECONDS set SIGNAL VALUE`, `at SECONDS connect|disconnect DEVICE` \
+                        or `when …`, found `3 s set di1 1`";
+        assert_eq!(super::parse("s.txt", "3 s set di1 1\n", &io()), Err(expected.to_string()));
+    }
+
+    #[test]
+    fn values_that_are_no_finite_number_are_refused() {
+        // Fuzz finding (`stimulus` target): `inf` and `NaN` parse as f64.
+        let io = io();
+        let cases = [
+            ("at 1 set doOpen inf", "s.txt:1: `inf` is not a number"),
+            ("at 1 set doOpen -infinity", "s.txt:1: `-infinity` is not a number"),
+            ("when do1 = NaN set di1 1", "s.txt:1: `NaN` is not a number"),
+            ("when do1 = 1 set doOpen nan", "s.txt:1: `nan` is not a number"),
+        ];
+        for (text, message) in cases {
+            assert_eq!(super::parse("s.txt", text, &io), Err(message.to_string()), "{text}");
         }
     }
 

@@ -12,15 +12,15 @@
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
+use crate::TrustLevel;
 use rapid_config::sys::{Rmq, RmqType, Sys, Task, TaskType};
-use rapid_controller::TrustLevel;
 use serde::Deserialize;
 use toml::Spanned;
 
 use super::glob;
 
 /// The file name that makes a folder a project.
-pub(crate) const FILE_NAME: &str = "rapid.toml";
+pub const FILE_NAME: &str = "rapid.toml";
 
 /// At most 20 tasks (RAPID overview §1.20, multitasking).
 const MAX_TASKS: usize = rapid_limits::TASKS;
@@ -34,7 +34,7 @@ const RMQ_MAX_MSG_SIZE: i64 = 3000;
 const RMQ_MAX_NO_OF_MSG: i64 = 10;
 
 /// The manifest a PATH names: a `.toml` file, or a folder holding `rapid.toml`.
-pub(crate) fn manifest_path(path: &Path) -> Option<PathBuf> {
+pub fn manifest_path(path: &Path) -> Option<PathBuf> {
     if path.is_dir() {
         let file = path.join(FILE_NAME);
         return file.is_file().then_some(file);
@@ -45,44 +45,44 @@ pub(crate) fn manifest_path(path: &Path) -> Option<PathBuf> {
 
 /// A problem in the manifest: where (byte offsets into its text) and what.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub(crate) struct Finding {
-    pub(crate) span: Range<usize>,
-    pub(crate) message: String,
+pub struct Finding {
+    pub span: Range<usize>,
+    pub message: String,
 }
 
 /// What a manifest describes.
 #[derive(Debug, Default)]
-pub(crate) struct Manifest {
+pub struct Manifest {
     /// The tasks with their attributes, as SYS.cfg's CAB_TASKS would give them.
-    pub(crate) sys: Sys,
+    pub sys: Sys,
     /// For each task of [`Manifest::sys`], its module files in load order.
-    pub(crate) modules: Vec<Vec<PathBuf>>,
+    pub modules: Vec<Vec<PathBuf>>,
     /// `[system] shared`: modules installed shared (SYS.cfg `CAB_TASK_MODULES -Shared`),
     /// one instance every task sees.
-    pub(crate) shared: Vec<PathBuf>,
+    pub shared: Vec<PathBuf>,
     /// The EIO.cfg-format file of the I/O configuration, and where the manifest names it.
-    pub(crate) io: Option<(PathBuf, Range<usize>)>,
+    pub io: Option<(PathBuf, Range<usize>)>,
     /// The controller root: the folder whose `HOME` subfolder is the HOME: device.
-    pub(crate) root: PathBuf,
+    pub root: PathBuf,
     /// `[system] name`, and `robot`: the model the motion tasks move (`motion_out.rs`).
-    pub(crate) name: Option<String>,
-    pub(crate) robot: Option<String>,
+    pub name: Option<String>,
+    pub robot: Option<String>,
     /// `[system] options`: the software options the system has (`rapid check` knows
     /// their names); `None` when not given.
-    pub(crate) options: Option<Vec<String>>,
+    pub options: Option<Vec<String>>,
     /// `[[unit]]`: external mechanical units and the tasks they belong to.
-    pub(crate) units: Vec<super::TaskUnit>,
+    pub units: Vec<super::TaskUnit>,
     /// `[[conveyor]]`: conveyors for conveyor tracking and the tasks they belong to.
-    pub(crate) conveyors: Vec<super::TaskConveyor>,
+    pub conveyors: Vec<super::TaskConveyor>,
     /// A motion task's `base` and `orientation`: where its robot stands in the world (mm,
     /// a unit quaternion), by task name.
-    pub(crate) robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
+    pub robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
     /// A motion task's own `robot`: its model's name, or `None` for a task that moves
     /// external units only (a positioner's), by task name.
-    pub(crate) task_robots: Vec<(String, Option<String>)>,
+    pub task_robots: Vec<(String, Option<String>)>,
     /// `[system] start_joints`: the axis values (degrees) the robots start at.
-    pub(crate) start_joints: Option<[f64; 6]>,
-    pub(crate) findings: Vec<Finding>,
+    pub start_joints: Option<[f64; 6]>,
+    pub findings: Vec<Finding>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -144,7 +144,7 @@ struct RawRmq {
 }
 
 /// Reads the manifest `text` of the file at `path`.
-pub(crate) fn read(path: &Path, text: &str) -> Manifest {
+pub fn read(path: &Path, text: &str) -> Manifest {
     let dir = path.parent().map_or_else(|| PathBuf::from("."), Path::to_path_buf);
     let mut reader = Reader { dir, text, manifest: Manifest::default() };
     reader.manifest.root = reader.dir.clone();
