@@ -228,3 +228,119 @@ async fn execution_modes_step_forward_and_back_and_refuse_what_is_not_known() {
     // Nothing of the refused starts ran.
     pointer_at(&server, &cookie, line_of("n := 1")).await;
 }
+
+const MESSENGER: &str = "MODULE MainModule
+  VAR intnum on_pos;
+  VAR intnum on_list;
+  VAR rmqmessage msg;
+  VAR rmqslot sender;
+  VAR rmqslot pc;
+  VAR pos got := [0, 0, 0];
+  VAR num list{3} := [0, 0, 0];
+  VAR bool ready := FALSE;
+  TRAP got_pos
+    RMQGetMessage msg;
+    RMQGetMsgData msg, got;
+    RMQGetMsgHeader msg \\SenderId:=sender;
+    RMQSendMessage sender, got.x + got.y + got.z \\UserDef:=5;
+  ENDTRAP
+  TRAP got_list
+    RMQGetMessage msg;
+    RMQGetMsgData msg, list;
+  ENDTRAP
+  PROC main()
+    CONNECT on_pos WITH got_pos;
+    IRMQMessage got, on_pos;
+    CONNECT on_list WITH got_list;
+    IRMQMessage list, on_list;
+    RMQFindSlot pc, \"PC_Q\";
+    RMQSendMessage pc, \"hello\";
+    ready := TRUE;
+    WHILE TRUE DO
+      WaitTime 0.05;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+";
+
+/// The first message of DIPC queue `queue` within 5 s: (data, userdef, sender queue).
+async fn next_message(server: &Server, cookie: &str, queue: &str) -> (String, String, String) {
+    let uri = format!("/rw/dipc/{queue}?action=dipc-read&json=1");
+    for _ in 0..100 {
+        let found = items(server, &uri, cookie).await;
+        if let Some(m) = found.first() {
+            assert_eq!(m["_type"], "dipc-read-li");
+            let text = |k: &str| m[k].as_str().unwrap_or_default().to_owned();
+            return (text("dipc-data"), text("dipc-userdef"), text("queue-name"));
+        }
+        tokio::time::sleep(std::time::Duration::from_millis(50)).await;
+    }
+    panic!("no message came to {queue}");
+}
+
+/// A datum of T_ROB1, waited for (5 s) to read `want`.
+async fn value_becomes(server: &Server, cookie: &str, name: &str, want: &str) {
+    let uri = format!("/rw/rapid/symbol/data/RAPID/T_ROB1/{name}?json=1");
+    let mut value = String::new();
+    for _ in 0..100 {
+        value = state_field(server, &uri, cookie, "value").await;
+        if value == want {
+            return;
+        }
+        tokio::time::sleep(std::time::Duration::from_millis(50)).await;
+    }
+    panic!("{name} is {value}, not {want}");
+}
+
+#[tokio::test]
+async fn dipc_records_and_arrays_reach_a_task_and_its_answer_the_client() {
+    let server = Server::with_queue("dipc-records", MESSENGER, rapid_config::sys::RmqType::Remote);
+    let cookie = server.login().await;
+    let create = "dipc-queue-name=PC_Q&dipc-queue-size=10&dipc-max-msg-size=444";
+    assert_eq!(
+        server.send(post("/rw/dipc?action=dipc-create&json=1", &cookie, create)).await.status(),
+        StatusCode::CREATED
+    );
+    let start = server.send(post("/rw/rapid/execution?action=start&json=1", &cookie, "regain=continue")).await;
+    assert_eq!(start.status(), StatusCode::NO_CONTENT);
+    value_becomes(&server, &cookie, "ready", "TRUE").await;
+
+    // RMQFindSlot found the client's queue by its name; the task's message is there,
+    // as `<datatype>;<value>`, from RMQ_T_ROB1, without \UserDef (-1).
+    let hello = next_message(&server, &cookie, "PC_Q").await;
+    assert_eq!(hello, ("string;\"hello\"".to_owned(), "-1".to_owned(), "RMQ_T_ROB1".to_owned()));
+
+    // A record, read as the task declares pos; the trap answers its sender (the
+    // client's queue) with the sum of the components.
+    let send = |data: &str| post("/rw/dipc/RMQ_T_ROB1?action=dipc-send&json=1", &cookie, data);
+    let record = "dipc-data=pos%3B%5B1%2C2%2C3.5%5D&dipc-userdef=0&dipc-src-queue-name=PC_Q";
+    assert_eq!(server.send(send(record)).await.status(), StatusCode::NO_CONTENT);
+    value_becomes(&server, &cookie, "got", "[1,2,3.5]").await;
+    let answer = next_message(&server, &cookie, "PC_Q").await;
+    assert_eq!(answer, ("num;6.5".to_owned(), "5".to_owned(), "RMQ_T_ROB1".to_owned()));
+
+    // An array of num: an aggregate that is no num literal, of three items.
+    assert_eq!(server.send(send("dipc-data=num%3B%5B4%2C5%2C6%5D")).await.status(), StatusCode::NO_CONTENT);
+    value_becomes(&server, &cookie, "list", "[4,5,6]").await;
+
+    // A pos of two components, a type the task does not have, a two-dimensional array.
+    for bad in
+        ["dipc-data=pos%3B%5B1%2C2%5D", "dipc-data=nosuch%3B%5B1%5D", "dipc-data=num%3B%5B%5B1%2C2%5D%2C%5B3%2C4%5D%5D"]
+    {
+        let refused = server.send(send(bad)).await;
+        assert_eq!(refused.status(), StatusCode::BAD_REQUEST, "{bad}");
+    }
+    assert_eq!(
+        state_field(&server, "/rw/rapid/symbol/data/RAPID/T_ROB1/got?json=1", &cookie, "value").await,
+        "[1,2,3.5]"
+    );
+
+    // Deleted: gone for the client and for the tasks.
+    let delete = axum::http::Request::delete("/rw/dipc/PC_Q?json=1")
+        .header("cookie", &cookie)
+        .body(axum::body::Body::empty())
+        .unwrap();
+    assert_eq!(server.send(delete).await.status(), StatusCode::NO_CONTENT);
+    let gone = server.send(get("/rw/dipc/PC_Q?action=dipc-read&json=1", Some(&cookie))).await;
+    assert_eq!(gone.status(), StatusCode::NOT_FOUND);
+}

@@ -34,6 +34,7 @@ pub mod stream;
 use std::fmt;
 
 pub use crate::run::ClockPolicy;
+pub use config::{ConfigDomain, ConfigInstance, ConfigType};
 pub use data::{DataInfo, DataValue};
 pub use debug::{BreakpointHit, Location, StepKind};
 pub use exec::{RunOutcome, StackFrame, StartFrom, TaskView, Until};
@@ -41,6 +42,7 @@ pub use inspect::ValueTree;
 pub use modules::ModuleInfo;
 pub use panel::MechUnitView;
 pub use pendant::PendingPrompt;
+pub use rmq::ClientMessage;
 pub use stream::{Batch, Change, Subscription};
 
 use crate::schedule::{Controller, State};

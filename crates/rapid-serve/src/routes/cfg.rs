@@ -21,7 +21,7 @@
 use std::sync::Arc;
 
 use axum::http::Method;
-use rapid_config::{CfgFile, Instance};
+use rapid_controller::api::{ConfigDomain, ConfigInstance};
 
 use super::{not_found, Req, Res};
 use crate::model::{Item, Reply, RwsError};
@@ -54,6 +54,7 @@ pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
         .controller
         .call(move |core| {
             let domains = core.session.configuration();
+            let domains = domains.as_slice();
             match rest.as_slice() {
                 [] => Ok(domain_list(domains)),
                 [domain] => types(domains, domain, start, limit),
@@ -82,17 +83,17 @@ fn number(text: Option<&str>, default: usize, name: &str) -> Result<usize, RwsEr
 }
 
 /// `/rw/cfg`: the domains the system has, in RobotWare's order (others after).
-fn domain_list(domains: &[(String, CfgFile)]) -> Reply {
-    let mut names: Vec<String> = domains.iter().map(|(d, _)| d.to_ascii_uppercase()).collect();
+fn domain_list(domains: &[ConfigDomain]) -> Reply {
+    let mut names: Vec<String> = domains.iter().map(|d| d.name.to_ascii_uppercase()).collect();
     names.sort_by_key(|d| (ORDER.iter().position(|o| o == d).unwrap_or(ORDER.len()), d.clone()));
     names.dedup();
     let items = names.into_iter().map(|d| Item::new("cfg-domain-li", &d).linked(format!("cfg/{d}"))).collect();
     Reply::Items { base: "/rw/".into(), items }
 }
 
-/// The file of domain `name` (any letter case).
-fn find_domain<'a>(domains: &'a [(String, CfgFile)], name: &str) -> Result<&'a CfgFile, RwsError> {
-    domains.iter().find(|(d, _)| d.eq_ignore_ascii_case(name)).map(|(_, f)| f).ok_or_else(|| {
+/// Domain `name` (any letter case).
+fn find_domain<'a>(domains: &'a [ConfigDomain], name: &str) -> Result<&'a ConfigDomain, RwsError> {
+    domains.iter().find(|d| d.name.eq_ignore_ascii_case(name)).ok_or_else(|| {
         if ORDER.iter().any(|d| d.eq_ignore_ascii_case(name)) {
             // A real controller always has the six domains, with ABB's defaults where
             // the system's files say nothing; those defaults are not public.
@@ -103,93 +104,82 @@ fn find_domain<'a>(domains: &'a [(String, CfgFile)], name: &str) -> Result<&'a C
     })
 }
 
-/// The types of a domain, each once, in file order.
-fn type_names(file: &CfgFile) -> Vec<&str> {
-    let mut names: Vec<&str> = Vec::new();
-    for section in &file.sections {
-        if !names.iter().any(|n| n.eq_ignore_ascii_case(&section.name)) {
-            names.push(&section.name);
-        }
-    }
-    names
-}
-
 /// `/rw/cfg/{domain}`: one page of its types.
-fn types(domains: &[(String, CfgFile)], domain: &str, start: usize, limit: usize) -> Result<Reply, RwsError> {
-    let names = type_names(find_domain(domains, domain)?);
-    let items: Vec<Item> = names
+fn types(domains: &[ConfigDomain], domain: &str, start: usize, limit: usize) -> Result<Reply, RwsError> {
+    let found = find_domain(domains, domain)?;
+    let items: Vec<Item> = found
+        .types
         .iter()
         .skip(start)
         .take(limit)
-        .map(|t| Item::new("cfg-dt-li", t).linked(format!("{domain}/{t}")))
+        .map(|t| Item::new("cfg-dt-li", &t.name).linked(format!("{domain}/{}", t.name)))
         .collect();
-    let next =
-        (start.saturating_add(limit) < names.len()).then(|| format!("{domain}?start={}&limit={limit}", start + limit));
+    let next = (start.saturating_add(limit) < found.types.len())
+        .then(|| format!("{domain}?start={}&limit={limit}", start + limit));
     Ok(Reply::Page { base: BASE.into(), items, next })
 }
 
-/// The type `ty` of `domain` as written in the file (any letter case asked).
-fn find_type<'a>(domains: &'a [(String, CfgFile)], domain: &str, ty: &str) -> Result<(&'a CfgFile, String), RwsError> {
-    let file = find_domain(domains, domain)?;
-    let name = type_names(file).into_iter().find(|t| t.eq_ignore_ascii_case(ty));
-    let name = name.ok_or_else(|| RwsError::not_found(format!("domain {domain} has no type `{ty}`")))?;
-    Ok((file, name.to_owned()))
+/// The type `ty` of `domain` (any letter case asked).
+fn find_type<'a>(
+    domains: &'a [ConfigDomain],
+    domain: &str,
+    ty: &str,
+) -> Result<&'a rapid_controller::api::ConfigType, RwsError> {
+    let found = find_domain(domains, domain)?;
+    found
+        .types
+        .iter()
+        .find(|t| t.name.eq_ignore_ascii_case(ty))
+        .ok_or_else(|| RwsError::not_found(format!("domain {domain} has no type `{ty}`")))
 }
 
 /// `/rw/cfg/{domain}/{type}`: links to its instances (with their number) and attributes.
-fn type_view(domains: &[(String, CfgFile)], domain: &str, ty: &str) -> Result<Reply, RwsError> {
-    let (file, name) = find_type(domains, domain, ty)?;
-    let count = file.instances(&name).count();
+fn type_view(domains: &[ConfigDomain], domain: &str, ty: &str) -> Result<Reply, RwsError> {
+    let found = find_type(domains, domain, ty)?;
+    let name = &found.name;
     let items = vec![
         // The manual adds `cfg-no-of-attributes`, the schema's count: not public, so
         // not given rather than guessed from the attributes the file writes.
         Item::new("cfg-dt-attributes-li", "attributes").linked(format!("{domain}/{name}/attributes")),
         Item::new("cfg-dt-instances-li", "instances")
             .linked(format!("{domain}/{name}/instances"))
-            .with("cfg-no-of-instances", count.to_string()),
+            .with("cfg-no-of-instances", found.instances.len().to_string()),
     ];
     Ok(Reply::Items { base: BASE.into(), items })
 }
 
 /// `/rw/cfg/{domain}/{type}/instances[/{name}]`: the instances with their attributes.
-fn instances(domains: &[(String, CfgFile)], domain: &str, ty: &str, only: Option<&str>) -> Result<Reply, RwsError> {
-    let (file, name) = find_type(domains, domain, ty)?;
-    let mut items = Vec::new();
-    for (id, section, instance) in numbered(file) {
-        let title = instance.value("Name").unwrap_or_default();
-        if section != name || only.is_some_and(|n| !n.eq_ignore_ascii_case(title)) {
-            continue;
-        }
-        items.push(instance_item(title, id, instance));
-    }
+fn instances(domains: &[ConfigDomain], domain: &str, ty: &str, only: Option<&str>) -> Result<Reply, RwsError> {
+    let found = find_type(domains, domain, ty)?;
+    let items: Vec<Item> = found
+        .instances
+        .iter()
+        .filter(|i| only.is_none_or(|n| i.name().is_some_and(|name| name.eq_ignore_ascii_case(n))))
+        .map(instance_item)
+        .collect();
     if let (Some(wanted), true) = (only, items.is_empty()) {
-        return Err(RwsError::not_found(format!("type {name} of domain {domain} has no instance `{wanted}`")));
+        return Err(RwsError::not_found(format!("type {} of domain {domain} has no instance `{wanted}`", found.name)));
     }
     Ok(Reply::Items { base: BASE.into(), items })
 }
 
-/// Every instance of the domain with its `instanceid`: its number in the file, from 1.
-// uncertain: RobotWare's instance ids are its own handles; ours are stable for one
-// boot, which is what a client may rely on.
-fn numbered(file: &CfgFile) -> impl Iterator<Item = (usize, &str, &Instance)> {
-    let all = file.sections.iter().flat_map(|s| s.instances.iter().map(move |i| (s.name.as_str(), i)));
-    all.enumerate().map(|(n, (section, inst))| (n + 1, section, inst))
-}
-
-/// One instance as `cfg-dt-instance-li`: not read-only (it came from the system's
-/// files, not RobotWare's own), its id, and its attributes as the file writes them.
-fn instance_item(title: &str, id: usize, instance: &Instance) -> Item {
+/// One instance as `cfg-dt-instance-li` titled by its name: not read-only (it came
+/// from the system's files, not RobotWare's own), its id, and its attributes as the
+/// file writes them.
+// uncertain: RobotWare's instance ids are its own handles; ours (the instance's number
+// in the domain's file) are stable while the system runs, which is what a client may
+// rely on.
+fn instance_item(instance: &ConfigInstance) -> Item {
     let attributes = instance
-        .attrs
+        .attributes
         .iter()
-        .map(|a| {
+        .map(|(name, value)| {
             // uncertain: a flag attribute (written bare, `-Hidden`) shows as true.
-            let value = a.value.as_ref().map_or_else(|| "true".to_owned(), |v| v.text.clone());
-            Item::new("cfg-ia-t-li", &a.name).with("value", value)
+            Item::new("cfg-ia-t-li", name).with("value", value.clone().unwrap_or_else(|| "true".to_owned()))
         })
         .collect();
-    Item::new("cfg-dt-instance-li", title)
+    Item::new("cfg-dt-instance-li", instance.name().unwrap_or_default())
         .with("rdonly", "false")
-        .with("instanceid", id.to_string())
+        .with("instanceid", instance.number.to_string())
         .holding("attrib", attributes)
 }
