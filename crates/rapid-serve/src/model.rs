@@ -28,11 +28,36 @@ pub(crate) struct Item {
     pub(crate) fields: Vec<(String, String)>,
     /// JSON-only structured fields (an event's `argv` list).
     pub(crate) extra: Vec<(String, Value)>,
+    /// The item's own address, relative to the answer's base: `<a href=… rel="self"/>`
+    /// first inside the `<li>`, `"_links": {"self": {"href": …}}` in JSON.
+    pub(crate) link: Option<String>,
+    /// Items within the item (a configuration instance's attributes): a `<ul>` after
+    /// the fields in XHTML, a list under `key` in JSON.
+    pub(crate) children: Option<(String, Vec<Item>)>,
 }
 
 impl Item {
     pub(crate) fn new(class: &str, title: &str) -> Item {
-        Item { class: class.to_owned(), title: title.to_owned(), fields: Vec::new(), extra: Vec::new() }
+        Item {
+            class: class.to_owned(),
+            title: title.to_owned(),
+            fields: Vec::new(),
+            extra: Vec::new(),
+            link: None,
+            children: None,
+        }
+    }
+
+    /// Gives the item its own address (relative to the answer's base).
+    pub(crate) fn linked(mut self, href: impl Into<String>) -> Item {
+        self.link = Some(href.into());
+        self
+    }
+
+    /// Gives the item items of its own, listed under `key` in JSON.
+    pub(crate) fn holding(mut self, key: &str, children: Vec<Item>) -> Item {
+        self.children = Some((key.to_owned(), children));
+        self
     }
 
     /// Adds a field.
@@ -49,6 +74,13 @@ pub(crate) enum Reply {
     Items {
         base: String,
         items: Vec<Item>,
+    },
+    /// 200 with one page of items: `next` is the address of the next page (relative
+    /// to `base`), when there is one.
+    Page {
+        base: String,
+        items: Vec<Item>,
+        next: Option<String>,
     },
     /// 204, the answer to most actions.
     NoContent,
@@ -141,6 +173,15 @@ pub(crate) fn render(reply: Reply, json: bool, host: &str) -> Response {
                 if json { (JSON, items_json(&base, &items)) } else { (XHTML, items_xhtml(&base, &items)) };
             with_type(StatusCode::OK, ctype, body)
         }
+        Reply::Page { base, items, next } => {
+            let base = format!("http://{host}{base}");
+            let (ctype, body) = if json {
+                (JSON, page_json(&base, &items, next.as_deref()))
+            } else {
+                (XHTML, page_xhtml(&base, &items, next.as_deref()))
+            };
+            with_type(StatusCode::OK, ctype, body)
+        }
         Reply::NoContent => StatusCode::NO_CONTENT.into_response(),
         Reply::Created { location, body } => {
             // A Content-Type even without a body: the Python client reads the header
@@ -183,8 +224,16 @@ fn with_type(status: StatusCode, ctype: &'static str, body: String) -> Response 
 }
 
 fn items_json(base: &str, items: &[Item]) -> String {
+    page_json(base, items, None)
+}
+
+fn page_json(base: &str, items: &[Item], next: Option<&str>) -> String {
     let state: Vec<Value> = items.iter().map(item_json).collect();
-    json!({"_links": {"base": {"href": base}}, "_embedded": {"_state": state}}).to_string()
+    let mut links = json!({"base": {"href": base}});
+    if let Some(next) = next {
+        links["next"] = json!({"href": next});
+    }
+    json!({"_links": links, "_embedded": {"_state": state}}).to_string()
 }
 
 /// One item as JSON: `_type`, `_title`, then its fields.
@@ -192,18 +241,32 @@ pub(crate) fn item_json(item: &Item) -> Value {
     let mut object = Map::new();
     object.insert("_type".into(), Value::String(item.class.clone()));
     object.insert("_title".into(), Value::String(item.title.clone()));
+    if let Some(link) = &item.link {
+        object.insert("_links".into(), json!({"self": {"href": link}}));
+    }
     for (key, value) in &item.fields {
         object.insert(key.clone(), Value::String(value.clone()));
     }
     for (key, value) in &item.extra {
         object.insert(key.clone(), value.clone());
     }
+    if let Some((key, children)) = &item.children {
+        object.insert(key.clone(), Value::Array(children.iter().map(item_json).collect()));
+    }
     Value::Object(object)
 }
 
 fn items_xhtml(base: &str, items: &[Item]) -> String {
+    page_xhtml(base, items, None)
+}
+
+fn page_xhtml(base: &str, items: &[Item], next: Option<&str>) -> String {
     let mut body = xhtml_head("RWS");
-    body.push_str(&format!("<div class=\"state\"><a href=\"{}\" rel=\"self\"></a><ul>", escape(base)));
+    body.push_str(&format!("<div class=\"state\"><a href=\"{}\" rel=\"self\"></a>", escape(base)));
+    if let Some(next) = next {
+        body.push_str(&format!("<a href=\"{}\" rel=\"next\"></a>", escape(next)));
+    }
+    body.push_str("<ul>");
     for item in items {
         body.push_str(&item_xhtml(item));
     }
@@ -215,8 +278,18 @@ fn items_xhtml(base: &str, items: &[Item]) -> String {
 /// One item as an XHTML `<li>`, on one line.
 pub(crate) fn item_xhtml(item: &Item) -> String {
     let mut li = format!("<li class=\"{}\" title=\"{}\">", escape(&item.class), escape(&item.title));
+    if let Some(link) = &item.link {
+        li.push_str(&format!("<a href=\"{}\" rel=\"self\"></a>", escape(link)));
+    }
     for (key, value) in &item.fields {
         li.push_str(&format!("<span class=\"{}\">{}</span>", escape(key), escape_text(value)));
+    }
+    if let Some((_, children)) = &item.children {
+        li.push_str("<ul>");
+        for child in children {
+            li.push_str(&item_xhtml(child));
+        }
+        li.push_str("</ul>");
     }
     li.push_str("</li>");
     li

@@ -206,8 +206,9 @@ ENDMODULE
         tokio::time::sleep(Duration::from_millis(50)).await;
     }
     assert_eq!(got, ("\"hello\"".to_owned(), "42".to_owned(), "7".to_owned()));
-    // Not `<datatype>;<value>`, no literal of its type, a record type (not yet).
-    for bad in ["dipc-data=hello", "dipc-data=num%3Babc", "dipc-data=pos%3B%5B1%2C2%2C3%5D"] {
+    // Not `<datatype>;<value>`, no literal of its type, a type the task does not have
+    // (records the task has: `dipc_records_and_arrays_reach_a_task_and_its_answer_the_client`).
+    for bad in ["dipc-data=hello", "dipc-data=num%3Babc", "dipc-data=nosuchtype%3B%5B1%2C2%2C3%5D"] {
         let refused = server.send(send(bad)).await;
         assert_eq!(refused.status(), StatusCode::BAD_REQUEST, "{bad}");
     }

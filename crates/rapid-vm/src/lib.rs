@@ -154,7 +154,9 @@ pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Resul
     };
     vm.set_data_names(module_data.map(named).collect());
     vm.resources_mut().symsearch = builtins::symsearch::catalog::task_symbols(&prog, &modules);
-    vm.resources_mut().rmq.names = builtins::rmq::TypeNames::new(prog.types.named());
+    let mut type_names = builtins::rmq::TypeNames::new(prog.types.named());
+    type_names.templates = rmq_templates(&prog);
+    vm.resources_mut().rmq.names = type_names;
     vm.resources_mut().motion.links = builtins::motion::MotionLinks {
         motset: global_named("C_MOTSET"),
         progdisp: global_named("C_PROGDISP"),
@@ -356,5 +358,16 @@ fn signal_kinds(prog: &Program) -> Vec<(rapid_sema::types::TypeId, rapid_io::Sig
     [K::DI, K::DO, K::AI, K::AO, K::GI, K::GO]
         .into_iter()
         .filter_map(|kind| prog.types.find(kind.rapid_type()).map(|ty| (ty, kind)))
+        .collect()
+}
+
+/// The value before anything is assigned of each declared or predefined record and
+/// alias type (RMQ messages from outside the tasks are read into that shape).
+fn rmq_templates(prog: &Program) -> FxHashMap<rapid_sema::types::TypeId, value::Value> {
+    use rapid_sema::types::TypeKind;
+    prog.types
+        .named()
+        .filter(|(id, _)| matches!(prog.types.info(*id).kind, TypeKind::Record(_) | TypeKind::Alias(_)))
+        .map(|(id, _)| (id, compile::default_value(prog, id, &[])))
         .collect()
 }

@@ -14,10 +14,12 @@
 //! name), `pendant` (the `Host` the tasks run with), `stream` (subscriptions),
 //! `exec` (run, clock policies, start/stop, program pointers, call stacks), `panel`
 //! (motors, run mode, the robots' positions, the file devices' folder), `modules`
-//! (list, load, unload a task's modules, a module's text), `rmq` (messages to a
+//! (list, load, unload a task's modules, a module's text and attributes), `config`
+//! (the system parameters booted with), `rmq` (messages to a
 //! task's RAPID Message Queue), `inspect` (values as trees, expressions
 //! evaluated in a frame).
 
+mod config;
 pub mod data;
 pub mod debug;
 mod exec;
@@ -32,12 +34,15 @@ pub mod stream;
 use std::fmt;
 
 pub use crate::run::ClockPolicy;
+pub use config::{ConfigDomain, ConfigInstance, ConfigType};
 pub use data::{DataInfo, DataValue};
 pub use debug::{BreakpointHit, Location, StepKind};
 pub use exec::{RunOutcome, StackFrame, StartFrom, TaskView, Until};
 pub use inspect::ValueTree;
+pub use modules::ModuleInfo;
 pub use panel::MechUnitView;
 pub use pendant::PendingPrompt;
+pub use rmq::ClientMessage;
 pub use stream::{Batch, Change, Subscription};
 
 use crate::schedule::{Controller, State};

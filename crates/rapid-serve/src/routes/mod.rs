@@ -4,9 +4,10 @@
 //!
 //! One module per resource family: `panel` (`/rw/panel`, `/ctrl`, `/rw/system`),
 //! `rapid` (execution, tasks, symbols, modules), `io` (signals), `motion`
-//! (mechunits), `files` (`/fileservice`), `elog`, `users` (RMMP, mastership, DIPC) and
+//! (mechunits), `files` (`/fileservice`), `elog`, `cfg` (the configuration database), `users` (RMMP, mastership, DIPC) and
 //! `subscribe` (`/subscription`).
 
+mod cfg;
 mod elog;
 mod files;
 mod io;
@@ -213,6 +214,7 @@ async fn route(app: &Arc<App>, req: Req) -> Res {
         ["rw", "iosystem"] => io::route(app, &req).await,
         ["rw", "motionsystem"] => motion::route(app, &req).await,
         ["rw", "elog"] => elog::route(app, &req).await,
+        ["rw", "cfg"] => cfg::route(app, &req).await,
         ["rw", "dipc"] | ["rw", "mastership"] | ["users", ..] => users::route(app, &req).await,
         ["fileservice", ..] => files::route(app, &req).await,
         ["subscription", ..] => subscribe::route(app, &req),

@@ -92,9 +92,18 @@ async fn execution(app: &Arc<App>, req: &Req) -> Res {
     }
 }
 
+/// A start's `execmode` other than `continue`.
+#[derive(Debug, Clone, Copy)]
+enum Step {
+    /// `stepin`, `stepover`, `stepout`: one step forward.
+    Forward(StepKind),
+    /// `stepback`: one statement backward (the manual's §1.21 rules).
+    Back,
+}
+
 /// The fields of a start, checked.
 struct StartOrder {
-    step: Option<StepKind>,
+    step: Option<Step>,
     cycles: Option<(u64, &'static str)>,
 }
 
@@ -109,13 +118,30 @@ impl StartOrder {
         }
         let step = match req.field("execmode").unwrap_or("continue") {
             "continue" => None,
-            "stepin" => Some(StepKind::Into),
-            "stepover" => Some(StepKind::Over),
-            "stepout" => Some(StepKind::Out),
-            other @ ("stepback" | "steplast" | "stepmotion") => {
-                return Err(RwsError::unsupported(format!("execmode `{other}`")))
+            "stepin" => Some(Step::Forward(StepKind::Into)),
+            "stepover" => Some(Step::Forward(StepKind::Over)),
+            "stepout" => Some(Step::Forward(StepKind::Out)),
+            "stepback" => Some(Step::Back),
+            // The PC SDK's ExecutionMode names StepMotion "execute to next motion
+            // instruction"; the controller's "step to the next move instruction" runs
+            // on over several statements, which a step here does not do yet.
+            "stepmotion" => {
+                return Err(RwsError::unsupported(
+                    "execmode `stepmotion` (run to the next motion instruction and stop after it)",
+                ))
             }
-            other => return Err(bad("execmode", other, "continue, stepin, stepover or stepout")),
+            // The PC SDK's ExecutionMode leaves out its number (6): what it does is
+            // not in the public record, so it is not guessed.
+            "steplast" => {
+                return Err(RwsError::unsupported("execmode `steplast` (its meaning is not in the public record)"))
+            }
+            other => {
+                return Err(bad(
+                    "execmode",
+                    other,
+                    "continue, stepin, stepover, stepout, stepback, steplast or stepmotion",
+                ))
+            }
         };
         let cycles = match req.field("cycle").unwrap_or("asis") {
             "asis" => None,
@@ -164,7 +190,10 @@ fn start(core: &mut Core, order: &StartOrder) -> Result<(), RwsError> {
         Some(kind) => {
             let task = tasks.iter().find(|t| t.kind == "NORMAL").map(|t| t.name.clone());
             let task = task.ok_or_else(|| RwsError::wrong_state("no NORMAL task to step"))?;
-            core.session.step(&task, kind)
+            match kind {
+                Step::Forward(kind) => core.session.step(&task, kind),
+                Step::Back => core.session.step_backward(&task).map(|_| ()),
+            }
         }
         None if core.session.all_normal_ended() => core.session.start(StartFrom::Main),
         None => core.session.start(StartFrom::Pointer),
@@ -386,13 +415,11 @@ async fn modules(app: &Arc<App>, req: &Req) -> Res {
 /// `change-count` and `module-text`, as RobotWare 6's answers in the public record
 /// show them). RobotWare hands a long module over as a file (`file-path` under
 /// `/TEMP`) instead; the length where it does so is not in the public record, so the
-/// text always comes inline here.
+/// text always comes inline here. Without `resource`: the module's attributes.
 async fn module_text(app: &Arc<App>, req: &Req, module: &str) -> Res {
     match req.query("resource") {
         Some("module-text") => {}
-        // uncertain: without `resource` RobotWare answers the module's attributes
-        // (its file name among them); their fields are not in the public record.
-        None => return Err(RwsError::unsupported("a module's attributes (ask resource=module-text for its text)")),
+        None => return module_attributes(app, req, module).await,
         Some(other) => return Err(RwsError::unsupported(format!("module resource `{other}`"))),
     }
     let task = req.query("task").unwrap_or("T_ROB1").to_owned();
@@ -408,6 +435,43 @@ async fn module_text(app: &Arc<App>, req: &Req, module: &str) -> Res {
         .with("change-count", changes.to_string())
         .with("module-length", text.len().to_string())
         .with("module-text", text);
+    Ok(Reply::Items { base: BASE.into(), items: vec![item] })
+}
+
+/// `GET /rw/rapid/modules/{module}?task=T`: the module's attributes as the RWS manual
+/// gives them: `rap-module` titled `TASK/module`, with `modname`, `filename` (the
+/// file's name, without its folder) and `attribute` (the module attributes in RAPID's
+/// order, as `sysmod`, `noview`, `nostepin`, `viewonly`, `readonly`, joined by commas;
+/// empty for a module without any).
+async fn module_attributes(app: &Arc<App>, req: &Req, module: &str) -> Res {
+    let task = req.query("task").unwrap_or("T_ROB1").to_owned();
+    let module = module.to_owned();
+    let (task, info) = app
+        .controller
+        .call(move |core| {
+            let info = core.session.module_info(&task, &module)?;
+            // The task's name as the controller spells it.
+            let name = core.session.tasks().into_iter().find(|t| t.name.eq_ignore_ascii_case(&task));
+            Ok::<_, rapid_controller::api::ApiError>((name.map_or(task, |t| t.name), info))
+        })
+        .await?
+        .map_err(|e| RwsError::from_api(&e))?;
+    let file = std::path::Path::new(&info.file).file_name().map_or_else(String::new, |f| f.to_string_lossy().into());
+    let words: Vec<&str> = info
+        .attributes
+        .iter()
+        .map(|a| match *a {
+            "SYSMODULE" => "sysmod",
+            "NOVIEW" => "noview",
+            "NOSTEPIN" => "nostepin",
+            "VIEWONLY" => "viewonly",
+            _ => "readonly",
+        })
+        .collect();
+    let item = Item::new("rap-module", &format!("{task}/{}", info.name))
+        .with("modname", info.name)
+        .with("filename", file)
+        .with("attribute", words.join(","));
     Ok(Reply::Items { base: BASE.into(), items: vec![item] })
 }
 

@@ -9,7 +9,10 @@
 //! this way and reads its own. A message sent to a RAPID task's RMQ (`RMQ_T_ROB1`, or
 //! the task's name) goes into the task's queue through the controller
 //! (`Session::send_rmq`): `dipc-data` is `<datatype>;<value>`, as RobotWare's IPC
-//! messages to RAPID are.
+//! messages to RAPID are, and `dipc-src-queue-name` (the client's own queue) is the
+//! message's sender. A client's queue is opened in the controller too, so that the
+//! tasks send to it (RMQFindSlot by its name, or RMQGetMsgHeader's `\SenderId`); a
+//! `dipc-read` takes the messages of other clients first, then the tasks'.
 
 use std::collections::{HashMap, VecDeque};
 use std::sync::{Arc, Mutex};
@@ -69,6 +72,15 @@ pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
                 return Err(RwsError::bad_request(format!("`{name}` is a RAPID task's queue name")));
             }
             app.dipc.create(name, size)?;
+            let (queue, opened) = (name.to_owned(), name.to_owned());
+            // Created in both or in neither.
+            match app.controller.call(move |core| core.session.open_client_queue(&opened, size)).await {
+                Ok(true) => {}
+                Ok(false) | Err(_) => {
+                    let _ = app.dipc.remove(&queue);
+                    return Err(RwsError::busy(format!("queue `{queue}` cannot be opened to the tasks now")));
+                }
+            }
             Ok(Reply::Created { location: None, body: None })
         }
         (["rw", "dipc", queue], Some("dipc-send"), &Method::POST) => {
@@ -85,8 +97,9 @@ pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
                     .trim()
                     .parse::<f64>()
                     .map_err(|_| RwsError::bad_request(format!("dipc-userdef `{}`: a number", message.userdef)))?;
+                let from = Some(message.from).filter(|f| !f.is_empty());
                 app.controller
-                    .call(move |core| core.session.send_rmq(&task, &message.data, userdef))
+                    .call(move |core| core.session.send_rmq(&task, &message.data, userdef, from.as_deref()))
                     .await?
                     .map_err(|e| RwsError::from_api(&e))?;
                 return Ok(Reply::NoContent);
@@ -101,11 +114,26 @@ pub(super) async fn route(app: &Arc<App>, req: &Req) -> Res {
             Ok(Reply::NoContent)
         }
         (["rw", "dipc", queue], Some("dipc-read"), &Method::GET) => {
-            let items = app.dipc.read(queue)?;
+            let mut items = app.dipc.read(queue)?;
+            if items.is_empty() {
+                let name = (*queue).to_owned();
+                if let Some(m) = app.controller.call(move |core| core.session.read_client_queue(&name)).await? {
+                    items.push(
+                        Item::new("dipc-read-li", queue)
+                            .with("dipc-data", m.data)
+                            .with("dipc-userdef", crate::model::number(m.userdef))
+                            .with("dipc-msgtype", "1")
+                            .with("dipc-cmd", "111")
+                            .with("queue-name", m.from),
+                    );
+                }
+            }
             Ok(Reply::Items { base: "/rw/dipc/".into(), items })
         }
         (["rw", "dipc", queue], None, &Method::DELETE) => {
             app.dipc.remove(queue)?;
+            let name = (*queue).to_owned();
+            app.controller.call(move |core| core.session.close_client_queue(&name)).await?;
             Ok(Reply::NoContent)
         }
         _ => Err(not_found(req)),

@@ -41,6 +41,17 @@ pub(crate) fn boot_with_queue(
     program: &str,
     rmq: rapid_config::sys::RmqType,
 ) -> Result<Session, String> {
+    boot_with(root, program, rmq, Vec::new())
+}
+
+/// As [`boot_with_queue`], T_ROB1 configured with `config` ((domain, `.cfg` text) pairs)
+/// as a backup's system parameters configure a task.
+pub(crate) fn boot_with(
+    root: std::path::PathBuf,
+    program: &str,
+    rmq: rapid_config::sys::RmqType,
+    config: Vec<(String, String)>,
+) -> Result<Session, String> {
     let names = [("di1", "signaldi", "DI"), ("do1", "signaldo", "DO")];
     let predefined = names
         .iter()
@@ -50,6 +61,8 @@ pub(crate) fn boot_with_queue(
     let mut loaded = rapid_vm::load_with(&[SourceInput::from_text("T_ROB1/MainModule.mod", program)], "main", &options)
         .map_err(|e| format!("{e:?}"))?;
     loaded.vm.resources_mut().files.set_root(root);
+    let config = config.into_iter().map(|(domain, text)| (domain, rapid_config::parse(&text))).collect();
+    loaded.vm.resources_mut().cfgdata.set_config(config);
     let signals: String =
         names.iter().map(|(n, _, kind)| format!("\n      -Name \"{n}\" -SignalType \"{kind}\"\n")).collect();
     let eio = rapid_config::eio::read(&rapid_config::parse(&format!("EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n{signals}")));
@@ -76,12 +89,23 @@ impl Server {
     }
 
     pub(crate) fn with_queue(name: &str, program: &'static str, rmq: rapid_config::sys::RmqType) -> Server {
+        Server::with_config(name, program, rmq, &[])
+    }
+
+    /// A server whose T_ROB1 is configured with `config`: (domain, `.cfg` text) pairs.
+    pub(crate) fn with_config(
+        name: &str,
+        program: &'static str,
+        rmq: rapid_config::sys::RmqType,
+        config: &[(&str, &str)],
+    ) -> Server {
+        let config: Vec<(String, String)> = config.iter().map(|(d, t)| ((*d).to_owned(), (*t).to_owned())).collect();
         let root = std::env::temp_dir().join(format!("rapid-serve-test-{name}-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&root);
         std::fs::create_dir_all(&root).expect("scratch folder");
         let for_boot = root.clone();
         let boot = rapid_serve::Boot {
-            session: Box::new(move || boot_with_queue(for_boot, program, rmq)),
+            session: Box::new(move || boot_with(for_boot, program, rmq, config)),
             clock: ClockPolicy::Paced { rate: 20.0 },
             on_exit: None,
             on_tp_write: None,

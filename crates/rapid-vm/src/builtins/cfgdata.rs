@@ -40,6 +40,12 @@ impl CfgState {
         self.domains = domains;
     }
 
+    /// The configuration as it stands: (domain, parsed file) pairs, WriteCfgData's
+    /// changes included (what a front end shows of the system parameters).
+    pub fn domains(&self) -> &[(String, CfgFile)] {
+        &self.domains
+    }
+
     fn domain(&self, name: &str) -> Option<usize> {
         self.domains.iter().position(|(d, _)| d.eq_ignore_ascii_case(name))
     }

@@ -109,6 +109,9 @@ pub struct SharedTasking {
     sync: FxHashMap<String, SyncPoint>,
     /// Each task's RAPID Message Queue, by task index.
     pub queues: Vec<VecDeque<RmqMessage>>,
+    /// The queues of the controller's clients the tasks may send to (RWS DIPC
+    /// queues), by slot; a closed one's place is empty until another opens.
+    pub outside: Vec<Option<super::rmq::OutsideQueue>>,
     /// The event-log entries of every task, as the controller's one event log holds
     /// them (IError in one task sees another's errors): (task index, entry).
     pub events: Vec<(usize, crate::events::Event)>,
@@ -158,6 +161,7 @@ impl SharedTasking {
             tasks,
             sync: FxHashMap::default(),
             queues,
+            outside: Vec::new(),
             events: Vec::new(),
             request: None,
             reply: None,

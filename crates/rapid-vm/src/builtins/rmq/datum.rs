@@ -24,6 +24,9 @@ pub enum Datum {
 pub struct TypeNames {
     pub by_id: FxHashMap<TypeId, String>,
     pub by_name: FxHashMap<String, TypeId>,
+    /// The value before anything is assigned of each record and alias type, by
+    /// number: the shape a message's literal from outside the tasks is read into.
+    pub templates: FxHashMap<TypeId, Value>,
 }
 
 impl TypeNames {
@@ -35,6 +38,29 @@ impl TypeNames {
             names.by_name.entry(name.to_ascii_lowercase()).or_insert(id);
         }
         names
+    }
+}
+
+impl TypeNames {
+    /// The value of type `name` (any letter case) before anything is assigned, as the
+    /// task declares the type: `None` for a type it has no template of.
+    pub fn template(&self, name: &str) -> Option<Value> {
+        self.templates.get(self.by_name.get(&name.to_ascii_lowercase())?).cloned()
+    }
+}
+
+/// A datum as RAPID literal text (ValToStr's syntax): what an RWS client reads of a
+/// message a task sent it.
+pub fn literal(datum: &Datum) -> String {
+    use crate::format::{aggregate_to_text, bool_to_text, dnum_to_text, num_to_text, string_to_literal};
+    match datum {
+        Datum::Num(n) => num_to_text(*n),
+        Datum::Dnum(d) => dnum_to_text(*d),
+        Datum::Bool(b) => bool_to_text(*b).to_owned(),
+        Datum::Str(s) => string_to_literal(s),
+        Datum::Record(_, parts) | Datum::Array(_, parts) => {
+            aggregate_to_text(&parts.iter().map(literal).collect::<Vec<_>>())
+        }
     }
 }
 

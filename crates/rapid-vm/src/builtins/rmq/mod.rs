@@ -12,7 +12,9 @@
 
 mod datum;
 
-pub use datum::{Datum, TypeNames};
+pub use datum::{literal, Datum, TypeNames};
+
+use std::collections::VecDeque;
 
 use super::{native, present, Ctx, Family, StopKind};
 use crate::errnames::Err;
@@ -36,11 +38,36 @@ pub struct RmqMessage {
     pub datatype: String,
     pub dims: [u32; 3],
     pub data: Datum,
-    /// The sending task's index.
+    /// The sender's slot number less one: the sending task's index, or a client's
+    /// queue (`OUTSIDE_SLOTS` on), or the number of tasks for a client without one.
     pub sender: usize,
     pub userdef: f64,
     /// Interrupt mode: already handed to a trap (or found to have none).
     pub dispatched: bool,
+}
+
+/// Slots of queues outside the tasks are numbered from here (a task's slot is its
+/// index + 1), so that the two never meet.
+const OUTSIDE_SLOTS: usize = 1 << 20;
+
+/// Messages a client's queue holds at most, as the front end keeps its own.
+const OUTSIDE_MAX_MESSAGES: usize = 1000;
+
+/// A queue of a client of the controller (an RWS client's DIPC queue): the tasks
+/// send to it by its name; the client takes the messages.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OutsideQueue {
+    pub name: String,
+    /// The largest message it takes, in RMQ's bytes.
+    pub max_msg_size: usize,
+    pub messages: VecDeque<RmqMessage>,
+}
+
+/// Where a slot leads: a task's queue or a client's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Dest {
+    Task(usize),
+    Outside(usize),
 }
 
 /// The task's side of RMQ.
@@ -66,16 +93,22 @@ fn me(ctx: &Ctx<'_>) -> usize {
     ctx.resources.tasking.index()
 }
 
-/// The task an rmqslot argument names; ERR_RMQ_INVALID when it names none.
-fn slot(ctx: &Ctx<'_>, arg: &Value) -> Result<usize, RapidError> {
+/// The queue an rmqslot argument names; ERR_RMQ_INVALID when it names none (a
+/// client's queue closed since counts as none).
+fn slot(ctx: &Ctx<'_>, arg: &Value) -> Result<Dest, RapidError> {
     let (_, handle) = ctx.handle_arg(arg, "an rmqslot")?;
+    let shared = &ctx.resources.tasking.shared;
     handle
         .and_then(|h| (h as usize).checked_sub(1))
-        .filter(|&t| t < ctx.resources.tasking.shared.tasks.len())
+        .and_then(|n| match n.checked_sub(OUTSIDE_SLOTS) {
+            Some(k) => shared.outside.get(k).and_then(Option::as_ref).map(|_| Dest::Outside(k)),
+            None => (n < shared.tasks.len()).then_some(Dest::Task(n)),
+        })
         .ok_or_else(|| ctx.error(Err::RmqInvalid, "the rmqslot names no queue (RMQFindSlot first)"))
 }
 
-/// Stores task `task`'s slot in an rmqslot argument.
+/// Stores slot `task` in an rmqslot argument: a task's index, or
+/// `OUTSIDE_SLOTS + k` for client queue `k`.
 fn store_slot(ctx: &mut Ctx<'_>, arg: &Value, task: usize) -> Result<(), RapidError> {
     let (opaque, _) = ctx.handle_arg(arg, "an rmqslot")?;
     let slot = Opaque { ty: opaque.ty, state: OpaqueState::Handle(task as u32 + 1) };
@@ -89,36 +122,51 @@ fn find_slot(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let found = tasks.iter().position(|t| {
         t.rmq.rmq_type != rapid_config::sys::RmqType::None && format!("RMQ_{}", t.name).eq_ignore_ascii_case(&name)
     });
-    let Some(task) = found else {
+    // A client's queue is found by its name as the client gave it.
+    // uncertain: whether RobotWare compares a client queue's name with letter case.
+    let outside = || {
+        let queues = &ctx.resources.tasking.shared.outside;
+        queues.iter().position(|q| q.as_ref().is_some_and(|q| q.name.eq_ignore_ascii_case(&name)))
+    };
+    let Some(slot) = found.or_else(|| outside().map(|k| OUTSIDE_SLOTS + k)) else {
         return Err(ctx.error(Err::RmqName, format!("no RAPID message queue is named `{name}`")));
     };
-    store_slot(ctx, &args[0], task)?;
+    store_slot(ctx, &args[0], slot)?;
     Ok(None)
 }
 
 /// `RMQGetSlotName(Slot)`: the slot's name.
 fn get_slot_name(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let task = slot(ctx, &args[0])?;
-    let name = format!("RMQ_{}", ctx.resources.tasking.shared.tasks[task].name);
+    let shared = &ctx.resources.tasking.shared;
+    let name = match slot(ctx, &args[0])? {
+        Dest::Task(task) => format!("RMQ_{}", shared.tasks[task].name),
+        Dest::Outside(k) => shared.outside[k].as_ref().map(|q| q.name.clone()).unwrap_or_default(),
+    };
     Ok(Some(Value::Str(name.into())))
 }
 
 /// `RMQSendMessage Slot, SendData [\UserDef]`.
 fn send_message(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let task = slot(ctx, &args[0])?;
+    let dest = slot(ctx, &args[0])?;
     let data = ctx.value(&args[1])?;
     let userdef = ctx.opt_num(args.get(2))?.unwrap_or(NO_USERDEF);
-    send(ctx, task, &data, userdef)?;
+    send(ctx, dest, &data, userdef)?;
     Ok(None)
 }
 
-/// Puts a message into task `task`'s queue, as the controller checks it.
-fn send(ctx: &mut Ctx<'_>, task: usize, data: &Value, userdef: f64) -> Result<(), RapidError> {
+/// Puts a message into the queue of `dest`, as the controller checks it.
+fn send(ctx: &mut Ctx<'_>, dest: Dest, data: &Value, userdef: f64) -> Result<(), RapidError> {
     let names = &ctx.resources.rmq.names;
     let (Some((datatype, dims)), Some(datum)) = (datum::type_of(data, names), datum::to_datum(data, names)) else {
         return Err(ctx.error(Err::RmqValue, "only value data can be sent in a message"));
     };
     let sender = me(ctx);
+    let task = match dest {
+        Dest::Task(task) => task,
+        Dest::Outside(k) => {
+            return send_outside(ctx, k, RmqMessage { datatype, dims, data: datum, sender, userdef, dispatched: false })
+        }
+    };
     let shared = &ctx.resources.tasking.shared;
     let config = shared.tasks[task].rmq;
     if config.rmq_type == rapid_config::sys::RmqType::None {
@@ -137,6 +185,25 @@ fn send(ctx: &mut Ctx<'_>, task: usize, data: &Value, userdef: f64) -> Result<()
     if let Some(queue) = shared.queues.get_mut(task) {
         queue.push_back(message);
     }
+    shared.epoch += 1;
+    Ok(())
+}
+
+/// Puts a task's message into client queue `k`: its size limit is the client's.
+fn send_outside(ctx: &mut Ctx<'_>, k: usize, message: RmqMessage) -> Result<(), RapidError> {
+    let shared = &mut ctx.resources.tasking.shared;
+    let Some(queue) = shared.outside.get_mut(k).and_then(Option::as_mut) else {
+        return Err(ctx.error(Err::RmqInvalid, "the client's queue has been closed"));
+    };
+    let size = datum::size(&message.data);
+    if size > queue.max_msg_size {
+        let text = format!("a {size}-byte message is larger than the queue's {} bytes", queue.max_msg_size);
+        return Err(ctx.error(Err::RmqMsgSize, text));
+    }
+    if queue.messages.len() >= OUTSIDE_MAX_MESSAGES {
+        return Err(ctx.error(Err::RmqFull, "the receiving queue is full"));
+    }
+    queue.messages.push_back(message);
     shared.epoch += 1;
     Ok(())
 }
@@ -163,32 +230,39 @@ pub enum OutsideRefusal {
 
 /// Puts a message from outside the tasks into task `task`'s queue (an RWS client's
 /// DIPC send to `RMQ_<task>`): `data` as the controller's IPC messages to RAPID carry
-/// it, `<datatype>;<value>` (`num;42`, `string;"hi"`), the value a RAPID literal. The
-/// queue's rules are RMQSendMessage's. Only atomic value types travel this way yet
-/// (num, dnum, bool, string): a record's value cannot be read without its task's type
-/// table here, and is refused as not supported.
+/// it, `<datatype>;<value>` (`num;42`, `string;"hi"`, `pos;[1,2,3]`), the value a RAPID
+/// literal of the type as the receiving task declares it (`names`, its types), or a
+/// one-dimensional array of such values (`num;[1,2,3]`: an array of three num). `from`
+/// is the client's own queue, if it gave one that is open: the message's sender slot.
+/// The queue's rules are RMQSendMessage's.
+// uncertain: RobotWare's text for an array message is not in the public record; an
+// aggregate that is no literal of the type is read as an array of it, and arrays of
+// two or three dimensions are refused.
 pub fn send_from_outside(
     shared: &mut super::tasking::SharedTasking,
     task: usize,
-    data: &str,
-    userdef: f64,
+    message: OutsideMessage<'_>,
+    names: &TypeNames,
 ) -> Result<(), OutsideRefusal> {
     use OutsideRefusal::{BadData, Queue, Unsupported};
+    let data = message.data;
     let Some((type_name, literal)) = data.split_once(';') else {
         return Err(BadData(format!("`{data}`: a message to a RAPID task is `<datatype>;<value>`")));
     };
-    let template = match type_name.trim().to_ascii_lowercase().as_str() {
+    let (type_name, literal) = (type_name.trim(), literal.trim());
+    let template = match type_name.to_ascii_lowercase().as_str() {
         "num" => Value::Num(0.0),
         "dnum" => Value::Dnum(0.0),
         "bool" => Value::Bool(false),
         "string" => Value::Str("".into()),
-        other => return Err(Unsupported(format!("messages of type `{other}` from outside the tasks"))),
+        _ => names.template(type_name).ok_or_else(|| {
+            Unsupported(format!("type `{type_name}`: the receiving task has no value type of that name"))
+        })?,
     };
-    let value = super::read_literal(literal.trim(), &template)
-        .ok_or_else(|| BadData(format!("`{}` is no {} literal", literal.trim(), type_name.trim())))?;
-    let names = TypeNames::default();
-    let (Some((datatype, dims)), Some(datum)) = (datum::type_of(&value, &names), datum::to_datum(&value, &names))
-    else {
+    let value = super::read_literal(literal, &template)
+        .or_else(|| array_literal(literal, &template))
+        .ok_or_else(|| BadData(format!("`{literal}` is no {type_name} literal (nor an array of {type_name})")))?;
+    let (Some((datatype, dims)), Some(datum)) = (datum::type_of(&value, names), datum::to_datum(&value, names)) else {
         return Err(BadData(format!("`{data}` cannot be sent")));
     };
     let Some(config) = shared.tasks.get(task).map(|t| t.rmq) else { return Err(Queue("no such task".to_owned())) };
@@ -202,13 +276,106 @@ pub fn send_from_outside(
     if shared.queues.get(task).map_or(0, |q| q.len()) >= config.max_no_of_msg as usize {
         return Err(Queue("the queue is full".to_owned()));
     }
-    let sender = outside_sender(shared);
+    let sender = message
+        .from
+        .and_then(|name| outside_queue(shared, name))
+        .map_or_else(|| outside_sender(shared), |k| OUTSIDE_SLOTS + k);
+    let userdef = message.userdef;
     let message = RmqMessage { datatype, dims, data: datum, sender, userdef, dispatched: false };
     if let Some(queue) = shared.queues.get_mut(task) {
         queue.push_back(message);
     }
     shared.epoch += 1;
     Ok(())
+}
+
+/// A client's message to a task, as [`send_from_outside`] takes it.
+#[derive(Debug, Clone, Copy)]
+pub struct OutsideMessage<'a> {
+    /// `<datatype>;<value>`.
+    pub data: &'a str,
+    pub userdef: f64,
+    /// The client's own queue, the message's sender.
+    pub from: Option<&'a str>,
+}
+
+/// Arrays a message from outside may hold at most.
+const MAX_OUTSIDE_ELEMENTS: usize = 10_000;
+
+/// `literal` read as a one-dimensional array of `template`'s type: as many elements as
+/// the aggregate has items.
+fn array_literal(literal: &str, template: &Value) -> Option<Value> {
+    let n = top_level_items(literal)?;
+    if n > MAX_OUTSIDE_ELEMENTS {
+        return None;
+    }
+    let shape =
+        Value::Array(Box::new(crate::value::Array { dims: [n as u32, 0, 0], elems: vec![template.clone(); n] }));
+    super::read_literal(literal, &shape)
+}
+
+/// The number of items of an aggregate `[a, b, …]` (outside strings and inner
+/// aggregates); `None` when the text is no aggregate.
+fn top_level_items(text: &str) -> Option<usize> {
+    let inner = text.trim().strip_prefix('[')?.strip_suffix(']')?;
+    if inner.trim().is_empty() {
+        return None;
+    }
+    let (mut depth, mut in_string, mut items) = (0usize, false, 1usize);
+    for c in inner.chars() {
+        match c {
+            // A quote inside a string is written twice: it toggles back at once.
+            '"' => in_string = !in_string,
+            '[' if !in_string => depth += 1,
+            ']' if !in_string => depth = depth.checked_sub(1)?,
+            ',' if !in_string && depth == 0 => items += 1,
+            _ => {}
+        }
+    }
+    Some(items)
+}
+
+/// The index of the open client queue named `name` (any letter case).
+fn outside_queue(shared: &super::tasking::SharedTasking, name: &str) -> Option<usize> {
+    shared.outside.iter().position(|q| q.as_ref().is_some_and(|q| q.name.eq_ignore_ascii_case(name)))
+}
+
+/// Opens client queue `name` (its messages at most `max_msg_size` bytes) for the tasks
+/// to send to; false when one of that name is open already.
+pub fn open_outside_queue(shared: &mut super::tasking::SharedTasking, name: &str, max_msg_size: usize) -> bool {
+    if outside_queue(shared, name).is_some() {
+        return false;
+    }
+    let queue = OutsideQueue { name: name.to_owned(), max_msg_size, messages: VecDeque::new() };
+    // A closed queue's place is taken again: its old slots then name the new one.
+    match shared.outside.iter().position(Option::is_none) {
+        Some(k) => shared.outside[k] = Some(queue),
+        None => shared.outside.push(Some(queue)),
+    }
+    true
+}
+
+/// Closes client queue `name`, its messages dropped; false when none is open.
+pub fn close_outside_queue(shared: &mut super::tasking::SharedTasking, name: &str) -> bool {
+    let Some(k) = outside_queue(shared, name) else { return false };
+    shared.outside[k] = None;
+    true
+}
+
+/// Takes the oldest message the tasks sent to client queue `name`: `None` when the
+/// queue is empty or not open.
+pub fn take_outside_message(shared: &mut super::tasking::SharedTasking, name: &str) -> Option<RmqMessage> {
+    let k = outside_queue(shared, name)?;
+    shared.outside[k].as_mut()?.messages.pop_front()
+}
+
+/// The name of the queue a message's sender slot names: `RMQ_<task>`, a client's
+/// queue, or empty for a client without one.
+pub fn sender_name(shared: &super::tasking::SharedTasking, sender: usize) -> String {
+    match sender.checked_sub(OUTSIDE_SLOTS) {
+        Some(k) => shared.outside.get(k).and_then(Option::as_ref).map(|q| q.name.clone()).unwrap_or_default(),
+        None => shared.tasks.get(sender).map(|t| format!("RMQ_{}", t.name)).unwrap_or_default(),
+    }
 }
 
 /// Keeps `message` in the rmqmessage argument (reusing the entry it holds).
@@ -319,10 +486,10 @@ fn read_wait(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 fn send_wait(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     require_synchronous(ctx, "RMQSendWait")?;
     if !is_waiting_here(ctx) {
-        let task = slot(ctx, &args[0])?;
+        let dest = slot(ctx, &args[0])?;
         let data = ctx.value(&args[1])?;
         let userdef = ctx.opt_num(args.get(2))?.unwrap_or(NO_USERDEF);
-        send(ctx, task, &data, userdef)?;
+        send(ctx, dest, &data, userdef)?;
     }
     let answer = ctx.value(&args[4])?;
     let Some(want) = datum::type_of(&answer, &ctx.resources.rmq.names) else {
