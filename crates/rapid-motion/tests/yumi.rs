@@ -293,4 +293,36 @@ mod planned {
         let reached = arm_angle(Side::Right, &[j[0], j[1], j[2], j[3], j[4], j[5], -80.0]);
         assert!((reached - arm_angle(Side::Right, &goal)).abs() < 1e-5, "{reached}");
     }
+
+    #[test]
+    fn the_elbow_turns_about_a_standing_tcp() {
+        // Same TCP pose, axis 7 from −100° to −92°: the TCP stands (to the IK's tolerance)
+        // while the arm's other axes follow axis 7, and the move takes at least 8° at
+        // 180°/s = 1/22.5 s.
+        let model = find_model("ROB_R_14000_05_05").unwrap();
+        let kin = model.kinematics();
+        let start: Joints7 = [10.0, -110.0, 20.0, 10.0, 50.0, 10.0, -100.0];
+        let here = forward(Side::Right, &start);
+        let mut planner = Planner::new(six(&start), AccelLimits::nominal(&model.max_speeds));
+        planner.set_eax(Some([start[6]; 6]));
+        let ext = axis7_move(start[6], -92.0);
+        let mut moves: Vec<_> =
+            planner.push_with(&kin, &request(Target::Linear(here)), Some(&ext)).unwrap().into_iter().collect();
+        moves.extend(planner.flush());
+        let m = moves.last().unwrap();
+        assert!(m.end - m.start >= 8.0 / 180.0, "{}", m.end - m.start);
+        let mut turned = 0.0f64;
+        for sample in m.samples(&kin, DEFAULT_STEP) {
+            let q7 = m.eax_at(sample.time).unwrap()[0];
+            let j = sample.joints;
+            let fk = forward(Side::Right, &[j[0], j[1], j[2], j[3], j[4], j[5], q7]);
+            assert!((fk.translation.vector - here.translation.vector).norm() < 1e-4, "{}", sample.time);
+            assert!(fk.rotation.angle_to(&here.rotation) < 1e-6);
+            turned = turned.max((j[0] - start[0]).abs());
+        }
+        assert!(turned > 0.1, "axis 1 follows the elbow: {turned}");
+        let end = m.sample(&kin, m.end);
+        assert_eq!(m.eax_end().unwrap()[0], -92.0);
+        assert!((end.joints[0] - start[0]).abs() > 0.1);
+    }
 }

@@ -143,6 +143,11 @@ pub(crate) fn prepare<K: Kinematics + ?Sized>(
     prepared.wobj = request.wobj;
     if let Some(ext) = ext {
         super::external::pace(&mut prepared, ext, &speed, settings.acc_factor())?;
+        if prepared.axes_only && ext7.is_some() && !prepared.seeds.is_empty() {
+            // A 7-axis arm's elbow turning about a standing TCP: its arm axes follow
+            // (`ik_along`) and bound the pace as on any path.
+            prepared.limits.cap = prepared.limits.cap.min(axis_cap(&prepared.seeds, &max_speeds));
+        }
     }
     if let Some(time) = settings.move_time {
         let k = settings.speed_factor();
@@ -352,10 +357,16 @@ pub(crate) fn ik_along<K: Kinematics + ?Sized>(
     ext7: Option<&ExternalMove>,
 ) -> Result<Vec<(f64, Joints)>, MotionError> {
     let length = geom.length();
+    // A 7-axis arm turning its elbow about a standing TCP: the path is the external
+    // axes' own, of unit length (`external::pace`), and the arm follows axis 7 along it.
+    let turn7 = ext7.map_or(0.0, |e| (e.to[0] - e.from[0]).abs());
+    let elbow_only = length <= EPS_LEN && turn7 > 1e-9;
+    let span = if elbow_only { 1.0 } else { length };
     let solve = |s: f64, seed: &Joints| match ext7 {
         Some(ext) => {
-            let f = if length > EPS_LEN { s / length } else { 1.0 };
-            solve_at(&crate::kinematics::AtAxes { kin, eax: ext.at(f) }, &geom.at(s), mount, seed)
+            let f = if span > EPS_LEN { s / span } else { 1.0 };
+            let at = if elbow_only { geom.at(length) } else { geom.at(s) };
+            solve_at(&crate::kinematics::AtAxes { kin, eax: ext.at(f) }, &at, mount, seed)
         }
         None => solve_at(kin, &geom.at(s), mount, seed),
     };
@@ -364,16 +375,17 @@ pub(crate) fn ik_along<K: Kinematics + ?Sized>(
         Metric::Mm => length,
         _ => 0.0,
     };
-    // About one sample per 20 mm or 5°, within bounds.
-    let wanted = (tcp_len / 20.0).ceil() + (angle / 5.0).ceil();
+    // About one sample per 20 mm or 5° (of the TCP, or of axis 7 turning alone), within
+    // bounds.
+    let wanted = (tcp_len / 20.0).ceil() + (angle / 5.0).ceil() + if elbow_only { (turn7 / 5.0).ceil() } else { 0.0 };
     let n = if wanted.is_finite() { (wanted as usize).clamp(2, MAX_SAMPLES) } else { 2 };
     let mut seeds = Vec::with_capacity(n + 1);
     seeds.push((0.0, *q0));
     let mut seed = *q0;
     let mut budget = super::continuity::MAX_ADDED;
     for i in 1..=n {
-        let s_prev = length * (i - 1) as f64 / n as f64;
-        let s = length * i as f64 / n as f64;
+        let s_prev = span * (i - 1) as f64 / n as f64;
+        let s = span * i as f64 / n as f64;
         let q = solve(s, &seed)?;
         seed = super::continuity::bridge((kin, &solve), (s_prev, seed), (s, q), &mut seeds, &mut budget)?;
     }
