@@ -395,7 +395,7 @@ pub(super) fn joint_move(
 
 /// A 7-axis arm's seven axes at a robtarget move's target (its arm angle in eax_a),
 /// axis 7 kept for the move (`arm7.rs`); `None` for other robots.
-fn arm_target(
+pub(super) fn arm_target(
     ctx: &mut Ctx<'_>,
     chain: &rapid_motion::frames::FrameChain,
     target: &Value,
