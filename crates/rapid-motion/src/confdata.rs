@@ -27,6 +27,9 @@ pub enum ConfMatch {
 /// and cfx from the wrist centre's side of axis 1, its side of the lower arm and the
 /// sign of axis 5 (motion.md §3.7 table).
 pub fn confdata_of(kin: &Opw, joints: &Joints) -> ConfData {
+    if let Some(arm) = kin.seventh() {
+        return crate::kinematics::yumi::confdata(&arm.joints7(joints, None));
+    }
     let cfx = kin.pallet_cfx(joints).unwrap_or_else(|| cfx_of(kin.params(), joints));
     [quadrant(joints[0]), quadrant(joints[3]), quadrant(joints[5]), cfx]
 }

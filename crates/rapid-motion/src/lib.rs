@@ -77,4 +77,22 @@ pub trait Kinematics {
             .min_by(|a, b| distance(a).total_cmp(&distance(b)))
             .ok_or(MotionError::OutOfReach)
     }
+
+    /// [`Kinematics::forward`] with the external axes at `eax`: a 7-axis arm (the
+    /// YuMi's) carries its axis 7 in `eax_a`; other arms ignore them.
+    fn forward_at(&self, joints: &Joints, _eax: &external::Eax) -> Pose {
+        self.forward(joints)
+    }
+
+    /// [`Kinematics::inverse_near`] with the external axes at `eax` (a 7-axis arm's
+    /// axis 7 held at `eax_a`).
+    fn inverse_near_at(&self, flange: &Pose, seed: &Joints, _eax: &external::Eax) -> Result<Joints, MotionError> {
+        self.inverse_near(flange, seed)
+    }
+
+    /// Whether the arm has a 7th axis in `eax_a`: the planner then gives every
+    /// kinematics call along a path the external axes there.
+    fn redundant(&self) -> bool {
+        false
+    }
 }

@@ -5,6 +5,7 @@
 //! (rs-opw-kinematics presets and the ROS-Industrial URDFs, cross-checked there).
 //! Lengths are stored in millimetres.
 
+use crate::kinematics::yumi::{self, Side};
 use crate::kinematics::{Opw, OpwParams, PalletParams};
 
 /// One robot variant: its name as ABB writes it, what its name may be written as,
@@ -30,6 +31,9 @@ pub struct RobotModel {
     /// The "max TCP velocity" of ABB's product specification, mm/s, where we have it;
     /// `None` where not (see [`RobotModel::tcp_speed`]).
     pub max_tcp_speed: Option<f64>,
+    /// An arm of the IRB 14000 YuMi: a 7-axis arm whose axis 7 rides in `extax.eax_a`
+    /// (`kinematics/yumi.rs`); `limits` and `max_speeds` are then those of axes 1..6.
+    pub yumi: Option<Side>,
 }
 
 impl RobotModel {
@@ -57,9 +61,22 @@ impl RobotModel {
 
     /// The kinematics of this model, with its nominal joint limits.
     pub fn kinematics(&self) -> Opw {
-        match self.pallet {
-            Some(pallet) => Opw::palletizer(pallet, self.limits, self.max_speeds),
-            None => Opw::new(self.opw, self.limits, self.max_speeds),
+        match (self.pallet, self.yumi) {
+            (_, Some(side)) => Opw::yumi(side, self.limits, self.max_speeds),
+            (Some(pallet), None) => Opw::palletizer(pallet, self.limits, self.max_speeds),
+            (None, None) => Opw::new(self.opw, self.limits, self.max_speeds),
+        }
+    }
+
+    /// Where the robot stands when the system starts: its calibration position, all
+    /// axes 0 (a YuMi arm's axes 1..6 of [`yumi::calibration`]).
+    pub fn calibration(&self) -> crate::Joints {
+        match self.yumi {
+            Some(side) => {
+                let q = yumi::calibration(side);
+                [q[0], q[1], q[2], q[3], q[4], q[5]]
+            }
+            None => [0.0; 6],
         }
     }
 
@@ -84,9 +101,14 @@ pub fn palletizers() -> &'static [RobotModel] {
     PALLETIZERS
 }
 
-/// Every built-in model: the 6-axis arms, then the palletizers.
+/// The two arms of the IRB 14000 YuMi (ROB_R, then ROB_L).
+pub fn yumi_arms() -> &'static [RobotModel] {
+    YUMI
+}
+
+/// Every built-in model: the 6-axis arms, the palletizers, then the YuMi's arms.
 pub fn all_models() -> impl Iterator<Item = &'static RobotModel> {
-    MODELS.iter().chain(PALLETIZERS)
+    MODELS.iter().chain(PALLETIZERS).chain(YUMI)
 }
 
 /// The model a name stands for, or `None` when no built-in model fits.
@@ -99,6 +121,9 @@ pub fn all_models() -> impl Iterator<Item = &'static RobotModel> {
 /// integer a handling capacity in kg or a reach in centimetres (`58` for 0.58 m).
 pub fn find_model(name: &str) -> Option<&'static RobotModel> {
     let parsed = ParsedName::of(name)?;
+    if parsed.family == "14000" {
+        return Some(yumi_arm(name));
+    }
     let mut best: Option<(usize, &'static RobotModel)> = None;
     for model in all_models().filter(|m| m.families.contains(&parsed.family.as_str())) {
         let Some(score) = parsed.score(model) else { continue };
@@ -116,16 +141,26 @@ pub fn names_a_family(name: &str) -> bool {
 }
 
 /// The robot family a name belongs to when it is one real cells use that we have no
-/// kinematics for yet (`ROB_L_14000_0.5_0.5` → the IRB 14000 YuMi), so that the
+/// kinematics for yet (`ROB1_910SC_0.55_3` → the IRB 910SC SCARA), so that the
 /// refusal can say so; `None` for families we have and names we do not recognise.
 pub fn unsupported_family(name: &str) -> Option<&'static str> {
     let family = ParsedName::of(name)?.family;
     Some(match family.as_str() {
-        "14000" | "14050" => "IRB 14000 YuMi (7-axis arms, the arm angle in extax.eax_a)",
+        "14050" => "IRB 14050 single-arm YuMi (a 7-axis arm)",
         "910sc" | "910" | "920" | "920t" => "IRB 910SC/920 SCARA (4 axes)",
         "360" | "365" | "390" => "IRB 360/365/390 FlexPicker (a delta robot)",
         _ => return None,
     })
+}
+
+/// The YuMi arm a name of the IRB 14000 names: the left arm for a name with an `L` or
+/// `LEFT` part (MOC.cfg's `ROB_L_14000_05_05`, a public backup's type; `ROB_L_14000_0.5_0.5`),
+/// else the right arm (`ROB_R_…`, and a bare `IRB 14000`: ROB_R is the system's first
+/// robot). The one variant (0.5 kg, 0.5 m) answers whatever numbers follow.
+fn yumi_arm(name: &str) -> &'static RobotModel {
+    let left =
+        name.to_ascii_lowercase().split([' ', '_', '-', '/', ',', '\t']).any(|part| part == "l" || part == "left");
+    &YUMI[usize::from(left)]
 }
 
 /// A robot name split into its family and the numbers after it.
@@ -255,79 +290,79 @@ static MODELS: &[RobotModel] = &[
     RobotModel { name: "IRB 120-3/0.58", families: &["120"], payloads: &[3], reaches: &[0.58],
         opw: opw(0.0, -0.070, 0.290, 0.270, 0.302, 0.072), limits: IRB120_LIMITS,
         max_speeds: [250.0, 250.0, 250.0, 320.0, 320.0, 420.0],
-        max_tcp_speed: Some(6200.0), pallet: None },
+        max_tcp_speed: Some(6200.0), pallet: None, yumi: None },
     RobotModel { name: "IRB 120T-3/0.58", families: &["120t"], payloads: &[3], reaches: &[0.58],
         opw: opw(0.0, -0.070, 0.290, 0.270, 0.302, 0.072), limits: IRB120_LIMITS,
         max_speeds: [250.0, 250.0, 250.0, 420.0, 590.0, 600.0],
-        max_tcp_speed: Some(6200.0), pallet: None },
+        max_tcp_speed: Some(6200.0), pallet: None, yumi: None },
     // uncertain: motion.md gives the limits of the 140T only; the 140 is taken to share them.
     RobotModel { name: "IRB 140-6/0.81", families: &["140", "140t"], payloads: &[6], reaches: &[0.81],
         opw: opw(0.070, 0.0, 0.352, 0.360, 0.380, 0.065),
         limits: [sym(180.0), (-90.0, 110.0), (-230.0, 50.0), sym(200.0), sym(115.0), sym(400.0)],
         max_speeds: [250.0, 250.0, 260.0, 360.0, 360.0, 450.0],
-        max_tcp_speed: Some(2500.0), pallet: None },
+        max_tcp_speed: Some(2500.0), pallet: None, yumi: None },
     RobotModel { name: "IRB 1200-5/0.9", families: &["1200"], payloads: &[5], reaches: &[0.9],
         opw: IRB1200_GEOMETRY_5_90,
         limits: [sym(170.0), (-100.0, 130.0), (-200.0, 70.0), sym(270.0), sym(130.0), sym(360.0)],
         max_speeds: [288.0, 240.0, 300.0, 400.0, 405.0, 600.0],
-        max_tcp_speed: Some(8400.0), pallet: None },
+        max_tcp_speed: Some(8400.0), pallet: None, yumi: None },
     RobotModel { name: "IRB 1200-7/0.7", families: &["1200"], payloads: &[7], reaches: &[0.7],
         opw: opw(0.0, -0.042, 0.3991, 0.350, 0.351, 0.082),
         limits: [sym(170.0), (-100.0, 135.0), (-200.0, 70.0), sym(270.0), sym(130.0), sym(360.0)],
         max_speeds: [288.0, 240.0, 300.0, 400.0, 405.0, 600.0],
-        max_tcp_speed: None, pallet: None },
+        max_tcp_speed: None, pallet: None, yumi: None },
     RobotModel { name: "IRB 1600-6/1.2", families: &["1600"], payloads: &[6, 10], reaches: &[1.2],
         opw: opw(0.150, 0.0, 0.4865, 0.475, 0.600, 0.065), limits: IRB1600_LIMITS_12,
         max_speeds: [150.0, 160.0, 170.0, 320.0, 400.0, 450.0],
-        max_tcp_speed: None, pallet: None },
+        max_tcp_speed: None, pallet: None, yumi: None },
     RobotModel { name: "IRB 1600-10/1.45", families: &["1600"], payloads: &[8, 10], reaches: &[1.45],
         opw: opw(0.150, 0.0, 0.4865, 0.700, 0.600, 0.065),
         limits: [sym(180.0), (-90.0, 120.0), (-245.0, 65.0), sym(200.0), sym(115.0), sym(400.0)],
         max_speeds: [180.0, 180.0, 200.0, 400.0, 400.0, 460.0],
-        max_tcp_speed: None, pallet: None },
+        max_tcp_speed: None, pallet: None, yumi: None },
     // uncertain: the reaches that name the 2400 (1.55 m for /10, 1.5 m for /16) are from memory.
     RobotModel { name: "IRB 2400-10/1.55", families: &["2400"], payloads: &[10, 16], reaches: &[1.55, 1.5],
         opw: opw(0.100, -0.135, 0.615, 0.705, 0.755, 0.085),
         limits: [sym(180.0), (-100.0, 110.0), (-60.0, 65.0), sym(200.0), sym(120.0), sym(400.0)],
         max_speeds: [150.0, 150.0, 150.0, 360.0, 360.0, 450.0],
-        max_tcp_speed: None, pallet: None },
+        max_tcp_speed: None, pallet: None, yumi: None },
     RobotModel { name: "IRB 2600-12/1.65", families: &["2600"], payloads: &[12], reaches: &[1.65],
         opw: opw(0.150, -0.115, 0.445, 0.700, 0.795, 0.085),
         limits: [sym(180.0), (-155.0, 95.0), (-155.0, 75.0), sym(400.0), sym(120.0), sym(400.0)],
         max_speeds: [175.0, 175.0, 175.0, 360.0, 360.0, 500.0],
-        max_tcp_speed: None, pallet: None },
+        max_tcp_speed: None, pallet: None, yumi: None },
     RobotModel { name: "IRB 4600-60/2.05", families: &["4600"], payloads: &[60], reaches: &[2.05],
         opw: opw(0.175, -0.175, 0.495, 0.900, 0.960, 0.135), limits: IRB4600_LIMITS,
         max_speeds: [175.0, 175.0, 175.0, 250.0, 250.0, 360.0],
-        max_tcp_speed: None, pallet: None },
+        max_tcp_speed: None, pallet: None, yumi: None },
     RobotModel { name: "IRB 4600-40/2.55", families: &["4600"], payloads: &[40], reaches: &[2.55],
         opw: opw(0.175, -0.175, 0.495, 1.095, 1.270, 0.135), limits: IRB4600_LIMITS,
         max_speeds: [175.0, 175.0, 175.0, 250.0, 250.0, 360.0],
-        max_tcp_speed: None, pallet: None },
+        max_tcp_speed: None, pallet: None, yumi: None },
     RobotModel { name: "IRB 4600-20/2.50", families: &["4600"], payloads: &[20], reaches: &[2.50],
         opw: opw(0.175, -0.175, 0.495, 1.095, 1.2305, 0.085), limits: IRB4600_LIMITS,
         max_speeds: [175.0, 175.0, 175.0, 360.0, 360.0, 500.0],
-        max_tcp_speed: None, pallet: None },
+        max_tcp_speed: None, pallet: None, yumi: None },
     RobotModel { name: "IRB 6640-185/2.8", families: &["6640"], payloads: &[185], reaches: &[2.8],
         opw: opw(0.320, -0.200, 0.780, 1.075, 1.392, 0.200),
         limits: [sym(170.0), (-65.0, 85.0), (-180.0, 70.0), sym(300.0), sym(120.0), sym(360.0)],
         max_speeds: [100.0, 90.0, 90.0, 170.0, 140.0, 190.0],
-        max_tcp_speed: None, pallet: None },
+        max_tcp_speed: None, pallet: None, yumi: None },
     RobotModel { name: "IRB 6700-200/2.60", families: &["6700"], payloads: &[200], reaches: &[2.60],
         opw: opw(0.320, -0.200, 0.780, 1.125, 1.1425, 0.200),
         limits: [sym(170.0), (-65.0, 85.0), (-180.0, 70.0), sym(300.0), sym(130.0), sym(360.0)],
         max_speeds: [110.0, 110.0, 110.0, 190.0, 150.0, 210.0],
-        max_tcp_speed: None, pallet: None },
+        max_tcp_speed: None, pallet: None, yumi: None },
     RobotModel { name: "IRB 6700-235/2.65", families: &["6700"], payloads: &[235], reaches: &[2.65],
         opw: opw(0.320, -0.200, 0.780, 1.135, 1.1825, 0.200),
         limits: [sym(170.0), (-65.0, 85.0), (-180.0, 70.0), sym(300.0), sym(130.0), sym(360.0)],
         max_speeds: [100.0, 90.0, 90.0, 170.0, 120.0, 190.0],
-        max_tcp_speed: None, pallet: None },
+        max_tcp_speed: None, pallet: None, yumi: None },
     RobotModel { name: "IRB 7600-150/3.5", families: &["7600"], payloads: &[150], reaches: &[3.5],
         opw: opw(0.410, -0.165, 0.780, 1.075, 2.012, 0.250),
         limits: [sym(180.0), (-60.0, 85.0), (-180.0, 60.0), sym(300.0), sym(100.0), sym(360.0)],
         max_speeds: [100.0, 60.0, 60.0, 100.0, 100.0, 190.0],
-        max_tcp_speed: None, pallet: None },
+        max_tcp_speed: None, pallet: None, yumi: None },
 ];
 
 #[rustfmt::skip]
@@ -347,28 +382,53 @@ static PALLETIZERS: &[RobotModel] = &[
         opw: NO_OPW, pallet: Some(pallet(615.0, 100.0, 705.0, 650.0, 120.0, 181.0)),
         limits: pallet_limits(180.0, (-28.0, 85.0), (-17.0, 119.0)),
         max_speeds: pallet_speeds(150.0, 150.0, 150.0, 400.0),
-        max_tcp_speed: None },
+        max_tcp_speed: None, yumi: None },
     RobotModel { name: "IRB 460-110/2.4", families: &["460"], payloads: &[110], reaches: &[2.4],
         opw: NO_OPW, pallet: Some(pallet(745.0, 260.0, 945.0, 1025.0, 225.0, 251.5)),
         limits: pallet_limits(165.0, (-40.0, 85.0), (-20.0, 120.0)),
         max_speeds: pallet_speeds(145.0, 110.0, 120.0, 400.0),
-        max_tcp_speed: None },
+        max_tcp_speed: None, yumi: None },
     RobotModel { name: "IRB 660-180/3.15", families: &["660"], payloads: &[180], reaches: &[3.15],
         opw: NO_OPW, pallet: Some(IRB660),
         limits: pallet_limits(180.0, (-42.0, 82.0), (-20.0, 120.0)),
         max_speeds: pallet_speeds(130.0, 130.0, 130.0, 300.0),
-        max_tcp_speed: None },
+        max_tcp_speed: None, yumi: None },
     RobotModel { name: "IRB 660-250/3.15", families: &["660"], payloads: &[250], reaches: &[3.15],
         opw: NO_OPW, pallet: Some(IRB660),
         limits: pallet_limits(180.0, (-42.0, 82.0), (-20.0, 120.0)),
         max_speeds: pallet_speeds(95.0, 95.0, 95.0, 240.0),
-        max_tcp_speed: None },
+        max_tcp_speed: None, yumi: None },
     RobotModel { name: "IRB 760-450/3.18", families: &["760"], payloads: &[450], reaches: &[3.18],
         opw: NO_OPW, pallet: Some(pallet(814.5, 300.0, 1280.0, 1350.0, 290.0, 269.0)),
         limits: pallet_limits(180.0, (-42.0, 82.0), (-20.0, 120.0)),
         max_speeds: pallet_speeds(85.0, 85.0, 85.0, 190.0),
-        max_tcp_speed: None },
+        max_tcp_speed: None, yumi: None },
 ];
+
+/// The IRB 14000 YuMi's arms: axes 1..6 of `kinematics::yumi::LIMITS` and `SPEEDS`
+/// (axis 7 rides in eax_a, see `kinematics/yumi.rs`); their ranges agree with a public
+/// YuMi backup's MOC.cfg `ARM` bounds (±2.94088 rad = ±168.5° on axis 1, −2.50455 ..
+/// 0.759218 rad = −143.5° .. 43.5° on axis 2, …), and its `MOTION_PLANNER
+/// -linear_max_speed 1.5` gives the TCP speed, 1.5 m/s.
+static YUMI: &[RobotModel] =
+    &[yumi_model("IRB 14000-0.5/0.5 ROB_R", Side::Right), yumi_model("IRB 14000-0.5/0.5 ROB_L", Side::Left)];
+
+const fn yumi_model(name: &'static str, side: Side) -> RobotModel {
+    let l = yumi::LIMITS;
+    let v = yumi::SPEEDS;
+    RobotModel {
+        name,
+        families: &["14000"],
+        payloads: &[],
+        reaches: &[0.5],
+        opw: NO_OPW,
+        pallet: None,
+        limits: [l[0], l[1], l[2], l[3], l[4], l[5]],
+        max_speeds: [v[0], v[1], v[2], v[3], v[4], v[5]],
+        max_tcp_speed: Some(1500.0),
+        yumi: Some(side),
+    }
+}
 
 #[cfg(test)]
 mod tests {
@@ -413,12 +473,26 @@ mod tests {
 
     #[test]
     fn families_we_lack_are_named() {
-        assert!(unsupported_family("ROB_L_14000_0.5_0.5").is_some_and(|f| f.contains("YuMi")));
+        assert_eq!(unsupported_family("ROB_L_14000_0.5_0.5"), None);
+        assert!(unsupported_family("ROB1_14050_0.5_0.5").is_some_and(|f| f.contains("YuMi")));
         assert!(unsupported_family("ROB1_910SC_0.55_3").is_some_and(|f| f.contains("SCARA")));
         assert_eq!(unsupported_family("ROB1_120_0.58_3"), None);
         assert_eq!(unsupported_family("KUKA KR6"), None);
         assert!(names_a_family("ROB1_910SC_0.55_3") && names_a_family("IRB 999"));
         assert!(!names_a_family("ROB1") && !names_a_family("ROB_L"));
+    }
+
+    #[test]
+    fn yumi_types_name_their_arm() {
+        // A public YuMi backup's MOC.cfg writes `ROB_R_14000_05_05` and `ROB_L_14000_05_05`.
+        assert_eq!(find_model("ROB_R_14000_05_05").and_then(|m| m.yumi), Some(Side::Right));
+        assert_eq!(find_model("ROB_L_14000_05_05").and_then(|m| m.yumi), Some(Side::Left));
+        assert_eq!(find_model("ROB_L_14000_0.5_0.5").and_then(|m| m.yumi), Some(Side::Left));
+        assert_eq!(find_model("IRB 14000").and_then(|m| m.yumi), Some(Side::Right));
+        let left = find_model("ROB_L_14000_0.5_0.5").unwrap();
+        assert_eq!(left.limits[1], (-143.5, 43.5));
+        assert_eq!(left.calibration(), [0.0, -130.0, 30.0, 0.0, 40.0, 0.0]);
+        assert_eq!(default_model().calibration(), [0.0; 6]);
     }
 
     #[test]

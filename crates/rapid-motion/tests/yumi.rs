@@ -189,3 +189,140 @@ fn limits_are_abb_numbered_axis_7_last() {
     assert_eq!(limit_violation(&[0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 170.0]), Some(7));
     assert_eq!(limit_violation(&[0.0, 0.0, 90.0, 0.0, 0.0, 0.0, 0.0]), Some(3));
 }
+
+#[test]
+fn inverse_with_axis_7_held_round_trips() {
+    use rapid_motion::kinematics::yumi::inverse_locked;
+    let mut next = rng(0x9E37_79B9_7F4A_7C15);
+    for k in 0..60 {
+        let side = if k % 2 == 0 { Side::Left } else { Side::Right };
+        let joints: Joints7 = std::array::from_fn(|i| {
+            let (lo, hi) = LIMITS[i];
+            let margin = 0.15 * (hi - lo);
+            lo + margin + next() * (hi - lo - 2.0 * margin)
+        });
+        let seed: [f64; 6] = std::array::from_fn(|i| joints[i] + (next() - 0.5) * 10.0);
+        let target = forward(side, &joints);
+        let got = inverse_locked(side, &target, joints[6], &seed).unwrap_or_else(|e| panic!("{e} for {joints:?}"));
+        let back = forward(side, &[got[0], got[1], got[2], got[3], got[4], got[5], joints[6]]);
+        assert!((back.translation.vector - target.translation.vector).norm() < 1e-5, "{got:?} for {joints:?}");
+        assert!(back.rotation.angle_to(&target.rotation) < 1e-7);
+    }
+}
+
+/// A YuMi arm in the planner: axis 7 rides in the external axes' eax_a.
+mod planned {
+    use super::*;
+    use rapid_motion::external::ExternalMove;
+    use rapid_motion::kinematics::yumi::calibration;
+    use rapid_motion::plan::{AccelLimits, MoveRequest, Planner, SpeedData, Target, ZoneData, DEFAULT_STEP};
+    use rapid_motion::{find_model, Kinematics};
+
+    fn axis7_move(from: f64, to: f64) -> ExternalMove {
+        let mut ext =
+            ExternalMove { from: [from; 6], to: [from; 6], max_speed: [0.0; 6], acc: [0.0; 6], linear: [false; 6] };
+        (ext.to[0], ext.max_speed[0], ext.acc[0]) = (to, 180.0, 1200.0);
+        ext
+    }
+
+    fn request(target: Target) -> MoveRequest {
+        let speed = SpeedData::predefined("v200").unwrap();
+        let zone = ZoneData::predefined("fine").unwrap();
+        MoveRequest { target, speed, zone, tool: Pose::identity(), held_object: None, wobj: Pose::identity() }
+    }
+
+    fn six(q: &Joints7) -> [f64; 6] {
+        [q[0], q[1], q[2], q[3], q[4], q[5]]
+    }
+
+    #[test]
+    fn a_joint_move_takes_axis_7_along() {
+        let model = find_model("ROB_L_14000_05_05").unwrap();
+        let kin = model.kinematics();
+        let home = calibration(Side::Left);
+        let goal: Joints7 = [20.0, -100.0, 10.0, 30.0, 60.0, -20.0, 90.0];
+        let mut planner = Planner::new(six(&home), AccelLimits::nominal(&model.max_speeds));
+        let ext = axis7_move(home[6], goal[6]);
+        let mut moves: Vec<_> =
+            planner.push_with(&kin, &request(Target::Joints(six(&goal))), Some(&ext)).unwrap().into_iter().collect();
+        moves.extend(planner.flush());
+        let last = moves.last().unwrap();
+        assert_eq!(last.eax_end().unwrap()[0], 90.0);
+        // Axis 7 moves 45°, at most 180°/s: the move takes at least 0.25 s.
+        assert!(last.end - moves[0].start >= 0.25);
+        // Every sample's flange is where its seven axes put it.
+        for sample in moves.iter().flat_map(|m| m.samples(&kin, DEFAULT_STEP)) {
+            let q7 =
+                moves.iter().find_map(|m| (sample.time <= m.end).then(|| m.eax_at(sample.time))).flatten().unwrap()[0];
+            let j = sample.joints;
+            let fk = forward(Side::Left, &[j[0], j[1], j[2], j[3], j[4], j[5], q7]);
+            assert!((fk.translation.vector - sample.flange.translation.vector).norm() < 1e-9);
+        }
+        let end = last.sample(&kin, last.end);
+        assert!((end.flange.translation.vector - forward(Side::Left, &goal).translation.vector).norm() < 1e-9);
+        assert!(kin.redundant());
+    }
+
+    #[test]
+    fn a_linear_move_keeps_to_its_line_and_ends_at_the_arm_angle() {
+        let model = find_model("ROB_R_14000_05_05").unwrap();
+        let kin = model.kinematics();
+        let start: Joints7 = [10.0, -110.0, 20.0, 10.0, 50.0, 10.0, -100.0];
+        let goal: Joints7 = [25.0, -95.0, 5.0, 20.0, 55.0, 0.0, -80.0];
+        let (p0, p1) = (forward(Side::Right, &start), forward(Side::Right, &goal));
+        let mut planner = Planner::new(six(&start), AccelLimits::nominal(&model.max_speeds));
+        planner.set_eax(Some([start[6]; 6]));
+        let ext = axis7_move(start[6], goal[6]);
+        let mut moves: Vec<_> =
+            planner.push_with(&kin, &request(Target::Linear(p1)), Some(&ext)).unwrap().into_iter().collect();
+        moves.extend(planner.flush());
+        let m = moves.last().unwrap();
+        let line = p1.translation.vector - p0.translation.vector;
+        for sample in m.samples(&kin, DEFAULT_STEP) {
+            let q7 = m.eax_at(sample.time).unwrap()[0];
+            let j = sample.joints;
+            let fk = forward(Side::Right, &[j[0], j[1], j[2], j[3], j[4], j[5], q7]);
+            // The solved axes put the flange on the path, and the path is the line.
+            assert!((fk.translation.vector - sample.flange.translation.vector).norm() < 1e-4, "{}", sample.time);
+            let off = sample.flange.translation.vector - p0.translation.vector;
+            assert!(off.cross(&line).norm() / line.norm() < 1e-6);
+        }
+        let end = m.sample(&kin, m.end);
+        assert!((end.flange.translation.vector - p1.translation.vector).norm() < 1e-5);
+        let j = end.joints;
+        let reached = arm_angle(Side::Right, &[j[0], j[1], j[2], j[3], j[4], j[5], -80.0]);
+        assert!((reached - arm_angle(Side::Right, &goal)).abs() < 1e-5, "{reached}");
+    }
+
+    #[test]
+    fn the_elbow_turns_about_a_standing_tcp() {
+        // Same TCP pose, axis 7 from −100° to −92°: the TCP stands (to the IK's tolerance)
+        // while the arm's other axes follow axis 7, and the move takes at least 8° at
+        // 180°/s = 1/22.5 s.
+        let model = find_model("ROB_R_14000_05_05").unwrap();
+        let kin = model.kinematics();
+        let start: Joints7 = [10.0, -110.0, 20.0, 10.0, 50.0, 10.0, -100.0];
+        let here = forward(Side::Right, &start);
+        let mut planner = Planner::new(six(&start), AccelLimits::nominal(&model.max_speeds));
+        planner.set_eax(Some([start[6]; 6]));
+        let ext = axis7_move(start[6], -92.0);
+        let mut moves: Vec<_> =
+            planner.push_with(&kin, &request(Target::Linear(here)), Some(&ext)).unwrap().into_iter().collect();
+        moves.extend(planner.flush());
+        let m = moves.last().unwrap();
+        assert!(m.end - m.start >= 8.0 / 180.0, "{}", m.end - m.start);
+        let mut turned = 0.0f64;
+        for sample in m.samples(&kin, DEFAULT_STEP) {
+            let q7 = m.eax_at(sample.time).unwrap()[0];
+            let j = sample.joints;
+            let fk = forward(Side::Right, &[j[0], j[1], j[2], j[3], j[4], j[5], q7]);
+            assert!((fk.translation.vector - here.translation.vector).norm() < 1e-4, "{}", sample.time);
+            assert!(fk.rotation.angle_to(&here.rotation) < 1e-6);
+            turned = turned.max((j[0] - start[0]).abs());
+        }
+        assert!(turned > 0.1, "axis 1 follows the elbow: {turned}");
+        let end = m.sample(&kin, m.end);
+        assert_eq!(m.eax_end().unwrap()[0], -92.0);
+        assert!((end.joints[0] - start[0]).abs() > 0.1);
+    }
+}

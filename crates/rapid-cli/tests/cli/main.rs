@@ -62,4 +62,5 @@ mod system_signals;
 mod triggers;
 mod virtual_signals;
 mod vscode;
+mod yumi;
 mod zones;

@@ -38,26 +38,112 @@ pub struct OpwParams {
     pub c4: f64,
 }
 
-/// An OPW arm (or a 4-axis palletizer) with its joint limits and axis speeds: the
-/// kinematics the VM asks.
+/// An OPW arm (or a 4-axis palletizer, or an arm of the YuMi) with its joint limits
+/// and axis speeds: the kinematics the VM asks.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Opw {
     params: OpwParams,
     /// A palletizer's geometry; `params` is then unused.
     pallet: Option<PalletParams>,
+    /// A YuMi arm; `params` is then unused.
+    yumi: Option<Seventh>,
     limits: [(f64, f64); 6],
     speeds: [f64; 6],
 }
 
+/// A YuMi arm behind the 6-axis interface: its axes 1..6 are the interface's joints,
+/// axis 7 rides in the external axes' `eax_a` (as in RAPID's jointtarget). Calls that
+/// pass the external axes ([`Kinematics::forward_at`]) take axis 7 from them; the
+/// others take it where it stands, `axis7`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Seventh {
+    pub side: yumi::Side,
+    /// Axis 7 where the arm stands (the end of its last move), degrees.
+    pub axis7: f64,
+}
+
+impl Seventh {
+    /// The seven axes: `joints` with axis 7 from `eax_a`, or where it stands when
+    /// `eax_a` is unused (9E9) or not given.
+    pub fn joints7(&self, joints: &Joints, eax: Option<&crate::external::Eax>) -> yumi::Joints7 {
+        let q7 = eax.map(|e| e[0]).filter(|q| !crate::external::is_unused(*q)).unwrap_or(self.axis7);
+        [joints[0], joints[1], joints[2], joints[3], joints[4], joints[5], q7]
+    }
+
+    fn forward(&self, joints: &Joints, eax: Option<&crate::external::Eax>) -> Pose {
+        yumi::forward(self.side, &self.joints7(joints, eax))
+    }
+
+    fn inverse_near(
+        &self,
+        flange: &Pose,
+        seed: &Joints,
+        eax: Option<&crate::external::Eax>,
+    ) -> Result<Joints, MotionError> {
+        let q7 = self.joints7(seed, eax)[6];
+        yumi::inverse_locked(self.side, flange, q7, seed)
+    }
+}
+
+/// A kinematics with the external axes standing at `eax`: what the planner hands its
+/// path code for a 7-axis arm, whose axis 7 moves with the path in `eax_a`.
+pub(crate) struct AtAxes<'a, K: ?Sized> {
+    pub(crate) kin: &'a K,
+    pub(crate) eax: crate::external::Eax,
+}
+
+impl<K: Kinematics + ?Sized> Kinematics for AtAxes<'_, K> {
+    fn forward(&self, joints: &Joints) -> Pose {
+        self.kin.forward_at(joints, &self.eax)
+    }
+
+    fn inverse(&self, flange: &Pose) -> Vec<Joints> {
+        self.kin.inverse(flange)
+    }
+
+    fn limits(&self) -> [(f64, f64); 6] {
+        self.kin.limits()
+    }
+
+    fn max_speeds(&self) -> [f64; 6] {
+        self.kin.max_speeds()
+    }
+
+    fn inverse_near(&self, flange: &Pose, seed: &Joints) -> Result<Joints, MotionError> {
+        self.kin.inverse_near_at(flange, seed, &self.eax)
+    }
+}
+
 impl Opw {
     pub fn new(params: OpwParams, limits: [(f64, f64); 6], speeds: [f64; 6]) -> Opw {
-        Opw { params, pallet: None, limits, speeds }
+        Opw { params, pallet: None, yumi: None, limits, speeds }
     }
 
     /// A 4-axis palletizer: axes 1, 2, 3 and 6; the limits of axes 4 and 5 are 0.
     pub fn palletizer(pallet: PalletParams, limits: [(f64, f64); 6], speeds: [f64; 6]) -> Opw {
         let zero = OpwParams { a1: 0.0, a2: 0.0, b: 0.0, c1: 0.0, c2: 0.0, c3: 0.0, c4: 0.0 };
-        Opw { params: zero, pallet: Some(pallet), limits, speeds }
+        Opw { params: zero, pallet: Some(pallet), yumi: None, limits, speeds }
+    }
+
+    /// An arm of the YuMi (limits and speeds of axes 1..6), axis 7 standing at its
+    /// calibration value.
+    pub fn yumi(side: yumi::Side, limits: [(f64, f64); 6], speeds: [f64; 6]) -> Opw {
+        let zero = OpwParams { a1: 0.0, a2: 0.0, b: 0.0, c1: 0.0, c2: 0.0, c3: 0.0, c4: 0.0 };
+        let axis7 = yumi::calibration(side)[6];
+        Opw { params: zero, pallet: None, yumi: Some(Seventh { side, axis7 }), limits, speeds }
+    }
+
+    /// A YuMi arm's side and where its axis 7 stands; `None` for a 6-axis arm.
+    pub fn seventh(&self) -> Option<&Seventh> {
+        self.yumi.as_ref()
+    }
+
+    /// The same YuMi arm with axis 7 standing at `q7` (no change for other arms).
+    pub fn with_axis7(self, q7: f64) -> Opw {
+        match self.yumi {
+            Some(arm) if q7.is_finite() => Opw { yumi: Some(Seventh { axis7: q7, ..arm }), ..self },
+            _ => self,
+        }
     }
 
     /// The palletizer's geometry, for a 4-axis palletizer.
@@ -85,6 +171,12 @@ impl Opw {
     pub fn branches(&self, flange: &Pose, seed: Option<&Joints>) -> Branches {
         // A seed that is not a number cannot guide a free axis; free axes then take 0.
         let seed = seed.filter(|s| s.iter().all(|q| q.is_finite()));
+        if let Some(arm) = &self.yumi {
+            // A 7-axis arm has no eight branches: the one nearest the seed stands for them.
+            let mut branches = [None; 8];
+            branches[0] = arm.inverse_near(flange, seed.unwrap_or(&[0.0; 6]), None).ok();
+            return branches;
+        }
         match &self.pallet {
             Some(pallet) => pallet::branches(pallet, flange, seed),
             None => solve::branches(&self.params, flange, seed),
@@ -115,6 +207,9 @@ impl Opw {
 
 impl Kinematics for Opw {
     fn forward(&self, joints: &Joints) -> Pose {
+        if let Some(arm) = &self.yumi {
+            return arm.forward(joints, None);
+        }
         if let Some(pallet) = &self.pallet {
             return pallet::forward(pallet, joints);
         }
@@ -132,6 +227,9 @@ impl Kinematics for Opw {
     }
 
     fn inverse(&self, flange: &Pose) -> Vec<Joints> {
+        if let Some(arm) = &self.yumi {
+            return arm.inverse_near(flange, &[0.0; 6], None).into_iter().collect();
+        }
         let mut res = Vec::new();
         for solution in self.branches(flange, None).iter().flatten() {
             turns::push_all_within(&mut res, solution, &self.limits);
@@ -153,6 +251,9 @@ impl Kinematics for Opw {
     /// all, `JointLimit` when every solution leaves the limits.
     fn inverse_near(&self, flange: &Pose, seed: &Joints) -> Result<Joints, MotionError> {
         let seed = finite_seed(seed);
+        if let Some(arm) = &self.yumi {
+            return arm.inverse_near(flange, &seed, None);
+        }
         if self.pallet.is_none() {
             if let Some(joints) = solve::seeded(&self.params, flange, &seed, &self.limits) {
                 return Ok(joints);
@@ -160,6 +261,24 @@ impl Kinematics for Opw {
         }
         let branches = self.branches(flange, Some(&seed));
         nearest_within_limits(&branches, &seed, &self.limits)
+    }
+
+    fn forward_at(&self, joints: &Joints, eax: &crate::external::Eax) -> Pose {
+        match &self.yumi {
+            Some(arm) => arm.forward(joints, Some(eax)),
+            None => self.forward(joints),
+        }
+    }
+
+    fn inverse_near_at(&self, flange: &Pose, seed: &Joints, eax: &crate::external::Eax) -> Result<Joints, MotionError> {
+        match &self.yumi {
+            Some(arm) => arm.inverse_near(flange, &finite_seed(seed), Some(eax)),
+            None => self.inverse_near(flange, seed),
+        }
+    }
+
+    fn redundant(&self) -> bool {
+        self.yumi.is_some()
     }
 }
 

@@ -13,9 +13,16 @@
 //! ilVecc/yumift yumi_description/urdf/yumi.xacro; OrebroUniversity/yumi has the same
 //! numbers for the first four joints), in millimetres. Each joint is the URDF's: a
 //! fixed origin (translation, then roll-pitch-yaw), then a turn about its own z.
+//!
+//! In RAPID (checked against public YuMi programs and backups): a jointtarget carries
+//! axis 7 in `extax.eax_a` (yumipy's RAPID servers read `CJointT().extax.eax_a` as
+//! "joint 7"; a public backup's MOC.cfg configures axis 7 as a `SINGLE` `ROB_R_7` /
+//! `ROB_L_7` beside the six `-use_joint_n` of `ROBOT`), and a robtarget carries the
+//! arm angle in `extax.eax_a`: the same backup moves MoveAbsJ with eax_a −58.7° and
+//! MoveL with eax_a −173.7° to one place, so the robtarget's value is no axis value.
 // uncertain: tool0 is taken to be the URDF's last link frame (link_7); the URDF's zero
-// is taken to be ABB's calibration position (ABB's ROS driver passes joint values
-// through unchanged).
+// is taken to be ABB's axis zero (ABB's ROS driver passes joint values through
+// unchanged). ABB's calibration position is elsewhere ([`calibration`]).
 
 use std::f64::consts::PI;
 
@@ -84,6 +91,18 @@ pub const LIMITS: [(f64, f64); 7] = [
 /// The axis speeds, °/s, in the same order: 180 on axes 1, 2, 3 and 7, 400 on the
 /// wrist (the URDFs' velocity limits).
 pub const SPEEDS: [f64; 7] = [180.0, 180.0, 180.0, 400.0, 400.0, 400.0, 180.0];
+
+/// The calibration position of arm `side` (axes 1..6, then 7): axes 2, 3, 5 at −130°,
+/// 30°, 40° and axis 7 at −135° (right) or 135° (left), the others 0 — the
+/// `-cal_position` values (radians) of a public YuMi backup's MOC.cfg `ARM` entries,
+/// the same as its programs' home MoveAbsJ `[[0,-130,30,0,40,0],[∓135,9E9,…]]`.
+pub fn calibration(side: Side) -> Joints7 {
+    let q7 = match side {
+        Side::Right => -135.0,
+        Side::Left => 135.0,
+    };
+    [0.0, -130.0, 30.0, 0.0, 40.0, 0.0, q7]
+}
 
 fn transform(o: &Origin) -> Isometry3<f64> {
     let [r, p, y] = o.rpy;
@@ -242,6 +261,88 @@ fn jacobian(side: Side, flange: &Pose, angle: f64, q: &Joints7) -> SMatrix<f64, 
 
 fn clamp(q: &Joints7) -> Joints7 {
     std::array::from_fn(|i| q[i].clamp(LIMITS[i].0, LIMITS[i].1))
+}
+
+/// Axes 1..6 that put tool0 of arm `side` at `flange` (body frame, mm) with axis 7
+/// held at `q7`, found by damped least squares from `seed` (and, failing that, a few
+/// fixed starts): the arm on a path where axis 7's value is given. `OutOfReach` when no
+/// start converges within [`LIMITS`].
+pub fn inverse_locked(side: Side, flange: &Pose, q7: f64, seed: &[f64; 6]) -> Result<[f64; 6], MotionError> {
+    let finite = flange.translation.vector.iter().all(|v| v.is_finite())
+        && flange.rotation.coords.iter().all(|v| v.is_finite())
+        && q7.is_finite();
+    if !finite {
+        return Err(MotionError::OutOfReach);
+    }
+    let seed: [f64; 6] = std::array::from_fn(|i| {
+        let q = if seed[i].is_finite() { seed[i] } else { 0.0 };
+        q.clamp(LIMITS[i].0, LIMITS[i].1)
+    });
+    let home = calibration(side);
+    let starts = [seed, [home[0], home[1], home[2], home[3], home[4], home[5]], [0.0, -60.0, 20.0, 0.0, 40.0, 0.0]];
+    starts.into_iter().find_map(|start| descend_locked(side, flange, q7, start)).ok_or(MotionError::OutOfReach)
+}
+
+/// The pose error of axes `q` with axis 7 at `q7`: position (mm) and orientation
+/// (rotation vector times [`LEVER`]).
+fn pose_error(side: Side, flange: &Pose, q7: f64, q: &[f64; 6]) -> SVector<f64, 6> {
+    let now = forward(side, &[q[0], q[1], q[2], q[3], q[4], q[5], q7]);
+    let dp = flange.translation.vector - now.translation.vector;
+    let dr = (flange.rotation * now.rotation.inverse()).scaled_axis() * LEVER;
+    SVector::<f64, 6>::from_column_slice(&[dp.x, dp.y, dp.z, dr.x, dr.y, dr.z])
+}
+
+/// [`descend`] over axes 1..6 with axis 7 held.
+fn descend_locked(side: Side, flange: &Pose, q7: f64, start: [f64; 6]) -> Option<[f64; 6]> {
+    let done = |e: &SVector<f64, 6>| {
+        e.fixed_rows::<3>(0).norm() < POSITION_TOLERANCE && e.fixed_rows::<3>(3).norm() / LEVER < ANGLE_TOLERANCE
+    };
+    let (mut q, mut lambda) = (start, 1.0);
+    let mut e = pose_error(side, flange, q7, &q);
+    for _ in 0..ITERATIONS {
+        if done(&e) {
+            return Some(q);
+        }
+        let mut jac = SMatrix::<f64, 6, 6>::zeros();
+        for i in 0..6 {
+            let (mut plus, mut minus) = (q, q);
+            plus[i] += 1e-6_f64.to_degrees();
+            minus[i] -= 1e-6_f64.to_degrees();
+            let col = (pose_error(side, flange, q7, &minus) - pose_error(side, flange, q7, &plus)) / 2e-6;
+            jac.set_column(i, &col);
+        }
+        let damped = jac * jac.transpose() + SMatrix::<f64, 6, 6>::identity() * (lambda * lambda);
+        let step = jac.transpose() * damped.try_inverse()? * e;
+        let next: [f64; 6] = std::array::from_fn(|i| (q[i] + step[i].to_degrees()).clamp(LIMITS[i].0, LIMITS[i].1));
+        let next_e = pose_error(side, flange, q7, &next);
+        if next_e.norm() < e.norm() {
+            (q, e) = (next, next_e);
+            lambda = (lambda * 0.5).max(1e-6);
+        } else {
+            lambda *= 2.0;
+            if lambda > 1e6 {
+                return None;
+            }
+        }
+    }
+    done(&e).then_some(q)
+}
+
+/// The confdata `[cf1, cf4, cf6, cfx]` the controller reports for a YuMi arm's axes.
+/// cf1, cf4 and cf6 are the quadrants of axes 1, 4 and 6 (`floor(q / 90°)`, RAPID's
+/// general rule); cfx is 4, plus 1 when axis 5 is negative.
+// uncertain: the public record does not settle the YuMi's convention. Every robtarget
+// of the public programs we read has cfx 4 or 5, 5 exactly where the neighbouring
+// MoveAbsJ has axis 5 negative, so bit 0 reads as the OPW arms' (axis 5 negative) and
+// bit 2 as always set there; one target with a matching MoveAbsJ (axes 64.5°, …,
+// 155.4°, …, 7.6°) reports cf1 = 1 and cf4 = 2 where floor gives 0 and 1 (rounding to
+// the nearest quarter turn would give them), so cf1/cf4/cf6 are uncertain too. RobotWare
+// also has an "old" arm-angle definition whose targets carry another cfx (event 50488).
+// Moves of a YuMi arm do not choose their solution by confdata: the arm angle and the
+// axes nearest the current ones do.
+pub fn confdata(joints: &Joints7) -> [i32; 4] {
+    let quadrant = |q: f64| if q.is_finite() { (q / 90.0).floor().clamp(-1e9, 1e9) as i32 } else { 0 };
+    [quadrant(joints[0]), quadrant(joints[3]), quadrant(joints[5]), 4 + i32::from(joints[4] < 0.0)]
 }
 
 /// The angle in (−π, π].

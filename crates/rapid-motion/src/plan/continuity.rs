@@ -7,10 +7,10 @@
 //! (50026). From or to the wrist singularity itself axes 4 and 6 may turn as they
 //! need: the pose fixes only their sum there.
 
-use super::mount::Mount;
-use super::path::Geometry;
-use super::segment::solve_at;
 use crate::{Joints, Kinematics, MotionError};
+
+/// Solves the path at a path parameter, near a seed.
+pub(crate) type Solve<'a> = dyn Fn(f64, &Joints) -> Result<Joints, MotionError> + 'a;
 
 /// Neighbouring samples whose axes differ by at most this (°) need no closer look.
 const STEP_DEG: f64 = 10.0;
@@ -24,15 +24,16 @@ pub(crate) const MAX_ADDED: usize = 512;
 
 /// The samples between `a` and the path parameter `s_b`, ending with `s_b` solved
 /// continuously from `a`, appended to `out`; `q_b` is `s_b` solved from `a`'s joints.
-/// Returns the joints at `s_b`.
+/// Returns the joints at `s_b`. `path` is the arm and how the path is solved at a path
+/// parameter from a seed.
 pub(crate) fn bridge<K: Kinematics + ?Sized>(
-    path: (&K, &Geometry, &Mount),
+    path: (&K, &Solve<'_>),
     a: (f64, Joints),
     (s_b, q_b): (f64, Joints),
     out: &mut Vec<(f64, Joints)>,
     budget: &mut usize,
 ) -> Result<Joints, MotionError> {
-    let (kin, geom, mount) = path;
+    let (kin, solve) = path;
     let (s_a, q_a) = a;
     if largest_step(&q_a, &q_b) <= STEP_DEG || wrist_turn(&q_a, &q_b) || *budget == 0 {
         out.push((s_b, q_b));
@@ -43,10 +44,10 @@ pub(crate) fn bridge<K: Kinematics + ?Sized>(
     }
     *budget -= 1;
     let s_mid = (s_a + s_b) / 2.0;
-    let q_mid = solve_at(kin, &geom.at(s_mid), mount, &q_a)?;
+    let q_mid = solve(s_mid, &q_a)?;
     let q_mid = bridge(path, a, (s_mid, q_mid), out, budget)?;
     // The far end again, from the middle: the continuous branch if there is one.
-    let q_b = solve_at(kin, &geom.at(s_b), mount, &q_mid)?;
+    let q_b = solve(s_b, &q_mid)?;
     bridge(path, (s_mid, q_mid), (s_b, q_b), out, budget)
 }
 

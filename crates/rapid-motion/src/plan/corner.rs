@@ -158,7 +158,10 @@ struct Ends {
 /// parabola of the orientation; between moves of the external axes alone, a
 /// parabola of the axes (§2.2.3).
 pub(crate) fn corner<K: Kinematics + ?Sized>(kin: &K, cur: &Prepared, next: &Prepared) -> Option<Corner> {
-    if cur.zone.is_stop() {
+    // uncertain: a 7-axis arm (the YuMi's) stops at its fly-by points: its corner paths,
+    // axis 7 blended with the arm, are not modelled yet. The path and end points are
+    // the programmed ones; only the time differs (longer, as at a stop point).
+    if cur.zone.is_stop() || kin.redundant() {
         return None;
     }
     // §2.2.3: no corner between a move of the TCP and one of the external axes alone.

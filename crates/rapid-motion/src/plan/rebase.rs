@@ -44,7 +44,8 @@ pub(crate) fn rebased<K: Kinematics + ?Sized>(
             drift: by.rotation * drift,
         },
     };
-    let seeds = ik_along(kin, &geom, &prep.mount, &start)?;
+    let ext7 = prep.eax.as_deref().filter(|_| kin.redundant());
+    let seeds = ik_along(kin, &geom, &prep.mount, &start, ext7)?;
     let end_joints = seeds.last().map_or(start, |(_, q)| *q);
     Ok((Prepared { geom, seeds, end_joints, ..prep.clone() }, start))
 }

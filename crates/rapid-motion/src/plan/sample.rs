@@ -109,6 +109,25 @@ impl PlannedMove {
         };
         let (s, v) = span.profile.at(t - span.t0);
         let seed = nearest_seed(&span.seeds, s).unwrap_or(self.end_joints);
+        if kin.redundant() {
+            // A 7-axis arm: axis 7 is where the external axes' track has it now.
+            if let Some(eax) = self.eax_at(t) {
+                return self.sample_on(&crate::kinematics::AtAxes { kin, eax }, t, span, (s, v), &seed);
+            }
+        }
+        self.sample_on(kin, t, span, (s, v), &seed)
+    }
+
+    /// The robot at time `t`, path parameter `s` of `span` at path speed `v`.
+    fn sample_on<K: Kinematics + ?Sized>(
+        &self,
+        kin: &K,
+        t: f64,
+        span: &Span,
+        (s, v): (f64, f64),
+        seed: &Joints,
+    ) -> Sample {
+        let seed = *seed;
         let (joints, flange, tcp) = self.locate(kin, span, s, &seed);
         let tcp_speed = match &span.piece {
             Piece::Corner(path) => match path {

@@ -106,8 +106,11 @@ pub(crate) fn prepare<K: Kinematics + ?Sized>(
     let max_speeds = kin.max_speeds().map(|v| if v.is_finite() && v > 0.0 { v } else { 1.0 });
     let limit = |l: Option<f64>| l.filter(|a| a.is_finite() && *a > 0.0).unwrap_or(f64::INFINITY);
     let (tcp_acc_max, tcp_dec_max) = (limit(settings.tcp_acc_max), limit(settings.tcp_dec_max));
-    let ctx = Ctx { kin, mount: request.mount(), speed, accel, max_speeds, tcp_acc_max, tcp_dec_max };
-    let start_tcp = ctx.tcp(start);
+    // A 7-axis arm's axis 7 moves with the path in eax_a: every kinematics call along
+    // the path is given the external axes there.
+    let ext7 = ext.filter(|_| kin.redundant()).copied();
+    let ctx = Ctx { kin, mount: request.mount(), speed, accel, max_speeds, tcp_acc_max, tcp_dec_max, ext7 };
+    let start_tcp = ctx.tcp(start, 0.0);
     let mut prepared = match request.target {
         Target::Joints(q1) => ctx.joint_move(start, q1)?,
         Target::Linear(to) => {
@@ -140,6 +143,11 @@ pub(crate) fn prepare<K: Kinematics + ?Sized>(
     prepared.wobj = request.wobj;
     if let Some(ext) = ext {
         super::external::pace(&mut prepared, ext, &speed, settings.acc_factor())?;
+        if prepared.axes_only && ext7.is_some() && !prepared.seeds.is_empty() {
+            // A 7-axis arm's elbow turning about a standing TCP: its arm axes follow
+            // (`ik_along`) and bound the pace as on any path.
+            prepared.limits.cap = prepared.limits.cap.min(axis_cap(&prepared.seeds, &max_speeds));
+        }
     }
     if let Some(time) = settings.move_time {
         let k = settings.speed_factor();
@@ -208,11 +216,19 @@ struct Ctx<'k, K: Kinematics + ?Sized> {
     /// PathAccLim/WorldAccLim: the TCP's acceleration and braking on the path, mm/s².
     tcp_acc_max: f64,
     tcp_dec_max: f64,
+    /// The external axes' move of a 7-axis arm (its axis 7 in eax_a); `None` otherwise.
+    ext7: Option<ExternalMove>,
 }
 
 impl<K: Kinematics + ?Sized> Ctx<'_, K> {
-    fn tcp(&self, joints: &Joints) -> Pose {
-        self.mount.path_pose(&self.kin.forward(joints))
+    /// The path pose for `joints` a fraction `f` along the move (where a 7-axis arm's
+    /// axis 7 is then).
+    fn tcp(&self, joints: &Joints, f: f64) -> Pose {
+        let flange = match &self.ext7 {
+            Some(ext) => self.kin.forward_at(joints, &ext.at(f)),
+            None => self.kin.forward(joints),
+        };
+        self.mount.path_pose(&flange)
     }
 
     fn prepared(&self, geom: Geometry, limits: PieceLimits, end_joints: Joints, room: f64) -> Prepared {
@@ -242,7 +258,7 @@ impl<K: Kinematics + ?Sized> Ctx<'_, K> {
         let weights = self.max_speeds.map(|v| 1.0 / v);
         let geom = Geometry::Joint { q0: *q0, q1, weights };
         let length = geom.length();
-        let (tcp0, tcp1) = (self.tcp(q0), self.tcp(&q1));
+        let (tcp0, tcp1) = (self.tcp(q0, 0.0), self.tcp(&q1, 1.0));
         let room = (tcp1.translation.vector - tcp0.translation.vector).norm();
         if length <= EPS_LEN {
             return Ok(self.prepared(geom, PieceLimits { length: 0.0, cap: 1.0, acc: 1.0, dec: 1.0 }, q1, room));
@@ -268,7 +284,10 @@ impl<K: Kinematics + ?Sized> Ctx<'_, K> {
         if !matches!(self.mount, Mount::Held(_)) {
             return Ok(());
         }
-        let end = self.kin.inverse_near(&self.mount.flange(to), start)?;
+        let end = match &self.ext7 {
+            Some(ext) => self.kin.inverse_near_at(&self.mount.flange(to), start, &ext.to)?,
+            None => self.kin.inverse_near(&self.mount.flange(to), start)?,
+        };
         let Some(ori) = geom.ori().copied() else { return Ok(()) };
         let (from, to) = ([start[3], start[4], start[5]], [end[3], end[4], end[5]]);
         geom.set_ori(OriLerp { mode: OriMode::Wrist { from, to }, ..ori });
@@ -280,7 +299,7 @@ impl<K: Kinematics + ?Sized> Ctx<'_, K> {
     fn cartesian_move(&self, geom: Geometry, q0: &Joints, room: f64) -> Result<Prepared, MotionError> {
         let length = geom.length();
         let angle = geom.ori().map_or(0.0, OriLerp::angle);
-        let seeds = ik_along(self.kin, &geom, &self.mount, q0)?;
+        let seeds = ik_along(self.kin, &geom, &self.mount, q0, self.ext7.as_ref())?;
         let end_joints = seeds.last().map_or(*q0, |(_, q)| *q);
         if length <= EPS_LEN {
             let limits = PieceLimits { length: 0.0, cap: 1.0, acc: 1.0, dec: 1.0 };
@@ -328,31 +347,47 @@ fn time_cap(length: f64, amount: f64, speed: f64, eps: f64, zero: &'static str) 
 /// Joint values at evenly spaced points along a Cartesian path, each solved
 /// near the one before, with points added between two whose axes differ much until
 /// the joints are seen to change continuously (`continuity.rs`); the first is `q0`
-/// itself. A jump to another solution branch is an error.
+/// itself. A jump to another solution branch is an error. `ext7` is a 7-axis arm's
+/// external axes' move: axis 7 (eax_a) goes along in proportion to the path.
 pub(crate) fn ik_along<K: Kinematics + ?Sized>(
     kin: &K,
     geom: &Geometry,
     mount: &Mount,
     q0: &Joints,
+    ext7: Option<&ExternalMove>,
 ) -> Result<Vec<(f64, Joints)>, MotionError> {
     let length = geom.length();
+    // A 7-axis arm turning its elbow about a standing TCP: the path is the external
+    // axes' own, of unit length (`external::pace`), and the arm follows axis 7 along it.
+    let turn7 = ext7.map_or(0.0, |e| (e.to[0] - e.from[0]).abs());
+    let elbow_only = length <= EPS_LEN && turn7 > 1e-9;
+    let span = if elbow_only { 1.0 } else { length };
+    let solve = |s: f64, seed: &Joints| match ext7 {
+        Some(ext) => {
+            let f = if span > EPS_LEN { s / span } else { 1.0 };
+            let at = if elbow_only { geom.at(length) } else { geom.at(s) };
+            solve_at(&crate::kinematics::AtAxes { kin, eax: ext.at(f) }, &at, mount, seed)
+        }
+        None => solve_at(kin, &geom.at(s), mount, seed),
+    };
     let angle = geom.ori().map_or(0.0, OriLerp::angle);
     let tcp_len = match geom.metric() {
         Metric::Mm => length,
         _ => 0.0,
     };
-    // About one sample per 20 mm or 5°, within bounds.
-    let wanted = (tcp_len / 20.0).ceil() + (angle / 5.0).ceil();
+    // About one sample per 20 mm or 5° (of the TCP, or of axis 7 turning alone), within
+    // bounds.
+    let wanted = (tcp_len / 20.0).ceil() + (angle / 5.0).ceil() + if elbow_only { (turn7 / 5.0).ceil() } else { 0.0 };
     let n = if wanted.is_finite() { (wanted as usize).clamp(2, MAX_SAMPLES) } else { 2 };
     let mut seeds = Vec::with_capacity(n + 1);
     seeds.push((0.0, *q0));
     let mut seed = *q0;
     let mut budget = super::continuity::MAX_ADDED;
     for i in 1..=n {
-        let s_prev = length * (i - 1) as f64 / n as f64;
-        let s = length * i as f64 / n as f64;
-        let q = solve_at(kin, &geom.at(s), mount, &seed)?;
-        seed = super::continuity::bridge((kin, geom, mount), (s_prev, seed), (s, q), &mut seeds, &mut budget)?;
+        let s_prev = span * (i - 1) as f64 / n as f64;
+        let s = span * i as f64 / n as f64;
+        let q = solve(s, &seed)?;
+        seed = super::continuity::bridge((kin, &solve), (s_prev, seed), (s, q), &mut seeds, &mut budget)?;
     }
     Ok(seeds)
 }

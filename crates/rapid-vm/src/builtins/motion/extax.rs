@@ -31,6 +31,8 @@ pub struct ExternalUnits {
     pub foreign: Vec<super::foreign::ForeignUnit>,
     /// Every unit of another motion task, with its task: (unit, task).
     pub others: Vec<(String, String)>,
+    /// A 7-axis arm's axis 7, carried as eax_a (`arm7.rs`): part of the robot, no unit.
+    pub arm7: Option<ExternalAxis>,
 }
 
 impl ExternalUnits {
@@ -52,9 +54,9 @@ impl ExternalUnits {
         self.find(name).map(|i| self.units[i].active)
     }
 
-    /// Whether the task has any external axis.
+    /// Whether the task has any external axis (a 7-axis arm's axis 7 counts).
     pub fn any(&self) -> bool {
-        self.units.iter().any(|u| !u.unit.axes.is_empty())
+        self.arm7.is_some() || self.units.iter().any(|u| !u.unit.axes.is_empty())
     }
 
     /// The unit of this name (case as the configuration spells it, compared without).
@@ -69,6 +71,9 @@ impl ExternalUnits {
 
     /// The axis at `extjoint` index `j` and whether its unit is active.
     fn axis(&self, j: usize) -> Option<(&ExternalAxis, bool)> {
+        if let Some(arm7) = self.arm7.as_ref().filter(|a| a.index() == j) {
+            return Some((arm7, true));
+        }
         self.units.iter().find_map(|u| u.unit.axes.iter().find(|a| a.index() == j).map(|a| (a, u.active)))
     }
 
@@ -119,6 +124,7 @@ impl super::robot::RobotState {
     /// Gives the robot's task these external units, standing at their start values.
     pub fn configure_external(&mut self, units: Vec<ExternalUnit>) {
         self.external = ExternalUnits::new(units);
+        self.external.arm7 = self.arm_axis7();
         let start = self.external.any().then(|| self.external.start());
         self.planner.set_eax(start);
     }
@@ -131,7 +137,13 @@ impl super::robot::RobotState {
         offsets: Option<&Eax>,
     ) -> Result<Option<ExternalMove>, MotionError> {
         let Some(from) = self.planner.end_eax() else { return Ok(None) };
-        self.external.plan(from, target, offsets, self.independent.external_mask()).map(Some)
+        let mut target = *target;
+        if let Some(q7) = self.next_axis7 {
+            // A robtarget move of a 7-axis arm: eax_a is the arm angle; axis 7 goes
+            // where the target's arm angle puts it (`arm7.rs`).
+            target[0] = q7;
+        }
+        self.external.plan(from, &target, offsets, self.independent.external_mask()).map(Some)
     }
 
     /// Where the external axes are at controller time `t` (as `joints_at` for the
@@ -191,6 +203,7 @@ pub(crate) fn move_ext_j(
     args: &[crate::value::Value],
 ) -> Result<Option<crate::value::Value>, crate::error::RapidError> {
     super::moves::require_motion_task(ctx)?;
+    ctx.resources.robot.next_axis7 = None;
     let robot = &ctx.resources.robot;
     let (mut chain, joints) = (robot.active, robot.end_joints());
     super::moves::on_track(ctx, args, MOVE_EXT_J.to, MOVE_EXT_J.eoffs, &mut chain)?;

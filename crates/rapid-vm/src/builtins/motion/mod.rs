@@ -9,6 +9,7 @@
 //! by [`MotionState::reset`], the system data by their catalogue initial values,
 //! which equal [`Settings::default`].
 
+mod arm7;
 mod calib;
 pub mod conveyor;
 pub mod corr;

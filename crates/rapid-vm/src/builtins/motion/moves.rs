@@ -172,7 +172,10 @@ pub(super) fn go_with(
     }
     let (tool, held_object) = mount_of(&chain);
     let mut request = MoveRequest { target, speed, zone, tool, held_object, wobj: wobj_frame(&chain) };
-    let external = external_target(ctx, args, layout.to, layout.eoffs)?;
+    let external = external_target(ctx, args, layout.to, layout.eoffs);
+    // A 7-axis arm's axis 7 at a robtarget's target is taken by this move alone.
+    ctx.resources.robot.next_axis7 = None;
+    let external = external?;
     if let Some(ext) = &external {
         request.speed.v_tcp *= super::track::track_speed_scale(&ctx.resources.robot, &target, &chain, ext)?;
         if let Target::Circular { .. } = target {
@@ -372,7 +375,13 @@ pub(super) fn joint_move(
 ) -> Res {
     require_robot(ctx)?;
     let chain = frames(ctx, args, layout, true)?;
-    let (pose, conf) = data::robtarget(ctx, &ctx.value(&args[layout.to])?)?;
+    let target = ctx.value(&args[layout.to])?;
+    let (pose, conf) = data::robtarget(ctx, &target)?;
+    if let Some(q) = arm_target(ctx, &chain, &target)? {
+        // A 7-axis arm: the target's arm angle, not its configuration, picks the axes.
+        let joints = [q[0], q[1], q[2], q[3], q[4], q[5]];
+        return go_with(ctx, args, layout, Target::Joints(joints), chain, events);
+    }
     let robot = &ctx.resources.robot;
     let seed = robot.end_joints();
     let joints = if ctx.resources.motion.settings.conf_j {
@@ -382,6 +391,21 @@ pub(super) fn joint_move(
     }
     .map_err(motion_error)?;
     go_with(ctx, args, layout, Target::Joints(joints), chain, events)
+}
+
+/// A 7-axis arm's seven axes at a robtarget move's target (its arm angle in eax_a),
+/// axis 7 kept for the move (`arm7.rs`); `None` for other robots.
+pub(super) fn arm_target(
+    ctx: &mut Ctx<'_>,
+    chain: &rapid_motion::frames::FrameChain,
+    target: &Value,
+) -> Result<Option<rapid_motion::kinematics::yumi::Joints7>, RapidError> {
+    if !super::arm7::has_axis7(&ctx.resources.robot) {
+        return Ok(None);
+    }
+    let (pose, _) = data::robtarget(ctx, target)?;
+    let extax = data::target_extax(ctx, target)?;
+    super::arm7::target_axis7(ctx, &chain.flange_goal(&pose), &extax)
 }
 
 /// `MoveL`: a straight TCP line to a robtarget (ConfL\On: see `check_conf_l`).
@@ -401,6 +425,7 @@ pub(super) fn linear_move(
     let chain = frames(ctx, args, layout, true)?;
     let target = ctx.value(&args[layout.to])?;
     let to = tcp_in_base(ctx, &chain, &target)?;
+    arm_target(ctx, &chain, &target)?;
     let result = go_with(ctx, args, layout, Target::Linear(to), chain, events)?;
     check_conf_l(ctx, &target)?;
     Ok(result)
@@ -411,8 +436,10 @@ pub(super) fn linear_move(
 /// execution stops.
 // uncertain: the controller also watches axes 1, 4, 6 along the path; only the end is
 // checked here, with the same neighbours ConfJ accepts.
+// A 7-axis arm's target is reached by its arm angle: its confdata is not checked.
+// uncertain: the YuMi's use of confdata in moves is not in the public record.
 fn check_conf_l(ctx: &Ctx<'_>, target: &Value) -> Result<(), RapidError> {
-    if !ctx.resources.motion.settings.conf_l {
+    if !ctx.resources.motion.settings.conf_l || super::arm7::has_axis7(&ctx.resources.robot) {
         return Ok(());
     }
     let (_, programmed) = data::robtarget(ctx, target)?;
@@ -445,6 +472,7 @@ pub(super) fn circular_move(
     let via = tcp_in_base(ctx, &chain, &ctx.value(&args[layout.cir.unwrap_or(1)])?)?;
     let target = ctx.value(&args[layout.to])?;
     let to = tcp_in_base(ctx, &chain, &target)?;
+    arm_target(ctx, &chain, &target)?;
     let result = go_with(ctx, args, layout, Target::Circular { via, to }, chain, events)?;
     check_conf_l(ctx, &target)?;
     Ok(result)
@@ -640,6 +668,8 @@ pub(super) fn abs_joint_move(
     events: Vec<super::robot::PathEvent>,
 ) -> Res {
     require_motion_task(ctx)?;
+    // A jointtarget's eax_a is a 7-axis arm's axis 7 itself.
+    ctx.resources.robot.next_axis7 = None;
     let chain = frames(ctx, args, layout, false)?;
     let mut joints = data::jointtarget(ctx, &ctx.value(&args[layout.to])?)?;
     if !moves_robot(ctx) {

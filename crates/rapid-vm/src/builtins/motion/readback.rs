@@ -252,8 +252,11 @@ pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         None => {
             let robot = &mut ctx.resources.robot;
             let joints = robot.joints_at(now);
-            let (flange, conf) = robot.flange_of(&joints);
-            (flange, conf, robot.extax_read(now))
+            // A 7-axis arm's axis 7 is in the external axes; its eax_a reads the arm angle.
+            let eax = robot.eax_at(now);
+            let (flange, conf) = robot.flange_at(&joints, eax.as_ref());
+            let extax = robot.extax_read(now);
+            (flange, conf, robot.robtarget_extax(&joints, eax.as_ref(), extax))
         }
     };
     let pose = chain.target_of(&flange);
@@ -280,7 +283,11 @@ pub(crate) fn c_pos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let now = ctx.time;
     let robot = &mut ctx.resources.robot;
     let joints = robot.joints_at(now);
-    let pose = chain.target_of(&robot.kin.forward(&joints));
+    let pose = match robot.kin.redundant() {
+        // A 7-axis arm: axis 7 where the external axes have it now.
+        true => chain.target_of(&robot.flange_at(&joints, robot.eax_at(now).as_ref()).0),
+        false => chain.target_of(&robot.kin.forward(&joints)),
+    };
     Ok(Some(data::pos_value(ctx, &pose)?))
 }
 
@@ -291,8 +298,16 @@ pub(crate) fn calc_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let target = ctx.value(&args[at.target])?;
     let joints = data::jointtarget(ctx, &target)?;
     let extax = data::target_extax(ctx, &target)?;
+    let mut extax = extax;
     let chain = target_frames(ctx, args.get(at.tool), args.get(at.wobj), &extax, false)?;
-    let (pose, conf) = chain.robtarget_of(&ctx.resources.robot.kin, &joints);
+    let (pose, conf) = match super::arm7::flange_of_target(&ctx.resources.robot, &joints, extax[0]) {
+        // A 7-axis arm: axis 7 from the jointtarget's eax_a, the robtarget's is the arm angle.
+        Some((flange, conf, angle)) => {
+            extax[0] = angle;
+            (chain.target_of(&flange), conf)
+        }
+        None => chain.robtarget_of(&ctx.resources.robot.kin, &joints),
+    };
     Ok(Some(super::frame::with_extax(&data::robtarget_value(ctx, &pose, conf)?, &extax)))
 }
 
@@ -311,7 +326,16 @@ pub(crate) fn calc_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let chain = target_frames(ctx, args.get(at.tool), args.get(at.wobj), &extax, present(args.get(at.use_cur)))?;
     let now = ctx.time;
     let seed = ctx.resources.robot.joints_at(now);
-    let found = chain.joints_for(&ctx.resources.robot.kin, &pose, &conf, &seed, ConfMatch::Compliant);
+    let mut extax = extax;
+    let found = match super::arm7::solve7(&ctx.resources.robot, &chain.flange_goal(&pose), extax[0]) {
+        // A 7-axis arm: the robtarget's arm angle picks the axes; eax_a returns axis 7.
+        Ok(Some(q)) => {
+            extax[0] = q[6];
+            Ok([q[0], q[1], q[2], q[3], q[4], q[5]])
+        }
+        Err(e) => Err(e),
+        Ok(None) => chain.joints_for(&ctx.resources.robot.kin, &pose, &conf, &seed, ConfMatch::Compliant),
+    };
     let error_number = args.get(at.error_number).filter(|a| present(Some(a)));
     if let Some(var) = error_number {
         ctx.store(var, Value::Num(0.0))?;

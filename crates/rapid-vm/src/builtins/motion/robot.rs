@@ -208,6 +208,9 @@ pub struct RobotState {
     /// The external axes' part of the next move given (set by the move instruction
     /// just before [`RobotState::push`]).
     pub(super) next_external: Option<rapid_motion::external::ExternalMove>,
+    /// A 7-axis arm's axis 7 at the target of the robtarget move about to be given
+    /// (`arm7.rs`), taken by the move.
+    pub(super) next_axis7: Option<f64>,
     /// The next move given is in the work object of this unit of another task (set by
     /// the move instruction just before [`RobotState::push`]).
     pub(super) next_foreign: Option<usize>,
@@ -230,8 +233,8 @@ impl Default for RobotState {
 impl RobotState {
     pub fn new(model: &'static RobotModel) -> RobotState {
         let kin = model.kinematics();
-        let planner = Planner::new([0.0; 6], AccelLimits::nominal(&model.max_speeds));
-        RobotState {
+        let planner = Planner::new(model.calibration(), AccelLimits::nominal(&model.max_speeds));
+        let mut state = RobotState {
             model,
             kin,
             base_frame: rapid_motion::Pose::identity(),
@@ -267,10 +270,16 @@ impl RobotState {
             external: Default::default(),
             following: Default::default(),
             next_external: None,
+            next_axis7: None,
             next_foreign: None,
             active_foreign: None,
             name: None,
+        };
+        if state.kin.redundant() {
+            // A 7-axis arm's axis 7 rides in eax_a from the start (`arm7.rs`).
+            state.configure_external(Vec::new());
         }
+        state
     }
 
     /// Puts the robot, before it has moved, at axis values `joints` (degrees) instead of
@@ -351,7 +360,12 @@ impl RobotState {
         let (from, eax_from) = (self.planner.end_joints(), self.planner.end_eax());
         let external = self.next_external.take();
         let foreign = self.next_foreign.take();
+        self.next_axis7 = None;
         let done = self.planner.push_with(&self.kin, request, external.as_ref())?;
+        if let Some(eax) = self.planner.end_eax().filter(|_| self.kin.redundant()) {
+            // A 7-axis arm stands with axis 7 where its last move leaves it.
+            self.kin = self.kin.with_axis7(eax[0]);
+        }
         if let Some(f) = foreign {
             self.busy_in(f);
         }

@@ -212,6 +212,13 @@ fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32), places: &Places) -
     // `\T`: the search move takes this long.
     settings.move_time = ctx.opt_num(args.get(places.t))?;
     let rule = places.ext_only.map_or(EOffsRule::Always, EOffsRule::Only);
+    // A 7-axis arm: axis 7 at a robtarget from its arm angle (`arm7.rs`); a
+    // jointtarget's (SearchExtJ) eax_a is axis 7 itself.
+    ctx.resources.robot.next_axis7 = None;
+    if places.ext_only.is_none() {
+        let to = ctx.value(&args[places.to])?;
+        super::moves::arm_target(ctx, &chain, &to)?;
+    }
     let external = super::moves::external_target(ctx, args, places.to, rule)?;
     let now = ctx.time;
     let robot = &mut ctx.resources.robot;

@@ -1,0 +1,50 @@
+//! The IRB 14000 YuMi as a system runs it (issue 20 item 6): two 7-axis arms, ROB_R and
+//! ROB_L, of MOC.cfg types `ROB_R_14000_05_05` / `ROB_L_14000_05_05` (a public backup's
+//! spelling). Axis 7 is a jointtarget's `extax.eax_a`, the arm angle a robtarget's.
+//! The fixture is `tests/systems/yumi`. Expected values by hand: each arm starts at its
+//! calibration position (the backup's MOC.cfg `-cal_position`: axes 2, 3, 5 at −130°,
+//! 30°, 40°; axis 7 at −135° on ROB_R, 135° on ROB_L); a MoveAbsJ's seven values are read
+//! back as given; a MoveL to Offs(p, 20, 10, −15) ends √(20² + 10² + 15²) = 26.93 mm
+//! from p, with p's arm angle; a MoveL that only adds 10° to the arm angle leaves the TCP
+//! where it is and turns axis 7; axis 7 at 170° is outside its ±168.5° range: 50028 for
+//! joint 7, as for any axis out of range.
+
+use std::path::PathBuf;
+
+use crate::fixture::{copy_dir, rapid_in, repo_root, scratch_in, text};
+
+#[test]
+fn a_two_arm_yumi_moves_its_seven_axes_and_keeps_the_arm_angle() {
+    let dir = scratch_in("yumi", "system");
+    let fixture: PathBuf = repo_root().join("tests/systems/yumi");
+    copy_dir(&fixture, &dir);
+    let checked = rapid_in(&dir, &["check", "."]);
+    assert_eq!(checked.status.code(), Some(0), "{}", text(&checked.stdout));
+    let out = rapid_in(&dir, &["run", "--quiet", "."]);
+    assert_eq!(
+        text(&out.stdout),
+        "L start [0,-130,30,0,40,0] 135\n\
+         R start [0,-130,30,0,40,0] -135\n\
+         L axes [10,-120,20,15,35,-10] 100\n\
+         moved TRUE\n\
+         angle kept TRUE\n\
+         elbow turned TRUE\n\
+         axis 7 moved TRUE\n"
+    );
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("50028 Joint 7 out of range"), "{stderr}");
+    assert!(stderr.contains("MainModule.mod:27:5"), "{stderr}");
+}
+
+#[test]
+fn the_robot_flag_names_a_yumi_arm() {
+    // `--robot "IRB 14000"` moves the right arm: it starts with axis 7 at −135°.
+    let dir = scratch_in("yumi", "flag");
+    let program = "MODULE M\n  PROC main()\n    VAR jointtarget j;\n    j := CJointT();\n    \
+                   TPWrite ValToStr(j.robax) + \" \" + ValToStr(j.extax.eax_a);\n  ENDPROC\nENDMODULE\n";
+    crate::fixture::write_files(&dir, &[("m.mod", program)]);
+    let out = rapid_in(&dir, &["run", "--quiet", "--robot", "IRB 14000", "m.mod"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "[0,-130,30,0,40,0] -135\n");
+}
