@@ -545,3 +545,26 @@ fn a_task_without_a_unit_group_reads_the_only_robot() {
         "{stderr}"
     );
 }
+
+/// A folder's `rapid.toml` with only the formatter's `[fmt]` table (docs/fmt.md) is
+/// not a manifest: the folder is checked and run as a folder of modules. An explicit
+/// `.toml` PATH is still read as a manifest, and one without tasks is still refused.
+#[test]
+fn a_rapid_toml_with_only_fmt_settings_leaves_the_folder_a_folder() {
+    let dir = scratch("fmt_only");
+    write(
+        &dir,
+        &[
+            ("proj/rapid.toml", "[fmt]\nindent_width = 4\n"),
+            ("proj/Main.mod", "MODULE Main\n  PROC main()\n    TPWrite \"from the folder\";\n  ENDPROC\nENDMODULE\n"),
+        ],
+    );
+    let check = rapid_in(&dir, &["check", "proj"]);
+    assert!(check.status.success(), "check failed:\n{}", text(&check.stderr));
+    let run = rapid_in(&dir, &["run", "proj"]);
+    assert!(run.status.success(), "run failed:\n{}", text(&run.stderr));
+    assert_eq!(text(&run.stdout), "from the folder\n");
+    let explicit = rapid_in(&dir, &["check", "proj/rapid.toml"]);
+    assert!(!explicit.status.success());
+    assert!(text(&explicit.stdout).contains("the manifest configures no task"), "{}", text(&explicit.stdout));
+}

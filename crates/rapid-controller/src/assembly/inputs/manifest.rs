@@ -33,14 +33,28 @@ const MAX_IDENT: usize = rapid_limits::IDENT_CHARS;
 const RMQ_MAX_MSG_SIZE: i64 = 3000;
 const RMQ_MAX_NO_OF_MSG: i64 = 10;
 
-/// The manifest a PATH names: a `.toml` file, or a folder holding `rapid.toml`.
+/// The manifest a PATH names: a `.toml` file, or a folder holding a `rapid.toml` that
+/// describes a system. A folder's `rapid.toml` holding only tool settings (`[fmt]`, as
+/// docs/fmt.md suggests for a folder of modules) describes none: the folder stays a
+/// folder of modules.
 pub fn manifest_path(path: &Path) -> Option<PathBuf> {
     if path.is_dir() {
         let file = path.join(FILE_NAME);
-        return file.is_file().then_some(file);
+        return (file.is_file() && describes_system(&file)).then_some(file);
     }
     let ext = path.extension()?.to_str()?;
     ext.eq_ignore_ascii_case("toml").then(|| path.to_path_buf())
+}
+
+/// Whether a folder's `rapid.toml` has a table besides the tools' settings. A file
+/// that cannot be read or parsed counts as a manifest, so reading it reports why.
+fn describes_system(file: &Path) -> bool {
+    const TOOL_TABLES: &[&str] = &["fmt"];
+    let Ok(text) = std::fs::read_to_string(file) else { return true };
+    match text.parse::<toml::Table>() {
+        Ok(table) => table.keys().any(|key| !TOOL_TABLES.contains(&key.as_str())),
+        Err(_) => true,
+    }
 }
 
 /// A problem in the manifest: where (byte offsets into its text) and what.
