@@ -377,11 +377,11 @@ fn a_dialog_is_answered_from_the_console_and_pause_stops_a_loop() {
     assert_eq!((routine.as_str(), line), ("main", line_of(SPIN, "TPReadNum")));
     // Nothing precedes main's first statement: RAPID refuses the step backward.
     assert_eq!(client.request("stepBack", json!({"threadId": 1}))["success"], false);
-    // A routine's data cannot be written yet; the refusal says so.
+    // main has no parameter or data `x`: writing it is refused, saying so.
     let scopes = client.ok("scopes", json!({"frameId": frame}));
     let locals = scopes["scopes"][0]["variablesReference"].as_i64().unwrap();
     let refused = client.request("setVariable", json!({"variablesReference": locals, "name": "x", "value": "1"}));
-    assert!(refused["message"].as_str().unwrap_or_default().contains("not supported yet"), "{refused}");
+    assert!(refused["message"].as_str().unwrap_or_default().contains("no parameter or data `x`"), "{refused}");
 
     // A datum changed at the entry keeps its value when the program starts.
     let data = scopes["scopes"][1]["variablesReference"].as_i64().unwrap();
@@ -434,5 +434,71 @@ fn a_log_point_writes_and_a_hit_count_stops_late() {
     assert_eq!(logged, ["tick 0 of 5\n", "tick 1 of 5\n", "tick 2 of 5\n"]);
     let (frame, _, _) = client.top_frame(2);
     assert_eq!(client.evaluate(frame, "ticks"), "3");
+    client.ok("disconnect", json!({}));
+}
+
+const FRAMES: &str = "MODULE Frames
+  VAR num total := 0;
+  VAR pos where := [1, 2, 3];
+  PROC main()
+    VAR num mine := 5;
+    Add total, 10, where;
+    TPWrite \"total \" \\Num:=total;
+    TPWrite \"mine \" \\Num:=mine;
+  ENDPROC
+  PROC Add(INOUT num sum, num inc, VAR pos p)
+    CONST num limit := 99;
+    VAR num scratch := 0;
+    sum := sum + inc;
+    scratch := inc;
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn a_routines_data_and_parameters_are_written_in_any_frame() {
+    let mut client = Client::start(Program(vec![("T_ROB1", "/dap/Frames.mod", FRAMES)]));
+    let line = line_of(FRAMES, "sum := sum + inc;");
+    client.launch_with_breakpoints("/dap/Frames.mod", json!([{"line": line}]));
+    client.event("stopped");
+    let trace = client.ok("stackTrace", json!({"threadId": 1}));
+    let (add, main) =
+        (trace["stackFrames"][0]["id"].as_i64().unwrap(), trace["stackFrames"][1]["id"].as_i64().unwrap());
+    let locals_of = |client: &mut Client, frame: i64| {
+        let scopes = client.ok("scopes", json!({"frameId": frame}));
+        scopes["scopes"][0]["variablesReference"].as_i64().unwrap()
+    };
+    let add_locals = locals_of(&mut client, add);
+    let set = |client: &mut Client, reference: i64, name: &str, value: &str| {
+        client.request("setVariable", json!({"variablesReference": reference, "name": name, "value": value}))
+    };
+    // A parameter passed by value changes in the frame alone.
+    assert_eq!(set(&mut client, add_locals, "inc", "7")["body"]["value"], "7");
+    assert_eq!(client.evaluate(main, "total"), "0");
+    // INOUT writes through to the argument, main's `total` (§1.5).
+    assert_eq!(set(&mut client, add_locals, "sum", "100")["body"]["value"], "100");
+    assert_eq!(client.evaluate(main, "total"), "100");
+    // A component of a VAR parameter, expanded: main's `where` changes.
+    let vars = client.variables(add_locals);
+    let p = value_of(&vars, "p").2;
+    assert!(p > 0, "p expands: {vars:?}");
+    assert_eq!(set(&mut client, p, "y", "20")["body"]["value"], "20");
+    assert_eq!(client.evaluate(main, "where.y"), "20");
+    // Routine data can be written; a CONST and a literal of another type cannot.
+    assert_eq!(set(&mut client, add_locals, "scratch", "-1")["body"]["value"], "-1");
+    let refused = set(&mut client, add_locals, "limit", "1");
+    assert_eq!(refused["success"], false);
+    assert!(refused["message"].as_str().unwrap_or_default().contains("CONST"), "{refused}");
+    assert_eq!(client.evaluate(add, "limit"), "99");
+    let refused = set(&mut client, add_locals, "inc", "\"x\"");
+    assert_eq!(refused["success"], false);
+    assert_eq!(client.evaluate(add, "inc"), "7");
+    // The caller's frame: main's routine data.
+    let main_locals = locals_of(&mut client, main);
+    assert_eq!(set(&mut client, main_locals, "mine", "42")["body"]["value"], "42");
+    // The program goes on with what was set: total = 100 + 7.
+    client.ok("continue", json!({"threadId": 1}));
+    client.output_with("total 107");
+    client.output_with("mine 42");
     client.ok("disconnect", json!({}));
 }
