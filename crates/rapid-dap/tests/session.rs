@@ -349,8 +349,17 @@ fn a_conditional_breakpoint_stops_only_where_it_holds() {
     assert_eq!((stopped["reason"].as_str(), stopped["threadId"].as_u64()), (Some("breakpoint"), Some(2)));
     let (frame, _, at) = client.top_frame(2);
     assert_eq!((at, client.evaluate(frame, "ticks")), (line, "3".to_owned()));
-    let failed = client.request("evaluate", json!({"expression": "Abs(ticks)", "frameId": frame}));
-    assert!(failed["message"].as_str().unwrap_or_default().contains("not supported yet"), "{failed}");
+    // Built-in functions without side effects are called: |3 - 10| = 7; 3 with one
+    // decimal is "3.0"; "ab" + "c" has 3 characters.
+    assert_eq!(client.evaluate(frame, "Abs(ticks - 10)"), "7");
+    assert_eq!(client.evaluate(frame, "NumToStr(ticks, 1)"), "\"3.0\"");
+    assert_eq!(client.evaluate(frame, "StrLen(\"ab\" + \"c\")"), "3");
+    // Sqrt of a negative number raises an error: refused, not raised.
+    let failed = client.request("evaluate", json!({"expression": "Sqrt(-ticks)", "frameId": frame}));
+    assert!(failed["message"].as_str().unwrap_or_default().contains("raise an error"), "{failed}");
+    // A built-in that reads the controller (the clock) has no pure form: refused.
+    let failed = client.request("evaluate", json!({"expression": "CTime()", "frameId": frame}));
+    assert!(failed["message"].as_str().unwrap_or_default().contains("without side effects"), "{failed}");
     client.ok("disconnect", json!({}));
 }
 
@@ -446,6 +455,9 @@ const FRAMES: &str = "MODULE Frames
     TPWrite \"total \" \\Num:=total;
     TPWrite \"mine \" \\Num:=mine;
   ENDPROC
+  FUNC num Twice(num x)
+    RETURN x * 2;
+  ENDFUNC
   PROC Add(INOUT num sum, num inc, VAR pos p)
     CONST num limit := 99;
     VAR num scratch := 0;
@@ -493,6 +505,9 @@ fn a_routines_data_and_parameters_are_written_in_any_frame() {
     let refused = set(&mut client, add_locals, "inc", "\"x\"");
     assert_eq!(refused["success"], false);
     assert_eq!(client.evaluate(add, "inc"), "7");
+    // A function of the program could change the program's state: never run.
+    let refused = client.request("evaluate", json!({"expression": "Twice(inc)", "frameId": add}));
+    assert!(refused["message"].as_str().unwrap_or_default().contains("function of the program"), "{refused}");
     // The caller's frame: main's routine data.
     let main_locals = locals_of(&mut client, main);
     assert_eq!(set(&mut client, main_locals, "mine", "42")["body"]["value"], "42");
