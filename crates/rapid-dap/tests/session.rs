@@ -517,3 +517,91 @@ fn a_routines_data_and_parameters_are_written_in_any_frame() {
     client.output_with("mine 42");
     client.ok("disconnect", json!({}));
 }
+
+const ERRS: &str = "MODULE Errs
+  VAR num zero := 0;
+  VAR num result := 0;
+  PROC main()
+    Safe;
+    result := 10 / zero;
+    TPWrite \"not reached\";
+  ENDPROC
+  PROC Safe()
+    result := 1 / zero;
+  ERROR
+    result := -1;
+    TRYNEXT;
+  ENDPROC
+ENDMODULE
+";
+
+impl Client {
+    /// Launches `ERRS` with the exception filters given.
+    fn launch_with_filters(&mut self, filters: Value) {
+        let init = self.ok("initialize", json!({"adapterID": "rapid"}));
+        let offered: Vec<&str> = init["exceptionBreakpointFilters"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|f| f["filter"].as_str().unwrap())
+            .collect();
+        assert_eq!(offered, ["raised", "uncaught"]);
+        self.ok("launch", json!({"program": "/dap"}));
+        self.event("initialized");
+        self.ok("setExceptionBreakpoints", json!({"filters": filters}));
+        self.ok("configurationDone", json!({}));
+    }
+}
+
+#[test]
+fn errors_stop_where_raised_and_before_they_stop_the_task() {
+    let mut client = Client::start(Program(vec![("T_ROB1", "/dap/Errs.mod", ERRS)]));
+    client.launch_with_filters(json!(["raised", "uncaught"]));
+    // Raised: the task stands at the first statement of Safe's ERROR handler, which
+    // has not run yet.
+    let (stopped, _) = client.event("stopped");
+    assert_eq!(stopped["reason"], "exception");
+    assert!(stopped["text"].as_str().unwrap_or_default().contains("ERR_DIVZERO"), "{stopped}");
+    let (frame, routine, line) = client.top_frame(1);
+    assert_eq!((routine.as_str(), line), ("Safe (ERROR)", line_of(ERRS, "result := -1;")));
+    assert_eq!(client.evaluate(frame, "result"), "0");
+    let info = client.ok("exceptionInfo", json!({"threadId": 1}));
+    assert_eq!((info["exceptionId"].as_str(), info["breakMode"].as_str()), (Some("ERR_DIVZERO"), Some("always")));
+    // Uncaught: main has no ERROR handler; the task stands at the failing statement,
+    // after the handler ran (result -1) and TRYNEXT went on.
+    client.ok("continue", json!({"threadId": 1}));
+    let (stopped, _) = client.event("stopped");
+    assert_eq!(stopped["reason"], "exception");
+    assert!(stopped["text"].as_str().unwrap_or_default().contains("uncaught"), "{stopped}");
+    let (frame, routine, line) = client.top_frame(1);
+    assert_eq!((routine.as_str(), line), ("main", line_of(ERRS, "result := 10 / zero;")));
+    assert_eq!(client.evaluate(frame, "result"), "-1");
+    let info = client.ok("exceptionInfo", json!({"threadId": 1}));
+    assert_eq!(info["breakMode"], "unhandled");
+    // Going on, the task stops with the error: the statement after never runs.
+    client.ok("continue", json!({"threadId": 1}));
+    let (_, output) = client.event("terminated");
+    assert!(output.iter().any(|o| o.contains("ERR_DIVZERO") || o.contains("ended")), "{output:?}");
+    assert!(!output.iter().any(|o| o.contains("not reached")), "{output:?}");
+    client.ok("disconnect", json!({}));
+}
+
+#[test]
+fn without_the_uncaught_filter_only_raised_errors_stop() {
+    let mut client = Client::start(Program(vec![("T_ROB1", "/dap/Errs.mod", ERRS)]));
+    client.launch_with_filters(json!(["raised"]));
+    let (stopped, _) = client.event("stopped");
+    assert_eq!(stopped["reason"], "exception");
+    client.ok("continue", json!({"threadId": 1}));
+    // The next stop would be the uncaught error: none comes, the program ends.
+    loop {
+        let message = client.next_message();
+        assert_ne!(message["event"], "stopped", "{message}");
+        if message["event"] == "terminated" {
+            break;
+        }
+    }
+    let refused = client.request("setExceptionBreakpoints", json!({"filters": ["all"]}));
+    assert_eq!(refused["success"], false);
+    client.ok("disconnect", json!({}));
+}

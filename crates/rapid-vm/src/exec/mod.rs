@@ -10,6 +10,8 @@
 
 pub mod backward;
 mod call;
+mod error_watch;
+pub use error_watch::ErrorStop;
 mod fast;
 mod frames;
 pub mod inspect;
@@ -153,6 +155,8 @@ pub struct Vm {
     /// places, because `Value::Ref` holds a box and is handed one as it is.
     #[allow(clippy::vec_box)]
     place_pool: Vec<Box<Place>>,
+    /// A debugger's exception breakpoints (`error_watch.rs`).
+    error_watch: error_watch::ErrorWatch,
 }
 
 impl Vm {
@@ -193,6 +197,7 @@ impl Vm {
             modules: modules::TaskModules::default(),
             spy_open: Vec::new(),
             place_pool: Vec::new(),
+            error_watch: error_watch::ErrorWatch::default(),
         }
     }
 
@@ -241,6 +246,7 @@ impl Vm {
     /// Runs `code` with no arguments as the first frame (the entry routine or the
     /// load-time initialisers).
     pub fn start(&mut self, code: Rc<Code>) {
+        self.forget_error_stop();
         self.frames.clear();
         self.storage.stack.clear();
         self.exiting = false;
@@ -324,6 +330,11 @@ impl Vm {
         }
         // Messages another task sent while this one did not run.
         self.dispatch_messages();
+        // The task stood stopped at an error no handler takes: now it ends with it.
+        if let Some(exit) = self.take_pending_end() {
+            self.log_if_unhandled(&exit);
+            return exit;
+        }
         while remaining > 0 {
             if self.frames.is_empty() {
                 return Exit::Done;
