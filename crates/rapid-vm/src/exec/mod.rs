@@ -23,6 +23,7 @@ mod late;
 mod log;
 pub mod modules;
 mod num;
+mod setup;
 mod shared;
 mod spy;
 mod statement;
@@ -210,26 +211,6 @@ impl Vm {
     /// The task's files, directories, sockets and robot, to look at.
     pub fn resources(&self) -> &crate::builtins::Resources {
         &self.resources
-    }
-
-    /// The numbers of the predefined errors (read from the ERR_ constants at load).
-    pub fn set_errnos(&mut self, errnos: FxHashMap<&'static str, i32>) {
-        self.errnos = errnos;
-    }
-
-    /// Where INTNO lives (set when a trap starts).
-    pub fn set_intno_global(&mut self, global: Option<u32>) {
-        self.intno_global = global;
-    }
-
-    /// Marks which globals are persistents.
-    pub fn set_pers_globals(&mut self, pers: Vec<bool>) {
-        self.pers_globals = pers;
-    }
-
-    /// Names module-level data for built-ins that take a data name as text (ErrRaise).
-    pub fn set_data_names(&mut self, names: FxHashMap<String, crate::builtins::NamedData>) {
-        self.data_by_name = names;
     }
 
     /// The event log written so far, oldest first.
