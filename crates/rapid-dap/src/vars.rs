@@ -15,8 +15,29 @@ pub(crate) enum Handle {
     /// The I/O system's signals.
     Signals,
     /// A record's components or an array's elements. `path` names the value for
-    /// writing it (`TASK/MODULE/name.comp{2}`); None for a routine's data.
-    Tree { tree: ValueTree, path: Option<String> },
+    /// writing it; None for a value an expression computed.
+    Tree { tree: ValueTree, path: Option<Place> },
+}
+
+/// Where a shown value lives, for writing it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) enum Place {
+    /// Module data or a persistent: `TASK/MODULE/name.comp{2}`.
+    Data(String),
+    /// A parameter or routine datum of a frame, or a part of it: `name.comp{2}`.
+    Local { task: String, frame: usize, path: String },
+}
+
+impl Place {
+    /// The place of part `name` of the value here.
+    pub(crate) fn child(&self, name: &str) -> Place {
+        match self {
+            Place::Data(path) => Place::Data(child_path(path, name)),
+            Place::Local { task, frame, path } => {
+                Place::Local { task: task.clone(), frame: *frame, path: child_path(path, name) }
+            }
+        }
+    }
 }
 
 /// The handles given out since the program last stood still.
@@ -52,7 +73,7 @@ pub(crate) fn child_path(path: &str, name: &str) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{child_path, Handle, Handles};
+    use super::{child_path, Handle, Handles, Place};
 
     #[test]
     fn references_start_at_one_and_are_forgotten() {
@@ -68,5 +89,11 @@ mod tests {
     fn parts_extend_the_path() {
         assert_eq!(child_path("T/M/p", "trans"), "T/M/p.trans");
         assert_eq!(child_path("T/M/grid", "{2,1}"), "T/M/grid{2,1}");
+        let local = Place::Local { task: "T".into(), frame: 1, path: "p".into() };
+        assert_eq!(
+            local.child("trans").child("x"),
+            Place::Local { task: "T".into(), frame: 1, path: "p.trans.x".into() }
+        );
+        assert_eq!(Place::Data("T/M/g".into()).child("{2}"), Place::Data("T/M/g{2}".into()));
     }
 }

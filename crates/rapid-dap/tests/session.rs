@@ -349,8 +349,17 @@ fn a_conditional_breakpoint_stops_only_where_it_holds() {
     assert_eq!((stopped["reason"].as_str(), stopped["threadId"].as_u64()), (Some("breakpoint"), Some(2)));
     let (frame, _, at) = client.top_frame(2);
     assert_eq!((at, client.evaluate(frame, "ticks")), (line, "3".to_owned()));
-    let failed = client.request("evaluate", json!({"expression": "Abs(ticks)", "frameId": frame}));
-    assert!(failed["message"].as_str().unwrap_or_default().contains("not supported yet"), "{failed}");
+    // Built-in functions without side effects are called: |3 - 10| = 7; 3 with one
+    // decimal is "3.0"; "ab" + "c" has 3 characters.
+    assert_eq!(client.evaluate(frame, "Abs(ticks - 10)"), "7");
+    assert_eq!(client.evaluate(frame, "NumToStr(ticks, 1)"), "\"3.0\"");
+    assert_eq!(client.evaluate(frame, "StrLen(\"ab\" + \"c\")"), "3");
+    // Sqrt of a negative number raises an error: refused, not raised.
+    let failed = client.request("evaluate", json!({"expression": "Sqrt(-ticks)", "frameId": frame}));
+    assert!(failed["message"].as_str().unwrap_or_default().contains("raise an error"), "{failed}");
+    // A built-in that reads the controller (the clock) has no pure form: refused.
+    let failed = client.request("evaluate", json!({"expression": "CTime()", "frameId": frame}));
+    assert!(failed["message"].as_str().unwrap_or_default().contains("without side effects"), "{failed}");
     client.ok("disconnect", json!({}));
 }
 
@@ -377,11 +386,11 @@ fn a_dialog_is_answered_from_the_console_and_pause_stops_a_loop() {
     assert_eq!((routine.as_str(), line), ("main", line_of(SPIN, "TPReadNum")));
     // Nothing precedes main's first statement: RAPID refuses the step backward.
     assert_eq!(client.request("stepBack", json!({"threadId": 1}))["success"], false);
-    // A routine's data cannot be written yet; the refusal says so.
+    // main has no parameter or data `x`: writing it is refused, saying so.
     let scopes = client.ok("scopes", json!({"frameId": frame}));
     let locals = scopes["scopes"][0]["variablesReference"].as_i64().unwrap();
     let refused = client.request("setVariable", json!({"variablesReference": locals, "name": "x", "value": "1"}));
-    assert!(refused["message"].as_str().unwrap_or_default().contains("not supported yet"), "{refused}");
+    assert!(refused["message"].as_str().unwrap_or_default().contains("no parameter or data `x`"), "{refused}");
 
     // A datum changed at the entry keeps its value when the program starts.
     let data = scopes["scopes"][1]["variablesReference"].as_i64().unwrap();
@@ -434,5 +443,165 @@ fn a_log_point_writes_and_a_hit_count_stops_late() {
     assert_eq!(logged, ["tick 0 of 5\n", "tick 1 of 5\n", "tick 2 of 5\n"]);
     let (frame, _, _) = client.top_frame(2);
     assert_eq!(client.evaluate(frame, "ticks"), "3");
+    client.ok("disconnect", json!({}));
+}
+
+const FRAMES: &str = "MODULE Frames
+  VAR num total := 0;
+  VAR pos where := [1, 2, 3];
+  PROC main()
+    VAR num mine := 5;
+    Add total, 10, where;
+    TPWrite \"total \" \\Num:=total;
+    TPWrite \"mine \" \\Num:=mine;
+  ENDPROC
+  FUNC num Twice(num x)
+    RETURN x * 2;
+  ENDFUNC
+  PROC Add(INOUT num sum, num inc, VAR pos p)
+    CONST num limit := 99;
+    VAR num scratch := 0;
+    sum := sum + inc;
+    scratch := inc;
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn a_routines_data_and_parameters_are_written_in_any_frame() {
+    let mut client = Client::start(Program(vec![("T_ROB1", "/dap/Frames.mod", FRAMES)]));
+    let line = line_of(FRAMES, "sum := sum + inc;");
+    client.launch_with_breakpoints("/dap/Frames.mod", json!([{"line": line}]));
+    client.event("stopped");
+    let trace = client.ok("stackTrace", json!({"threadId": 1}));
+    let (add, main) =
+        (trace["stackFrames"][0]["id"].as_i64().unwrap(), trace["stackFrames"][1]["id"].as_i64().unwrap());
+    let locals_of = |client: &mut Client, frame: i64| {
+        let scopes = client.ok("scopes", json!({"frameId": frame}));
+        scopes["scopes"][0]["variablesReference"].as_i64().unwrap()
+    };
+    let add_locals = locals_of(&mut client, add);
+    let set = |client: &mut Client, reference: i64, name: &str, value: &str| {
+        client.request("setVariable", json!({"variablesReference": reference, "name": name, "value": value}))
+    };
+    // A parameter passed by value changes in the frame alone.
+    assert_eq!(set(&mut client, add_locals, "inc", "7")["body"]["value"], "7");
+    assert_eq!(client.evaluate(main, "total"), "0");
+    // INOUT writes through to the argument, main's `total` (§1.5).
+    assert_eq!(set(&mut client, add_locals, "sum", "100")["body"]["value"], "100");
+    assert_eq!(client.evaluate(main, "total"), "100");
+    // A component of a VAR parameter, expanded: main's `where` changes.
+    let vars = client.variables(add_locals);
+    let p = value_of(&vars, "p").2;
+    assert!(p > 0, "p expands: {vars:?}");
+    assert_eq!(set(&mut client, p, "y", "20")["body"]["value"], "20");
+    assert_eq!(client.evaluate(main, "where.y"), "20");
+    // Routine data can be written; a CONST and a literal of another type cannot.
+    assert_eq!(set(&mut client, add_locals, "scratch", "-1")["body"]["value"], "-1");
+    let refused = set(&mut client, add_locals, "limit", "1");
+    assert_eq!(refused["success"], false);
+    assert!(refused["message"].as_str().unwrap_or_default().contains("CONST"), "{refused}");
+    assert_eq!(client.evaluate(add, "limit"), "99");
+    let refused = set(&mut client, add_locals, "inc", "\"x\"");
+    assert_eq!(refused["success"], false);
+    assert_eq!(client.evaluate(add, "inc"), "7");
+    // A function of the program could change the program's state: never run.
+    let refused = client.request("evaluate", json!({"expression": "Twice(inc)", "frameId": add}));
+    assert!(refused["message"].as_str().unwrap_or_default().contains("function of the program"), "{refused}");
+    // The caller's frame: main's routine data.
+    let main_locals = locals_of(&mut client, main);
+    assert_eq!(set(&mut client, main_locals, "mine", "42")["body"]["value"], "42");
+    // The program goes on with what was set: total = 100 + 7.
+    client.ok("continue", json!({"threadId": 1}));
+    client.output_with("total 107");
+    client.output_with("mine 42");
+    client.ok("disconnect", json!({}));
+}
+
+const ERRS: &str = "MODULE Errs
+  VAR num zero := 0;
+  VAR num result := 0;
+  PROC main()
+    Safe;
+    result := 10 / zero;
+    TPWrite \"not reached\";
+  ENDPROC
+  PROC Safe()
+    result := 1 / zero;
+  ERROR
+    result := -1;
+    TRYNEXT;
+  ENDPROC
+ENDMODULE
+";
+
+impl Client {
+    /// Launches `ERRS` with the exception filters given.
+    fn launch_with_filters(&mut self, filters: Value) {
+        let init = self.ok("initialize", json!({"adapterID": "rapid"}));
+        let offered: Vec<&str> = init["exceptionBreakpointFilters"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|f| f["filter"].as_str().unwrap())
+            .collect();
+        assert_eq!(offered, ["raised", "uncaught"]);
+        self.ok("launch", json!({"program": "/dap"}));
+        self.event("initialized");
+        self.ok("setExceptionBreakpoints", json!({"filters": filters}));
+        self.ok("configurationDone", json!({}));
+    }
+}
+
+#[test]
+fn errors_stop_where_raised_and_before_they_stop_the_task() {
+    let mut client = Client::start(Program(vec![("T_ROB1", "/dap/Errs.mod", ERRS)]));
+    client.launch_with_filters(json!(["raised", "uncaught"]));
+    // Raised: the task stands at the first statement of Safe's ERROR handler, which
+    // has not run yet.
+    let (stopped, _) = client.event("stopped");
+    assert_eq!(stopped["reason"], "exception");
+    assert!(stopped["text"].as_str().unwrap_or_default().contains("ERR_DIVZERO"), "{stopped}");
+    let (frame, routine, line) = client.top_frame(1);
+    assert_eq!((routine.as_str(), line), ("Safe (ERROR)", line_of(ERRS, "result := -1;")));
+    assert_eq!(client.evaluate(frame, "result"), "0");
+    let info = client.ok("exceptionInfo", json!({"threadId": 1}));
+    assert_eq!((info["exceptionId"].as_str(), info["breakMode"].as_str()), (Some("ERR_DIVZERO"), Some("always")));
+    // Uncaught: main has no ERROR handler; the task stands at the failing statement,
+    // after the handler ran (result -1) and TRYNEXT went on.
+    client.ok("continue", json!({"threadId": 1}));
+    let (stopped, _) = client.event("stopped");
+    assert_eq!(stopped["reason"], "exception");
+    assert!(stopped["text"].as_str().unwrap_or_default().contains("uncaught"), "{stopped}");
+    let (frame, routine, line) = client.top_frame(1);
+    assert_eq!((routine.as_str(), line), ("main", line_of(ERRS, "result := 10 / zero;")));
+    assert_eq!(client.evaluate(frame, "result"), "-1");
+    let info = client.ok("exceptionInfo", json!({"threadId": 1}));
+    assert_eq!(info["breakMode"], "unhandled");
+    // Going on, the task stops with the error: the statement after never runs.
+    client.ok("continue", json!({"threadId": 1}));
+    let (_, output) = client.event("terminated");
+    assert!(output.iter().any(|o| o.contains("ERR_DIVZERO") || o.contains("ended")), "{output:?}");
+    assert!(!output.iter().any(|o| o.contains("not reached")), "{output:?}");
+    client.ok("disconnect", json!({}));
+}
+
+#[test]
+fn without_the_uncaught_filter_only_raised_errors_stop() {
+    let mut client = Client::start(Program(vec![("T_ROB1", "/dap/Errs.mod", ERRS)]));
+    client.launch_with_filters(json!(["raised"]));
+    let (stopped, _) = client.event("stopped");
+    assert_eq!(stopped["reason"], "exception");
+    client.ok("continue", json!({"threadId": 1}));
+    // The next stop would be the uncaught error: none comes, the program ends.
+    loop {
+        let message = client.next_message();
+        assert_ne!(message["event"], "stopped", "{message}");
+        if message["event"] == "terminated" {
+            break;
+        }
+    }
+    let refused = client.request("setExceptionBreakpoints", json!({"filters": ["all"]}));
+    assert_eq!(refused["success"], false);
     client.ok("disconnect", json!({}));
 }

@@ -25,53 +25,113 @@ use rapid_syntax::Span;
 use crate::names::{spellings, Declared, Spellings};
 use crate::spacing::Spacer;
 use crate::verify::{self, Piece};
-use crate::wrap::{lay_out, Atom, AtomKind, Frame};
+use crate::wrap::{lay_out, Atom, AtomKind, Frame, Shape, Statement};
 use crate::{Config, Refusal};
 
 /// Formats `text`, which has no syntax errors in its outline; `declared` holds the
-/// names the outline declares. With `on_thread`, the output is verified on a thread of
-/// its own, in chunks, while the layout goes on.
+/// names the outline declares. With `on_thread`, the text is lexed on one thread and
+/// the output verified on another, in chunks, while the layout goes on.
 pub(crate) fn format(text: &str, config: &Config, declared: Declared, on_thread: bool) -> Result<String, Refusal> {
     if !on_thread {
-        return lay_out_file(Formatter::new(text, config, declared, None));
+        let mut f = Formatter::new(text, config, declared, None);
+        lex(text, |piece| {
+            f.piece(piece);
+            f.failure.is_none()
+        });
+        return f.finish();
     }
+    // Each channel has a way back for the emptied buffers: they are used again, so
+    // memory stays small and warm.
     let (chunks, received) = mpsc::sync_channel::<Chunk>(CHUNKS_IN_FLIGHT);
+    let (used_chunks, spare_chunks) = mpsc::channel::<Chunk>();
+    let (lexed, pieces) = mpsc::sync_channel::<Vec<Piece>>(CHUNKS_IN_FLIGHT);
+    let (used_batches, spare_batches) = mpsc::channel::<Vec<Piece>>();
     std::thread::scope(|scope| {
-        let checker = scope.spawn(move || verify::chunks(text, received));
-        let out = lay_out_file(Formatter::new(text, config, declared, Some(chunks)));
+        scope.spawn(move || lex_in_batches(text, &lexed, &spare_batches));
+        let checker = scope.spawn(move || verify::chunks(text, received, &used_chunks));
+        let to_verifier = ToVerifier { chunks, spare: spare_chunks };
+        let mut f = Formatter::new(text, config, declared, Some(to_verifier));
+        'batches: for mut batch in pieces {
+            for &piece in &batch {
+                f.piece(piece);
+                if f.failure.is_some() {
+                    break 'batches;
+                }
+            }
+            batch.clear();
+            // The lexer may be done already: then the buffer is not needed.
+            let _ = used_batches.send(batch);
+        }
+        // Dropping `pieces` (moved into the loop) stops the lexer early on a failure.
+        let out = f.finish();
         let checked =
             checker.join().unwrap_or_else(|_| Err(Refusal::Unsafe { offset: 0, message: "the check failed".into() }));
         checked.and(out)
     })
 }
 
-/// Output written since the last chunk was sent: it must lex as `input[from..to]`.
-pub(crate) type Chunk = (usize, usize, String);
+/// Output written since the last chunk was sent, and the input's pieces laid out into
+/// it: the output must lex as those pieces.
+pub(crate) type Chunk = (Vec<Piece>, String);
 
-/// Chunks in the channel to the verifier; bounds memory whatever the file's size.
+/// The way to the verifier thread, and back for its emptied chunks.
+struct ToVerifier {
+    chunks: mpsc::SyncSender<Chunk>,
+    spare: mpsc::Receiver<Chunk>,
+}
+
+/// Chunks in a channel between threads; bounds memory whatever the file's size.
 const CHUNKS_IN_FLIGHT: usize = 16;
-/// A chunk is sent once this much output has gathered.
+/// A chunk is sent to the verifier once this much output has gathered.
 const CHUNK_BYTES: usize = 1 << 16;
+/// Pieces per batch from the lexer thread.
+const BATCH_PIECES: usize = 1 << 13;
 
-fn lay_out_file(mut f: Formatter<'_>) -> Result<String, Refusal> {
-    let text = f.text;
+/// Hands `emit` the text's tokens and comments in order, each with the line ends
+/// before it, until the end or until `emit` answers false.
+fn lex(text: &str, mut emit: impl FnMut(Piece) -> bool) {
     let mut lexer = Lexer::new(text);
     let mut last_end = 0usize;
     loop {
         let token = lexer.next_token();
-        for comment in lexer.comments.drain(..) {
-            let newlines = count_newlines(&text[last_end..comment.start as usize]);
-            f.piece(Piece { kind: None, span: comment, newlines });
-            last_end = comment.end as usize;
+        if !lexer.comments.is_empty() {
+            for comment in lexer.comments.drain(..) {
+                let newlines = count_newlines(&text[last_end..comment.start as usize]);
+                if !emit(Piece { kind: None, span: comment, newlines }) {
+                    return;
+                }
+                last_end = comment.end as usize;
+            }
         }
-        if token.kind == T::Eof || f.failure.is_some() {
-            break;
+        if token.kind == T::Eof {
+            return;
         }
         let newlines = count_newlines(&text[last_end..token.span.start as usize]);
-        f.piece(Piece { kind: Some(token.kind), span: token.span, newlines });
+        if !emit(Piece { kind: Some(token.kind), span: token.span, newlines }) {
+            return;
+        }
         last_end = token.span.end as usize;
     }
-    f.finish()
+}
+
+/// The lexer thread: sends the pieces in batches, in buffers the layout gave back
+/// where it can; stops when the layout hangs up.
+fn lex_in_batches(text: &str, lexed: &mpsc::SyncSender<Vec<Piece>>, spare: &mpsc::Receiver<Vec<Piece>>) {
+    let new_batch = || spare.try_recv().unwrap_or_else(|_| Vec::with_capacity(BATCH_PIECES));
+    let mut batch = new_batch();
+    let mut open = true;
+    lex(text, |piece| {
+        batch.push(piece);
+        if batch.len() == BATCH_PIECES {
+            let full = std::mem::replace(&mut batch, new_batch());
+            open = lexed.send(full).is_ok();
+        }
+        open
+    });
+    if open && !batch.is_empty() {
+        // A hung-up layout needs nothing more.
+        let _ = lexed.send(batch);
+    }
 }
 
 /// Columns a text takes: its characters.
@@ -81,6 +141,12 @@ fn width_of(text: &str) -> usize {
     } else {
         text.chars().count()
     }
+}
+
+/// Offsets and widths inside one statement: the text is at most `u32::MAX` bytes, as
+/// its spans are.
+fn to_u32(n: usize) -> u32 {
+    u32::try_from(n).unwrap_or(u32::MAX)
 }
 
 fn count_newlines(gap: &str) -> u32 {
@@ -120,27 +186,25 @@ struct Formatter<'a> {
     out: String,
     blocks: Vec<Block>,
     unit: Unit,
+    /// The statement being written, laid out flat, and its atoms.
     scratch: String,
     atoms: Vec<Atom>,
+    /// The wrapper's stack of bracket columns, kept between statements.
+    groups: Vec<usize>,
+    /// The text is ASCII: every character takes one byte.
+    ascii: bool,
     /// The spacer's bracket stack, kept between statements.
     open: Vec<crate::spacing::Open>,
     /// How much of `out` is verified (or sent to the verifier).
     checked: usize,
-    /// Where the input of the output not yet verified starts.
-    input_checked: usize,
-    chunks: Option<mpsc::SyncSender<Chunk>>,
-    /// Where the input laid out so far ends.
-    pending_end: usize,
+    chunks: Option<ToVerifier>,
+    /// The pieces laid out into `out[checked..]`, for the verifier.
+    chunk_pieces: Vec<Piece>,
     failure: Option<Refusal>,
 }
 
 impl<'a> Formatter<'a> {
-    fn new(
-        text: &'a str,
-        config: &'a Config,
-        declared: Declared,
-        chunks: Option<mpsc::SyncSender<Chunk>>,
-    ) -> Formatter<'a> {
+    fn new(text: &'a str, config: &'a Config, declared: Declared, chunks: Option<ToVerifier>) -> Formatter<'a> {
         let nl = match text.find('\n') {
             Some(idx) if idx > 0 && text.as_bytes()[idx - 1] == b'\r' => "\r\n",
             _ => "\n",
@@ -156,11 +220,12 @@ impl<'a> Formatter<'a> {
             unit: Unit::default(),
             scratch: String::new(),
             atoms: Vec::new(),
+            groups: Vec::new(),
+            ascii: text.is_ascii(),
             open: Vec::new(),
             checked: 0,
-            input_checked: 0,
             chunks,
-            pending_end: 0,
+            chunk_pieces: Vec::new(),
             failure: None,
         }
     }
@@ -168,23 +233,29 @@ impl<'a> Formatter<'a> {
     /// Checks what was written since the last check against the pieces laid out, or
     /// sends it to the verifier once a chunk has gathered.
     fn verify(&mut self, pieces: &[Piece]) {
-        if let Some(chunks) = &self.chunks {
-            let input_end = pieces.last().map_or(self.input_checked, |p| p.span.end as usize);
+        if self.chunks.is_some() {
+            self.chunk_pieces.extend_from_slice(pieces);
             if self.out.len() - self.checked >= CHUNK_BYTES {
-                let chunk = (self.input_checked, input_end, self.out[self.checked..].to_owned());
-                if chunks.send(chunk).is_err() {
-                    self.failure = Some(Refusal::Unsafe { offset: 0, message: "the check stopped".into() });
-                }
-                self.checked = self.out.len();
-                self.input_checked = input_end;
+                self.send_chunk();
             }
-            self.pending_end = input_end;
             return;
         }
         if self.failure.is_none() {
             if let Err(refusal) = verify::stretch(self.text, pieces, &self.out, self.checked) {
                 self.failure = Some(refusal);
             }
+        }
+        self.checked = self.out.len();
+    }
+
+    /// Sends the output not yet verified, with its pieces, to the verifier.
+    fn send_chunk(&mut self) {
+        let Some(to) = &self.chunks else { return };
+        let (spare_pieces, mut output) = to.spare.try_recv().unwrap_or_default();
+        output.push_str(&self.out[self.checked..]);
+        let pieces = std::mem::replace(&mut self.chunk_pieces, spare_pieces);
+        if to.chunks.send((pieces, output)).is_err() && self.failure.is_none() {
+            self.failure = Some(Refusal::Unsafe { offset: 0, message: "the check stopped".into() });
         }
         self.checked = self.out.len();
     }
@@ -242,11 +313,9 @@ impl<'a> Formatter<'a> {
         if !self.unit.pieces.is_empty() && self.failure.is_none() {
             self.flush();
         }
-        if let Some(chunks) = self.chunks.take() {
-            let chunk = (self.input_checked, self.pending_end, self.out[self.checked..].to_owned());
-            if chunks.send(chunk).is_err() && self.failure.is_none() {
-                self.failure = Some(Refusal::Unsafe { offset: 0, message: "the check stopped".into() });
-            }
+        if self.chunks.is_some() {
+            self.send_chunk();
+            self.chunks = None;
         }
         if let Some(refusal) = self.failure {
             return Err(refusal);
@@ -265,7 +334,7 @@ impl<'a> Formatter<'a> {
                 self.out.push_str(self.nl);
             }
         }
-        self.out.extend(std::iter::repeat_n(' ', indent));
+        crate::wrap::push_spaces(&mut self.out, indent);
     }
 
     fn comment_line(&mut self, piece: Piece, level: usize) {
@@ -346,55 +415,68 @@ impl<'a> Formatter<'a> {
         let is_header = matches!(head, T::Proc | T::Func | T::Trap);
         let open = std::mem::take(&mut self.open);
         let mut spacer = Spacer::new(is_decl, head == T::Module, self.config.aggregate_spaces, open);
+        let mut shape = Shape::default();
         let mut prev: Option<T> = None;
         let mut prev_end = pieces[0].span.start as usize;
         let mut first_width = 0;
         for piece in pieces {
-            let start = self.scratch.len();
-            let kind = match piece.kind {
+            let atom = match piece.kind {
                 Some(kind) => {
-                    let depth = spacer.open.len();
+                    let depth = u32::try_from(spacer.open.len()).unwrap_or(u32::MAX);
                     let space = spacer.push(kind);
+                    if space {
+                        self.scratch.push(' ');
+                    }
+                    let start = self.scratch.len();
                     self.token_text(kind, piece.span, prev, is_header);
+                    let end = self.scratch.len();
+                    let text_width = self.width(start, end);
                     if prev.is_none() {
-                        first_width = width_of(&self.scratch[start..]);
+                        first_width = text_width;
                     }
                     prev = Some(kind);
                     let comma = kind == T::Comma;
                     let opens = matches!(kind, T::LParen | T::LBracket | T::LBrace);
                     let closes = matches!(kind, T::RParen | T::RBracket | T::RBrace);
                     let depth = if closes { depth.saturating_sub(1) } else { depth };
+                    let kind = AtomKind::Token { depth, comma, opens, closes };
+                    Atom { start: to_u32(start), width: to_u32(text_width + usize::from(space)), space, kind }
+                }
+                None => {
+                    let start = self.scratch.len();
+                    let kind = if piece.newlines == 0 {
+                        let gap = &self.text[prev_end..piece.span.start as usize];
+                        let gap =
+                            if !gap.is_empty() && gap.bytes().all(|b| b == b' ' || b == b'\t') { gap } else { " " };
+                        self.scratch.push_str(gap);
+                        AtomKind::Trailing
+                    } else {
+                        AtomKind::OwnLine
+                    };
+                    self.scratch.push_str(piece.span.text(self.text));
                     let end = self.scratch.len();
-                    let width = width_of(&self.scratch[start..end]) + usize::from(space);
-                    self.atoms.push(Atom {
-                        start,
-                        end,
-                        width,
-                        space,
-                        kind: AtomKind::Token { depth, comma, opens, closes },
-                    });
-                    prev_end = piece.span.end as usize;
-                    continue;
+                    Atom { start: to_u32(start), width: to_u32(self.width(start, end)), space: false, kind }
                 }
-                None if piece.newlines == 0 => {
-                    let gap = &self.text[prev_end..piece.span.start as usize];
-                    let gap = if !gap.is_empty() && gap.bytes().all(|b| b == b' ' || b == b'\t') { gap } else { " " };
-                    self.scratch.push_str(gap);
-                    AtomKind::Trailing
-                }
-                None => AtomKind::OwnLine,
             };
-            self.scratch.push_str(piece.span.text(self.text));
-            let end = self.scratch.len();
-            let width = width_of(&self.scratch[start..end]);
-            self.atoms.push(Atom { start, end, width, space: false, kind });
+            shape.add(&atom);
+            self.atoms.push(atom);
             prev_end = piece.span.end as usize;
         }
         let is_call = head == T::Ident && !is_decl;
         let outer = if is_call { indent + first_width + 1 } else { indent + 2 * self.config.indent_width };
         let frame = Frame { indent, outer, nl: self.nl };
-        lay_out(&mut self.out, frame, &self.atoms, &self.scratch, self.config);
+        let stmt = Statement { atoms: &self.atoms, scratch: &self.scratch, shape };
+        lay_out(&mut self.out, frame, stmt, &mut self.groups, self.config);
         self.open = spacer.open;
+    }
+
+    /// Columns `scratch[start..end]` takes.
+    fn width(&self, start: usize, end: usize) -> usize {
+        if self.ascii {
+            end - start
+        } else {
+            width_of(&self.scratch[start..end])
+        }
     }
 
     /// Appends a token's text as written out: reserved words in upper case, built-in

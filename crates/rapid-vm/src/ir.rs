@@ -204,6 +204,8 @@ pub struct Code {
     /// declared (a debugger shows a frame's locals by them; loop variables and
     /// temporaries have none).
     pub local_names: Vec<(String, u32)>,
+    /// The local slots of the routine's CONST data (a debugger may not write them).
+    pub const_locals: Vec<u32>,
 }
 
 #[derive(Debug, Clone, PartialEq)]

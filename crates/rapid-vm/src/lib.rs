@@ -30,7 +30,7 @@ use rapid_syntax::ast::RoutineKind;
 use rustc_hash::FxHashMap;
 
 pub use exec::backward::{BackStep, BackwardRefusal};
-pub use exec::{Exit, Unhandled, Vm};
+pub use exec::{ErrorStop, Exit, Unhandled, Vm};
 pub use host::{Host, Prompt, PromptReply, RecordingHost};
 
 /// Why a program could not be loaded.

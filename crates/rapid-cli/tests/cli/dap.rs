@@ -253,3 +253,63 @@ fn a_launch_that_cannot_boot_says_why() {
     assert!(message.contains("missing.mod"), "{message}");
     dap.finish();
 }
+
+const FAILING: &str = "MODULE Main
+  VAR num zero := 0;
+  VAR num total := 0;
+  PROC main()
+    Add total, 5;
+    total := total / zero;
+    total := -1;
+  ENDPROC
+  PROC Add(INOUT num sum, num inc)
+    sum := sum + inc;
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn a_routines_data_is_set_and_an_uncaught_error_stops_before_the_task_does() {
+    let dir = scratch_in("dap", "errors");
+    let module = dir.join("Main.mod");
+    std::fs::write(&module, FAILING).expect("module");
+    let line_of = |needle: &str| FAILING.lines().position(|l| l.contains(needle)).map(|at| at + 1).expect("line");
+
+    let mut dap = Adapter::start();
+    let init = dap.ok("initialize", json!({"adapterID": "rapid"}));
+    assert_eq!(init["supportsExceptionInfoRequest"], true);
+    dap.ok("launch", json!({"program": module}));
+    dap.event("initialized");
+    dap.ok(
+        "setBreakpoints",
+        json!({"source": {"path": module}, "breakpoints": [{"line": line_of("sum := sum + inc;")}]}),
+    );
+    dap.ok("setExceptionBreakpoints", json!({"filters": ["uncaught"]}));
+    dap.ok("configurationDone", json!({}));
+    assert_eq!(dap.event("stopped")["reason"], "breakpoint");
+
+    // In Add: INOUT `sum` writes through to main's `total`; `inc` changes in Add only.
+    let trace = dap.ok("stackTrace", json!({"threadId": 1}));
+    let (add, main) = (trace["stackFrames"][0]["id"].clone(), trace["stackFrames"][1]["id"].clone());
+    let scopes = dap.ok("scopes", json!({"frameId": add}));
+    let locals = scopes["scopes"][0]["variablesReference"].clone();
+    dap.ok("setVariable", json!({"variablesReference": locals, "name": "sum", "value": "10"}));
+    dap.ok("setVariable", json!({"variablesReference": locals, "name": "inc", "value": "2"}));
+    assert_eq!(dap.ok("evaluate", json!({"expression": "total", "frameId": main}))["result"], "10");
+
+    // total = 10 + 2 = 12; then 12 / 0 reaches no handler: the task stands at it.
+    dap.ok("continue", json!({"threadId": 1}));
+    let stopped = dap.event("stopped");
+    assert_eq!(stopped["reason"], "exception");
+    let trace = dap.ok("stackTrace", json!({"threadId": 1}));
+    assert_eq!(trace["stackFrames"][0]["line"], line_of("total := total / zero;"));
+    let frame = trace["stackFrames"][0]["id"].clone();
+    assert_eq!(dap.ok("evaluate", json!({"expression": "total", "frameId": frame}))["result"], "12");
+    let info = dap.ok("exceptionInfo", json!({"threadId": 1}));
+    assert_eq!((info["exceptionId"].as_str(), info["breakMode"].as_str()), (Some("ERR_DIVZERO"), Some("unhandled")));
+
+    // Going on, the task stops with the error; `total := -1` never runs.
+    dap.ok("continue", json!({"threadId": 1}));
+    dap.event("terminated");
+    dap.finish();
+}

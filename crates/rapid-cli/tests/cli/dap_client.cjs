@@ -1,6 +1,7 @@
 // A whole `rapid dap` session driven by the real DAP client library of VS Code's
 // adapter tests (@vscode/debugadapter-testsupport): launch, a breakpoint hit with its
-// file:line, threads, variables with a record expanded, setVariable, evaluate, step
+// file:line, threads, variables with a record expanded, setVariable (module data and a
+// routine's data), evaluate (with a built-in call), exception filters, step
 // in/over/out and back, continue, the pendant's output, the end.
 // Usage: node dap_client.cjs RAPID PROJECT (the library comes from NODE_PATH).
 'use strict';
@@ -68,6 +69,14 @@ async function session(dc, output) {
 
   let top = await stoppedAt(dc, dc.stepInRequest({ threadId: 1 }), lineOf('twice := n * 2;'), 'Helper');
   assert.strictEqual(await evaluate(dc, top, 'n * 2 + count'), '51');
+  // A routine's data is written in its frame (the next statement assigns it anew);
+  // a built-in function without side effects is evaluated: |-41| = 41.
+  const locals = (await dc.scopesRequest({ frameId: top })).body.scopes[0].variablesReference;
+  const twice = await dc.setVariableRequest({ variablesReference: locals, name: 'twice', value: '3' });
+  assert.strictEqual(twice.body.value, '3');
+  assert.strictEqual(await evaluate(dc, top, 'twice + Abs(-count)'), '44');
+  const filters = await dc.setExceptionBreakpointsRequest({ filters: ['raised', 'uncaught'] });
+  assert.strictEqual(filters.success, true);
   await stoppedAt(dc, dc.nextRequest({ threadId: 1 }), lineOf('count := count + twice;'));
   top = await stoppedAt(dc, dc.stepOutRequest({ threadId: 1 }), lineOf('count := count + 1;'), 'main');
   assert.strictEqual(await evaluate(dc, top, 'count'), '51');

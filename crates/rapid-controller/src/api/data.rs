@@ -156,6 +156,15 @@ fn strings_fit(value: &Value) -> bool {
     }
 }
 
+/// Parameter or routine datum `name` of frame `at` (0: the outermost) to write.
+fn frame_local<'v>(vm: &'v mut rapid_vm::Vm, at: usize, name: &str) -> Result<&'v mut Value, ApiError> {
+    match vm.frame_local_mut(at, name) {
+        None => Err(ApiError::NotFound(format!("the routine has no parameter or data `{name}`"))),
+        Some(Err(why)) => Err(ApiError::ReadOnly(why)),
+        Some(Ok(value)) => Ok(value),
+    }
+}
+
 impl Session {
     /// The module-level data of task `task`.
     pub fn list_data(&self, task: &str) -> Result<Vec<DataInfo>, ApiError> {
@@ -209,6 +218,38 @@ impl Session {
         }
         let global = datum.global;
         self.controller.with_task(idx, &mut self.pendant, |vm, _| vm.set_global(global, whole));
+        self.gather();
+        Ok(())
+    }
+
+    /// Writes a parameter or routine datum of frame `frame` (0: the innermost) of task
+    /// `task`, or a part of it (`name`, `name.comp`, `name{2}`), from RAPID literal
+    /// text of its type: a parameter passed by value and routine data change in the
+    /// frame alone; a VAR, INOUT or PERS parameter writes through to its argument, as
+    /// assigning it in the routine would (§1.5). A CONST is refused; so is text that
+    /// is no literal of the value's type.
+    pub fn write_local(&mut self, task: &str, frame: usize, path: &str, literal: &str) -> Result<(), ApiError> {
+        let path = DataPath::parse(&format!("{task}/{path}"))?;
+        let idx = self.task_index(task)?;
+        let at = self.controller.tasks[idx]
+            .loaded
+            .vm
+            .depth()
+            .checked_sub(frame + 1)
+            .ok_or_else(|| ApiError::NotFound(format!("task {task} has no frame {frame}")))?;
+        let name = path.name.as_str();
+        // Shared persistents an INOUT or PERS parameter may name are brought in first.
+        let mut whole =
+            self.controller.with_task(idx, &mut self.pendant, |vm, _| frame_local(vm, at, name).map(|v| v.clone()))?;
+        {
+            let fields = self.field_names(idx);
+            let part = part_mut(&mut whole, &path.steps, &fields)?;
+            *part = rapid_vm::builtins::read_literal(literal, part).filter(strings_fit).ok_or_else(|| {
+                ApiError::BadLiteral(format!("`{literal}` is no literal of the type of `{}`", path.name))
+            })?;
+        }
+        self.controller
+            .with_task(idx, &mut self.pendant, |vm, _| frame_local(vm, at, name).map(|slot| *slot = whole))?;
         self.gather();
         Ok(())
     }

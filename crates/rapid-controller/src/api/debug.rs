@@ -51,11 +51,26 @@ pub struct Location {
 /// A breakpoint the program stopped at.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct BreakpointHit {
-    /// The breakpoint as it was set: (file, line).
+    /// The breakpoint as it was set: (file, line); for an error, where the task stands.
     pub file: String,
     pub line: u32,
     /// Where the task stands: the statement the breakpoint resolved to.
     pub at: Location,
+    /// The program stopped at an error (an exception breakpoint), not at a line.
+    pub error: Option<ErrorHit>,
+}
+
+/// The error an exception breakpoint stopped at.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ErrorHit {
+    /// The predefined name (`ERR_DIVZERO`), or empty for a user error number.
+    pub name: String,
+    /// The ERRNO value.
+    pub errno: i32,
+    pub message: String,
+    /// No ERROR handler takes it: going on, the task stops with it. Otherwise the task
+    /// stands at the first statement of the ERROR handler that takes it.
+    pub uncaught: bool,
 }
 
 /// One breakpoint as set by a front end.
@@ -88,12 +103,14 @@ pub(crate) struct Watch {
     step_broken: bool,
     /// The breakpoint the program last stopped at, not yet taken by the API.
     pub(crate) hit: Option<BreakpointHit>,
+    /// Exception breakpoints: (raised, uncaught).
+    errors: (bool, bool),
 }
 
 impl Watch {
     /// Whether the scheduler must look before each statement.
     pub(crate) fn is_active(&self) -> bool {
-        !self.points.is_empty() || self.step.is_some()
+        !self.points.is_empty() || self.step.is_some() || self.errors.0 || self.errors.1
     }
 
     /// The step under way ends at its task's next statement (a front end's stop).
@@ -140,6 +157,9 @@ impl Controller {
         if self.tasks[idx].spec.kind != TaskKind::Normal {
             return false;
         }
+        if self.error_stop(idx) {
+            return true;
+        }
         if self.step_done_before(idx) {
             return true;
         }
@@ -154,7 +174,7 @@ impl Controller {
         let Some(&point) = self.watch.resolved.get(idx).and_then(|r| r.get(&(file, start))) else { return false };
         let Some(at) = self.location_of(idx) else { return false };
         let bp = &self.watch.points[point];
-        self.watch.hit = Some(BreakpointHit { file: bp.file.clone(), line: bp.line, at });
+        self.watch.hit = Some(BreakpointHit { file: bp.file.clone(), line: bp.line, at, error: None });
         self.pass_current(idx);
         if self.watch.step.is_some() {
             self.watch.step_broken = true;
@@ -162,6 +182,36 @@ impl Controller {
             self.stop(StopKind::Stop);
         }
         true
+    }
+
+    /// Whether task `idx` stands at an error an exception breakpoint watches (the VM
+    /// noted it while running its last statement): the program stops, as at a line.
+    fn error_stop(&mut self, idx: usize) -> bool {
+        let Some(stop) = self.tasks[idx].loaded.vm.take_error_stop() else { return false };
+        let Some(at) = self.location_of(idx) else { return false };
+        let error = ErrorHit {
+            name: stop.error.name.to_owned(),
+            errno: stop.error.errno,
+            message: stop.error.message.clone(),
+            uncaught: stop.uncaught,
+        };
+        self.watch.hit = Some(BreakpointHit { file: at.file.clone(), line: at.line, at, error: Some(error) });
+        self.pass_current(idx);
+        if self.watch.step.is_some() {
+            self.watch.step_broken = true;
+        } else {
+            self.stop(StopKind::Stop);
+        }
+        true
+    }
+
+    /// Stops at errors in every NORMAL task (`raised`: before the ERROR handler that
+    /// takes one runs; `uncaught`: before a task stops with one no handler takes).
+    pub(crate) fn watch_errors(&mut self, raised: bool, uncaught: bool) {
+        self.watch.errors = (raised, uncaught);
+        for task in self.tasks.iter_mut().filter(|t| t.spec.kind == TaskKind::Normal) {
+            task.loaded.vm.watch_errors(raised, uncaught);
+        }
     }
 
     /// Execution goes on from where task `idx` stands: a breakpoint there is passed.

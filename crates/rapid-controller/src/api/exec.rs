@@ -296,6 +296,13 @@ impl Session {
         Ok(found)
     }
 
+    /// Exception breakpoints: the program stops when a NORMAL task's error is about to
+    /// be taken by an ERROR handler (`raised`), or reaches none and is about to stop
+    /// the task (`uncaught`); [`RunOutcome::Breakpoint`] then carries the error.
+    pub fn set_error_breaks(&mut self, raised: bool, uncaught: bool) {
+        self.controller.watch_errors(raised, uncaught);
+    }
+
     /// Removes the breakpoint at `line` of `file`; false when there was none.
     pub fn clear_breakpoint(&mut self, file: &str, line: u32) -> bool {
         self.controller.remove_breakpoint(file, line)

@@ -6,8 +6,10 @@
 //! assignment in a throw-away module) and evaluated with the VM's own operators
 //! (`rapid_vm::ops`, §1.3.1), names resolved as the frame sees them: the routine's
 //! parameters and data first, then the task's data (LOCAL data of the routine's
-//! module before global data). Function calls and aggregates are refused as not
-//! supported yet: a call would run code the debugger cannot undo.
+//! module before global data). Evaluating never changes the program's state: a
+//! function call is evaluated only when the function is a built-in with a pure form
+//! (its result depends on its arguments alone); a user FUNC and other built-ins are
+//! refused with the reason. Aggregates are refused as not supported yet.
 
 use rapid_syntax::ast::{Arena, ExprId, ExprKind, Item, StmtKind};
 use rapid_vm::builtins::symsearch::SymData;
@@ -299,11 +301,51 @@ impl Scope<'_> {
                 let b = self.eval(arena, rhs)?;
                 rapid_vm::ops::binary(op, a, b, self.op_types()?).map_err(|(_, why)| ApiError::Refused(why))
             }
-            ExprKind::Call { .. } => {
-                Err(ApiError::Unsupported("function calls in a debugger expression (they would run code)".into()))
-            }
+            ExprKind::Call { name, args } => self.call(arena, parsed.interner.resolve(name), args),
             _ => Err(ApiError::Unsupported(format!("`{literal}` in a debugger expression"))),
         }
+    }
+
+    /// A function call. Evaluating must never change the program's state, so only a
+    /// built-in with a pure form (`rapid_vm::builtins::pure`: its result depends on its
+    /// arguments alone and it touches nothing) is called. A user FUNC is refused: it
+    /// may write data or persistents, do I/O or move the robot, and running it on a
+    /// copy of the task would still reach the shared persistents, the I/O and the
+    /// motion the copy shares with the real one.
+    fn call(&mut self, arena: &Arena, name: &str, args: rapid_syntax::ast::ArgList) -> Result<Value, ApiError> {
+        let user_func = self.session.controller.tasks[self.idx]
+            .loaded
+            .vm
+            .codes()
+            .any(|code| code.is_func && code.name.eq_ignore_ascii_case(name));
+        if user_func {
+            return Err(ApiError::Refused(format!(
+                "`{name}` is a function of the program: the debugger does not run it, since it could change \
+                 data, do I/O or move the robot"
+            )));
+        }
+        let pure = rapid_vm::builtins::lookup(name).and_then(rapid_vm::builtins::pure_form).ok_or_else(|| {
+            ApiError::Refused(format!(
+                "`{name}` is not evaluated by the debugger: only built-in functions without side effects are"
+            ))
+        })?;
+        let mut values = Vec::new();
+        for arg in arena.args(args) {
+            let value = match (arg.kind, arg.name, arg.value) {
+                (rapid_syntax::ast::ArgKind::Required, None, Some(value)) => self.eval(arena, value)?,
+                _ => {
+                    return Err(ApiError::Unsupported(format!(
+                        "named, optional or conditional arguments in a debugger call of `{name}`"
+                    )))
+                }
+            };
+            values.push(value);
+        }
+        // A pure form answers None where the built-in would raise an error (or takes
+        // arguments of another kind): the debugger says so rather than raise it.
+        pure(&values).ok_or_else(|| {
+            ApiError::Refused(format!("`{name}` cannot be evaluated with these arguments (it would raise an error)"))
+        })
     }
 
     /// A name: the frame's parameters and data, then the task's data.

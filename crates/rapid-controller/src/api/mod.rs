@@ -36,7 +36,7 @@ use std::fmt;
 pub use crate::run::ClockPolicy;
 pub use config::{ConfigDomain, ConfigInstance, ConfigType};
 pub use data::{DataInfo, DataValue};
-pub use debug::{BreakpointHit, Location, StepKind};
+pub use debug::{BreakpointHit, ErrorHit, Location, StepKind};
 pub use exec::{RunOutcome, StackFrame, StartFrom, TaskView, Until};
 pub use inspect::ValueTree;
 pub use modules::ModuleInfo;

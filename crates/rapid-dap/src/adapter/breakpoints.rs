@@ -2,7 +2,7 @@
 //! one: its condition (a RAPID expression) and hit count decide whether it stops; a
 //! log point writes its message and goes on.
 
-use rapid_controller::api::{BreakpointHit, StartFrom};
+use rapid_controller::api::{BreakpointHit, ErrorHit, StartFrom};
 use serde_json::{json, Value};
 
 use super::{Adapter, Failure};
@@ -72,6 +72,9 @@ impl Adapter<'_> {
             .session
             .as_ref()
             .map_or(0, |s| s.tasks().iter().position(|t| t.name.eq_ignore_ascii_case(&hit.at.task)).unwrap_or(0));
+        if let Some(error) = &hit.error {
+            return self.at_error(task, error.clone());
+        }
         let point = self.breakpoints.get(&hit.file).and_then(|points| points.iter().find(|p| p.line == hit.line));
         let Some(point) = point.cloned() else { return self.stopped("breakpoint", task) };
         if let Some(condition) = &point.condition {
@@ -159,4 +162,55 @@ impl Adapter<'_> {
 /// launcher loads modules (the text as given when the file cannot be found).
 fn canonical(path: &str) -> String {
     std::fs::canonicalize(path).map_or_else(|_| path.to_owned(), |p| p.to_string_lossy().into_owned())
+}
+
+impl Adapter<'_> {
+    /// `setExceptionBreakpoints {filters}`: "raised" and "uncaught" (docs/dap.md).
+    pub(super) fn set_exception_breakpoints(&mut self, args: &Value) -> Result<Value, Failure> {
+        let filters: Vec<&str> =
+            args["filters"].as_array().map(|f| f.iter().filter_map(Value::as_str).collect()).unwrap_or_default();
+        if let Some(unknown) = filters.iter().find(|f| !matches!(**f, "raised" | "uncaught")) {
+            return Err(format!("no exception filter `{unknown}` (raised, uncaught)"));
+        }
+        let (raised, uncaught) = (filters.contains(&"raised"), filters.contains(&"uncaught"));
+        self.session()?.set_error_breaks(raised, uncaught);
+        let verified: Vec<Value> = filters.iter().map(|_| json!({"verified": true})).collect();
+        Ok(json!({"breakpoints": verified}))
+    }
+
+    /// The program stopped at an error: a `stopped` event of reason `exception` whose
+    /// text names the error; `exceptionInfo` tells the rest.
+    fn at_error(&mut self, task: usize, error: ErrorHit) {
+        let text = error_text(&error);
+        let thread = task as i64 + 1;
+        self.exception = Some((thread, error));
+        self.running = false;
+        self.stop_reason = None;
+        self.handles.clear();
+        self.event(
+            "stopped",
+            json!({"reason": "exception", "description": text, "text": text, "threadId": thread,
+                "allThreadsStopped": true}),
+        );
+    }
+
+    /// `exceptionInfo {threadId}`: the error the thread stands stopped at.
+    pub(super) fn exception_info(&mut self, args: &Value) -> Result<Value, Failure> {
+        let thread = args["threadId"].as_i64().ok_or("exceptionInfo needs `threadId`")?;
+        let Some((_, error)) = self.exception.as_ref().filter(|(t, _)| *t == thread) else {
+            return Err(format!("thread {thread} stands at no error"));
+        };
+        let id = if error.name.is_empty() { error.errno.to_string() } else { error.name.clone() };
+        let break_mode = if error.uncaught { "unhandled" } else { "always" };
+        Ok(json!({"exceptionId": id, "description": error_text(error), "breakMode": break_mode,
+            "details": {"message": error.message, "typeName": "errnum", "fullTypeName": format!("ERRNO {}", error.errno)}}))
+    }
+}
+
+/// How the stop names an error: `ERR_DIVZERO (41): Division by zero`, with
+/// `uncaught` when no ERROR handler takes it.
+fn error_text(error: &ErrorHit) -> String {
+    let name = if error.name.is_empty() { format!("error {}", error.errno) } else { error.name.clone() };
+    let handled = if error.uncaught { ", uncaught" } else { "" };
+    format!("{name} ({}{handled}): {}", error.errno, error.message)
 }

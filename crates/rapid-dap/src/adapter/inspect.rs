@@ -8,7 +8,7 @@ use rapid_controller::api::{ApiError, ValueTree};
 use serde_json::{json, Value};
 
 use super::{Adapter, Failure, FRAMES_PER_TASK};
-use crate::vars::{child_path, Handle};
+use crate::vars::{Handle, Place};
 
 impl Adapter<'_> {
     pub(super) fn stack_trace(&mut self, args: &Value) -> Result<Value, Failure> {
@@ -63,7 +63,8 @@ impl Adapter<'_> {
         match handle {
             Handle::Locals { task, frame } => {
                 for tree in self.session()?.frame_trees(&task, frame).map_err(|e| e.to_string())? {
-                    variables.push(self.variable(tree, None));
+                    let place = Place::Local { task: task.clone(), frame, path: tree.name.clone() };
+                    variables.push(self.variable(tree, Some(place)));
                 }
             }
             Handle::ModuleData { task } | Handle::Persistents { task } => {
@@ -72,8 +73,8 @@ impl Adapter<'_> {
                 for datum in data.iter().filter(|d| (d.kind == "PERS") == persistents) {
                     let session = self.session()?;
                     let Ok(tree) = session.data_tree(&task, &datum.module, &datum.name) else { continue };
-                    let path = format!("{task}/{}/{}", datum.module, datum.name);
-                    variables.push(self.variable(tree, Some(path)));
+                    let place = Place::Data(format!("{task}/{}/{}", datum.module, datum.name));
+                    variables.push(self.variable(tree, Some(place)));
                 }
             }
             Handle::Signals => {
@@ -90,8 +91,8 @@ impl Adapter<'_> {
             }
             Handle::Tree { tree, path } => {
                 for child in tree.children {
-                    let child_path = path.as_deref().map(|p| child_path(p, &child.name));
-                    variables.push(self.variable(child, child_path));
+                    let place = path.as_ref().map(|p| p.child(&child.name));
+                    variables.push(self.variable(child, place));
                 }
             }
         }
@@ -99,7 +100,7 @@ impl Adapter<'_> {
     }
 
     /// A variable of the response, expandable when its value has parts.
-    fn variable(&mut self, tree: ValueTree, path: Option<String>) -> Value {
+    fn variable(&mut self, tree: ValueTree, path: Option<Place>) -> Value {
         let (name, value, type_name) = (tree.name.clone(), tree.value.clone(), tree.type_name.clone());
         let reference = match tree.children.is_empty() {
             true => 0,
@@ -113,9 +114,12 @@ impl Adapter<'_> {
         let name = args["name"].as_str().ok_or("setVariable needs `name`")?.to_owned();
         let value = args["value"].as_str().ok_or("setVariable needs `value`")?.to_owned();
         let handle = self.handles.get(reference).cloned().ok_or_else(|| format!("no variables {reference}"))?;
-        let path = match handle {
-            Handle::Locals { .. } | Handle::Tree { path: None, .. } => {
-                return Err(ApiError::Unsupported("writing a routine's data from the debugger".into()).to_string())
+        let place = match handle {
+            Handle::Tree { path: None, .. } => {
+                return Err(ApiError::Refused(
+                    "a part of an evaluated expression cannot be set: set the data it names".into(),
+                )
+                .to_string())
             }
             Handle::Signals => {
                 let number: f64 = value.trim().parse().map_err(|_| format!("`{value}` is no signal value"))?;
@@ -123,19 +127,29 @@ impl Adapter<'_> {
                 let now = self.session()?.signal(&name).map_err(|e| e.to_string())?;
                 return Ok(json!({"value": number_text(now)}));
             }
+            Handle::Locals { task, frame } => Place::Local { task, frame, path: name },
             Handle::ModuleData { task } | Handle::Persistents { task } => {
                 let data = self.session()?.list_data(&task).map_err(|e| e.to_string())?;
                 let datum = data.iter().find(|d| d.name.eq_ignore_ascii_case(&name)).ok_or("no such data")?;
-                format!("{task}/{}/{}", datum.module, datum.name)
+                Place::Data(format!("{task}/{}/{}", datum.module, datum.name))
             }
-            Handle::Tree { path: Some(path), .. } => child_path(&path, &name),
+            Handle::Tree { path: Some(path), .. } => path.child(&name),
         };
         let session = self.session()?;
-        session.write_data(&path, &value).map_err(|e| e.to_string())?;
-        let now = session.read_data(&path).map_err(|e| e.to_string())?;
+        let now = match &place {
+            Place::Data(path) => {
+                session.write_data(path, &value).map_err(|e| e.to_string())?;
+                session.read_data(path).map_err(|e| e.to_string())?.value
+            }
+            Place::Local { task, frame, path } => {
+                session.write_local(task, *frame, path, &value).map_err(|e| e.to_string())?;
+                // A local's path (`p.trans{2}`) is a RAPID expression naming it.
+                session.evaluate(task, *frame, path).map_err(|e| e.to_string())?.value
+            }
+        };
         // What the client showed of the program's data is out of date.
         self.event("invalidated", json!({"areas": ["variables"]}));
-        Ok(json!({"value": now.value}))
+        Ok(json!({"value": now}))
     }
 
     pub(super) fn evaluate(&mut self, args: &Value) -> Result<Value, Failure> {

@@ -15,7 +15,7 @@ use std::collections::{HashMap, VecDeque};
 use std::path::PathBuf;
 use std::time::Duration;
 
-use rapid_controller::api::{Change, ClockPolicy, RunOutcome, Session, StartFrom, StepKind, Subscription};
+use rapid_controller::api::{Change, ClockPolicy, ErrorHit, RunOutcome, Session, StartFrom, StepKind, Subscription};
 use rapid_controller::StopKind;
 use serde_json::{json, Value};
 
@@ -52,6 +52,8 @@ pub(crate) struct Adapter<'l> {
     handles: Handles,
     answers: VecDeque<String>,
     done: bool,
+    /// The error the program stands stopped at (an exception breakpoint), by thread.
+    exception: Option<(i64, ErrorHit)>,
 }
 
 impl<'l> Adapter<'l> {
@@ -71,6 +73,7 @@ impl<'l> Adapter<'l> {
             handles: Handles::default(),
             answers: VecDeque::new(),
             done: false,
+            exception: None,
         }
     }
 
@@ -118,7 +121,8 @@ impl<'l> Adapter<'l> {
             "initialize" => Ok(capabilities()),
             "launch" => self.launch(args),
             "setBreakpoints" => self.set_breakpoints(args),
-            "setExceptionBreakpoints" => Ok(json!({"breakpoints": []})),
+            "setExceptionBreakpoints" => self.set_exception_breakpoints(args),
+            "exceptionInfo" => self.exception_info(args),
             "configurationDone" => Ok(Value::Null),
             "threads" => self.threads(),
             "stackTrace" => self.stack_trace(args),
@@ -253,6 +257,7 @@ impl<'l> Adapter<'l> {
     /// The program runs on: handles are forgotten, a stop is reported as `reason`.
     fn go_on(&mut self, reason: &'static str, task: usize) {
         self.handles.clear();
+        self.exception = None;
         self.running = true;
         self.stop_reason = Some((reason, task));
     }
@@ -363,6 +368,13 @@ fn capabilities() -> Value {
         "supportsSetVariable": true,
         "supportsEvaluateForHovers": true,
         "supportsStepBack": true,
+        "supportsExceptionInfoRequest": true,
+        "exceptionBreakpointFilters": [
+            {"filter": "raised", "label": "Raised errors", "default": false,
+             "description": "Stop when a RAPID error is raised, before the ERROR handler that takes it runs"},
+            {"filter": "uncaught", "label": "Uncaught errors", "default": false,
+             "description": "Stop when a RAPID error reaches no ERROR handler, before it stops the task"},
+        ],
         "supportsTerminateRequest": true,
         "supportsSingleThreadExecutionRequests": false,
     })

@@ -441,6 +441,9 @@ impl<'p> RoutineCompiler<'p> {
         let local = self.new_local(ty, dims, rank, LocalKind::Data);
         self.locals.insert(decl.name.sym, local);
         self.code.local_names.push((decl.name.span.text(self.text).to_owned(), local.slot));
+        if decl.storage == rapid_syntax::ast::Storage::Const {
+            self.code.const_locals.push(local.slot);
+        }
         if let Some(init) = decl.init {
             self.expr(arena, init, Some((ty, dims)))?;
             self.code.emit(Instr::StoreLocal(local.slot));

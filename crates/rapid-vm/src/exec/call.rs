@@ -346,8 +346,8 @@ impl Vm {
         let raised_at = Self::raised_here(&frame);
         self.storage.stack.truncate(frame.base as usize);
         if self.frames.is_empty() || frame.interrupted {
-            self.frames.clear();
-            return Ok(Some(Self::unhandled(active.error, &raised_at)));
+            let exit = Self::unhandled(active.error, &raised_at);
+            return Ok(Some(self.give_up(exit)));
         }
         Ok(self.raise_from(active.error, raised_at))
     }
@@ -421,6 +421,7 @@ impl Vm {
                     }
                     let place = Self::place_of(frame);
                     let warning = Some(self.log_program_event(EventKind::Warning, &error, place));
+                    self.note_raised(&error);
                     let frame = self.frames.last_mut()?;
                     if frame.last_retry_stmt != Some(stmt.start) {
                         frame.retries = 0;
@@ -443,8 +444,7 @@ impl Vm {
                         self.log_undo_aborted(cause, Some(place));
                     }
                     let exit = Self::unhandled(error, &raised_at);
-                    self.frames.clear();
-                    return Some(exit);
+                    return Some(self.give_up(exit));
                 }
                 _ => {
                     let frame = self.frames.pop()?;

@@ -63,6 +63,35 @@ impl Vm {
         Some(locals.collect())
     }
 
+    /// Parameter or routine datum `name` of frame `frame` (0: the outermost), to be
+    /// written by a debugger: a parameter passed by value and routine data are the
+    /// frame's own values; a VAR, INOUT or PERS parameter is the data its argument
+    /// names, since updating it updates the argument (§1.5). None when the frame has
+    /// no such name; `Some(Err)` says why it cannot be written (a CONST, an optional
+    /// parameter not present, a switch, an argument that no longer exists).
+    pub fn frame_local_mut(&mut self, frame: usize, name: &str) -> Option<Result<&mut crate::value::Value, String>> {
+        use crate::value::Value;
+        let f = self.frames.get(frame)?;
+        let &(ref declared, slot) = f.code.local_names.iter().find(|(n, _)| n.eq_ignore_ascii_case(name))?;
+        if f.code.const_locals.contains(&slot) {
+            return Some(Err(format!("`{declared}` is a CONST of the routine")));
+        }
+        let declared = declared.clone();
+        let at = (f.base + slot) as usize;
+        if let Value::Ref(place) = self.storage.stack.get(at)? {
+            let place = (**place).clone();
+            return Some(
+                self.storage.get_mut(&place).map_err(|_| format!("the argument of `{declared}` no longer exists")),
+            );
+        }
+        let value = self.storage.stack.get_mut(at)?;
+        Some(match value {
+            Value::Absent => Err(format!("the optional parameter `{declared}` is not present")),
+            Value::SwitchOn => Err(format!("the switch `{declared}` has no value to set")),
+            _ => Ok(value),
+        })
+    }
+
     /// How many routines are running.
     pub fn depth(&self) -> usize {
         self.frames.len()

@@ -10,6 +10,8 @@
 
 pub mod backward;
 mod call;
+mod error_watch;
+pub use error_watch::ErrorStop;
 mod fast;
 mod frames;
 pub mod inspect;
@@ -21,6 +23,7 @@ mod late;
 mod log;
 pub mod modules;
 mod num;
+mod setup;
 mod shared;
 mod spy;
 mod statement;
@@ -155,6 +158,8 @@ pub struct Vm {
     /// places, because `Value::Ref` holds a box and is handed one as it is.
     #[allow(clippy::vec_box)]
     place_pool: Vec<Box<Place>>,
+    /// A debugger's exception breakpoints (`error_watch.rs`).
+    error_watch: error_watch::ErrorWatch,
 }
 
 impl Vm {
@@ -194,6 +199,7 @@ impl Vm {
             modules: modules::TaskModules::default(),
             spy_open: Vec::new(),
             place_pool: Vec::new(),
+            error_watch: error_watch::ErrorWatch::default(),
         }
     }
 
@@ -206,26 +212,6 @@ impl Vm {
     /// The task's files, directories, sockets and robot, to look at.
     pub fn resources(&self) -> &crate::builtins::Resources {
         &self.resources
-    }
-
-    /// The numbers of the predefined errors (read from the ERR_ constants at load).
-    pub fn set_errnos(&mut self, errnos: FxHashMap<&'static str, i32>) {
-        self.errnos = errnos;
-    }
-
-    /// Where INTNO lives (set when a trap starts).
-    pub fn set_intno_global(&mut self, global: Option<u32>) {
-        self.intno_global = global;
-    }
-
-    /// Marks which globals are persistents.
-    pub fn set_pers_globals(&mut self, pers: Vec<bool>) {
-        self.pers_globals = pers;
-    }
-
-    /// Names module-level data for built-ins that take a data name as text (ErrRaise).
-    pub fn set_data_names(&mut self, names: FxHashMap<String, crate::builtins::NamedData>) {
-        self.data_by_name = names;
     }
 
     /// The event log written so far, oldest first.
@@ -242,6 +228,7 @@ impl Vm {
     /// Runs `code` with no arguments as the first frame (the entry routine or the
     /// load-time initialisers).
     pub fn start(&mut self, code: Rc<Code>) {
+        self.forget_error_stop();
         self.frames.clear();
         self.storage.stack.clear();
         self.exiting = false;
@@ -325,6 +312,11 @@ impl Vm {
         }
         // Messages another task sent while this one did not run.
         self.dispatch_messages();
+        // The task stood stopped at an error no handler takes: now it ends with it.
+        if let Some(exit) = self.take_pending_end() {
+            self.log_if_unhandled(&exit);
+            return exit;
+        }
         while remaining > 0 {
             if self.frames.is_empty() {
                 return Exit::Done;

@@ -14,7 +14,8 @@ impl Vm {
     pub fn run_statement(&mut self, host: &mut dyn crate::host::Host) -> Exit {
         for _ in 0..MAX_STATEMENT_STEPS {
             let exit = self.run(host, 1);
-            if exit != Exit::Budget || self.at_statement_start() {
+            // A debugger's stop at an error ends the statement where it stands.
+            if exit != Exit::Budget || self.at_statement_start() || self.error_stop_waits() {
                 return exit;
             }
         }
