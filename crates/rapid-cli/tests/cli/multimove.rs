@@ -278,3 +278,46 @@ fn synchronized_moves_of_robots_already_at_their_targets_are_no_error() {
     lines.sort();
     assert_eq!(lines, ["T_ROB1 stood", "T_ROB2 stood"]);
 }
+
+#[test]
+fn a_synchronized_trigg_int_trap_runs_on_time_in_a_func() {
+    let dir = scratch("multimove_trigg_func");
+    // abb_motion_program_exec's MultiMove habit: the synchronized TriggL inside an
+    // IF ... ELSE of a FUNC called from an assignment. §1.11: a trap runs at any time
+    // during a move instruction, in a FUNC as anywhere, so TriggInt's trap (\Start,
+    // 0.001 s) runs 0.001 s after each move starts, in both tasks, not when the
+    // program goes on after the fine point. The moves are 100 mm at v100 for both
+    // robots: 1.01 s to stand at the point, +0.05 s settle (multimove.rs's first
+    // test): 1.06 s.
+    let module = "MODULE M\n  VAR syncident sync1;\n  VAR syncident sync2;\n  \
+                  PERS tasks all{2} := [[\"T_ROB1\"],[\"T_ROB2\"]];\n  VAR triggdata td;\n  VAR intnum ti;\n  \
+                  VAR clock c;\n  VAR num at := -1;\n  VAR bool ok;\n  \
+                  CONST robtarget p0 := [[300,-100,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n  \
+                  PROC main()\n    ConfL \\Off;\n    MoveL p0, v500, fine, tool0;\n    CONNECT ti WITH on_trigg;\n    \
+                  TriggInt td, 0.001 \\Start, ti;\n    SyncMoveOn sync1, all;\n    ClkStart c;\n    \
+                  TriggL Offs(p0, 0, 100, 0) \\ID:=1, v100, td, fine, tool0;\n    \
+                  TPWrite GetTaskName() + \" statement \" + NumToStr(at, 3) + \" \" + NumToStr(ClkRead(c), 2);\n    \
+                  at := -1;\n    ClkReset c;\n    ClkStart c;\n    ok := go();\n    \
+                  TPWrite GetTaskName() + \" func \" + NumToStr(at, 3) + \" \" + NumToStr(ClkRead(c), 2);\n    \
+                  SyncMoveOff sync2;\n  ENDPROC\n  FUNC bool go()\n    IF IsSyncMoveOn() THEN\n      \
+                  TriggL p0 \\ID:=2, v100, td, fine, tool0;\n    ELSE\n      TriggL p0, v100, td, fine, tool0;\n    \
+                  ENDIF\n    RETURN TRUE;\n  ENDFUNC\n  TRAP on_trigg\n    at := ClkRead(c);\n  ENDTRAP\nENDMODULE\n";
+    let tasks = [
+        TaskDef { name: "T_ROB1", attrs: "-Type \"NORMAL\" -MotionTask", module },
+        TaskDef { name: "T_ROB2", attrs: "-Type \"NORMAL\" -MotionTask", module },
+    ];
+    system(&dir, &tasks, "");
+    let out = rapid_in(&dir, &["run", "--quiet", "sys"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let mut lines: Vec<String> = text(&out.stdout).lines().map(str::to_owned).collect();
+    lines.sort();
+    assert_eq!(
+        lines,
+        [
+            "T_ROB1 func 0.001 1.06",
+            "T_ROB1 statement 0.001 1.06",
+            "T_ROB2 func 0.001 1.06",
+            "T_ROB2 statement 0.001 1.06",
+        ]
+    );
+}

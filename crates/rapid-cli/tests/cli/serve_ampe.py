@@ -181,10 +181,13 @@ def main_multimove():
     log = run_multimove(client, "synchronized MoveAbsJ/MoveL/WaitTime", programs, [FINAL, FINAL_2])
     if log is not None:
         cmds = log.data[:, log.column_headers.index("cmdnum")]
-        # Command 1 is SyncMoveOn, 2 the MoveAbsJ (neither sets the number), 3 the
-        # TriggL, 4 the WaitTime; the last MoveAbsJ keeps 4. (The TriggL's 3 is not
-        # checked: under synchronized movement it does not reach the log yet.)
-        check("the log's command number ends at the WaitTime's", int(cmds[-1]) == 4, str(sorted(set(cmds))))
+        # Command 1 is SyncMoveOn, 2 the MoveAbsJ (neither sets the number: -1 from
+        # the start), 3 the TriggL (its trap, 0.001 s into the move, which runs in an
+        # IF ... ELSE of a FUNC), 4 the WaitTime; the last MoveAbsJ keeps 4.
+        seen = sorted(set(int(c) for c in cmds))
+        check("the log's command numbers are the program's", seen == [-1, 3, 4], str(seen))
+        check("the log's command numbers never go back", bool(np.all(np.diff(cmds) >= 0)))
+        check("the log's command number ends at the WaitTime's", int(cmds[-1]) == 4, str(seen))
         error = max(row_error(log, 0, START), row_error(log, 0, START_2, "_2"))
         check("the log's first row is both start poses", error <= 0.01, f"error {error:.6f}")
     state = rws.get_execution_state()

@@ -336,3 +336,50 @@ fn a_trigg_speed_output_is_0_while_the_robot_is_stopped_on_its_path() {
     let again = seen.iter().find(|&&(t, v)| t > 0.6 && v == 1.0).map_or(0.0, |&(t, _)| t);
     assert!((again - 1.005).abs() < 0.0025, "aoSpeed 1 again after {again} s: {seen:?}");
 }
+
+#[test]
+fn a_trigg_int_trap_runs_during_a_move_that_ends_a_block() {
+    // §1.11: a trap runs "at any time" while a move instruction executes. Each TriggL
+    // below is the last statement of a block, so the program's next instruction is the
+    // block's own glue (the jump past ELSE, a loop's way back, FOR's step, the jump out
+    // of a CASE), not a statement; the trap must still run 0.001 s after the move
+    // starts, not when the program goes on after the fine point (1.06 s, the timing
+    // model above). The last is the same IF in a FUNC called from an assignment.
+    let decls = "  VAR triggdata td;\n  VAR intnum ti;\n  VAR clock c;\n  VAR num at;\n  VAR num n := 1;\n  \
+                 VAR num k;\n  VAR bool ok;";
+    let to = "Offs(p0, 100, 0, 0)";
+    let go = |i: u32| {
+        let target = if i % 2 == 1 { to } else { "p0" };
+        format!("TriggL {target}, v100, td, fine, tool0;")
+    };
+    let report =
+        |label: &str| format!("    TPWrite \"{label} \" + NumToStr(at, 3) + \" \" + NumToStr(ClkRead(c), 2);\n");
+    let reset = "    at := -1;\n    ClkReset c;\n    ClkStart c;\n";
+    let body = format!(
+        "    CONNECT ti WITH on_trigg;\n    TriggInt td, 0.001 \\Start, ti;\n\
+         {reset}    IF n = 1 THEN\n      {m1}\n    ELSE\n      {m2}\n    ENDIF\n{if_}\
+         {reset}    k := 0;\n    WHILE k < 1 DO\n      k := k + 1;\n      {m2}\n    ENDWHILE\n{while_}\
+         {reset}    FOR i FROM 1 TO 1 DO\n      {m1}\n    ENDFOR\n{for_}\
+         {reset}    TEST n\n    CASE 1:\n      {m2}\n    DEFAULT:\n      {m1}\n    ENDTEST\n{test_}\
+         {reset}    ok := leg();\n{func_}",
+        m1 = go(1),
+        m2 = go(2),
+        if_ = report("IF"),
+        while_ = report("WHILE"),
+        for_ = report("FOR"),
+        test_ = report("TEST"),
+        func_ = report("FUNC"),
+    );
+    let traps = format!(
+        "  FUNC bool leg()\n    IF n = 1 THEN\n      {m1}\n    ELSE\n      {m2}\n    ENDIF\n    RETURN TRUE;\n  ENDFUNC\n  \
+         TRAP on_trigg\n    at := ClkRead(c);\n  ENDTRAP",
+        m1 = go(1),
+        m2 = go(2),
+    );
+    let (out, _) = run("int_block_end", decls, &body, &traps, &[], "");
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(
+        text(&out.stdout),
+        "IF 0.001 1.06\nWHILE 0.001 1.06\nFOR 0.001 1.06\nTEST 0.001 1.06\nFUNC 0.001 1.06\n"
+    );
+}

@@ -193,13 +193,17 @@ impl Vm {
             return;
         }
         let Some(top) = self.frames.last() else { return };
-        // Between instructions: at a statement's start, or at the routine's end, where a
-        // last move's wait for the robot is held (its traps run there too), or between
-        // two polls of WaitUntil, which the traps' data may end (§1.11: traps run during
-        // wait instructions).
+        // Between instructions: at a statement's start, or at the routine's end, or
+        // between two polls of WaitUntil, which the traps' data may end, or while a
+        // move's wait for the robot is held (§1.11: traps run "at any time" during wait
+        // and move instructions). The held wait follows the move's statement wherever
+        // the next instruction is: a statement's start, but also the jump that ends an
+        // IF's THEN branch or a loop's body, where the operand stack is as empty as
+        // between statements.
         let at_statement = top.code.stmt_at(top.pc).is_some_and(|s| s.start == top.pc)
             || matches!(top.code.instrs.get(top.pc as usize), Some(crate::ir::Instr::FellOffEnd))
-            || matches!(top.code.instrs.get((top.pc as usize).wrapping_sub(1)), Some(crate::ir::Instr::WaitPop));
+            || matches!(top.code.instrs.get((top.pc as usize).wrapping_sub(1)), Some(crate::ir::Instr::WaitPop))
+            || self.resources.robot.program_hold().is_some_and(|until| until > self.time);
         if !at_statement || top.undoing || self.exiting {
             return;
         }
