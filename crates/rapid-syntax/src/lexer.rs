@@ -32,6 +32,70 @@ fn is_ident_continue(c: char) -> bool {
     is_letter(c) || c.is_ascii_digit() || c == '_'
 }
 
+/// The tokens that are always one byte, whatever follows (`.`, `%`, `:`, `<` and `>`
+/// may start something longer and are left to [`Lexer::other_token`]).
+static SINGLE_BYTE_TOKENS: [Option<TokenKind>; 256] = {
+    let mut table = [None; 256];
+    table[b'(' as usize] = Some(TokenKind::LParen);
+    table[b')' as usize] = Some(TokenKind::RParen);
+    table[b'[' as usize] = Some(TokenKind::LBracket);
+    table[b']' as usize] = Some(TokenKind::RBracket);
+    table[b'{' as usize] = Some(TokenKind::LBrace);
+    table[b'}' as usize] = Some(TokenKind::RBrace);
+    table[b',' as usize] = Some(TokenKind::Comma);
+    table[b';' as usize] = Some(TokenKind::Semi);
+    table[b'\\' as usize] = Some(TokenKind::Backslash);
+    table[b'|' as usize] = Some(TokenKind::Pipe);
+    table[b'?' as usize] = Some(TokenKind::Question);
+    table[b'+' as usize] = Some(TokenKind::Plus);
+    table[b'-' as usize] = Some(TokenKind::Minus);
+    table[b'*' as usize] = Some(TokenKind::Star);
+    table[b'/' as usize] = Some(TokenKind::Slash);
+    table[b'=' as usize] = Some(TokenKind::Eq);
+    table
+};
+
+/// How many bytes at the start of `bytes` are ASCII letters, digits or `_`.
+fn ascii_word_len(bytes: &[u8]) -> usize {
+    bytes.iter().position(|&b| !(b.is_ascii_alphanumeric() || b == b'_')).unwrap_or(bytes.len())
+}
+
+/// The length of the well-formed decimal number at the start of `bytes` (digits,
+/// `.` and digits, an exponent of one or two digits) when nothing glued follows it
+/// and it has at most 200 integer digits, so it is finite without converting it;
+/// `None` for anything else. Matches [`Lexer::number_checked`] on those numbers.
+fn plain_decimal_len(bytes: &[u8]) -> Option<usize> {
+    let int_digits = decimal_run(bytes);
+    let mut len = int_digits;
+    if bytes.get(len) == Some(&b'.') {
+        len += 1;
+        len += decimal_run(&bytes[len..]);
+    }
+    if int_digits > 200 || len == 0 || (len == 1 && int_digits == 0) {
+        return None;
+    }
+    if matches!(bytes.get(len), Some(b'e' | b'E')) {
+        let mut exp_end = len + 1;
+        if matches!(bytes.get(exp_end), Some(b'+' | b'-')) {
+            exp_end += 1;
+        }
+        let exp_digits = decimal_run(&bytes[exp_end..]);
+        if !(1..=2).contains(&exp_digits) {
+            return None;
+        }
+        len = exp_end + exp_digits;
+    }
+    match bytes.get(len) {
+        Some(&b) if b.is_ascii_alphanumeric() || b == b'_' || b >= 0x80 => None,
+        _ => Some(len),
+    }
+}
+
+/// How many bytes at the start of `bytes` are decimal digits.
+fn decimal_run(bytes: &[u8]) -> usize {
+    bytes.iter().position(|b| !b.is_ascii_digit()).unwrap_or(bytes.len())
+}
+
 impl<'t> Lexer<'t> {
     pub fn new(text: &'t str) -> Lexer<'t> {
         Lexer {
@@ -57,50 +121,53 @@ impl<'t> Lexer<'t> {
             let Some(&byte) = self.bytes.get(start) else {
                 return self.token(TokenKind::Eof, start);
             };
-            let kind = match byte {
-                b'!' => {
-                    self.skip_line();
-                    self.comments.push(Span::new(start, self.pos));
-                    continue;
-                }
-                b'a'..=b'z' | b'A'..=b'Z' => self.ident(),
-                b'0'..=b'9' => self.number(),
-                b'.' if self.peek_byte(1).is_some_and(|b| b.is_ascii_digit()) => self.number(),
-                b'"' => self.string(),
-                b'%' if self.text[start..].starts_with("%%%") => self.header(),
-                b'<' => self.less_or_placeholder(),
-                b'>' => self.one_or_two(TokenKind::Gt, b'=', TokenKind::Ge),
-                b':' => self.one_or_two(TokenKind::Colon, b'=', TokenKind::Assign),
-                b'(' => self.single(TokenKind::LParen),
-                b')' => self.single(TokenKind::RParen),
-                b'[' => self.single(TokenKind::LBracket),
-                b']' => self.single(TokenKind::RBracket),
-                b'{' => self.single(TokenKind::LBrace),
-                b'}' => self.single(TokenKind::RBrace),
-                b',' => self.single(TokenKind::Comma),
-                b';' => self.single(TokenKind::Semi),
-                b'.' => self.single(TokenKind::Dot),
-                b'\\' => self.single(TokenKind::Backslash),
-                b'|' => self.single(TokenKind::Pipe),
-                b'?' => self.single(TokenKind::Question),
-                b'%' => self.single(TokenKind::Percent),
-                b'+' => self.single(TokenKind::Plus),
-                b'-' => self.single(TokenKind::Minus),
-                b'*' => self.single(TokenKind::Star),
-                b'/' => self.single(TokenKind::Slash),
-                b'=' => self.single(TokenKind::Eq),
-                _ => {
-                    let c = self.current_char();
-                    if is_letter(c) {
-                        self.ident()
-                    } else {
-                        self.invalid_character(c);
-                        continue;
-                    }
+            // Letters, digits and one-byte punctuation are nearly every token: they are
+            // told apart with two range tests and a table load, not a jump over every
+            // byte value, whose indirect branch the CPU mispredicts at most tokens.
+            let kind = if byte.is_ascii_alphabetic() {
+                self.ident()
+            } else if byte.is_ascii_digit() {
+                self.number()
+            } else if let Some(kind) = SINGLE_BYTE_TOKENS[byte as usize] {
+                self.single(kind)
+            } else {
+                match self.other_token(byte, start) {
+                    Some(kind) => kind,
+                    None => continue,
                 }
             };
             return self.token(kind, start);
         }
+    }
+
+    /// The tokens [`SINGLE_BYTE_TOKENS`] leaves out: comments (`None`, recorded),
+    /// strings, headers, numbers starting with `.`, two-byte operators, placeholders,
+    /// non-ASCII letters and invalid characters (`None`, reported).
+    #[inline(never)]
+    fn other_token(&mut self, byte: u8, start: usize) -> Option<TokenKind> {
+        Some(match byte {
+            b'!' => {
+                self.skip_line();
+                self.comments.push(Span::new(start, self.pos));
+                return None;
+            }
+            b'.' if self.peek_byte(1).is_some_and(|b| b.is_ascii_digit()) => self.number(),
+            b'.' => self.single(TokenKind::Dot),
+            b'"' => self.string(),
+            b'%' if self.text[start..].starts_with("%%%") => self.header(),
+            b'%' => self.single(TokenKind::Percent),
+            b'<' => self.less_or_placeholder(),
+            b'>' => self.one_or_two(TokenKind::Gt, b'=', TokenKind::Ge),
+            b':' => self.one_or_two(TokenKind::Colon, b'=', TokenKind::Assign),
+            _ => {
+                let c = self.current_char();
+                if !is_letter(c) {
+                    self.invalid_character(c);
+                    return None;
+                }
+                self.ident()
+            }
+        })
     }
 
     /// Moves to the next token of a kind in `stop` without building the tokens in
@@ -256,8 +323,11 @@ impl<'t> Lexer<'t> {
 
     fn ident(&mut self) -> TokenKind {
         let start = self.pos;
-        let mut n_chars = 0;
-        // ASCII fast path; Latin-1 letters (two bytes in UTF-8) take the slow path.
+        // ASCII fast path: one scan over the slice; a Latin-1 letter (two bytes in
+        // UTF-8) sends the rest of the word to the character loop below.
+        let ascii = ascii_word_len(&self.bytes[start..]);
+        self.pos += ascii;
+        let mut n_chars = ascii;
         while let Some(&b) = self.bytes.get(self.pos) {
             if b.is_ascii_alphanumeric() || b == b'_' {
                 self.pos += 1;
@@ -296,28 +366,30 @@ impl<'t> Lexer<'t> {
     }
 
     fn eat_decimal_digits(&mut self) -> usize {
-        let start = self.pos;
-        while self.bytes.get(self.pos).is_some_and(u8::is_ascii_digit) {
-            self.pos += 1;
-        }
-        self.pos - start
+        let n_digits = decimal_run(&self.bytes[self.pos..]);
+        self.pos += n_digits;
+        n_digits
     }
 
-    /// `e[+-]digits`; returns whether an exponent was well formed (or absent).
-    fn eat_exponent(&mut self) -> bool {
+    /// `e[+-]digits`; returns whether an exponent was well formed (or absent), and
+    /// how many digits it has.
+    fn eat_exponent(&mut self) -> (bool, usize) {
         if !matches!(self.peek_byte(0), Some(b'e' | b'E')) {
-            return true;
+            return (true, 0);
         }
         self.pos += 1;
         if matches!(self.peek_byte(0), Some(b'+' | b'-')) {
             self.pos += 1;
         }
-        self.eat_decimal_digits() > 0
+        let n_digits = self.eat_decimal_digits();
+        (n_digits > 0, n_digits)
     }
 
     /// Letters or digits glued to a number; returns whether there were none.
+    #[inline]
     fn eat_glued(&mut self) -> bool {
         let start = self.pos;
+        self.pos += ascii_word_len(&self.bytes[start..]);
         loop {
             match self.bytes.get(self.pos) {
                 Some(b) if b.is_ascii_alphanumeric() || *b == b'_' => self.pos += 1,
@@ -339,7 +411,23 @@ impl<'t> Lexer<'t> {
         }
     }
 
+    /// Lexes a number. Most numbers are plain decimals (`0.99969`, `9E9`) that need
+    /// none of the checks below: a fast path takes those in one pass and leaves
+    /// every other form (other radixes, glued letters, possible overflow, errors) to
+    /// [`Lexer::number_checked`], which reads the number again from its start.
+    #[inline]
     fn number(&mut self) -> TokenKind {
+        match plain_decimal_len(&self.bytes[self.pos..]) {
+            Some(len) => {
+                self.pos += len;
+                TokenKind::Num
+            }
+            None => self.number_checked(),
+        }
+    }
+
+    #[inline(never)]
+    fn number_checked(&mut self) -> TokenKind {
         let start = self.pos;
         let radix = self.number_radix();
         let mut well_formed = true;
@@ -358,12 +446,11 @@ impl<'t> Lexer<'t> {
                 frac_digits = self.eat_decimal_digits();
             }
             well_formed &= int_digits + frac_digits > 0;
-            let exponent_start = self.pos;
-            well_formed &= self.eat_exponent();
+            let (exponent_ok, exponent_digits) = self.eat_exponent();
+            well_formed &= exponent_ok;
             // Below 10^(200 + 99) a number is finite: only more integer digits or an
             // exponent of three digits or more can leave the f64 range (CAM output
             // writes `9E9` six times a line, which needs no conversion).
-            let exponent_digits = self.text[exponent_start..self.pos].bytes().filter(u8::is_ascii_digit).count();
             may_overflow = int_digits > 200 || exponent_digits > 2;
         }
         // Letters or digits glued to a number (`1.5E`, `0x1G`, `12abc`) make it malformed.

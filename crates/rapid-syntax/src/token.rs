@@ -15,13 +15,8 @@ macro_rules! keywords {
             $( $variant, )*
         }
 
-        /// The reserved word spelled `upper` (already in upper case), if any.
-        fn keyword_from_upper(upper: &[u8]) -> Option<TokenKind> {
-            match upper {
-                $( t if t == $text.as_bytes() => Some(TokenKind::$variant), )*
-                _ => None,
-            }
-        }
+        /// Every reserved word with its spelling.
+        const KEYWORDS: &[(&str, TokenKind)] = &[ $( ($text, TokenKind::$variant), )* ];
 
         impl TokenKind {
             /// How the token is written, for messages.
@@ -77,9 +72,12 @@ keywords! {
 }
 
 /// The reserved word `word` spells, ignoring case.
+///
+/// The lexer asks this for every name, so it is one hash and one comparison: the
+/// word is packed into an integer with its case folded, a multiplicative hash
+/// picks the one reserved word it could be, and the packed spellings are compared.
 pub fn keyword(word: &str) -> Option<TokenKind> {
-    const LONGEST: usize = 9;
-    if word.len() > LONGEST || word.len() < 2 {
+    if word.len() > LONGEST_KEYWORD || word.len() < 2 {
         return None;
     }
     // Reserved words are letters only: names with digits or `_` (`p10`, `tool0`,
@@ -87,11 +85,70 @@ pub fn keyword(word: &str) -> Option<TokenKind> {
     if !word.bytes().all(|b| b.is_ascii_alphabetic()) {
         return None;
     }
-    let mut upper = [0u8; LONGEST];
-    for (slot, byte) in upper.iter_mut().zip(word.bytes()) {
-        *slot = byte.to_ascii_uppercase();
+    let packed = pack_upper(word.as_bytes());
+    let entry = KEYWORD_TABLE.slots[keyword_slot(packed, KEYWORD_TABLE.multiplier)];
+    let idx = entry.checked_sub(1)? as usize;
+    (KEYWORD_TABLE.packed[idx] == packed).then_some(KEYWORDS[idx].1)
+}
+
+const LONGEST_KEYWORD: usize = 9;
+/// log2 of the hash table's size: 512 slots for 58 words leaves few collisions for
+/// the search in [`build_keyword_table`] to step over.
+const KEYWORD_SLOT_BITS: u32 = 9;
+
+/// The ASCII letters of `word` (at most 16) in one integer, folded to upper case
+/// (clearing bit 5 upper-cases a letter; callers pass letters only).
+const fn pack_upper(word: &[u8]) -> u128 {
+    let mut packed = 0u128;
+    let mut idx = 0;
+    while idx < word.len() {
+        packed |= ((word[idx] & !0x20) as u128) << (8 * idx);
+        idx += 1;
     }
-    keyword_from_upper(&upper[..word.len()])
+    packed
+}
+
+const fn keyword_slot(packed: u128, multiplier: u64) -> usize {
+    let mixed = (packed as u64) ^ ((packed >> 64) as u64).rotate_left(32);
+    (mixed.wrapping_mul(multiplier) >> (64 - KEYWORD_SLOT_BITS)) as usize
+}
+
+/// A collision-free hash table of the reserved words: 1 + the index into
+/// [`KEYWORDS`] in each used slot, 0 in the others.
+struct KeywordTable {
+    multiplier: u64,
+    /// The packed spelling of each of [`KEYWORDS`].
+    packed: [u128; KEYWORDS.len()],
+    slots: [u8; 1 << KEYWORD_SLOT_BITS],
+}
+
+/// Built at compile time: tries odd multipliers until no two reserved words share a
+/// slot (a word list without one fails the build, never a run).
+static KEYWORD_TABLE: KeywordTable = build_keyword_table();
+
+const fn build_keyword_table() -> KeywordTable {
+    let mut multiplier: u64 = 0x9E37_79B9_7F4A_7C15;
+    let mut attempt = 0;
+    while attempt < 10_000 {
+        let mut slots = [0u8; 1 << KEYWORD_SLOT_BITS];
+        let mut packed = [0u128; KEYWORDS.len()];
+        let mut idx = 0;
+        let mut collided = false;
+        while idx < KEYWORDS.len() && !collided {
+            packed[idx] = pack_upper(KEYWORDS[idx].0.as_bytes());
+            let slot = keyword_slot(packed[idx], multiplier);
+            collided = slots[slot] != 0;
+            slots[slot] = idx as u8 + 1;
+            idx += 1;
+        }
+        if !collided {
+            return KeywordTable { multiplier, packed, slots };
+        }
+        // The next candidate: a step of a 64-bit LCG, made odd.
+        multiplier = multiplier.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407) | 1;
+        attempt += 1;
+    }
+    panic!("no collision-free multiplier for the reserved words");
 }
 
 /// The editor placeholders of §1.1.2 (`<SMT>` and friends).
@@ -177,6 +234,15 @@ mod tests {
         assert_eq!(keyword("EndModule"), Some(TokenKind::Endmodule));
         assert_eq!(keyword("MoveL"), None);
         assert_eq!(keyword("switch"), None);
+        // Every reserved word is found in any case, and a near miss is not.
+        for &(spelling, kind) in KEYWORDS {
+            assert_eq!(keyword(spelling), Some(kind));
+            assert_eq!(keyword(&spelling.to_ascii_lowercase()), Some(kind));
+            assert_eq!(keyword(&spelling[..spelling.len() - 1]), None, "{spelling}");
+            assert_eq!(keyword(&format!("{spelling}X")), None, "{spelling}");
+        }
+        assert_eq!(keyword("ENDMODULEX"), None);
+        assert_eq!(keyword("Ärger"), None);
         assert!(TokenKind::With.is_keyword());
         assert!(!TokenKind::Ne.is_keyword());
     }
