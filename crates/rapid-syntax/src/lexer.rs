@@ -214,6 +214,10 @@ impl<'t> Lexer<'t> {
 
     /// Steps over a number exactly as [`Lexer::number`] consumes it, without checks.
     fn skip_number(&mut self) {
+        if let Some(len) = plain_decimal_len(&self.bytes[self.pos..]) {
+            self.pos += len;
+            return;
+        }
         let radix = self.number_radix();
         if radix != 10 {
             self.pos += 2;
