@@ -79,3 +79,27 @@ fn another_tasks_crobt_of_an_arm_reads_its_arm_angle() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "same place TRUE\nsame arm angle TRUE\nnot axis 7 TRUE\n");
 }
+
+/// `--robot "IRB 14000"` on the two-arm system moves each task's own arm: the task of
+/// ROB_L gets the left arm (axis 7 starting at 135°), the task of ROB_R the right one
+/// (−135°), so the fixture runs exactly as with MOC.cfg's types.
+#[test]
+fn the_robot_flag_gives_each_task_of_a_yumi_its_own_arm() {
+    let dir = scratch_in("yumi", "flag_system");
+    copy_dir(&repo_root().join("tests/systems/yumi"), &dir);
+    let out = rapid_in(&dir, &["run", "--quiet", "--robot", "IRB 14000", "."]);
+    assert_eq!(
+        text(&out.stdout),
+        "L start [0,-130,30,0,40,0] 135\n\
+         R start [0,-130,30,0,40,0] -135\n\
+         L axes [10,-120,20,15,35,-10] 100\n\
+         moved TRUE\n\
+         angle kept TRUE\n\
+         elbow turned TRUE\n\
+         axis 7 moved TRUE\n",
+        "{}",
+        text(&out.stderr)
+    );
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stderr).contains("50028 Joint 7 out of range"), "{}", text(&out.stderr));
+}
