@@ -285,8 +285,13 @@ impl Controller {
                 let mut frames = robot.active;
                 frames.base = robot.track_base_at(time);
                 let joints = robot.joints_at(time);
-                let (flange, conf) = robot.flange_of(&joints);
-                let state = OtherRobotState { frames, extax: robot.extax_read(time), flange, conf };
+                // As the robot's own CRobT reads it: a 7-axis arm's flange with axis 7
+                // where it stands, its eax_a the arm angle.
+                let eax = robot.eax_at(time);
+                let (flange, conf) = robot.flange_at(&joints, eax.as_ref());
+                let extax = robot.extax_read(time);
+                let robtarget_extax = robot.robtarget_extax(&joints, eax.as_ref(), extax);
+                let state = OtherRobotState { frames, extax, robtarget_extax, flange, conf };
                 Reply::Robot(joints, Box::new(state))
             }
             Request::SaveModule { task, module, dest } => {

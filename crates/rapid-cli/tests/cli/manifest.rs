@@ -568,3 +568,74 @@ fn a_rapid_toml_with_only_fmt_settings_leaves_the_folder_a_folder() {
     assert!(!explicit.status.success());
     assert!(text(&explicit.stdout).contains("the manifest configures no task"), "{}", text(&explicit.stdout));
 }
+
+/// `[system] controller_ip` is the controller's own address, as `--controller-ip` gives
+/// it: a TCP server the program binds to it listens on the loopback, where a client
+/// reaches it. 192.0.2.44 (TEST-NET-1) is no address of the host, so without the mapping
+/// the bind fails; `--controller-ip` given too wins, and the manifest's address is then
+/// no controller's.
+#[test]
+fn the_manifests_controller_ip_binds_the_loopback() {
+    use std::io::{Read, Write};
+    use std::net::{Ipv4Addr, TcpListener, TcpStream};
+    use std::time::{Duration, Instant};
+
+    let port = TcpListener::bind((Ipv4Addr::LOCALHOST, 0)).expect("free port").local_addr().expect("addr").port();
+    let dir = scratch("controller_ip");
+    let program = "MODULE Srv
+  PROC main()
+    VAR socketdev server;
+    VAR socketdev client;
+    VAR string text;
+    SocketCreate server;
+    SocketBind server, \"192.0.2.44\", PORT;
+    SocketListen server;
+    SocketAccept server, client \\Time:=10;
+    SocketReceive client \\Str:=text \\Time:=10;
+    TPWrite \"got \" + text;
+    SocketClose client;
+    SocketClose server;
+  ENDPROC
+ENDMODULE
+"
+    .replace("PORT", &port.to_string());
+    let toml = "[system]\ncontroller_ip = \"192.0.2.44\"\n\n[[task]]\nname = \"T_ROB1\"\nmodules = [\"Srv.mod\"]\n";
+    write(&dir, &[("rapid.toml", toml), ("Srv.mod", &program)]);
+    let child = crate::fixture::spawn_in(&dir, &["run", "rapid.toml"]);
+    let started = Instant::now();
+    let mut stream = loop {
+        match TcpStream::connect((Ipv4Addr::LOCALHOST, port)) {
+            Ok(stream) => break stream,
+            Err(err) if started.elapsed() > Duration::from_secs(10) => panic!("the program never listened: {err}"),
+            Err(_) => std::thread::sleep(Duration::from_millis(20)),
+        }
+    };
+    stream.write_all(b"hello").expect("send");
+    stream.set_read_timeout(Some(Duration::from_secs(10))).expect("timeout");
+    let _ = stream.read_to_end(&mut Vec::new());
+    let out = child.wait_with_output().expect("rapid ends");
+    let (stdout, stderr) = (text(&out.stdout), text(&out.stderr));
+    assert_eq!(out.status.code(), Some(0), "stdout:\n{stdout}\nstderr:\n{stderr}");
+    assert_eq!(stdout, "got hello\n");
+    let notes: Vec<&str> = stderr.lines().filter(|l| l.starts_with("note: SocketBind")).collect();
+    assert_eq!(notes.len(), 1, "{stderr}");
+    assert!(notes[0].contains("192.0.2.44") && notes[0].contains("127.0.0.1"), "{}", notes[0]);
+
+    // The flag wins: with another controller address the manifest's is the OS's to
+    // bind, which has no such address, and the program stops with a socket error.
+    let out = rapid_in(&dir, &["run", "--controller-ip", "10.11.12.13", "rapid.toml"]);
+    assert_ne!(out.status.code(), Some(0), "{}", text(&out.stdout));
+    assert!(!text(&out.stderr).contains("note: SocketBind"), "{}", text(&out.stderr));
+}
+
+#[test]
+fn a_malformed_controller_ip_is_a_finding_at_its_line() {
+    let dir = scratch("controller_ip_bad");
+    let toml = "[system]\nname = \"cell\"\ncontroller_ip = \"192.168.125\"\n\n[[task]]\nname = \"T_ROB1\"\nmodules = [\"Main.mod\"]\n";
+    write(&dir, &[("rapid.toml", toml), ("Main.mod", "MODULE Main\n  PROC main()\n  ENDPROC\nENDMODULE\n")]);
+    let out = rapid_in(&dir, &["check", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(1));
+    let report = text(&out.stdout);
+    finding_at(&report, "`controller_ip` `192.168.125` is not an IPv4 address", "rapid.toml:3:17");
+    assert!(report.contains("found 1 error"), "{report}");
+}

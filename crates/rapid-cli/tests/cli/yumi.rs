@@ -48,3 +48,58 @@ fn the_robot_flag_names_a_yumi_arm() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "[0,-130,30,0,40,0] -135\n");
 }
+
+/// `CRobT(\TaskName:="T_ROB_L")` from the right arm's task reads the left arm as the
+/// left arm's own CRobT does: the same TCP and eax_a the arm angle, not axis 7. The left
+/// arm stands with axis 7 at 100°, which is not its arm angle there (the fixture's test
+/// above: a MoveL that turns the arm angle by 10° moves axis 7 away from 100).
+#[test]
+fn another_tasks_crobt_of_an_arm_reads_its_arm_angle() {
+    let dir = scratch_in("yumi", "foreign");
+    copy_dir(&repo_root().join("tests/systems/yumi"), &dir);
+    let shared = "  PERS tasks both{2} := [[\"T_ROB_R\"],[\"T_ROB_L\"]];\n  VAR syncident stood;\n  \
+                  PERS robtarget own := [[0,0,0],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n";
+    let left = format!(
+        "MODULE MainModule\n{shared}  PROC main()\n    \
+         MoveAbsJ [[10,-120,20,15,35,-10],[100,9E9,9E9,9E9,9E9,9E9]], v200, fine, tool0;\n    \
+         own := CRobT(\\Tool:=tool0 \\WObj:=wobj0);\n    WaitSyncTask stood, both;\n  ENDPROC\nENDMODULE\n"
+    );
+    let right = format!(
+        "MODULE MainModule\n{shared}  PROC main()\n    VAR robtarget read;\n    \
+         WaitSyncTask stood, both;\n    read := CRobT(\\TaskName:=\"T_ROB_L\" \\Tool:=tool0 \\WObj:=wobj0);\n    \
+         TPWrite \"same place \" \\Bool:=Distance(read.trans, own.trans) < 0.01;\n    \
+         TPWrite \"same arm angle \" \\Bool:=Abs(read.extax.eax_a - own.extax.eax_a) < 0.01;\n    \
+         TPWrite \"not axis 7 \" \\Bool:=Abs(read.extax.eax_a - 100) > 1;\n  ENDPROC\nENDMODULE\n"
+    );
+    crate::fixture::write_files(
+        &dir,
+        &[("RAPID/TASK1/PROGMOD/MainModule.mod", &right), ("RAPID/TASK2/PROGMOD/MainModule.mod", &left)],
+    );
+    let out = rapid_in(&dir, &["run", "--quiet", "."]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "same place TRUE\nsame arm angle TRUE\nnot axis 7 TRUE\n");
+}
+
+/// `--robot "IRB 14000"` on the two-arm system moves each task's own arm: the task of
+/// ROB_L gets the left arm (axis 7 starting at 135°), the task of ROB_R the right one
+/// (−135°), so the fixture runs exactly as with MOC.cfg's types.
+#[test]
+fn the_robot_flag_gives_each_task_of_a_yumi_its_own_arm() {
+    let dir = scratch_in("yumi", "flag_system");
+    copy_dir(&repo_root().join("tests/systems/yumi"), &dir);
+    let out = rapid_in(&dir, &["run", "--quiet", "--robot", "IRB 14000", "."]);
+    assert_eq!(
+        text(&out.stdout),
+        "L start [0,-130,30,0,40,0] 135\n\
+         R start [0,-130,30,0,40,0] -135\n\
+         L axes [10,-120,20,15,35,-10] 100\n\
+         moved TRUE\n\
+         angle kept TRUE\n\
+         elbow turned TRUE\n\
+         axis 7 moved TRUE\n",
+        "{}",
+        text(&out.stderr)
+    );
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stderr).contains("50028 Joint 7 out of range"), "{}", text(&out.stderr));
+}

@@ -28,7 +28,7 @@ use rustc_hash::FxHashSet;
 
 pub use self::backup::TaskFolder;
 pub use self::error::InputError;
-use self::error::{bail, Context};
+use self::error::{bail, describe_io_error, Context};
 use self::program_file::{Entry, ProgramFile};
 use crate::boot::cell::{TaskConveyor, TaskUnit};
 use crate::boot::moc_units::read as read_moc_units;
@@ -68,6 +68,8 @@ pub struct Inputs {
     pub task_robots: Vec<(String, Option<String>)>,
     /// A manifest's `[system] start_joints`: where the robots stand at the start.
     pub start_joints: Option<[f64; 6]>,
+    /// A manifest's `[system] controller_ip`: the controller's own address.
+    pub controller_ip: Option<std::net::Ipv4Addr>,
     /// The external units a manifest configures (`[[unit]]`), with their tasks.
     pub units: Vec<TaskUnit>,
     /// The conveyors a manifest configures (`[[conveyor]]`), with their tasks.
@@ -195,6 +197,7 @@ struct Collector {
     robot_bases: Vec<(String, [f64; 3], [f64; 4])>,
     task_robots: Vec<(String, Option<String>)>,
     start_joints: Option<[f64; 6]>,
+    controller_ip: Option<std::net::Ipv4Addr>,
     units: Vec<TaskUnit>,
     conveyors: Vec<TaskConveyor>,
     shared_modules: Vec<usize>,
@@ -545,6 +548,7 @@ impl Collector {
         self.robot_bases = manifest.robot_bases.clone();
         self.task_robots = manifest.task_robots.clone();
         self.start_joints = manifest.start_joints;
+        self.controller_ip = manifest.controller_ip;
         self.units = manifest.units.clone();
         self.conveyors = manifest.conveyors.clone();
         // Each unit is known to programs by its name, a mecunit (ActUnit TRACK).
@@ -740,6 +744,7 @@ impl Collector {
             robot_bases: self.robot_bases,
             task_robots: self.task_robots,
             start_joints: self.start_joints,
+            controller_ip: self.controller_ip,
             units: self.units,
             conveyors: self.conveyors,
             shared_modules: self.shared_modules,
@@ -772,16 +777,6 @@ fn entry_diagnostic(program_idx: usize, span: Span, message: impl Into<String>) 
 fn extension_list() -> String {
     let list: Vec<String> = MODULE_EXTENSIONS.iter().map(|ext| format!(".{ext}")).collect();
     list.join(" ")
-}
-
-/// Says what went wrong in words, without the OS error number.
-fn describe_io_error(err: &io::Error) -> String {
-    match err.kind() {
-        io::ErrorKind::NotFound => "no such file".to_owned(),
-        io::ErrorKind::PermissionDenied => "permission denied".to_owned(),
-        io::ErrorKind::IsADirectory => "it is a folder".to_owned(),
-        _ => err.to_string(),
-    }
 }
 
 #[cfg(test)]

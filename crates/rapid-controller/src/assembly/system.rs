@@ -50,7 +50,8 @@ pub struct LoadOptions {
     pub start_joints: Option<[f64; 6]>,
     /// The stimulus file, read against the system's I/O configuration.
     pub stimulus: Option<PathBuf>,
-    /// The controller's own address for the sockets (`--controller-ip`).
+    /// The controller's own address for the sockets (`--controller-ip`), above the
+    /// manifest's `controller_ip`.
     pub controller_ip: Option<Ipv4Addr>,
 }
 
@@ -264,7 +265,8 @@ fn assemble_noting(
     }
     let booted = boot_tasks(loaded, sys.as_ref(), &tasks, alone, options)?;
     let Booted { mut controller, robots, model_note } = booted;
-    if let Some(ip) = options.controller_ip {
+    // `--controller-ip` wins over the manifest's `controller_ip`.
+    if let Some(ip) = options.controller_ip.or(tasks[0].inputs.controller_ip) {
         for task in &mut controller.tasks {
             task.loaded.vm.resources_mut().sockets.add_controller_addr(ip);
         }

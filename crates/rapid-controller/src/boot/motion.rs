@@ -89,7 +89,7 @@ pub fn robot_model(
     // `--robot` stands above all; a manifest's [system] robot above MOC.cfg, as in
     // `choose_model`.
     if robot_override.is_some() || (named.is_none() && cell.robot.is_some()) {
-        return Ok(system);
+        return Ok(yumi_arm_of(system, cell, n));
     }
     if let Some(model) = named {
         return Ok(model);
@@ -100,6 +100,26 @@ pub fn robot_model(
         }
         _ => Ok(system),
     }
+}
+
+/// The YuMi arm robot ROB_`n` is when `model` (one model for every task: `--robot
+/// "IRB 14000"`) is a YuMi arm: MOC.cfg names the arms `ROB_L` and `ROB_R`, and the
+/// task of ROB_L moves the left arm whichever arm the name alone gave. Any other model,
+/// or a robot whose name says no side, keeps `model`.
+fn yumi_arm_of(model: &'static rapid_motion::RobotModel, cell: &Cell, n: usize) -> &'static rapid_motion::RobotModel {
+    use rapid_motion::kinematics::yumi::Side;
+    if model.yumi.is_none() {
+        return model;
+    }
+    let Some(robot) = moc_robot(cell.syspar, n) else { return model };
+    let lower = robot.name.to_ascii_lowercase();
+    let side = lower.split(['_', '-', ' ']).find_map(|part| match part {
+        "l" | "left" => Some(Side::Left),
+        "r" | "right" => Some(Side::Right),
+        _ => None,
+    });
+    let Some(side) = side else { return model };
+    rapid_motion::robots::yumi_arms().iter().find(|arm| arm.yumi == Some(side)).unwrap_or(model)
 }
 
 /// Sets the task's robot up for the run; with `record` (a trace or a report is

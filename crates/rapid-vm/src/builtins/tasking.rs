@@ -98,6 +98,9 @@ pub enum Reply {
 pub struct OtherRobotState {
     pub frames: rapid_motion::frames::FrameChain,
     pub extax: [f64; 6],
+    /// `extax` as a robtarget reads it (CRobT): a 7-axis arm's eax_a is its arm angle,
+    /// not axis 7 (`motion::arm7`).
+    pub robtarget_extax: [f64; 6],
     pub flange: rapid_motion::Pose,
     pub conf: rapid_motion::confdata::ConfData,
 }

@@ -12,6 +12,16 @@ pub struct InputError {
     source: Option<io::Error>,
 }
 
+/// Says what went wrong in words, without the OS error number.
+pub(super) fn describe_io_error(err: &io::Error) -> String {
+    match err.kind() {
+        io::ErrorKind::NotFound => "no such file".to_owned(),
+        io::ErrorKind::PermissionDenied => "permission denied".to_owned(),
+        io::ErrorKind::IsADirectory => "it is a folder".to_owned(),
+        _ => err.to_string(),
+    }
+}
+
 impl InputError {
     /// An error that is its message alone.
     pub(crate) fn new(message: impl Into<String>) -> InputError {

@@ -96,6 +96,9 @@ pub struct Manifest {
     pub task_robots: Vec<(String, Option<String>)>,
     /// `[system] start_joints`: the axis values (degrees) the robots start at.
     pub start_joints: Option<[f64; 6]>,
+    /// `[system] controller_ip`: the controller's own address in its cell, as
+    /// `--controller-ip` gives it (the flag wins).
+    pub controller_ip: Option<std::net::Ipv4Addr>,
     pub findings: Vec<Finding>,
 }
 
@@ -124,6 +127,7 @@ struct RawSystem {
     home: Option<Spanned<String>>,
     shared: Option<Spanned<Vec<Spanned<String>>>>,
     start_joints: Option<Spanned<Vec<f64>>>,
+    controller_ip: Option<Spanned<String>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -256,6 +260,9 @@ impl Reader<'_> {
                 _ => self.find(joints.span(), "`start_joints` is six axis values in degrees, e.g. [0, 0, 0, 0, 30, 0]"),
             }
         }
+        if let Some(ip) = system.controller_ip {
+            self.controller_ip(&ip);
+        }
         self.manifest.options = system.options;
         if let Some(io) = system.io {
             let path = self.dir.join(io.get_ref());
@@ -272,6 +279,18 @@ impl Reader<'_> {
         }
         if let Some(shared) = system.shared {
             self.manifest.shared = self.modules("the shared modules", &shared);
+        }
+    }
+
+    /// `controller_ip`: an IPv4 address in dotted form, as `--controller-ip` takes it.
+    fn controller_ip(&mut self, ip: &Spanned<String>) {
+        match ip.get_ref().trim().parse::<std::net::Ipv4Addr>() {
+            Ok(addr) => self.manifest.controller_ip = Some(addr),
+            Err(_) => {
+                let message =
+                    format!("`controller_ip` `{}` is not an IPv4 address such as 192.168.125.1", ip.get_ref());
+                self.find(ip.span(), message);
+            }
         }
     }
 

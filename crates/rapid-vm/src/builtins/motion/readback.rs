@@ -20,6 +20,8 @@ struct OtherRobot {
     joints: rapid_motion::Joints,
     frames: FrameChain,
     extax: [f64; 6],
+    /// `extax` as CRobT reads it (a 7-axis arm's eax_a: its arm angle).
+    robtarget_extax: [f64; 6],
     /// Its flange in its base frame and its configuration, by its own kinematics.
     flange: rapid_motion::Pose,
     conf: rapid_motion::confdata::ConfData,
@@ -39,6 +41,7 @@ fn robot_of(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Option<OtherRobo
                 joints,
                 frames: robot.frames,
                 extax: robot.extax,
+                robtarget_extax: robot.robtarget_extax,
                 flange: robot.flange,
                 conf: robot.conf,
                 tcp,
@@ -246,7 +249,7 @@ pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
                 // its base frame is.
                 chain.base = other.frames.base;
             }
-            (other.flange, other.conf, other.extax)
+            (other.flange, other.conf, other.robtarget_extax)
         }
         Some(None) => return Ok(Some(data::robtarget_value(ctx, &nalgebra::Isometry3::identity(), [0; 4])?)),
         None => {
