@@ -103,3 +103,26 @@ fn the_robot_flag_gives_each_task_of_a_yumi_its_own_arm() {
     assert_eq!(out.status.code(), Some(1));
     assert!(text(&out.stderr).contains("50028 Joint 7 out of range"), "{}", text(&out.stderr));
 }
+
+/// A run that moves a YuMi arm says that the arm angle is our own reading (ABB's
+/// definition is not public), so nobody takes our axis 7 for a real YuMi's; a run of
+/// another robot says nothing of it.
+#[test]
+fn a_run_moving_a_yumi_arm_notes_whose_arm_angle_it_is() {
+    let dir = scratch_in("yumi", "note");
+    let program = |eax_a: &str| {
+        format!(
+            "MODULE M\n  PROC main()\n    MoveAbsJ [[0,-100,30,0,40,0],[{eax_a},9E9,9E9,9E9,9E9,9E9]], v100, fine, \
+             tool0;\n  ENDPROC\nENDMODULE\n"
+        )
+    };
+    let (yumi_program, other_program) = (program("-135"), program("9E9"));
+    crate::fixture::write_files(&dir, &[("yumi.mod", yumi_program.as_str()), ("other.mod", other_program.as_str())]);
+    let note = "the arm angle (robtarget eax_a) follows our own reading";
+    let yumi = rapid_in(&dir, &["run", "--robot", "IRB 14000", "yumi.mod"]);
+    assert_eq!(yumi.status.code(), Some(0), "{}", text(&yumi.stderr));
+    assert!(text(&yumi.stderr).contains(note), "{}", text(&yumi.stderr));
+    let other = rapid_in(&dir, &["run", "other.mod"]);
+    assert_eq!(other.status.code(), Some(0), "{}", text(&other.stderr));
+    assert!(!text(&other.stderr).contains(note), "{}", text(&other.stderr));
+}

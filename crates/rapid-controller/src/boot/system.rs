@@ -14,6 +14,13 @@ use super::cell::Cell;
 use super::{motion, robots, virtual_io};
 use crate::{Controller, TaskKind, TaskSpec, TrustLevel};
 
+/// What a user of a YuMi must know: ABB's definition of the arm angle is not public, so
+/// ours (`rapid_motion::kinematics::yumi::arm_angle`) may place the elbow elsewhere than a
+/// real YuMi does for the same robtarget; the TCP pose is reached as written.
+const YUMI_ARM_ANGLE: &str = "IRB 14000 YuMi: the arm angle (robtarget eax_a) follows our own reading, \
+     not ABB's (not public): every TCP pose is reached as written, but axis 7 and the elbow may stand \
+     elsewhere than on a real YuMi (docs/real-systems.md)";
+
 /// A stimulus's input orders, reactions and pendant answers (`rapid_vm::builtins::io`).
 pub type Stimulus = (Vec<(f64, u32, f64)>, Vec<rapid_vm::builtins::io::Reaction>, Vec<(f64, String)>);
 
@@ -219,7 +226,7 @@ pub fn boot(
         }
     }
     let stimulus = stimulus(io.as_ref()).map_err(BootError::Refused)?;
-    let (model, model_note) =
+    let (model, mut model_note) =
         motion::choose_model(options.robot, cell.robot, cell.syspar).map_err(BootError::UnknownModel)?;
     // The robot each task moves: its group's ROB_n, else by the tasks' order.
     let numbers = match sys {
@@ -228,6 +235,7 @@ pub fn boot(
         _ => vec![Some(robots::of_single_task(sys, cell.syspar, cell.task_robots))],
     };
     let mut first_motion = true;
+    let mut moves_yumi = false;
     for ((spec, program), &number) in tasks.iter_mut().zip(&numbers) {
         if spec.motion {
             spec.robot = number.is_some();
@@ -241,7 +249,9 @@ pub fn boot(
             let robot = &mut program.vm.resources_mut().robot;
             // A task moving external units only keeps an arm that never moves (its
             // robot instructions are refused), so that its units have a state to live in.
-            motion::configure(robot, own.unwrap_or(model), options.record);
+            let moved = own.unwrap_or(model);
+            moves_yumi |= moved.yumi.is_some();
+            motion::configure(robot, moved, options.record);
             if let Some(n) = number {
                 motion::configure_base(robot, &cell, n, &spec.name);
                 motion::configure_ranges(robot, cell.syspar, n);
@@ -252,6 +262,9 @@ pub fn boot(
                 .map_err(BootError::Refused)?;
             first_motion = false;
         }
+    }
+    if moves_yumi {
+        model_note = Some(model_note.map_or_else(|| YUMI_ARM_ANGLE.to_owned(), |n| format!("{n}; {YUMI_ARM_ANGLE}")));
     }
     // The robots work in the work objects the other tasks' units carry (MultiMove).
     if !alone {
