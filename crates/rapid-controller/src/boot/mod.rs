@@ -2,9 +2,10 @@
 //! the tasks and their configuration, the I/O system (`io_config`), the robots of its motion tasks
 //! and their external units and conveyors (`motion`, `robots`, `moc_units`), the
 //! virtual signals of `--virtual-io` (`virtual_io`), from the configuration around the
-//! tasks (`cell`); each task's file devices and configuration data (`task`).
+//! tasks (`cell`); each task's file devices and configuration data (`task`, `cfgdata`).
 
 pub mod cell;
+pub mod cfgdata;
 pub mod io_config;
 pub mod moc_units;
 pub mod motion;
