@@ -410,8 +410,6 @@ fn save_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-/// Writes a file so a crash leaves the old or the new contents, never a torn file:
-/// a temporary file beside it, flushed to disk, then renamed over it.
 /// `GetModalPayLoadMode()`: the system parameter ModalPayLoadMode (topic Controller,
 /// type General Rapid) of the configuration the run was started with: 1 when the
 /// payload is modal (GripLoad declares it for the moves that follow), 0 when it is not
@@ -424,6 +422,8 @@ fn get_modal_pay_load_mode(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 /// its SYS.cfg runs.
 const MODAL_PAY_LOAD_DEFAULT: f32 = 1.0;
 
+/// Writes a file so a crash leaves the old or the new contents, never a torn file:
+/// a temporary file beside it, flushed to disk, then renamed over it.
 fn write_atomically(fs: &dyn FileSystem, path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let Some(parent) = path.parent() else { return Err(std::io::Error::other("the path has no folder")) };
     if !fs.metadata(parent).is_ok_and(|m| m.kind == FileKind::Dir) {
