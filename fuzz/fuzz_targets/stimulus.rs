@@ -34,7 +34,7 @@ fn io() -> &'static IoSystem {
         let file = rapid_config::parse(EIO);
         assert!(file.errors.is_empty(), "the target's EIO.cfg: {:?}", file.errors);
         let eio = rapid_config::eio::read(&file);
-        rapid_vm::builtins::io_config::io_system(&eio).expect("the target's I/O configuration")
+        rapid_controller::boot::io_config::io_system(&eio).expect("the target's I/O configuration")
     })
 }
 

@@ -8,7 +8,7 @@
 //!   depends on a front end, the front ends never on the CLI.
 //!
 //! [`DEBT`] names the edges the design wants gone (the interpreter core should know no
-//! controller: rapid-vm reaching rapid-io, rapid-motion and rapid-config); they are
+//! controller: rapid-vm reaching rapid-io and rapid-motion); they are
 //! allowed until the host traits and the robot crate take them away, and then must be
 //! deleted from both lists.
 
@@ -39,10 +39,7 @@ const ALLOWED: &[(&str, &[&str])] = &[
     ("rapid-lib", &["rapid-syntax"]),
     ("rapid-sema", &["rapid-limits", "rapid-syntax", "rapid-lib", "rapid-config"]),
     ("rapid-fmt", &["rapid-syntax", "rapid-lib"]),
-    (
-        "rapid-vm",
-        &["rapid-limits", "rapid-syntax", "rapid-sema", "rapid-lib", "rapid-config", "rapid-motion", "rapid-io"],
-    ),
+    ("rapid-vm", &["rapid-limits", "rapid-syntax", "rapid-sema", "rapid-lib", "rapid-motion", "rapid-io"]),
     (
         "rapid-controller",
         &["rapid-limits", "rapid-syntax", "rapid-vm", "rapid-sema", "rapid-io", "rapid-config", "rapid-motion"],
@@ -69,7 +66,7 @@ const ALLOWED: &[(&str, &[&str])] = &[
 ];
 
 /// Allowed today, wanted gone: the interpreter core reaching the controller's side.
-const DEBT: &[(&str, &str)] = &[("rapid-vm", "rapid-config"), ("rapid-vm", "rapid-motion"), ("rapid-vm", "rapid-io")];
+const DEBT: &[(&str, &str)] = &[("rapid-vm", "rapid-motion"), ("rapid-vm", "rapid-io")];
 
 /// The workspace crates a manifest's `[dependencies]` (and target-specific
 /// dependencies) name; dev- and build-dependencies are not part of the graph.

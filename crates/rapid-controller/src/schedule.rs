@@ -137,7 +137,7 @@ impl Controller {
                 normal: spec.kind == TaskKind::Normal,
                 active: true,
                 executing: true,
-                rmq: spec.rmq,
+                rmq: spec.rmq_config(),
                 robot_of: spec.robot_of.clone(),
             })
             .collect();

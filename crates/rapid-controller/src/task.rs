@@ -76,6 +76,19 @@ pub struct TaskSpec {
 }
 
 impl TaskSpec {
+    /// Its message queue as the VM's task state holds it.
+    pub fn rmq_config(&self) -> rapid_vm::builtins::rmq::RmqConfig {
+        use rapid_config::sys::RmqType;
+        use rapid_vm::builtins::rmq::{RmqConfig, RmqKind};
+        let kind = match self.rmq.rmq_type {
+            RmqType::None => RmqKind::None,
+            RmqType::Internal => RmqKind::Internal,
+            RmqType::Remote => RmqKind::Remote,
+        };
+        let rapid_config::sys::Rmq { synchronous, max_msg_size, max_no_of_msg, .. } = self.rmq;
+        RmqConfig { kind, synchronous, max_msg_size, max_no_of_msg }
+    }
+
     /// A NORMAL task named `name` (trust level SysFail, in the foreground, no message
     /// queue, no shared modules) that moves its own robot when `motion`: the task of a
     /// program alone, and what tests and front ends build systems of.

@@ -54,7 +54,7 @@ fn boot(file: PathBuf) -> Result<Session, String> {
     let eio = rapid_config::eio::read(&rapid_config::parse(
         "EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n\n      -Name \"di1\" -SignalType \"DI\"\n",
     ));
-    let io = rapid_vm::builtins::io_config::io_system(&eio)?;
+    let io = rapid_controller::boot::io_config::io_system(&eio)?;
     Ok(Session::new(Controller::new(vec![(TaskSpec::normal("T_ROB1", true), loaded)], Some(io))?))
 }
 

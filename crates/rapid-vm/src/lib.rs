@@ -3,7 +3,10 @@
 //! Invariant: no IO of its own. The pendant reaches it through the [`Host`] trait, the
 //! file system, the network and the clocks through the [`world::World`] its embedder
 //! gives each task (the std ones live in `rapid_controller::host_std`); the sandbox
-//! of the file devices is the VM's own. RAPID call depth lives in explicit frames,
+//! of the file devices is the VM's own. It knows no configuration file format: the
+//! controller hands it its own types (a task's `builtins::rmq::RmqConfig`, a built
+//! `rapid_io::IoSystem`) and the configuration data behind
+//! `builtins::cfgdata::CfgDatabase`. RAPID call depth lives in explicit frames,
 //! never on the Rust stack.
 
 pub mod builtins;

@@ -4,6 +4,7 @@
 //! its file writes them.
 
 use super::Session;
+use crate::boot::cfgdata::SysParams;
 
 /// A configuration domain (`EIO`, `SYS`, …).
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -41,10 +42,10 @@ impl Session {
     /// The configuration domains in the order the system gave them; none when the
     /// program was booted without configuration. They are the first task's, which its
     /// WriteCfgData changes (each task reads and writes a copy of its own, as
-    /// `rapid_vm::builtins::cfgdata` keeps them).
+    /// `boot::cfgdata::SysParams` keeps them).
     pub fn configuration(&self) -> Vec<ConfigDomain> {
         let Some(task) = self.controller.tasks.first() else { return Vec::new() };
-        task.loaded.vm.resources().cfgdata.domains().iter().map(|(name, file)| domain(name, file)).collect()
+        SysParams::of(&task.loaded.vm.resources().cfgdata).iter().map(|(name, file)| domain(name, file)).collect()
     }
 }
 

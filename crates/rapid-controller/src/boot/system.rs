@@ -323,7 +323,7 @@ fn configure_operations(
 fn io_system(syspar: &[(String, CfgFile)]) -> Result<Option<rapid_io::IoSystem>, String> {
     let eio = syspar.iter().find(|(domain, _)| domain.eq_ignore_ascii_case("EIO"));
     match eio {
-        Some((_, eio)) => rapid_vm::builtins::io_config::io_system(&rapid_config::eio::read(eio)).map(Some),
+        Some((_, eio)) => crate::boot::io_config::io_system(&rapid_config::eio::read(eio)).map(Some),
         None => Ok(None),
     }
 }

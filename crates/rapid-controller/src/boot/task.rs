@@ -24,7 +24,7 @@ pub fn configure(
     let resources = loaded.vm.resources_mut();
     resources.files.set_root(home);
     resources.files.set_modules(module_files(files));
-    resources.cfgdata.set_config(syspar);
+    resources.cfgdata.set_config(Box::new(super::cfgdata::SysParams::new(syspar)));
     resources.controller = state;
 }
 

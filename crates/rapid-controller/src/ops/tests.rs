@@ -29,7 +29,7 @@ fn with_signals(program: &str, inputs: &str) -> Controller {
         let signals: String = names.iter().map(|n| format!("\n      -Name \"{n}\" -SignalType \"DI\"\n")).collect();
         let eio =
             rapid_config::eio::read(&rapid_config::parse(&format!("EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n{signals}")));
-        match rapid_vm::builtins::io_config::io_system(&eio) {
+        match crate::boot::io_config::io_system(&eio) {
             Ok(io) => io,
             Err(message) => panic!("{message}"),
         }

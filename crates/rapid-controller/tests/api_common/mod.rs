@@ -100,7 +100,7 @@ pub(crate) fn with_signals(text: &str, inputs: &[&str], outputs: &[&str]) -> Ses
         })
         .collect();
     let eio = rapid_config::eio::read(&rapid_config::parse(&format!("EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n{signals}")));
-    let io = match rapid_vm::builtins::io_config::io_system(&eio) {
+    let io = match rapid_controller::boot::io_config::io_system(&eio) {
         Ok(io) => io,
         Err(message) => panic!("{message}"),
     };

@@ -62,11 +62,11 @@ pub(crate) fn boot_with(
         .map_err(|e| format!("{e:?}"))?;
     loaded.vm.resources_mut().files.set_root(root);
     let config = config.into_iter().map(|(domain, text)| (domain, rapid_config::parse(&text))).collect();
-    loaded.vm.resources_mut().cfgdata.set_config(config);
+    loaded.vm.resources_mut().cfgdata.set_config(Box::new(rapid_controller::boot::cfgdata::SysParams::new(config)));
     let signals: String =
         names.iter().map(|(n, _, kind)| format!("\n      -Name \"{n}\" -SignalType \"{kind}\"\n")).collect();
     let eio = rapid_config::eio::read(&rapid_config::parse(&format!("EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n{signals}")));
-    let io = rapid_vm::builtins::io_config::io_system(&eio)?;
+    let io = rapid_controller::boot::io_config::io_system(&eio)?;
     let mut spec = TaskSpec::normal("T_ROB1", true);
     spec.rmq.rmq_type = rmq;
     Ok(Session::new(Controller::new(vec![(spec, loaded)], Some(io))?))

@@ -11,10 +11,12 @@
 //!
 //! Writes change the configuration in memory (the controller uses most parameters after
 //! a restart); SaveCfgData writes a domain's file, every other byte as it was read.
+//!
+//! The configuration itself is the controller's: it installs a [`CfgDatabase`] (over
+//! its parsed files) in each task, and this module knows no file format.
 
+use std::any::Any;
 use std::path::Path;
-
-use rapid_config::{CfgFile, Instance};
 
 use super::files::devices;
 use super::{native, present, Ctx, Family};
@@ -28,26 +30,102 @@ type Res = Result<Option<Value>, RapidError>;
 /// `END_OF_LIST`: what `\ListNo` becomes after the last matching instance.
 const END_OF_LIST: f32 = -1.0;
 
-/// The configuration of the run: one parsed file per domain.
+/// Where an instance is within its domain, as the database numbers it.
+pub type InstanceAt = (usize, usize);
+
+/// An attribute as the configuration writes it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum CfgAttr {
+    /// Written without a value (`-Enabled`).
+    Flag,
+    /// A value in double quotes, quotes taken off.
+    Quoted(String),
+    /// A value written bare (`-MaxLog 10`).
+    Bare(String),
+}
+
+/// A change WriteCfgData makes to an instance's attribute.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CfgEdit<'a> {
+    /// Write the attribute as a flag (nothing when it is written already).
+    SetFlag,
+    /// Take the attribute out (nothing when it is not written).
+    Remove,
+    /// Write the attribute with this value (quoted as the file has it).
+    Value(&'a str),
+}
+
+/// Why the database refused an edit: the value cannot be written (a string with `"`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Unwritable;
+
+/// What ReadCfgData, WriteCfgData, SaveCfgData and GetModalPayLoadMode need of the
+/// system parameters. The controller keeps the configuration in its own format and
+/// installs an implementation of this in each task; the VM knows no file format.
+/// Domains are numbered from 0.
+pub trait CfgDatabase: std::fmt::Debug + Send + Sync {
+    /// The database itself, for the controller that installed it.
+    fn as_any(&self) -> &dyn Any;
+    /// How many domains (EIO, SYS, …) the configuration has.
+    fn domain_count(&self) -> usize;
+    /// The name of domain `domain`, e.g. `EIO`.
+    fn domain_name(&self, domain: usize) -> &str;
+    /// Domain `domain` as its file is written, every byte as it was read except for
+    /// WriteCfgData's changes.
+    fn domain_text(&self, domain: usize) -> &str;
+    /// The instances of type `type_name` whose attribute `attr` is `value`, in file order.
+    fn find(&self, domain: usize, type_name: &str, attr: &str, value: &str) -> Vec<InstanceAt>;
+    /// Attribute `name` of an instance, when the instance writes it.
+    fn attr(&self, domain: usize, at: InstanceAt, name: &str) -> Option<CfgAttr>;
+    /// Attribute `name` as the first instance of the same type that writes it writes it.
+    fn attr_of_type(&self, domain: usize, at: InstanceAt, name: &str) -> Option<CfgAttr>;
+    /// Changes attribute `name` of an instance.
+    fn edit(&mut self, domain: usize, at: InstanceAt, name: &str, edit: CfgEdit<'_>) -> Result<(), Unwritable>;
+}
+
+/// The configuration of the run, as the controller installed it.
 #[derive(Debug, Default)]
 pub struct CfgState {
-    domains: Vec<(String, CfgFile)>,
+    database: Option<Box<dyn CfgDatabase>>,
 }
 
 impl CfgState {
-    /// Installs the configuration: (domain such as `EIO`, parsed file) pairs.
-    pub fn set_config(&mut self, domains: Vec<(String, CfgFile)>) {
-        self.domains = domains;
+    /// Installs the configuration the task reads and writes.
+    pub fn set_config(&mut self, database: Box<dyn CfgDatabase>) {
+        self.database = Some(database);
     }
 
-    /// The configuration as it stands: (domain, parsed file) pairs, WriteCfgData's
-    /// changes included (what a front end shows of the system parameters).
-    pub fn domains(&self) -> &[(String, CfgFile)] {
-        &self.domains
+    /// The configuration as it stands, WriteCfgData's changes included (what a front
+    /// end shows of the system parameters); none when none was installed.
+    pub fn database(&self) -> Option<&dyn CfgDatabase> {
+        self.database.as_deref()
+    }
+
+    fn domain_count(&self) -> usize {
+        self.database.as_ref().map_or(0, |db| db.domain_count())
     }
 
     fn domain(&self, name: &str) -> Option<usize> {
-        self.domains.iter().position(|(d, _)| d.eq_ignore_ascii_case(name))
+        let db = self.database.as_ref()?;
+        (0..db.domain_count()).find(|&d| db.domain_name(d).eq_ignore_ascii_case(name))
+    }
+
+    /// The value of ModalPayLoadMode (GetModalPayLoadMode): SYS.cfg's `GENERAL_RAPID`
+    /// instance of that `-Name`, its `-Value`; the default without a SYS domain,
+    /// without the instance, or with a value that is not a number.
+    // uncertain: the SYS.cfg form (type GENERAL_RAPID, one instance per parameter with
+    // -Name and -Value) is as RobotWare 6 backups write General Rapid parameters; ABB's
+    // system parameters manual gives 0 and 1 as the values and 1 as the default.
+    pub fn modal_pay_load_mode(&self) -> f32 {
+        let (Some(db), Some(domain)) = (self.database.as_deref(), self.domain("SYS")) else {
+            return MODAL_PAY_LOAD_DEFAULT;
+        };
+        let found = db.find(domain, "GENERAL_RAPID", "Name", "ModalPayLoadMode");
+        let value = match found.first().and_then(|&at| db.attr(domain, at, "Value")) {
+            Some(CfgAttr::Quoted(text) | CfgAttr::Bare(text)) => text.trim().parse::<f32>().ok(),
+            _ => None,
+        };
+        value.unwrap_or(MODAL_PAY_LOAD_DEFAULT)
     }
 }
 
@@ -76,30 +154,10 @@ fn parse_path(text: &str) -> Option<InstancePath> {
     Some(InstancePath { domain: (*domain).to_owned(), type_name: (*type_name).to_owned(), key })
 }
 
-/// The instances of `path`, as (section index, instance index), in file order.
-fn matches(file: &CfgFile, path: &InstancePath) -> Vec<(usize, usize)> {
-    let (attr, wanted) = &path.key;
-    let mut found = Vec::new();
-    for (si, section) in file.sections.iter().enumerate() {
-        if !section.name.eq_ignore_ascii_case(&path.type_name) {
-            continue;
-        }
-        for (ii, inst) in section.instances.iter().enumerate() {
-            // uncertain: values compare without regard to case (names on the controller
-            // ignore case); an attribute other than Name compares as written otherwise.
-            if inst.value(attr).is_some_and(|v| v.eq_ignore_ascii_case(wanted)) {
-                found.push((si, ii));
-            }
-        }
-    }
-    found
-}
-
-/// Where an instance is: domain, section and instance indices, and the `\ListNo` to
-/// hand back.
+/// Where an instance is: its domain, where in it, and the `\ListNo` to hand back.
 struct Found {
     domain: usize,
-    at: (usize, usize),
+    at: InstanceAt,
     next: Option<f32>,
 }
 
@@ -111,14 +169,16 @@ fn find(ctx: &mut Ctx<'_>, path_text: &str, list_no: Option<&Value>) -> Result<F
             format!("`{path_text}` is not an instance path such as \"/EIO/EIO_SIGNAL/di1\""),
         ));
     };
-    if ctx.resources.cfgdata.domains.is_empty() {
+    if ctx.resources.cfgdata.domain_count() == 0 {
         // uncertain: without a configuration nothing is found (the controller always has one).
         return Err(ctx.error(Err::CfgNotFound, "no system configuration is loaded (run a backup folder)"));
     }
     let Some(domain) = ctx.resources.cfgdata.domain(&path.domain) else {
         return Err(ctx.error(Err::CfgNotFound, format!("no configuration domain `{}`", path.domain)));
     };
-    let found = matches(&ctx.resources.cfgdata.domains[domain].1, &path);
+    let (attr, wanted) = &path.key;
+    let found =
+        ctx.resources.cfgdata.database().map_or_else(Vec::new, |db| db.find(domain, &path.type_name, attr, wanted));
     if found.is_empty() {
         return Err(ctx.error(Err::CfgNotFound, format!("no instance `{path_text}`")));
     }
@@ -137,11 +197,6 @@ fn find(ctx: &mut Ctx<'_>, path_text: &str, list_no: Option<&Value>) -> Result<F
     Ok(Found { domain, at: found[idx], next: Some(next) })
 }
 
-fn instance<'s>(state: &'s CfgState, found: &Found) -> Option<&'s Instance> {
-    let file = &state.domains.get(found.domain)?.1;
-    file.sections.get(found.at.0)?.instances.get(found.at.1)
-}
-
 /// The kind of value an attribute holds, as the file writes it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Kind {
@@ -150,13 +205,13 @@ enum Kind {
     Flag,
 }
 
-fn kind_of(attr: &rapid_config::Attr) -> Kind {
-    match &attr.value {
-        None => Kind::Flag,
-        Some(v) if v.quoted => Kind::Text,
-        Some(v) if v.text.parse::<f64>().is_ok() => Kind::Number,
+fn kind_of(attr: &CfgAttr) -> Kind {
+    match attr {
+        CfgAttr::Flag => Kind::Flag,
+        CfgAttr::Quoted(_) => Kind::Text,
+        CfgAttr::Bare(text) if text.parse::<f64>().is_ok() => Kind::Number,
         // uncertain: bare words that are not numbers (`30,82`) read as strings.
-        Some(_) => Kind::Text,
+        CfgAttr::Bare(_) => Kind::Text,
     }
 }
 
@@ -190,19 +245,17 @@ fn read_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let at = *CFG_DATA;
     let target = ctx.value(&args[at.cfg_data])?;
     let found = find(ctx, &path, args.get(at.list_no))?;
-    let Some(inst) = instance(&ctx.resources.cfgdata, &found) else {
-        return Err(ctx.error(Err::CfgNotFound, format!("no instance `{path}`")));
-    };
+    let attr = ctx.resources.cfgdata.database().and_then(|db| db.attr(found.domain, found.at, &attr_name));
     let Some(wanted) = wanted_kind(&target) else {
         return Err(ctx.error(Err::CfgIllType, "CfgData must be num, dnum, bool or string"));
     };
-    let value = match inst.attr(&attr_name) {
+    let value = match attr {
         // uncertain: a flag the instance does not write is FALSE (its default); any
         // other attribute it does not write is not found (we know no defaults).
         None if wanted == Kind::Flag => Value::Bool(false),
         None => return Err(ctx.error(Err::CfgNotFound, format!("`{path}` has no attribute `{attr_name}`"))),
         Some(attr) => {
-            let kind = kind_of(attr);
+            let kind = kind_of(&attr);
             if kind != wanted {
                 let message = format!(
                     "attribute `{attr_name}` of `{path}` is a {}, CfgData is a {}",
@@ -211,7 +264,10 @@ fn read_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
                 );
                 return Err(ctx.error(Err::CfgIllType, message));
             }
-            let text = attr.value.as_ref().map_or("", |v| v.text.as_str());
+            let text = match &attr {
+                CfgAttr::Flag => "",
+                CfgAttr::Quoted(text) | CfgAttr::Bare(text) => text.as_str(),
+            };
             match (kind, &target) {
                 (Kind::Flag, _) => Value::Bool(true),
                 (Kind::Text, _) => Value::Str(text.into()),
@@ -256,19 +312,12 @@ fn write_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if number.is_some_and(|n| !n.is_finite()) {
         return Err(ctx.error(Err::CfgLimit, "a configuration number must be finite"));
     }
-    let file = &ctx.resources.cfgdata.domains[found.domain].1;
-    let (section, inst) = found.at;
-    let edited = match &value {
-        Value::Bool(true) => file.with_flag(section, inst, &attr_name).ok().flatten(),
-        Value::Bool(false) => file.without_attr(section, inst, &attr_name).ok().flatten(),
-        Value::Str(s) => match file.with_value(section, inst, &attr_name, s) {
-            Ok(text) => Some(text),
-            Err(_) => return Err(ctx.error(Err::CfgLimit, "a configuration string cannot hold `\"`")),
-        },
-        _ => number.and_then(|n| file.with_value(section, inst, &attr_name, &format_number(n)).ok()),
+    let written = match ctx.resources.cfgdata.database.as_deref_mut() {
+        Some(db) => write_value(db, &found, &attr_name, &value, number),
+        None => Ok(()),
     };
-    if let Some(text) = edited {
-        ctx.resources.cfgdata.domains[found.domain].1 = rapid_config::parse(&text);
+    if written.is_err() {
+        return Err(ctx.error(Err::CfgLimit, "a configuration string cannot hold `\"`"));
     }
     if let Some(next) = found.next {
         ctx.store(&args[at.list_no], Value::Num(next))?;
@@ -276,17 +325,38 @@ fn write_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
+/// Writes a CfgData value into an attribute: a bool as the flag written or taken out,
+/// a number as the configuration writes numbers. Only a string can be refused.
+fn write_value(
+    db: &mut dyn CfgDatabase,
+    found: &Found,
+    attr_name: &str,
+    value: &Value,
+    number: Option<f64>,
+) -> Result<(), Unwritable> {
+    let (domain, at) = (found.domain, found.at);
+    match value {
+        Value::Bool(true) => _ = db.edit(domain, at, attr_name, CfgEdit::SetFlag),
+        Value::Bool(false) => _ = db.edit(domain, at, attr_name, CfgEdit::Remove),
+        Value::Str(s) => return db.edit(domain, at, attr_name, CfgEdit::Value(s)),
+        _ => {
+            if let Some(n) = number {
+                _ = db.edit(domain, at, attr_name, CfgEdit::Value(&format_number(n)));
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The kind of an attribute: as this instance writes it, else as another instance of
 /// the same type does (an attribute left at its default is not written).
 // uncertain: without ABB's parameter schema, an attribute no instance of the type
 // writes is not found.
 fn attribute_kind(state: &CfgState, found: &Found, attr_name: &str) -> Option<Kind> {
-    if let Some(attr) = instance(state, found)?.attr(attr_name) {
-        return Some(kind_of(attr));
-    }
-    let file = &state.domains.get(found.domain)?.1;
-    let type_name = &file.sections.get(found.at.0)?.name;
-    file.instances(type_name).find_map(|i| i.attr(attr_name)).map(kind_of)
+    let db = state.database()?;
+    let attr =
+        db.attr(found.domain, found.at, attr_name).or_else(|| db.attr_of_type(found.domain, found.at, attr_name));
+    attr.as_ref().map(kind_of)
 }
 
 /// A number as the configuration writes it: integers without a point, others in the
@@ -310,7 +380,7 @@ fn save_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let domain = ctx.string(&args[at.domain])?;
     let all = domain.eq_ignore_ascii_case("ALL");
     let chosen: Vec<usize> = if all {
-        (0..ctx.resources.cfgdata.domains.len()).collect()
+        (0..ctx.resources.cfgdata.domain_count()).collect()
     } else {
         ctx.resources.cfgdata.domain(&domain).into_iter().collect()
     };
@@ -322,7 +392,8 @@ fn save_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         // ALL_DOMAINS saves each domain as DOMAIN.cfg in the folder FilePath names.
         // uncertain: the file names of ALL_DOMAINS follow the backup's SYSPAR names.
         let text = if all {
-            devices::join_object(&target, Some(&format!("{}.cfg", ctx.resources.cfgdata.domains[idx].0)))
+            let name = ctx.resources.cfgdata.database().map_or("", |db| db.domain_name(idx));
+            devices::join_object(&target, Some(&format!("{name}.cfg")))
         } else {
             target.clone()
         };
@@ -332,44 +403,27 @@ fn save_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         if resolved.is_device_root || fs.metadata(&resolved.path).is_ok_and(|m| m.kind == FileKind::Dir) {
             return Err(ctx.error(Err::CfgWriteFile, format!("`{text}` is a folder, not a file")));
         }
-        let contents = ctx.resources.cfgdata.domains[idx].1.text.clone();
+        let contents = ctx.resources.cfgdata.database().map_or_else(String::new, |db| db.domain_text(idx).to_owned());
         write_atomically(ctx.resources.files.file_system(), &resolved.path, contents.as_bytes())
             .map_err(|e| ctx.error(Err::CfgWriteFile, format!("cannot write `{text}`: {e}")))?;
     }
     Ok(None)
 }
 
-/// Writes a file so a crash leaves the old or the new contents, never a torn file:
-/// a temporary file beside it, flushed to disk, then renamed over it.
 /// `GetModalPayLoadMode()`: the system parameter ModalPayLoadMode (topic Controller,
 /// type General Rapid) of the configuration the run was started with: 1 when the
 /// payload is modal (GripLoad declares it for the moves that follow), 0 when it is not
 /// (each move gives its own with `\TLoad`).
 fn get_modal_pay_load_mode(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    Ok(Some(Value::Num(modal_pay_load_mode(&ctx.resources.cfgdata))))
+    Ok(Some(Value::Num(ctx.resources.cfgdata.modal_pay_load_mode())))
 }
 
 /// ModalPayLoadMode's default: payload modal, as a controller without the parameter in
 /// its SYS.cfg runs.
 const MODAL_PAY_LOAD_DEFAULT: f32 = 1.0;
 
-/// The value of ModalPayLoadMode: SYS.cfg's `GENERAL_RAPID` instance of that `-Name`,
-/// its `-Value`; the default without a SYS domain, without the instance, or with a
-/// value that is not a number.
-// uncertain: the SYS.cfg form (type GENERAL_RAPID, one instance per parameter with
-// -Name and -Value) is as RobotWare 6 backups write General Rapid parameters; ABB's
-// system parameters manual gives 0 and 1 as the values and 1 as the default.
-fn modal_pay_load_mode(state: &CfgState) -> f32 {
-    let Some(domain) = state.domain("SYS") else { return MODAL_PAY_LOAD_DEFAULT };
-    state.domains[domain]
-        .1
-        .instances("GENERAL_RAPID")
-        .find(|inst| inst.name().is_some_and(|n| n.eq_ignore_ascii_case("ModalPayLoadMode")))
-        .and_then(|inst| inst.value("Value"))
-        .and_then(|v| v.trim().parse::<f32>().ok())
-        .unwrap_or(MODAL_PAY_LOAD_DEFAULT)
-}
-
+/// Writes a file so a crash leaves the old or the new contents, never a torn file:
+/// a temporary file beside it, flushed to disk, then renamed over it.
 fn write_atomically(fs: &dyn FileSystem, path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let Some(parent) = path.parent() else { return Err(std::io::Error::other("the path has no folder")) };
     if !fs.metadata(parent).is_ok_and(|m| m.kind == FileKind::Dir) {
@@ -413,30 +467,5 @@ mod tests {
         assert_eq!(format_number(4.0), "4");
         assert_eq!(format_number(-1.0), "-1");
         assert_eq!(format_number(0.05), "0.05");
-    }
-
-    fn with_sys(text: &str) -> CfgState {
-        let mut state = CfgState::default();
-        state.set_config(vec![("SYS".to_owned(), rapid_config::parse(text))]);
-        state
-    }
-
-    #[test]
-    fn modal_pay_load_mode_reads_general_rapid() {
-        let off = "SYS:CFG_1.0:6:0::\n#\nGENERAL_RAPID:\n\n      -Name \"SimulateMenu\" -Value 1\n\n      -Name \"ModalPayLoadMode\" -Value 0\n";
-        assert_eq!(modal_pay_load_mode(&with_sys(off)), 0.0);
-        let on = "SYS:CFG_1.0:6:0::\n#\nGENERAL_RAPID:\n\n      -name \"modalpayloadmode\" -value 1\n";
-        assert_eq!(modal_pay_load_mode(&with_sys(on)), 1.0);
-    }
-
-    #[test]
-    fn modal_pay_load_mode_defaults_to_modal() {
-        // No configuration at all, a SYS.cfg without the parameter, another domain only.
-        assert_eq!(modal_pay_load_mode(&CfgState::default()), 1.0);
-        let other = "SYS:CFG_1.0:6:0::\n#\nGENERAL_RAPID:\n\n      -Name \"SimulateMenu\" -Value 0\n";
-        assert_eq!(modal_pay_load_mode(&with_sys(other)), 1.0);
-        let mut eio_only = CfgState::default();
-        eio_only.set_config(vec![("EIO".to_owned(), rapid_config::parse("EIO:CFG_1.0:6:0::\n"))]);
-        assert_eq!(modal_pay_load_mode(&eio_only), 1.0);
     }
 }

@@ -17,7 +17,6 @@ pub mod files;
 mod geometry;
 pub mod interrupts;
 pub mod io;
-pub mod io_config;
 mod io_units;
 pub(crate) mod io_visualize;
 mod io_wait;

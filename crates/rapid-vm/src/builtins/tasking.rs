@@ -41,7 +41,7 @@ pub struct TaskInfo {
     /// Executing now (started, not stopped or ended): TaskIsExecuting.
     pub executing: bool,
     /// Its RAPID Message Queue (none by default).
-    pub rmq: rapid_config::sys::Rmq,
+    pub rmq: crate::builtins::rmq::RmqConfig,
     /// A task that is no motion task: the motion task whose mechanical unit group it
     /// uses, whose robot it reads (CJointT, CRobT).
     pub robot_of: Option<String>,
@@ -141,7 +141,7 @@ pub struct SharedTasking {
 impl Default for SharedTasking {
     /// A system of one task, T_ROB1, moving the robot.
     fn default() -> Self {
-        let rmq = rapid_config::sys::Rmq::default();
+        let rmq = crate::builtins::rmq::RmqConfig::default();
         let t_rob1 = TaskInfo {
             name: "T_ROB1".into(),
             motion: true,
@@ -588,7 +588,7 @@ mod tests {
     use super::*;
 
     fn task(name: &str, robot: bool) -> TaskInfo {
-        let rmq = rapid_config::sys::Rmq::default();
+        let rmq = crate::builtins::rmq::RmqConfig::default();
         let (motion, normal, active, executing, robot_of) = (true, true, true, true, None);
         TaskInfo { name: name.into(), motion, robot, normal, active, executing, rmq, robot_of }
     }

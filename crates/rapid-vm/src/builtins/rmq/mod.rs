@@ -53,6 +53,39 @@ const OUTSIDE_SLOTS: usize = 1 << 20;
 /// Messages a client's queue holds at most, as the front end keeps its own.
 const OUTSIDE_MAX_MESSAGES: usize = 1000;
 
+/// Who may send to a task's queue (the configuration's `-RmqType`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RmqKind {
+    /// The task has no queue.
+    None,
+    /// Other tasks of the controller may send.
+    Internal,
+    /// Other tasks and clients outside the controller may send.
+    Remote,
+}
+
+/// A task's RAPID Message Queue as the controller configured it (SYS.cfg `-RmqType`,
+/// `-RmqMode`, `-RmqMaxMsgSize`, `-RmqMaxNoOfMsg`); the controller converts its
+/// configuration into this, so that the VM need not know the configuration's format.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RmqConfig {
+    pub kind: RmqKind,
+    /// Synchronous mode (RMQReadWait receives); else interrupt mode (IRMQMessage traps).
+    pub synchronous: bool,
+    /// Bytes of data in one message at most.
+    pub max_msg_size: u32,
+    /// Messages the queue holds at most.
+    pub max_no_of_msg: u32,
+}
+
+// The configuration's defaults (ABB's system parameters manual, Controller, Task):
+// no queue, interrupt mode, 400 bytes, 5 messages.
+impl Default for RmqConfig {
+    fn default() -> Self {
+        RmqConfig { kind: RmqKind::None, synchronous: false, max_msg_size: 400, max_no_of_msg: 5 }
+    }
+}
+
 /// A queue of a client of the controller (an RWS client's DIPC queue): the tasks
 /// send to it by its name; the client takes the messages.
 #[derive(Debug, Clone, PartialEq)]
@@ -119,9 +152,8 @@ fn store_slot(ctx: &mut Ctx<'_>, arg: &Value, task: usize) -> Result<(), RapidEr
 fn find_slot(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let name = ctx.string(&args[1])?;
     let tasks = &ctx.resources.tasking.shared.tasks;
-    let found = tasks.iter().position(|t| {
-        t.rmq.rmq_type != rapid_config::sys::RmqType::None && format!("RMQ_{}", t.name).eq_ignore_ascii_case(&name)
-    });
+    let found =
+        tasks.iter().position(|t| t.rmq.kind != RmqKind::None && format!("RMQ_{}", t.name).eq_ignore_ascii_case(&name));
     // A client's queue is found by its name as the client gave it.
     // uncertain: whether RobotWare compares a client queue's name with letter case.
     let outside = || {
@@ -169,7 +201,7 @@ fn send(ctx: &mut Ctx<'_>, dest: Dest, data: &Value, userdef: f64) -> Result<(),
     };
     let shared = &ctx.resources.tasking.shared;
     let config = shared.tasks[task].rmq;
-    if config.rmq_type == rapid_config::sys::RmqType::None {
+    if config.kind == RmqKind::None {
         return Err(ctx.error(Err::RmqInvalid, "the receiving task has no message queue"));
     }
     let size = datum::size(&datum);
@@ -266,7 +298,7 @@ pub fn send_from_outside(
         return Err(BadData(format!("`{data}` cannot be sent")));
     };
     let Some(config) = shared.tasks.get(task).map(|t| t.rmq) else { return Err(Queue("no such task".to_owned())) };
-    if config.rmq_type == rapid_config::sys::RmqType::None {
+    if config.kind == RmqKind::None {
         return Err(Queue("the task has no message queue (its RmqType is None)".to_owned()));
     }
     let size = datum::size(&datum);
