@@ -125,6 +125,13 @@ pub struct Event {
 }
 
 impl Event {
+    /// An entry the program logs itself (ErrWrite, ErrLog) in the user domain at
+    /// controller time `time`: `title`, then the message `lines`. The VM adds where the
+    /// program logged it (it knows the calling statement) and the log its `seq`.
+    pub fn user(number: u32, kind: EventKind, time: f64, title: String, lines: Vec<String>) -> Event {
+        Event { seq: 0, domain: USER_DOMAIN, number, kind, time, title, lines, details: Vec::new(), place: None }
+    }
+
     /// The code the pendant shows: domain × 10000 + number (80001 for an ErrWrite).
     /// The ×10000 layout is how the public manuals write the ErrWrite codes (80001,
     /// 80002, 80003); that ErrLog's 4800 shows as 84800 follows from it (uncertain).

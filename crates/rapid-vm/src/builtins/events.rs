@@ -4,7 +4,7 @@
 use super::{present, Ctx};
 use crate::errnames::Err;
 use crate::error::RapidError;
-use crate::events::{expand_errstr, Event, EventKind, USER_DOMAIN};
+use crate::events::{expand_errstr, Event, EventKind};
 use crate::value::Value;
 
 /// The built-ins this family runs (see `registry.rs`).
@@ -34,18 +34,7 @@ fn user_event(ctx: &Ctx<'_>, number: u32, kind: EventKind, texts: &[Value]) -> R
     let mut expanded = expanded.into_iter();
     let title = expanded.next().flatten().unwrap_or_default();
     let lines = expanded.flatten().collect();
-    // The VM adds where the program logged it (it knows the calling statement).
-    Ok(Event {
-        seq: 0,
-        domain: USER_DOMAIN,
-        number,
-        kind,
-        time: ctx.time,
-        title,
-        lines,
-        details: Vec::new(),
-        place: None,
-    })
+    Ok(Event::user(number, kind, ctx.time, title, lines))
 }
 
 /// `ErrLog ErrorId [\W] | [\I] Argument1 .. Argument5`: logs a user message; the

@@ -3,7 +3,7 @@
 
 use super::{present, Ctx};
 use crate::error::RapidError;
-use crate::events::{Event, EventKind, USER_DOMAIN};
+use crate::events::{Event, EventKind};
 use crate::format::{bool_to_text, dnum_to_text, num_to_text, orient_to_text, pos_to_text};
 use crate::value::Value;
 
@@ -75,18 +75,7 @@ pub(super) fn err_write(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
     let mut texts = texts.into_iter();
     let title = texts.next().unwrap_or_default();
     let lines = texts.collect();
-    // The VM adds where the program logged it (it knows the calling statement).
-    let event = Event {
-        seq: 0,
-        domain: USER_DOMAIN,
-        number,
-        kind,
-        time: ctx.time,
-        title,
-        lines,
-        details: Vec::new(),
-        place: None,
-    };
+    let event = Event::user(number, kind, ctx.time, title, lines);
     ctx.events.push(event);
     Ok(None)
 }
