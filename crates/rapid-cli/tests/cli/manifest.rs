@@ -576,50 +576,13 @@ fn a_rapid_toml_with_only_fmt_settings_leaves_the_folder_a_folder() {
 /// no controller's.
 #[test]
 fn the_manifests_controller_ip_binds_the_loopback() {
-    use std::io::{Read, Write};
-    use std::net::{Ipv4Addr, TcpListener, TcpStream};
-    use std::time::{Duration, Instant};
+    use crate::sockets_controller_ip::{echo_server, free_port, greet_on_the_loopback};
 
-    let port = TcpListener::bind((Ipv4Addr::LOCALHOST, 0)).expect("free port").local_addr().expect("addr").port();
+    let port = free_port();
     let dir = scratch("controller_ip");
-    let program = "MODULE Srv
-  PROC main()
-    VAR socketdev server;
-    VAR socketdev client;
-    VAR string text;
-    SocketCreate server;
-    SocketBind server, \"192.0.2.44\", PORT;
-    SocketListen server;
-    SocketAccept server, client \\Time:=10;
-    SocketReceive client \\Str:=text \\Time:=10;
-    TPWrite \"got \" + text;
-    SocketClose client;
-    SocketClose server;
-  ENDPROC
-ENDMODULE
-"
-    .replace("PORT", &port.to_string());
-    let toml = "[system]\ncontroller_ip = \"192.0.2.44\"\n\n[[task]]\nname = \"T_ROB1\"\nmodules = [\"Srv.mod\"]\n";
-    write(&dir, &[("rapid.toml", toml), ("Srv.mod", &program)]);
-    let child = crate::fixture::spawn_in(&dir, &["run", "rapid.toml"]);
-    let started = Instant::now();
-    let mut stream = loop {
-        match TcpStream::connect((Ipv4Addr::LOCALHOST, port)) {
-            Ok(stream) => break stream,
-            Err(err) if started.elapsed() > Duration::from_secs(10) => panic!("the program never listened: {err}"),
-            Err(_) => std::thread::sleep(Duration::from_millis(20)),
-        }
-    };
-    stream.write_all(b"hello").expect("send");
-    stream.set_read_timeout(Some(Duration::from_secs(10))).expect("timeout");
-    let _ = stream.read_to_end(&mut Vec::new());
-    let out = child.wait_with_output().expect("rapid ends");
-    let (stdout, stderr) = (text(&out.stdout), text(&out.stderr));
-    assert_eq!(out.status.code(), Some(0), "stdout:\n{stdout}\nstderr:\n{stderr}");
-    assert_eq!(stdout, "got hello\n");
-    let notes: Vec<&str> = stderr.lines().filter(|l| l.starts_with("note: SocketBind")).collect();
-    assert_eq!(notes.len(), 1, "{stderr}");
-    assert!(notes[0].contains("192.0.2.44") && notes[0].contains("127.0.0.1"), "{}", notes[0]);
+    let toml = "[system]\ncontroller_ip = \"192.0.2.44\"\n\n[[task]]\nname = \"T_ROB1\"\nmodules = [\"srv.mod\"]\n";
+    write(&dir, &[("rapid.toml", toml), ("srv.mod", &echo_server("192.0.2.44", port))]);
+    greet_on_the_loopback(crate::fixture::spawn_in(&dir, &["run", "rapid.toml"]), port, "192.0.2.44");
 
     // The flag wins: with another controller address the manifest's is the OS's to
     // bind, which has no such address, and the program stops with a socket error.

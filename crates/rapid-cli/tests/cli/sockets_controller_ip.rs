@@ -5,7 +5,7 @@
 use std::fs;
 use std::io::{Read, Write};
 use std::net::{Ipv4Addr, TcpListener, TcpStream};
-use std::process::{Command, Stdio};
+use std::process::{Child, Command, Stdio};
 use std::thread;
 use std::time::{Duration, Instant};
 
@@ -15,23 +15,22 @@ use crate::fixture::scratch_in;
 const PEER_TIMEOUT: Duration = Duration::from_secs(10);
 
 /// A port free on the loopback now (the OS chose it; the program binds it next).
-fn free_port() -> u16 {
+pub(crate) fn free_port() -> u16 {
     let listener = TcpListener::bind((Ipv4Addr::LOCALHOST, 0)).expect("bind a free port");
     listener.local_addr().expect("its address").port()
 }
 
-#[test]
-fn a_server_on_the_service_port_address_is_reached_on_the_loopback() {
-    let port = free_port();
-    let dir = scratch_in("sockets_controller_ip", "service");
-    let path = dir.join("srv.mod");
-    let program = "MODULE srv
+/// A module `srv` that binds a TCP server to `address`:`port`, takes one client and
+/// writes `got ` and what the client sent.
+pub(crate) fn echo_server(address: &str, port: u16) -> String {
+    format!(
+        "MODULE srv
     PROC main()
         VAR socketdev server;
         VAR socketdev client;
         VAR string text;
         SocketCreate server;
-        SocketBind server, \"192.168.125.1\", PORT;
+        SocketBind server, \"{address}\", {port};
         SocketListen server;
         SocketAccept server, client \\Time:=10;
         SocketReceive client \\Str:=text \\Time:=10;
@@ -41,15 +40,13 @@ fn a_server_on_the_service_port_address_is_reached_on_the_loopback() {
     ENDPROC
 ENDMODULE
 "
-    .replace("PORT", &port.to_string());
-    fs::write(&path, program).expect("write module");
-    let child = Command::new(env!("CARGO_BIN_EXE_rapid"))
-        .arg("run")
-        .arg(&path)
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("start rapid");
+    )
+}
+
+/// Greets the [`echo_server`] that `child` (a `rapid run` with piped output) binds to
+/// the controller address `address`, on the loopback at `port`; the run must end well,
+/// print `got hello`, and say once on stderr that `address` was bound on 127.0.0.1.
+pub(crate) fn greet_on_the_loopback(child: Child, port: u16, address: &str) {
     let started = Instant::now();
     let mut stream = loop {
         match TcpStream::connect((Ipv4Addr::LOCALHOST, port)) {
@@ -68,7 +65,23 @@ ENDMODULE
     assert_eq!(stdout, "got hello\n");
     let notes: Vec<&str> = stderr.lines().filter(|l| l.starts_with("note: SocketBind")).collect();
     assert_eq!(notes.len(), 1, "{stderr}");
-    assert!(notes[0].contains("192.168.125.1") && notes[0].contains("127.0.0.1"), "{}", notes[0]);
+    assert!(notes[0].contains(address) && notes[0].contains("127.0.0.1"), "{}", notes[0]);
+}
+
+#[test]
+fn a_server_on_the_service_port_address_is_reached_on_the_loopback() {
+    let port = free_port();
+    let dir = scratch_in("sockets_controller_ip", "service");
+    let path = dir.join("srv.mod");
+    fs::write(&path, echo_server("192.168.125.1", port)).expect("write module");
+    let child = Command::new(env!("CARGO_BIN_EXE_rapid"))
+        .arg("run")
+        .arg(&path)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start rapid");
+    greet_on_the_loopback(child, port, "192.168.125.1");
 }
 
 #[test]
