@@ -340,6 +340,49 @@ fn a_whole_session_on_two_tasks() {
     client.ok("disconnect", json!({}));
 }
 
+const OPTIONAL: &str = "MODULE Opt
+  PROC main()
+    Show 2.345;
+    Show 2.345 \\Dec:=1;
+  ENDPROC
+  PROC Show(num x \\num Dec)
+    TPWrite \"x \" \\Num:=x;
+  ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn evaluated_calls_take_named_optional_and_conditional_arguments() {
+    let mut client = Client::start(Program(vec![("T_ROB1", "/dap/T_ROB1/Opt.mod", OPTIONAL)]));
+    let line = line_of(OPTIONAL, "TPWrite");
+    client.launch_with_breakpoints("/dap/T_ROB1/Opt.mod", json!([{"line": line}]));
+    client.event("stopped");
+    let (frame, _, _) = client.top_frame(1);
+    // Round(Val \Dec): 2.345 to one decimal is 2.3; Trunc to two is 2.34.
+    assert_eq!(client.evaluate(frame, "Round(x \\Dec:=1)"), "2.3");
+    assert_eq!(client.evaluate(frame, "Trunc(x \\Dec:=2)"), "2.34");
+    // Required arguments by name: characters 2 to 4 of "abcdef".
+    assert_eq!(client.evaluate(frame, "StrPart(Str:=\"abcdef\", ChPos:=2, Len:=3)"), "\"bcd\"");
+    // \Dec?Dec forwards the frame's Dec, not passed in the first call: no decimals.
+    assert_eq!(client.evaluate(frame, "Round(x \\Dec?Dec)"), "2");
+    // A later argument without the one before it is not evaluated.
+    let failed = client.request("evaluate", json!({"expression": "Round(\\Dec:=1)", "frameId": frame}));
+    assert!(failed["message"].as_str().unwrap_or_default().contains("without `Val`"), "{failed}");
+    // StrFind's \NotInSet needs the built-in's general form.
+    let failed =
+        client.request("evaluate", json!({"expression": "StrFind(\"abc\", 1, \"c\" \\NotInSet)", "frameId": frame}));
+    assert!(failed["message"].as_str().unwrap_or_default().contains("does not evaluate this form"), "{failed}");
+    // A parameter the built-in does not have.
+    let failed = client.request("evaluate", json!({"expression": "Round(x \\Digits:=1)", "frameId": frame}));
+    assert!(failed["message"].as_str().unwrap_or_default().contains("no parameter `Digits`"), "{failed}");
+    // The second call passes \Dec:=1, and \Dec?Dec forwards it.
+    client.ok("continue", json!({"threadId": 1}));
+    client.event("stopped");
+    let (frame, _, _) = client.top_frame(1);
+    assert_eq!(client.evaluate(frame, "Round(x \\Dec?Dec)"), "2.3");
+    client.ok("disconnect", json!({}));
+}
+
 #[test]
 fn a_conditional_breakpoint_stops_only_where_it_holds() {
     let mut client = Client::start(two_tasks());

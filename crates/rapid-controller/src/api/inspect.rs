@@ -329,23 +329,99 @@ impl Scope<'_> {
                 "`{name}` is not evaluated by the debugger: only built-in functions without side effects are"
             ))
         })?;
-        let mut values = Vec::new();
-        for arg in arena.args(args) {
-            let value = match (arg.kind, arg.name, arg.value) {
-                (rapid_syntax::ast::ArgKind::Required, None, Some(value)) => self.eval(arena, value)?,
-                _ => {
-                    return Err(ApiError::Unsupported(format!(
-                        "named, optional or conditional arguments in a debugger call of `{name}`"
-                    )))
-                }
-            };
-            values.push(value);
-        }
+        let values = self.pure_args(arena, name, args)?;
         // A pure form answers None where the built-in would raise an error (or takes
         // arguments of another kind): the debugger says so rather than raise it.
         pure(&values).ok_or_else(|| {
-            ApiError::Refused(format!("`{name}` cannot be evaluated with these arguments (it would raise an error)"))
+            ApiError::Refused(format!(
+                "`{name}` cannot be evaluated with these arguments (it would raise an error, or the debugger \
+                 does not evaluate this form of it)"
+            ))
         })
+    }
+
+    /// The arguments of a call of built-in `name` as its pure form takes them: bound
+    /// to the parameters as the compiler binds them (by name, positional ones to the
+    /// next free required parameter, §1.5), their values in parameter order, a switch
+    /// as present. Like the fast loop (which alone calls pure forms in a program), only
+    /// a leading run of parameters may be given: one left out before one given would
+    /// need the built-in's general form, which the debugger does not run.
+    fn pure_args(
+        &mut self,
+        arena: &Arena,
+        name: &str,
+        args: rapid_syntax::ast::ArgList,
+    ) -> Result<Vec<Value>, ApiError> {
+        let program = self.session.controller.tasks[self.idx].loaded.analysis.as_deref();
+        let Some(routine) = program
+            .and_then(|p| p.routines.iter().find(|r| r.chapter.is_some() && r.display.eq_ignore_ascii_case(name)))
+        else {
+            return Err(ApiError::Unsupported(format!("`{name}` without the task's checked program")));
+        };
+        // Messages name the built-in and its parameters as the catalogue spells them.
+        let name = routine.display.clone();
+        let name = name.as_str();
+        let params = routine.params.clone();
+        let groups = routine.groups.clone();
+        let type_names: Vec<String> =
+            params.iter().map(|p| program.map_or("", |p2| p2.types.name(p.ty)).to_owned()).collect();
+        let mut bound: Vec<Option<Value>> = vec![None; params.len()];
+        for arg in arena.args(args) {
+            let Some(value) = self.arg_value(arena, name, arg)? else { continue };
+            let at = match arg.name {
+                Some(written) => {
+                    let span = written.span;
+                    let written = self.parsed.source.get(span.start as usize..span.end as usize).unwrap_or_default();
+                    params
+                        .iter()
+                        .position(|p| p.display.eq_ignore_ascii_case(written))
+                        .ok_or_else(|| ApiError::Refused(format!("`{name}` has no parameter `{written}`")))?
+                }
+                None => next_free_required(&params, &groups, &bound, &value, &type_names)
+                    .ok_or_else(|| ApiError::Refused(format!("too many arguments for `{name}`")))?,
+            };
+            if bound[at].replace(value).is_some() {
+                return Err(ApiError::Refused(format!("`{}` of `{name}` is given twice", params[at].display)));
+            }
+        }
+        let given = bound.iter().rposition(Option::is_some).map_or(0, |last| last + 1);
+        if let Some(gap) = bound[..given].iter().position(Option::is_none) {
+            return Err(ApiError::Unsupported(format!(
+                "`{name}` without `{}` but with a later argument in a debugger call",
+                params[gap].display
+            )));
+        }
+        Ok(bound.into_iter().take(given).flatten().collect())
+    }
+
+    /// An argument's value: its expression's, a switch's presence, or for a
+    /// conditional argument `\P?Q` the value of the frame's optional parameter Q
+    /// (`None`: Q was not passed, so neither is P, §1.5).
+    fn arg_value(
+        &mut self,
+        arena: &Arena,
+        name: &str,
+        arg: &rapid_syntax::ast::Arg,
+    ) -> Result<Option<Value>, ApiError> {
+        use rapid_syntax::ast::ArgKind;
+        match (arg.kind, arg.value) {
+            (ArgKind::Required, Some(value)) => self.eval(arena, value).map(Some),
+            (ArgKind::Optional, None) => Ok(Some(Value::SwitchOn)),
+            (ArgKind::Optional, Some(value)) => self.eval(arena, value).map(Some),
+            (ArgKind::Conditional, Some(value)) => match arena.expr(value).kind {
+                ExprKind::Name(sym) => {
+                    let param = self.parsed.interner.resolve(sym);
+                    let local = self.locals.iter().find(|(n, _)| n.eq_ignore_ascii_case(param));
+                    match local {
+                        Some((_, Value::Absent)) => Ok(None),
+                        Some((_, value)) => Ok(Some(value.clone())),
+                        None => Err(ApiError::Refused(format!("`{param}` is no optional parameter of this frame"))),
+                    }
+                }
+                _ => Err(ApiError::Refused("a conditional argument must name an optional parameter".into())),
+            },
+            _ => Err(ApiError::Unsupported(format!("this kind of argument in a debugger call of `{name}`"))),
+        }
     }
 
     /// A name: the frame's parameters and data, then the task's data.
@@ -381,6 +457,29 @@ impl Scope<'_> {
             _ => Err(ApiError::Unsupported("the task's program has no types table".into())),
         }
     }
+}
+
+/// The parameter a positional argument of value `value` goes to: the first required
+/// group with no argument yet, and in a group of alternatives (`num Value | dnum
+/// DValue`) the alternative of the value's type, else the first (as the compiler binds).
+fn next_free_required(
+    params: &[rapid_sema::symbols::ParamInfo],
+    groups: &[(usize, usize)],
+    bound: &[Option<Value>],
+    value: &Value,
+    type_names: &[String],
+) -> Option<usize> {
+    let &(start, end) =
+        groups.iter().find(|&&(start, end)| !params[start].optional && (start..end).all(|p| bound[p].is_none()))?;
+    let kind = match value {
+        Value::Num(_) => Some("num"),
+        Value::Dnum(_) => Some("dnum"),
+        Value::Str(_) => Some("string"),
+        Value::Bool(_) => Some("bool"),
+        _ => None,
+    };
+    let fits = |p: &usize| kind.is_some_and(|kind| type_names[*p].eq_ignore_ascii_case(kind));
+    Some((start..end).find(fits).unwrap_or(start))
 }
 
 #[cfg(test)]
