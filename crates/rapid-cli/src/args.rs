@@ -83,6 +83,12 @@ pub(crate) struct ServeArgs {
     #[arg(long, value_name = "J1,...,J6", value_parser = parse_start_joints, allow_hyphen_values = true)]
     pub(crate) start_joints: Option<[f64; 6]>,
 
+    /// The controller's own IP address in its cell, as for `rapid run`: a SocketBind
+    /// to it, or to the service port's 192.168.125.1, binds the loopback instead. Wins
+    /// over a manifest's `[system] controller_ip`.
+    #[arg(long, value_name = "IPV4")]
+    pub(crate) controller_ip: Option<std::net::Ipv4Addr>,
+
     /// The program: as for `rapid run`.
     #[arg(required = true)]
     pub(crate) paths: Vec<PathBuf>,

@@ -215,7 +215,8 @@ async fn execution_modes_step_forward_and_back_and_refuse_what_is_not_known() {
     assert_eq!(refused.status(), StatusCode::CONFLICT);
     pointer_at(&server, &cookie, line_of("n := 1")).await;
 
-    for mode in ["steplast", "stepmotion"] {
+    // `stepmotion` is accepted (tested below); `steplast`'s meaning is not public.
+    for mode in ["steplast"] {
         let answer = server.send(start(mode)).await;
         assert_eq!(answer.status(), StatusCode::BAD_REQUEST, "{mode}");
         let status = json_of(answer).await["_embedded"]["status"].clone();
@@ -227,6 +228,70 @@ async fn execution_modes_step_forward_and_back_and_refuse_what_is_not_known() {
     assert_eq!(json_of(unknown).await["_embedded"]["status"]["code"], -1_073_445_866, "a bad value");
     // Nothing of the refused starts ran.
     pointer_at(&server, &cookie, line_of("n := 1")).await;
+}
+
+const MOVE_STEPS: &str = "MODULE MainModule
+  VAR num n := 0;
+  CONST robtarget p10 := [[300, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];
+  CONST robtarget p20 := [[400, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];
+  PROC main()
+    n := 1;
+    Approach;
+    n := 3;
+    MoveL p20, v100, fine, tool0;
+    n := 4;
+  ENDPROC
+  PROC Approach()
+    MoveJ p10, v1000, fine, tool0;
+    n := 2;
+  ENDPROC
+ENDMODULE
+";
+
+/// Waits (at most 5 s) for the program to stand stopped; then T_ROB1's program
+/// pointer (routine, line), `n` and the robot's TCP x (tool0, mm).
+async fn after_step(server: &Server, cookie: &str) -> (String, usize, String, f64) {
+    for _ in 0..100 {
+        if state_field(server, "/rw/rapid/execution?json=1", cookie, "ctrlexecstate").await == "stopped" {
+            break;
+        }
+        tokio::time::sleep(std::time::Duration::from_millis(50)).await;
+    }
+    let pcp = "/rw/rapid/tasks/T_ROB1/pcp?json=1";
+    let routine = state_field(server, pcp, cookie, "routinename").await;
+    let begin = state_field(server, pcp, cookie, "beginposition").await;
+    let line = begin.split(',').next().and_then(|l| l.parse().ok()).unwrap_or(0);
+    let n = state_field(server, "/rw/rapid/symbol/data/RAPID/T_ROB1/n?json=1", cookie, "value").await;
+    let x = state_field(server, "/rw/motionsystem/mechunits/ROB_1/robtarget?json=1", cookie, "x").await;
+    (routine, line, n, x.parse().unwrap_or(f64::NAN))
+}
+
+#[tokio::test]
+async fn a_move_step_runs_on_to_the_statement_after_the_next_motion_instruction() {
+    let server = Server::with_program("stepmotion", MOVE_STEPS);
+    let cookie = server.login().await;
+    let line = |text: &str| MOVE_STEPS.lines().position(|l| l.contains(text)).unwrap() + 1;
+    let step = || post("/rw/rapid/execution?action=start&json=1", &cookie, &start_form("stepmotion"));
+
+    // `n := 1`, into Approach, the MoveJ to p10 (a stop point: done once the robot
+    // stands there): the pointer on `n := 2` inside Approach.
+    assert_eq!(server.send(step()).await.status(), StatusCode::NO_CONTENT);
+    let (routine, at, n, x) = after_step(&server, &cookie).await;
+    assert_eq!((routine.as_str(), at, n.as_str()), ("Approach", line("n := 2"), "1"));
+    assert!((x - 300.0).abs() < 0.01, "the robot at p10: {x}");
+
+    // `n := 2`, back in main, `n := 3`, the MoveL to p20: the pointer on `n := 4`.
+    assert_eq!(server.send(step()).await.status(), StatusCode::NO_CONTENT);
+    let (routine, at, n, x) = after_step(&server, &cookie).await;
+    assert_eq!((routine.as_str(), at, n.as_str()), ("main", line("n := 4"), "3"));
+    assert!((x - 400.0).abs() < 0.01, "the robot at p20: {x}");
+
+    // `n := 4` ends main; a served program runs cycle after cycle (`forever`), so the
+    // step goes on from main's start to the next motion instruction, the MoveJ.
+    assert_eq!(server.send(step()).await.status(), StatusCode::NO_CONTENT);
+    let (routine, at, n, x) = after_step(&server, &cookie).await;
+    assert_eq!((routine.as_str(), at, n.as_str()), ("Approach", line("n := 2"), "1"));
+    assert!((x - 300.0).abs() < 0.01, "the robot back at p10: {x}");
 }
 
 const MESSENGER: &str = "MODULE MainModule

@@ -55,7 +55,7 @@ pub(crate) fn run(args: &ServeArgs) -> anyhow::Result<ExitStatus> {
     let local: SocketAddr = listener.local_addr()?;
     let modules: Arc<Mutex<Vec<TaskFiles>>> = Arc::default();
     let boot = rapid_serve::Boot {
-        session: boot_closure(args.paths.clone(), args.start_joints, modules.clone()),
+        session: boot_closure(args.paths.clone(), load_options(args), modules.clone()),
         clock,
         on_exit: Some(Box::new(move |session: &mut Session| save_persistents(session, &modules))),
         // The pendant's lines go to stdout, as `rapid run` writes them.
@@ -95,6 +95,19 @@ pub(crate) fn run(args: &ServeArgs) -> anyhow::Result<ExitStatus> {
     }
 }
 
+/// The command line's boot options as the controller's assembly takes them: a
+/// client operates the program, which runs cycle after cycle.
+fn load_options(args: &ServeArgs) -> LoadOptions {
+    LoadOptions {
+        operated: true,
+        cycles: 0,
+        start_joints: args.start_joints,
+        // Wins over a manifest's `[system] controller_ip` (the assembly's rule).
+        controller_ip: args.controller_ip,
+        ..LoadOptions::default()
+    }
+}
+
 /// Completes when the user presses Ctrl-C (polled: the handler only sets a flag).
 async fn interrupted() {
     while !crate::interrupt::requested() {
@@ -106,11 +119,11 @@ async fn interrupted() {
 /// `modules` for the save at the end.
 fn boot_closure(
     paths: Vec<PathBuf>,
-    start_joints: Option<[f64; 6]>,
+    options: LoadOptions,
     modules: Arc<Mutex<Vec<TaskFiles>>>,
 ) -> rapid_serve::BuildSession {
     Box::new(move || {
-        let (controller, files) = assemble(&paths, start_joints)?;
+        let (controller, files) = assemble(&paths, &options)?;
         if let Ok(mut kept) = modules.lock() {
             *kept = files;
         }
@@ -135,9 +148,8 @@ fn pers_literals(loaded: &rapid_vm::Loaded) -> Vec<Option<String>> {
 /// kept (record components of data are read and written through them), continuous.
 // Not configured as `rapid run` does: a stimulus, --virtual-io, --robot; the POWER_ON
 // and START event routines do not run (the program is started by a client).
-fn assemble(paths: &[PathBuf], start_joints: Option<[f64; 6]>) -> Result<(Controller, Vec<TaskFiles>), String> {
-    let options = LoadOptions { operated: true, cycles: 0, start_joints, ..LoadOptions::default() };
-    let assembled = assembly::assemble(paths, &options).outcome.map_err(|e| e.message())?;
+fn assemble(paths: &[PathBuf], options: &LoadOptions) -> Result<(Controller, Vec<TaskFiles>), String> {
+    let assembled = assembly::assemble(paths, options).outcome.map_err(|e| e.message())?;
     let at_boot = assembled.controller.tasks.iter().map(|t| pers_literals(&t.loaded));
     let names = assembled.controller.tasks.iter().map(|t| t.spec.name.clone());
     let files = names.zip(assembled.inputs).zip(at_boot).map(|((name, inputs), pers)| (name, inputs.modules, pers));

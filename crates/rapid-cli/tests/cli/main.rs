@@ -52,6 +52,7 @@ mod scale;
 mod search;
 mod serve;
 mod serve_ampe;
+mod serve_controller_ip;
 mod serve_faults;
 mod sockets;
 mod sockets_controller_ip;

@@ -33,9 +33,14 @@ fn free_port() -> u16 {
 /// another process took between our look and the server's bind is tried again (at
 /// most three ports).
 pub(crate) fn start_server(project: &Path) -> (Child, String, std::thread::JoinHandle<String>) {
+    start_server_with(project, &[])
+}
+
+/// [`start_server`] with more options (`extra`) on the command line.
+pub(crate) fn start_server_with(project: &Path, extra: &[&str]) -> (Child, String, std::thread::JoinHandle<String>) {
     let mut tried = Vec::new();
     for _ in 0..3 {
-        match try_start(project) {
+        match try_start(project, extra) {
             Ok(started) => return started,
             Err(seen) if seen.iter().any(|l| l.contains("cannot listen")) => tried.push(seen),
             Err(seen) => panic!("rapid serve did not start: {seen:?}"),
@@ -45,10 +50,11 @@ pub(crate) fn start_server(project: &Path) -> (Child, String, std::thread::JoinH
 }
 
 /// One start of [`start_server`]; Err holds what it said on stderr.
-fn try_start(project: &Path) -> Result<(Child, String, std::thread::JoinHandle<String>), Vec<String>> {
+fn try_start(project: &Path, extra: &[&str]) -> Result<(Child, String, std::thread::JoinHandle<String>), Vec<String>> {
     let bind = format!("127.0.0.1:{}", free_port());
     let mut child = Command::new(env!("CARGO_BIN_EXE_rapid"))
         .args(["serve", "--bind", &bind, "--speed", "10"])
+        .args(extra)
         .arg(project)
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())

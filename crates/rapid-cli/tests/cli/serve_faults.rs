@@ -33,10 +33,10 @@ const EIO: &str = "EIO:CFG_1.0:6:1::\n#\nEIO_SIGNAL:\n\n      -Name \"di1\" -Sig
                    -Name \"do1\" -SignalType \"DO\"\n";
 
 /// An HTTP answer: status, head, body.
-struct Answer {
-    status: u16,
-    head: String,
-    body: String,
+pub(super) struct Answer {
+    pub(super) status: u16,
+    pub(super) head: String,
+    pub(super) body: String,
 }
 
 impl Answer {
@@ -68,7 +68,7 @@ fn parse(bytes: &[u8]) -> Answer {
 }
 
 /// A request with a session cookie (none when empty) and a form body.
-fn request(addr: &str, method: &str, path: &str, cookie: &str, body: &str) -> Answer {
+pub(super) fn request(addr: &str, method: &str, path: &str, cookie: &str, body: &str) -> Answer {
     let cookie = if cookie.is_empty() { String::new() } else { format!("Cookie: {cookie}\r\n") };
     let raw = format!(
         "{method} {path} HTTP/1.1\r\nHost: {addr}\r\n{cookie}Content-Type: application/x-www-form-urlencoded\r\n\
@@ -89,7 +89,7 @@ fn digest_get(addr: &str, path: &str, credentials: (&str, &str)) -> Answer {
 }
 
 /// Logs in with the default user; the `ABBCX` cookie.
-fn login(addr: &str) -> String {
+pub(super) fn login(addr: &str) -> String {
     let answer = digest_get(addr, "/rw/panel/ctrlstate", ("Default User", "robotics"));
     assert_eq!(answer.status, 200, "{}", answer.head);
     let cookie = answer
@@ -102,7 +102,7 @@ fn login(addr: &str) -> String {
 }
 
 /// The JSON value of `field` in the first item of `GET path?json=1`.
-fn read_field(addr: &str, cookie: &str, path: &str, field: &str) -> String {
+pub(super) fn read_field(addr: &str, cookie: &str, path: &str, field: &str) -> String {
     let answer = request(addr, "GET", &format!("{path}?json=1"), cookie, "");
     assert_eq!(answer.status, 200, "GET {path}: {} {}", answer.head, answer.body);
     let json: serde_json::Value = serde_json::from_str(&answer.body).expect("JSON");

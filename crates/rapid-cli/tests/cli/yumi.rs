@@ -126,3 +126,27 @@ fn a_run_moving_a_yumi_arm_notes_whose_arm_angle_it_is() {
     assert_eq!(other.status.code(), Some(0), "{}", text(&other.stderr));
     assert!(!text(&other.stderr).contains(note), "{}", text(&other.stderr));
 }
+
+/// A manifest's `[system] robot = "IRB 14000"` on a two-arm system of its own: the
+/// task named for the left arm moves the left arm (axis 7 at its calibration's 135°),
+/// the one named for the right arm the right arm (−135°), as MOC.cfg's arm names
+/// choose them in a backup.
+#[test]
+fn a_manifests_yumi_gives_each_task_the_arm_its_name_says() {
+    let dir = scratch_in("yumi", "manifest");
+    let toml = "[system]\nrobot = \"IRB 14000\"\n\n\
+                [[task]]\nname = \"T_ROB_L\"\nmodules = [\"left.mod\"]\nmotion = true\n\n\
+                [[task]]\nname = \"T_ROB_R\"\ntype = \"NORMAL\"\nmodules = [\"right.mod\"]\nmotion = true\n";
+    let arm = |side: &str, wait: &str| {
+        format!(
+            "MODULE {side}Arm\n  PROC main()\n    VAR jointtarget j;\n    WaitTime {wait};\n    j := CJointT();\n    \
+             TPWrite \"{side} \" \\Num:=j.extax.eax_a;\n  ENDPROC\nENDMODULE\n"
+        )
+    };
+    std::fs::write(dir.join("rapid.toml"), toml).expect("manifest");
+    std::fs::write(dir.join("left.mod"), arm("L", "0")).expect("left");
+    std::fs::write(dir.join("right.mod"), arm("R", "0.1")).expect("right");
+    let out = rapid_in(&dir, &["run", "--quiet", "rapid.toml"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), "L 135\nR -135\n");
+}

@@ -11,8 +11,9 @@
 //!
 //! Steps are the controller's FWD step (`ops/step.rs`: one statement of one task,
 //! calls entered), with a target depth for step over (back at the depth it started
-//! at, or shallower) and step out (shallower); a breakpoint met on the way ends the
-//! step there. The check costs a flag test per statement when no breakpoint is set
+//! at, or shallower) and step out (shallower), or a motion instruction to run (the
+//! move step: on until a statement has given the robot a move); a breakpoint met on
+//! the way ends the step there. The check costs a flag test per statement when no breakpoint is set
 //! and no step is under way; the interpreter's loop is not touched.
 // uncertain: breakpoints in STATIC and SEMISTATIC tasks are not offered: a program
 // stop does not stop those tasks, so a breakpoint could not hold them.
@@ -34,6 +35,15 @@ pub enum StepKind {
     Over,
     /// On until the routine the task stands in has returned.
     Out,
+    /// On until a motion instruction has run, calls entered: the step ends at the
+    /// statement after it (wherever that is), or where the task ends. The PC SDK's
+    /// `ExecutionMode.StepMotion`, "execute to next motion instruction"; RWS's
+    /// `execmode=stepmotion`. A motion instruction is one that gives the task's robot
+    /// a move (§2: MoveL, SearchC, TriggJ, …): the step counts the moves the robot
+    /// was given. A move to a stop point ends the step once the robot stands there;
+    /// a fly-by move once the instruction is done (the robot is then held on its path,
+    /// as after any step).
+    Motion,
 }
 
 /// A place in a task's program: its file and line (1-based) and the routine.
@@ -80,12 +90,14 @@ pub(crate) struct Breakpoint {
     pub(crate) line: u32,
 }
 
-/// A step under way: its task, kind and the depth it started at.
+/// A step under way: its task, kind, the depth it started at and how many moves
+/// the task's robot had been given then.
 #[derive(Debug, Clone, Copy)]
 struct StepTarget {
     task: usize,
     kind: StepKind,
     depth: usize,
+    moves: u64,
 }
 
 /// What the controller watches for the API (breakpoints, step targets).
@@ -327,22 +339,28 @@ impl Controller {
         task == idx && self.statement_done(idx, from_steps) && self.target_met(idx)
     }
 
-    /// Whether the step under way in task `idx` has reached its target depth.
+    /// Whether the step under way in task `idx` has reached its target: its depth,
+    /// or (a move step) a move given to the robot. A task that has ended has no
+    /// further to go.
     fn target_met(&self, idx: usize) -> bool {
         let Some(target) = self.watch.step.filter(|t| t.task == idx) else { return true };
-        let depth = self.tasks[idx].loaded.vm.depth();
+        let vm = &self.tasks[idx].loaded.vm;
+        let depth = vm.depth();
         self.watch.step_broken
+            || matches!(self.tasks[idx].state, crate::schedule::State::Ended(_))
             || match target.kind {
                 StepKind::Into => true,
                 StepKind::Over => depth <= target.depth,
                 StepKind::Out => depth < target.depth,
+                StepKind::Motion => vm.resources().robot.moves > target.moves,
             }
     }
 
     /// A step of `kind` begins in task `idx` (the FWD step has started).
     pub(crate) fn watch_step(&mut self, idx: usize, kind: StepKind) {
-        let depth = self.tasks[idx].loaded.vm.depth();
-        self.watch.step = Some(StepTarget { task: idx, kind, depth });
+        let vm = &self.tasks[idx].loaded.vm;
+        let (depth, moves) = (vm.depth(), vm.resources().robot.moves);
+        self.watch.step = Some(StepTarget { task: idx, kind, depth, moves });
         self.watch.step_broken = false;
     }
 

@@ -231,7 +231,8 @@ impl Session {
     }
 
     /// Starts a step of NORMAL task `task` of the stopped program; [`Session::run`]
-    /// carries it out, and the program stands stopped again when it is done.
+    /// carries it out, and the program stands stopped again when it is done (a move
+    /// step, [`StepKind::Motion`], when a motion instruction has run).
     pub fn step(&mut self, task: &str, kind: StepKind) -> Result<(), ApiError> {
         self.must_be_stopped()?;
         let idx = self.normal_task(task)?;

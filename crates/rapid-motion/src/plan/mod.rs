@@ -64,6 +64,7 @@ mod orient;
 mod path;
 mod profile;
 mod rebase;
+mod retime;
 mod sample;
 mod segment;
 mod wrist;
@@ -73,6 +74,7 @@ pub use correct::path_frame;
 pub use data::{CircleOri, MotionSettings, SpeedData, ZoneData};
 pub use limits::AccelLimits;
 pub use mount::Mount;
+pub use retime::{retime, Retiming};
 pub use sample::{PlannedMove, Sample, DEFAULT_STEP};
 pub use segment::{MoveRequest, Target};
 
@@ -108,6 +110,9 @@ struct Pending {
     v_start: f64,
     /// The previous corner's reorientation zone, reaching into this move.
     ori_in: Option<OriZone>,
+    /// The part of its own profile already walked when the speed override changed
+    /// under way (`retime.rs`): the rest is shaped from its end.
+    head: Option<Profile>,
 }
 
 /// Where the next move takes over after a corner.
@@ -161,9 +166,8 @@ impl Planner {
     /// the robot would have to stop (a corner path failure).
     pub fn pending_stop_time(&self) -> Option<f64> {
         let p = self.pending.as_ref()?;
-        let limits = &p.prep.limits;
-        let own = limits.length - p.s_start;
-        Some(self.time + limits.profile(p.v_start, 0.0, own).duration)
+        let own = p.prep.limits.length - p.s_start;
+        Some(self.time + p.own_profile(0.0, own).duration)
     }
 
     /// Whether a move waits for its successor.
@@ -196,7 +200,7 @@ impl Planner {
             self.eax = Some(ext.to);
         }
         let Some(pending) = self.pending.take() else {
-            self.pending = Some(Pending { prep, s_start: 0.0, v_start: 0.0, ori_in: None });
+            self.pending = Some(Pending { prep, s_start: 0.0, v_start: 0.0, ori_in: None, head: None });
             return Ok(None);
         };
         // uncertain: the corner is walked as Paul's blend (constant acceleration
@@ -206,8 +210,8 @@ impl Planner {
         let blend = blend.map(|b| Blend { eax_out: external::at_start_of(&prep, b.corner.s_out), ..b });
         let (planned, handover) = self.finalize(&pending, blend);
         self.pending = Some(match handover {
-            Some(h) => Pending { prep, s_start: h.s_out, v_start: h.v_out, ori_in: h.ori },
-            None => Pending { prep, s_start: 0.0, v_start: 0.0, ori_in: None },
+            Some(h) => Pending { prep, s_start: h.s_out, v_start: h.v_out, ori_in: h.ori, head: None },
+            None => Pending { prep, s_start: 0.0, v_start: 0.0, ori_in: None, head: None },
         });
         Ok(Some(planned))
     }
@@ -247,11 +251,11 @@ impl Planner {
     fn finalize(&mut self, pending: &Pending, blend: Option<Blend>) -> (PlannedMove, Option<Handover>) {
         let limits = &pending.prep.limits;
         let Some(Blend { corner, v_in, v_out, eax_out }) = blend else {
-            let own = limits.profile(pending.v_start, 0.0, limits.length - pending.s_start);
+            let own = pending.own_profile(0.0, limits.length - pending.s_start);
             return (self.place(pending, own, None), None);
         };
         let own_len = limits.length.min(corner.s_in) - pending.s_start;
-        let own = limits.profile(pending.v_start, v_in, own_len);
+        let own = pending.own_profile(v_in, own_len);
         let (rate_in, rate_out) = corner.path.rates(v_in * corner.scale_in, v_out * corner.scale_out);
         let handover = Handover { s_out: corner.s_out, v_out, ori: corner.path.ori_zone() };
         (self.place(pending, own, Some((corner, Profile::blend(rate_in, rate_out), eax_out))), Some(handover))
@@ -264,8 +268,7 @@ impl Planner {
     /// Returns the move and the time it starts braking.
     pub fn provisional(&self) -> Option<(PlannedMove, f64)> {
         let pending = self.pending.as_ref()?;
-        let limits = &pending.prep.limits;
-        let own = limits.profile(pending.v_start, 0.0, limits.length - pending.s_start);
+        let own = pending.own_profile(0.0, pending.prep.limits.length - pending.s_start);
         let braking = self.time + own.braking_start();
         Some((self.lay_out(pending, own, None), braking))
     }
@@ -336,8 +339,9 @@ type CornerPlan = (Corner, Profile, Option<Eax>);
 /// The speeds at a corner's entry and exit, or `None` when the corner would be
 /// walked at no speed at all (the move then stops instead).
 fn corner_speeds(pending: &Pending, c: Corner, next: &Prepared) -> Option<Blend> {
-    let (cur, own) = (&pending.prep.limits, (c.s_in - pending.s_start).max(0.0));
-    let v0 = pending.v_start;
+    // From where the robot is on it when it was re-timed under way, else its start.
+    let (walked, v0) = pending.head.as_ref().map_or((0.0, pending.v_start), |h| (h.length, h.end_speed));
+    let (cur, own) = (&pending.prep.limits, (c.s_in - pending.s_start - walked).max(0.0));
     // Entry: as fast as this move's cap, the corner and acceleration allow,
     // but never slower than braking at full deceleration from the start gives.
     let reach = (v0 * v0 + 2.0 * cur.acc * own).sqrt();

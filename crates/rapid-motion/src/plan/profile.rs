@@ -7,22 +7,33 @@ pub(crate) const EPS_LEN: f64 = 1e-9;
 
 /// A stretch of constant acceleration.
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct Phase {
-    t0: f64,
-    s0: f64,
-    v0: f64,
-    acc: f64,
-    dur: f64,
+pub(super) struct Phase {
+    pub(super) t0: f64,
+    pub(super) s0: f64,
+    pub(super) v0: f64,
+    pub(super) acc: f64,
+    pub(super) dur: f64,
 }
 
 /// The speed profile over one piece of path: up to three phases of constant
 /// acceleration, from `s = 0` at `t = 0` to `s = length` at `t = duration`.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Profile {
-    phases: Vec<Phase>,
+    pub(super) phases: Vec<Phase>,
     pub(crate) length: f64,
     pub(crate) duration: f64,
     pub(crate) end_speed: f64,
+    /// What a trapezoid was shaped by, so that its rest can be shaped again at
+    /// another speed (`retime.rs`); None for a corner's blend and a braking.
+    pub(crate) caps: Option<Caps>,
+}
+
+/// A trapezoid's speed cap and its acceleration and deceleration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Caps {
+    pub(crate) cap: f64,
+    pub(crate) acc: f64,
+    pub(crate) dec: f64,
 }
 
 /// What a path allows: its length, its speed cap and its acceleration, all in
@@ -68,9 +79,10 @@ impl Profile {
         let (u, w, length) = (clean(u), clean(w), clean(length));
         let acc = if acc.is_finite() && acc > 0.0 { acc } else { 1.0 };
         let dec = if dec.is_finite() && dec > 0.0 { dec } else { acc };
+        let caps = Some(Caps { cap: clean(cap).max(1e-9), acc, dec });
         let cap = clean(cap).max(u).max(w).max(1e-9);
         if length <= EPS_LEN {
-            return Profile { phases: Vec::new(), length, duration: 0.0, end_speed: w };
+            return Profile { phases: Vec::new(), length, duration: 0.0, end_speed: w, caps };
         }
         // The peak where accelerating from u and braking to w meet over the length.
         let peak = if acc == dec {
@@ -82,7 +94,7 @@ impl Profile {
         if peak < u.max(w) {
             let dur = 2.0 * length / (u + w);
             let phase = Phase { t0: 0.0, s0: 0.0, v0: u, acc: (w - u) / dur, dur };
-            return Profile { phases: vec![phase], length, duration: dur, end_speed: w };
+            return Profile { phases: vec![phase], length, duration: dur, end_speed: w, caps };
         }
         let d_up = (peak * peak - u * u) / (2.0 * acc);
         let d_down = (peak * peak - w * w) / (2.0 * dec);
@@ -97,7 +109,7 @@ impl Profile {
                 s += v0 * dur + 0.5 * a * dur * dur;
             }
         }
-        Profile { phases, length, duration: t, end_speed: w }
+        Profile { phases, length, duration: t, end_speed: w, caps }
     }
 
     /// The curve parameter of a corner (0 to 1) walked with its rate changing
@@ -107,11 +119,11 @@ impl Profile {
         let clean = |x: f64| if x.is_finite() { x.max(0.0) } else { 0.0 };
         let (r0, r1) = (clean(rate_in), clean(rate_out));
         if r0 + r1 <= 1e-12 {
-            return Profile { phases: Vec::new(), length: 1.0, duration: 0.0, end_speed: r1 };
+            return Profile { phases: Vec::new(), length: 1.0, duration: 0.0, end_speed: r1, caps: None };
         }
         let dur = 2.0 / (r0 + r1);
         let phase = Phase { t0: 0.0, s0: 0.0, v0: r0, acc: (r1 - r0) / dur, dur };
-        Profile { phases: vec![phase], length: 1.0, duration: dur, end_speed: r1 }
+        Profile { phases: vec![phase], length: 1.0, duration: dur, end_speed: r1, caps: None }
     }
 
     /// The profile braked from time `t` on (a stop on the path): the speed falls at a
@@ -132,7 +144,7 @@ impl Profile {
         };
         let acc = if dur > 0.0 { -v / dur } else { 0.0 };
         phases.push(Phase { t0: t, s0: s, v0: v, acc, dur });
-        Profile { phases, length: self.length, duration: t + dur, end_speed: 0.0 }
+        Profile { phases, length: self.length, duration: t + dur, end_speed: 0.0, caps: None }
     }
 
     /// Path position and speed at time `t` (clamped to the profile).

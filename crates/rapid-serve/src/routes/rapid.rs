@@ -95,7 +95,8 @@ async fn execution(app: &Arc<App>, req: &Req) -> Res {
 /// A start's `execmode` other than `continue`.
 #[derive(Debug, Clone, Copy)]
 enum Step {
-    /// `stepin`, `stepover`, `stepout`: one step forward.
+    /// `stepin`, `stepover`, `stepout`: one step forward; `stepmotion`: forward
+    /// until a motion instruction has run.
     Forward(StepKind),
     /// `stepback`: one statement backward (the manual's §1.21 rules).
     Back,
@@ -122,14 +123,9 @@ impl StartOrder {
             "stepover" => Some(Step::Forward(StepKind::Over)),
             "stepout" => Some(Step::Forward(StepKind::Out)),
             "stepback" => Some(Step::Back),
-            // The PC SDK's ExecutionMode names StepMotion "execute to next motion
-            // instruction"; the controller's "step to the next move instruction" runs
-            // on over several statements, which a step here does not do yet.
-            "stepmotion" => {
-                return Err(RwsError::unsupported(
-                    "execmode `stepmotion` (run to the next motion instruction and stop after it)",
-                ))
-            }
+            // The PC SDK's ExecutionMode.StepMotion, "execute to next motion
+            // instruction": on until a motion instruction has run.
+            "stepmotion" => Some(Step::Forward(StepKind::Motion)),
             // The PC SDK's ExecutionMode leaves out its number (6): what it does is
             // not in the public record, so it is not guessed.
             "steplast" => {

@@ -161,6 +161,17 @@ struct RawRmq {
     max_no_of_msg: Option<Spanned<i64>>,
 }
 
+/// The side a name says (`T_ROB_L`: left; `T_ROB_R`, `right_arm`: right), by its
+/// parts between `_`, `-` and spaces.
+fn side_of(name: &str) -> Option<rapid_motion::kinematics::yumi::Side> {
+    use rapid_motion::kinematics::yumi::Side;
+    name.to_ascii_lowercase().split(['_', '-', ' ']).find_map(|part| match part {
+        "l" | "left" => Some(Side::Left),
+        "r" | "right" => Some(Side::Right),
+        _ => None,
+    })
+}
+
 /// Reads the manifest `text` of the file at `path`.
 pub fn read(path: &Path, text: &str) -> Manifest {
     let dir = path.parent().map_or_else(|| PathBuf::from("."), Path::to_path_buf);
@@ -210,6 +221,27 @@ impl Reader<'_> {
         self.foregrounds(&raw.task);
         self.units(&raw.unit);
         self.conveyors(&raw.conveyor);
+        self.yumi_arms_by_task();
+    }
+
+    /// `[system] robot` an IRB 14000 YuMi, whose name alone gives the right arm (ROB_R,
+    /// the system's first robot): a motion task without a `robot` of its own whose name
+    /// says a side (`T_ROB_L`, `T_ROB_R`, as a YuMi system names its tasks) moves that
+    /// side's arm, as MOC.cfg's arm names `ROB_L`/`ROB_R` choose it in a backup.
+    fn yumi_arms_by_task(&mut self) {
+        let system = self.manifest.robot.as_deref().and_then(rapid_motion::find_model);
+        if system.is_none_or(|model| model.yumi.is_none()) {
+            return;
+        }
+        for task in self.manifest.sys.tasks.iter().filter(|t| t.motion_task) {
+            if self.manifest.task_robots.iter().any(|(t, _)| t.eq_ignore_ascii_case(&task.name)) {
+                continue;
+            }
+            let Some(side) = side_of(&task.name) else { continue };
+            if let Some(arm) = rapid_motion::robots::yumi_arms().iter().find(|arm| arm.yumi == Some(side)) {
+                self.manifest.task_robots.push((task.name.clone(), Some(arm.name.to_owned())));
+            }
+        }
     }
 
     /// `[[conveyor]]`: each conveyor's task must be a motion task of the manifest.
@@ -649,6 +681,33 @@ mod tests {
         assert_eq!(task.rmq, rmq);
         assert_eq!(manifest.sys.tasks[1].foreground.as_deref(), Some("T_MAIN"));
         let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_yumi_systems_tasks_move_the_arm_their_names_say() {
+        use rapid_motion::kinematics::yumi::Side;
+        // T_ROB_L gives no robot of its own: the left arm. T_ROB_R the right; a motion
+        // task's own robot stands; T_ROB1 says no side and keeps the system's model.
+        let toml = "[system]\nrobot = \"IRB 14000\"\n\n\
+                    [[task]]\nname = \"T_ROB_L\"\nmodules = [\"src/A.mod\"]\nmotion = true\n\n\
+                    [[task]]\nname = \"T_ROB_R\"\ntype = \"NORMAL\"\nmodules = [\"src/A.mod\"]\nmotion = true\n\n\
+                    [[task]]\nname = \"T_ROB1\"\ntype = \"NORMAL\"\nmodules = [\"src/A.mod\"]\nmotion = true\n";
+        let (dir, manifest) = project("yumi", toml);
+        assert_eq!(manifest.findings, []);
+        let side = |task: &str| {
+            let chosen = manifest.task_robots.iter().find(|(t, _)| t == task).and_then(|(_, m)| m.as_deref());
+            chosen.and_then(rapid_motion::find_model).and_then(|m| m.yumi)
+        };
+        assert_eq!((side("T_ROB_L"), side("T_ROB_R"), side("T_ROB1")), (Some(Side::Left), Some(Side::Right), None));
+        // A task's own robot wins: here both arms are the right one.
+        let own = toml.replacen("motion = true\n", "motion = true\nrobot = \"ROB_R_14000_05_05\"\n", 1);
+        let (dir2, manifest) = project("yumi_own", &own);
+        let chosen: Vec<_> = manifest.task_robots.iter().filter(|(t, _)| t == "T_ROB_L").collect();
+        assert_eq!(chosen.len(), 1);
+        let model = chosen[0].1.as_deref().and_then(rapid_motion::find_model).and_then(|m| m.yumi);
+        assert_eq!(model, Some(Side::Right));
+        let _ = std::fs::remove_dir_all(&dir);
+        let _ = std::fs::remove_dir_all(&dir2);
     }
 
     #[test]
