@@ -119,6 +119,18 @@ impl Extensions {
         self.entries.iter_mut().find_map(|e| (&mut **e as &mut dyn Any).downcast_mut::<T>())
     }
 
+    /// The state of type `T` to change, put in at its default first if there was none.
+    pub fn get_or_default<T: TaskState + Default>(&mut self) -> &mut T {
+        let at = match self.entries.iter().position(|e| (**e).type_id() == TypeId::of::<T>()) {
+            Some(at) => at,
+            None => {
+                self.entries.push(Box::<T>::default());
+                self.entries.len() - 1
+            }
+        };
+        (&mut *self.entries[at] as &mut dyn Any).downcast_mut::<T>().expect("the entry at `at` is a T")
+    }
+
     /// Whether an extension put in state of type `T`.
     pub fn contains<T: TaskState>(&self) -> bool {
         self.get::<T>().is_some()

@@ -8,6 +8,14 @@
 //! `rapid_io::IoSystem`) and the configuration data behind
 //! `builtins::cfgdata::CfgDatabase`. RAPID call depth lives in explicit frames,
 //! never on the Rust stack.
+//!
+//! What an embedder adds (built-in families, per-task state, the hooks the loop
+//! calls) comes in through [`embed::Extension`] and a set of built-ins
+//! ([`builtins::Builtins`]) handed to [`load_in`]. The interpreter core (`compile`,
+//! `exec`, `ir`, `value`, `format`) must not know the robot: it asks it through
+//! [`embed::TaskHooks`] only. The robot's built-ins (`builtins::motion`, registered as
+//! `motion::EXTENSION`) still live in this crate until they move to a crate of their
+//! own (issue 19).
 
 pub mod builtins;
 pub mod compile;

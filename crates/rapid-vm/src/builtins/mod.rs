@@ -134,12 +134,8 @@ pub struct Resources {
     pub cfgdata: cfgdata::CfgState,
     /// Which task this is and what the tasks share (sync points).
     pub tasking: tasking::TaskingState,
-    /// The motion settings (reset to their defaults at PP to Main).
-    pub motion: motion::MotionState,
     /// The task's side of the RAPID Message Queue.
     pub rmq: rmq::RmqState,
-    /// The task's robot: its model, its planned motion, where it is.
-    pub robot: motion::robot::RobotState,
     /// The operating mode, speed override and PP flags (kept at PP to Main).
     pub controller: controller::ControllerState,
     /// The embedder's extensions' own state (`crate::embed`).
@@ -166,7 +162,6 @@ impl Resources {
         self.interrupts.clear();
         self.tasking.end_waits();
         self.rmq.end_waits();
-        self.motion.reset();
         self.extensions.close_all();
     }
 

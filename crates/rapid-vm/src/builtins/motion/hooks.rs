@@ -11,8 +11,12 @@ use crate::embed::{Extension, PendingEvent, TaskHooks};
 use crate::exec::storage::Storage;
 
 /// The robot's built-ins and hooks.
-pub static EXTENSION: Extension =
-    Extension { name: "robot", families: &[&syncmove::FAMILY, &super::FAMILY], hooks: Some(&RobotHooks), init: None };
+pub static EXTENSION: Extension = Extension {
+    name: "robot",
+    families: &[&syncmove::FAMILY, &super::FAMILY],
+    hooks: Some(&RobotHooks),
+    init: Some(|resources| resources.extensions.insert(super::RobotSide::default())),
+};
 
 /// The motion event of a fly-by point run as a stop point: (number, title).
 const CORNER_PATH_FAILURE: (u32, &str) = (24, "Corner path failure");
@@ -21,15 +25,15 @@ struct RobotHooks;
 
 impl TaskHooks for RobotHooks {
     fn program_hold(&self, resources: &Resources) -> Option<f64> {
-        resources.robot.program_hold()
+        resources.robot().program_hold()
     }
 
     fn release_hold(&self, resources: &mut Resources) {
-        resources.robot.hold_until = None;
+        resources.robot_mut().hold_until = None;
     }
 
     fn held(&self, resources: &Resources) -> bool {
-        resources.robot.pause.is_some()
+        resources.robot().pause.is_some()
     }
 
     fn poll(&self, resources: &mut Resources, storage: &Storage, now: f64) {
@@ -44,7 +48,7 @@ impl TaskHooks for RobotHooks {
 
     fn after_builtin(&self, resources: &mut Resources) {
         // Another task reading this task's external axes sees its path stop and go on.
-        resources.robot.publish_pause();
+        resources.robot_mut().publish_pause();
     }
 
     /// The motion warning for each fly-by point that became a stop point since the last
@@ -53,11 +57,11 @@ impl TaskHooks for RobotHooks {
     // uncertain: number and title as we remember RobotWare 6's event log (50024 "Corner
     // path failure"); the message line is ours.
     fn take_events(&self, resources: &mut Resources, now: f64) -> Vec<PendingEvent> {
-        if resources.robot.corner_failures.is_empty() {
+        if resources.robot_mut().corner_failures.is_empty() {
             return Vec::new();
         }
-        let failures = std::mem::take(&mut resources.robot.corner_failures);
-        if !resources.motion.settings.corner_path_warning {
+        let failures = std::mem::take(&mut resources.robot_mut().corner_failures);
+        if !resources.motion_mut().settings.corner_path_warning {
             return Vec::new();
         }
         let event = || crate::events::Event {
@@ -79,7 +83,7 @@ impl TaskHooks for RobotHooks {
             Some(Def::Data(idx)) => Some(*idx),
             _ => None,
         };
-        resources.motion.links = MotionLinks {
+        resources.motion_mut().links = MotionLinks {
             motset: global_named("C_MOTSET"),
             progdisp: global_named("C_PROGDISP"),
             pose: prog.types.find("pose"),
