@@ -58,8 +58,16 @@ pub trait TaskHooks: Sync {
     /// The program stopped itself (Stop) at `now`.
     fn program_stopped(&self, _resources: &mut Resources, _storage: &mut Storage, _now: f64) {}
 
-    /// A built-in call has returned: publish what other tasks read of this one.
-    fn after_builtin(&self, _resources: &mut Resources) {}
+    /// A built-in call has returned at `now`: hand over the events noticed since the
+    /// last look (as [`TaskHooks::take_events`]), publish what other tasks read of this
+    /// one, and answer whether the program now owes a wait
+    /// ([`TaskHooks::program_hold`] is some). One call per built-in call: the fast loop
+    /// runs through here after every call, so an extension answers from its state in
+    /// one look.
+    fn after_builtin(&self, resources: &mut Resources, now: f64, events: &mut Vec<PendingEvent>) -> bool {
+        events.extend(self.take_events(resources, now));
+        self.program_hold(resources).is_some()
+    }
 
     /// Events the extension noticed since it was last asked (`now` is the task's
     /// time), for the task's event log; the core places each at its statement and

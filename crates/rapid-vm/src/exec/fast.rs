@@ -494,7 +494,7 @@ impl Vm {
                             if let Some(value) = result {
                                 self.storage.stack.push(value);
                             }
-                            let watched = self.resources.interrupts.active() || self.program_hold().is_some();
+                            let watched = self.resources.interrupts.active() || self.held_after_call;
                             if self.resources.spy.is_active() || watched {
                                 // SpyStart, an interrupt ordered, or a wait for the robot
                                 // owed (StartMove in a trap restarts the move the routine

@@ -18,18 +18,21 @@ impl Vm {
     }
 
     /// A built-in call returned: each extension logs what it noticed and publishes
-    /// what other tasks read.
+    /// what other tasks read; `held_after_call` says whether the program now owes one
+    /// a wait (the fast loop then hands over to the one-at-a-time loop).
     #[inline]
     pub(super) fn after_builtin_hooks(&mut self) {
+        let mut held = false;
+        let mut events = Vec::new();
         // The hooks are `&'static`: copied out, they leave `self` free to log.
         for at in 0..self.builtins.hooks().len() {
             let hooks = self.builtins.hooks()[at];
-            let events = hooks.take_events(&mut self.resources, self.time);
+            held |= hooks.after_builtin(&mut self.resources, self.time, &mut events);
             if !events.is_empty() {
-                self.log_pending(events);
+                self.log_pending(std::mem::take(&mut events));
             }
-            hooks.after_builtin(&mut self.resources);
         }
+        self.held_after_call = held;
     }
 
     /// Whether an extension stands held by the program (a robot StopMove stopped).

@@ -163,6 +163,8 @@ pub struct Vm {
     error_watch: error_watch::ErrorWatch,
     /// The built-ins the task's call sites name by id, with the extensions' hooks.
     builtins: std::sync::Arc<crate::builtins::Builtins>,
+    /// Whether the program owed an extension a wait when the last built-in returned.
+    held_after_call: bool,
 }
 
 impl Vm {
@@ -205,6 +207,7 @@ impl Vm {
             place_pool: Vec::new(),
             error_watch: error_watch::ErrorWatch::default(),
             builtins,
+            held_after_call: false,
         };
         let builtins = vm.builtins.clone();
         builtins.init_task(&mut vm.resources);

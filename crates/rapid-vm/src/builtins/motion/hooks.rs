@@ -5,7 +5,7 @@
 use rapid_sema::symbols::Def;
 
 use super::super::syncmove;
-use super::MotionLinks;
+use super::{MotionLinks, RobotSide};
 use crate::builtins::Resources;
 use crate::embed::{Extension, PendingEvent, TaskHooks};
 use crate::exec::storage::Storage;
@@ -22,6 +22,22 @@ pub static EXTENSION: Extension = Extension {
 const CORNER_PATH_FAILURE: (u32, &str) = (24, "Corner path failure");
 
 struct RobotHooks;
+
+/// The warning of a fly-by point run as a stop point at `now`, to be placed at `at`.
+fn corner_failure(now: f64, at: Option<(usize, rapid_syntax::Span)>) -> PendingEvent {
+    let event = crate::events::Event {
+        seq: 0,
+        domain: crate::events::MOTION_DOMAIN,
+        number: CORNER_PATH_FAILURE.0,
+        kind: crate::events::EventKind::Warning,
+        time: now,
+        title: CORNER_PATH_FAILURE.1.to_string(),
+        details: Vec::new(),
+        lines: vec!["The fly-by point was run as a stop point: no next move was ready in time.".to_string()],
+        place: None,
+    };
+    PendingEvent { event, at }
+}
 
 impl TaskHooks for RobotHooks {
     fn program_hold(&self, resources: &Resources) -> Option<f64> {
@@ -46,9 +62,17 @@ impl TaskHooks for RobotHooks {
         super::program_stopped(resources, storage, now);
     }
 
-    fn after_builtin(&self, resources: &mut Resources) {
+    fn after_builtin(&self, resources: &mut Resources, now: f64, events: &mut Vec<PendingEvent>) -> bool {
+        let Some(side) = resources.extensions.get_mut::<RobotSide>() else { return false };
+        if !side.robot.corner_failures.is_empty() {
+            let failures = std::mem::take(&mut side.robot.corner_failures);
+            if side.motion.settings.corner_path_warning {
+                events.extend(failures.into_iter().map(|at| corner_failure(now, at)));
+            }
+        }
         // Another task reading this task's external axes sees its path stop and go on.
-        resources.robot_mut().publish_pause();
+        side.robot.publish_pause();
+        side.robot.program_hold().is_some()
     }
 
     /// The motion warning for each fly-by point that became a stop point since the last
@@ -57,25 +81,12 @@ impl TaskHooks for RobotHooks {
     // uncertain: number and title as we remember RobotWare 6's event log (50024 "Corner
     // path failure"); the message line is ours.
     fn take_events(&self, resources: &mut Resources, now: f64) -> Vec<PendingEvent> {
-        if resources.robot_mut().corner_failures.is_empty() {
+        let Some(side) = resources.extensions.get_mut::<RobotSide>() else { return Vec::new() };
+        let failures = std::mem::take(&mut side.robot.corner_failures);
+        if !side.motion.settings.corner_path_warning {
             return Vec::new();
         }
-        let failures = std::mem::take(&mut resources.robot_mut().corner_failures);
-        if !resources.motion_mut().settings.corner_path_warning {
-            return Vec::new();
-        }
-        let event = || crate::events::Event {
-            seq: 0,
-            domain: crate::events::MOTION_DOMAIN,
-            number: CORNER_PATH_FAILURE.0,
-            kind: crate::events::EventKind::Warning,
-            time: now,
-            title: CORNER_PATH_FAILURE.1.to_string(),
-            details: Vec::new(),
-            lines: vec!["The fly-by point was run as a stop point: no next move was ready in time.".to_string()],
-            place: None,
-        };
-        failures.into_iter().map(|at| PendingEvent { event: event(), at }).collect()
+        failures.into_iter().map(|at| corner_failure(now, at)).collect()
     }
 
     fn loaded(&self, resources: &mut Resources, prog: &rapid_sema::Program) {
