@@ -26,9 +26,9 @@ pub(crate) fn finish(
     note: Option<&str>,
     args: &RunArgs,
 ) -> anyhow::Result<f64> {
-    let motion_end = resources.robot.flush();
+    let motion_end = resources.robot_mut().flush();
     // Outputs the last moves set as the robot passed their points (Move*DO …).
-    for (time, action) in std::mem::take(&mut resources.robot.due) {
+    for (time, action) in std::mem::take(&mut resources.robot_mut().due) {
         let rapid_vm::builtins::motion::robot::Action::Set { signal, value } = action else { continue };
         resources.io.order_on_path(time.max(program_end), signal, value);
     }
@@ -36,8 +36,8 @@ pub(crate) fn finish(
     // orders due by then (delayed sets, pulse ends, path events) have happened.
     resources.io.advance(program_end.max(motion_end));
     // The conveyors' whole input history, for the trace of a tracking robot.
-    resources.robot.refresh_conveyors(resources.io.system.as_ref());
-    let robot = &mut resources.robot;
+    rapid_vm::builtins::motion::robot_in(&mut resources.extensions).refresh_conveyors(resources.io.system.as_ref());
+    let robot = resources.robot_mut();
     let cycle = program_end.max(motion_end).min(limit);
     if robot.moves == 0 {
         return Ok(cycle);

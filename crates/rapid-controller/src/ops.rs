@@ -199,7 +199,7 @@ impl Controller {
         if let Some((_, task)) = robot {
             return Ok(task);
         }
-        let external = self.tasks.iter().any(|t| t.loaded.vm.resources().robot.external.find(unit).is_some());
+        let external = self.tasks.iter().any(|t| t.loaded.vm.resources().robot().external.find(unit).is_some());
         let status = rapid_config::eio::syssig::status_name(output.status);
         Err(if external {
             format!(
@@ -220,7 +220,8 @@ impl Controller {
         if !self.ops.watch_motion {
             return None;
         }
-        let ends = self.tasks.iter().map(|t| t.loaded.vm.resources().robot.still_from()).filter(|&end| end > self.time);
+        let ends =
+            self.tasks.iter().map(|t| t.loaded.vm.resources().robot().still_from()).filter(|&end| end > self.time);
         ends.min_by(f64::total_cmp)
     }
 
@@ -554,7 +555,7 @@ impl Controller {
 
     /// Whether task `task`'s robot stands still now (MechUnitNotMoving).
     fn robot_still(&self, task: &crate::schedule::Task) -> bool {
-        self.time >= task.loaded.vm.resources().robot.still_from()
+        self.time >= task.loaded.vm.resources().robot().still_from()
     }
 
     /// Whether a robot started or stopped since the outputs were last shown.

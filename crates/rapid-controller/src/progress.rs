@@ -76,7 +76,7 @@ impl Controller {
         }
         let outside = self.tasks.iter().any(|t| {
             let resources = t.loaded.vm.resources();
-            resources.sockets.is_open() || resources.robot.still_from() > self.time
+            resources.sockets.is_open() || resources.robot().still_from() > self.time
         });
         if outside {
             return None;

@@ -279,7 +279,7 @@ impl Controller {
             Request::WriteData { task, name, value } => self.write_data(who, task, &name, &value),
             Request::Robot { task } => {
                 let time = self.time;
-                let robot = &mut self.tasks[task].loaded.vm.resources_mut().robot;
+                let robot = self.tasks[task].loaded.vm.resources_mut().robot_mut();
                 // Its frames with its base where it stands in the world now (MOC.cfg's
                 // base frame, on a track where the track has it).
                 let mut frames = robot.active;

@@ -14,7 +14,7 @@ const FILE: &str = "T_ROB1/MainModule.mod";
 /// T_ROB1's TCP x (mm) where its robot stands at the controller's time.
 fn tcp_x(session: &mut Session) -> f64 {
     let time = session.time();
-    let robot = &mut session.controller_mut().tasks[0].loaded.vm.resources_mut().robot;
+    let robot = session.controller_mut().tasks[0].loaded.vm.resources_mut().robot_mut();
     let joints = robot.joints_at(time);
     robot.flange_of(&joints).0.translation.vector.x
 }

@@ -45,9 +45,9 @@ fn pp_to_main_activates_tool0_wobj0_load0_and_keeps_the_mode() {
     machine.resources_mut().controller = ControllerState::new(OpMode::ManualReduced, 30.0);
     let mut host = RecordingHost::default();
     assert_eq!(machine.run(&mut host, 100_000), Exit::Done);
-    assert!(machine.resources_mut().motion.active.iter().all(Option::is_some));
+    assert!(machine.resources().motion().active.iter().all(Option::is_some));
     machine.pp_to_main(&mut host, entry).expect("pp to main");
-    assert!(machine.resources_mut().motion.active.iter().all(Option::is_none));
+    assert!(machine.resources().motion().active.iter().all(Option::is_none));
     assert_eq!(machine.run(&mut host, 100_000), Exit::Done);
     // OP_MAN_PROG is 2 (catalogue symnum).
     let expected = ["run 1: tool0 wobj0 load0", "mode 2 override 30", "run 2: tool0 wobj0 load0", "mode 2 override 30"];

@@ -46,9 +46,9 @@ fn pp_to_main_resets_every_motion_setting() {
     let (mut machine, entry) = (loaded.vm, loaded.entry);
     let mut host = RecordingHost::default();
     assert_eq!(machine.run(&mut host, 100_000), Exit::Done);
-    assert_ne!(machine.resources_mut().motion.settings, Default::default());
+    assert_ne!(machine.resources().motion().settings, Default::default());
     machine.pp_to_main(&mut host, entry).expect("pp to main");
-    assert_eq!(machine.resources_mut().motion.settings, Default::default());
+    assert_eq!(machine.resources().motion().settings, Default::default());
     assert_eq!(machine.run(&mut host, 100_000), Exit::Done);
     let defaults = ["[100,5000][100,100,100]TRUEFALSE", "100 0 100", "[[[0,0,0],[1,0,0,0]],[0,0,0,0,0,0]]"];
     let changed = ["[20,300][50,50,50]FALSETRUE", "200 1 30", "[[[1,2,3],[1,0,0,0]],[4,5,6,7,8,9]]"];

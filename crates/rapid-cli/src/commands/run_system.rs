@@ -94,7 +94,7 @@ pub(crate) fn run(args: &RunArgs, assembled: Assembled) -> anyhow::Result<ExitSt
         let finished = crate::motion_out::finish(resources, ends, who, model_note.as_deref(), args);
         controller.exchange_shared_with(idx);
         cycle = cycle.max(finished?);
-        controller.tasks[idx].loaded.vm.log_corner_failures();
+        controller.tasks[idx].loaded.vm.log_extension_events();
     }
     write_motion_outputs(&mut controller, &tasks, &robot_names, cycle, args)?;
     if controller.tasks.iter_mut().any(|task| task.loaded.vm.resources_mut().controller.warm_start) {
@@ -312,7 +312,7 @@ fn write_motion_outputs(
     // The motion tasks that were recorded: the first with a robot gets the trace and
     // the report, the others a trace each (a positioner's task, its axes only).
     let mut recorded: Vec<usize> = (0..controller.tasks.len())
-        .filter(|&i| controller.tasks[i].loaded.vm.resources_mut().robot.recorded.is_some())
+        .filter(|&i| controller.tasks[i].loaded.vm.resources_mut().robot_mut().recorded.is_some())
         .collect();
     if let Some(first) = recorded.iter().position(|&i| controller.tasks[i].spec.robot) {
         let primary = recorded.remove(first);
@@ -320,7 +320,7 @@ fn write_motion_outputs(
     }
     for (k, &at) in recorded.iter().enumerate() {
         let arm = controller.tasks[at].spec.robot;
-        let robot = std::mem::take(&mut controller.tasks[at].loaded.vm.resources_mut().robot);
+        let robot = std::mem::take(controller.tasks[at].loaded.vm.resources_mut().robot_mut());
         let vm = &controller.tasks[at].loaded.vm;
         let files: &[SourceInput] = tasks.get(at).map_or(&[], |t| &t.modules);
         let sources = |file: usize| files.get(file).or_else(|| vm.program_source(file));

@@ -167,7 +167,7 @@ impl Session {
             if !task.spec.robot {
                 continue;
             }
-            let robot = &mut task.loaded.vm.resources_mut().robot;
+            let robot = task.loaded.vm.resources_mut().robot_mut();
             let joints = robot.joints_at(time);
             let base = robot.track_base_at(time);
             let p = *robot.kin.params();

@@ -91,7 +91,7 @@ impl Session {
             if !task.spec.robot {
                 continue;
             }
-            let robot = &mut task.loaded.vm.resources_mut().robot;
+            let robot = task.loaded.vm.resources_mut().robot_mut();
             let joints = robot.joints_at(time);
             let extax = robot.extax_read(time);
             let (flange, conf) = robot.flange_of(&joints);

@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 use rapid_sema::system::{self, ConfigFile, TaskFacts, TaskProgram};
 use rapid_sema::{Diagnostic, Options, Severity, SourceInput};
 use rapid_vm::builtins::controller::{ControllerState, OpMode};
-use rapid_vm::{load_with, LoadError};
+use rapid_vm::{load_in, LoadError};
 
 use super::inputs::{self, Inputs};
 use crate::boot::system::{self as boot, BootError, BootOptions, Booted, Stimulus};
@@ -216,7 +216,8 @@ fn assemble_noting(
         // where its entry routine is named.
         let declared = tasks[0].inputs.sys.as_ref().and_then(|sys| sys.task(&task.spec.name));
         let entry_given = idx == 0 && options.entry.is_some();
-        let mut program = match (load_with(&task.inputs.modules, &entry, &load_options), declared, config) {
+        let task_loaded = load_in(&task.inputs.modules, &entry, &load_options, crate::boot::builtins::builtins());
+        let mut program = match (task_loaded, declared, config) {
             (Ok(program), _, _) => program,
             // Not started for want of its configured entry: `rapid check`'s finding, at
             // the configuration (`--entry` replaces the first task's).

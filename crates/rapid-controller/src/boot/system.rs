@@ -246,7 +246,7 @@ pub fn boot(
                 .transpose()
                 .map_err(BootError::UnknownModel)?;
             let task = Some(spec.name.as_str()).filter(|_| !alone);
-            let robot = &mut program.vm.resources_mut().robot;
+            let robot = program.vm.resources_mut().robot_mut();
             // A task moving external units only keeps an arm that never moves (its
             // robot instructions are refused), so that its units have a state to live in.
             let moved = own.unwrap_or(model);
@@ -273,7 +273,7 @@ pub fn boot(
             .filter(|(spec, _)| spec.motion)
             .map(|(spec, program)| rapid_vm::builtins::motion::foreign::LinkedTask {
                 name: &spec.name,
-                robot: &mut program.vm.resources_mut().robot,
+                robot: program.vm.resources_mut().robot_mut(),
             })
             .collect();
         rapid_vm::builtins::motion::foreign::link(&mut linked);

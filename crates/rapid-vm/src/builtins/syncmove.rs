@@ -56,7 +56,7 @@ pub(crate) enum Coordination {
 /// The robot stands still before a stop-point instruction goes on: `false` (and a
 /// wait) while it still moves.
 pub(crate) fn robot_stands(ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
-    let end = ctx.resources.robot.flush();
+    let end = ctx.resources.robot_mut().flush();
     super::motion::apply_due_events(ctx)?;
     if end > ctx.time {
         // The instruction looks again when the robot stands, or earlier when an
@@ -158,7 +158,7 @@ fn sync_move_resume(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 }
 
 fn set_suspended(ctx: &mut Ctx<'_>, suspended: bool, what: &str) -> Res {
-    if ctx.resources.robot.stored.is_none() {
+    if ctx.resources.robot_mut().stored.is_none() {
         return Err(RapidError::fatal(format!("{what} is only allowed on the StorePath level (after StorePath)")));
     }
     let Some(mode) = ctx.resources.tasking.sync_move.as_mut() else {
@@ -274,7 +274,7 @@ fn time_alone(
     settings: &MotionSettings,
     external: Option<&ExternalMove>,
 ) -> Result<f64, RapidError> {
-    let robot = &ctx.resources.robot;
+    let robot = ctx.resources.robot();
     let mut planner = Planner::new(robot.end_joints(), AccelLimits::nominal(&robot.model.max_speeds));
     planner.set_settings(*settings);
     planner.set_eax(external.map(|ext| ext.from));

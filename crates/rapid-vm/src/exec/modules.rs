@@ -335,10 +335,9 @@ impl Vm {
         };
         self.refuse_diagnostics(&name, &checked, new_file, check_ref)?;
         let module_idx = self.modules.base_modules.len() + self.modules.units.len();
-        let (_, catalogue) = rapid_sema::catalogue();
         let modules = checked.modules();
-        let compiled = compile::compile_module(&checked.prog, &modules, module_idx, &catalogue.module, &catalogue.text)
-            .map_err(|errs| {
+        let compiled =
+            compile::compile_module(&checked.prog, &modules, module_idx, &self.builtins).map_err(|errs| {
                 let why: Vec<String> = errs.iter().take(QUOTED_DIAGNOSTICS).map(|e| e.message.clone()).collect();
                 self.error(Err::Syntax, format!("module `{name}` cannot be run: {}", why.join("; ")))
             })?;
@@ -382,13 +381,10 @@ impl Vm {
     /// the new module (one unloaded and loaded again has new data slots). Frames already
     /// running keep the code they started with.
     fn relink_units(&mut self, checked: &Checked, modules: &[ModuleSource<'_>]) {
-        let (_, catalogue) = rapid_sema::catalogue();
         let n_base = self.modules.base_modules.len();
         let live: Vec<usize> = (0..self.modules.units.len()).filter(|&u| self.modules.units[u].live).collect();
         for unit in live {
-            let Ok(compiled) =
-                compile::compile_module(&checked.prog, modules, n_base + unit, &catalogue.module, &catalogue.text)
-            else {
+            let Ok(compiled) = compile::compile_module(&checked.prog, modules, n_base + unit, &self.builtins) else {
                 continue;
             };
             for (idx, code) in compiled.routines {

@@ -32,10 +32,10 @@ pub type Active = (Rc<str>, Place);
 
 /// The active object of a kind: the one activated last, else the default.
 fn active(ctx: &Ctx<'_>, kind: usize) -> Option<Active> {
-    if let Some(active) = &ctx.resources.motion.active[kind] {
+    if let Some(active) = &ctx.resources.motion().active[kind] {
         return Some(active.clone());
     }
-    let global = ctx.resources.motion.links.sysdata[kind]?;
+    let global = ctx.resources.motion().links.sysdata[kind]?;
     Some((DEFAULT_NAMES[kind].into(), Place { root: Root::Global(global), path: Vec::new() }))
 }
 
@@ -43,7 +43,7 @@ fn active(ctx: &Ctx<'_>, kind: usize) -> Option<Active> {
 fn kind_of(ctx: &Ctx<'_>, value: &Value) -> Option<usize> {
     let Value::Record(record) = value else { return None };
     (0..DEFAULT_NAMES.len()).find(|&kind| {
-        let default = ctx.resources.motion.links.sysdata[kind].and_then(|g| ctx.storage.globals.get(g));
+        let default = ctx.resources.motion().links.sysdata[kind].and_then(|g| ctx.storage.globals.get(g));
         matches!(default, Some(Value::Record(d)) if d.ty == record.ty)
     })
 }
@@ -61,7 +61,7 @@ pub(crate) fn activate_arg(ctx: &mut Ctx<'_>, arg: &Value, param: usize, kind: u
         return;
     }
     // The active object again (a program's moves mostly name one tool): nothing changes.
-    if ctx.resources.motion.active[kind].as_ref().is_some_and(|(_, active)| active == &**place) {
+    if ctx.resources.motion_mut().active[kind].as_ref().is_some_and(|(_, active)| active == &**place) {
         return;
     }
     let name = argname::original_name(ctx.chain, param).unwrap_or_else(|| "".into());
@@ -73,7 +73,7 @@ fn activate(ctx: &mut Ctx<'_>, kind: usize, name: Rc<str>, place: Place) {
     let tasking = &mut ctx.resources.tasking;
     let me = tasking.name().to_ascii_lowercase();
     tasking.shared.sysdata.entry(me).or_default()[kind] = Some(name.clone());
-    ctx.resources.motion.active[kind] = Some((name, place));
+    ctx.resources.motion_mut().active[kind] = Some((name, place));
 }
 
 /// Whose active data GetSysData reads: `None` for this task's own, else the name of
@@ -109,7 +109,7 @@ fn active_name_in(ctx: &Ctx<'_>, task: &str, kind: usize) -> Rc<str> {
 fn shared_global(ctx: &Ctx<'_>, name: &str) -> Option<u32> {
     let global = ctx.data_by_name.get(&name.to_ascii_lowercase()).map(|d| d.global).or_else(|| {
         let default = DEFAULT_NAMES.iter().position(|d| d.eq_ignore_ascii_case(name))?;
-        ctx.resources.motion.links.sysdata[default]
+        ctx.resources.motion().links.sysdata[default]
     });
     global.filter(|&g| ctx.pers_globals.get(g as usize).copied().unwrap_or(false))
 }
@@ -201,7 +201,7 @@ fn named_global(ctx: &Ctx<'_>, name: &str, kind: usize) -> Result<u32, RapidErro
         return Ok(data.global);
     }
     let default = DEFAULT_NAMES.iter().position(|d| d.eq_ignore_ascii_case(name));
-    match default.and_then(|k| ctx.resources.motion.links.sysdata[k]) {
+    match default.and_then(|k| ctx.resources.motion().links.sysdata[k]) {
         Some(global) => Ok(global),
         None => Err(ctx.error(Err::SymAccess, format!("no {} named `{name}`", type_name(kind)))),
     }

@@ -97,8 +97,8 @@ pub(super) fn target_axis7(
     flange: &Pose,
     extax: &[f64; 6],
 ) -> Result<Option<yumi::Joints7>, RapidError> {
-    let found = solve7(&ctx.resources.robot, flange, extax[0]).map_err(super::moves::motion_error)?;
-    ctx.resources.robot.next_axis7 = found.map(|q| q[6]);
+    let found = solve7(ctx.resources.robot_mut(), flange, extax[0]).map_err(super::moves::motion_error)?;
+    ctx.resources.robot_mut().next_axis7 = found.map(|q| q[6]);
     Ok(found)
 }
 

@@ -49,7 +49,7 @@ fn calib_failed(what: &str, why: &MotionError) -> RapidError {
 
 /// The flange poses of jointtarget arguments.
 fn flange_poses(ctx: &Ctx<'_>, args: &[Value]) -> Result<Vec<Pose>, RapidError> {
-    let kin = &ctx.resources.robot.kin;
+    let kin = &ctx.resources.robot().kin;
     args.iter().map(|arg| Ok(kin.forward(&data::jointtarget(ctx, &ctx.value(arg)?)?))).collect()
 }
 

@@ -231,7 +231,7 @@ impl super::robot::RobotState {
 /// The generator a corrdescr argument names, if it is connected.
 fn connected(ctx: &Ctx<'_>, arg: &Value) -> Result<Option<(usize, u32)>, RapidError> {
     let (_, handle) = ctx.handle_arg(arg, "a corrdescr")?;
-    let generators = &ctx.resources.robot.corr.generators;
+    let generators = &ctx.resources.robot().corr.generators;
     Ok(handle.and_then(|id| generators.iter().position(|&(g, _)| g == id).map(|i| (i, id))))
 }
 
@@ -247,7 +247,7 @@ pub(crate) fn corr_con(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if connected(ctx, &args[0])?.is_some() {
         return Ok(None);
     }
-    let corr = &mut ctx.resources.robot.corr;
+    let corr = &mut ctx.resources.robot_mut().corr;
     if corr.generators.len() >= MAX_GENERATORS {
         // uncertain: the manual states the limit but not the error; execution stops.
         return Err(RapidError::fatal(format!(
@@ -278,7 +278,7 @@ pub(crate) fn corr_write(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         xyz[k] = ctx.num(field)?;
     }
     let now = ctx.time;
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     robot.corr.generators[i].1 += Vector3::from(xyz);
     robot.corr.changed(now);
     check_ahead(ctx, now)
@@ -289,7 +289,7 @@ pub(crate) fn corr_write(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // uncertain: the real robot stops where the corrected path leaves its reach; here the
 // instruction that made it so stops the program.
 fn check_ahead(ctx: &mut Ctx<'_>, now: f64) -> Res {
-    let robot = &ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     for planned in robot.ahead.iter().filter(|m| m.end >= now) {
         robot.corr.check(&robot.kin, planned, now).map_err(super::moves::motion_error)?;
     }
@@ -302,7 +302,7 @@ fn check_ahead(ctx: &mut Ctx<'_>, now: f64) -> Res {
 pub(crate) fn corr_discon(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let Some((i, _)) = connected(ctx, &args[0])? else { return Err(not_connected("CorrDiscon")) };
     let now = ctx.time;
-    let corr = &mut ctx.resources.robot.corr;
+    let corr = &mut ctx.resources.robot_mut().corr;
     corr.generators.remove(i);
     corr.changed(now);
     check_ahead(ctx, now)
@@ -311,7 +311,7 @@ pub(crate) fn corr_discon(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `CorrClear`: removes every connected generator, and with them all corrections.
 pub(crate) fn corr_clear(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     let now = ctx.time;
-    let corr = &mut ctx.resources.robot.corr;
+    let corr = &mut ctx.resources.robot_mut().corr;
     if corr.generators.is_empty() {
         return Ok(None);
     }
@@ -322,7 +322,7 @@ pub(crate) fn corr_clear(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 
 /// `CorrRead()`: the total offset all connected generators delivered so far (a pos).
 pub(crate) fn corr_read(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    let total = ctx.resources.robot.corr.total();
+    let total = ctx.resources.robot_mut().corr.total();
     let pose = nalgebra::Isometry3::translation(total.x, total.y, total.z);
     Ok(Some(super::data::pos_value(ctx, &pose)?))
 }

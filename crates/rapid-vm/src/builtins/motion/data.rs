@@ -83,7 +83,7 @@ pub(super) fn chain(
     let tool_held = boolean(ctx, &t[0], "tooldata")?;
     let tframe = frame::frame(ctx, &t[1])?;
     // On a track the robot's base is where the track is now.
-    let base = ctx.resources.robot.track_base_at(ctx.time);
+    let base = ctx.resources.robot().track_base_at(ctx.time);
     let mut chain = FrameChain { tframe, pdisp, base, ..FrameChain::default() };
     let Some(wobj) = wobj else { return Ok(chain) };
     let w = record(ctx, wobj, 5, "a wobjdata")?;
@@ -108,7 +108,7 @@ pub(super) fn chain(
 /// or an external unit's frame carried by its axes.
 fn conveyor_frame(ctx: &Ctx<'_>, wobj: &Value) -> Result<Isometry3<f64>, RapidError> {
     use super::tracking::Carrier;
-    let robot = &ctx.resources.robot;
+    let robot = ctx.resources.robot();
     match super::tracking::carrier_of(ctx, wobj)? {
         Some(Carrier::Conveyor(c)) => {
             let conveyor = &robot.following.conveyors[c];

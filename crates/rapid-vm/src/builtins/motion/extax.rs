@@ -203,8 +203,8 @@ pub(crate) fn move_ext_j(
     args: &[crate::value::Value],
 ) -> Result<Option<crate::value::Value>, crate::error::RapidError> {
     super::moves::require_motion_task(ctx)?;
-    ctx.resources.robot.next_axis7 = None;
-    let robot = &ctx.resources.robot;
+    ctx.resources.robot_mut().next_axis7 = None;
+    let robot = ctx.resources.robot_mut();
     let (mut chain, joints) = (robot.active, robot.end_joints());
     super::moves::on_track(ctx, args, MOVE_EXT_J.to, MOVE_EXT_J.eoffs, &mut chain)?;
     super::moves::go_with(ctx, args, &MOVE_EXT_J, rapid_motion::plan::Target::Joints(joints), chain, Vec::new())

@@ -307,7 +307,7 @@ fn synchronized_with(ctx: &Ctx<'_>, other: &str) -> bool {
 /// (semi-coordinated). Semi-coordinated, the unit must stand from now on; either way
 /// none of its axes may be independent.
 pub(super) fn follows(ctx: &Ctx<'_>, f: usize) -> Result<bool, RapidError> {
-    let unit = &ctx.resources.robot.external.foreign[f];
+    let unit = &ctx.resources.robot().external.foreign[f];
     let path = unit.path.read();
     if unit.axes.iter().any(|&j| path.independent[j]) {
         return Err(RapidError::fatal(format!(
@@ -321,7 +321,7 @@ pub(super) fn follows(ctx: &Ctx<'_>, f: usize) -> Result<bool, RapidError> {
     }
     // The move starts once the robot's moves given before it are under way, at the
     // earliest (the program runs ahead of the robot).
-    let start = ctx.resources.robot.planner.time().max(ctx.time);
+    let start = ctx.resources.robot().planner.time().max(ctx.time);
     if path.moves_after(start, &unit.axes) {
         return Err(RapidError::fatal(format!(
             "the work object's unit {} (task {}) moves: outside synchronized movement with that task (SyncMoveOn) a \
@@ -337,11 +337,11 @@ pub(super) fn follows(ctx: &Ctx<'_>, f: usize) -> Result<bool, RapidError> {
 /// task may still move in the object of a unit that moves, unless both tasks move
 /// synchronized.
 pub(super) fn check_unit_move(ctx: &Ctx<'_>, from: &Eax, to: &Eax) -> Result<(), RapidError> {
-    let external = &ctx.resources.robot.external;
+    let external = &ctx.resources.robot().external;
     let Some(path) = &external.publication else { return Ok(()) };
     let path = path.read();
     // The move starts once this task's moves given before it are under way, at the earliest.
-    let start = ctx.resources.robot.planner.time().max(ctx.time);
+    let start = ctx.resources.robot().planner.time().max(ctx.time);
     for state in &external.units {
         let moves = state.unit.axes.iter().any(|a| (to[a.index()] - from[a.index()]).abs() > SAME_POSITION);
         let Some(busy) = path.busy_after(&state.unit.name, start).filter(|_| moves) else { continue };

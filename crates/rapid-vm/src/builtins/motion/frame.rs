@@ -140,7 +140,7 @@ pub(super) fn with_extax(like: &Value, extax: &[f64; 6]) -> Value {
 /// A new pose value (DefFrame, DefDFrame, DefAccFrame); the rotation is written
 /// with q1 >= 0.
 pub(super) fn pose_value(ctx: &Ctx<'_>, frame: &Isometry3<f64>) -> Result<Value, RapidError> {
-    let Some(pose_ty) = ctx.resources.motion.links.pose else {
+    let Some(pose_ty) = ctx.resources.motion().links.pose else {
         return Err(ctx.error(Err::ArgValue, "the pose type is not known to this program"));
     };
     let q = from_matrix(frame.rotation.to_rotation_matrix().matrix());

@@ -178,7 +178,7 @@ fn axis(ctx: &Ctx<'_>, args: &[Value]) -> Result<usize, RapidError> {
 
 /// The slot of axis number `axis` (from 1) of external unit `i`.
 fn external_slot(ctx: &Ctx<'_>, i: usize, axis: f64) -> Result<usize, RapidError> {
-    let state = &ctx.resources.robot.external.units[i];
+    let state = &ctx.resources.robot().external.units[i];
     let name = &state.unit.name;
     if state.unit.carries_robot {
         return Err(RapidError::fatal(format!(
@@ -188,7 +188,7 @@ fn external_slot(ctx: &Ctx<'_>, i: usize, axis: f64) -> Result<usize, RapidError
     if !state.active {
         return Err(RapidError::fatal(format!("{name} is not active (ActUnit): its axes cannot move")));
     }
-    let publication = ctx.resources.robot.external.publication.as_ref();
+    let publication = ctx.resources.robot().external.publication.as_ref();
     if let Some(busy) = publication.and_then(|p| p.read().busy_after(name, ctx.time).map(|b| b.task.clone())) {
         return Err(RapidError::fatal(format!(
             "the robot of task {busy} works in a work object {name} carries: independent mode on it is not supported \
@@ -205,14 +205,16 @@ fn external_slot(ctx: &Ctx<'_>, i: usize, axis: f64) -> Result<usize, RapidError
 /// The external axis (configuration) in `slot`, if the slot is an external one.
 fn external_axis<'c>(ctx: &'c Ctx<'_>, slot: usize) -> Option<&'c rapid_motion::external::ExternalAxis> {
     let j = slot.checked_sub(FIRST_EXTERNAL)?;
-    ctx.resources.robot.external.units.iter().flat_map(|u| &u.unit.axes).find(|a| a.index() == j)
+    ctx.resources.robot().external.units.iter().flat_map(|u| &u.unit.axes).find(|a| a.index() == j)
 }
 
 /// Speed (deg/s, at most the axis's maximum) and acceleration from `\Ramp` (percent).
 fn speed_and_acc(ctx: &Ctx<'_>, axis: usize, speed: f64, ramp: Option<&Value>) -> Result<(f64, f64), RapidError> {
     let (max, acc) = match external_axis(ctx, axis) {
         Some(a) => (a.max_speed, a.acc),
-        None => (ctx.resources.robot.model.max_speeds[axis], ctx.resources.robot.model.max_speeds[axis] / RAMP_TIME),
+        None => {
+            (ctx.resources.robot().model.max_speeds[axis], ctx.resources.robot().model.max_speeds[axis] / RAMP_TIME)
+        }
     };
     if !speed.is_finite() || speed == 0.0 {
         return Err(ctx.error(Err::ArgValue, "the speed of an independent axis must not be 0"));
@@ -229,10 +231,12 @@ fn speed_and_acc(ctx: &Ctx<'_>, axis: usize, speed: f64, ramp: Option<&Value>) -
 /// Where the axis is now: its independent position, or the robot's.
 fn position_now(ctx: &mut Ctx<'_>, axis: usize) -> f64 {
     let now = ctx.time;
-    match ctx.resources.robot.independent.axes[axis] {
+    match ctx.resources.robot_mut().independent.axes[axis] {
         Some(ind) => ind.at(now).0,
-        None if axis >= FIRST_EXTERNAL => ctx.resources.robot.eax_at(now).map_or(0.0, |eax| eax[axis - FIRST_EXTERNAL]),
-        None => ctx.resources.robot.joints_at(now)[axis],
+        None if axis >= FIRST_EXTERNAL => {
+            ctx.resources.robot_mut().eax_at(now).map_or(0.0, |eax| eax[axis - FIRST_EXTERNAL])
+        }
+        None => ctx.resources.robot_mut().joints_at(now)[axis],
     }
 }
 
@@ -242,9 +246,9 @@ fn position_now(ctx: &mut Ctx<'_>, axis: usize) -> f64 {
 fn start(ctx: &mut Ctx<'_>, axis: usize, goal: Goal, speed: f64, acc: f64) {
     let p0 = position_now(ctx, axis);
     let ind = IndAxis { t0: ctx.time, p0, goal, speed, acc };
-    ctx.resources.robot.independent.set(axis, Some(ind), ind.t0);
+    ctx.resources.robot_mut().independent.set(axis, Some(ind), ind.t0);
     // Another task working in a unit's work object must know its axis left the moves.
-    ctx.resources.robot.publish_tail();
+    ctx.resources.robot_mut().publish_tail();
 }
 
 crate::builtins::signature::layout! {
@@ -428,13 +432,13 @@ pub(crate) fn ind_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let axis = axis(ctx, args)?;
     let kind = reset_kind(ctx, args, axis)?;
     let now = ctx.time;
-    let Some(ind) = ctx.resources.robot.independent.axes[axis] else { return Ok(None) };
+    let Some(ind) = ctx.resources.robot_mut().independent.axes[axis] else { return Ok(None) };
     if ind.done_at().is_none_or(|done| done > now + 1e-9) {
         return Err(RapidError::fatal(format!("IndReset: axis {} still moves; it must stand still", axis + 1)));
     }
     let position = kind.apply(ind.at(now).0);
     let (lo, hi) = limits(ctx, axis);
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     if position < lo - 1e-9 || position > hi + 1e-9 {
         return Err(RapidError::fatal(format!(
             "IndReset: axis {} at {position:.2} degrees is outside its working range {lo}..{hi}; \\Short, \\Fwd or \\Bwd bring it in",
@@ -453,7 +457,7 @@ pub(crate) fn ind_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 fn limits(ctx: &Ctx<'_>, slot: usize) -> (f64, f64) {
     match external_axis(ctx, slot) {
         Some(a) => (a.min, a.max),
-        None => ctx.resources.robot.kin.limits()[slot.min(5)],
+        None => ctx.resources.robot().kin.limits()[slot.min(5)],
     }
 }
 
@@ -461,7 +465,7 @@ fn limits(ctx: &Ctx<'_>, slot: usize) -> (f64, f64) {
 pub(crate) fn ind_inpos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let axis = axis(ctx, args)?;
     let now = ctx.time;
-    let Some(ind) = ctx.resources.robot.independent.axes[axis] else {
+    let Some(ind) = ctx.resources.robot_mut().independent.axes[axis] else {
         return Err(ctx.error(Err::AxisInd, format!("axis {} is not in independent mode", axis + 1)));
     };
     let at = ind.done_at().is_some_and(|done| now >= done - INPOS_DEG);
@@ -473,7 +477,7 @@ pub(crate) fn ind_inpos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 pub(crate) fn ind_speed(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let axis = axis(ctx, args)?;
     let now = ctx.time;
-    let Some(ind) = ctx.resources.robot.independent.axes[axis] else {
+    let Some(ind) = ctx.resources.robot_mut().independent.axes[axis] else {
         return Err(ctx.error(Err::AxisInd, format!("axis {} is not in independent mode", axis + 1)));
     };
     let (_, v) = ind.at(now);

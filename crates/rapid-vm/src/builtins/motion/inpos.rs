@@ -69,7 +69,7 @@ pub(super) fn stop_point(ctx: &Ctx<'_>, value: &Value, settle: f64) -> Result<St
         FLLWTIME => {
             // uncertain: a follow time on a move in no conveyor's work object is taken to
             // stop execution (the manual ties it to conveyor tracking).
-            let on_conveyor = ctx.resources.robot.following.open().is_some_and(|s| s.is_conveyor());
+            let on_conveyor = ctx.resources.robot().following.open().is_some_and(|s| s.is_conveyor());
             if !on_conveyor {
                 return Err(RapidError::fatal(
                     "\\Inpos with a follow time (fllwtime) needs a move in a conveyor's work object (WaitWObj)",

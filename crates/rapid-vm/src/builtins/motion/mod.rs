@@ -18,6 +18,7 @@ pub mod extax;
 mod fit;
 pub mod foreign;
 mod frame;
+mod hooks;
 pub mod indep;
 mod inpos;
 mod layout;
@@ -41,6 +42,7 @@ mod units;
 mod zone_watch;
 pub mod zones;
 
+pub use hooks::EXTENSION;
 pub(crate) use moves::{apply_due_events, motion_error};
 pub(crate) use pause::abandon_paths;
 pub(crate) use settings::set_payload;
@@ -313,6 +315,65 @@ impl Default for Settings {
     }
 }
 
+/// The robot's state in a task's extension slot (`Resources::extensions`), put in by
+/// [`EXTENSION`] when the task is made.
+#[derive(Default)]
+pub struct RobotSide {
+    /// The task's robot: its model, its planned motion, where it is.
+    pub robot: robot::RobotState,
+    /// The motion settings (reset to their defaults at PP to Main).
+    pub motion: MotionState,
+}
+
+impl crate::embed::TaskState for RobotSide {
+    fn close_all(&mut self) {
+        self.motion.reset();
+    }
+}
+
+impl super::Resources {
+    /// The task's robot. Every task made with the robot's extension has one (the
+    /// extension puts it in as the task is made); a task without it has no robot
+    /// built-ins to call, and no front end asks it about a robot.
+    pub fn robot(&self) -> &robot::RobotState {
+        &self.robot_side().robot
+    }
+
+    /// The task's robot, to change (put in at its default if the task had none).
+    pub fn robot_mut(&mut self) -> &mut robot::RobotState {
+        &mut self.robot_side_mut().robot
+    }
+
+    /// The task's motion settings.
+    pub fn motion(&self) -> &MotionState {
+        &self.robot_side().motion
+    }
+
+    /// The task's motion settings, to change.
+    pub fn motion_mut(&mut self) -> &mut MotionState {
+        &mut self.robot_side_mut().motion
+    }
+
+    fn robot_side(&self) -> &RobotSide {
+        // Invariant, not input: see `robot`.
+        self.extensions.get::<RobotSide>().expect("a task asked about its robot has the robot extension")
+    }
+
+    fn robot_side_mut(&mut self) -> &mut RobotSide {
+        side_in(&mut self.extensions)
+    }
+}
+
+/// The robot in `extensions` (a task's `Resources::extensions`), to change beside
+/// the task's other resources (its I/O system).
+pub fn robot_in(extensions: &mut crate::embed::Extensions) -> &mut robot::RobotState {
+    &mut side_in(extensions).robot
+}
+
+fn side_in(extensions: &mut crate::embed::Extensions) -> &mut RobotSide {
+    extensions.get_or_default::<RobotSide>()
+}
+
 /// The motion family's part of the task's resources.
 #[derive(Debug, Clone, Default)]
 pub struct MotionState {
@@ -339,7 +400,7 @@ impl MotionState {
 
 /// Writes the readable settings into C_MOTSET and C_PROGDISP.
 fn mirror(ctx: &mut Ctx<'_>) {
-    let state = &ctx.resources.motion;
+    let state = ctx.resources.motion_mut();
     let s = &state.settings;
     if let Some(global) = state.links.motset {
         let leaves = [

@@ -59,7 +59,7 @@ fn speed_and_zone(
 /// The settings moves are planned with (VelSet, AccSet, the operator's and the
 /// task's speed overrides; manual reduced speed caps the TCP at 250 mm/s).
 pub(super) fn planner_settings(ctx: &Ctx<'_>) -> MotionSettings {
-    let s = &ctx.resources.motion.settings;
+    let s = &ctx.resources.motion().settings;
     let controller = &ctx.resources.controller;
     let vel_max = controller.tcp_speed_limit().map_or(s.vel_max, |limit| s.vel_max.min(limit));
     MotionSettings {
@@ -95,7 +95,7 @@ fn min_limit(a: Option<f64>, b: Option<f64>) -> Option<f64> {
 /// A circle is planned only with the CirPathMode orientations the planner models.
 pub(super) fn check_circle_mode(ctx: &Ctx<'_>) -> Result<(), RapidError> {
     use super::CirPathMode::{Wrist45, Wrist46, Wrist56};
-    let mode = ctx.resources.motion.settings.cir_path_mode;
+    let mode = ctx.resources.motion().settings.cir_path_mode;
     if matches!(mode, Wrist45 | Wrist46 | Wrist56) {
         return Err(RapidError::fatal(format!(
             "circular moves with CirPathMode \\{mode:?} are not supported by `rapid run` yet"
@@ -107,7 +107,7 @@ pub(super) fn check_circle_mode(ctx: &Ctx<'_>) -> Result<(), RapidError> {
 /// Linear and circular moves are planned with SingArea \Off or \Wrist; \LockAxis4
 /// (axis 4 held at 0° or ±180°) is not modelled.
 pub(super) fn check_sing_mode(ctx: &Ctx<'_>) -> Result<(), RapidError> {
-    if ctx.resources.motion.settings.sing == super::SingMode::LockAxis4 {
+    if ctx.resources.motion().settings.sing == super::SingMode::LockAxis4 {
         return Err(RapidError::fatal(
             "linear and circular moves with SingArea \\LockAxis4 are not supported by `rapid run` yet",
         ));
@@ -161,7 +161,7 @@ pub(super) fn go_with(
     settings.move_time = ctx.opt_num(args.get(layout.t))?;
     let stop = match args.get(layout.inpos) {
         Some(inpos) if present(Some(inpos)) => {
-            let settle = rapid_motion::plan::AccelLimits::nominal(&ctx.resources.robot.model.max_speeds).settle;
+            let settle = rapid_motion::plan::AccelLimits::nominal(&ctx.resources.robot_mut().model.max_speeds).settle;
             Some(super::inpos::stop_point(ctx, &ctx.value(inpos)?, settle)?)
         }
         _ => None,
@@ -174,12 +174,12 @@ pub(super) fn go_with(
     let mut request = MoveRequest { target, speed, zone, tool, held_object, wobj: wobj_frame(&chain) };
     let external = external_target(ctx, args, layout.to, layout.eoffs);
     // A 7-axis arm's axis 7 at a robtarget's target is taken by this move alone.
-    ctx.resources.robot.next_axis7 = None;
+    ctx.resources.robot_mut().next_axis7 = None;
     let external = external?;
     if let Some(ext) = &external {
-        request.speed.v_tcp *= super::track::track_speed_scale(&ctx.resources.robot, &target, &chain, ext)?;
+        request.speed.v_tcp *= super::track::track_speed_scale(ctx.resources.robot_mut(), &target, &chain, ext)?;
         if let Target::Circular { .. } = target {
-            settings.base_travel = super::track::track_travel(&ctx.resources.robot, ext).into();
+            settings.base_travel = super::track::track_travel(ctx.resources.robot_mut(), ext).into();
         }
     }
     // Synchronized movement: the moves of one `\ID` in all tasks take the same time.
@@ -195,7 +195,7 @@ pub(super) fn go_with(
     let now = ctx.time;
     let conc = present(args.get(layout.conc));
     count_conc(ctx, conc, now)?;
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     robot.set_settings(settings);
     robot.next_external = external;
     // `\Corr`: the path follows the corrections of the connected generators.
@@ -213,7 +213,7 @@ pub(super) fn go_with(
     robot.active = chain;
     robot.active_foreign = foreign;
     apply_due_events(ctx)?;
-    if ctx.resources.robot.zone_violation.take().is_some() {
+    if ctx.resources.robot_mut().zone_violation.take().is_some() {
         // uncertain: RobotWare's event number for a WZLimSup stop is not in our notes.
         return Err(RapidError::fatal("world zone: the robot would enter a WZLimSup zone; it stops before it"));
     }
@@ -236,7 +236,7 @@ pub(super) fn external_target(
     to: usize,
     rule: EOffsRule,
 ) -> Result<Option<rapid_motion::external::ExternalMove>, RapidError> {
-    if !ctx.resources.robot.external.any() {
+    if !ctx.resources.robot().external.any() {
         return Ok(None);
     }
     let target = ctx.value(&args[to])?;
@@ -246,8 +246,8 @@ pub(super) fn external_target(
         EOffsRule::Unless(switch) => !present(args.get(switch)),
         EOffsRule::Only(switch) => present(args.get(switch)),
     };
-    let offsets = use_offsets.then_some(ctx.resources.motion.settings.eoffs);
-    let external = ctx.resources.robot.external_move(&values, offsets.as_ref()).map_err(motion_error)?;
+    let offsets = use_offsets.then_some(ctx.resources.motion().settings.eoffs);
+    let external = ctx.resources.robot().external_move(&values, offsets.as_ref()).map_err(motion_error)?;
     if let Some(ext) = &external {
         // A unit another task's robot works in moves only as MultiMove allows.
         super::foreign::check_unit_move(ctx, &ext.from, &ext.to)?;
@@ -266,7 +266,7 @@ const MAX_CONC: u32 = 5;
 // uncertain: that the row ends when the robot has caught up, and where the error is
 // raised (at the sixth move, before the robot is given it).
 fn count_conc(ctx: &mut Ctx<'_>, conc: bool, now: f64) -> Result<(), RapidError> {
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     if !conc || robot.still_from() <= now {
         robot.conc_run = 0;
     }
@@ -299,7 +299,7 @@ pub(super) fn wait_for_robot(ctx: &mut Ctx<'_>, resume: f64) {
     // The rest of the wait is held before the next instruction (the VM), so a stop of
     // the robot meanwhile (a trap's StopMove, another task's `\AllMotionTasks`, a
     // program stop) holds the program too.
-    ctx.resources.robot.hold_until = Some(resume);
+    ctx.resources.robot_mut().hold_until = Some(resume);
     if ctx.resources.interrupts.active() {
         // Interrupts may come while the robot moves: wait until the next one may.
         let next = super::super::interrupts::next_due(ctx).map_or(resume, |due| due.min(resume));
@@ -330,11 +330,11 @@ pub(super) fn on_track(
     rule: EOffsRule,
     chain: &mut rapid_motion::frames::FrameChain,
 ) -> Result<(), RapidError> {
-    if ctx.resources.robot.external.track().is_none() {
+    if ctx.resources.robot().external.track().is_none() {
         return Ok(());
     }
     if let Some(ext) = external_target(ctx, args, to, rule)? {
-        chain.base = ctx.resources.robot.track_base(&ext.to);
+        chain.base = ctx.resources.robot().track_base(&ext.to);
     }
     Ok(())
 }
@@ -352,7 +352,7 @@ pub(super) fn frames_at(
     let tool = ctx.value(&args[tool])?;
     let wobj = if present(args.get(wobj)) { Some(ctx.value(&args[wobj])?) } else { None };
     let carrier = super::tracking::begin_move(ctx, wobj.as_ref())?;
-    let pdisp = if displaced { ctx.resources.motion.settings.pdisp } else { nalgebra::Isometry3::identity() };
+    let pdisp = if displaced { ctx.resources.motion_mut().settings.pdisp } else { nalgebra::Isometry3::identity() };
     let mut chain = data::chain(ctx, &tool, wobj.as_ref(), pdisp)?;
     if let Some(uframe) = carrier.and_then(|c| super::tracking::planning_frame(ctx, c)) {
         chain.uframe = uframe;
@@ -382,9 +382,9 @@ pub(super) fn joint_move(
         let joints = [q[0], q[1], q[2], q[3], q[4], q[5]];
         return go_with(ctx, args, layout, Target::Joints(joints), chain, events);
     }
-    let robot = &ctx.resources.robot;
+    let robot = ctx.resources.robot();
     let seed = robot.end_joints();
-    let joints = if ctx.resources.motion.settings.conf_j {
+    let joints = if ctx.resources.motion().settings.conf_j {
         chain.joints_for(&robot.kin, &pose, &conf, &seed, ConfMatch::Compliant)
     } else {
         inverse_nearest(&robot.kin, &chain.flange_goal(&pose), &seed)
@@ -400,7 +400,7 @@ pub(super) fn arm_target(
     chain: &rapid_motion::frames::FrameChain,
     target: &Value,
 ) -> Result<Option<rapid_motion::kinematics::yumi::Joints7>, RapidError> {
-    if !super::arm7::has_axis7(&ctx.resources.robot) {
+    if !super::arm7::has_axis7(ctx.resources.robot_mut()) {
         return Ok(None);
     }
     let (pose, _) = data::robtarget(ctx, target)?;
@@ -439,11 +439,11 @@ pub(super) fn linear_move(
 // A 7-axis arm's target is reached by its arm angle: its confdata is not checked.
 // uncertain: the YuMi's use of confdata in moves is not in the public record.
 fn check_conf_l(ctx: &Ctx<'_>, target: &Value) -> Result<(), RapidError> {
-    if !ctx.resources.motion.settings.conf_l || super::arm7::has_axis7(&ctx.resources.robot) {
+    if !ctx.resources.motion().settings.conf_l || super::arm7::has_axis7(ctx.resources.robot()) {
         return Ok(());
     }
     let (_, programmed) = data::robtarget(ctx, target)?;
-    let robot = &ctx.resources.robot;
+    let robot = ctx.resources.robot();
     let reached = rapid_motion::confdata::confdata_of(&robot.kin, &robot.end_joints());
     let near = (0..3).all(|i| (reached[i] - programmed[i]).abs() <= 1) && reached[3] == programmed[3];
     if near {
@@ -593,7 +593,7 @@ fn sync_event(ctx: &mut Ctx<'_>, name: &Value) -> Result<Vec<super::robot::PathE
 /// time, or now when that has passed (the program came to the next move late).
 // uncertain: an event whose time has passed is set at once, not at its exact time.
 pub(crate) fn apply_due_events(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
-    let due = std::mem::take(&mut ctx.resources.robot.due);
+    let due = std::mem::take(&mut ctx.resources.robot_mut().due);
     for (time, action) in due {
         match action {
             super::robot::Action::Set { signal: id, value } => {
@@ -669,14 +669,14 @@ pub(super) fn abs_joint_move(
 ) -> Res {
     require_motion_task(ctx)?;
     // A jointtarget's eax_a is a 7-axis arm's axis 7 itself.
-    ctx.resources.robot.next_axis7 = None;
+    ctx.resources.robot_mut().next_axis7 = None;
     let chain = frames(ctx, args, layout, false)?;
     let mut joints = data::jointtarget(ctx, &ctx.value(&args[layout.to])?)?;
     if !moves_robot(ctx) {
         // A positioner's task: only the external axes move (`robax` is not used).
-        joints = ctx.resources.robot.end_joints();
+        joints = ctx.resources.robot_mut().end_joints();
     }
-    if let Some(axis) = ctx.resources.robot.kin.limit_violation(&joints) {
+    if let Some(axis) = ctx.resources.robot_mut().kin.limit_violation(&joints) {
         return Err(motion_error(MotionError::JointLimit { axis }));
     }
     go_with(ctx, args, layout, Target::Joints(joints), chain, events)
@@ -685,7 +685,7 @@ pub(super) fn abs_joint_move(
 /// `WaitRob [\InPos] | [\ZeroSpeed]`: waits until the robot stands still at the end of
 /// its last move (traps of path interrupts run meanwhile, as during a move).
 pub(crate) fn wait_rob(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    let end = ctx.resources.robot.flush();
+    let end = ctx.resources.robot_mut().flush();
     apply_due_events(ctx)?;
     wait_for_robot(ctx, end);
     Ok(None)
@@ -697,11 +697,11 @@ pub(crate) fn wait_rob(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 pub(super) fn note_facts(ctx: &mut Ctx<'_>, request: &MoveRequest, chain: &rapid_motion::frames::FrameChain) {
     use rapid_motion::Kinematics as _;
     let (instruction, file, span) = instruction_here(ctx);
-    ctx.resources.robot.next_place = Some((file, span));
-    if ctx.resources.robot.recorded.is_none() {
+    ctx.resources.robot_mut().next_place = Some((file, span));
+    if ctx.resources.robot_mut().recorded.is_none() {
         return;
     }
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     let point = match request.target {
         Target::Joints(joints) => chain.tcp_in_world(&robot.kin.forward(&joints)),
         Target::Linear(to) | Target::Circular { to, .. } => chain.base * to,
@@ -736,7 +736,7 @@ fn instruction_here(ctx: &Ctx<'_>) -> (&'static str, usize, rapid_syntax::Span) 
     let span = code.stmts[..upto].iter().rev().find(|s| pc < s.end).map_or(code.span, |s| s.span);
     let name = match code.instrs.get(pc as usize) {
         Some(Instr::Call(site)) => match code.sites.get(*site as usize).map(|s| s.callee) {
-            Some(Callee::Builtin(id)) => crate::builtins::name(id),
+            Some(Callee::Builtin(id)) => ctx.builtins.name(id),
             _ => "",
         },
         _ => "",

@@ -87,7 +87,7 @@ fn all_motion_tasks(ctx: &mut Ctx<'_>, args: &[Value], idx: usize, name: &'stati
 /// for a StorePath without StopMove): path outputs and trigger interrupts after it
 /// and the program's wait for the robot are held.
 pub(super) fn pause_at(ctx: &mut Ctx<'_>, since: f64) -> Result<Pause, RapidError> {
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     if robot.planner.has_pending() && robot.planner.time() <= since {
         // The robot is on a move still waiting for its successor (after \Conc): it
         // becomes final, ending in a stop point, so it can be stopped on.
@@ -102,8 +102,8 @@ pub(super) fn pause_at(ctx: &mut Ctx<'_>, since: f64) -> Result<Pause, RapidErro
 /// Holds what was planned after `since`: path outputs and trigger interrupts, the
 /// program's wait for the robot; TriggSpeed outputs go to 0 (the robot stands).
 fn hold_after(resources: &mut Resources, since: f64) -> Pause {
-    let held_wait = resources.robot.hold_until.map(|_| f64::INFINITY);
-    let held_wait = std::mem::replace(&mut resources.robot.hold_until, held_wait);
+    let held_wait = resources.robot_mut().hold_until.map(|_| f64::INFINITY);
+    let held_wait = std::mem::replace(&mut resources.robot_mut().hold_until, held_wait);
     let orders = &mut resources.io.path_orders;
     let split = orders.partition_point(|&(t, _, _)| t <= since);
     let held_orders = orders.split_off(split).into_iter().collect();
@@ -112,8 +112,9 @@ fn hold_after(resources: &mut Resources, since: f64) -> Pause {
     scheduled.retain(|&(t, _)| t <= since);
     let mut speed_outputs = Vec::new();
     resources.io.advance(since);
+    let speed_signals = resources.robot().trigg.speed_outputs_after(since);
     if let Some(io) = resources.io.system.as_mut() {
-        for signal in resources.robot.trigg.speed_outputs_after(since) {
+        for signal in speed_signals {
             speed_outputs.push((signal, io.value(signal).unwrap_or(0.0)));
             let _ = io.set(signal, 0.0, since);
         }
@@ -128,13 +129,13 @@ pub(crate) fn stop_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if !all_motion_tasks(ctx, args, 1, "StopMove") {
         return Ok(None);
     }
-    if let Some(pause) = ctx.resources.robot.pause.as_mut() {
+    if let Some(pause) = ctx.resources.robot_mut().pause.as_mut() {
         // Stopped already: the stop-move state is set again (after StopMoveReset).
         pause.reset = false;
         return Ok(None);
     }
     let pause = pause_at(ctx, ctx.time)?;
-    ctx.resources.robot.pause = Some(pause);
+    ctx.resources.robot_mut().pause = Some(pause);
     Ok(None)
 }
 
@@ -142,8 +143,8 @@ pub(crate) fn stop_move(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// was planned after it is held until StartMove. Nothing changes when it is stopped
 /// already.
 pub(crate) fn hold(resources: &mut Resources, now: f64) {
-    if resources.robot.pause.is_none() {
-        resources.robot.pause = Some(hold_after(resources, now));
+    if resources.robot_mut().pause.is_none() {
+        resources.robot_mut().pause = Some(hold_after(resources, now));
     }
 }
 
@@ -175,7 +176,7 @@ pub(crate) fn stop_move_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if !all_motion_tasks(ctx, args, 0, "StopMoveReset") {
         return Ok(None);
     }
-    if let Some(pause) = ctx.resources.robot.pause.as_mut() {
+    if let Some(pause) = ctx.resources.robot_mut().pause.as_mut() {
         pause.reset = true;
     }
     Ok(None)
@@ -186,9 +187,9 @@ pub(crate) fn stop_move_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// stopped, ERR_PATHDIST when it stands too far from its path.
 fn restart(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
     let now = ctx.time;
-    let Some(pause) = ctx.resources.robot.pause.take() else {
+    let Some(pause) = ctx.resources.robot_mut().pause.take() else {
         // uncertain: "moving" is taken as having planned motion not yet done.
-        let robot = &ctx.resources.robot;
+        let robot = ctx.resources.robot_mut();
         if robot.motion_end > now || robot.planner.has_pending() {
             return Err(ctx.error(Err::AlreadyMoving, "the robot is already moving (no StopMove to undo)"));
         }
@@ -201,14 +202,14 @@ fn restart(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
     let regain = match regain {
         Ok(regain) => regain,
         Err(err) => {
-            ctx.resources.robot.pause = Some(pause);
+            ctx.resources.robot_mut().pause = Some(pause);
             return Err(err);
         }
     };
     // After StepBwdPath the robot goes forward to where it stopped first.
     let forward = match pause.step.as_ref().map(|step| super::stepbwd::forward(ctx, &pause, step)) {
         Some(Err(err)) => {
-            ctx.resources.robot.pause = Some(pause);
+            ctx.resources.robot_mut().pause = Some(pause);
             return Err(err);
         }
         Some(Ok(forward)) => Some(forward),
@@ -216,7 +217,7 @@ fn restart(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
     };
     let back = regain.as_ref().map_or(0.0, PlannedMove::duration) + forward.as_ref().map_or(0.0, PlannedMove::duration);
     let dt = (now - pause.since).max(0.0) + back;
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     robot.resume_after(pause.since, dt);
     if let Some(regain) = regain {
         insert_in_time(robot, regain);
@@ -242,7 +243,7 @@ fn restart(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
 fn regain_move(ctx: &mut Ctx<'_>, pause: &Pause, path: Joints) -> Result<Option<PlannedMove>, RapidError> {
     let settings = super::moves::planner_settings(ctx);
     let now = ctx.time;
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     let here = robot.joints_at(pause.since);
     let (tool, held_object) = super::moves::mount_of(&robot.active);
     let (a, b) = (robot.kin.forward(&here) * tool, robot.kin.forward(&path) * tool);
@@ -288,7 +289,7 @@ pub(super) fn insert_in_time(robot: &mut super::robot::RobotState, planned: Plan
 // uncertain: both flags answer the one stop state of the task's robot, and the
 // state of the stored path counts on level 2.
 pub(crate) fn is_stop_move_act(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    let robot = &ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     let stored = robot.stored.as_ref().is_some_and(|s| s.stop_move_act());
     Ok(Some(Value::Bool(robot.pause.as_ref().is_some_and(Pause::flagged) || stored)))
 }
@@ -300,26 +301,26 @@ pub(crate) fn is_stop_move_act(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 // without a braking distance.
 pub(crate) fn clear_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     let now = ctx.time;
-    let since = ctx.resources.robot.pause.as_ref().map_or(now, |p| p.since);
-    if ctx.resources.robot.pause.as_ref().is_some_and(|p| p.regain.is_some()) {
+    let since = ctx.resources.robot_mut().pause.as_ref().map_or(now, |p| p.since);
+    if ctx.resources.robot_mut().pause.as_ref().is_some_and(|p| p.regain.is_some()) {
         // After RestoPath the base path starts where path level 2 ended: drop it
         // whole, so the robot stays where level 2 left it.
-        super::store::drop_from(&mut ctx.resources.robot, since);
+        super::store::drop_from(ctx.resources.robot_mut(), since);
     }
-    ctx.resources.robot.stop_at(since);
-    ctx.resources.robot.due.retain(|&(t, _)| t <= since);
-    ctx.resources.robot.trigg.pending.retain(|&(t, _)| t <= since);
-    ctx.resources.robot.trigg.runs.clear();
+    ctx.resources.robot_mut().stop_at(since);
+    ctx.resources.robot_mut().due.retain(|&(t, _)| t <= since);
+    ctx.resources.robot_mut().trigg.pending.retain(|&(t, _)| t <= since);
+    ctx.resources.robot_mut().trigg.runs.clear();
     // TriggSpeed outputs end with the path: 0, as the robot stands.
-    let speed_outputs = ctx.resources.robot.trigg.speed_outputs_after(since);
-    ctx.resources.robot.trigg.speed_outputs.clear();
+    let speed_outputs = ctx.resources.robot_mut().trigg.speed_outputs_after(since);
+    ctx.resources.robot_mut().trigg.speed_outputs.clear();
     ctx.resources.io.advance(now);
     if let Some(io) = ctx.resources.io.system.as_mut() {
         for signal in speed_outputs {
             let _ = io.set(signal, 0.0, now);
         }
     }
-    if let Some(pause) = ctx.resources.robot.pause.as_mut() {
+    if let Some(pause) = ctx.resources.robot_mut().pause.as_mut() {
         pause.held_orders.clear();
         pause.held_interrupts.clear();
         pause.speed_outputs.clear();
@@ -328,7 +329,7 @@ pub(crate) fn clear_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
         // Nothing is left to go back to.
         pause.regain = None;
     } else {
-        ctx.resources.robot.hold_until = None;
+        ctx.resources.robot_mut().hold_until = None;
         let orders = &mut ctx.resources.io.path_orders;
         orders.retain(|&(t, _, _)| t <= now);
         ctx.resources.interrupts.scheduled.retain(|&(t, _)| t <= now);
@@ -345,7 +346,7 @@ pub(crate) fn abandon_paths(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
     if crate::builtins::tasking::my_task(ctx).is_some_and(|t| !t.motion) {
         return Ok(());
     }
-    ctx.resources.robot.stored = None;
+    ctx.resources.robot_mut().stored = None;
     stop_move(ctx, &[])?;
     clear_path(ctx, &[])?;
     restart(ctx)
@@ -353,5 +354,5 @@ pub(crate) fn abandon_paths(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
 
 /// `PathLevel()`: 1 on the base path, 2 after StorePath (until RestoPath).
 pub(crate) fn path_level(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    Ok(Some(Value::Num(if ctx.resources.robot.stored.is_some() { 2.0 } else { 1.0 })))
+    Ok(Some(Value::Num(if ctx.resources.robot_mut().stored.is_some() { 2.0 } else { 1.0 })))
 }

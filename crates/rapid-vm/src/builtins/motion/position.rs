@@ -60,7 +60,7 @@ pub(crate) fn orob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let point = ctx.value(&args[0])?;
     let remove_pdisp = !present(args.get(1));
     let remove_eoffs = !present(args.get(2));
-    let settings = &ctx.resources.motion.settings;
+    let settings = &ctx.resources.motion_mut().settings;
     let (pdisp, eoffs) = (settings.pdisp, settings.eoffs);
     let mut result = point.clone();
     // With no displacement the position is passed on exactly (not renormalised).

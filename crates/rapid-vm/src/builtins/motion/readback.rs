@@ -61,8 +61,8 @@ fn linked_motion_task(ctx: &Ctx<'_>) -> Option<usize> {
 
 /// The frames a read-back uses: the given tool and work object, else the active ones.
 fn read_frames(ctx: &Ctx<'_>, tool: Option<&Value>, wobj: Option<&Value>) -> Result<FrameChain, RapidError> {
-    let active = ctx.resources.robot.active;
-    let pdisp = ctx.resources.motion.settings.pdisp;
+    let active = ctx.resources.robot().active;
+    let pdisp = ctx.resources.motion().settings.pdisp;
     let tool_value = match tool.filter(|t| present(Some(t))) {
         Some(t) => Some(ctx.value(t)?),
         None => None,
@@ -72,11 +72,11 @@ fn read_frames(ctx: &Ctx<'_>, tool: Option<&Value>, wobj: Option<&Value>) -> Res
         None => None,
     };
     // On a track the robot's base is where the track is now.
-    let base = ctx.resources.robot.track_base_at(ctx.time);
+    let base = ctx.resources.robot().track_base_at(ctx.time);
     match (tool_value, wobj_value) {
         (None, None) => {
             // A work object the robot follows is where it is now.
-            let uframe = super::tracking::active_uframe_at(&ctx.resources.robot, ctx.time);
+            let uframe = super::tracking::active_uframe_at(ctx.resources.robot(), ctx.time);
             Ok(FrameChain { pdisp, base, uframe, ..active })
         }
         (Some(tool), Some(wobj)) => data::chain(ctx, &tool, Some(&wobj), pdisp),
@@ -90,7 +90,7 @@ fn read_frames(ctx: &Ctx<'_>, tool: Option<&Value>, wobj: Option<&Value>) -> Res
                 ));
             }
             let mut chain = data::chain(ctx, &tool, None, pdisp)?;
-            let uframe = super::tracking::active_uframe_at(&ctx.resources.robot, ctx.time);
+            let uframe = super::tracking::active_uframe_at(ctx.resources.robot(), ctx.time);
             chain.uframe = uframe;
             chain.oframe = active.oframe;
             chain.stationary_tool = active.stationary_tool;
@@ -133,11 +133,11 @@ fn target_frames(
                     "a stationary tool (robhold FALSE) needs \\WObj, the work object the robot holds",
                 ));
             }
-            data::chain(ctx, &tool, None, ctx.resources.motion.settings.pdisp)?
+            data::chain(ctx, &tool, None, ctx.resources.motion().settings.pdisp)?
         }
         _ => read_frames(ctx, tool, wobj)?,
     };
-    let robot = &ctx.resources.robot;
+    let robot = ctx.resources.robot();
     chain.base = robot.track_base(extax);
     let Some(wobj) = given else { return Ok(chain) };
     let now = ctx.time;
@@ -198,7 +198,7 @@ pub(crate) fn c_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         None => {
             let now = ctx.time;
             let tcp = super::moves::moves_robot(ctx);
-            (ctx.resources.robot.joints_at(now), ctx.resources.robot.extax_read(now), tcp)
+            (ctx.resources.robot_mut().joints_at(now), ctx.resources.robot_mut().extax_read(now), tcp)
         }
     };
     // A positioner's task has no robot axes: they read 9E9, as axes the system lacks.
@@ -253,7 +253,7 @@ pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         }
         Some(None) => return Ok(Some(data::robtarget_value(ctx, &nalgebra::Isometry3::identity(), [0; 4])?)),
         None => {
-            let robot = &mut ctx.resources.robot;
+            let robot = ctx.resources.robot_mut();
             let joints = robot.joints_at(now);
             // A 7-axis arm's axis 7 is in the external axes; its eax_a reads the arm angle.
             let eax = robot.eax_at(now);
@@ -284,7 +284,7 @@ pub(crate) fn c_pos(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     require_tcp(ctx, None, "CPos")?;
     let chain = read_frames(ctx, args.get(CPOS.tool), args.get(CPOS.wobj))?;
     let now = ctx.time;
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     let joints = robot.joints_at(now);
     let pose = match robot.kin.redundant() {
         // A 7-axis arm: axis 7 where the external axes have it now.
@@ -303,13 +303,13 @@ pub(crate) fn calc_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let extax = data::target_extax(ctx, &target)?;
     let mut extax = extax;
     let chain = target_frames(ctx, args.get(at.tool), args.get(at.wobj), &extax, false)?;
-    let (pose, conf) = match super::arm7::flange_of_target(&ctx.resources.robot, &joints, extax[0]) {
+    let (pose, conf) = match super::arm7::flange_of_target(ctx.resources.robot_mut(), &joints, extax[0]) {
         // A 7-axis arm: axis 7 from the jointtarget's eax_a, the robtarget's is the arm angle.
         Some((flange, conf, angle)) => {
             extax[0] = angle;
             (chain.target_of(&flange), conf)
         }
-        None => chain.robtarget_of(&ctx.resources.robot.kin, &joints),
+        None => chain.robtarget_of(&ctx.resources.robot_mut().kin, &joints),
     };
     Ok(Some(super::frame::with_extax(&data::robtarget_value(ctx, &pose, conf)?, &extax)))
 }
@@ -328,16 +328,16 @@ pub(crate) fn calc_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let extax = data::target_extax(ctx, &target)?;
     let chain = target_frames(ctx, args.get(at.tool), args.get(at.wobj), &extax, present(args.get(at.use_cur)))?;
     let now = ctx.time;
-    let seed = ctx.resources.robot.joints_at(now);
+    let seed = ctx.resources.robot_mut().joints_at(now);
     let mut extax = extax;
-    let found = match super::arm7::solve7(&ctx.resources.robot, &chain.flange_goal(&pose), extax[0]) {
+    let found = match super::arm7::solve7(ctx.resources.robot_mut(), &chain.flange_goal(&pose), extax[0]) {
         // A 7-axis arm: the robtarget's arm angle picks the axes; eax_a returns axis 7.
         Ok(Some(q)) => {
             extax[0] = q[6];
             Ok([q[0], q[1], q[2], q[3], q[4], q[5]])
         }
         Err(e) => Err(e),
-        Ok(None) => chain.joints_for(&ctx.resources.robot.kin, &pose, &conf, &seed, ConfMatch::Compliant),
+        Ok(None) => chain.joints_for(&ctx.resources.robot_mut().kin, &pose, &conf, &seed, ConfMatch::Compliant),
     };
     let error_number = args.get(at.error_number).filter(|a| present(Some(a)));
     if let Some(var) = error_number {
@@ -373,7 +373,7 @@ pub(crate) fn pdisp_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         let wobj = if present(args.get(at.wobj)) { Some(ctx.value(&args[at.wobj])?) } else { None };
         let chain = data::chain(ctx, &tool, wobj.as_ref(), nalgebra::Isometry3::identity())?;
         let now = ctx.time;
-        let robot = &mut ctx.resources.robot;
+        let robot = ctx.resources.robot_mut();
         let joints = robot.joints_at(now);
         chain.target_of(&robot.kin.forward(&joints))
     };
@@ -390,7 +390,7 @@ pub(crate) fn eoffs_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let now = ctx.time;
     let actual = match present(args.get(at.exe_p)) {
         true => data::target_extax(ctx, &ctx.value(&args[at.exe_p])?)?,
-        false => ctx.resources.robot.extax_read(now),
+        false => ctx.resources.robot_mut().extax_read(now),
     };
     let mut offsets = [0.0; 6];
     for ((offset, p), a) in offsets.iter_mut().zip(prog).zip(actual) {

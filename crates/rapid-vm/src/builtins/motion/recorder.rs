@@ -84,7 +84,7 @@ impl Recorder {
 // recording, since the path between the two was not recorded.
 pub(crate) fn path_rec_start(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (opaque, _) = ctx.handle_arg(&args[0], "a pathrecid")?;
-    let rec = &mut ctx.resources.robot.path_rec;
+    let rec = &mut ctx.resources.robot_mut().path_rec;
     if !rec.on {
         *rec = Recorder { on: true, ..Recorder::default() };
     }
@@ -97,7 +97,7 @@ pub(crate) fn path_rec_start(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `PathRecStop [\Clear]`: recording stops; `\Clear` forgets the recorded path.
 pub(crate) fn path_rec_stop(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let rec = &mut ctx.resources.robot.path_rec;
+    let rec = &mut ctx.resources.robot_mut().path_rec;
     rec.on = false;
     if present(args.first()) {
         *rec = Recorder::default();
@@ -110,7 +110,7 @@ pub(crate) fn path_rec_stop(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 fn mark(ctx: &Ctx<'_>, arg: Option<&Value>) -> Result<Option<usize>, RapidError> {
     let Some(arg) = arg.filter(|a| present(Some(a))) else { return Ok(None) };
     let (_, handle) = ctx.handle_arg(arg, "a pathrecid")?;
-    let rec = &ctx.resources.robot.path_rec;
+    let rec = &ctx.resources.robot().path_rec;
     match handle.and_then(|h| rec.marks.get(h as usize)) {
         Some(&n) => Ok(Some(n)),
         None => Err(RapidError::fatal("the pathrecid was not set by PathRecStart (or the recording was cleared)")),
@@ -143,7 +143,7 @@ fn behind(robot: &RobotState, now: f64) -> usize {
 /// path behind it (back to ID).
 pub(crate) fn path_rec_valid_bwd(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let to = mark(ctx, args.first())?;
-    let robot = &ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     let valid = robot.path_rec.on && behind(robot, ctx.time) > to.unwrap_or(0);
     Ok(Some(Value::Bool(valid)))
 }
@@ -152,7 +152,7 @@ pub(crate) fn path_rec_valid_bwd(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// go forward again (to ID).
 pub(crate) fn path_rec_valid_fwd(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let to = mark(ctx, args.first())?;
-    let valid = match ctx.resources.robot.path_rec.back {
+    let valid = match ctx.resources.robot_mut().path_rec.back {
         Some(back) => to.is_none_or(|n| n > back.to && n <= back.from),
         None => false,
     };
@@ -163,7 +163,7 @@ pub(crate) fn path_rec_valid_fwd(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // uncertain: the manual's examples always StorePath first; on the base path the
 // moves would mix with the stopped path, so they are refused.
 fn require_level_2(ctx: &Ctx<'_>, what: &str) -> Result<(), RapidError> {
-    if ctx.resources.robot.stored.is_none() {
+    if ctx.resources.robot().stored.is_none() {
         return Err(RapidError::fatal(format!("{what} moves the robot on path level 2: StorePath first")));
     }
     Ok(())
@@ -253,7 +253,7 @@ fn at_end(robot: &RobotState, step: &Step, at: &Joints) -> bool {
 fn run(ctx: &mut Ctx<'_>, legs: &[Leg]) -> Result<(), RapidError> {
     let settings = super::moves::planner_settings(ctx);
     let now = ctx.time;
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     for (request, eax) in legs {
         let mut settings = settings;
         if let (Some(to), Some(from)) = (eax, robot.planner.end_eax()) {
@@ -296,7 +296,7 @@ pub(crate) fn path_rec_move_bwd(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let offs = tool_offset(ctx, args.get(1))?;
     let speed = speed_arg(ctx, args.get(2))?;
     let now = ctx.time;
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     robot.flush();
     let done = behind(robot, now);
     if !robot.path_rec.on || done <= to {
@@ -336,7 +336,7 @@ pub(crate) fn path_rec_move_fwd(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let until = mark(ctx, args.first())?;
     let offs = tool_offset(ctx, args.get(1))?;
     let speed = speed_arg(ctx, args.get(2))?;
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     robot.flush();
     let Some(back) = robot.path_rec.back else {
         return Err(RapidError::fatal(

@@ -183,7 +183,7 @@ fn search(ctx: &mut Ctx<'_>, args: &[Value], places: &Places) -> Res {
         return Err(RapidError::fatal("\\ID on a search is not supported by `rapid run` yet"));
     }
     let here = (ctx.chain.len(), ctx.chain.last().map_or(0, |f| f.position().1));
-    let search = match ctx.resources.robot.search.take().filter(|s| s.at == here) {
+    let search = match ctx.resources.robot_mut().search.take().filter(|s| s.at == here) {
         Some(search) => search,
         None => start(ctx, args, here, places)?,
     };
@@ -214,14 +214,14 @@ fn start(ctx: &mut Ctx<'_>, args: &[Value], at: (usize, u32), places: &Places) -
     let rule = places.ext_only.map_or(EOffsRule::Always, EOffsRule::Only);
     // A 7-axis arm: axis 7 at a robtarget from its arm angle (`arm7.rs`); a
     // jointtarget's (SearchExtJ) eax_a is axis 7 itself.
-    ctx.resources.robot.next_axis7 = None;
+    ctx.resources.robot_mut().next_axis7 = None;
     if places.ext_only.is_none() {
         let to = ctx.value(&args[places.to])?;
         super::moves::arm_target(ctx, &chain, &to)?;
     }
     let external = super::moves::external_target(ctx, args, places.to, rule)?;
     let now = ctx.time;
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     robot.set_settings(settings);
     robot.next_external = external;
     // `\Corr`: the path follows the corrections of the connected generators.
@@ -243,7 +243,7 @@ fn path_of(
     places: &Places,
 ) -> Result<(rapid_motion::frames::FrameChain, Target), RapidError> {
     if places.ext_only.is_some() {
-        let robot = &ctx.resources.robot;
+        let robot = ctx.resources.robot_mut();
         return Ok((robot.active, Target::Joints(robot.end_joints())));
     }
     let mut chain = super::moves::frames_at(ctx, args, places.tool, places.wobj, true)?;
@@ -295,7 +295,7 @@ fn look(ctx: &mut Ctx<'_>, args: &[Value], mut search: Search) -> Res {
         if stops {
             // The robot brakes on its path from the hit; the instruction ends when it
             // stands still.
-            let stands = ctx.resources.robot.brake_at(t, stop_time(args));
+            let stands = ctx.resources.robot_mut().brake_at(t, stop_time(args));
             super::moves::wait_for_robot(ctx, stands);
             return Ok(None);
         }
@@ -304,7 +304,7 @@ fn look(ctx: &mut Ctx<'_>, args: &[Value], mut search: Search) -> Res {
         let next = ctx.resources.io.next_event_time().map_or(search.end, |n| n.min(search.end));
         ctx.wait = Some((next - now).max(1e-6));
         ctx.stop = StopKind::Repeat;
-        ctx.resources.robot.search = Some(search);
+        ctx.resources.robot_mut().search = Some(search);
         return Ok(None);
     }
     finish(ctx, args, &search)
@@ -365,9 +365,9 @@ fn events(ctx: &mut Ctx<'_>, args: &[Value], search: &mut Search) -> Result<Vec<
 /// SearchPoint: where the TCP was at time `t`, in the search's tool and work object,
 /// with the external axes then (SearchExtJ: the axis values as a jointtarget).
 fn store_hit(ctx: &mut Ctx<'_>, args: &[Value], t: f64) -> Result<(), RapidError> {
-    let mut chain = ctx.resources.robot.active;
-    chain.base = ctx.resources.robot.track_base_at(t);
-    let robot = &mut ctx.resources.robot;
+    let mut chain = ctx.resources.robot_mut().active;
+    chain.base = ctx.resources.robot_mut().track_base_at(t);
+    let robot = ctx.resources.robot_mut();
     let joints = robot.joints_at(t);
     let extax = robot.extax_read(t);
     let pose = chain.target_of(&rapid_motion::Kinematics::forward(&robot.kin, &joints));

@@ -61,15 +61,15 @@ impl Default for ServoState {
 }
 
 fn servo<'c>(ctx: &'c mut Ctx<'_>) -> &'c mut ServoState {
-    &mut ctx.resources.motion.servo
+    &mut ctx.resources.motion_mut().servo
 }
 
 /// Writes the settings C_MOTSET shows (motionsup, tunevalue, evtbufferact) into it.
 fn mirror(ctx: &mut Ctx<'_>) {
-    let s = &ctx.resources.motion.servo;
+    let s = &ctx.resources.motion_mut().servo;
     let leaves =
         [(&[5][..], Value::Bool(s.motion_sup)), (&[6], super::num(s.sup_level)), (&[14], Value::Bool(s.event_buffer))];
-    if let Some(global) = ctx.resources.motion.links.motset {
+    if let Some(global) = ctx.resources.motion_mut().links.motset {
         super::write_leaves(ctx.storage.globals.get_mut(global), &leaves);
     }
 }

@@ -16,7 +16,7 @@ type Res = Result<Option<Value>, RapidError>;
 
 /// Applies `change` to the settings and mirrors them into the system data.
 fn update(ctx: &mut Ctx<'_>, change: impl FnOnce(&mut Settings)) -> Res {
-    change(&mut ctx.resources.motion.settings);
+    change(&mut ctx.resources.motion_mut().settings);
     mirror(ctx);
     Ok(None)
 }
@@ -214,8 +214,11 @@ pub(crate) fn speed_refresh(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // uncertain: the task's value is the operator's override scaled by SpeedRefresh.
 pub(crate) fn c_speed_override(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let operator = ctx.resources.controller.speed_override;
-    let percent =
-        if present(args.first()) { operator * ctx.resources.motion.settings.speed_refresh / 100.0 } else { operator };
+    let percent = if present(args.first()) {
+        operator * ctx.resources.motion_mut().settings.speed_refresh / 100.0
+    } else {
+        operator
+    };
     Ok(Some(Value::Num(percent as f32)))
 }
 

@@ -64,7 +64,7 @@ pub(crate) fn step_bwd_path(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         return Err(ctx.error(Err::ArgValue, "StepBwdPath needs StepLength and StepTime above 0"));
     }
     let now = ctx.time;
-    let robot = &ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     let Some(pause) = robot.pause.as_ref() else {
         return Err(ctx.error(Err::BwdLimit, "the robot has no stopped path to step back on"));
     };
@@ -103,7 +103,7 @@ pub(crate) fn step_bwd_path(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let speed = (length / time).min(segment_speed).min(MAX_STEP_SPEED);
     let step = linear_move(ctx, here, target, tool, speed, now)?;
     let wait = step.end - now;
-    if let Some(pause) = ctx.resources.robot.pause.as_mut() {
+    if let Some(pause) = ctx.resources.robot_mut().pause.as_mut() {
         let steps = pause.step.get_or_insert_with(|| StepBack { moves: Vec::new(), back_mm: 0.0, segment_speed });
         steps.back_mm = back_mm;
         steps.moves.push(step);
@@ -120,7 +120,7 @@ pub(crate) fn step_bwd_path(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // speed ending in a stop point; from there the path goes on as after any stop.
 pub(super) fn forward(ctx: &mut Ctx<'_>, pause: &Pause, step: &StepBack) -> Result<PlannedMove, RapidError> {
     let now = ctx.time;
-    let robot = &ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     let here = step.moves.last().map_or_else(|| robot.planner.end_joints(), |m| m.end_joints);
     let Some(segment) = robot.ahead.iter().rev().find(|m| m.start < pause.since) else {
         return Err(RapidError::fatal("StepBwdPath: the stopped path is gone"));
@@ -202,7 +202,7 @@ fn linear_move(
     now: f64,
 ) -> Result<PlannedMove, RapidError> {
     let settings = super::moves::planner_settings(ctx);
-    let robot = &ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     let mut planner = Planner::new(here, AccelLimits::nominal(&robot.model.max_speeds));
     planner.set_settings(settings);
     planner.idle_until(now);

@@ -54,17 +54,17 @@ pub struct Stored {
 // by SyncMoveSuspend (the manual's example suspends after StorePath \KeepSync), so a
 // SyncMoveResume on that level synchronizes the task again.
 pub(crate) fn store_path(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    if ctx.resources.robot.stored.is_some() {
+    if ctx.resources.robot_mut().stored.is_some() {
         return Err(RapidError::fatal("StorePath: a path is stored already (one at a time: RestoPath first)"));
     }
     let keep_sync = super::super::present(args.first());
     let now = ctx.time;
-    if ctx.resources.robot.pause.is_none() {
-        let since = end_of_current_move(&mut ctx.resources.robot, now);
+    if ctx.resources.robot_mut().pause.is_none() {
+        let since = end_of_current_move(ctx.resources.robot_mut(), now);
         let pause = pause_at(ctx, since)?;
-        ctx.resources.robot.pause = Some(pause.unflagged());
+        ctx.resources.robot_mut().pause = Some(pause.unflagged());
     }
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     let Some(pause) = robot.pause.take() else { return Ok(None) };
     let since = pause.since;
     let here = robot.joints_at(since);
@@ -164,18 +164,18 @@ fn same_external_axes(robot: &super::robot::RobotState, stored: &Stored, level2_
 // uncertain: RestoPath without StorePath stops the program (the manual names no
 // recoverable error for it).
 pub(crate) fn resto_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    let Some(stored) = ctx.resources.robot.stored.take() else {
+    let Some(stored) = ctx.resources.robot_mut().stored.take() else {
         return Err(RapidError::fatal("RestoPath: no path is stored (StorePath first)"));
     };
     let now = ctx.time;
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     let level2_end = robot.flush().max(now);
     if let Err(err) = same_external_axes(robot, &stored, level2_end) {
         robot.stored = Some(stored);
         return Err(err);
     }
     super::moves::apply_due_events(ctx)?;
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     let Stored {
         since,
         stop_joints,

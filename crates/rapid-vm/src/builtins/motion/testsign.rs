@@ -77,13 +77,13 @@ pub(crate) fn test_sign_define(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         return Err(ctx.error(Err::ArgValue, format!("sample time {sample_time} is not a time")));
     }
     let sample_time = sample_time.max(MIN_SAMPLE_TIME);
-    ctx.resources.motion.servo.test_signals[channel - 1] = Some(TestSignal { signal, axis, sample_time });
+    ctx.resources.motion_mut().servo.test_signals[channel - 1] = Some(TestSignal { signal, axis, sample_time });
     Ok(None)
 }
 
 /// `TestSignReset`: every channel is free again.
 pub(crate) fn test_sign_reset(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    ctx.resources.motion.servo.test_signals = Default::default();
+    ctx.resources.motion_mut().servo.test_signals = Default::default();
     Ok(None)
 }
 
@@ -91,17 +91,17 @@ pub(crate) fn test_sign_reset(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 // uncertain: reading a channel that has no signal gives 0 (not an error).
 pub(crate) fn test_sign_read(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let channel = channel(ctx, ctx.num(&args[0])?)?;
-    let Some(def) = ctx.resources.motion.servo.test_signals[channel - 1] else {
+    let Some(def) = ctx.resources.motion_mut().servo.test_signals[channel - 1] else {
         return Ok(Some(Value::Num(0.0)));
     };
     let i = def.axis - 1;
     let now = ctx.time;
     let value = if def.signal == RESOLVER_ANGLE {
-        ctx.resources.robot.joints_at(now)[i].to_radians()
+        ctx.resources.robot_mut().joints_at(now)[i].to_radians()
     } else if def.signal == SPEED || def.signal == SPEED_REF {
         // Read the earlier time first: reading moves the robot's queue forward.
-        let before = ctx.resources.robot.joints_at((now - SPEED_WINDOW).max(0.0))[i];
-        let here = ctx.resources.robot.joints_at(now)[i];
+        let before = ctx.resources.robot_mut().joints_at((now - SPEED_WINDOW).max(0.0))[i];
+        let here = ctx.resources.robot_mut().joints_at(now)[i];
         let dt = now - (now - SPEED_WINDOW).max(0.0);
         if dt > 0.0 {
             (here - before).to_radians() / dt

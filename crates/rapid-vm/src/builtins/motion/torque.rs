@@ -23,9 +23,9 @@ type Res = Result<Option<Value>, RapidError>;
 /// The active tool's value: the one the last move or SetSysData made active, else
 /// tool0.
 fn active_tool(ctx: &Ctx<'_>) -> Option<Value> {
-    let place = match &ctx.resources.motion.active[0] {
+    let place = match &ctx.resources.motion().active[0] {
         Some((_, place)) => place.clone(),
-        None => Place { root: Root::Global(ctx.resources.motion.links.sysdata[0]?), path: Vec::new() },
+        None => Place { root: Root::Global(ctx.resources.motion().links.sysdata[0]?), path: Vec::new() },
     };
     ctx.storage.get(&place).ok().cloned()
 }
@@ -58,7 +58,7 @@ fn loads(ctx: &Ctx<'_>) -> Vec<PointLoad> {
             loads.push(PointLoad { mass, cog });
         }
     }
-    let payload = &ctx.resources.motion.settings.grip_load;
+    let payload = &ctx.resources.motion().settings.grip_load;
     let cog = tframe * Point3::new(payload.cog[0], payload.cog[1], payload.cog[2]);
     loads.push(PointLoad { mass: payload.mass, cog: cog.coords });
     loads
@@ -71,7 +71,7 @@ const ACCEL_H: f64 = 0.002;
 pub(super) fn axis_torques(ctx: &mut Ctx<'_>) -> [f64; ROBOT_AXES] {
     let loads = loads(ctx);
     let now = ctx.time;
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     let joints = [robot.joints_at((now - ACCEL_H).max(0.0)), robot.joints_at(now), robot.joints_at(now + ACCEL_H)];
     moving_torques(&robot.kin, &joints, ACCEL_H, &loads)
 }

@@ -11,12 +11,12 @@ type Res = Result<Option<Value>, RapidError>;
 
 /// Brings the conveyors up to the controller's time: inputs changed until now.
 pub(super) fn refresh(ctx: &mut Ctx<'_>) {
-    if ctx.resources.robot.following.conveyors.is_empty() {
+    if ctx.resources.robot_mut().following.conveyors.is_empty() {
         return;
     }
     ctx.resources.io.advance(ctx.time);
     let resources = &mut *ctx.resources;
-    resources.robot.refresh_conveyors(resources.io.system.as_ref());
+    super::robot_in(&mut resources.extensions).refresh_conveyors(resources.io.system.as_ref());
 }
 
 /// What carries a work object that moves: a conveyor, an external unit, or an external
@@ -50,7 +50,7 @@ pub(super) fn ufmec(wobj: &Value) -> Option<&str> {
 /// The conveyor a work object rides (`ufprog` FALSE, `ufmec` a conveyor's name), if
 /// it does.
 pub(super) fn conveyor_of(ctx: &Ctx<'_>, wobj: &Value) -> Option<usize> {
-    ctx.resources.robot.following.find(ufmec(wobj)?)
+    ctx.resources.robot().following.find(ufmec(wobj)?)
 }
 
 /// The conveyor of WaitWObj's and DropWObj's work object.
@@ -63,7 +63,7 @@ fn conveyor_arg(ctx: &Ctx<'_>, wobj: &Value) -> Result<usize, RapidError> {
 /// a fixed work object (or one no unit of the system carries).
 pub(super) fn carrier_of(ctx: &Ctx<'_>, wobj: &Value) -> Result<Option<Carrier>, RapidError> {
     let Some(name) = ufmec(wobj) else { return Ok(None) };
-    let robot = &ctx.resources.robot;
+    let robot = ctx.resources.robot();
     if let Some(c) = robot.following.find(name) {
         return Ok(Some(Carrier::Conveyor(c)));
     }
@@ -77,7 +77,7 @@ pub(super) fn carrier_of(ctx: &Ctx<'_>, wobj: &Value) -> Result<Option<Carrier>,
 
 /// What moves `carrier`'s work object, as the robot follows it.
 pub(super) fn mover_of(ctx: &Ctx<'_>, carrier: Carrier) -> Result<Mover, RapidError> {
-    let robot = &ctx.resources.robot;
+    let robot = ctx.resources.robot();
     Ok(match carrier {
         Carrier::Conveyor(c) => {
             Mover::Conveyor { conveyor: c, object: robot.following.conveyors[c].connected.unwrap_or_default() }
@@ -109,7 +109,7 @@ pub(crate) fn wait_wobj(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     check_active(ctx, c)?;
     let rel_dist = ctx.opt_num(args.get(1))?;
     let now = ctx.time;
-    let conveyor = &mut ctx.resources.robot.following.conveyors[c];
+    let conveyor = &mut ctx.resources.robot_mut().following.conveyors[c];
     let object = match conveyor.connected {
         Some(_) if rel_dist.is_none() => {
             return Err(ctx.error(Err::CnvConnect, "the work object is connected already (DropWObj first)"));
@@ -162,7 +162,7 @@ fn end_wait(ctx: &mut Ctx<'_>, args: &[Value], timed_out: bool) -> Res {
 pub(crate) fn drop_wobj(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     refresh(ctx);
     let c = conveyor_arg(ctx, &args[0])?;
-    let following = &mut ctx.resources.robot.following;
+    let following = &mut ctx.resources.robot_mut().following;
     if following.open().is_some_and(|span| Carrier::of(&span.mover) == Carrier::Conveyor(c)) {
         return Err(RapidError::fatal(
             "DropWObj while the robot still moves in the conveyor's work object: the motion stops \
@@ -177,7 +177,7 @@ pub(crate) fn drop_wobj(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// external unit) starts the robot following it (its frames frozen where it is then); a
 /// fixed one ends a following under way. Returns what carries the move's work object.
 pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Option<Carrier>, RapidError> {
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     robot.next_foreign = None;
     let idle = robot.following.conveyors.is_empty() && robot.following.open().is_none();
     if idle && robot.external.units.iter().all(|u| u.unit.frame.is_none()) && robot.external.foreign.is_empty() {
@@ -193,12 +193,12 @@ pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Opti
         if !super::foreign::follows(ctx, f)? {
             carrier = None;
         }
-        ctx.resources.robot.next_foreign = Some(f);
+        ctx.resources.robot_mut().next_foreign = Some(f);
     }
     let now = ctx.time;
-    let open = ctx.resources.robot.following.open().map(|s| Carrier::of(&s.mover));
+    let open = ctx.resources.robot_mut().following.open().map(|s| Carrier::of(&s.mover));
     if open.is_some() && open != carrier {
-        let robot = &mut ctx.resources.robot;
+        let robot = ctx.resources.robot_mut();
         if carrier.is_some() || !robot.blend_exit(now) {
             robot.end_tracking(now);
         }
@@ -209,7 +209,7 @@ pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Opti
     }
     if open != Some(carrier) {
         let mover = mover_of(ctx, carrier)?;
-        ctx.resources.robot.start_tracking(mover, now);
+        ctx.resources.robot_mut().start_tracking(mover, now);
     }
     Ok(Some(carrier))
 }
@@ -218,7 +218,7 @@ pub(super) fn begin_move(ctx: &mut Ctx<'_>, wobj: Option<&Value>) -> Result<Opti
 /// it (where its last move in the unit's work object leaves it, once it stands).
 pub(crate) fn stop_following_other_tasks(ctx: &mut Ctx<'_>) {
     let now = ctx.time;
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     if robot.following.open().is_some_and(|span| matches!(span.mover, Mover::Foreign { .. })) {
         robot.end_tracking(now);
     }
@@ -226,8 +226,8 @@ pub(crate) fn stop_following_other_tasks(ctx: &mut Ctx<'_>) {
 
 /// Conveyor `c`'s mechanical unit must be active (ActUnit) to track.
 fn check_active(ctx: &Ctx<'_>, c: usize) -> Result<(), RapidError> {
-    let name = &ctx.resources.robot.following.conveyors[c].config.name;
-    match ctx.resources.robot.external.is_active(name) {
+    let name = &ctx.resources.robot().following.conveyors[c].config.name;
+    match ctx.resources.robot().external.is_active(name) {
         Some(false) => Err(ctx.error(Err::CnvNotActive, format!("the conveyor {name} is not active (ActUnit)"))),
         _ => Ok(()),
     }
@@ -237,7 +237,7 @@ fn check_active(ctx: &Ctx<'_>, c: usize) -> Result<(), RapidError> {
 /// within the maximum distance.
 fn check_object(ctx: &Ctx<'_>, c: usize) -> Result<(), RapidError> {
     check_active(ctx, c)?;
-    let conveyor = &ctx.resources.robot.following.conveyors[c];
+    let conveyor = &ctx.resources.robot().following.conveyors[c];
     let Some(distance) = conveyor.distance(ctx.time) else {
         return Err(ctx.error(Err::CnvNotActive, "the conveyor's work object is connected to no object (WaitWObj)"));
     };
@@ -254,7 +254,7 @@ fn check_object(ctx: &Ctx<'_>, c: usize) -> Result<(), RapidError> {
 
 /// The user frame moves in `carrier`'s work object are planned in.
 pub(super) fn planning_frame(ctx: &Ctx<'_>, carrier: Carrier) -> Option<rapid_motion::Pose> {
-    let following = &ctx.resources.robot.following;
+    let following = &ctx.resources.robot().following;
     let span = following.open().filter(|s| Carrier::of(&s.mover) == carrier)?;
     Some(span.mover.user_frame(&following.conveyors, &span.at_ref))
 }

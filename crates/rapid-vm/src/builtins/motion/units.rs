@@ -26,14 +26,14 @@ const EXTERNAL_BASE: usize = 1000;
 /// The index among this task's external units of unit number `unit`.
 pub(super) fn external_index(ctx: &Ctx<'_>, unit: usize) -> Option<usize> {
     let i = unit.checked_sub(EXTERNAL_BASE)?;
-    (i < ctx.resources.robot.external.units.len()).then_some(i)
+    (i < ctx.resources.robot().external.units.len()).then_some(i)
 }
 
 /// The name of unit number `unit` (ROB_n, this task's robot's own name, or an
 /// external unit's).
 fn unit_name(ctx: &Ctx<'_>, unit: usize) -> String {
     match external_index(ctx, unit) {
-        Some(i) => ctx.resources.robot.external.units[i].unit.name.clone(),
+        Some(i) => ctx.resources.robot().external.units[i].unit.name.clone(),
         None => robot_name(ctx, unit),
     }
 }
@@ -42,7 +42,7 @@ fn unit_name(ctx: &Ctx<'_>, unit: usize) -> String {
 /// has one, else `ROB_n`.
 // uncertain: another task's robot named otherwise is still called ROB_n here.
 fn robot_name(ctx: &Ctx<'_>, n: usize) -> String {
-    match &ctx.resources.robot.name {
+    match &ctx.resources.robot().name {
         Some(name) if own_unit(ctx) == Some(n) => name.clone(),
         _ => format!("ROB_{n}"),
     }
@@ -73,7 +73,7 @@ fn has_robot(ctx: &Ctx<'_>, n: usize) -> bool {
 /// The unit number of `ROB_n` (or of this task's robot by its own name), if the
 /// system has it.
 pub(super) fn unit_named(ctx: &Ctx<'_>, name: &str) -> Option<usize> {
-    if ctx.resources.robot.name.as_deref().is_some_and(|own| own.eq_ignore_ascii_case(name)) {
+    if ctx.resources.robot().name.as_deref().is_some_and(|own| own.eq_ignore_ascii_case(name)) {
         return own_unit(ctx);
     }
     let upper = name.to_ascii_uppercase();
@@ -93,10 +93,10 @@ pub(super) fn unit_arg(ctx: &Ctx<'_>, args: &[Value], param: usize) -> Result<us
         if let Some(n) = unit_named(ctx, &name) {
             return Ok(n);
         }
-        if let Some(i) = ctx.resources.robot.external.find(&name) {
+        if let Some(i) = ctx.resources.robot().external.find(&name) {
             return Ok(EXTERNAL_BASE + i);
         }
-        let others = &ctx.resources.robot.external.others;
+        let others = &ctx.resources.robot().external.others;
         if let Some((unit, owner)) = others.iter().find(|(unit, _)| unit.eq_ignore_ascii_case(&name)) {
             return Err(RapidError::fatal(format!(
                 "{unit} is a mechanical unit of task {owner}: using it from another task is not supported yet"
@@ -160,7 +160,7 @@ pub(crate) fn rob_name(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 
 /// `MaxRobSpeed()`: the highest TCP speed of the robot type, mm/s.
 pub(crate) fn max_rob_speed(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    Ok(Some(Value::Num(ctx.resources.robot.model.tcp_speed() as f32)))
+    Ok(Some(Value::Num(ctx.resources.robot_mut().model.tcp_speed() as f32)))
 }
 
 /// `MaxRobReorientSpeed()`: the highest reorientation speed of the TCP (°/s): the v_ori
@@ -182,7 +182,7 @@ pub(crate) fn max_rob_reorient_speed(_ctx: &mut Ctx<'_>, _args: &[Value]) -> Res
 pub(crate) fn get_next_mech_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let list = ctx.num(&args[0])?;
     let robots = robot_tasks(ctx);
-    let total = robots.len() + ctx.resources.robot.external.units.len();
+    let total = robots.len() + ctx.resources.robot_mut().external.units.len();
     if list < 0.0 || list.fract() != 0.0 || list >= total as f64 {
         return Ok(Some(Value::Bool(false)));
     }
@@ -192,7 +192,7 @@ pub(crate) fn get_next_mech_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
             let n = robots[at].0;
             // A 4-axis palletizer has axes 1, 2, 3 and 6.
             // uncertain: another task's robot is taken to have six axes.
-            let palletizer = own_unit(ctx) == Some(n) && ctx.resources.robot.model.is_palletizer();
+            let palletizer = own_unit(ctx) == Some(n) && ctx.resources.robot_mut().model.is_palletizer();
             (n, robot_facts(robots[at].1, n, if palletizer { 4 } else { ROBOT_AXES }))
         }
         Some(i) => (EXTERNAL_BASE + i, external_facts(ctx, i)),
@@ -228,7 +228,7 @@ fn robot_facts(task_no: usize, n: usize, axes: usize) -> [Value; 7] {
 
 /// GetNextMechUnit's outputs for this task's external unit `i`.
 fn external_facts(ctx: &Ctx<'_>, i: usize) -> [Value; 7] {
-    let state = &ctx.resources.robot.external.units[i];
+    let state = &ctx.resources.robot().external.units[i];
     // The unit is this task's: its number in the system, and its motion planner (a
     // positioner's task has a planner of its own after the robots').
     let task_no = ctx.resources.tasking.index() + 1;
@@ -249,7 +249,7 @@ fn external_facts(ctx: &Ctx<'_>, i: usize) -> [Value; 7] {
 /// unit's state.
 pub(crate) fn is_mech_unit_active(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let unit = unit_arg(ctx, args, 0)?;
-    let active = external_index(ctx, unit).is_none_or(|i| ctx.resources.robot.external.units[i].active);
+    let active = external_index(ctx, unit).is_none_or(|i| ctx.resources.robot_mut().external.units[i].active);
     Ok(Some(Value::Bool(active)))
 }
 
@@ -272,7 +272,7 @@ pub(crate) fn deact_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let Some(i) = external_index(ctx, unit) else {
         return Err(RapidError::fatal(format!("DeactUnit: ROB_{unit} is a TCP robot, which cannot be deactivated")));
     };
-    if ctx.resources.robot.external.units[i].unit.deactivation_forbidden {
+    if ctx.resources.robot_mut().external.units[i].unit.deactivation_forbidden {
         return Err(RapidError::fatal(format!(
             "DeactUnit: {} is configured with deactivation forbidden",
             unit_name(ctx, unit)
@@ -284,8 +284,8 @@ pub(crate) fn deact_unit(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// Activates or deactivates external unit `i` once the robot stands still.
 fn set_active(ctx: &mut Ctx<'_>, i: usize, active: bool) {
-    let end = ctx.resources.robot.flush();
-    ctx.resources.robot.external.units[i].active = active;
+    let end = ctx.resources.robot_mut().flush();
+    ctx.resources.robot_mut().external.units[i].active = active;
     super::moves::wait_for_robot(ctx, end);
 }
 
@@ -306,7 +306,7 @@ pub(crate) fn mech_unit_load(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         )));
     };
     let axis = ctx.num(&args[1])?;
-    let axes = ctx.resources.robot.external.units[i].unit.axes.len();
+    let axes = ctx.resources.robot_mut().external.units[i].unit.axes.len();
     if axis.fract() != 0.0 || !(1.0..=axes as f64).contains(&axis) {
         let name = unit_name(ctx, unit);
         return Err(ctx.error(Err::ArgValue, format!("axis {axis} is not an axis of {name} (1..{axes})")));
@@ -321,7 +321,7 @@ pub(crate) fn mech_unit_load(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if mass < 0.0 {
         return Err(ctx.error(Err::ArgValue, format!("the load's mass {mass} kg is negative")));
     }
-    ctx.resources.robot.external.units[i].loads.insert(axis as usize, mass);
+    ctx.resources.robot_mut().external.units[i].loads.insert(axis as usize, mass);
     Ok(None)
 }
 
@@ -333,6 +333,6 @@ pub(crate) fn read_motor(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     own_only(ctx, unit)?;
     let axis = axis_arg(ctx, ctx.num(&args[1])?, Err::ArgValue)?;
     let now = ctx.time;
-    let joints = ctx.resources.robot.joints_at(now);
+    let joints = ctx.resources.robot_mut().joints_at(now);
     Ok(Some(Value::Num(joints[axis - 1].to_radians() as f32)))
 }

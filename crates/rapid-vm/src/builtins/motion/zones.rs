@@ -124,7 +124,7 @@ fn define(ctx: &mut Ctx<'_>, args: &[Value], shape: Shape) -> Res {
     let at = *DEF;
     let data = ShapeData { shape, outside: present(args.get(at.outside)) };
     let (opaque, handle) = ctx.handle_arg(&args[at.shape], "a shapedata")?;
-    let shapes = &mut ctx.resources.robot.shapes;
+    let shapes = &mut ctx.resources.robot_mut().shapes;
     let index = match handle.map(|h| h as usize).filter(|&h| h < shapes.len()) {
         Some(h) => {
             shapes[h] = data;
@@ -210,7 +210,7 @@ pub(crate) fn wz_lim_joint_def(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 fn shape_of(ctx: &Ctx<'_>, arg: &Value) -> Result<ShapeData, RapidError> {
     let (_, handle) = ctx.handle_arg(arg, "a shapedata")?;
     handle
-        .and_then(|h| ctx.resources.robot.shapes.get(h as usize).copied())
+        .and_then(|h| ctx.resources.robot().shapes.get(h as usize).copied())
         .ok_or_else(|| ctx.error(Err::ArgValue, "the shapedata was never defined (WZBoxDef …)"))
 }
 
@@ -218,7 +218,7 @@ fn shape_of(ctx: &Ctx<'_>, arg: &Value) -> Result<ShapeData, RapidError> {
 fn activate(ctx: &mut Ctx<'_>, args: &[Value], shape: ShapeData, kind: ZoneKind) -> Res {
     let at = *ACTIVATE;
     let temporary = !present(args.get(at.stat));
-    let zones = &mut ctx.resources.robot.zones;
+    let zones = &mut ctx.resources.robot_mut().zones;
     if zones.iter().flatten().count() >= MAX_ZONES {
         return Err(ctx.error(Err::ArgValue, format!("at most {MAX_ZONES} world zones can be active")));
     }
@@ -239,7 +239,7 @@ fn activate(ctx: &mut Ctx<'_>, args: &[Value], shape: ShapeData, kind: ZoneKind)
     let record = Record { ty: record.ty, fields: vec![Value::Num(number as f32)] };
     ctx.store(&args[at.zone], Value::Record(std::rc::Rc::new(record)))?;
     let now = ctx.time;
-    ctx.resources.robot.start_zone(number - 1, now);
+    ctx.resources.robot_mut().start_zone(number - 1, now);
     super::moves::apply_due_events(ctx)?;
     Ok(None)
 }
@@ -299,7 +299,7 @@ fn temporary(ctx: &Ctx<'_>, arg: &Value) -> Result<usize, RapidError> {
         _ => 0.0,
     };
     let index = (number as usize).checked_sub(1);
-    match index.and_then(|i| ctx.resources.robot.zones.get(i).copied().flatten().map(|z| (i, z))) {
+    match index.and_then(|i| ctx.resources.robot().zones.get(i).copied().flatten().map(|z| (i, z))) {
         Some((i, zone)) if zone.temporary => Ok(i),
         // uncertain: the controller's error for a zone that is not active.
         _ => Err(ctx.error(Err::ArgValue, "the world zone is not an active temporary zone")),
@@ -309,11 +309,11 @@ fn temporary(ctx: &Ctx<'_>, arg: &Value) -> Result<usize, RapidError> {
 /// `WZEnable WorldZone`.
 pub(crate) fn wz_enable(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let i = temporary(ctx, &args[0])?;
-    if let Some(zone) = ctx.resources.robot.zones[i].as_mut() {
+    if let Some(zone) = ctx.resources.robot_mut().zones[i].as_mut() {
         zone.enabled = true;
     }
     let now = ctx.time;
-    ctx.resources.robot.start_zone(i, now);
+    ctx.resources.robot_mut().start_zone(i, now);
     super::moves::apply_due_events(ctx)?;
     Ok(None)
 }
@@ -321,7 +321,7 @@ pub(crate) fn wz_enable(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `WZDisable WorldZone`.
 pub(crate) fn wz_disable(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let i = temporary(ctx, &args[0])?;
-    if let Some(zone) = ctx.resources.robot.zones[i].as_mut() {
+    if let Some(zone) = ctx.resources.robot_mut().zones[i].as_mut() {
         zone.enabled = false;
     }
     Ok(None)
@@ -330,7 +330,7 @@ pub(crate) fn wz_disable(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `WZFree WorldZone`: the zone is gone (its number 0 again).
 pub(crate) fn wz_free(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let i = temporary(ctx, &args[0])?;
-    ctx.resources.robot.zones[i] = None;
+    ctx.resources.robot_mut().zones[i] = None;
     if let Value::Record(record) = ctx.value(&args[0])? {
         let record = Record { ty: record.ty, fields: vec![Value::Num(0.0)] };
         ctx.store(&args[0], Value::Record(std::rc::Rc::new(record)))?;

@@ -46,20 +46,20 @@ pub(crate) fn trigg_check_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// A deferred action's time is known: it waits for the executor, which a scheduled
 /// interrupt of number 0 (no interrupt has it, so none fires) wakes at that time.
 pub(crate) fn defer(ctx: &mut Ctx<'_>, time: f64, key: u32) {
-    let Some(special) = ctx.resources.robot.trigg.live.remove(&key) else { return };
-    ctx.resources.robot.trigg.pending.push((time, special));
+    let Some(special) = ctx.resources.robot_mut().trigg.live.remove(&key) else { return };
+    ctx.resources.robot_mut().trigg.pending.push((time, special));
     ctx.resources.interrupts.schedule(time, 0);
 }
 
 /// Runs the deferred actions due by `now` (not those after a StopMove's stop: they
 /// come later by the time the robot stood).
 pub(crate) fn poll(resources: &mut Resources, storage: &Storage, now: f64) {
-    if resources.robot.trigg.pending.is_empty() {
+    if resources.robot_mut().trigg.pending.is_empty() {
         return;
     }
-    let held_after = resources.robot.pause.as_ref().map_or(f64::INFINITY, |p| p.since);
+    let held_after = resources.robot_mut().pause.as_ref().map_or(f64::INFINITY, |p| p.since);
     let mut due = Vec::new();
-    resources.robot.trigg.pending.retain(|(t, special)| {
+    resources.robot_mut().trigg.pending.retain(|(t, special)| {
         let ready = *t <= now && *t <= held_after;
         if ready {
             due.push((*t, special.clone()));

@@ -9,7 +9,7 @@ use crate::value::{Opaque, OpaqueState, Value};
 /// The definition slot a triggdata argument holds, if it holds one.
 fn slot(ctx: &Ctx<'_>, arg: &Value) -> Result<(Opaque, Option<usize>), crate::error::RapidError> {
     let (opaque, handle) = ctx.handle_arg(arg, "a triggdata")?;
-    let len = ctx.resources.robot.triggers.len();
+    let len = ctx.resources.robot().triggers.len();
     Ok((opaque, handle.map(|h| h as usize).filter(|&h| h < len)))
 }
 
@@ -18,8 +18,8 @@ fn slot(ctx: &Ctx<'_>, arg: &Value) -> Result<(Opaque, Option<usize>), crate::er
 pub(crate) fn trigg_data_copy(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (_, source) = slot(ctx, &args[0])?;
     let Some(h) = source else { return trigg_data_reset(ctx, &args[1..]) };
-    let event = ctx.resources.robot.triggers[h];
-    let special = ctx.resources.robot.trigg.def(h).cloned();
+    let event = ctx.resources.robot_mut().triggers[h];
+    let special = ctx.resources.robot_mut().trigg.def(h).cloned();
     let (_, destination) = slot(ctx, &args[1])?;
     if destination == Some(h) {
         return Ok(None);

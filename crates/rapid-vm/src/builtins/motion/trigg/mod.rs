@@ -76,7 +76,7 @@ fn inhib_place(args: &[Value], idx: usize) -> Option<Place> {
 /// `special` is its action when that is more than one output or interrupt.
 fn define(ctx: &mut Ctx<'_>, arg: &Value, event: PathEvent, special: Option<Special>) -> Res {
     let (opaque, handle) = ctx.handle_arg(arg, "a triggdata")?;
-    let robot = &mut ctx.resources.robot;
+    let robot = ctx.resources.robot_mut();
     let index = match handle.map(|h| h as usize).filter(|&h| h < robot.triggers.len()) {
         Some(h) => {
             robot.triggers[h] = event;

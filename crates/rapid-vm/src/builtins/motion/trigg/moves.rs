@@ -41,10 +41,10 @@ fn triggers_of(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout) -> Result<Vec
     let speed = layout.speed;
     let mut events = Vec::new();
     for h in handles(ctx, args, layout)? {
-        let Some(&event) = ctx.resources.robot.triggers.get(h) else {
+        let Some(&event) = ctx.resources.robot_mut().triggers.get(h) else {
             return Err(ctx.error(Err::ArgValue, "a triggdata was never defined (TriggIO)"));
         };
-        let Some(special) = ctx.resources.robot.trigg.def(h).cloned() else {
+        let Some(special) = ctx.resources.robot_mut().trigg.def(h).cloned() else {
             events.push(event);
             continue;
         };
@@ -64,7 +64,7 @@ fn triggers_of(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout) -> Result<Vec
             }
             other => other,
         };
-        let key = ctx.resources.robot.trigg.take_copy(special);
+        let key = ctx.resources.robot_mut().trigg.take_copy(special);
         events.push(PathEvent { action: Action::Special(key), ..event });
     }
     Ok(events)

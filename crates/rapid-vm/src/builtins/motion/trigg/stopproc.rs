@@ -52,14 +52,14 @@ pub(crate) fn trigg_stop_proc(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let do1 = signal(at.do1)?;
     let go = [signal(at.go1)?, signal(at.go2)?, signal(at.go3)?, signal(at.go4)?];
     let shadow = super::super::super::io::signal(ctx, &args[at.shadow])?;
-    ctx.resources.robot.trigg.stop_proc = Some(StopProc { restart, do1, go, shadow });
+    ctx.resources.robot_mut().trigg.stop_proc = Some(StopProc { restart, do1, go, shadow });
     Ok(None)
 }
 
 /// The program stopped at `now` (Stop, Break): the supervision's work.
 pub(crate) fn program_stopped(resources: &mut Resources, storage: &mut Storage, now: f64) {
-    let Some(proc) = resources.robot.trigg.stop_proc.clone() else { return };
-    let moving = resources.robot.moving_at(now);
+    let Some(proc) = resources.robot_mut().trigg.stop_proc.clone() else { return };
+    let moving = resources.robot_mut().moving_at(now);
     if moving {
         super::super::pause::hold(resources, now);
     }
