@@ -33,7 +33,7 @@ ENDMODULE
 /// T_ROB1's TCP x (mm) where its robot stands at the controller's time.
 fn tcp_x(session: &mut Session) -> f64 {
     let time = session.time();
-    let robot = &mut session.controller_mut().tasks[0].loaded.vm.resources_mut().robot;
+    let robot = &mut session.controller_mut().tasks[0].loaded.vm.resources_mut().robot_mut();
     let joints = robot.joints_at(time);
     robot.flange_of(&joints).0.translation.vector.x
 }

@@ -352,14 +352,14 @@ impl Controller {
                 StepKind::Into => true,
                 StepKind::Over => depth <= target.depth,
                 StepKind::Out => depth < target.depth,
-                StepKind::Motion => vm.resources().robot.moves > target.moves,
+                StepKind::Motion => vm.resources().robot().moves > target.moves,
             }
     }
 
     /// A step of `kind` begins in task `idx` (the FWD step has started).
     pub(crate) fn watch_step(&mut self, idx: usize, kind: StepKind) {
         let vm = &self.tasks[idx].loaded.vm;
-        let (depth, moves) = (vm.depth(), vm.resources().robot.moves);
+        let (depth, moves) = (vm.depth(), vm.resources().robot().moves);
         self.watch.step = Some(StepTarget { task: idx, kind, depth, moves });
         self.watch.step_broken = false;
     }
