@@ -178,6 +178,8 @@ pub struct Context<'a> {
     pub routines: &'a [Option<Code>],
     /// The task's data by global index (empty when not known).
     pub globals: &'a [String],
+    /// The built-ins the task's call sites name by id.
+    pub builtins: &'a crate::builtins::Builtins,
 }
 
 /// Expands a declaration into `Display` (the instruction alone) and `notes` (what its
@@ -329,7 +331,7 @@ fn site_text(cx: &Context<'_>, site: u32) -> String {
     let Some(site) = cx.code.sites.get(site as usize) else { return "<missing>".to_owned() };
     let callee = match site.callee {
         Callee::Routine(idx) => routine_name(cx, idx),
-        Callee::Builtin(id) => format!("builtin {}", crate::builtins::name(id)),
+        Callee::Builtin(id) => format!("builtin {}", cx.builtins.name(id)),
         Callee::Late => "late".to_owned(),
     };
     format!("{callee} ({} pushed)", site.n_pushed)
@@ -408,7 +410,18 @@ FUNC f (file 0, 1 params, 1 locals)
   ERROR:
      2  pop
 ";
-        assert_eq!(list(&Context { code: &code, routines: &routines, globals: &[] }, None), expected);
+        assert_eq!(
+            list(
+                &Context {
+                    code: &code,
+                    routines: &routines,
+                    globals: &[],
+                    builtins: &crate::builtins::Builtins::core()
+                },
+                None
+            ),
+            expected
+        );
     }
 
     #[test]
@@ -417,7 +430,8 @@ FUNC f (file 0, 1 params, 1 locals)
         code.emit(Instr::LoadGlobal(1));
         code.emit(Instr::StoreGlobal(0));
         let globals = ["a".to_owned(), "b".to_owned()];
-        let cx = Context { code: &code, routines: &[], globals: &globals };
+        let cx =
+            Context { code: &code, routines: &[], globals: &globals, builtins: &crate::builtins::Builtins::core() };
         let expected = "\
 PROC main (file 0, 0 params, 0 locals)
      0* load_global global=1  ; global: b
@@ -448,6 +462,17 @@ PROC main (file 0, 0 params, 1 locals)
      2* return
 ";
         let routines = [];
-        assert_eq!(list(&Context { code: &code, routines: &routines, globals: &[] }, Some(text)), expected);
+        assert_eq!(
+            list(
+                &Context {
+                    code: &code,
+                    routines: &routines,
+                    globals: &[],
+                    builtins: &crate::builtins::Builtins::core()
+                },
+                Some(text)
+            ),
+            expected
+        );
     }
 }

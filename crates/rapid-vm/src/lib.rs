@@ -12,6 +12,7 @@
 pub mod builtins;
 pub mod compile;
 pub mod disas;
+pub mod embed;
 pub mod errnames;
 pub mod error;
 pub mod events;
@@ -105,11 +106,23 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
 /// [`load`] with checking options: the data the system configuration declares (the
 /// signals of a backup's `EIO.cfg`).
 pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Result<Loaded, LoadError> {
+    load_in(files, entry, options, builtins::Builtins::standard())
+}
+
+/// [`load_with`] for the set of built-ins `builtins` (the core's and an embedder's
+/// extensions, `embed`): calls are resolved in it, the task runs with it and its
+/// extensions' state and hooks.
+pub fn load_in(
+    files: &[SourceInput],
+    entry: &str,
+    options: &Options,
+    builtins: std::sync::Arc<builtins::Builtins>,
+) -> Result<Loaded, LoadError> {
     let (mut prog, warnings) = checked(files, options)?;
     // Outlines: each routine's body is parsed as it is compiled, never held whole.
     let parses = outline_parses(files, &mut prog);
     let modules = module_sources(files, &parses);
-    let compiled = compile_modules(&mut prog, &modules)?;
+    let compiled = compile_modules(&mut prog, &modules, &builtins)?;
     let types = ops::OpTypes { pos: prog.core.pos, orient: prog.core.orient };
     let mut procs_by_name: FxHashMap<String, u32> = prog
         .routines
@@ -125,6 +138,7 @@ pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Resul
     };
     let errno_global = global_named("ERRNO");
     let mut vm = Vm::new(
+        builtins,
         compiled.routines,
         procs_by_name,
         compiled.global_defaults.clone(),
@@ -160,12 +174,7 @@ pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Resul
     let mut type_names = builtins::rmq::TypeNames::new(prog.types.named());
     type_names.templates = rmq_templates(&prog);
     vm.resources_mut().rmq.names = type_names;
-    vm.resources_mut().motion.links = builtins::motion::MotionLinks {
-        motset: global_named("C_MOTSET"),
-        progdisp: global_named("C_PROGDISP"),
-        pose: prog.types.find("pose"),
-        sysdata: [global_named("tool0"), global_named("wobj0"), global_named("load0")],
-    };
+    vm.extensions_loaded(&prog);
     vm.resources_mut().io.kinds = signal_kinds(&prog);
     vm.resources_mut().io.configured = prog
         .datas
@@ -205,9 +214,10 @@ pub fn compile_files(files: &[SourceInput], options: &Options) -> Result<Compile
     let (mut prog, _) = checked(files, options)?;
     let parses = outline_parses(files, &mut prog);
     let modules = module_sources(files, &parses);
-    let compiled = compile_modules(&mut prog, &modules)?;
+    let builtins = builtins::Builtins::standard();
+    let compiled = compile_modules(&mut prog, &modules, &builtins)?;
     let global_names = prog.datas.iter().map(|d| d.display.clone()).collect();
-    Ok(CompiledTask { compiled, global_names })
+    Ok(CompiledTask { compiled, global_names, builtins })
 }
 
 /// A task compiled for a listing: its code and the names of its globals (module and
@@ -215,6 +225,8 @@ pub fn compile_files(files: &[SourceInput], options: &Options) -> Result<Compile
 pub struct CompiledTask {
     pub compiled: compile::Compiled,
     pub global_names: Vec<String>,
+    /// The built-ins its call sites name by id.
+    pub builtins: std::sync::Arc<builtins::Builtins>,
 }
 
 /// The checked program with its warnings, or the diagnostics that stop it from loading.
@@ -264,12 +276,16 @@ fn module_sources<'a>(
         .collect()
 }
 
-fn compile_modules(prog: &mut Program, modules: &[compile::ModuleSource<'_>]) -> Result<compile::Compiled, LoadError> {
+fn compile_modules(
+    prog: &mut Program,
+    modules: &[compile::ModuleSource<'_>],
+    builtins: &builtins::Builtins,
+) -> Result<compile::Compiled, LoadError> {
     let (_, catalogue) = rapid_sema::catalogue();
     // The compiler reads the program while the bodies' parser spells names with its
     // interner: lent out for the while.
     let mut interner = std::mem::take(&mut prog.interner);
-    let compiled = compile::compile(prog, modules, &catalogue.module, &catalogue.text, &mut interner);
+    let compiled = compile::compile(prog, modules, builtins, &catalogue.module, &catalogue.text, &mut interner);
     prog.interner = interner;
     compiled.map_err(|errors| LoadError::Unsupported(refusals::one_per_option(errors)))
 }

@@ -81,8 +81,15 @@ fn outline_and_tree_compile_to_the_same_code() {
         let modules: Vec<compile::ModuleSource<'_>> =
             parse.file.modules.iter().map(|module| compile::ModuleSource { file: 0, text: &text, module }).collect();
         let mut interner = prog.interner.clone();
-        let code = compile::compile(&prog, &modules, &catalogue.module, &catalogue.text, &mut interner)
-            .unwrap_or_else(|e| panic!("compile failed: {e:?}"));
+        let code = compile::compile(
+            &prog,
+            &modules,
+            &rapid_vm::builtins::Builtins::core(),
+            &catalogue.module,
+            &catalogue.text,
+            &mut interner,
+        )
+        .unwrap_or_else(|e| panic!("compile failed: {e:?}"));
         compiled.push(format!("{:?}", code.routines));
     }
     assert!(compiled[0].contains("FellOffEnd"));

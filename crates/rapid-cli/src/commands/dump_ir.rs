@@ -29,7 +29,7 @@ pub(crate) fn run(args: &DumpIrArgs) -> anyhow::Result<ExitStatus> {
             writeln!(out)?;
         }
         first = false;
-        let cx = rapid_vm::disas::Context { code, routines, globals: &task.global_names };
+        let cx = rapid_vm::disas::Context { code, routines, globals: &task.global_names, builtins: &task.builtins };
         write!(out, "{}", rapid_vm::disas::list(&cx, source(code.file)))?;
     }
     out.flush()?;

@@ -94,7 +94,7 @@ pub(crate) fn run(args: &RunArgs, assembled: Assembled) -> anyhow::Result<ExitSt
         let finished = crate::motion_out::finish(resources, ends, who, model_note.as_deref(), args);
         controller.exchange_shared_with(idx);
         cycle = cycle.max(finished?);
-        controller.tasks[idx].loaded.vm.log_corner_failures();
+        controller.tasks[idx].loaded.vm.log_extension_events();
     }
     write_motion_outputs(&mut controller, &tasks, &robot_names, cycle, args)?;
     if controller.tasks.iter_mut().any(|task| task.loaded.vm.resources_mut().controller.warm_start) {

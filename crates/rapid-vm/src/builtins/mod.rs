@@ -31,7 +31,7 @@ mod random;
 mod rawbytes;
 mod registry;
 pub(crate) mod signature;
-pub use registry::{compiled, native, Builtin, Compiled, Family};
+pub use registry::{compiled, native, out_of_step, Builtin, Builtins, Compiled, Family};
 pub mod rmq;
 pub mod sockets;
 pub mod spy;
@@ -107,6 +107,8 @@ pub struct Ctx<'a> {
     /// The call chain, outermost first; the last frame made the call (ExecHandler,
     /// ExecLevel).
     pub(crate) chain: &'a [crate::exec::Frame],
+    /// The built-ins the task runs with (to name the one a call site calls).
+    pub builtins: &'a Builtins,
 }
 
 /// What the task holds open outside the interpreter: each family keeps its own table,
@@ -140,6 +142,8 @@ pub struct Resources {
     pub robot: motion::robot::RobotState,
     /// The operating mode, speed override and PP flags (kept at PP to Main).
     pub controller: controller::ControllerState,
+    /// The embedder's extensions' own state (`crate::embed`).
+    pub extensions: crate::embed::Extensions,
 }
 
 /// What the tasks of one controller share: handed to the task that runs, so each
@@ -163,6 +167,7 @@ impl Resources {
         self.tasking.end_waits();
         self.rmq.end_waits();
         self.motion.reset();
+        self.extensions.close_all();
     }
 
     /// Swaps the controller's shared state with the task's (hand in, take back).
@@ -307,9 +312,10 @@ pub fn present(arg: Option<&Value>) -> bool {
     arg.is_some_and(|a| !a.is_absent())
 }
 
-/// Every family's registrations; a built-in's id is its position in their
-/// concatenation. A new family file adds its `FAMILY` here.
-pub(crate) static FAMILIES: &[&Family] = &[
+/// The language's families; a built-in's id is its position in the concatenation of
+/// these and then the extensions' families (`Builtins::new`). A new family file of
+/// the core adds its `FAMILY` here; an embedder's goes into its `Extension`.
+pub(crate) static CORE_FAMILIES: &[&Family] = &[
     &crate::compile::call::FAMILY,
     &pendant::FAMILY,
     &dialogs::FAMILY,
@@ -342,23 +348,38 @@ pub(crate) static FAMILIES: &[&Family] = &[
     &spy::FAMILY,
     &cfgdata::FAMILY,
     &tasking::FAMILY,
-    &syncmove::FAMILY,
-    &motion::FAMILY,
     &rmq::FAMILY,
     &controller::FAMILY,
 ];
 
-static REGISTRY: std::sync::LazyLock<registry::Registry> =
-    std::sync::LazyLock::new(|| registry::Registry::build(FAMILIES));
+static CORE: std::sync::LazyLock<std::sync::Arc<Builtins>> =
+    std::sync::LazyLock::new(|| std::sync::Arc::new(Builtins::new(&[])));
 
-/// The built-in named `name` (any letter case), if `rapid run` runs it. The compiler
-/// asks once per call site; running the call goes by the id.
-pub fn lookup(name: &str) -> Option<BuiltinId> {
-    REGISTRY.lookup(name)
+static STANDARD: std::sync::LazyLock<std::sync::Arc<Builtins>> =
+    std::sync::LazyLock::new(|| std::sync::Arc::new(Builtins::new(&[&motion::EXTENSION])));
+
+impl Builtins {
+    /// The language's built-ins alone, with no extension: what a program that moves
+    /// no robot needs. Built once and shared (it never changes).
+    pub fn core() -> std::sync::Arc<Builtins> {
+        CORE.clone()
+    }
+
+    /// The language's built-ins and the robot's (`motion::EXTENSION`): the set
+    /// [`crate::load`] and [`crate::load_with`] run a program with.
+    pub fn standard() -> std::sync::Arc<Builtins> {
+        STANDARD.clone()
+    }
 }
 
-/// Whether `rapid run` runs the built-in named `name` (any letter case); a program
-/// calling one that is not is refused when it is loaded.
+/// The built-in named `name` (any letter case) in the standard set
+/// ([`Builtins::standard`]), if it runs it.
+pub fn lookup(name: &str) -> Option<BuiltinId> {
+    STANDARD.lookup(name)
+}
+
+/// Whether the standard set runs the built-in named `name` (any letter case); a
+/// program calling one that is not is refused when it is loaded.
 pub fn implemented(name: &str) -> bool {
     lookup(name).is_some()
 }
@@ -381,28 +402,20 @@ pub fn option_refusal(name: &str, chapter: &str) -> Option<String> {
 pub(crate) const OPTION_REFUSAL_MIDDLE: &str = "belongs to option ";
 pub(crate) const OPTION_REFUSAL_TAIL: &str = ", which `rapid run` does not simulate";
 
-/// The registration of built-in `id`.
+/// The registration of built-in `id` of the standard set.
 pub fn builtin(id: BuiltinId) -> &'static Builtin {
-    &REGISTRY.builtins[id.0 as usize]
+    let set: &'static Builtins = &STANDARD;
+    set.get(id)
 }
 
-/// Every registration with the file of its family, in registry order.
+/// Every registration of the standard set with the file of its family, in registry
+/// order.
 pub fn registered() -> impl Iterator<Item = (&'static Builtin, &'static str)> {
-    let registry: &'static registry::Registry = &REGISTRY;
-    registry.builtins.iter().enumerate().map(|(idx, b)| (b, FAMILIES[registry.family_of(BuiltinId(idx as u16))].file))
+    let set: &'static Builtins = &STANDARD;
+    set.registered()
 }
 
-#[inline]
-pub fn function(id: BuiltinId) -> BuiltinFn {
-    REGISTRY.builtins[id.0 as usize].run
-}
-
-/// The pure form of built-in `id`, if it has one (`pure.rs`).
-#[inline]
+/// The pure form of built-in `id` of the standard set, if it has one (`pure.rs`).
 pub fn pure_form(id: BuiltinId) -> Option<pure::PureFn> {
-    REGISTRY.builtins[id.0 as usize].pure
-}
-
-pub fn name(id: BuiltinId) -> &'static str {
-    REGISTRY.builtins[id.0 as usize].name
+    STANDARD.pure_form(id)
 }

@@ -58,13 +58,13 @@ impl RoutineCompiler<'_> {
         let callee = match info.chapter {
             None => Callee::Routine(idx),
             Some(chapter) => {
-                let Some(id) = builtins::lookup(&info.display) else {
+                let Some(id) = self.builtins.lookup(&info.display) else {
                     return Err(match builtins::option_refusal(&info.display, chapter) {
                         Some(message) => self.error(span, message),
                         None => self.unsupported(span, &format!("the built-in `{}`", info.display)),
                     });
                 };
-                match builtins::builtin(id).compiled {
+                match self.builtins.get(id).compiled {
                     Some(Compiled::Present) => return self.present(arena, args, span),
                     Some(Compiled::CallByVar) => return self.call_by_var(arena, args),
                     Some(Compiled::Break) if !self.loops.is_empty() => {
@@ -122,7 +122,7 @@ impl RoutineCompiler<'_> {
 
     /// A call of WaitRob (no arguments): the program waits for the robot to stand still.
     fn wait_for_robot(&mut self, span: Span) -> Result<(), CompileError> {
-        let Some(id) = builtins::lookup("WaitRob") else { return Err(self.unsupported(span, "WaitUntil \\InPos")) };
+        let Some(id) = self.builtins.lookup("WaitRob") else { return Err(self.unsupported(span, "WaitUntil \\InPos")) };
         let wait_rob =
             self.prog.routines.iter().find(|r| r.chapter.is_some() && r.display.eq_ignore_ascii_case("WaitRob"));
         // WaitRob [\InPos] | [\ZeroSpeed]: its switches, not passed.
@@ -434,7 +434,7 @@ impl RoutineCompiler<'_> {
         bound: &[Option<&Arg>],
         done: bool,
     ) -> Result<(), CompileError> {
-        let Some(id) = builtins::lookup("WaitUntil") else { return Ok(()) };
+        let Some(id) = self.builtins.lookup("WaitUntil") else { return Ok(()) };
         const BOX: [&str; 9] =
             ["Visualize", "Header", "Message", "MsgArray", "Wrap", "Icon", "Image", "VisualizeTime", "UIActiveSignal"];
         let mut specs = Vec::with_capacity(info.params.len());

@@ -69,6 +69,7 @@ pub(crate) enum LocalKind {
 pub fn compile(
     prog: &Program,
     modules: &[ModuleSource<'_>],
+    builtins: &crate::builtins::Builtins,
     builtin_module: &Module,
     builtin_text: &str,
     interner: &mut Interner,
@@ -98,13 +99,13 @@ pub fn compile(
     }
     let global_defaults: Vec<Value> =
         prog.datas.iter().map(|d| default_value(prog, d.ty, &d.dims[..d.rank as usize])).collect();
-    let init = compile_init(prog, modules, builtin_module, builtin_text, &mut errors, None);
+    let init = compile_init(prog, modules, builtins, builtin_module, builtin_text, &mut errors, None);
     let mut routines: Vec<Option<Code>> = vec![None; prog.routines.len()];
     for (idx, info) in prog.routines.iter().enumerate() {
         let DeclOrigin::Module { module, item } = info.origin else { continue };
         let Some(source) = modules.get(module) else { continue };
         let Some(Item::Routine(routine)) = source.module.items.get(item) else { continue };
-        let mut rc = RoutineCompiler::new(prog, module, source.file, source.text);
+        let mut rc = RoutineCompiler::new(prog, builtins, module, source.file, source.text);
         let compiled = match routine.body {
             Some(_) => rc.routine(routine),
             None => rc.routine_from_text(routine, interner),
@@ -136,6 +137,7 @@ pub fn compile_module(
     prog: &Program,
     modules: &[ModuleSource<'_>],
     module: usize,
+    builtins: &crate::builtins::Builtins,
     builtin_module: &Module,
     builtin_text: &str,
 ) -> Result<CompiledModule, Vec<CompileError>> {
@@ -155,13 +157,13 @@ pub fn compile_module(
     if !errors.is_empty() {
         return Err(errors);
     }
-    let init = compile_init(prog, modules, builtin_module, builtin_text, &mut errors, Some(module));
+    let init = compile_init(prog, modules, builtins, builtin_module, builtin_text, &mut errors, Some(module));
     let mut routines = Vec::new();
     for (idx, info) in prog.routines.iter().enumerate().filter(|(_, r)| mine(r.origin)) {
         let DeclOrigin::Module { module, item } = info.origin else { continue };
         let Some(source) = modules.get(module) else { continue };
         let Some(Item::Routine(routine)) = source.module.items.get(item) else { continue };
-        let mut rc = RoutineCompiler::new(prog, module, source.file, source.text);
+        let mut rc = RoutineCompiler::new(prog, builtins, module, source.file, source.text);
         match rc.routine(routine) {
             Ok(code) => routines.push((idx as u32, code)),
             Err(mut errs) => errors.append(&mut errs),
@@ -179,12 +181,13 @@ pub fn compile_module(
 fn compile_init(
     prog: &Program,
     modules: &[ModuleSource<'_>],
+    builtins: &crate::builtins::Builtins,
     builtin_module: &Module,
     builtin_text: &str,
     errors: &mut Vec<CompileError>,
     only: Option<usize>,
 ) -> Code {
-    let mut init = RoutineCompiler::new(prog, usize::MAX, usize::MAX, builtin_text);
+    let mut init = RoutineCompiler::new(prog, builtins, usize::MAX, usize::MAX, builtin_text);
     init.code.name = "<load>".into();
     for (idx, data) in prog.datas.iter().enumerate() {
         if only.is_some_and(|m| !matches!(data.origin, DeclOrigin::Module { module, .. } if module == m)) {
@@ -291,6 +294,8 @@ pub fn flatten_array(array: Array) -> Value {
 /// Compiles one routine.
 pub(crate) struct RoutineCompiler<'p> {
     pub(crate) prog: &'p Program,
+    /// The built-ins call sites are resolved in (the set the task runs with).
+    pub(crate) builtins: &'p crate::builtins::Builtins,
     pub(crate) module: usize,
     pub(crate) file: usize,
     pub(crate) text: &'p str,
@@ -332,9 +337,16 @@ pub(crate) struct LoopJumps {
 }
 
 impl<'p> RoutineCompiler<'p> {
-    pub(crate) fn new(prog: &'p Program, module: usize, file: usize, text: &'p str) -> RoutineCompiler<'p> {
+    pub(crate) fn new(
+        prog: &'p Program,
+        builtins: &'p crate::builtins::Builtins,
+        module: usize,
+        file: usize,
+        text: &'p str,
+    ) -> RoutineCompiler<'p> {
         RoutineCompiler {
             prog,
+            builtins,
             module,
             file,
             text,

@@ -216,8 +216,9 @@ impl Vm {
                 Ok(wait.map(Exit::Wait))
             }
             crate::builtins::StopKind::Stop => {
-                // TriggStopProc's supervision sees the program stop.
-                crate::builtins::motion::program_stopped(&mut self.resources, &mut self.storage, self.time);
+                for hooks in self.builtins.hooks() {
+                    hooks.program_stopped(&mut self.resources, &mut self.storage, self.time);
+                }
                 Ok(Some(Exit::Stopped))
             }
             crate::builtins::StopKind::Retry => self.retry(),

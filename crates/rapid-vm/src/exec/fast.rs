@@ -463,7 +463,7 @@ impl Vm {
                     let at = stack.len() - site.n_pushed as usize;
                     // A pure function reads its arguments where they lie; anything
                     // unusual takes the general path below.
-                    if let Some(pure) = crate::builtins::pure_form(id).filter(|_| only_trailing_absent(site)) {
+                    if let Some(pure) = self.builtins.pure_form(id).filter(|_| only_trailing_absent(site)) {
                         if let Some(value) = pure(&stack[at..]) {
                             stack.truncate(at);
                             stack.push(value);
@@ -494,8 +494,7 @@ impl Vm {
                             if let Some(value) = result {
                                 self.storage.stack.push(value);
                             }
-                            let watched =
-                                self.resources.interrupts.active() || self.resources.robot.program_hold().is_some();
+                            let watched = self.resources.interrupts.active() || self.program_hold().is_some();
                             if self.resources.spy.is_active() || watched {
                                 // SpyStart, an interrupt ordered, or a wait for the robot
                                 // owed (StartMove in a trap restarts the move the routine

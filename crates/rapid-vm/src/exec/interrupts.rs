@@ -11,8 +11,9 @@ impl Vm {
     /// Queues the interrupts whose events have happened by now.
     pub(super) fn poll_interrupts(&mut self) {
         let now = self.time;
-        // Trigger actions decided at the robot's place (TriggCheckIO, `\Inhib`).
-        crate::builtins::motion::poll_triggers(&mut self.resources, &self.storage, now);
+        for hooks in self.builtins.hooks() {
+            hooks.poll(&mut self.resources, &self.storage, now);
+        }
         let interrupts = &mut self.resources.interrupts;
         let mut fired = Vec::new();
         // Interrupts the robot's path triggers (TriggInt) at their time.
@@ -162,9 +163,11 @@ impl Vm {
     /// moves (§1.11); the rest of the wait follows here, before the next instruction.
     /// None once the robot's time has come, or while a trap runs.
     pub(super) fn motion_hold(&mut self) -> Option<f64> {
-        let until = self.resources.robot.program_hold()?;
+        let until = self.program_hold()?;
         if until <= self.time {
-            self.resources.robot.hold_until = None;
+            for hooks in self.builtins.hooks() {
+                hooks.release_hold(&mut self.resources);
+            }
             return None;
         }
         if self.frames.iter().any(|f| f.interrupted) {
@@ -203,7 +206,7 @@ impl Vm {
         let at_statement = top.code.stmt_at(top.pc).is_some_and(|s| s.start == top.pc)
             || matches!(top.code.instrs.get(top.pc as usize), Some(crate::ir::Instr::FellOffEnd))
             || matches!(top.code.instrs.get((top.pc as usize).wrapping_sub(1)), Some(crate::ir::Instr::WaitPop))
-            || self.resources.robot.program_hold().is_some_and(|until| until > self.time);
+            || self.program_hold().is_some_and(|until| until > self.time);
         if !at_statement || top.undoing || self.exiting {
             return;
         }

@@ -3,9 +3,6 @@
 //! happened.
 
 use super::{Exit, Frame, Vm};
-
-/// The motion event of a fly-by point run as a stop point: (number, title).
-const CORNER_PATH_FAILURE: (u32, &str) = (24, "Corner path failure");
 use crate::error::RapidError;
 
 impl Vm {
@@ -52,33 +49,26 @@ impl Vm {
         })
     }
 
-    /// The motion warning for each fly-by point that became a stop point since the last
-    /// look (the robot had to stop there: the next move came too late), placed at the
-    /// move that programmed it; `CornerPathWarning FALSE` keeps them out of the log.
-    // uncertain: number and title as we remember RobotWare 6's event log (50024 "Corner
-    // path failure"); the message line is ours.
-    pub fn log_corner_failures(&mut self) {
-        let failures = std::mem::take(&mut self.resources.robot.corner_failures);
-        if !self.resources.motion.settings.corner_path_warning {
-            return;
+    /// Logs what the extensions noticed since they were last asked (a robot's fly-by
+    /// points run as stop points), each placed at its statement.
+    pub fn log_extension_events(&mut self) {
+        for at in 0..self.builtins.hooks().len() {
+            let hooks = self.builtins.hooks()[at];
+            let events = hooks.take_events(&mut self.resources, self.time);
+            self.log_pending(events);
         }
-        for place in failures {
-            let place = place.map(|(file, span)| crate::events::EventPlace {
+    }
+
+    /// Logs events an extension handed over, placing each at its statement and the
+    /// routine that holds it.
+    pub(super) fn log_pending(&mut self, events: Vec<crate::embed::PendingEvent>) {
+        for pending in events {
+            let place = pending.at.map(|(file, span)| crate::events::EventPlace {
                 routine: self.routine_holding(file, span).unwrap_or_default(),
                 file,
                 span,
             });
-            self.events.push(crate::events::Event {
-                seq: 0,
-                domain: crate::events::MOTION_DOMAIN,
-                number: CORNER_PATH_FAILURE.0,
-                kind: crate::events::EventKind::Warning,
-                time: self.time,
-                title: CORNER_PATH_FAILURE.1.to_string(),
-                details: Vec::new(),
-                lines: vec!["The fly-by point was run as a stop point: no next move was ready in time.".to_string()],
-                place,
-            });
+            self.events.push(crate::events::Event { place, ..pending.event });
         }
     }
 

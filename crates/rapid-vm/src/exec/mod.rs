@@ -14,6 +14,7 @@ mod error_watch;
 pub use error_watch::ErrorStop;
 mod fast;
 mod frames;
+mod hooks;
 pub mod inspect;
 mod instr;
 mod interrupts;
@@ -160,11 +161,14 @@ pub struct Vm {
     place_pool: Vec<Box<Place>>,
     /// A debugger's exception breakpoints (`error_watch.rs`).
     error_watch: error_watch::ErrorWatch,
+    /// The built-ins the task's call sites name by id, with the extensions' hooks.
+    builtins: std::sync::Arc<crate::builtins::Builtins>,
 }
 
 impl Vm {
     /// A VM for compiled routines; `globals` already hold their initial values.
     pub fn new(
+        builtins: std::sync::Arc<crate::builtins::Builtins>,
         routines: Vec<Option<Code>>,
         procs_by_name: FxHashMap<String, u32>,
         globals: Vec<Value>,
@@ -172,7 +176,7 @@ impl Vm {
         errnos: FxHashMap<&'static str, i32>,
         errno_global: Option<u32>,
     ) -> Vm {
-        Vm {
+        let mut vm = Vm {
             routines: routines.into_iter().map(|c| c.map(Rc::new)).collect(),
             procs_by_name,
             storage: Storage { globals: storage::Globals::new(globals), stack: Vec::new() },
@@ -200,7 +204,11 @@ impl Vm {
             spy_open: Vec::new(),
             place_pool: Vec::new(),
             error_watch: error_watch::ErrorWatch::default(),
-        }
+            builtins,
+        };
+        let builtins = vm.builtins.clone();
+        builtins.init_task(&mut vm.resources);
+        vm
     }
 
     /// The task's files, directories and sockets (to configure devices, or to close
@@ -324,7 +332,7 @@ impl Vm {
             // While the program owes the robot the rest of a move's wait (a trap cut
             // it short), it runs one instruction at a time too, so the wait resumes as
             // soon as the trap has returned (the fast loop would run on past it).
-            let watched = self.resources.interrupts.active() || self.resources.robot.program_hold().is_some();
+            let watched = self.resources.interrupts.active() || self.program_hold().is_some();
             let outcome = if self.resources.spy.is_active() || watched {
                 // The execution log sees every statement, and interrupts are looked for
                 // before every instruction: one instruction at a time.
@@ -758,9 +766,10 @@ impl Vm {
             wall_epoch: self.wall_epoch,
             resources: &mut self.resources,
             chain: &self.frames,
+            builtins: &self.builtins,
         };
         let first_event = ctx.events.next_seq();
-        let res = crate::builtins::function(id)(&mut ctx, args);
+        let res = self.builtins.function(id)(&mut ctx, args);
         let waited = ctx.waited;
         let (wait, stop, reset, skip_warn) = (ctx.wait, ctx.stop, ctx.reset_retries, ctx.skip_warn);
         self.time += waited;
@@ -770,11 +779,15 @@ impl Vm {
                 self.events.place_since(first_event, &Self::place_of(frame));
             }
         }
-        if !self.resources.robot.corner_failures.is_empty() {
-            self.log_corner_failures();
+        // The hooks are `&'static`: copied out, they leave `self` free to log.
+        for at in 0..self.builtins.hooks().len() {
+            let hooks = self.builtins.hooks()[at];
+            let events = hooks.take_events(&mut self.resources, self.time);
+            if !events.is_empty() {
+                self.log_pending(events);
+            }
+            hooks.after_builtin(&mut self.resources);
         }
-        // Another task reading this task's external axes sees its path stop and go on.
-        self.resources.robot.publish_pause();
         let res = res?;
         if reset {
             if let Some(frame) = self.frames.last_mut() {

@@ -337,11 +337,13 @@ impl Vm {
         let module_idx = self.modules.base_modules.len() + self.modules.units.len();
         let (_, catalogue) = rapid_sema::catalogue();
         let modules = checked.modules();
-        let compiled = compile::compile_module(&checked.prog, &modules, module_idx, &catalogue.module, &catalogue.text)
-            .map_err(|errs| {
-                let why: Vec<String> = errs.iter().take(QUOTED_DIAGNOSTICS).map(|e| e.message.clone()).collect();
-                self.error(Err::Syntax, format!("module `{name}` cannot be run: {}", why.join("; ")))
-            })?;
+        let builtins = self.builtins.clone();
+        let compiled =
+            compile::compile_module(&checked.prog, &modules, module_idx, &builtins, &catalogue.module, &catalogue.text)
+                .map_err(|errs| {
+                    let why: Vec<String> = errs.iter().take(QUOTED_DIAGNOSTICS).map(|e| e.message.clone()).collect();
+                    self.error(Err::Syntax, format!("module `{name}` cannot be run: {}", why.join("; ")))
+                })?;
         let (routines, datas) = members(&checked.prog, module_idx);
         let pers = datas.iter().filter_map(|&d| pers_slot(&checked.prog, d)).collect();
         self.install(&checked.prog, compiled.routines, &compiled.defaults, &routines, &datas);
@@ -385,10 +387,16 @@ impl Vm {
         let (_, catalogue) = rapid_sema::catalogue();
         let n_base = self.modules.base_modules.len();
         let live: Vec<usize> = (0..self.modules.units.len()).filter(|&u| self.modules.units[u].live).collect();
+        let builtins = self.builtins.clone();
         for unit in live {
-            let Ok(compiled) =
-                compile::compile_module(&checked.prog, modules, n_base + unit, &catalogue.module, &catalogue.text)
-            else {
+            let Ok(compiled) = compile::compile_module(
+                &checked.prog,
+                modules,
+                n_base + unit,
+                &builtins,
+                &catalogue.module,
+                &catalogue.text,
+            ) else {
                 continue;
             };
             for (idx, code) in compiled.routines {

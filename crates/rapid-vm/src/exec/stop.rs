@@ -10,7 +10,6 @@
 //! safe interrupts run first.
 
 use super::{Exit, Unhandled, Vm};
-use crate::builtins::lookup;
 use crate::value::Value;
 
 /// Instructions an event routine run at a stop may take.
@@ -37,7 +36,7 @@ impl Vm {
         }
         // A robot StopMove holds already stays held: the program's StartMove releases
         // it, not the start.
-        let pause_robot = self.resources.robot.pause.is_none();
+        let pause_robot = !self.extension_held();
         if pause_robot {
             self.call_motion_builtin("StopMove", &[Value::Absent, Value::Absent], host);
         }
@@ -87,7 +86,7 @@ impl Vm {
         if let Some((depth, pc, started)) = self.resources.io.waiting {
             self.resources.io.waiting = Some((depth, pc, started + stood));
         }
-        if stop.paused_robot && self.resources.robot.pause.is_some() {
+        if stop.paused_robot && self.extension_held() {
             self.call_motion_builtin("StartMove", &[Value::Absent], host);
         }
     }
@@ -98,7 +97,7 @@ impl Vm {
         let now = self.time;
         let Some(stop) = self.resources.interrupts.stop.as_mut() else { return };
         stop.since = now;
-        if stop.paused_robot && self.resources.robot.pause.is_none() {
+        if stop.paused_robot && !self.extension_held() {
             self.call_motion_builtin("StopMove", &[Value::Absent, Value::Absent], host);
         }
     }
@@ -106,7 +105,7 @@ impl Vm {
     /// Runs a motion built-in (StopMove, StartMove) as the controller; it cannot fail
     /// for the arguments given.
     fn call_motion_builtin(&mut self, name: &str, args: &[Value], host: &mut dyn crate::host::Host) {
-        if let Some(id) = lookup(name) {
+        if let Some(id) = self.builtins.lookup(name) {
             let _ = self.run_builtin(id, args, host);
         }
     }

@@ -18,6 +18,7 @@ pub mod extax;
 mod fit;
 pub mod foreign;
 mod frame;
+mod hooks;
 pub mod indep;
 mod inpos;
 mod layout;
@@ -41,6 +42,7 @@ mod units;
 mod zone_watch;
 pub mod zones;
 
+pub use hooks::EXTENSION;
 pub(crate) use moves::{apply_due_events, motion_error};
 pub(crate) use pause::abandon_paths;
 pub(crate) use settings::set_payload;

@@ -736,7 +736,7 @@ fn instruction_here(ctx: &Ctx<'_>) -> (&'static str, usize, rapid_syntax::Span) 
     let span = code.stmts[..upto].iter().rev().find(|s| pc < s.end).map_or(code.span, |s| s.span);
     let name = match code.instrs.get(pc as usize) {
         Some(Instr::Call(site)) => match code.sites.get(*site as usize).map(|s| s.callee) {
-            Some(Callee::Builtin(id)) => crate::builtins::name(id),
+            Some(Callee::Builtin(id)) => ctx.builtins.name(id),
             _ => "",
         },
         _ => "",

@@ -1,0 +1,173 @@
+//! What an embedder adds to the language (issue 19: the interpreter core knows no
+//! controller). An [`Extension`] brings built-in families, the per-task state they
+//! keep, and the [`TaskHooks`] the core loop calls at the few points where it must
+//! ask the embedder's side (a move under way, the program stopping, interrupts the
+//! path triggers). A set of built-ins is assembled from the core families and the
+//! extensions (`builtins::Builtins::new`) and handed to the load; every task loaded
+//! with it gets the extensions' state in its [`Extensions`] slot.
+//!
+//! The model is wasmtime's `Store<T>` with `WasiView` and boa's runtime extensions:
+//! the engine holds state it does not know the type of, and the host's functions find
+//! their own by type.
+//!
+//! What this module must not know: any extension's types (the robot's, I/O's).
+
+use std::any::{Any, TypeId};
+
+use crate::builtins::{Family, Resources};
+use crate::exec::storage::Storage;
+
+/// An embedder's addition to the language.
+pub struct Extension {
+    /// A short name, for messages.
+    pub name: &'static str,
+    /// The built-in families it registers (after the core's: a name the core already
+    /// registers stays the core's, and the catalogue tests refuse the second).
+    pub families: &'static [&'static Family],
+    /// What the core loop asks it, if anything.
+    pub hooks: Option<&'static dyn TaskHooks>,
+    /// Puts its per-task state into a new task's resources (`Resources::extensions`).
+    pub init: Option<fn(&mut Resources)>,
+}
+
+/// The points where the interpreter's loop asks the embedder's side. Every method has
+/// a default that answers as if the extension had nothing under way, so an extension
+/// implements only those it needs. The hooks hold no state of their own: what they
+/// look at is in the task's resources (an extension's in [`Extensions`]).
+pub trait TaskHooks: Sync {
+    /// The time until which the program owes a wait it was cut out of (a move's wait
+    /// a trap interrupted): while there is one, the loop runs one instruction at a
+    /// time and resumes the wait as soon as it may.
+    fn program_hold(&self, _resources: &Resources) -> Option<f64> {
+        None
+    }
+
+    /// The owed wait is over (its time has come).
+    fn release_hold(&self, _resources: &mut Resources) {}
+
+    /// Whether the embedder's side stands held by the program (a robot StopMove
+    /// stopped): a program stop leaves it held, a start does not release it.
+    fn held(&self, _resources: &Resources) -> bool {
+        false
+    }
+
+    /// Before the loop looks for interrupts due by `now`: actions decided along the
+    /// path (trigger I/O) happen, interrupts the path orders are queued.
+    fn poll(&self, _resources: &mut Resources, _storage: &Storage, _now: f64) {}
+
+    /// The program stopped itself (Stop) at `now`.
+    fn program_stopped(&self, _resources: &mut Resources, _storage: &mut Storage, _now: f64) {}
+
+    /// A built-in call has returned: publish what other tasks read of this one.
+    fn after_builtin(&self, _resources: &mut Resources) {}
+
+    /// Events the extension noticed since it was last asked (`now` is the task's
+    /// time), for the task's event log; the core places each at its statement and
+    /// routine.
+    fn take_events(&self, _resources: &mut Resources, _now: f64) -> Vec<PendingEvent> {
+        Vec::new()
+    }
+
+    /// The program was loaded: the extension learns the predefined data and types it
+    /// works with (`find_data` gives a predefined data object's global index by name).
+    fn loaded(&self, _resources: &mut Resources, _program: &rapid_sema::Program) {}
+}
+
+/// An event an extension logs, not placed yet: the core fills in the place from
+/// `at` (file index and span of the statement it concerns).
+pub struct PendingEvent {
+    pub event: crate::events::Event,
+    pub at: Option<(usize, rapid_syntax::Span)>,
+}
+
+/// State an extension keeps per task. `close_all` runs where the core closes the
+/// task's files and sockets (end of program, PP to Main).
+pub trait TaskState: Any {
+    fn close_all(&mut self) {}
+}
+
+/// The extensions' per-task state, one value per type.
+///
+/// A small type map rather than a generic parameter (`Vm<T>`, `Ctx<T>`): built-ins are
+/// plain function pointers in static family tables, which a type parameter would turn
+/// into generic tables and monomorphise the whole interpreter per embedder; a
+/// controller installs several extensions that know nothing of each other (the robot,
+/// I/O), each finding its own state by type. The map holds a handful of entries: a
+/// lookup is a scan comparing `TypeId`s, made only by the built-ins that need the
+/// state, never by the core loop (which goes through [`TaskHooks`]).
+#[derive(Default)]
+pub struct Extensions {
+    entries: Vec<Box<dyn TaskState>>,
+}
+
+impl Extensions {
+    /// Puts `state` in, replacing a value of its type.
+    pub fn insert<T: TaskState>(&mut self, state: T) {
+        match self.entries.iter_mut().find(|e| (***e).type_id() == TypeId::of::<T>()) {
+            Some(entry) => *entry = Box::new(state),
+            None => self.entries.push(Box::new(state)),
+        }
+    }
+
+    /// The state of type `T`, if an extension put one in.
+    pub fn get<T: TaskState>(&self) -> Option<&T> {
+        self.entries.iter().find_map(|e| (&**e as &dyn Any).downcast_ref::<T>())
+    }
+
+    /// The state of type `T` to change, if an extension put one in.
+    pub fn get_mut<T: TaskState>(&mut self) -> Option<&mut T> {
+        self.entries.iter_mut().find_map(|e| (&mut **e as &mut dyn Any).downcast_mut::<T>())
+    }
+
+    /// Whether an extension put in state of type `T`.
+    pub fn contains<T: TaskState>(&self) -> bool {
+        self.get::<T>().is_some()
+    }
+
+    pub(crate) fn close_all(&mut self) {
+        for entry in &mut self.entries {
+            entry.close_all();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Extensions, TaskState};
+
+    #[derive(Debug, PartialEq)]
+    struct Counter(u32);
+    impl TaskState for Counter {
+        fn close_all(&mut self) {
+            self.0 = 0;
+        }
+    }
+
+    #[derive(Debug, PartialEq)]
+    struct Label(&'static str);
+    impl TaskState for Label {}
+
+    #[test]
+    fn each_type_finds_its_own_value() {
+        let mut slot = Extensions::default();
+        assert!(slot.get::<Counter>().is_none());
+        slot.insert(Counter(3));
+        slot.insert(Label("a"));
+        assert_eq!(slot.get::<Counter>(), Some(&Counter(3)));
+        assert_eq!(slot.get::<Label>(), Some(&Label("a")));
+        if let Some(counter) = slot.get_mut::<Counter>() {
+            counter.0 += 1;
+        }
+        assert_eq!(slot.get::<Counter>(), Some(&Counter(4)));
+        slot.insert(Counter(9));
+        assert_eq!(slot.get::<Counter>(), Some(&Counter(9)), "a second insert replaces");
+    }
+
+    #[test]
+    fn closing_reaches_every_state() {
+        let mut slot = Extensions::default();
+        slot.insert(Counter(5));
+        slot.close_all();
+        assert_eq!(slot.get::<Counter>(), Some(&Counter(0)));
+    }
+}
