@@ -8,6 +8,7 @@
 //! and dropped), all declarations are collected, then each routine body is parsed
 //! again and checked one top-level item at a time.
 
+pub mod bind;
 mod body;
 mod calls;
 mod checker;
