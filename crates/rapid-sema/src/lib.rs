@@ -77,6 +77,10 @@ pub fn check(files: &[SourceInput], options: &Options) -> Vec<Diagnostic> {
 pub struct Analysis {
     pub diagnostics: Vec<Diagnostic>,
     pub program: Option<Program>,
+    /// Each file's outline as the check parsed it (routine bodies left out; `None`
+    /// for an unreadable file), spelled with the program's interner: a compiler goes
+    /// on from these instead of parsing every file again.
+    pub outlines: Vec<Option<Parse>>,
 }
 
 /// The task's declarations, resolved: every type, data object (built-in and
@@ -172,7 +176,8 @@ pub fn analyze(files: &[SourceInput], options: &Options) -> Analysis {
         diags.extend(cap_errors(errors).iter().map(|e| syntax::to_diagnostic(file, e)));
     }
     diags.sort_by_key(|d| (d.file, d.span.start, d.span.end));
-    Analysis { diagnostics: diags, program }
+    drop(modules);
+    Analysis { diagnostics: diags, program, outlines: parses }
 }
 
 /// The catalogue, parsed once per process, with the interner that holds its names;

@@ -118,9 +118,8 @@ pub fn load_in(
     options: &Options,
     builtins: std::sync::Arc<builtins::Builtins>,
 ) -> Result<Loaded, LoadError> {
-    let (mut prog, warnings) = checked(files, options)?;
+    let (mut prog, warnings, parses) = checked(files, options)?;
     // Outlines: each routine's body is parsed as it is compiled, never held whole.
-    let parses = outline_parses(files, &mut prog);
     let modules = module_sources(files, &parses);
     let compiled = compile_modules(&mut prog, &modules, &builtins)?;
     let types = ops::OpTypes { pos: prog.core.pos, orient: prog.core.orient };
@@ -211,8 +210,7 @@ pub fn load_in(
 /// the data initialisers): its routines as the VM would run them, for listings
 /// (`rapid dump-ir`, `disas::list`).
 pub fn compile_files(files: &[SourceInput], options: &Options) -> Result<CompiledTask, LoadError> {
-    let (mut prog, _) = checked(files, options)?;
-    let parses = outline_parses(files, &mut prog);
+    let (mut prog, _, parses) = checked(files, options)?;
     let modules = module_sources(files, &parses);
     let builtins = builtins::Builtins::standard();
     let compiled = compile_modules(&mut prog, &modules, &builtins)?;
@@ -229,8 +227,10 @@ pub struct CompiledTask {
     pub builtins: std::sync::Arc<builtins::Builtins>,
 }
 
-/// The checked program with its warnings, or the diagnostics that stop it from loading.
-fn checked(files: &[SourceInput], options: &Options) -> Result<(Program, Vec<Diagnostic>), LoadError> {
+/// The checked program with its warnings and the outline of every readable file (routine
+/// bodies left for the compiler, as the checker parsed them), or the diagnostics that
+/// stop it from loading.
+fn checked(files: &[SourceInput], options: &Options) -> Result<(Program, Vec<Diagnostic>, Outlines), LoadError> {
     let analysis = analyze(files, options);
     if Program::has_errors(&analysis.diagnostics) {
         return Err(LoadError::Diagnostics(analysis.diagnostics));
@@ -244,21 +244,16 @@ fn checked(files: &[SourceInput], options: &Options) -> Result<(Program, Vec<Dia
             if !opaque.is_empty() {
                 return Err(LoadError::Unsupported(opaque));
             }
-            Ok((prog, analysis.diagnostics))
+            let outlines =
+                analysis.outlines.into_iter().enumerate().filter_map(|(idx, p)| p.map(|p| (idx, p))).collect();
+            Ok((prog, analysis.diagnostics, outlines))
         }
         None => Err(LoadError::Diagnostics(analysis.diagnostics)),
     }
 }
 
-/// Every readable file parsed as an outline (routine bodies left for the compiler).
-fn outline_parses(files: &[SourceInput], prog: &mut Program) -> Vec<(usize, rapid_syntax::Parse)> {
-    files
-        .iter()
-        .enumerate()
-        .filter(|(_, f)| f.unreadable.is_none())
-        .map(|(idx, f)| (idx, rapid_syntax::parse_outline(&f.text, &mut prog.interner)))
-        .collect()
-}
+/// Each readable file's outline with the index of the file.
+type Outlines = Vec<(usize, rapid_syntax::Parse)>;
 
 fn module_sources<'a>(
     files: &'a [SourceInput],
