@@ -306,7 +306,7 @@ impl RoutineCompiler<'_> {
     fn arg_fits(&self, arena: &Arena, id: rapid_syntax::ast::ExprId, param: &ParamInfo) -> bool {
         self.static_type(arena, id).is_some_and(|(ty, dims)| {
             let rank = dims.iter().filter(|&&d| d > 0).count() as u8;
-            rapid_sema::bind::fits(&self.prog.types, param, ty, rank)
+            rapid_sema::bind::fits(self.prog.types, param, ty, rank)
         })
     }
 
