@@ -30,7 +30,7 @@ pub(crate) struct RoutineCtx {
     /// the loop (RW 6.15, manual §1.5) rather than stopping the program.
     loops: u32,
     /// Length of the data table before this routine's parameters and data.
-    data_mark: usize,
+    pub(crate) data_mark: usize,
     /// Routine data and parameter names with their spans (labels may not reuse them).
     local_names: FxHashMap<Symbol, Span>,
 }

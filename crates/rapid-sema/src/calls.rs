@@ -5,6 +5,7 @@
 use rapid_syntax::ast::{Arena, Arg, ArgKind, ArgList, ExprId, ExprKind, Name, ParamMode, RoutineKind};
 use rapid_syntax::{Span, Symbol};
 
+use crate::bind::{self, ArgBinder, Binding};
 use crate::checker::Checker;
 use crate::codes::Code;
 use crate::expr::{Expect, Ty};
@@ -97,107 +98,93 @@ impl Checker<'_> {
             return self.type_args_leniently(arena, args);
         }
         let (params, groups, builtin) = (info.params.clone(), info.groups.clone(), info.chapter.is_some());
-        let mut filled = std::mem::take(&mut self.filled_scratch);
-        filled.clear();
-        filled.resize(groups.len(), None);
-        let mut cursor = 0usize;
+        let mut binder = ArgBinder::new(&params, &groups, std::mem::take(&mut self.filled_scratch));
         let mut has_placeholder = false;
         for arg in arena.args(args) {
             if arg.kind == ArgKind::Placeholder {
                 has_placeholder = true;
                 continue;
             }
-            let Some(param_idx) = self.match_param(arena, routine, &filled, cursor, arg) else {
+            // Required alternatives: the argument is typed once, then matched.
+            let mut got = None;
+            let binding = binder.bind(arg, |value, param| {
+                let got = *got.get_or_insert_with(|| self.expr(arena, value, Some(Expect::scalar(types::ANY))));
+                bind::fits(&self.types, param, got.ty, got.rank)
+            });
+            let Some(param_idx) = self.report_binding(routine, &params, arg, binding) else {
                 if let Some(value) = arg.value.filter(|_| arg.kind != ArgKind::Conditional) {
                     self.expr(arena, value, Some(Expect::scalar(types::ANY)));
                 }
                 continue;
             };
-            let pos = groups.iter().position(|&(start, end)| (start..end).contains(&param_idx)).unwrap_or(0);
-            if let Some(previous) = filled[pos] {
-                let (a, b) = (&params[param_idx].display, &params[previous].display);
-                let message = if previous == param_idx {
-                    format!("argument `{a}` is given twice")
-                } else {
-                    format!("`{a}` and `{b}` exclude each other; give only one")
-                };
-                self.diag(Code::DuplicateArgument, arg.span, message);
-            } else if pos < cursor {
-                let (name, routine_name) = (&params[param_idx].display, &self.routine(routine).display);
-                let message = format!("argument `{name}` is out of order: arguments must follow the order of `{routine_name}`'s parameters");
-                self.diag(Code::ArgumentOrder, arg.span, message);
-            }
-            filled[pos] = Some(param_idx);
-            cursor = cursor.max(pos + 1);
             self.check_arg_value(arena, &params[param_idx], arg, builtin);
         }
         if !has_placeholder {
-            for (pos, &(start, end)) in groups.iter().enumerate() {
-                if filled[pos].is_none() && !params[start].optional {
-                    let names: Vec<&str> = params[start..end].iter().map(|p| p.display.as_str()).collect();
-                    let message =
-                        format!("`{}` needs the argument `{}`", self.routine(routine).display, names.join("` or `"));
-                    self.diag(Code::MissingArgument, call_span, message);
-                }
+            for (start, end) in binder.missing() {
+                let names: Vec<&str> = params[start..end].iter().map(|p| p.display.as_str()).collect();
+                let message =
+                    format!("`{}` needs the argument `{}`", self.routine(routine).display, names.join("` or `"));
+                self.diag(Code::MissingArgument, call_span, message);
             }
         }
-        self.filled_scratch = filled;
+        self.filled_scratch = binder.into_scratch();
     }
 
-    /// The parameter an argument stands for, reporting arguments that fit none.
-    fn match_param(
-        &mut self,
-        arena: &Arena,
-        routine: u32,
-        filled: &[Option<usize>],
-        cursor: usize,
-        arg: &Arg,
-    ) -> Option<usize> {
-        let info = self.routine(routine);
-        let (params, groups) = (info.params.clone(), info.groups.clone());
-        if let Some(name) = arg.name {
-            let text = self.text(name.span);
-            let Some(idx) = params.iter().position(|p| p.name == name.sym) else {
+    /// Reports an argument bound to no parameter, or to one it cannot stand for as
+    /// written; answers the parameter it stands for.
+    fn report_binding(&mut self, routine: u32, params: &[ParamInfo], arg: &Arg, binding: Binding) -> Option<usize> {
+        let (param_idx, previous, out_of_order) = match binding {
+            Binding::Param { param, previous, out_of_order } => (param, previous, out_of_order),
+            Binding::UnknownName => {
                 // An option routine whose manual is not public may take optional
                 // arguments its declaration does not list: the caller types the value.
+                let info = self.routine(routine);
                 if info.flags.open_optionals && arg.kind != ArgKind::Required {
                     return None;
                 }
+                let name = arg.name?;
+                let text = self.text(name.span);
                 let shown = if arg.kind == ArgKind::Required { text.to_string() } else { format!("\\{text}") };
                 let message = format!("`{}` has no parameter `{shown}`", info.display);
                 self.diag(Code::UnknownArgument, name.span, message);
                 return None;
-            };
+            }
+            Binding::TooMany => {
+                let message = format!("too many arguments for `{}`", self.routine(routine).display);
+                self.diag(Code::TooManyArguments, arg.span, message);
+                return None;
+            }
+            Binding::NoValue => return None,
+        };
+        if let Some(name) = arg.name {
+            let text = self.text(name.span);
             let optional_syntax = arg.kind != ArgKind::Required;
-            if params[idx].optional != optional_syntax {
+            if params[param_idx].optional != optional_syntax {
                 let routine_name = &self.routine(routine).display;
-                let message = if params[idx].optional {
+                let message = if params[param_idx].optional {
                     format!("parameter `{text}` of `{routine_name}` is optional: write it as `\\{text}`")
                 } else {
                     format!("parameter `{text}` of `{routine_name}` is required: write it without `\\`")
                 };
                 self.diag(Code::RequiredAsOptional, name.span, message);
             }
-            return Some(idx);
         }
-        let unfilled_required = |g: &usize| filled[*g].is_none() && !params[groups[*g].0].optional;
-        // Past the cursor first; an earlier gap means the arguments are out of order
-        // (the caller reports that).
-        let pos = (cursor..groups.len()).find(unfilled_required).or_else(|| (0..cursor).find(unfilled_required));
-        let Some(pos) = pos else {
-            let message = format!("too many arguments for `{}`", info.display);
-            self.diag(Code::TooManyArguments, arg.span, message);
-            return None;
-        };
-        let (start, end) = groups[pos];
-        if end - start == 1 {
-            return Some(start);
+        if let Some(previous) = previous {
+            let (a, b) = (&params[param_idx].display, &params[previous].display);
+            let message = if previous == param_idx {
+                format!("argument `{a}` is given twice")
+            } else {
+                format!("`{a}` and `{b}` exclude each other; give only one")
+            };
+            self.diag(Code::DuplicateArgument, arg.span, message);
+        } else if out_of_order {
+            let (name, routine_name) = (&params[param_idx].display, &self.routine(routine).display);
+            let message = format!(
+                "argument `{name}` is out of order: arguments must follow the order of `{routine_name}`'s parameters"
+            );
+            self.diag(Code::ArgumentOrder, arg.span, message);
         }
-        // Required alternatives (built-ins only): pick the one whose type fits.
-        let value = arg.value?;
-        let got = self.expr(arena, value, Some(Expect::scalar(types::ANY)));
-        let fits = (start..end).find(|&p| self.types.same(params[p].ty, got.ty) && params[p].rank == got.rank);
-        Some(fits.unwrap_or(start))
+        Some(param_idx)
     }
 
     /// Checks one argument's value; `builtin` calls may pass non-value data to IN

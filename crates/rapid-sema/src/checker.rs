@@ -141,6 +141,26 @@ impl<'a> Checker<'a> {
         res
     }
 
+    /// Whether an error was reported since `seen` diagnostics (moved to the end).
+    pub(crate) fn errors_since(&self, seen: &mut usize) -> bool {
+        let from = (*seen).min(self.diags.len());
+        *seen = self.diags.len();
+        self.diags[from..].iter().any(|d| d.severity() == Severity::Error)
+    }
+
+    /// The declarations as a compiler reads them (module-level data only: the data
+    /// of the routine being checked is left out).
+    pub(crate) fn tables(&self) -> crate::Tables<'_> {
+        let globals = self.ctx.as_ref().map_or(self.datas.len(), |ctx| ctx.data_mark);
+        crate::Tables {
+            types: &self.types,
+            core: &self.core,
+            datas: &self.datas[..globals],
+            routines: &self.routines,
+            scopes: &self.scopes,
+        }
+    }
+
     pub(crate) fn lookup(&self, sym: Symbol) -> Option<Def> {
         self.scopes.lookup(self.module, sym)
     }

@@ -8,6 +8,7 @@
 //! and dropped), all declarations are collected, then each routine body is parsed
 //! again and checked one top-level item at a time.
 
+pub mod bind;
 mod body;
 mod calls;
 mod checker;
@@ -26,7 +27,7 @@ pub mod types;
 
 use std::sync::OnceLock;
 
-use rapid_syntax::ast::Item;
+use rapid_syntax::ast::{Arena, BodyItem, Item, Routine};
 use rapid_syntax::{cap_errors, for_each_body_item, parse_body, parse_outline, Interner, Parse, Span, SyntaxError};
 
 pub use codes::{Code, Severity};
@@ -76,6 +77,10 @@ pub fn check(files: &[SourceInput], options: &Options) -> Vec<Diagnostic> {
 pub struct Analysis {
     pub diagnostics: Vec<Diagnostic>,
     pub program: Option<Program>,
+    /// Each file's outline as the check parsed it (routine bodies left out; `None`
+    /// for an unreadable file), spelled with the program's interner: a compiler goes
+    /// on from these instead of parsing every file again.
+    pub outlines: Vec<Option<Parse>>,
 }
 
 /// The task's declarations, resolved: every type, data object (built-in and
@@ -103,8 +108,54 @@ impl Program {
     }
 }
 
+impl Program {
+    /// The declarations a compiler reads.
+    pub fn tables(&self) -> Tables<'_> {
+        Tables {
+            types: &self.types,
+            core: &self.core,
+            datas: &self.datas,
+            routines: &self.routines,
+            scopes: &self.scopes,
+        }
+    }
+}
+
+/// A task's declarations as a compiler reads them: borrowed from a [`Program`], or
+/// from the checker while it works through the routine bodies (a [`BodySink`]).
+#[derive(Debug, Clone, Copy)]
+pub struct Tables<'a> {
+    pub types: &'a types::Types,
+    pub core: &'a types::CoreTypes,
+    /// Built-in and module-level data (a routine's own data is the compiler's business).
+    pub datas: &'a [symbols::DataInfo],
+    pub routines: &'a [symbols::RoutineInfo],
+    pub scopes: &'a symbols::Scopes,
+}
+
+/// Receives each routine body while the checker works through it, one top-level item
+/// at a time, so that a compiler can compile it then and no body is parsed twice nor
+/// held whole. Only bodies checked without error reach it: after the first error
+/// (in this body or anywhere before it) no more are handed over.
+pub trait BodySink {
+    /// The body of the routine declared by item `item` of module `module` (the
+    /// indices of [`symbols::DeclOrigin::Module`]), in file `file`, starts.
+    fn begin(&mut self, tables: Tables<'_>, file: usize, module: usize, item: usize, routine: &Routine);
+    /// One top-level item (declaration, statement, handler keyword) of that body,
+    /// checked without error.
+    fn item(&mut self, tables: Tables<'_>, item: &BodyItem, arena: &Arena);
+    /// The body ends; `clean` is false when an error was found in it (what the sink
+    /// made of it is then to be dropped).
+    fn end(&mut self, tables: Tables<'_>, clean: bool);
+}
+
 /// Checks a task like [`check`] and keeps the resolved declarations.
 pub fn analyze(files: &[SourceInput], options: &Options) -> Analysis {
+    analyze_with(files, options, None)
+}
+
+/// [`analyze`], handing each routine body to `sink` as it is checked.
+pub fn analyze_with(files: &[SourceInput], options: &Options, sink: Option<&mut dyn BodySink>) -> Analysis {
     let (base_interner, catalogue) = catalogue();
     let mut interner = base_interner.clone();
     let mut diags: Vec<Diagnostic> =
@@ -149,13 +200,14 @@ pub fn analyze(files: &[SourceInput], options: &Options) -> Analysis {
     let mut program = None;
     if options.syntax_only {
         for m in &modules {
-            for routine in routines(m) {
+            for (_, routine) in routines(m) {
                 let errors = parse_body(&files[m.file].text, routine.body_span, &mut interner, None);
                 syntax_errors[m.file].extend(errors);
             }
         }
     } else {
-        let ck = check_semantics(files, &modules, catalogue, options, &mut interner, &mut syntax_errors, &mut diags);
+        let mut run = BodyPass { interner: &mut interner, syntax_errors: &mut syntax_errors, sink };
+        let ck = check_semantics(files, &modules, catalogue, options, &mut run, &mut diags);
         program = Some(Program {
             interner,
             types: ck.types,
@@ -171,7 +223,8 @@ pub fn analyze(files: &[SourceInput], options: &Options) -> Analysis {
         diags.extend(cap_errors(errors).iter().map(|e| syntax::to_diagnostic(file, e)));
     }
     diags.sort_by_key(|d| (d.file, d.span.start, d.span.end));
-    Analysis { diagnostics: diags, program }
+    drop(modules);
+    Analysis { diagnostics: diags, program, outlines: parses }
 }
 
 /// The catalogue, parsed once per process, with the interner that holds its names;
@@ -185,11 +238,19 @@ pub fn catalogue() -> &'static (Interner, rapid_lib::LoadedCatalogue) {
     })
 }
 
-fn routines<'m>(m: &ModuleRef<'m>) -> impl Iterator<Item = &'m rapid_syntax::ast::Routine> {
-    m.module.items.iter().filter_map(|item| match item {
-        Item::Routine(routine) => Some(routine),
+/// The routines of a module with their item indices.
+fn routines<'m>(m: &ModuleRef<'m>) -> impl Iterator<Item = (usize, &'m Routine)> {
+    m.module.items.iter().enumerate().filter_map(|(idx, item)| match item {
+        Item::Routine(routine) => Some((idx, routine)),
         _ => None,
     })
+}
+
+/// What the body pass works with besides the checker.
+struct BodyPass<'p, 's> {
+    interner: &'p mut Interner,
+    syntax_errors: &'p mut [Vec<SyntaxError>],
+    sink: Option<&'s mut dyn BodySink>,
 }
 
 fn check_semantics<'a>(
@@ -197,10 +258,10 @@ fn check_semantics<'a>(
     modules: &[ModuleRef<'_>],
     catalogue: &rapid_lib::LoadedCatalogue,
     options: &Options,
-    interner: &mut Interner,
-    syntax_errors: &mut [Vec<SyntaxError>],
+    pass: &mut BodyPass<'_, '_>,
     diags: &mut Vec<Diagnostic>,
 ) -> Checker<'a> {
+    let interner = &mut *pass.interner;
     let known = WellKnown {
         switch: interner.intern("switch"),
         anytype: interner.intern("anytype"),
@@ -213,14 +274,36 @@ fn check_semantics<'a>(
     ck.virtual_signals = options.virtual_signals;
     ck.declare_modules(modules);
     check_module_items(&mut ck, modules);
+    // Bodies go to the sink while nothing so far is an error. A virtual signal is
+    // declared only once the pass is over, so then nothing is handed over.
+    let mut seen = 0;
+    let mut clean = !options.virtual_signals
+        && !diags.iter().any(|d| d.severity() == Severity::Error)
+        && pass.syntax_errors.iter().all(Vec::is_empty);
     for (idx, m) in modules.iter().enumerate() {
         ck.enter(m.file, idx);
-        for routine in routines(m) {
+        for (item, routine) in routines(m) {
             ck.begin_routine(routine);
+            clean = clean && !ck.errors_since(&mut seen);
+            let mut sink = pass.sink.as_deref_mut().filter(|_| clean);
+            if let Some(sink) = sink.as_deref_mut() {
+                sink.begin(ck.tables(), m.file, idx, item, routine);
+            }
             let text = &files[m.file].text;
-            let errors = for_each_body_item(text, routine.body_span, interner, |item, arena| ck.body_item(item, arena));
-            syntax_errors[m.file].extend(errors);
+            let errors = for_each_body_item(text, routine.body_span, pass.interner, |item, arena| {
+                ck.body_item(item, arena);
+                clean = clean && !ck.errors_since(&mut seen);
+                if let Some(sink) = sink.as_deref_mut().filter(|_| clean) {
+                    sink.item(ck.tables(), item, arena);
+                }
+            });
+            clean = clean && errors.is_empty();
+            pass.syntax_errors[m.file].extend(errors);
             ck.end_routine();
+            clean = clean && !ck.errors_since(&mut seen);
+            if let Some(sink) = sink {
+                sink.end(ck.tables(), clean);
+            }
         }
     }
     ck.declare_virtual_signals();

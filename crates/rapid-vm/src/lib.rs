@@ -37,7 +37,7 @@ pub mod value;
 pub mod world;
 
 use rapid_sema::symbols::{DeclOrigin, Def};
-use rapid_sema::{analyze, Diagnostic, Options, Program, SourceInput};
+use rapid_sema::{Diagnostic, Options, Program, SourceInput};
 use rapid_syntax::ast::RoutineKind;
 use rustc_hash::FxHashMap;
 
@@ -126,11 +126,10 @@ pub fn load_in(
     options: &Options,
     builtins: std::sync::Arc<builtins::Builtins>,
 ) -> Result<Loaded, LoadError> {
-    let (mut prog, warnings) = checked(files, options)?;
-    // Outlines: each routine's body is parsed as it is compiled, never held whole.
-    let parses = outline_parses(files, &mut prog);
+    // Each routine's body is parsed once, by the checker, and compiled as it is checked.
+    let (mut prog, warnings, parses, streamed) = checked(files, options, &builtins)?;
     let modules = module_sources(files, &parses);
-    let compiled = compile_modules(&mut prog, &modules, &builtins)?;
+    let compiled = compile_modules(&mut prog, &modules, &builtins, streamed)?;
     let types = ops::OpTypes { pos: prog.core.pos, orient: prog.core.orient };
     let mut procs_by_name: FxHashMap<String, u32> = prog
         .routines
@@ -219,11 +218,10 @@ pub fn load_in(
 /// the data initialisers): its routines as the VM would run them, for listings
 /// (`rapid dump-ir`, `disas::list`).
 pub fn compile_files(files: &[SourceInput], options: &Options) -> Result<CompiledTask, LoadError> {
-    let (mut prog, _) = checked(files, options)?;
-    let parses = outline_parses(files, &mut prog);
-    let modules = module_sources(files, &parses);
     let builtins = builtins::Builtins::standard();
-    let compiled = compile_modules(&mut prog, &modules, &builtins)?;
+    let (mut prog, _, parses, streamed) = checked(files, options, &builtins)?;
+    let modules = module_sources(files, &parses);
+    let compiled = compile_modules(&mut prog, &modules, &builtins, streamed)?;
     let global_names = prog.datas.iter().map(|d| d.display.clone()).collect();
     Ok(CompiledTask { compiled, global_names, builtins })
 }
@@ -237,9 +235,17 @@ pub struct CompiledTask {
     pub builtins: std::sync::Arc<builtins::Builtins>,
 }
 
-/// The checked program with its warnings, or the diagnostics that stop it from loading.
-fn checked(files: &[SourceInput], options: &Options) -> Result<(Program, Vec<Diagnostic>), LoadError> {
-    let analysis = analyze(files, options);
+/// The checked program with its warnings, the outline of every readable file (as the
+/// checker parsed it) and the routines compiled while the checker went through their
+/// bodies (with `builtins`), or the diagnostics that stop it from loading.
+fn checked(
+    files: &[SourceInput],
+    options: &Options,
+    builtins: &builtins::Builtins,
+) -> Result<(Program, Vec<Diagnostic>, Outlines, compile::Streamed), LoadError> {
+    let mut sink = compile::StreamCompiler::new(builtins, files);
+    let analysis = rapid_sema::analyze_with(files, options, Some(&mut sink));
+    let streamed = sink.finish();
     if Program::has_errors(&analysis.diagnostics) {
         return Err(LoadError::Diagnostics(analysis.diagnostics));
     }
@@ -252,21 +258,16 @@ fn checked(files: &[SourceInput], options: &Options) -> Result<(Program, Vec<Dia
             if !opaque.is_empty() {
                 return Err(LoadError::Unsupported(opaque));
             }
-            Ok((prog, analysis.diagnostics))
+            let outlines =
+                analysis.outlines.into_iter().enumerate().filter_map(|(idx, p)| p.map(|p| (idx, p))).collect();
+            Ok((prog, analysis.diagnostics, outlines, streamed))
         }
         None => Err(LoadError::Diagnostics(analysis.diagnostics)),
     }
 }
 
-/// Every readable file parsed as an outline (routine bodies left for the compiler).
-fn outline_parses(files: &[SourceInput], prog: &mut Program) -> Vec<(usize, rapid_syntax::Parse)> {
-    files
-        .iter()
-        .enumerate()
-        .filter(|(_, f)| f.unreadable.is_none())
-        .map(|(idx, f)| (idx, rapid_syntax::parse_outline(&f.text, &mut prog.interner)))
-        .collect()
-}
+/// Each readable file's outline with the index of the file.
+type Outlines = Vec<(usize, rapid_syntax::Parse)>;
 
 fn module_sources<'a>(
     files: &'a [SourceInput],
@@ -288,12 +289,14 @@ fn compile_modules(
     prog: &mut Program,
     modules: &[compile::ModuleSource<'_>],
     builtins: &builtins::Builtins,
+    streamed: compile::Streamed,
 ) -> Result<compile::Compiled, LoadError> {
     let (_, catalogue) = rapid_sema::catalogue();
     // The compiler reads the program while the bodies' parser spells names with its
     // interner: lent out for the while.
     let mut interner = std::mem::take(&mut prog.interner);
-    let compiled = compile::compile(prog, modules, builtins, &catalogue.module, &catalogue.text, &mut interner);
+    let compiled =
+        compile::compile(prog, modules, builtins, &catalogue.module, &catalogue.text, &mut interner, streamed);
     prog.interner = interner;
     compiled.map_err(|errors| LoadError::Unsupported(refusals::one_per_option(errors)))
 }

@@ -88,8 +88,38 @@ fn outline_and_tree_compile_to_the_same_code() {
             &catalogue.module,
             &catalogue.text,
             &mut interner,
+            compile::Streamed::default(),
         )
         .unwrap_or_else(|e| panic!("compile failed: {e:?}"));
+        compiled.push(format!("{:?}", code.routines));
+    }
+    assert!(compiled[0].contains("FellOffEnd"));
+    assert_eq!(compiled[0], compiled[1]);
+}
+
+/// The code compiled while the checker goes through the bodies (each body parsed
+/// once, by the checker) is the code compiled from the whole tree afterwards.
+#[test]
+fn streamed_and_tree_compile_to_the_same_code() {
+    let text = program(5);
+    let files = [SourceInput::from_text("t.mod", &text)];
+    let builtins = rapid_vm::builtins::Builtins::core();
+    let (_, catalogue) = rapid_sema::catalogue();
+    let mut compiled = Vec::new();
+    for streaming in [false, true] {
+        let mut sink = compile::StreamCompiler::new(&builtins, &files);
+        let analysis = rapid_sema::analyze_with(&files, &Options::default(), streaming.then_some(&mut sink as _));
+        let streamed = sink.finish();
+        // The program's one routine, or none when nothing was streamed.
+        assert_eq!(streamed.len(), usize::from(streaming));
+        let mut prog = analysis.program.expect("the program checks");
+        let parse = rapid_syntax::parse(&text, &mut prog.interner);
+        let modules: Vec<compile::ModuleSource<'_>> =
+            parse.file.modules.iter().map(|module| compile::ModuleSource { file: 0, text: &text, module }).collect();
+        let mut interner = prog.interner.clone();
+        let code =
+            compile::compile(&prog, &modules, &builtins, &catalogue.module, &catalogue.text, &mut interner, streamed)
+                .unwrap_or_else(|e| panic!("compile failed: {e:?}"));
         compiled.push(format!("{:?}", code.routines));
     }
     assert!(compiled[0].contains("FellOffEnd"));

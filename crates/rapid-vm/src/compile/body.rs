@@ -50,7 +50,7 @@ impl RoutineCompiler<'_> {
     }
 
     /// What the routine's head says: its name, kind and return type.
-    fn header(&mut self, routine: &Routine) {
+    pub(super) fn header(&mut self, routine: &Routine) {
         self.code.name = routine.name.span.text(self.text).to_string();
         self.code.span = routine.span;
         self.code.is_func = routine.kind == RoutineKind::Func;
@@ -59,10 +59,10 @@ impl RoutineCompiler<'_> {
             Some(Resolved::Type(ty)) => Some(ty),
             _ => None,
         });
-        self.code.ret_like = self.ret_ty.and_then(|ty| numeric_like(self.prog, ty, 0));
+        self.code.ret_like = self.ret_ty.and_then(|ty| numeric_like(self.prog.types, ty, 0));
     }
 
-    fn body_item(&mut self, item: &BodyItem, arena: &Arena, errors: &mut Vec<CompileError>) {
+    pub(super) fn body_item(&mut self, item: &BodyItem, arena: &Arena, errors: &mut Vec<CompileError>) {
         match item {
             BodyItem::Decl(decl) => self.decl(decl, arena, errors),
             BodyItem::Stmt(stmt) => self.stmt_list(arena, std::slice::from_ref(stmt), errors),
@@ -104,7 +104,7 @@ impl RoutineCompiler<'_> {
         };
     }
 
-    fn finish_routine(&mut self, mut errors: Vec<CompileError>) -> Result<Code, Vec<CompileError>> {
+    pub(super) fn finish_routine(&mut self, mut errors: Vec<CompileError>) -> Result<Code, Vec<CompileError>> {
         self.close_section();
         self.resolve_gotos(&mut errors);
         self.finish_locals();

@@ -2,6 +2,7 @@
 //! checked, so the match exists), then passed as values (IN), places (VAR, INOUT,
 //! PERS), absent, switches, or conditionally forwarded optional parameters.
 
+use rapid_sema::bind::bind_args;
 use rapid_sema::symbols::{ParamInfo, RoutineInfo};
 use rapid_syntax::ast::{Arena, Arg, ArgKind, ArgList, ExprKind, ParamMode};
 use rapid_syntax::{Span, Symbol};
@@ -300,13 +301,12 @@ impl RoutineCompiler<'_> {
         Ok(())
     }
 
-    /// Whether an argument expression is known at compile time to have the type and
-    /// the number of dimensions of `param` (aliases followed on both sides).
+    /// Whether an argument expression is known at compile time to fit `param` among
+    /// alternatives (the checker's rule, `rapid_sema::bind::fits`).
     fn arg_fits(&self, arena: &Arena, id: rapid_syntax::ast::ExprId, param: &ParamInfo) -> bool {
-        let types = &self.prog.types;
         self.static_type(arena, id).is_some_and(|(ty, dims)| {
             let rank = dims.iter().filter(|&&d| d > 0).count() as u8;
-            types.canonical(ty) == types.canonical(param.ty) && rank == param.rank
+            rapid_sema::bind::fits(self.prog.types, param, ty, rank)
         })
     }
 
@@ -535,44 +535,4 @@ impl RoutineCompiler<'_> {
             _ => Err(self.error(expr.span, "a conditional argument must name an optional parameter")),
         }
     }
-}
-
-/// Which argument (if any) each parameter gets, in parameter order.
-/// Binds arguments to parameters. A positional argument for a required group of
-/// alternatives (`num Value | dnum Dvalue`) takes the alternative of its own type, as
-/// the checker matched it; when its type is not known here, the first.
-fn bind_args<'a>(
-    info: &RoutineInfo,
-    args: &'a [Arg],
-    arg_fits: impl Fn(rapid_syntax::ast::ExprId, &ParamInfo) -> bool,
-) -> Vec<Option<&'a Arg>> {
-    let params = &info.params;
-    let mut bound: Vec<Option<&Arg>> = vec![None; params.len()];
-    let mut cursor_group = 0usize;
-    for arg in args {
-        if arg.kind == ArgKind::Placeholder {
-            continue;
-        }
-        let idx = match arg.name {
-            Some(name) => params.iter().position(|p| p.name == name.sym),
-            None => {
-                let free = |g: &usize| {
-                    let (start, end) = info.groups[*g];
-                    !params[start].optional && (start..end).all(|p| bound[p].is_none())
-                };
-                let group = (cursor_group..info.groups.len()).find(free).or_else(|| (0..info.groups.len()).find(free));
-                group.map(|g| {
-                    let (start, end) = info.groups[g];
-                    let fits = |p: &usize| arg.value.is_some_and(|id| arg_fits(id, &params[*p]));
-                    (start..end).find(fits).unwrap_or(start)
-                })
-            }
-        };
-        let Some(idx) = idx else { continue };
-        if let Some(g) = info.groups.iter().position(|&(s, e)| (s..e).contains(&idx)) {
-            cursor_group = cursor_group.max(g + 1);
-        }
-        bound[idx] = Some(arg);
-    }
-    bound
 }

@@ -9,10 +9,13 @@ pub(crate) mod call;
 mod expr;
 mod kernel;
 mod stmt;
+mod stream;
+
+pub use stream::{StreamCompiler, Streamed};
 
 use rapid_sema::symbols::{DataKind, DeclOrigin, Def};
-use rapid_sema::types::{Atomic, TypeId, TypeKind};
-use rapid_sema::Program;
+use rapid_sema::types::{Atomic, TypeId, TypeKind, Types};
+use rapid_sema::{Program, Tables};
 use rapid_syntax::ast::{Arena, DataDecl, Item, Module, ParamMode, Routine, Section};
 use rapid_syntax::{Interner, Span, Symbol};
 use rustc_hash::FxHashMap;
@@ -63,9 +66,10 @@ pub(crate) enum LocalKind {
 }
 
 /// Compiles every user routine and the global initialisers.
-/// Routines whose bodies the trees leave out (an outline, `rapid_syntax::parse_outline`)
-/// are parsed from their text as they are compiled, with `interner`, the one that
-/// spelled the program.
+/// Routines compiled while the checker worked through their bodies (`streamed`, from a
+/// [`StreamCompiler`]) are taken as they are; those whose bodies the trees leave out (an
+/// outline, `rapid_syntax::parse_outline`) are parsed from their text as they are
+/// compiled, with `interner`, the one that spelled the program.
 pub fn compile(
     prog: &Program,
     modules: &[ModuleSource<'_>],
@@ -73,6 +77,7 @@ pub fn compile(
     builtin_module: &Module,
     builtin_text: &str,
     interner: &mut Interner,
+    mut streamed: Streamed,
 ) -> Result<Compiled, Vec<CompileError>> {
     let mut errors = Vec::new();
     for data in &prog.datas {
@@ -105,7 +110,14 @@ pub fn compile(
         let DeclOrigin::Module { module, item } = info.origin else { continue };
         let Some(source) = modules.get(module) else { continue };
         let Some(Item::Routine(routine)) = source.module.items.get(item) else { continue };
-        let mut rc = RoutineCompiler::new(prog, builtins, module, source.file, source.text);
+        if let Some(compiled) = streamed.take(idx) {
+            match compiled {
+                Ok(code) => routines[idx] = Some(code),
+                Err(mut errs) => errors.append(&mut errs),
+            }
+            continue;
+        }
+        let mut rc = RoutineCompiler::new(prog.tables(), builtins, module, source.file, source.text);
         let compiled = match routine.body {
             Some(_) => rc.routine(routine),
             None => rc.routine_from_text(routine, interner),
@@ -163,7 +175,7 @@ pub fn compile_module(
         let DeclOrigin::Module { module, item } = info.origin else { continue };
         let Some(source) = modules.get(module) else { continue };
         let Some(Item::Routine(routine)) = source.module.items.get(item) else { continue };
-        let mut rc = RoutineCompiler::new(prog, builtins, module, source.file, source.text);
+        let mut rc = RoutineCompiler::new(prog.tables(), builtins, module, source.file, source.text);
         match rc.routine(routine) {
             Ok(code) => routines.push((idx as u32, code)),
             Err(mut errs) => errors.append(&mut errs),
@@ -187,7 +199,7 @@ fn compile_init(
     errors: &mut Vec<CompileError>,
     only: Option<usize>,
 ) -> Code {
-    let mut init = RoutineCompiler::new(prog, builtins, usize::MAX, usize::MAX, builtin_text);
+    let mut init = RoutineCompiler::new(prog.tables(), builtins, usize::MAX, usize::MAX, builtin_text);
     init.code.name = "<load>".into();
     for (idx, data) in prog.datas.iter().enumerate() {
         if only.is_some_and(|m| !matches!(data.origin, DeclOrigin::Module { module, .. } if module == m)) {
@@ -249,22 +261,27 @@ fn item_span(item: &Item) -> Span {
 /// The value data of type `ty` has before anything is assigned (§1.2.2): 0, "",
 /// FALSE, records of such values, arrays of them.
 pub fn default_value(prog: &Program, ty: TypeId, dims: &[u32]) -> Value {
+    default_of(&prog.types, ty, dims)
+}
+
+/// [`default_value`] with the program's types.
+fn default_of(types: &Types, ty: TypeId, dims: &[u32]) -> Value {
     if let Some((&n, inner)) = dims.split_first() {
         let n = n.max(1);
-        let elems = (0..n).map(|_| default_value(prog, ty, inner)).collect();
+        let elems = (0..n).map(|_| default_of(types, ty, inner)).collect();
         let mut all = [0u32; 3];
         all[..dims.len()].copy_from_slice(dims);
         return flatten_array(Array { dims: all, elems });
     }
-    let canon = prog.types.canonical(ty);
-    match &prog.types.info(canon).kind {
+    let canon = types.canonical(ty);
+    match &types.info(canon).kind {
         TypeKind::Atomic(Atomic::Num) => Value::Num(0.0),
         TypeKind::Atomic(Atomic::Dnum) => Value::Dnum(0.0),
         TypeKind::Atomic(Atomic::Bool) => Value::Bool(false),
         TypeKind::Atomic(Atomic::String) => Value::Str("".into()),
         TypeKind::Record(fields) => Value::Record(std::rc::Rc::new(Record {
             ty: canon,
-            fields: fields.iter().map(|f| default_value(prog, f.ty, &[])).collect(),
+            fields: fields.iter().map(|f| default_of(types, f.ty, &[])).collect(),
         })),
         // Signal data: not connected to an I/O signal until AliasIO (or the I/O
         // configuration) connects it.
@@ -293,7 +310,7 @@ pub fn flatten_array(array: Array) -> Value {
 
 /// Compiles one routine.
 pub(crate) struct RoutineCompiler<'p> {
-    pub(crate) prog: &'p Program,
+    pub(crate) prog: Tables<'p>,
     /// The built-ins call sites are resolved in (the set the task runs with).
     pub(crate) builtins: &'p crate::builtins::Builtins,
     pub(crate) module: usize,
@@ -338,7 +355,7 @@ pub(crate) struct LoopJumps {
 
 impl<'p> RoutineCompiler<'p> {
     pub(crate) fn new(
-        prog: &'p Program,
+        prog: Tables<'p>,
         builtins: &'p crate::builtins::Builtins,
         module: usize,
         file: usize,
@@ -390,7 +407,7 @@ impl<'p> RoutineCompiler<'p> {
         let n_params = self.code.n_params as usize;
         self.code.local_defaults = self.local_types[n_params..]
             .iter()
-            .map(|(ty, dims, rank)| default_value(self.prog, *ty, &dims[..*rank as usize]))
+            .map(|(ty, dims, rank)| default_of(self.prog.types, *ty, &dims[..*rank as usize]))
             .collect();
     }
 
@@ -432,7 +449,7 @@ impl<'p> RoutineCompiler<'p> {
                 switch: ty == rapid_sema::types::SWITCH,
                 group: param.group,
             });
-            self.code.param_likes.push(if by_ref { None } else { numeric_like(self.prog, ty, param.rank) });
+            self.code.param_likes.push(if by_ref { None } else { numeric_like(self.prog.types, ty, param.rank) });
         }
         self.code.n_params = self.n_locals;
     }
@@ -511,11 +528,11 @@ impl<'p> RoutineCompiler<'p> {
 }
 
 /// A zero of type `ty` when it is num or dnum (the kind arguments convert to).
-fn numeric_like(prog: &Program, ty: TypeId, rank: u8) -> Option<Value> {
+fn numeric_like(types: &Types, ty: TypeId, rank: u8) -> Option<Value> {
     if rank > 0 {
         return None;
     }
-    match prog.types.atomic(ty) {
+    match types.atomic(ty) {
         Some(Atomic::Num) => Some(Value::Num(0.0)),
         Some(Atomic::Dnum) => Some(Value::Dnum(0.0)),
         _ => None,

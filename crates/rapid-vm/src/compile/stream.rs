@@ -1,0 +1,189 @@
+//! Routines compiled while the checker works through their bodies: the compiler is the
+//! checker's `rapid_sema::BodySink`, so each body is parsed once (by the checker) and
+//! compiled item by item as each item is checked, never held whole.
+//!
+//! The checker lends its tables for one call at a time, so the routine being compiled
+//! is kept between items as its own state, without the tables ([`Suspended`]).
+
+use rapid_sema::{BodySink, SourceInput, Tables};
+use rapid_syntax::ast::{Arena, BodyItem, Routine};
+use rustc_hash::FxHashMap;
+
+use super::{CompileError, RoutineCompiler};
+use crate::builtins::Builtins;
+use crate::ir::Code;
+
+/// What each routine compiled in the stream came to, by its index in the program.
+#[derive(Default)]
+pub struct Streamed {
+    routines: FxHashMap<usize, Result<Code, Vec<CompileError>>>,
+}
+
+impl Streamed {
+    /// How many routines were compiled in the stream.
+    pub fn len(&self) -> usize {
+        self.routines.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.routines.is_empty()
+    }
+
+    /// What routine `idx` came to, when it was compiled in the stream.
+    pub(crate) fn take(&mut self, idx: usize) -> Option<Result<Code, Vec<CompileError>>> {
+        self.routines.remove(&idx)
+    }
+}
+
+/// Compiles the routines the checker hands over (see the module doc).
+pub struct StreamCompiler<'a> {
+    builtins: &'a Builtins,
+    files: &'a [SourceInput],
+    /// The index of each user routine by its declaration (module, item).
+    by_origin: Option<FxHashMap<(usize, usize), usize>>,
+    current: Option<Current>,
+    done: Streamed,
+}
+
+/// The routine being compiled.
+struct Current {
+    idx: usize,
+    module: usize,
+    file: usize,
+    /// Taken out while an item is compiled.
+    state: Option<Suspended>,
+    errors: Vec<CompileError>,
+}
+
+impl<'a> StreamCompiler<'a> {
+    pub fn new(builtins: &'a Builtins, files: &'a [SourceInput]) -> StreamCompiler<'a> {
+        StreamCompiler { builtins, files, by_origin: None, current: None, done: Streamed::default() }
+    }
+
+    /// The routines compiled so far.
+    pub fn finish(self) -> Streamed {
+        self.done
+    }
+
+    /// Runs `f` on the routine being compiled, lent the checker's tables for the call.
+    fn with_current<T>(
+        &mut self,
+        tables: Tables<'_>,
+        f: impl FnOnce(&mut RoutineCompiler<'_>, &mut Vec<CompileError>) -> T,
+    ) -> Option<T> {
+        let current = self.current.as_mut()?;
+        let text = &self.files.get(current.file)?.text;
+        let state = current.state.take()?;
+        let mut rc = state.resume(tables, self.builtins, current.module, current.file, text);
+        let res = f(&mut rc, &mut current.errors);
+        current.state = Some(Suspended::from(rc));
+        Some(res)
+    }
+}
+
+impl BodySink for StreamCompiler<'_> {
+    fn begin(&mut self, tables: Tables<'_>, file: usize, module: usize, item: usize, routine: &Routine) {
+        let by_origin = self.by_origin.get_or_insert_with(|| {
+            let origins = tables.routines.iter().enumerate().filter_map(|(idx, info)| match info.origin {
+                rapid_sema::symbols::DeclOrigin::Module { module, item } => Some(((module, item), idx)),
+                _ => None,
+            });
+            origins.collect()
+        });
+        self.current = None;
+        let Some(&idx) = by_origin.get(&(module, item)) else { return };
+        let Some(source) = self.files.get(file) else { return };
+        let mut rc = RoutineCompiler::new(tables, self.builtins, module, file, &source.text);
+        rc.header(routine);
+        rc.declare_params(routine);
+        let state = Some(Suspended::from(rc));
+        self.current = Some(Current { idx, module, file, state, errors: Vec::new() });
+    }
+
+    fn item(&mut self, tables: Tables<'_>, item: &BodyItem, arena: &Arena) {
+        self.with_current(tables, |rc, errors| rc.body_item(item, arena, errors));
+    }
+
+    fn end(&mut self, tables: Tables<'_>, clean: bool) {
+        let compiled = self.with_current(tables, |rc, errors| rc.finish_routine(std::mem::take(errors)));
+        let Some(current) = self.current.take() else { return };
+        if let (Some(compiled), true) = (compiled, clean) {
+            self.done.routines.insert(current.idx, compiled);
+        }
+    }
+}
+
+/// A routine compiler's own state, without what it borrows.
+struct Suspended {
+    code: Code,
+    locals: FxHashMap<rapid_syntax::Symbol, super::Local>,
+    loop_vars: Vec<(rapid_syntax::Symbol, super::Local)>,
+    labels: FxHashMap<rapid_syntax::Symbol, u32>,
+    gotos: Vec<(u32, rapid_syntax::Symbol, rapid_syntax::Span)>,
+    n_locals: u32,
+    local_types: Vec<(rapid_sema::types::TypeId, [u32; 3], u8)>,
+    ret_ty: Option<rapid_sema::types::TypeId>,
+    stmt_depth: u16,
+    exits: Vec<u32>,
+    signal_as_data: bool,
+    loops: Vec<super::LoopJumps>,
+    section: rapid_syntax::ast::Section,
+    shapes: FxHashMap<Box<[crate::packed::Node]>, u32>,
+    sites_seen: FxHashMap<super::SiteKey, u32>,
+}
+
+impl From<RoutineCompiler<'_>> for Suspended {
+    fn from(rc: RoutineCompiler<'_>) -> Suspended {
+        Suspended {
+            code: rc.code,
+            locals: rc.locals,
+            loop_vars: rc.loop_vars,
+            labels: rc.labels,
+            gotos: rc.gotos,
+            n_locals: rc.n_locals,
+            local_types: rc.local_types,
+            ret_ty: rc.ret_ty,
+            stmt_depth: rc.stmt_depth,
+            exits: rc.exits,
+            signal_as_data: rc.signal_as_data,
+            loops: rc.loops,
+            section: rc.section,
+            shapes: rc.shapes,
+            sites_seen: rc.sites_seen,
+        }
+    }
+}
+
+impl Suspended {
+    fn resume<'p>(
+        self,
+        prog: Tables<'p>,
+        builtins: &'p Builtins,
+        module: usize,
+        file: usize,
+        text: &'p str,
+    ) -> RoutineCompiler<'p> {
+        RoutineCompiler {
+            prog,
+            builtins,
+            module,
+            file,
+            text,
+            code: self.code,
+            locals: self.locals,
+            loop_vars: self.loop_vars,
+            labels: self.labels,
+            gotos: self.gotos,
+            n_locals: self.n_locals,
+            local_types: self.local_types,
+            ret_ty: self.ret_ty,
+            stmt_depth: self.stmt_depth,
+            exits: self.exits,
+            signal_as_data: self.signal_as_data,
+            loops: self.loops,
+            section: self.section,
+            shapes: self.shapes,
+            sites_seen: self.sites_seen,
+        }
+    }
+}
