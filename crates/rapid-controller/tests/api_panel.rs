@@ -104,6 +104,34 @@ fn timed_move(percent: Option<f64>) -> f64 {
 }
 
 #[test]
+fn a_new_speed_override_slows_a_move_under_way() {
+    let mut s = api_common::with_signals(TIMED_MOVE, &[], &[]);
+    s.set_cycles(1);
+    s.start(StartFrom::Pointer).expect("starts");
+    // To the MoveL: the pointer stands on it as it starts (the MoveAbsJ's fine point
+    // reached, the clock started).
+    let line = TIMED_MOVE.lines().position(|l| l.contains("MoveL")).unwrap() as u32 + 1;
+    for _ in 0..10_000 {
+        if s.program_pointer("T_ROB1").ok().flatten().is_some_and(|at| at.line == line) {
+            break;
+        }
+        s.run(1);
+    }
+    let started = s.time();
+    // 1 s into the move at 100 mm/s (0.01 s of ramp at 10 000 mm/s²): 99.5 mm done.
+    // At 50 % the robot brakes to 50 mm/s in 0.005 s (0.375 mm), cruises 100 mm in
+    // 2 s and brakes to a stop in 0.005 s (0.125 mm): 2.01 s where 1.01 s were left,
+    // so 1 s more than the whole move's time at full speed.
+    s.run_until(Until::Time(started + 1.0), 10_000_000);
+    s.set_speed_override(50.0).expect("50 % is taken");
+    s.run_until(Until::Time(started + 30.0), 10_000_000);
+    assert!(s.all_normal_ended());
+    let took: f64 = s.read_data("T_ROB1/took").expect("took").value.parse().expect("a number");
+    let full = timed_move(None);
+    assert!((took - full - 1.0).abs() < 0.01, "full speed {full}, slowed after 1 s {took}");
+}
+
+#[test]
 fn the_speed_override_slows_the_programmed_moves() {
     assert_eq!(api_common::session().speed_override(), 100.0);
     // 200 mm at 100 mm/s is 2 s at full speed, 200 mm at 50 mm/s 4 s at 50 %, each

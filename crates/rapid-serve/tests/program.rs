@@ -144,6 +144,56 @@ ENDMODULE
 }
 
 #[tokio::test]
+async fn a_new_speed_ratio_slows_the_move_under_way() {
+    const SLOW: &str = "MODULE MainModule
+  VAR clock c;
+  VAR num took := -1;
+  PROC main()
+    MoveAbsJ [[0, 0, 0, 0, 30, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]], v1000, fine, tool0;
+    ClkReset c;
+    ClkStart c;
+    MoveL Offs(CRobT(), 0, 200, 0), v10, fine, tool0;
+    ClkStop c;
+    took := ClkRead(c \\HighRes);
+  ENDPROC
+ENDMODULE
+";
+    let server = Server::with_program("speedratio_live", SLOW);
+    let cookie = server.login().await;
+    let y = || async { state_field(&server, "/rw/motionsystem/mechunits/ROB_1/robtarget?json=1", &cookie, "y").await };
+    let start = server.send(post("/rw/rapid/execution?action=start", &cookie, "regain=continue&cycle=once")).await;
+    assert_eq!(start.status(), StatusCode::NO_CONTENT);
+    // The MoveAbsJ turns axis 5 only: the TCP stays at y = 0 until the MoveL moves it.
+    let mut before = 0.0;
+    for _ in 0..400 {
+        before = y().await.parse::<f64>().expect("a number");
+        if before > 1.0 {
+            break;
+        }
+        tokio::time::sleep(Duration::from_millis(5)).await;
+    }
+    let set = server.send(post("/rw/panel/speedratio?action=setspeedratio", &cookie, "speed-ratio=50")).await;
+    assert_eq!(set.status(), StatusCode::NO_CONTENT);
+    let after: f64 = y().await.parse().expect("a number");
+    assert!(before > 1.0 && after < 100.0, "set while the robot was on its way: {before} {after}");
+    let took = "/rw/rapid/symbol/data/RAPID/T_ROB1/took?json=1";
+    let mut value = String::new();
+    for _ in 0..400 {
+        value = state_field(&server, took, &cookie, "value").await;
+        if value != "-1" {
+            break;
+        }
+        tokio::time::sleep(Duration::from_millis(50)).await;
+    }
+    // 200 mm at 10 mm/s (ramps of 1 ms): at y mm the ratio halves the speed, so the
+    // rest takes (200 − y)/5 s: y/10 + (200 − y)/5 = 40 − y/10 s, and 0.05 s of
+    // settling. The ratio came when the robot stood between `before` and `after`.
+    let took: f64 = value.parse().expect("a number");
+    let (earliest, latest) = (40.05 - after / 10.0, 40.05 - before / 10.0);
+    assert!(took > earliest - 0.02 && took < latest + 0.02, "{took} not in {earliest}..{latest}");
+}
+
+#[tokio::test]
 async fn a_dipc_message_to_a_task_reaches_its_rmq() {
     const RECEIVER: &str = "MODULE MainModule
   VAR intnum on_text;

@@ -482,7 +482,7 @@ impl WallClock for Anchor {
 
 /// Whether an instruction moves the robot (a step backward over it would move it
 /// back along its path).
-fn is_motion_instruction(word: &str) -> bool {
+pub(super) fn is_motion_instruction(word: &str) -> bool {
     let word = word.to_ascii_lowercase();
     ["move", "search", "trigg", "arc", "capture", "cirpath"].iter().any(|p| word.starts_with(p))
         || ["egm", "spot", "paint"].iter().any(|p| word.starts_with(p))

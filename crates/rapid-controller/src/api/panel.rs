@@ -50,16 +50,24 @@ impl Session {
     /// Sets the operator's speed override, 1 to 100 percent, for every task: the
     /// programmed speeds of the moves planned from now on are scaled by it, as the
     /// planner scales them by VelSet's override and SpeedRefresh (CSpeedOverride
-    /// reads it). A move already under way keeps the speed it was planned with,
-    /// where the real controller slows it at once.
+    /// reads it), and a robot under way slows down or speeds up at once along its
+    /// path (`rapid_motion::plan::retime`), the program's wait for it moving with it.
+    /// A robot held (a program stop, StopMove), searching, on a stored path, under
+    /// path correction or following a conveyor keeps the speeds it was planned with.
     pub fn set_speed_override(&mut self, percent: f64) -> Result<(), ApiError> {
         if !(1.0..=100.0).contains(&percent) {
             // A real controller takes 0 %: the robot then stands still within its
             // move, which the planner cannot hold (a zero speed is an error to it).
             return Err(ApiError::Unsupported(format!("a speed override of {percent} % (1 to 100 are)")));
         }
-        for task in &mut self.controller.tasks {
-            task.loaded.vm.resources_mut().controller.speed_override = percent;
+        let now = self.controller.time;
+        for idx in 0..self.controller.tasks.len() {
+            let resources = self.controller.tasks[idx].loaded.vm.resources_mut();
+            let ratio = percent / resources.controller.speed_override;
+            resources.controller.speed_override = percent;
+            if let Some(map) = resources.robot_mut().retime(now, ratio) {
+                self.controller.follow_retimed_robot(idx, &map);
+            }
         }
         Ok(())
     }
@@ -115,5 +123,35 @@ impl Session {
     pub fn file_root(&self) -> Option<std::path::PathBuf> {
         let task = self.controller.tasks.first()?;
         task.loaded.vm.resources().files.root().map(std::path::Path::to_path_buf)
+    }
+}
+
+impl crate::Controller {
+    /// Task `idx`'s robot was re-timed (`map`: old times to new): a move instruction of
+    /// the task waiting for its robot (to stand at a stop point) waits until the robot
+    /// now gets there.
+    fn follow_retimed_robot(&mut self, idx: usize, map: &rapid_motion::plan::Retiming) {
+        if !self.waits_for_robot(idx) {
+            return;
+        }
+        if let crate::schedule::State::Waiting { until, .. } = &mut self.tasks[idx].state {
+            *until = map.map(*until);
+        }
+    }
+
+    /// Whether task `idx` waits inside a motion instruction (its program counter moved
+    /// on past it), not in a WaitTime or any other wait.
+    fn waits_for_robot(&self, idx: usize) -> bool {
+        let vm = &self.tasks[idx].loaded.vm;
+        if !self.waits_in_instruction(idx) {
+            return false;
+        }
+        let Some((code, pc)) = vm.top_position() else { return false };
+        let Some(stmt) = pc.checked_sub(1).and_then(|pc| code.stmt_at(pc)) else { return false };
+        let Some(text) = vm.program_source(code.file).and_then(|s| s.text.get(stmt.span.start as usize..)) else {
+            return false;
+        };
+        let word: String = text.chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '_').collect();
+        super::exec::is_motion_instruction(&word)
     }
 }

@@ -27,6 +27,7 @@ pub mod pause;
 mod position;
 mod readback;
 pub mod recorder;
+mod retime;
 pub mod robot;
 mod search;
 pub mod servo;
