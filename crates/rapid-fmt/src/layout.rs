@@ -16,11 +16,12 @@
 //! noted as their declarations go by: RAPID declares routine data before the
 //! statements, so every use follows.
 
-use std::sync::mpsc;
+use std::sync::mpsc::{self, TryRecvError};
 
 use rapid_syntax::lexer::Lexer;
 use rapid_syntax::token::TokenKind as T;
 use rapid_syntax::Span;
+use rustc_hash::FxHashSet;
 
 use crate::names::{spellings, Declared, Spellings};
 use crate::spacing::Spacer;
@@ -38,8 +39,42 @@ pub(crate) fn format(text: &str, config: &Config, declared: Declared, on_thread:
             f.piece(piece);
             f.failure.is_none()
         });
-        return f.finish();
+        return f.finish().into_result();
     }
+    on_threads(text, config, declared, None).into_result()
+}
+
+/// What a layout that started before the outline was parsed came to.
+pub(crate) enum Laid {
+    Done(Result<String, Refusal>),
+    /// A name the layout respelled before the outline came turned out to be declared
+    /// by the file: the layout must be done again, with the outline's names (here).
+    Again(Declared),
+}
+
+impl Laid {
+    fn into_result(self) -> Result<String, Refusal> {
+        match self {
+            Laid::Done(result) => result,
+            // Only a layout waiting for the outline starts again.
+            Laid::Again(_) => Err(Refusal::Unsafe { offset: 0, message: "the layout stopped".into() }),
+        }
+    }
+}
+
+/// Formats a long `text` on threads while its outline is still being parsed: the
+/// outline's names come through `outline` (it hangs up when the outline has errors).
+/// Until they come, built-in names are respelled as if the file declared none of
+/// them, and each name respelled is noted; when the outline comes, the layout goes
+/// on with its names if it declares none of the noted ones, and answers
+/// [`Laid::Again`] if it does. Either way the output is what the layout would have
+/// written with the outline's names from the start.
+pub(crate) fn format_before_outline(text: &str, config: &Config, outline: mpsc::Receiver<Declared>) -> Laid {
+    on_threads(text, config, Declared::default(), Some(outline))
+}
+
+/// The text lexed on one thread, laid out on this one, verified on a third.
+fn on_threads(text: &str, config: &Config, declared: Declared, outline: Option<mpsc::Receiver<Declared>>) -> Laid {
     // Each channel has a way back for the emptied buffers: they are used again, so
     // memory stays small and warm.
     let (chunks, received) = mpsc::sync_channel::<Chunk>(CHUNKS_IN_FLIGHT);
@@ -51,6 +86,7 @@ pub(crate) fn format(text: &str, config: &Config, declared: Declared, on_thread:
         let checker = scope.spawn(move || verify::chunks(text, received, &used_chunks));
         let to_verifier = ToVerifier { chunks, spare: spare_chunks };
         let mut f = Formatter::new(text, config, declared, Some(to_verifier));
+        f.outline = outline;
         'batches: for mut batch in pieces {
             for &piece in &batch {
                 f.piece(piece);
@@ -66,7 +102,10 @@ pub(crate) fn format(text: &str, config: &Config, declared: Declared, on_thread:
         let out = f.finish();
         let checked =
             checker.join().unwrap_or_else(|_| Err(Refusal::Unsafe { offset: 0, message: "the check failed".into() }));
-        checked.and(out)
+        match out {
+            Laid::Done(out) => Laid::Done(checked.and(out)),
+            again => again,
+        }
     })
 }
 
@@ -91,12 +130,13 @@ const BATCH_PIECES: usize = 1 << 13;
 /// before it, until the end or until `emit` answers false.
 fn lex(text: &str, mut emit: impl FnMut(Piece) -> bool) {
     let mut lexer = Lexer::new(text);
+    let bytes = text.as_bytes();
     let mut last_end = 0usize;
     loop {
         let token = lexer.next_token();
         if !lexer.comments.is_empty() {
             for comment in lexer.comments.drain(..) {
-                let newlines = count_newlines(&text[last_end..comment.start as usize]);
+                let newlines = count_newlines(&bytes[last_end..comment.start as usize]);
                 if !emit(Piece { kind: None, span: comment, newlines }) {
                     return;
                 }
@@ -106,7 +146,7 @@ fn lex(text: &str, mut emit: impl FnMut(Piece) -> bool) {
         if token.kind == T::Eof {
             return;
         }
-        let newlines = count_newlines(&text[last_end..token.span.start as usize]);
+        let newlines = count_newlines(&bytes[last_end..token.span.start as usize]);
         if !emit(Piece { kind: Some(token.kind), span: token.span, newlines }) {
             return;
         }
@@ -149,8 +189,10 @@ fn to_u32(n: usize) -> u32 {
     u32::try_from(n).unwrap_or(u32::MAX)
 }
 
-fn count_newlines(gap: &str) -> u32 {
-    gap.bytes().filter(|&b| b == b'\n').count().try_into().unwrap_or(u32::MAX)
+/// Line ends in the gap between two pieces (mostly empty or one space).
+fn count_newlines(gap: &[u8]) -> u32 {
+    let n: usize = gap.iter().map(|&b| usize::from(b == b'\n')).sum();
+    u32::try_from(n).unwrap_or(u32::MAX)
 }
 
 /// What a line opened, to be closed by its END keyword.
@@ -201,6 +243,12 @@ struct Formatter<'a> {
     /// The pieces laid out into `out[checked..]`, for the verifier.
     chunk_pieces: Vec<Piece>,
     failure: Option<Refusal>,
+    /// The outline's names, while they are still to come (`format_before_outline`).
+    outline: Option<mpsc::Receiver<Declared>>,
+    /// The names respelled while the outline was still to come.
+    respelled: FxHashSet<&'static str>,
+    /// The outline came and declares a name in `respelled`.
+    again: Option<Declared>,
 }
 
 impl<'a> Formatter<'a> {
@@ -227,6 +275,9 @@ impl<'a> Formatter<'a> {
             chunks,
             chunk_pieces: Vec::new(),
             failure: None,
+            outline: None,
+            respelled: FxHashSet::default(),
+            again: None,
         }
     }
 
@@ -309,21 +360,53 @@ impl<'a> Formatter<'a> {
         !continues
     }
 
-    fn finish(mut self) -> Result<String, Refusal> {
+    fn finish(mut self) -> Laid {
         if !self.unit.pieces.is_empty() && self.failure.is_none() {
             self.flush();
+        }
+        if self.failure.is_none() {
+            self.take_outline(true);
         }
         if self.chunks.is_some() {
             self.send_chunk();
             self.chunks = None;
         }
+        if let Some(declared) = self.again {
+            return Laid::Again(declared);
+        }
         if let Some(refusal) = self.failure {
-            return Err(refusal);
+            return Laid::Done(Err(refusal));
         }
         if !self.out.is_empty() {
             self.out.push_str(self.nl);
         }
-        Ok(self.out)
+        Laid::Done(Ok(self.out))
+    }
+
+    /// Takes the outline's names if they have come (or, with `wait`, once they come).
+    fn take_outline(&mut self, wait: bool) {
+        let Some(outline) = &self.outline else { return };
+        let received = if wait { outline.recv().map_err(|_| TryRecvError::Disconnected) } else { outline.try_recv() };
+        let mut declared = match received {
+            Ok(declared) => declared,
+            Err(TryRecvError::Empty) => return,
+            Err(TryRecvError::Disconnected) => {
+                // The outline has errors: the file is refused for them.
+                self.outline = None;
+                self.failure = Some(Refusal::Unsafe { offset: 0, message: "the outline failed".into() });
+                return;
+            }
+        };
+        self.outline = None;
+        if self.respelled.iter().any(|name| declared.contains(name)) {
+            self.again = Some(declared);
+            self.failure = Some(Refusal::Unsafe { offset: 0, message: "the layout starts again".into() });
+            return;
+        }
+        self.respelled = FxHashSet::default();
+        // The routines' names noted so far, and the outline's.
+        declared.merge(std::mem::take(&mut self.declared));
+        self.declared = declared;
     }
 
     /// Starts a line at `indent` after `newlines` line ends in the input.
@@ -344,6 +427,9 @@ impl<'a> Formatter<'a> {
 
     /// Writes the gathered unit and the comments after it.
     fn flush(&mut self) {
+        if self.outline.is_some() {
+            self.take_outline(false);
+        }
         let mut unit = std::mem::take(&mut self.unit);
         let last_token = unit.pieces.iter().rposition(|p| p.kind.is_some()).unwrap_or(0);
         let head = unit.head.unwrap_or(T::Eof);
@@ -494,6 +580,9 @@ impl<'a> Formatter<'a> {
             let argument_name = prev == Some(T::Backslash) && !is_header;
             if let Some(spelled) = self.spellings.get(word, argument_name) {
                 if !self.declared.contains(word) {
+                    if self.outline.is_some() {
+                        self.respelled.insert(spelled);
+                    }
                     self.scratch.push_str(spelled);
                     return;
                 }

@@ -124,6 +124,11 @@ impl Declared {
         }
     }
 
+    /// Adds every name of `other`.
+    pub(crate) fn merge(&mut self, other: Declared) {
+        self.0.extend(other.0);
+    }
+
     pub(crate) fn contains(&self, word: &str) -> bool {
         let mut buf = [0u8; LONGEST_NAME];
         fold(word, &mut buf).is_some_and(|folded| self.0.contains(folded))

@@ -236,3 +236,50 @@ fn long_files_lay_out_on_threads_as_short_ones_do() {
     assert!(on_one.contains("        ! step 8999\n\n\n        MoveL [[8999.5,0,1],"));
     assert!(on_one.contains("        IF x > 1 THEN ! check\n            x := x + 1; ! count\n        ENDIF\n"));
 }
+
+/// A long module whose outline declares `movel` (a routine of its own, after the
+/// statements that call it): every `movel` keeps its spelling, `moveJ` does not.
+fn long_module_declaring_movel() -> String {
+    let body = "movel;\nmoveJ p,v100,z1,tool0;\n".repeat(45_000);
+    format!("MODULE m\nPROC main()\n{body}ENDPROC\nPROC movel()\nENDPROC\nENDMODULE\n")
+}
+
+#[test]
+fn long_files_keep_names_their_outline_declares() {
+    // The layout starts before the outline is parsed: whatever it respelled meanwhile
+    // must come out as if it had known the outline's names from the start.
+    let text = long_module_declaring_movel();
+    assert!(text.len() > super::PARALLEL_THRESHOLD);
+    let out = format(&text, &Config::default()).unwrap();
+    assert!(out.starts_with("MODULE m\n    PROC main()\n        movel;\n        MoveJ p, v100, z1, tool0;\n"));
+    assert!(out.ends_with("        MoveJ p, v100, z1, tool0;\n    ENDPROC\n    PROC movel()\n    ENDPROC\nENDMODULE\n"));
+    assert!(!out.contains("MoveL"));
+}
+
+#[test]
+fn a_layout_that_respelled_a_declared_name_starts_again() {
+    // The outline comes late (after the layout respelled `movel` as `MoveL`, as the
+    // first statement calls it): the layout must answer that it starts again, with the
+    // outline's names, and never give the text it wrote.
+    let text = long_module_declaring_movel();
+    let declared = syntax::outline(&text).map_err(|_| "outline").unwrap().declared;
+    let (send, names) = std::sync::mpsc::sync_channel(1);
+    let late = std::thread::spawn(move || {
+        std::thread::sleep(std::time::Duration::from_millis(300));
+        let _ = send.send(declared);
+    });
+    let laid = layout::format_before_outline(&text, &Config::default(), names);
+    late.join().unwrap();
+    let layout::Laid::Again(declared) = laid else { panic!("the layout did not start again") };
+    let again = layout::format(&text, &Config::default(), declared, true).unwrap();
+    assert_eq!(again, format(&text, &Config::default()).unwrap());
+    assert!(again.contains("        movel;\n") && !again.contains("MoveL"));
+}
+
+#[test]
+fn long_files_with_outline_errors_are_refused_for_them() {
+    // The layout runs while the outline is parsed; the outline's errors still refuse
+    // the file, as they do a short one.
+    let text = long_module_declaring_movel().replace("PROC movel()", "PROC movel(");
+    assert!(matches!(format(&text, &Config::default()), Err(Refusal::SyntaxErrors(errors)) if !errors.is_empty()));
+}
