@@ -30,10 +30,9 @@ use crate::wrap::{lay_out, Atom, AtomKind, Frame, Shape, Statement};
 use crate::{Config, Refusal};
 
 /// Formats `text`, which has no syntax errors in its outline; `declared` holds the
-/// names the outline declares. With `on_thread`, the text is lexed on one thread and
-/// the output verified on another, in chunks, while the layout goes on.
-pub(crate) fn format(text: &str, config: &Config, declared: Declared, on_thread: bool) -> Result<String, Refusal> {
-    if !on_thread {
+/// names the outline declares, `threads` how the work is shared.
+pub(crate) fn format(text: &str, config: &Config, declared: Declared, threads: Threads) -> Result<String, Refusal> {
+    if threads == Threads::One {
         let mut f = Formatter::new(text, config, declared, None);
         lex(text, |piece| {
             f.piece(piece);
@@ -41,7 +40,33 @@ pub(crate) fn format(text: &str, config: &Config, declared: Declared, on_thread:
         });
         return f.finish().into_result();
     }
-    on_threads(text, config, declared, None).into_result()
+    on_threads(text, config, declared, None, threads).into_result()
+}
+
+/// How a layout shares its work with other threads.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Threads {
+    /// None: each statement is verified as soon as it is written.
+    One,
+    /// The output is verified on a second thread, in chunks.
+    Verifier,
+    /// The text is also lexed on a third thread, which hands its pieces over in batches.
+    LexerAndVerifier,
+}
+
+impl Threads {
+    /// For a long file, which also has its bodies parsed on a thread of their own: the
+    /// lexer gets a thread only where there are more than two cores. On two, the body
+    /// parser, the layout and the verifier keep both busy already, and handing the
+    /// pieces over in batches costs more than it spreads (about 7 % of the CPU time on
+    /// the CAM module, mostly in writing and reading back the batches); with more cores
+    /// the lexer's thread takes its part off the layout's, which bounds the run.
+    pub(crate) fn for_long_file() -> Threads {
+        match std::thread::available_parallelism() {
+            Ok(cores) if cores.get() > 2 => Threads::LexerAndVerifier,
+            _ => Threads::Verifier,
+        }
+    }
 }
 
 /// What a layout that started before the outline was parsed came to.
@@ -69,36 +94,55 @@ impl Laid {
 /// on with its names if it declares none of the noted ones, and answers
 /// [`Laid::Again`] if it does. Either way the output is what the layout would have
 /// written with the outline's names from the start.
-pub(crate) fn format_before_outline(text: &str, config: &Config, outline: mpsc::Receiver<Declared>) -> Laid {
-    on_threads(text, config, Declared::default(), Some(outline))
+pub(crate) fn format_before_outline(
+    text: &str,
+    config: &Config,
+    outline: mpsc::Receiver<Declared>,
+    threads: Threads,
+) -> Laid {
+    on_threads(text, config, Declared::default(), Some(outline), threads)
 }
 
-/// The text lexed on one thread, laid out on this one, verified on a third.
-fn on_threads(text: &str, config: &Config, declared: Declared, outline: Option<mpsc::Receiver<Declared>>) -> Laid {
+/// The text laid out on this thread and verified on another, in chunks; lexed on a
+/// third with [`Threads::LexerAndVerifier`].
+fn on_threads(
+    text: &str,
+    config: &Config,
+    declared: Declared,
+    outline: Option<mpsc::Receiver<Declared>>,
+    threads: Threads,
+) -> Laid {
     // Each channel has a way back for the emptied buffers: they are used again, so
     // memory stays small and warm.
     let (chunks, received) = mpsc::sync_channel::<Chunk>(CHUNKS_IN_FLIGHT);
     let (used_chunks, spare_chunks) = mpsc::channel::<Chunk>();
-    let (lexed, pieces) = mpsc::sync_channel::<Vec<Piece>>(CHUNKS_IN_FLIGHT);
-    let (used_batches, spare_batches) = mpsc::channel::<Vec<Piece>>();
     std::thread::scope(|scope| {
-        scope.spawn(move || lex_in_batches(text, &lexed, &spare_batches));
         let checker = scope.spawn(move || verify::chunks(text, received, &used_chunks));
         let to_verifier = ToVerifier { chunks, spare: spare_chunks };
         let mut f = Formatter::new(text, config, declared, Some(to_verifier));
         f.outline = outline;
-        'batches: for mut batch in pieces {
-            for &piece in &batch {
-                f.piece(piece);
-                if f.failure.is_some() {
-                    break 'batches;
+        if threads == Threads::LexerAndVerifier {
+            let (lexed, pieces) = mpsc::sync_channel::<Vec<Piece>>(CHUNKS_IN_FLIGHT);
+            let (used_batches, spare_batches) = mpsc::channel::<Vec<Piece>>();
+            scope.spawn(move || lex_in_batches(text, &lexed, &spare_batches));
+            'batches: for mut batch in pieces {
+                for &piece in &batch {
+                    f.piece(piece);
+                    if f.failure.is_some() {
+                        break 'batches;
+                    }
                 }
+                batch.clear();
+                // The lexer may be done already: then the buffer is not needed.
+                let _ = used_batches.send(batch);
             }
-            batch.clear();
-            // The lexer may be done already: then the buffer is not needed.
-            let _ = used_batches.send(batch);
+            // Dropping `pieces` (moved into the loop) stops the lexer early on a failure.
+        } else {
+            lex(text, |piece| {
+                f.piece(piece);
+                f.failure.is_none()
+            });
         }
-        // Dropping `pieces` (moved into the loop) stops the lexer early on a failure.
         let out = f.finish();
         let checked =
             checker.join().unwrap_or_else(|_| Err(Refusal::Unsafe { offset: 0, message: "the check failed".into() }));
@@ -508,7 +552,7 @@ impl<'a> Formatter<'a> {
         for piece in pieces {
             let atom = match piece.kind {
                 Some(kind) => {
-                    let depth = u32::try_from(spacer.open.len()).unwrap_or(u32::MAX);
+                    let depth = to_u32(spacer.open.len());
                     let space = spacer.push(kind);
                     if space {
                         self.scratch.push(' ');
@@ -516,14 +560,17 @@ impl<'a> Formatter<'a> {
                     let start = self.scratch.len();
                     self.token_text(kind, piece.span, prev, is_header);
                     let end = self.scratch.len();
-                    let text_width = self.width(start, end);
+                    let text_width = if self.ascii { end - start } else { width_of(&self.scratch[start..end]) };
                     if prev.is_none() {
                         first_width = text_width;
                     }
                     prev = Some(kind);
-                    let comma = kind == T::Comma;
-                    let opens = matches!(kind, T::LParen | T::LBracket | T::LBrace);
-                    let closes = matches!(kind, T::RParen | T::RBracket | T::RBrace);
+                    let (comma, opens, closes) = match kind {
+                        T::Comma => (true, false, false),
+                        T::LParen | T::LBracket | T::LBrace => (false, true, false),
+                        T::RParen | T::RBracket | T::RBrace => (false, false, true),
+                        _ => (false, false, false),
+                    };
                     let depth = if closes { depth.saturating_sub(1) } else { depth };
                     let kind = AtomKind::Token { depth, comma, opens, closes };
                     Atom { start: to_u32(start), width: to_u32(text_width + usize::from(space)), space, kind }

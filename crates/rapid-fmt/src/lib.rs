@@ -67,7 +67,7 @@ pub fn format(text: &str, config: &Config) -> Result<String, Refusal> {
     if !body_errors.is_empty() {
         return Err(Refusal::SyntaxErrors(body_errors));
     }
-    layout::format(text, config, outline.declared, false)
+    layout::format(text, config, outline.declared, layout::Threads::One)
 }
 
 /// A long file (CAM output) keeps two cores busy: one thread parses the outline, then
@@ -76,6 +76,7 @@ pub fn format(text: &str, config: &Config) -> Result<String, Refusal> {
 /// are those of [`format`] on one thread, in the same order: the outline's errors,
 /// then the bodies', then an unsafe layout.
 fn format_long(text: &str, config: &Config) -> Result<String, Refusal> {
+    let threads = layout::Threads::for_long_file();
     let (parsed, laid) = std::thread::scope(|scope| {
         let (send_names, names) = std::sync::mpsc::sync_channel(1);
         let parser = scope.spawn(move || {
@@ -87,7 +88,7 @@ fn format_long(text: &str, config: &Config) -> Result<String, Refusal> {
                 errors => Err(errors),
             }
         });
-        let laid = layout::format_before_outline(text, config, names);
+        let laid = layout::format_before_outline(text, config, names, threads);
         let parsed = parser.join().unwrap_or_else(|_| {
             Err(vec![SyntaxError {
                 kind: rapid_syntax::SyntaxErrorKind::UnexpectedToken,
@@ -100,7 +101,7 @@ fn format_long(text: &str, config: &Config) -> Result<String, Refusal> {
     parsed.map_err(Refusal::SyntaxErrors)?;
     match laid {
         layout::Laid::Done(out) => out,
-        layout::Laid::Again(declared) => layout::format(text, config, declared, true),
+        layout::Laid::Again(declared) => layout::format(text, config, declared, threads),
     }
 }
 

@@ -2,6 +2,7 @@
 //! rules in docs/fmt.md.
 
 use super::*;
+use crate::layout::Threads;
 
 fn fmt(text: &str) -> String {
     fmt_with(text, &Config::default())
@@ -214,9 +215,9 @@ fn long_files_are_parsed_while_laid_out() {
 
 #[test]
 fn long_files_lay_out_on_threads_as_short_ones_do() {
-    // Over 1 MB: lexed, laid out and verified on three threads, in batches and chunks
-    // whose edges fall anywhere in the file; the result must be what one thread
-    // writes, comments, blank lines and wrapped lines included.
+    // Over 1 MB: verified on a second thread in chunks, and lexed on a third in
+    // batches, whose edges fall anywhere in the file; the result must be what one
+    // thread writes, comments, blank lines and wrapped lines included.
     let mut body = String::new();
     for i in 0..9_000 {
         body.push_str(&format!("! step {i}\n\n\n\nmovel [[{i}.5,0,1],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]],v100,z1,tool0\\wobj:=wobj0;\n"));
@@ -229,9 +230,11 @@ fn long_files_lay_out_on_threads_as_short_ones_do() {
     assert!(text.len() > super::PARALLEL_THRESHOLD);
     let config = Config::default();
     let declared = || syntax::outline(&text).map_err(|_| "outline").unwrap().declared;
-    let on_threads = layout::format(&text, &config, declared(), true).unwrap();
-    let on_one = layout::format(&text, &config, declared(), false).unwrap();
-    assert!(on_threads == on_one, "the threaded layout differs");
+    let on_one = layout::format(&text, &config, declared(), Threads::One).unwrap();
+    let on_two = layout::format(&text, &config, declared(), Threads::Verifier).unwrap();
+    assert!(on_two == on_one, "the layout verified on a thread differs");
+    let on_three = layout::format(&text, &config, declared(), Threads::LexerAndVerifier).unwrap();
+    assert!(on_three == on_one, "the layout lexed and verified on threads differs");
     // Spot checks worked out by hand from the rules.
     assert!(on_one.contains("        ! step 8999\n\n\n        MoveL [[8999.5,0,1],"));
     assert!(on_one.contains("        IF x > 1 THEN ! check\n            x := x + 1; ! count\n        ENDIF\n"));
@@ -268,10 +271,10 @@ fn a_layout_that_respelled_a_declared_name_starts_again() {
         std::thread::sleep(std::time::Duration::from_millis(300));
         let _ = send.send(declared);
     });
-    let laid = layout::format_before_outline(&text, &Config::default(), names);
+    let laid = layout::format_before_outline(&text, &Config::default(), names, Threads::Verifier);
     late.join().unwrap();
     let layout::Laid::Again(declared) = laid else { panic!("the layout did not start again") };
-    let again = layout::format(&text, &Config::default(), declared, true).unwrap();
+    let again = layout::format(&text, &Config::default(), declared, Threads::LexerAndVerifier).unwrap();
     assert_eq!(again, format(&text, &Config::default()).unwrap());
     assert!(again.contains("        movel;\n") && !again.contains("MoveL"));
 }
