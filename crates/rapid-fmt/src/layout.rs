@@ -635,7 +635,12 @@ impl<'a> Formatter<'a> {
                 }
             }
         }
-        self.scratch.push_str(word);
+        match word.as_bytes() {
+            // Most tokens are one byte of punctuation (a one-byte text is ASCII): pushed
+            // as a character, not copied by a call.
+            &[byte] => self.scratch.push(char::from(byte)),
+            _ => self.scratch.push_str(word),
+        }
     }
 }
 
