@@ -293,6 +293,46 @@ struct Formatter<'a> {
     respelled: FxHashSet<&'static str>,
     /// The outline came and declares a name in `respelled`.
     again: Option<Declared>,
+    /// Spellings decided lately (a CAM module spells the same few names on every line).
+    recent: Recent<'a>,
+}
+
+/// Names as written, each with the spelling it gets (`None`: kept as written), in
+/// slots picked by length and first and last letters; a name meets only its own slot,
+/// and a slot holds the last name that met it. Emptied whenever the declared names
+/// grow, so a spelling here is always the one the catalogue and `declared` give.
+struct Recent<'a> {
+    slots: [Option<(&'a str, bool, Option<&'static str>)>; RECENT_SLOTS],
+}
+
+const RECENT_SLOTS: usize = 64;
+
+impl<'a> Recent<'a> {
+    fn new() -> Recent<'a> {
+        Recent { slots: [None; RECENT_SLOTS] }
+    }
+
+    fn slot(word: &str) -> usize {
+        let bytes = word.as_bytes();
+        let (first, last) = (bytes.first().copied().unwrap_or(0), bytes.last().copied().unwrap_or(0));
+        (bytes.len() ^ usize::from(first).wrapping_mul(7) ^ usize::from(last).wrapping_mul(31)) % RECENT_SLOTS
+    }
+
+    /// The spelling decided for `word` (after `\` or not), if it is here.
+    fn get(&self, word: &str, after_backslash: bool) -> Option<Option<&'static str>> {
+        match self.slots[Recent::slot(word)] {
+            Some((seen, after, spelled)) if after == after_backslash && seen == word => Some(spelled),
+            _ => None,
+        }
+    }
+
+    fn put(&mut self, word: &'a str, after_backslash: bool, spelled: Option<&'static str>) {
+        self.slots[Recent::slot(word)] = Some((word, after_backslash, spelled));
+    }
+
+    fn clear(&mut self) {
+        self.slots = [None; RECENT_SLOTS];
+    }
 }
 
 impl<'a> Formatter<'a> {
@@ -322,6 +362,7 @@ impl<'a> Formatter<'a> {
             outline: None,
             respelled: FxHashSet::default(),
             again: None,
+            recent: Recent::new(),
         }
     }
 
@@ -451,6 +492,7 @@ impl<'a> Formatter<'a> {
         // The routines' names noted so far, and the outline's.
         declared.merge(std::mem::take(&mut self.declared));
         self.declared = declared;
+        self.recent.clear();
     }
 
     /// Starts a line at `indent` after `newlines` line ends in the input.
@@ -534,6 +576,7 @@ impl<'a> Formatter<'a> {
         };
         if let Some(piece) = name.filter(|p| p.kind == Some(T::Ident)) {
             self.declared.add(piece.span.text(self.text));
+            self.recent.clear();
         }
     }
 
@@ -625,14 +668,20 @@ impl<'a> Formatter<'a> {
         if kind == T::Ident && prev != Some(T::Dot) {
             // In a routine header, `\` is followed by a parameter's type.
             let argument_name = prev == Some(T::Backslash) && !is_header;
-            if let Some(spelled) = self.spellings.get(word, argument_name) {
-                if !self.declared.contains(word) {
-                    if self.outline.is_some() {
-                        self.respelled.insert(spelled);
-                    }
-                    self.scratch.push_str(spelled);
-                    return;
+            let spelled = match self.recent.get(word, argument_name) {
+                Some(spelled) => spelled,
+                None => {
+                    let spelled = self.spellings.get(word, argument_name).filter(|_| !self.declared.contains(word));
+                    self.recent.put(word, argument_name, spelled);
+                    spelled
                 }
+            };
+            if let Some(spelled) = spelled {
+                if self.outline.is_some() {
+                    self.respelled.insert(spelled);
+                }
+                self.scratch.push_str(spelled);
+                return;
             }
         }
         match word.as_bytes() {

@@ -286,3 +286,26 @@ fn long_files_with_outline_errors_are_refused_for_them() {
     let text = long_module_declaring_movel().replace("PROC movel()", "PROC movel(");
     assert!(matches!(format(&text, &Config::default()), Err(Refusal::SyntaxErrors(errors)) if !errors.is_empty()));
 }
+
+#[test]
+fn a_name_declared_after_it_was_respelled_keeps_its_spelling_from_there() {
+    // `movel` in `a` is the instruction; `b` declares a local `movel`, which keeps its
+    // spelling from its declaration on (the layout notes locals as they go by, and the
+    // spellings it remembers between statements must not outlive that).
+    let input = "MODULE m\nPROC a()\nmovel p,v100,z1,tool0;\nENDPROC\nPROC b()\nVAR num movel;\nmovel:=1;\nENDPROC\nPROC c()\nmovel p,v100,z1,tool0;\nENDPROC\nENDMODULE\n";
+    let expected = "\
+MODULE m
+    PROC a()
+        MoveL p, v100, z1, tool0;
+    ENDPROC
+    PROC b()
+        VAR num movel;
+        movel := 1;
+    ENDPROC
+    PROC c()
+        movel p, v100, z1, tool0;
+    ENDPROC
+ENDMODULE
+";
+    assert_eq!(fmt(input), expected);
+}
