@@ -16,11 +16,12 @@
 //! noted as their declarations go by: RAPID declares routine data before the
 //! statements, so every use follows.
 
-use std::sync::mpsc;
+use std::sync::mpsc::{self, TryRecvError};
 
 use rapid_syntax::lexer::Lexer;
 use rapid_syntax::token::TokenKind as T;
 use rapid_syntax::Span;
+use rustc_hash::FxHashSet;
 
 use crate::names::{spellings, Declared, Spellings};
 use crate::spacing::Spacer;
@@ -29,44 +30,126 @@ use crate::wrap::{lay_out, Atom, AtomKind, Frame, Shape, Statement};
 use crate::{Config, Refusal};
 
 /// Formats `text`, which has no syntax errors in its outline; `declared` holds the
-/// names the outline declares. With `on_thread`, the text is lexed on one thread and
-/// the output verified on another, in chunks, while the layout goes on.
-pub(crate) fn format(text: &str, config: &Config, declared: Declared, on_thread: bool) -> Result<String, Refusal> {
-    if !on_thread {
+/// names the outline declares, `threads` how the work is shared.
+pub(crate) fn format(text: &str, config: &Config, declared: Declared, threads: Threads) -> Result<String, Refusal> {
+    if threads == Threads::One {
         let mut f = Formatter::new(text, config, declared, None);
         lex(text, |piece| {
             f.piece(piece);
             f.failure.is_none()
         });
-        return f.finish();
+        return f.finish().into_result();
     }
+    on_threads(text, config, declared, None, threads).into_result()
+}
+
+/// How a layout shares its work with other threads.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Threads {
+    /// None: each statement is verified as soon as it is written.
+    One,
+    /// The output is verified on a second thread, in chunks.
+    Verifier,
+    /// The text is also lexed on a third thread, which hands its pieces over in batches.
+    LexerAndVerifier,
+}
+
+impl Threads {
+    /// For a long file, which also has its bodies parsed on a thread of their own: the
+    /// lexer gets a thread only where there are more than two cores. On two, the body
+    /// parser, the layout and the verifier keep both busy already, and handing the
+    /// pieces over in batches costs more than it spreads (about 7 % of the CPU time on
+    /// the CAM module, mostly in writing and reading back the batches); with more cores
+    /// the lexer's thread takes its part off the layout's, which bounds the run.
+    pub(crate) fn for_long_file() -> Threads {
+        match std::thread::available_parallelism() {
+            Ok(cores) if cores.get() > 2 => Threads::LexerAndVerifier,
+            _ => Threads::Verifier,
+        }
+    }
+}
+
+/// What a layout that started before the outline was parsed came to.
+pub(crate) enum Laid {
+    Done(Result<String, Refusal>),
+    /// A name the layout respelled before the outline came turned out to be declared
+    /// by the file: the layout must be done again, with the outline's names (here).
+    Again(Declared),
+}
+
+impl Laid {
+    fn into_result(self) -> Result<String, Refusal> {
+        match self {
+            Laid::Done(result) => result,
+            // Only a layout waiting for the outline starts again.
+            Laid::Again(_) => Err(Refusal::Unsafe { offset: 0, message: "the layout stopped".into() }),
+        }
+    }
+}
+
+/// Formats a long `text` on threads while its outline is still being parsed: the
+/// outline's names come through `outline` (it hangs up when the outline has errors).
+/// Until they come, built-in names are respelled as if the file declared none of
+/// them, and each name respelled is noted; when the outline comes, the layout goes
+/// on with its names if it declares none of the noted ones, and answers
+/// [`Laid::Again`] if it does. Either way the output is what the layout would have
+/// written with the outline's names from the start.
+pub(crate) fn format_before_outline(
+    text: &str,
+    config: &Config,
+    outline: mpsc::Receiver<Declared>,
+    threads: Threads,
+) -> Laid {
+    on_threads(text, config, Declared::default(), Some(outline), threads)
+}
+
+/// The text laid out on this thread and verified on another, in chunks; lexed on a
+/// third with [`Threads::LexerAndVerifier`].
+fn on_threads(
+    text: &str,
+    config: &Config,
+    declared: Declared,
+    outline: Option<mpsc::Receiver<Declared>>,
+    threads: Threads,
+) -> Laid {
     // Each channel has a way back for the emptied buffers: they are used again, so
     // memory stays small and warm.
     let (chunks, received) = mpsc::sync_channel::<Chunk>(CHUNKS_IN_FLIGHT);
     let (used_chunks, spare_chunks) = mpsc::channel::<Chunk>();
-    let (lexed, pieces) = mpsc::sync_channel::<Vec<Piece>>(CHUNKS_IN_FLIGHT);
-    let (used_batches, spare_batches) = mpsc::channel::<Vec<Piece>>();
     std::thread::scope(|scope| {
-        scope.spawn(move || lex_in_batches(text, &lexed, &spare_batches));
         let checker = scope.spawn(move || verify::chunks(text, received, &used_chunks));
         let to_verifier = ToVerifier { chunks, spare: spare_chunks };
         let mut f = Formatter::new(text, config, declared, Some(to_verifier));
-        'batches: for mut batch in pieces {
-            for &piece in &batch {
-                f.piece(piece);
-                if f.failure.is_some() {
-                    break 'batches;
+        f.outline = outline;
+        if threads == Threads::LexerAndVerifier {
+            let (lexed, pieces) = mpsc::sync_channel::<Vec<Piece>>(CHUNKS_IN_FLIGHT);
+            let (used_batches, spare_batches) = mpsc::channel::<Vec<Piece>>();
+            scope.spawn(move || lex_in_batches(text, &lexed, &spare_batches));
+            'batches: for mut batch in pieces {
+                for &piece in &batch {
+                    f.piece(piece);
+                    if f.failure.is_some() {
+                        break 'batches;
+                    }
                 }
+                batch.clear();
+                // The lexer may be done already: then the buffer is not needed.
+                let _ = used_batches.send(batch);
             }
-            batch.clear();
-            // The lexer may be done already: then the buffer is not needed.
-            let _ = used_batches.send(batch);
+            // Dropping `pieces` (moved into the loop) stops the lexer early on a failure.
+        } else {
+            lex(text, |piece| {
+                f.piece(piece);
+                f.failure.is_none()
+            });
         }
-        // Dropping `pieces` (moved into the loop) stops the lexer early on a failure.
         let out = f.finish();
         let checked =
             checker.join().unwrap_or_else(|_| Err(Refusal::Unsafe { offset: 0, message: "the check failed".into() }));
-        checked.and(out)
+        match out {
+            Laid::Done(out) => Laid::Done(checked.and(out)),
+            again => again,
+        }
     })
 }
 
@@ -91,12 +174,13 @@ const BATCH_PIECES: usize = 1 << 13;
 /// before it, until the end or until `emit` answers false.
 fn lex(text: &str, mut emit: impl FnMut(Piece) -> bool) {
     let mut lexer = Lexer::new(text);
+    let bytes = text.as_bytes();
     let mut last_end = 0usize;
     loop {
         let token = lexer.next_token();
         if !lexer.comments.is_empty() {
             for comment in lexer.comments.drain(..) {
-                let newlines = count_newlines(&text[last_end..comment.start as usize]);
+                let newlines = count_newlines(&bytes[last_end..comment.start as usize]);
                 if !emit(Piece { kind: None, span: comment, newlines }) {
                     return;
                 }
@@ -106,7 +190,7 @@ fn lex(text: &str, mut emit: impl FnMut(Piece) -> bool) {
         if token.kind == T::Eof {
             return;
         }
-        let newlines = count_newlines(&text[last_end..token.span.start as usize]);
+        let newlines = count_newlines(&bytes[last_end..token.span.start as usize]);
         if !emit(Piece { kind: Some(token.kind), span: token.span, newlines }) {
             return;
         }
@@ -149,8 +233,10 @@ fn to_u32(n: usize) -> u32 {
     u32::try_from(n).unwrap_or(u32::MAX)
 }
 
-fn count_newlines(gap: &str) -> u32 {
-    gap.bytes().filter(|&b| b == b'\n').count().try_into().unwrap_or(u32::MAX)
+/// Line ends in the gap between two pieces (mostly empty or one space).
+fn count_newlines(gap: &[u8]) -> u32 {
+    let n: usize = gap.iter().map(|&b| usize::from(b == b'\n')).sum();
+    u32::try_from(n).unwrap_or(u32::MAX)
 }
 
 /// What a line opened, to be closed by its END keyword.
@@ -201,6 +287,52 @@ struct Formatter<'a> {
     /// The pieces laid out into `out[checked..]`, for the verifier.
     chunk_pieces: Vec<Piece>,
     failure: Option<Refusal>,
+    /// The outline's names, while they are still to come (`format_before_outline`).
+    outline: Option<mpsc::Receiver<Declared>>,
+    /// The names respelled while the outline was still to come.
+    respelled: FxHashSet<&'static str>,
+    /// The outline came and declares a name in `respelled`.
+    again: Option<Declared>,
+    /// Spellings decided lately (a CAM module spells the same few names on every line).
+    recent: Recent<'a>,
+}
+
+/// Names as written, each with the spelling it gets (`None`: kept as written), in
+/// slots picked by length and first and last letters; a name meets only its own slot,
+/// and a slot holds the last name that met it. Emptied whenever the declared names
+/// grow, so a spelling here is always the one the catalogue and `declared` give.
+struct Recent<'a> {
+    slots: [Option<(&'a str, bool, Option<&'static str>)>; RECENT_SLOTS],
+}
+
+const RECENT_SLOTS: usize = 64;
+
+impl<'a> Recent<'a> {
+    fn new() -> Recent<'a> {
+        Recent { slots: [None; RECENT_SLOTS] }
+    }
+
+    fn slot(word: &str) -> usize {
+        let bytes = word.as_bytes();
+        let (first, last) = (bytes.first().copied().unwrap_or(0), bytes.last().copied().unwrap_or(0));
+        (bytes.len() ^ usize::from(first).wrapping_mul(7) ^ usize::from(last).wrapping_mul(31)) % RECENT_SLOTS
+    }
+
+    /// The spelling decided for `word` (after `\` or not), if it is here.
+    fn get(&self, word: &str, after_backslash: bool) -> Option<Option<&'static str>> {
+        match self.slots[Recent::slot(word)] {
+            Some((seen, after, spelled)) if after == after_backslash && seen == word => Some(spelled),
+            _ => None,
+        }
+    }
+
+    fn put(&mut self, word: &'a str, after_backslash: bool, spelled: Option<&'static str>) {
+        self.slots[Recent::slot(word)] = Some((word, after_backslash, spelled));
+    }
+
+    fn clear(&mut self) {
+        self.slots = [None; RECENT_SLOTS];
+    }
 }
 
 impl<'a> Formatter<'a> {
@@ -227,6 +359,10 @@ impl<'a> Formatter<'a> {
             chunks,
             chunk_pieces: Vec::new(),
             failure: None,
+            outline: None,
+            respelled: FxHashSet::default(),
+            again: None,
+            recent: Recent::new(),
         }
     }
 
@@ -309,21 +445,54 @@ impl<'a> Formatter<'a> {
         !continues
     }
 
-    fn finish(mut self) -> Result<String, Refusal> {
+    fn finish(mut self) -> Laid {
         if !self.unit.pieces.is_empty() && self.failure.is_none() {
             self.flush();
+        }
+        if self.failure.is_none() {
+            self.take_outline(true);
         }
         if self.chunks.is_some() {
             self.send_chunk();
             self.chunks = None;
         }
+        if let Some(declared) = self.again {
+            return Laid::Again(declared);
+        }
         if let Some(refusal) = self.failure {
-            return Err(refusal);
+            return Laid::Done(Err(refusal));
         }
         if !self.out.is_empty() {
             self.out.push_str(self.nl);
         }
-        Ok(self.out)
+        Laid::Done(Ok(self.out))
+    }
+
+    /// Takes the outline's names if they have come (or, with `wait`, once they come).
+    fn take_outline(&mut self, wait: bool) {
+        let Some(outline) = &self.outline else { return };
+        let received = if wait { outline.recv().map_err(|_| TryRecvError::Disconnected) } else { outline.try_recv() };
+        let mut declared = match received {
+            Ok(declared) => declared,
+            Err(TryRecvError::Empty) => return,
+            Err(TryRecvError::Disconnected) => {
+                // The outline has errors: the file is refused for them.
+                self.outline = None;
+                self.failure = Some(Refusal::Unsafe { offset: 0, message: "the outline failed".into() });
+                return;
+            }
+        };
+        self.outline = None;
+        if self.respelled.iter().any(|name| declared.contains(name)) {
+            self.again = Some(declared);
+            self.failure = Some(Refusal::Unsafe { offset: 0, message: "the layout starts again".into() });
+            return;
+        }
+        self.respelled = FxHashSet::default();
+        // The routines' names noted so far, and the outline's.
+        declared.merge(std::mem::take(&mut self.declared));
+        self.declared = declared;
+        self.recent.clear();
     }
 
     /// Starts a line at `indent` after `newlines` line ends in the input.
@@ -344,6 +513,9 @@ impl<'a> Formatter<'a> {
 
     /// Writes the gathered unit and the comments after it.
     fn flush(&mut self) {
+        if self.outline.is_some() {
+            self.take_outline(false);
+        }
         let mut unit = std::mem::take(&mut self.unit);
         let last_token = unit.pieces.iter().rposition(|p| p.kind.is_some()).unwrap_or(0);
         let head = unit.head.unwrap_or(T::Eof);
@@ -404,6 +576,7 @@ impl<'a> Formatter<'a> {
         };
         if let Some(piece) = name.filter(|p| p.kind == Some(T::Ident)) {
             self.declared.add(piece.span.text(self.text));
+            self.recent.clear();
         }
     }
 
@@ -422,7 +595,7 @@ impl<'a> Formatter<'a> {
         for piece in pieces {
             let atom = match piece.kind {
                 Some(kind) => {
-                    let depth = u32::try_from(spacer.open.len()).unwrap_or(u32::MAX);
+                    let depth = to_u32(spacer.open.len());
                     let space = spacer.push(kind);
                     if space {
                         self.scratch.push(' ');
@@ -430,14 +603,17 @@ impl<'a> Formatter<'a> {
                     let start = self.scratch.len();
                     self.token_text(kind, piece.span, prev, is_header);
                     let end = self.scratch.len();
-                    let text_width = self.width(start, end);
+                    let text_width = if self.ascii { end - start } else { width_of(&self.scratch[start..end]) };
                     if prev.is_none() {
                         first_width = text_width;
                     }
                     prev = Some(kind);
-                    let comma = kind == T::Comma;
-                    let opens = matches!(kind, T::LParen | T::LBracket | T::LBrace);
-                    let closes = matches!(kind, T::RParen | T::RBracket | T::RBrace);
+                    let (comma, opens, closes) = match kind {
+                        T::Comma => (true, false, false),
+                        T::LParen | T::LBracket | T::LBrace => (false, true, false),
+                        T::RParen | T::RBracket | T::RBrace => (false, false, true),
+                        _ => (false, false, false),
+                    };
                     let depth = if closes { depth.saturating_sub(1) } else { depth };
                     let kind = AtomKind::Token { depth, comma, opens, closes };
                     Atom { start: to_u32(start), width: to_u32(text_width + usize::from(space)), space, kind }
@@ -492,14 +668,28 @@ impl<'a> Formatter<'a> {
         if kind == T::Ident && prev != Some(T::Dot) {
             // In a routine header, `\` is followed by a parameter's type.
             let argument_name = prev == Some(T::Backslash) && !is_header;
-            if let Some(spelled) = self.spellings.get(word, argument_name) {
-                if !self.declared.contains(word) {
-                    self.scratch.push_str(spelled);
-                    return;
+            let spelled = match self.recent.get(word, argument_name) {
+                Some(spelled) => spelled,
+                None => {
+                    let spelled = self.spellings.get(word, argument_name).filter(|_| !self.declared.contains(word));
+                    self.recent.put(word, argument_name, spelled);
+                    spelled
                 }
+            };
+            if let Some(spelled) = spelled {
+                if self.outline.is_some() {
+                    self.respelled.insert(spelled);
+                }
+                self.scratch.push_str(spelled);
+                return;
             }
         }
-        self.scratch.push_str(word);
+        match word.as_bytes() {
+            // Most tokens are one byte of punctuation (a one-byte text is ASCII): pushed
+            // as a character, not copied by a call.
+            &[byte] => self.scratch.push(char::from(byte)),
+            _ => self.scratch.push_str(word),
+        }
     }
 }
 

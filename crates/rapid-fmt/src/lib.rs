@@ -59,29 +59,50 @@ pub enum Refusal {
 /// Formats one module's text. `Ok` holds the new text (equal to `text` when nothing
 /// changes).
 pub fn format(text: &str, config: &Config) -> Result<String, Refusal> {
+    if text.len() >= PARALLEL_THRESHOLD {
+        return format_long(text, config);
+    }
     let outline = syntax::outline(text).map_err(Refusal::SyntaxErrors)?;
-    // The routine bodies are parsed for their errors, and the output is verified,
-    // while the layout runs: a long file (CAM output) keeps two cores busy.
-    let (body_errors, out) = if text.len() < PARALLEL_THRESHOLD {
-        (syntax::body_errors(text, outline.bodies), layout::format(text, config, outline.declared, false))
-    } else {
-        std::thread::scope(|scope| {
-            let checker = scope.spawn(|| syntax::body_errors(text, outline.bodies));
-            let out = layout::format(text, config, outline.declared, true);
-            let errors = checker.join().unwrap_or_else(|_| {
-                vec![SyntaxError {
-                    kind: rapid_syntax::SyntaxErrorKind::UnexpectedToken,
-                    span: rapid_syntax::Span::new(0, 0),
-                    message: "the parser failed".into(),
-                }]
-            });
-            (errors, out)
-        })
-    };
+    let body_errors = syntax::body_errors(text, outline.bodies);
     if !body_errors.is_empty() {
         return Err(Refusal::SyntaxErrors(body_errors));
     }
-    out
+    layout::format(text, config, outline.declared, layout::Threads::One)
+}
+
+/// A long file (CAM output) keeps two cores busy: one thread parses the outline, then
+/// the routine bodies, for syntax errors, while the layout starts at once (with the
+/// outline's names once they come, `layout::format_before_outline`). The refusals
+/// are those of [`format`] on one thread, in the same order: the outline's errors,
+/// then the bodies', then an unsafe layout.
+fn format_long(text: &str, config: &Config) -> Result<String, Refusal> {
+    let threads = layout::Threads::for_long_file();
+    let (parsed, laid) = std::thread::scope(|scope| {
+        let (send_names, names) = std::sync::mpsc::sync_channel(1);
+        let parser = scope.spawn(move || {
+            let outline = syntax::outline(text)?;
+            // The layout may have stopped already: then it needs no names.
+            let _ = send_names.send(outline.declared);
+            match syntax::body_errors(text, outline.bodies) {
+                errors if errors.is_empty() => Ok(()),
+                errors => Err(errors),
+            }
+        });
+        let laid = layout::format_before_outline(text, config, names, threads);
+        let parsed = parser.join().unwrap_or_else(|_| {
+            Err(vec![SyntaxError {
+                kind: rapid_syntax::SyntaxErrorKind::UnexpectedToken,
+                span: rapid_syntax::Span::new(0, 0),
+                message: "the parser failed".into(),
+            }])
+        });
+        (parsed, laid)
+    });
+    parsed.map_err(Refusal::SyntaxErrors)?;
+    match laid {
+        layout::Laid::Done(out) => out,
+        layout::Laid::Again(declared) => layout::format(text, config, declared, threads),
+    }
 }
 
 /// Files at least this long are parsed on a second thread.

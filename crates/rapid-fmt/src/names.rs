@@ -16,9 +16,9 @@ const LONGEST_NAME: usize = 32;
 #[derive(Debug, Default)]
 pub(crate) struct Spellings {
     /// Types, data and routines.
-    names: FxHashMap<Box<str>, Box<str>>,
+    names: FxHashMap<Box<[u8]>, Box<str>>,
     /// Parameter names of built-in routines (written after `\` in calls).
-    params: FxHashMap<Box<str>, Box<str>>,
+    params: FxHashMap<Box<[u8]>, Box<str>>,
 }
 
 /// The catalogue's spellings, read once per process.
@@ -67,15 +67,16 @@ impl Spellings {
 }
 
 /// The first spelling of a name wins (a name in two chapters is one name).
-fn add(table: &mut FxHashMap<Box<str>, Box<str>>, name: &str) {
+fn add(table: &mut FxHashMap<Box<[u8]>, Box<str>>, name: &str) {
     if name.is_empty() || !name.is_ascii() {
         return;
     }
-    table.entry(name.to_ascii_lowercase().into()).or_insert_with(|| name.into());
+    table.entry(name.to_ascii_lowercase().into_bytes().into()).or_insert_with(|| name.into());
 }
 
-/// `word` in ASCII lower case, in `buf`; `None` for a word no built-in can be.
-fn fold<'b>(word: &str, buf: &'b mut [u8; LONGEST_NAME]) -> Option<&'b str> {
+/// `word` in ASCII lower case, in `buf`; `None` for a word no built-in can be. The
+/// folded name is kept as bytes: it is only a key, and ASCII.
+fn fold<'b>(word: &str, buf: &'b mut [u8; LONGEST_NAME]) -> Option<&'b [u8]> {
     if word.len() > LONGEST_NAME || !word.is_ascii() {
         return None;
     }
@@ -83,12 +84,12 @@ fn fold<'b>(word: &str, buf: &'b mut [u8; LONGEST_NAME]) -> Option<&'b str> {
     for (slot, byte) in out.iter_mut().zip(word.bytes()) {
         *slot = byte.to_ascii_lowercase();
     }
-    std::str::from_utf8(out).ok()
+    Some(out)
 }
 
 /// The names a file declares (folded), which are never respelled.
 #[derive(Debug, Default)]
-pub(crate) struct Declared(FxHashSet<Box<str>>);
+pub(crate) struct Declared(FxHashSet<Box<[u8]>>);
 
 impl Declared {
     pub(crate) fn add(&mut self, name: &str) {
@@ -122,6 +123,11 @@ impl Declared {
                 Item::Placeholder(..) => {}
             }
         }
+    }
+
+    /// Adds every name of `other`.
+    pub(crate) fn merge(&mut self, other: Declared) {
+        self.0.extend(other.0);
     }
 
     pub(crate) fn contains(&self, word: &str) -> bool {

@@ -2,6 +2,7 @@
 //! rules in docs/fmt.md.
 
 use super::*;
+use crate::layout::Threads;
 
 fn fmt(text: &str) -> String {
     fmt_with(text, &Config::default())
@@ -214,9 +215,9 @@ fn long_files_are_parsed_while_laid_out() {
 
 #[test]
 fn long_files_lay_out_on_threads_as_short_ones_do() {
-    // Over 1 MB: lexed, laid out and verified on three threads, in batches and chunks
-    // whose edges fall anywhere in the file; the result must be what one thread
-    // writes, comments, blank lines and wrapped lines included.
+    // Over 1 MB: verified on a second thread in chunks, and lexed on a third in
+    // batches, whose edges fall anywhere in the file; the result must be what one
+    // thread writes, comments, blank lines and wrapped lines included.
     let mut body = String::new();
     for i in 0..9_000 {
         body.push_str(&format!("! step {i}\n\n\n\nmovel [[{i}.5,0,1],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]],v100,z1,tool0\\wobj:=wobj0;\n"));
@@ -229,10 +230,82 @@ fn long_files_lay_out_on_threads_as_short_ones_do() {
     assert!(text.len() > super::PARALLEL_THRESHOLD);
     let config = Config::default();
     let declared = || syntax::outline(&text).map_err(|_| "outline").unwrap().declared;
-    let on_threads = layout::format(&text, &config, declared(), true).unwrap();
-    let on_one = layout::format(&text, &config, declared(), false).unwrap();
-    assert!(on_threads == on_one, "the threaded layout differs");
+    let on_one = layout::format(&text, &config, declared(), Threads::One).unwrap();
+    let on_two = layout::format(&text, &config, declared(), Threads::Verifier).unwrap();
+    assert!(on_two == on_one, "the layout verified on a thread differs");
+    let on_three = layout::format(&text, &config, declared(), Threads::LexerAndVerifier).unwrap();
+    assert!(on_three == on_one, "the layout lexed and verified on threads differs");
     // Spot checks worked out by hand from the rules.
     assert!(on_one.contains("        ! step 8999\n\n\n        MoveL [[8999.5,0,1],"));
     assert!(on_one.contains("        IF x > 1 THEN ! check\n            x := x + 1; ! count\n        ENDIF\n"));
+}
+
+/// A long module whose outline declares `movel` (a routine of its own, after the
+/// statements that call it): every `movel` keeps its spelling, `moveJ` does not.
+fn long_module_declaring_movel() -> String {
+    let body = "movel;\nmoveJ p,v100,z1,tool0;\n".repeat(45_000);
+    format!("MODULE m\nPROC main()\n{body}ENDPROC\nPROC movel()\nENDPROC\nENDMODULE\n")
+}
+
+#[test]
+fn long_files_keep_names_their_outline_declares() {
+    // The layout starts before the outline is parsed: whatever it respelled meanwhile
+    // must come out as if it had known the outline's names from the start.
+    let text = long_module_declaring_movel();
+    assert!(text.len() > super::PARALLEL_THRESHOLD);
+    let out = format(&text, &Config::default()).unwrap();
+    assert!(out.starts_with("MODULE m\n    PROC main()\n        movel;\n        MoveJ p, v100, z1, tool0;\n"));
+    assert!(out.ends_with("        MoveJ p, v100, z1, tool0;\n    ENDPROC\n    PROC movel()\n    ENDPROC\nENDMODULE\n"));
+    assert!(!out.contains("MoveL"));
+}
+
+#[test]
+fn a_layout_that_respelled_a_declared_name_starts_again() {
+    // The outline comes late (after the layout respelled `movel` as `MoveL`, as the
+    // first statement calls it): the layout must answer that it starts again, with the
+    // outline's names, and never give the text it wrote.
+    let text = long_module_declaring_movel();
+    let declared = syntax::outline(&text).map_err(|_| "outline").unwrap().declared;
+    let (send, names) = std::sync::mpsc::sync_channel(1);
+    let late = std::thread::spawn(move || {
+        std::thread::sleep(std::time::Duration::from_millis(300));
+        let _ = send.send(declared);
+    });
+    let laid = layout::format_before_outline(&text, &Config::default(), names, Threads::Verifier);
+    late.join().unwrap();
+    let layout::Laid::Again(declared) = laid else { panic!("the layout did not start again") };
+    let again = layout::format(&text, &Config::default(), declared, Threads::LexerAndVerifier).unwrap();
+    assert_eq!(again, format(&text, &Config::default()).unwrap());
+    assert!(again.contains("        movel;\n") && !again.contains("MoveL"));
+}
+
+#[test]
+fn long_files_with_outline_errors_are_refused_for_them() {
+    // The layout runs while the outline is parsed; the outline's errors still refuse
+    // the file, as they do a short one.
+    let text = long_module_declaring_movel().replace("PROC movel()", "PROC movel(");
+    assert!(matches!(format(&text, &Config::default()), Err(Refusal::SyntaxErrors(errors)) if !errors.is_empty()));
+}
+
+#[test]
+fn a_name_declared_after_it_was_respelled_keeps_its_spelling_from_there() {
+    // `movel` in `a` is the instruction; `b` declares a local `movel`, which keeps its
+    // spelling from its declaration on (the layout notes locals as they go by, and the
+    // spellings it remembers between statements must not outlive that).
+    let input = "MODULE m\nPROC a()\nmovel p,v100,z1,tool0;\nENDPROC\nPROC b()\nVAR num movel;\nmovel:=1;\nENDPROC\nPROC c()\nmovel p,v100,z1,tool0;\nENDPROC\nENDMODULE\n";
+    let expected = "\
+MODULE m
+    PROC a()
+        MoveL p, v100, z1, tool0;
+    ENDPROC
+    PROC b()
+        VAR num movel;
+        movel := 1;
+    ENDPROC
+    PROC c()
+        movel p, v100, z1, tool0;
+    ENDPROC
+ENDMODULE
+";
+    assert_eq!(fmt(input), expected);
 }

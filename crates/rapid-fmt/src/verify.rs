@@ -26,6 +26,9 @@ pub(crate) struct Piece {
 pub(crate) fn stretch(input: &str, pieces: &[Piece], output: &str, from: usize) -> Result<(), Refusal> {
     let mut lexer = Lexer::at(output, from);
     let mut expected = pieces.iter();
+    // Texts are compared as bytes: spans of the lexer fall on character boundaries, so
+    // byte slices hold the same texts without the checks a `str` slice makes.
+    let (old_bytes, new_bytes) = (input.as_bytes(), output.as_bytes());
     loop {
         let token = lexer.next_token();
         if !lexer.comments.is_empty() {
@@ -33,7 +36,7 @@ pub(crate) fn stretch(input: &str, pieces: &[Piece], output: &str, from: usize) 
                 let Some(piece) = expected.next() else {
                     return Err(unsafe_at(input.len(), "a comment would be added"));
                 };
-                if piece.kind.is_some() || piece.span.text(input) != comment.text(output) {
+                if piece.kind.is_some() || bytes_of(old_bytes, piece.span) != bytes_of(new_bytes, comment) {
                     return Err(unsafe_at(piece.span.start as usize, "a comment would change or move"));
                 }
             }
@@ -44,21 +47,28 @@ pub(crate) fn stretch(input: &str, pieces: &[Piece], output: &str, from: usize) 
                 Some(piece) => Err(unsafe_at(piece.span.start as usize, "this token or comment would be lost")),
             };
         }
-        let new_text = token.span.text(output);
+        let new_text = bytes_of(new_bytes, token.span);
         let Some(piece) = expected.next() else {
+            let new_text = token.span.text(output);
             return Err(unsafe_at(input.len(), &format!("`{new_text}` would be added")));
         };
-        let old_text = piece.span.text(input);
+        let old_text = bytes_of(old_bytes, piece.span);
         let same = match piece.kind {
             Some(kind) if kind != token.kind => false,
             Some(kind) if kind == T::Ident || kind.is_keyword() => old_text.eq_ignore_ascii_case(new_text),
-            Some(_) => same_bytes(old_text.as_bytes(), new_text.as_bytes()),
+            Some(_) => same_bytes(old_text, new_text),
             None => false,
         };
         if !same {
+            let (old_text, new_text) = (piece.span.text(input), token.span.text(output));
             return Err(unsafe_at(piece.span.start as usize, &format!("`{old_text}` would become `{new_text}`")));
         }
     }
+}
+
+/// The bytes of a span (none when it lies outside `text`).
+fn bytes_of(text: &[u8], span: Span) -> &[u8] {
+    text.get(span.start as usize..span.end as usize).unwrap_or(&[])
 }
 
 /// Verifies the chunks a layout on another thread sends: each chunk of output must lex
@@ -83,9 +93,13 @@ pub(crate) fn chunks(
     result
 }
 
-/// `a == b`, without a call into the C library for the short texts of tokens.
+/// `a == b`: most tokens are one byte of punctuation, compared without a call into
+/// the C library.
 fn same_bytes(a: &[u8], b: &[u8]) -> bool {
-    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x == y)
+    match (a, b) {
+        ([x], [y]) => x == y,
+        _ => a == b,
+    }
 }
 
 fn unsafe_at(offset: usize, what: &str) -> Refusal {
