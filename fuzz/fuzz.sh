@@ -38,8 +38,10 @@ seed_by_folder() {
     for file in "$@"; do [[ -f "$file" ]] && cp "$file" "$corpus/$(basename "$(dirname "$file")").$(basename "$file")"; done; true
 }
 case "$target" in
-    check) seed "$root"/tests/check/ok/*.mod "$root"/examples/*.mod; max_len=65536 ;;
-    run) seed "$root"/tests/conformance/*.mod; max_len=16384 ;;
+    check) seed "$root"/tests/check/ok/*.mod "$root"/examples/*.mod; max_len=65536
+           set -- -dict="$here/dict/rapid.dict" "$@" ;;
+    run) seed "$root"/tests/conformance/*.mod; max_len=16384
+         set -- -dict="$here/dict/rapid.dict" "$@" ;;
     # The generator reads choices, not text: it starts from nothing.
     program | controller) max_len=8192 ;;
     cfg) while IFS= read -r -d '' file; do seed "$file"; done < <(find "$root/crates" "$root/examples" -name '*.cfg' -print0)
