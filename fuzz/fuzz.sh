@@ -7,7 +7,9 @@
 # Targets: check (bytes -> checker), run (bytes -> interpreter), program (generated
 # RAPID programs -> checker and interpreter), controller (generated programs as one to
 # three tasks of the controller), cfg (bytes -> .cfg parser and views), manifest
-# (bytes -> rapid.toml reader), stimulus (bytes -> --stimulus parser).
+# (bytes -> rapid.toml reader), stimulus (bytes -> --stimulus parser), rws (generated
+# requests -> `rapid serve`'s router), lsp (generated message sessions -> the language
+# server's loop).
 #
 # Usage: fuzz/fuzz.sh TARGET [SECONDS] [libFuzzer flags...]
 set -euo pipefail
@@ -36,8 +38,10 @@ seed_by_folder() {
     for file in "$@"; do [[ -f "$file" ]] && cp "$file" "$corpus/$(basename "$(dirname "$file")").$(basename "$file")"; done; true
 }
 case "$target" in
-    check) seed "$root"/tests/check/ok/*.mod "$root"/examples/*.mod; max_len=65536 ;;
-    run) seed "$root"/tests/conformance/*.mod; max_len=16384 ;;
+    check) seed "$root"/tests/check/ok/*.mod "$root"/examples/*.mod; max_len=65536
+           set -- -dict="$here/dict/rapid.dict" "$@" ;;
+    run) seed "$root"/tests/conformance/*.mod; max_len=16384
+         set -- -dict="$here/dict/rapid.dict" "$@" ;;
     # The generator reads choices, not text: it starts from nothing.
     program | controller) max_len=8192 ;;
     cfg) while IFS= read -r -d '' file; do seed "$file"; done < <(find "$root/crates" "$root/examples" -name '*.cfg' -print0)
@@ -46,10 +50,13 @@ case "$target" in
          max_len=16384 ;;
     stimulus) seed "$root"/examples/*.stimulus "$root"/examples/*/*.stim; max_len=4096
               set -- -dict="$here/dict/stimulus.dict" "$@" ;;
-    *) echo "unknown target \`$target\` (check, run, program, controller, cfg, manifest, stimulus)" >&2; exit 2 ;;
+    # Both build their inputs from choices: they start from nothing.
+    rws | lsp) max_len=4096 ;;
+    *) echo "unknown target \`$target\` (check, run, program, controller, cfg, manifest, stimulus, rws, lsp)" >&2; exit 2 ;;
 esac
 
-"$here/build.sh" "$target"
+# FUZZ_BUILD=0: run the binary built last (a campaign while the sources change).
+[[ "${FUZZ_BUILD:-1}" == 0 ]] || "$here/build.sh" "$target"
 triple=$(rustc -vV | sed -n 's/^host: //p')
 # cargo puts the dev profile's output in `debug`.
 dir=${FUZZ_PROFILE:-release}

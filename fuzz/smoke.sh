@@ -10,7 +10,7 @@ seconds=${1:-5}
 "$here/build.sh"
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
-for target in check run program controller cfg manifest stimulus; do
+for target in check run program controller cfg manifest stimulus rws lsp; do
     echo "== fuzz $target ($seconds s)"
     if ! "$here/fuzz.sh" "$target" "$seconds" >"$log" 2>&1; then
         tail -n 40 "$log" >&2

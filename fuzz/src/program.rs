@@ -48,6 +48,8 @@ struct Data {
     writable: bool,
     /// A PERS: passed to INOUT whole only.
     persistent: bool,
+    /// A record component read or written through the data (`.a`), or empty.
+    field: &'static str,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
@@ -103,6 +105,7 @@ pub fn generate(u: &mut Unstructured<'_>) -> Result<Program> {
         interrupts: 0,
         fresh: 0,
         in_undo: false,
+        records: Vec::new(),
     };
     gen.program()
 }
@@ -118,6 +121,8 @@ struct Gen<'a, 'b> {
     fresh: u32,
     /// Writing an UNDO handler: no motion there.
     in_undo: bool,
+    /// The `rec` globals: name and array length.
+    records: Vec<(String, Option<u32>)>,
 }
 
 impl Gen<'_, '_> {
@@ -134,6 +139,16 @@ impl Gen<'_, '_> {
         for idx in 0..self.interrupts {
             decls[0].push_str(&format!("  VAR intnum ir{idx};\n"));
         }
+        // A record type of the program's own, and data of it: its components are
+        // read and written as data of their types, whole records assigned.
+        decls[0].push_str("  RECORD rec\n    num a;\n    string b;\n    pos c;\n  ENDRECORD\n");
+        for idx in 0..self.u.int_in_range(0..=2)? {
+            let module = self.u.choose_index(n_modules)?;
+            let decl = self.record_global(idx)?;
+            decls[module].push_str(&decl);
+        }
+        // An error number booked at run time (BookErrNo), raised and handled.
+        decls[0].push_str("  VAR errnum ERR_MINE := -1;\n");
         // A point the default robot reaches, for moves relative to it (Offs).
         decls[0].push_str("  CONST robtarget home := [[300,0,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];\n");
         decls[0].push_str("  VAR clock clk;\n");
@@ -175,8 +190,30 @@ impl Gen<'_, '_> {
         // PERS and CONST need a value; a VAR may go without.
         let init = if storage == "VAR" && self.u.ratio(1, 3)? { String::new() } else { format!(" := {init}") };
         let persistent = storage == "PERS";
-        self.globals.push(Data { name: name.clone(), ty, len, writable: storage != "CONST", persistent });
+        self.globals.push(Data { name: name.clone(), ty, len, writable: storage != "CONST", persistent, field: "" });
         Ok(format!("  {storage} {} {name}{dims}{init};\n", ty.name()))
+    }
+
+    /// A global of the record type `rec`: a VAR, a PERS (with a value) or a VAR
+    /// array, offered as data of each component's type.
+    fn record_global(&mut self, idx: usize) -> Result<String> {
+        let name = format!("rc{idx}");
+        let storage = *self.u.choose(&["VAR", "PERS", "VAR"])?;
+        let len = if storage == "VAR" && self.u.ratio(1, 3)? { Some(self.u.int_in_range(1..=3)?) } else { None };
+        let one = format!("[{}, {}, {}]", self.literal(Ty::Num)?, self.literal(Ty::Str)?, self.literal(Ty::Pos)?);
+        let init = match (storage, len) {
+            ("PERS", _) => format!(" := {one}"),
+            (_, Some(n)) if self.u.ratio(1, 2)? => format!(" := [{}]", vec![one; n as usize].join(", ")),
+            (_, None) if self.u.ratio(1, 2)? => format!(" := {one}"),
+            _ => String::new(),
+        };
+        let persistent = storage == "PERS";
+        for (field, ty) in [(".a", Ty::Num), (".b", Ty::Str), (".c", Ty::Pos)] {
+            self.globals.push(Data { name: name.clone(), ty, len, writable: true, persistent, field });
+        }
+        self.records.push((name.clone(), len));
+        let dims = len.map_or(String::new(), |n| format!("{{{n}}}"));
+        Ok(format!("  {storage} rec {name}{dims}{init};\n"))
     }
 
     fn signature(&mut self, idx: usize, n_modules: usize) -> Result<Routine> {
@@ -215,7 +252,14 @@ impl Gen<'_, '_> {
             // so they are not offered as plain data. IN parameters are read-only here.
             if matches!(p.mode, Mode::In | Mode::InOut) {
                 let writable = p.mode == Mode::InOut;
-                self.locals.push(Data { name: p.name.clone(), ty: p.ty, len: None, writable, persistent: false });
+                self.locals.push(Data {
+                    name: p.name.clone(),
+                    ty: p.ty,
+                    len: None,
+                    writable,
+                    persistent: false,
+                    field: "",
+                });
             }
         }
         let mut out = match routine.kind {
@@ -228,7 +272,7 @@ impl Gen<'_, '_> {
             let name = self.name("l");
             let init = self.literal(ty)?;
             out.push_str(&format!("    VAR {} {name} := {init};\n", ty.name()));
-            self.locals.push(Data { name, ty, len: None, writable: true, persistent: false });
+            self.locals.push(Data { name, ty, len: None, writable: true, persistent: false, field: "" });
         }
         for p in routine.params.iter().filter(|p| p.mode == Mode::Optional) {
             let value = self.expr(p.ty, 0)?;
@@ -259,7 +303,7 @@ impl Gen<'_, '_> {
 
     fn handler(&mut self, kind: Kind) -> Result<String> {
         let mut out = self.block(kind, MAX_STMT_DEPTH, 2)?;
-        let end = match self.u.int_in_range(0..=5)? {
+        let end = match self.u.int_in_range(0..=7)? {
             0 => "RETRY;".to_owned(),
             1 => "TRYNEXT;".to_owned(),
             2 => "RAISE;".to_owned(),
@@ -268,6 +312,8 @@ impl Gen<'_, '_> {
                 _ => "RETURN;".to_owned(),
             },
             4 => "IF ERRNO = ERR_DIVZERO TRYNEXT;".to_owned(),
+            5 => "IF RemainingRetries() > 0 RETRY;".to_owned(),
+            6 => "IF ERRNO = ERR_MINE RETRY;".to_owned(),
             _ => "SkipWarn;".to_owned(),
         };
         out.push_str(&format!("    {end}\n"));
@@ -287,7 +333,7 @@ impl Gen<'_, '_> {
     fn statement(&mut self, kind: Kind, depth: u32, indent: usize) -> Result<String> {
         let nested = depth < MAX_STMT_DEPTH;
         let pad = "  ".repeat(indent);
-        Ok(match self.u.int_in_range(0..=19)? {
+        Ok(match self.u.int_in_range(0..=26)? {
             0..=3 => match self.writable(None)? {
                 Some(target) => {
                     let value = self.expr(target.1, 0)?;
@@ -322,6 +368,7 @@ impl Gen<'_, '_> {
                     len: None,
                     writable: false,
                     persistent: false,
+                    field: "",
                 });
                 let body = self.block(kind, depth + 1, indent + 1)?;
                 self.locals.retain(|d| d.name != var);
@@ -371,15 +418,108 @@ impl Gen<'_, '_> {
             }
             16 if !self.in_undo => {
                 let instr = self.u.choose(&["MoveL", "MoveJ"])?;
-                let (dx, dy, dz) = (self.expr(Ty::Num, 2)?, self.expr(Ty::Num, 2)?, self.expr(Ty::Num, 2)?);
+                let to = self.offs()?;
                 let speed = self.u.choose(&["v100", "v1000", "vmax"])?;
                 let zone = self.u.choose(&["fine", "z10", "z50"])?;
-                format!("{instr} Offs(home, {dx}, {dy}, {dz}), {speed}, {zone}, tool0;")
+                format!("{instr} {to}, {speed}, {zone}, tool0;")
             }
             17 => (*self.u.choose(&["ClkStart clk;", "ClkStop clk;", "ClkReset clk;"])?).to_owned(),
             18 => format!("WaitUntil {} \\MaxTime:=0.1;", self.expr(Ty::Bool, 1)?),
+            19 if !self.records.is_empty() => self.record_assignment()?,
+            20 => (*self.u.choose(&[
+                "BookErrNo ERR_MINE;",
+                "RAISE ERR_MINE;",
+                "BookErrNo ERR_MINE;\n    RAISE ERR_MINE;",
+            ])?)
+            .to_owned(),
+            21 => {
+                // Late binding by number: `r0` to `r5` are the routines, perhaps not
+                // procedures, perhaps with parameters, perhaps not there.
+                format!("CallByVar \"r\", {};", self.u.int_in_range(0..=MAX_ROUTINES)?)
+            }
+            22 => self.data_by_name()?,
+            23 => match self.reference_of_some_type()? {
+                Some(target) => {
+                    let text = *self.u.choose(&["\"1.5\"", "\"[1,2,3]\"", "\"TRUE\"", "\"x\"", "\"\""])?;
+                    let text = if self.u.ratio(1, 4)? { self.expr(Ty::Str, 1)? } else { text.to_owned() };
+                    format!("IF StrToVal({text}, {target}) TPWrite \"parsed\";")
+                }
+                None => "ResetRetryCount;".to_owned(),
+            },
+            24 if !self.in_undo => {
+                let to = self.offs()?;
+                match self.u.int_in_range(0..=2)? {
+                    0 => format!("MoveAbsJ CalcJointT({to}, tool0), v100, fine, tool0;"),
+                    1 => format!("MoveC {}, {to}, v100, z10, tool0;", self.offs()?),
+                    _ => "WaitRob \\InPos;".to_owned(),
+                }
+            }
+            25 => (*self.u.choose(&[
+                "IEnable;",
+                "IDisable;",
+                "ResetRetryCount;",
+                "TPWrite \"retries \" \\Num:=RemainingRetries();",
+            ])?)
+            .to_owned(),
             _ => format!("ErrWrite \\W, {}, {};", self.expr(Ty::Str, 1)?, self.expr(Ty::Str, 1)?),
         })
+    }
+
+    /// A point near `home`: `Offs(home, dx, dy, dz)`.
+    fn offs(&mut self) -> Result<String> {
+        let (dx, dy, dz) = (self.expr(Ty::Num, 2)?, self.expr(Ty::Num, 2)?, self.expr(Ty::Num, 2)?);
+        Ok(format!("Offs(home, {dx}, {dy}, {dz})"))
+    }
+
+    /// A whole record assigned: an aggregate, or another record (an element of an
+    /// array of records as well).
+    fn record_assignment(&mut self) -> Result<String> {
+        let records = self.records.clone();
+        let (name, len) = self.u.choose(&records)?.clone();
+        let target = match len {
+            Some(n) => format!("{name}{{{}}}", self.index(n, 0)?),
+            None => name,
+        };
+        let value = match self.u.ratio(1, 3)? {
+            true => {
+                let (other, len) = self.u.choose(&records)?.clone();
+                match len {
+                    Some(n) => format!("{other}{{{}}}", self.index(n, 0)?),
+                    None => other,
+                }
+            }
+            false => format!("[{}, {}, {}]", self.expr(Ty::Num, 1)?, self.expr(Ty::Str, 1)?, self.expr(Ty::Pos, 1)?),
+        };
+        Ok(format!("{target} := {value};\n    TPWrite ValToStr({target});"))
+    }
+
+    /// Data reached by its name at run time (GetDataVal, SetDataVal): a global
+    /// scalar, read into a variable of its type or written with a value of it (a
+    /// CONST written is the program's error, raised).
+    fn data_by_name(&mut self) -> Result<String> {
+        let globals: Vec<Data> =
+            self.globals.iter().filter(|g| g.len.is_none() && g.field.is_empty()).cloned().collect();
+        if globals.is_empty() {
+            return Ok("GetDataVal \"nowhere\", ERR_MINE;".to_owned());
+        }
+        let data = self.u.choose(&globals)?.clone();
+        let name = if self.u.ratio(1, 8)? { data.name.to_uppercase() } else { data.name.clone() };
+        if self.u.ratio(1, 2)? {
+            return Ok(format!("SetDataVal \"{name}\", {};", self.expr(data.ty, 1)?));
+        }
+        // A VAR of the routine or the module (parameters and persistents are no VAR).
+        let vars: Vec<Data> = self
+            .locals
+            .iter()
+            .chain(&self.globals)
+            .filter(|d| d.writable && !d.persistent && d.ty == data.ty && d.len.is_none() && d.field.is_empty())
+            .filter(|d| !d.name.starts_with('p'))
+            .cloned()
+            .collect();
+        match vars.is_empty() {
+            true => Ok(format!("SetDataVal \"{name}\", {};", self.expr(data.ty, 1)?)),
+            false => Ok(format!("GetDataVal \"{name}\", {};", self.u.choose(&vars)?.name)),
+        }
     }
 
     /// A call of a user procedure with arguments matching its parameters.
@@ -445,8 +585,8 @@ impl Gen<'_, '_> {
         }
         let data = self.u.choose(&all)?.clone();
         let place = match data.len {
-            Some(len) => format!("{}{{{}}}", data.name, self.index(len, 0)?),
-            None => data.name.clone(),
+            Some(len) => format!("{}{{{}}}{}", data.name, self.index(len, 0)?, data.field),
+            None => format!("{}{}", data.name, data.field),
         };
         Ok(Some((place, data.ty)))
     }
@@ -458,7 +598,7 @@ impl Gen<'_, '_> {
             .locals
             .iter()
             .chain(&self.globals)
-            .filter(|d| d.writable && d.ty == ty && !(d.persistent && d.len.is_some()))
+            .filter(|d| d.writable && d.ty == ty && !(d.persistent && (d.len.is_some() || !d.field.is_empty())))
             .cloned()
             .collect();
         if all.is_empty() {
@@ -466,9 +606,15 @@ impl Gen<'_, '_> {
         }
         let data = self.u.choose(&all)?.clone();
         Ok(Some(match data.len {
-            Some(len) if !data.persistent => format!("{}{{{}}}", data.name, self.index(len, 0)?),
-            _ => data.name,
+            Some(len) if !data.persistent => format!("{}{{{}}}{}", data.name, self.index(len, 0)?, data.field),
+            _ => format!("{}{}", data.name, data.field),
         }))
+    }
+
+    /// A reference of a type StrToVal reads: num, bool, pos or string.
+    fn reference_of_some_type(&mut self) -> Result<Option<String>> {
+        let ty = *self.u.choose(&[Ty::Num, Ty::Bool, Ty::Pos, Ty::Str])?;
+        self.reference(ty)
     }
 
     /// A dnum expression whose type is dnum on its own (a literal alone is a num).
@@ -518,8 +664,8 @@ impl Gen<'_, '_> {
         }
         let data = self.u.choose(&all)?.clone();
         Ok(Some(match data.len {
-            Some(len) => format!("{}{{{}}}", data.name, self.index(len, depth)?),
-            None => data.name,
+            Some(len) => format!("{}{{{}}}{}", data.name, self.index(len, depth)?, data.field),
+            None => format!("{}{}", data.name, data.field),
         }))
     }
 
@@ -532,7 +678,7 @@ impl Gen<'_, '_> {
         }
         let d = depth + 1;
         Ok(match ty {
-            Ty::Num => match self.u.int_in_range(0..=14)? {
+            Ty::Num => match self.u.int_in_range(0..=16)? {
                 0 => format!(
                     "({} {} {})",
                     self.expr(Ty::Num, d)?,
@@ -548,7 +694,7 @@ impl Gen<'_, '_> {
                 2 => format!("-{}", self.expr(Ty::Num, d)?),
                 3 => format!(
                     "{}({})",
-                    self.u.choose(&["Abs", "Sqrt", "Trunc", "Sin", "Cos", "Exp"])?,
+                    self.u.choose(&["Abs", "Sqrt", "Trunc", "Sin", "Cos", "Tan", "ATan", "ASin", "ACos", "Exp"])?,
                     self.expr(Ty::Num, d)?
                 ),
                 4 => format!("Round({} \\Dec:={})", self.expr(Ty::Num, d)?, self.u.int_in_range(0..=3)?),
@@ -567,12 +713,21 @@ impl Gen<'_, '_> {
                 11 => format!("DotProd({}, {})", self.expr(Ty::Pos, d)?, self.expr(Ty::Pos, d)?),
                 12 => format!("ATan2({}, {})", self.expr(Ty::Num, d)?, self.expr(Ty::Num, d)?),
                 13 => format!("StrFind({}, {}, STR_DIGIT)", self.expr(Ty::Str, d)?, self.expr(Ty::Num, d)?),
+                14 => format!(
+                    "StrMatch({}, {}, {})",
+                    self.expr(Ty::Str, d)?,
+                    self.expr(Ty::Num, d)?,
+                    self.expr(Ty::Str, d)?
+                ),
+                15 => "RemainingRetries()".to_owned(),
                 _ => "ClkRead(clk)".to_owned(),
             },
-            Ty::Pos => match self.u.int_in_range(0..=3)? {
+            Ty::Pos => match self.u.int_in_range(0..=5)? {
                 0 => format!("({} {} {})", self.expr(Ty::Pos, d)?, self.u.choose(&["+", "-"])?, self.expr(Ty::Pos, d)?),
                 1 => format!("({} * {})", self.expr(Ty::Pos, d)?, self.expr(Ty::Num, d)?),
                 2 => self.func_call(Ty::Pos, d)?,
+                3 => "CPos(\\Tool:=tool0)".to_owned(),
+                4 => format!("PoseVect([[10, 0, 0], [0.7071068, 0, 0.7071068, 0]], {})", self.expr(Ty::Pos, d)?),
                 _ => format!("CrossProd({}, {})", self.expr(Ty::Pos, d)?, self.expr(Ty::Pos, d)?),
             },
             Ty::Dnum => match self.u.int_in_range(0..=3)? {
@@ -586,7 +741,7 @@ impl Gen<'_, '_> {
                 2 => self.func_call(Ty::Dnum, d)?,
                 _ => format!("AbsDnum({})", self.typed_dnum(d)?),
             },
-            Ty::Bool => match self.u.int_in_range(0..=5)? {
+            Ty::Bool => match self.u.int_in_range(0..=7)? {
                 0 => format!(
                     "({} {} {})",
                     self.expr(Ty::Num, d)?,
@@ -602,9 +757,11 @@ impl Gen<'_, '_> {
                 2 => format!("NOT {}", self.expr(Ty::Bool, d)?),
                 3 => format!("({} = {})", self.expr(Ty::Str, d)?, self.expr(Ty::Str, d)?),
                 4 => format!("({} < {})", self.typed_dnum(d)?, self.expr(Ty::Dnum, d)?),
+                5 => format!("StrMemb({}, {}, STR_DIGIT)", self.expr(Ty::Str, d)?, self.expr(Ty::Num, d)?),
+                6 => format!("StrOrder({}, {}, STR_UPPER + STR_LOWER)", self.expr(Ty::Str, d)?, self.expr(Ty::Str, d)?),
                 _ => self.func_call(Ty::Bool, d)?,
             },
-            Ty::Str => match self.u.int_in_range(0..=7)? {
+            Ty::Str => match self.u.int_in_range(0..=9)? {
                 0 => format!("{} + {}", self.expr(Ty::Str, d)?, self.expr(Ty::Str, d)?),
                 1 => format!("NumToStr({}, {})", self.expr(Ty::Num, d)?, self.u.int_in_range(0..=4)?),
                 2 => {
@@ -620,6 +777,12 @@ impl Gen<'_, '_> {
                 4 => format!("DnumToStr({}, {})", self.expr(Ty::Dnum, d)?, self.u.int_in_range(0..=4)?),
                 5 => format!("StrMap({}, \"abc\", \"xyz\")", self.expr(Ty::Str, d)?),
                 6 => format!("CTime() + CDate() + StrPart(\"abc\", 1, {})", self.u.int_in_range(0..=4)?),
+                7 => format!(
+                    "ByteToStr({} {})",
+                    self.u.choose(&["0", "65", "255", "256", "-1"])?,
+                    self.u.choose(&["", "\\Hex", "\\Okt", "\\Bin", "\\Char"])?
+                ),
+                8 => format!("{}({})", self.u.choose(&["DecToHex", "HexToDec"])?, self.expr(Ty::Str, d)?),
                 _ => self.func_call(Ty::Str, d)?,
             },
         })

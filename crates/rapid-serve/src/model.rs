@@ -317,7 +317,7 @@ pub(crate) fn escape(text: &str) -> String {
             '"' => out.push_str("&quot;"),
             '\n' => out.push_str("&#10;"),
             '\r' => out.push_str("&#13;"),
-            _ => out.push(c),
+            _ => out.push(xml_char(c)),
         }
     }
     out
@@ -326,7 +326,19 @@ pub(crate) fn escape(text: &str) -> String {
 /// Text made safe between XHTML tags: quotes stay as they are (a RAPID string
 /// literal's quotes are part of its value, and clients read the text as it is).
 pub(crate) fn escape_text(text: &str) -> String {
-    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('\n', "&#10;")
+    let text = text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('\n', "&#10;");
+    text.chars().map(xml_char).collect()
+}
+
+/// `c`, or U+FFFD for a character XML 1.0 cannot hold in any form (C0 controls but
+/// tab, LF and CR; U+FFFE, U+FFFF): a client's XML parser refuses the whole answer
+/// for one of them, and a request path can bring any (`%00` decodes to NUL).
+fn xml_char(c: char) -> char {
+    match c {
+        '\t' | '\n' | '\r' => c,
+        '\u{0}'..='\u{1f}' | '\u{fffe}' | '\u{ffff}' => '\u{fffd}',
+        _ => c,
+    }
 }
 
 /// A number as RWS writes it: integral values without a fraction (`"1"`, which the
@@ -365,5 +377,14 @@ mod tests {
         assert_eq!(number(0.5), "0.5");
         assert_eq!(number(9e9), "9000000000");
         assert_eq!(escape("<a & \"b\">"), "&lt;a &amp; &quot;b&quot;&gt;");
+    }
+
+    /// Found by the `rws` fuzz target: a request path holding `%00` was echoed in the
+    /// XHTML error body as a raw NUL, which no XML parser reads.
+    #[test]
+    fn characters_xml_cannot_hold_become_replacement_characters() {
+        assert_eq!(escape("a\u{0}b\u{1b}c\td"), "a\u{fffd}b\u{fffd}c\td");
+        assert_eq!(escape_text("x\u{7}\u{ffff}\r"), "x\u{fffd}\u{fffd}\r");
+        assert_eq!(escape("line\nbreak"), "line&#10;break");
     }
 }

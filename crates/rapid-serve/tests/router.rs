@@ -501,3 +501,25 @@ async fn the_pendant_page_and_its_json_resources_are_behind_the_login() {
     let missing = server.send(get("/pendant/api/program", Some(&cookie))).await;
     assert_eq!(missing.status(), StatusCode::BAD_REQUEST);
 }
+
+/// Found by the `rws` fuzz target: `/poll/{id}` refused in XHTML even when `json=1`
+/// was asked, an answer a JSON client cannot read. Both refusals (no such
+/// subscription; no websocket upgrade) follow the format asked for.
+#[tokio::test]
+async fn poll_refusals_are_json_when_json_is_asked() {
+    let server = Server::new("poll-json");
+    let cookie = server.login().await;
+    let missing = server.send(get("/poll/%00?json=1", Some(&cookie))).await;
+    assert_eq!(missing.status(), StatusCode::NOT_FOUND);
+    assert_eq!(header_text(&missing, "content-type"), "application/json");
+    let status = &json_of(missing).await["_embedded"]["status"];
+    assert_eq!(status["msg"], "no such subscription");
+    let form = "resources=1&1=%2Frw%2Frapid%2Fexecution%3Bctrlexecstate&1-p=1";
+    assert_eq!(server.send(post("/subscription?json=1", &cookie, form)).await.status(), StatusCode::CREATED);
+    let no_upgrade = server.send(get("/poll/1?json=1", Some(&cookie))).await;
+    assert_eq!(no_upgrade.status(), StatusCode::BAD_REQUEST);
+    assert!(json_of(no_upgrade).await["_embedded"]["status"]["msg"].as_str().unwrap().contains("websocket"));
+    // Without json=1 the refusal stays XHTML, as before.
+    let xhtml = server.send(get("/poll/7", Some(&cookie))).await;
+    assert!(header_text(&xhtml, "content-type").starts_with("application/xhtml+xml"));
+}

@@ -110,3 +110,43 @@ ENDMODULE
     assert_eq!(machine.run(&mut host, 100_000), Exit::Done);
     assert_eq!(host.lines, ["helper", "ERR_REFUNKPRC"]);
 }
+
+#[test]
+fn load_measures_a_module_file_against_the_program_memory_of_the_limits_table() {
+    // The table's program memory is 64 MiB (64 << 20 = 67,108,864 bytes): a module
+    // file of 9 MiB (over the 8 MiB Load refused before) loads; one byte over 64 MiB
+    // is refused before it is read, the message naming the figure. ProgMemFree gives
+    // the same figure: 67,108,864 DIV 1024 = 65,536 KiB.
+    let root = std::env::temp_dir().join(format!("rapid-dynload-memory-{}", std::process::id()));
+    let home = root.join("HOME");
+    let fs = MemoryFs::new();
+    let mut medium = b"MODULE medium\nPROC medium_p()\n  TPWrite \"medium\";\nENDPROC\n".to_vec();
+    medium.resize(9 << 20, b' ');
+    medium.extend_from_slice(b"\nENDMODULE\n");
+    fs.put(home.join("medium.mod"), &medium);
+    fs.put(home.join("huge.mod"), &vec![b' '; (64 << 20) + 1]);
+    let program = r#"MODULE t
+PROC main()
+  TPWrite "free KiB " \Num:=ProgMemFree() DIV 1024;
+  Load "HOME:/medium.mod";
+  %"medium_p"%;
+  Load "HOME:/huge.mod";
+  TPWrite "not reached";
+ERROR
+  TPWrite "refused " \Bool:=ERRNO = ERR_IOERROR;
+  RETURN;
+ENDPROC
+ENDMODULE
+"#;
+    let loaded = match load(&[SourceInput::from_text("t.mod", program)], "main") {
+        Ok(loaded) => loaded,
+        Err(err) => panic!("load failed: {err:?}"),
+    };
+    let mut machine = loaded.vm;
+    machine.resources_mut().files.set_root(&root);
+    machine.set_world(memory_world(fs));
+    let mut host = RecordingHost::default();
+    assert_eq!(machine.run(&mut host, 100_000), Exit::Done);
+    let _ = std::fs::remove_dir_all(&root);
+    assert_eq!(host.lines, ["free KiB 65536", "medium", "refused TRUE"]);
+}

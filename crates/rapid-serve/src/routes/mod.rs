@@ -21,7 +21,7 @@ use std::sync::Arc;
 
 use axum::body::Bytes;
 use axum::extract::ws::WebSocketUpgrade;
-use axum::extract::{DefaultBodyLimit, Path, Request, State};
+use axum::extract::{DefaultBodyLimit, Path, RawQuery, Request, State};
 use axum::http::{header, HeaderMap, HeaderValue, Method, StatusCode, Uri};
 use axum::middleware::{self, Next};
 use axum::response::{IntoResponse, Response};
@@ -157,19 +157,22 @@ async fn refuse_huge(request: Request, next: Next) -> Response {
     next.run(request).await
 }
 
-/// `ws://HOST/poll/{id}`: a subscription's events.
+/// `ws://HOST/poll/{id}`: a subscription's events. A refusal is JSON when `json=1` is
+/// asked, as every other answer.
 async fn poll(
     State(app): State<Arc<App>>,
     Path(id): Path<String>,
+    RawQuery(query): RawQuery,
     headers: HeaderMap,
     upgrade: Result<WebSocketUpgrade, axum::extract::ws::rejection::WebSocketUpgradeRejection>,
 ) -> Response {
     let host = host_of(&headers);
+    let json = query.is_some_and(|q| q.split('&').any(|p| p == "json=1"));
     let Some(id) = id.parse::<u64>().ok().filter(|id| app.hub.get(*id).is_some()) else {
-        return error_response(&RwsError::not_found("no such subscription"), false);
+        return error_response(&RwsError::not_found("no such subscription"), json);
     };
     let Ok(upgrade) = upgrade else {
-        return error_response(&RwsError::bad_request("a websocket upgrade is expected here"), false);
+        return error_response(&RwsError::bad_request("a websocket upgrade is expected here"), json);
     };
     let events = app.controller.events();
     let hub = app.hub.clone();

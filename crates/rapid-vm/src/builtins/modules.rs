@@ -21,9 +21,10 @@ use crate::world::FileKind;
 
 type Res = Result<Option<Value>, RapidError>;
 
-/// Module files bigger than this are refused: the controller's program memory is a
-/// few megabytes, and reading a huge file would only stall the task.
-const MAX_MODULE_BYTES: u64 = 8 << 20;
+/// Module files bigger than this are refused: a module larger than the whole program
+/// memory (the one table's figure, which `rapid check` measures a task's program
+/// against) cannot fit, and reading a huge file would only stall the task.
+const MAX_MODULE_BYTES: u64 = rapid_limits::PROGRAM_MEMORY_BYTES;
 
 /// A module file read from a device, ready to be linked into the task.
 #[derive(Debug, Clone)]

@@ -43,9 +43,12 @@ const CTRL_ID: &str = "VC";
 const LAN_IP: &str = "127.0.0.1";
 const CTRL_LANG: &str = "en";
 const SYSTEM_NAME: &str = "OpenRAPID";
-/// Free program memory in bytes (ProgMemFree): a fixed 8 MiB, since the interpreter's
-/// memory is not the controller's program memory.
-const PROG_MEM_FREE: f32 = 8_388_608.0;
+/// Free program memory in bytes (ProgMemFree): the whole of the program memory of the
+/// one table of limits (`rapid_limits::PROGRAM_MEMORY_BYTES`, ours: ABB publishes no
+/// figure), the figure `rapid check` and Load measure programs against. What the loaded
+/// program takes is not subtracted: the interpreter's memory is not the controller's,
+/// and how a controller counts a program is not public. 64 MiB (2^26) is exact in a num.
+const PROG_MEM_FREE: f32 = rapid_limits::PROGRAM_MEMORY_BYTES as f32;
 /// Installed options (GetNextOption), in ABB's "number name" form: the ones whose
 /// instructions the interpreter provides (sockets, RMQ between tasks).
 const OPTIONS: &[&str] = &["616-1 PC Interface", "623-1 Multitasking", "672-1 Socket Messaging"];
