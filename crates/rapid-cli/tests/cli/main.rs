@@ -52,6 +52,7 @@ mod scale;
 mod search;
 mod serve;
 mod serve_ampe;
+mod serve_ampe_protocol;
 mod serve_controller_ip;
 mod serve_faults;
 mod sockets;

@@ -21,7 +21,7 @@ use crate::fixture::{copy_dir, repo_root, scratch_in};
 use crate::serve::{interrupt, output_bounded, start_server, venv_python, wait_bounded};
 
 /// The client and every package it pulls in, pinned (they install on Python 3.11).
-const PACKAGES: [&str; 16] = [
+pub(super) const PACKAGES: [&str; 16] = [
     "abb-motion-program-exec==0.7.4",
     "abb-robot-client[aio]==0.4.0",
     "numpy==2.4.6",
