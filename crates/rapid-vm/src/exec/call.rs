@@ -63,6 +63,7 @@ impl Vm {
         match site.callee {
             Callee::Builtin(id) => {
                 let outcome = self.run_builtin(id, &args, host);
+                self.remember_repeated(&outcome, id, &args);
                 self.arg_scratch = args;
                 self.after_builtin(outcome)
             }

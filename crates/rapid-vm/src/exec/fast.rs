@@ -488,6 +488,7 @@ impl Vm {
                     }
                     self.frame_mut().pc = pc;
                     let outcome = self.run_builtin(id, &args, host);
+                    self.remember_repeated(&outcome, id, &args);
                     self.arg_scratch = args;
                     match outcome {
                         Ok((result, None, crate::builtins::StopKind::None)) => {

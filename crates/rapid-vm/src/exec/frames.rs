@@ -29,6 +29,9 @@ pub(crate) struct Frame {
     /// A TRAP routine an interrupt started: it returns to the interrupted instruction,
     /// and an error it does not handle goes to the system error handler.
     pub(super) interrupted: bool,
+    /// A built-in wait this frame's statement stands in, with the arguments it was
+    /// first called with (`repeat.rs`).
+    pub(super) repeated: Option<Box<super::repeat::Repeated>>,
 }
 
 impl Frame {
@@ -44,6 +47,7 @@ impl Frame {
             undoing: false,
             return_to: None,
             interrupted: false,
+            repeated: None,
         }
     }
 

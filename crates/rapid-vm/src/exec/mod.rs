@@ -24,6 +24,7 @@ mod late;
 mod log;
 pub mod modules;
 mod num;
+mod repeat;
 mod setup;
 mod shared;
 mod spy;
@@ -332,9 +333,8 @@ impl Vm {
             if self.frames.is_empty() {
                 return Exit::Done;
             }
-            // While the program owes the robot the rest of a move's wait (a trap cut
-            // it short), it runs one instruction at a time too, so the wait resumes as
-            // soon as the trap has returned (the fast loop would run on past it).
+            // While the program owes the robot the rest of a move's wait (a trap cut it
+            // short), one instruction at a time too: the wait resumes when the trap returns.
             let watched = self.resources.interrupts.active() || self.program_hold().is_some();
             let outcome = if self.resources.spy.is_active() || watched {
                 // The execution log sees every statement, and interrupts are looked for
@@ -348,14 +348,13 @@ impl Vm {
                         return Exit::Wait(wait);
                     }
                 }
-                let outcome = if self.resources.spy.is_active() { self.spy_step(host) } else { self.step(host) };
+                let outcome = self.resume_or_step(host);
                 self.spy_forget_if_stopped();
                 outcome
             } else {
-                match self.run_fast(&mut remaining, host) {
+                match self.resume_or_run_fast(&mut remaining, host) {
                     fast::Fast::Budget => break,
-                    // The instruction at pc needs the general path.
-                    fast::Fast::Step => self.step(host),
+                    fast::Fast::Step => self.step(host), // pc needs the general path
                     fast::Fast::Called(outcome) => outcome,
                 }
             };
