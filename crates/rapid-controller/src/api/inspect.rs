@@ -11,7 +11,8 @@
 //! (its result depends on its arguments alone); a user FUNC and other built-ins are
 //! refused with the reason. Aggregates are refused as not supported yet.
 
-use rapid_syntax::ast::{Arena, ExprId, ExprKind, Item, StmtKind};
+use rapid_sema::bind::{ArgBinder, Binding};
+use rapid_syntax::ast::{Arena, ArgKind, ExprId, ExprKind, Item, StmtKind};
 use rapid_vm::builtins::symsearch::SymData;
 use rapid_vm::value::Value;
 
@@ -361,28 +362,46 @@ impl Scope<'_> {
         // Messages name the built-in and its parameters as the catalogue spells them.
         let name = routine.display.clone();
         let name = name.as_str();
-        let params = routine.params.clone();
-        let groups = routine.groups.clone();
-        let type_names: Vec<String> =
-            params.iter().map(|p| program.map_or("", |p2| p2.types.name(p.ty)).to_owned()).collect();
-        let mut bound: Vec<Option<Value>> = vec![None; params.len()];
-        for arg in arena.args(args) {
-            let Some(value) = self.arg_value(arena, name, arg)? else { continue };
-            let at = match arg.name {
-                Some(written) => {
-                    let span = written.span;
-                    let written = self.parsed.source.get(span.start as usize..span.end as usize).unwrap_or_default();
-                    params
-                        .iter()
-                        .position(|p| p.display.eq_ignore_ascii_case(written))
-                        .ok_or_else(|| ApiError::Refused(format!("`{name}` has no parameter `{written}`")))?
-                }
-                None => next_free_required(&params, &groups, &bound, &value, &type_names)
-                    .ok_or_else(|| ApiError::Refused(format!("too many arguments for `{name}`")))?,
-            };
-            if bound[at].replace(value).is_some() {
-                return Err(ApiError::Refused(format!("`{}` of `{name}` is given twice", params[at].display)));
+        let (params, groups) = (routine.params.clone(), routine.groups.clone());
+        let types = program.map(|p| &p.types);
+        let kinds = ["num", "dnum", "string", "bool"].map(|kind| types.and_then(|t| t.find(kind)));
+        // The expression was parsed with an interner of its own: its argument names are
+        // spelled in the program's symbols, which the parameters are declared in.
+        let mut written = Vec::new();
+        for arg in arena.args(args).iter().filter(|a| a.kind != ArgKind::Placeholder) {
+            let mut arg = *arg;
+            if let Some(mut named) = arg.name {
+                let text =
+                    self.parsed.source.get(named.span.start as usize..named.span.end as usize).unwrap_or_default();
+                named.sym = program
+                    .and_then(|p| p.interner.get(text))
+                    .ok_or_else(|| ApiError::Refused(format!("`{name}` has no parameter `{text}`")))?;
+                arg.name = Some(named);
             }
+            written.push(arg);
+        }
+        let mut binder = ArgBinder::new(&params, &groups, Vec::new());
+        let mut bound: Vec<Option<Value>> = vec![None; params.len()];
+        for arg in &written {
+            let Some(value) = self.arg_value(arena, name, arg)? else { continue };
+            let value_ty = match value {
+                Value::Num(_) => kinds[0],
+                Value::Dnum(_) => kinds[1],
+                Value::Str(_) => kinds[2],
+                Value::Bool(_) => kinds[3],
+                _ => None,
+            };
+            let at = match binder.bind(arg, |_, param| value_ty == Some(param.ty)) {
+                Binding::Param { param, previous: None, .. } => param,
+                Binding::Param { param, .. } => {
+                    return Err(ApiError::Refused(format!("`{}` of `{name}` is given twice", params[param].display)))
+                }
+                Binding::UnknownName => return Err(ApiError::Refused(format!("`{name}` has no such parameter"))),
+                Binding::TooMany | Binding::NoValue => {
+                    return Err(ApiError::Refused(format!("too many arguments for `{name}`")))
+                }
+            };
+            bound[at] = Some(value);
         }
         let given = bound.iter().rposition(Option::is_some).map_or(0, |last| last + 1);
         if let Some(gap) = bound[..given].iter().position(Option::is_none) {
@@ -403,7 +422,6 @@ impl Scope<'_> {
         name: &str,
         arg: &rapid_syntax::ast::Arg,
     ) -> Result<Option<Value>, ApiError> {
-        use rapid_syntax::ast::ArgKind;
         match (arg.kind, arg.value) {
             (ArgKind::Required, Some(value)) => self.eval(arena, value).map(Some),
             (ArgKind::Optional, None) => Ok(Some(Value::SwitchOn)),
@@ -457,29 +475,6 @@ impl Scope<'_> {
             _ => Err(ApiError::Unsupported("the task's program has no types table".into())),
         }
     }
-}
-
-/// The parameter a positional argument of value `value` goes to: the first required
-/// group with no argument yet, and in a group of alternatives (`num Value | dnum
-/// DValue`) the alternative of the value's type, else the first (as the compiler binds).
-fn next_free_required(
-    params: &[rapid_sema::symbols::ParamInfo],
-    groups: &[(usize, usize)],
-    bound: &[Option<Value>],
-    value: &Value,
-    type_names: &[String],
-) -> Option<usize> {
-    let &(start, end) =
-        groups.iter().find(|&&(start, end)| !params[start].optional && (start..end).all(|p| bound[p].is_none()))?;
-    let kind = match value {
-        Value::Num(_) => Some("num"),
-        Value::Dnum(_) => Some("dnum"),
-        Value::Str(_) => Some("string"),
-        Value::Bool(_) => Some("bool"),
-        _ => None,
-    };
-    let fits = |p: &usize| kind.is_some_and(|kind| type_names[*p].eq_ignore_ascii_case(kind));
-    Some((start..end).find(fits).unwrap_or(start))
 }
 
 #[cfg(test)]
