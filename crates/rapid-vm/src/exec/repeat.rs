@@ -42,19 +42,24 @@ impl Vm {
     pub(super) fn remember_repeated(&mut self, outcome: &Outcome, id: BuiltinId, args: &[Value]) {
         let stack_len = self.storage.stack.len();
         let Some(frame) = self.frames.last_mut() else { return };
-        frame.repeated = match outcome {
-            Ok((_, _, StopKind::Repeat)) => frame.code.stmt_at(frame.pc).map(|s| {
-                Box::new(Repeated {
-                    code: frame.code.clone(),
-                    stmt_start: s.start,
-                    call_pc: frame.pc,
-                    stack_len,
-                    id,
-                    args: args.to_vec(),
-                })
-            }),
-            _ => None,
-        };
+        if !matches!(outcome, Ok((_, _, StopKind::Repeat))) {
+            // Every built-in call passes here (the fast loop's too): write only when
+            // there is a record to forget.
+            if frame.repeated.is_some() {
+                frame.repeated = None;
+            }
+            return;
+        }
+        frame.repeated = frame.code.stmt_at(frame.pc).map(|s| {
+            Box::new(Repeated {
+                code: frame.code.clone(),
+                stmt_start: s.start,
+                call_pc: frame.pc,
+                stack_len,
+                id,
+                args: args.to_vec(),
+            })
+        });
     }
 
     /// Resumes the top frame's waiting built-in when its statement is about to start
