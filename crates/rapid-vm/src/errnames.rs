@@ -84,6 +84,7 @@ errors! {
     Module = "ERR_MODULE",
     Syntax = "ERR_SYNTAX",
     IoError = "ERR_IOERROR",
+    PrgMemFull = "ERR_PRGMEMFULL",
     NotSaved = "ERR_NOTSAVED",
     LoadNoInUse = "ERR_LOADNO_INUSE",
     LoadNoNoUse = "ERR_LOADNO_NOUSE",

@@ -115,7 +115,8 @@ ENDMODULE
 fn load_measures_a_module_file_against_the_program_memory_of_the_limits_table() {
     // The table's program memory is 64 MiB (64 << 20 = 67,108,864 bytes): a module
     // file of 9 MiB (over the 8 MiB Load refused before) loads; one byte over 64 MiB
-    // is refused before it is read, the message naming the figure. ProgMemFree gives
+    // is refused before it is read with ERR_PRGMEMFULL ("program memory full", Load's
+    // error for a module that does not fit), the message naming the figure. ProgMemFree gives
     // the same figure: 67,108,864 DIV 1024 = 65,536 KiB.
     let root = std::env::temp_dir().join(format!("rapid-dynload-memory-{}", std::process::id()));
     let home = root.join("HOME");
@@ -133,7 +134,7 @@ PROC main()
   Load "HOME:/huge.mod";
   TPWrite "not reached";
 ERROR
-  TPWrite "refused " \Bool:=ERRNO = ERR_IOERROR;
+  TPWrite "refused " \Bool:=ERRNO = ERR_PRGMEMFULL;
   RETURN;
 ENDPROC
 ENDMODULE

@@ -132,8 +132,11 @@ fn read_module(ctx: &Ctx<'_>, path: &Value, file: Option<&Value>, dynamic: bool)
     match meta {
         Ok(meta) if meta.kind == FileKind::File => {
             if meta.len > MAX_MODULE_BYTES {
+                // ERR_PRGMEMFULL, "program memory full": Load's error for a module
+                // that does not fit (the instructions manual's Load error list; real
+                // programs' Load handlers test it beside ERR_IOERROR and ERR_SYNTAX).
                 return Err(ctx.error(
-                    Err::IoError,
+                    Err::PrgMemFull,
                     format!("`{path}` is larger than the program memory ({MAX_MODULE_BYTES} bytes)"),
                 ));
             }
