@@ -14,6 +14,7 @@
 //! SEMISTATIC tasks are not stopped.
 
 use rapid_config::eio::{Eio, SysAction, SysStatus};
+use rapid_vm::builtins::controller::RunMode;
 use rapid_vm::Host;
 
 use crate::schedule::{Controller, State};
@@ -273,6 +274,7 @@ impl Controller {
         // stop position runs the RESTART event routines (START is for a start from
         // main), as we remember the system parameters manual's table of events.
         let _ = mode;
+        self.set_run_mode(RunMode::ContCycle);
         self.ops.state = Some(ProgramState::Running);
         let stood = self.time - self.ops.stopped_at;
         for idx in self.stopped_tasks() {
@@ -295,6 +297,7 @@ impl Controller {
         if self.ops.state() != ProgramState::Stopped || self.ops.motors_off {
             return false;
         }
+        self.set_run_mode(RunMode::ContCycle);
         self.ops.state = Some(ProgramState::Running);
         for idx in self.stopped_tasks() {
             let entry = self.tasks[idx].loaded.entry;
@@ -411,6 +414,15 @@ impl Controller {
         match task.state {
             State::Ready => task.loaded.vm.at_instruction_boundary(),
             _ => true,
+        }
+    }
+
+    /// How the program runs from now (RunMode: continuous, stepped forward or
+    /// backward, move step), in every NORMAL task: the program runs in one mode, and
+    /// the static and semistatic tasks run on continuously whatever it is.
+    pub(crate) fn set_run_mode(&mut self, mode: RunMode) {
+        for task in self.tasks.iter_mut().filter(|t| t.spec.kind == TaskKind::Normal) {
+            task.loaded.vm.resources_mut().controller.run_mode = mode;
         }
     }
 

@@ -4,6 +4,7 @@
 
 use std::time::{Duration, Instant};
 
+use rapid_vm::builtins::controller::RunMode;
 use rapid_vm::Host;
 
 use super::debug::{BreakpointHit, Location, StepKind};
@@ -246,7 +247,8 @@ impl Session {
             )));
         }
         self.controller.pass_current(idx);
-        if !self.controller.step_forward(&mut self.pendant, idx) {
+        let mode = if kind == StepKind::Motion { RunMode::StepMove } else { RunMode::InstrFwd };
+        if !self.controller.step_forward_as(&mut self.pendant, idx, mode) {
             return Err(ApiError::WrongState("the controller refused the step (motors off?)".into()));
         }
         self.controller.watch_step(idx, kind);
@@ -270,6 +272,7 @@ impl Session {
                 )));
             }
         }
+        self.controller.set_run_mode(RunMode::InstrBwd);
         let outcome = self.controller.with_task(idx, &mut self.pendant, |vm, host| vm.step_backward(host));
         self.gather();
         outcome.map_err(|refusal| ApiError::Refused(format!("no step backward in task {task}: {refusal:?}")))

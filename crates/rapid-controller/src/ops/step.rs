@@ -6,10 +6,14 @@
 //! of safe interrupts (`\SingleSafe`) are queued and all others are dropped; the safe
 //! ones queued run first, in order, when continuous execution starts (§1.11 "安全中断").
 //! A wait under way at the stop goes on with the time it still had; the robot goes on
-//! along its path during the step and stops on it again after.
+//! along its path during the step and stops on it again after. RunMode reads
+//! RUN_INSTR_FWD (or RUN_STEP_MOVE) while stepping, and a move stepped ends with the
+//! robot at its target, its zone taken as a stop point
+//! (`rapid_vm::builtins::controller::RunMode::moves_end_at_targets`).
 // uncertain: the STOP event routines and the event-log entries of a stop and start
 // (10150/10151) are not repeated for each step; the manual does not say.
 
+use rapid_vm::builtins::controller::RunMode;
 use rapid_vm::Host;
 
 use super::ProgramState;
@@ -20,6 +24,12 @@ impl Controller {
     /// One step of NORMAL task `task` of the stopped program. False when the program
     /// is not stopped, the motors are off, or `task` is no NORMAL task still running.
     pub fn step_forward(&mut self, host: &mut dyn Host, task: usize) -> bool {
+        self.step_forward_as(host, task, RunMode::InstrFwd)
+    }
+
+    /// [`Controller::step_forward`] in run mode `mode`: a forward step
+    /// (RUN_INSTR_FWD) or a move step (RUN_STEP_MOVE).
+    pub fn step_forward_as(&mut self, host: &mut dyn Host, task: usize, mode: RunMode) -> bool {
         if self.ops.state() != ProgramState::Stopped || self.ops.motors_off {
             return false;
         }
@@ -27,6 +37,7 @@ impl Controller {
         if spec.kind != TaskKind::Normal || matches!(self.tasks[task].state, State::Ended(_)) {
             return false;
         }
+        self.set_run_mode(mode);
         // uncertain: the STEP event routines run as each step begins.
         for routine in self.hooks_of("STEP", task) {
             self.run_in_place(task, host, &routine, "STEP");

@@ -55,9 +55,6 @@ const OPTIONS: &[&str] = &["616-1 PC Interface", "623-1 Multitasking", "672-1 So
 /// Installed products and their versions (GetNextProduct).
 const PRODUCTS: &[(&str, &str)] = &[("RobotWare", SW_VERSION)];
 
-// The values of the symnum and event_type constants (catalogue data.rs).
-const RUN_CONT_CYCLE: f32 = 1.0;
-
 /// `GetSysInfo([\SerialNo] | [\SWVersion] | ... | [\SystemName])`: one item of
 /// system information, chosen by the switch.
 fn get_sys_info(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
@@ -88,9 +85,12 @@ fn op_mode(ctx: &mut Ctx<'_>, _: &[Value]) -> Res {
     Ok(Some(Value::Num(ctx.resources.controller.mode.symnum())))
 }
 
-/// `RunMode([\Main])`: RUN_CONT_CYCLE; `rapid run` runs the program continuously.
-fn run_mode(_: &mut Ctx<'_>, _: &[Value]) -> Res {
-    Ok(Some(Value::Num(RUN_CONT_CYCLE)))
+/// `RunMode([\Main])`: how the program is being run (continuously, stepped forward
+/// or backward, move step), as the controller set it for the task.
+// uncertain: `\Main` asks for the mode of the motion task the task is connected to;
+// the controller sets the same mode in every NORMAL task, so the task's own answers.
+fn run_mode(ctx: &mut Ctx<'_>, _: &[Value]) -> Res {
+    Ok(Some(Value::Num(ctx.resources.controller.run_mode.symnum())))
 }
 
 /// `NonMotionMode([\Main])`: FALSE; the task executes its movements (virtually).

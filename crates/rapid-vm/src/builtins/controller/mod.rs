@@ -67,6 +67,41 @@ impl OpMode {
     }
 }
 
+/// How the program is being run, as RunMode reports it (its symnum: RUN_CONT_CYCLE 1,
+/// RUN_INSTR_FWD 2, RUN_INSTR_BWD 3, RUN_STEP_MOVE 5). The controller sets it as the
+/// operator starts or steps the program; `rapid run` runs continuously.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum RunMode {
+    /// Continuous or cycle running.
+    #[default]
+    ContCycle = 1,
+    /// Stepping forward (FWD step: step into, over, out).
+    InstrFwd = 2,
+    /// Stepping backward (BWD step).
+    InstrBwd = 3,
+    /// Running to the next motion instruction (move step).
+    StepMove = 5,
+}
+
+impl RunMode {
+    /// The value RunMode() returns.
+    pub fn symnum(self) -> f32 {
+        f32::from(self as u8)
+    }
+
+    /// Whether a move instruction ends with the robot standing at its target, its
+    /// zone taken as a stop point. The overview manual's figure of step execution
+    /// ("step forward until the robot is at p5… the second forward step moves the
+    /// robot to p2") has each forward step of a move end with the robot at the
+    /// programmed point, and a forward step of MoveC stop the robot at its circle
+    /// point; a fly-by point would leave it short, moving on while the program stands.
+    // uncertain: the manual says nothing of a move step (RUN_STEP_MOVE) ending at its
+    // target; we take it as a forward step that goes on to the next move.
+    pub fn moves_end_at_targets(self) -> bool {
+        self != RunMode::ContCycle
+    }
+}
+
 /// What the controller keeps for the task outside the program.
 #[derive(Debug, Clone)]
 pub struct ControllerState {
@@ -85,6 +120,9 @@ pub struct ControllerState {
     pub warm_start: bool,
     /// `Stop \AllMoveTasks` was executed: the other NORMAL tasks stop too.
     pub stop_all_moves: bool,
+    /// How the program is being run (RunMode): set by the controller as it starts or
+    /// steps the program.
+    pub run_mode: RunMode,
 }
 
 impl Default for ControllerState {
@@ -111,6 +149,7 @@ impl ControllerState {
             stop_pp_to_main: true,
             warm_start: false,
             stop_all_moves: false,
+            run_mode: RunMode::ContCycle,
         }
     }
 

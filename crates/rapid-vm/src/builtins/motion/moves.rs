@@ -156,6 +156,10 @@ pub(super) fn go_with(
     events: Vec<super::robot::PathEvent>,
 ) -> Res {
     let (speed, mut zone) = speed_and_zone(ctx, args, layout)?;
+    if ctx.resources.controller.run_mode.moves_end_at_targets() {
+        // Stepped: the step ends with the robot at the target (RunMode's rule).
+        zone = rapid_motion::plan::ZoneData::FINE;
+    }
     let mut settings = planner_settings(ctx);
     // `\T`: the move's time; `\Inpos`: a stop point of its own in place of the zone.
     settings.move_time = ctx.opt_num(args.get(layout.t))?;
