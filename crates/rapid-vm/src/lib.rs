@@ -25,6 +25,7 @@ pub mod errnames;
 pub mod error;
 pub mod events;
 pub mod exec;
+pub mod ext;
 pub mod format;
 pub mod host;
 pub mod instrs;
@@ -218,7 +219,16 @@ pub fn load_in(
 /// the data initialisers): its routines as the VM would run them, for listings
 /// (`rapid dump-ir`, `disas::list`).
 pub fn compile_files(files: &[SourceInput], options: &Options) -> Result<CompiledTask, LoadError> {
-    let builtins = builtins::Builtins::standard();
+    compile_files_in(files, options, builtins::Builtins::standard())
+}
+
+/// [`compile_files`] with the set of built-ins `builtins` (an embedder's, with its
+/// extensions: `rapid_controller::builtin_set`).
+pub fn compile_files_in(
+    files: &[SourceInput],
+    options: &Options,
+    builtins: std::sync::Arc<builtins::Builtins>,
+) -> Result<CompiledTask, LoadError> {
     let (mut prog, _, parses, streamed) = checked(files, options, &builtins)?;
     let modules = module_sources(files, &parses);
     let compiled = compile_modules(&mut prog, &modules, &builtins, streamed)?;

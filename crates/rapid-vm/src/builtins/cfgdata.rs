@@ -18,11 +18,11 @@
 use std::any::Any;
 use std::path::Path;
 
-use super::files::devices;
 use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
+use crate::world::devices;
 use crate::world::{FileKind, FileSystem};
 
 type Res = Result<Option<Value>, RapidError>;
@@ -398,13 +398,13 @@ fn save_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
             target.clone()
         };
         let resolved =
-            ctx.resources.files.resolve(&text).map_err(|fault| ctx.error(Err::CfgWriteFile, fault.message()))?;
-        let fs = ctx.resources.files.file_system();
+            ctx.resources.devices.resolve(&text).map_err(|fault| ctx.error(Err::CfgWriteFile, fault.message()))?;
+        let fs = ctx.resources.devices.file_system();
         if resolved.is_device_root || fs.metadata(&resolved.path).is_ok_and(|m| m.kind == FileKind::Dir) {
             return Err(ctx.error(Err::CfgWriteFile, format!("`{text}` is a folder, not a file")));
         }
         let contents = ctx.resources.cfgdata.database().map_or_else(String::new, |db| db.domain_text(idx).to_owned());
-        write_atomically(ctx.resources.files.file_system(), &resolved.path, contents.as_bytes())
+        write_atomically(ctx.resources.devices.file_system(), &resolved.path, contents.as_bytes())
             .map_err(|e| ctx.error(Err::CfgWriteFile, format!("cannot write `{text}`: {e}")))?;
     }
     Ok(None)

@@ -13,19 +13,18 @@ pub mod controller;
 mod dialogs;
 mod dnheader;
 mod events;
-pub mod files;
 mod geometry;
 pub mod interrupts;
 pub mod io;
 mod io_units;
 pub(crate) mod io_visualize;
-mod io_wait;
+pub(crate) mod io_wait;
 mod math;
 mod matrix;
 pub mod modules;
 pub mod motion;
 mod not_yet;
-mod pendant;
+pub(crate) mod pendant;
 pub mod pure;
 mod random;
 mod rawbytes;
@@ -115,7 +114,8 @@ pub struct Ctx<'a> {
 /// referred to by `OpaqueState::Handle` in the program's iodev/dir/socketdev data.
 #[derive(Default)]
 pub struct Resources {
-    pub files: files::FileState,
+    /// The file devices (`HOME:` ...) on the world's disk, and the loaded modules' files.
+    pub devices: crate::world::devices::Devices,
     pub sockets: sockets::SocketState,
     /// Installed user text tables (kept at PP to Main, as the controller keeps them).
     pub texttab: texttab::TextTabState,
@@ -151,10 +151,10 @@ pub struct Shared {
 }
 
 impl Resources {
-    /// Closes every file, directory and socket (end of program, PP to Main: the
-    /// start-up table of §1.2.2 closes files and sockets).
+    /// Closes every socket, and through the extensions (`TaskState::close_all`) every
+    /// file and directory (end of program, PP to Main: the start-up table of §1.2.2
+    /// closes files and sockets).
     pub fn close_all(&mut self) {
-        self.files.close_all();
         self.sockets.close_all();
         self.symsearch.end_search();
         self.spy.stop();
@@ -209,6 +209,19 @@ impl Ctx<'_> {
             None | Some(Value::Absent) => Ok(None),
             Some(v) => self.num(v).map(Some),
         }
+    }
+
+    /// Resolves RAPID path `text` on its device (`crate::world::devices`), after the
+    /// extensions wrote out what the task wrote but still holds in write buffers
+    /// ([`crate::embed::TaskHooks::flush_files`]): whatever looks at a path next sees it.
+    pub fn resolve_path(
+        &mut self,
+        text: &str,
+    ) -> Result<crate::world::devices::Resolved, crate::world::devices::PathFault> {
+        for hooks in self.builtins.hooks() {
+            hooks.flush_files(self.resources);
+        }
+        self.resources.devices.resolve(text)
     }
 
     /// The shell of a non-value argument (iodev, dir, socketdev, loadsession …) and
@@ -324,7 +337,6 @@ pub(crate) static CORE_FAMILIES: &[&Family] = &[
     &strings::FAMILY,
     &calendar::FAMILY,
     &symbols::FAMILY,
-    &files::FAMILY,
     &sockets::FAMILY,
     &matrix::FAMILY,
     &sysinfo::FAMILY,

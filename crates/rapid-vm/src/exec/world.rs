@@ -8,7 +8,7 @@ impl Vm {
     /// time now). Without one the task has none (see [`crate::world`]).
     pub fn set_world(&mut self, world: crate::world::World) {
         self.wall_epoch = world.clock.wall_seconds();
-        self.resources.files.set_file_system(world.files);
+        self.resources.devices.set_file_system(world.files);
         self.resources.sockets.set_network(world.net, world.clock);
         self.world_given = true;
     }

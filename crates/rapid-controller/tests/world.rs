@@ -10,7 +10,13 @@ use std::time::Duration;
 use rapid_sema::SourceInput;
 use rapid_vm::world::memory::{MemoryFs, SilentNetwork};
 use rapid_vm::world::{Clock, StoppedClock, World};
-use rapid_vm::{load, Exit, RecordingHost, Vm};
+use rapid_vm::{Exit, RecordingHost, Vm};
+
+/// Loads with the controller's standard set of built-ins (the file and socket
+/// built-ins are the controller's bindings).
+fn load(files: &[SourceInput], entry: &str) -> Result<rapid_vm::Loaded, rapid_vm::LoadError> {
+    rapid_controller::builtin_set::load_with(files, entry, &rapid_sema::Options::default())
+}
 
 /// The controller root of the file devices: a path on the disk in memory only.
 const ROOT: &str = "/virtual-controller";
@@ -113,7 +119,7 @@ ENDMODULE
 fn files_are_written_read_and_listed_on_the_worlds_disk() {
     let fs = Rc::new(MemoryFs::new());
     let mut vm = vm(FILES);
-    vm.resources_mut().files.set_root(ROOT);
+    vm.resources_mut().devices.set_root(ROOT);
     vm.set_world(World { files: Box::new(SharedFs(fs.clone())), ..World::closed() });
     let lines = run(vm);
     // What the program read back is what it wrote; the listing has the controller's
@@ -135,7 +141,7 @@ fn without_a_world_a_file_cannot_be_opened() {
     let program = "MODULE t\nPROC main()\n  VAR iodev f;\n  Open \"HOME:/a.txt\", f \\Write;\nERROR\n  \
                    IF ERRNO = ERR_FILEOPEN TPWrite \"no disk\";\n  RETURN;\nENDPROC\nENDMODULE\n";
     let mut vm = vm(program);
-    vm.resources_mut().files.set_root(ROOT);
+    vm.resources_mut().devices.set_root(ROOT);
     assert_eq!(run(vm), ["no disk"]);
 }
 

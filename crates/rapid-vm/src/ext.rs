@@ -1,0 +1,24 @@
+//! What a built-in family defined outside this crate uses of the interpreter: an
+//! embedder's [`crate::embed::Extension`] registers families written like the
+//! language's own, and this module is the one place they take the interpreter's
+//! helpers from (issue 19: the controller's bindings moved out of the VM).
+//!
+//! Kept small on purpose: a family reads its arguments through [`Ctx`], finds them by
+//! parameter name ([`layout!`](crate::builtin_layout)), raises RAPID errors, waits as
+//! the language's waiting instructions do, and keeps its own state in the task's
+//! extension slot (`Resources::extensions`). Anything else a family needs is added
+//! here deliberately, not reached through a private path.
+//!
+//! What this module must not know: any extension.
+
+pub use crate::builtin_layout as layout;
+pub use crate::builtins::io_wait::{wait_again, wait_over, wait_started};
+pub use crate::builtins::pendant::value_text;
+pub use crate::builtins::signature::{of as signature, Signature};
+pub use crate::builtins::{native, present, Builtin, BuiltinFn, Ctx, Family, Resources, StopKind};
+pub use crate::errnames::Err;
+pub use crate::error::RapidError;
+pub use crate::world::devices;
+
+/// What a built-in returns: a value for a function, none for an instruction.
+pub type Res = Result<Option<crate::value::Value>, RapidError>;
