@@ -12,7 +12,12 @@ use rapid_vm::embed::Extension;
 use rapid_vm::{LoadError, Loaded};
 
 /// The extensions every task runs with, one line each, in registration order.
-static EXTENSIONS: &[&Extension] = &[&rapid_vm::builtins::motion::EXTENSION, &crate::bindings::files::EXTENSION];
+static EXTENSIONS: &[&Extension] = &[
+    &rapid_vm::builtins::motion::EXTENSION, // the robot
+    &crate::bindings::files::EXTENSION,     // files and folders
+    &crate::bindings::sockets::EXTENSION,   // sockets
+    &crate::bindings::cfgdata::EXTENSION,   // configuration data
+];
 
 static STANDARD: LazyLock<Arc<Builtins>> = LazyLock::new(|| Arc::new(Builtins::new(EXTENSIONS)));
 
@@ -34,7 +39,16 @@ mod tests {
     #[test]
     fn the_standard_set_runs_the_controllers_bindings() {
         let set = standard();
-        for name in ["Open", "ReadStr", "ModExist", "MoveL"] {
+        for name in [
+            "Open",
+            "ReadStr",
+            "ModExist",
+            "SocketCreate",
+            "SocketReceive",
+            "ReadCfgData",
+            "GetModalPayLoadMode",
+            "MoveL",
+        ] {
             assert!(set.lookup(name).is_some(), "{name} is not in the standard set");
         }
         let core = rapid_vm::builtins::Builtins::core();

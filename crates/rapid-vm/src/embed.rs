@@ -76,6 +76,17 @@ pub trait TaskHooks: Sync {
         Vec::new()
     }
 
+    /// The task was given its outside world (`Vm::set_world`; the file devices took
+    /// its disk): an extension that reaches the network takes it out of `net` (the
+    /// first to take it has it) and keeps the clock its waits run on.
+    fn world_given(
+        &self,
+        _resources: &mut Resources,
+        _net: &mut Option<Box<dyn crate::world::Network>>,
+        _clock: &std::rc::Rc<dyn crate::world::Clock>,
+    ) {
+    }
+
     /// A built-in is about to look at a path on the file devices (`Ctx::resolve_path`):
     /// what the task wrote but still holds in write buffers reaches the disk first.
     fn flush_files(&self, _resources: &mut Resources) {}

@@ -5,9 +5,10 @@
 //! gives each task (the std ones live in `rapid_controller::host_std`); the sandbox
 //! of the file devices is the VM's own. It knows no configuration file format: the
 //! controller hands it its own types (a task's `builtins::rmq::RmqConfig`, a built
-//! `rapid_io::IoSystem`) and the configuration data behind
-//! `builtins::cfgdata::CfgDatabase`. RAPID call depth lives in explicit frames,
-//! never on the Rust stack.
+//! `rapid_io::IoSystem`); the configuration data, the files and the sockets are the
+//! controller's bindings (`rapid_controller::bindings`), extensions that reach the
+//! interpreter through [`ext`]. RAPID call depth lives in explicit frames, never on
+//! the Rust stack.
 //!
 //! What an embedder adds (built-in families, per-task state, the hooks the loop
 //! calls) comes in through [`embed::Extension`] and a set of built-ins

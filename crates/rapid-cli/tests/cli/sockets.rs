@@ -71,7 +71,7 @@ fn vm(src: &str) -> Vm {
 /// Runs the program one instruction at a time until it has bound a socket; its address.
 fn run_until_bound(machine: &mut Vm, host: &mut RecordingHost) -> SocketAddr {
     for _ in 0..10_000 {
-        if let Some(addr) = machine.resources_mut().sockets.bound_addrs().first() {
+        if let Some(addr) = rapid_controller::bindings::sockets::of_mut(machine.resources_mut()).bound_addrs().first() {
             return *addr;
         }
         match machine.run(host, 1) {

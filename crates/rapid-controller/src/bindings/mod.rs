@@ -1,5 +1,5 @@
 //! The built-in families of the controller's side: what a RAPID program reaches of
-//! the controller beyond the language (its file devices ...). Each is an extension of
+//! the controller beyond the language (its file devices, its network, its configuration ...). Each is an extension of
 //! the interpreter (`rapid_vm::embed::Extension`): its built-ins, the state it keeps
 //! per task in the task's extension slot, and the hooks the interpreter's loop calls
 //! (closing at PP to Main through `TaskState::close_all`). [`crate::builtin_set`] puts
@@ -8,4 +8,6 @@
 //! What it must not know: the scheduler, the API, the front ends; a family sees its
 //! task through `rapid_vm::ext::Ctx` only.
 
+pub mod cfgdata;
 pub mod files;
+pub mod sockets;

@@ -24,7 +24,7 @@ pub fn configure(
     let resources = loaded.vm.resources_mut();
     resources.devices.set_root(home);
     resources.devices.set_modules(module_files(files));
-    resources.cfgdata.set_config(Box::new(super::cfgdata::SysParams::new(syspar)));
+    crate::bindings::cfgdata::of_mut(resources).set_config(Box::new(super::cfgdata::SysParams::new(syspar)));
     resources.controller = state;
 }
 

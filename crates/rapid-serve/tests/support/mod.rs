@@ -66,7 +66,8 @@ pub(crate) fn boot_with(
     .map_err(|e| format!("{e:?}"))?;
     loaded.vm.resources_mut().devices.set_root(root);
     let config = config.into_iter().map(|(domain, text)| (domain, rapid_config::parse(&text))).collect();
-    loaded.vm.resources_mut().cfgdata.set_config(Box::new(rapid_controller::boot::cfgdata::SysParams::new(config)));
+    rapid_controller::bindings::cfgdata::of_mut(loaded.vm.resources_mut())
+        .set_config(Box::new(rapid_controller::boot::cfgdata::SysParams::new(config)));
     let signals: String =
         names.iter().map(|(n, _, kind)| format!("\n      -Name \"{n}\" -SignalType \"{kind}\"\n")).collect();
     let eio = rapid_config::eio::read(&rapid_config::parse(&format!("EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n{signals}")));

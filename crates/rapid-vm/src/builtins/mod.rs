@@ -7,7 +7,6 @@
 mod argname;
 mod bits;
 mod calendar;
-pub mod cfgdata;
 mod clock;
 pub mod controller;
 mod dialogs;
@@ -32,7 +31,6 @@ mod registry;
 pub(crate) mod signature;
 pub use registry::{compiled, native, out_of_step, Builtin, Builtins, Compiled, Family};
 pub mod rmq;
-pub mod sockets;
 pub mod spy;
 mod strdig;
 mod strformat;
@@ -116,7 +114,6 @@ pub struct Ctx<'a> {
 pub struct Resources {
     /// The file devices (`HOME:` ...) on the world's disk, and the loaded modules' files.
     pub devices: crate::world::devices::Devices,
-    pub sockets: sockets::SocketState,
     /// Installed user text tables (kept at PP to Main, as the controller keeps them).
     pub texttab: texttab::TextTabState,
     /// The task's module data by module, and the search SetDataSearch started.
@@ -130,8 +127,6 @@ pub struct Resources {
     pub io: io::IoState,
     /// The task's interrupts (deleted at PP to Main).
     pub interrupts: interrupts::InterruptState,
-    /// The system parameters the run was started with (kept at PP to Main).
-    pub cfgdata: cfgdata::CfgState,
     /// Which task this is and what the tasks share (sync points).
     pub tasking: tasking::TaskingState,
     /// The task's side of the RAPID Message Queue.
@@ -151,11 +146,10 @@ pub struct Shared {
 }
 
 impl Resources {
-    /// Closes every socket, and through the extensions (`TaskState::close_all`) every
-    /// file and directory (end of program, PP to Main: the start-up table of §1.2.2
-    /// closes files and sockets).
+    /// Ends what the task holds open (end of program, PP to Main: the start-up table
+    /// of §1.2.2 closes files and sockets, which the extensions close through
+    /// `TaskState::close_all`).
     pub fn close_all(&mut self) {
-        self.sockets.close_all();
         self.symsearch.end_search();
         self.spy.stop();
         self.modules.close_all();
@@ -337,7 +331,6 @@ pub(crate) static CORE_FAMILIES: &[&Family] = &[
     &strings::FAMILY,
     &calendar::FAMILY,
     &symbols::FAMILY,
-    &sockets::FAMILY,
     &matrix::FAMILY,
     &sysinfo::FAMILY,
     &strdig::FAMILY,
@@ -353,7 +346,6 @@ pub(crate) static CORE_FAMILIES: &[&Family] = &[
     &io_wait::FAMILY,
     &io_units::FAMILY,
     &spy::FAMILY,
-    &cfgdata::FAMILY,
     &tasking::FAMILY,
     &rmq::FAMILY,
     &controller::FAMILY,
