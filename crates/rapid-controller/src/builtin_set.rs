@@ -17,6 +17,7 @@ static EXTENSIONS: &[&Extension] = &[
     &crate::bindings::files::EXTENSION,     // files and folders
     &crate::bindings::sockets::EXTENSION,   // sockets
     &crate::bindings::cfgdata::EXTENSION,   // configuration data
+    &crate::bindings::rmq::EXTENSION,       // RAPID Message Queue
 ];
 
 static STANDARD: LazyLock<Arc<Builtins>> = LazyLock::new(|| Arc::new(Builtins::new(EXTENSIONS)));
@@ -36,22 +37,27 @@ pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Resul
 mod tests {
     use super::standard;
 
+    /// One built-in of each binding: in the standard set, not in the language's core.
+    const BINDINGS: &[&str] = &[
+        "Open",
+        "ReadStr",
+        "ModExist",
+        "SocketCreate",
+        "SocketReceive",
+        "ReadCfgData",
+        "GetModalPayLoadMode",
+        "RMQSendMessage",
+        "IRMQMessage",
+    ];
+
     #[test]
     fn the_standard_set_runs_the_controllers_bindings() {
         let set = standard();
-        for name in [
-            "Open",
-            "ReadStr",
-            "ModExist",
-            "SocketCreate",
-            "SocketReceive",
-            "ReadCfgData",
-            "GetModalPayLoadMode",
-            "MoveL",
-        ] {
-            assert!(set.lookup(name).is_some(), "{name} is not in the standard set");
-        }
         let core = rapid_vm::builtins::Builtins::core();
-        assert!(core.lookup("Open").is_none(), "Open is the files extension's, not the core's");
+        for name in BINDINGS {
+            assert!(set.lookup(name).is_some(), "{name} is not in the standard set");
+            assert!(core.lookup(name).is_none(), "{name} is a binding of the controller's, not the core's");
+        }
+        assert!(set.lookup("MoveL").is_some(), "the robot's extension is in the set");
     }
 }

@@ -12,13 +12,26 @@
 //! What this module must not know: any extension.
 
 pub use crate::builtin_layout as layout;
+pub use crate::builtins::interrupts::{interrupt_number, next_due, Source as InterruptSource};
 pub use crate::builtins::io_wait::{wait_again, wait_over, wait_started};
 pub use crate::builtins::pendant::value_text;
 pub use crate::builtins::signature::{of as signature, Signature};
-pub use crate::builtins::{native, present, Builtin, BuiltinFn, Ctx, Family, Resources, StopKind};
+pub use crate::builtins::{native, present, read_literal, Builtin, BuiltinFn, Ctx, Family, Resources, StopKind};
 pub use crate::errnames::Err;
 pub use crate::error::RapidError;
 pub use crate::world::devices;
 
 /// What a built-in returns: a value for a function, none for an instruction.
 pub type Res = Result<Option<crate::value::Value>, RapidError>;
+
+/// Where the running call is: its call depth and the instruction in its routine. A
+/// waiting built-in that runs again (`StopKind::Repeat`) keys its wait by this, so a
+/// wait begun by another call is never taken for its own.
+pub fn call_site(ctx: &Ctx<'_>) -> (usize, u32) {
+    (ctx.chain.len(), ctx.chain.last().map_or(0, |frame| frame.position().1))
+}
+
+/// The index of the task in the task system (its place in the configuration, from 0).
+pub fn task_index(ctx: &Ctx<'_>) -> usize {
+    ctx.resources.tasking.index()
+}

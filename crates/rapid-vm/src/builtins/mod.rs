@@ -129,7 +129,8 @@ pub struct Resources {
     pub interrupts: interrupts::InterruptState,
     /// Which task this is and what the tasks share (sync points).
     pub tasking: tasking::TaskingState,
-    /// The task's side of the RAPID Message Queue.
+    /// The task's types a RAPID Message Queue message travels by (the RMQ built-ins
+    /// are the controller's; the robot's read the types too).
     pub rmq: rmq::RmqState,
     /// The operating mode, speed override and PP flags (kept at PP to Main).
     pub controller: controller::ControllerState,
@@ -155,7 +156,6 @@ impl Resources {
         self.modules.close_all();
         self.interrupts.clear();
         self.tasking.end_waits();
-        self.rmq.end_waits();
         self.extensions.close_all();
     }
 
@@ -347,7 +347,6 @@ pub(crate) static CORE_FAMILIES: &[&Family] = &[
     &io_units::FAMILY,
     &spy::FAMILY,
     &tasking::FAMILY,
-    &rmq::FAMILY,
     &controller::FAMILY,
 ];
 
