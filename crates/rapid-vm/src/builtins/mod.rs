@@ -99,7 +99,7 @@ pub struct Ctx<'a> {
     pub routine: &'a str,
     /// Wall-clock seconds since 1970 when the task was given its world (CDate, CTime).
     pub wall_epoch: f64,
-    /// Open files, directories and sockets of the task.
+    /// What the task has outside the interpreter (the extensions' state among it).
     pub resources: &'a mut Resources,
     /// The call chain, outermost first; the last frame made the call (ExecHandler,
     /// ExecLevel).
@@ -108,8 +108,9 @@ pub struct Ctx<'a> {
     pub builtins: &'a Builtins,
 }
 
-/// What the task holds open outside the interpreter: each family keeps its own table,
-/// referred to by `OpaqueState::Handle` in the program's iodev/dir/socketdev data.
+/// What the task holds outside the interpreter: each family keeps its own table,
+/// referred to by `OpaqueState::Handle` in the program's data (an extension's, such
+/// as the controller's iodev, dir and socketdev tables, in `extensions`).
 #[derive(Default)]
 pub struct Resources {
     /// The file devices (`HOME:` ...) on the world's disk, and the loaded modules' files.
