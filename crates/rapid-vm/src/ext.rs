@@ -4,7 +4,8 @@
 //! helpers from (issue 19: the controller's bindings moved out of the VM).
 //!
 //! Kept small on purpose: a family reads its arguments through [`Ctx`], finds them by
-//! parameter name ([`layout!`](crate::builtin_layout)), raises RAPID errors, waits as
+//! parameter name ([`layout!`](crate::builtin_layout)), raises RAPID errors
+//! (`Ctx::error`, with `crate::errnames::Err`), waits as
 //! the language's waiting instructions do, and keeps its own state in the task's
 //! extension slot (`Resources::extensions`). Anything else a family needs is added
 //! here deliberately, not reached through a private path.
@@ -16,13 +17,8 @@ pub use crate::builtins::interrupts::{interrupt_number, next_due, Source as Inte
 pub use crate::builtins::io_wait::{wait_again, wait_over, wait_started};
 pub use crate::builtins::pendant::value_text;
 pub use crate::builtins::signature::{of as signature, Signature};
-pub use crate::builtins::{native, present, read_literal, Builtin, BuiltinFn, Ctx, Family, Resources, StopKind};
-pub use crate::errnames::Err;
-pub use crate::error::RapidError;
+pub use crate::builtins::{native, present, read_literal, Ctx, Family, Resources, StopKind};
 pub use crate::world::devices;
-
-/// What a built-in returns: a value for a function, none for an instruction.
-pub type Res = Result<Option<crate::value::Value>, RapidError>;
 
 /// Where the running call is: its call depth and the instruction in its routine. A
 /// waiting built-in that runs again (`StopKind::Repeat`) keys its wait by this, so a

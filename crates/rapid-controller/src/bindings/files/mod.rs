@@ -1,11 +1,11 @@
 //! Files and folders on the controller's devices (§1.16) and character/binary I/O on
 //! them (§1.10), an extension of the interpreter ([`EXTENSION`]).
 //!
-//! * [`folders`]: MakeDir, RemoveDir, OpenDir/ReadDir/CloseDir (`dir`), RemoveFile,
+//! * `folders`: MakeDir, RemoveDir, OpenDir/ReadDir/CloseDir (`dir`), RemoveFile,
 //!   RenameFile, CopyFile, IsFile, FSSize, FileSize, FileTimeDnum, ModExist, ModTimeDnum.
-//! * [`iodev`]: Open, Close, Rewind, ClearIOBuff and the open-file table (`iodev`).
-//! * [`io`]: Write, ReadNum, ReadStr and the binary reads and writes.
-//! * [`text`] and [`anybin`]: the pure parts (fields of text files, WriteAnyBin's format).
+//! * `iodev`: Open, Close, Rewind, ClearIOBuff and the open-file table (`iodev`).
+//! * `io`: Write, ReadNum, ReadStr and the binary reads and writes.
+//! * `text` and `anybin`: the pure parts (fields of text files, WriteAnyBin's format).
 //!
 //! The devices themselves (`HOME:` ... on the world's disk, the sandbox) are the
 //! interpreter's (`rapid_vm::world::devices`): the language's own Load and
