@@ -145,6 +145,35 @@ fn without_a_world_a_file_cannot_be_opened() {
     assert_eq!(run(vm), ["no disk"]);
 }
 
+const TEXT_TABLE_STILL_OPEN: &str = r#"MODULE t
+PROC main()
+  VAR iodev f;
+  Open "HOME:/texts.eng", f \Write;
+  Write f, "greetings::";
+  Write f, "1:";
+  Write f, "Hello operator";
+  TextTabInstall "HOME:/texts.eng";
+  TPWrite TextGet(TextTabGet("greetings"), 1);
+  Close f;
+ENDPROC
+ENDMODULE
+"#;
+
+#[test]
+fn a_file_still_open_for_writing_is_read_as_written_by_the_languages_own_built_ins() {
+    // The three lines are still in the open file's write buffer when TextTabInstall
+    // (a built-in of the language, not of the files extension) reads the file: the
+    // files extension writes them out first (TaskHooks::flush_files), so the table
+    // is there; without that the file would still be empty.
+    let fs = Rc::new(MemoryFs::new());
+    let mut vm = vm(TEXT_TABLE_STILL_OPEN);
+    vm.resources_mut().devices.set_root(ROOT);
+    vm.set_world(World { files: Box::new(SharedFs(fs.clone())), ..World::closed() });
+    assert_eq!(run(vm), ["Hello operator"]);
+    let file = Path::new(ROOT).join("HOME").join("texts.eng");
+    assert_eq!(fs.get(&file).as_deref(), Some(&b"greetings::\n1:\nHello operator\n"[..]));
+}
+
 /// 2024-02-29 13:45:30 UTC in seconds since 1970: 54 years with 13 leap days to
 /// 2024-01-01 (19 723 days), 59 days more to 29 February.
 const LEAP_DAY: f64 = (19_723.0 + 59.0) * 86_400.0 + 13.0 * 3600.0 + 45.0 * 60.0 + 30.0;
