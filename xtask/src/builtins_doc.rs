@@ -112,11 +112,15 @@ fn conformance_words(root: &Path) -> BTreeMap<String, BTreeSet<String>> {
     out
 }
 
-/// The family file of each registered built-in, by lower-case name.
+/// The family file of each built-in of the standard set (the controller's: the
+/// language's own and the controller's bindings), by lower-case name.
 fn family_files() -> BTreeMap<String, String> {
-    rapid_vm::builtins::registered()
+    let set = rapid_controller::builtin_set::standard();
+    set.registered()
         .map(|(builtin, file)| {
-            let file = file.strip_prefix("crates/rapid-vm/src/").unwrap_or(file).to_string();
+            let file =
+                file.strip_prefix("crates/rapid-vm/src/").or_else(|| file.strip_prefix("crates/")).unwrap_or(file);
+            let file = file.to_string();
             (builtin.name.to_ascii_lowercase(), file)
         })
         .collect()

@@ -16,6 +16,9 @@
 //!   and sync points (`rapid_vm::builtins::Shared`) and the global persistents
 //!   ([`pers::PersStore`]).
 //! - [`ops`] holds the program operations (stop, start, motors, system signals).
+//! - [`bindings`] holds the built-in families of the controller's side (files ...),
+//!   each an extension of the interpreter (`rapid_vm::embed::Extension`);
+//!   [`builtin_set`] is the set of built-ins every task of a system runs with.
 //!
 //! - [`host_std`] is the std world every task gets by default: the host's disk,
 //!   network and clocks behind the VM's host traits (`rapid_vm::world`).
@@ -33,7 +36,9 @@
 mod alone;
 pub mod api;
 pub mod assembly;
+pub mod bindings;
 pub mod boot;
+pub mod builtin_set;
 pub mod host_std;
 pub mod ops;
 pub mod pers;

@@ -76,7 +76,8 @@ impl Controller {
         }
         let outside = self.tasks.iter().any(|t| {
             let resources = t.loaded.vm.resources();
-            resources.sockets.is_open() || resources.robot().still_from() > self.time
+            crate::bindings::sockets::of(resources).is_some_and(|s| s.is_open())
+                || resources.robot().still_from() > self.time
         });
         if outside {
             return None;

@@ -155,7 +155,7 @@ impl Controller {
             // The host's disk, network and clocks, unless the embedder gave its own.
             crate::host_std::install(&mut loaded.vm);
             // A socket wait must not block the process: the other tasks run meanwhile.
-            loaded.vm.resources_mut().sockets.set_cooperative(true);
+            crate::bindings::sockets::of_mut(loaded.vm.resources_mut()).set_cooperative(true);
             loaded.vm.exchange_shared(&mut shared);
             loaded.vm.connect_configured_signals();
             loaded.vm.exchange_shared(&mut shared);
@@ -216,7 +216,7 @@ impl Controller {
     /// the program gives it and sees the controller's time pass as its own does.
     pub fn talks_to_outside_world(&self) -> bool {
         self.tasks.iter().any(|t| {
-            let sockets = &t.loaded.vm.resources().sockets;
+            let Some(sockets) = crate::bindings::sockets::of(t.loaded.vm.resources()) else { return false };
             sockets.is_open() || (matches!(t.state, State::Waiting { .. }) && sockets.is_polling())
         })
     }

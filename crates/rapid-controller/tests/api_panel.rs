@@ -56,7 +56,7 @@ fn a_module_loaded_from_home_is_linked_and_unloaded_again() {
     std::fs::create_dir_all(root.join("HOME")).unwrap();
     std::fs::write(root.join("HOME/Extra.mod"), "MODULE Extra\n  PERS num extra := 42;\nENDMODULE\n").unwrap();
     let mut s = api_common::session();
-    s.controller_mut().tasks[0].loaded.vm.resources_mut().files.set_root(&root);
+    s.controller_mut().tasks[0].loaded.vm.resources_mut().devices.set_root(&root);
     assert_eq!(s.modules("T_ROB1").unwrap(), vec!["MainModule".to_owned()]);
     assert_eq!(s.modules("T_OTHER").unwrap(), vec!["Other".to_owned()]);
     assert!(s.read_data("T_ROB1/extra").is_err());

@@ -76,6 +76,21 @@ pub trait TaskHooks: Sync {
         Vec::new()
     }
 
+    /// The task was given its outside world (`Vm::set_world`; the file devices took
+    /// its disk): an extension that reaches the network takes it out of `net` (the
+    /// first to take it has it) and keeps the clock its waits run on.
+    fn world_given(
+        &self,
+        _resources: &mut Resources,
+        _net: &mut Option<Box<dyn crate::world::Network>>,
+        _clock: &std::rc::Rc<dyn crate::world::Clock>,
+    ) {
+    }
+
+    /// A built-in is about to look at a path on the file devices (`Ctx::resolve_path`):
+    /// what the task wrote but still holds in write buffers reaches the disk first.
+    fn flush_files(&self, _resources: &mut Resources) {}
+
     /// The program was loaded: the extension learns the predefined data and types it
     /// works with (`find_data` gives a predefined data object's global index by name).
     fn loaded(&self, _resources: &mut Resources, _program: &rapid_sema::Program) {}
@@ -88,8 +103,8 @@ pub struct PendingEvent {
     pub at: Option<(usize, rapid_syntax::Span)>,
 }
 
-/// State an extension keeps per task. `close_all` runs where the core closes the
-/// task's files and sockets (end of program, PP to Main).
+/// State an extension keeps per task. `close_all` runs where the core closes what the
+/// task holds open (end of program, PP to Main: files, sockets, waits under way).
 pub trait TaskState: Any {
     fn close_all(&mut self) {}
 }

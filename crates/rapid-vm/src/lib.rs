@@ -5,9 +5,10 @@
 //! gives each task (the std ones live in `rapid_controller::host_std`); the sandbox
 //! of the file devices is the VM's own. It knows no configuration file format: the
 //! controller hands it its own types (a task's `builtins::rmq::RmqConfig`, a built
-//! `rapid_io::IoSystem`) and the configuration data behind
-//! `builtins::cfgdata::CfgDatabase`. RAPID call depth lives in explicit frames,
-//! never on the Rust stack.
+//! `rapid_io::IoSystem`); the configuration data, the files and the sockets are the
+//! controller's bindings (`rapid_controller::bindings`), extensions that reach the
+//! interpreter through [`ext`]. RAPID call depth lives in explicit frames, never on
+//! the Rust stack.
 //!
 //! What an embedder adds (built-in families, per-task state, the hooks the loop
 //! calls) comes in through [`embed::Extension`] and a set of built-ins
@@ -25,6 +26,7 @@ pub mod errnames;
 pub mod error;
 pub mod events;
 pub mod exec;
+pub mod ext;
 pub mod format;
 pub mod host;
 pub mod instrs;
@@ -218,7 +220,16 @@ pub fn load_in(
 /// the data initialisers): its routines as the VM would run them, for listings
 /// (`rapid dump-ir`, `disas::list`).
 pub fn compile_files(files: &[SourceInput], options: &Options) -> Result<CompiledTask, LoadError> {
-    let builtins = builtins::Builtins::standard();
+    compile_files_in(files, options, builtins::Builtins::standard())
+}
+
+/// [`compile_files`] with the set of built-ins `builtins` (an embedder's, with its
+/// extensions: `rapid_controller::builtin_set`).
+pub fn compile_files_in(
+    files: &[SourceInput],
+    options: &Options,
+    builtins: std::sync::Arc<builtins::Builtins>,
+) -> Result<CompiledTask, LoadError> {
     let (mut prog, _, parses, streamed) = checked(files, options, &builtins)?;
     let modules = module_sources(files, &parses);
     let compiled = compile_modules(&mut prog, &modules, &builtins, streamed)?;

@@ -12,8 +12,9 @@ use std::process::Command;
 use std::thread;
 use std::time::Duration;
 
+use rapid_controller::builtin_set::load_with;
 use rapid_sema::SourceInput;
-use rapid_vm::{load, Exit, RecordingHost, Vm};
+use rapid_vm::{Exit, RecordingHost, Vm};
 
 use crate::fixture::scratch_in;
 
@@ -58,7 +59,7 @@ fn rapid_run(name: &str, module: &str, port: u16) -> String {
 
 fn vm(src: &str) -> Vm {
     let text = src.replace("ERROR_NAMES", ERROR_NAMES);
-    let mut vm = match load(&[SourceInput::from_text("t.mod", text)], "main") {
+    let mut vm = match load_with(&[SourceInput::from_text("t.mod", text)], "main", &rapid_sema::Options::default()) {
         Ok(loaded) => loaded.vm,
         Err(err) => panic!("load failed: {err:?}"),
     };
@@ -70,7 +71,7 @@ fn vm(src: &str) -> Vm {
 /// Runs the program one instruction at a time until it has bound a socket; its address.
 fn run_until_bound(machine: &mut Vm, host: &mut RecordingHost) -> SocketAddr {
     for _ in 0..10_000 {
-        if let Some(addr) = machine.resources_mut().sockets.bound_addrs().first() {
+        if let Some(addr) = rapid_controller::bindings::sockets::of_mut(machine.resources_mut()).bound_addrs().first() {
             return *addr;
         }
         match machine.run(host, 1) {

@@ -45,7 +45,10 @@ impl Session {
     /// `boot::cfgdata::SysParams` keeps them).
     pub fn configuration(&self) -> Vec<ConfigDomain> {
         let Some(task) = self.controller.tasks.first() else { return Vec::new() };
-        SysParams::of(&task.loaded.vm.resources().cfgdata).iter().map(|(name, file)| domain(name, file)).collect()
+        SysParams::of(crate::bindings::cfgdata::of(task.loaded.vm.resources()))
+            .iter()
+            .map(|(name, file)| domain(name, file))
+            .collect()
     }
 }
 

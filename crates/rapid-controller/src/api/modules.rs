@@ -69,7 +69,7 @@ impl Session {
     pub fn load_module(&mut self, task: &str, path: &str) -> Result<(), ApiError> {
         self.must_be_stopped()?;
         let idx = self.task_index(task)?;
-        let files = &self.controller.tasks[idx].loaded.vm.resources().files;
+        let files = &self.controller.tasks[idx].loaded.vm.resources().devices;
         let request = rapid_vm::builtins::modules::front_end_load(files, path).map_err(ApiError::NotFound)?;
         let outcome =
             self.controller.with_task(idx, &mut self.pendant, |vm, host| vm.front_end_module_request(request, host));

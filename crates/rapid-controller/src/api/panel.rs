@@ -122,7 +122,7 @@ impl Session {
     /// task was given it.
     pub fn file_root(&self) -> Option<std::path::PathBuf> {
         let task = self.controller.tasks.first()?;
-        task.loaded.vm.resources().files.root().map(std::path::Path::to_path_buf)
+        task.loaded.vm.resources().devices.root().map(std::path::Path::to_path_buf)
     }
 }
 

@@ -6,7 +6,7 @@
 //! the sender of a message (RMQGetMsgHeader `\SenderId`) and send to, and the client
 //! takes those messages back.
 
-use rapid_vm::builtins::rmq::{self, OutsideMessage, OutsideRefusal};
+use crate::bindings::rmq::{self, OutsideMessage, OutsideRefusal};
 
 use super::{ApiError, Session};
 
@@ -82,7 +82,7 @@ impl Session {
         let shared = &mut self.controller.shared.tasking;
         let message = rmq::take_outside_message(shared, name)?;
         Some(ClientMessage {
-            data: format!("{};{}", message.datatype, rmq::literal(&message.data)),
+            data: format!("{};{}", message.datatype, rapid_vm::builtins::rmq::literal(&message.data)),
             userdef: message.userdef,
             from: rmq::sender_name(shared, message.sender),
         })

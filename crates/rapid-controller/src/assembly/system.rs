@@ -269,7 +269,7 @@ fn assemble_noting(
     // `--controller-ip` wins over the manifest's `controller_ip`.
     if let Some(ip) = options.controller_ip.or(tasks[0].inputs.controller_ip) {
         for task in &mut controller.tasks {
-            task.loaded.vm.resources_mut().sockets.add_controller_addr(ip);
+            crate::bindings::sockets::of_mut(task.loaded.vm.resources_mut()).add_controller_addr(ip);
         }
     }
     let inputs = tasks.into_iter().map(|t| t.inputs).collect();

@@ -1,8 +1,8 @@
-//! The built-ins every task of the controller runs with: the language's own and those
-//! of the extensions the controller installs (today the robot,
-//! `rapid_vm::builtins::motion::EXTENSION`). Every front end loads its tasks through
-//! the assembly (`crate::assembly::system`), which loads with this set: one place
-//! decides what a task can call.
+//! The built-ins every task of the controller runs with: the standard set
+//! ([`crate::builtin_set`]: the language's own and the extensions the controller
+//! installs). Every front end loads its tasks through the assembly
+//! (`crate::assembly::system`), which loads with this set: one place decides what a
+//! task can call.
 
 use std::sync::Arc;
 
@@ -10,9 +10,7 @@ use rapid_vm::builtins::Builtins;
 
 /// The controller's set of built-ins (built once, shared by every task).
 pub fn builtins() -> Arc<Builtins> {
-    // The robot is still part of rapid-vm, in its standard set; when it becomes a
-    // crate of its own, this is where its extension is added to the core.
-    Builtins::standard()
+    crate::builtin_set::standard()
 }
 
 #[cfg(test)]

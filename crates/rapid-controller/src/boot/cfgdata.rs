@@ -1,13 +1,13 @@
 //! The system parameters a task's ReadCfgData, WriteCfgData, SaveCfgData and
 //! GetModalPayLoadMode work on: the configuration files (a backup's `SYSPAR/*.cfg`) as
 //! `rapid-config` parses them, one per domain, behind the VM's
-//! `rapid_vm::builtins::cfgdata::CfgDatabase`. An edit rewrites the file's text and
+//! `crate::bindings::cfgdata::CfgDatabase`. An edit rewrites the file's text and
 //! parses it again, so that SaveCfgData writes every other byte as it was read.
 
 use std::any::Any;
 
+use crate::bindings::cfgdata::{CfgAttr, CfgDatabase, CfgEdit, CfgState, InstanceAt, Unwritable};
 use rapid_config::{Attr, CfgFile, Instance};
-use rapid_vm::builtins::cfgdata::{CfgAttr, CfgDatabase, CfgEdit, CfgState, InstanceAt, Unwritable};
 
 /// The configuration of a task: (domain such as `EIO`, parsed file) pairs; an
 /// instance is at (section index, instance index) of its domain's file.

@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use rapid_config::CfgFile;
 use rapid_sema::SourceInput;
 use rapid_vm::builtins::controller::ControllerState;
-use rapid_vm::builtins::files::ModuleFile;
+use rapid_vm::world::devices::ModuleFile;
 use rapid_vm::Loaded;
 
 /// Sets task `loaded` up: `home` is the controller root of its file devices, `files`
@@ -22,9 +22,9 @@ pub fn configure(
     state: ControllerState,
 ) {
     let resources = loaded.vm.resources_mut();
-    resources.files.set_root(home);
-    resources.files.set_modules(module_files(files));
-    resources.cfgdata.set_config(Box::new(super::cfgdata::SysParams::new(syspar)));
+    resources.devices.set_root(home);
+    resources.devices.set_modules(module_files(files));
+    crate::bindings::cfgdata::of_mut(resources).set_config(Box::new(super::cfgdata::SysParams::new(syspar)));
     resources.controller = state;
 }
 

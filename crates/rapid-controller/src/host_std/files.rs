@@ -150,13 +150,13 @@ fn space(_: &Path) -> io::Result<(u64, u64)> {
     Err(io::Error::new(io::ErrorKind::Unsupported, "file system sizes are not available on this host"))
 }
 
-// The VM's sandbox (`rapid_vm::builtins::files::devices`) on the host's disk: the
+// The VM's sandbox (`rapid_vm::world::devices`) on the host's disk: the
 // device folders, letter case and symbolic links as a real disk has them.
 #[cfg(test)]
 mod sandbox {
     use std::path::PathBuf;
 
-    use rapid_vm::builtins::files::devices::{self, PathFault};
+    use rapid_vm::world::devices::{self, PathFault};
 
     use super::StdFs;
 

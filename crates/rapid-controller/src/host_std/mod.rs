@@ -5,9 +5,9 @@
 //!
 //! This module is the controller's only IO; the rest of the crate does none. The
 //! device-name → folder mapping and the sandbox checks stay in the VM
-//! (`rapid_vm::builtins::files::devices`), so they hold for every world; the folder the
+//! (`rapid_vm::world::devices`), so they hold for every world; the folder the
 //! devices live in (the controller root) is the front end's configuration
-//! (`FileState::set_root`, set by `boot::task::configure`).
+//! (`Devices::set_root`, set by `boot::task::configure`).
 
 pub mod atomic;
 mod clock;

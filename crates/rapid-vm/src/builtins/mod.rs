@@ -7,25 +7,23 @@
 mod argname;
 mod bits;
 mod calendar;
-pub mod cfgdata;
 mod clock;
 pub mod controller;
 mod dialogs;
 mod dnheader;
 mod events;
-pub mod files;
 mod geometry;
 pub mod interrupts;
 pub mod io;
 mod io_units;
 pub(crate) mod io_visualize;
-mod io_wait;
+pub(crate) mod io_wait;
 mod math;
 mod matrix;
 pub mod modules;
 pub mod motion;
 mod not_yet;
-mod pendant;
+pub(crate) mod pendant;
 pub mod pure;
 mod random;
 mod rawbytes;
@@ -33,7 +31,6 @@ mod registry;
 pub(crate) mod signature;
 pub use registry::{compiled, native, out_of_step, Builtin, Builtins, Compiled, Family};
 pub mod rmq;
-pub mod sockets;
 pub mod spy;
 mod strdig;
 mod strformat;
@@ -102,7 +99,7 @@ pub struct Ctx<'a> {
     pub routine: &'a str,
     /// Wall-clock seconds since 1970 when the task was given its world (CDate, CTime).
     pub wall_epoch: f64,
-    /// Open files, directories and sockets of the task.
+    /// What the task has outside the interpreter (the extensions' state among it).
     pub resources: &'a mut Resources,
     /// The call chain, outermost first; the last frame made the call (ExecHandler,
     /// ExecLevel).
@@ -111,12 +108,13 @@ pub struct Ctx<'a> {
     pub builtins: &'a Builtins,
 }
 
-/// What the task holds open outside the interpreter: each family keeps its own table,
-/// referred to by `OpaqueState::Handle` in the program's iodev/dir/socketdev data.
+/// What the task holds outside the interpreter: each family keeps its own table,
+/// referred to by `OpaqueState::Handle` in the program's data (an extension's, such
+/// as the controller's iodev, dir and socketdev tables, in `extensions`).
 #[derive(Default)]
 pub struct Resources {
-    pub files: files::FileState,
-    pub sockets: sockets::SocketState,
+    /// The file devices (`HOME:` ...) on the world's disk, and the loaded modules' files.
+    pub devices: crate::world::devices::Devices,
     /// Installed user text tables (kept at PP to Main, as the controller keeps them).
     pub texttab: texttab::TextTabState,
     /// The task's module data by module, and the search SetDataSearch started.
@@ -130,11 +128,10 @@ pub struct Resources {
     pub io: io::IoState,
     /// The task's interrupts (deleted at PP to Main).
     pub interrupts: interrupts::InterruptState,
-    /// The system parameters the run was started with (kept at PP to Main).
-    pub cfgdata: cfgdata::CfgState,
     /// Which task this is and what the tasks share (sync points).
     pub tasking: tasking::TaskingState,
-    /// The task's side of the RAPID Message Queue.
+    /// The task's types a RAPID Message Queue message travels by (the RMQ built-ins
+    /// are the controller's; the robot's read the types too).
     pub rmq: rmq::RmqState,
     /// The operating mode, speed override and PP flags (kept at PP to Main).
     pub controller: controller::ControllerState,
@@ -151,17 +148,15 @@ pub struct Shared {
 }
 
 impl Resources {
-    /// Closes every file, directory and socket (end of program, PP to Main: the
-    /// start-up table of §1.2.2 closes files and sockets).
+    /// Ends what the task holds open (end of program, PP to Main: the start-up table
+    /// of §1.2.2 closes files and sockets, which the extensions close through
+    /// `TaskState::close_all`).
     pub fn close_all(&mut self) {
-        self.files.close_all();
-        self.sockets.close_all();
         self.symsearch.end_search();
         self.spy.stop();
         self.modules.close_all();
         self.interrupts.clear();
         self.tasking.end_waits();
-        self.rmq.end_waits();
         self.extensions.close_all();
     }
 
@@ -209,6 +204,19 @@ impl Ctx<'_> {
             None | Some(Value::Absent) => Ok(None),
             Some(v) => self.num(v).map(Some),
         }
+    }
+
+    /// Resolves RAPID path `text` on its device (`crate::world::devices`), after the
+    /// extensions wrote out what the task wrote but still holds in write buffers
+    /// ([`crate::embed::TaskHooks::flush_files`]): whatever looks at a path next sees it.
+    pub fn resolve_path(
+        &mut self,
+        text: &str,
+    ) -> Result<crate::world::devices::Resolved, crate::world::devices::PathFault> {
+        for hooks in self.builtins.hooks() {
+            hooks.flush_files(self.resources);
+        }
+        self.resources.devices.resolve(text)
     }
 
     /// The shell of a non-value argument (iodev, dir, socketdev, loadsession …) and
@@ -324,8 +332,6 @@ pub(crate) static CORE_FAMILIES: &[&Family] = &[
     &strings::FAMILY,
     &calendar::FAMILY,
     &symbols::FAMILY,
-    &files::FAMILY,
-    &sockets::FAMILY,
     &matrix::FAMILY,
     &sysinfo::FAMILY,
     &strdig::FAMILY,
@@ -341,9 +347,7 @@ pub(crate) static CORE_FAMILIES: &[&Family] = &[
     &io_wait::FAMILY,
     &io_units::FAMILY,
     &spy::FAMILY,
-    &cfgdata::FAMILY,
     &tasking::FAMILY,
-    &rmq::FAMILY,
     &controller::FAMILY,
 ];
 

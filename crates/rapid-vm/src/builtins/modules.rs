@@ -12,11 +12,11 @@ use std::path::PathBuf;
 use rapid_sema::SourceInput;
 use rustc_hash::FxHashMap;
 
-use super::files::devices;
 use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Opaque, OpaqueState, Value};
+use crate::world::devices;
 use crate::world::FileKind;
 
 type Res = Result<Option<Value>, RapidError>;
@@ -118,7 +118,7 @@ fn resolve(ctx: &Ctx<'_>, path: &Value, file: Option<&Value>, err: Err) -> Resul
     let path = ctx.string(path)?;
     let file = opt_string(ctx, file)?;
     let text = devices::join_object(&path, file.as_deref());
-    match ctx.resources.files.resolve(&text) {
+    match ctx.resources.devices.resolve(&text) {
         Ok(resolved) => Ok((text, resolved.path)),
         Err(fault) => Err(ctx.error(err, format!("`{text}`: {}", fault.message()))),
     }
@@ -127,7 +127,7 @@ fn resolve(ctx: &Ctx<'_>, path: &Value, file: Option<&Value>, err: Err) -> Resul
 /// Reads the module file named by FilePath and \File.
 fn read_module(ctx: &Ctx<'_>, path: &Value, file: Option<&Value>, dynamic: bool) -> Result<LoadFile, RapidError> {
     let (path, host) = resolve(ctx, path, file, Err::FileNotFound)?;
-    let fs = ctx.resources.files.file_system();
+    let fs = ctx.resources.devices.file_system();
     let meta = fs.metadata(&host);
     match meta {
         Ok(meta) if meta.kind == FileKind::File => {
@@ -152,7 +152,7 @@ fn read_module(ctx: &Ctx<'_>, path: &Value, file: Option<&Value>, dynamic: bool)
 /// A Load of the module file at RAPID path `text` (`HOME:/x.mod`) on the task's file
 /// devices `files`, as a front end asks for it (RWS `loadmod`): the file read, checked
 /// for size. Err says why not, as Load's error would.
-pub fn front_end_load(files: &super::files::FileState, text: &str) -> Result<ModuleRequest, String> {
+pub fn front_end_load(files: &crate::world::devices::Devices, text: &str) -> Result<ModuleRequest, String> {
     let resolved = files.resolve(text).map_err(|fault| format!("`{text}`: {}", fault.message()))?;
     let host = resolved.path;
     let fs = files.file_system();

@@ -32,7 +32,7 @@ pub(super) fn tp_write(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value
 
 /// A value appended by TPWrite: numbers in the standard format, bools as TRUE/FALSE,
 /// pos and orient as aggregates.
-pub(super) fn value_text(ctx: &Ctx<'_>, value: &Value) -> String {
+pub fn value_text(ctx: &Ctx<'_>, value: &Value) -> String {
     match value {
         Value::Num(n) => num_to_text(*n),
         Value::Dnum(d) => dnum_to_text(*d),

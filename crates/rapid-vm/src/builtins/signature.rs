@@ -41,25 +41,25 @@ static PARAMS: LazyLock<FxHashMap<String, Vec<String>>> = LazyLock::new(|| {
 
 /// The declared parameters of one built-in.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Signature {
+pub struct Signature {
     params: &'static [String],
 }
 
 /// The signature of the catalogue routine `routine` (any letter case); empty when the
 /// catalogue has no such routine (a test of each layout catches a misspelt name).
-pub(crate) fn of(routine: &str) -> Signature {
+pub fn of(routine: &str) -> Signature {
     let params: &'static FxHashMap<String, Vec<String>> = &PARAMS;
     Signature { params: params.get(&routine.to_ascii_lowercase()).map_or(&[], Vec::as_slice) }
 }
 
 impl Signature {
     /// The position of parameter `name` (any letter case), or [`ABSENT`].
-    pub(crate) fn at(&self, name: &str) -> usize {
+    pub fn at(&self, name: &str) -> usize {
         self.params.iter().position(|p| p.eq_ignore_ascii_case(name)).unwrap_or(ABSENT)
     }
 
     /// The position of parameter `name`, if the signature has it.
-    pub(crate) fn opt(&self, name: &str) -> Option<usize> {
+    pub fn opt(&self, name: &str) -> Option<usize> {
         Some(self.at(name)).filter(|&at| at != ABSENT)
     }
 
@@ -88,7 +88,9 @@ impl Signature {
 ///     }
 /// }
 /// ```
-macro_rules! layout {
+#[doc(hidden)]
+#[macro_export]
+macro_rules! builtin_layout {
     ($(
         $(#[$doc:meta])*
         static $static:ident: $ty:ident = $routine:literal $(| $also:literal)* {
@@ -103,7 +105,7 @@ macro_rules! layout {
 
         impl $ty {
             fn of(routine: &str) -> $ty {
-                let sig = $crate::builtins::signature::of(routine);
+                let sig = $crate::ext::signature(routine);
                 $ty { $($field: sig.at($param)),* }
             }
         }
@@ -115,7 +117,7 @@ macro_rules! layout {
         mod $static {
             #[test]
             fn every_parameter_is_declared() {
-                let sig = $crate::builtins::signature::of($routine);
+                let sig = $crate::ext::signature($routine);
                 for name in [$($param),*] {
                     assert!(sig.opt(name).is_some(), "{} declares no parameter {name}", $routine);
                 }
@@ -124,7 +126,7 @@ macro_rules! layout {
         }
     )*};
 }
-pub(crate) use layout;
+pub(crate) use crate::builtin_layout as layout;
 
 #[cfg(test)]
 mod tests {

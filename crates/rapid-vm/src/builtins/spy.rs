@@ -103,12 +103,11 @@ const HEADER: &str = "TASK    INSTR                                    IN    COD
 // uncertain: the manual does not say what a second SpyStart does; we end the first log.
 pub fn spy_start(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let path = ctx.string(&args[0])?;
-    ctx.resources.files.flush_all();
-    let resolved = ctx.resources.files.resolve(&path).map_err(|fault| ctx.error(Err::FileOpen, fault.message()))?;
+    let resolved = ctx.resolve_path(&path).map_err(|fault| ctx.error(Err::FileOpen, fault.message()))?;
     let create = OpenMode { write: true, create: true, truncate: true, ..OpenMode::default() };
     let file = ctx
         .resources
-        .files
+        .devices
         .file_system()
         .open(&resolved.path, create)
         .map_err(|e| ctx.error(Err::FileOpen, format!("the spy file `{path}` cannot be made: {e}")))?;

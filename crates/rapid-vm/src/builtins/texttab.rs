@@ -122,11 +122,10 @@ fn parse_tables(bytes: &[u8]) -> Result<Vec<TextTable>, FormatFault> {
 // manual guards every install with TextTabFreeToUse and names no error for it).
 fn text_tab_install(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let file = ctx.string(&args[0])?;
-    ctx.resources.files.flush_all();
-    let resolved = ctx.resources.files.resolve(&file).map_err(|fault| ctx.error(Err::FileOpen, fault.message()))?;
+    let resolved = ctx.resolve_path(&file).map_err(|fault| ctx.error(Err::FileOpen, fault.message()))?;
     let bytes = ctx
         .resources
-        .files
+        .devices
         .file_system()
         .read(&resolved.path)
         .map_err(|e| ctx.error(Err::FileOpen, format!("the text table file `{file}` cannot be opened: {e}")))?;

@@ -149,7 +149,8 @@ pub struct Vm {
     /// ([`Vm::set_world`]): the calendar clock is this plus the controller time.
     wall_epoch: f64,
     world_given: bool, // Vm::set_world gave the task its outside world
-    /// Open files, directories and sockets.
+    /// What the task has outside the interpreter (its file devices, signals, the
+    /// extensions' state: files, sockets, the robot ...).
     resources: crate::builtins::Resources,
     /// The program's sources and the modules loaded at run time (Load, UnLoad).
     modules: modules::TaskModules,
@@ -215,13 +216,12 @@ impl Vm {
         vm
     }
 
-    /// The task's files, directories and sockets (to configure devices, or to close
-    /// everything when the program ends).
+    /// The task's resources (to configure its devices, or the extensions' state).
     pub fn resources_mut(&mut self) -> &mut crate::builtins::Resources {
         &mut self.resources
     }
 
-    /// The task's files, directories, sockets and robot, to look at.
+    /// The task's resources (devices, signals, the extensions' state), to look at.
     pub fn resources(&self) -> &crate::builtins::Resources {
         &self.resources
     }

@@ -25,13 +25,13 @@ use rapid_sema::{analyze, Code as DiagCode, Diagnostic, Options, Program, Severi
 use rapid_syntax::ast::{Item, Module, RoutineKind};
 
 use super::{Exit, Unhandled, Vm};
-use crate::builtins::files::ModuleFile;
 use crate::builtins::modules::{LoadFile, ModuleRequest};
 use crate::compile::{self, ModuleSource};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::ir::Code;
 use crate::value::Value;
+use crate::world::devices::ModuleFile;
 
 /// Instructions a module's data initialisers may take (they are straight-line code).
 const INIT_BUDGET: u64 = 1 << 32;
@@ -348,9 +348,9 @@ impl Vm {
         self.procs_by_name.extend(qualified.into_iter().filter(|(_, idx)| routines.contains(idx)));
         self.relink_units(&checked, &modules);
         let init = Rc::new(compiled.init);
-        self.resources.files.set_modules(
+        self.resources.devices.set_modules(
             self.resources
-                .files
+                .devices
                 .modules()
                 .iter()
                 .cloned()
@@ -582,8 +582,8 @@ impl Vm {
         }
         self.data_by_name.retain(|_, d| !datas.contains(&d.global));
         let files: Vec<ModuleFile> =
-            self.resources.files.modules().iter().filter(|m| !m.name.eq_ignore_ascii_case(name)).cloned().collect();
-        self.resources.files.set_modules(files);
+            self.resources.devices.modules().iter().filter(|m| !m.name.eq_ignore_ascii_case(name)).cloned().collect();
+        self.resources.devices.set_modules(files);
         // Loaded modules compiled again without it: a call of one of its procedures then
         // raises ERR_REFUNKPRC, as a call of a procedure defined nowhere does. (Code
         // using its data no longer compiles and is kept; CheckProgRef reports it.)
@@ -695,7 +695,7 @@ impl Vm {
                 let text = format!("HOME:/{file_name}");
                 let own = self
                     .resources
-                    .files
+                    .devices
                     .resolve(&text)
                     .map_err(|f| self.error(Err::IoError, format!("`{text}`: {}", f.message())))?;
                 (m.file, m.index, (own.path, text))
@@ -706,7 +706,7 @@ impl Vm {
             .map_err(|_| self.error(Err::IoError, "the task's program does not check"))?;
         let text = self.module_text(&checked, file, index, unit.is_some());
         self.resources
-            .files
+            .devices
             .file_system()
             .write_atomic(&host, &latin1_bytes(&text))
             .map_err(|e| self.error(Err::IoError, format!("module `{name}` cannot be saved to `{shown}`: {e}")))?;

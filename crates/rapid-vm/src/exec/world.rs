@@ -7,9 +7,14 @@ impl Vm {
     /// Gives the task its outside world (the calendar starts from the world clock's
     /// time now). Without one the task has none (see [`crate::world`]).
     pub fn set_world(&mut self, world: crate::world::World) {
-        self.wall_epoch = world.clock.wall_seconds();
-        self.resources.files.set_file_system(world.files);
-        self.resources.sockets.set_network(world.net, world.clock);
+        let crate::world::World { files, net, clock } = world;
+        self.wall_epoch = clock.wall_seconds();
+        self.resources.devices.set_file_system(files);
+        let mut net = Some(net);
+        let builtins = self.builtins.clone();
+        for hooks in builtins.hooks() {
+            hooks.world_given(&mut self.resources, &mut net, &clock);
+        }
         self.world_given = true;
     }
 

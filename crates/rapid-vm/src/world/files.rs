@@ -1,6 +1,6 @@
 //! The file system a task's file devices live on, as host paths. The VM keeps the
 //! sandbox (which device is which folder under the controller root, and which paths
-//! are refused: `builtins/files/devices.rs`) so every world gets the same rules; a
+//! are refused: `world/devices.rs`) so every world gets the same rules; a
 //! [`FileSystem`] only does what it is asked on the paths the sandbox let through.
 
 use std::io;

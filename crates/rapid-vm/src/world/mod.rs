@@ -14,6 +14,7 @@
 //! world produced them.
 
 pub mod clock;
+pub mod devices;
 pub mod files;
 pub mod memory;
 pub mod net;

@@ -1,5 +1,5 @@
 //! The network a task's sockets reach (SocketCreate ... SocketClose): TCP and UDP over
-//! IPv4, as `std::net` offers them. The socket table (`builtins/sockets/table.rs`)
+//! IPv4, as `std::net` offers them. The socket table (`rapid_controller::bindings::sockets`)
 //! keeps the RAPID states, the read-ahead and the deadlines; a [`Network`] makes the
 //! endpoints, which block no longer than the timeouts the table sets.
 

@@ -68,7 +68,7 @@ pub fn literal(datum: &Datum) -> String {
 /// array sizes (all 0 for a scalar). Aliases are not seen: a value declared `errnum`
 /// is a `num` here.
 // uncertain: the controller may send an alias type's own name in the message header.
-pub(super) fn type_of(value: &Value, names: &TypeNames) -> Option<(String, [u32; 3])> {
+pub fn type_of(value: &Value, names: &TypeNames) -> Option<(String, [u32; 3])> {
     match value {
         Value::Num(_) => Some(("num".into(), [0; 3])),
         Value::Dnum(_) => Some(("dnum".into(), [0; 3])),
@@ -84,7 +84,7 @@ pub(super) fn type_of(value: &Value, names: &TypeNames) -> Option<(String, [u32;
 }
 
 /// The datum of a value; `None` for data that cannot travel (non-value data).
-pub(super) fn to_datum(value: &Value, names: &TypeNames) -> Option<Datum> {
+pub fn to_datum(value: &Value, names: &TypeNames) -> Option<Datum> {
     Some(match value {
         Value::Num(n) => Datum::Num(*n),
         Value::Dnum(d) => Datum::Dnum(*d),
@@ -104,7 +104,7 @@ pub(super) fn to_datum(value: &Value, names: &TypeNames) -> Option<Datum> {
 
 /// The value of a datum in the receiving task; `None` when the task has no type of a
 /// record's name.
-pub(super) fn to_value(datum: &Datum, names: &TypeNames) -> Option<Value> {
+pub fn to_value(datum: &Datum, names: &TypeNames) -> Option<Value> {
     Some(match datum {
         Datum::Num(n) => Value::Num(*n),
         Datum::Dnum(d) => Value::Dnum(*d),
@@ -126,7 +126,7 @@ pub(super) fn to_value(datum: &Datum, names: &TypeNames) -> Option<Value> {
 /// string's characters.
 // uncertain: the controller's message encoding is not public; this is what RmqMaxMsgSize
 // is compared with.
-pub(super) fn size(datum: &Datum) -> usize {
+pub fn size(datum: &Datum) -> usize {
     match datum {
         Datum::Num(_) => 4,
         Datum::Dnum(_) => 8,

@@ -12,13 +12,13 @@
 use std::path::Path;
 use std::time::SystemTime;
 
-use crate::world::{FileKind, FileMeta, FileSystem};
+use rapid_vm::world::{FileKind, FileMeta, FileSystem};
 
-use super::{handle_of, resolve, set_handle, Res};
-use crate::builtins::{present, Ctx};
-use crate::errnames::Err;
-use crate::error::RapidError;
-use crate::value::{OpaqueState, Value, MAX_STRING_CHARS};
+use super::{handle_of, resolve, set_handle, table, Res};
+use rapid_vm::errnames::Err;
+use rapid_vm::error::RapidError;
+use rapid_vm::ext::{present, Ctx};
+use rapid_vm::value::{OpaqueState, Value, MAX_STRING_CHARS};
 
 /// The largest integer a num holds exactly: sizes beyond it raise ERR_FILESIZE.
 const NUM_INT_LIMIT: f64 = 8_388_608.0;
@@ -41,7 +41,7 @@ fn access(ctx: &Ctx<'_>, message: String) -> RapidError {
 }
 
 fn fs<'a>(ctx: &'a Ctx<'_>) -> &'a dyn FileSystem {
-    ctx.resources.files.file_system()
+    ctx.resources.devices.file_system()
 }
 
 /// What `path` is (links followed), if it exists: `Path::is_dir` and its kin, asked of
@@ -80,8 +80,8 @@ pub(super) fn open_dir(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let mut names = fs(ctx).read_dir(&path).map_err(|e| access(ctx, format!("`{text}` cannot be opened: {e}")))?;
     names.sort();
     names.splice(0..0, [".".to_string(), "..".to_string()]);
-    let handle = ctx.resources.files.new_handle();
-    ctx.resources.files.dirs.insert(handle, DirListing { names, next: 0 });
+    let handle = table(ctx).new_handle();
+    table(ctx).dirs.insert(handle, DirListing { names, next: 0 });
     set_handle(ctx, &args[0], shell, OpaqueState::Handle(handle))?;
     Ok(None)
 }
@@ -89,7 +89,7 @@ pub(super) fn open_dir(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `ReadDir(Dev FileName)`: TRUE and the next entry's name, or FALSE when none is left.
 pub(super) fn read_dir(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (_, handle) = handle_of(ctx, &args[0])?;
-    let listing = handle.and_then(|h| ctx.resources.files.dirs.get_mut(&h));
+    let listing = handle.and_then(|h| table(ctx).dirs.get_mut(&h));
     let Some(listing) = listing else { return Err(access(ctx, "the directory is not open".to_string())) };
     let Some(name) = listing.names.get(listing.next).cloned() else { return Ok(Some(Value::Bool(false))) };
     listing.next += 1;
@@ -106,7 +106,7 @@ pub(super) fn read_dir(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 pub(super) fn close_dir(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (shell, handle) = handle_of(ctx, &args[0])?;
     if let Some(h) = handle {
-        ctx.resources.files.dirs.remove(&h);
+        table(ctx).dirs.remove(&h);
     }
     set_handle(ctx, &args[0], shell, OpaqueState::None)?;
     Ok(None)
@@ -153,7 +153,7 @@ pub(super) fn copy_file(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-crate::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static IS_FILE: IsFileArgs = "IsFile" {
         directory: "Directory", fifo: "Fifo", reg_file: "RegFile", block_spec: "BlockSpec", char_spec: "CharSpec",
     }
@@ -270,8 +270,8 @@ pub(super) fn file_time_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 const NO_TIME: &str = "the file system keeps no such time for it";
 
 /// The loaded module named `name` (any letter case).
-fn module<'a>(ctx: &'a Ctx<'_>, name: &str) -> Option<&'a super::ModuleFile> {
-    ctx.resources.files.modules.iter().find(|m| m.name.eq_ignore_ascii_case(name))
+fn module<'a>(ctx: &'a Ctx<'_>, name: &str) -> Option<&'a rapid_vm::world::devices::ModuleFile> {
+    ctx.resources.devices.modules().iter().find(|m| m.name.eq_ignore_ascii_case(name))
 }
 
 /// `ModExist(ModuleName)`: whether a module of that name is loaded in the task.

@@ -13,17 +13,19 @@
 //! a restart); SaveCfgData writes a domain's file, every other byte as it was read.
 //!
 //! The configuration itself is the controller's: it installs a [`CfgDatabase`] (over
-//! its parsed files) in each task, and this module knows no file format.
+//! its parsed files) in each task, and this module knows no file format. The family
+//! is an extension of the interpreter ([`EXTENSION`]); the configuration lives in the
+//! task's extension slot, kept at PP to Main.
 
 use std::any::Any;
 use std::path::Path;
 
-use super::files::devices;
-use super::{native, present, Ctx, Family};
-use crate::errnames::Err;
-use crate::error::RapidError;
-use crate::value::Value;
-use crate::world::{FileKind, FileSystem};
+use rapid_vm::embed::{Extension, TaskState};
+use rapid_vm::errnames::Err;
+use rapid_vm::error::RapidError;
+use rapid_vm::ext::{devices, native, present, Ctx, Family, Resources};
+use rapid_vm::value::Value;
+use rapid_vm::world::{FileKind, FileSystem};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -87,6 +89,33 @@ pub trait CfgDatabase: std::fmt::Debug + Send + Sync {
 #[derive(Debug, Default)]
 pub struct CfgState {
     database: Option<Box<dyn CfgDatabase>>,
+}
+
+/// The configuration built-ins and the task's configuration.
+pub static EXTENSION: Extension = Extension { name: "cfgdata", families: &[&FAMILY], hooks: None, init: Some(init) };
+
+fn init(resources: &mut Resources) {
+    resources.extensions.insert(CfgState::default());
+}
+
+/// Kept at PP to Main: the configuration is the system's, not the program's.
+impl TaskState for CfgState {}
+
+/// What a task without a configuration reads: none.
+static NO_CONFIG: CfgState = CfgState { database: None };
+
+/// The task's configuration (none installed: empty).
+pub fn of(resources: &Resources) -> &CfgState {
+    resources.extensions.get::<CfgState>().unwrap_or(&NO_CONFIG)
+}
+
+/// The task's configuration, to install one (put in if the task had none).
+pub fn of_mut(resources: &mut Resources) -> &mut CfgState {
+    resources.extensions.get_or_default::<CfgState>()
+}
+
+fn cfg<'a>(ctx: &'a Ctx<'_>) -> &'a CfgState {
+    of(ctx.resources)
 }
 
 impl CfgState {
@@ -169,16 +198,15 @@ fn find(ctx: &mut Ctx<'_>, path_text: &str, list_no: Option<&Value>) -> Result<F
             format!("`{path_text}` is not an instance path such as \"/EIO/EIO_SIGNAL/di1\""),
         ));
     };
-    if ctx.resources.cfgdata.domain_count() == 0 {
+    if cfg(ctx).domain_count() == 0 {
         // uncertain: without a configuration nothing is found (the controller always has one).
         return Err(ctx.error(Err::CfgNotFound, "no system configuration is loaded (run a backup folder)"));
     }
-    let Some(domain) = ctx.resources.cfgdata.domain(&path.domain) else {
+    let Some(domain) = cfg(ctx).domain(&path.domain) else {
         return Err(ctx.error(Err::CfgNotFound, format!("no configuration domain `{}`", path.domain)));
     };
     let (attr, wanted) = &path.key;
-    let found =
-        ctx.resources.cfgdata.database().map_or_else(Vec::new, |db| db.find(domain, &path.type_name, attr, wanted));
+    let found = cfg(ctx).database().map_or_else(Vec::new, |db| db.find(domain, &path.type_name, attr, wanted));
     if found.is_empty() {
         return Err(ctx.error(Err::CfgNotFound, format!("no instance `{path_text}`")));
     }
@@ -233,7 +261,7 @@ fn wanted_kind(value: &Value) -> Option<Kind> {
     }
 }
 
-super::signature::layout! {
+rapid_vm::ext::layout! {
     static CFG_DATA: CfgDataArgs = "ReadCfgData" | "WriteCfgData" { cfg_data: "CfgData", list_no: "ListNo" }
     static SAVE: SaveArgs = "SaveCfgData" { file: "File", domain: "Domain" }
 }
@@ -245,7 +273,7 @@ fn read_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let at = *CFG_DATA;
     let target = ctx.value(&args[at.cfg_data])?;
     let found = find(ctx, &path, args.get(at.list_no))?;
-    let attr = ctx.resources.cfgdata.database().and_then(|db| db.attr(found.domain, found.at, &attr_name));
+    let attr = cfg(ctx).database().and_then(|db| db.attr(found.domain, found.at, &attr_name));
     let Some(wanted) = wanted_kind(&target) else {
         return Err(ctx.error(Err::CfgIllType, "CfgData must be num, dnum, bool or string"));
     };
@@ -293,7 +321,7 @@ fn write_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let Some(wanted) = wanted_kind(&value) else {
         return Err(ctx.error(Err::CfgIllType, "CfgData must be num, dnum, bool or string"));
     };
-    let kind = match attribute_kind(&ctx.resources.cfgdata, &found, &attr_name) {
+    let kind = match attribute_kind(cfg(ctx), &found, &attr_name) {
         Some(kind) => kind,
         None => return Err(ctx.error(Err::CfgNotFound, format!("`{path}` has no attribute `{attr_name}`"))),
     };
@@ -312,7 +340,7 @@ fn write_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if number.is_some_and(|n| !n.is_finite()) {
         return Err(ctx.error(Err::CfgLimit, "a configuration number must be finite"));
     }
-    let written = match ctx.resources.cfgdata.database.as_deref_mut() {
+    let written = match of_mut(ctx.resources).database.as_deref_mut() {
         Some(db) => write_value(db, &found, &attr_name, &value, number),
         None => Ok(()),
     };
@@ -379,11 +407,8 @@ fn save_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     };
     let domain = ctx.string(&args[at.domain])?;
     let all = domain.eq_ignore_ascii_case("ALL");
-    let chosen: Vec<usize> = if all {
-        (0..ctx.resources.cfgdata.domain_count()).collect()
-    } else {
-        ctx.resources.cfgdata.domain(&domain).into_iter().collect()
-    };
+    let chosen: Vec<usize> =
+        if all { (0..cfg(ctx).domain_count()).collect() } else { cfg(ctx).domain(&domain).into_iter().collect() };
     if chosen.is_empty() {
         return Err(ctx.error(Err::CfgIllDomain, format!("no configuration domain `{domain}` is loaded")));
     }
@@ -392,19 +417,19 @@ fn save_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         // ALL_DOMAINS saves each domain as DOMAIN.cfg in the folder FilePath names.
         // uncertain: the file names of ALL_DOMAINS follow the backup's SYSPAR names.
         let text = if all {
-            let name = ctx.resources.cfgdata.database().map_or("", |db| db.domain_name(idx));
+            let name = cfg(ctx).database().map_or("", |db| db.domain_name(idx));
             devices::join_object(&target, Some(&format!("{name}.cfg")))
         } else {
             target.clone()
         };
         let resolved =
-            ctx.resources.files.resolve(&text).map_err(|fault| ctx.error(Err::CfgWriteFile, fault.message()))?;
-        let fs = ctx.resources.files.file_system();
+            ctx.resources.devices.resolve(&text).map_err(|fault| ctx.error(Err::CfgWriteFile, fault.message()))?;
+        let fs = ctx.resources.devices.file_system();
         if resolved.is_device_root || fs.metadata(&resolved.path).is_ok_and(|m| m.kind == FileKind::Dir) {
             return Err(ctx.error(Err::CfgWriteFile, format!("`{text}` is a folder, not a file")));
         }
-        let contents = ctx.resources.cfgdata.database().map_or_else(String::new, |db| db.domain_text(idx).to_owned());
-        write_atomically(ctx.resources.files.file_system(), &resolved.path, contents.as_bytes())
+        let contents = cfg(ctx).database().map_or_else(String::new, |db| db.domain_text(idx).to_owned());
+        write_atomically(ctx.resources.devices.file_system(), &resolved.path, contents.as_bytes())
             .map_err(|e| ctx.error(Err::CfgWriteFile, format!("cannot write `{text}`: {e}")))?;
     }
     Ok(None)
@@ -415,7 +440,7 @@ fn save_cfg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// payload is modal (GripLoad declares it for the moves that follow), 0 when it is not
 /// (each move gives its own with `\TLoad`).
 fn get_modal_pay_load_mode(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    Ok(Some(Value::Num(ctx.resources.cfgdata.modal_pay_load_mode())))
+    Ok(Some(Value::Num(cfg(ctx).modal_pay_load_mode())))
 }
 
 /// ModalPayLoadMode's default: payload modal, as a controller without the parameter in
@@ -432,7 +457,7 @@ fn write_atomically(fs: &dyn FileSystem, path: &Path, bytes: &[u8]) -> std::io::
     fs.write_atomic(path, bytes)
 }
 
-pub(super) static FAMILY: Family = Family {
+static FAMILY: Family = Family {
     file: file!(),
     builtins: &[
         native("ReadCfgData", read_cfg_data),

@@ -1,7 +1,8 @@
 //! Socket Messaging (§1.10): SocketCreate, SocketConnect, SocketBind, SocketListen,
 //! SocketAccept, SocketSend, SocketSendTo, SocketReceive, SocketReceiveFrom,
 //! SocketClose, SocketGetStatus, SocketPeek, on the TCP and UDP sockets of the task's
-//! world (`crate::world::Network`: std::net in the controller's std world).
+//! world (`rapid_vm::world::Network`: std::net in the controller's std world), an extension
+//! of the interpreter ([`EXTENSION`]).
 //!
 //! A `socketdev` holds `OpaqueState::Handle(n)`, the number of its entry in the task's
 //! [`SocketState`] (table.rs); a fresh or closed one holds nothing and reports
@@ -33,14 +34,16 @@ mod payload;
 mod table;
 
 use std::net::{Ipv4Addr, SocketAddr, SocketAddrV4};
+use std::rc::Rc;
 use std::str::FromStr;
 use std::time::Duration;
 
-use super::io_wait::{wait_again, wait_started};
-use super::{native, present, Ctx, Family};
-use crate::errnames::Err;
-use crate::error::RapidError;
-use crate::value::{Opaque, OpaqueState, Value};
+use rapid_vm::embed::{Extension, TaskHooks, TaskState};
+use rapid_vm::errnames::Err;
+use rapid_vm::error::RapidError;
+use rapid_vm::ext::{native, present, wait_again, wait_over, wait_started, Ctx, Family, Resources};
+use rapid_vm::value::{Opaque, OpaqueState, Value};
+use rapid_vm::world::{Clock, Network};
 pub use table::{SocketState, Status, SERVICE_PORT_ADDR};
 
 type Res = Result<Option<Value>, RapidError>;
@@ -52,7 +55,7 @@ const DEFAULT_TIME: f64 = 60.0;
 /// controller's 4 ms period.
 const POLL_PERIOD: f64 = 0.004;
 
-pub(super) static FAMILY: Family = Family {
+static FAMILY: Family = Family {
     file: file!(),
     builtins: &[
         native("SocketCreate", socket_create),
@@ -70,20 +73,60 @@ pub(super) static FAMILY: Family = Family {
     ],
 };
 
+/// The socket built-ins, their per-task table, and the world's network handed to it.
+pub static EXTENSION: Extension =
+    Extension { name: "sockets", families: &[&FAMILY], hooks: Some(&SocketHooks), init: Some(init) };
+
+fn init(resources: &mut Resources) {
+    resources.extensions.insert(SocketState::default());
+}
+
+struct SocketHooks;
+
+impl TaskHooks for SocketHooks {
+    fn world_given(&self, resources: &mut Resources, net: &mut Option<Box<dyn Network>>, clock: &Rc<dyn Clock>) {
+        if let Some(net) = net.take() {
+            resources.extensions.get_or_default::<SocketState>().set_network(net, clock.clone());
+        }
+    }
+}
+
+impl TaskState for SocketState {
+    /// Closes every socket (end of program, PP to Main).
+    fn close_all(&mut self) {
+        SocketState::close_all(self);
+    }
+}
+
+/// The task's sockets, if it was made with this extension.
+pub fn of(resources: &Resources) -> Option<&SocketState> {
+    resources.extensions.get::<SocketState>()
+}
+
+/// The task's sockets, to change (put in if the task had none).
+pub fn of_mut(resources: &mut Resources) -> &mut SocketState {
+    resources.extensions.get_or_default::<SocketState>()
+}
+
+/// The task's socket table.
+fn sockets<'a>(ctx: &'a mut Ctx<'_>) -> &'a mut SocketState {
+    of_mut(ctx.resources)
+}
+
 /// `SocketCreate Socket [\UDP]`: a new TCP (stream) or UDP (datagram) socket.
 fn socket_create(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (opaque, handle) = socket_arg(ctx, &args[0])?;
     // uncertain: the manual says the socket must not be in use; the error it raises
     // then is not documented (ERR_SOCK_UNSPEC here). A socket whose connection broke
     // may be created again.
-    if ctx.resources.sockets.is_offline() {
+    if sockets(ctx).is_offline() {
         return Err(ctx.error(Err::SockUnspec, "this controller has no network (sockets are switched off)"));
     }
-    if ctx.resources.sockets.in_use(handle) {
+    if sockets(ctx).in_use(handle) {
         return Err(ctx.error(Err::SockUnspec, "the socket is already created (SocketClose it first)"));
     }
-    ctx.resources.sockets.close(handle);
-    let new = ctx.resources.sockets.create(present(args.get(1))).map_err(|f| fault(ctx, f))?;
+    sockets(ctx).close(handle);
+    let new = sockets(ctx).create(present(args.get(1))).map_err(|f| fault(ctx, f))?;
     set_handle(ctx, &args[0], opaque, Some(new))
 }
 
@@ -93,8 +136,8 @@ fn socket_connect(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (_, handle) = socket_arg(ctx, &args[at.socket])?;
     let to = remote_addr(ctx, &args[at.address], &args[at.port])?;
     let timeout = time_arg(ctx, args.get(at.time))?;
-    let started = ctx.resources.sockets.now();
-    let res = ctx.resources.sockets.connect(handle, to, deadline(started, timeout));
+    let started = sockets(ctx).now();
+    let res = sockets(ctx).connect(handle, to, deadline(started, timeout));
     finish_wait(ctx, started, res)?;
     Ok(None)
 }
@@ -106,21 +149,21 @@ fn socket_bind(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let at = *BIND;
     let asked = ip_arg(ctx, &args[at.address])?;
     let port = port_arg(ctx, &args[at.port], true)?;
-    let (ip, first) = ctx.resources.sockets.bind_addr(asked);
+    let (ip, first) = sockets(ctx).bind_addr(asked);
     if first {
         ctx.host.note(&format!(
             "SocketBind to {asked}, an address of the controller itself, binds {ip} (the virtual controller's \
              address; clients connect to {ip})"
         ));
     }
-    ctx.resources.sockets.bind(handle, SocketAddrV4::new(ip, port)).map_err(|f| fault(ctx, f))?;
+    sockets(ctx).bind(handle, SocketAddrV4::new(ip, port)).map_err(|f| fault(ctx, f))?;
     Ok(None)
 }
 
 /// `SocketListen Socket`: a bound TCP socket starts taking connections.
 fn socket_listen(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (_, handle) = socket_arg(ctx, &args[0])?;
-    ctx.resources.sockets.listen(handle).map_err(|f| fault(ctx, f))?;
+    sockets(ctx).listen(handle).map_err(|f| fault(ctx, f))?;
     Ok(None)
 }
 
@@ -136,7 +179,7 @@ fn socket_accept(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     };
     // uncertain: a ClientSocket still in use is replaced (its connection closed); the
     // manual documents no error for it.
-    ctx.resources.sockets.close(client_handle);
+    sockets(ctx).close(client_handle);
     set_handle(ctx, &args[at.client], client, Some(new))?;
     if present(args.get(at.client_address)) {
         ctx.store(&args[at.client_address], Value::Str(ip.to_string().into()))?;
@@ -144,7 +187,7 @@ fn socket_accept(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-super::signature::layout! {
+rapid_vm::ext::layout! {
     static BIND: BindArgs = "SocketBind" { address: "LocalAddress", port: "LocalPort" }
     static CONNECT: ConnectArgs = "SocketConnect" { socket: "Socket", address: "Address", port: "Port", time: "Time" }
     static ACCEPT: AcceptArgs = "SocketAccept" {
@@ -171,10 +214,10 @@ fn socket_send(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let slot = payload::chosen(ctx, args, at.str)?;
     let no_of_bytes = ctx.opt_num(args.get(at.no_of_bytes))?;
     let bytes = payload::bytes_to_send(ctx, args, slot, no_of_bytes)?;
-    let started = ctx.resources.sockets.now();
+    let started = sockets(ctx).now();
     // uncertain: the manual gives no send timeout; a peer that reads nothing may hold
     // a send for at most the default 60 s before ERR_SOCK_TIMEOUT.
-    let res = ctx.resources.sockets.send(handle, &bytes, deadline(started, Duration::from_secs(60)));
+    let res = sockets(ctx).send(handle, &bytes, deadline(started, Duration::from_secs(60)));
     finish_wait(ctx, started, res)?;
     Ok(None)
 }
@@ -188,7 +231,7 @@ fn socket_send_to(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let slot = payload::chosen(ctx, args, at.str)?;
     let no_of_bytes = ctx.opt_num(args.get(at.no_of_bytes))?;
     let bytes = payload::bytes_to_send(ctx, args, slot, no_of_bytes)?;
-    ctx.resources.sockets.send_to(handle, &bytes, to).map_err(|f| fault(ctx, f))?;
+    sockets(ctx).send_to(handle, &bytes, to).map_err(|f| fault(ctx, f))?;
     Ok(None)
 }
 
@@ -249,7 +292,7 @@ fn socket_receive_from(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// `SocketClose Socket`: closes the socket; closing one not in use is no error.
 fn socket_close(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (opaque, handle) = socket_arg(ctx, &args[0])?;
-    ctx.resources.sockets.close(handle);
+    sockets(ctx).close(handle);
     set_handle(ctx, &args[0], opaque, None)
 }
 
@@ -259,14 +302,14 @@ fn socket_close(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // receive finds out (the controller keeps the state its instructions set).
 fn socket_get_status(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (_, handle) = socket_arg(ctx, &args[0])?;
-    let status = ctx.resources.sockets.status(handle);
+    let status = sockets(ctx).status(handle);
     Ok(Some(Value::Num(status as u8 as f32)))
 }
 
 /// `SocketPeek(Socket)`: how many bytes have arrived and not been received yet.
 fn socket_peek(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (_, handle) = socket_arg(ctx, &args[0])?;
-    let n = ctx.resources.sockets.peek(handle).map_err(|f| fault(ctx, f))?;
+    let n = sockets(ctx).peek(handle).map_err(|f| fault(ctx, f))?;
     Ok(Some(Value::Num(n as f32)))
 }
 
@@ -292,24 +335,24 @@ fn wait_for<T>(
     timeout: Duration,
     op: impl FnOnce(&mut SocketState, table::Deadline) -> Result<T, table::Fault>,
 ) -> Result<Option<T>, RapidError> {
-    if !ctx.resources.sockets.is_cooperative() {
-        let started = ctx.resources.sockets.now();
-        let res = op(&mut ctx.resources.sockets, deadline(started, timeout));
+    if !sockets(ctx).is_cooperative() {
+        let started = sockets(ctx).now();
+        let res = op(sockets(ctx), deadline(started, timeout));
         return finish_wait(ctx, started, res).map(Some);
     }
     let started = wait_started(ctx);
     let until = started + timeout.as_secs_f64();
-    let now = ctx.resources.sockets.now();
-    match op(&mut ctx.resources.sockets, now) {
+    let now = sockets(ctx).now();
+    match op(sockets(ctx), now) {
         Err((Err::SockTimeout, _)) if ctx.time < until => {
-            ctx.resources.sockets.set_polling(true);
+            sockets(ctx).set_polling(true);
             let next = ctx.time + POLL_PERIOD;
             wait_again(ctx, started, Some(until), Some(next));
             Ok(None)
         }
         res => {
-            ctx.resources.io.waiting = None;
-            ctx.resources.sockets.set_polling(false);
+            wait_over(ctx);
+            sockets(ctx).set_polling(false);
             res.map(Some).map_err(|f| fault(ctx, f))
         }
     }
@@ -318,7 +361,7 @@ fn wait_for<T>(
 /// Reports the wall time a socket operation took as a wait of the controller clock,
 /// and turns its fault into the RAPID error.
 fn finish_wait<T>(ctx: &mut Ctx<'_>, started: table::Deadline, res: Result<T, table::Fault>) -> Result<T, RapidError> {
-    ctx.waited = ctx.resources.sockets.now().saturating_sub(started).as_secs_f64();
+    ctx.waited = sockets(ctx).now().saturating_sub(started).as_secs_f64();
     res.map_err(|f| fault(ctx, f))
 }
 

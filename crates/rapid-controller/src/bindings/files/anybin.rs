@@ -18,8 +18,8 @@
 //! corrupt transfer: ERR_RANYBIN_CHK (uncertain: the manual only says the types must
 //! match).
 
-use crate::errnames::Err;
-use crate::value::{Array, Record, Value};
+use rapid_vm::errnames::Err;
+use rapid_vm::value::{Array, Record, Value};
 
 type Fault = (Err, String);
 

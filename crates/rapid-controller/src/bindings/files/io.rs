@@ -12,10 +12,10 @@
 use super::iodev::{check_time, with_file, Need};
 use super::text::{bytes_of, delimiters, latin1, parse_num, push_latin1, read_field, skip_lines};
 use super::{anybin, fault, io_fault, opt_string, Fault, Res};
-use crate::builtins::{present, Ctx};
-use crate::errnames::Err;
-use crate::error::RapidError;
-use crate::value::{Opaque, OpaqueState, Value, MAX_STRING_CHARS};
+use rapid_vm::errnames::Err;
+use rapid_vm::error::RapidError;
+use rapid_vm::ext::{present, Ctx};
+use rapid_vm::value::{Opaque, OpaqueState, Value, MAX_STRING_CHARS};
 
 /// What ReadNum returns at end of file: EOF_NUM (manual ReadNum; the catalogue's
 /// constant).
@@ -27,7 +27,7 @@ const EOF_STR: &str = "EOF";
 /// A rawbytes holds at most this many bytes (ReadRawBytes reads at most that).
 const RAWBYTES_CAPACITY: usize = 1024;
 
-crate::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static WRITE: WriteArgs = "Write" { num: "Num", dnum: "Dnum", no_new_line: "NoNewLine" }
     static READ_NUM: ReadNumArgs = "ReadNum" { delim: "Delim", time: "Time" }
     static READ_STR: ReadStrArgs = "ReadStr" {
@@ -48,7 +48,7 @@ pub(super) fn write(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     // \Num | \Bool | \Pos | \Orient | \Dnum: the alternatives are declared side by side.
     let values = args.get(at.num..=at.dnum).unwrap_or_default();
     if let Some(value) = values.iter().find(|a| present(Some(a))) {
-        push_latin1(&mut bytes, &crate::builtins::pendant::value_text(ctx, &ctx.value(value)?));
+        push_latin1(&mut bytes, &rapid_vm::ext::value_text(ctx, &ctx.value(value)?));
     }
     if !present(args.get(at.no_new_line)) {
         bytes.push(b'\n');
@@ -133,7 +133,7 @@ pub(super) fn read_str_bin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(Value::Str(text.into())))
 }
 
-crate::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static WRITE_BIN: WriteBinArgs = "WriteBin" { buffer: "Buffer", n_char: "NChar" }
 }
 

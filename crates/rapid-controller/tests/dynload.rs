@@ -6,7 +6,13 @@
 use rapid_sema::SourceInput;
 use rapid_vm::world::memory::MemoryFs;
 use rapid_vm::world::World;
-use rapid_vm::{load, Exit, RecordingHost};
+use rapid_vm::{Exit, RecordingHost};
+
+/// Loads with the controller's standard set of built-ins (the file and socket
+/// built-ins are the controller's bindings).
+fn load(files: &[SourceInput], entry: &str) -> Result<rapid_vm::Loaded, rapid_vm::LoadError> {
+    rapid_controller::builtin_set::load_with(files, entry, &rapid_sema::Options::default())
+}
 
 /// A world whose disk is `fs`, in memory: the modules the program writes and loads
 /// never touch the host's disk.
@@ -50,7 +56,7 @@ fn pp_to_main_unloads_dynamic_modules_and_reinitialises_static_ones() {
         Err(err) => panic!("load failed: {err:?}"),
     };
     let (mut machine, entry) = (loaded.vm, loaded.entry);
-    machine.resources_mut().files.set_root(&root);
+    machine.resources_mut().devices.set_root(&root);
     machine.set_world(memory_world(MemoryFs::new()));
     let mut host = RecordingHost::default();
     assert_eq!(machine.run(&mut host, 100_000), Exit::Done);
@@ -73,7 +79,7 @@ fn a_module_that_does_not_check_is_refused_with_its_diagnostics() {
         Err(err) => panic!("load failed: {err:?}"),
     };
     let mut machine = loaded.vm;
-    machine.resources_mut().files.set_root(&root);
+    machine.resources_mut().devices.set_root(&root);
     machine.set_world(memory_world(fs));
     let mut host = RecordingHost::default();
     let exit = machine.run(&mut host, 100_000);
@@ -144,7 +150,7 @@ ENDMODULE
         Err(err) => panic!("load failed: {err:?}"),
     };
     let mut machine = loaded.vm;
-    machine.resources_mut().files.set_root(&root);
+    machine.resources_mut().devices.set_root(&root);
     machine.set_world(memory_world(fs));
     let mut host = RecordingHost::default();
     assert_eq!(machine.run(&mut host, 100_000), Exit::Done);

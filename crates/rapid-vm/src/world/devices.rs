@@ -11,11 +11,73 @@
 //! The VM owns this mapping (device name → folder under the root) and the checks, not
 //! the world's [`FileSystem`]: the sandbox is a rule of the controller, so it holds the
 //! same for every embedder; the file system only sees the host paths it let through.
-//! The root itself is configuration the controller gives ([`super::FileState::set_root`]).
+//! The root itself is configuration the controller gives ([`Devices::set_root`]).
+//!
+//! [`Devices`] is the task's part of this (the disk, the root, the files the loaded
+//! modules came from): the language's own built-ins that name a path (Load, TextTabInstall,
+//! SpyStart) and the embedder's file built-ins all resolve through it.
 
 use std::path::{Path, PathBuf};
 
 use crate::world::{FileKind, FileSystem};
+
+/// The task's file devices: the world's disk they live on, the folder they live in,
+/// and the loaded modules' files (ModExist, ModTimeDnum).
+pub struct Devices {
+    /// The world's disk (none until the embedder gives one: [`crate::Vm::set_world`]).
+    fs: Box<dyn FileSystem>,
+    root: Option<PathBuf>,
+    modules: Vec<ModuleFile>,
+}
+
+/// A loaded module and the file it came from.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ModuleFile {
+    pub name: String,
+    pub path: PathBuf,
+}
+
+impl Default for Devices {
+    fn default() -> Devices {
+        Devices { fs: Box::new(crate::world::NoFileSystem), root: None, modules: Vec::new() }
+    }
+}
+
+impl Devices {
+    /// The file system the devices live on.
+    pub fn set_file_system(&mut self, fs: Box<dyn FileSystem>) {
+        self.fs = fs;
+    }
+
+    pub fn file_system(&self) -> &dyn FileSystem {
+        &*self.fs
+    }
+
+    /// Resolves RAPID path `text` on its device (see [`resolve`]).
+    pub fn resolve(&self, text: &str) -> Result<Resolved, PathFault> {
+        resolve(&*self.fs, self.root.as_deref(), text)
+    }
+
+    /// The folder the devices live in: `HOME:` is `<root>/HOME`, and so on. Without a
+    /// root every path raises an error.
+    pub fn set_root(&mut self, root: impl Into<PathBuf>) {
+        self.root = Some(root.into());
+    }
+
+    pub fn root(&self) -> Option<&Path> {
+        self.root.as_deref()
+    }
+
+    /// The task's loaded modules (ModExist, ModTimeDnum).
+    pub fn set_modules(&mut self, modules: Vec<ModuleFile>) {
+        self.modules = modules;
+    }
+
+    /// The task's loaded modules.
+    pub fn modules(&self) -> &[ModuleFile] {
+        &self.modules
+    }
+}
 
 /// The file devices of an IRC5 controller (RobotWare 6) that the virtual controller
 /// offers. `HOME:`, `TEMP:` and `RAMDISK:` are the ones ABB's manual and public

@@ -10,7 +10,13 @@ use std::time::Duration;
 use rapid_sema::SourceInput;
 use rapid_vm::world::memory::{MemoryFs, SilentNetwork};
 use rapid_vm::world::{Clock, StoppedClock, World};
-use rapid_vm::{load, Exit, RecordingHost, Vm};
+use rapid_vm::{Exit, RecordingHost, Vm};
+
+/// Loads with the controller's standard set of built-ins (the file and socket
+/// built-ins are the controller's bindings).
+fn load(files: &[SourceInput], entry: &str) -> Result<rapid_vm::Loaded, rapid_vm::LoadError> {
+    rapid_controller::builtin_set::load_with(files, entry, &rapid_sema::Options::default())
+}
 
 /// The controller root of the file devices: a path on the disk in memory only.
 const ROOT: &str = "/virtual-controller";
@@ -113,7 +119,7 @@ ENDMODULE
 fn files_are_written_read_and_listed_on_the_worlds_disk() {
     let fs = Rc::new(MemoryFs::new());
     let mut vm = vm(FILES);
-    vm.resources_mut().files.set_root(ROOT);
+    vm.resources_mut().devices.set_root(ROOT);
     vm.set_world(World { files: Box::new(SharedFs(fs.clone())), ..World::closed() });
     let lines = run(vm);
     // What the program read back is what it wrote; the listing has the controller's
@@ -135,8 +141,37 @@ fn without_a_world_a_file_cannot_be_opened() {
     let program = "MODULE t\nPROC main()\n  VAR iodev f;\n  Open \"HOME:/a.txt\", f \\Write;\nERROR\n  \
                    IF ERRNO = ERR_FILEOPEN TPWrite \"no disk\";\n  RETURN;\nENDPROC\nENDMODULE\n";
     let mut vm = vm(program);
-    vm.resources_mut().files.set_root(ROOT);
+    vm.resources_mut().devices.set_root(ROOT);
     assert_eq!(run(vm), ["no disk"]);
+}
+
+const TEXT_TABLE_STILL_OPEN: &str = r#"MODULE t
+PROC main()
+  VAR iodev f;
+  Open "HOME:/texts.eng", f \Write;
+  Write f, "greetings::";
+  Write f, "1:";
+  Write f, "Hello operator";
+  TextTabInstall "HOME:/texts.eng";
+  TPWrite TextGet(TextTabGet("greetings"), 1);
+  Close f;
+ENDPROC
+ENDMODULE
+"#;
+
+#[test]
+fn a_file_still_open_for_writing_is_read_as_written_by_the_languages_own_built_ins() {
+    // The three lines are still in the open file's write buffer when TextTabInstall
+    // (a built-in of the language, not of the files extension) reads the file: the
+    // files extension writes them out first (TaskHooks::flush_files), so the table
+    // is there; without that the file would still be empty.
+    let fs = Rc::new(MemoryFs::new());
+    let mut vm = vm(TEXT_TABLE_STILL_OPEN);
+    vm.resources_mut().devices.set_root(ROOT);
+    vm.set_world(World { files: Box::new(SharedFs(fs.clone())), ..World::closed() });
+    assert_eq!(run(vm), ["Hello operator"]);
+    let file = Path::new(ROOT).join("HOME").join("texts.eng");
+    assert_eq!(fs.get(&file).as_deref(), Some(&b"greetings::\n1:\nHello operator\n"[..]));
 }
 
 /// 2024-02-29 13:45:30 UTC in seconds since 1970: 54 years with 13 leap days to

@@ -11,12 +11,12 @@
 use std::io::{self, SeekFrom};
 
 use super::text::ByteSource;
-use super::{fault, handle_of, io_fault, opt_string, resolve, set_handle, Fault, Res};
-use crate::builtins::{present, Ctx};
-use crate::errnames::Err;
-use crate::error::RapidError;
-use crate::value::{OpaqueState, Value};
-use crate::world::{FileKind, HostFile, OpenMode};
+use super::{fault, handle_of, io_fault, opt_string, resolve, set_handle, table, Fault, Res};
+use rapid_vm::errnames::Err;
+use rapid_vm::error::RapidError;
+use rapid_vm::ext::{present, Ctx};
+use rapid_vm::value::{OpaqueState, Value};
+use rapid_vm::world::{FileKind, HostFile, OpenMode};
 
 /// Bytes read ahead from the host file at a time.
 const READ_AHEAD: usize = 4096;
@@ -147,7 +147,7 @@ pub(super) fn with_file<T>(
     work: impl FnOnce(&mut OpenFile) -> Result<T, Fault>,
 ) -> Result<T, RapidError> {
     let handle = ctx.handle_only(arg, "an iodev or dir")?;
-    let result = match handle.and_then(|h| ctx.resources.files.files.get_mut(&h)) {
+    let result = match handle.and_then(|h| table(ctx).files.get_mut(&h)) {
         None => Err((Err::FileAccess, "the I/O device is not open".to_string())),
         Some(file) if need == Need::Read && !file.readable => {
             Err((Err::FileAccess, "the file was not opened for reading".to_string()))
@@ -160,7 +160,7 @@ pub(super) fn with_file<T>(
     result.map_err(|f| fault(ctx, f))
 }
 
-crate::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static OPEN: OpenArgs = "Open" {
         file: "File", io_device: "IODevice", read: "Read", write: "Write", append: "Append", bin: "Bin",
     }
@@ -173,12 +173,12 @@ pub(super) fn open(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let file_name = opt_string(ctx, args.get(at.file))?;
     let (shell, handle) = handle_of(ctx, &args[at.io_device])?;
     // uncertain: opening an iodev that is already open; we raise ERR_FILEOPEN.
-    if handle.is_some_and(|h| ctx.resources.files.files.contains_key(&h)) {
+    if handle.is_some_and(|h| table(ctx).files.contains_key(&h)) {
         return Err(ctx.error(Err::FileOpen, "the I/O device is already open; Close it first"));
     }
     // Ours (the controller's figure is not public): a program opening in a loop must
     // not exhaust the host's file handles.
-    if ctx.resources.files.files.len() >= rapid_limits::OPEN_FILES {
+    if table(ctx).files.len() >= rapid_limits::OPEN_FILES {
         let limit = rapid_limits::OPEN_FILES;
         return Err(ctx.error(Err::FileOpen, format!("at most {limit} files may be open at once; Close one first")));
     }
@@ -188,11 +188,11 @@ pub(super) fn open(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         present(args.get(at.append)),
         present(args.get(at.bin)),
     );
-    let path_text = super::devices::join_object(&object, file_name.as_deref());
+    let path_text = rapid_vm::world::devices::join_object(&object, file_name.as_deref());
     let resolved = resolve(ctx, &path_text, Err::FileOpen)?;
     // Only regular files: a directory cannot be read as a file, and opening a FIFO or a
     // device placed in the root would block the controller or reach hardware.
-    if let Ok(meta) = ctx.resources.files.file_system().metadata(&resolved.path) {
+    if let Ok(meta) = ctx.resources.devices.file_system().metadata(&resolved.path) {
         if meta.kind != FileKind::File {
             return Err(ctx.error(Err::FileOpen, format!("`{path_text}` is not a file")));
         }
@@ -214,7 +214,7 @@ pub(super) fn open(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
             options.truncate = true;
         }
     }
-    let opened = ctx.resources.files.file_system().open(&resolved.path, options).and_then(|mut file| {
+    let opened = ctx.resources.devices.file_system().open(&resolved.path, options).and_then(|mut file| {
         if at_end {
             file.seek(SeekFrom::End(0))?;
         }
@@ -224,14 +224,13 @@ pub(super) fn open(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         Ok(file) => file,
         Err(e) => return Err(ctx.error(Err::FileOpen, format!("`{path_text}` cannot be opened: {e}"))),
     };
-    let handle = ctx.resources.files.new_handle();
-    ctx.resources
-        .files
+    let handle = table(ctx).new_handle();
+    table(ctx)
         .files
         .insert(handle, OpenFile { file, readable, writable, buf: Vec::new(), pos: 0, pending: Vec::new() });
     set_handle(ctx, &args[at.io_device], shell, OpaqueState::Handle(handle))
         .inspect_err(|_| {
-            ctx.resources.files.files.remove(&handle);
+            table(ctx).files.remove(&handle);
         })
         .map(|_| None)
 }
@@ -240,7 +239,7 @@ pub(super) fn open(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // uncertain: the manual names no error for Close.
 pub(super) fn close(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let (shell, handle) = handle_of(ctx, &args[0])?;
-    let closed = handle.and_then(|h| ctx.resources.files.files.remove(&h));
+    let closed = handle.and_then(|h| table(ctx).files.remove(&h));
     set_handle(ctx, &args[0], shell, OpaqueState::None)?;
     if let Some(mut file) = closed {
         // uncertain: the manual names no error for Close; a write that fails here is

@@ -1,100 +1,48 @@
 //! Files and folders on the controller's devices (§1.16) and character/binary I/O on
-//! them (§1.10).
+//! them (§1.10), an extension of the interpreter ([`EXTENSION`]).
 //!
-//! * [`devices`]: device paths (`HOME:`, `TEMP:`, ...) and the sandbox under one root.
-//! * [`folders`]: MakeDir, RemoveDir, OpenDir/ReadDir/CloseDir (`dir`), RemoveFile,
+//! * `folders`: MakeDir, RemoveDir, OpenDir/ReadDir/CloseDir (`dir`), RemoveFile,
 //!   RenameFile, CopyFile, IsFile, FSSize, FileSize, FileTimeDnum, ModExist, ModTimeDnum.
-//! * [`iodev`]: Open, Close, Rewind, ClearIOBuff and the open-file table (`iodev`).
-//! * [`io`]: Write, ReadNum, ReadStr and the binary reads and writes.
-//! * [`text`] and [`anybin`]: the pure parts (fields of text files, WriteAnyBin's format).
+//! * `iodev`: Open, Close, Rewind, ClearIOBuff and the open-file table (`iodev`).
+//! * `io`: Write, ReadNum, ReadStr and the binary reads and writes.
+//! * `text` and `anybin`: the pure parts (fields of text files, WriteAnyBin's format).
+//!
+//! The devices themselves (`HOME:` ... on the world's disk, the sandbox) are the
+//! interpreter's (`rapid_vm::world::devices`): the language's own Load and
+//! TextTabInstall resolve paths there too. This family keeps what the task holds open.
 //!
 //! An iodev or dir variable holds `OpaqueState::Handle(n)`; `n` keys this family's tables
 //! in [`FileState`]. Handles are never reused, so an iodev that was closed (or closed by
 //! PP to Main) is simply not found: ERR_FILEACC.
 
 mod anybin;
-pub mod devices;
 mod folders;
 mod io;
 mod iodev;
 mod text;
 
-use std::path::{Path, PathBuf};
-
 use rustc_hash::FxHashMap;
 
-use super::{native, Ctx, Family};
-use crate::errnames::Err;
-use crate::error::RapidError;
-use crate::value::{Opaque, OpaqueState, Value};
-use crate::world::FileSystem;
+use rapid_vm::embed::{Extension, TaskHooks, TaskState};
+use rapid_vm::errnames::Err;
+use rapid_vm::error::RapidError;
+use rapid_vm::ext::{devices, native, Ctx, Family, Resources};
+use rapid_vm::value::{Opaque, OpaqueState, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 /// An error before it becomes a RAPID error (the tables are borrowed while it is made).
 type Fault = (Err, String);
 
-/// Open files and directories of the task, the file system and the controller root the
-/// devices live under, and the loaded modules' files (ModExist, ModTimeDnum).
+/// The files and the directory listings the task holds open, in the task's extension
+/// slot.
+#[derive(Default)]
 pub struct FileState {
-    /// The world's disk (none until the embedder gives one: [`crate::Vm::set_world`]).
-    fs: Box<dyn FileSystem>,
-    root: Option<PathBuf>,
-    modules: Vec<ModuleFile>,
     files: FxHashMap<u32, iodev::OpenFile>,
     dirs: FxHashMap<u32, folders::DirListing>,
     last_handle: u32,
 }
 
-/// A loaded module and the file it came from.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct ModuleFile {
-    pub name: String,
-    pub path: PathBuf,
-}
-
-impl Default for FileState {
-    fn default() -> FileState {
-        FileState {
-            fs: Box::new(crate::world::NoFileSystem),
-            root: None,
-            modules: Vec::new(),
-            files: FxHashMap::default(),
-            dirs: FxHashMap::default(),
-            last_handle: 0,
-        }
-    }
-}
-
 impl FileState {
-    /// The file system the devices live on.
-    pub fn set_file_system(&mut self, fs: Box<dyn FileSystem>) {
-        self.fs = fs;
-    }
-
-    pub fn file_system(&self) -> &dyn FileSystem {
-        &*self.fs
-    }
-
-    /// Resolves RAPID path `text` on its device (see [`devices`]).
-    pub fn resolve(&self, text: &str) -> Result<devices::Resolved, devices::PathFault> {
-        devices::resolve(&*self.fs, self.root.as_deref(), text)
-    }
-
-    /// The folder the devices live in: `HOME:` is `<root>/HOME`, and so on. Without a
-    /// root every file built-in raises an error.
-    pub fn set_root(&mut self, root: impl Into<PathBuf>) {
-        self.root = Some(root.into());
-    }
-
-    pub fn root(&self) -> Option<&Path> {
-        self.root.as_deref()
-    }
-
-    /// The task's loaded modules (ModExist, ModTimeDnum).
-    pub fn set_modules(&mut self, modules: Vec<ModuleFile>) {
-        self.modules = modules;
-    }
-
     /// Writes out what every open file holds in its write buffer. A failure stays
     /// pending and is reported by the file's next write or its Close.
     pub fn flush_all(&mut self) {
@@ -103,24 +51,44 @@ impl FileState {
         }
     }
 
-    /// The task's loaded modules.
-    pub fn modules(&self) -> &[ModuleFile] {
-        &self.modules
-    }
-
-    /// Closes every open file and directory.
-    pub fn close_all(&mut self) {
-        self.files.clear();
-        self.dirs.clear();
-    }
-
     fn new_handle(&mut self) -> u32 {
         self.last_handle = self.last_handle.wrapping_add(1).max(1);
         self.last_handle
     }
 }
 
-pub(super) static FAMILY: Family = Family {
+impl TaskState for FileState {
+    /// Closes every open file and directory (end of program, PP to Main).
+    fn close_all(&mut self) {
+        self.files.clear();
+        self.dirs.clear();
+    }
+}
+
+/// The file built-ins, their per-task table, and the flush before a path is looked at.
+pub static EXTENSION: Extension =
+    Extension { name: "files", families: &[&FAMILY], hooks: Some(&FileHooks), init: Some(init) };
+
+fn init(resources: &mut Resources) {
+    resources.extensions.insert(FileState::default());
+}
+
+struct FileHooks;
+
+impl TaskHooks for FileHooks {
+    fn flush_files(&self, resources: &mut Resources) {
+        if let Some(files) = resources.extensions.get_mut::<FileState>() {
+            files.flush_all();
+        }
+    }
+}
+
+/// The task's open files and directories.
+fn table<'a>(ctx: &'a mut Ctx<'_>) -> &'a mut FileState {
+    ctx.resources.extensions.get_or_default::<FileState>()
+}
+
+static FAMILY: Family = Family {
     file: file!(),
     builtins: &[
         native("Open", iodev::open),
@@ -172,8 +140,7 @@ fn set_handle(ctx: &mut Ctx<'_>, arg: &Value, mut shell: Opaque, state: OpaqueSt
 /// Every built-in that names a path comes here first, so what the task wrote but still
 /// holds in its write buffers reaches the files before anything looks at them.
 fn resolve(ctx: &mut Ctx<'_>, text: &str, err: Err) -> Result<devices::Resolved, RapidError> {
-    ctx.resources.files.flush_all();
-    ctx.resources.files.resolve(text).map_err(|fault| ctx.error(err, fault.message()))
+    ctx.resolve_path(text).map_err(|fault| ctx.error(err, fault.message()))
 }
 
 fn fault(ctx: &Ctx<'_>, (err, message): Fault) -> RapidError {
