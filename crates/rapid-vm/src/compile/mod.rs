@@ -15,7 +15,7 @@ pub use stream::{StreamCompiler, Streamed};
 
 use rapid_sema::symbols::{DataKind, DeclOrigin, Def};
 use rapid_sema::types::{Atomic, TypeId, TypeKind, Types};
-use rapid_sema::{Program, Tables};
+use rapid_sema::{ItemFacts, Program, Tables};
 use rapid_syntax::ast::{Arena, DataDecl, Item, Module, ParamMode, Routine, Section};
 use rapid_syntax::{Interner, Span, Symbol};
 use rustc_hash::FxHashMap;
@@ -318,6 +318,11 @@ pub(crate) struct RoutineCompiler<'p> {
     pub(crate) text: &'p str,
     pub(crate) code: Code,
     pub(crate) locals: FxHashMap<Symbol, Local>,
+    /// The routine's own data (parameters, data declarations, FOR variables) in the
+    /// order they are declared: the checker's numbering (`rapid_sema::Denotes::Local`).
+    pub(crate) own_data: Vec<Local>,
+    /// What the checker resolved in the body item being compiled, when it streams it.
+    pub(crate) facts: Option<&'p ItemFacts>,
     pub(crate) loop_vars: Vec<(Symbol, Local)>,
     pub(crate) labels: FxHashMap<Symbol, u32>,
     pub(crate) gotos: Vec<(u32, Symbol, Span)>,
@@ -369,6 +374,8 @@ impl<'p> RoutineCompiler<'p> {
             text,
             code: Code { file, ..Code::default() },
             locals: FxHashMap::default(),
+            own_data: Vec::new(),
+            facts: None,
             loop_vars: Vec::new(),
             loops: Vec::new(),
             signal_as_data: false,
@@ -440,6 +447,7 @@ impl<'p> RoutineCompiler<'p> {
             let kind = LocalKind::Param { mode: param.mode, optional: param.optional };
             let local = self.new_local(ty, [0; 3], param.rank, kind);
             self.locals.insert(param.name.sym, local);
+            self.own_data.push(local);
             self.code.local_names.push((param.name.span.text(self.text).to_owned(), local.slot));
             let by_ref = param.mode != ParamMode::In;
             self.code.param_by_ref.push(by_ref);
@@ -469,6 +477,7 @@ impl<'p> RoutineCompiler<'p> {
         }
         let local = self.new_local(ty, dims, rank, LocalKind::Data);
         self.locals.insert(decl.name.sym, local);
+        self.own_data.push(local);
         self.code.local_names.push((decl.name.span.text(self.text).to_owned(), local.slot));
         if decl.storage == rapid_syntax::ast::Storage::Const {
             self.code.const_locals.push(local.slot);

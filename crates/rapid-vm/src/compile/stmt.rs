@@ -95,6 +95,7 @@ impl RoutineCompiler<'_> {
                 self.code.emit(Instr::ForInit { var: local.slot, has_step: step.is_some() });
                 let check = self.code.emit(Instr::ForCheck { var: local.slot, exit: 0 });
                 self.loop_vars.push((var.sym, local));
+                self.own_data.push(local);
                 self.loops.push(super::LoopJumps::default());
                 self.stmt_list(arena, body, errors);
                 self.loop_vars.pop();
