@@ -113,7 +113,8 @@ fn names_calls_and_arguments_are_resolved_once_per_item() {
     FOR i FROM 1 TO 2 DO
       x := i + g;
     ENDFOR
-    SetGO go1, d * 2;
+    SetGO go1, x + d;
+    x := GetTSPStatus(\"T_ROB1\");
     p x, \\Opt:=a;
     x := Abs(x);
     Nowhere;
@@ -130,10 +131,15 @@ ENDMODULE
         "x: own data 1",
         "i: own data 3",
         "g: data g",
-        // SetGO's `num Value | dnum Dvalue`: the checker types `d * 2` as a dnum.
+        // SetGO's `num Value | dnum Dvalue`: `num + dnum` is a dnum (manual §1.3.5's
+        // operator table), so the argument stands for Dvalue.
         "go1: data go1",
+        "x: own data 1",
         "d: own data 2",
-        "call SetGO: routine SetGO (Signal=go1 Dvalue=d * 2)",
+        "call SetGO: routine SetGO (Signal=go1 Dvalue=x + d)",
+        // `taskid TaskRef | string TaskName`: a string literal is a TaskName.
+        "x: own data 1",
+        "GetTSPStatus(\"T_ROB1\"): routine GetTSPStatus (TaskName=\"T_ROB1\")",
         "x: own data 1",
         "a: own data 0",
         "call p: routine p (b=x Opt=a)",

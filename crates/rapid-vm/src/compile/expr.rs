@@ -68,7 +68,7 @@ impl RoutineCompiler<'_> {
                 self.place(arena, id)?;
                 self.code.emit(Instr::LoadPlace);
             }
-            ExprKind::Call { name, args } => self.call(arena, name, args, expr.span, true)?,
+            ExprKind::Call { name, args } => self.call(arena, name, args, expr.span, super::call::CallOf::Expr(id))?,
             ExprKind::Unary { op, operand } => {
                 let start = self.mark();
                 self.expr(arena, operand, expect)?;

@@ -438,6 +438,17 @@ impl<'p> RoutineCompiler<'p> {
         }
     }
 
+    /// What the checker's `denotes` is here.
+    pub(crate) fn denoted(&self, denotes: rapid_sema::Denotes) -> Option<Resolved> {
+        match denotes {
+            rapid_sema::Denotes::Nothing => None,
+            rapid_sema::Denotes::Local(n) => self.own_data.get(n as usize).map(|local| Resolved::Local(*local)),
+            rapid_sema::Denotes::Decl(Def::Data(idx)) => Some(Resolved::Global(idx)),
+            rapid_sema::Denotes::Decl(Def::Routine(idx)) => Some(Resolved::Routine(idx)),
+            rapid_sema::Denotes::Decl(Def::Type(ty)) => Some(Resolved::Type(ty)),
+        }
+    }
+
     pub(crate) fn declare_params(&mut self, routine: &Routine) {
         for param in routine.params.iter().filter(|p| p.placeholder.is_none()) {
             let ty = match self.resolve(param.ty.sym) {
