@@ -92,8 +92,19 @@ impl Checker<'_> {
     /// them are still resolved.
     pub(crate) fn type_args_leniently(&mut self, arena: &Arena, args: ArgList) {
         for arg in arena.args(args) {
-            if let (Some(value), ArgKind::Required | ArgKind::Optional) = (arg.value, arg.kind) {
-                self.expr(arena, value, Some(Expect::scalar(types::ANY)));
+            match (arg.value, arg.kind) {
+                (Some(value), ArgKind::Required | ArgKind::Optional) => {
+                    self.expr(arena, value, Some(Expect::scalar(types::ANY)));
+                }
+                // The parameter a conditional argument forwards (a late-bound call's
+                // `\opt?opt`), for the compiler; the call is matched when it runs.
+                (Some(value), ArgKind::Conditional) if self.facts.recording => {
+                    if let ExprKind::Name(sym) = arena.expr(value).kind {
+                        let def = self.lookup(sym);
+                        self.note_name(value, def);
+                    }
+                }
+                _ => {}
             }
         }
     }

@@ -154,3 +154,17 @@ ENDMODULE
     ];
     assert_eq!(seen, expected);
 }
+
+#[test]
+fn a_late_bound_call_forwards_a_parameter_the_checker_resolved() {
+    let text = "MODULE M
+  PROC relay(string name \\num opt)
+    % name % 9 \\opt?opt;
+  ENDPROC
+ENDMODULE
+";
+    // The callee is matched only when the call runs, but the forwarded parameter is
+    // this routine's own: its second parameter.
+    let expected = ["begin relay", "name: own data 0", "opt: own data 1", "end clean=true"];
+    assert_eq!(record(text), expected);
+}

@@ -228,7 +228,7 @@ impl RoutineCompiler<'_> {
                 _ => return ArgOrigin::None,
             }
         };
-        match self.resolve(sym) {
+        match self.name(id, sym) {
             Some(Resolved::Global(idx)) => match self.prog.datas.get(idx as usize) {
                 Some(data) => ArgOrigin::Data(data.display.as_str().into()),
                 None => ArgOrigin::None,
@@ -279,7 +279,7 @@ impl RoutineCompiler<'_> {
                 let ExprKind::Name(sym) = arena.expr(value).kind else {
                     return Err(self.unsupported(arg.span, "a conditional argument that is not a parameter name"));
                 };
-                return match self.resolve(sym) {
+                return match self.name(value, sym) {
                     Some(Resolved::Local(local)) if matches!(local.kind, LocalKind::Param { optional: true, .. }) => {
                         Ok(ArgSpec::Conditional { slot: local.slot, by_ref })
                     }
@@ -346,11 +346,11 @@ impl RoutineCompiler<'_> {
     /// `Present(p)`: whether optional parameter `p` was passed.
     fn present(&mut self, arena: &Arena, args: ArgList, span: Span) -> Result<(), CompileError> {
         let value = arena.args(args).first().and_then(|a| a.value);
-        let sym = value.and_then(|v| match arena.expr(v).kind {
-            ExprKind::Name(sym) => Some(sym),
+        let name = value.and_then(|v| match arena.expr(v).kind {
+            ExprKind::Name(sym) => Some((v, sym)),
             _ => None,
         });
-        match sym.and_then(|s| self.resolve(s)) {
+        match name.and_then(|(v, sym)| self.name(v, sym)) {
             Some(Resolved::Local(local)) => {
                 self.code.emit(Instr::Present(local.slot));
                 Ok(())
@@ -559,7 +559,7 @@ impl RoutineCompiler<'_> {
     fn conditional_slot(&self, arena: &Arena, value: rapid_syntax::ast::ExprId) -> Result<u32, CompileError> {
         let expr = arena.expr(value);
         match expr.kind {
-            ExprKind::Name(sym) => match self.resolve(sym) {
+            ExprKind::Name(sym) => match self.name(value, sym) {
                 Some(Resolved::Local(local)) if matches!(local.kind, LocalKind::Param { optional: true, .. }) => {
                     Ok(local.slot)
                 }

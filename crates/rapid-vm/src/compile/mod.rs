@@ -438,6 +438,15 @@ impl<'p> RoutineCompiler<'p> {
         }
     }
 
+    /// What name expression `id`, spelled `sym`, denotes: what the checker found,
+    /// when it streamed the item, else the name looked up here.
+    pub(crate) fn name(&self, id: rapid_syntax::ast::ExprId, sym: Symbol) -> Option<Resolved> {
+        match self.facts.and_then(|facts| facts.name(id)) {
+            Some(denotes) => self.denoted(denotes),
+            None => self.resolve(sym),
+        }
+    }
+
     /// What the checker's `denotes` is here.
     pub(crate) fn denoted(&self, denotes: rapid_sema::Denotes) -> Option<Resolved> {
         match denotes {
@@ -504,7 +513,7 @@ impl<'p> RoutineCompiler<'p> {
         let expr = arena.expr(dim);
         let value = match expr.kind {
             rapid_syntax::ast::ExprKind::Num => rapid_syntax::literal::num_value(expr.span.text(self.text)),
-            rapid_syntax::ast::ExprKind::Name(sym) => match self.resolve(sym) {
+            rapid_syntax::ast::ExprKind::Name(sym) => match self.name(dim, sym) {
                 Some(Resolved::Global(idx)) => self.prog.datas[idx as usize].const_value,
                 _ => None,
             },
@@ -522,7 +531,7 @@ impl<'p> RoutineCompiler<'p> {
             rapid_syntax::ast::ExprKind::Num => {
                 rapid_syntax::literal::num_value(expr.span.text(self.text)).map(|v| v as i32)
             }
-            rapid_syntax::ast::ExprKind::Name(sym) => match self.resolve(sym) {
+            rapid_syntax::ast::ExprKind::Name(sym) => match self.name(id, sym) {
                 Some(Resolved::Global(idx)) => {
                     let data = &self.prog.datas[idx as usize];
                     if data.kind == DataKind::Const {

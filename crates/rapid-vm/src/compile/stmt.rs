@@ -260,7 +260,7 @@ impl RoutineCompiler<'_> {
     ) -> Result<(), CompileError> {
         let expect = self.static_type(arena, target);
         match arena.expr(target).kind {
-            ExprKind::Name(sym) => match self.resolve(sym) {
+            ExprKind::Name(sym) => match self.name(target, sym) {
                 Some(Resolved::Local(local)) => {
                     self.expr(arena, value, expect)?;
                     self.code.emit(Instr::StoreLocal(local.slot));
