@@ -36,6 +36,11 @@ pub struct ItemFacts {
     params: Vec<u32>,
     /// Procedure calls (statements) by the start of their name: the routine called.
     procedures: Vec<(u32, Denotes)>,
+    /// The entries of `names` and `params` written for the item, reset when the next
+    /// one starts. Items of a long body share one arena (the parser hands them over
+    /// in batches), so resetting the whole table per item would cost the batch's size.
+    written_names: Vec<u32>,
+    written_params: Vec<u32>,
 }
 
 impl ItemFacts {
@@ -69,18 +74,27 @@ impl ItemFacts {
     /// Starts the facts of an item whose arena holds `n_exprs` expressions and
     /// `n_args` arguments.
     pub(crate) fn start(&mut self, n_exprs: usize, n_args: usize) {
-        self.names.clear();
-        self.params.clear();
+        for idx in self.written_names.drain(..) {
+            self.names[idx as usize] = None;
+        }
+        for idx in self.written_params.drain(..) {
+            self.params[idx as usize] = UNSEEN;
+        }
         self.procedures.clear();
         if self.recording {
-            self.names.resize(n_exprs, None);
-            self.params.resize(n_args, UNSEEN);
+            if self.names.len() < n_exprs {
+                self.names.resize(n_exprs, None);
+            }
+            if self.params.len() < n_args {
+                self.params.resize(n_args, UNSEEN);
+            }
         }
     }
 
     pub(crate) fn set_name(&mut self, id: ExprId, denotes: Denotes) {
         if let Some(slot) = self.names.get_mut(id.0 as usize) {
             *slot = Some(denotes);
+            self.written_names.push(id.0);
         }
     }
 
@@ -89,6 +103,7 @@ impl ItemFacts {
     pub(crate) fn set_param(&mut self, arg: usize, param: Option<usize>) {
         if let Some(slot) = self.params.get_mut(arg) {
             *slot = param.map_or(UNBOUND, |p| p as u32);
+            self.written_params.push(arg as u32);
         }
     }
 
