@@ -92,6 +92,7 @@ impl Checker<'_> {
 
     /// One streamed body item.
     pub(crate) fn body_item(&mut self, item: &BodyItem, arena: &Arena) {
+        self.facts.start(arena.exprs.len(), arena.args.len());
         match item {
             BodyItem::Decl(decl) => self.routine_data(decl, arena),
             BodyItem::Section { section, keyword, error_numbers } => {
@@ -131,7 +132,10 @@ impl Checker<'_> {
                 rapid_syntax::literal::num_value(self.text(expr.span)).is_some_and(|v| v.fract() == 0.0 && v >= 0.0)
             }
             ExprKind::Name(sym) => match self.lookup(sym) {
-                Some(Def::Data(data)) => self.data(data).ty == self.core.errnum && self.data(data).rank == 0,
+                Some(Def::Data(data)) => {
+                    self.note_name(number, Some(Def::Data(data)));
+                    self.data(data).ty == self.core.errnum && self.data(data).rank == 0
+                }
                 None => {
                     self.expr(arena, number, None);
                     return;

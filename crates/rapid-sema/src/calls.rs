@@ -14,9 +14,11 @@ use crate::types;
 
 impl Checker<'_> {
     /// `name(args)` in an expression.
-    pub(crate) fn call_expr(&mut self, arena: &Arena, name: Symbol, args: ArgList, span: Span) -> Ty {
+    pub(crate) fn call_expr(&mut self, arena: &Arena, id: ExprId, name: Symbol, args: ArgList, span: Span) -> Ty {
         let name_text = self.text(span).split('(').next().unwrap_or("").trim().to_string();
-        match self.lookup(name) {
+        let def = self.lookup(name);
+        self.note_name(id, def);
+        match def {
             Some(Def::Routine(idx)) if self.routine(idx).kind == RoutineKind::Func => {
                 self.check_args(idx, arena, args, span);
                 self.routine(idx).ret.map_or(Ty::ERROR, Ty::scalar)
@@ -47,7 +49,12 @@ impl Checker<'_> {
             return self.type_args_leniently(arena, args);
         }
         let text = self.text(name.span);
-        match self.lookup(name.sym) {
+        let def = self.lookup(name.sym);
+        if self.facts.recording {
+            let denotes = self.denotes(def);
+            self.facts.set_procedure(name.span.start, denotes);
+        }
+        match def {
             Some(Def::Routine(idx)) => match self.routine(idx).kind {
                 RoutineKind::Proc => self.check_args(idx, arena, args, span),
                 RoutineKind::Trap => {
@@ -85,8 +92,19 @@ impl Checker<'_> {
     /// them are still resolved.
     pub(crate) fn type_args_leniently(&mut self, arena: &Arena, args: ArgList) {
         for arg in arena.args(args) {
-            if let (Some(value), ArgKind::Required | ArgKind::Optional) = (arg.value, arg.kind) {
-                self.expr(arena, value, Some(Expect::scalar(types::ANY)));
+            match (arg.value, arg.kind) {
+                (Some(value), ArgKind::Required | ArgKind::Optional) => {
+                    self.expr(arena, value, Some(Expect::scalar(types::ANY)));
+                }
+                // The parameter a conditional argument forwards (a late-bound call's
+                // `\opt?opt`), for the compiler; the call is matched when it runs.
+                (Some(value), ArgKind::Conditional) if self.facts.recording => {
+                    if let ExprKind::Name(sym) = arena.expr(value).kind {
+                        let def = self.lookup(sym);
+                        self.note_name(value, def);
+                    }
+                }
+                _ => {}
             }
         }
     }
@@ -95,14 +113,15 @@ impl Checker<'_> {
         let info = self.routine(routine);
         // An option routine whose parameter list is not public: only its name is known.
         if info.has_placeholders || info.flags.unchecked_args {
-            return self.type_args_leniently(arena, args);
+            return self.bind_args_leniently(routine, arena, args);
         }
         let (params, groups, builtin) = (info.params.clone(), info.groups.clone(), info.chapter.is_some());
         let mut binder = ArgBinder::new(&params, &groups, std::mem::take(&mut self.filled_scratch));
         let mut has_placeholder = false;
-        for arg in arena.args(args) {
+        for (arg_idx, arg) in (args.start as usize..).zip(arena.args(args)) {
             if arg.kind == ArgKind::Placeholder {
                 has_placeholder = true;
+                self.facts.set_param(arg_idx, None);
                 continue;
             }
             // Required alternatives: the argument is typed once, then matched.
@@ -111,6 +130,11 @@ impl Checker<'_> {
                 let got = *got.get_or_insert_with(|| self.expr(arena, value, Some(Expect::scalar(types::ANY))));
                 bind::fits(&self.types, param, got.ty, got.rank)
             });
+            let bound_to = match binding {
+                Binding::Param { param, .. } => Some(param),
+                _ => None,
+            };
+            self.facts.set_param(arg_idx, bound_to);
             let Some(param_idx) = self.report_binding(routine, &params, arg, binding) else {
                 if let Some(value) = arg.value.filter(|_| arg.kind != ArgKind::Conditional) {
                     self.expr(arena, value, Some(Expect::scalar(types::ANY)));
@@ -126,6 +150,38 @@ impl Checker<'_> {
                     format!("`{}` needs the argument `{}`", self.routine(routine).display, names.join("` or `"));
                 self.diag(Code::MissingArgument, call_span, message);
             }
+        }
+        self.filled_scratch = binder.into_scratch();
+    }
+
+    /// The arguments of a routine whose parameters are not checked (an option routine
+    /// whose parameter list is not public): typed as [`Checker::type_args_leniently`]
+    /// does, and bound without a report, for the compiler.
+    fn bind_args_leniently(&mut self, routine: u32, arena: &Arena, args: ArgList) {
+        if !self.facts.recording {
+            return self.type_args_leniently(arena, args);
+        }
+        let info = self.routine(routine);
+        let (params, groups) = (info.params.clone(), info.groups.clone());
+        let mut binder = ArgBinder::new(&params, &groups, std::mem::take(&mut self.filled_scratch));
+        for (arg_idx, arg) in (args.start as usize..).zip(arena.args(args)) {
+            let got = match (arg.value, arg.kind) {
+                (Some(value), ArgKind::Required | ArgKind::Optional) => {
+                    Some(self.expr(arena, value, Some(Expect::scalar(types::ANY))))
+                }
+                _ => None,
+            };
+            if arg.kind == ArgKind::Placeholder {
+                self.facts.set_param(arg_idx, None);
+                continue;
+            }
+            let binding =
+                binder.bind(arg, |_, param| got.is_some_and(|got| bind::fits(&self.types, param, got.ty, got.rank)));
+            let bound_to = match binding {
+                Binding::Param { param, .. } => Some(param),
+                _ => None,
+            };
+            self.facts.set_param(arg_idx, bound_to);
         }
         self.filled_scratch = binder.into_scratch();
     }
@@ -310,10 +366,14 @@ impl Checker<'_> {
         let Some(value) = arg.value else { return };
         let span = arena.expr(value).span;
         let forwarded = match arena.expr(value).kind {
-            ExprKind::Name(sym) => match self.lookup(sym) {
-                Some(Def::Data(data)) => Some(data),
-                _ => None,
-            },
+            ExprKind::Name(sym) => {
+                let def = self.lookup(sym);
+                self.note_name(value, def);
+                match def {
+                    Some(Def::Data(data)) => Some(data),
+                    _ => None,
+                }
+            }
             _ => self.reference_root(arena, value).map(|(data, _)| data),
         };
         match forwarded {

@@ -7,6 +7,7 @@ use rapid_syntax::{Span, Symbol};
 use crate::body::RoutineCtx;
 use crate::codes::{Code, Severity};
 use crate::diagnostic::{Diagnostic, SourceInput};
+use crate::facts::Denotes;
 use crate::symbols::{DataInfo, Def, RoutineInfo, Scopes};
 use crate::types::{CoreTypes, TypeId, Types};
 
@@ -53,6 +54,8 @@ pub(crate) struct Checker<'a> {
     /// Such names met in the routine being checked: declared when it ends (its own
     /// data is dropped from `datas` then, so global data cannot be added before).
     pub(crate) virtual_pending: Vec<(rapid_syntax::Symbol, String, crate::types::TypeId)>,
+    /// What the body item being checked resolved, for a [`crate::BodySink`].
+    pub(crate) facts: crate::facts::ItemFacts,
 }
 
 impl<'a> Checker<'a> {
@@ -88,6 +91,7 @@ impl<'a> Checker<'a> {
             virtual_signals: false,
             virtual_found: Vec::new(),
             virtual_pending: Vec::new(),
+            facts: Default::default(),
         }
     }
 
@@ -163,6 +167,25 @@ impl<'a> Checker<'a> {
 
     pub(crate) fn lookup(&self, sym: Symbol) -> Option<Def> {
         self.scopes.lookup(self.module, sym)
+    }
+
+    /// What `def`, found for a name, denotes as the compiler counts: the routine's
+    /// own data by its index from the routine's first parameter.
+    pub(crate) fn denotes(&self, def: Option<Def>) -> Denotes {
+        let mark = self.ctx.as_ref().map_or(usize::MAX, |ctx| ctx.data_mark);
+        match def {
+            Some(Def::Data(idx)) if idx as usize >= mark => Denotes::Local((idx as usize - mark) as u32),
+            Some(def) => Denotes::Decl(def),
+            None => Denotes::Nothing,
+        }
+    }
+
+    /// Records what name (or call) expression `id` denotes, when facts are recorded.
+    pub(crate) fn note_name(&mut self, id: ExprId, def: Option<Def>) {
+        if self.facts.recording {
+            let denotes = self.denotes(def);
+            self.facts.set_name(id, denotes);
+        }
     }
 
     pub(crate) fn data(&self, idx: u32) -> &DataInfo {

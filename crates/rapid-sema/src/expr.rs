@@ -64,10 +64,10 @@ impl Checker<'_> {
             ExprKind::Str => Ty::scalar(self.core.string),
             ExprKind::Bool(_) => Ty::scalar(self.core.bool_),
             ExprKind::Placeholder(_) | ExprKind::Error => Ty::ERROR,
-            ExprKind::Name(sym) => self.name_expr(sym, expr.span, expect),
+            ExprKind::Name(sym) => self.name_expr(id, sym, expr.span, expect),
             ExprKind::Index { base, indices } => self.index_expr(arena, base, indices, expr.span),
             ExprKind::Field { base, field } => self.field_expr(arena, base, field, expr.span),
-            ExprKind::Call { name, args } => self.call_expr(arena, name, args, expr.span),
+            ExprKind::Call { name, args } => self.call_expr(arena, id, name, args, expr.span),
             ExprKind::Unary { op, operand } => self.unary_expr(arena, op, operand, expr.span, expect),
             ExprKind::Binary { op, lhs, rhs } => self.binary_expr(arena, op, lhs, rhs, expr.span),
             ExprKind::Paren(inner) => self.expr(arena, inner, expect),
@@ -144,8 +144,10 @@ impl Checker<'_> {
         Ty::scalar(if wants_dnum { self.core.dnum } else { self.core.num })
     }
 
-    fn name_expr(&mut self, sym: rapid_syntax::Symbol, span: Span, expect: Option<Expect<'_>>) -> Ty {
-        match self.lookup(sym) {
+    fn name_expr(&mut self, id: ExprId, sym: rapid_syntax::Symbol, span: Span, expect: Option<Expect<'_>>) -> Ty {
+        let def = self.lookup(sym);
+        self.note_name(id, def);
+        match def {
             Some(Def::Data(data)) => {
                 let info = self.data(data);
                 Ty { ty: info.ty, rank: info.rank }

@@ -18,6 +18,7 @@ mod consteval;
 mod decls;
 mod diagnostic;
 mod expr;
+pub mod facts;
 mod memory;
 mod options;
 pub mod symbols;
@@ -32,6 +33,7 @@ use rapid_syntax::{cap_errors, for_each_body_item, parse_body, parse_outline, In
 
 pub use codes::{Code, Severity};
 pub use diagnostic::{Diagnostic, SourceInput};
+pub use facts::{Denotes, ItemFacts};
 
 use checker::{Checker, WellKnown};
 use collect::ModuleRef;
@@ -142,8 +144,8 @@ pub trait BodySink {
     /// indices of [`symbols::DeclOrigin::Module`]), in file `file`, starts.
     fn begin(&mut self, tables: Tables<'_>, file: usize, module: usize, item: usize, routine: &Routine);
     /// One top-level item (declaration, statement, handler keyword) of that body,
-    /// checked without error.
-    fn item(&mut self, tables: Tables<'_>, item: &BodyItem, arena: &Arena);
+    /// checked without error, with what the checker resolved in it.
+    fn item(&mut self, tables: Tables<'_>, item: &BodyItem, arena: &Arena, facts: &ItemFacts);
     /// The body ends; `clean` is false when an error was found in it (what the sink
     /// made of it is then to be dropped).
     fn end(&mut self, tables: Tables<'_>, clean: bool);
@@ -290,13 +292,17 @@ fn check_semantics<'a>(
                 sink.begin(ck.tables(), m.file, idx, item, routine);
             }
             let text = &files[m.file].text;
+            let streamed = sink.is_some();
             let errors = for_each_body_item(text, routine.body_span, pass.interner, |item, arena| {
+                // What the item resolves is recorded only for a sink that takes it.
+                ck.facts.recording = streamed && clean;
                 ck.body_item(item, arena);
                 clean = clean && !ck.errors_since(&mut seen);
                 if let Some(sink) = sink.as_deref_mut().filter(|_| clean) {
-                    sink.item(ck.tables(), item, arena);
+                    sink.item(ck.tables(), item, arena, &ck.facts);
                 }
             });
+            ck.facts.recording = false;
             clean = clean && errors.is_empty();
             pass.syntax_errors[m.file].extend(errors);
             ck.end_routine();

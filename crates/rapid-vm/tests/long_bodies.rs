@@ -101,7 +101,18 @@ fn outline_and_tree_compile_to_the_same_code() {
 /// once, by the checker) is the code compiled from the whole tree afterwards.
 #[test]
 fn streamed_and_tree_compile_to_the_same_code() {
-    let text = program(5);
+    streamed_and_tree_agree(5);
+}
+
+/// The same for a body the parser hands over in batches sharing one arena: what the
+/// checker resolved in one item is not taken for another's.
+#[test]
+fn a_long_streamed_body_compiles_to_the_code_of_its_tree() {
+    streamed_and_tree_agree(PIPELINE_THRESHOLD as usize / 14 + 1000);
+}
+
+fn streamed_and_tree_agree(lines: usize) {
+    let text = program(lines);
     let files = [SourceInput::from_text("t.mod", &text)];
     let builtins = rapid_vm::builtins::Builtins::core();
     let (_, catalogue) = rapid_sema::catalogue();

@@ -9,6 +9,15 @@ use rapid_syntax::{Span, Symbol};
 
 use super::expr::expected_dims;
 use super::{CompileError, LocalKind, Resolved, RoutineCompiler};
+
+/// Where a call is written, which is how the checker's facts name it.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum CallOf {
+    /// A function call, the expression `id`.
+    Expr(rapid_syntax::ast::ExprId),
+    /// A procedure call statement whose routine name starts at this byte.
+    Stmt(u32),
+}
 use crate::builtins::{self, Compiled};
 use crate::ir::{ArgOrigin, ArgSpec, CallSite, Callee, Instr, LateArg, LateArgKind};
 
@@ -28,16 +37,18 @@ pub(crate) static FAMILY: builtins::Family = builtins::Family {
 };
 
 impl RoutineCompiler<'_> {
-    /// A call of `name` with `args`; `in_expr` for function calls (the result is pushed).
+    /// A call of `name` with `args`, written as `of` says: a function call in an
+    /// expression pushes its result.
     pub(crate) fn call(
         &mut self,
         arena: &Arena,
         name: Symbol,
         args: ArgList,
         span: Span,
-        in_expr: bool,
+        of: CallOf,
     ) -> Result<(), CompileError> {
-        let Some(Resolved::Routine(idx)) = self.resolve(name) else {
+        let in_expr = matches!(of, CallOf::Expr(_));
+        let Some(Resolved::Routine(idx)) = self.callee(of, name) else {
             if in_expr {
                 // A function defined nowhere raises ERR_REFUNKFUN when the call is
                 // executed (its arguments are not evaluated).
@@ -93,8 +104,7 @@ impl RoutineCompiler<'_> {
                 }
             }
         };
-        let _ = in_expr;
-        let bound = bind_args(&info, arena.args(args), |id, param| self.arg_fits(arena, id, param));
+        let bound = self.bound_args(arena, &info, args);
         let mut specs = Vec::with_capacity(info.params.len());
         let mut n_pushed = 0u16;
         let takes_signals = info.flags.takes_signals;
@@ -121,6 +131,29 @@ impl RoutineCompiler<'_> {
         Ok(())
     }
 
+    /// What the routine name of a call denotes: what the checker found, when it
+    /// streamed the call, else the name looked up here.
+    pub(crate) fn callee(&self, of: CallOf, name: Symbol) -> Option<Resolved> {
+        let found = self.facts.and_then(|facts| match of {
+            CallOf::Expr(id) => facts.name(id),
+            CallOf::Stmt(name_start) => facts.procedure(name_start),
+        });
+        match found {
+            Some(denotes) => self.denoted(denotes),
+            None => self.resolve(name),
+        }
+    }
+
+    /// The argument each parameter of `info` gets from `args`: as the checker bound
+    /// them, when it streamed the call, else bound here by the same rule.
+    fn bound_args<'a>(&self, arena: &'a Arena, info: &RoutineInfo, args: ArgList) -> Vec<Option<&'a Arg>> {
+        let from_facts = self.facts.and_then(|facts| facts.bound(args, info.params.len()));
+        match from_facts {
+            Some(bound) => bound.into_iter().map(|arg| arg.and_then(|idx| arena.args.get(idx as usize))).collect(),
+            None => bind_args(info, arena.args(args), |id, param| self.arg_fits(arena, id, param)),
+        }
+    }
+
     /// A call of WaitRob (no arguments): the program waits for the robot to stand still.
     fn wait_for_robot(&mut self, span: Span) -> Result<(), CompileError> {
         let Some(id) = self.builtins.lookup("WaitRob") else { return Err(self.unsupported(span, "WaitUntil \\InPos")) };
@@ -144,7 +177,7 @@ impl RoutineCompiler<'_> {
         id: builtins::BuiltinId,
         args: ArgList,
     ) -> Result<(), CompileError> {
-        let bound = bind_args(info, arena.args(args), |id, param| self.arg_fits(arena, id, param));
+        let bound = self.bound_args(arena, info, args);
         let mut specs = Vec::with_capacity(info.params.len());
         let mut n_pushed = 0u16;
         for (idx, (param, arg)) in info.params.iter().zip(&bound).enumerate() {
@@ -195,7 +228,7 @@ impl RoutineCompiler<'_> {
                 _ => return ArgOrigin::None,
             }
         };
-        match self.resolve(sym) {
+        match self.name(id, sym) {
             Some(Resolved::Global(idx)) => match self.prog.datas.get(idx as usize) {
                 Some(data) => ArgOrigin::Data(data.display.as_str().into()),
                 None => ArgOrigin::None,
@@ -246,7 +279,7 @@ impl RoutineCompiler<'_> {
                 let ExprKind::Name(sym) = arena.expr(value).kind else {
                     return Err(self.unsupported(arg.span, "a conditional argument that is not a parameter name"));
                 };
-                return match self.resolve(sym) {
+                return match self.name(value, sym) {
                     Some(Resolved::Local(local)) if matches!(local.kind, LocalKind::Param { optional: true, .. }) => {
                         Ok(ArgSpec::Conditional { slot: local.slot, by_ref })
                     }
@@ -313,11 +346,11 @@ impl RoutineCompiler<'_> {
     /// `Present(p)`: whether optional parameter `p` was passed.
     fn present(&mut self, arena: &Arena, args: ArgList, span: Span) -> Result<(), CompileError> {
         let value = arena.args(args).first().and_then(|a| a.value);
-        let sym = value.and_then(|v| match arena.expr(v).kind {
-            ExprKind::Name(sym) => Some(sym),
+        let name = value.and_then(|v| match arena.expr(v).kind {
+            ExprKind::Name(sym) => Some((v, sym)),
             _ => None,
         });
-        match sym.and_then(|s| self.resolve(s)) {
+        match name.and_then(|(v, sym)| self.name(v, sym)) {
             Some(Resolved::Local(local)) => {
                 self.code.emit(Instr::Present(local.slot));
                 Ok(())
@@ -332,7 +365,7 @@ impl RoutineCompiler<'_> {
     /// execution goes on. `\Visualize` shows a message box while it waits
     /// (`builtins/io_visualize.rs`).
     fn wait_until(&mut self, arena: &Arena, info: &RoutineInfo, args: ArgList, span: Span) -> Result<(), CompileError> {
-        let bound = bind_args(info, arena.args(args), |id, param| self.arg_fits(arena, id, param));
+        let bound = self.bound_args(arena, info, args);
         let arg_of = |name: &str| {
             info.params
                 .iter()
@@ -526,7 +559,7 @@ impl RoutineCompiler<'_> {
     fn conditional_slot(&self, arena: &Arena, value: rapid_syntax::ast::ExprId) -> Result<u32, CompileError> {
         let expr = arena.expr(value);
         match expr.kind {
-            ExprKind::Name(sym) => match self.resolve(sym) {
+            ExprKind::Name(sym) => match self.name(value, sym) {
                 Some(Resolved::Local(local)) if matches!(local.kind, LocalKind::Param { optional: true, .. }) => {
                     Ok(local.slot)
                 }

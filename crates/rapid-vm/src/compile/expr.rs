@@ -47,7 +47,7 @@ impl RoutineCompiler<'_> {
                 let idx = self.code.constant(Value::Bool(b));
                 self.code.emit(Instr::Const(idx));
             }
-            ExprKind::Name(sym) => match self.resolve(sym) {
+            ExprKind::Name(sym) => match self.name(id, sym) {
                 Some(Resolved::Local(local)) => {
                     self.code.emit(Instr::LoadLocal(local.slot));
                 }
@@ -68,7 +68,7 @@ impl RoutineCompiler<'_> {
                 self.place(arena, id)?;
                 self.code.emit(Instr::LoadPlace);
             }
-            ExprKind::Call { name, args } => self.call(arena, name, args, expr.span, true)?,
+            ExprKind::Call { name, args } => self.call(arena, name, args, expr.span, super::call::CallOf::Expr(id))?,
             ExprKind::Unary { op, operand } => {
                 let start = self.mark();
                 self.expr(arena, operand, expect)?;
@@ -126,7 +126,7 @@ impl RoutineCompiler<'_> {
     fn leaf_operand(&mut self, arena: &Arena, id: ExprId, expect: Expected) -> Option<Operand> {
         let expr = *arena.expr(id);
         match expr.kind {
-            ExprKind::Name(sym) => match self.resolve(sym)? {
+            ExprKind::Name(sym) => match self.name(id, sym)? {
                 Resolved::Local(local) => Some(Operand::Local(local.slot)),
                 _ => None,
             },
@@ -260,7 +260,7 @@ impl RoutineCompiler<'_> {
     /// An array named directly (`a` in `a{i}`): (global?, slot).
     pub(crate) fn elem_root(&self, arena: &Arena, base: ExprId) -> Option<(bool, u32)> {
         match arena.expr(base).kind {
-            ExprKind::Name(sym) => match self.resolve(sym)? {
+            ExprKind::Name(sym) => match self.name(base, sym)? {
                 Resolved::Local(local) => Some((false, local.slot)),
                 Resolved::Global(idx) => Some((true, idx)),
                 _ => None,
@@ -273,7 +273,7 @@ impl RoutineCompiler<'_> {
     pub(crate) fn place(&mut self, arena: &Arena, id: ExprId) -> Result<(), CompileError> {
         let expr = *arena.expr(id);
         match expr.kind {
-            ExprKind::Name(sym) => match self.resolve(sym) {
+            ExprKind::Name(sym) => match self.name(id, sym) {
                 Some(Resolved::Local(local)) => {
                     self.code.emit(Instr::PlaceLocal(local.slot));
                 }
@@ -314,7 +314,7 @@ impl RoutineCompiler<'_> {
     pub(crate) fn static_type(&self, arena: &Arena, id: ExprId) -> Expected {
         let expr = arena.expr(id);
         match expr.kind {
-            ExprKind::Name(sym) => match self.resolve(sym)? {
+            ExprKind::Name(sym) => match self.name(id, sym)? {
                 Resolved::Local(local) => Some((local.ty, expected_dims(local.rank, local.dims))),
                 Resolved::Global(idx) => {
                     let data = &self.prog.datas[idx as usize];
@@ -348,7 +348,7 @@ impl RoutineCompiler<'_> {
                     l.or(r)
                 }
             }
-            ExprKind::Call { name, .. } => match self.resolve(name)? {
+            ExprKind::Call { name, .. } => match self.callee(super::call::CallOf::Expr(id), name)? {
                 Resolved::Routine(idx) => self.prog.routines[idx as usize].ret.map(|t| (t, [0; 3])),
                 _ => None,
             },

@@ -15,7 +15,7 @@ pub use stream::{StreamCompiler, Streamed};
 
 use rapid_sema::symbols::{DataKind, DeclOrigin, Def};
 use rapid_sema::types::{Atomic, TypeId, TypeKind, Types};
-use rapid_sema::{Program, Tables};
+use rapid_sema::{ItemFacts, Program, Tables};
 use rapid_syntax::ast::{Arena, DataDecl, Item, Module, ParamMode, Routine, Section};
 use rapid_syntax::{Interner, Span, Symbol};
 use rustc_hash::FxHashMap;
@@ -318,6 +318,11 @@ pub(crate) struct RoutineCompiler<'p> {
     pub(crate) text: &'p str,
     pub(crate) code: Code,
     pub(crate) locals: FxHashMap<Symbol, Local>,
+    /// The routine's own data (parameters, data declarations, FOR variables) in the
+    /// order they are declared: the checker's numbering (`rapid_sema::Denotes::Local`).
+    pub(crate) own_data: Vec<Local>,
+    /// What the checker resolved in the body item being compiled, when it streams it.
+    pub(crate) facts: Option<&'p ItemFacts>,
     pub(crate) loop_vars: Vec<(Symbol, Local)>,
     pub(crate) labels: FxHashMap<Symbol, u32>,
     pub(crate) gotos: Vec<(u32, Symbol, Span)>,
@@ -369,6 +374,8 @@ impl<'p> RoutineCompiler<'p> {
             text,
             code: Code { file, ..Code::default() },
             locals: FxHashMap::default(),
+            own_data: Vec::new(),
+            facts: None,
             loop_vars: Vec::new(),
             loops: Vec::new(),
             signal_as_data: false,
@@ -431,6 +438,26 @@ impl<'p> RoutineCompiler<'p> {
         }
     }
 
+    /// What name expression `id`, spelled `sym`, denotes: what the checker found,
+    /// when it streamed the item, else the name looked up here.
+    pub(crate) fn name(&self, id: rapid_syntax::ast::ExprId, sym: Symbol) -> Option<Resolved> {
+        match self.facts.and_then(|facts| facts.name(id)) {
+            Some(denotes) => self.denoted(denotes),
+            None => self.resolve(sym),
+        }
+    }
+
+    /// What the checker's `denotes` is here.
+    pub(crate) fn denoted(&self, denotes: rapid_sema::Denotes) -> Option<Resolved> {
+        match denotes {
+            rapid_sema::Denotes::Nothing => None,
+            rapid_sema::Denotes::Local(n) => self.own_data.get(n as usize).map(|local| Resolved::Local(*local)),
+            rapid_sema::Denotes::Decl(Def::Data(idx)) => Some(Resolved::Global(idx)),
+            rapid_sema::Denotes::Decl(Def::Routine(idx)) => Some(Resolved::Routine(idx)),
+            rapid_sema::Denotes::Decl(Def::Type(ty)) => Some(Resolved::Type(ty)),
+        }
+    }
+
     pub(crate) fn declare_params(&mut self, routine: &Routine) {
         for param in routine.params.iter().filter(|p| p.placeholder.is_none()) {
             let ty = match self.resolve(param.ty.sym) {
@@ -440,6 +467,7 @@ impl<'p> RoutineCompiler<'p> {
             let kind = LocalKind::Param { mode: param.mode, optional: param.optional };
             let local = self.new_local(ty, [0; 3], param.rank, kind);
             self.locals.insert(param.name.sym, local);
+            self.own_data.push(local);
             self.code.local_names.push((param.name.span.text(self.text).to_owned(), local.slot));
             let by_ref = param.mode != ParamMode::In;
             self.code.param_by_ref.push(by_ref);
@@ -469,6 +497,7 @@ impl<'p> RoutineCompiler<'p> {
         }
         let local = self.new_local(ty, dims, rank, LocalKind::Data);
         self.locals.insert(decl.name.sym, local);
+        self.own_data.push(local);
         self.code.local_names.push((decl.name.span.text(self.text).to_owned(), local.slot));
         if decl.storage == rapid_syntax::ast::Storage::Const {
             self.code.const_locals.push(local.slot);
@@ -484,7 +513,7 @@ impl<'p> RoutineCompiler<'p> {
         let expr = arena.expr(dim);
         let value = match expr.kind {
             rapid_syntax::ast::ExprKind::Num => rapid_syntax::literal::num_value(expr.span.text(self.text)),
-            rapid_syntax::ast::ExprKind::Name(sym) => match self.resolve(sym) {
+            rapid_syntax::ast::ExprKind::Name(sym) => match self.name(dim, sym) {
                 Some(Resolved::Global(idx)) => self.prog.datas[idx as usize].const_value,
                 _ => None,
             },
@@ -502,7 +531,7 @@ impl<'p> RoutineCompiler<'p> {
             rapid_syntax::ast::ExprKind::Num => {
                 rapid_syntax::literal::num_value(expr.span.text(self.text)).map(|v| v as i32)
             }
-            rapid_syntax::ast::ExprKind::Name(sym) => match self.resolve(sym) {
+            rapid_syntax::ast::ExprKind::Name(sym) => match self.name(id, sym) {
                 Some(Resolved::Global(idx)) => {
                     let data = &self.prog.datas[idx as usize];
                     if data.kind == DataKind::Const {

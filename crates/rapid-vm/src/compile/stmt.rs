@@ -4,6 +4,7 @@
 
 use rapid_syntax::ast::{Arena, ExprKind, Section, Stmt, StmtKind};
 
+use super::call::CallOf;
 use super::{CompileError, LocalKind, Resolved, RoutineCompiler};
 use crate::ir::{CallSite, Callee, Instr, StmtRange};
 
@@ -20,7 +21,7 @@ impl RoutineCompiler<'_> {
         let range_idx = self.code.stmts.len();
         let start = self.code.here();
         let calls = match &stmt.kind {
-            StmtKind::Call { name, .. } => match self.resolve(name.sym) {
+            StmtKind::Call { name, .. } => match self.callee(CallOf::Stmt(name.span.start), name.sym) {
                 Some(Resolved::Routine(idx)) if self.prog.routines[idx as usize].chapter.is_none() => Some(idx),
                 _ => None,
             },
@@ -38,7 +39,9 @@ impl RoutineCompiler<'_> {
     fn stmt_kind(&mut self, arena: &Arena, stmt: &Stmt, errors: &mut Vec<CompileError>) -> Result<(), CompileError> {
         match &stmt.kind {
             StmtKind::Assign { target, value } => self.assign(arena, *target, *value)?,
-            StmtKind::Call { name, args } => self.call(arena, name.sym, *args, stmt.span, false)?,
+            StmtKind::Call { name, args } => {
+                self.call(arena, name.sym, *args, stmt.span, CallOf::Stmt(name.span.start))?
+            }
             StmtKind::LateCall { callee, args } => {
                 self.expr(arena, *callee, None)?;
                 let site = CallSite { callee: Callee::Late, args: Vec::new(), n_pushed: 0, late_args: Vec::new() };
@@ -95,6 +98,7 @@ impl RoutineCompiler<'_> {
                 self.code.emit(Instr::ForInit { var: local.slot, has_step: step.is_some() });
                 let check = self.code.emit(Instr::ForCheck { var: local.slot, exit: 0 });
                 self.loop_vars.push((var.sym, local));
+                self.own_data.push(local);
                 self.loops.push(super::LoopJumps::default());
                 self.stmt_list(arena, body, errors);
                 self.loop_vars.pop();
@@ -256,7 +260,7 @@ impl RoutineCompiler<'_> {
     ) -> Result<(), CompileError> {
         let expect = self.static_type(arena, target);
         match arena.expr(target).kind {
-            ExprKind::Name(sym) => match self.resolve(sym) {
+            ExprKind::Name(sym) => match self.name(target, sym) {
                 Some(Resolved::Local(local)) => {
                     self.expr(arena, value, expect)?;
                     self.code.emit(Instr::StoreLocal(local.slot));

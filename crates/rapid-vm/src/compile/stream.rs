@@ -5,7 +5,7 @@
 //! The checker lends its tables for one call at a time, so the routine being compiled
 //! is kept between items as its own state, without the tables ([`Suspended`]).
 
-use rapid_sema::{BodySink, SourceInput, Tables};
+use rapid_sema::{BodySink, ItemFacts, SourceInput, Tables};
 use rapid_syntax::ast::{Arena, BodyItem, Routine};
 use rustc_hash::FxHashMap;
 
@@ -66,15 +66,17 @@ impl<'a> StreamCompiler<'a> {
     }
 
     /// Runs `f` on the routine being compiled, lent the checker's tables for the call.
-    fn with_current<T>(
+    fn with_current<'t, T>(
         &mut self,
-        tables: Tables<'_>,
+        tables: Tables<'t>,
+        facts: Option<&'t ItemFacts>,
         f: impl FnOnce(&mut RoutineCompiler<'_>, &mut Vec<CompileError>) -> T,
     ) -> Option<T> {
         let current = self.current.as_mut()?;
         let text = &self.files.get(current.file)?.text;
         let state = current.state.take()?;
         let mut rc = state.resume(tables, self.builtins, current.module, current.file, text);
+        rc.facts = facts;
         let res = f(&mut rc, &mut current.errors);
         current.state = Some(Suspended::from(rc));
         Some(res)
@@ -100,12 +102,12 @@ impl BodySink for StreamCompiler<'_> {
         self.current = Some(Current { idx, module, file, state, errors: Vec::new() });
     }
 
-    fn item(&mut self, tables: Tables<'_>, item: &BodyItem, arena: &Arena) {
-        self.with_current(tables, |rc, errors| rc.body_item(item, arena, errors));
+    fn item(&mut self, tables: Tables<'_>, item: &BodyItem, arena: &Arena, facts: &ItemFacts) {
+        self.with_current(tables, Some(facts), |rc, errors| rc.body_item(item, arena, errors));
     }
 
     fn end(&mut self, tables: Tables<'_>, clean: bool) {
-        let compiled = self.with_current(tables, |rc, errors| rc.finish_routine(std::mem::take(errors)));
+        let compiled = self.with_current(tables, None, |rc, errors| rc.finish_routine(std::mem::take(errors)));
         let Some(current) = self.current.take() else { return };
         if let (Some(compiled), true) = (compiled, clean) {
             self.done.routines.insert(current.idx, compiled);
@@ -117,6 +119,7 @@ impl BodySink for StreamCompiler<'_> {
 struct Suspended {
     code: Code,
     locals: FxHashMap<rapid_syntax::Symbol, super::Local>,
+    own_data: Vec<super::Local>,
     loop_vars: Vec<(rapid_syntax::Symbol, super::Local)>,
     labels: FxHashMap<rapid_syntax::Symbol, u32>,
     gotos: Vec<(u32, rapid_syntax::Symbol, rapid_syntax::Span)>,
@@ -137,6 +140,7 @@ impl From<RoutineCompiler<'_>> for Suspended {
         Suspended {
             code: rc.code,
             locals: rc.locals,
+            own_data: rc.own_data,
             loop_vars: rc.loop_vars,
             labels: rc.labels,
             gotos: rc.gotos,
@@ -171,6 +175,8 @@ impl Suspended {
             text,
             code: self.code,
             locals: self.locals,
+            own_data: self.own_data,
+            facts: None,
             loop_vars: self.loop_vars,
             labels: self.labels,
             gotos: self.gotos,

@@ -1,0 +1,121 @@
+//! What the checker resolved in one top-level body item, for the compiler: the
+//! declaration each name and call denotes and the parameter each argument was bound
+//! to. Kept by index into the item's arena and cleared with it, so it costs memory
+//! per item, never per program; a [`crate::BodySink`] reads it beside the arena.
+
+use rapid_syntax::ast::{ArgList, ExprId};
+
+use crate::symbols::Def;
+
+/// What a name (or the routine name of a call) denotes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Denotes {
+    /// Nothing: an undefined function or procedure (a late error at run time).
+    Nothing,
+    /// A declaration of the task's tables: built-in or module-level data, a routine,
+    /// a type.
+    Decl(Def),
+    /// The routine's own data: its parameters (placeholders left out), then its data
+    /// declarations and FOR variables, numbered from 0 in the order they are declared.
+    Local(u32),
+}
+
+/// An argument the checker saw but bound to no parameter.
+const UNBOUND: u32 = u32::MAX;
+/// An argument the checker did not see (its facts are not known).
+const UNSEEN: u32 = u32::MAX - 1;
+
+/// The facts of one body item (see the module doc).
+#[derive(Debug, Default)]
+pub struct ItemFacts {
+    /// Whether facts are recorded (only when a sink takes them).
+    pub(crate) recording: bool,
+    /// By `ExprId`: what each `Name` and `Call` expression denotes.
+    names: Vec<Option<Denotes>>,
+    /// By index into the arena's arguments: the parameter each was bound to.
+    params: Vec<u32>,
+    /// Procedure calls (statements) by the start of their name: the routine called.
+    procedures: Vec<(u32, Denotes)>,
+    /// The entries of `names` and `params` written for the item, reset when the next
+    /// one starts. Items of a long body share one arena (the parser hands them over
+    /// in batches), so resetting the whole table per item would cost the batch's size.
+    written_names: Vec<u32>,
+    written_params: Vec<u32>,
+}
+
+impl ItemFacts {
+    /// What `Name` or `Call` expression `id` denotes, when the checker resolved it.
+    pub fn name(&self, id: ExprId) -> Option<Denotes> {
+        self.names.get(id.0 as usize).copied().flatten()
+    }
+
+    /// What the procedure call whose name starts at byte `name_start` calls, when the
+    /// checker resolved it.
+    pub fn procedure(&self, name_start: u32) -> Option<Denotes> {
+        let at = self.procedures.binary_search_by_key(&name_start, |&(start, _)| start).ok()?;
+        Some(self.procedures[at].1)
+    }
+
+    /// The parameter each of `n_params` parameters gets from `args` (by index into
+    /// the arena's arguments; the last one bound to a parameter wins, as
+    /// `bind::bind_args` says), when the checker bound every argument of the call.
+    pub fn bound(&self, args: ArgList, n_params: usize) -> Option<Vec<Option<u32>>> {
+        let mut bound = vec![None; n_params];
+        for arg in args.start..args.start + args.len {
+            match *self.params.get(arg as usize)? {
+                UNSEEN => return None,
+                UNBOUND => {}
+                param => *bound.get_mut(param as usize)? = Some(arg),
+            }
+        }
+        Some(bound)
+    }
+
+    /// Starts the facts of an item whose arena holds `n_exprs` expressions and
+    /// `n_args` arguments.
+    pub(crate) fn start(&mut self, n_exprs: usize, n_args: usize) {
+        for idx in self.written_names.drain(..) {
+            self.names[idx as usize] = None;
+        }
+        for idx in self.written_params.drain(..) {
+            self.params[idx as usize] = UNSEEN;
+        }
+        self.procedures.clear();
+        if self.recording {
+            if self.names.len() < n_exprs {
+                self.names.resize(n_exprs, None);
+            }
+            if self.params.len() < n_args {
+                self.params.resize(n_args, UNSEEN);
+            }
+        }
+    }
+
+    pub(crate) fn set_name(&mut self, id: ExprId, denotes: Denotes) {
+        if let Some(slot) = self.names.get_mut(id.0 as usize) {
+            *slot = Some(denotes);
+            self.written_names.push(id.0);
+        }
+    }
+
+    /// Argument `arg` (an index into the arena's arguments) stands for parameter
+    /// `param`, or for none.
+    pub(crate) fn set_param(&mut self, arg: usize, param: Option<usize>) {
+        if let Some(slot) = self.params.get_mut(arg) {
+            *slot = param.map_or(UNBOUND, |p| p as u32);
+            self.written_params.push(arg as u32);
+        }
+    }
+
+    pub(crate) fn set_procedure(&mut self, name_start: u32, denotes: Denotes) {
+        if !self.recording {
+            return;
+        }
+        // Statements are checked in source order, so the list stays sorted; a
+        // statement checked twice keeps one entry.
+        match self.procedures.binary_search_by_key(&name_start, |&(start, _)| start) {
+            Ok(at) => self.procedures[at].1 = denotes,
+            Err(at) => self.procedures.insert(at, (name_start, denotes)),
+        }
+    }
+}
