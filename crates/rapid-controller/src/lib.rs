@@ -15,6 +15,8 @@
 //!   What tasks share lives here and is handed to the task that runs: the I/O system
 //!   and sync points (`rapid_vm::builtins::Shared`) and the global persistents
 //!   ([`pers::PersStore`]).
+//! - [`builtin_set`] is the set of built-ins every task runs with: the language's
+//!   and the extensions the controller installs (the robot).
 //! - [`ops`] holds the program operations (stop, start, motors, system signals).
 //!
 //! - [`host_std`] is the std world every task gets by default: the host's disk,
@@ -34,6 +36,7 @@ mod alone;
 pub mod api;
 pub mod assembly;
 pub mod boot;
+pub mod builtin_set;
 pub mod host_std;
 pub mod ops;
 pub mod pers;

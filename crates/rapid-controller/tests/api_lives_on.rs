@@ -24,11 +24,14 @@ ENDMODULE
 
 fn session(lives_on: bool) -> Session {
     let options = rapid_sema::Options::default();
-    let load =
-        |path: &str, text: &str| match rapid_vm::load_with(&[SourceInput::from_text(path, text)], "main", &options) {
-            Ok(loaded) => loaded,
-            Err(err) => panic!("{path} does not load: {err:?}"),
-        };
+    let load = |path: &str, text: &str| match rapid_controller::builtin_set::load_with(
+        &[SourceInput::from_text(path, text)],
+        "main",
+        &options,
+    ) {
+        Ok(loaded) => loaded,
+        Err(err) => panic!("{path} does not load: {err:?}"),
+    };
     let mut logger = TaskSpec::normal("LOGGER", false);
     logger.kind = TaskKind::SemiStatic;
     let tasks = vec![

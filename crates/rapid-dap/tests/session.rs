@@ -68,8 +68,9 @@ impl Launcher for Program {
         let options = rapid_sema::Options::default();
         let mut tasks = Vec::new();
         for (at, (name, path, text)) in self.0.iter().enumerate() {
-            let loaded = rapid_vm::load_with(&[SourceInput::from_text(*path, *text)], "main", &options)
-                .map_err(|e| format!("{path}: {e:?}"))?;
+            let loaded =
+                rapid_controller::builtin_set::load_with(&[SourceInput::from_text(*path, *text)], "main", &options)
+                    .map_err(|e| format!("{path}: {e:?}"))?;
             tasks.push((TaskSpec::normal(name, at == 0), loaded));
         }
         let controller = Controller::new(tasks, None).map_err(|e| format!("{e:?}"))?;

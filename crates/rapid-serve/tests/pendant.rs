@@ -50,7 +50,7 @@ fn boot(file: PathBuf) -> Result<Session, String> {
     let options = rapid_sema::Options { predefined, ..rapid_sema::Options::default() };
     let text = std::fs::read_to_string(&file).map_err(|e| e.to_string())?;
     let source = SourceInput::from_text(file.to_string_lossy(), text);
-    let loaded = rapid_vm::load_with(&[source], "main", &options).map_err(|e| format!("{e:?}"))?;
+    let loaded = rapid_controller::builtin_set::load_with(&[source], "main", &options).map_err(|e| format!("{e:?}"))?;
     let eio = rapid_config::eio::read(&rapid_config::parse(
         "EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n\n      -Name \"di1\" -SignalType \"DI\"\n",
     ));

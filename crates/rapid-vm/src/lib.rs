@@ -112,9 +112,11 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
 }
 
 /// [`load`] with checking options: the data the system configuration declares (the
-/// signals of a backup's `EIO.cfg`).
+/// signals of a backup's `EIO.cfg`). It loads with the language's built-ins alone
+/// ([`builtins::Builtins::core`]); a program that moves a robot loads through
+/// [`load_in`] with a set that has the robot's extension (the controller's).
 pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Result<Loaded, LoadError> {
-    load_in(files, entry, options, builtins::Builtins::standard())
+    load_in(files, entry, options, builtins::Builtins::core())
 }
 
 /// [`load_with`] for the set of built-ins `builtins` (the core's and an embedder's
@@ -217,8 +219,11 @@ pub fn load_in(
 /// Checks and compiles the task made of `files` without running anything (not even
 /// the data initialisers): its routines as the VM would run them, for listings
 /// (`rapid dump-ir`, `disas::list`).
-pub fn compile_files(files: &[SourceInput], options: &Options) -> Result<CompiledTask, LoadError> {
-    let builtins = builtins::Builtins::standard();
+pub fn compile_files(
+    files: &[SourceInput],
+    options: &Options,
+    builtins: std::sync::Arc<builtins::Builtins>,
+) -> Result<CompiledTask, LoadError> {
     let (mut prog, _, parses, streamed) = checked(files, options, &builtins)?;
     let modules = module_sources(files, &parses);
     let compiled = compile_modules(&mut prog, &modules, &builtins, streamed)?;

@@ -6,7 +6,12 @@
 //! needs the API.
 
 use rapid_sema::SourceInput;
-use rapid_vm::{load, Exit, RecordingHost};
+use rapid_vm::{Exit, RecordingHost};
+
+/// Loads with the robot's built-ins (GripLoad, the motion settings).
+fn load(files: &[SourceInput], entry: &str) -> Result<rapid_vm::Loaded, rapid_vm::LoadError> {
+    rapid_vm::load_in(files, entry, &rapid_sema::Options::default(), rapid_vm::builtins::Builtins::standard())
+}
 
 const PROGRAM: &str = r#"MODULE t
 PERS num runs := 0;

@@ -325,7 +325,8 @@ impl Scope<'_> {
                  data, do I/O or move the robot"
             )));
         }
-        let pure = rapid_vm::builtins::lookup(name).and_then(rapid_vm::builtins::pure_form).ok_or_else(|| {
+        let set = crate::builtin_set::standard();
+        let pure = set.lookup(name).and_then(|id| set.pure_form(id)).ok_or_else(|| {
             ApiError::Refused(format!(
                 "`{name}` is not evaluated by the debugger: only built-in functions without side effects are"
             ))

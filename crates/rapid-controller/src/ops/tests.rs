@@ -20,7 +20,7 @@ fn with_signals(program: &str, inputs: &str) -> Controller {
         .map(|n| rapid_sema::PredefinedData { name: (*n).to_owned(), type_name: "signaldi".to_owned() })
         .collect();
     let options = rapid_sema::Options { predefined, ..rapid_sema::Options::default() };
-    let loaded = match rapid_vm::load_with(&files, "main", &options) {
+    let loaded = match crate::builtin_set::load_with(&files, "main", &options) {
         Ok(loaded) => loaded,
         Err(err) => panic!("the test program does not load: {err:?}"),
     };

@@ -64,7 +64,7 @@ fn spec(name: &str, motion: bool) -> TaskSpec {
 }
 
 fn load(path: &str, text: &str, options: &rapid_sema::Options) -> rapid_vm::Loaded {
-    match rapid_vm::load_with(&[SourceInput::from_text(path, text)], "main", options) {
+    match rapid_controller::builtin_set::load_with(&[SourceInput::from_text(path, text)], "main", options) {
         Ok(loaded) => loaded,
         Err(err) => panic!("{path} does not load: {err:?}"),
     }

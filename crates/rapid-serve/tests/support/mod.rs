@@ -58,8 +58,12 @@ pub(crate) fn boot_with(
         .map(|(n, ty, _)| rapid_sema::PredefinedData { name: (*n).to_owned(), type_name: (*ty).to_owned() })
         .collect();
     let options = rapid_sema::Options { predefined, ..rapid_sema::Options::default() };
-    let mut loaded = rapid_vm::load_with(&[SourceInput::from_text("T_ROB1/MainModule.mod", program)], "main", &options)
-        .map_err(|e| format!("{e:?}"))?;
+    let mut loaded = rapid_controller::builtin_set::load_with(
+        &[SourceInput::from_text("T_ROB1/MainModule.mod", program)],
+        "main",
+        &options,
+    )
+    .map_err(|e| format!("{e:?}"))?;
     loaded.vm.resources_mut().files.set_root(root);
     let config = config.into_iter().map(|(domain, text)| (domain, rapid_config::parse(&text))).collect();
     loaded.vm.resources_mut().cfgdata.set_config(Box::new(rapid_controller::boot::cfgdata::SysParams::new(config)));
