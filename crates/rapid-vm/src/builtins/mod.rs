@@ -42,7 +42,6 @@ mod symbols;
 pub use strings::{read_literal, value_literal};
 pub use symbols::same_type;
 pub mod symsearch;
-pub(crate) mod syncmove;
 mod sysinfo;
 mod system;
 pub mod tasking;
@@ -300,6 +299,28 @@ pub enum StopKind {
     Repeat,
     /// StartMoveRetry: RETRY from the ERROR handler the call is in.
     Retry,
+}
+
+/// Whether every extension stands still before a stop-point instruction goes on
+/// (WaitTime and WaitSyncTask with `\InPos`): `false` (the extension set a wait and
+/// a repeat) while the robot still moves.
+pub(crate) fn stands_still(ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
+    let set: &Builtins = ctx.builtins;
+    for hooks in set.hooks() {
+        if !hooks.stands_still(ctx)? {
+            return Ok(false);
+        }
+    }
+    Ok(true)
+}
+
+/// ExitCycle ends the cycle: every extension drops what it has under way.
+pub(crate) fn exit_cycle_hooks(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
+    let set: &Builtins = ctx.builtins;
+    for hooks in set.hooks() {
+        hooks.exit_cycle(ctx)?;
+    }
+    Ok(())
 }
 
 /// Present means passed: not absent.

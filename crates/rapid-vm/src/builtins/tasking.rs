@@ -85,24 +85,44 @@ pub enum Reply {
     Missing,
     Constant,
     WrongType,
-    /// The robot's axes, its active frames and external axes, and where its flange is
-    /// in its base frame with its configuration (by its own kinematics: the robots of a
-    /// system may be of different models).
-    Robot(rapid_motion::Joints, Box<OtherRobotState>),
+    /// What an extension answers for another task (where that task's robot is): the
+    /// core hands it over without looking inside.
+    Extension(ExtensionReply),
     /// The other task could not do it: the error to raise in the asking task.
     Failed(Box<crate::error::RapidError>),
 }
 
-/// Another task's robot as the controller reports it (with [`Reply::Robot`]'s axes).
+/// An extension's answer to a request another task made (an `Rc`, as the reply is
+/// cloned when it is read): only the extension that asked knows its type.
+#[derive(Clone)]
+pub struct ExtensionReply(pub std::rc::Rc<dyn std::any::Any>);
+
+impl std::fmt::Debug for ExtensionReply {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("ExtensionReply(..)")
+    }
+}
+
+/// A task in synchronized movement: its SyncMoveOn's sync point and task list (the
+/// robot's SyncMoveOn sets it; PP to Main ends it).
 #[derive(Debug, Clone, PartialEq)]
-pub struct OtherRobotState {
-    pub frames: rapid_motion::frames::FrameChain,
-    pub extax: [f64; 6],
-    /// `extax` as a robtarget reads it (CRobT): a 7-axis arm's eax_a is its arm angle,
-    /// not axis 7 (`motion::arm7`).
-    pub robtarget_extax: [f64; 6],
-    pub flange: rapid_motion::Pose,
-    pub conf: rapid_motion::confdata::ConfData,
+pub struct SyncMode {
+    pub point: String,
+    pub members: Vec<String>,
+    /// SyncMoveSuspend: on the StorePath level the task moves on its own until
+    /// SyncMoveResume.
+    pub suspended: bool,
+}
+
+/// The coordinated move the tasks of one synchronized group are meeting at (kept by
+/// the robot's move instructions, in the state the tasks share).
+#[derive(Debug, Clone, Default)]
+pub struct MoveMeet {
+    pub round: u64,
+    /// (task, `\ID`, the time its robot would need alone) of the moves given so far.
+    pub entries: Vec<(String, f64, f64)>,
+    /// The last round completed: its number and the common time, or why there is none.
+    pub last: Option<(u64, Result<f64, String>)>,
 }
 
 /// The multitasking state all tasks share.
@@ -125,12 +145,12 @@ pub struct SharedTasking {
     pub epoch: u64,
     /// The names of the tool, work object and payload each task activated, by task
     /// name in lower case (GetSysData \TaskName from another task); a task not listed
-    /// uses tool0, wobj0 and load0 (`controller::sysdata`).
+    /// uses tool0, wobj0 and load0 (`motion::sysdata`).
     pub sysdata: FxHashMap<String, [Option<std::rc::Rc<str>>; 3]>,
     /// The tasks in synchronized movement (SyncMoveOn … SyncMoveOff), by name.
     pub in_sync: Vec<String>,
     /// The coordinated moves under way, by the sync point of their SyncMoveOn.
-    pub(crate) move_meets: FxHashMap<String, super::syncmove::MoveMeet>,
+    pub move_meets: FxHashMap<String, MoveMeet>,
     /// The robot (`n` of ROB_n) each task moves, by task index, when the configuration
     /// numbers the robots (`MECHANICAL_UNIT_GROUP -Robot`); empty: the n-th task with a
     /// robot moves ROB_n. Kept beside `tasks` (not in [`TaskInfo`]) because the
@@ -254,9 +274,9 @@ pub struct TaskingState {
     /// The event routine running now (EventType: EVENT_POWERON 1 … EVENT_STEP 7; 0 none).
     pub event: u8,
     /// Synchronized movement (SyncMoveOn): its sync point and the tasks moving together.
-    pub sync_move: Option<super::syncmove::SyncMode>,
+    pub sync_move: Option<SyncMode>,
     /// The coordinated move this task waits at: the round of its meeting it joined.
-    pub(crate) move_round: Option<u64>,
+    pub move_round: Option<u64>,
 }
 
 impl TaskingState {
@@ -326,7 +346,7 @@ fn wait_sync_task(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let point = sync_point(ctx, at.sync_id)?;
     let list = task_list(ctx, &args[at.task_list])?;
     let timeout = ctx.opt_num(args.get(at.time_out))?;
-    if present(args.get(at.in_pos)) && !super::syncmove::robot_stands(ctx)? {
+    if present(args.get(at.in_pos)) && !super::stands_still(ctx)? {
         return Ok(None);
     }
     meet(

@@ -4,16 +4,17 @@
 
 use rapid_sema::symbols::Def;
 
-use super::super::syncmove;
+use super::{syncmove, sysdata};
 use super::{MotionLinks, RobotSide};
-use crate::builtins::Resources;
+use crate::builtins::{Ctx, Resources};
 use crate::embed::{Extension, PendingEvent, TaskHooks};
+use crate::error::RapidError;
 use crate::exec::storage::Storage;
 
 /// The robot's built-ins and hooks.
 pub static EXTENSION: Extension = Extension {
     name: "robot",
-    families: &[&syncmove::FAMILY, &super::FAMILY],
+    families: &[&syncmove::FAMILY, &sysdata::FAMILY, &super::FAMILY],
     hooks: Some(&RobotHooks),
     init: Some(|resources| resources.extensions.insert(super::RobotSide::default())),
 };
@@ -40,6 +41,14 @@ fn corner_failure(now: f64, at: Option<(usize, rapid_syntax::Span)>) -> PendingE
 }
 
 impl TaskHooks for RobotHooks {
+    fn stands_still(&self, ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
+        syncmove::robot_stands(ctx)
+    }
+
+    fn exit_cycle(&self, ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
+        super::abandon_paths(ctx)
+    }
+
     fn program_hold(&self, resources: &Resources) -> Option<f64> {
         resources.robot().program_hold()
     }

@@ -34,6 +34,8 @@ pub mod servo;
 mod settings;
 mod stepbwd;
 pub mod store;
+mod syncmove;
+pub mod sysdata;
 pub mod testsign;
 mod torque;
 mod track;
@@ -46,6 +48,7 @@ pub mod zones;
 pub use hooks::EXTENSION;
 pub(crate) use moves::{apply_due_events, motion_error};
 pub(crate) use pause::abandon_paths;
+pub use readback::robot_reply;
 pub(crate) use settings::set_payload;
 pub(crate) use tracking::stop_following_other_tasks;
 pub(crate) use trigg::{poll as poll_triggers, program_stopped};
@@ -215,7 +218,7 @@ pub struct MotionLinks {
     /// The record type `pose` (results of DefFrame and its kin).
     pub pose: Option<TypeId>,
     /// The globals of tool0, wobj0 and load0: the system data active at PP to Main
-    /// (see `controller::sysdata`).
+    /// (see `motion::sysdata`).
     pub sysdata: [Option<u32>; 3],
 }
 
@@ -381,8 +384,8 @@ pub struct MotionState {
     pub links: MotionLinks,
     pub settings: Settings,
     /// The active tool, work object and payload (GetSysData, SetSysData, GripLoad),
-    /// by `controller::sysdata` kind; `None` is the default tool0, wobj0, load0.
-    pub active: [Option<super::controller::sysdata::Active>; 3],
+    /// by `motion::sysdata` kind; `None` is the default tool0, wobj0, load0.
+    pub active: [Option<sysdata::Active>; 3],
     /// Servo tuning, soft servo, supervision, speed limits, test signals.
     pub servo: servo::ServoState,
 }

@@ -183,13 +183,13 @@ pub(super) fn go_with(
         }
     }
     // Synchronized movement: the moves of one `\ID` in all tasks take the same time.
-    match crate::builtins::syncmove::coordinate(ctx, args.get(layout.id), &request, &settings, external.as_ref())? {
-        crate::builtins::syncmove::Coordination::Alone => {}
-        crate::builtins::syncmove::Coordination::Wait => return Ok(None),
-        crate::builtins::syncmove::Coordination::Time(time) if time > 0.0 => settings.move_time = Some(time),
+    match super::syncmove::coordinate(ctx, args.get(layout.id), &request, &settings, external.as_ref())? {
+        super::syncmove::Coordination::Alone => {}
+        super::syncmove::Coordination::Wait => return Ok(None),
+        super::syncmove::Coordination::Time(time) if time > 0.0 => settings.move_time = Some(time),
         // Every robot of the group already stands at its target: no common time to
         // give (a zero \T is invalid), each move is the zero-length move it is alone.
-        crate::builtins::syncmove::Coordination::Time(_) => {}
+        super::syncmove::Coordination::Time(_) => {}
     }
     note_facts(ctx, &request, &chain);
     let now = ctx.time;
@@ -219,10 +219,10 @@ pub(super) fn go_with(
     }
     // The move's tool and work object become the active ones (CTool, CWObj, GetSysData).
     if let Some(tool) = args.get(layout.tool) {
-        crate::builtins::controller::sysdata::activate_arg(ctx, tool, layout.tool, 0);
+        super::sysdata::activate_arg(ctx, tool, layout.tool, 0);
     }
     if present(args.get(layout.wobj)) {
-        crate::builtins::controller::sysdata::activate_arg(ctx, &args[layout.wobj], layout.wobj, 1);
+        super::sysdata::activate_arg(ctx, &args[layout.wobj], layout.wobj, 1);
     }
     wait_for_robot(ctx, resume);
     Ok(None)

@@ -29,16 +29,52 @@ struct OtherRobot {
     tcp: bool,
 }
 
+/// Another task's robot as that task reports it to the controller (the payload of
+/// `Reply::Extension` answering `Request::Robot`): its axes, active frames and
+/// external axes, and where its flange is in its base frame with its configuration
+/// (by its own kinematics: the robots of a system may be of different models).
+#[derive(Debug, Clone, PartialEq)]
+struct RobotReport {
+    joints: rapid_motion::Joints,
+    frames: FrameChain,
+    extax: [f64; 6],
+    robtarget_extax: [f64; 6],
+    flange: rapid_motion::Pose,
+    conf: rapid_motion::confdata::ConfData,
+}
+
+/// The controller's reply to another task's `Request::Robot` about the robot of the
+/// task whose resources these are, at `time`.
+pub fn robot_reply(resources: &mut crate::builtins::Resources, time: f64) -> super::super::tasking::Reply {
+    let robot = resources.robot_mut();
+    // Its frames with its base where it stands in the world now (MOC.cfg's base
+    // frame, on a track where the track has it).
+    let mut frames = robot.active;
+    frames.base = robot.track_base_at(time);
+    let joints = robot.joints_at(time);
+    // As the robot's own CRobT reads it: a 7-axis arm's flange with axis 7 where it
+    // stands, its eax_a the arm angle.
+    let eax = robot.eax_at(time);
+    let (flange, conf) = robot.flange_at(&joints, eax.as_ref());
+    let extax = robot.extax_read(time);
+    let robtarget_extax = robot.robtarget_extax(&joints, eax.as_ref(), extax);
+    let report = RobotReport { joints, frames, extax, robtarget_extax, flange, conf };
+    super::super::tasking::Reply::Extension(super::super::tasking::ExtensionReply(std::rc::Rc::new(report)))
+}
+
 /// The robot a read-back is about: this task's (None), or another task's
 /// (`Some(None)`: wait for the reply).
 fn robot_of(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Option<OtherRobot>>, RapidError> {
     use super::super::tasking::{ask, other_task, Reply, Request};
     let Some(task) = other_task(ctx, args, 0)?.or_else(|| linked_motion_task(ctx)) else { return Ok(None) };
     Ok(Some(match ask(ctx, Request::Robot { task }) {
-        Some(Reply::Robot(joints, robot)) => {
+        Some(Reply::Extension(reply)) => {
+            let Some(robot) = reply.0.downcast_ref::<RobotReport>().cloned() else {
+                return Err(RapidError::fatal("the task has no robot"));
+            };
             let tcp = ctx.resources.tasking.shared.tasks.get(task).is_none_or(|t| t.robot);
             Some(OtherRobot {
-                joints,
+                joints: robot.joints,
                 frames: robot.frames,
                 extax: robot.extax,
                 robtarget_extax: robot.robtarget_extax,

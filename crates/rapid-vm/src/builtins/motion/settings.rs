@@ -132,7 +132,7 @@ fn load(ctx: &Ctx<'_>, value: &Value) -> Result<Load, RapidError> {
 // The load becomes the active payload (GetSysData).
 pub(crate) fn grip_load(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     set_payload(ctx, &ctx.value(&args[0])?)?;
-    super::super::controller::sysdata::activate_arg(ctx, &args[0], 0, super::super::controller::sysdata::LOAD);
+    super::sysdata::activate_arg(ctx, &args[0], 0, super::sysdata::LOAD);
     Ok(None)
 }
 

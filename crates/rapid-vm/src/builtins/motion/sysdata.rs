@@ -5,7 +5,7 @@
 //! The controller refers to the active object, it does not copy it: GetSysData reads
 //! the object's value at the time of the call, so a program that changes `tool1`
 //! after activating it gets the changed value. At PP to Main tool0, wobj0 and load0
-//! are active again ([`crate::builtins::motion::MotionState::reset`]).
+//! are active again ([`super::MotionState::reset`]).
 //!
 //! Each activation is also published, by name, in the state the tasks share, so
 //! GetSysData \TaskName in another task (or in a task without a robot, which reads
@@ -14,11 +14,22 @@
 
 use std::rc::Rc;
 
-use super::super::{argname, present, tasking, Ctx};
-use super::Res;
+use super::super::{argname, native, present, tasking, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Place, Root, Value};
+
+type Res = Result<Option<Value>, RapidError>;
+
+pub(super) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("GetSysData", get_sys_data),
+        native("SetSysData", set_sys_data),
+        native("CTool", c_tool),
+        native("CWObj", c_wobj),
+    ],
+};
 
 /// The kind of system data "payload": kinds are indices into `MotionState::active`,
 /// `MotionLinks::sysdata` and [`DEFAULT_NAMES`] (tool 0, work object 1, payload 2).
@@ -176,7 +187,7 @@ pub(crate) fn set_sys_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let kind = kind_of(ctx, &source).ok_or_else(|| not_sysdata(ctx, "SourceObject"))?;
     if !present(args.get(1)) {
         if kind == LOAD {
-            super::super::motion::set_payload(ctx, &source)?;
+            super::set_payload(ctx, &source)?;
         }
         activate_arg(ctx, &args[0], 0, kind);
         return Ok(None);
@@ -188,7 +199,7 @@ pub(crate) fn set_sys_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         return Err(ctx.error(Err::SymbolType, format!("`{name}` is not a {}", type_name(kind))));
     }
     if kind == LOAD {
-        super::super::motion::set_payload(ctx, &value)?;
+        super::set_payload(ctx, &value)?;
     }
     let place = Place { root: Root::Global(global), path: Vec::new() };
     activate(ctx, kind, name.into(), place);

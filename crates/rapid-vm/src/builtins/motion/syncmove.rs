@@ -9,8 +9,8 @@
 //! and take the same time, the time the slowest of them needs: each robot's move is
 //! given that time as if by `\T`.
 
-use super::tasking::{meet, sync_point, task_list};
-use super::{native, present, Ctx, Family, StopKind};
+use super::super::tasking::{meet, sync_point, task_list, SyncMode};
+use super::super::{native, present, Ctx, Family, StopKind};
 use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::{Record, Value};
@@ -22,26 +22,6 @@ type Res = Result<Option<Value>, RapidError>;
 /// How long a task waiting for the others' coordinated moves looks again when nothing
 /// else wakes it (the controller wakes it when one of them arrives).
 const IDLE_POLL: f64 = 3600.0;
-
-/// A task in synchronized movement: its SyncMoveOn's sync point and task list.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SyncMode {
-    pub point: String,
-    pub members: Vec<String>,
-    /// SyncMoveSuspend: on the StorePath level the task moves on its own until
-    /// SyncMoveResume.
-    pub suspended: bool,
-}
-
-/// The coordinated move the tasks of one synchronized group are meeting at.
-#[derive(Debug, Clone, Default)]
-pub(crate) struct MoveMeet {
-    round: u64,
-    /// (task, `\ID`, the time its robot would need alone) of the moves given so far.
-    entries: Vec<(String, f64, f64)>,
-    /// The last round completed: its number and the common time, or why there is none.
-    last: Option<(u64, Result<f64, String>)>,
-}
 
 /// What a move instruction does about synchronized movement.
 pub(crate) enum Coordination {
@@ -57,11 +37,11 @@ pub(crate) enum Coordination {
 /// wait) while it still moves.
 pub(crate) fn robot_stands(ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
     let end = ctx.resources.robot_mut().flush();
-    super::motion::apply_due_events(ctx)?;
+    super::apply_due_events(ctx)?;
     if end > ctx.time {
         // The instruction looks again when the robot stands, or earlier when an
         // interrupt may come (its trap runs meanwhile, §1.11).
-        let next = super::interrupts::next_due(ctx).map_or(end, |due| due.min(end));
+        let next = super::super::interrupts::next_due(ctx).map_or(end, |due| due.min(end));
         ctx.wait = Some((next - ctx.time).max(1e-6));
         ctx.stop = StopKind::Repeat;
         return Ok(false);
@@ -136,7 +116,7 @@ fn leave(ctx: &mut Ctx<'_>) {
     tasking.shared.epoch += 1;
     // The robot no longer follows another task's unit: it stands where it is when that
     // unit moves again.
-    super::motion::stop_following_other_tasks(ctx);
+    super::stop_following_other_tasks(ctx);
 }
 
 /// `IsSyncMoveOn()`: whether the task moves synchronized (not while suspended).
@@ -241,7 +221,7 @@ pub(crate) fn coordinate(
 
 /// Ends a round of coordinated moves once every executing task of the group gave its
 /// move: the common time is the longest; different IDs are an error for all.
-fn complete_if_all_given(tasking: &mut super::tasking::TaskingState, mode: &SyncMode) {
+fn complete_if_all_given(tasking: &mut super::super::tasking::TaskingState, mode: &SyncMode) {
     let shared = &mut tasking.shared;
     let executing = |name: &String| shared.tasks.iter().any(|t| t.name.eq_ignore_ascii_case(name) && t.executing);
     let members: Vec<&String> = mode.members.iter().filter(|m| executing(m)).collect();
@@ -279,11 +259,11 @@ fn time_alone(
     planner.set_settings(*settings);
     planner.set_eax(external.map(|ext| ext.from));
     let request = MoveRequest { zone: rapid_motion::plan::ZoneData::FINE, ..*request };
-    planner.push_with(&robot.kin, &request, external).map_err(super::motion::motion_error)?;
+    planner.push_with(&robot.kin, &request, external).map_err(super::motion_error)?;
     Ok(planner.flush().map_or(0.0, |m| m.zone_entry - m.start))
 }
 
-pub(super) static FAMILY: Family = Family {
+pub(crate) static FAMILY: Family = Family {
     file: file!(),
     builtins: &[
         native("SyncMoveOn", sync_move_on),
