@@ -13,7 +13,7 @@ use rapid_vm::{LoadError, Loaded};
 
 /// The extensions the controller installs, one a line, in registration order.
 static EXTENSIONS: &[&Extension] = &[
-    &rapid_vm::builtins::motion::EXTENSION, // the robot
+    &rapid_robot::EXTENSION, // the robot
 ];
 
 static STANDARD: LazyLock<Arc<Builtins>> = LazyLock::new(|| Arc::new(Builtins::new(EXTENSIONS)));

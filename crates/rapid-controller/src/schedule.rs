@@ -277,9 +277,7 @@ impl Controller {
         let reply = match request {
             Request::ReadData { task, name } => self.read_data(who, task, &name),
             Request::WriteData { task, name, value } => self.write_data(who, task, &name, &value),
-            Request::Robot { task } => {
-                rapid_vm::builtins::motion::robot_reply(self.tasks[task].loaded.vm.resources_mut(), self.time)
-            }
+            Request::Robot { task } => rapid_robot::robot_reply(self.tasks[task].loaded.vm.resources_mut(), self.time),
             Request::SaveModule { task, module, dest } => {
                 match self.tasks[task].loaded.vm.save_module_for_another_task(&module, dest) {
                     Ok(()) => Reply::Done,

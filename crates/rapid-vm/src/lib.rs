@@ -13,9 +13,14 @@
 //! calls) comes in through [`embed::Extension`] and a set of built-ins
 //! ([`builtins::Builtins`]) handed to [`load_in`]. The interpreter core (`compile`,
 //! `exec`, `ir`, `value`, `format`) must not know the robot: it asks it through
-//! [`embed::TaskHooks`] only. The robot's built-ins (`builtins::motion`, registered as
-//! `motion::EXTENSION`) still live in this crate until they move to a crate of their
-//! own (issue 19).
+//! [`embed::TaskHooks`] only. The robot is the crate rapid-robot (`rapid_robot::EXTENSION`);
+//! this crate knows none of its types and does not depend on rapid-motion. What an
+//! extension's families use of the core is public on purpose: [`builtins::Ctx`] and
+//! its argument readers (`arg_name`, `call_place`, `in_trap`, `instruction_here`),
+//! [`builtins::Family`] with `builtins::native`, the catalogue argument layouts
+//! ([`builtins::signature`], the `layout!` macro), and the multitasking, interrupt and
+//! I/O helpers of `builtins::tasking`, `builtins::interrupts`, `builtins::io` and
+//! `builtins::io_wait`.
 
 pub mod builtins;
 pub mod compile;

@@ -240,7 +240,7 @@ impl InterruptState {
 
 /// When the next interrupt may fire (a timer, or any signal change while signal
 /// interrupts are ordered); `None` when none can.
-pub(crate) fn next_due(ctx: &mut Ctx<'_>) -> Option<f64> {
+pub fn next_due(ctx: &mut Ctx<'_>) -> Option<f64> {
     let timer = ctx.resources.interrupts.next_timer();
     let signal = if ctx.resources.interrupts.watches_signals() { ctx.resources.io.next_event_time() } else { None };
     match (timer, signal) {
@@ -250,7 +250,7 @@ pub(crate) fn next_due(ctx: &mut Ctx<'_>) -> Option<f64> {
 }
 
 /// The connected interrupt an intnum argument names; ERR_UNKINO when none.
-pub(super) fn interrupt_number(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
+pub fn interrupt_number(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
     let number = ctx.num(arg)?;
     let n = number as u32;
     if number.fract() != 0.0 || number < 1.0 || ctx.resources.interrupts.get_mut(n).is_none() {

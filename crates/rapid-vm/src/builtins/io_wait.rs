@@ -147,7 +147,7 @@ fn wait(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, shown: &BoxArgs, com
 
 /// When the wait of the instruction being run began: the first try's time, kept across
 /// its repeats (per call depth and instruction); now on a first try.
-pub(crate) fn wait_started(ctx: &Ctx<'_>) -> f64 {
+pub fn wait_started(ctx: &Ctx<'_>) -> f64 {
     match ctx.resources.io.waiting {
         Some((depth, pc, at)) if (depth, pc) == wait_key(ctx) => at,
         _ => ctx.time,
@@ -157,7 +157,7 @@ pub(crate) fn wait_started(ctx: &Ctx<'_>) -> f64 {
 /// The instruction waits on from `started` and runs again at the next signal change
 /// the I/O system knows of, the next interrupt that may come, `also`, or `deadline`,
 /// whichever is first.
-pub(crate) fn wait_again(ctx: &mut Ctx<'_>, started: f64, deadline: Option<f64>, also: Option<f64>) {
+pub fn wait_again(ctx: &mut Ctx<'_>, started: f64, deadline: Option<f64>, also: Option<f64>) {
     let now = ctx.time;
     let (depth, pc) = wait_key(ctx);
     ctx.resources.io.waiting = Some((depth, pc, started));

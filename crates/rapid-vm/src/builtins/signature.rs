@@ -16,7 +16,7 @@ use rapid_syntax::ast::Item;
 use rustc_hash::FxHashMap;
 
 /// A parameter the signature does not have: `args.get(ABSENT)` is `None`.
-pub(crate) const ABSENT: usize = usize::MAX;
+pub const ABSENT: usize = usize::MAX;
 
 /// Every catalogue routine's parameter names, by lower-case routine name.
 static PARAMS: LazyLock<FxHashMap<String, Vec<String>>> = LazyLock::new(|| {
@@ -41,30 +41,30 @@ static PARAMS: LazyLock<FxHashMap<String, Vec<String>>> = LazyLock::new(|| {
 
 /// The declared parameters of one built-in.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Signature {
+pub struct Signature {
     params: &'static [String],
 }
 
 /// The signature of the catalogue routine `routine` (any letter case); empty when the
 /// catalogue has no such routine (a test of each layout catches a misspelt name).
-pub(crate) fn of(routine: &str) -> Signature {
+pub fn of(routine: &str) -> Signature {
     let params: &'static FxHashMap<String, Vec<String>> = &PARAMS;
     Signature { params: params.get(&routine.to_ascii_lowercase()).map_or(&[], Vec::as_slice) }
 }
 
 impl Signature {
     /// The position of parameter `name` (any letter case), or [`ABSENT`].
-    pub(crate) fn at(&self, name: &str) -> usize {
+    pub fn at(&self, name: &str) -> usize {
         self.params.iter().position(|p| p.eq_ignore_ascii_case(name)).unwrap_or(ABSENT)
     }
 
     /// The position of parameter `name`, if the signature has it.
-    pub(crate) fn opt(&self, name: &str) -> Option<usize> {
+    pub fn opt(&self, name: &str) -> Option<usize> {
         Some(self.at(name)).filter(|&at| at != ABSENT)
     }
 
     /// The position of the first of `names` the signature has, or [`ABSENT`].
-    pub(crate) fn first_of(&self, names: &[&str]) -> usize {
+    pub fn first_of(&self, names: &[&str]) -> usize {
         names.iter().map(|n| self.at(n)).find(|&at| at != ABSENT).unwrap_or(ABSENT)
     }
 
@@ -88,6 +88,7 @@ impl Signature {
 ///     }
 /// }
 /// ```
+#[macro_export]
 macro_rules! layout {
     ($(
         $(#[$doc:meta])*
@@ -124,7 +125,7 @@ macro_rules! layout {
         }
     )*};
 }
-pub(crate) use layout;
+pub use crate::layout;
 
 #[cfg(test)]
 mod tests {

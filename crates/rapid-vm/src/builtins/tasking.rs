@@ -311,7 +311,7 @@ impl TaskingState {
     }
 
     /// Its index in the task list.
-    pub(crate) fn index(&self) -> usize {
+    pub fn index(&self) -> usize {
         self.shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(self.name())).unwrap_or(0)
     }
 
@@ -360,7 +360,7 @@ fn wait_sync_task(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 }
 
 /// The name of the syncident argument at `index` (its identity across tasks).
-pub(crate) fn sync_point(ctx: &Ctx<'_>, index: usize) -> Result<String, RapidError> {
+pub fn sync_point(ctx: &Ctx<'_>, index: usize) -> Result<String, RapidError> {
     match super::argname::original_name(ctx.chain, index) {
         Some(point) => Ok(point.to_ascii_lowercase()),
         None => Err(ctx.error(Err::ArgValue, "the sync point must be a syncident variable")),
@@ -371,7 +371,7 @@ pub(crate) fn sync_point(ctx: &Ctx<'_>, index: usize) -> Result<String, RapidErr
 /// SyncMoveOff): `true` once every executing task of the list has arrived; `false`
 /// while the task waits (the instruction runs again). Past `timeout` seconds the
 /// error `on_timeout` names.
-pub(crate) fn meet(
+pub fn meet(
     ctx: &mut Ctx<'_>,
     point: &str,
     list: &[String],
@@ -437,7 +437,7 @@ fn complete_round_if_all_arrived(tasking: &mut TaskingState, point: &str, list: 
 }
 
 /// The task names of a `tasks` array (empty names are skipped).
-pub(crate) fn task_list(ctx: &Ctx<'_>, arg: &Value) -> Result<Vec<String>, RapidError> {
+pub fn task_list(ctx: &Ctx<'_>, arg: &Value) -> Result<Vec<String>, RapidError> {
     let Value::Array(array) = ctx.value(arg)? else {
         return Err(ctx.error(Err::ArgValue, "the task list must be an array of tasks"));
     };
@@ -504,7 +504,7 @@ fn get_task_name(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// The controller's reply to this task's request, or (first time) the request made:
 /// `None` means wait and look again (the instruction is re-run).
-pub(crate) fn ask(ctx: &mut Ctx<'_>, request: Request) -> Option<Reply> {
+pub fn ask(ctx: &mut Ctx<'_>, request: Request) -> Option<Reply> {
     let me = ctx.resources.tasking.index();
     let shared = &mut ctx.resources.tasking.shared;
     if let Some((who, _)) = &shared.reply {
@@ -525,7 +525,7 @@ pub(crate) fn ask(ctx: &mut Ctx<'_>, request: Request) -> Option<Reply> {
 /// The index of another task of the system a `taskid | string` pair names, or `None`
 /// for the task itself (or no such argument). ERR_TASKNAME for a name the system
 /// does not have.
-pub(crate) fn other_task(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<Option<usize>, RapidError> {
+pub fn other_task(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<Option<usize>, RapidError> {
     if !present(args.get(first)) && !present(args.get(first + 1)) {
         return Ok(None);
     }
@@ -538,7 +538,7 @@ pub(crate) fn other_task(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<
 }
 
 /// This task's entry in the system's task list.
-pub(crate) fn my_task<'c>(ctx: &'c Ctx<'_>) -> Option<&'c TaskInfo> {
+pub fn my_task<'c>(ctx: &'c Ctx<'_>) -> Option<&'c TaskInfo> {
     ctx.resources.tasking.shared.task(ctx.resources.tasking.name())
 }
 
@@ -555,7 +555,7 @@ fn task_run_mec(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 
 /// The task a `taskid | string` argument pair names: a taskid by its data name
 /// (`T_ROB2Id` is T_ROB2), a string as written.
-pub(crate) fn named_task(ctx: &Ctx<'_>, args: &[Value]) -> Result<TaskInfo, RapidError> {
+pub fn named_task(ctx: &Ctx<'_>, args: &[Value]) -> Result<TaskInfo, RapidError> {
     named_task_at(ctx, args, 0)
 }
 

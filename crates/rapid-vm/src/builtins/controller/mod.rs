@@ -12,7 +12,7 @@
 //! controller where only the operator turns the key or moves the override.
 
 mod units;
-pub(crate) use units::planner_no;
+pub use units::planner_no;
 
 use super::{native, present, Ctx, Family, StopKind};
 use crate::errnames::Err;
