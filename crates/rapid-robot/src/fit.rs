@@ -215,4 +215,27 @@ mod tests {
         assert!(rigid_fit(&line, &line).is_none());
         assert!(three_point_frame([line[0], line[1], line[2]], 1).is_none());
     }
+
+    #[test]
+    fn three_points_give_the_frame_they_span() {
+        // x from p1 towards p2 is the world's y; p3 lies on the world's -x side, so
+        // z = x × (p3 - p1) = (0, 1, 0) × (-10, 0, 0) = (0, 0, 10): up, and y = z × x =
+        // (-1, 0, 0). That is a quarter turn about z: q = [cos 45°, 0, 0, sin 45°].
+        let p = [Vector3::new(0.0, 0.0, 0.0), Vector3::new(0.0, 10.0, 0.0), Vector3::new(-10.0, 4.0, 0.0)];
+        let frame = three_point_frame(p, 1).expect("a frame");
+        let half = std::f64::consts::FRAC_1_SQRT_2;
+        let q = frame.rotation.into_inner();
+        assert!((q.w - half).abs() < 1e-12 && q.i.abs() < 1e-12 && q.j.abs() < 1e-12 && (q.k - half).abs() < 1e-12);
+        assert!(frame.translation.vector.norm() < 1e-12, "origin 1 is p1");
+        // Origin 2 is p2; origin 3 is where p3 projects on the x axis: 4 mm along it.
+        assert!((three_point_frame(p, 2).expect("a frame").translation.vector - p[1]).norm() < 1e-12);
+        let foot = three_point_frame(p, 3).expect("a frame").translation.vector;
+        assert!((foot - Vector3::new(0.0, 4.0, 0.0)).norm() < 1e-12);
+    }
+
+    #[test]
+    fn points_on_one_line_give_no_frame() {
+        let p = [Vector3::new(0.0, 0.0, 0.0), Vector3::new(10.0, 0.0, 0.0), Vector3::new(30.0, 0.0, 0.0)];
+        assert!(three_point_frame(p, 1).is_none());
+    }
 }

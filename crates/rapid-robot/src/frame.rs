@@ -151,3 +151,23 @@ pub(super) fn pose_value(ctx: &Ctx<'_>, frame: &Isometry3<f64>) -> Result<Value,
         Value::Record(Rc::new(Record { ty: ctx.types.orient, fields: vec![num(q.w), num(q.i), num(q.j), num(q.k)] }));
     Ok(Value::Record(Rc::new(Record { ty: pose_ty, fields: vec![pos, orient] })))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::from_matrix;
+    use nalgebra::Matrix3;
+
+    #[test]
+    fn a_rotation_matrix_gives_the_orient_pages_quaternion() {
+        // A quarter turn about x (y goes to z, z to -y) is [cos 45°, sin 45°, 0, 0]; the
+        // orient page's formula agrees: q1 = ½√(1 + 0 + 0 + 1) = √½, q2 = ½√(1 - 0 - 0 + 1).
+        let m = Matrix3::new(1.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, 1.0, 0.0);
+        let q = from_matrix(&m);
+        let half = std::f64::consts::FRAC_1_SQRT_2;
+        assert!((q.w - half).abs() < 1e-12 && (q.i - half).abs() < 1e-12 && q.j.abs() < 1e-12 && q.k.abs() < 1e-12);
+        // Of the two quaternions of a rotation, the one with q1 >= 0: the identity is
+        // [1, 0, 0, 0], not [-1, 0, 0, 0].
+        let one = from_matrix(&Matrix3::identity());
+        assert!((one.w - 1.0).abs() < 1e-12);
+    }
+}

@@ -338,3 +338,37 @@ pub(crate) fn wz_free(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     }
     Ok(None)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::braking_places;
+    use rapid_motion::plan::Sample;
+    use rapid_motion::Pose;
+
+    /// Samples 10 mm apart along x, all at `speed` mm/s.
+    fn straight(n: usize, speed: f64) -> Vec<Sample> {
+        (0..n)
+            .map(|i| {
+                let tcp = Pose::translation(10.0 * i as f64, 0.0, 0.0);
+                Sample { time: i as f64 * 0.1, joints: [0.0; 6], tcp, flange: tcp, tcp_speed: speed }
+            })
+            .collect()
+    }
+
+    #[test]
+    fn braking_reaches_as_far_as_v_squared_over_twice_the_deceleration() {
+        // 100 mm/s braking at 1000 mm/s²: 100² / 2000 = 5 mm, so from each sample the
+        // robot stands within the next one (10 mm on); the last stays where it is.
+        assert_eq!(braking_places(&straight(5, 100.0), 1000.0), [1, 2, 3, 4, 4]);
+        // 200 mm/s: 200² / 2000 = 20 mm, exactly two samples on.
+        assert_eq!(braking_places(&straight(5, 200.0), 1000.0), [2, 3, 4, 4, 4]);
+        // Standing still: it stops where it is.
+        assert_eq!(braking_places(&straight(3, 0.0), 1000.0), [0, 1, 2]);
+    }
+
+    #[test]
+    fn no_deceleration_given_brakes_at_once() {
+        // A deceleration that is no positive number is taken as an instant stop.
+        assert_eq!(braking_places(&straight(3, 500.0), 0.0), [0, 1, 2]);
+    }
+}
