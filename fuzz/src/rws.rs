@@ -69,8 +69,12 @@ fn session(root: std::path::PathBuf) -> Result<Session, String> {
         .map(|(n, ty, _)| rapid_sema::PredefinedData { name: (*n).to_owned(), type_name: (*ty).to_owned() })
         .collect();
     let options = rapid_sema::Options { predefined, ..rapid_sema::Options::default() };
-    let mut loaded = rapid_vm::load_with(&[SourceInput::from_text("T_ROB1/MainModule.mod", PROGRAM)], "main", &options)
-        .map_err(|e| format!("{e:?}"))?;
+    let mut loaded = rapid_controller::builtin_set::load_with(
+        &[SourceInput::from_text("T_ROB1/MainModule.mod", PROGRAM)],
+        "main",
+        &options,
+    )
+    .map_err(|e| format!("{e:?}"))?;
     loaded.vm.resources_mut().files.set_root(root);
     loaded.vm.resources_mut().sockets.set_offline(true);
     let eio: String =

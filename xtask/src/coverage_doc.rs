@@ -104,9 +104,9 @@ fn families_table(rows: &[Row]) -> String {
     }
     let mut out = String::from(
         "\n#### Run, by family\n\n\
-         The file of `crates/rapid-vm/src/` (or, for the controller's bindings, of `crates/`) that\n\
-         registers each built-in that runs (`compile/call.rs`: the compiler turns the call into\n\
-         instructions of its own).\n\n\
+         The file of `crates/rapid-vm/src/` that registers each built-in that runs (`compile/call.rs`:\n\
+         the compiler turns the call into instructions of its own), or of `crates/` for an extension's\n\
+         (`rapid-robot/src/`: the robot's; `rapid-controller/src/bindings/`: the controller's).\n\n\
          | family | instructions | functions |\n|---|---:|---:|\n",
     );
     for (file, [instructions, functions]) in by_file {

@@ -8,9 +8,10 @@
 
 use rapid_motion::plan::Sample;
 use rapid_motion::Pose;
+use rapid_robot::robot::{MoveFacts, RobotState};
+use rapid_robot::RobotResources;
 use rapid_sema::SourceInput;
 use rapid_syntax::LineIndex;
-use rapid_vm::builtins::motion::robot::{MoveFacts, RobotState};
 use rustc_hash::FxHashMap;
 
 use crate::args::RunArgs;
@@ -29,14 +30,14 @@ pub(crate) fn finish(
     let motion_end = resources.robot_mut().flush();
     // Outputs the last moves set as the robot passed their points (Move*DO …).
     for (time, action) in std::mem::take(&mut resources.robot_mut().due) {
-        let rapid_vm::builtins::motion::robot::Action::Set { signal, value } = action else { continue };
+        let rapid_robot::robot::Action::Set { signal, value } = action else { continue };
         resources.io.order_on_path(time.max(program_end), signal, value);
     }
     // The controller's clock has reached the end of the program and of the motion:
     // orders due by then (delayed sets, pulse ends, path events) have happened.
     resources.io.advance(program_end.max(motion_end));
     // The conveyors' whole input history, for the trace of a tracking robot.
-    rapid_vm::builtins::motion::robot_in(&mut resources.extensions).refresh_conveyors(resources.io.system.as_ref());
+    rapid_robot::robot_in(&mut resources.extensions).refresh_conveyors(resources.io.system.as_ref());
     let robot = resources.robot_mut();
     let cycle = program_end.max(motion_end).min(limit);
     if robot.moves == 0 {

@@ -11,7 +11,7 @@ use std::path::Path;
 use std::sync::mpsc;
 
 use rapid_motion::plan::PlannedMove;
-use rapid_vm::builtins::motion::robot::RobotState;
+use rapid_robot::robot::RobotState;
 
 use crate::motion_out::{FactsCursor, Point};
 

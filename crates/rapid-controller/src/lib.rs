@@ -15,6 +15,8 @@
 //!   What tasks share lives here and is handed to the task that runs: the I/O system
 //!   and sync points (`rapid_vm::builtins::Shared`) and the global persistents
 //!   ([`pers::PersStore`]).
+//! - [`builtin_set`] is the set of built-ins every task runs with: the language's
+//!   and the extensions the controller installs (the robot).
 //! - [`ops`] holds the program operations (stop, start, motors, system signals).
 //! - [`bindings`] holds the built-in families of the controller's side (files ...),
 //!   each an extension of the interpreter (`rapid_vm::embed::Extension`);

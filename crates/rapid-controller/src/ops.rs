@@ -14,6 +14,7 @@
 //! SEMISTATIC tasks are not stopped.
 
 use rapid_config::eio::{Eio, SysAction, SysStatus};
+use rapid_robot::RobotResources;
 use rapid_vm::builtins::controller::RunMode;
 use rapid_vm::Host;
 

@@ -19,6 +19,7 @@
 //! prompt (under `rapid run` a dialog without an answer raises ERR_TP_NO_CLIENT and does
 //! not wait), or a NORMAL task that is not waiting: the run can progress.
 
+use rapid_robot::RobotResources;
 use rapid_vm::value::Value;
 use rapid_vm::Vm;
 

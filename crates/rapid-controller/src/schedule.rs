@@ -272,28 +272,12 @@ impl Controller {
     /// Answers the request a task made of the controller (another task's data or
     /// robot), if one waits; the asking task is woken to read the reply.
     pub(crate) fn serve_request(&mut self, host: &mut dyn Host) {
-        use rapid_vm::builtins::tasking::{OtherRobotState, Reply, Request};
+        use rapid_vm::builtins::tasking::{Reply, Request};
         let Some((who, request)) = self.shared.tasking.request.take() else { return };
         let reply = match request {
             Request::ReadData { task, name } => self.read_data(who, task, &name),
             Request::WriteData { task, name, value } => self.write_data(who, task, &name, &value),
-            Request::Robot { task } => {
-                let time = self.time;
-                let robot = self.tasks[task].loaded.vm.resources_mut().robot_mut();
-                // Its frames with its base where it stands in the world now (MOC.cfg's
-                // base frame, on a track where the track has it).
-                let mut frames = robot.active;
-                frames.base = robot.track_base_at(time);
-                let joints = robot.joints_at(time);
-                // As the robot's own CRobT reads it: a 7-axis arm's flange with axis 7
-                // where it stands, its eax_a the arm angle.
-                let eax = robot.eax_at(time);
-                let (flange, conf) = robot.flange_at(&joints, eax.as_ref());
-                let extax = robot.extax_read(time);
-                let robtarget_extax = robot.robtarget_extax(&joints, eax.as_ref(), extax);
-                let state = OtherRobotState { frames, extax, robtarget_extax, flange, conf };
-                Reply::Robot(joints, Box::new(state))
-            }
+            Request::Robot { task } => rapid_robot::robot_reply(self.tasks[task].loaded.vm.resources_mut(), self.time),
             Request::SaveModule { task, module, dest } => {
                 match self.tasks[task].loaded.vm.save_module_for_another_task(&module, dest) {
                     Ok(()) => Reply::Done,

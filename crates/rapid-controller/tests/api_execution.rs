@@ -8,6 +8,7 @@ mod api_common;
 use api_common::{line_of, session, ROBOT};
 use rapid_controller::api::{ApiError, RunOutcome, Session, StartFrom, StepKind, Until};
 use rapid_controller::{ProgramState, StopKind};
+use rapid_robot::RobotResources;
 
 const FILE: &str = "T_ROB1/MainModule.mod";
 

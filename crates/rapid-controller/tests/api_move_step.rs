@@ -9,6 +9,7 @@ mod api_common;
 use api_common::{line_of, with_signals};
 use rapid_controller::api::{RunOutcome, Session, StepKind, Until};
 use rapid_controller::ProgramState;
+use rapid_robot::RobotResources;
 
 const PROGRAM: &str = "MODULE MainModule
   VAR num n := 0;

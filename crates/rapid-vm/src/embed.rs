@@ -14,7 +14,8 @@
 
 use std::any::{Any, TypeId};
 
-use crate::builtins::{Family, Resources};
+use crate::builtins::{Ctx, Family, Resources};
+use crate::error::RapidError;
 use crate::exec::storage::Storage;
 
 /// An embedder's addition to the language.
@@ -90,6 +91,18 @@ pub trait TaskHooks: Sync {
     /// A built-in is about to look at a path on the file devices (`Ctx::resolve_path`):
     /// what the task wrote but still holds in write buffers reaches the disk first.
     fn flush_files(&self, _resources: &mut Resources) {}
+    /// Whether the extension's side stands still before a stop-point instruction goes
+    /// on (WaitTime, WaitSyncTask `\InPos`): `false` after setting `ctx.wait` and
+    /// `StopKind::Repeat` while it still moves.
+    fn stands_still(&self, _ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
+        Ok(true)
+    }
+
+    /// ExitCycle ends the cycle: what the extension has under way stops and is
+    /// dropped (the robot's paths).
+    fn exit_cycle(&self, _ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
+        Ok(())
+    }
 
     /// The program was loaded: the extension learns the predefined data and types it
     /// works with (`find_data` gives a predefined data object's global index by name).

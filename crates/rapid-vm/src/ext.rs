@@ -4,7 +4,7 @@
 //! helpers from (issue 19: the controller's bindings moved out of the VM).
 //!
 //! Kept small on purpose: a family reads its arguments through [`Ctx`], finds them by
-//! parameter name ([`layout!`](crate::builtin_layout)), raises RAPID errors
+//! parameter name ([`layout!`](crate::layout)), raises RAPID errors
 //! (`Ctx::error`, with `crate::errnames::Err`), waits as
 //! the language's waiting instructions do, and keeps its own state in the task's
 //! extension slot (`Resources::extensions`). Anything else a family needs is added
@@ -12,12 +12,12 @@
 //!
 //! What this module must not know: any extension.
 
-pub use crate::builtin_layout as layout;
 pub use crate::builtins::interrupts::{interrupt_number, next_due, Source as InterruptSource};
 pub use crate::builtins::io_wait::{wait_again, wait_over, wait_started};
 pub use crate::builtins::pendant::value_text;
 pub use crate::builtins::signature::{of as signature, Signature};
 pub use crate::builtins::{native, present, read_literal, Ctx, Family, Resources, StopKind};
+pub use crate::layout;
 pub use crate::world::devices;
 
 /// Where the running call is: its call depth and the instruction in its routine. A

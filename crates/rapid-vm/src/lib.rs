@@ -14,9 +14,14 @@
 //! calls) comes in through [`embed::Extension`] and a set of built-ins
 //! ([`builtins::Builtins`]) handed to [`load_in`]. The interpreter core (`compile`,
 //! `exec`, `ir`, `value`, `format`) must not know the robot: it asks it through
-//! [`embed::TaskHooks`] only. The robot's built-ins (`builtins::motion`, registered as
-//! `motion::EXTENSION`) still live in this crate until they move to a crate of their
-//! own (issue 19).
+//! [`embed::TaskHooks`] only. The robot is the crate rapid-robot (`rapid_robot::EXTENSION`);
+//! this crate knows none of its types and does not depend on rapid-motion. What an
+//! extension's families use of the core is public on purpose: [`builtins::Ctx`] and
+//! its argument readers (`arg_name`, `call_place`, `in_trap`, `instruction_here`),
+//! [`builtins::Family`] with `builtins::native`, the catalogue argument layouts
+//! ([`builtins::signature`], the `layout!` macro), and the multitasking, interrupt and
+//! I/O helpers of `builtins::tasking`, `builtins::interrupts`, `builtins::io` and
+//! `builtins::io_wait`.
 
 pub mod builtins;
 pub mod compile;
@@ -114,9 +119,11 @@ pub fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
 }
 
 /// [`load`] with checking options: the data the system configuration declares (the
-/// signals of a backup's `EIO.cfg`).
+/// signals of a backup's `EIO.cfg`). It loads with the language's built-ins alone
+/// ([`builtins::Builtins::core`]); a program that moves a robot loads through
+/// [`load_in`] with a set that has the robot's extension (the controller's).
 pub fn load_with(files: &[SourceInput], entry: &str, options: &Options) -> Result<Loaded, LoadError> {
-    load_in(files, entry, options, builtins::Builtins::standard())
+    load_in(files, entry, options, builtins::Builtins::core())
 }
 
 /// [`load_with`] for the set of built-ins `builtins` (the core's and an embedder's
@@ -219,13 +226,7 @@ pub fn load_in(
 /// Checks and compiles the task made of `files` without running anything (not even
 /// the data initialisers): its routines as the VM would run them, for listings
 /// (`rapid dump-ir`, `disas::list`).
-pub fn compile_files(files: &[SourceInput], options: &Options) -> Result<CompiledTask, LoadError> {
-    compile_files_in(files, options, builtins::Builtins::standard())
-}
-
-/// [`compile_files`] with the set of built-ins `builtins` (an embedder's, with its
-/// extensions: `rapid_controller::builtin_set`).
-pub fn compile_files_in(
+pub fn compile_files(
     files: &[SourceInput],
     options: &Options,
     builtins: std::sync::Arc<builtins::Builtins>,

@@ -18,7 +18,11 @@ fn output(text: &str) -> Vec<String> {
 
 /// The compiled `main` of `text`.
 fn main_code(text: &str) -> Code {
-    let task = match compile_files(&[SourceInput::from_text("t.mod", text)], &Options::default()) {
+    let task = match compile_files(
+        &[SourceInput::from_text("t.mod", text)],
+        &Options::default(),
+        rapid_vm::builtins::Builtins::core(),
+    ) {
         Ok(task) => task,
         Err(err) => panic!("compile failed: {err:?}"),
     };

@@ -16,7 +16,7 @@ pub(crate) fn run(args: &DumpIrArgs) -> anyhow::Result<ExitStatus> {
         system_options: inputs.system_options.clone(),
         ..Options::default()
     };
-    let task = match rapid_vm::compile_files_in(&inputs.modules, &options, rapid_controller::builtin_set::standard()) {
+    let task = match rapid_vm::compile_files(&inputs.modules, &options, rapid_controller::builtin_set::standard()) {
         Ok(task) => task,
         Err(err) => return super::run::report_load_error(err, &inputs.modules),
     };

@@ -15,6 +15,7 @@
 // The CLI is the one crate that talks to the terminal; run reports on stderr.
 #![allow(clippy::print_stderr)]
 
+use rapid_robot::RobotResources;
 use std::io::{self, BufWriter};
 
 use rapid_controller::api::Session;

@@ -3,7 +3,7 @@
 //! the signal changes, serialised to JSON inside the page.
 
 use rapid_motion::plan::PlannedMove;
-use rapid_vm::builtins::motion::robot::{MoveFacts, RobotState};
+use rapid_robot::robot::{MoveFacts, RobotState};
 use serde::Serialize;
 
 use crate::motion_out::{FactsCursor, RunOutputs};
@@ -68,7 +68,7 @@ struct ExtAxisView {
 }
 
 /// The robot's external axes, in `eax_a` … `eax_f` order, with no points yet.
-fn ext_views(robot: &rapid_vm::builtins::motion::robot::RobotState) -> Vec<ExtAxisView> {
+fn ext_views(robot: &rapid_robot::robot::RobotState) -> Vec<ExtAxisView> {
     let mut views: Vec<ExtAxisView> = robot
         .external
         .units
@@ -193,7 +193,7 @@ fn series(out: &RunOutputs<'_>, ext: &mut [ExtAxisView]) -> Series {
 fn push_point(
     series: &mut Series,
     cursor: &mut FactsCursor<'_>,
-    robot: &rapid_vm::builtins::motion::robot::RobotState,
+    robot: &rapid_robot::robot::RobotState,
     planned: &PlannedMove,
     t: f64,
 ) {
@@ -219,12 +219,7 @@ fn push_point(
 
 /// The external axes at `t` on `planned` (their values and, by a central difference,
 /// their speeds); 0 when the move has no track of them.
-fn push_external(
-    ext: &mut [ExtAxisView],
-    robot: &rapid_vm::builtins::motion::robot::RobotState,
-    planned: &PlannedMove,
-    t: f64,
-) {
+fn push_external(ext: &mut [ExtAxisView], robot: &rapid_robot::robot::RobotState, planned: &PlannedMove, t: f64) {
     if ext.is_empty() {
         return;
     }
@@ -269,7 +264,7 @@ fn signals(io: Option<&rapid_io::IoSystem>) -> (Vec<SignalView>, usize) {
 #[cfg(test)]
 mod tests {
     use rapid_motion::plan::{MoveRequest, SpeedData, Target, ZoneData};
-    use rapid_vm::builtins::motion::robot::RobotState;
+    use rapid_robot::robot::RobotState;
 
     use super::{MAX_MOVES, MAX_POINTS};
     use crate::motion_out::RunOutputs;

@@ -106,9 +106,7 @@ fn the_default_root_is_beside_the_program() {
 fn a_vm_without_a_root_raises_an_error() {
     let text = writer("HOME:/a.txt").replace("IF ERRNO = ERR_FILEOPEN TPWrite \"ERR_FILEOPEN\";", "RAISE;");
     let input = rapid_sema::SourceInput { path: "w.mod".into(), text: text.into(), unreadable: None };
-    let mut loaded = rapid_controller::builtin_set::load_with(&[input], "main", &rapid_sema::Options::default())
-        .map_err(|e| format!("{e:?}"))
-        .unwrap();
+    let mut loaded = rapid_controller::builtin_set::load(&[input], "main").map_err(|e| format!("{e:?}")).unwrap();
     let mut host = rapid_vm::RecordingHost::default();
     match loaded.vm.run(&mut host, 1_000_000) {
         rapid_vm::Exit::Unhandled(unhandled) => {

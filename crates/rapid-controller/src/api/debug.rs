@@ -20,6 +20,7 @@
 // uncertain: a module loaded at run time (Load) after the breakpoint was set is not
 // searched for it; set the breakpoint again after the load.
 
+use rapid_robot::RobotResources;
 use rustc_hash::FxHashMap;
 
 use crate::schedule::Controller;

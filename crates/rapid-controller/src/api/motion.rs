@@ -13,6 +13,7 @@
 use rapid_motion::frames::FrameChain;
 use rapid_motion::pose::{orient, pose, trans};
 use rapid_motion::Pose;
+use rapid_robot::RobotResources;
 use rapid_vm::value::Value;
 
 use super::{ApiError, Session};

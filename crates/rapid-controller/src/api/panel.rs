@@ -5,6 +5,7 @@
 
 use super::{ApiError, Session};
 use crate::ProgramState;
+use rapid_robot::RobotResources;
 
 /// A robot (mechanical unit) as the motion system reports it now.
 #[derive(Debug, Clone, PartialEq)]

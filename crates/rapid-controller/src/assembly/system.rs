@@ -216,7 +216,7 @@ fn assemble_noting(
         // where its entry routine is named.
         let declared = tasks[0].inputs.sys.as_ref().and_then(|sys| sys.task(&task.spec.name));
         let entry_given = idx == 0 && options.entry.is_some();
-        let task_loaded = load_in(&task.inputs.modules, &entry, &load_options, crate::boot::builtins::builtins());
+        let task_loaded = load_in(&task.inputs.modules, &entry, &load_options, crate::builtin_set::standard());
         let mut program = match (task_loaded, declared, config) {
             (Ok(program), _, _) => program,
             // Not started for want of its configured entry: `rapid check`'s finding, at

@@ -1,11 +1,9 @@
 //! Assembling a running system from what the front end collected (`system::boot`):
-//! the built-ins its tasks run with (`builtins`),
 //! the tasks and their configuration, the I/O system (`io_config`), the robots of its motion tasks
 //! and their external units and conveyors (`motion`, `robots`, `moc_units`), the
 //! virtual signals of `--virtual-io` (`virtual_io`), from the configuration around the
 //! tasks (`cell`); each task's file devices and configuration data (`task`, `cfgdata`).
 
-pub mod builtins;
 pub mod cell;
 pub mod cfgdata;
 pub mod io_config;

@@ -2,7 +2,7 @@
 //! model, else the backup's MOC.cfg robot type, else the default), where each robot's
 //! base is, its axis ranges, the external units and conveyors of its task.
 
-use rapid_vm::builtins::motion::robot::RobotState;
+use rapid_robot::robot::RobotState;
 
 use super::cell::{Cell, TaskConveyor, TaskUnit};
 
@@ -211,7 +211,7 @@ pub fn configure_conveyors(
     task: Option<&str>,
     first_motion: bool,
 ) -> Result<(), String> {
-    use rapid_vm::builtins::motion::conveyor::{Conveyor, ConveyorConfig};
+    use rapid_robot::conveyor::{Conveyor, ConveyorConfig};
     let mine = conveyors.iter().filter(|c| belongs(c.task.as_deref(), task, first_motion));
     for c in mine {
         let signal = |name: &str, kind: rapid_io::SignalKind| -> Result<u32, String> {

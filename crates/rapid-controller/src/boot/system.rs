@@ -7,6 +7,7 @@
 
 use rapid_config::sys::{Sys, TaskType};
 use rapid_config::CfgFile;
+use rapid_robot::RobotResources;
 use rapid_sema::SourceInput;
 use rapid_vm::Loaded;
 
@@ -271,12 +272,12 @@ pub fn boot(
         let mut linked: Vec<_> = tasks
             .iter_mut()
             .filter(|(spec, _)| spec.motion)
-            .map(|(spec, program)| rapid_vm::builtins::motion::foreign::LinkedTask {
+            .map(|(spec, program)| rapid_robot::foreign::LinkedTask {
                 name: &spec.name,
                 robot: program.vm.resources_mut().robot_mut(),
             })
             .collect();
-        rapid_vm::builtins::motion::foreign::link(&mut linked);
+        rapid_robot::foreign::link(&mut linked);
     }
     let mut controller = Controller::new(tasks, io).map_err(BootError::Refused)?;
     controller.set_cycles(options.cycles);

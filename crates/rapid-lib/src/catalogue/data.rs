@@ -127,7 +127,7 @@ pub(crate) const ENTRIES: &[Entry] = &[
     data("PERS loaddata load0 := [0.001, [0, 0, 0.001], [1, 0, 0, 0], 0, 0, 0];", "Empty payload."),
     // ---- Motion system data ------------------------------------------------------------------
     // The values SYS_RESET sets at PP to Main (manual 1.7); rapid-vm's motion family keeps them
-    // in step with its state (builtins/motion/mod.rs, MotionState::default).
+    // in step with its state (rapid-robot/src/lib.rs, MotionState::default).
     // uncertain: vel.max is vmax.v_tcp on RW6 (5000 here, as vmax); conf.ax1/ax4/ax6 = 30/45/90 and
     // accmax/decelmax/worldaccmax = -1 are recalled from the manual's motsetdata page.
     read_only(

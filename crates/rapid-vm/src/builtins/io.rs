@@ -73,6 +73,11 @@ impl SharedIo {
 }
 
 impl IoState {
+    /// The waiting instruction under way is over (it ended or timed out).
+    pub fn end_wait(&mut self) {
+        self.waiting = None;
+    }
+
     /// When the waiting instruction under way (WaitDI …) began, if one is.
     pub fn wait_started(&self) -> Option<f64> {
         self.waiting.map(|(_, _, at)| at)
@@ -243,7 +248,7 @@ pub(crate) fn read_signal(resources: &mut Resources, time: f64, data: &Value) ->
 
 /// The signal id signal data (an argument) is connected to, checked to be reachable now:
 /// ERR_NO_ALIASIO_DEF when not connected, ERR_NORUNUNIT when its device is disabled.
-pub(super) fn signal(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
+pub fn signal(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
     let id = connected(ctx, arg)?;
     let fault = ctx.resources.io.system.as_ref().and_then(|io| io.read(id).err());
     match fault {
@@ -264,7 +269,7 @@ pub(super) fn connected(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidErro
 }
 
 /// Runs an order on the I/O system and turns its failure into the RAPID error.
-pub(super) fn order(ctx: &mut Ctx<'_>, run: impl FnOnce(&mut IoSystem, f64) -> Result<(), rapid_io::IoError>) -> Res {
+pub fn order(ctx: &mut Ctx<'_>, run: impl FnOnce(&mut IoSystem, f64) -> Result<(), rapid_io::IoError>) -> Res {
     let time = ctx.time;
     let Some(system) = ctx.resources.io.system.as_mut() else {
         return Err(ctx.error(Err::NoAliasIoDef, "this task has no I/O system"));
@@ -275,7 +280,7 @@ pub(super) fn order(ctx: &mut Ctx<'_>, run: impl FnOnce(&mut IoSystem, f64) -> R
     }
 }
 
-pub(super) fn io_error(ctx: &Ctx<'_>, fault: &rapid_io::IoError) -> RapidError {
+pub fn io_error(ctx: &Ctx<'_>, fault: &rapid_io::IoError) -> RapidError {
     let named = fault.rapid_error().and_then(|name| Err::ALL.iter().copied().find(|e| e.name() == name));
     match named {
         Some(err) => ctx.error(err, fault.to_string()),

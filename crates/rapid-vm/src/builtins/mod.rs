@@ -17,18 +17,17 @@ pub mod interrupts;
 pub mod io;
 mod io_units;
 pub(crate) mod io_visualize;
-pub(crate) mod io_wait;
+pub mod io_wait;
 mod math;
 mod matrix;
 pub mod modules;
-pub mod motion;
 mod not_yet;
 pub(crate) mod pendant;
 pub mod pure;
 mod random;
 mod rawbytes;
 mod registry;
-pub(crate) mod signature;
+pub mod signature;
 pub use registry::{compiled, native, out_of_step, Builtin, Builtins, Compiled, Family};
 pub mod rmq;
 pub mod spy;
@@ -39,7 +38,6 @@ mod symbols;
 pub use strings::{read_literal, value_literal};
 pub use symbols::same_type;
 pub mod symsearch;
-pub(crate) mod syncmove;
 mod sysinfo;
 mod system;
 pub mod tasking;
@@ -286,6 +284,46 @@ impl Ctx<'_> {
     pub fn pos_ty(&self) -> TypeId {
         self.types.pos
     }
+
+    /// The data object passed for parameter `param` of the built-in being called,
+    /// followed through the callers to the argument first passed for it (GripLoad's
+    /// payload, a syncident's name).
+    pub fn arg_name(&self, param: usize) -> Option<std::rc::Rc<str>> {
+        argname::original_name(self.chain, param)
+    }
+
+    /// Whether the call is made inside a TRAP routine (or something it called).
+    pub fn in_trap(&self) -> bool {
+        self.chain.iter().any(|f| f.is_trap())
+    }
+
+    /// Where the call is made: the depth of the call chain and the calling routine's
+    /// instruction index (a built-in that runs again, `StopKind::Repeat`, finds its
+    /// own earlier call by it).
+    pub fn call_place(&self) -> (usize, u32) {
+        (self.chain.len(), self.chain.last().map_or(0, |f| f.position().1))
+    }
+
+    /// The built-in the running routine is calling and its statement: (name, file,
+    /// span), as the event log places what a built-in logs.
+    pub fn instruction_here(&self) -> (&'static str, usize, rapid_syntax::Span) {
+        use crate::ir::{Callee, Instr};
+        let Some(frame) = self.chain.last() else { return ("", usize::MAX, rapid_syntax::Span::default()) };
+        let (code, pc) = frame.position();
+        // The innermost statement holding `pc` (as `Code::stmt_at`), found by halving:
+        // statements are in order of their start, and a generated module of 100,000
+        // moves in one routine must not cost a scan per move.
+        let upto = code.stmts.partition_point(|s| s.start <= pc);
+        let span = code.stmts[..upto].iter().rev().find(|s| pc < s.end).map_or(code.span, |s| s.span);
+        let name = match code.instrs.get(pc as usize) {
+            Some(Instr::Call(site)) => match code.sites.get(*site as usize).map(|s| s.callee) {
+                Some(Callee::Builtin(id)) => self.builtins.name(id),
+                _ => "",
+            },
+            _ => "",
+        };
+        (name, code.file, span)
+    }
 }
 
 /// Module-level data that built-ins find by name (ErrRaise, GetDataVal, SetDataVal).
@@ -308,6 +346,28 @@ pub enum StopKind {
     Repeat,
     /// StartMoveRetry: RETRY from the ERROR handler the call is in.
     Retry,
+}
+
+/// Whether every extension stands still before a stop-point instruction goes on
+/// (WaitTime and WaitSyncTask with `\InPos`): `false` (the extension set a wait and
+/// a repeat) while the robot still moves.
+pub(crate) fn stands_still(ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
+    let set: &Builtins = ctx.builtins;
+    for hooks in set.hooks() {
+        if !hooks.stands_still(ctx)? {
+            return Ok(false);
+        }
+    }
+    Ok(true)
+}
+
+/// ExitCycle ends the cycle: every extension drops what it has under way.
+pub(crate) fn exit_cycle_hooks(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
+    let set: &Builtins = ctx.builtins;
+    for hooks in set.hooks() {
+        hooks.exit_cycle(ctx)?;
+    }
+    Ok(())
 }
 
 /// Present means passed: not absent.
@@ -354,33 +414,14 @@ pub(crate) static CORE_FAMILIES: &[&Family] = &[
 static CORE: std::sync::LazyLock<std::sync::Arc<Builtins>> =
     std::sync::LazyLock::new(|| std::sync::Arc::new(Builtins::new(&[])));
 
-static STANDARD: std::sync::LazyLock<std::sync::Arc<Builtins>> =
-    std::sync::LazyLock::new(|| std::sync::Arc::new(Builtins::new(&[&motion::EXTENSION])));
-
 impl Builtins {
     /// The language's built-ins alone, with no extension: what a program that moves
-    /// no robot needs. Built once and shared (it never changes).
+    /// no robot needs. Built once and shared (it never changes). An embedder's set
+    /// adds its extensions (`Builtins::new`; the controller's is
+    /// `rapid_controller::builtin_set::standard`).
     pub fn core() -> std::sync::Arc<Builtins> {
         CORE.clone()
     }
-
-    /// The language's built-ins and the robot's (`motion::EXTENSION`): the set
-    /// [`crate::load`] and [`crate::load_with`] run a program with.
-    pub fn standard() -> std::sync::Arc<Builtins> {
-        STANDARD.clone()
-    }
-}
-
-/// The built-in named `name` (any letter case) in the standard set
-/// ([`Builtins::standard`]), if it runs it.
-pub fn lookup(name: &str) -> Option<BuiltinId> {
-    STANDARD.lookup(name)
-}
-
-/// Whether the standard set runs the built-in named `name` (any letter case); a
-/// program calling one that is not is refused when it is loaded.
-pub fn implemented(name: &str) -> bool {
-    lookup(name).is_some()
 }
 
 /// Why `rapid run` does not run the catalogue routine `name` yet, if it is listed.
@@ -400,21 +441,3 @@ pub fn option_refusal(name: &str, chapter: &str) -> Option<String> {
 /// give one refusal per option).
 pub(crate) const OPTION_REFUSAL_MIDDLE: &str = "belongs to option ";
 pub(crate) const OPTION_REFUSAL_TAIL: &str = ", which `rapid run` does not simulate";
-
-/// The registration of built-in `id` of the standard set.
-pub fn builtin(id: BuiltinId) -> &'static Builtin {
-    let set: &'static Builtins = &STANDARD;
-    set.get(id)
-}
-
-/// Every registration of the standard set with the file of its family, in registry
-/// order.
-pub fn registered() -> impl Iterator<Item = (&'static Builtin, &'static str)> {
-    let set: &'static Builtins = &STANDARD;
-    set.registered()
-}
-
-/// The pure form of built-in `id` of the standard set, if it has one (`pure.rs`).
-pub fn pure_form(id: BuiltinId) -> Option<pure::PureFn> {
-    STANDARD.pure_form(id)
-}

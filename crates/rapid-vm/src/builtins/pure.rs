@@ -132,8 +132,9 @@ mod tests {
     use super::*;
 
     fn call(name: &str, args: &[Value]) -> Option<Value> {
-        let id = super::super::lookup(name).expect("a built-in");
-        super::super::pure_form(id).unwrap_or_else(|| panic!("no pure form of {name}"))(args)
+        let core = super::super::Builtins::core();
+        let id = core.lookup(name).expect("a built-in");
+        core.pure_form(id).unwrap_or_else(|| panic!("no pure form of {name}"))(args)
     }
 
     #[test]
@@ -160,6 +161,7 @@ mod tests {
         assert_eq!(call("Round", &[Value::Num(1.0), Value::Num(16.0)]), None);
         assert_eq!(call("Cos", &[Value::Num(0.0)]), Some(Value::Num(1.0)));
         assert_eq!(call("ATan2", &[Value::Num(1.0), Value::Num(0.0)]), Some(Value::Num(90.0)));
-        assert!(super::super::pure_form(super::super::lookup("TPWrite").expect("TPWrite")).is_none());
+        let core = super::super::Builtins::core();
+        assert!(core.pure_form(core.lookup("TPWrite").expect("TPWrite")).is_none());
     }
 }

@@ -16,7 +16,7 @@ use rapid_syntax::ast::Item;
 use rustc_hash::FxHashMap;
 
 /// A parameter the signature does not have: `args.get(ABSENT)` is `None`.
-pub(crate) const ABSENT: usize = usize::MAX;
+pub const ABSENT: usize = usize::MAX;
 
 /// Every catalogue routine's parameter names, by lower-case routine name.
 static PARAMS: LazyLock<FxHashMap<String, Vec<String>>> = LazyLock::new(|| {
@@ -64,7 +64,7 @@ impl Signature {
     }
 
     /// The position of the first of `names` the signature has, or [`ABSENT`].
-    pub(crate) fn first_of(&self, names: &[&str]) -> usize {
+    pub fn first_of(&self, names: &[&str]) -> usize {
         names.iter().map(|n| self.at(n)).find(|&at| at != ABSENT).unwrap_or(ABSENT)
     }
 
@@ -88,9 +88,8 @@ impl Signature {
 ///     }
 /// }
 /// ```
-#[doc(hidden)]
 #[macro_export]
-macro_rules! builtin_layout {
+macro_rules! layout {
     ($(
         $(#[$doc:meta])*
         static $static:ident: $ty:ident = $routine:literal $(| $also:literal)* {
@@ -126,7 +125,7 @@ macro_rules! builtin_layout {
         }
     )*};
 }
-pub(crate) use crate::builtin_layout as layout;
+pub use crate::layout;
 
 #[cfg(test)]
 mod tests {

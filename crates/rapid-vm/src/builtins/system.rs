@@ -29,7 +29,7 @@ pub(super) static FAMILY: super::Family = super::Family {
 /// when the robot stands at the end of its last move (a fly-by point there becomes a stop
 /// point: §2.3, the instruction that ends a \Conc sequence).
 pub(super) fn wait_time(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, RapidError> {
-    if args.len() > 1 && present(args.first()) && !super::syncmove::robot_stands(ctx)? {
+    if args.len() > 1 && present(args.first()) && !super::stands_still(ctx)? {
         return Ok(None);
     }
     let time_arg = args.iter().rev().find(|a| present(Some(a))).ok_or_else(|| ctx.error(Err::ArgValue, "no time"))?;
@@ -87,7 +87,7 @@ pub(super) fn stop(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Value>, R
 /// continuous run mode the next cycle follows (`rapid run --cycles`), in cycle mode the
 /// run ends.
 pub(super) fn exit_cycle(ctx: &mut Ctx<'_>, _args: &[Value]) -> Result<Option<Value>, RapidError> {
-    super::motion::abandon_paths(ctx)?;
+    super::exit_cycle_hooks(ctx)?;
     ctx.stop = super::StopKind::ExitCycle;
     Ok(None)
 }

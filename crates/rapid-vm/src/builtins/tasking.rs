@@ -85,24 +85,44 @@ pub enum Reply {
     Missing,
     Constant,
     WrongType,
-    /// The robot's axes, its active frames and external axes, and where its flange is
-    /// in its base frame with its configuration (by its own kinematics: the robots of a
-    /// system may be of different models).
-    Robot(rapid_motion::Joints, Box<OtherRobotState>),
+    /// What an extension answers for another task (where that task's robot is): the
+    /// core hands it over without looking inside.
+    Extension(ExtensionReply),
     /// The other task could not do it: the error to raise in the asking task.
     Failed(Box<crate::error::RapidError>),
 }
 
-/// Another task's robot as the controller reports it (with [`Reply::Robot`]'s axes).
+/// An extension's answer to a request another task made (an `Rc`, as the reply is
+/// cloned when it is read): only the extension that asked knows its type.
+#[derive(Clone)]
+pub struct ExtensionReply(pub std::rc::Rc<dyn std::any::Any>);
+
+impl std::fmt::Debug for ExtensionReply {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("ExtensionReply(..)")
+    }
+}
+
+/// A task in synchronized movement: its SyncMoveOn's sync point and task list (the
+/// robot's SyncMoveOn sets it; PP to Main ends it).
 #[derive(Debug, Clone, PartialEq)]
-pub struct OtherRobotState {
-    pub frames: rapid_motion::frames::FrameChain,
-    pub extax: [f64; 6],
-    /// `extax` as a robtarget reads it (CRobT): a 7-axis arm's eax_a is its arm angle,
-    /// not axis 7 (`motion::arm7`).
-    pub robtarget_extax: [f64; 6],
-    pub flange: rapid_motion::Pose,
-    pub conf: rapid_motion::confdata::ConfData,
+pub struct SyncMode {
+    pub point: String,
+    pub members: Vec<String>,
+    /// SyncMoveSuspend: on the StorePath level the task moves on its own until
+    /// SyncMoveResume.
+    pub suspended: bool,
+}
+
+/// The coordinated move the tasks of one synchronized group are meeting at (kept by
+/// the robot's move instructions, in the state the tasks share).
+#[derive(Debug, Clone, Default)]
+pub struct MoveMeet {
+    pub round: u64,
+    /// (task, `\ID`, the time its robot would need alone) of the moves given so far.
+    pub entries: Vec<(String, f64, f64)>,
+    /// The last round completed: its number and the common time, or why there is none.
+    pub last: Option<(u64, Result<f64, String>)>,
 }
 
 /// The multitasking state all tasks share.
@@ -125,12 +145,12 @@ pub struct SharedTasking {
     pub epoch: u64,
     /// The names of the tool, work object and payload each task activated, by task
     /// name in lower case (GetSysData \TaskName from another task); a task not listed
-    /// uses tool0, wobj0 and load0 (`controller::sysdata`).
+    /// uses tool0, wobj0 and load0 (`motion::sysdata`).
     pub sysdata: FxHashMap<String, [Option<std::rc::Rc<str>>; 3]>,
     /// The tasks in synchronized movement (SyncMoveOn … SyncMoveOff), by name.
     pub in_sync: Vec<String>,
     /// The coordinated moves under way, by the sync point of their SyncMoveOn.
-    pub(crate) move_meets: FxHashMap<String, super::syncmove::MoveMeet>,
+    pub move_meets: FxHashMap<String, MoveMeet>,
     /// The robot (`n` of ROB_n) each task moves, by task index, when the configuration
     /// numbers the robots (`MECHANICAL_UNIT_GROUP -Robot`); empty: the n-th task with a
     /// robot moves ROB_n. Kept beside `tasks` (not in [`TaskInfo`]) because the
@@ -254,9 +274,9 @@ pub struct TaskingState {
     /// The event routine running now (EventType: EVENT_POWERON 1 … EVENT_STEP 7; 0 none).
     pub event: u8,
     /// Synchronized movement (SyncMoveOn): its sync point and the tasks moving together.
-    pub sync_move: Option<super::syncmove::SyncMode>,
+    pub sync_move: Option<SyncMode>,
     /// The coordinated move this task waits at: the round of its meeting it joined.
-    pub(crate) move_round: Option<u64>,
+    pub move_round: Option<u64>,
 }
 
 impl TaskingState {
@@ -291,7 +311,7 @@ impl TaskingState {
     }
 
     /// Its index in the task list.
-    pub(crate) fn index(&self) -> usize {
+    pub fn index(&self) -> usize {
         self.shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(self.name())).unwrap_or(0)
     }
 
@@ -326,7 +346,7 @@ fn wait_sync_task(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let point = sync_point(ctx, at.sync_id)?;
     let list = task_list(ctx, &args[at.task_list])?;
     let timeout = ctx.opt_num(args.get(at.time_out))?;
-    if present(args.get(at.in_pos)) && !super::syncmove::robot_stands(ctx)? {
+    if present(args.get(at.in_pos)) && !super::stands_still(ctx)? {
         return Ok(None);
     }
     meet(
@@ -340,7 +360,7 @@ fn wait_sync_task(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 }
 
 /// The name of the syncident argument at `index` (its identity across tasks).
-pub(crate) fn sync_point(ctx: &Ctx<'_>, index: usize) -> Result<String, RapidError> {
+pub fn sync_point(ctx: &Ctx<'_>, index: usize) -> Result<String, RapidError> {
     match super::argname::original_name(ctx.chain, index) {
         Some(point) => Ok(point.to_ascii_lowercase()),
         None => Err(ctx.error(Err::ArgValue, "the sync point must be a syncident variable")),
@@ -351,7 +371,7 @@ pub(crate) fn sync_point(ctx: &Ctx<'_>, index: usize) -> Result<String, RapidErr
 /// SyncMoveOff): `true` once every executing task of the list has arrived; `false`
 /// while the task waits (the instruction runs again). Past `timeout` seconds the
 /// error `on_timeout` names.
-pub(crate) fn meet(
+pub fn meet(
     ctx: &mut Ctx<'_>,
     point: &str,
     list: &[String],
@@ -417,7 +437,7 @@ fn complete_round_if_all_arrived(tasking: &mut TaskingState, point: &str, list: 
 }
 
 /// The task names of a `tasks` array (empty names are skipped).
-pub(crate) fn task_list(ctx: &Ctx<'_>, arg: &Value) -> Result<Vec<String>, RapidError> {
+pub fn task_list(ctx: &Ctx<'_>, arg: &Value) -> Result<Vec<String>, RapidError> {
     let Value::Array(array) = ctx.value(arg)? else {
         return Err(ctx.error(Err::ArgValue, "the task list must be an array of tasks"));
     };
@@ -484,7 +504,7 @@ fn get_task_name(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// The controller's reply to this task's request, or (first time) the request made:
 /// `None` means wait and look again (the instruction is re-run).
-pub(crate) fn ask(ctx: &mut Ctx<'_>, request: Request) -> Option<Reply> {
+pub fn ask(ctx: &mut Ctx<'_>, request: Request) -> Option<Reply> {
     let me = ctx.resources.tasking.index();
     let shared = &mut ctx.resources.tasking.shared;
     if let Some((who, _)) = &shared.reply {
@@ -505,7 +525,7 @@ pub(crate) fn ask(ctx: &mut Ctx<'_>, request: Request) -> Option<Reply> {
 /// The index of another task of the system a `taskid | string` pair names, or `None`
 /// for the task itself (or no such argument). ERR_TASKNAME for a name the system
 /// does not have.
-pub(crate) fn other_task(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<Option<usize>, RapidError> {
+pub fn other_task(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<Option<usize>, RapidError> {
     if !present(args.get(first)) && !present(args.get(first + 1)) {
         return Ok(None);
     }
@@ -518,7 +538,7 @@ pub(crate) fn other_task(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<
 }
 
 /// This task's entry in the system's task list.
-pub(crate) fn my_task<'c>(ctx: &'c Ctx<'_>) -> Option<&'c TaskInfo> {
+pub fn my_task<'c>(ctx: &'c Ctx<'_>) -> Option<&'c TaskInfo> {
     ctx.resources.tasking.shared.task(ctx.resources.tasking.name())
 }
 
@@ -535,7 +555,7 @@ fn task_run_mec(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 
 /// The task a `taskid | string` argument pair names: a taskid by its data name
 /// (`T_ROB2Id` is T_ROB2), a string as written.
-pub(crate) fn named_task(ctx: &Ctx<'_>, args: &[Value]) -> Result<TaskInfo, RapidError> {
+pub fn named_task(ctx: &Ctx<'_>, args: &[Value]) -> Result<TaskInfo, RapidError> {
     named_task_at(ctx, args, 0)
 }
 

@@ -41,7 +41,7 @@ pub(crate) fn get_tsp_status(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // -UseMotionPlanner, which RobotWare's configurations give rob1 motion_planner_1 and so
 // on; a task that is no motion task is taken to be connected to the first motion task
 // (as GetTaskName \MecTaskNo does); the controller follows -UseMechanicalUnitGroup.
-pub(crate) fn planner_no(ctx: &Ctx<'_>) -> usize {
+pub fn planner_no(ctx: &Ctx<'_>) -> usize {
     let tasking = &ctx.resources.tasking;
     let shared = &tasking.shared;
     let mine = shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(tasking.name()));
