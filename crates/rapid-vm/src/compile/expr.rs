@@ -2,6 +2,7 @@
 //! expected type, function calls, operators.
 
 use rapid_sema::types::{Atomic, TypeId, TypeKind};
+use rapid_sema::ExprType;
 use rapid_syntax::ast::{Arena, ExprId, ExprKind, UnaryOp};
 use rapid_syntax::literal::{num_value, string_value};
 
@@ -310,9 +311,23 @@ impl RoutineCompiler<'_> {
         Ok(())
     }
 
-    /// The declared type of a data reference (and its known dimension sizes).
+    /// The type of an expression (and, for data, its known dimension sizes): the
+    /// declared type of a data reference or a function's return type, else the type
+    /// the checker gave it. A numeric literal and arithmetic of literals only have
+    /// none: they take the context's (`ExprType::Numeric`).
     pub(crate) fn static_type(&self, arena: &Arena, id: ExprId) -> Expected {
         let expr = arena.expr(id);
+        let typed = match expr.kind {
+            ExprKind::Name(_) | ExprKind::Index { .. } | ExprKind::Field { .. } | ExprKind::Call { .. } => None,
+            ExprKind::Paren(_) => None,
+            _ => self.facts.and_then(|facts| facts.ty(id)),
+        };
+        match typed {
+            Some(ExprType::Numeric) => return None,
+            Some(ExprType::Of { ty, rank }) => return Some((ty, expected_dims(rank, [0; 3]))),
+            None => {}
+        }
+        // Compiled without the checker's facts (or the checker gave no type).
         match expr.kind {
             ExprKind::Name(sym) => match self.name(id, sym)? {
                 Resolved::Local(local) => Some((local.ty, expected_dims(local.rank, local.dims))),
