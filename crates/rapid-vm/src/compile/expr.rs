@@ -345,9 +345,16 @@ impl RoutineCompiler<'_> {
                     _ => None,
                 }
             }
-            ExprKind::Paren(inner) | ExprKind::Unary { operand: inner, .. } => self.static_type(arena, inner),
+            ExprKind::Paren(inner) => self.static_type(arena, inner),
+            // An operator on an alias gives the alias's base type, as the checker
+            // says (§1.3.5, footnote ii of the arithmetic table: -d of a distance d
+            // is a num).
+            ExprKind::Unary { operand, .. } => {
+                self.static_type(arena, operand).map(|(ty, dims)| (self.prog.types.value_of(ty), dims))
+            }
             // Arithmetic keeps a record operand's type (pos * num is a pos, orient *
-            // orient an orient); comparisons and logic give no aggregate context.
+            // orient an orient), as its base type; comparisons and logic give no
+            // aggregate context.
             ExprKind::Binary { op, lhs, rhs } => {
                 use rapid_syntax::ast::BinaryOp as B;
                 if !matches!(op, B::Add | B::Sub | B::Mul | B::Div) {
@@ -355,13 +362,14 @@ impl RoutineCompiler<'_> {
                 }
                 let (l, r) = (self.static_type(arena, lhs), self.static_type(arena, rhs));
                 let is_record = |t: &Expected| t.is_some_and(|(ty, _)| self.prog.types.record_fields(ty).is_some());
-                if is_record(&l) {
+                let operand = if is_record(&l) {
                     l
                 } else if is_record(&r) {
                     r
                 } else {
                     l.or(r)
-                }
+                };
+                operand.map(|(ty, dims)| (self.prog.types.value_of(ty), dims))
             }
             ExprKind::Call { name, .. } => match self.callee(super::call::CallOf::Expr(id), name)? {
                 Resolved::Routine(idx) => self.prog.routines[idx as usize].ret.map(|t| (t, [0; 3])),
