@@ -353,23 +353,25 @@ impl RoutineCompiler<'_> {
                 self.static_type(arena, operand).map(|(ty, dims)| (self.prog.types.value_of(ty), dims))
             }
             // Arithmetic keeps a record operand's type (pos * num is a pos, orient *
-            // orient an orient), as its base type; comparisons and logic give no
-            // aggregate context.
+            // orient an orient), as its base type; num with dnum is a dnum (§1.3.5,
+            // as the checker says). Comparisons and logic give no aggregate context.
             ExprKind::Binary { op, lhs, rhs } => {
                 use rapid_syntax::ast::BinaryOp as B;
-                if !matches!(op, B::Add | B::Sub | B::Mul | B::Div) {
+                if !matches!(op, B::Add | B::Sub | B::Mul | B::Div | B::IntDiv | B::Mod) {
                     return None;
                 }
                 let (l, r) = (self.static_type(arena, lhs), self.static_type(arena, rhs));
-                let is_record = |t: &Expected| t.is_some_and(|(ty, _)| self.prog.types.record_fields(ty).is_some());
+                let types = self.prog.types;
+                let is_record = |t: &Expected| t.is_some_and(|(ty, _)| types.record_fields(ty).is_some());
+                let is_dnum = |t: &Expected| t.is_some_and(|(ty, _)| types.atomic(ty) == Some(Atomic::Dnum));
                 let operand = if is_record(&l) {
                     l
-                } else if is_record(&r) {
+                } else if is_record(&r) || is_dnum(&r) {
                     r
                 } else {
                     l.or(r)
                 };
-                operand.map(|(ty, dims)| (self.prog.types.value_of(ty), dims))
+                operand.map(|(ty, dims)| (types.value_of(ty), dims))
             }
             ExprKind::Call { name, .. } => match self.callee(super::call::CallOf::Expr(id), name)? {
                 Resolved::Routine(idx) => self.prog.routines[idx as usize].ret.map(|t| (t, [0; 3])),
