@@ -7,6 +7,7 @@ use rapid_syntax::Span;
 
 use crate::checker::Checker;
 use crate::codes::Code;
+use crate::facts::ExprType;
 use crate::symbols::{Def, ANY_RANK};
 use crate::types::{self, Atomic, TypeId, ValueClass};
 
@@ -57,7 +58,40 @@ const NUM_MAX: f64 = f32::MAX as f64;
 
 impl Checker<'_> {
     /// Types `id`, reporting what is wrong inside it. `expect` types aggregates.
+    /// The type goes into the item's facts for the compiler.
     pub(crate) fn expr(&mut self, arena: &Arena, id: ExprId, expect: Option<Expect<'_>>) -> Ty {
+        let ty = self.type_expr(arena, id, expect);
+        if self.facts.recording {
+            let fact = self.type_fact(arena, id, ty);
+            self.facts.set_type(id, fact);
+        }
+        ty
+    }
+
+    /// The fact recorded for `id` typed `ty`: a literal and arithmetic of literals
+    /// only are numeric, typed by their context (see [`ExprType::Numeric`]); an
+    /// operand was typed (and recorded) before its operator.
+    fn type_fact(&self, arena: &Arena, id: ExprId, ty: Ty) -> Option<ExprType> {
+        if ty.ty == types::ERROR {
+            return None;
+        }
+        let numeric = |id: ExprId| self.facts.ty(id) == Some(ExprType::Numeric);
+        let literal = match arena.expr(id).kind {
+            ExprKind::Num => true,
+            ExprKind::Paren(inner) | ExprKind::Unary { op: UnaryOp::Neg | UnaryOp::Plus, operand: inner } => {
+                numeric(inner)
+            }
+            ExprKind::Binary {
+                op: BinaryOp::Add | BinaryOp::Sub | BinaryOp::Mul | BinaryOp::Div | BinaryOp::IntDiv | BinaryOp::Mod,
+                lhs,
+                rhs,
+            } => numeric(lhs) && numeric(rhs),
+            _ => false,
+        };
+        Some(if literal { ExprType::Numeric } else { ExprType::Of { ty: ty.ty, rank: ty.rank } })
+    }
+
+    fn type_expr(&mut self, arena: &Arena, id: ExprId, expect: Option<Expect<'_>>) -> Ty {
         let expr = *arena.expr(id);
         match expr.kind {
             ExprKind::Num => self.num_literal(expr.span, expect),

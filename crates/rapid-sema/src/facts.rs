@@ -1,11 +1,12 @@
 //! What the checker resolved in one top-level body item, for the compiler: the
-//! declaration each name and call denotes and the parameter each argument was bound
-//! to. Kept by index into the item's arena and cleared with it, so it costs memory
+//! declaration each name and call denotes, the type of each expression and the
+//! parameter each argument was bound to. Kept by index into the item's arena and cleared with it, so it costs memory
 //! per item, never per program; a [`crate::BodySink`] reads it beside the arena.
 
 use rapid_syntax::ast::{ArgList, ExprId};
 
 use crate::symbols::Def;
+use crate::types::TypeId;
 
 /// What a name (or the routine name of a call) denotes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -20,6 +21,20 @@ pub enum Denotes {
     Local(u32),
 }
 
+/// The type the checker gave an expression.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ExprType {
+    /// A value of type `ty` with `rank` dimensions (0 for a scalar).
+    Of { ty: TypeId, rank: u8 },
+    /// A numeric literal, or arithmetic of numeric literals only (`2 * 0.1`, `-1`):
+    /// numeric, typed by its context. RAPID accepts `VAR dnum d := 4294967295;`, a
+    /// value no num holds exactly, so a literal takes the type of the data it is
+    /// assigned to, of the other operand or of the parameter; `VAR dnum x := 2 * 0.1;`
+    /// multiplies two dnums. The checker types such an expression num where nothing
+    /// asks for a dnum, which is what it is *assignable* as, not how it is computed.
+    Numeric,
+}
+
 /// An argument the checker saw but bound to no parameter.
 const UNBOUND: u32 = u32::MAX;
 /// An argument the checker did not see (its facts are not known).
@@ -32,6 +47,8 @@ pub struct ItemFacts {
     pub(crate) recording: bool,
     /// By `ExprId`: what each `Name` and `Call` expression denotes.
     names: Vec<Option<Denotes>>,
+    /// By `ExprId`: the type of each expression the checker typed without error.
+    types: Vec<Option<ExprType>>,
     /// By index into the arena's arguments: the parameter each was bound to.
     params: Vec<u32>,
     /// Procedure calls (statements) by the start of their name: the routine called.
@@ -40,6 +57,7 @@ pub struct ItemFacts {
     /// one starts. Items of a long body share one arena (the parser hands them over
     /// in batches), so resetting the whole table per item would cost the batch's size.
     written_names: Vec<u32>,
+    written_types: Vec<u32>,
     written_params: Vec<u32>,
 }
 
@@ -47,6 +65,11 @@ impl ItemFacts {
     /// What `Name` or `Call` expression `id` denotes, when the checker resolved it.
     pub fn name(&self, id: ExprId) -> Option<Denotes> {
         self.names.get(id.0 as usize).copied().flatten()
+    }
+
+    /// The type the checker gave expression `id`, when it typed it without error.
+    pub fn ty(&self, id: ExprId) -> Option<ExprType> {
+        self.types.get(id.0 as usize).copied().flatten()
     }
 
     /// What the procedure call whose name starts at byte `name_start` calls, when the
@@ -77,6 +100,9 @@ impl ItemFacts {
         for idx in self.written_names.drain(..) {
             self.names[idx as usize] = None;
         }
+        for idx in self.written_types.drain(..) {
+            self.types[idx as usize] = None;
+        }
         for idx in self.written_params.drain(..) {
             self.params[idx as usize] = UNSEEN;
         }
@@ -84,6 +110,7 @@ impl ItemFacts {
         if self.recording {
             if self.names.len() < n_exprs {
                 self.names.resize(n_exprs, None);
+                self.types.resize(n_exprs, None);
             }
             if self.params.len() < n_args {
                 self.params.resize(n_args, UNSEEN);
@@ -95,6 +122,13 @@ impl ItemFacts {
         if let Some(slot) = self.names.get_mut(id.0 as usize) {
             *slot = Some(denotes);
             self.written_names.push(id.0);
+        }
+    }
+
+    pub(crate) fn set_type(&mut self, id: ExprId, ty: Option<ExprType>) {
+        if let Some(slot) = self.types.get_mut(id.0 as usize) {
+            *slot = ty;
+            self.written_types.push(id.0);
         }
     }
 

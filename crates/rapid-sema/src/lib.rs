@@ -33,7 +33,7 @@ use rapid_syntax::{cap_errors, for_each_body_item, parse_body, parse_outline, In
 
 pub use codes::{Code, Severity};
 pub use diagnostic::{Diagnostic, SourceInput};
-pub use facts::{Denotes, ItemFacts};
+pub use facts::{Denotes, ExprType, ItemFacts};
 
 use checker::{Checker, WellKnown};
 use collect::ModuleRef;

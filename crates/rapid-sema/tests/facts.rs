@@ -1,9 +1,10 @@
 //! What the checker hands a body sink with each item (`rapid_sema::ItemFacts`): the
 //! declaration each name and call denotes, the routine's own data numbered in the
-//! order it is declared, and the parameter each argument was bound to.
+//! order it is declared, the parameter each argument was bound to and the type of
+//! each expression.
 
 use rapid_sema::symbols::Def;
-use rapid_sema::{analyze_with, BodySink, Denotes, ItemFacts, Options, SourceInput, Tables};
+use rapid_sema::{analyze_with, BodySink, Denotes, ExprType, ItemFacts, Options, SourceInput, Tables};
 use rapid_syntax::ast::{Arena, ArgList, BodyItem, ExprKind, Routine, Stmt, StmtKind};
 
 /// Writes down, for each item, what the facts say of its names, calls and arguments.
@@ -167,4 +168,80 @@ ENDMODULE
     // this routine's own: its second parameter.
     let expected = ["begin relay", "name: own data 0", "opt: own data 1", "end clean=true"];
     assert_eq!(record(text), expected);
+}
+
+/// Writes down the type the facts give each literal and operator expression.
+struct TypeRecorder<'t> {
+    text: &'t str,
+    seen: Vec<String>,
+}
+
+impl BodySink for TypeRecorder<'_> {
+    fn begin(&mut self, _: Tables<'_>, _: usize, _: usize, _: usize, _: &Routine) {}
+
+    fn item(&mut self, tables: Tables<'_>, _: &BodyItem, arena: &Arena, facts: &ItemFacts) {
+        for (idx, expr) in arena.exprs.iter().enumerate() {
+            let operator = matches!(
+                expr.kind,
+                ExprKind::Num | ExprKind::Binary { .. } | ExprKind::Unary { .. } | ExprKind::Paren(_)
+            );
+            // Items of one body may share an arena: an earlier item's facts are reset.
+            let Some(ty) = facts.ty(rapid_syntax::ast::ExprId(idx as u32)).filter(|_| operator) else { continue };
+            let ty = match ty {
+                ExprType::Numeric => "numeric".to_string(),
+                ExprType::Of { ty, rank } => format!("{}/{rank}", tables.types.name(ty)),
+            };
+            self.seen.push(format!("{}: {ty}", expr.span.text(self.text)));
+        }
+    }
+
+    fn end(&mut self, _: Tables<'_>, _: bool) {}
+}
+
+#[test]
+fn literals_and_their_arithmetic_are_typed_by_context_and_aliases_by_their_base() {
+    let text = "MODULE M
+  ALIAS num distance;
+  VAR distance d := 1;
+  PROC main()
+    VAR dnum x := 2 * 0.1;
+    VAR num n;
+    VAR bool b;
+    n := d * 2;
+    n := -(7 DIV 2) + n;
+    x := n * 0.5 + x;
+    b := d > 0.5;
+  ENDPROC
+ENDMODULE
+";
+    let files = [SourceInput::from_text("m.mod", text)];
+    let mut recorder = TypeRecorder { text, seen: Vec::new() };
+    let analysis = analyze_with(&files, &Options::default(), Some(&mut recorder));
+    assert!(!rapid_sema::Program::has_errors(&analysis.diagnostics), "{:?}", analysis.diagnostics);
+    let mut seen = recorder.seen;
+    let mut expected = vec![
+        // A literal and arithmetic of literals only take the context's type: here
+        // dnum, so 2 * 0.1 is computed in double precision.
+        "2: numeric",
+        "0.1: numeric",
+        "2 * 0.1: numeric",
+        // Arithmetic on an alias gives its base type (§1.3.5, footnote ii).
+        "2: numeric",
+        "d * 2: num/0",
+        "7: numeric",
+        "2: numeric",
+        "7 DIV 2: numeric",
+        "(7 DIV 2): numeric",
+        "-(7 DIV 2): numeric",
+        "-(7 DIV 2) + n: num/0",
+        // num * literal is a num; num + dnum a dnum.
+        "0.5: numeric",
+        "n * 0.5: num/0",
+        "n * 0.5 + x: dnum/0",
+        "0.5: numeric",
+        "d > 0.5: bool/0",
+    ];
+    seen.sort();
+    expected.sort();
+    assert_eq!(seen, expected);
 }

@@ -2,6 +2,7 @@
 //! expected type, function calls, operators.
 
 use rapid_sema::types::{Atomic, TypeId, TypeKind};
+use rapid_sema::ExprType;
 use rapid_syntax::ast::{Arena, ExprId, ExprKind, UnaryOp};
 use rapid_syntax::literal::{num_value, string_value};
 
@@ -310,9 +311,23 @@ impl RoutineCompiler<'_> {
         Ok(())
     }
 
-    /// The declared type of a data reference (and its known dimension sizes).
+    /// The type of an expression (and, for data, its known dimension sizes): the
+    /// declared type of a data reference or a function's return type, else the type
+    /// the checker gave it. A numeric literal and arithmetic of literals only have
+    /// none: they take the context's (`ExprType::Numeric`).
     pub(crate) fn static_type(&self, arena: &Arena, id: ExprId) -> Expected {
         let expr = arena.expr(id);
+        let typed = match expr.kind {
+            ExprKind::Name(_) | ExprKind::Index { .. } | ExprKind::Field { .. } | ExprKind::Call { .. } => None,
+            ExprKind::Paren(_) => None,
+            _ => self.facts.and_then(|facts| facts.ty(id)),
+        };
+        match typed {
+            Some(ExprType::Numeric) => return None,
+            Some(ExprType::Of { ty, rank }) => return Some((ty, expected_dims(rank, [0; 3]))),
+            None => {}
+        }
+        // Compiled without the checker's facts (or the checker gave no type).
         match expr.kind {
             ExprKind::Name(sym) => match self.name(id, sym)? {
                 Resolved::Local(local) => Some((local.ty, expected_dims(local.rank, local.dims))),
@@ -330,23 +345,33 @@ impl RoutineCompiler<'_> {
                     _ => None,
                 }
             }
-            ExprKind::Paren(inner) | ExprKind::Unary { operand: inner, .. } => self.static_type(arena, inner),
+            ExprKind::Paren(inner) => self.static_type(arena, inner),
+            // An operator on an alias gives the alias's base type, as the checker
+            // says (§1.3.5, footnote ii of the arithmetic table: -d of a distance d
+            // is a num).
+            ExprKind::Unary { operand, .. } => {
+                self.static_type(arena, operand).map(|(ty, dims)| (self.prog.types.value_of(ty), dims))
+            }
             // Arithmetic keeps a record operand's type (pos * num is a pos, orient *
-            // orient an orient); comparisons and logic give no aggregate context.
+            // orient an orient), as its base type; num with dnum is a dnum (§1.3.5,
+            // as the checker says). Comparisons and logic give no aggregate context.
             ExprKind::Binary { op, lhs, rhs } => {
                 use rapid_syntax::ast::BinaryOp as B;
-                if !matches!(op, B::Add | B::Sub | B::Mul | B::Div) {
+                if !matches!(op, B::Add | B::Sub | B::Mul | B::Div | B::IntDiv | B::Mod) {
                     return None;
                 }
                 let (l, r) = (self.static_type(arena, lhs), self.static_type(arena, rhs));
-                let is_record = |t: &Expected| t.is_some_and(|(ty, _)| self.prog.types.record_fields(ty).is_some());
-                if is_record(&l) {
+                let types = self.prog.types;
+                let is_record = |t: &Expected| t.is_some_and(|(ty, _)| types.record_fields(ty).is_some());
+                let is_dnum = |t: &Expected| t.is_some_and(|(ty, _)| types.atomic(ty) == Some(Atomic::Dnum));
+                let operand = if is_record(&l) {
                     l
-                } else if is_record(&r) {
+                } else if is_record(&r) || is_dnum(&r) {
                     r
                 } else {
                     l.or(r)
-                }
+                };
+                operand.map(|(ty, dims)| (types.value_of(ty), dims))
             }
             ExprKind::Call { name, .. } => match self.callee(super::call::CallOf::Expr(id), name)? {
                 Resolved::Routine(idx) => self.prog.routines[idx as usize].ret.map(|t| (t, [0; 3])),
