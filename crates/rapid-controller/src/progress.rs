@@ -146,7 +146,7 @@ impl Controller {
         if !def.kind.is_input() || system.is_cross_result(id) || io.reactions.iter().any(|r| r.target == id) {
             return None;
         }
-        wait.since = vm.resources().io.wait_started().unwrap_or(self.time);
+        wait.since = vm.resources().wait_started().unwrap_or(self.time);
         wait.why = format!("{} is {}", def.name, system.value(id).unwrap_or(0.0));
         Some(Wait::Input(wait))
     }

@@ -16,6 +16,7 @@ use super::layout::{
     MOVE_ABS_J, MOVE_C, MOVE_C_AO, MOVE_C_DO, MOVE_C_GO, MOVE_C_SYNC, MOVE_J, MOVE_J_AO, MOVE_J_DO, MOVE_J_GO,
     MOVE_J_SYNC, MOVE_L, MOVE_L_AO, MOVE_L_DO, MOVE_L_GO, MOVE_L_SYNC,
 };
+use rapid_vm::builtins::io::IoAccess;
 use rapid_vm::builtins::{present, Ctx};
 use rapid_vm::error::RapidError;
 use rapid_vm::value::Value;
@@ -605,14 +606,14 @@ pub(crate) fn apply_due_events(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
         match action {
             super::robot::Action::Set { signal: id, value } => {
                 if time > ctx.time {
-                    ctx.resources.io.order_on_path(time, id, value);
+                    ctx.resources.io_mut().order_on_path(time, id, value);
                 } else {
                     rapid_vm::builtins::io::order(ctx, |io, t| io.set(id, value, t))?;
                 }
             }
             super::robot::Action::ZoneSet { signal: id, value } => {
                 if time > ctx.time {
-                    ctx.resources.io.order_on_path(time, id, value);
+                    ctx.resources.io_mut().order_on_path(time, id, value);
                 } else {
                     rapid_vm::builtins::io::order(ctx, |io, t| io.set_by_system(id, value, t))?;
                 }

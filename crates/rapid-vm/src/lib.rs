@@ -191,14 +191,6 @@ pub fn load_in(
     type_names.templates = rmq_templates(&prog);
     vm.resources_mut().rmq.names = type_names;
     vm.extensions_loaded(&prog);
-    vm.resources_mut().io.kinds = signal_kinds(&prog);
-    vm.resources_mut().io.configured = prog
-        .datas
-        .iter()
-        .enumerate()
-        .filter(|(_, data)| data.origin == DeclOrigin::CONFIGURED)
-        .map(|(idx, data)| (idx as u32, data.display.clone()))
-        .collect();
     vm.set_pers_globals(prog.datas.iter().map(|d| d.kind == rapid_sema::symbols::DataKind::Pers).collect());
     vm.set_program_sources(files.to_vec());
     vm.set_program_options(options.clone());
@@ -392,15 +384,6 @@ fn module_vars(prog: &Program, modules: &[compile::ModuleSource<'_>]) -> Vec<Mod
         vars.push(ModuleVar { data: shared, file: source.file, task_scoped });
     }
     vars
-}
-
-/// The program's types for the six signal kinds (AliasIO checks kinds by them).
-fn signal_kinds(prog: &Program) -> Vec<(rapid_sema::types::TypeId, rapid_io::SignalKind)> {
-    use rapid_io::SignalKind as K;
-    [K::DI, K::DO, K::AI, K::AO, K::GI, K::GO]
-        .into_iter()
-        .filter_map(|kind| prog.types.find(kind.rapid_type()).map(|ty| (ty, kind)))
-        .collect()
 }
 
 /// The value before anything is assigned of each declared or predefined record and

@@ -4,6 +4,7 @@
 
 use rapid_io::{AnalogRange, IoSystem, SignalDef, SignalKind};
 use rapid_sema::SourceInput;
+use rapid_vm::builtins::io::IoAccess;
 use rapid_vm::{load, Exit, RecordingHost};
 
 /// do1, di1, go1 (8 bits), ao1 (logical 0..10).
@@ -33,7 +34,7 @@ fn run_with(program: &str, stimulus: &[(f64, &str, f64)]) -> Vec<String> {
         Err(err) => panic!("the program loads: {err:?}"),
     };
     let system = io_system();
-    let io = &mut loaded.vm.resources_mut().io;
+    let io = loaded.vm.resources_mut().io_mut();
     for &(at, name, value) in stimulus {
         io.stimulus.push_back((at, system.id(name).expect("a configured signal"), value));
     }

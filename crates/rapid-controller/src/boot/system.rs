@@ -9,6 +9,7 @@ use rapid_config::sys::{Sys, TaskType};
 use rapid_config::CfgFile;
 use rapid_robot::RobotResources;
 use rapid_sema::SourceInput;
+use rapid_vm::builtins::io::IoAccess;
 use rapid_vm::Loaded;
 
 use super::cell::Cell;
@@ -217,12 +218,12 @@ pub fn boot(
             }
         }
         for (_, program) in tasks.iter_mut() {
-            program.vm.resources_mut().io.virtual_io = true;
+            program.vm.resources_mut().io_mut().virtual_io = true;
         }
         if let Some((_, first)) = tasks.first_mut() {
             for (name, kind) in made {
                 let kind = rapid_vm::builtins::io::kind_name(kind);
-                first.vm.resources_mut().io.note_later(format!("virtual signal {name} ({kind}) (--virtual-io)"));
+                first.vm.resources_mut().note_later(format!("virtual signal {name} ({kind}) (--virtual-io)"));
             }
         }
     }
@@ -286,10 +287,10 @@ pub fn boot(
         return Err(if alone { BootError::Internal(message) } else { BootError::Refused(message) });
     }
     if let Some((orders, reactions, answers)) = stimulus {
-        let io = &mut controller.shared_mut().io;
-        io.stimulus = orders.into();
-        io.reactions = reactions;
-        io.answers = answers.into();
+        let shared = controller.shared_mut();
+        shared.io.stimulus = orders.into();
+        shared.io.reactions = reactions;
+        shared.answers = answers.into();
     }
     configure_operations(&mut controller, cell.syspar, sys, options.auto).map_err(BootError::Refused)?;
     // STOP event routines run when a task stops.

@@ -13,6 +13,7 @@ use crate::RobotResources;
 use std::rc::Rc;
 
 use super::Res;
+use rapid_vm::builtins::io::IoAccess;
 use rapid_vm::builtins::{present, Ctx, Resources};
 use rapid_vm::errnames::Err;
 use rapid_vm::exec::storage::Storage;
@@ -64,8 +65,8 @@ pub(crate) fn program_stopped(resources: &mut Resources, storage: &mut Storage, 
     if moving {
         super::super::pause::hold(resources, now);
     }
-    resources.io.advance(now);
-    let value = |id: Option<u32>| id.and_then(|id| resources.io.system.as_ref()?.value(id)).unwrap_or(0.0);
+    resources.io_mut().advance(now);
+    let value = |id: Option<u32>| id.and_then(|id| resources.io().system.as_ref()?.value(id)).unwrap_or(0.0);
     let process = [proc.do1, proc.go[0], proc.go[1], proc.go[2], proc.go[3]].map(value);
     let shadow = value(Some(proc.shadow));
     let num = |x: f64| Value::Num(x as f32);
@@ -85,7 +86,7 @@ pub(crate) fn program_stopped(resources: &mut Resources, storage: &mut Storage, 
         let _ = storage.set(&proc.restart, Value::Record(record));
     }
     let outputs = [proc.do1, proc.go[0], proc.go[1], proc.go[2], proc.go[3]];
-    if let Some(io) = resources.io.system.as_mut() {
+    if let Some(io) = resources.io_mut().system.as_mut() {
         for id in outputs.into_iter().flatten() {
             let _ = io.set(id, 0.0, now);
         }

@@ -14,7 +14,7 @@
 //! and only their events are queued; the others are dropped. When the program starts
 //! again the queued safe interrupts run first, in the order they came.
 
-use super::io::connected;
+use super::io::{connected, IoAccess};
 use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
@@ -242,7 +242,7 @@ impl InterruptState {
 /// interrupts are ordered); `None` when none can.
 pub fn next_due(ctx: &mut Ctx<'_>) -> Option<f64> {
     let timer = ctx.resources.interrupts.next_timer();
-    let signal = if ctx.resources.interrupts.watches_signals() { ctx.resources.io.next_event_time() } else { None };
+    let signal = if ctx.resources.interrupts.watches_signals() { super::wait::next_event(ctx) } else { None };
     match (timer, signal) {
         (Some(a), Some(b)) => Some(a.min(b)),
         (a, b) => a.or(b),
@@ -346,7 +346,7 @@ fn isignal_analog(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     } else {
         rapid_io::AioDirection::Both
     };
-    let current = ctx.resources.io.system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0);
+    let current = ctx.resources.io().system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0);
     let trigger = rapid_io::AnalogTrigger::new(condition, high, low, delta, direction, current)
         .map_err(|err| ctx.error(Err::ArgValue, err.to_string()))?;
     let n = interrupt_number(ctx, &args[at.interrupt])?;
@@ -357,7 +357,7 @@ fn isignal_analog(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// Orders interrupt `n` on a signal (`safe`: `\SingleSafe`): only changes from now on
 /// count.
 fn watch_signal(ctx: &mut Ctx<'_>, n: u32, source: Source, safe: bool) {
-    let logged = ctx.resources.io.system.as_ref().map_or(0, |io| io.changes().len());
+    let logged = ctx.resources.io().system.as_ref().map_or(0, |io| io.changes().len());
     let interrupts = &mut ctx.resources.interrupts;
     interrupts.seen_changes = interrupts.seen_changes.max(logged);
     if let Some(interrupt) = interrupts.get_mut(n) {

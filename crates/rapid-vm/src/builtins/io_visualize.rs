@@ -7,7 +7,7 @@
 //! `\Icon` and `\Image` only change how the box looks (accepted, not drawn).
 //! A wait whose condition holds at once shows no box.
 
-use super::io::signal;
+use super::io::{signal, IoAccess};
 use super::{present, Ctx};
 use crate::error::RapidError;
 use crate::value::Value;
@@ -57,11 +57,11 @@ pub(crate) fn step(ctx: &mut Ctx<'_>, args: &[Value], at: &BoxArgs, done: bool) 
         return Ok(None);
     }
     let depth = ctx.chain.len();
-    let shown = ctx.resources.io.boxes.iter().position(|b| b.depth == depth);
+    let shown = ctx.resources.io().boxes.iter().position(|b| b.depth == depth);
     match (shown, done) {
         (None, true) => Ok(None),
         (Some(idx), true) => {
-            let shown = ctx.resources.io.boxes.remove(idx);
+            let shown = ctx.resources.io_mut().boxes.remove(idx);
             if shown.open {
                 close(ctx, &shown)?;
             }
@@ -70,14 +70,14 @@ pub(crate) fn step(ctx: &mut Ctx<'_>, args: &[Value], at: &BoxArgs, done: bool) 
         (None, false) => {
             let shown = open(ctx, args, at, depth)?;
             let close_at = shown.close_at;
-            ctx.resources.io.boxes.push(shown);
+            ctx.resources.io_mut().boxes.push(shown);
             Ok(close_at)
         }
         (Some(idx), false) => {
-            let shown = ctx.resources.io.boxes[idx].clone();
+            let shown = ctx.resources.io().boxes[idx].clone();
             match shown.close_at {
                 Some(t) if shown.open && ctx.time >= t => {
-                    ctx.resources.io.boxes[idx].open = false;
+                    ctx.resources.io_mut().boxes[idx].open = false;
                     close(ctx, &shown)?;
                     Ok(None)
                 }

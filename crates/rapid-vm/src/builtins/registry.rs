@@ -121,7 +121,8 @@ impl Builtins {
             builtins: Vec::new(),
             by_name: FxHashMap::default(),
             files: Vec::new(),
-            hooks: Vec::new(),
+            // The I/O's hooks, while its families are the core's.
+            hooks: vec![&super::io::HOOKS],
             inits: Vec::new(),
         };
         for family in super::CORE_FAMILIES {

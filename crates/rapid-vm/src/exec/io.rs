@@ -2,12 +2,13 @@
 //! signals (their program data) to it.
 
 use super::Vm;
+use crate::builtins::io::IoAccess;
 
 impl Vm {
     /// Installs the task's I/O system and connects the configuration's signals (their
     /// program data) to it.
     pub fn install_io(&mut self, system: rapid_io::IoSystem) {
-        self.resources.io.system = Some(system);
+        self.resources.io_mut().system = Some(system);
         self.connect_configured_signals();
     }
 
@@ -15,17 +16,13 @@ impl Vm {
     /// re-initialises the data. (A controller calls this with its shared I/O system
     /// handed in, for every task.)
     pub fn connect_configured_signals(&mut self) {
-        for (global, value) in self.resources.io.configured_values() {
-            if let Some(slot) = self.storage.globals.get_mut(global) {
-                *slot = value;
-            }
-        }
+        crate::builtins::io::connect_configured(&self.resources, &mut self.storage);
     }
 
     /// The configuration's signals the program names as data, with the kind of its
     /// data (`--virtual-io` adds those the I/O system lacks as virtual signals).
     pub fn configured_signals(&self) -> Vec<(String, rapid_io::SignalKind)> {
-        let io = &self.resources.io;
+        let io = self.resources.io();
         io.configured
             .iter()
             .filter_map(|(global, name)| {
@@ -38,6 +35,6 @@ impl Vm {
 
     /// The task's I/O system, if it has one (its signals, their change log).
     pub fn io_system(&self) -> Option<&rapid_io::IoSystem> {
-        self.resources.io.system.as_ref()
+        self.resources.io().system.as_ref()
     }
 }
