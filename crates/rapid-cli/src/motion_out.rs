@@ -11,8 +11,8 @@ use rapid_motion::Pose;
 use rapid_robot::robot::{MoveFacts, RobotState};
 use rapid_robot::RobotResources;
 use rapid_sema::SourceInput;
+use rapid_signals::IoAccess;
 use rapid_syntax::LineIndex;
-use rapid_vm::builtins::io::IoAccess;
 use rustc_hash::FxHashMap;
 
 use crate::args::RunArgs;

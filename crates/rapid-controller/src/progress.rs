@@ -20,6 +20,7 @@
 //! not wait), or a NORMAL task that is not waiting: the run can progress.
 
 use rapid_robot::RobotResources;
+use rapid_signals::SharedIoAccess;
 use rapid_vm::value::Value;
 use rapid_vm::Vm;
 
@@ -70,7 +71,7 @@ impl Controller {
         if self.program_state() != crate::ProgramState::Running {
             return None;
         }
-        let io = &self.shared.io;
+        let io = self.shared.io();
         let system = io.system.as_ref()?;
         if system.next_event_time().is_some() || !io.stimulus.is_empty() || !io.path_orders.is_empty() {
             return None;
@@ -139,7 +140,7 @@ impl Controller {
         if !SIGNAL_WAITS.contains(&word) {
             return None;
         }
-        let io = &self.shared.io;
+        let io = self.shared.io();
         let system = io.system.as_ref()?;
         let id = system.id(args.first()?)?;
         let def = system.def(id)?;

@@ -12,7 +12,7 @@ use crate::RobotResources;
 use rapid_motion::plan::{AccelLimits, MoveRequest, PlannedMove, Planner, SpeedData, Target, ZoneData};
 use rapid_motion::{Joints, Kinematics};
 
-use rapid_vm::builtins::io::IoAccess;
+use rapid_signals::IoAccess;
 use rapid_vm::builtins::{present, Ctx, Resources, StopKind};
 use rapid_vm::errnames::Err;
 use rapid_vm::error::RapidError;

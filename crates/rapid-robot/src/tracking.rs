@@ -3,7 +3,7 @@
 
 use super::conveyor::{Fade, Mover, Span};
 use crate::RobotResources;
-use rapid_vm::builtins::io::IoAccess;
+use rapid_signals::IoAccess;
 use rapid_vm::builtins::{present, Ctx};
 use rapid_vm::errnames::Err;
 use rapid_vm::error::RapidError;

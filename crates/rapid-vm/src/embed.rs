@@ -132,6 +132,24 @@ pub trait TaskHooks: Sync {
         None
     }
 
+    /// The signal signal data (an argument, `\UIActiveSignal` of a wait's box) is
+    /// connected to, checked to be reachable now; `None` when the extension keeps no
+    /// signals.
+    fn signal_of(&self, _ctx: &mut Ctx<'_>, _arg: &Value) -> Option<Result<u32, RapidError>> {
+        None
+    }
+
+    /// Sets signal `id` (a digital output) to `value` now; `None` when the extension
+    /// keeps no signals.
+    fn set_signal(&self, _ctx: &mut Ctx<'_>, _id: u32, _value: f64) -> Option<Result<(), RapidError>> {
+        None
+    }
+
+    /// Swaps the part of the task's state every task of a controller shares with the
+    /// controller's (`Vm::exchange_shared`): `shared` holds the extensions' shared
+    /// state, one value per type, as [`Extensions`] holds a task's.
+    fn exchange_shared(&self, _resources: &mut Resources, _shared: &mut Extensions) {}
+
     /// For signal interrupts (`Source::Signal`, `Source::Analog`): brings the signals
     /// up to `now` and hands the changes logged from entry `from` of the extension's
     /// change log as (signal, new value), in the order they happened; answers the

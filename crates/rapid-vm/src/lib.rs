@@ -4,10 +4,12 @@
 //! file system, the network and the clocks through the [`world::World`] its embedder
 //! gives each task (the std ones live in `rapid_controller::host_std`); the sandbox
 //! of the file devices is the VM's own. It knows no configuration file format: the
-//! controller hands it its own types (a task's `builtins::rmq::RmqConfig`, a built
-//! `rapid_io::IoSystem`); the configuration data, the files and the sockets are the
-//! controller's bindings (`rapid_controller::bindings`), extensions that reach the
-//! interpreter through [`ext`]. RAPID call depth lives in explicit frames, never on
+//! controller hands it its own types (a task's `builtins::rmq::RmqConfig`); the I/O
+//! signals are the crate rapid-signals, and the configuration data, the files and the
+//! sockets the controller's bindings (`rapid_controller::bindings`): extensions that
+//! reach the interpreter through [`ext`]. It knows no I/O system (no rapid-io): signal
+//! data is a handle an extension gave, and the loop asks the extension through
+//! [`embed::TaskHooks`] (`read_signal`, `signal_changes`, `next_event`). RAPID call depth lives in explicit frames, never on
 //! the Rust stack.
 //!
 //! What an embedder adds (built-in families, per-task state, the hooks the loop
@@ -20,8 +22,8 @@
 //! its argument readers (`arg_name`, `call_place`, `in_trap`, `instruction_here`),
 //! [`builtins::Family`] with `builtins::native`, the catalogue argument layouts
 //! ([`builtins::signature`], the `layout!` macro), and the multitasking, interrupt and
-//! I/O helpers of `builtins::tasking`, `builtins::interrupts`, `builtins::io` and
-//! `builtins::io_wait`.
+//! waiting helpers of `builtins::tasking`, `builtins::interrupts` and
+//! `builtins::wait`.
 
 pub mod builtins;
 pub mod compile;

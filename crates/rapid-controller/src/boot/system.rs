@@ -9,7 +9,8 @@ use rapid_config::sys::{Sys, TaskType};
 use rapid_config::CfgFile;
 use rapid_robot::RobotResources;
 use rapid_sema::SourceInput;
-use rapid_vm::builtins::io::IoAccess;
+use rapid_signals::IoAccess;
+use rapid_signals::{SharedIoAccess, SignalsVm};
 use rapid_vm::Loaded;
 
 use super::cell::Cell;
@@ -24,7 +25,7 @@ const YUMI_ARM_ANGLE: &str = "IRB 14000 YuMi: the arm angle (robtarget eax_a) fo
      elsewhere than on a real YuMi (docs/real-systems.md)";
 
 /// A stimulus's input orders, reactions and pendant answers (`rapid_vm::builtins::io`).
-pub type Stimulus = (Vec<(f64, u32, f64)>, Vec<rapid_vm::builtins::io::Reaction>, Vec<(f64, String)>);
+pub type Stimulus = (Vec<(f64, u32, f64)>, Vec<rapid_signals::Reaction>, Vec<(f64, String)>);
 
 /// Reads the stimulus against the system's I/O system (none when it has none); the
 /// front end knows where it is and how it is written.
@@ -222,7 +223,7 @@ pub fn boot(
         }
         if let Some((_, first)) = tasks.first_mut() {
             for (name, kind) in made {
-                let kind = rapid_vm::builtins::io::kind_name(kind);
+                let kind = rapid_signals::kind_name(kind);
                 first.vm.resources_mut().note_later(format!("virtual signal {name} ({kind}) (--virtual-io)"));
             }
         }
@@ -288,8 +289,8 @@ pub fn boot(
     }
     if let Some((orders, reactions, answers)) = stimulus {
         let shared = controller.shared_mut();
-        shared.io.stimulus = orders.into();
-        shared.io.reactions = reactions;
+        shared.io_mut().stimulus = orders.into();
+        shared.io_mut().reactions = reactions;
         shared.answers = answers.into();
     }
     configure_operations(&mut controller, cell.syspar, sys, options.auto).map_err(BootError::Refused)?;

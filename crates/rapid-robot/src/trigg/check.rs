@@ -6,7 +6,7 @@
 use super::super::robot::{Action, PathEvent};
 use super::{check_value, define, inhib_place, place, refuse, Relation, Res, Special};
 use crate::RobotResources;
-use rapid_vm::builtins::io::IoAccess;
+use rapid_signals::IoAccess;
 use rapid_vm::builtins::{present, Ctx, Resources};
 use rapid_vm::errnames::Err;
 use rapid_vm::exec::storage::Storage;
@@ -32,7 +32,7 @@ pub(crate) fn trigg_check_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if !matches!(data, Value::Opaque(_)) {
         return Err(ctx.error(Err::ArgValue, "TriggCheckIO's Signal must be signal data (signaldi … signalgo)"));
     }
-    let signal = rapid_vm::builtins::io::signal(ctx, &args[ch.signal])?;
+    let signal = rapid_signals::signal(ctx, &args[ch.signal])?;
     let relation = ctx.num(&args[ch.relation])?;
     let Some(relation) = Relation::from_opnum(relation) else {
         return Err(ctx.error(Err::ArgValue, format!("Relation {relation} is not an opnum (LT … GT)")));

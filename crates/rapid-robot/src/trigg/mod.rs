@@ -31,7 +31,7 @@ pub(crate) use stopproc::{program_stopped, trigg_stop_proc};
 
 use super::robot::{At, PathEvent};
 use crate::RobotResources;
-use rapid_vm::builtins::io::IoAccess;
+use rapid_signals::IoAccess;
 use rapid_vm::builtins::{present, Ctx};
 use rapid_vm::errnames::Err;
 use rapid_vm::error::RapidError;

@@ -13,7 +13,7 @@ use crate::RobotResources;
 use std::rc::Rc;
 
 use super::Res;
-use rapid_vm::builtins::io::IoAccess;
+use rapid_signals::IoAccess;
 use rapid_vm::builtins::{present, Ctx, Resources};
 use rapid_vm::errnames::Err;
 use rapid_vm::exec::storage::Storage;
@@ -46,14 +46,14 @@ pub(crate) fn trigg_stop_proc(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let restart = (**restart).clone();
     let mut signal = |idx: usize| -> Result<Option<u32>, rapid_vm::error::RapidError> {
         if present(args.get(idx)) {
-            rapid_vm::builtins::io::signal(ctx, &args[idx]).map(Some)
+            rapid_signals::signal(ctx, &args[idx]).map(Some)
         } else {
             Ok(None)
         }
     };
     let do1 = signal(at.do1)?;
     let go = [signal(at.go1)?, signal(at.go2)?, signal(at.go3)?, signal(at.go4)?];
-    let shadow = rapid_vm::builtins::io::signal(ctx, &args[at.shadow])?;
+    let shadow = rapid_signals::signal(ctx, &args[at.shadow])?;
     ctx.resources.robot_mut().trigg.stop_proc = Some(StopProc { restart, do1, go, shadow });
     Ok(None)
 }

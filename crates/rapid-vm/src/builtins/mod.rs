@@ -14,10 +14,7 @@ mod dnheader;
 mod events;
 mod geometry;
 pub mod interrupts;
-pub mod io;
-mod io_units;
-pub(crate) mod io_visualize;
-pub mod io_wait;
+pub mod io_visualize;
 mod math;
 mod matrix;
 pub mod modules;
@@ -132,6 +129,8 @@ pub struct Resources {
     pub answers: std::collections::VecDeque<(f64, String)>,
     /// Notes for the run's user not yet told (see [`Resources::note_later`]).
     notes: Vec<String>,
+    /// The message boxes of waits with `\Visualize` under way, one per call depth.
+    pub(crate) boxes: Vec<io_visualize::ShownBox>,
     /// The task's interrupts (deleted at PP to Main).
     pub interrupts: interrupts::InterruptState,
     /// Which task this is and what the tasks share (sync points).
@@ -149,7 +148,9 @@ pub struct Resources {
 /// task's built-ins see the one I/O system and the one set of sync points.
 #[derive(Default)]
 pub struct Shared {
-    pub io: io::SharedIo,
+    /// The extensions' shared state (the signals: rapid-signals' `SharedIo`), swapped
+    /// in by their `TaskHooks::exchange_shared`.
+    pub extensions: crate::embed::Extensions,
     /// The operator's timed answers to pendant dialogs (a stimulus).
     pub answers: std::collections::VecDeque<(f64, String)>,
     pub tasking: tasking::SharedTasking,
@@ -170,7 +171,6 @@ impl Resources {
 
     /// Swaps the controller's shared state with the task's (hand in, take back).
     pub fn exchange_shared(&mut self, shared: &mut Shared) {
-        io::IoAccess::io_mut(self).exchange_shared(&mut shared.io);
         std::mem::swap(&mut self.answers, &mut shared.answers);
         std::mem::swap(&mut self.tasking.shared, &mut shared.tasking);
     }
@@ -433,10 +433,7 @@ pub(crate) static CORE_FAMILIES: &[&Family] = &[
     &dnheader::FAMILY,
     &modules::FAMILY,
     &random::FAMILY,
-    &io::FAMILY,
     &interrupts::FAMILY,
-    &io_wait::FAMILY,
-    &io_units::FAMILY,
     &spy::FAMILY,
     &tasking::FAMILY,
     &controller::FAMILY,

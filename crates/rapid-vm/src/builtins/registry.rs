@@ -121,8 +121,7 @@ impl Builtins {
             builtins: Vec::new(),
             by_name: FxHashMap::default(),
             files: Vec::new(),
-            // The I/O's hooks, while its families are the core's.
-            hooks: vec![&super::io::HOOKS],
+            hooks: Vec::new(),
             inits: Vec::new(),
         };
         for family in super::CORE_FAMILIES {

@@ -18,7 +18,6 @@ mod hooks;
 pub mod inspect;
 mod instr;
 mod interrupts;
-mod io;
 mod kernel;
 mod late;
 mod log;

@@ -1,5 +1,6 @@
 //! I/O signals (§1.9) on the task's I/O system (`crates/rapid-io`, an [`IoState`] in
-//! the task's extension slot, reached through [`IoAccess`]): AliasIO, AliasIOReset, Set, Reset, SetDO, SetAO, SetGO, InvertDO,
+//! the task's extension slot, reached through [`IoAccess`]), and the hooks the
+//! interpreter's loop asks ([`IoHooks`]): AliasIO, AliasIOReset, Set, Reset, SetDO, SetAO, SetGO, InvertDO,
 //! PulseDO, TestDI, ValidIO, GetSignalOrigin, GetGroupSignalInfo, and reading signals in
 //! expressions.
 //!
@@ -13,12 +14,13 @@
 use rapid_io::{IoSystem, SignalKind};
 use rapid_sema::types::TypeId;
 
-use super::{native, present, Ctx, Family, Resources};
-use crate::embed::{TaskHooks, TaskState};
-use crate::errnames::Err;
-use crate::error::RapidError;
-use crate::exec::storage::Storage;
-use crate::value::{Opaque, OpaqueState, Value};
+use rapid_vm::builtins::Shared;
+use rapid_vm::embed::{Extensions, TaskHooks, TaskState};
+use rapid_vm::errnames::Err;
+use rapid_vm::error::RapidError;
+use rapid_vm::exec::storage::Storage;
+use rapid_vm::ext::{native, present, Ctx, Family, Resources};
+use rapid_vm::value::{Opaque, OpaqueState, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -43,8 +45,6 @@ pub struct IoState {
     /// `--virtual-io`: AliasIO makes a virtual signal of a name the configuration
     /// lacks (also one computed at run time) instead of raising ERR_ALIASIO_DEF.
     pub virtual_io: bool,
-    /// The message boxes of waits with `\Visualize` under way, one per call depth.
-    pub(crate) boxes: Vec<super::io_visualize::ShownBox>,
 }
 
 /// The part of the I/O state every task of a controller shares: the signals, what the
@@ -76,10 +76,38 @@ static NO_IO: IoState = IoState {
     path_orders: std::collections::VecDeque::new(),
     seen_changes: 0,
     virtual_io: false,
-    boxes: Vec::new(),
+};
+
+/// A controller without I/O shares this.
+static NO_SHARED_IO: SharedIo = SharedIo {
+    system: None,
+    stimulus: std::collections::VecDeque::new(),
+    reactions: Vec::new(),
+    path_orders: std::collections::VecDeque::new(),
+    seen_changes: 0,
 };
 
 impl TaskState for IoState {}
+
+impl TaskState for SharedIo {}
+
+/// The controller's shared I/O (in `Shared::extensions`).
+pub trait SharedIoAccess {
+    /// The shared I/O (an empty one when there is none yet).
+    fn io(&self) -> &SharedIo;
+    /// The shared I/O to change (put in at its default first).
+    fn io_mut(&mut self) -> &mut SharedIo;
+}
+
+impl SharedIoAccess for Shared {
+    fn io(&self) -> &SharedIo {
+        self.extensions.get::<SharedIo>().unwrap_or(&NO_SHARED_IO)
+    }
+
+    fn io_mut(&mut self) -> &mut SharedIo {
+        self.extensions.get_or_default::<SharedIo>()
+    }
+}
 
 /// The task's I/O state in its extension slot (`Resources::extensions`).
 pub trait IoAccess {
@@ -116,7 +144,7 @@ impl IoState {
     }
 }
 
-/// What the interpreter's loop asks of the I/O (`crate::embed::TaskHooks`): signals
+/// What the interpreter's loop asks of the I/O (`rapid_vm::embed::TaskHooks`): signals
 /// read in expressions, the changes signal interrupts look at, the next scheduled
 /// change (waits and interrupts look again then), the configuration's signals
 /// connected at load and after PP to Main.
@@ -148,6 +176,18 @@ impl TaskHooks for IoHooks {
 
     fn read_signal(&self, resources: &mut Resources, time: f64, data: &Value) -> Option<Result<f64, Option<String>>> {
         Some(read_signal(resources, time, data))
+    }
+
+    fn signal_of(&self, ctx: &mut Ctx<'_>, arg: &Value) -> Option<Result<u32, RapidError>> {
+        Some(signal(ctx, arg))
+    }
+
+    fn set_signal(&self, ctx: &mut Ctx<'_>, id: u32, value: f64) -> Option<Result<(), RapidError>> {
+        Some(order(ctx, |io, t| io.set(id, value, t)).map(|_| ()))
+    }
+
+    fn exchange_shared(&self, resources: &mut Resources, shared: &mut Extensions) {
+        resources.io_mut().exchange_shared(shared.get_or_default::<SharedIo>());
     }
 
     fn signal_changes(
@@ -334,7 +374,7 @@ pub fn signal(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
 
 /// The signal id signal data (an argument) is connected to, whatever its device's state;
 /// ERR_NO_ALIASIO_DEF when not connected.
-pub(super) fn connected(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
+pub(crate) fn connected(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
     let data = ctx.value(arg)?;
     let Some((id, _)) = handle_of(&data) else {
         return Err(ctx.error(Err::NoAliasIoDef, "the signal variable is not connected to an I/O signal (AliasIO)"));
@@ -377,7 +417,7 @@ fn reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     order(ctx, |io, t| io.set(id, 0.0, t))
 }
 
-super::signature::layout! {
+rapid_vm::layout! {
     static SET_DO: SetDoArgs = "SetDO" { s_delay: "SDelay", signal: "Signal", value: "Value" }
     static SET_GO: SetGoArgs = "SetGO" { s_delay: "SDelay", signal: "Signal", value: "Value", dvalue: "Dvalue" }
     static PULSE_DO: PulseDoArgs = "PulseDO" { high: "High", p_length: "PLength", signal: "Signal" }
@@ -589,7 +629,7 @@ fn alias_io_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-pub(super) static FAMILY: Family = Family {
+pub(crate) static FAMILY: Family = Family {
     file: file!(),
     builtins: &[
         native("AliasIO", alias_io),

@@ -10,11 +10,12 @@
 //! (ERR_IODISABLE cannot happen; uncertain). Every network runs, so IOBusStart has
 //! nothing to start. Unknown names raise ERR_NAME_INVALID.
 
-use super::io::IoAccess;
-use super::{native, present, Ctx, Family, StopKind};
-use crate::errnames::Err;
-use crate::error::RapidError;
-use crate::value::Value;
+use rapid_vm::errnames::Err;
+use rapid_vm::error::RapidError;
+use rapid_vm::ext::{native, present, Ctx, Family, StopKind};
+use rapid_vm::value::Value;
+
+use crate::io::IoAccess;
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -98,7 +99,7 @@ fn connected(ctx: &Ctx<'_>, name: &str) -> bool {
 /// IOEnable of a device that does not answer: waits for the stimulus to connect it
 /// (the instruction runs again then), at most `max` seconds from the first try.
 fn wait_for_device(ctx: &mut Ctx<'_>, name: &str, max: f64) -> Res {
-    let here = (ctx.chain.len(), ctx.chain.last().map_or(0, |frame| frame.position().1));
+    let here = rapid_vm::ext::call_site(ctx);
     let now = ctx.time;
     let started = match ctx.resources.waiting {
         Some((depth, pc, at)) if (depth, pc) == here => at,
@@ -110,7 +111,7 @@ fn wait_for_device(ctx: &mut Ctx<'_>, name: &str, max: f64) -> Res {
         return Err(ctx.error(Err::IoEnable, format!("I/O device `{name}` did not answer within MaxTime {max} s")));
     }
     ctx.resources.waiting = Some((here.0, here.1, started));
-    let next = super::wait::next_event(ctx).map_or(deadline, |t| t.min(deadline));
+    let next = rapid_vm::ext::next_event(ctx).map_or(deadline, |t| t.min(deadline));
     ctx.wait = Some((next - now).max(1e-6));
     ctx.stop = StopKind::Repeat;
     Ok(None)
@@ -168,7 +169,7 @@ fn io_bus_start(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-crate::builtins::signature::layout! {
+rapid_vm::layout! {
     static EVENT_MESSAGE: EventMessageArgs = "IOEventMessage" { device_name: "DeviceName" }
 }
 
@@ -179,7 +180,7 @@ fn io_event_message(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-pub(super) static FAMILY: Family = Family {
+pub(crate) static FAMILY: Family = Family {
     file: file!(),
     builtins: &[
         native("IODisable", io_disable),

@@ -9,13 +9,12 @@
 
 use std::sync::LazyLock;
 
-use super::io::{signal, IoAccess};
-use super::io_visualize::{self, BoxArgs};
-use super::wait::{wait_again, wait_started};
-use super::{native, present, Ctx, Family};
-use crate::errnames::Err;
-use crate::error::RapidError;
-use crate::value::Value;
+use rapid_vm::errnames::Err;
+use rapid_vm::error::RapidError;
+use rapid_vm::ext::{native, present, visualize_step, wait_again, wait_started, BoxArgs, Ctx, Family};
+use rapid_vm::value::Value;
+
+use crate::io::{signal, IoAccess};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -61,7 +60,7 @@ impl Layout {
     /// The layout of wait instruction `name`, by the parameter names of its
     /// declaration (see `signature.rs`).
     fn of(name: &str) -> Layout {
-        let sig = super::signature::of(name);
+        let sig = rapid_vm::ext::signature(name);
         Layout {
             signal: sig.at("Signal"),
             not_eq: sig.at("NOTEQ"),
@@ -123,8 +122,8 @@ fn wait(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, shown: &BoxArgs, com
     let now = ctx.time;
     let started = wait_started(ctx);
     if compare.holds(value, target) {
-        ctx.resources.waiting = None;
-        io_visualize::step(ctx, args, shown, true)?;
+        ctx.resources.end_wait();
+        visualize_step(ctx, args, shown, true)?;
         if let Some(flag) = layout.time_flag.filter(|&f| present(args.get(f))) {
             ctx.store(&args[flag], Value::Bool(false))?;
         }
@@ -132,12 +131,12 @@ fn wait(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, shown: &BoxArgs, com
     }
     let deadline = ctx.opt_num(args.get(layout.max_time))?.map(|max| started + max);
     if deadline.is_some_and(|d| now >= d) {
-        ctx.resources.waiting = None;
-        io_visualize::step(ctx, args, shown, true)?;
+        ctx.resources.end_wait();
+        visualize_step(ctx, args, shown, true)?;
         return timed_out(ctx, args, layout, value);
     }
     // The box (with \Visualize) is shown while the wait goes on, unchanged.
-    let box_closes = io_visualize::step(ctx, args, shown, false)?;
+    let box_closes = visualize_step(ctx, args, shown, false)?;
     wait_again(ctx, started, deadline, box_closes);
     Ok(None)
 }
@@ -160,7 +159,7 @@ fn timed_out(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, value: f64) -> 
     Err(ctx.error(Err::WaitMaxTime, "the signal did not reach the value within \\MaxTime"))
 }
 
-pub(super) static FAMILY: Family = Family {
+pub(crate) static FAMILY: Family = Family {
     file: file!(),
     builtins: &[
         native("WaitDI", wait_digital),
@@ -175,7 +174,7 @@ pub(super) static FAMILY: Family = Family {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::builtins::signature::ABSENT;
+    use rapid_vm::builtins::signature::ABSENT;
 
     // Positions counted by hand from the manual's syntax:
     // WaitDI Signal Value [\MaxTime] [\TimeFlag] [\Visualize] …

@@ -3,8 +3,14 @@
 
 use rapid_io::{IoSystem, SignalDef, SignalKind};
 use rapid_sema::SourceInput;
-use rapid_vm::builtins::io::IoAccess;
-use rapid_vm::{load, Exit, RecordingHost};
+use rapid_signals::IoAccess;
+use rapid_vm::{Exit, LoadError, Loaded, RecordingHost};
+
+/// Loads with the language's built-ins and the I/O signals' (rapid-signals).
+fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
+    let set = std::sync::Arc::new(rapid_vm::builtins::Builtins::new(&[&rapid_signals::EXTENSION]));
+    rapid_vm::load_in(files, entry, &rapid_sema::Options::default(), set)
+}
 
 /// di1 (the input waited for), gi1 (4 bits), ui1 (the box's \UIActiveSignal).
 fn io_system() -> IoSystem {
