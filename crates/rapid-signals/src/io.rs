@@ -134,7 +134,8 @@ impl IoState {
         self.path_orders.insert(at, (time, signal, value));
     }
 
-    /// Swaps the shared part with the controller's (see `Resources::exchange_shared`).
+    /// Swaps the shared part with the controller's (`TaskHooks::exchange_shared`, each
+    /// time the controller hands the task in or out).
     pub fn exchange_shared(&mut self, shared: &mut SharedIo) {
         std::mem::swap(&mut self.system, &mut shared.system);
         std::mem::swap(&mut self.stimulus, &mut shared.stimulus);

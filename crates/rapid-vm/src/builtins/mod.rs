@@ -169,7 +169,8 @@ impl Resources {
         self.extensions.close_all();
     }
 
-    /// Swaps the controller's shared state with the task's (hand in, take back).
+    /// Swaps the controller's shared state with the task's (hand in, take back): the
+    /// core's part; the extensions' part goes with it in `Vm::exchange_shared`.
     pub fn exchange_shared(&mut self, shared: &mut Shared) {
         std::mem::swap(&mut self.answers, &mut shared.answers);
         std::mem::swap(&mut self.tasking.shared, &mut shared.tasking);
