@@ -24,7 +24,7 @@ const YUMI_ARM_ANGLE: &str = "IRB 14000 YuMi: the arm angle (robtarget eax_a) fo
      not ABB's (not public): every TCP pose is reached as written, but axis 7 and the elbow may stand \
      elsewhere than on a real YuMi (docs/real-systems.md)";
 
-/// A stimulus's input orders, reactions and pendant answers (`rapid_vm::builtins::io`).
+/// A stimulus's input orders, reactions and pendant answers (`rapid_signals::io`).
 pub type Stimulus = (Vec<(f64, u32, f64)>, Vec<rapid_signals::Reaction>, Vec<(f64, String)>);
 
 /// Reads the stimulus against the system's I/O system (none when it has none); the
