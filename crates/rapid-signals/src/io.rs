@@ -656,3 +656,51 @@ pub(crate) static FAMILY: Family = Family {
         native("GetGroupSignalInfo", get_group_signal_info),
     ],
 };
+
+#[cfg(test)]
+mod tests {
+    use rapid_io::{IoSystem, SignalDef, SignalKind};
+    use rapid_vm::embed::TaskHooks;
+    use rapid_vm::ext::Resources;
+
+    use super::{IoAccess, HOOKS};
+
+    /// A task's resources with do1 (id 0) and di1 (id 1); do1 set to 1 at 0 s, and a
+    /// stimulus setting di1 to 1 at 0.5 s and to 0 at 3 s.
+    fn resources() -> Resources {
+        let defs = vec![SignalDef::new("do1", SignalKind::DO), SignalDef::new("di1", SignalKind::DI)];
+        let mut system = IoSystem::new(defs, Vec::new()).expect("a valid configuration");
+        let (do1, di1) = (system.id("do1").expect("do1"), system.id("di1").expect("di1"));
+        system.set(do1, 1.0, 0.0).expect("do1 is an output the program may set");
+        let mut resources = Resources::default();
+        let io = resources.io_mut();
+        io.system = Some(system);
+        io.stimulus.extend([(0.5, di1, 1.0), (3.0, di1, 0.0)]);
+        resources
+    }
+
+    #[test]
+    fn signal_interrupts_get_the_changes_since_their_last_look_in_order() {
+        let mut resources = resources();
+        let mut changes = Vec::new();
+        // By 1 s: do1 rose at 0 s, the stimulus raised di1 at 0.5 s.
+        assert_eq!(HOOKS.signal_changes(&mut resources, 1.0, 0, &mut changes), Some(2));
+        assert_eq!(changes, [(0, 1.0), (1, 1.0)]);
+        changes.clear();
+        // Nothing new by 2 s; the stimulus's next line is due at 3 s.
+        assert_eq!(HOOKS.signal_changes(&mut resources, 2.0, 2, &mut changes), Some(2));
+        assert!(changes.is_empty());
+        assert_eq!(HOOKS.next_event(&mut resources), Some(3.0));
+        assert_eq!(HOOKS.signal_changes(&mut resources, 3.0, 2, &mut changes), Some(3));
+        assert_eq!(changes, [(1, 0.0)]);
+    }
+
+    #[test]
+    fn a_task_without_io_has_no_signal_events() {
+        let mut resources = Resources::default();
+        assert_eq!(HOOKS.next_event(&mut resources), None);
+        let mut changes = Vec::new();
+        assert_eq!(HOOKS.signal_changes(&mut resources, 1.0, 0, &mut changes), Some(0));
+        assert!(changes.is_empty());
+    }
+}
