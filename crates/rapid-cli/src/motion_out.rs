@@ -11,6 +11,7 @@ use rapid_motion::Pose;
 use rapid_robot::robot::{MoveFacts, RobotState};
 use rapid_robot::RobotResources;
 use rapid_sema::SourceInput;
+use rapid_signals::IoAccess;
 use rapid_syntax::LineIndex;
 use rustc_hash::FxHashMap;
 
@@ -31,13 +32,16 @@ pub(crate) fn finish(
     // Outputs the last moves set as the robot passed their points (Move*DO …).
     for (time, action) in std::mem::take(&mut resources.robot_mut().due) {
         let rapid_robot::robot::Action::Set { signal, value } = action else { continue };
-        resources.io.order_on_path(time.max(program_end), signal, value);
+        resources.io_mut().order_on_path(time.max(program_end), signal, value);
     }
     // The controller's clock has reached the end of the program and of the motion:
     // orders due by then (delayed sets, pulse ends, path events) have happened.
-    resources.io.advance(program_end.max(motion_end));
+    resources.io_mut().advance(program_end.max(motion_end));
     // The conveyors' whole input history, for the trace of a tracking robot.
-    rapid_robot::robot_in(&mut resources.extensions).refresh_conveyors(resources.io.system.as_ref());
+    // (The robot's state and the I/O's share the extension slot: the signals are lent.)
+    let system = resources.io_mut().system.take();
+    rapid_robot::robot_in(&mut resources.extensions).refresh_conveyors(system.as_ref());
+    resources.io_mut().system = system;
     let robot = resources.robot_mut();
     let cycle = program_end.max(motion_end).min(limit);
     if robot.moves == 0 {

@@ -15,6 +15,7 @@ use rapid_vm::{LoadError, Loaded};
 
 /// The extensions the controller installs, one a line, in registration order.
 static EXTENSIONS: &[&Extension] = &[
+    &rapid_signals::EXTENSION,            // I/O signals (the robot reads and sets them)
     &rapid_robot::EXTENSION,              // the robot
     &crate::bindings::files::EXTENSION,   // files and folders
     &crate::bindings::sockets::EXTENSION, // sockets
@@ -56,6 +57,10 @@ mod tests {
         "GetModalPayLoadMode",
         "RMQSendMessage",
         "IRMQMessage",
+        "SetDO",
+        "WaitDI",
+        "ISignalDI",
+        "IOEnable",
     ];
 
     #[test]

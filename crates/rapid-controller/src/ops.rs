@@ -15,6 +15,7 @@
 
 use rapid_config::eio::{Eio, SysAction, SysStatus};
 use rapid_robot::RobotResources;
+use rapid_signals::SharedIoAccess;
 use rapid_vm::builtins::controller::RunMode;
 use rapid_vm::Host;
 
@@ -185,7 +186,7 @@ impl Controller {
             };
             outputs.push(SysOutput { id, status: output.status, task });
         }
-        self.ops.seen_changes = self.shared.io.change_count();
+        self.ops.seen_changes = self.shared.io().change_count();
         self.ops.watch_motion = outputs.iter().any(|o| o.status == SysStatus::MechUnitNotMoving);
         self.ops.inputs = inputs;
         self.ops.outputs = outputs;
@@ -374,7 +375,7 @@ impl Controller {
     /// come due, a change the system inputs have not seen): only then is it advanced,
     /// as this is looked at between any two instructions.
     fn io_event_due(&self) -> bool {
-        let io = &self.shared.io;
+        let io = self.shared.io();
         let now = self.time;
         let at = |front: Option<&(f64, u32, f64)>| front.is_some_and(|&(t, _, _)| t <= now);
         at(io.stimulus.front())
@@ -403,10 +404,10 @@ impl Controller {
         if self.ops.inputs.is_empty() {
             return None;
         }
-        let mut io = rapid_vm::builtins::io::IoState::default();
-        io.exchange_shared(&mut self.shared.io);
+        let mut io = rapid_signals::IoState::default();
+        io.exchange_shared(self.shared.io_mut());
         let next = io.next_event_time();
-        io.exchange_shared(&mut self.shared.io);
+        io.exchange_shared(self.shared.io_mut());
         next
     }
 
@@ -515,8 +516,8 @@ impl Controller {
 
     /// Brings the I/O system to now and acts on the rising edges of system inputs.
     fn follow_inputs(&mut self, host: &mut dyn Host) {
-        let mut io = rapid_vm::builtins::io::IoState::default();
-        io.exchange_shared(&mut self.shared.io);
+        let mut io = rapid_signals::IoState::default();
+        io.exchange_shared(self.shared.io_mut());
         io.advance(self.time);
         let changes = io.system.as_ref().map(|s| s.changes()).unwrap_or(&[]);
         let start = self.ops.seen_changes.min(changes.len());
@@ -528,7 +529,7 @@ impl Controller {
             }
         }
         self.ops.seen_changes = changes.len();
-        io.exchange_shared(&mut self.shared.io);
+        io.exchange_shared(self.shared.io_mut());
         for (action, arg) in actions {
             self.act(host, action, arg.as_deref());
         }
@@ -627,7 +628,7 @@ impl Controller {
             })
             .collect();
         let time = self.time;
-        if let Some(io) = self.shared.io.system.as_mut() {
+        if let Some(io) = self.shared.io_mut().system.as_mut() {
             for (id, value) in values {
                 // The value is a digital one of a DO (checked with the configuration).
                 let _ = io.set_by_system(id, value, time);

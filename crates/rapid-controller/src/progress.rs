@@ -20,6 +20,7 @@
 //! not wait), or a NORMAL task that is not waiting: the run can progress.
 
 use rapid_robot::RobotResources;
+use rapid_signals::SharedIoAccess;
 use rapid_vm::value::Value;
 use rapid_vm::Vm;
 
@@ -70,7 +71,7 @@ impl Controller {
         if self.program_state() != crate::ProgramState::Running {
             return None;
         }
-        let io = &self.shared.io;
+        let io = self.shared.io();
         let system = io.system.as_ref()?;
         if system.next_event_time().is_some() || !io.stimulus.is_empty() || !io.path_orders.is_empty() {
             return None;
@@ -139,14 +140,14 @@ impl Controller {
         if !SIGNAL_WAITS.contains(&word) {
             return None;
         }
-        let io = &self.shared.io;
+        let io = self.shared.io();
         let system = io.system.as_ref()?;
         let id = system.id(args.first()?)?;
         let def = system.def(id)?;
         if !def.kind.is_input() || system.is_cross_result(id) || io.reactions.iter().any(|r| r.target == id) {
             return None;
         }
-        wait.since = vm.resources().io.wait_started().unwrap_or(self.time);
+        wait.since = vm.resources().wait_started().unwrap_or(self.time);
         wait.why = format!("{} is {}", def.name, system.value(id).unwrap_or(0.0));
         Some(Wait::Input(wait))
     }

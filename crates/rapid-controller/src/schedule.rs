@@ -3,6 +3,7 @@
 //! runnable task waits, and by a nominal statement time while tasks compute, so a task
 //! that polls in a loop does not stop the clock for the others.
 
+use rapid_signals::{SharedIoAccess, SignalsVm};
 use rapid_vm::builtins::tasking::{SharedTasking, TaskInfo};
 use rapid_vm::builtins::Shared;
 use rapid_vm::{Exit, Host, Loaded};
@@ -142,7 +143,7 @@ impl Controller {
             })
             .collect();
         let mut shared = Shared { tasking: SharedTasking::new(infos), ..Shared::default() };
-        shared.io.system = io;
+        shared.io_mut().system = io;
         let maps = tasks
             .iter()
             .map(|(_, from)| tasks.iter().map(|(_, to)| type_map(&from.types_by_name, &to.types_by_name)).collect())
@@ -203,7 +204,7 @@ impl Controller {
 
     /// The I/O system the tasks share (its change log), if there is one.
     pub fn io_system(&self) -> Option<&rapid_io::IoSystem> {
-        self.shared.io.system.as_ref()
+        self.shared.io().system.as_ref()
     }
 
     /// The shared state, to configure before the run (the stimulus).
@@ -568,7 +569,7 @@ impl Controller {
     /// Everything a waiting task may be waiting for: signal changes, sync points,
     /// semaphores and shared persistents.
     pub(crate) fn epoch(&self) -> u64 {
-        self.shared.io.change_count() as u64 + self.shared.tasking.epoch + self.pers.generation
+        self.shared.io().change_count() as u64 + self.shared.tasking.epoch + self.pers.generation
     }
 
     /// Waiting tasks whose time has come, or whose condition may now hold.

@@ -7,7 +7,8 @@
 //! servo and supervision), MultiMove's synchronized movement (`syncmove`), the
 //! active tool, work object and payload (`sysdata`), and what the trace and the
 //! report read of a robot. It plans through rapid-motion and sets trigger outputs
-//! through rapid-io.
+//! through rapid-signals (the task's I/O state, `rapid_signals::IoAccess`) on
+//! rapid-io's model.
 //!
 //! What it must not know: no controller (task scheduling, system assembly,
 //! configuration files: the controller hands it a built robot and links its tasks,

@@ -16,6 +16,7 @@ use super::layout::{
     MOVE_ABS_J, MOVE_C, MOVE_C_AO, MOVE_C_DO, MOVE_C_GO, MOVE_C_SYNC, MOVE_J, MOVE_J_AO, MOVE_J_DO, MOVE_J_GO,
     MOVE_J_SYNC, MOVE_L, MOVE_L_AO, MOVE_L_DO, MOVE_L_GO, MOVE_L_SYNC,
 };
+use rapid_signals::IoAccess;
 use rapid_vm::builtins::{present, Ctx};
 use rapid_vm::error::RapidError;
 use rapid_vm::value::Value;
@@ -486,7 +487,7 @@ pub(super) fn circular_move(
 /// The output a Move*DO/AO/GO sets: its signal and value (a group's `\Dvalue` too).
 fn path_event(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout) -> Result<Vec<super::robot::PathEvent>, RapidError> {
     use super::robot::{Action, At, PathEvent};
-    let id = rapid_vm::builtins::io::signal(ctx, &args[layout.signal])?;
+    let id = rapid_signals::signal(ctx, &args[layout.signal])?;
     let value = match layout.dvalue.and_then(|at| args.get(at)) {
         Some(dvalue) if present(Some(dvalue)) => ctx.num(dvalue)?,
         _ => ctx.num(&args[layout.value])?,
@@ -605,16 +606,16 @@ pub(crate) fn apply_due_events(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
         match action {
             super::robot::Action::Set { signal: id, value } => {
                 if time > ctx.time {
-                    ctx.resources.io.order_on_path(time, id, value);
+                    ctx.resources.io_mut().order_on_path(time, id, value);
                 } else {
-                    rapid_vm::builtins::io::order(ctx, |io, t| io.set(id, value, t))?;
+                    rapid_signals::order(ctx, |io, t| io.set(id, value, t))?;
                 }
             }
             super::robot::Action::ZoneSet { signal: id, value } => {
                 if time > ctx.time {
-                    ctx.resources.io.order_on_path(time, id, value);
+                    ctx.resources.io_mut().order_on_path(time, id, value);
                 } else {
-                    rapid_vm::builtins::io::order(ctx, |io, t| io.set_by_system(id, value, t))?;
+                    rapid_signals::order(ctx, |io, t| io.set_by_system(id, value, t))?;
                 }
             }
             super::robot::Action::Interrupt(number) => ctx.resources.interrupts.schedule(time, number),

@@ -12,6 +12,7 @@ use crate::RobotResources;
 use rapid_motion::plan::{AccelLimits, MoveRequest, PlannedMove, Planner, SpeedData, Target, ZoneData};
 use rapid_motion::{Joints, Kinematics};
 
+use rapid_signals::IoAccess;
 use rapid_vm::builtins::{present, Ctx, Resources, StopKind};
 use rapid_vm::errnames::Err;
 use rapid_vm::error::RapidError;
@@ -105,16 +106,16 @@ pub(super) fn pause_at(ctx: &mut Ctx<'_>, since: f64) -> Result<Pause, RapidErro
 fn hold_after(resources: &mut Resources, since: f64) -> Pause {
     let held_wait = resources.robot_mut().hold_until.map(|_| f64::INFINITY);
     let held_wait = std::mem::replace(&mut resources.robot_mut().hold_until, held_wait);
-    let orders = &mut resources.io.path_orders;
+    let orders = &mut resources.io_mut().path_orders;
     let split = orders.partition_point(|&(t, _, _)| t <= since);
     let held_orders = orders.split_off(split).into_iter().collect();
     let scheduled = &mut resources.interrupts.scheduled;
     let held_interrupts = scheduled.iter().copied().filter(|&(t, _)| t > since).collect();
     scheduled.retain(|&(t, _)| t <= since);
     let mut speed_outputs = Vec::new();
-    resources.io.advance(since);
+    resources.io_mut().advance(since);
     let speed_signals = resources.robot().trigg.speed_outputs_after(since);
-    if let Some(io) = resources.io.system.as_mut() {
+    if let Some(io) = resources.io_mut().system.as_mut() {
         for signal in speed_signals {
             speed_outputs.push((signal, io.value(signal).unwrap_or(0.0)));
             let _ = io.set(signal, 0.0, since);
@@ -228,10 +229,10 @@ fn restart(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
     }
     robot.hold_until = pause.held_wait.map(|t| t + dt);
     for (signal, value) in pause.speed_outputs {
-        ctx.resources.io.order_on_path(now, signal, value);
+        ctx.resources.io_mut().order_on_path(now, signal, value);
     }
     for (t, signal, value) in pause.held_orders {
-        ctx.resources.io.order_on_path(t + dt, signal, value);
+        ctx.resources.io_mut().order_on_path(t + dt, signal, value);
     }
     for (t, number) in pause.held_interrupts {
         ctx.resources.interrupts.schedule(t + dt, number);
@@ -315,8 +316,8 @@ pub(crate) fn clear_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     // TriggSpeed outputs end with the path: 0, as the robot stands.
     let speed_outputs = ctx.resources.robot_mut().trigg.speed_outputs_after(since);
     ctx.resources.robot_mut().trigg.speed_outputs.clear();
-    ctx.resources.io.advance(now);
-    if let Some(io) = ctx.resources.io.system.as_mut() {
+    ctx.resources.io_mut().advance(now);
+    if let Some(io) = ctx.resources.io_mut().system.as_mut() {
         for signal in speed_outputs {
             let _ = io.set(signal, 0.0, now);
         }
@@ -331,7 +332,7 @@ pub(crate) fn clear_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
         pause.regain = None;
     } else {
         ctx.resources.robot_mut().hold_until = None;
-        let orders = &mut ctx.resources.io.path_orders;
+        let orders = &mut ctx.resources.io_mut().path_orders;
         orders.retain(|&(t, _, _)| t <= now);
         ctx.resources.interrupts.scheduled.retain(|&(t, _)| t <= now);
     }

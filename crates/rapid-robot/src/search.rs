@@ -18,6 +18,7 @@ use rapid_motion::plan::{MoveRequest, Target};
 
 use super::data;
 use super::moves::EOffsRule;
+use rapid_signals::IoAccess;
 use rapid_vm::builtins::{present, Ctx, StopKind};
 use rapid_vm::errnames::Err;
 use rapid_vm::error::RapidError;
@@ -270,9 +271,9 @@ fn level_now(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<(bool, usize), RapidEr
     if present(args.get(HEAD.pers_bool)) {
         return Ok((matches!(ctx.value(&args[HEAD.pers_bool])?, Value::Bool(true)), 0));
     }
-    let id = rapid_vm::builtins::io::signal(ctx, &args[HEAD.signal])?;
-    ctx.resources.io.advance(ctx.time);
-    let io = ctx.resources.io.system.as_ref();
+    let id = rapid_signals::signal(ctx, &args[HEAD.signal])?;
+    ctx.resources.io_mut().advance(ctx.time);
+    let io = ctx.resources.io().system.as_ref();
     let level = io.and_then(|io| io.value(id)).unwrap_or(0.0) != 0.0;
     Ok((level, io.map_or(0, |io| io.changes().len())))
 }
@@ -302,7 +303,7 @@ fn look(ctx: &mut Ctx<'_>, args: &[Value], mut search: Search) -> Res {
         }
     }
     if now < search.end {
-        let next = ctx.resources.io.next_event_time().map_or(search.end, |n| n.min(search.end));
+        let next = rapid_vm::ext::next_event(ctx).map_or(search.end, |n| n.min(search.end));
         ctx.wait = Some((next - now).max(1e-6));
         ctx.stop = StopKind::Repeat;
         ctx.resources.robot_mut().search = Some(search);
@@ -348,9 +349,9 @@ fn events(ctx: &mut Ctx<'_>, args: &[Value], search: &mut Search) -> Result<Vec<
         let old = std::mem::replace(&mut search.last, level);
         return Ok(if old != level { vec![(ctx.time, old, level)] } else { Vec::new() });
     }
-    let id = rapid_vm::builtins::io::signal(ctx, &args[HEAD.signal])?;
-    ctx.resources.io.advance(ctx.time);
-    let Some(io) = ctx.resources.io.system.as_ref() else { return Ok(Vec::new()) };
+    let id = rapid_signals::signal(ctx, &args[HEAD.signal])?;
+    ctx.resources.io_mut().advance(ctx.time);
+    let Some(io) = ctx.resources.io().system.as_ref() else { return Ok(Vec::new()) };
     let changes = io.changes();
     let found = changes
         .get(search.seen..)

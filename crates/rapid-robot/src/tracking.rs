@@ -3,6 +3,7 @@
 
 use super::conveyor::{Fade, Mover, Span};
 use crate::RobotResources;
+use rapid_signals::IoAccess;
 use rapid_vm::builtins::{present, Ctx};
 use rapid_vm::errnames::Err;
 use rapid_vm::error::RapidError;
@@ -15,9 +16,12 @@ pub(super) fn refresh(ctx: &mut Ctx<'_>) {
     if ctx.resources.robot_mut().following.conveyors.is_empty() {
         return;
     }
-    ctx.resources.io.advance(ctx.time);
-    let resources = &mut *ctx.resources;
-    super::robot_in(&mut resources.extensions).refresh_conveyors(resources.io.system.as_ref());
+    ctx.resources.io_mut().advance(ctx.time);
+    // The robot's state and the I/O's share the extension slot: the signals are
+    // lent out for the look.
+    let system = ctx.resources.io_mut().system.take();
+    super::robot_in(&mut ctx.resources.extensions).refresh_conveyors(system.as_ref());
+    ctx.resources.io_mut().system = system;
 }
 
 /// What carries a work object that moves: a conveyor, an external unit, or an external
@@ -133,19 +137,19 @@ pub(crate) fn wait_wobj(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// The wait goes on until the next input change, the object's arrival or `\MaxTime`.
 fn keep_waiting(ctx: &mut Ctx<'_>, args: &[Value], arrival: Option<f64>) -> Res {
-    let started = rapid_vm::builtins::io_wait::wait_started(ctx);
+    let started = rapid_vm::builtins::wait::wait_started(ctx);
     let deadline = ctx.opt_num(args.get(2))?.map(|max| started + max);
     if deadline.is_some_and(|d| ctx.time >= d) {
         return end_wait(ctx, args, true);
     }
-    rapid_vm::builtins::io_wait::wait_again(ctx, started, deadline, arrival);
+    rapid_vm::builtins::wait::wait_again(ctx, started, deadline, arrival);
     Ok(None)
 }
 
 /// The wait is over: connected, or (`timed_out`) `\MaxTime` ran out — with `\TimeFlag`
 /// the flag says so, without it ERR_WAIT_MAXTIME.
 fn end_wait(ctx: &mut Ctx<'_>, args: &[Value], timed_out: bool) -> Res {
-    ctx.resources.io.end_wait();
+    ctx.resources.end_wait();
     if let Some(flag) = args.get(3).filter(|f| present(Some(f))) {
         ctx.store(flag, Value::Bool(timed_out))?;
         return Ok(None);

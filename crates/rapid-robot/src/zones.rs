@@ -256,7 +256,7 @@ pub(crate) fn wz_do_set(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let at = *DO_SET;
     let before = present(args.get(at.before));
     let shape = shape_of(ctx, &args[at.shape])?;
-    let signal = rapid_vm::builtins::io::signal(ctx, &args[at.signal])?;
+    let signal = rapid_signals::signal(ctx, &args[at.signal])?;
     let value = ctx.num(&args[at.value])?;
     activate(ctx, args, shape, ZoneKind::DoSet { signal, value, before })
 }

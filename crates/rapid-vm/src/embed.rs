@@ -17,6 +17,7 @@ use std::any::{Any, TypeId};
 use crate::builtins::{Ctx, Family, Resources};
 use crate::error::RapidError;
 use crate::exec::storage::Storage;
+use crate::value::Value;
 
 /// An embedder's addition to the language.
 pub struct Extension {
@@ -107,6 +108,62 @@ pub trait TaskHooks: Sync {
     /// The program was loaded: the extension learns the predefined data and types it
     /// works with (`find_data` gives a predefined data object's global index by name).
     fn loaded(&self, _resources: &mut Resources, _program: &rapid_sema::Program) {}
+
+    /// The program's data was (re)initialised (PP to Main): data the extension
+    /// connects from the start (the configuration's signals) is connected again.
+    fn data_initialised(&self, _resources: &mut Resources, _storage: &mut Storage) {}
+
+    /// The next time something the extension simulates changes by itself (a signal
+    /// order scheduled, a stimulus line): waits and interrupts look again then.
+    fn next_event(&self, _resources: &mut Resources) -> Option<f64> {
+        None
+    }
+
+    /// The value of signal data (`data`, a handle the extension gave) read in an
+    /// expression at `time`: `None` when the extension keeps no signals; `Err(None)`
+    /// when the data is connected to no signal (ERR_NO_ALIASIO_DEF), `Err(Some(why))`
+    /// when the signal cannot be read now (ERR_NORUNUNIT).
+    fn read_signal(
+        &self,
+        _resources: &mut Resources,
+        _time: f64,
+        _data: &Value,
+    ) -> Option<Result<f64, Option<String>>> {
+        None
+    }
+
+    /// The signal signal data (an argument, `\UIActiveSignal` of a wait's box) is
+    /// connected to, checked to be reachable now; `None` when the extension keeps no
+    /// signals.
+    fn signal_of(&self, _ctx: &mut Ctx<'_>, _arg: &Value) -> Option<Result<u32, RapidError>> {
+        None
+    }
+
+    /// Sets signal `id` (a digital output) to `value` now; `None` when the extension
+    /// keeps no signals.
+    fn set_signal(&self, _ctx: &mut Ctx<'_>, _id: u32, _value: f64) -> Option<Result<(), RapidError>> {
+        None
+    }
+
+    /// Swaps the part of the task's state every task of a controller shares with the
+    /// controller's (`Vm::exchange_shared`): `shared` holds the extensions' shared
+    /// state, one value per type, as [`Extensions`] holds a task's.
+    fn exchange_shared(&self, _resources: &mut Resources, _shared: &mut Extensions) {}
+
+    /// For signal interrupts (`Source::Signal`, `Source::Analog`): brings the signals
+    /// up to `now` and hands the changes logged from entry `from` of the extension's
+    /// change log as (signal, new value), in the order they happened; answers the
+    /// log's length (where the next look starts), `None` when the extension keeps no
+    /// signals.
+    fn signal_changes(
+        &self,
+        _resources: &mut Resources,
+        _now: f64,
+        _from: usize,
+        _changes: &mut Vec<(u32, f64)>,
+    ) -> Option<usize> {
+        None
+    }
 }
 
 /// An event an extension logs, not placed yet: the core fills in the place from

@@ -13,9 +13,10 @@
 //! What this module must not know: any extension.
 
 pub use crate::builtins::interrupts::{interrupt_number, next_due, Source as InterruptSource};
-pub use crate::builtins::io_wait::{wait_again, wait_over, wait_started};
+pub use crate::builtins::io_visualize::{step as visualize_step, BoxArgs};
 pub use crate::builtins::pendant::value_text;
 pub use crate::builtins::signature::{of as signature, Signature};
+pub use crate::builtins::wait::{next_event, wait_again, wait_over, wait_started};
 pub use crate::builtins::{native, present, read_literal, Ctx, Family, Resources, StopKind};
 pub use crate::layout;
 pub use crate::world::devices;

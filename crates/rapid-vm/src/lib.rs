@@ -4,10 +4,12 @@
 //! file system, the network and the clocks through the [`world::World`] its embedder
 //! gives each task (the std ones live in `rapid_controller::host_std`); the sandbox
 //! of the file devices is the VM's own. It knows no configuration file format: the
-//! controller hands it its own types (a task's `builtins::rmq::RmqConfig`, a built
-//! `rapid_io::IoSystem`); the configuration data, the files and the sockets are the
-//! controller's bindings (`rapid_controller::bindings`), extensions that reach the
-//! interpreter through [`ext`]. RAPID call depth lives in explicit frames, never on
+//! controller hands it its own types (a task's `builtins::rmq::RmqConfig`); the I/O
+//! signals are the crate rapid-signals, and the configuration data, the files and the
+//! sockets the controller's bindings (`rapid_controller::bindings`): extensions that
+//! reach the interpreter through [`ext`]. It knows no I/O system (no rapid-io): signal
+//! data is a handle an extension gave, and the loop asks the extension through
+//! [`embed::TaskHooks`] (`read_signal`, `signal_changes`, `next_event`). RAPID call depth lives in explicit frames, never on
 //! the Rust stack.
 //!
 //! What an embedder adds (built-in families, per-task state, the hooks the loop
@@ -20,8 +22,8 @@
 //! its argument readers (`arg_name`, `call_place`, `in_trap`, `instruction_here`),
 //! [`builtins::Family`] with `builtins::native`, the catalogue argument layouts
 //! ([`builtins::signature`], the `layout!` macro), and the multitasking, interrupt and
-//! I/O helpers of `builtins::tasking`, `builtins::interrupts`, `builtins::io` and
-//! `builtins::io_wait`.
+//! waiting helpers of `builtins::tasking`, `builtins::interrupts` and
+//! `builtins::wait`.
 
 pub mod builtins;
 pub mod compile;
@@ -191,14 +193,6 @@ pub fn load_in(
     type_names.templates = rmq_templates(&prog);
     vm.resources_mut().rmq.names = type_names;
     vm.extensions_loaded(&prog);
-    vm.resources_mut().io.kinds = signal_kinds(&prog);
-    vm.resources_mut().io.configured = prog
-        .datas
-        .iter()
-        .enumerate()
-        .filter(|(_, data)| data.origin == DeclOrigin::CONFIGURED)
-        .map(|(idx, data)| (idx as u32, data.display.clone()))
-        .collect();
     vm.set_pers_globals(prog.datas.iter().map(|d| d.kind == rapid_sema::symbols::DataKind::Pers).collect());
     vm.set_program_sources(files.to_vec());
     vm.set_program_options(options.clone());
@@ -392,15 +386,6 @@ fn module_vars(prog: &Program, modules: &[compile::ModuleSource<'_>]) -> Vec<Mod
         vars.push(ModuleVar { data: shared, file: source.file, task_scoped });
     }
     vars
-}
-
-/// The program's types for the six signal kinds (AliasIO checks kinds by them).
-fn signal_kinds(prog: &Program) -> Vec<(rapid_sema::types::TypeId, rapid_io::SignalKind)> {
-    use rapid_io::SignalKind as K;
-    [K::DI, K::DO, K::AI, K::AO, K::GI, K::GO]
-        .into_iter()
-        .filter_map(|kind| prog.types.find(kind.rapid_type()).map(|ty| (ty, kind)))
-        .collect()
 }
 
 /// The value before anything is assigned of each declared or predefined record and

@@ -10,6 +10,7 @@
 //! so every task declaring it reads the new value at its next statement.
 // Routine data (a frame's locals) is read through `Session::frame_locals`.
 
+use rapid_signals::SharedIoAccess;
 use rapid_vm::builtins::symsearch::{SymData, SymKind};
 use rapid_vm::value::{Record, Value};
 
@@ -314,7 +315,7 @@ impl Session {
         let io = self
             .controller
             .shared_mut()
-            .io
+            .io_mut()
             .system
             .as_mut()
             .ok_or_else(|| ApiError::NotFound("the system has no I/O".into()))?;

@@ -22,7 +22,7 @@
 //! most its MaxTime: ERR_IOENABLE). Any other line is reported with its line number.
 
 use rapid_io::{IoSystem, SignalKind};
-use rapid_vm::builtins::io::Reaction;
+use rapid_signals::Reaction;
 
 /// A stimulus: timed input changes (time, signal id, value) in time order, reactions,
 /// and timed operator answers (time, text) in time order.
@@ -201,7 +201,7 @@ mod tests {
     #[test]
     fn reactions_watch_any_signal_and_set_an_input() {
         let text = "when do1 = 1 after 0.2 s set di1 1\nwhen do1 = 0 set di1 0\n";
-        let reaction = |value, delay, set| rapid_vm::builtins::io::Reaction { watch: 1, value, delay, target: 0, set };
+        let reaction = |value, delay, set| rapid_signals::Reaction { watch: 1, value, delay, target: 0, set };
         let expected = vec![reaction(1.0, 0.2, 1.0), reaction(0.0, 0.0, 0.0)];
         assert_eq!(super::parse("s.txt", text, &io()), Ok((Vec::new(), expected, Vec::new())));
     }

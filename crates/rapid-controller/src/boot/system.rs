@@ -9,6 +9,8 @@ use rapid_config::sys::{Sys, TaskType};
 use rapid_config::CfgFile;
 use rapid_robot::RobotResources;
 use rapid_sema::SourceInput;
+use rapid_signals::IoAccess;
+use rapid_signals::{SharedIoAccess, SignalsVm};
 use rapid_vm::Loaded;
 
 use super::cell::Cell;
@@ -22,8 +24,8 @@ const YUMI_ARM_ANGLE: &str = "IRB 14000 YuMi: the arm angle (robtarget eax_a) fo
      not ABB's (not public): every TCP pose is reached as written, but axis 7 and the elbow may stand \
      elsewhere than on a real YuMi (docs/real-systems.md)";
 
-/// A stimulus's input orders, reactions and pendant answers (`rapid_vm::builtins::io`).
-pub type Stimulus = (Vec<(f64, u32, f64)>, Vec<rapid_vm::builtins::io::Reaction>, Vec<(f64, String)>);
+/// A stimulus's input orders, reactions and pendant answers (`rapid_signals::io`).
+pub type Stimulus = (Vec<(f64, u32, f64)>, Vec<rapid_signals::Reaction>, Vec<(f64, String)>);
 
 /// Reads the stimulus against the system's I/O system (none when it has none); the
 /// front end knows where it is and how it is written.
@@ -217,12 +219,12 @@ pub fn boot(
             }
         }
         for (_, program) in tasks.iter_mut() {
-            program.vm.resources_mut().io.virtual_io = true;
+            program.vm.resources_mut().io_mut().virtual_io = true;
         }
         if let Some((_, first)) = tasks.first_mut() {
             for (name, kind) in made {
-                let kind = rapid_vm::builtins::io::kind_name(kind);
-                first.vm.resources_mut().io.note_later(format!("virtual signal {name} ({kind}) (--virtual-io)"));
+                let kind = rapid_signals::kind_name(kind);
+                first.vm.resources_mut().note_later(format!("virtual signal {name} ({kind}) (--virtual-io)"));
             }
         }
     }
@@ -286,10 +288,10 @@ pub fn boot(
         return Err(if alone { BootError::Internal(message) } else { BootError::Refused(message) });
     }
     if let Some((orders, reactions, answers)) = stimulus {
-        let io = &mut controller.shared_mut().io;
-        io.stimulus = orders.into();
-        io.reactions = reactions;
-        io.answers = answers.into();
+        let shared = controller.shared_mut();
+        shared.io_mut().stimulus = orders.into();
+        shared.io_mut().reactions = reactions;
+        shared.answers = answers.into();
     }
     configure_operations(&mut controller, cell.syspar, sys, options.auto).map_err(BootError::Refused)?;
     // STOP event routines run when a task stops.

@@ -6,7 +6,7 @@
 //! The same goes for names the program uses where a signal is wanted and nothing
 //! declares (`SetDO doGrip, 1;`: the checker makes them configuration data of the
 //! type their place wants, `rapid_sema::Options::virtual_signals`), and for AliasIO
-//! names computed at run time (the VM makes those, `IoState::virtual_io`). Each
+//! names computed at run time (rapid-signals makes those, `IoState::virtual_io`). Each
 //! virtual signal is listed once on stderr.
 
 use rapid_io::{IoSystem, SignalDef, SignalKind};

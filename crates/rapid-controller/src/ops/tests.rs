@@ -2,6 +2,7 @@
 //! time, safe interrupts survive the stop, the others do not (§1.11).
 
 use rapid_sema::SourceInput;
+use rapid_signals::SharedIoAccess;
 use rapid_vm::RecordingHost;
 
 use crate::{Controller, ProgramState, StartMode, StopKind, SystemExit, TaskSpec};
@@ -200,7 +201,7 @@ ENDMODULE",
         "diA",
     );
     let id = c.io_system().and_then(|io| io.id("diA")).expect("diA");
-    c.shared_mut().io.stimulus.push_back((1.0, id, 1.0));
+    c.shared_mut().io_mut().stimulus.push_back((1.0, id, 1.0));
     let mut host = RecordingHost::default();
     run_until(&mut c, &mut host, 0.5);
     c.stop(StopKind::Stop);
@@ -412,7 +413,7 @@ ENDMODULE",
         "diA",
     );
     let id = c.io_system().and_then(|io| io.id("diA")).expect("diA");
-    c.shared_mut().io.stimulus.push_back((0.5, id, 1.0));
+    c.shared_mut().io_mut().stimulus.push_back((0.5, id, 1.0));
     let mut host = RecordingHost::default();
     run_until(&mut c, &mut host, 0.2);
     c.stop(StopKind::Stop);

@@ -6,6 +6,7 @@
 use super::super::robot::{Action, PathEvent};
 use super::{check_value, define, inhib_place, place, refuse, Relation, Res, Special};
 use crate::RobotResources;
+use rapid_signals::IoAccess;
 use rapid_vm::builtins::{present, Ctx, Resources};
 use rapid_vm::errnames::Err;
 use rapid_vm::exec::storage::Storage;
@@ -31,7 +32,7 @@ pub(crate) fn trigg_check_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if !matches!(data, Value::Opaque(_)) {
         return Err(ctx.error(Err::ArgValue, "TriggCheckIO's Signal must be signal data (signaldi … signalgo)"));
     }
-    let signal = rapid_vm::builtins::io::signal(ctx, &args[ch.signal])?;
+    let signal = rapid_signals::signal(ctx, &args[ch.signal])?;
     let relation = ctx.num(&args[ch.relation])?;
     let Some(relation) = Relation::from_opnum(relation) else {
         return Err(ctx.error(Err::ArgValue, format!("Relation {relation} is not an opnum (LT … GT)")));
@@ -88,8 +89,8 @@ fn act(resources: &mut Resources, storage: &Storage, now: f64, special: Special)
             if inhibited(storage, inhib.as_ref()) {
                 return;
             }
-            resources.io.advance(now);
-            let Some(actual) = resources.io.system.as_ref().and_then(|io| io.read(signal).ok()) else { return };
+            resources.io_mut().advance(now);
+            let Some(actual) = resources.io().system.as_ref().and_then(|io| io.read(signal).ok()) else { return };
             if relation.holds(actual, value) {
                 return;
             }
@@ -100,8 +101,8 @@ fn act(resources: &mut Resources, storage: &Storage, now: f64, special: Special)
         }
         Special::Inhibited { signal, value, inhib, inhib_value } => {
             let value = if inhibited(storage, Some(&inhib)) { inhib_value } else { value };
-            resources.io.advance(now);
-            if let Some(io) = resources.io.system.as_mut() {
+            resources.io_mut().advance(now);
+            if let Some(io) = resources.io_mut().system.as_mut() {
                 let _ = io.set(signal, value, now);
             }
         }

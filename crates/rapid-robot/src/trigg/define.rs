@@ -39,7 +39,7 @@ fn output(
     let Some(signal) = ops.into_iter().find(|&i| present(args.get(i))) else {
         return Err(ctx.error(Err::ArgValue, "the trigger names no output (\\DOp, \\GOp or \\AOp)"));
     };
-    let id = rapid_vm::builtins::io::signal(ctx, &args[signal])?;
+    let id = rapid_signals::signal(ctx, &args[signal])?;
     let set = if present(args.get(dvalue)) { ctx.num(&args[dvalue])? } else { ctx.num(&args[value])? };
     check_value(ctx, id, set)?;
     Ok((id, set))

@@ -6,6 +6,7 @@ use super::super::moves::{joint_move, linear_move, Layout};
 use super::super::robot::{Action, At, PathEvent};
 use super::moves::{TRIGG_J_IOS, TRIGG_L_IOS};
 use super::{check_value, Res};
+use rapid_signals::IoAccess;
 use rapid_vm::builtins::{present, Ctx};
 use rapid_vm::errnames::Err;
 use rapid_vm::error::RapidError;
@@ -34,15 +35,15 @@ fn element(ctx: &mut Ctx<'_>, elem: &Value) -> Result<Option<PathEvent>, RapidEr
         },
         other => number(other),
     };
-    let id = ctx.resources.io.system.as_ref().and_then(|io| io.id(&name));
+    let id = ctx.resources.io().system.as_ref().and_then(|io| io.id(&name));
     let Some(id) = id else {
         return Err(ctx.error(Err::SigName, format!("there is no I/O signal named {name}")));
     };
-    let fault = ctx.resources.io.system.as_ref().and_then(|io| io.read(id).err());
+    let fault = ctx.resources.io().system.as_ref().and_then(|io| io.read(id).err());
     if let Some(fault) = fault {
-        return Err(rapid_vm::builtins::io::io_error(ctx, &fault));
+        return Err(rapid_signals::io_error(ctx, &fault));
     }
-    let output = ctx.resources.io.system.as_ref().and_then(|io| io.def(id)).is_some_and(|d| !d.kind.is_input());
+    let output = ctx.resources.io().system.as_ref().and_then(|io| io.def(id)).is_some_and(|d| !d.kind.is_input());
     if !output {
         return Err(ctx.error(Err::ArgValue, format!("signal {name} is no output")));
     }

@@ -31,6 +31,7 @@ pub(crate) use stopproc::{program_stopped, trigg_stop_proc};
 
 use super::robot::{At, PathEvent};
 use crate::RobotResources;
+use rapid_signals::IoAccess;
 use rapid_vm::builtins::{present, Ctx};
 use rapid_vm::errnames::Err;
 use rapid_vm::error::RapidError;
@@ -97,7 +98,7 @@ fn define(ctx: &mut Ctx<'_>, arg: &Value, event: PathEvent, special: Option<Spec
 /// A value an output (or a checked signal) may take: within an analog signal's
 /// logical range (ERR_AO_LIM), a group's bits (ERR_GO_LIM).
 fn check_value(ctx: &Ctx<'_>, id: u32, value: f64) -> Result<(), RapidError> {
-    let Some(def) = ctx.resources.io.system.as_ref().and_then(|io| io.def(id)) else { return Ok(()) };
+    let Some(def) = ctx.resources.io().system.as_ref().and_then(|io| io.def(id)) else { return Ok(()) };
     if def.kind.is_analog() {
         let out = def.analog.is_some_and(|r| value < r.logical_min || value > r.logical_max);
         if out || !value.is_finite() {
@@ -114,14 +115,14 @@ fn check_value(ctx: &Ctx<'_>, id: u32, value: f64) -> Result<(), RapidError> {
 
 /// The logical maximum of an analog signal (None: not analog, or unbounded).
 fn analog_max(ctx: &Ctx<'_>, id: u32) -> Option<f64> {
-    let def = ctx.resources.io.system.as_ref().and_then(|io| io.def(id))?;
+    let def = ctx.resources.io().system.as_ref().and_then(|io| io.def(id))?;
     def.analog.map(|r| r.logical_max)
 }
 
 /// The value output `id` will have once the outputs already ordered on the path are
 /// set (a ramp starts from it).
 fn value_after_orders(ctx: &Ctx<'_>, id: u32) -> f64 {
-    let io = &ctx.resources.io;
+    let io = ctx.resources.io();
     let ordered = io.path_orders.iter().rev().find(|&&(_, s, _)| s == id).map(|&(_, _, v)| v);
     ordered.or_else(|| io.system.as_ref().and_then(|s| s.value(id))).unwrap_or(0.0)
 }

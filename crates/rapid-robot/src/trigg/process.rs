@@ -35,7 +35,7 @@ pub(crate) fn trigg_ramp_ao(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     // RampLength's \Time is how the ramp is measured, not where the trigger is.
     let at = place(ctx, args, (ramp.distance, ramp.start, ABSENT))?;
     let lag = ctx.num(&args[ramp.lag])?;
-    let signal = rapid_vm::builtins::io::signal(ctx, &args[ramp.signal])?;
+    let signal = rapid_signals::signal(ctx, &args[ramp.signal])?;
     let to = ctx.num(&args[ramp.value])?;
     check_value(ctx, signal, to)?;
     let length = ctx.num(&args[ramp.length])?;
@@ -59,7 +59,7 @@ pub(crate) fn trigg_speed(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     refuse(args, &options)?;
     let at = place(ctx, args, (sp.distance, sp.start, ABSENT))?;
     let lag = ctx.num(&args[sp.lag])?;
-    let signal = rapid_vm::builtins::io::signal(ctx, &args[sp.signal])?;
+    let signal = rapid_signals::signal(ctx, &args[sp.signal])?;
     let scale = ctx.num(&args[sp.scale])?;
     let dip = ctx.opt_num(args.get(sp.dip))?.unwrap_or(0.0);
     if !lag.is_finite() || !scale.is_finite() || !dip.is_finite() || dip < 0.0 {
@@ -67,8 +67,7 @@ pub(crate) fn trigg_speed(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
             ctx.error(Err::ArgValue, "TriggSpeed's ScaleLag, ScaleValue and DipLag must be numbers (DipLag ≥ 0)")
         );
     }
-    let err_do =
-        if present(args.get(sp.err_do)) { Some(rapid_vm::builtins::io::signal(ctx, &args[sp.err_do])?) } else { None };
+    let err_do = if present(args.get(sp.err_do)) { Some(rapid_signals::signal(ctx, &args[sp.err_do])?) } else { None };
     let max = analog_max(ctx, signal);
     let special = Special::Speed { signal, scale, lag, dip, max, err_do };
     define(ctx, &args[sp.data], PathEvent { at, shift: 0.0, action: Action::Special(0) }, Some(special))

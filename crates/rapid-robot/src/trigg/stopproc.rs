@@ -13,6 +13,7 @@ use crate::RobotResources;
 use std::rc::Rc;
 
 use super::Res;
+use rapid_signals::IoAccess;
 use rapid_vm::builtins::{present, Ctx, Resources};
 use rapid_vm::errnames::Err;
 use rapid_vm::exec::storage::Storage;
@@ -45,14 +46,14 @@ pub(crate) fn trigg_stop_proc(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let restart = (**restart).clone();
     let mut signal = |idx: usize| -> Result<Option<u32>, rapid_vm::error::RapidError> {
         if present(args.get(idx)) {
-            rapid_vm::builtins::io::signal(ctx, &args[idx]).map(Some)
+            rapid_signals::signal(ctx, &args[idx]).map(Some)
         } else {
             Ok(None)
         }
     };
     let do1 = signal(at.do1)?;
     let go = [signal(at.go1)?, signal(at.go2)?, signal(at.go3)?, signal(at.go4)?];
-    let shadow = rapid_vm::builtins::io::signal(ctx, &args[at.shadow])?;
+    let shadow = rapid_signals::signal(ctx, &args[at.shadow])?;
     ctx.resources.robot_mut().trigg.stop_proc = Some(StopProc { restart, do1, go, shadow });
     Ok(None)
 }
@@ -64,8 +65,8 @@ pub(crate) fn program_stopped(resources: &mut Resources, storage: &mut Storage, 
     if moving {
         super::super::pause::hold(resources, now);
     }
-    resources.io.advance(now);
-    let value = |id: Option<u32>| id.and_then(|id| resources.io.system.as_ref()?.value(id)).unwrap_or(0.0);
+    resources.io_mut().advance(now);
+    let value = |id: Option<u32>| id.and_then(|id| resources.io().system.as_ref()?.value(id)).unwrap_or(0.0);
     let process = [proc.do1, proc.go[0], proc.go[1], proc.go[2], proc.go[3]].map(value);
     let shadow = value(Some(proc.shadow));
     let num = |x: f64| Value::Num(x as f32);
@@ -85,7 +86,7 @@ pub(crate) fn program_stopped(resources: &mut Resources, storage: &mut Storage, 
         let _ = storage.set(&proc.restart, Value::Record(record));
     }
     let outputs = [proc.do1, proc.go[0], proc.go[1], proc.go[2], proc.go[3]];
-    if let Some(io) = resources.io.system.as_mut() {
+    if let Some(io) = resources.io_mut().system.as_mut() {
         for id in outputs.into_iter().flatten() {
             let _ = io.set(id, 0.0, now);
         }

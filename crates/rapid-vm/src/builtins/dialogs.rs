@@ -253,31 +253,31 @@ fn answer(
 ) -> Result<Option<String>, RapidError> {
     // The operator's timed answers (a stimulus) come first: a dialog shown before the
     // answer's time waits for it (re-run when the time comes).
-    if let Some(&(at, _)) = ctx.resources.io.answers.front() {
+    if let Some(&(at, _)) = ctx.resources.answers.front() {
         if at > ctx.time {
             ctx.wait = Some(at - ctx.time);
             ctx.stop = super::StopKind::Repeat;
             return Ok(None);
         }
-        let text = ctx.resources.io.answers.pop_front().map(|(_, text)| text).unwrap_or_default();
+        let text = ctx.resources.answers.pop_front().map(|(_, text)| text).unwrap_or_default();
         return Ok(Some(text.trim().to_string()));
     }
     let task = ctx.resources.tasking.me.clone();
     match ctx.host.tp_prompt(&crate::host::Prompt { task: &task, text: prompt }) {
         crate::host::PromptReply::Answer(text) => {
-            ctx.resources.io.waiting = None;
+            ctx.resources.waiting = None;
             return Ok(Some(text.trim().to_string()));
         }
         crate::host::PromptReply::Pending => {
             // A front end answers later: the dialog waits (as a WaitDI does, re-run
             // when the shared state changes) until the answer or \MaxTime.
-            let started = super::io_wait::wait_started(ctx);
+            let started = super::wait::wait_started(ctx);
             let deadline = ctx.opt_num(max_time)?.map(|max| started + max);
             if !deadline.is_some_and(|d| ctx.time >= d) {
-                super::io_wait::wait_again(ctx, started, deadline, None);
+                super::wait::wait_again(ctx, started, deadline, None);
                 return Ok(None);
             }
-            ctx.resources.io.waiting = None;
+            ctx.resources.waiting = None;
             ctx.host.tp_prompt_closed(&crate::host::Prompt { task: &task, text: prompt });
         }
         crate::host::PromptReply::NoClient => {}

@@ -1,7 +1,9 @@
 //! Interrupts (§1.11): the task's interrupt table and the instructions that order,
-//! deactivate and delete interrupts — ITimer, ISignalDI, ISignalDO, ISignalGI,
-//! ISignalGO, ISignalAI, ISignalAO, IPers, IError, IDelete, ISleep,
-//! IWatch, IDisable, IEnable. CONNECT (compiled) gives an intnum its identity and trap;
+//! deactivate and delete interrupts — ITimer, IPers, IError, IDelete, ISleep,
+//! IWatch, IDisable, IEnable. Signal interrupts (ISignalDI …) are ordered by the
+//! extension that keeps the signals (rapid-signals): it sets `Source::Signal` or
+//! `Source::Analog`, and hands the signal changes to the executor
+//! (`TaskHooks::signal_changes`). CONNECT (compiled) gives an intnum its identity and trap;
 //! the executor (`exec/interrupts.rs`) notices events and runs the traps.
 //!
 //! An intnum holds its interrupt's number (0: none). Events of an interrupt that is
@@ -14,7 +16,6 @@
 //! and only their events are queued; the others are dropped. When the program starts
 //! again the queued safe interrupts run first, in the order they came.
 
-use super::io::connected;
 use super::{native, present, Ctx, Family};
 use crate::errnames::Err;
 use crate::error::RapidError;
@@ -34,7 +35,7 @@ pub enum Source {
     /// ISignalDI/ISignalDO: when signal `id` changes to `value` (2: any change).
     Signal { id: u32, value: f64, single: bool },
     /// ISignalAI/ISignalAO: when a new value of analog signal `id` meets `trigger`.
-    Analog { id: u32, trigger: rapid_io::AnalogTrigger, single: bool },
+    Analog { id: u32, trigger: AnalogTrigger, single: bool },
     /// IPers: when the persistent at `place` gets a value other than `last`.
     Pers { place: crate::value::Place, last: Value, single: bool },
     /// IError: an event-log entry of `domain` (0: any), number `id` (any when `None`)
@@ -43,6 +44,38 @@ pub enum Source {
     /// IRMQMessage: a message of this data type (name as declared, array sizes)
     /// arrived in the task's queue.
     Rmq { datatype: String, dims: [u32; 3] },
+}
+
+/// The condition of an analog signal interrupt, kept by the extension that keeps the
+/// signals: each new value of the signal is a sample, which fires the interrupt or not.
+pub trait SampleTrigger: std::fmt::Debug {
+    /// Whether the new value `value` fires the interrupt (the trigger may keep it as
+    /// its new reference).
+    fn sample(&mut self, value: f64) -> bool;
+    fn clone_box(&self) -> Box<dyn SampleTrigger>;
+}
+
+/// An analog interrupt's condition ([`SampleTrigger`]), as interrupt data.
+#[derive(Debug)]
+pub struct AnalogTrigger(pub Box<dyn SampleTrigger>);
+
+impl AnalogTrigger {
+    pub fn sample(&mut self, value: f64) -> bool {
+        self.0.sample(value)
+    }
+}
+
+impl Clone for AnalogTrigger {
+    fn clone(&self) -> Self {
+        AnalogTrigger(self.0.clone_box())
+    }
+}
+
+impl PartialEq for AnalogTrigger {
+    /// Two triggers are equal when they show the same condition and reference.
+    fn eq(&self, other: &Self) -> bool {
+        format!("{:?}", self.0) == format!("{:?}", other.0)
+    }
 }
 
 /// One connected interrupt.
@@ -242,7 +275,7 @@ impl InterruptState {
 /// interrupts are ordered); `None` when none can.
 pub fn next_due(ctx: &mut Ctx<'_>) -> Option<f64> {
     let timer = ctx.resources.interrupts.next_timer();
-    let signal = if ctx.resources.interrupts.watches_signals() { ctx.resources.io.next_event_time() } else { None };
+    let signal = if ctx.resources.interrupts.watches_signals() { super::wait::next_event(ctx) } else { None };
     match (timer, signal) {
         (Some(a), Some(b)) => Some(a.min(b)),
         (a, b) => a.or(b),
@@ -262,16 +295,6 @@ pub fn interrupt_number(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidErro
 super::signature::layout! {
     static ITIMER: TimerArgs = "ITimer" {
         single: "Single", single_safe: "SingleSafe", time: "Time", interrupt: "Interrupt",
-    }
-    static ISIGNAL_D: DigitalArgs = "ISignalDI" | "ISignalDO" {
-        single: "Single", single_safe: "SingleSafe", signal: "Signal", trigg_value: "TriggValue", interrupt: "Interrupt",
-    }
-    static ISIGNAL_G: GroupArgs = "ISignalGI" | "ISignalGO" {
-        single: "Single", single_safe: "SingleSafe", signal: "Signal", interrupt: "Interrupt",
-    }
-    static ISIGNAL_A: AnalogArgs = "ISignalAI" | "ISignalAO" {
-        single: "Single", single_safe: "SingleSafe", signal: "Signal", condition: "Condition", high: "HighValue",
-        low: "LowValue", delta: "DeltaValue", dpos: "DPos", dneg: "DNeg", interrupt: "Interrupt",
     }
     static IPERS: PersArgs = "IPers" {
         single: "Single", single_safe: "SingleSafe", name: "Name", interrupt: "Interrupt",
@@ -302,68 +325,6 @@ fn itimer(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         interrupt.safe = present(args.get(at.single_safe));
     }
     Ok(None)
-}
-
-/// `ISignalDI/ISignalDO [\Single] | [\SingleSafe] Signal TriggValue Interrupt`:
-/// TriggValue 0 (falling to 0), 1 (rising to 1) or 2 (any change).
-fn isignal_digital(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let at = *ISIGNAL_D;
-    let single = present(args.get(at.single)) || present(args.get(at.single_safe));
-    let id = connected(ctx, &args[at.signal])?;
-    let value = ctx.num(&args[at.trigg_value])?;
-    if ![0.0, 1.0, 2.0].contains(&value) {
-        return Err(ctx.error(Err::ArgValue, format!("TriggValue {value} is not 0, 1 or 2")));
-    }
-    let n = interrupt_number(ctx, &args[at.interrupt])?;
-    watch_signal(ctx, n, Source::Signal { id, value, single }, present(args.get(at.single_safe)));
-    Ok(None)
-}
-
-/// `ISignalGI/ISignalGO [\Single] | [\SingleSafe] Signal Interrupt`: every change of the
-/// group's value.
-fn isignal_group(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let at = *ISIGNAL_G;
-    let single = present(args.get(at.single)) || present(args.get(at.single_safe));
-    let id = connected(ctx, &args[at.signal])?;
-    let n = interrupt_number(ctx, &args[at.interrupt])?;
-    watch_signal(ctx, n, Source::Signal { id, value: 2.0, single }, present(args.get(at.single_safe)));
-    Ok(None)
-}
-
-/// `ISignalAI/ISignalAO [\Single] | [\SingleSafe] Signal Condition HighValue LowValue
-/// DeltaValue [\DPos] | [\DNeg] Interrupt`: new values of an analog signal that meet
-/// the condition (`rapid_io::AnalogTrigger`); the reference value is the signal's value now.
-fn isignal_analog(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let at = *ISIGNAL_A;
-    let single = present(args.get(at.single)) || present(args.get(at.single_safe));
-    let id = connected(ctx, &args[at.signal])?;
-    let condition = ctx.num(&args[at.condition])?;
-    let (high, low, delta) = (ctx.num(&args[at.high])?, ctx.num(&args[at.low])?, ctx.num(&args[at.delta])?);
-    let direction = if present(args.get(at.dpos)) {
-        rapid_io::AioDirection::Pos
-    } else if present(args.get(at.dneg)) {
-        rapid_io::AioDirection::Neg
-    } else {
-        rapid_io::AioDirection::Both
-    };
-    let current = ctx.resources.io.system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0);
-    let trigger = rapid_io::AnalogTrigger::new(condition, high, low, delta, direction, current)
-        .map_err(|err| ctx.error(Err::ArgValue, err.to_string()))?;
-    let n = interrupt_number(ctx, &args[at.interrupt])?;
-    watch_signal(ctx, n, Source::Analog { id, trigger, single }, present(args.get(at.single_safe)));
-    Ok(None)
-}
-
-/// Orders interrupt `n` on a signal (`safe`: `\SingleSafe`): only changes from now on
-/// count.
-fn watch_signal(ctx: &mut Ctx<'_>, n: u32, source: Source, safe: bool) {
-    let logged = ctx.resources.io.system.as_ref().map_or(0, |io| io.changes().len());
-    let interrupts = &mut ctx.resources.interrupts;
-    interrupts.seen_changes = interrupts.seen_changes.max(logged);
-    if let Some(interrupt) = interrupts.get_mut(n) {
-        interrupt.source = Some(source);
-        interrupt.safe = safe;
-    }
 }
 
 /// `IPers [\Single] | [\SingleSafe] Name Interrupt`: every change of a persistent's
@@ -508,16 +469,10 @@ pub(super) static FAMILY: Family = Family {
     file: file!(),
     builtins: &[
         native("ITimer", itimer),
-        native("ISignalDI", isignal_digital),
-        native("ISignalDO", isignal_digital),
-        native("ISignalGI", isignal_group),
         native("IPers", ipers),
         native("IError", ierror),
         native("GetTrapData", get_trap_data),
         native("ReadErrData", read_err_data),
-        native("ISignalGO", isignal_group),
-        native("ISignalAI", isignal_analog),
-        native("ISignalAO", isignal_analog),
         native("IDelete", idelete),
         native("ISleep", isleep),
         native("IWatch", iwatch),

@@ -5,16 +5,18 @@
 //! closes when it ends. `\VisualizeTime` closes the box after that many seconds while
 //! the wait goes on; `\UIActiveSignal` is 1 while the box is shown, 0 after. `\Wrap`,
 //! `\Icon` and `\Image` only change how the box looks (accepted, not drawn).
-//! A wait whose condition holds at once shows no box.
+//! A wait whose condition holds at once shows no box. The box is the language's (the
+//! core's WaitUntil shows it too); `\UIActiveSignal` is set through the extension that
+//! keeps the signals (`TaskHooks::signal_of`, `set_signal`).
 
-use super::io::signal;
 use super::{present, Ctx};
+use crate::errnames::Err;
 use crate::error::RapidError;
 use crate::value::Value;
 
 /// Where the box's arguments are in one wait instruction's parameter list.
 #[derive(Debug, PartialEq, Eq)]
-pub(crate) struct BoxArgs {
+pub struct BoxArgs {
     pub(crate) visualize: usize,
     header: usize,
     message: usize,
@@ -25,7 +27,7 @@ pub(crate) struct BoxArgs {
 
 impl BoxArgs {
     /// The positions in the declaration of `name` (see `signature.rs`).
-    pub(crate) fn of(name: &str) -> BoxArgs {
+    pub fn of(name: &str) -> BoxArgs {
         let sig = super::signature::of(name);
         BoxArgs {
             visualize: sig.at("Visualize"),
@@ -52,16 +54,16 @@ pub(crate) struct ShownBox {
 /// ends at this try (the condition holds, or time ran out). Opens the box at the
 /// first try that waits, closes it when the wait ends or `\VisualizeTime` is over.
 /// Answers when the box must close while the wait goes on, so the wait looks again then.
-pub(crate) fn step(ctx: &mut Ctx<'_>, args: &[Value], at: &BoxArgs, done: bool) -> Result<Option<f64>, RapidError> {
+pub fn step(ctx: &mut Ctx<'_>, args: &[Value], at: &BoxArgs, done: bool) -> Result<Option<f64>, RapidError> {
     if !present(args.get(at.visualize)) {
         return Ok(None);
     }
     let depth = ctx.chain.len();
-    let shown = ctx.resources.io.boxes.iter().position(|b| b.depth == depth);
+    let shown = ctx.resources.boxes.iter().position(|b| b.depth == depth);
     match (shown, done) {
         (None, true) => Ok(None),
         (Some(idx), true) => {
-            let shown = ctx.resources.io.boxes.remove(idx);
+            let shown = ctx.resources.boxes.remove(idx);
             if shown.open {
                 close(ctx, &shown)?;
             }
@@ -70,14 +72,14 @@ pub(crate) fn step(ctx: &mut Ctx<'_>, args: &[Value], at: &BoxArgs, done: bool) 
         (None, false) => {
             let shown = open(ctx, args, at, depth)?;
             let close_at = shown.close_at;
-            ctx.resources.io.boxes.push(shown);
+            ctx.resources.boxes.push(shown);
             Ok(close_at)
         }
         (Some(idx), false) => {
-            let shown = ctx.resources.io.boxes[idx].clone();
+            let shown = ctx.resources.boxes[idx].clone();
             match shown.close_at {
                 Some(t) if shown.open && ctx.time >= t => {
-                    ctx.resources.io.boxes[idx].open = false;
+                    ctx.resources.boxes[idx].open = false;
                     close(ctx, &shown)?;
                     Ok(None)
                 }
@@ -117,7 +119,7 @@ fn open(ctx: &mut Ctx<'_>, args: &[Value], at: &BoxArgs, depth: usize) -> Result
     }
     let close_at = ctx.opt_num(args.get(at.visualize_time))?.map(|t| ctx.time + t.max(0.0));
     let ui_active = match args.get(at.ui_active) {
-        Some(arg) if present(Some(arg)) => Some(signal(ctx, arg)?),
+        Some(arg) if present(Some(arg)) => Some(signal_of(ctx, arg)?),
         _ => None,
     };
     let shown = ShownBox { depth, open: true, text: lines.join("\n"), close_at, ui_active };
@@ -135,8 +137,27 @@ fn close(ctx: &mut Ctx<'_>, shown: &ShownBox) -> Result<(), RapidError> {
 
 /// `\UIActiveSignal`: the digital output that tells the box is shown.
 fn set_active(ctx: &mut Ctx<'_>, signal: Option<u32>, value: f64) -> Result<(), RapidError> {
-    match signal {
-        Some(id) => super::io::order(ctx, |io, t| io.set(id, value, t)).map(|_| ()),
-        None => Ok(()),
+    let Some(id) = signal else { return Ok(()) };
+    for hooks in ctx.builtins.hooks() {
+        if let Some(set) = hooks.set_signal(ctx, id, value) {
+            return set;
+        }
     }
+    Err(no_signals(ctx))
+}
+
+/// The signal signal data (an argument) is connected to, from the extension that keeps
+/// the signals (`TaskHooks::signal_of`).
+fn signal_of(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
+    for hooks in ctx.builtins.hooks() {
+        if let Some(id) = hooks.signal_of(ctx, arg) {
+            return id;
+        }
+    }
+    Err(no_signals(ctx))
+}
+
+/// No extension keeps signals: the data can be connected to none.
+fn no_signals(ctx: &Ctx<'_>) -> RapidError {
+    ctx.error(Err::NoAliasIoDef, "this task has no I/O system")
 }

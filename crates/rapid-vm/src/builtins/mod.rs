@@ -14,10 +14,7 @@ mod dnheader;
 mod events;
 mod geometry;
 pub mod interrupts;
-pub mod io;
-mod io_units;
-pub(crate) mod io_visualize;
-pub mod io_wait;
+pub mod io_visualize;
 mod math;
 mod matrix;
 pub mod modules;
@@ -35,6 +32,7 @@ mod strdig;
 mod strformat;
 mod strings;
 mod symbols;
+pub mod wait;
 pub use strings::{read_literal, value_literal};
 pub use symbols::same_type;
 pub mod symsearch;
@@ -122,8 +120,17 @@ pub struct Resources {
     pub modules: modules::ModuleState,
     /// Rand's generator (kept across PP to Main: the sequence goes on).
     pub random: random::RandomState,
-    /// The task's I/O system (signals) and the RAPID types of the signal kinds.
-    pub io: io::IoState,
+    /// The waiting instruction under way (WaitDI, WaitTime while interrupts may come,
+    /// a dialog a front end answers later …): (call depth, pc, started at); see
+    /// `wait.rs`.
+    pub waiting: Option<(usize, u32, f64)>,
+    /// The operator's answers to pendant dialogs at given times (a stimulus), in
+    /// time order (the controller's tasks share them: [`Shared::answers`]).
+    pub answers: std::collections::VecDeque<(f64, String)>,
+    /// Notes for the run's user not yet told (see [`Resources::note_later`]).
+    notes: Vec<String>,
+    /// The message boxes of waits with `\Visualize` under way, one per call depth.
+    pub(crate) boxes: Vec<io_visualize::ShownBox>,
     /// The task's interrupts (deleted at PP to Main).
     pub interrupts: interrupts::InterruptState,
     /// Which task this is and what the tasks share (sync points).
@@ -141,7 +148,11 @@ pub struct Resources {
 /// task's built-ins see the one I/O system and the one set of sync points.
 #[derive(Default)]
 pub struct Shared {
-    pub io: io::SharedIo,
+    /// The extensions' shared state (the signals: rapid-signals' `SharedIo`), swapped
+    /// in by their `TaskHooks::exchange_shared`.
+    pub extensions: crate::embed::Extensions,
+    /// The operator's timed answers to pendant dialogs (a stimulus).
+    pub answers: std::collections::VecDeque<(f64, String)>,
     pub tasking: tasking::SharedTasking,
 }
 
@@ -158,10 +169,31 @@ impl Resources {
         self.extensions.close_all();
     }
 
-    /// Swaps the controller's shared state with the task's (hand in, take back).
+    /// Swaps the controller's shared state with the task's (hand in, take back): the
+    /// core's part; the extensions' part goes with it in `Vm::exchange_shared`.
     pub fn exchange_shared(&mut self, shared: &mut Shared) {
-        self.io.exchange_shared(&mut shared.io);
+        std::mem::swap(&mut self.answers, &mut shared.answers);
         std::mem::swap(&mut self.tasking.shared, &mut shared.tasking);
+    }
+
+    /// The waiting instruction under way is over (it ended or timed out).
+    pub fn end_wait(&mut self) {
+        self.waiting = None;
+    }
+
+    /// When the waiting instruction under way (WaitDI …) began, if one is.
+    pub fn wait_started(&self) -> Option<f64> {
+        self.waiting.map(|(_, _, at)| at)
+    }
+
+    /// A note for the run's user (on stderr in `rapid run`), told when the task next
+    /// runs: what `--virtual-io` made of a signal, for one.
+    pub fn note_later(&mut self, text: String) {
+        self.notes.push(text);
+    }
+
+    pub(crate) fn take_notes(&mut self) -> Vec<String> {
+        std::mem::take(&mut self.notes)
     }
 }
 
@@ -402,10 +434,7 @@ pub(crate) static CORE_FAMILIES: &[&Family] = &[
     &dnheader::FAMILY,
     &modules::FAMILY,
     &random::FAMILY,
-    &io::FAMILY,
     &interrupts::FAMILY,
-    &io_wait::FAMILY,
-    &io_units::FAMILY,
     &spy::FAMILY,
     &tasking::FAMILY,
     &controller::FAMILY,

@@ -43,13 +43,13 @@ pub(super) fn wait_time(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
     // the controller resumes it when that task changes something.
     let due = super::interrupts::next_due(ctx);
     let here = (ctx.chain.len(), ctx.chain.last().map_or(0, |f| f.position().1));
-    let resumed = match ctx.resources.io.waiting {
+    let resumed = match ctx.resources.waiting {
         Some((depth, pc, at)) if (depth, pc) == here => Some(at),
         _ => None,
     };
     if due.is_none() && !ctx.resources.interrupts.active() {
         // A wait a trap cut short goes on for the rest of its time, not afresh.
-        ctx.resources.io.waiting = None;
+        ctx.resources.waiting = None;
         let rest = resumed.map_or(seconds, |at| at + seconds - ctx.time);
         if rest > 0.0 {
             ctx.wait = Some(rest);
@@ -59,10 +59,10 @@ pub(super) fn wait_time(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Valu
     let started = resumed.unwrap_or(ctx.time);
     let end = started + seconds;
     if ctx.time >= end {
-        ctx.resources.io.waiting = None;
+        ctx.resources.waiting = None;
         return Ok(None);
     }
-    ctx.resources.io.waiting = Some((here.0, here.1, started));
+    ctx.resources.waiting = Some((here.0, here.1, started));
     ctx.wait = Some((due.map_or(end, |due| end.min(due)) - ctx.time).max(1e-6));
     ctx.stop = super::StopKind::Repeat;
     Ok(None)

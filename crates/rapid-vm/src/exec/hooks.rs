@@ -47,6 +47,36 @@ impl Vm {
         }
     }
 
+    /// The next change an extension knows of by itself (a scheduled signal change).
+    pub(super) fn next_extension_event(&mut self) -> Option<f64> {
+        let mut next: Option<f64> = None;
+        for hooks in self.builtins.hooks() {
+            if let Some(at) = hooks.next_event(&mut self.resources) {
+                next = Some(next.map_or(at, |n| n.min(at)));
+            }
+        }
+        next
+    }
+
+    /// The value of signal data read in an expression, from the extension that keeps
+    /// the signals (see `TaskHooks::read_signal`); `Err(None)` when none does.
+    pub(super) fn read_signal(&mut self, data: &crate::value::Value) -> Result<f64, Option<String>> {
+        for hooks in self.builtins.hooks() {
+            if let Some(read) = hooks.read_signal(&mut self.resources, self.time, data) {
+                return read;
+            }
+        }
+        Err(None)
+    }
+
+    /// The program's data was initialised again (PP to Main): the extensions connect
+    /// what they connect from the start (the configuration's signals).
+    pub(super) fn extensions_data_initialised(&mut self) {
+        for hooks in self.builtins.hooks() {
+            hooks.data_initialised(&mut self.resources, &mut self.storage);
+        }
+    }
+
     /// The set of built-ins the task runs with.
     pub fn builtins(&self) -> &std::sync::Arc<crate::builtins::Builtins> {
         &self.builtins

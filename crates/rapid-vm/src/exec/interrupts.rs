@@ -53,20 +53,25 @@ impl Vm {
         self.dispatch_messages();
         let interrupts = &mut self.resources.interrupts;
         if interrupts.watches_signals() {
-            self.resources.io.advance(now);
-            let changes = self.resources.io.system.as_ref().map(|io| io.changes()).unwrap_or(&[]);
+            // The extension keeping the signals hands the changes since the last look.
+            let from = interrupts.seen_changes;
+            let mut changes = Vec::new();
+            let mut seen = None;
+            for hooks in self.builtins.hooks() {
+                if let Some(len) = hooks.signal_changes(&mut self.resources, now, from, &mut changes) {
+                    seen = Some(len);
+                }
+            }
             let interrupts = &mut self.resources.interrupts;
-            for change in changes.get(interrupts.seen_changes..).unwrap_or(&[]) {
+            for &(signal, new) in &changes {
                 for (idx, slot) in interrupts.table.iter_mut().enumerate() {
                     let Some(interrupt) = slot else { continue };
                     let (fires, single) = match &mut interrupt.source {
-                        Some(Source::Signal { id, value, single }) if *id == change.id => {
-                            (*value == 2.0 || *value == change.new, *single)
+                        Some(Source::Signal { id, value, single }) if *id == signal => {
+                            (*value == 2.0 || *value == new, *single)
                         }
                         // ISignalAI/AO: every new value is a sample of the analog signal.
-                        Some(Source::Analog { id, trigger, single }) if *id == change.id => {
-                            (trigger.sample(change.new), *single)
-                        }
+                        Some(Source::Analog { id, trigger, single }) if *id == signal => (trigger.sample(new), *single),
                         _ => continue,
                     };
                     if fires {
@@ -77,7 +82,7 @@ impl Vm {
                     }
                 }
             }
-            interrupts.seen_changes = changes.len();
+            interrupts.seen_changes = seen.unwrap_or(0);
         }
         for number in fired {
             self.resources.interrupts.fire(number);
@@ -173,9 +178,8 @@ impl Vm {
         if self.frames.iter().any(|f| f.interrupted) {
             return None;
         }
-        let interrupts = &self.resources.interrupts;
-        let signals = if interrupts.watches_signals() { self.resources.io.next_event_time() } else { None };
-        let next = [interrupts.next_timer(), signals].into_iter().flatten().fold(until, f64::min);
+        let signals = if self.resources.interrupts.watches_signals() { self.next_extension_event() } else { None };
+        let next = [self.resources.interrupts.next_timer(), signals].into_iter().flatten().fold(until, f64::min);
         self.wait_rechecks = true;
         // A robot held by StopMove waits for ever: look again within the hour.
         Some((next - self.time).clamp(1e-6, 3600.0))

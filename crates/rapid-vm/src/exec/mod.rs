@@ -18,7 +18,6 @@ mod hooks;
 pub mod inspect;
 mod instr;
 mod interrupts;
-mod io;
 mod kernel;
 mod late;
 mod log;
@@ -285,7 +284,7 @@ impl Vm {
                     *slot = value;
                 }
             }
-            self.connect_configured_signals();
+            self.extensions_data_initialised();
         }
         self.start_routine(entry);
         Ok(())
@@ -319,7 +318,7 @@ impl Vm {
         let mut remaining = budget;
         // Notes about the run made where no host was at hand (the virtual signals of
         // `--virtual-io`), told once.
-        for text in self.resources.io.take_notes() {
+        for text in self.resources.take_notes() {
             host.note(&text);
         }
         // Messages another task sent while this one did not run.
@@ -619,7 +618,7 @@ impl Vm {
             }
             Instr::ReadSignal(name) => {
                 let data = self.pop();
-                let value = crate::builtins::io::read_signal(&mut self.resources, self.time, &data);
+                let value = self.read_signal(&data);
                 match value {
                     Ok(value) => self.push(Value::Num(value as f32)),
                     // The signal's I/O device is disabled (manual §1.9).

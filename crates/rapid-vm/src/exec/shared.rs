@@ -44,6 +44,9 @@ impl Vm {
     /// before the task runs, and back after.
     pub fn exchange_shared(&mut self, shared: &mut crate::builtins::Shared) {
         self.resources.exchange_shared(shared);
+        for hooks in self.builtins.hooks() {
+            hooks.exchange_shared(&mut self.resources, &mut shared.extensions);
+        }
     }
 
     /// Logs a state change of the task (operational domain, information), as the

@@ -62,8 +62,8 @@ impl Vm {
         if stop.paused_robot {
             self.call_motion_builtin("StartMove", &[Value::Absent], host);
         }
-        if let Some((depth, pc, started)) = self.resources.io.waiting {
-            self.resources.io.waiting = Some((depth, pc, started + stood));
+        if let Some((depth, pc, started)) = self.resources.waiting {
+            self.resources.waiting = Some((depth, pc, started + stood));
         }
     }
 
@@ -83,8 +83,8 @@ impl Vm {
     pub fn step_started(&mut self, host: &mut dyn crate::host::Host) {
         let Some(stop) = self.resources.interrupts.stop else { return };
         let stood = (self.time - stop.since).max(0.0);
-        if let Some((depth, pc, started)) = self.resources.io.waiting {
-            self.resources.io.waiting = Some((depth, pc, started + stood));
+        if let Some((depth, pc, started)) = self.resources.waiting {
+            self.resources.waiting = Some((depth, pc, started + stood));
         }
         if stop.paused_robot && self.extension_held() {
             self.call_motion_builtin("StartMove", &[Value::Absent], host);

@@ -10,10 +10,12 @@
 //! (ERR_IODISABLE cannot happen; uncertain). Every network runs, so IOBusStart has
 //! nothing to start. Unknown names raise ERR_NAME_INVALID.
 
-use super::{native, present, Ctx, Family, StopKind};
-use crate::errnames::Err;
-use crate::error::RapidError;
-use crate::value::Value;
+use rapid_vm::errnames::Err;
+use rapid_vm::error::RapidError;
+use rapid_vm::ext::{native, present, Ctx, Family, StopKind};
+use rapid_vm::value::Value;
+
+use crate::io::IoAccess;
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -37,7 +39,7 @@ const IOBUS_PHYS_STATE_RUNNING: f32 = 22.0;
 /// The I/O device name argument, checked to be a configured device (ERR_NAME_INVALID).
 fn device_name(ctx: &mut Ctx<'_>, arg: &Value) -> Result<String, RapidError> {
     let name = ctx.string(arg)?;
-    let known = ctx.resources.io.system.as_ref().is_some_and(|io| io.units().device(&name).is_some());
+    let known = ctx.resources.io().system.as_ref().is_some_and(|io| io.units().device(&name).is_some());
     if !known {
         return Err(ctx.error(Err::NameInvalid, format!("no I/O device `{name}` is configured")));
     }
@@ -49,7 +51,7 @@ fn device_name(ctx: &mut Ctx<'_>, arg: &Value) -> Result<String, RapidError> {
 fn network_name(ctx: &mut Ctx<'_>, arg: &Value) -> Result<String, RapidError> {
     let name = ctx.string(arg)?;
     // Without an I/O configuration there is still the controller's own network.
-    let known = match ctx.resources.io.system.as_ref() {
+    let known = match ctx.resources.io().system.as_ref() {
         Some(io) => io.units().has_network(&name),
         None => name.eq_ignore_ascii_case(rapid_io::LOCAL_NETWORK),
     };
@@ -77,12 +79,12 @@ fn switch_device(ctx: &mut Ctx<'_>, args: &[Value], enabled: bool) -> Res {
     let name = device_name(ctx, &args[0])?;
     let max = max_time(ctx, &args[1])?;
     let time = ctx.time;
-    ctx.resources.io.advance(time);
+    ctx.resources.io_mut().advance(time);
     if enabled && !connected(ctx, &name) {
         return wait_for_device(ctx, &name, max);
     }
-    ctx.resources.io.waiting = None;
-    let result = match ctx.resources.io.system.as_mut() {
+    ctx.resources.waiting = None;
+    let result = match ctx.resources.io_mut().system.as_mut() {
         Some(io) => io.set_device_enabled(&name, enabled, time).map_err(|e| e.to_string()),
         None => Err(format!("no I/O device `{name}` is configured")),
     };
@@ -91,25 +93,25 @@ fn switch_device(ctx: &mut Ctx<'_>, args: &[Value], enabled: bool) -> Res {
 }
 
 fn connected(ctx: &Ctx<'_>, name: &str) -> bool {
-    ctx.resources.io.system.as_ref().is_none_or(|io| io.units().is_connected(name).unwrap_or(true))
+    ctx.resources.io().system.as_ref().is_none_or(|io| io.units().is_connected(name).unwrap_or(true))
 }
 
 /// IOEnable of a device that does not answer: waits for the stimulus to connect it
 /// (the instruction runs again then), at most `max` seconds from the first try.
 fn wait_for_device(ctx: &mut Ctx<'_>, name: &str, max: f64) -> Res {
-    let here = (ctx.chain.len(), ctx.chain.last().map_or(0, |frame| frame.position().1));
+    let here = rapid_vm::ext::call_site(ctx);
     let now = ctx.time;
-    let started = match ctx.resources.io.waiting {
+    let started = match ctx.resources.waiting {
         Some((depth, pc, at)) if (depth, pc) == here => at,
         _ => now,
     };
     let deadline = started + max;
     if now >= deadline {
-        ctx.resources.io.waiting = None;
+        ctx.resources.waiting = None;
         return Err(ctx.error(Err::IoEnable, format!("I/O device `{name}` did not answer within MaxTime {max} s")));
     }
-    ctx.resources.io.waiting = Some((here.0, here.1, started));
-    let next = ctx.resources.io.next_event_time().map_or(deadline, |t| t.min(deadline));
+    ctx.resources.waiting = Some((here.0, here.1, started));
+    let next = rapid_vm::ext::next_event(ctx).map_or(deadline, |t| t.min(deadline));
     ctx.wait = Some((next - now).max(1e-6));
     ctx.stop = StopKind::Repeat;
     Ok(None)
@@ -129,8 +131,8 @@ fn io_enable(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 fn io_unit_state(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let name = device_name(ctx, &args[0])?;
     let now = ctx.time;
-    ctx.resources.io.advance(now);
-    let enabled = ctx.resources.io.system.as_ref().and_then(|io| io.units().is_enabled(&name).ok()).unwrap_or(false);
+    ctx.resources.io_mut().advance(now);
+    let enabled = ctx.resources.io().system.as_ref().and_then(|io| io.units().is_enabled(&name).ok()).unwrap_or(false);
     // uncertain: an enabled device that does not answer is taken to be in error
     // (IOUNIT_RUNERROR, physically IOUNIT_PHYS_STATE_ERROR); logically still enabled.
     let answers = connected(ctx, &name);
@@ -167,7 +169,7 @@ fn io_bus_start(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-crate::builtins::signature::layout! {
+rapid_vm::layout! {
     static EVENT_MESSAGE: EventMessageArgs = "IOEventMessage" { device_name: "DeviceName" }
 }
 
@@ -178,7 +180,7 @@ fn io_event_message(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-pub(super) static FAMILY: Family = Family {
+pub(crate) static FAMILY: Family = Family {
     file: file!(),
     builtins: &[
         native("IODisable", io_disable),

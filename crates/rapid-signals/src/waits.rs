@@ -9,18 +9,14 @@
 
 use std::sync::LazyLock;
 
-use super::io::signal;
-use super::io_visualize::{self, BoxArgs};
-use super::{native, present, Ctx, Family, StopKind};
-use crate::errnames::Err;
-use crate::error::RapidError;
-use crate::value::Value;
+use rapid_vm::errnames::Err;
+use rapid_vm::error::RapidError;
+use rapid_vm::ext::{native, present, visualize_step, wait_again, wait_started, BoxArgs, Ctx, Family};
+use rapid_vm::value::Value;
+
+use crate::io::{signal, IoAccess};
 
 type Res = Result<Option<Value>, RapidError>;
-
-/// How long to wait before looking again when nothing is scheduled: no signal can
-/// change then except at the deadline, so this only bounds a wait without \MaxTime.
-const IDLE_POLL: f64 = 3600.0;
 
 /// What a wait compares the signal with.
 #[derive(Clone, Copy)]
@@ -64,7 +60,7 @@ impl Layout {
     /// The layout of wait instruction `name`, by the parameter names of its
     /// declaration (see `signature.rs`).
     fn of(name: &str) -> Layout {
-        let sig = super::signature::of(name);
+        let sig = rapid_vm::ext::signature(name);
         Layout {
             signal: sig.at("Signal"),
             not_eq: sig.at("NOTEQ"),
@@ -122,12 +118,12 @@ fn wait(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, shown: &BoxArgs, com
         Some(d) if present(args.get(d)) => ctx.num(&args[d])?,
         _ => ctx.num(&args[layout.value])?,
     };
-    let value = ctx.resources.io.system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0);
+    let value = ctx.resources.io().system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0);
     let now = ctx.time;
     let started = wait_started(ctx);
     if compare.holds(value, target) {
-        ctx.resources.io.waiting = None;
-        io_visualize::step(ctx, args, shown, true)?;
+        ctx.resources.end_wait();
+        visualize_step(ctx, args, shown, true)?;
         if let Some(flag) = layout.time_flag.filter(|&f| present(args.get(f))) {
             ctx.store(&args[flag], Value::Bool(false))?;
         }
@@ -135,46 +131,14 @@ fn wait(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, shown: &BoxArgs, com
     }
     let deadline = ctx.opt_num(args.get(layout.max_time))?.map(|max| started + max);
     if deadline.is_some_and(|d| now >= d) {
-        ctx.resources.io.waiting = None;
-        io_visualize::step(ctx, args, shown, true)?;
+        ctx.resources.end_wait();
+        visualize_step(ctx, args, shown, true)?;
         return timed_out(ctx, args, layout, value);
     }
     // The box (with \Visualize) is shown while the wait goes on, unchanged.
-    let box_closes = io_visualize::step(ctx, args, shown, false)?;
+    let box_closes = visualize_step(ctx, args, shown, false)?;
     wait_again(ctx, started, deadline, box_closes);
     Ok(None)
-}
-
-/// When the wait of the instruction being run began: the first try's time, kept across
-/// its repeats (per call depth and instruction); now on a first try.
-pub fn wait_started(ctx: &Ctx<'_>) -> f64 {
-    match ctx.resources.io.waiting {
-        Some((depth, pc, at)) if (depth, pc) == wait_key(ctx) => at,
-        _ => ctx.time,
-    }
-}
-
-/// The instruction waits on from `started` and runs again at the next signal change
-/// the I/O system knows of, the next interrupt that may come, `also`, or `deadline`,
-/// whichever is first.
-pub fn wait_again(ctx: &mut Ctx<'_>, started: f64, deadline: Option<f64>, also: Option<f64>) {
-    let now = ctx.time;
-    let (depth, pc) = wait_key(ctx);
-    ctx.resources.io.waiting = Some((depth, pc, started));
-    let io_next = ctx.resources.io.next_event_time();
-    let interrupt_next = super::interrupts::next_due(ctx);
-    let next = [io_next, interrupt_next, also].into_iter().flatten().min_by(f64::total_cmp).unwrap_or(now + IDLE_POLL);
-    let until = deadline.map_or(next, |d| d.min(next)).max(now);
-    // A change due now (or a rounding tie) still moves the clock a little, so the wait
-    // always ends.
-    ctx.wait = Some((until - now).max(1e-6));
-    ctx.stop = StopKind::Repeat;
-}
-
-/// The wait of the instruction being run is over (it ends in success or in an error):
-/// the next wait starts afresh.
-pub fn wait_over(ctx: &mut Ctx<'_>) {
-    ctx.resources.io.waiting = None;
 }
 
 /// Past `\MaxTime`: with `\TimeFlag` the flag is set and execution goes on; otherwise
@@ -195,13 +159,7 @@ fn timed_out(ctx: &mut Ctx<'_>, args: &[Value], layout: &Layout, value: f64) -> 
     Err(ctx.error(Err::WaitMaxTime, "the signal did not reach the value within \\MaxTime"))
 }
 
-/// The call depth and instruction of the waiting call.
-fn wait_key(ctx: &Ctx<'_>) -> (usize, u32) {
-    let pc = ctx.chain.last().map_or(0, |frame| frame.position().1);
-    (ctx.chain.len(), pc)
-}
-
-pub(super) static FAMILY: Family = Family {
+pub(crate) static FAMILY: Family = Family {
     file: file!(),
     builtins: &[
         native("WaitDI", wait_digital),
@@ -216,7 +174,7 @@ pub(super) static FAMILY: Family = Family {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::builtins::signature::ABSENT;
+    use rapid_vm::builtins::signature::ABSENT;
 
     // Positions counted by hand from the manual's syntax:
     // WaitDI Signal Value [\MaxTime] [\TimeFlag] [\Visualize] …

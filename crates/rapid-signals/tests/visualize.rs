@@ -3,7 +3,14 @@
 
 use rapid_io::{IoSystem, SignalDef, SignalKind};
 use rapid_sema::SourceInput;
-use rapid_vm::{load, Exit, RecordingHost};
+use rapid_signals::IoAccess;
+use rapid_vm::{Exit, LoadError, Loaded, RecordingHost};
+
+/// Loads with the language's built-ins and the I/O signals' (rapid-signals).
+fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
+    let set = std::sync::Arc::new(rapid_vm::builtins::Builtins::new(&[&rapid_signals::EXTENSION]));
+    rapid_vm::load_in(files, entry, &rapid_sema::Options::default(), set)
+}
 
 /// di1 (the input waited for), gi1 (4 bits), ui1 (the box's \UIActiveSignal).
 fn io_system() -> IoSystem {
@@ -30,7 +37,7 @@ fn run(program: &str, stimulus: &[(f64, &str, f64)]) -> Shown {
         Err(err) => panic!("the program loads: {err:?}"),
     };
     let system = io_system();
-    let io = &mut loaded.vm.resources_mut().io;
+    let io = loaded.vm.resources_mut().io_mut();
     for &(at, name, value) in stimulus {
         io.stimulus.push_back((at, system.id(name).expect("a configured signal"), value));
     }
@@ -41,7 +48,7 @@ fn run(program: &str, stimulus: &[(f64, &str, f64)]) -> Shown {
             Exit::Wait(seconds) => loaded.vm.time += seconds,
             Exit::Done => {
                 let changes =
-                    loaded.vm.resources().io.system.as_ref().map(|s| s.changes().to_vec()).unwrap_or_default();
+                    loaded.vm.resources().io().system.as_ref().map(|s| s.changes().to_vec()).unwrap_or_default();
                 let ui = changes.iter().filter(|c| &*c.signal == "ui1").map(|c| (c.time, c.new)).collect();
                 return Shown { lines: host.lines, boxes: host.boxes, ui };
             }

@@ -1,5 +1,6 @@
-//! I/O signals (§1.9) on the task's I/O system (`crates/rapid-io`, in
-//! `Resources::io`): AliasIO, AliasIOReset, Set, Reset, SetDO, SetAO, SetGO, InvertDO,
+//! I/O signals (§1.9) on the task's I/O system (`crates/rapid-io`, an [`IoState`] in
+//! the task's extension slot, reached through [`IoAccess`]), and the hooks the
+//! interpreter's loop asks ([`IoHooks`]): AliasIO, AliasIOReset, Set, Reset, SetDO, SetAO, SetGO, InvertDO,
 //! PulseDO, TestDI, ValidIO, GetSignalOrigin, GetGroupSignalInfo, and reading signals in
 //! expressions.
 //!
@@ -13,10 +14,13 @@
 use rapid_io::{IoSystem, SignalKind};
 use rapid_sema::types::TypeId;
 
-use super::{native, present, Ctx, Family, Resources};
-use crate::errnames::Err;
-use crate::error::RapidError;
-use crate::value::{Opaque, OpaqueState, Value};
+use rapid_vm::builtins::Shared;
+use rapid_vm::embed::{Extensions, TaskHooks, TaskState};
+use rapid_vm::errnames::Err;
+use rapid_vm::error::RapidError;
+use rapid_vm::exec::storage::Storage;
+use rapid_vm::ext::{native, present, Ctx, Family, Resources};
+use rapid_vm::value::{Opaque, OpaqueState, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -36,20 +40,11 @@ pub struct IoState {
     /// Outputs the robot's path sets at a time (triggers, Move*DO): (time, signal,
     /// value), in time order.
     pub path_orders: std::collections::VecDeque<(f64, u32, f64)>,
-    /// The operator's answers to pendant dialogs at given times (a stimulus), in
-    /// time order.
-    pub answers: std::collections::VecDeque<(f64, String)>,
     /// How many entries of the change log the reactions have seen.
     seen_changes: usize,
-    /// The waiting instruction under way (WaitDI …): (call depth, pc, started at).
-    pub(crate) waiting: Option<(usize, u32, f64)>,
     /// `--virtual-io`: AliasIO makes a virtual signal of a name the configuration
     /// lacks (also one computed at run time) instead of raising ERR_ALIASIO_DEF.
     pub virtual_io: bool,
-    /// Notes for the run's user not yet told (see [`IoState::note_later`]).
-    notes: Vec<String>,
-    /// The message boxes of waits with `\Visualize` under way, one per call depth.
-    pub(crate) boxes: Vec<super::io_visualize::ShownBox>,
 }
 
 /// The part of the I/O state every task of a controller shares: the signals, what the
@@ -60,7 +55,6 @@ pub struct SharedIo {
     pub stimulus: std::collections::VecDeque<(f64, u32, f64)>,
     pub reactions: Vec<Reaction>,
     pub path_orders: std::collections::VecDeque<(f64, u32, f64)>,
-    pub answers: std::collections::VecDeque<(f64, String)>,
     seen_changes: usize,
 }
 
@@ -72,40 +66,162 @@ impl SharedIo {
     }
 }
 
+/// A task without I/O reads this (no system, no signal kinds).
+static NO_IO: IoState = IoState {
+    system: None,
+    kinds: Vec::new(),
+    configured: Vec::new(),
+    stimulus: std::collections::VecDeque::new(),
+    reactions: Vec::new(),
+    path_orders: std::collections::VecDeque::new(),
+    seen_changes: 0,
+    virtual_io: false,
+};
+
+/// A controller without I/O shares this.
+static NO_SHARED_IO: SharedIo = SharedIo {
+    system: None,
+    stimulus: std::collections::VecDeque::new(),
+    reactions: Vec::new(),
+    path_orders: std::collections::VecDeque::new(),
+    seen_changes: 0,
+};
+
+impl TaskState for IoState {}
+
+impl TaskState for SharedIo {}
+
+/// The controller's shared I/O (in `Shared::extensions`).
+pub trait SharedIoAccess {
+    /// The shared I/O (an empty one when there is none yet).
+    fn io(&self) -> &SharedIo;
+    /// The shared I/O to change (put in at its default first).
+    fn io_mut(&mut self) -> &mut SharedIo;
+}
+
+impl SharedIoAccess for Shared {
+    fn io(&self) -> &SharedIo {
+        self.extensions.get::<SharedIo>().unwrap_or(&NO_SHARED_IO)
+    }
+
+    fn io_mut(&mut self) -> &mut SharedIo {
+        self.extensions.get_or_default::<SharedIo>()
+    }
+}
+
+/// The task's I/O state in its extension slot (`Resources::extensions`).
+pub trait IoAccess {
+    /// The task's I/O state (an empty one when it has none yet).
+    fn io(&self) -> &IoState;
+    /// The task's I/O state to change (put in at its default first).
+    fn io_mut(&mut self) -> &mut IoState;
+}
+
+impl IoAccess for Resources {
+    fn io(&self) -> &IoState {
+        self.extensions.get::<IoState>().unwrap_or(&NO_IO)
+    }
+
+    fn io_mut(&mut self) -> &mut IoState {
+        self.extensions.get_or_default::<IoState>()
+    }
+}
+
 impl IoState {
-    /// The waiting instruction under way is over (it ended or timed out).
-    pub fn end_wait(&mut self) {
-        self.waiting = None;
-    }
-
-    /// When the waiting instruction under way (WaitDI …) began, if one is.
-    pub fn wait_started(&self) -> Option<f64> {
-        self.waiting.map(|(_, _, at)| at)
-    }
-
-    /// A note for the run's user (on stderr in `rapid run`), told when the task next
-    /// runs: what `--virtual-io` made of a signal, for one.
-    pub fn note_later(&mut self, text: String) {
-        self.notes.push(text);
-    }
-
-    pub(crate) fn take_notes(&mut self) -> Vec<String> {
-        std::mem::take(&mut self.notes)
-    }
     /// An output the robot's path sets at `time` (kept in time order).
     pub fn order_on_path(&mut self, time: f64, signal: u32, value: f64) {
         let at = self.path_orders.partition_point(|&(t, _, _)| t <= time);
         self.path_orders.insert(at, (time, signal, value));
     }
 
-    /// Swaps the shared part with the controller's (see `Resources::exchange_shared`).
+    /// Swaps the shared part with the controller's (`TaskHooks::exchange_shared`, each
+    /// time the controller hands the task in or out).
     pub fn exchange_shared(&mut self, shared: &mut SharedIo) {
         std::mem::swap(&mut self.system, &mut shared.system);
         std::mem::swap(&mut self.stimulus, &mut shared.stimulus);
         std::mem::swap(&mut self.reactions, &mut shared.reactions);
         std::mem::swap(&mut self.path_orders, &mut shared.path_orders);
-        std::mem::swap(&mut self.answers, &mut shared.answers);
         std::mem::swap(&mut self.seen_changes, &mut shared.seen_changes);
+    }
+}
+
+/// What the interpreter's loop asks of the I/O (`rapid_vm::embed::TaskHooks`): signals
+/// read in expressions, the changes signal interrupts look at, the next scheduled
+/// change (waits and interrupts look again then), the configuration's signals
+/// connected at load and after PP to Main.
+pub struct IoHooks;
+
+/// The I/O's hooks (the set of built-ins asks them).
+pub static HOOKS: IoHooks = IoHooks;
+
+impl TaskHooks for IoHooks {
+    fn loaded(&self, resources: &mut Resources, program: &rapid_sema::Program) {
+        let io = resources.io_mut();
+        io.kinds = signal_kinds(program);
+        io.configured = program
+            .datas
+            .iter()
+            .enumerate()
+            .filter(|(_, data)| data.origin == rapid_sema::symbols::DeclOrigin::CONFIGURED)
+            .map(|(idx, data)| (idx as u32, data.display.clone()))
+            .collect();
+    }
+
+    fn data_initialised(&self, resources: &mut Resources, storage: &mut Storage) {
+        connect_configured(resources, storage);
+    }
+
+    fn next_event(&self, resources: &mut Resources) -> Option<f64> {
+        resources.extensions.get_mut::<IoState>()?.next_event_time()
+    }
+
+    fn read_signal(&self, resources: &mut Resources, time: f64, data: &Value) -> Option<Result<f64, Option<String>>> {
+        Some(read_signal(resources, time, data))
+    }
+
+    fn signal_of(&self, ctx: &mut Ctx<'_>, arg: &Value) -> Option<Result<u32, RapidError>> {
+        Some(signal(ctx, arg))
+    }
+
+    fn set_signal(&self, ctx: &mut Ctx<'_>, id: u32, value: f64) -> Option<Result<(), RapidError>> {
+        Some(order(ctx, |io, t| io.set(id, value, t)).map(|_| ()))
+    }
+
+    fn exchange_shared(&self, resources: &mut Resources, shared: &mut Extensions) {
+        resources.io_mut().exchange_shared(shared.get_or_default::<SharedIo>());
+    }
+
+    fn signal_changes(
+        &self,
+        resources: &mut Resources,
+        now: f64,
+        from: usize,
+        changes: &mut Vec<(u32, f64)>,
+    ) -> Option<usize> {
+        let io = resources.io_mut();
+        io.advance(now);
+        let log = io.system.as_ref().map(|io| io.changes()).unwrap_or(&[]);
+        changes.extend(log.get(from..).unwrap_or(&[]).iter().map(|change| (change.id, change.new)));
+        Some(log.len())
+    }
+}
+
+/// The program's types for the six signal kinds (AliasIO checks kinds by them).
+fn signal_kinds(prog: &rapid_sema::Program) -> Vec<(TypeId, SignalKind)> {
+    use SignalKind as K;
+    [K::DI, K::DO, K::AI, K::AO, K::GI, K::GO]
+        .into_iter()
+        .filter_map(|kind| prog.types.find(kind.rapid_type()).map(|ty| (ty, kind)))
+        .collect()
+}
+
+/// Configured signals are connected from the start, also after PP to Main
+/// re-initialises the data.
+pub fn connect_configured(resources: &Resources, storage: &mut Storage) {
+    for (global, value) in resources.io().configured_values() {
+        if let Some(slot) = storage.globals.get_mut(global) {
+            *slot = value;
+        }
     }
 }
 
@@ -191,7 +307,7 @@ impl IoState {
     }
 
     /// The value each configured signal's data holds: connected to its signal.
-    pub(crate) fn configured_values(&self) -> Vec<(u32, Value)> {
+    pub fn configured_values(&self) -> Vec<(u32, Value)> {
         let Some(system) = &self.system else { return Vec::new() };
         self.configured
             .iter()
@@ -239,10 +355,10 @@ fn handle_of(data: &Value) -> Option<(u32, bool)> {
 /// The value of signal data in an expression. `Err(None)`: not connected
 /// (ERR_NO_ALIASIO_DEF); `Err(Some(message))`: its I/O device is disabled
 /// (ERR_NORUNUNIT, manual §1.9).
-pub(crate) fn read_signal(resources: &mut Resources, time: f64, data: &Value) -> Result<f64, Option<String>> {
+pub fn read_signal(resources: &mut Resources, time: f64, data: &Value) -> Result<f64, Option<String>> {
     let (id, _) = handle_of(data).ok_or(None)?;
-    resources.io.advance(time);
-    let system = resources.io.system.as_ref().ok_or(None)?;
+    resources.io_mut().advance(time);
+    let system = resources.io().system.as_ref().ok_or(None)?;
     system.read(id).map_err(|fault| Some(fault.to_string()))
 }
 
@@ -250,7 +366,7 @@ pub(crate) fn read_signal(resources: &mut Resources, time: f64, data: &Value) ->
 /// ERR_NO_ALIASIO_DEF when not connected, ERR_NORUNUNIT when its device is disabled.
 pub fn signal(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
     let id = connected(ctx, arg)?;
-    let fault = ctx.resources.io.system.as_ref().and_then(|io| io.read(id).err());
+    let fault = ctx.resources.io().system.as_ref().and_then(|io| io.read(id).err());
     match fault {
         Some(fault) => Err(io_error(ctx, &fault)),
         None => Ok(id),
@@ -259,19 +375,19 @@ pub fn signal(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
 
 /// The signal id signal data (an argument) is connected to, whatever its device's state;
 /// ERR_NO_ALIASIO_DEF when not connected.
-pub(super) fn connected(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
+pub(crate) fn connected(ctx: &mut Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
     let data = ctx.value(arg)?;
     let Some((id, _)) = handle_of(&data) else {
         return Err(ctx.error(Err::NoAliasIoDef, "the signal variable is not connected to an I/O signal (AliasIO)"));
     };
-    ctx.resources.io.advance(ctx.time);
+    ctx.resources.io_mut().advance(ctx.time);
     Ok(id)
 }
 
 /// Runs an order on the I/O system and turns its failure into the RAPID error.
 pub fn order(ctx: &mut Ctx<'_>, run: impl FnOnce(&mut IoSystem, f64) -> Result<(), rapid_io::IoError>) -> Res {
     let time = ctx.time;
-    let Some(system) = ctx.resources.io.system.as_mut() else {
+    let Some(system) = ctx.resources.io_mut().system.as_mut() else {
         return Err(ctx.error(Err::NoAliasIoDef, "this task has no I/O system"));
     };
     match run(system, time) {
@@ -302,7 +418,7 @@ fn reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     order(ctx, |io, t| io.set(id, 0.0, t))
 }
 
-super::signature::layout! {
+rapid_vm::layout! {
     static SET_DO: SetDoArgs = "SetDO" { s_delay: "SDelay", signal: "Signal", value: "Value" }
     static SET_GO: SetGoArgs = "SetGO" { s_delay: "SDelay", signal: "Signal", value: "Value", dvalue: "Dvalue" }
     static PULSE_DO: PulseDoArgs = "PulseDO" { high: "High", p_length: "PLength", signal: "Signal" }
@@ -359,7 +475,7 @@ fn pulse_do(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// The value of a signal argument, reachable now (see [`signal`]).
 fn read(ctx: &mut Ctx<'_>, arg: &Value) -> Result<f64, RapidError> {
     let id = signal(ctx, arg)?;
-    Ok(ctx.resources.io.system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0))
+    Ok(ctx.resources.io().system.as_ref().and_then(|io| io.value(id)).unwrap_or(0.0))
 }
 
 /// `TestDI(Signal)`: whether a digital input is 1.
@@ -388,9 +504,9 @@ fn valid_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let data = ctx.value(&args[0])?;
     // What the stimulus changed by now (a device disconnected) counts.
     let now = ctx.time;
-    ctx.resources.io.advance(now);
+    ctx.resources.io_mut().advance(now);
     let valid = handle_of(&data).is_some_and(|(id, _)| {
-        ctx.resources.io.system.as_ref().is_some_and(|io| io.def(id).is_some() && io.is_running(id))
+        ctx.resources.io().system.as_ref().is_some_and(|io| io.def(id).is_some() && io.is_running(id))
     });
     Ok(Some(Value::Bool(valid)))
 }
@@ -407,17 +523,17 @@ fn alias_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     };
     let from = match ctx.value(&args[0])? {
         Value::Str(name) => {
-            let id = ctx.resources.io.system.as_ref().and_then(|io| io.id(&name));
+            let id = ctx.resources.io().system.as_ref().and_then(|io| io.id(&name));
             match id {
                 Some(id) => id,
-                None if ctx.resources.io.virtual_io => virtual_signal(ctx, &name, target.ty)?,
+                None if ctx.resources.io().virtual_io => virtual_signal(ctx, &name, target.ty)?,
                 None => return Err(ctx.error(Err::AliasIoDef, format!("no signal `{name}` in the I/O configuration"))),
             }
         }
         other => connected(ctx, &other)?,
     };
-    let from_kind = ctx.resources.io.system.as_ref().and_then(|io| io.def(from)).map(|def| def.kind);
-    let to_kind = ctx.resources.io.kinds.iter().find(|(ty, _)| *ty == target.ty).map(|(_, kind)| *kind);
+    let from_kind = ctx.resources.io().system.as_ref().and_then(|io| io.def(from)).map(|def| def.kind);
+    let to_kind = ctx.resources.io().kinds.iter().find(|(ty, _)| *ty == target.ty).map(|(_, kind)| *kind);
     if from_kind.is_none() || from_kind != to_kind {
         return Err(ctx.error(Err::AliasIoType, "FromSignal and ToSignal are different kinds of signal"));
     }
@@ -430,7 +546,7 @@ fn alias_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// the program did not show) that the configuration lacks becomes a virtual signal of
 /// the kind of the data it connects, told once.
 fn virtual_signal(ctx: &mut Ctx<'_>, name: &str, ty: TypeId) -> Result<u32, RapidError> {
-    let Some(kind) = ctx.resources.io.kinds.iter().find(|(t, _)| *t == ty).map(|(_, k)| *k) else {
+    let Some(kind) = ctx.resources.io().kinds.iter().find(|(t, _)| *t == ty).map(|(_, k)| *k) else {
         return Err(ctx.error(Err::AliasIoType, "ToSignal is no signal data"));
     };
     let mut def = rapid_io::SignalDef::new(name, kind);
@@ -439,7 +555,7 @@ fn virtual_signal(ctx: &mut Ctx<'_>, name: &str, ty: TypeId) -> Result<u32, Rapi
         def.group_bits = 32;
     }
     // `rapid run --virtual-io` always has an I/O system (an empty one at least).
-    let Some(system) = ctx.resources.io.system.as_mut() else {
+    let Some(system) = ctx.resources.io_mut().system.as_mut() else {
         return Err(ctx.error(Err::AliasIoDef, format!("no signal `{name}`: there is no I/O system")));
     };
     let added = system.add_virtual(def);
@@ -473,7 +589,7 @@ const SIGORIG_ALIAS: f32 = 2.0;
 fn get_signal_origin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let data = ctx.value(&args[0])?;
     let found = handle_of(&data).and_then(|(id, alias)| {
-        let name = ctx.resources.io.system.as_ref()?.name(id)?.to_string();
+        let name = ctx.resources.io().system.as_ref()?.name(id)?.to_string();
         Some((if alias { SIGORIG_ALIAS } else { SIGORIG_CFG }, name))
     });
     let (origin, name) = found.unwrap_or((SIGORIG_NONE, String::new()));
@@ -487,7 +603,7 @@ fn get_signal_origin(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // uncertain: a signal that is not a group is refused with ERR_ARGVALERR.
 fn get_group_signal_info(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let id = connected(ctx, &args[0])?;
-    let def = ctx.resources.io.system.as_ref().and_then(|io| io.def(id)).cloned();
+    let def = ctx.resources.io().system.as_ref().and_then(|io| io.def(id)).cloned();
     let Some(def) = def.filter(|d| d.kind.is_group()) else {
         return Err(ctx.error(Err::ArgValue, "GetGroupSignalInfo needs a group signal (GI or GO)"));
     };
@@ -514,7 +630,7 @@ fn alias_io_reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-pub(super) static FAMILY: Family = Family {
+pub(crate) static FAMILY: Family = Family {
     file: file!(),
     builtins: &[
         native("AliasIO", alias_io),
@@ -540,3 +656,51 @@ pub(super) static FAMILY: Family = Family {
         native("GetGroupSignalInfo", get_group_signal_info),
     ],
 };
+
+#[cfg(test)]
+mod tests {
+    use rapid_io::{IoSystem, SignalDef, SignalKind};
+    use rapid_vm::embed::TaskHooks;
+    use rapid_vm::ext::Resources;
+
+    use super::{IoAccess, HOOKS};
+
+    /// A task's resources with do1 (id 0) and di1 (id 1); do1 set to 1 at 0 s, and a
+    /// stimulus setting di1 to 1 at 0.5 s and to 0 at 3 s.
+    fn resources() -> Resources {
+        let defs = vec![SignalDef::new("do1", SignalKind::DO), SignalDef::new("di1", SignalKind::DI)];
+        let mut system = IoSystem::new(defs, Vec::new()).expect("a valid configuration");
+        let (do1, di1) = (system.id("do1").expect("do1"), system.id("di1").expect("di1"));
+        system.set(do1, 1.0, 0.0).expect("do1 is an output the program may set");
+        let mut resources = Resources::default();
+        let io = resources.io_mut();
+        io.system = Some(system);
+        io.stimulus.extend([(0.5, di1, 1.0), (3.0, di1, 0.0)]);
+        resources
+    }
+
+    #[test]
+    fn signal_interrupts_get_the_changes_since_their_last_look_in_order() {
+        let mut resources = resources();
+        let mut changes = Vec::new();
+        // By 1 s: do1 rose at 0 s, the stimulus raised di1 at 0.5 s.
+        assert_eq!(HOOKS.signal_changes(&mut resources, 1.0, 0, &mut changes), Some(2));
+        assert_eq!(changes, [(0, 1.0), (1, 1.0)]);
+        changes.clear();
+        // Nothing new by 2 s; the stimulus's next line is due at 3 s.
+        assert_eq!(HOOKS.signal_changes(&mut resources, 2.0, 2, &mut changes), Some(2));
+        assert!(changes.is_empty());
+        assert_eq!(HOOKS.next_event(&mut resources), Some(3.0));
+        assert_eq!(HOOKS.signal_changes(&mut resources, 3.0, 2, &mut changes), Some(3));
+        assert_eq!(changes, [(1, 0.0)]);
+    }
+
+    #[test]
+    fn a_task_without_io_has_no_signal_events() {
+        let mut resources = Resources::default();
+        assert_eq!(HOOKS.next_event(&mut resources), None);
+        let mut changes = Vec::new();
+        assert_eq!(HOOKS.signal_changes(&mut resources, 1.0, 0, &mut changes), Some(0));
+        assert!(changes.is_empty());
+    }
+}

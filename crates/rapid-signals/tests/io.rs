@@ -4,7 +4,14 @@
 
 use rapid_io::{AnalogRange, IoSystem, SignalDef, SignalKind};
 use rapid_sema::SourceInput;
-use rapid_vm::{load, Exit, RecordingHost};
+use rapid_signals::IoAccess;
+use rapid_vm::{Exit, LoadError, Loaded, RecordingHost};
+
+/// Loads with the language's built-ins and the I/O signals' (rapid-signals).
+fn load(files: &[SourceInput], entry: &str) -> Result<Loaded, LoadError> {
+    let set = std::sync::Arc::new(rapid_vm::builtins::Builtins::new(&[&rapid_signals::EXTENSION]));
+    rapid_vm::load_in(files, entry, &rapid_sema::Options::default(), set)
+}
 
 /// do1, di1, go1 (8 bits), ao1 (logical 0..10).
 fn io_system() -> IoSystem {
@@ -33,7 +40,7 @@ fn run_with(program: &str, stimulus: &[(f64, &str, f64)]) -> Vec<String> {
         Err(err) => panic!("the program loads: {err:?}"),
     };
     let system = io_system();
-    let io = &mut loaded.vm.resources_mut().io;
+    let io = loaded.vm.resources_mut().io_mut();
     for &(at, name, value) in stimulus {
         io.stimulus.push_back((at, system.id(name).expect("a configured signal"), value));
     }
