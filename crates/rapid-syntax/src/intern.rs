@@ -58,6 +58,15 @@ impl Interner {
 
     /// The symbol for `name` if it was interned before.
     pub fn get(&self, name: &str) -> Option<Symbol> {
+        // Most names asked for are short ASCII (a loader asks for each of the 300
+        // ERR_ names): folded on the stack, without an allocation.
+        let mut buf = [0u8; 48];
+        if name.is_ascii() && name.len() <= buf.len() {
+            let folded = &mut buf[..name.len()];
+            folded.copy_from_slice(name.as_bytes());
+            folded.make_ascii_lowercase();
+            return std::str::from_utf8(folded).ok().and_then(|folded| self.lookup(folded));
+        }
         let folded: String = name.chars().map(fold_char).collect();
         self.lookup(&folded)
     }
@@ -112,6 +121,19 @@ mod tests {
         assert_eq!(interner.intern("ÄRGER"), interner.intern("ärger"));
         assert_ne!(a, interner.intern("MoveL"));
         assert_eq!(interner.resolve(a), "moveabsj");
+    }
+
+    #[test]
+    fn get_folds_as_intern_does_short_long_and_latin1() {
+        let mut interner = Interner::default();
+        let long = "A".repeat(60) + "_Name";
+        let names = ["ERR_DIVZERO", "Überlauf", long.as_str(), "x"];
+        let syms: Vec<Symbol> = names.iter().map(|n| interner.intern(n)).collect();
+        assert_eq!(interner.get("err_divzero"), Some(syms[0]));
+        assert_eq!(interner.get("ÜBERLAUF"), Some(syms[1]));
+        assert_eq!(interner.get(&long.to_lowercase()), Some(syms[2]));
+        assert_eq!(interner.get("X"), Some(syms[3]));
+        assert_eq!((interner.get("ERR_DIVZER"), interner.get("")), (None, None));
     }
 
     #[test]
