@@ -1,12 +1,13 @@
 //! Fuzz target `controller`: one to three tasks, each a program of the structure-aware
 //! generator (`rapid_fuzz::program`), run together by the controller (round-robin,
-//! shared persistents, one motion task) for at most 16,000 steps, the clock moved
-//! on through every wait. Nothing may panic.
+//! shared persistents, one motion task) for at most 16,000 instructions (one task)
+//! or 4,000 statements (several; `rapid_fuzz::system`), the clock moved on through
+//! every wait. Nothing may panic.
 #![no_main]
 
 use arbitrary::Unstructured;
 use libfuzzer_sys::fuzz_target;
-use rapid_controller::{Controller, SystemExit, TaskKind, TaskSpec, TrustLevel};
+use rapid_controller::{Controller, TaskKind, TaskSpec, TrustLevel};
 use rapid_sema::SourceInput;
 use rapid_vm::{load, RecordingHost};
 
@@ -45,14 +46,8 @@ fuzz_target!(|data: &[u8]| {
     // Two tasks declaring one PERS with different types is a load error: fine.
     let Ok(mut controller) = Controller::new(tasks, None) else { return };
     let mut host = RecordingHost::default();
-    // 16,000 steps shared by the tasks: a generated program's code is reached well
-    // within that, and longer runs only go round its loops (the steps were most of
-    // an input's time at 40,000).
-    for _ in 0..16 {
-        match controller.run(&mut host, 1_000) {
-            SystemExit::Budget => {}
-            SystemExit::Wait(seconds) => controller.advance(seconds.min(10.0)),
-            SystemExit::Ended | SystemExit::Stopped => break,
-        }
-    }
+    // 16 slices: a generated program's code is reached well within them, and longer
+    // runs only go round its loops (the steps were most of an input's time at 40,000
+    // instructions). Tasks together are charged statements: `rapid_fuzz::system`.
+    rapid_fuzz::system::run(&mut controller, &mut host, n_tasks);
 });

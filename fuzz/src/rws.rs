@@ -42,15 +42,38 @@ pub const PROGRAM: &str = "MODULE MainModule
 ENDMODULE
 ";
 
+/// The scratch folders' names: this prefix and the process id.
+const ROOT_PREFIX: &str = "rapid-fuzz-rws-";
+
 /// The scratch folder of the file devices (under the system's temporary folder, one
 /// per process).
 pub fn file_root() -> std::path::PathBuf {
-    std::env::temp_dir().join(format!("rapid-fuzz-rws-{}", std::process::id()))
+    std::env::temp_dir().join(format!("{ROOT_PREFIX}{}", std::process::id()))
+}
+
+/// Removes the scratch folders of fuzzing processes that have ended. libFuzzer ends a
+/// process with `exit`, which runs no destructor, so each process left its folder
+/// behind; now the next one removes it, and one folder at most stays. Where `/proc`
+/// does not say which processes live (not Linux), nothing is removed.
+pub fn remove_stale_roots(temp: &std::path::Path) {
+    let proc = std::path::Path::new("/proc");
+    if !proc.join("self").exists() {
+        return;
+    }
+    let Ok(entries) = std::fs::read_dir(temp) else { return };
+    for entry in entries.flatten() {
+        let name = entry.file_name();
+        let Some(pid) = name.to_str().and_then(|name| name.strip_prefix(ROOT_PREFIX)) else { continue };
+        if pid.parse::<u32>().is_ok_and(|pid| pid != std::process::id()) && !proc.join(pid).exists() {
+            let _ = std::fs::remove_dir_all(entry.path());
+        }
+    }
 }
 
 /// Starts a controller on [`PROGRAM`] with `di1` and `do1`, its file devices under
 /// [`file_root`], paced at real time (waits sleep rather than spin).
 pub fn boot() -> Result<rapid_serve::Controller, String> {
+    remove_stale_roots(&std::env::temp_dir());
     let root = file_root();
     std::fs::create_dir_all(&root).map_err(|e| format!("{}: {e}", root.display()))?;
     let boot = rapid_serve::Boot {
@@ -570,6 +593,25 @@ mod tests {
         assert!(well_formed_xml("<a>\u{1}</a>").is_err());
         assert!(well_formed_xml("<a>&#1;</a>").is_err());
         assert!(well_formed_xml("<a>").is_err());
+    }
+
+    #[test]
+    fn the_scratch_folders_of_ended_processes_are_removed_and_live_ones_kept() {
+        let temp = std::env::temp_dir().join(format!("rapid-fuzz-rws-test-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&temp);
+        // No process has the largest id (Linux's pids stay far below it); this one lives.
+        let ended = temp.join(format!("{ROOT_PREFIX}{}", u32::MAX));
+        let live = temp.join(format!("{ROOT_PREFIX}{}", std::process::id()));
+        let other = temp.join(format!("{ROOT_PREFIX}notapid"));
+        for folder in [&ended, &live, &other] {
+            std::fs::create_dir_all(folder).expect("a scratch folder");
+        }
+        std::fs::write(ended.join("left.txt"), "x").expect("a file left behind");
+        remove_stale_roots(&temp);
+        let on_linux = std::path::Path::new("/proc/self").exists();
+        assert_eq!(ended.exists(), !on_linux);
+        assert!(live.exists() && other.exists());
+        let _ = std::fs::remove_dir_all(&temp);
     }
 
     #[test]

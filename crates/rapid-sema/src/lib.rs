@@ -21,6 +21,7 @@ mod expr;
 pub mod facts;
 mod memory;
 mod options;
+mod scope;
 pub mod symbols;
 mod syntax;
 pub mod system;
@@ -35,7 +36,7 @@ pub use codes::{Code, Severity};
 pub use diagnostic::{Diagnostic, SourceInput};
 pub use facts::{Denotes, ExprType, ItemFacts};
 
-use checker::{Checker, WellKnown};
+use checker::Checker;
 use collect::ModuleRef;
 
 /// What `check` should do.
@@ -158,8 +159,10 @@ pub fn analyze(files: &[SourceInput], options: &Options) -> Analysis {
 
 /// [`analyze`], handing each routine body to `sink` as it is checked.
 pub fn analyze_with(files: &[SourceInput], options: &Options, sink: Option<&mut dyn BodySink>) -> Analysis {
-    let (base_interner, catalogue) = catalogue();
-    let mut interner = base_interner.clone();
+    // The built-in scope is declared once per thread and option set; a syntax check
+    // needs only the catalogue's names.
+    let scope = (!options.syntax_only).then(|| scope::builtin_scope(options.system_options.as_deref()));
+    let mut interner = scope.as_ref().map_or_else(|| catalogue().0.clone(), |scope| scope.interner.clone());
     let mut diags: Vec<Diagnostic> =
         memory::program_memory(files, rapid_limits::PROGRAM_MEMORY_BYTES).into_iter().collect();
     // An encrypted module beside readable ones is part of a task the controller
@@ -207,9 +210,9 @@ pub fn analyze_with(files: &[SourceInput], options: &Options, sink: Option<&mut 
                 syntax_errors[m.file].extend(errors);
             }
         }
-    } else {
+    } else if let Some(scope) = scope {
         let mut run = BodyPass { interner: &mut interner, syntax_errors: &mut syntax_errors, sink };
-        let ck = check_semantics(files, &modules, catalogue, options, &mut run, &mut diags);
+        let ck = check_semantics(files, &modules, &scope, options, &mut run, &mut diags);
         program = Some(Program {
             interner,
             types: ck.types,
@@ -229,14 +232,15 @@ pub fn analyze_with(files: &[SourceInput], options: &Options, sink: Option<&mut 
     Analysis { diagnostics: diags, program, outlines: parses }
 }
 
-/// The catalogue, parsed once per process, with the interner that holds its names;
-/// each check starts from a copy of that interner, so the catalogue's symbols hold.
+/// The catalogue, parsed once per process, with the interner that holds its names
+/// (frozen: a clone shares them); each check starts from a copy of that interner, so
+/// the catalogue's symbols hold.
 pub fn catalogue() -> &'static (Interner, rapid_lib::LoadedCatalogue) {
     static BASE: OnceLock<(Interner, rapid_lib::LoadedCatalogue)> = OnceLock::new();
     BASE.get_or_init(|| {
         let mut interner = Interner::default();
         let catalogue = rapid_lib::load(&mut interner);
-        (interner, catalogue)
+        (interner.freeze(), catalogue)
     })
 }
 
@@ -258,20 +262,14 @@ struct BodyPass<'p, 's> {
 fn check_semantics<'a>(
     files: &'a [SourceInput],
     modules: &[ModuleRef<'_>],
-    catalogue: &rapid_lib::LoadedCatalogue,
+    scope: &scope::BuiltinScope,
     options: &Options,
     pass: &mut BodyPass<'_, '_>,
     diags: &mut Vec<Diagnostic>,
 ) -> Checker<'a> {
     let interner = &mut *pass.interner;
-    let known = WellKnown {
-        switch: interner.intern("switch"),
-        anytype: interner.intern("anytype"),
-        placeholder_id: interner.intern("<ID>"),
-    };
-    let mut ck = Checker::new(files, known);
+    let mut ck = Checker::with_builtins(files, scope);
     ck.unknowns.encrypted = files.iter().filter(|f| f.unreadable.is_some()).map(|f| f.path.clone()).collect();
-    ck.load_builtins(catalogue, options.system_options.as_deref(), interner);
     ck.declare_predefined(&options.predefined, interner);
     ck.virtual_signals = options.virtual_signals;
     ck.declare_modules(modules);

@@ -57,7 +57,7 @@ pub struct TypeInfo {
 }
 
 /// Every type of the program, built-ins first.
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct Types {
     infos: Vec<TypeInfo>,
 }

@@ -1,6 +1,8 @@
 //! Case-insensitive interning of identifiers. RAPID ignores letter case, also for the
 //! Latin-1 letters, so names are folded to lower case before they are interned.
 
+use std::sync::Arc;
+
 use rustc_hash::FxHashMap;
 
 /// An interned, case-folded identifier.
@@ -14,11 +16,24 @@ impl Symbol {
 }
 
 /// The table of interned names, shared by every file of one check or run.
+///
+/// Its names may start with a frozen, shared prefix ([`Interner::freeze`]): the
+/// catalogue's names, interned once per process, which every check starts from.
+/// Cloning then copies only the names interned since, not one allocation per
+/// catalogue name (and dropping frees only those).
 #[derive(Debug, Default, Clone)]
 pub struct Interner {
+    /// Symbols `0..base.names.len()`, shared.
+    base: Arc<Table>,
+    /// Symbols from `base.names.len()` on.
+    own: Table,
+    scratch: String,
+}
+
+#[derive(Debug, Default, Clone)]
+struct Table {
     map: FxHashMap<Box<str>, Symbol>,
     names: Vec<Box<str>>,
-    scratch: String,
 }
 
 impl Interner {
@@ -31,25 +46,56 @@ impl Interner {
         } else {
             self.scratch.extend(name.chars().map(fold_char));
         }
-        if let Some(&sym) = self.map.get(self.scratch.as_str()) {
+        if let Some(sym) = self.lookup(&self.scratch) {
             return sym;
         }
-        let sym = Symbol(self.names.len() as u32);
+        let sym = Symbol((self.base.names.len() + self.own.names.len()) as u32);
         let key: Box<str> = self.scratch.as_str().into();
-        self.names.push(key.clone());
-        self.map.insert(key, sym);
+        self.own.names.push(key.clone());
+        self.own.map.insert(key, sym);
         sym
     }
 
     /// The symbol for `name` if it was interned before.
     pub fn get(&self, name: &str) -> Option<Symbol> {
+        // Most names asked for are short ASCII (a loader asks for each of the 300
+        // ERR_ names): folded on the stack, without an allocation.
+        let mut buf = [0u8; 48];
+        if name.is_ascii() && name.len() <= buf.len() {
+            let folded = &mut buf[..name.len()];
+            folded.copy_from_slice(name.as_bytes());
+            folded.make_ascii_lowercase();
+            return std::str::from_utf8(folded).ok().and_then(|folded| self.lookup(folded));
+        }
         let folded: String = name.chars().map(fold_char).collect();
-        self.map.get(folded.as_str()).copied()
+        self.lookup(&folded)
     }
 
     /// The folded (lower-case) spelling of a symbol.
     pub fn resolve(&self, sym: Symbol) -> &str {
-        &self.names[sym.index()]
+        match sym.index().checked_sub(self.base.names.len()) {
+            Some(own) => &self.own.names[own],
+            None => &self.base.names[sym.index()],
+        }
+    }
+
+    /// The same names and symbols, every name now in the shared prefix: clones of
+    /// the result (each check's starting interner) share them instead of copying.
+    pub fn freeze(self) -> Interner {
+        if self.own.names.is_empty() {
+            return self;
+        }
+        let mut table = Arc::unwrap_or_clone(self.base);
+        for name in self.own.names {
+            let sym = Symbol(table.names.len() as u32);
+            table.names.push(name.clone());
+            table.map.insert(name, sym);
+        }
+        Interner { base: Arc::new(table), own: Table::default(), scratch: String::new() }
+    }
+
+    fn lookup(&self, folded: &str) -> Option<Symbol> {
+        self.base.map.get(folded).or_else(|| self.own.map.get(folded)).copied()
     }
 }
 
@@ -75,5 +121,38 @@ mod tests {
         assert_eq!(interner.intern("ÄRGER"), interner.intern("ärger"));
         assert_ne!(a, interner.intern("MoveL"));
         assert_eq!(interner.resolve(a), "moveabsj");
+    }
+
+    #[test]
+    fn get_folds_as_intern_does_short_long_and_latin1() {
+        let mut interner = Interner::default();
+        let long = "A".repeat(60) + "_Name";
+        let names = ["ERR_DIVZERO", "Überlauf", long.as_str(), "x"];
+        let syms: Vec<Symbol> = names.iter().map(|n| interner.intern(n)).collect();
+        assert_eq!(interner.get("err_divzero"), Some(syms[0]));
+        assert_eq!(interner.get("ÜBERLAUF"), Some(syms[1]));
+        assert_eq!(interner.get(&long.to_lowercase()), Some(syms[2]));
+        assert_eq!(interner.get("X"), Some(syms[3]));
+        assert_eq!((interner.get("ERR_DIVZER"), interner.get("")), (None, None));
+    }
+
+    #[test]
+    fn a_frozen_interner_keeps_its_symbols_and_its_clones_go_on_alone() {
+        let mut interner = Interner::default();
+        let (a, b) = (interner.intern("Alpha"), interner.intern("Beta"));
+        let frozen = interner.freeze().freeze();
+        let (mut one, mut two) = (frozen.clone(), frozen.clone());
+        assert_eq!(one.intern("BETA"), b);
+        assert_eq!(one.resolve(a), "alpha");
+        // Both clones give the next symbol to their own new name, unseen by the other.
+        let gamma = one.intern("Gamma");
+        let delta = two.intern("Delta");
+        assert_eq!((gamma.index(), delta.index()), (2, 2));
+        assert_eq!((one.resolve(gamma), two.resolve(delta)), ("gamma", "delta"));
+        assert_eq!((one.get("delta"), two.get("GAMMA")), (None, None));
+        // Freezing a clone that grew keeps every symbol it gave.
+        let refrozen = one.freeze();
+        assert_eq!((refrozen.get("gamma"), refrozen.get("alpha")), (Some(gamma), Some(a)));
+        assert_eq!(refrozen.resolve(gamma), "gamma");
     }
 }
