@@ -7,9 +7,10 @@
 
 use arbitrary::Unstructured;
 use libfuzzer_sys::fuzz_target;
+use rapid_controller::builtin_set::load;
 use rapid_controller::{Controller, TaskKind, TaskSpec, TrustLevel};
 use rapid_sema::SourceInput;
-use rapid_vm::{load, RecordingHost};
+use rapid_vm::RecordingHost;
 
 fuzz_target!(|data: &[u8]| {
     let mut u = Unstructured::new(data);
@@ -24,7 +25,7 @@ fuzz_target!(|data: &[u8]| {
             .map(|(m, text)| SourceInput::from_bytes(format!("t{idx}m{m}.mod"), text.clone().into_bytes()))
             .collect();
         let Ok(mut loaded) = load(&files, "main") else { return };
-        loaded.vm.resources_mut().sockets.set_offline(true);
+        rapid_controller::bindings::sockets::of_mut(loaded.vm.resources_mut()).set_offline(true);
         let kind = match u.int_in_range(0..=3u8).unwrap_or(0) {
             0 => TaskKind::Static,
             1 => TaskKind::SemiStatic,

@@ -9,8 +9,9 @@
 
 use arbitrary::Unstructured;
 use libfuzzer_sys::fuzz_target;
+use rapid_controller::builtin_set::load;
 use rapid_sema::SourceInput;
-use rapid_vm::{load, Exit, LoadError, RecordingHost};
+use rapid_vm::{Exit, LoadError, RecordingHost};
 
 fuzz_target!(|data: &[u8]| {
     // A crash that kills the process before libFuzzer can save the input (a stack
@@ -36,7 +37,7 @@ fuzz_target!(|data: &[u8]| {
         }
         Err(_) => return,
     };
-    loaded.vm.resources_mut().sockets.set_offline(true);
+    rapid_controller::bindings::sockets::of_mut(loaded.vm.resources_mut()).set_offline(true);
     let mut host = RecordingHost::default();
     for _ in 0..20 {
         match loaded.vm.run(&mut host, 1_000) {

@@ -4,15 +4,16 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
+use rapid_controller::builtin_set::load;
 use rapid_sema::SourceInput;
-use rapid_vm::{load, Exit, RecordingHost};
+use rapid_vm::{Exit, RecordingHost};
 
 fuzz_target!(|data: &[u8]| {
     let files = vec![SourceInput::from_bytes("a.mod", data.to_vec())];
     let Ok(mut loaded) = load(&files, "main") else { return };
     // No network and no file root: a fuzzed program must not wait on real sockets
     // or write files (file built-ins raise their errors without a root).
-    loaded.vm.resources_mut().sockets.set_offline(true);
+    rapid_controller::bindings::sockets::of_mut(loaded.vm.resources_mut()).set_offline(true);
     let mut host = RecordingHost::default();
     // 20,000 steps: enough to reach deep into a program, bounded even when each step
     // copies a large array.

@@ -98,8 +98,8 @@ fn session(root: std::path::PathBuf) -> Result<Session, String> {
         &options,
     )
     .map_err(|e| format!("{e:?}"))?;
-    loaded.vm.resources_mut().files.set_root(root);
-    loaded.vm.resources_mut().sockets.set_offline(true);
+    loaded.vm.resources_mut().devices.set_root(root);
+    rapid_controller::bindings::sockets::of_mut(loaded.vm.resources_mut()).set_offline(true);
     let eio: String =
         signals.iter().map(|(n, _, kind)| format!("\n      -Name \"{n}\" -SignalType \"{kind}\"\n")).collect();
     let eio = rapid_config::eio::read(&rapid_config::parse(&format!("EIO:CFG_1.0:6:0::\n#\nEIO_SIGNAL:\n{eio}")));

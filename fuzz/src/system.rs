@@ -69,7 +69,7 @@ mod tests {
             .enumerate()
             .map(|(idx, text)| {
                 let files = [SourceInput::from_text(format!("t{idx}.mod"), *text)];
-                (spec(idx), rapid_vm::load(&files, "main").expect("the program loads"))
+                (spec(idx), rapid_controller::builtin_set::load(&files, "main").expect("the program loads"))
             })
             .collect();
         let mut controller = Controller::new(tasks, None).expect("the system starts");
