@@ -101,7 +101,8 @@ pub(crate) struct RunArgs {
     #[arg(long)]
     pub(crate) entry: Option<String>,
 
-    /// Stop with an error after this many executed instructions.
+    /// Stop with an error after this many executed instructions (in a system of
+    /// several tasks: statements, each up to 10,000 instructions).
     #[arg(long, value_name = "N")]
     pub(crate) max_steps: Option<u64>,
 
