@@ -14,7 +14,7 @@ impl RoutineCompiler<'_> {
     /// Compiles a routine whose body the tree holds.
     pub(crate) fn routine(&mut self, routine: &Routine) -> Result<Code, Vec<CompileError>> {
         self.header(routine);
-        let Some(body) = &routine.body else { return Ok(self.code.clone()) };
+        let Some(body) = &routine.body else { return Ok(self.st.code.clone()) };
         self.declare_params(routine);
         let mut errors = Vec::new();
         for decl in &body.decls {
@@ -51,15 +51,15 @@ impl RoutineCompiler<'_> {
 
     /// What the routine's head says: its name, kind and return type.
     pub(super) fn header(&mut self, routine: &Routine) {
-        self.code.name = routine.name.span.text(self.text).to_string();
-        self.code.span = routine.span;
-        self.code.is_func = routine.kind == RoutineKind::Func;
-        self.code.is_trap = routine.kind == RoutineKind::Trap;
-        self.ret_ty = routine.ret_ty.and_then(|t| match self.resolve(t.sym) {
+        self.st.code.name = routine.name.span.text(self.text).to_string();
+        self.st.code.span = routine.span;
+        self.st.code.is_func = routine.kind == RoutineKind::Func;
+        self.st.code.is_trap = routine.kind == RoutineKind::Trap;
+        self.st.ret_ty = routine.ret_ty.and_then(|t| match self.resolve(t.sym) {
             Some(Resolved::Type(ty)) => Some(ty),
             _ => None,
         });
-        self.code.ret_like = self.ret_ty.and_then(|ty| numeric_like(self.prog.types, ty, 0));
+        self.st.code.ret_like = self.st.ret_ty.and_then(|ty| numeric_like(self.prog.types, ty, 0));
     }
 
     pub(super) fn body_item(&mut self, item: &BodyItem, arena: &Arena, errors: &mut Vec<CompileError>) {
@@ -80,27 +80,27 @@ impl RoutineCompiler<'_> {
     /// Ends the part being compiled and starts handler `section` here.
     fn enter_section(&mut self, section: Section, error_numbers: &[ExprId], arena: &Arena) {
         self.close_section();
-        let here = self.code.here();
+        let here = self.st.code.here();
         match section {
             Section::Error => {
                 let numbers = error_numbers.iter().filter_map(|&n| self.handler_number(arena, n)).collect();
-                self.code.error_handler = Some(Handler { pc: here, numbers });
+                self.st.code.error_handler = Some(Handler { pc: here, numbers });
             }
-            Section::Undo => self.code.undo_handler = Some(here),
+            Section::Undo => self.st.code.undo_handler = Some(here),
             // Backward execution is driven by a debugger, not by forward runs; the
             // handler is compiled so its errors show, and kept for that API.
-            Section::Backward => self.code.backward_handler = Some(here),
+            Section::Backward => self.st.code.backward_handler = Some(here),
             Section::Body => {}
         }
-        self.section = section;
+        self.st.section = section;
     }
 
     /// What ends the part being compiled when execution runs off it: the body and the
     /// ERROR handler fall off the routine's end, UNDO and BACKWARD return.
     fn close_section(&mut self) {
-        match self.section {
-            Section::Body | Section::Error => self.code.emit(Instr::FellOffEnd),
-            Section::Undo | Section::Backward => self.code.emit(Instr::Return),
+        match self.st.section {
+            Section::Body | Section::Error => self.st.code.emit(Instr::FellOffEnd),
+            Section::Undo | Section::Backward => self.st.code.emit(Instr::Return),
         };
     }
 
@@ -108,9 +108,9 @@ impl RoutineCompiler<'_> {
         self.close_section();
         self.resolve_gotos(&mut errors);
         self.finish_locals();
-        self.code.shrink_to_fit();
+        self.st.code.shrink_to_fit();
         if errors.is_empty() {
-            Ok(std::mem::take(&mut self.code))
+            Ok(std::mem::take(&mut self.st.code))
         } else {
             Err(errors)
         }

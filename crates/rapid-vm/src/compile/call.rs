@@ -53,17 +53,17 @@ impl RoutineCompiler<'_> {
                 // A function defined nowhere raises ERR_REFUNKFUN when the call is
                 // executed (its arguments are not evaluated).
                 let name_text = span.text(self.text).split('(').next().unwrap_or("").trim();
-                let name_idx = self.code.constant(crate::value::Value::Str(name_text.into()));
-                self.code.emit(Instr::UnknownFunc(name_idx));
+                let name_idx = self.st.code.constant(crate::value::Value::Str(name_text.into()));
+                self.st.code.emit(Instr::UnknownFunc(name_idx));
                 return Ok(());
             }
             // Calls to undefined procedures raise ERR_REFUNKPRC when executed.
             let site = CallSite { callee: Callee::Late, args: Vec::new(), n_pushed: 0, late_args: Vec::new() };
             let name_text = span.text(self.text).split(|c: char| c == '(' || c.is_whitespace()).next().unwrap_or("");
-            let name_idx = self.code.constant(crate::value::Value::Str(name_text.into()));
-            self.code.emit(Instr::Const(name_idx));
+            let name_idx = self.st.code.constant(crate::value::Value::Str(name_text.into()));
+            self.st.code.emit(Instr::Const(name_idx));
             let late = self.late_site(arena, args, site)?;
-            self.code.emit(Instr::LateCall(late));
+            self.st.code.emit(Instr::LateCall(late));
             return Ok(());
         };
         let info = self.prog.routines[idx as usize].clone();
@@ -79,21 +79,21 @@ impl RoutineCompiler<'_> {
                 match self.builtins.get(id).compiled {
                     Some(Compiled::Present) => return self.present(arena, args, span),
                     Some(Compiled::CallByVar) => return self.call_by_var(arena, args),
-                    Some(Compiled::Break) if !self.loops.is_empty() => {
+                    Some(Compiled::Break) if !self.st.loops.is_empty() => {
                         // RW 6.15 (manual §1.5): Break ends the innermost enclosing loop.
                         // Outside a loop it keeps its older meaning, a debugging stop.
-                        let jump = self.code.emit(Instr::Jump(0));
-                        if let Some(jumps) = self.loops.last_mut() {
+                        let jump = self.st.code.emit(Instr::Jump(0));
+                        if let Some(jumps) = self.st.loops.last_mut() {
                             jumps.breaks.push(jump);
                         }
                         return Ok(());
                     }
                     Some(Compiled::Continue) => {
                         // Manual §1.5: skip the rest of the loop, start its next iteration.
-                        let Some(jumps) = self.loops.last_mut() else {
+                        let Some(jumps) = self.st.loops.last_mut() else {
                             return Err(self.error(span, "Continue is only allowed inside a FOR or WHILE loop"));
                         };
-                        let jump = self.code.emit(Instr::Jump(0));
+                        let jump = self.st.code.emit(Instr::Jump(0));
                         jumps.continues.push(jump);
                         return Ok(());
                     }
@@ -127,7 +127,7 @@ impl RoutineCompiler<'_> {
             _ => None,
         };
         let site = self.site_with(CallSite { callee, args: specs, n_pushed, late_args: Vec::new() }, origins);
-        self.code.emit(Instr::Call(site));
+        self.st.code.emit(Instr::Call(site));
         Ok(())
     }
 
@@ -163,7 +163,7 @@ impl RoutineCompiler<'_> {
         let n_params = wait_rob.map_or(2, |info| info.params.len());
         let args = vec![ArgSpec::Absent; n_params];
         let site = self.site(CallSite { callee: Callee::Builtin(id), args, n_pushed: 0, late_args: Vec::new() });
-        self.code.emit(Instr::Call(site));
+        self.st.code.emit(Instr::Call(site));
         Ok(())
     }
 
@@ -197,7 +197,7 @@ impl RoutineCompiler<'_> {
         };
         let site = CallSite { callee: Callee::Builtin(id), args: specs, n_pushed, late_args: Vec::new() };
         let site = self.site_with(site, Some(Box::new([origin])));
-        self.code.emit(Instr::Call(site));
+        self.st.code.emit(Instr::Call(site));
         Ok(())
     }
 
@@ -251,16 +251,16 @@ impl RoutineCompiler<'_> {
     /// Sharing is safe because a site is read only, never written, when it runs.
     fn site_with(&mut self, site: CallSite, origins: Option<Box<[ArgOrigin]>>) -> u32 {
         let key = (site, origins);
-        if let Some(&idx) = self.sites_seen.get(&key) {
+        if let Some(&idx) = self.st.sites_seen.get(&key) {
             return idx;
         }
-        let idx = self.code.sites.len() as u32;
-        self.code.sites.push(key.0.clone());
+        let idx = self.st.code.sites.len() as u32;
+        self.st.code.sites.push(key.0.clone());
         // New sites have rising indices: `arg_origins` stays sorted by site.
         if let Some(origins) = &key.1 {
-            self.code.arg_origins.push((idx, origins.clone()));
+            self.st.code.arg_origins.push((idx, origins.clone()));
         }
-        self.sites_seen.insert(key, idx);
+        self.st.sites_seen.insert(key, idx);
         idx
     }
 
@@ -298,9 +298,9 @@ impl RoutineCompiler<'_> {
         // A signal parameter (or AliasIO's and ValidIO's `anytype`) takes the signal
         // itself, not its value.
         let signal_param = self.prog.types.class(param.ty) == rapid_sema::types::ValueClass::SemiValue;
-        self.signal_as_data = signal_param || (param.ty == rapid_sema::types::ANY && takes_signals);
+        self.st.signal_as_data = signal_param || (param.ty == rapid_sema::types::ANY && takes_signals);
         self.expr(arena, value, expect)?;
-        self.signal_as_data = false;
+        self.st.signal_as_data = false;
         Ok(ArgSpec::Value)
     }
 
@@ -329,8 +329,8 @@ impl RoutineCompiler<'_> {
         let types = &self.prog.types;
         let ty = if base_name { types.canonical(ty) } else { ty };
         let name = types.name(ty).to_string();
-        let idx = self.code.constant(crate::value::Value::Str(name.as_str().into()));
-        self.code.emit(Instr::Const(idx));
+        let idx = self.st.code.constant(crate::value::Value::Str(name.as_str().into()));
+        self.st.code.emit(Instr::Const(idx));
         Ok(())
     }
 
@@ -352,7 +352,7 @@ impl RoutineCompiler<'_> {
         });
         match name.and_then(|(v, sym)| self.name(v, sym)) {
             Some(Resolved::Local(local)) => {
-                self.code.emit(Instr::Present(local.slot));
+                self.st.code.emit(Instr::Present(local.slot));
                 Ok(())
             }
             _ => Err(self.error(span, "Present needs an optional parameter of this routine")),
@@ -389,71 +389,71 @@ impl RoutineCompiler<'_> {
         let num = self.prog.core.num;
         let dnum = self.prog.core.dnum;
         let start = self.new_local(dnum, [0; 3], 0, LocalKind::Temp);
-        self.code.emit(Instr::PushTime);
-        self.code.emit(Instr::StoreLocal(start.slot));
-        let top = self.code.here();
+        self.st.code.emit(Instr::PushTime);
+        self.st.code.emit(Instr::StoreLocal(start.slot));
+        let top = self.st.code.here();
         self.expr(arena, cond, None)?;
-        let to_wait = self.code.emit(Instr::JumpIfFalse(0));
+        let to_wait = self.st.code.emit(Instr::JumpIfFalse(0));
         if let Some(flag) = time_flag {
             self.place(arena, flag)?;
-            let idx = self.code.constant(crate::value::Value::Bool(false));
-            self.code.emit(Instr::Const(idx));
-            self.code.emit(Instr::StorePlace);
+            let idx = self.st.code.constant(crate::value::Value::Bool(false));
+            self.st.code.emit(Instr::Const(idx));
+            self.st.code.emit(Instr::StorePlace);
         }
-        let to_done = self.code.emit(Instr::Jump(0));
-        let here = self.code.here();
-        self.code.patch(to_wait, here);
+        let to_done = self.st.code.emit(Instr::Jump(0));
+        let here = self.st.code.here();
+        self.st.code.patch(to_wait, here);
         if visualize {
             // Each poll that waits: the box opens at the first, closes after \VisualizeTime.
             self.visualize_call(arena, info, &bound, false)?;
         }
         if let Some(max_time) = max_time {
             // elapsed >= MaxTime ?
-            self.code.emit(Instr::PushTime);
-            self.code.emit(Instr::LoadLocal(start.slot));
-            self.code.emit(Instr::Binary(rapid_syntax::ast::BinaryOp::Sub));
+            self.st.code.emit(Instr::PushTime);
+            self.st.code.emit(Instr::LoadLocal(start.slot));
+            self.st.code.emit(Instr::Binary(rapid_syntax::ast::BinaryOp::Sub));
             self.expr(arena, max_time, Some((num, [0; 3])))?;
-            self.code.emit(Instr::Binary(rapid_syntax::ast::BinaryOp::Lt));
-            let still_time = self.code.emit(Instr::JumpIfFalse(0));
-            let to_poll = self.code.emit(Instr::Jump(0));
-            let timeout = self.code.here();
-            self.code.patch(still_time, timeout);
+            self.st.code.emit(Instr::Binary(rapid_syntax::ast::BinaryOp::Lt));
+            let still_time = self.st.code.emit(Instr::JumpIfFalse(0));
+            let to_poll = self.st.code.emit(Instr::Jump(0));
+            let timeout = self.st.code.here();
+            self.st.code.patch(still_time, timeout);
             match time_flag {
                 Some(flag) => {
                     self.place(arena, flag)?;
-                    let idx = self.code.constant(crate::value::Value::Bool(true));
-                    self.code.emit(Instr::Const(idx));
-                    self.code.emit(Instr::StorePlace);
-                    let jump = self.code.emit(Instr::Jump(0));
-                    self.exits.push(jump);
+                    let idx = self.st.code.constant(crate::value::Value::Bool(true));
+                    self.st.code.emit(Instr::Const(idx));
+                    self.st.code.emit(Instr::StorePlace);
+                    let jump = self.st.code.emit(Instr::Jump(0));
+                    self.st.exits.push(jump);
                 }
                 None => {
                     if visualize {
                         self.visualize_call(arena, info, &bound, true)?;
                     }
-                    self.code.emit(Instr::RaiseWaitTimeout);
+                    self.st.code.emit(Instr::RaiseWaitTimeout);
                 }
             }
-            let poll = self.code.here();
-            self.code.patch(to_poll, poll);
+            let poll = self.st.code.here();
+            self.st.code.patch(to_poll, poll);
         }
         match poll_rate {
             Some(rate) => self.expr(arena, rate, Some((num, [0; 3])))?,
             None => {
-                let idx = self.code.constant(crate::value::Value::Num(0.1));
-                self.code.emit(Instr::Const(idx));
+                let idx = self.st.code.constant(crate::value::Value::Num(0.1));
+                self.st.code.emit(Instr::Const(idx));
             }
         }
-        self.code.emit(Instr::WaitPop);
-        self.code.emit(Instr::Jump(top));
-        let done = self.code.here();
+        self.st.code.emit(Instr::WaitPop);
+        self.st.code.emit(Instr::Jump(top));
+        let done = self.st.code.here();
         if visualize {
             // The box closes as the wait ends (no box was shown if it never waited).
             self.visualize_call(arena, info, &bound, true)?;
         }
-        self.code.patch(to_done, done);
-        for jump in std::mem::take(&mut self.exits) {
-            self.code.patch(jump, done);
+        self.st.code.patch(to_done, done);
+        for jump in std::mem::take(&mut self.st.exits) {
+            self.st.code.patch(jump, done);
         }
         Ok(())
     }
@@ -474,8 +474,8 @@ impl RoutineCompiler<'_> {
         let mut n_pushed = 0u16;
         for (param, arg) in info.params.iter().zip(bound) {
             let spec = if param.display.eq_ignore_ascii_case("Cond") {
-                let idx = self.code.constant(crate::value::Value::Bool(done));
-                self.code.emit(Instr::Const(idx));
+                let idx = self.st.code.constant(crate::value::Value::Bool(done));
+                self.st.code.emit(Instr::Const(idx));
                 ArgSpec::Value
             } else {
                 match arg {
@@ -491,7 +491,7 @@ impl RoutineCompiler<'_> {
             specs.push(spec);
         }
         let site = self.site(CallSite { callee: Callee::Builtin(id), args: specs, n_pushed, late_args: Vec::new() });
-        self.code.emit(Instr::Call(site));
+        self.st.code.emit(Instr::Call(site));
         Ok(())
     }
 
@@ -502,9 +502,9 @@ impl RoutineCompiler<'_> {
                 self.expr(arena, value, None)?;
             }
         }
-        self.code.emit(Instr::NameWithNumber);
+        self.st.code.emit(Instr::NameWithNumber);
         let site = self.site(CallSite { callee: Callee::Late, args: Vec::new(), n_pushed: 0, late_args: Vec::new() });
-        self.code.emit(Instr::LateCall(site));
+        self.st.code.emit(Instr::LateCall(site));
         Ok(())
     }
 

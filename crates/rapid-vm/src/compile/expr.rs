@@ -26,34 +26,34 @@ impl RoutineCompiler<'_> {
     /// Emits code that pushes the value of `id`.
     pub(crate) fn expr(&mut self, arena: &Arena, id: ExprId, expect: Expected) -> Result<(), CompileError> {
         let expr = *arena.expr(id);
-        if !self.signal_as_data
+        if !self.st.signal_as_data
             && matches!(expr.kind, ExprKind::Name(_) | ExprKind::Index { .. })
             && self.is_signal_data(arena, id)
         {
             return self.signal_read(arena, id);
         }
-        self.signal_as_data = false;
+        self.st.signal_as_data = false;
         match expr.kind {
             ExprKind::Num => {
                 let value = num_value(expr.span.text(self.text)).unwrap_or(0.0);
                 let constant = if self.expects_dnum(expect) { Value::Dnum(value) } else { Value::Num(value as f32) };
-                let idx = self.code.constant(constant);
-                self.code.emit(Instr::Const(idx));
+                let idx = self.st.code.constant(constant);
+                self.st.code.emit(Instr::Const(idx));
             }
             ExprKind::Str => {
-                let idx = self.code.constant(Value::Str(string_value(expr.span.text(self.text)).into()));
-                self.code.emit(Instr::Const(idx));
+                let idx = self.st.code.constant(Value::Str(string_value(expr.span.text(self.text)).into()));
+                self.st.code.emit(Instr::Const(idx));
             }
             ExprKind::Bool(b) => {
-                let idx = self.code.constant(Value::Bool(b));
-                self.code.emit(Instr::Const(idx));
+                let idx = self.st.code.constant(Value::Bool(b));
+                self.st.code.emit(Instr::Const(idx));
             }
             ExprKind::Name(sym) => match self.name(id, sym) {
                 Some(Resolved::Local(local)) => {
-                    self.code.emit(Instr::LoadLocal(local.slot));
+                    self.st.code.emit(Instr::LoadLocal(local.slot));
                 }
                 Some(Resolved::Global(idx)) => {
-                    self.code.emit(Instr::LoadGlobal(idx));
+                    self.st.code.emit(Instr::LoadGlobal(idx));
                 }
                 _ => return Err(self.error(expr.span, "not data")),
             },
@@ -63,18 +63,18 @@ impl RoutineCompiler<'_> {
                 for &index in indices {
                     self.expr(arena, index, None)?;
                 }
-                self.code.emit(Instr::LoadElem { global, slot, n: indices.len() as u8 });
+                self.st.code.emit(Instr::LoadElem { global, slot, n: indices.len() as u8 });
             }
             ExprKind::Index { .. } | ExprKind::Field { .. } => {
                 self.place(arena, id)?;
-                self.code.emit(Instr::LoadPlace);
+                self.st.code.emit(Instr::LoadPlace);
             }
             ExprKind::Call { name, args } => self.call(arena, name, args, expr.span, super::call::CallOf::Expr(id))?,
             ExprKind::Unary { op, operand } => {
                 let start = self.mark();
                 self.expr(arena, operand, expect)?;
                 if !self.fold_sign(op, start) {
-                    self.code.emit(Instr::Unary(op));
+                    self.st.code.emit(Instr::Unary(op));
                 }
             }
             ExprKind::Binary { op, lhs, rhs } => {
@@ -93,12 +93,12 @@ impl RoutineCompiler<'_> {
                     self.expr(arena, rhs, lhs_ty.or(num_ctx))?;
                 }
                 let (lhs, rhs) = (lhs_leaf.unwrap_or(Operand::Stack), rhs_leaf.unwrap_or(Operand::Stack));
-                self.code.emit(Instr::BinOp { op, lhs, rhs });
+                self.st.code.emit(Instr::BinOp { op, lhs, rhs });
             }
             ExprKind::Paren(inner) => self.expr(arena, inner, expect)?,
             ExprKind::Aggregate(items) => self.aggregate(arena, items, expr.span, expect)?,
             ExprKind::Placeholder(_) | ExprKind::Error => {
-                self.code.emit(Instr::Placeholder);
+                self.st.code.emit(Instr::Placeholder);
             }
         }
         Ok(())
@@ -115,11 +115,11 @@ impl RoutineCompiler<'_> {
     /// when the I/O system is installed).
     fn signal_read(&mut self, arena: &Arena, id: ExprId) -> Result<(), CompileError> {
         let span = arena.expr(id).span;
-        self.signal_as_data = true;
+        self.st.signal_as_data = true;
         self.expr(arena, id, None)?;
         let name = span.text(self.text).to_string();
-        let idx = self.code.constant(Value::Str(name.as_str().into()));
-        self.code.emit(Instr::ReadSignal(idx));
+        let idx = self.st.code.constant(Value::Str(name.as_str().into()));
+        self.st.code.emit(Instr::ReadSignal(idx));
         Ok(())
     }
 
@@ -134,7 +134,7 @@ impl RoutineCompiler<'_> {
             ExprKind::Num => {
                 let value = num_value(expr.span.text(self.text))?;
                 let constant = if self.expects_dnum(expect) { Value::Dnum(value) } else { Value::Num(value as f32) };
-                Some(Operand::Const(self.code.constant(constant)))
+                Some(Operand::Const(self.st.code.constant(constant)))
             }
             _ => None,
         }
@@ -183,7 +183,11 @@ impl RoutineCompiler<'_> {
 
     /// Where the code, the constants and the packed aggregates end now.
     fn mark(&self) -> Mark {
-        Mark { instrs: self.code.instrs.len(), consts: self.code.consts.len(), packed: self.code.aggregates.len() }
+        Mark {
+            instrs: self.st.code.instrs.len(),
+            consts: self.st.code.consts.len(),
+            packed: self.st.code.aggregates.len(),
+        }
     }
 
     /// Ends an aggregate whose `n` parts were compiled since `start`: one packed
@@ -191,12 +195,12 @@ impl RoutineCompiler<'_> {
     /// instruction that builds it at run time.
     fn make(&mut self, start: Mark, n: usize, whole: Whole) {
         if let Some(k) = self.fold(start, n, whole) {
-            self.code.emit(Instr::Aggregate(k));
+            self.st.code.emit(Instr::Aggregate(k));
             return;
         }
         match whole {
-            Whole::Array => self.code.emit(Instr::MakeArray(n as u32)),
-            Whole::Record(ty) => self.code.emit(Instr::MakeRecord(ty, n as u16)),
+            Whole::Array => self.st.code.emit(Instr::MakeArray(n as u32)),
+            Whole::Record(ty) => self.st.code.emit(Instr::MakeRecord(ty, n as u16)),
         };
     }
 
@@ -205,7 +209,7 @@ impl RoutineCompiler<'_> {
     /// aggregate packed already): those constants are taken back, in order, into the
     /// new one, which is the value `MakeRecord` or `MakeArray` would build from them.
     fn fold(&mut self, start: Mark, n: usize, whole: Whole) -> Option<u32> {
-        let emitted = &self.code.instrs[start.instrs..];
+        let emitted = &self.st.code.instrs[start.instrs..];
         if emitted.len() != n {
             return None;
         }
@@ -215,11 +219,11 @@ impl RoutineCompiler<'_> {
             let packable = match *instr {
                 Instr::Const(k) if k as usize == next_const => {
                     next_const += 1;
-                    builder.leaf(&mut self.code.aggregates, &self.code.consts[k as usize])
+                    builder.leaf(&mut self.st.code.aggregates, &self.st.code.consts[k as usize])
                 }
                 Instr::Aggregate(k) if k as usize == next_packed => {
                     next_packed += 1;
-                    builder.entry(&self.code.aggregates, k)
+                    builder.entry(&self.st.code.aggregates, k)
                 }
                 _ => false,
             };
@@ -227,14 +231,14 @@ impl RoutineCompiler<'_> {
                 return None;
             }
         }
-        if next_const != self.code.consts.len() || next_packed != self.code.aggregates.len() {
+        if next_const != self.st.code.consts.len() || next_packed != self.st.code.aggregates.len() {
             return None;
         }
         let draft = builder.finish(whole)?;
-        self.code.instrs.truncate(start.instrs);
-        self.code.consts.truncate(start.consts);
-        self.code.aggregates.truncate(start.packed as u32);
-        Some(self.code.aggregates.add(draft, &mut self.shapes))
+        self.st.code.instrs.truncate(start.instrs);
+        self.st.code.consts.truncate(start.consts);
+        self.st.code.aggregates.truncate(start.packed as u32);
+        Some(self.st.code.aggregates.add(draft, &mut self.st.shapes))
     }
 
     /// `-literal` and `+literal` are constants: when the operand compiled since
@@ -242,13 +246,13 @@ impl RoutineCompiler<'_> {
     /// (as `ops::unary` would negate it at run time) or kept as it is, so that
     /// aggregates of signed numbers pack too. Whether it folded.
     fn fold_sign(&mut self, op: UnaryOp, start: Mark) -> bool {
-        let single = self.code.instrs.len() == start.instrs + 1
-            && self.code.consts.len() == start.consts + 1
-            && matches!(self.code.instrs[start.instrs], Instr::Const(k) if k as usize == start.consts);
+        let single = self.st.code.instrs.len() == start.instrs + 1
+            && self.st.code.consts.len() == start.consts + 1
+            && matches!(self.st.code.instrs[start.instrs], Instr::Const(k) if k as usize == start.consts);
         if !single {
             return false;
         }
-        let value = &mut self.code.consts[start.consts];
+        let value = &mut self.st.code.consts[start.consts];
         match (op, &*value) {
             (UnaryOp::Neg, Value::Num(n)) => *value = Value::Num(-n),
             (UnaryOp::Neg, Value::Dnum(d)) => *value = Value::Dnum(-d),
@@ -276,10 +280,10 @@ impl RoutineCompiler<'_> {
         match expr.kind {
             ExprKind::Name(sym) => match self.name(id, sym) {
                 Some(Resolved::Local(local)) => {
-                    self.code.emit(Instr::PlaceLocal(local.slot));
+                    self.st.code.emit(Instr::PlaceLocal(local.slot));
                 }
                 Some(Resolved::Global(idx)) => {
-                    self.code.emit(Instr::PlaceGlobal(idx));
+                    self.st.code.emit(Instr::PlaceGlobal(idx));
                 }
                 _ => return Err(self.error(expr.span, "not data")),
             },
@@ -289,7 +293,7 @@ impl RoutineCompiler<'_> {
                 for &index in indices {
                     self.expr(arena, index, None)?;
                 }
-                self.code.emit(Instr::PlaceIndex(indices.len() as u8));
+                self.st.code.emit(Instr::PlaceIndex(indices.len() as u8));
             }
             ExprKind::Field { base, field } => {
                 self.place(arena, base)?;
@@ -300,11 +304,11 @@ impl RoutineCompiler<'_> {
                     _ => None,
                 };
                 let idx = idx.ok_or_else(|| self.error(expr.span, "unknown record component"))?;
-                self.code.emit(Instr::PlaceField(idx as u16));
+                self.st.code.emit(Instr::PlaceField(idx as u16));
             }
             ExprKind::Paren(inner) => self.place(arena, inner)?,
             ExprKind::Placeholder(_) => {
-                self.code.emit(Instr::Placeholder);
+                self.st.code.emit(Instr::Placeholder);
             }
             _ => return Err(self.error(expr.span, "this expression is not data that can be referred to")),
         }

@@ -46,7 +46,7 @@ impl RoutineCompiler<'_> {
     /// Emits a `KernelReturn` for `RETURN value` in a FUNC returning num, when the
     /// value qualifies (a bare leaf too: the return then skips a push and a pop).
     pub(crate) fn kernel_return(&mut self, arena: &Arena, value: ExprId) -> Option<u32> {
-        if !self.is_num(self.ret_ty?) {
+        if !self.is_num(self.st.ret_ty?) {
             return None;
         }
         let mut ops = Vec::new();
@@ -60,9 +60,9 @@ impl RoutineCompiler<'_> {
         }
         let ops: Vec<KernelOp> = fuse_operands(&kernel.ops).into_iter().map(specialize).collect();
         kernel.ops = fuse_elements(&ops);
-        self.code.kernels.push(kernel);
-        let idx = self.code.kernels.len() as u32 - 1;
-        Some(self.code.emit(instr(idx)))
+        self.st.code.kernels.push(kernel);
+        let idx = self.st.code.kernels.len() as u32 - 1;
+        Some(self.st.code.emit(instr(idx)))
     }
 
     /// A num variable the kernel may write: a local (or a parameter, through its

@@ -200,7 +200,7 @@ fn compile_init(
     only: Option<usize>,
 ) -> Code {
     let mut init = RoutineCompiler::new(prog.tables(), builtins, usize::MAX, usize::MAX, builtin_text);
-    init.code.name = "<load>".into();
+    init.st.code.name = "<load>".into();
     for (idx, data) in prog.datas.iter().enumerate() {
         if only.is_some_and(|m| !matches!(data.origin, DeclOrigin::Module { module, .. } if module == m)) {
             continue;
@@ -219,19 +219,19 @@ fn compile_init(
         let Some(init_expr) = decl.init else { continue };
         init.module = module;
         init.file = file;
-        init.code.file = file;
+        init.st.code.file = file;
         init.text = text;
         let expect = Some((data.ty, data.dims));
         match init.expr(arena, init_expr, expect) {
             Ok(()) => {
-                init.code.emit(Instr::StoreGlobal(idx as u32));
+                init.st.code.emit(Instr::StoreGlobal(idx as u32));
             }
             Err(e) => errors.push(e),
         }
     }
-    init.code.emit(Instr::Return);
+    init.st.code.emit(Instr::Return);
     init.finish_locals();
-    init.code
+    init.st.code
 }
 
 /// Arrays may hold at most this many elements (the one table of limits; the checker
@@ -316,13 +316,20 @@ pub(crate) struct RoutineCompiler<'p> {
     pub(crate) module: usize,
     pub(crate) file: usize,
     pub(crate) text: &'p str,
+    /// What the checker resolved in the body item being compiled, when it streams it.
+    pub(crate) facts: Option<&'p ItemFacts>,
+    /// Everything the compiler owns of the routine (kept whole while a streamed
+    /// routine waits between items, `stream.rs`).
+    pub(crate) st: RoutineState,
+}
+
+/// What a routine's compilation owns, apart from what it borrows of the program.
+pub(crate) struct RoutineState {
     pub(crate) code: Code,
     pub(crate) locals: FxHashMap<Symbol, Local>,
     /// The routine's own data (parameters, data declarations, FOR variables) in the
     /// order they are declared: the checker's numbering (`rapid_sema::Denotes::Local`).
     pub(crate) own_data: Vec<Local>,
-    /// What the checker resolved in the body item being compiled, when it streams it.
-    pub(crate) facts: Option<&'p ItemFacts>,
     pub(crate) loop_vars: Vec<(Symbol, Local)>,
     pub(crate) labels: FxHashMap<Symbol, u32>,
     pub(crate) gotos: Vec<(u32, Symbol, Span)>,
@@ -348,6 +355,30 @@ pub(crate) struct RoutineCompiler<'p> {
     pub(crate) sites_seen: FxHashMap<SiteKey, u32>,
 }
 
+impl RoutineState {
+    /// Nothing compiled yet, of a routine in file `file`.
+    fn new(file: usize) -> RoutineState {
+        RoutineState {
+            code: Code { file, ..Code::default() },
+            locals: FxHashMap::default(),
+            own_data: Vec::new(),
+            loop_vars: Vec::new(),
+            labels: FxHashMap::default(),
+            gotos: Vec::new(),
+            n_locals: 0,
+            local_types: Vec::new(),
+            ret_ty: None,
+            stmt_depth: 0,
+            exits: Vec::new(),
+            signal_as_data: false,
+            loops: Vec::new(),
+            section: Section::Body,
+            shapes: FxHashMap::default(),
+            sites_seen: FxHashMap::default(),
+        }
+    }
+}
+
 /// A call site with the origins of its arguments (ArgName), when recorded.
 pub(crate) type SiteKey = (crate::ir::CallSite, Option<Box<[crate::ir::ArgOrigin]>>);
 
@@ -366,30 +397,7 @@ impl<'p> RoutineCompiler<'p> {
         file: usize,
         text: &'p str,
     ) -> RoutineCompiler<'p> {
-        RoutineCompiler {
-            prog,
-            builtins,
-            module,
-            file,
-            text,
-            code: Code { file, ..Code::default() },
-            locals: FxHashMap::default(),
-            own_data: Vec::new(),
-            facts: None,
-            loop_vars: Vec::new(),
-            loops: Vec::new(),
-            signal_as_data: false,
-            labels: FxHashMap::default(),
-            gotos: Vec::new(),
-            n_locals: 0,
-            local_types: Vec::new(),
-            ret_ty: None,
-            stmt_depth: 0,
-            exits: Vec::new(),
-            section: Section::Body,
-            shapes: FxHashMap::default(),
-            sites_seen: FxHashMap::default(),
-        }
+        RoutineCompiler { prog, builtins, module, file, text, facts: None, st: RoutineState::new(file) }
     }
 
     pub(crate) fn error(&self, span: Span, message: impl Into<String>) -> CompileError {
@@ -402,17 +410,17 @@ impl<'p> RoutineCompiler<'p> {
 
     /// A fresh local slot of the given type.
     pub(crate) fn new_local(&mut self, ty: TypeId, dims: [u32; 3], rank: u8, kind: LocalKind) -> Local {
-        let slot = self.n_locals;
-        self.n_locals += 1;
-        self.local_types.push((ty, dims, rank));
+        let slot = self.st.n_locals;
+        self.st.n_locals += 1;
+        self.st.local_types.push((ty, dims, rank));
         Local { slot, ty, rank, dims, kind }
     }
 
     /// Fills in the slot count and the default values of non-parameter locals.
     pub(crate) fn finish_locals(&mut self) {
-        self.code.n_locals = self.n_locals;
-        let n_params = self.code.n_params as usize;
-        self.code.local_defaults = self.local_types[n_params..]
+        self.st.code.n_locals = self.st.n_locals;
+        let n_params = self.st.code.n_params as usize;
+        self.st.code.local_defaults = self.st.local_types[n_params..]
             .iter()
             .map(|(ty, dims, rank)| default_of(self.prog.types, *ty, &dims[..*rank as usize]))
             .collect();
@@ -420,10 +428,10 @@ impl<'p> RoutineCompiler<'p> {
 
     /// What a name denotes here: a local slot, or a global definition.
     pub(crate) fn resolve(&self, sym: Symbol) -> Option<Resolved> {
-        if let Some((_, local)) = self.loop_vars.iter().rev().find(|(s, _)| *s == sym) {
+        if let Some((_, local)) = self.st.loop_vars.iter().rev().find(|(s, _)| *s == sym) {
             return Some(Resolved::Local(*local));
         }
-        if let Some(local) = self.locals.get(&sym) {
+        if let Some(local) = self.st.locals.get(&sym) {
             return Some(Resolved::Local(*local));
         }
         let def = if self.module == usize::MAX {
@@ -451,7 +459,7 @@ impl<'p> RoutineCompiler<'p> {
     pub(crate) fn denoted(&self, denotes: rapid_sema::Denotes) -> Option<Resolved> {
         match denotes {
             rapid_sema::Denotes::Nothing => None,
-            rapid_sema::Denotes::Local(n) => self.own_data.get(n as usize).map(|local| Resolved::Local(*local)),
+            rapid_sema::Denotes::Local(n) => self.st.own_data.get(n as usize).map(|local| Resolved::Local(*local)),
             rapid_sema::Denotes::Decl(Def::Data(idx)) => Some(Resolved::Global(idx)),
             rapid_sema::Denotes::Decl(Def::Routine(idx)) => Some(Resolved::Routine(idx)),
             rapid_sema::Denotes::Decl(Def::Type(ty)) => Some(Resolved::Type(ty)),
@@ -466,20 +474,20 @@ impl<'p> RoutineCompiler<'p> {
             };
             let kind = LocalKind::Param { mode: param.mode, optional: param.optional };
             let local = self.new_local(ty, [0; 3], param.rank, kind);
-            self.locals.insert(param.name.sym, local);
-            self.own_data.push(local);
-            self.code.local_names.push((param.name.span.text(self.text).to_owned(), local.slot));
+            self.st.locals.insert(param.name.sym, local);
+            self.st.own_data.push(local);
+            self.st.code.local_names.push((param.name.span.text(self.text).to_owned(), local.slot));
             let by_ref = param.mode != ParamMode::In;
-            self.code.param_by_ref.push(by_ref);
-            self.code.param_meta.push(crate::ir::ParamMeta {
+            self.st.code.param_by_ref.push(by_ref);
+            self.st.code.param_meta.push(crate::ir::ParamMeta {
                 name: param.name.span.text(self.text).to_ascii_lowercase().into(),
                 optional: param.optional,
                 switch: ty == rapid_sema::types::SWITCH,
                 group: param.group,
             });
-            self.code.param_likes.push(if by_ref { None } else { numeric_like(self.prog.types, ty, param.rank) });
+            self.st.code.param_likes.push(if by_ref { None } else { numeric_like(self.prog.types, ty, param.rank) });
         }
-        self.code.n_params = self.n_locals;
+        self.st.code.n_params = self.st.n_locals;
     }
 
     fn routine_data(&mut self, decl: &DataDecl, arena: &Arena) -> Result<(), CompileError> {
@@ -496,15 +504,15 @@ impl<'p> RoutineCompiler<'p> {
             return Err(self.error(decl.span, array_too_large(decl.name.span.text(self.text), n)));
         }
         let local = self.new_local(ty, dims, rank, LocalKind::Data);
-        self.locals.insert(decl.name.sym, local);
-        self.own_data.push(local);
-        self.code.local_names.push((decl.name.span.text(self.text).to_owned(), local.slot));
+        self.st.locals.insert(decl.name.sym, local);
+        self.st.own_data.push(local);
+        self.st.code.local_names.push((decl.name.span.text(self.text).to_owned(), local.slot));
         if decl.storage == rapid_syntax::ast::Storage::Const {
-            self.code.const_locals.push(local.slot);
+            self.st.code.const_locals.push(local.slot);
         }
         if let Some(init) = decl.init {
             self.expr(arena, init, Some((ty, dims)))?;
-            self.code.emit(Instr::StoreLocal(local.slot));
+            self.st.code.emit(Instr::StoreLocal(local.slot));
         }
         Ok(())
     }
@@ -547,9 +555,9 @@ impl<'p> RoutineCompiler<'p> {
     }
 
     pub(crate) fn resolve_gotos(&mut self, errors: &mut Vec<CompileError>) {
-        for (at, label, span) in std::mem::take(&mut self.gotos) {
-            match self.labels.get(&label) {
-                Some(&target) => self.code.patch(at, target),
+        for (at, label, span) in std::mem::take(&mut self.st.gotos) {
+            match self.st.labels.get(&label) {
+                Some(&target) => self.st.code.patch(at, target),
                 None => errors.push(self.error(span, "GOTO to an undefined label")),
             }
         }

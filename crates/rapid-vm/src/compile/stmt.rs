@@ -18,8 +18,8 @@ impl RoutineCompiler<'_> {
     }
 
     fn stmt(&mut self, arena: &Arena, stmt: &Stmt, errors: &mut Vec<CompileError>) -> Result<(), CompileError> {
-        let range_idx = self.code.stmts.len();
-        let start = self.code.here();
+        let range_idx = self.st.code.stmts.len();
+        let start = self.st.code.here();
         let calls = match &stmt.kind {
             StmtKind::Call { name, .. } => match self.callee(CallOf::Stmt(name.span.start), name.sym) {
                 Some(Resolved::Routine(idx)) if self.prog.routines[idx as usize].chapter.is_none() => Some(idx),
@@ -27,12 +27,12 @@ impl RoutineCompiler<'_> {
             },
             _ => None,
         };
-        let depth = self.stmt_depth;
-        self.code.stmts.push(StmtRange { start, end: start, span: stmt.span, depth, calls });
-        self.stmt_depth += 1;
+        let depth = self.st.stmt_depth;
+        self.st.code.stmts.push(StmtRange { start, end: start, span: stmt.span, depth, calls });
+        self.st.stmt_depth += 1;
         let res = self.stmt_kind(arena, stmt, errors);
-        self.stmt_depth -= 1;
-        self.code.stmts[range_idx].end = self.code.here();
+        self.st.stmt_depth -= 1;
+        self.st.code.stmts[range_idx].end = self.st.code.here();
         res
     }
 
@@ -46,43 +46,43 @@ impl RoutineCompiler<'_> {
                 self.expr(arena, *callee, None)?;
                 let site = CallSite { callee: Callee::Late, args: Vec::new(), n_pushed: 0, late_args: Vec::new() };
                 let site = self.late_site(arena, *args, site)?;
-                self.code.emit(Instr::LateCall(site));
+                self.st.code.emit(Instr::LateCall(site));
             }
             StmtKind::If { cond, then, elifs, els } => {
                 let mut to_end = Vec::new();
                 let mut skip = self.condition(arena, *cond)?;
                 self.stmt_list(arena, then, errors);
                 for elif in elifs {
-                    to_end.push(self.code.emit(Instr::Jump(0)));
-                    let here = self.code.here();
+                    to_end.push(self.st.code.emit(Instr::Jump(0)));
+                    let here = self.st.code.here();
                     self.patch_all(&skip, here);
                     skip = match elif.cond {
                         Some(cond) => self.condition(arena, cond)?,
                         None => {
-                            self.code.emit(Instr::Placeholder);
-                            vec![self.code.emit(Instr::JumpIfFalse(0))]
+                            self.st.code.emit(Instr::Placeholder);
+                            vec![self.st.code.emit(Instr::JumpIfFalse(0))]
                         }
                     };
                     self.stmt_list(arena, &elif.body, errors);
                 }
                 if let Some(els) = els {
-                    to_end.push(self.code.emit(Instr::Jump(0)));
-                    let here = self.code.here();
+                    to_end.push(self.st.code.emit(Instr::Jump(0)));
+                    let here = self.st.code.here();
                     self.patch_all(&skip, here);
                     self.stmt_list(arena, els, errors);
                 } else {
-                    let here = self.code.here();
+                    let here = self.st.code.here();
                     self.patch_all(&skip, here);
                 }
-                let end = self.code.here();
+                let end = self.st.code.here();
                 for at in to_end {
-                    self.code.patch(at, end);
+                    self.st.code.patch(at, end);
                 }
             }
             StmtKind::CompactIf { cond, stmt: inner } => {
                 let skip = self.condition(arena, *cond)?;
                 self.stmt(arena, inner, errors)?;
-                let here = self.code.here();
+                let here = self.st.code.here();
                 self.patch_all(&skip, here);
             }
             StmtKind::For { var, from, to, step, body } => {
@@ -95,25 +95,25 @@ impl RoutineCompiler<'_> {
                 let local = self.new_local(num, [0; 3], 0, LocalKind::LoopVar);
                 self.new_local(num, [0; 3], 0, LocalKind::Temp);
                 self.new_local(num, [0; 3], 0, LocalKind::Temp);
-                self.code.emit(Instr::ForInit { var: local.slot, has_step: step.is_some() });
-                let check = self.code.emit(Instr::ForCheck { var: local.slot, exit: 0 });
-                self.loop_vars.push((var.sym, local));
-                self.own_data.push(local);
-                self.loops.push(super::LoopJumps::default());
+                self.st.code.emit(Instr::ForInit { var: local.slot, has_step: step.is_some() });
+                let check = self.st.code.emit(Instr::ForCheck { var: local.slot, exit: 0 });
+                self.st.loop_vars.push((var.sym, local));
+                self.st.own_data.push(local);
+                self.st.loops.push(super::LoopJumps::default());
                 self.stmt_list(arena, body, errors);
-                self.loop_vars.pop();
-                let next = self.code.emit(Instr::ForNext { var: local.slot, check });
-                let exit = self.code.here();
-                self.code.patch(check, exit);
+                self.st.loop_vars.pop();
+                let next = self.st.code.emit(Instr::ForNext { var: local.slot, check });
+                let exit = self.st.code.here();
+                self.st.code.patch(check, exit);
                 self.end_loop(next, exit);
             }
             StmtKind::While { cond, body } => {
-                let top = self.code.here();
+                let top = self.st.code.here();
                 let exit = self.condition(arena, *cond)?;
-                self.loops.push(super::LoopJumps::default());
+                self.st.loops.push(super::LoopJumps::default());
                 self.stmt_list(arena, body, errors);
-                self.code.emit(Instr::Jump(top));
-                let here = self.code.here();
+                self.st.code.emit(Instr::Jump(top));
+                let here = self.st.code.here();
                 self.patch_all(&exit, here);
                 self.end_loop(top, here);
             }
@@ -122,85 +122,85 @@ impl RoutineCompiler<'_> {
                 let ty = subject_ty.map_or(self.prog.core.num, |(t, _)| t);
                 let tmp = self.new_local(ty, [0; 3], 0, LocalKind::Temp);
                 self.expr(arena, *subject, None)?;
-                self.code.emit(Instr::StoreLocal(tmp.slot));
+                self.st.code.emit(Instr::StoreLocal(tmp.slot));
                 let mut to_end = Vec::new();
                 for case in cases {
                     let mut to_body = Vec::new();
                     for &value in &case.values {
-                        self.code.emit(Instr::LoadLocal(tmp.slot));
+                        self.st.code.emit(Instr::LoadLocal(tmp.slot));
                         self.expr(arena, value, subject_ty)?;
-                        self.code.emit(Instr::Binary(rapid_syntax::ast::BinaryOp::Ne));
-                        to_body.push(self.code.emit(Instr::JumpIfFalse(0)));
+                        self.st.code.emit(Instr::Binary(rapid_syntax::ast::BinaryOp::Ne));
+                        to_body.push(self.st.code.emit(Instr::JumpIfFalse(0)));
                     }
-                    let next_case = self.code.emit(Instr::Jump(0));
-                    let body_start = self.code.here();
+                    let next_case = self.st.code.emit(Instr::Jump(0));
+                    let body_start = self.st.code.here();
                     for at in to_body {
-                        self.code.patch(at, body_start);
+                        self.st.code.patch(at, body_start);
                     }
                     self.stmt_list(arena, &case.body, errors);
-                    to_end.push(self.code.emit(Instr::Jump(0)));
-                    let here = self.code.here();
-                    self.code.patch(next_case, here);
+                    to_end.push(self.st.code.emit(Instr::Jump(0)));
+                    let here = self.st.code.here();
+                    self.st.code.patch(next_case, here);
                 }
                 if let Some(default) = default {
                     self.stmt_list(arena, default, errors);
                 }
-                let end = self.code.here();
+                let end = self.st.code.here();
                 for at in to_end {
-                    self.code.patch(at, end);
+                    self.st.code.patch(at, end);
                 }
             }
             StmtKind::Goto(label) => {
-                let at = self.code.emit(Instr::Jump(0));
-                self.gotos.push((at, label.sym, label.span));
+                let at = self.st.code.emit(Instr::Jump(0));
+                self.st.gotos.push((at, label.sym, label.span));
             }
             StmtKind::Label(label) => {
-                let here = self.code.here();
-                self.labels.insert(label.sym, here);
+                let here = self.st.code.here();
+                self.st.labels.insert(label.sym, here);
             }
             // §1.13: a RETURN in the UNDO handler itself is ignored (its value is not
             // evaluated); one in a routine the handler calls returns (`exec/undo.rs`).
-            StmtKind::Return(_) if self.section == Section::Undo => {
-                self.code.emit(Instr::UndoReturn);
+            StmtKind::Return(_) if self.st.section == Section::Undo => {
+                self.st.code.emit(Instr::UndoReturn);
             }
             StmtKind::Return(value) => match value {
                 Some(value) => {
                     self.kernel_return(arena, *value);
-                    let ret = self.ret_ty;
+                    let ret = self.st.ret_ty;
                     self.expr(arena, *value, ret.map(|t| (t, [0; 3])))?;
-                    self.code.emit(Instr::ReturnValue);
+                    self.st.code.emit(Instr::ReturnValue);
                 }
                 None => {
-                    self.code.emit(Instr::Return);
+                    self.st.code.emit(Instr::Return);
                 }
             },
             StmtKind::Raise(value) => match value {
                 Some(value) => {
                     self.expr(arena, *value, None)?;
-                    self.code.emit(Instr::Raise);
+                    self.st.code.emit(Instr::Raise);
                 }
                 None => {
-                    self.code.emit(Instr::ReRaise);
+                    self.st.code.emit(Instr::ReRaise);
                 }
             },
             StmtKind::Retry => {
-                self.code.emit(Instr::Retry);
+                self.st.code.emit(Instr::Retry);
             }
             StmtKind::TryNext => {
-                self.code.emit(Instr::TryNext);
+                self.st.code.emit(Instr::TryNext);
             }
             StmtKind::Exit => {
-                self.code.emit(Instr::Exit);
+                self.st.code.emit(Instr::Exit);
             }
             StmtKind::Connect { target, trap } => {
                 let Some(super::Resolved::Routine(idx)) = self.resolve(trap.sym) else {
                     return Err(self.error(trap.span, "CONNECT needs a TRAP routine"));
                 };
                 self.place(arena, *target)?;
-                self.code.emit(Instr::Connect(idx));
+                self.st.code.emit(Instr::Connect(idx));
             }
             StmtKind::Placeholder(_) | StmtKind::Error => {
-                self.code.emit(Instr::Placeholder);
+                self.st.code.emit(Instr::Placeholder);
             }
         }
         Ok(())
@@ -212,11 +212,11 @@ impl RoutineCompiler<'_> {
     fn condition(&mut self, arena: &Arena, cond: rapid_syntax::ast::ExprId) -> Result<Vec<u32>, CompileError> {
         let kernel = self.kernel_branch(arena, cond);
         self.expr(arena, cond, None)?;
-        let jump = self.code.emit(Instr::JumpIfFalse(0));
-        let here = self.code.here();
+        let jump = self.st.code.emit(Instr::JumpIfFalse(0));
+        let here = self.st.code.here();
         Ok(match kernel {
             Some(kernel) => {
-                self.code.patch_skip(kernel, here);
+                self.st.code.patch_skip(kernel, here);
                 vec![kernel, jump]
             }
             None => vec![jump],
@@ -226,14 +226,14 @@ impl RoutineCompiler<'_> {
     /// Points the innermost loop's Continue jumps at `next` (where the next iteration
     /// starts: FOR's step, WHILE's condition) and its Break jumps at `exit`.
     fn end_loop(&mut self, next: u32, exit: u32) {
-        let Some(jumps) = self.loops.pop() else { return };
+        let Some(jumps) = self.st.loops.pop() else { return };
         self.patch_all(&jumps.continues, next);
         self.patch_all(&jumps.breaks, exit);
     }
 
     fn patch_all(&mut self, jumps: &[u32], target: u32) {
         for &at in jumps {
-            self.code.patch(at, target);
+            self.st.code.patch(at, target);
         }
     }
 
@@ -246,8 +246,8 @@ impl RoutineCompiler<'_> {
         let kernel = self.kernel_store(arena, target, value);
         self.assign_general(arena, target, value)?;
         if let Some(kernel) = kernel {
-            let here = self.code.here();
-            self.code.patch_skip(kernel, here);
+            let here = self.st.code.here();
+            self.st.code.patch_skip(kernel, here);
         }
         Ok(())
     }
@@ -263,18 +263,18 @@ impl RoutineCompiler<'_> {
             ExprKind::Name(sym) => match self.name(target, sym) {
                 Some(Resolved::Local(local)) => {
                     self.expr(arena, value, expect)?;
-                    self.code.emit(Instr::StoreLocal(local.slot));
+                    self.st.code.emit(Instr::StoreLocal(local.slot));
                     return Ok(());
                 }
                 Some(Resolved::Global(idx)) => {
                     self.expr(arena, value, expect)?;
-                    self.code.emit(Instr::StoreGlobal(idx));
+                    self.st.code.emit(Instr::StoreGlobal(idx));
                     return Ok(());
                 }
                 _ => {}
             },
             ExprKind::Placeholder(_) => {
-                self.code.emit(Instr::Placeholder);
+                self.st.code.emit(Instr::Placeholder);
                 return Ok(());
             }
             ExprKind::Index { base, indices } => {
@@ -284,7 +284,7 @@ impl RoutineCompiler<'_> {
                         self.expr(arena, index, None)?;
                     }
                     self.expr(arena, value, expect)?;
-                    self.code.emit(Instr::StoreElem { global, slot, n: indices.len() as u8 });
+                    self.st.code.emit(Instr::StoreElem { global, slot, n: indices.len() as u8 });
                     return Ok(());
                 }
             }
@@ -292,7 +292,7 @@ impl RoutineCompiler<'_> {
         }
         self.place(arena, target)?;
         self.expr(arena, value, expect)?;
-        self.code.emit(Instr::StorePlace);
+        self.st.code.emit(Instr::StorePlace);
         Ok(())
     }
 }

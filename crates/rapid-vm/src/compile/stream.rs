@@ -3,13 +3,14 @@
 //! compiled item by item as each item is checked, never held whole.
 //!
 //! The checker lends its tables for one call at a time, so the routine being compiled
-//! is kept between items as its own state, without the tables ([`Suspended`]).
+//! is kept between items as its own state, without the tables
+//! ([`RoutineState`]).
 
 use rapid_sema::{BodySink, ItemFacts, SourceInput, Tables};
 use rapid_syntax::ast::{Arena, BodyItem, Routine};
 use rustc_hash::FxHashMap;
 
-use super::{CompileError, RoutineCompiler};
+use super::{CompileError, RoutineCompiler, RoutineState};
 use crate::builtins::Builtins;
 use crate::ir::Code;
 
@@ -51,7 +52,7 @@ struct Current {
     module: usize,
     file: usize,
     /// Taken out while an item is compiled.
-    state: Option<Suspended>,
+    state: Option<RoutineState>,
     errors: Vec<CompileError>,
 }
 
@@ -74,11 +75,11 @@ impl<'a> StreamCompiler<'a> {
     ) -> Option<T> {
         let current = self.current.as_mut()?;
         let text = &self.files.get(current.file)?.text;
-        let state = current.state.take()?;
-        let mut rc = state.resume(tables, self.builtins, current.module, current.file, text);
-        rc.facts = facts;
+        let st = current.state.take()?;
+        let (module, file) = (current.module, current.file);
+        let mut rc = RoutineCompiler { prog: tables, builtins: self.builtins, module, file, text, facts, st };
         let res = f(&mut rc, &mut current.errors);
-        current.state = Some(Suspended::from(rc));
+        current.state = Some(rc.st);
         Some(res)
     }
 }
@@ -98,7 +99,7 @@ impl BodySink for StreamCompiler<'_> {
         let mut rc = RoutineCompiler::new(tables, self.builtins, module, file, &source.text);
         rc.header(routine);
         rc.declare_params(routine);
-        let state = Some(Suspended::from(rc));
+        let state = Some(rc.st);
         self.current = Some(Current { idx, module, file, state, errors: Vec::new() });
     }
 
@@ -111,85 +112,6 @@ impl BodySink for StreamCompiler<'_> {
         let Some(current) = self.current.take() else { return };
         if let (Some(compiled), true) = (compiled, clean) {
             self.done.routines.insert(current.idx, compiled);
-        }
-    }
-}
-
-/// A routine compiler's own state, without what it borrows.
-struct Suspended {
-    code: Code,
-    locals: FxHashMap<rapid_syntax::Symbol, super::Local>,
-    own_data: Vec<super::Local>,
-    loop_vars: Vec<(rapid_syntax::Symbol, super::Local)>,
-    labels: FxHashMap<rapid_syntax::Symbol, u32>,
-    gotos: Vec<(u32, rapid_syntax::Symbol, rapid_syntax::Span)>,
-    n_locals: u32,
-    local_types: Vec<(rapid_sema::types::TypeId, [u32; 3], u8)>,
-    ret_ty: Option<rapid_sema::types::TypeId>,
-    stmt_depth: u16,
-    exits: Vec<u32>,
-    signal_as_data: bool,
-    loops: Vec<super::LoopJumps>,
-    section: rapid_syntax::ast::Section,
-    shapes: FxHashMap<Box<[crate::packed::Node]>, u32>,
-    sites_seen: FxHashMap<super::SiteKey, u32>,
-}
-
-impl From<RoutineCompiler<'_>> for Suspended {
-    fn from(rc: RoutineCompiler<'_>) -> Suspended {
-        Suspended {
-            code: rc.code,
-            locals: rc.locals,
-            own_data: rc.own_data,
-            loop_vars: rc.loop_vars,
-            labels: rc.labels,
-            gotos: rc.gotos,
-            n_locals: rc.n_locals,
-            local_types: rc.local_types,
-            ret_ty: rc.ret_ty,
-            stmt_depth: rc.stmt_depth,
-            exits: rc.exits,
-            signal_as_data: rc.signal_as_data,
-            loops: rc.loops,
-            section: rc.section,
-            shapes: rc.shapes,
-            sites_seen: rc.sites_seen,
-        }
-    }
-}
-
-impl Suspended {
-    fn resume<'p>(
-        self,
-        prog: Tables<'p>,
-        builtins: &'p Builtins,
-        module: usize,
-        file: usize,
-        text: &'p str,
-    ) -> RoutineCompiler<'p> {
-        RoutineCompiler {
-            prog,
-            builtins,
-            module,
-            file,
-            text,
-            code: self.code,
-            locals: self.locals,
-            own_data: self.own_data,
-            facts: None,
-            loop_vars: self.loop_vars,
-            labels: self.labels,
-            gotos: self.gotos,
-            n_locals: self.n_locals,
-            local_types: self.local_types,
-            ret_ty: self.ret_ty,
-            stmt_depth: self.stmt_depth,
-            exits: self.exits,
-            signal_as_data: self.signal_as_data,
-            loops: self.loops,
-            section: self.section,
-            shapes: self.shapes,
-            sites_seen: self.sites_seen,
         }
     }
 }
