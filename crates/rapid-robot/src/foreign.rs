@@ -24,6 +24,7 @@ use std::sync::{Arc, RwLock, RwLockReadGuard};
 use rapid_motion::external::{Eax, UnitChain};
 use rapid_motion::plan::PlannedMove;
 
+use rapid_tasks::TaskingAccess;
 use rapid_vm::builtins::Ctx;
 use rapid_vm::error::RapidError;
 
@@ -297,7 +298,7 @@ impl super::robot::RobotState {
 /// Whether this task moves synchronized with task `other` now (both after SyncMoveOn
 /// with each other in the task list, neither suspended).
 fn synchronized_with(ctx: &Ctx<'_>, other: &str) -> bool {
-    let tasking = &ctx.resources.tasking;
+    let tasking = ctx.resources.tasking();
     let Some(mode) = tasking.sync_move.as_ref().filter(|m| !m.suspended) else { return false };
     mode.members.iter().any(|m| m.eq_ignore_ascii_case(other))
         && tasking.shared.in_sync.iter().any(|t| t.eq_ignore_ascii_case(other))

@@ -119,17 +119,17 @@ pub(super) fn check_sing_mode(ctx: &Ctx<'_>) -> Result<(), RapidError> {
 
 /// Only a motion task (`-MotionTask`) runs move instructions (§1.20).
 pub(super) fn require_motion_task(ctx: &Ctx<'_>) -> Result<(), RapidError> {
-    if rapid_vm::builtins::tasking::my_task(ctx).is_none_or(|t| t.motion) {
+    if rapid_tasks::my_task(ctx).is_none_or(|t| t.motion) {
         return Ok(());
     }
-    let name = ctx.resources.tasking.name();
+    let name = ctx.resources.tasks.name();
     Err(RapidError::fatal(format!("task {name} is no motion task (-MotionTask): it cannot move the robot")))
 }
 
 /// Whether this task moves a robot (a positioner's motion task moves external units
 /// only).
 pub(super) fn moves_robot(ctx: &Ctx<'_>) -> bool {
-    rapid_vm::builtins::tasking::my_task(ctx).is_none_or(|t| t.robot)
+    rapid_tasks::my_task(ctx).is_none_or(|t| t.robot)
 }
 
 /// A move of the TCP runs only in a motion task that moves a robot.
@@ -143,7 +143,7 @@ pub(super) fn require_robot(ctx: &Ctx<'_>) -> Result<(), RapidError> {
     Err(RapidError::fatal(format!(
         "task {} moves no robot (its mechanical units are external axes only): it cannot move a TCP; MoveExtJ \
          and MoveAbsJ move its axes",
-        ctx.resources.tasking.name()
+        ctx.resources.tasks.name()
     )))
 }
 

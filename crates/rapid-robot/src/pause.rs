@@ -82,7 +82,7 @@ fn all_motion_tasks(ctx: &mut Ctx<'_>, args: &[Value], idx: usize, name: &'stati
     if !present(args.get(idx)) {
         return true;
     }
-    rapid_vm::builtins::tasking::ask(ctx, rapid_vm::builtins::tasking::Request::AllMotionTasks { name }).is_some()
+    rapid_vm::ext::ask(ctx, rapid_vm::ext::Request::AllMotionTasks { name }).is_some()
 }
 
 /// The robot's path stops at `since` (now for StopMove; the end of the move it is on
@@ -345,7 +345,7 @@ pub(crate) fn clear_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 // uncertain: the manual's "on-going robot movements stop" taken as an immediate stop,
 // as StopMove's.
 pub(crate) fn abandon_paths(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
-    if rapid_vm::builtins::tasking::my_task(ctx).is_some_and(|t| !t.motion) {
+    if rapid_tasks::my_task(ctx).is_some_and(|t| !t.motion) {
         return Ok(());
     }
     ctx.resources.robot_mut().stored = None;

@@ -57,7 +57,7 @@ impl StepBack {
 // back along the path (the path itself on linear segments), a stop point of the
 // timing model.
 pub(crate) fn step_bwd_path(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    if ctx.resources.tasking.event != EVENT_RESTART {
+    if ctx.resources.tasks.event != EVENT_RESTART {
         return Err(RapidError::fatal("StepBwdPath can only be used in a RESTART event routine"));
     }
     let (length, time) = (ctx.num(&args[0])?, ctx.num(&args[1])?);

@@ -17,6 +17,7 @@ use rapid_motion::Joints;
 
 use super::pause::{pause_at, Pause};
 use super::robot::{Action, Queued, RobotState};
+use rapid_tasks::TaskingAccess;
 use rapid_vm::builtins::Ctx;
 use rapid_vm::error::RapidError;
 use rapid_vm::value::Value;
@@ -104,7 +105,7 @@ pub(crate) fn store_path(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         facts: robot.set_facts_aside(since),
     };
     robot.stored = Some(Box::new(stored));
-    if let Some(mode) = ctx.resources.tasking.sync_move.as_mut() {
+    if let Some(mode) = ctx.resources.tasking_mut().sync_move.as_mut() {
         mode.suspended = !keep_sync;
     }
     if since > now {
@@ -226,7 +227,7 @@ pub(crate) fn resto_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     robot.path_rec.forget_back();
     // The base path was synchronized: so is the task again.
     // uncertain: also when the level 2 moves ended suspended (no SyncMoveResume).
-    if let Some(mode) = ctx.resources.tasking.sync_move.as_mut() {
+    if let Some(mode) = ctx.resources.tasking_mut().sync_move.as_mut() {
         mode.suspended = false;
     }
     if level2_end > now {

@@ -150,6 +150,11 @@ pub trait TaskHooks: Sync {
     /// state, one value per type, as [`Extensions`] holds a task's.
     fn exchange_shared(&self, _resources: &mut Resources, _shared: &mut Extensions) {}
 
+    /// Interrupts for what reached the task from other tasks or from outside (the
+    /// messages of its RAPID Message Queue): fired at the start of every run (what
+    /// came while the task did not run) and wherever the loop looks for interrupts.
+    fn deliver(&self, _resources: &mut Resources) {}
+
     /// For signal interrupts (`Source::Signal`, `Source::Analog`): brings the signals
     /// up to `now` and hands the changes logged from entry `from` of the extension's
     /// change log as (signal, new value), in the order they happened; answers the

@@ -30,5 +30,15 @@ pub fn call_site(ctx: &Ctx<'_>) -> (usize, u32) {
 
 /// The index of the task in the task system (its place in the configuration, from 0).
 pub fn task_index(ctx: &Ctx<'_>) -> usize {
-    ctx.resources.tasking.index()
+    ctx.resources.tasks.index()
 }
+
+// used by the tasks crate (rapid-tasks): which task this is and the task names are
+// the core's (`builtins::tasks`), as are the requests to the controller.
+pub use crate::builtins::stands_still;
+pub use crate::builtins::tasks::{
+    ask, named_task as task_named, other_task, ExtensionReply, Reply, Request, SharedTasks, TaskPlace,
+};
+pub use crate::errnames::Err;
+pub use crate::error::RapidError;
+pub use crate::value::Value;

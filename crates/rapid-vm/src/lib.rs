@@ -21,9 +21,11 @@
 //! extension's families use of the core is public on purpose: [`builtins::Ctx`] and
 //! its argument readers (`arg_name`, `call_place`, `in_trap`, `instruction_here`),
 //! [`builtins::Family`] with `builtins::native`, the catalogue argument layouts
-//! ([`builtins::signature`], the `layout!` macro), and the multitasking, interrupt and
-//! waiting helpers of `builtins::tasking`, `builtins::interrupts` and
-//! `builtins::wait`.
+//! ([`builtins::signature`], the `layout!` macro), and the task, interrupt and
+//! waiting helpers of `builtins::tasks`, `builtins::interrupts` and
+//! `builtins::wait`. Multitasking (sync points, semaphores, the tasks' kinds) is the
+//! extension crate rapid-tasks; the core keeps of tasks only what its own built-ins
+//! need (`builtins::tasks`).
 
 pub mod builtins;
 pub mod compile;

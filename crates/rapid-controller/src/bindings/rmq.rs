@@ -21,8 +21,8 @@
 
 use std::collections::VecDeque;
 
+use rapid_tasks::{SharedTasking, TaskingAccess};
 use rapid_vm::builtins::rmq::{size, to_datum, to_value, type_of, OutsideQueue, RmqKind, RmqMessage, TypeNames};
-use rapid_vm::builtins::tasking::SharedTasking;
 use rapid_vm::embed::{Extension, TaskState};
 use rapid_vm::errnames::Err;
 use rapid_vm::error::RapidError;
@@ -97,7 +97,7 @@ fn me(ctx: &Ctx<'_>) -> usize {
 /// client's queue closed since counts as none).
 fn slot(ctx: &Ctx<'_>, arg: &Value) -> Result<Dest, RapidError> {
     let (_, handle) = ctx.handle_arg(arg, "an rmqslot")?;
-    let shared = &ctx.resources.tasking.shared;
+    let shared = &ctx.resources.tasking().shared;
     handle
         .and_then(|h| (h as usize).checked_sub(1))
         .and_then(|n| match n.checked_sub(OUTSIDE_SLOTS) {
@@ -118,13 +118,13 @@ fn store_slot(ctx: &mut Ctx<'_>, arg: &Value, task: usize) -> Result<(), RapidEr
 /// `RMQFindSlot Slot, Name`: the slot of the queue named `RMQ_<task>`.
 fn find_slot(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let name = ctx.string(&args[1])?;
-    let tasks = &ctx.resources.tasking.shared.tasks;
+    let tasks = &ctx.resources.tasking().shared.tasks;
     let found =
         tasks.iter().position(|t| t.rmq.kind != RmqKind::None && format!("RMQ_{}", t.name).eq_ignore_ascii_case(&name));
     // A client's queue is found by its name as the client gave it.
     // uncertain: whether RobotWare compares a client queue's name with letter case.
     let outside = || {
-        let queues = &ctx.resources.tasking.shared.outside;
+        let queues = &ctx.resources.tasking().shared.outside;
         queues.iter().position(|q| q.as_ref().is_some_and(|q| q.name.eq_ignore_ascii_case(&name)))
     };
     let Some(slot) = found.or_else(|| outside().map(|k| OUTSIDE_SLOTS + k)) else {
@@ -136,7 +136,7 @@ fn find_slot(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `RMQGetSlotName(Slot)`: the slot's name.
 fn get_slot_name(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let shared = &ctx.resources.tasking.shared;
+    let shared = &ctx.resources.tasking().shared;
     let name = match slot(ctx, &args[0])? {
         Dest::Task(task) => format!("RMQ_{}", shared.tasks[task].name),
         Dest::Outside(k) => shared.outside[k].as_ref().map(|q| q.name.clone()).unwrap_or_default(),
@@ -166,7 +166,7 @@ fn send(ctx: &mut Ctx<'_>, dest: Dest, data: &Value, userdef: f64) -> Result<(),
             return send_outside(ctx, k, RmqMessage { datatype, dims, data: datum, sender, userdef, dispatched: false })
         }
     };
-    let shared = &ctx.resources.tasking.shared;
+    let shared = &ctx.resources.tasking().shared;
     let config = shared.tasks[task].rmq;
     if config.kind == RmqKind::None {
         return Err(ctx.error(Err::RmqInvalid, "the receiving task has no message queue"));
@@ -180,7 +180,7 @@ fn send(ctx: &mut Ctx<'_>, dest: Dest, data: &Value, userdef: f64) -> Result<(),
         return Err(ctx.error(Err::RmqFull, "the receiving queue is full"));
     }
     let message = RmqMessage { datatype, dims, data: datum, sender, userdef, dispatched: false };
-    let shared = &mut ctx.resources.tasking.shared;
+    let shared = &mut ctx.resources.tasking_mut().shared;
     if let Some(queue) = shared.queues.get_mut(task) {
         queue.push_back(message);
     }
@@ -190,7 +190,7 @@ fn send(ctx: &mut Ctx<'_>, dest: Dest, data: &Value, userdef: f64) -> Result<(),
 
 /// Puts a task's message into client queue `k`: its size limit is the client's.
 fn send_outside(ctx: &mut Ctx<'_>, k: usize, message: RmqMessage) -> Result<(), RapidError> {
-    let shared = &mut ctx.resources.tasking.shared;
+    let shared = &mut ctx.resources.tasking_mut().shared;
     let Some(queue) = shared.outside.get_mut(k).and_then(Option::as_mut) else {
         return Err(ctx.error(Err::RmqInvalid, "the client's queue has been closed"));
     };
@@ -409,8 +409,8 @@ fn held(ctx: &Ctx<'_>, arg: &Value) -> Result<RmqMessage, RapidError> {
 /// the one that interrupted); ERR_RMQ_NOMSG when there is none.
 fn get_message(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let me = me(ctx);
-    let synchronous = ctx.resources.tasking.shared.tasks[me].rmq.synchronous;
-    let queue = &mut ctx.resources.tasking.shared.queues[me];
+    let synchronous = ctx.resources.tasking().shared.tasks[me].rmq.synchronous;
+    let queue = &mut ctx.resources.tasking_mut().shared.queues[me];
     let at = queue.iter().position(|m| synchronous || m.dispatched);
     let Some(message) = at.and_then(|i| queue.remove(i)) else {
         return Err(ctx.error(Err::RmqNoMsg, "the task's message queue is empty"));
@@ -503,7 +503,7 @@ fn send_wait(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 fn require_synchronous(ctx: &Ctx<'_>, what: &str) -> Result<(), RapidError> {
     let me = me(ctx);
-    if ctx.resources.tasking.shared.tasks[me].rmq.synchronous {
+    if ctx.resources.tasking().shared.tasks[me].rmq.synchronous {
         return Ok(());
     }
     // uncertain: the controller's error for this misuse is not public; execution stops.
@@ -532,7 +532,7 @@ fn wait_for(
         _ => ctx.time,
     };
     let me = me(ctx);
-    let queue = &mut ctx.resources.tasking.shared.queues[me];
+    let queue = &mut ctx.resources.tasking_mut().shared.queues[me];
     let matches = |m: &RmqMessage| {
         want.as_ref().is_none_or(|(name, dims)| m.datatype.eq_ignore_ascii_case(name) && m.dims == *dims)
     };
@@ -555,7 +555,7 @@ fn wait_for(
 /// `RMQEmptyQueue`: drops every message of the task's queue.
 fn empty_queue(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     let me = me(ctx);
-    ctx.resources.tasking.shared.queues[me].clear();
+    ctx.resources.tasking_mut().shared.queues[me].clear();
     Ok(None)
 }
 

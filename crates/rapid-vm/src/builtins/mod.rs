@@ -38,7 +38,7 @@ pub use symbols::same_type;
 pub mod symsearch;
 mod sysinfo;
 mod system;
-pub mod tasking;
+pub mod tasks;
 pub mod texttab;
 
 use rapid_sema::types::TypeId;
@@ -133,8 +133,10 @@ pub struct Resources {
     pub(crate) boxes: Vec<io_visualize::ShownBox>,
     /// The task's interrupts (deleted at PP to Main).
     pub interrupts: interrupts::InterruptState,
-    /// Which task this is and what the tasks share (sync points).
-    pub tasking: tasking::TaskingState,
+    /// Which task this is, and what the core shares with the other tasks (the task
+    /// names, the requests to the controller); the rest of multitasking is an
+    /// extension's (rapid-tasks).
+    pub tasks: tasks::TaskPlace,
     /// The task's types a RAPID Message Queue message travels by (the RMQ built-ins
     /// are the controller's; the robot's read the types too).
     pub rmq: rmq::RmqState,
@@ -153,7 +155,8 @@ pub struct Shared {
     pub extensions: crate::embed::Extensions,
     /// The operator's timed answers to pendant dialogs (a stimulus).
     pub answers: std::collections::VecDeque<(f64, String)>,
-    pub tasking: tasking::SharedTasking,
+    /// The task names, the requests to the controller, the controller-wide event log.
+    pub tasks: tasks::SharedTasks,
 }
 
 impl Resources {
@@ -165,7 +168,6 @@ impl Resources {
         self.spy.stop();
         self.modules.close_all();
         self.interrupts.clear();
-        self.tasking.end_waits();
         self.extensions.close_all();
     }
 
@@ -173,7 +175,7 @@ impl Resources {
     /// core's part; the extensions' part goes with it in `Vm::exchange_shared`.
     pub fn exchange_shared(&mut self, shared: &mut Shared) {
         std::mem::swap(&mut self.answers, &mut shared.answers);
-        std::mem::swap(&mut self.tasking.shared, &mut shared.tasking);
+        std::mem::swap(&mut self.tasks.shared, &mut shared.tasks);
     }
 
     /// The waiting instruction under way is over (it ended or timed out).
@@ -383,7 +385,7 @@ pub enum StopKind {
 /// Whether every extension stands still before a stop-point instruction goes on
 /// (WaitTime and WaitSyncTask with `\InPos`): `false` (the extension set a wait and
 /// a repeat) while the robot still moves.
-pub(crate) fn stands_still(ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
+pub fn stands_still(ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
     let set: &Builtins = ctx.builtins;
     for hooks in set.hooks() {
         if !hooks.stands_still(ctx)? {
@@ -436,7 +438,6 @@ pub(crate) static CORE_FAMILIES: &[&Family] = &[
     &random::FAMILY,
     &interrupts::FAMILY,
     &spy::FAMILY,
-    &tasking::FAMILY,
     &controller::FAMILY,
 ];
 
