@@ -183,7 +183,7 @@ pub(super) fn jointtarget(ctx: &Ctx<'_>, value: &Value) -> Result<Joints, RapidE
 
 /// A record of program type `name`.
 fn make(ctx: &Ctx<'_>, name: &str, fields: Vec<Value>) -> Result<Value, RapidError> {
-    let Some(&ty) = ctx.resources.rmq.names.by_name.get(name) else {
+    let Some(&ty) = ctx.resources.type_names.by_name.get(name) else {
         return Err(RapidError::fatal(format!("the program has no type {name}")));
     };
     Ok(Value::Record(Rc::new(Record { ty, fields })))

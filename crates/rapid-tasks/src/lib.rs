@@ -2,7 +2,8 @@
 //! (`rapid_vm::embed::Extension`, [`EXTENSION`]). It holds what a task knows of the
 //! other tasks of its system: their kinds and states ([`TaskInfo`]: motion task,
 //! robot, NORMAL, executing), the robots' numbering, the sync points of WaitSyncTask
-//! and of synchronized movement, the tasks' RAPID Message Queues, and the built-ins
+//! and of synchronized movement, each task's RAPID Message Queue configuration
+//! ([`RmqConfig`]; the queues are the controller's RMQ binding's), and the built-ins
 //! that read them (`tasking.rs`: WaitSyncTask, TestAndSet, WaitTestAndSet,
 //! GetTaskName, TaskRunMec, TaskRunRob, TaskIsActive, TaskIsExecuting; `units.rs`:
 //! GetTSPStatus, MotionPlannerNo, GetMecUnitName, GetServiceInfo). Its state is the
@@ -21,9 +22,11 @@
 //! built-ins need of tasks (`rapid_vm::ext::TaskPlace`: which task this is, the task
 //! names, the requests to the controller, the controller-wide event log).
 
+mod rmq;
 mod tasking;
 mod units;
 
+pub use rmq::{RmqConfig, RmqKind};
 pub use tasking::{
     meet, my_task, named_task, sync_point, task_list, MoveMeet, SharedTasking, SharedTaskingAccess, SyncMode, TaskInfo,
     TaskingAccess, TaskingState,
@@ -31,7 +34,7 @@ pub use tasking::{
 pub use units::planner_no;
 
 use rapid_vm::embed::{Extension, Extensions, TaskHooks};
-use rapid_vm::ext::{InterruptSource, Resources};
+use rapid_vm::ext::Resources;
 
 /// Multitasking as an extension of the interpreter: registered before the robot's
 /// (which reads the task list and meets the other tasks).
@@ -39,7 +42,7 @@ pub static EXTENSION: Extension =
     Extension { name: "tasks", families: &[&tasking::FAMILY, &units::FAMILY], hooks: Some(&HOOKS), init: None };
 
 /// What the interpreter's loop asks of multitasking: the shared state swapped in and
-/// out with the controller's, and the messages of the task's queue handed to traps.
+/// out with the controller's.
 pub struct TasksHooks;
 
 /// The hooks of [`EXTENSION`].
@@ -48,41 +51,5 @@ pub static HOOKS: TasksHooks = TasksHooks;
 impl TaskHooks for TasksHooks {
     fn exchange_shared(&self, resources: &mut Resources, shared: &mut Extensions) {
         std::mem::swap(&mut resources.tasking_mut().shared, shared.get_or_default::<SharedTasking>());
-    }
-
-    /// Interrupt mode of the RAPID Message Queue: each new message of the task's queue
-    /// fires the IRMQMessage interrupt ordered for its data type; one that none is
-    /// ordered for is discarded.
-    // uncertain: the controller also logs a warning for a discarded message; not yet.
-    fn deliver(&self, resources: &mut Resources) {
-        let me = resources.tasks.index();
-        let Some(tasking) = resources.extensions.get_mut::<TaskingState>() else { return };
-        if !tasking.has_undispatched(me) {
-            return;
-        }
-        let mut fired = Vec::new();
-        let table = &resources.interrupts.table;
-        let Some(queue) = tasking.shared.queues.get_mut(me) else { return };
-        queue.retain_mut(|message| {
-            if message.dispatched {
-                return true;
-            }
-            message.dispatched = true;
-            let wanted = table.iter().enumerate().find(|(_, slot)| {
-                matches!(slot.as_ref().and_then(|i| i.source.as_ref()),
-                    Some(InterruptSource::Rmq { datatype, dims })
-                        if datatype.eq_ignore_ascii_case(&message.datatype) && *dims == message.dims)
-            });
-            match wanted {
-                Some((idx, _)) => {
-                    fired.push(idx as u32 + 1);
-                    true
-                }
-                None => false,
-            }
-        });
-        for number in fired {
-            resources.interrupts.fire(number);
-        }
     }
 }

@@ -10,15 +10,12 @@
 //! are re-checked (`StopKind::Repeat`): the controller wakes a waiting task whenever
 //! another task changes the shared state, so nothing depends on a polling period.
 
-use std::collections::VecDeque;
 use std::sync::Arc;
 
 use rapid_vm::ext::{
     call_site, native, next_due, present, stands_still, Ctx, Err, Family, RapidError, Resources, StopKind, Value,
 };
 use rustc_hash::FxHashMap;
-
-use rapid_vm::builtins::rmq::RmqMessage;
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -42,7 +39,7 @@ pub struct TaskInfo {
     /// Executing now (started, not stopped or ended): TaskIsExecuting.
     pub executing: bool,
     /// Its RAPID Message Queue (none by default).
-    pub rmq: rapid_vm::builtins::rmq::RmqConfig,
+    pub rmq: crate::rmq::RmqConfig,
     /// A task that is no motion task: the motion task whose mechanical unit group it
     /// uses, whose robot it reads (CJointT, CRobT).
     pub robot_of: Option<String>,
@@ -85,11 +82,6 @@ pub struct MoveMeet {
 pub struct SharedTasking {
     pub tasks: Vec<TaskInfo>,
     sync: FxHashMap<String, SyncPoint>,
-    /// Each task's RAPID Message Queue, by task index.
-    pub queues: Vec<VecDeque<RmqMessage>>,
-    /// The queues of the controller's clients the tasks may send to (RWS DIPC
-    /// queues), by slot; a closed one's place is empty until another opens.
-    pub outside: Vec<Option<rapid_vm::builtins::rmq::OutsideQueue>>,
     /// Bumped on every change a waiting task could be waiting for (the controller
     /// adds it to the core's `SharedTasks::epoch`).
     pub epoch: u64,
@@ -111,7 +103,7 @@ pub struct SharedTasking {
 impl Default for SharedTasking {
     /// A system of one task, T_ROB1, moving the robot.
     fn default() -> Self {
-        let rmq = rapid_vm::builtins::rmq::RmqConfig::default();
+        let rmq = crate::rmq::RmqConfig::default();
         let t_rob1 = TaskInfo {
             name: "T_ROB1".into(),
             motion: true,
@@ -129,12 +121,9 @@ impl Default for SharedTasking {
 impl SharedTasking {
     /// The system's tasks, in configuration order.
     pub fn new(tasks: Vec<TaskInfo>) -> SharedTasking {
-        let queues = tasks.iter().map(|_| VecDeque::new()).collect();
         SharedTasking {
             tasks,
             sync: FxHashMap::default(),
-            queues,
-            outside: Vec::new(),
             epoch: 0,
             sysdata: FxHashMap::default(),
             in_sync: Vec::new(),
@@ -229,18 +218,6 @@ impl TaskingState {
         if let Some(mode) = self.sync_move.take() {
             self.shared.in_sync.retain(|t| !t.eq_ignore_ascii_case(&mode.task));
         }
-    }
-
-    /// Messages in the task's queue (task `me`) no trap has been looked for yet
-    /// (interrupt mode).
-    pub(crate) fn has_undispatched(&self, me: usize) -> bool {
-        // Checked before every run of the task: the common case (no message anywhere)
-        // costs no look at the task's own queue.
-        if self.shared.queues.iter().all(|q| q.is_empty()) {
-            return false;
-        }
-        let synchronous = self.shared.tasks.get(me).is_some_and(|t| t.rmq.synchronous);
-        !synchronous && self.shared.queues.get(me).is_some_and(|q| q.iter().any(|m| !m.dispatched))
     }
 }
 
@@ -527,7 +504,7 @@ mod tests {
     use super::*;
 
     fn task(name: &str, robot: bool) -> TaskInfo {
-        let rmq = rapid_vm::builtins::rmq::RmqConfig::default();
+        let rmq = crate::rmq::RmqConfig::default();
         let (motion, normal, active, executing, robot_of) = (true, true, true, true, None);
         TaskInfo { name: name.into(), motion, robot, normal, active, executing, rmq, robot_of }
     }

@@ -42,3 +42,9 @@ pub use crate::builtins::tasks::{
 pub use crate::errnames::Err;
 pub use crate::error::RapidError;
 pub use crate::value::Value;
+
+// used by the controller's RMQ binding: a message's data travels by its type's name
+// and is written as a RAPID literal for a client.
+pub use crate::builtins::typenames::TypeNames;
+pub use crate::format::{aggregate_to_text, bool_to_text, dnum_to_text, num_to_text, string_to_literal};
+pub use crate::value::{Array, Record};

@@ -26,7 +26,6 @@ mod rawbytes;
 mod registry;
 pub mod signature;
 pub use registry::{compiled, native, out_of_step, Builtin, Builtins, Compiled, Family};
-pub mod rmq;
 pub mod spy;
 mod strdig;
 mod strformat;
@@ -40,6 +39,7 @@ mod sysinfo;
 mod system;
 pub mod tasks;
 pub mod texttab;
+pub mod typenames;
 
 use rapid_sema::types::TypeId;
 
@@ -137,9 +137,10 @@ pub struct Resources {
     /// names, the requests to the controller); the rest of multitasking is an
     /// extension's (rapid-tasks).
     pub tasks: tasks::TaskPlace,
-    /// The task's types a RAPID Message Queue message travels by (the RMQ built-ins
-    /// are the controller's; the robot's read the types too).
-    pub rmq: rmq::RmqState,
+    /// The task's types by name, by which a value leaves the task (a RAPID Message
+    /// Queue message: the controller's RMQ binding) or is built by type name (the
+    /// robot's data).
+    pub type_names: typenames::TypeNames,
     /// The operating mode, speed override and PP flags (kept at PP to Main).
     pub controller: controller::ControllerState,
     /// The embedder's extensions' own state (`crate::embed`).
