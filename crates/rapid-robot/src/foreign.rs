@@ -25,8 +25,7 @@ use rapid_motion::external::{Eax, UnitChain};
 use rapid_motion::plan::PlannedMove;
 
 use rapid_tasks::TaskingAccess;
-use rapid_vm::builtins::Ctx;
-use rapid_vm::error::RapidError;
+use rapid_vm::ext::{Ctx, RapidError};
 
 /// How far apart two axis values may be and still be one position.
 const SAME_POSITION: f64 = 1e-9;

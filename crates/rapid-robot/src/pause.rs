@@ -13,10 +13,7 @@ use rapid_motion::plan::{AccelLimits, MoveRequest, PlannedMove, Planner, SpeedDa
 use rapid_motion::{Joints, Kinematics};
 
 use rapid_signals::IoAccess;
-use rapid_vm::builtins::{present, Ctx, Resources, StopKind};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{present, Ctx, Err, RapidError, Resources, StopKind, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 

@@ -9,10 +9,7 @@ use rapid_motion::{Kinematics, MotionError};
 
 use super::data;
 use rapid_tasks::TaskingAccess;
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{present, Ctx, Err, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -47,7 +44,7 @@ struct RobotReport {
 
 /// The controller's reply to another task's `Request::Robot` about the robot of the
 /// task whose resources these are, at `time`.
-pub fn robot_reply(resources: &mut rapid_vm::builtins::Resources, time: f64) -> rapid_vm::ext::Reply {
+pub fn robot_reply(resources: &mut rapid_vm::ext::Resources, time: f64) -> rapid_vm::ext::Reply {
     let robot = resources.robot_mut();
     // Its frames with its base where it stands in the world now (MOC.cfg's base
     // frame, on a track where the track has it).
@@ -214,7 +211,7 @@ fn tool0_like(ctx: &Ctx<'_>) -> Result<Value, RapidError> {
         .ok_or_else(|| RapidError::fatal("the program has no tool0"))
 }
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static CROBT: CRobTArgs = "CRobT" { tool: "Tool", wobj: "WObj" }
     static CPOS: CPosArgs = "CPos" { tool: "Tool", wobj: "WObj" }
     static CALC_ROB_T: CalcRobTArgs = "CalcRobT" { target: "Joint_target", tool: "Tool", wobj: "WObj" }

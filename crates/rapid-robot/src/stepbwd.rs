@@ -15,10 +15,7 @@ use rapid_motion::{Joints, Kinematics};
 
 use super::pause::Pause;
 use super::robot::RobotState;
-use rapid_vm::builtins::Ctx;
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{Ctx, Err, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 

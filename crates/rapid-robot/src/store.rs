@@ -18,9 +18,7 @@ use rapid_motion::Joints;
 use super::pause::{pause_at, Pause};
 use super::robot::{Action, Queued, RobotState};
 use rapid_tasks::TaskingAccess;
-use rapid_vm::builtins::Ctx;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{Ctx, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -59,7 +57,7 @@ pub(crate) fn store_path(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if ctx.resources.robot_mut().stored.is_some() {
         return Err(RapidError::fatal("StorePath: a path is stored already (one at a time: RestoPath first)"));
     }
-    let keep_sync = rapid_vm::builtins::present(args.first());
+    let keep_sync = rapid_vm::ext::present(args.first());
     let now = ctx.time;
     if ctx.resources.robot_mut().pause.is_none() {
         let since = end_of_current_move(ctx.resources.robot_mut(), now);

@@ -13,10 +13,7 @@ use crate::RobotResources;
 use rapid_motion::external::ExternalMove;
 use rapid_motion::plan::{AccelLimits, MotionSettings, MoveRequest, Planner};
 use rapid_tasks::{meet, sync_point, task_list, SyncMode, TaskingAccess, TaskingState};
-use rapid_vm::builtins::{native, present, Ctx, Family, StopKind};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::{Record, Value};
+use rapid_vm::ext::{native, present, Ctx, Err, Family, RapidError, Record, StopKind, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -42,7 +39,7 @@ pub(crate) fn robot_stands(ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
     if end > ctx.time {
         // The instruction looks again when the robot stands, or earlier when an
         // interrupt may come (its trap runs meanwhile, §1.11).
-        let next = rapid_vm::builtins::interrupts::next_due(ctx).map_or(end, |due| due.min(end));
+        let next = rapid_vm::ext::next_due(ctx).map_or(end, |due| due.min(end));
         ctx.wait = Some((next - ctx.time).max(1e-6));
         ctx.stop = StopKind::Repeat;
         return Ok(false);

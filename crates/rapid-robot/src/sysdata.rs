@@ -16,11 +16,7 @@ use crate::RobotResources;
 use std::rc::Rc;
 
 use rapid_tasks::TaskingAccess;
-use rapid_vm::builtins::{native, present, Ctx, Family};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::ext::{ask, Reply, Request};
-use rapid_vm::value::{Place, Root, Value};
+use rapid_vm::ext::{ask, native, present, Ctx, Err, Family, Place, RapidError, Reply, Request, Root, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -148,7 +144,7 @@ fn value_in(ctx: &mut Ctx<'_>, task: &str, kind: usize) -> Result<Option<(Rc<str
     }
 }
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static GET_SYS_DATA: GetSysDataArgs = "GetSysData" { dest: "DestObject", object_name: "ObjectName" }
 }
 

@@ -12,10 +12,7 @@
 
 use crate::RobotResources;
 use rapid_tasks::TaskingAccess;
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::{Opaque, OpaqueState, Value};
+use rapid_vm::ext::{present, Ctx, Err, Opaque, OpaqueState, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -291,7 +288,7 @@ fn set_active(ctx: &mut Ctx<'_>, i: usize, active: bool) {
     super::moves::wait_for_robot(ctx, end);
 }
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static MECH_UNIT_LOAD: MechUnitLoadArgs = "MechUnitLoad" { load: "Load" }
 }
 

@@ -48,3 +48,7 @@ pub use crate::value::Value;
 pub use crate::builtins::typenames::TypeNames;
 pub use crate::format::{aggregate_to_text, bool_to_text, dnum_to_text, num_to_text, string_to_literal};
 pub use crate::value::{Array, Record};
+
+// used by the robot's tasking users (rapid-robot's foreign, moves, pause, readback,
+// stepbwd, store, syncmove, sysdata and units take the interpreter from here only).
+pub use crate::value::{Opaque, OpaqueState, Place, Root};
