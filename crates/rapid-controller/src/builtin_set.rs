@@ -63,6 +63,18 @@ mod tests {
         "WaitDI",
         "ISignalDI",
         "IOEnable",
+        "WaitSyncTask",
+        "TestAndSet",
+        "WaitTestAndSet",
+        "GetTaskName",
+        "TaskRunMec",
+        "TaskRunRob",
+        "TaskIsActive",
+        "TaskIsExecuting",
+        "GetTSPStatus",
+        "MotionPlannerNo",
+        "GetMecUnitName",
+        "GetServiceInfo",
     ];
 
     #[test]

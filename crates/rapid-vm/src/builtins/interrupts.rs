@@ -42,7 +42,10 @@ pub enum Source {
     /// and `kind` (0 any, 1 state, 2 warning, 3 error).
     Error { domain: u32, id: Option<u32>, kind: u32 },
     /// IRMQMessage: a message of this data type (name as declared, array sizes)
-    /// arrived in the task's queue.
+    /// arrived in the task's queue. The one piece of RMQ the core keeps: interrupts
+    /// are the language's mechanism, and a trap is ordered by the data type; the
+    /// queues and the hand-over of a message are the controller's RMQ binding's
+    /// (`TaskHooks::deliver`).
     Rmq { datatype: String, dims: [u32; 3] },
 }
 
