@@ -572,8 +572,7 @@ impl Controller {
     /// Everything a waiting task may be waiting for: signal changes, sync points,
     /// semaphores and shared persistents.
     pub(crate) fn epoch(&self) -> u64 {
-        let tasks =
-            self.shared.tasks.epoch + self.shared.tasking().epoch + crate::bindings::rmq::change_count(&self.shared);
+        let tasks = self.shared.tasks.epoch + self.shared.tasking().epoch;
         self.shared.io().change_count() as u64 + tasks + self.pers.generation
     }
 

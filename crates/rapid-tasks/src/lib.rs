@@ -39,7 +39,13 @@ use rapid_vm::ext::Resources;
 /// Multitasking as an extension of the interpreter: registered before the robot's
 /// (which reads the task list and meets the other tasks).
 pub static EXTENSION: Extension =
-    Extension { name: "tasks", families: &[&tasking::FAMILY, &units::FAMILY], hooks: Some(&HOOKS), init: None };
+    Extension { name: "tasks", families: &[&tasking::FAMILY, &units::FAMILY], hooks: Some(&HOOKS), init: Some(init) };
+
+/// Puts the task's state in first: the hooks find it before every statement of a
+/// controller's task (a lookup scans the slot in order).
+fn init(resources: &mut Resources) {
+    resources.extensions.insert(TaskingState::default());
+}
 
 /// What the interpreter's loop asks of multitasking: the shared state swapped in and
 /// out with the controller's.

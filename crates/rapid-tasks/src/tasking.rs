@@ -241,10 +241,12 @@ pub trait TaskingAccess {
 }
 
 impl TaskingAccess for Resources {
+    #[inline]
     fn tasking(&self) -> &TaskingState {
         self.extensions.get::<TaskingState>().unwrap_or(&ALONE)
     }
 
+    #[inline]
     fn tasking_mut(&mut self) -> &mut TaskingState {
         self.extensions.get_or_default::<TaskingState>()
     }
@@ -259,6 +261,7 @@ pub trait SharedTaskingAccess {
 }
 
 impl SharedTaskingAccess for rapid_vm::builtins::Shared {
+    #[inline]
     fn tasking(&self) -> &SharedTasking {
         self.extensions.get::<SharedTasking>().unwrap_or(&ALONE.shared)
     }

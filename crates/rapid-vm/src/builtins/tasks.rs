@@ -84,7 +84,9 @@ pub struct SharedTasks {
     pub request: Option<(usize, Request)>,
     pub reply: Option<(usize, Reply)>,
     /// Bumped on every change of the core's shared state a waiting task could be
-    /// waiting for (an extension's shared state counts its own changes).
+    /// waiting for, and by an extension that puts something into a task's reach (an
+    /// RMQ message: the loop asks the extensions to deliver when it moved); rapid-tasks'
+    /// shared state counts its own changes.
     pub epoch: u64,
 }
 
@@ -124,6 +126,9 @@ pub struct TaskPlace {
     pub shared: SharedTasks,
     /// The event routine running now (EventType: EVENT_POWERON 1 … EVENT_STEP 7; 0 none).
     pub event: u8,
+    /// The change count ([`SharedTasks::epoch`]) when the extensions last delivered
+    /// what reached the task (`TaskHooks::deliver`).
+    pub(crate) delivered_at: Option<u64>,
 }
 
 impl TaskPlace {

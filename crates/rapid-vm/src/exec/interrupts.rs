@@ -91,8 +91,16 @@ impl Vm {
 
     /// Interrupts for what reached the task from other tasks or from outside (RMQ
     /// messages, which the extension keeping the queues hands to the IRMQMessage trap
-    /// ordered for their type: `TaskHooks::deliver`).
+    /// ordered for their type: `TaskHooks::deliver`). Whatever reaches a task changes
+    /// the shared change count (`SharedTasks::epoch`), so the extensions are asked
+    /// only when it moved since they were last asked: once per run of a controller's
+    /// task is a look at one number.
     pub(super) fn dispatch_messages(&mut self) {
+        let epoch = self.resources.tasks.shared.epoch;
+        if self.resources.tasks.delivered_at == Some(epoch) {
+            return;
+        }
+        self.resources.tasks.delivered_at = Some(epoch);
         for hooks in self.builtins.hooks() {
             hooks.deliver(&mut self.resources);
         }

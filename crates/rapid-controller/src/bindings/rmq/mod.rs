@@ -261,9 +261,8 @@ fn send(ctx: &mut Ctx<'_>, dest: Dest, data: &Value, userdef: f64) -> Result<(),
         return Err(ctx.error(Err::RmqFull, "the receiving queue is full"));
     }
     let message = RmqMessage { datatype, dims, data: datum, sender, userdef, dispatched: false };
-    let shared = queues_mut(ctx);
-    shared.queue_mut(task).push_back(message);
-    shared.epoch += 1;
+    queues_mut(ctx).queue_mut(task).push_back(message);
+    ctx.resources.tasks.shared.epoch += 1;
     Ok(())
 }
 
@@ -282,7 +281,7 @@ fn send_outside(ctx: &mut Ctx<'_>, k: usize, message: RmqMessage) -> Result<(), 
         return Err(ctx.error(Err::RmqFull, "the receiving queue is full"));
     }
     queue.messages.push_back(message);
-    shared.epoch += 1;
+    ctx.resources.tasks.shared.epoch += 1;
     Ok(())
 }
 
@@ -290,12 +289,6 @@ fn send_outside(ctx: &mut Ctx<'_>, k: usize, message: RmqMessage) -> Result<(), 
 fn rmq_of(shared: &Shared) -> &SharedRmq {
     static NONE: std::sync::LazyLock<SharedRmq> = std::sync::LazyLock::new(SharedRmq::default);
     shared.extensions.get::<SharedRmq>().unwrap_or(&NONE)
-}
-
-/// How many times the queues changed (a task waiting for a message looks again when
-/// this grows).
-pub fn change_count(shared: &Shared) -> u64 {
-    rmq_of(shared).epoch
 }
 
 /// The controller's queues to change (put in at their default first).
@@ -379,9 +372,8 @@ pub fn send_from_outside(
         .map_or_else(|| outside_sender(shared), |k| OUTSIDE_SLOTS + k);
     let userdef = message.userdef;
     let message = RmqMessage { datatype, dims, data: datum, sender, userdef, dispatched: false };
-    let shared = rmq_of_mut(shared);
-    shared.queue_mut(task).push_back(message);
-    shared.epoch += 1;
+    rmq_of_mut(shared).queue_mut(task).push_back(message);
+    shared.tasks.epoch += 1;
     Ok(())
 }
 

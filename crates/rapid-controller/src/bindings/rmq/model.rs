@@ -39,11 +39,10 @@ pub struct SharedRmq {
     /// Each task's RAPID Message Queue, by task index (made as a task is first sent to).
     pub queues: Vec<VecDeque<RmqMessage>>,
     /// The queues of the controller's clients the tasks may send to (RWS DIPC
-    /// queues), by slot; a closed one's place is empty until another opens.
+    /// queues), by slot; a closed one's place is empty until another opens. (A message
+    /// put into a queue bumps the core's shared change count, `SharedTasks::epoch`: a
+    /// waiting task looks again, the receiver's trap is looked for.)
     pub outside: Vec<Option<OutsideQueue>>,
-    /// Bumped on every change a waiting task could be waiting for (the controller
-    /// adds it to the others' change counts).
-    pub epoch: u64,
 }
 
 impl SharedRmq {
