@@ -145,7 +145,7 @@ impl Controller {
             .collect();
         let names = infos.iter().map(|t| t.name.clone()).collect();
         let mut shared = Shared { tasks: SharedTasks::new(names), ..Shared::default() };
-        shared.extensions.insert(SharedTasking::new(infos));
+        shared.lent.insert(SharedTasking::new(infos));
         shared.io_mut().system = io;
         let maps = tasks
             .iter()

@@ -12,7 +12,7 @@
 use crate::RobotResources;
 use rapid_motion::external::ExternalMove;
 use rapid_motion::plan::{AccelLimits, MotionSettings, MoveRequest, Planner};
-use rapid_tasks::{meet, sync_point, task_list, SyncMode, TaskingAccess, TaskingState};
+use rapid_tasks::{meet, sync_point, task_list, SharedTasking, SyncMode, TaskingAccess};
 use rapid_vm::ext::{native, present, Ctx, Err, Family, RapidError, Record, StopKind, Value};
 
 type Res = Result<Option<Value>, RapidError>;
@@ -65,7 +65,7 @@ fn sync_move_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         return Ok(None);
     }
     let me = ctx.resources.tasks.name().to_string();
-    let tasking = ctx.resources.tasking_mut();
+    let mut tasking = ctx.resources.tasking_mut();
     tasking.shared.in_sync.retain(|t| !t.eq_ignore_ascii_case(&me));
     tasking.shared.in_sync.push(me.clone());
     tasking.shared.epoch += 1;
@@ -103,7 +103,7 @@ fn sync_move_undo(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 /// Ends the task's synchronized movement.
 fn leave(ctx: &mut Ctx<'_>) {
     let me = ctx.resources.tasks.name().to_string();
-    let tasking = ctx.resources.tasking_mut();
+    let mut tasking = ctx.resources.tasking_mut();
     if let Some(mode) = tasking.sync_move.take() {
         if let Some(meet) = tasking.shared.move_meets.get_mut(&mode.point) {
             meet.entries.retain(|(t, _, _)| !t.eq_ignore_ascii_case(&me));
@@ -139,7 +139,8 @@ fn set_suspended(ctx: &mut Ctx<'_>, suspended: bool, what: &str) -> Res {
     if ctx.resources.robot_mut().stored.is_none() {
         return Err(RapidError::fatal(format!("{what} is only allowed on the StorePath level (after StorePath)")));
     }
-    let Some(mode) = ctx.resources.tasking_mut().sync_move.as_mut() else {
+    let mut tasking = ctx.resources.tasking_mut();
+    let Some(mode) = tasking.sync_move.as_mut() else {
         return Err(RapidError::fatal(format!("{what}: the task does not move synchronized (no SyncMoveOn)")));
     };
     mode.suspended = suspended;
@@ -189,24 +190,24 @@ pub(crate) fn coordinate(
         None => time_alone(ctx, request, settings, external)?,
     };
     let me = ctx.resources.tasks.name().to_string();
-    let tasking = ctx.resources.tasking_mut();
-    let meeting = tasking.shared.move_meets.entry(mode.point.clone()).or_default();
-    let round = match tasking.move_round {
+    let rapid_tasks::TaskingMut { shared, own } = ctx.resources.tasking_mut();
+    let meeting = shared.move_meets.entry(mode.point.clone()).or_default();
+    let round = match own.move_round {
         Some(round) => round,
         None => {
             meeting.entries.retain(|(t, _, _)| !t.eq_ignore_ascii_case(&me));
             meeting.entries.push((me, id, alone));
-            tasking.move_round = Some(meeting.round);
-            tasking.shared.epoch += 1;
+            own.move_round = Some(meeting.round);
+            shared.epoch += 1;
             meeting.round
         }
     };
-    complete_if_all_given(tasking, &mode);
-    let meeting = tasking.shared.move_meets.entry(mode.point.clone()).or_default();
+    complete_if_all_given(shared, &mode);
+    let meeting = shared.move_meets.entry(mode.point.clone()).or_default();
     match &meeting.last {
         Some((done, outcome)) if *done == round => {
             let outcome = outcome.clone();
-            tasking.move_round = None;
+            own.move_round = None;
             outcome.map(Coordination::Time).map_err(RapidError::fatal)
         }
         _ => {
@@ -219,8 +220,7 @@ pub(crate) fn coordinate(
 
 /// Ends a round of coordinated moves once every executing task of the group gave its
 /// move: the common time is the longest; different IDs are an error for all.
-fn complete_if_all_given(tasking: &mut TaskingState, mode: &SyncMode) {
-    let shared = &mut tasking.shared;
+fn complete_if_all_given(shared: &mut SharedTasking, mode: &SyncMode) {
     let executing = |name: &String| shared.tasks.iter().any(|t| t.name.eq_ignore_ascii_case(name) && t.executing);
     let members: Vec<&String> = mode.members.iter().filter(|m| executing(m)).collect();
     let Some(meeting) = shared.move_meets.get_mut(&mode.point) else { return };

@@ -9,8 +9,9 @@
 //! GetTSPStatus, MotionPlannerNo, GetMecUnitName, GetServiceInfo). Its state is the
 //! task's [`TaskingState`] (in the task's extension slot, reached through
 //! [`TaskingAccess`]) and the part every task of a controller shares
-//! ([`SharedTasking`], in `rapid_vm::builtins::Shared::extensions`, reached through
-//! [`SharedTaskingAccess`]), swapped in before a task runs by [`HOOKS`].
+//! ([`SharedTasking`], in `rapid_vm::builtins::Shared::lent`, reached through
+//! [`SharedTaskingAccess`]), which the core lends the running task whole
+//! (`Resources::lent`): no hook runs around a statement for it.
 //!
 //! It sits above rapid-vm and below the robot (rapid-robot reads which task moves
 //! which robot, meets the other tasks for synchronized movement and asks another
@@ -29,33 +30,20 @@ mod units;
 pub use rmq::{RmqConfig, RmqKind};
 pub use tasking::{
     meet, my_task, named_task, sync_point, task_list, MoveMeet, SharedTasking, SharedTaskingAccess, SyncMode, TaskInfo,
-    TaskingAccess, TaskingState,
+    Tasking, TaskingAccess, TaskingMut, TaskingState,
 };
 pub use units::planner_no;
 
-use rapid_vm::embed::{Extension, Extensions, TaskHooks};
+use rapid_vm::embed::Extension;
 use rapid_vm::ext::Resources;
 
 /// Multitasking as an extension of the interpreter: registered before the robot's
 /// (which reads the task list and meets the other tasks).
 pub static EXTENSION: Extension =
-    Extension { name: "tasks", families: &[&tasking::FAMILY, &units::FAMILY], hooks: Some(&HOOKS), init: Some(init) };
+    Extension { name: "tasks", families: &[&tasking::FAMILY, &units::FAMILY], hooks: None, init: Some(init) };
 
-/// Puts the task's state in first: the hooks find it before every statement of a
-/// controller's task (a lookup scans the slot in order).
+/// Puts the task's state in first: the built-ins find it sooner (a lookup scans the
+/// slot in order).
 fn init(resources: &mut Resources) {
     resources.extensions.insert(TaskingState::default());
-}
-
-/// What the interpreter's loop asks of multitasking: the shared state swapped in and
-/// out with the controller's.
-pub struct TasksHooks;
-
-/// The hooks of [`EXTENSION`].
-pub static HOOKS: TasksHooks = TasksHooks;
-
-impl TaskHooks for TasksHooks {
-    fn exchange_shared(&self, resources: &mut Resources, shared: &mut Extensions) {
-        std::mem::swap(&mut resources.tasking_mut().shared, shared.get_or_default::<SharedTasking>());
-    }
 }

@@ -3,9 +3,9 @@
 //! TasksInSync.
 //!
 //! What the tasks of a controller share (the task list, the sync points) is a
-//! [`SharedTasking`] the controller hands to whichever task runs (swapped in by
-//! [`crate::HOOKS`] with `Vm::exchange_shared`); a task alone has the one-task list
-//! of `Default`. Which task this is, the task names and the requests to the
+//! [`SharedTasking`] the controller lends to whichever task runs (in `Shared::lent`,
+//! which `Vm::exchange_shared` swaps whole with the task's `Resources::lent`); a task
+//! alone has the one-task list of `Default`. Which task this is, the task names and the requests to the
 //! controller are the interpreter core's (`rapid_vm::ext::TaskPlace`). Waits here
 //! are re-checked (`StopKind::Repeat`): the controller wakes a waiting task whenever
 //! another task changes the shared state, so nothing depends on a polling period.
@@ -194,7 +194,6 @@ impl SharedTasking {
 /// way. Who it is is the core's (`Resources::tasks`).
 #[derive(Debug, Clone, Default)]
 pub struct TaskingState {
-    pub shared: SharedTasking,
     /// The WaitSyncTask under way: (sync point, round it arrived in, started at,
     /// call depth, pc).
     waiting: Option<(String, u64, f64, usize, u32)>,
@@ -211,48 +210,85 @@ impl TaskingState {
     }
 
     /// Forgets a wait under way (PP to Main).
-    pub(crate) fn end_waits(&mut self) {
+    pub(crate) fn end_waits(&mut self, shared: &mut SharedTasking) {
         self.waiting = None;
         self.move_round = None;
         // PP to Main ends synchronized movement, as SyncMoveUndo does.
         if let Some(mode) = self.sync_move.take() {
-            self.shared.in_sync.retain(|t| !t.eq_ignore_ascii_case(&mode.task));
+            shared.in_sync.retain(|t| !t.eq_ignore_ascii_case(&mode.task));
         }
     }
 }
 
 impl rapid_vm::embed::TaskState for TaskingState {
-    fn close_all(&mut self) {
-        self.end_waits();
+    fn close_all_lent(&mut self, lent: &mut rapid_vm::embed::Extensions) {
+        self.end_waits(lent.get_or_default::<SharedTasking>());
     }
 }
 
 impl rapid_vm::embed::TaskState for SharedTasking {}
 
-/// A task without the tasks extension's state reads this (one task, T_ROB1).
-static ALONE: std::sync::LazyLock<TaskingState> = std::sync::LazyLock::new(TaskingState::default);
+/// A task's multitasking state as it reads it: its own ([`TaskingState`], through
+/// `Deref`) and what the tasks share (`shared`, lent to the task while it runs).
+pub struct Tasking<'a> {
+    pub shared: &'a SharedTasking,
+    pub own: &'a TaskingState,
+}
 
-/// The task's multitasking state in its extension slot (`Resources::extensions`).
+impl std::ops::Deref for Tasking<'_> {
+    type Target = TaskingState;
+    fn deref(&self) -> &TaskingState {
+        self.own
+    }
+}
+
+/// [`Tasking`] to change.
+pub struct TaskingMut<'a> {
+    pub shared: &'a mut SharedTasking,
+    pub own: &'a mut TaskingState,
+}
+
+impl std::ops::Deref for TaskingMut<'_> {
+    type Target = TaskingState;
+    fn deref(&self) -> &TaskingState {
+        self.own
+    }
+}
+
+impl std::ops::DerefMut for TaskingMut<'_> {
+    fn deref_mut(&mut self) -> &mut TaskingState {
+        self.own
+    }
+}
+
+/// A task without the tasks extension's state reads this (one task, T_ROB1).
+static ALONE: std::sync::LazyLock<(TaskingState, SharedTasking)> = std::sync::LazyLock::new(Default::default);
+
+/// The task's multitasking state: its own in its extension slot
+/// (`Resources::extensions`), the shared part in the state lent to it
+/// (`Resources::lent`, which the core swaps whole with the controller's).
 pub trait TaskingAccess {
     /// The task's state (that of a task alone when it has none yet).
-    fn tasking(&self) -> &TaskingState;
+    fn tasking(&self) -> Tasking<'_>;
     /// The task's state to change (put in at its default first).
-    fn tasking_mut(&mut self) -> &mut TaskingState;
+    fn tasking_mut(&mut self) -> TaskingMut<'_>;
 }
 
 impl TaskingAccess for Resources {
     #[inline]
-    fn tasking(&self) -> &TaskingState {
-        self.extensions.get::<TaskingState>().unwrap_or(&ALONE)
+    fn tasking(&self) -> Tasking<'_> {
+        let own = self.extensions.get::<TaskingState>().unwrap_or(&ALONE.0);
+        Tasking { shared: self.lent.get::<SharedTasking>().unwrap_or(&ALONE.1), own }
     }
 
     #[inline]
-    fn tasking_mut(&mut self) -> &mut TaskingState {
-        self.extensions.get_or_default::<TaskingState>()
+    fn tasking_mut(&mut self) -> TaskingMut<'_> {
+        let own = self.extensions.get_or_default::<TaskingState>();
+        TaskingMut { shared: self.lent.get_or_default::<SharedTasking>(), own }
     }
 }
 
-/// The controller's shared multitasking state (in `Shared::extensions`).
+/// The controller's shared multitasking state (in `Shared::lent`).
 pub trait SharedTaskingAccess {
     /// The shared state (a system of one task when there is none yet).
     fn tasking(&self) -> &SharedTasking;
@@ -263,11 +299,11 @@ pub trait SharedTaskingAccess {
 impl SharedTaskingAccess for rapid_vm::builtins::Shared {
     #[inline]
     fn tasking(&self) -> &SharedTasking {
-        self.extensions.get::<SharedTasking>().unwrap_or(&ALONE.shared)
+        self.lent.get::<SharedTasking>().unwrap_or(&ALONE.1)
     }
 
     fn tasking_mut(&mut self) -> &mut SharedTasking {
-        self.extensions.get_or_default::<SharedTasking>()
+        self.lent.get_or_default::<SharedTasking>()
     }
 }
 
@@ -329,7 +365,7 @@ pub fn meet(
     }
     let here = call_site(ctx);
     let now = ctx.time;
-    let tasking = ctx.resources.tasking_mut();
+    let mut tasking = ctx.resources.tasking_mut();
     let waiting = tasking.waiting.clone().filter(|w| w.0 == point && (w.3, w.4) == here);
     let (round, started) = match waiting {
         Some((_, round, started, _, _)) => (round, started),
@@ -342,7 +378,7 @@ pub fn meet(
             (sync.round, now)
         }
     };
-    complete_round_if_all_arrived(tasking, point, list);
+    complete_round_if_all_arrived(tasking.shared, point, list);
     if tasking.shared.sync.get(point).is_some_and(|s| s.round > round) {
         tasking.waiting = None;
         return Ok(true);
@@ -363,8 +399,7 @@ pub fn meet(
 }
 
 /// Ends the round of a sync point once every executing task of the list is there.
-fn complete_round_if_all_arrived(tasking: &mut TaskingState, point: &str, list: &[String]) {
-    let shared = &mut tasking.shared;
+fn complete_round_if_all_arrived(shared: &mut SharedTasking, point: &str, list: &[String]) {
     let Some(sync) = shared.sync.get(point) else { return };
     let all_there = list.iter().all(|name| {
         let executing = shared.tasks.iter().any(|t| t.name.eq_ignore_ascii_case(name) && t.executing);
@@ -510,6 +545,22 @@ mod tests {
         let rmq = crate::rmq::RmqConfig::default();
         let (motion, normal, active, executing, robot_of) = (true, true, true, true, None);
         TaskInfo { name: name.into(), motion, robot, normal, active, executing, rmq, robot_of }
+    }
+
+    /// PP to Main (`close_all`) ends synchronized movement as SyncMoveUndo does: the
+    /// task leaves the shared list of tasks in sync, which is in the state lent to it.
+    #[test]
+    fn closing_a_task_takes_it_out_of_synchronized_movement() {
+        use rapid_vm::embed::{Extensions, TaskState};
+        let mut lent = Extensions::default();
+        lent.get_or_default::<SharedTasking>().in_sync = vec!["T_ROB1".into(), "T_ROB2".into()];
+        let members = vec!["T_ROB1".to_string(), "T_ROB2".to_string()];
+        let mode = SyncMode { task: "T_ROB2".into(), point: "sync1".into(), members, suspended: false };
+        let mut own = TaskingState { sync_move: Some(mode), move_round: Some(3), ..TaskingState::default() };
+        own.close_all_lent(&mut lent);
+        assert_eq!(own.sync_move, None);
+        assert_eq!(own.move_round, None);
+        assert_eq!(lent.get::<SharedTasking>().map(|s| s.in_sync.clone()), Some(vec!["T_ROB1".to_string()]));
     }
 
     #[test]

@@ -147,7 +147,8 @@ pub trait TaskHooks: Sync {
 
     /// Swaps the part of the task's state every task of a controller shares with the
     /// controller's (`Vm::exchange_shared`): `shared` holds the extensions' shared
-    /// state, one value per type, as [`Extensions`] holds a task's.
+    /// state, one value per type, as [`Extensions`] holds a task's. (State an extension
+    /// keeps whole in `Shared::lent` needs no hook: the core swaps that map whole.)
     fn exchange_shared(&self, _resources: &mut Resources, _shared: &mut Extensions) {}
 
     /// Interrupts for what reached the task from other tasks or from outside (the
@@ -184,6 +185,13 @@ pub struct PendingEvent {
 /// task holds open (end of program, PP to Main: files, sockets, waits under way).
 pub trait TaskState: Any {
     fn close_all(&mut self) {}
+
+    /// [`TaskState::close_all`] with the shared state lent to the task at hand
+    /// (`Resources::lent`): for state that must also leave what the tasks share
+    /// (a task in synchronized movement leaves the list of such tasks).
+    fn close_all_lent(&mut self, _lent: &mut Extensions) {
+        self.close_all();
+    }
 }
 
 /// The extensions' per-task state, one value per type.
@@ -250,9 +258,11 @@ impl Extensions {
         self.position::<T>().is_some()
     }
 
-    pub(crate) fn close_all(&mut self) {
+    /// Closes every entry (`TaskState::close_all_lent`), `lent` being the shared
+    /// state lent to the task.
+    pub(crate) fn close_all(&mut self, lent: &mut Extensions) {
         for (_, entry) in &mut self.entries {
-            entry.close_all();
+            entry.close_all_lent(lent);
         }
     }
 }
@@ -293,7 +303,7 @@ mod tests {
     fn closing_reaches_every_state() {
         let mut slot = Extensions::default();
         slot.insert(Counter(5));
-        slot.close_all();
+        slot.close_all(&mut Extensions::default());
         assert_eq!(slot.get::<Counter>(), Some(&Counter(0)));
     }
 }

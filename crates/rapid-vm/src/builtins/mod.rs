@@ -145,6 +145,10 @@ pub struct Resources {
     pub controller: controller::ControllerState,
     /// The embedder's extensions' own state (`crate::embed`).
     pub extensions: crate::embed::Extensions,
+    /// The extensions' state every task of a controller shares, lent to the task
+    /// while it runs (`Shared::lent`, swapped whole by [`Resources::exchange_shared`]);
+    /// a task alone keeps its own here.
+    pub lent: crate::embed::Extensions,
 }
 
 /// What the tasks of one controller share: handed to the task that runs, so each
@@ -158,6 +162,10 @@ pub struct Shared {
     pub answers: std::collections::VecDeque<(f64, String)>,
     /// The task names, the requests to the controller, the controller-wide event log.
     pub tasks: tasks::SharedTasks,
+    /// The extensions' shared state the core hands over whole (one swap of the map
+    /// per exchange, however many extensions keep theirs here: multitasking's
+    /// `SharedTasking`, the RMQ queues), each found by type.
+    pub lent: crate::embed::Extensions,
 }
 
 impl Resources {
@@ -169,7 +177,7 @@ impl Resources {
         self.spy.stop();
         self.modules.close_all();
         self.interrupts.clear();
-        self.extensions.close_all();
+        self.extensions.close_all(&mut self.lent);
     }
 
     /// Swaps the controller's shared state with the task's (hand in, take back): the
@@ -177,6 +185,7 @@ impl Resources {
     pub fn exchange_shared(&mut self, shared: &mut Shared) {
         std::mem::swap(&mut self.answers, &mut shared.answers);
         std::mem::swap(&mut self.tasks.shared, &mut shared.tasks);
+        std::mem::swap(&mut self.lent, &mut shared.lent);
     }
 
     /// The waiting instruction under way is over (it ended or timed out).

@@ -4,8 +4,8 @@
 //!
 //! Each task configured with `-RmqType Internal` or `Remote` has a queue, slot
 //! `RMQ_<task>`, holding at most `-RmqMaxNoOfMsg` messages of at most `-RmqMaxMsgSize`
-//! bytes. The queues are part of the state all tasks share ([`SharedRmq`], swapped into
-//! the running task by [`HOOKS`]); which tasks have a queue, and how it is configured,
+//! bytes. The queues are part of the state all tasks share ([`SharedRmq`], in
+//! `Shared::lent`, which the core lends the running task whole); which tasks have a queue, and how it is configured,
 //! is the task list's (`rapid_tasks::TaskInfo::rmq`).
 //! In interrupt mode (the default) a message is handed to the trap IRMQMessage ordered
 //! for its data type, and discarded when none is; in synchronous mode it waits for
@@ -34,7 +34,7 @@ use std::collections::VecDeque;
 use datum::{size, to_datum, to_value, type_of};
 use rapid_tasks::{RmqKind, SharedTaskingAccess, TaskingAccess};
 use rapid_vm::builtins::Shared;
-use rapid_vm::embed::{Extension, Extensions, TaskHooks, TaskState};
+use rapid_vm::embed::{Extension, PendingEvent, TaskHooks, TaskState};
 use rapid_vm::errnames::Err;
 use rapid_vm::error::RapidError;
 use rapid_vm::ext::TypeNames;
@@ -66,16 +66,14 @@ enum Dest {
     Outside(usize),
 }
 
-/// The task's side of RMQ: the messages its rmqmessage data holds, the wait under
-/// way, and (while the task runs) the queues all tasks share.
+/// The task's side of RMQ: the messages its rmqmessage data holds and the wait under
+/// way.
 #[derive(Debug, Default)]
 pub struct RmqWaits {
     /// Messages rmqmessage data holds: `Handle(n)` is `held[n - 1]`.
     held: Vec<RmqMessage>,
     /// The RMQReadWait / RMQSendWait under way: (call depth, pc, started at).
     waiting: Option<(usize, u32, f64)>,
-    /// The queues, swapped in from the controller's `Shared` (see [`RmqHooks`]).
-    shared: SharedRmq,
 }
 
 impl TaskState for RmqWaits {
@@ -89,17 +87,18 @@ impl TaskState for RmqWaits {
 pub static EXTENSION: Extension =
     Extension { name: "rmq", families: &[&FAMILY], hooks: Some(&HOOKS), init: Some(init) };
 
-/// What the interpreter's loop asks of RMQ: the queues swapped in and out with the
-/// controller's, and the messages of the task's queue handed to their traps.
+/// What the interpreter's loop asks of RMQ: the messages of the task's queue handed to
+/// their traps.
 pub struct RmqHooks;
 
 /// The hooks of [`EXTENSION`].
 pub static HOOKS: RmqHooks = RmqHooks;
 
 impl TaskHooks for RmqHooks {
-    fn exchange_shared(&self, resources: &mut Resources, shared: &mut Extensions) {
-        let task = resources.extensions.get_or_default::<RmqWaits>();
-        std::mem::swap(&mut task.shared, shared.get_or_default::<SharedRmq>());
+    /// RMQ logs no events and owes no wait: answered at once, as the fast loop asks
+    /// after every built-in call.
+    fn after_builtin(&self, _resources: &mut Resources, _now: f64, _events: &mut Vec<PendingEvent>) -> bool {
+        false
     }
 
     /// Interrupt mode of the RAPID Message Queue: each new message of the task's queue
@@ -107,21 +106,20 @@ impl TaskHooks for RmqHooks {
     /// ordered for is discarded.
     // uncertain: the controller also logs a warning for a discarded message; not yet.
     fn deliver(&self, resources: &mut Resources) {
-        let Some(rmq) = resources.extensions.get::<RmqWaits>() else { return };
-        // Looked at before every run of the task: the common case (no message anywhere)
-        // costs no look at the task list.
-        if rmq.shared.queues.iter().all(VecDeque::is_empty) {
+        let Some(rmq) = resources.lent.get::<SharedRmq>() else { return };
+        // The common case (no message anywhere) costs no look at the task list.
+        if rmq.queues.iter().all(VecDeque::is_empty) {
             return;
         }
         let me = resources.tasks.index();
         let synchronous = resources.tasking().shared.tasks.get(me).is_some_and(|t| t.rmq.synchronous);
-        let Some(rmq) = resources.extensions.get_mut::<RmqWaits>() else { return };
-        if !rmq.shared.has_undispatched(me, synchronous) {
+        let Some(rmq) = resources.lent.get_mut::<SharedRmq>() else { return };
+        if !rmq.has_undispatched(me, synchronous) {
             return;
         }
         let mut fired = Vec::new();
         let table = &resources.interrupts.table;
-        let Some(queue) = rmq.shared.queues.get_mut(me) else { return };
+        let Some(queue) = rmq.queues.get_mut(me) else { return };
         queue.retain_mut(|message| {
             if message.dispatched {
                 return true;
@@ -149,12 +147,12 @@ impl TaskHooks for RmqHooks {
 /// The queues all tasks share, while the task runs.
 fn queues<'a>(ctx: &'a Ctx<'_>) -> &'a SharedRmq {
     static NONE: std::sync::LazyLock<SharedRmq> = std::sync::LazyLock::new(SharedRmq::default);
-    ctx.resources.extensions.get::<RmqWaits>().map_or(&NONE, |w| &w.shared)
+    ctx.resources.lent.get::<SharedRmq>().unwrap_or(&NONE)
 }
 
 /// The queues all tasks share, to change.
 fn queues_mut<'a>(ctx: &'a mut Ctx<'_>) -> &'a mut SharedRmq {
-    &mut waits(ctx).shared
+    ctx.resources.lent.get_or_default::<SharedRmq>()
 }
 
 fn init(resources: &mut Resources) {
@@ -288,12 +286,12 @@ fn send_outside(ctx: &mut Ctx<'_>, k: usize, message: RmqMessage) -> Result<(), 
 /// The controller's queues (outside any task's run).
 fn rmq_of(shared: &Shared) -> &SharedRmq {
     static NONE: std::sync::LazyLock<SharedRmq> = std::sync::LazyLock::new(SharedRmq::default);
-    shared.extensions.get::<SharedRmq>().unwrap_or(&NONE)
+    shared.lent.get::<SharedRmq>().unwrap_or(&NONE)
 }
 
 /// The controller's queues to change (put in at their default first).
 fn rmq_of_mut(shared: &mut Shared) -> &mut SharedRmq {
-    shared.extensions.get_or_default::<SharedRmq>()
+    shared.lent.get_or_default::<SharedRmq>()
 }
 
 /// Who sent a message that came from outside the tasks (a client of the controller):

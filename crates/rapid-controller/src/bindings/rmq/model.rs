@@ -1,6 +1,6 @@
 //! The data model of the RAPID Message Queue (§1.10; option Multitasking): a message,
 //! a client's queue, and the queues every task of the controller shares
-//! ([`SharedRmq`], swapped into the running task by the binding's hooks). A message's
+//! ([`SharedRmq`], in `Shared::lent`: the core lends it to the running task whole). A message's
 //! data travels by its type's name (`datum.rs`); a task's queue configuration is part
 //! of the task list (`rapid_tasks::RmqConfig`).
 
