@@ -30,7 +30,7 @@ pub use io::{
 };
 pub use vm::SignalsVm;
 
-use rapid_vm::embed::Extension;
+use rapid_vm::ext::Extension;
 
 /// The I/O signals as an extension of the interpreter: registered before the robot's
 /// (which reads and sets signals).

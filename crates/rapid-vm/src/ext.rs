@@ -12,14 +12,48 @@
 //!
 //! What this module must not know: any extension.
 
-pub use crate::builtins::interrupts::{interrupt_number, next_due, Source as InterruptSource};
-pub use crate::builtins::io_visualize::{step as visualize_step, BoxArgs};
-pub use crate::builtins::pendant::value_text;
-pub use crate::builtins::signature::{of as signature, Signature};
-pub use crate::builtins::wait::{next_event, wait_again, wait_over, wait_started};
+// The built-in's call: its context, arguments by parameter name, how it stops.
+pub use crate::builtins::signature::{of as signature, Signature, ABSENT};
 pub use crate::builtins::{native, present, read_literal, Ctx, Family, Resources, StopKind};
 pub use crate::layout;
+
+// Errors: a family raises the language's errors by name.
+pub use crate::errnames::Err;
+pub use crate::error::RapidError;
+
+// Values: what the arguments and results are, and the places a family reads and
+// writes (a data reference, an opaque handle's slot).
+pub use crate::value::{Array, Opaque, OpaqueState, Place, Record, Root, Value, MAX_STRING_CHARS};
+
+// The extension itself: its families and hooks, the state it keeps per task and
+// shares between tasks, and the event-log entries its hooks hand back. `Shared` is
+// the controller's shared state: an extension keeps its shared part in
+// `Shared::extensions` and may give the embedder a typed view of it.
+pub use crate::builtins::Shared;
+pub use crate::embed::{Extension, Extensions, PendingEvent, TaskHooks, TaskState};
+pub use crate::events::{Event, EventKind, MOTION_DOMAIN};
+
+// The task's data store. Re-exported, not narrowed: `TaskHooks` hands it to a family
+// (`poll`, `program_stopped`, `data_initialised`), which reads and writes it by place
+// (`get`, `set`) and, to connect configured data, by global (`globals`).
+pub use crate::exec::storage::Storage;
+
+// Waiting, interrupts and the language's own I/O helpers a family joins in.
+pub use crate::builtins::interrupts::{
+    interrupt_number, next_due, AnalogTrigger, SampleTrigger, Source as InterruptSource,
+};
+pub use crate::builtins::io_visualize::{step as visualize_step, BoxArgs};
+pub use crate::builtins::pendant::value_text;
+pub use crate::builtins::wait::{next_event, wait_again, wait_over, wait_started};
+
+// The outside world a family reaches through the host's traits: the file devices,
+// files and folders, the network and the clock its waits run on (`SilentNetwork`:
+// the network where no peer ever sends, which a family's own tests run on).
 pub use crate::world::devices;
+pub use crate::world::memory::SilentNetwork;
+pub use crate::world::{Clock, StoppedClock};
+pub use crate::world::{FileKind, FileMeta, FileSystem, HostFile, OpenMode};
+pub use crate::world::{Network, NoNetwork, TcpConn, TcpListen, UdpConn};
 
 /// Where the running call is: its call depth and the instruction in its routine. A
 /// waiting built-in that runs again (`StopKind::Repeat`) keys its wait by this, so a
@@ -31,4 +65,10 @@ pub fn call_site(ctx: &Ctx<'_>) -> (usize, u32) {
 /// The index of the task in the task system (its place in the configuration, from 0).
 pub fn task_index(ctx: &Ctx<'_>) -> usize {
     ctx.resources.tasking.index()
+}
+
+/// The program's type named `name` (any letter case), by its number in this task:
+/// what a family building a record of a declared type (`pos`, `robtarget`) gives it.
+pub fn type_named(ctx: &Ctx<'_>, name: &str) -> Option<rapid_sema::types::TypeId> {
+    ctx.resources.rmq.names.by_name.get(&name.to_ascii_lowercase()).copied()
 }

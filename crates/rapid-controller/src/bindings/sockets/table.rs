@@ -16,8 +16,7 @@ use std::time::Duration;
 
 use rustc_hash::FxHashMap;
 
-use rapid_vm::errnames::Err;
-use rapid_vm::world::{Clock, Network, NoNetwork, StoppedClock, TcpConn, TcpListen, UdpConn};
+use rapid_vm::ext::{Clock, Err, Network, NoNetwork, StoppedClock, TcpConn, TcpListen, UdpConn};
 
 /// A moment on the world's monotonic clock ([`Clock::elapsed`]).
 pub(super) type Deadline = Duration;
@@ -652,7 +651,7 @@ mod tests {
     fn silent_table() -> SocketState {
         let clock = Rc::new(StoppedClock::default());
         let mut table = SocketState::default();
-        table.set_network(Box::new(rapid_vm::world::memory::SilentNetwork::new(clock.clone())), clock);
+        table.set_network(Box::new(rapid_vm::ext::SilentNetwork::new(clock.clone())), clock);
         table
     }
 
