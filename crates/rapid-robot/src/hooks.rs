@@ -1,4 +1,4 @@
-//! The robot as an extension of the language (`rapid_vm::embed`): its families and the
+//! The robot as an extension of the language (`rapid_vm::ext`): its families and the
 //! hooks through which the interpreter's loop asks it about the move under way. The
 //! core loop reaches the robot only through these.
 

@@ -1,5 +1,5 @@
 //! rapid-robot: the robot's side of RAPID, an extension of the interpreter core
-//! (`rapid_vm::embed::Extension`, [`EXTENSION`]). It holds the task's robot state
+//! (`rapid_vm::ext::Extension`, [`EXTENSION`]). It holds the task's robot state
 //! ([`robot::RobotState`]: its model, planned motion and where it is), the motion
 //! settings ([`MotionState`]), the built-ins that move the robot or read where it is
 //! (§1.7 motion settings, §1.8 motion: moves, read-backs, search, triggers, world

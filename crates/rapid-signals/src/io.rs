@@ -142,7 +142,7 @@ impl IoState {
     }
 }
 
-/// What the interpreter's loop asks of the I/O (`rapid_vm::embed::TaskHooks`): signals
+/// What the interpreter's loop asks of the I/O (`rapid_vm::ext::TaskHooks`): signals
 /// read in expressions, the changes signal interrupts look at, the next scheduled
 /// change (waits and interrupts look again then), the configuration's signals
 /// connected at load and after PP to Main.

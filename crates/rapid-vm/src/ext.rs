@@ -1,14 +1,19 @@
 //! What a built-in family defined outside this crate uses of the interpreter: an
 //! embedder's [`crate::embed::Extension`] registers families written like the
-//! language's own, and this module is the one place they take the interpreter's
-//! helpers from (issue 19: the controller's bindings moved out of the VM).
+//! language's own, and this module is the one door they take the interpreter's
+//! items through (issue 19): rapid-robot, rapid-signals and the controller's bindings
+//! name no other `rapid_vm::` path (`xtask/tests/ext_door.rs` holds them to it, with
+//! an allow-list of the files still to move that may only shrink).
 //!
 //! Kept small on purpose: a family reads its arguments through [`Ctx`], finds them by
 //! parameter name ([`layout!`](crate::layout)), raises RAPID errors
-//! (`Ctx::error`, with `crate::errnames::Err`), waits as
-//! the language's waiting instructions do, and keeps its own state in the task's
-//! extension slot (`Resources::extensions`). Anything else a family needs is added
-//! here deliberately, not reached through a private path.
+//! (`Ctx::error`, with [`Err`]), waits as the language's waiting instructions do,
+//! keeps its own state in the task's extension slot (`Resources::extensions`) and
+//! reaches the outside world through the host's traits. The items are re-exported
+//! one by one, in groups (a whole module only for the file devices); where a family
+//! would reach into the interpreter's state, a narrow question is asked here instead
+//! ([`call_site`], [`task_index`], [`type_named`]). Anything else a family needs is
+//! added here deliberately, not reached through a private path.
 //!
 //! What this module must not know: any extension.
 

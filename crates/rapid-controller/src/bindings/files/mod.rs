@@ -8,7 +8,7 @@
 //! * `text` and `anybin`: the pure parts (fields of text files, WriteAnyBin's format).
 //!
 //! The devices themselves (`HOME:` ... on the world's disk, the sandbox) are the
-//! interpreter's (`rapid_vm::world::devices`): the language's own Load and
+//! interpreter's (`rapid_vm::ext::devices`): the language's own Load and
 //! TextTabInstall resolve paths there too. This family keeps what the task holds open.
 //!
 //! An iodev or dir variable holds `OpaqueState::Handle(n)`; `n` keys this family's tables

@@ -1,7 +1,7 @@
 //! Socket Messaging (§1.10): SocketCreate, SocketConnect, SocketBind, SocketListen,
 //! SocketAccept, SocketSend, SocketSendTo, SocketReceive, SocketReceiveFrom,
 //! SocketClose, SocketGetStatus, SocketPeek, on the TCP and UDP sockets of the task's
-//! world (`rapid_vm::world::Network`: std::net in the controller's std world), an extension
+//! world (`rapid_vm::ext::Network`: std::net in the controller's std world), an extension
 //! of the interpreter ([`EXTENSION`]).
 //!
 //! A `socketdev` holds `OpaqueState::Handle(n)`, the number of its entry in the task's

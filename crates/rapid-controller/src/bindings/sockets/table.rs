@@ -1,5 +1,5 @@
 //! The task's socket table: one entry per created `socketdev`, holding the endpoint
-//! the world's network made (`rapid_vm::world::Network`) and the state SocketGetStatus
+//! the world's network made (`rapid_vm::ext::Network`) and the state SocketGetStatus
 //! reports. Every operation that can wait takes a deadline on the world's clock and
 //! never blocks past it.
 //!
