@@ -118,6 +118,7 @@ impl Program {
             types: &self.types,
             core: &self.core,
             datas: &self.datas,
+            pending: &[],
             routines: &self.routines,
             scopes: &self.scopes,
         }
@@ -132,8 +133,23 @@ pub struct Tables<'a> {
     pub core: &'a types::CoreTypes,
     /// Built-in and module-level data (a routine's own data is the compiler's business).
     pub datas: &'a [symbols::DataInfo],
+    /// Global data declared once the routine being checked ends, numbered after
+    /// `datas`: the signals `--virtual-io` took from it so far
+    /// ([`Options::virtual_signals`]). Empty in a finished program's tables.
+    pub pending: &'a [symbols::DataInfo],
     pub routines: &'a [symbols::RoutineInfo],
     pub scopes: &'a symbols::Scopes,
+}
+
+impl<'a> Tables<'a> {
+    /// Global data number `idx`: built-in or module-level data, or a pending one.
+    pub fn data(&self, idx: u32) -> Option<&'a symbols::DataInfo> {
+        let idx = idx as usize;
+        match self.datas.get(idx) {
+            Some(data) => Some(data),
+            None => self.pending.get(idx - self.datas.len()),
+        }
+    }
 }
 
 /// Receives each routine body while the checker works through it, one top-level item
@@ -275,11 +291,11 @@ fn check_semantics<'a>(
     ck.declare_modules(modules);
     check_module_items(&mut ck, modules);
     // Bodies go to the sink while nothing so far is an error. A virtual signal is
-    // declared only once the pass is over, so then nothing is handed over.
+    // declared when the routine that first names it ends; until then its uses denote
+    // it by the number it will have (`Tables::pending`).
     let mut seen = 0;
-    let mut clean = !options.virtual_signals
-        && !diags.iter().any(|d| d.severity() == Severity::Error)
-        && pass.syntax_errors.iter().all(Vec::is_empty);
+    let mut clean =
+        !diags.iter().any(|d| d.severity() == Severity::Error) && pass.syntax_errors.iter().all(Vec::is_empty);
     for (idx, m) in modules.iter().enumerate() {
         ck.enter(m.file, idx);
         for (item, routine) in routines(m) {

@@ -229,7 +229,7 @@ impl RoutineCompiler<'_> {
             }
         };
         match self.name(id, sym) {
-            Some(Resolved::Global(idx)) => match self.prog.datas.get(idx as usize) {
+            Some(Resolved::Global(idx)) => match self.prog.data(idx) {
                 Some(data) => ArgOrigin::Data(data.display.as_str().into()),
                 None => ArgOrigin::None,
             },

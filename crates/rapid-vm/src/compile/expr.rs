@@ -336,7 +336,7 @@ impl RoutineCompiler<'_> {
             ExprKind::Name(sym) => match self.name(id, sym)? {
                 Resolved::Local(local) => Some((local.ty, expected_dims(local.rank, local.dims))),
                 Resolved::Global(idx) => {
-                    let data = &self.prog.datas[idx as usize];
+                    let data = self.prog.data(idx)?;
                     Some((data.ty, expected_dims(data.rank, data.dims)))
                 }
                 _ => None,

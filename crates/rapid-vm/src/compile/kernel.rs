@@ -77,7 +77,7 @@ impl RoutineCompiler<'_> {
                         .then_some(KernelTarget::Local(local.slot))
                 }
                 Resolved::Global(idx) => {
-                    let data = &self.prog.datas[idx as usize];
+                    let data = self.prog.data(idx)?;
                     (data.kind == DataKind::Var && data.rank == 0 && self.is_num(data.ty))
                         .then_some(KernelTarget::Global(idx))
                 }
@@ -139,7 +139,7 @@ impl RoutineCompiler<'_> {
         match self.name(id, sym)? {
             Resolved::Local(local) if self.is_num(local.ty) && local.rank == 0 => Some(KernelOp::Local(local.slot)),
             Resolved::Global(idx) => {
-                let data = &self.prog.datas[idx as usize];
+                let data = self.prog.data(idx)?;
                 (data.rank == 0
                     && self.is_num(data.ty)
                     && matches!(data.kind, DataKind::Var | DataKind::Pers | DataKind::Const))
@@ -156,7 +156,7 @@ impl RoutineCompiler<'_> {
         match self.name(base, sym)? {
             Resolved::Local(local) => (self.is_num(local.ty) && local.rank == 1).then_some((false, local.slot)),
             Resolved::Global(idx) => {
-                let data = &self.prog.datas[idx as usize];
+                let data = self.prog.data(idx)?;
                 let kind_ok = if write { data.kind == DataKind::Var } else { data.kind != DataKind::LoopVar };
                 (kind_ok && data.rank == 1 && self.is_num(data.ty)).then_some((true, idx))
             }

@@ -522,7 +522,7 @@ impl<'p> RoutineCompiler<'p> {
         let value = match expr.kind {
             rapid_syntax::ast::ExprKind::Num => rapid_syntax::literal::num_value(expr.span.text(self.text)),
             rapid_syntax::ast::ExprKind::Name(sym) => match self.name(dim, sym) {
-                Some(Resolved::Global(idx)) => self.prog.datas[idx as usize].const_value,
+                Some(Resolved::Global(idx)) => self.prog.data(idx).and_then(|d| d.const_value),
                 _ => None,
             },
             _ => None,
@@ -541,7 +541,7 @@ impl<'p> RoutineCompiler<'p> {
             }
             rapid_syntax::ast::ExprKind::Name(sym) => match self.name(id, sym) {
                 Some(Resolved::Global(idx)) => {
-                    let data = &self.prog.datas[idx as usize];
+                    let data = self.prog.data(idx)?;
                     if data.kind == DataKind::Const {
                         data.const_value.map(|v| v as i32).or(Some(-(idx as i32) - 1))
                     } else {
