@@ -29,7 +29,7 @@ pub mod types;
 
 use std::sync::OnceLock;
 
-use rapid_syntax::ast::{Arena, BodyItem, Item, Routine};
+use rapid_syntax::ast::{Arena, BodyItem, DataDecl, Item, Routine};
 use rapid_syntax::{cap_errors, for_each_body_item, parse_body, parse_outline, Interner, Parse, Span, SyntaxError};
 
 pub use codes::{Code, Severity};
@@ -157,6 +157,10 @@ impl<'a> Tables<'a> {
 /// held whole. Only bodies checked without error reach it: after the first error
 /// (in this body or anywhere before it) no more are handed over.
 pub trait BodySink {
+    /// A module-level data declaration, checked without error, with what the checker
+    /// resolved in it (its initial value). Every one comes before any routine body,
+    /// in declaration order (the order of their global numbers).
+    fn data(&mut self, _tables: Tables<'_>, _data: DataItem<'_>, _facts: &ItemFacts) {}
     /// The body of the routine declared by item `item` of module `module` (the
     /// indices of [`symbols::DeclOrigin::Module`]), in file `file`, starts.
     fn begin(&mut self, tables: Tables<'_>, file: usize, module: usize, item: usize, routine: &Routine);
@@ -166,6 +170,19 @@ pub trait BodySink {
     /// The body ends; `clean` is false when an error was found in it (what the sink
     /// made of it is then to be dropped).
     fn end(&mut self, tables: Tables<'_>, clean: bool);
+}
+
+/// A module-level data declaration handed to a [`BodySink`].
+#[derive(Debug, Clone, Copy)]
+pub struct DataItem<'a> {
+    /// The file and module (index of [`symbols::DeclOrigin::Module`]) declaring it.
+    pub file: usize,
+    pub module: usize,
+    /// Its global data number (an index into [`Tables::datas`]).
+    pub data: u32,
+    pub decl: &'a DataDecl,
+    /// The module's arena, which holds its initial value.
+    pub arena: &'a Arena,
 }
 
 /// Checks a task like [`check`] and keeps the resolved declarations.
@@ -289,13 +306,13 @@ fn check_semantics<'a>(
     ck.declare_predefined(&options.predefined, interner);
     ck.virtual_signals = options.virtual_signals;
     ck.declare_modules(modules);
-    check_module_items(&mut ck, modules);
-    // Bodies go to the sink while nothing so far is an error. A virtual signal is
+    // Items go to the sink while nothing so far is an error. A virtual signal is
     // declared when the routine that first names it ends; until then its uses denote
     // it by the number it will have (`Tables::pending`).
     let mut seen = 0;
     let mut clean =
         !diags.iter().any(|d| d.severity() == Severity::Error) && pass.syntax_errors.iter().all(Vec::is_empty);
+    check_module_items(&mut ck, modules, pass.sink.as_deref_mut(), &mut clean, &mut seen);
     for (idx, m) in modules.iter().enumerate() {
         ck.enter(m.file, idx);
         for (item, routine) in routines(m) {
@@ -331,8 +348,15 @@ fn check_semantics<'a>(
     ck
 }
 
-/// Module-level declarations: data initialisers and routine headers.
-fn check_module_items(ck: &mut Checker<'_>, modules: &[ModuleRef<'_>]) {
+/// Module-level declarations: data initialisers and routine headers. Each data
+/// declaration checked while nothing so far is an error goes to `sink` with its facts.
+fn check_module_items(
+    ck: &mut Checker<'_>,
+    modules: &[ModuleRef<'_>],
+    mut sink: Option<&mut (dyn BodySink + '_)>,
+    clean: &mut bool,
+    seen: &mut usize,
+) {
     for (idx, m) in modules.iter().enumerate() {
         ck.enter(m.file, idx);
         for item in &m.module.items {
@@ -341,11 +365,28 @@ fn check_module_items(ck: &mut Checker<'_>, modules: &[ModuleRef<'_>]) {
                     let Some(symbols::Def::Data(data)) = ck.scopes.lookup_module_level(idx, decl.name.sym) else {
                         continue;
                     };
-                    ck.check_data_decl(decl, &m.module.arena, data, false);
+                    let arena = &m.module.arena;
+                    *clean = *clean && !ck.errors_since(seen);
+                    let streamed = sink.is_some() && *clean;
+                    if streamed {
+                        ck.facts.recording = true;
+                        ck.facts.start(arena.exprs.len(), arena.args.len());
+                    }
+                    ck.check_data_decl(decl, arena, data, false);
+                    ck.facts.recording = false;
+                    *clean = *clean && !ck.errors_since(seen);
+                    if let Some(sink) = sink.as_deref_mut().filter(|_| streamed && *clean) {
+                        let item = DataItem { file: m.file, module: idx, data, decl, arena };
+                        sink.data(ck.tables(), item, &ck.facts);
+                    }
                 }
                 Item::Routine(routine) => ck.check_routine_header(routine),
                 _ => {}
             }
         }
+    }
+    // Sized for a module's arena, the largest: not kept for the bodies' items.
+    if sink.is_some() {
+        ck.facts = Default::default();
     }
 }

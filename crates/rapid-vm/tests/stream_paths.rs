@@ -45,3 +45,32 @@ fn virtual_signals_are_streamed_by_the_numbers_they_will_have() {
     let text = format!("{:?}", second.instrs);
     assert!(text.contains(&format!("Global({})", do_a + 1)), "{text}");
 }
+
+/// Module data whose initial values name constants of the module.
+const DATA: &str = "MODULE t
+CONST num base := 2;
+CONST num twice := base * 2;
+VAR pos p := [base, twice, 0.5];
+PROC main()
+  TPWrite \"twice \" \\Num:=twice;
+  TPWrite \"y \" \\Num:=p.y;
+ENDPROC
+ENDMODULE
+";
+
+#[test]
+fn module_data_initial_values_are_compiled_in_the_stream() {
+    let files = [SourceInput::from_text("t.mod", DATA)];
+    let builtins = rapid_vm::builtins::Builtins::core();
+    let mut sink = compile::StreamCompiler::new(&builtins, &files);
+    let analysis = rapid_sema::analyze_with(&files, &Options::default(), Some(&mut sink as _));
+    assert!(!rapid_sema::Program::has_errors(&analysis.diagnostics), "{:?}", analysis.diagnostics);
+    let streamed = sink.finish();
+    assert!(streamed.has_init());
+    // Worked by hand: twice = 2 * 2 = 4; p.y = twice = 4.
+    let loaded = rapid_vm::load(&files, "main").unwrap_or_else(|e| panic!("load failed: {e:?}"));
+    let mut vm = loaded.vm;
+    let mut host = rapid_vm::RecordingHost::default();
+    assert_eq!(vm.run(&mut host, u64::MAX), rapid_vm::Exit::Done);
+    assert_eq!(host.lines, ["twice 4", "y 4"]);
+}

@@ -104,7 +104,13 @@ pub fn compile(
     }
     let global_defaults: Vec<Value> =
         prog.datas.iter().map(|d| default_value(prog, d.ty, &d.dims[..d.rank as usize])).collect();
-    let init = compile_init(prog, modules, builtins, builtin_module, builtin_text, &mut errors, None);
+    let init = match streamed.take_init() {
+        Some((state, mut init_errors)) => {
+            errors.append(&mut init_errors);
+            finish_init(prog.tables(), builtins, state)
+        }
+        None => compile_init(prog, modules, builtins, builtin_module, builtin_text, &mut errors, None),
+    };
     let mut routines: Vec<Option<Code>> = vec![None; prog.routines.len()];
     for (idx, info) in prog.routines.iter().enumerate() {
         let DeclOrigin::Module { module, item } = info.origin else { continue };
@@ -219,19 +225,41 @@ fn compile_init(
         let Some(init_expr) = decl.init else { continue };
         init.module = module;
         init.file = file;
-        init.st.code.file = file;
         init.text = text;
-        let expect = Some((data.ty, data.dims));
-        match init.expr(arena, init_expr, expect) {
-            Ok(()) => {
-                init.st.code.emit(Instr::StoreGlobal(idx as u32));
-            }
-            Err(e) => errors.push(e),
-        }
+        init.data_init(idx as u32, init_expr, arena, errors);
     }
     init.st.code.emit(Instr::Return);
     init.finish_locals();
     init.st.code
+}
+
+/// The start of the code run at load: the initial values of predefined (catalogue)
+/// data, in order. They are literals (the catalogue's declarations), so nothing in
+/// them is resolved.
+pub(crate) fn catalogue_init(
+    prog: Tables<'_>,
+    builtins: &crate::builtins::Builtins,
+    errors: &mut Vec<CompileError>,
+) -> RoutineState {
+    let (_, catalogue) = rapid_sema::catalogue();
+    let mut init = RoutineCompiler::new(prog, builtins, usize::MAX, usize::MAX, &catalogue.text);
+    init.st.code.name = "<load>".into();
+    for (idx, data) in prog.datas.iter().enumerate() {
+        let DeclOrigin::Builtin(item) = data.origin else { continue };
+        let Some(Item::Data(decl)) = catalogue.module.items.get(item) else { continue };
+        let Some(value) = decl.init else { continue };
+        init.data_init(idx as u32, value, &catalogue.module.arena, errors);
+    }
+    init.st
+}
+
+/// The code run at load, its initial values compiled in `init`.
+fn finish_init(prog: Tables<'_>, builtins: &crate::builtins::Builtins, init: RoutineState) -> Code {
+    let mut rc =
+        RoutineCompiler { prog, builtins, module: usize::MAX, file: usize::MAX, text: "", facts: None, st: init };
+    rc.st.code.emit(Instr::Return);
+    rc.finish_locals();
+    rc.st.code
 }
 
 /// Arrays may hold at most this many elements (the one table of limits; the checker
@@ -515,6 +543,25 @@ impl<'p> RoutineCompiler<'p> {
             self.st.code.emit(Instr::StoreLocal(local.slot));
         }
         Ok(())
+    }
+
+    /// Code storing the initial value `value` (in `arena`) of global data `data`
+    /// into it, in the load code being compiled.
+    pub(crate) fn data_init(
+        &mut self,
+        data: u32,
+        value: rapid_syntax::ast::ExprId,
+        arena: &Arena,
+        errors: &mut Vec<CompileError>,
+    ) {
+        self.st.code.file = self.file;
+        let Some(info) = self.prog.data(data) else { return };
+        match self.expr(arena, value, Some((info.ty, info.dims))) {
+            Ok(()) => {
+                self.st.code.emit(Instr::StoreGlobal(data));
+            }
+            Err(e) => errors.push(e),
+        }
     }
 
     fn const_dim(&self, arena: &Arena, dim: rapid_syntax::ast::ExprId) -> Result<u32, CompileError> {

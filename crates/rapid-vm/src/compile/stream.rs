@@ -1,12 +1,13 @@
 //! Routines compiled while the checker works through their bodies: the compiler is the
 //! checker's `rapid_sema::BodySink`, so each body is parsed once (by the checker) and
-//! compiled item by item as each item is checked, never held whole.
+//! compiled item by item as each item is checked, never held whole. The module data's
+//! initial values come the same way, before the bodies, into the load code.
 //!
 //! The checker lends its tables for one call at a time, so the routine being compiled
 //! is kept between items as its own state, without the tables
 //! ([`RoutineState`]).
 
-use rapid_sema::{BodySink, ItemFacts, SourceInput, Tables};
+use rapid_sema::{BodySink, DataItem, ItemFacts, SourceInput, Tables};
 use rapid_syntax::ast::{Arena, BodyItem, Routine};
 use rustc_hash::FxHashMap;
 
@@ -18,6 +19,9 @@ use crate::ir::Code;
 #[derive(Default)]
 pub struct Streamed {
     routines: FxHashMap<usize, Result<Code, Vec<CompileError>>>,
+    /// The load code as far as the module data's initial values streamed, with the
+    /// errors met compiling them.
+    init: Option<(RoutineState, Vec<CompileError>)>,
 }
 
 impl Streamed {
@@ -30,9 +34,19 @@ impl Streamed {
         self.routines.is_empty()
     }
 
+    /// Whether the module data's initial values were compiled in the stream.
+    pub fn has_init(&self) -> bool {
+        self.init.is_some()
+    }
+
     /// What routine `idx` came to, when it was compiled in the stream.
     pub(crate) fn take(&mut self, idx: usize) -> Option<Result<Code, Vec<CompileError>>> {
         self.routines.remove(&idx)
+    }
+
+    /// The load code compiled in the stream, when a module data's initial value was.
+    pub(crate) fn take_init(&mut self) -> Option<(RoutineState, Vec<CompileError>)> {
+        self.init.take()
     }
 }
 
@@ -85,6 +99,23 @@ impl<'a> StreamCompiler<'a> {
 }
 
 impl BodySink for StreamCompiler<'_> {
+    fn data(&mut self, tables: Tables<'_>, data: DataItem<'_>, facts: &ItemFacts) {
+        let Some(value) = data.decl.init else { return };
+        let Some(source) = self.files.get(data.file) else { return };
+        let (st, mut errors) = match self.done.init.take() {
+            Some(init) => init,
+            None => {
+                let mut errors = Vec::new();
+                (super::catalogue_init(tables, self.builtins, &mut errors), errors)
+            }
+        };
+        let (module, file, text) = (data.module, data.file, source.text.as_str());
+        let mut rc =
+            RoutineCompiler { prog: tables, builtins: self.builtins, module, file, text, facts: Some(facts), st };
+        rc.data_init(data.data, value, data.arena, &mut errors);
+        self.done.init = Some((rc.st, errors));
+    }
+
     fn begin(&mut self, tables: Tables<'_>, file: usize, module: usize, item: usize, routine: &Routine) {
         let by_origin = self.by_origin.get_or_insert_with(|| {
             let origins = tables.routines.iter().enumerate().filter_map(|(idx, info)| match info.origin {
