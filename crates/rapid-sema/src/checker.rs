@@ -150,11 +150,12 @@ impl<'a> Checker<'a> {
         res
     }
 
-    /// Whether an error was reported since `seen` diagnostics (moved to the end).
-    pub(crate) fn errors_since(&self, seen: &mut usize) -> bool {
+    /// Whether an error other than `tolerated` ones was reported since `seen`
+    /// diagnostics (moved to the end).
+    pub(crate) fn errors_since(&self, seen: &mut usize, tolerated: &[Code]) -> bool {
         let from = (*seen).min(self.diags.len());
         *seen = self.diags.len();
-        self.diags[from..].iter().any(|d| d.severity() == Severity::Error)
+        self.diags[from..].iter().any(|d| d.severity() == Severity::Error && !tolerated.contains(&d.code))
     }
 
     /// The declarations as a compiler reads them (module-level data only: the data

@@ -161,6 +161,11 @@ pub trait BodySink {
     /// resolved in it (its initial value). Every one comes before any routine body,
     /// in declaration order (the order of their global numbers).
     fn data(&mut self, _tables: Tables<'_>, _data: DataItem<'_>, _facts: &ItemFacts) {}
+    /// Errors that do not stop the stream: what the sink can take with them (a name
+    /// that resolves to nothing is `Denotes::Nothing` in the facts). None by default.
+    fn tolerated(&self) -> &'static [Code] {
+        &[]
+    }
     /// The body of the routine declared by item `item` of module `module` (the
     /// indices of [`symbols::DeclOrigin::Module`]), in file `file`, starts.
     fn begin(&mut self, tables: Tables<'_>, file: usize, module: usize, item: usize, routine: &Routine);
@@ -309,15 +314,17 @@ fn check_semantics<'a>(
     // Items go to the sink while nothing so far is an error. A virtual signal is
     // declared when the routine that first names it ends; until then its uses denote
     // it by the number it will have (`Tables::pending`).
-    let mut seen = 0;
+    let mut looked = 0;
+    let tolerated = pass.sink.as_deref().map_or(&[][..], |sink| sink.tolerated());
     let mut clean =
         !diags.iter().any(|d| d.severity() == Severity::Error) && pass.syntax_errors.iter().all(Vec::is_empty);
+    let mut seen = Seen { count: &mut looked, tolerated };
     check_module_items(&mut ck, modules, pass.sink.as_deref_mut(), &mut clean, &mut seen);
     for (idx, m) in modules.iter().enumerate() {
         ck.enter(m.file, idx);
         for (item, routine) in routines(m) {
             ck.begin_routine(routine);
-            clean = clean && !ck.errors_since(&mut seen);
+            clean = clean && !seen.errors_in(&ck);
             let mut sink = pass.sink.as_deref_mut().filter(|_| clean);
             if let Some(sink) = sink.as_deref_mut() {
                 sink.begin(ck.tables(), m.file, idx, item, routine);
@@ -328,7 +335,7 @@ fn check_semantics<'a>(
                 // What the item resolves is recorded only for a sink that takes it.
                 ck.facts.recording = streamed && clean;
                 ck.body_item(item, arena);
-                clean = clean && !ck.errors_since(&mut seen);
+                clean = clean && !seen.errors_in(&ck);
                 if let Some(sink) = sink.as_deref_mut().filter(|_| clean) {
                     sink.item(ck.tables(), item, arena, &ck.facts);
                 }
@@ -337,7 +344,7 @@ fn check_semantics<'a>(
             clean = clean && errors.is_empty();
             pass.syntax_errors[m.file].extend(errors);
             ck.end_routine();
-            clean = clean && !ck.errors_since(&mut seen);
+            clean = clean && !seen.errors_in(&ck);
             if let Some(sink) = sink {
                 sink.end(ck.tables(), clean);
             }
@@ -348,6 +355,35 @@ fn check_semantics<'a>(
     ck
 }
 
+/// The number of the data item `item` of module `module` declares, searched from
+/// `from` on (moved past it): module data is numbered in declaration order.
+fn own_data(datas: &[symbols::DataInfo], from: &mut usize, module: usize, item: usize) -> Option<u32> {
+    for (idx, data) in datas.iter().enumerate().skip(*from) {
+        let symbols::DeclOrigin::Module { module: m, item: i } = data.origin else { continue };
+        if (m, i) == (module, item) {
+            *from = idx + 1;
+            return Some(idx as u32);
+        }
+        if (m, i) > (module, item) {
+            return None;
+        }
+    }
+    None
+}
+
+/// The diagnostics the stream has looked at, and the errors it goes on past.
+struct Seen<'a> {
+    count: &'a mut usize,
+    tolerated: &'static [Code],
+}
+
+impl Seen<'_> {
+    /// Whether `ck` reported an error since the last look, one not tolerated.
+    fn errors_in(&mut self, ck: &Checker<'_>) -> bool {
+        ck.errors_since(self.count, self.tolerated)
+    }
+}
+
 /// Module-level declarations: data initialisers and routine headers. Each data
 /// declaration checked while nothing so far is an error goes to `sink` with its facts.
 fn check_module_items(
@@ -355,18 +391,23 @@ fn check_module_items(
     modules: &[ModuleRef<'_>],
     mut sink: Option<&mut (dyn BodySink + '_)>,
     clean: &mut bool,
-    seen: &mut usize,
+    seen: &mut Seen<'_>,
 ) {
+    // The data declared by each item, found going forward: declared in this order.
+    let mut own = 0;
     for (idx, m) in modules.iter().enumerate() {
         ck.enter(m.file, idx);
-        for item in &m.module.items {
+        for (item_idx, item) in m.module.items.iter().enumerate() {
             match item {
                 Item::Data(decl) => {
                     let Some(symbols::Def::Data(data)) = ck.scopes.lookup_module_level(idx, decl.name.sym) else {
                         continue;
                     };
+                    // A global PERS declared before in the task is what its name
+                    // finds; the sink compiles the declaration's own data.
+                    let declared = own_data(&ck.datas, &mut own, idx, item_idx);
                     let arena = &m.module.arena;
-                    *clean = *clean && !ck.errors_since(seen);
+                    *clean = *clean && !seen.errors_in(ck);
                     let streamed = sink.is_some() && *clean;
                     if streamed {
                         ck.facts.recording = true;
@@ -374,8 +415,8 @@ fn check_module_items(
                     }
                     ck.check_data_decl(decl, arena, data, false);
                     ck.facts.recording = false;
-                    *clean = *clean && !ck.errors_since(seen);
-                    if let Some(sink) = sink.as_deref_mut().filter(|_| streamed && *clean) {
+                    *clean = *clean && !seen.errors_in(ck);
+                    if let (Some(sink), Some(data)) = (sink.as_deref_mut().filter(|_| streamed && *clean), declared) {
                         let item = DataItem { file: m.file, module: idx, data, decl, arena };
                         sink.data(ck.tables(), item, &ck.facts);
                     }

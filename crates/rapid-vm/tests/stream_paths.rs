@@ -74,3 +74,18 @@ fn module_data_initial_values_are_compiled_in_the_stream() {
     assert_eq!(vm.run(&mut host, u64::MAX), rapid_vm::Exit::Done);
     assert_eq!(host.lines, ["twice 4", "y 4"]);
 }
+
+/// A global PERS declared in two modules of a task is one persistent, held by the
+/// first declaration (`exec/modules.rs`, `pers_slot`): the second declaration's
+/// initial value goes to its own slot, never to the first's.
+#[test]
+fn a_pers_declared_twice_keeps_the_first_declarations_value() {
+    let a = "MODULE a\nPERS num shared := 5;\nPROC main()\n  TPWrite \"shared \" \\Num:=shared;\nENDPROC\nENDMODULE\n";
+    let b = "MODULE b\nPERS num shared := 9;\nENDMODULE\n";
+    let files = [SourceInput::from_text("a.mod", a), SourceInput::from_text("b.mod", b)];
+    let loaded = rapid_vm::load(&files, "main").unwrap_or_else(|e| panic!("load failed: {e:?}"));
+    let mut vm = loaded.vm;
+    let mut host = rapid_vm::RecordingHost::default();
+    assert_eq!(vm.run(&mut host, u64::MAX), rapid_vm::Exit::Done);
+    assert_eq!(host.lines, ["shared 5"]);
+}

@@ -150,15 +150,15 @@ pub struct CompiledModule {
 }
 
 /// Compiles module `module` (an index into `modules`) of a program that is already
-/// running: only its routines and its data's initial values (Load, WaitLoad).
+/// running: only its routines and its data's initial values (Load, WaitLoad), as
+/// the checker's stream compiled them ([`StreamCompiler::for_modules`]).
 pub fn compile_module(
     prog: &Program,
     modules: &[ModuleSource<'_>],
     module: usize,
     builtins: &crate::builtins::Builtins,
+    streamed: &mut Streamed,
 ) -> Result<CompiledModule, Vec<CompileError>> {
-    let (_, catalogue) = rapid_sema::catalogue();
-    let (builtin_module, builtin_text) = (&catalogue.module, catalogue.text.as_str());
     let mut errors = Vec::new();
     let mine = |origin: DeclOrigin| matches!(origin, DeclOrigin::Module { module: m, .. } if m == module);
     let mut defaults = Vec::new();
@@ -175,16 +175,25 @@ pub fn compile_module(
     if !errors.is_empty() {
         return Err(errors);
     }
-    let init = compile_init(prog, modules, builtins, builtin_module, builtin_text, &mut errors, Some(module));
+    let init = match streamed.take_module_init(module) {
+        Some((state, mut init_errors)) => {
+            errors.append(&mut init_errors);
+            finish_init(prog.tables(), builtins, state)
+        }
+        None => finish_init(prog.tables(), builtins, load_state()),
+    };
     let mut routines = Vec::new();
     for (idx, info) in prog.routines.iter().enumerate().filter(|(_, r)| mine(r.origin)) {
-        let DeclOrigin::Module { module, item } = info.origin else { continue };
-        let Some(source) = modules.get(module) else { continue };
-        let Some(Item::Routine(routine)) = source.module.items.get(item) else { continue };
-        let mut rc = RoutineCompiler::new(prog.tables(), builtins, module, source.file, source.text);
-        match rc.routine(routine) {
-            Ok(code) => routines.push((idx as u32, code)),
-            Err(mut errs) => errors.append(&mut errs),
+        match streamed.take(idx) {
+            Some(Ok(code)) => routines.push((idx as u32, code)),
+            Some(Err(mut errs)) => errors.append(&mut errs),
+            // The checker stopped handing over bodies before this one (an error
+            // elsewhere in the task that the stream does not go past).
+            None => errors.push(CompileError {
+                file: modules.get(module).map_or(usize::MAX, |m| m.file),
+                span: Span::default(),
+                message: format!("`{}` was not compiled: the task does not check", info.display),
+            }),
         }
     }
     if errors.is_empty() {
@@ -233,6 +242,13 @@ fn compile_init(
     init.st.code
 }
 
+/// The load code before anything is compiled into it.
+pub(crate) fn load_state() -> RoutineState {
+    let mut st = RoutineState::new(usize::MAX);
+    st.code.name = "<load>".into();
+    st
+}
+
 /// The start of the code run at load: the initial values of predefined (catalogue)
 /// data, in order. They are literals (the catalogue's declarations), so nothing in
 /// them is resolved.
@@ -243,7 +259,7 @@ pub(crate) fn catalogue_init(
 ) -> RoutineState {
     let (_, catalogue) = rapid_sema::catalogue();
     let mut init = RoutineCompiler::new(prog, builtins, usize::MAX, usize::MAX, &catalogue.text);
-    init.st.code.name = "<load>".into();
+    init.st = load_state();
     for (idx, data) in prog.datas.iter().enumerate() {
         let DeclOrigin::Builtin(item) = data.origin else { continue };
         let Some(Item::Data(decl)) = catalogue.module.items.get(item) else { continue };

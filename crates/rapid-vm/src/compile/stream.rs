@@ -22,6 +22,8 @@ pub struct Streamed {
     /// The load code as far as the module data's initial values streamed, with the
     /// errors met compiling them.
     init: Option<(RoutineState, Vec<CompileError>)>,
+    /// For modules linked at run time: each wanted module's load code of its own.
+    module_inits: FxHashMap<usize, (RoutineState, Vec<CompileError>)>,
 }
 
 impl Streamed {
@@ -48,6 +50,12 @@ impl Streamed {
     pub(crate) fn take_init(&mut self) -> Option<(RoutineState, Vec<CompileError>)> {
         self.init.take()
     }
+
+    /// The load code of module `module` compiled in the stream (modules linked at run
+    /// time), when one of its data has an initial value.
+    pub(crate) fn take_module_init(&mut self, module: usize) -> Option<(RoutineState, Vec<CompileError>)> {
+        self.module_inits.remove(&module)
+    }
 }
 
 /// Compiles the routines the checker hands over (see the module doc).
@@ -58,6 +66,9 @@ pub struct StreamCompiler<'a> {
     by_origin: Option<FxHashMap<(usize, usize), usize>>,
     current: Option<Current>,
     done: Streamed,
+    /// The modules whose code is wanted, each with load code of its own (modules
+    /// linked at run time, `for_modules`); `None`: the whole task, with one load code.
+    only: Option<&'a [usize]>,
 }
 
 /// The routine being compiled.
@@ -72,7 +83,18 @@ struct Current {
 
 impl<'a> StreamCompiler<'a> {
     pub fn new(builtins: &'a Builtins, files: &'a [SourceInput]) -> StreamCompiler<'a> {
-        StreamCompiler { builtins, files, by_origin: None, current: None, done: Streamed::default() }
+        StreamCompiler { builtins, files, by_origin: None, current: None, done: Streamed::default(), only: None }
+    }
+
+    /// Compiles modules `modules` (indices into the task's modules) of a task that is
+    /// already running, each with its own load code (Load, WaitLoad).
+    pub fn for_modules(builtins: &'a Builtins, files: &'a [SourceInput], modules: &'a [usize]) -> StreamCompiler<'a> {
+        StreamCompiler { only: Some(modules), ..StreamCompiler::new(builtins, files) }
+    }
+
+    /// Whether module `module`'s code is wanted.
+    fn wants(&self, module: usize) -> bool {
+        self.only.is_none_or(|only| only.contains(&module))
     }
 
     /// The routines compiled so far.
@@ -102,18 +124,40 @@ impl BodySink for StreamCompiler<'_> {
     fn data(&mut self, tables: Tables<'_>, data: DataItem<'_>, facts: &ItemFacts) {
         let Some(value) = data.decl.init else { return };
         let Some(source) = self.files.get(data.file) else { return };
-        let (st, mut errors) = match self.done.init.take() {
-            Some(init) => init,
-            None => {
-                let mut errors = Vec::new();
-                (super::catalogue_init(tables, self.builtins, &mut errors), errors)
-            }
+        if !self.wants(data.module) {
+            return;
+        }
+        let init = match self.only {
+            None => self.done.init.take(),
+            Some(_) => self.done.module_inits.remove(&data.module),
         };
+        let (st, mut errors) = init.unwrap_or_else(|| {
+            let mut errors = Vec::new();
+            let st = match self.only {
+                // The task's load code starts with the catalogue's data.
+                None => super::catalogue_init(tables, self.builtins, &mut errors),
+                Some(_) => super::load_state(),
+            };
+            (st, errors)
+        });
         let (module, file, text) = (data.module, data.file, source.text.as_str());
         let mut rc =
             RoutineCompiler { prog: tables, builtins: self.builtins, module, file, text, facts: Some(facts), st };
         rc.data_init(data.data, value, data.arena, &mut errors);
-        self.done.init = Some((rc.st, errors));
+        match self.only {
+            None => self.done.init = Some((rc.st, errors)),
+            Some(_) => _ = self.done.module_inits.insert(data.module, (rc.st, errors)),
+        }
+    }
+
+    /// A module linked at run time goes on past data and types that resolve to
+    /// nothing, as `compile_module` did without the stream: a routine naming them does
+    /// not compile, which refuses the module (`exec/modules.rs`).
+    fn tolerated(&self) -> &'static [rapid_sema::Code] {
+        match self.only {
+            Some(_) => &[rapid_sema::Code::UndefinedData, rapid_sema::Code::UndefinedType],
+            None => &[],
+        }
     }
 
     fn begin(&mut self, tables: Tables<'_>, file: usize, module: usize, item: usize, routine: &Routine) {
@@ -125,6 +169,9 @@ impl BodySink for StreamCompiler<'_> {
             origins.collect()
         });
         self.current = None;
+        if !self.only.is_none_or(|only| only.contains(&module)) {
+            return;
+        }
         let Some(&idx) = by_origin.get(&(module, item)) else { return };
         let Some(source) = self.files.get(file) else { return };
         let mut rc = RoutineCompiler::new(tables, self.builtins, module, file, &source.text);
