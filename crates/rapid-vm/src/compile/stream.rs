@@ -1,7 +1,9 @@
 //! Routines compiled while the checker works through their bodies: the compiler is the
 //! checker's `rapid_sema::BodySink`, so each body is parsed once (by the checker) and
 //! compiled item by item as each item is checked, never held whole. The module data's
-//! initial values come the same way, before the bodies, into the load code.
+//! initial values come the same way, before the bodies, into the load code. Modules
+//! linked at run time are compiled so too (`StreamCompiler::for_modules`): only the
+//! modules asked for, each with load code of its own.
 //!
 //! The checker lends its tables for one call at a time, so the routine being compiled
 //! is kept between items as its own state, without the tables
@@ -74,7 +76,6 @@ pub struct StreamCompiler<'a> {
 /// The routine being compiled.
 struct Current {
     idx: usize,
-    module: usize,
     file: usize,
     /// Taken out while an item is compiled.
     state: Option<RoutineState>,
@@ -112,8 +113,8 @@ impl<'a> StreamCompiler<'a> {
         let current = self.current.as_mut()?;
         let text = &self.files.get(current.file)?.text;
         let st = current.state.take()?;
-        let (module, file) = (current.module, current.file);
-        let mut rc = RoutineCompiler { prog: tables, builtins: self.builtins, module, file, text, facts, st };
+        let file = current.file;
+        let mut rc = RoutineCompiler { prog: tables, builtins: self.builtins, file, text, facts, st };
         let res = f(&mut rc, &mut current.errors);
         current.state = Some(rc.st);
         Some(res)
@@ -140,9 +141,8 @@ impl BodySink for StreamCompiler<'_> {
             };
             (st, errors)
         });
-        let (module, file, text) = (data.module, data.file, source.text.as_str());
-        let mut rc =
-            RoutineCompiler { prog: tables, builtins: self.builtins, module, file, text, facts: Some(facts), st };
+        let (file, text) = (data.file, source.text.as_str());
+        let mut rc = RoutineCompiler { prog: tables, builtins: self.builtins, file, text, facts: Some(facts), st };
         rc.data_init(data.data, value, data.arena, &mut errors);
         match self.only {
             None => self.done.init = Some((rc.st, errors)),
@@ -161,6 +161,10 @@ impl BodySink for StreamCompiler<'_> {
     }
 
     fn begin(&mut self, tables: Tables<'_>, file: usize, module: usize, item: usize, routine: &Routine) {
+        self.current = None;
+        if !self.wants(module) {
+            return;
+        }
         let by_origin = self.by_origin.get_or_insert_with(|| {
             let origins = tables.routines.iter().enumerate().filter_map(|(idx, info)| match info.origin {
                 rapid_sema::symbols::DeclOrigin::Module { module, item } => Some(((module, item), idx)),
@@ -168,17 +172,14 @@ impl BodySink for StreamCompiler<'_> {
             });
             origins.collect()
         });
-        self.current = None;
-        if !self.only.is_none_or(|only| only.contains(&module)) {
-            return;
-        }
         let Some(&idx) = by_origin.get(&(module, item)) else { return };
         let Some(source) = self.files.get(file) else { return };
-        let mut rc = RoutineCompiler::new(tables, self.builtins, module, file, &source.text);
-        rc.header(routine);
-        rc.declare_params(routine);
+        let mut rc = RoutineCompiler::new(tables, self.builtins, file, &source.text);
+        let info = &tables.routines[idx];
+        rc.header(routine, info.ret);
+        rc.declare_params(routine, &info.params);
         let state = Some(rc.st);
-        self.current = Some(Current { idx, module, file, state, errors: Vec::new() });
+        self.current = Some(Current { idx, file, state, errors: Vec::new() });
     }
 
     fn item(&mut self, tables: Tables<'_>, item: &BodyItem, arena: &Arena, facts: &ItemFacts) {
