@@ -1,6 +1,6 @@
 MODULE alias_arith_base_type_unstreamed
-    ! Run with --virtual-io, which compiles every body without the checker's
-    ! facts (nothing is streamed): the compiler's own typing must agree.
+    ! Run with --virtual-io, which once compiled every body without the checker's
+    ! facts; it is streamed now like any load, and must still agree.
     ! Manual §1.3.5, footnote ii of the arithmetic table: when an operand has an
     ! alias data type, the result has the alias's base type (num, dnum or pos).
     ! So distance * 2 is a num, -d1 too, while d1 itself stays a distance.

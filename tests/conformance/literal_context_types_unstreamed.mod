@@ -1,6 +1,6 @@
 MODULE literal_context_types_unstreamed
-    ! Run with --virtual-io, which compiles every body without the checker's
-    ! facts (nothing is streamed): the compiler's own typing must agree.
+    ! Run with --virtual-io, which once compiled every body without the checker's
+    ! facts; it is streamed now like any load, and must still agree.
     ! A numeric literal takes its type from its context, and so does arithmetic
     ! of literals only: RAPID accepts `VAR dnum d := 4294967295;`, a value no num
     ! holds exactly. In `VAR dnum x := 2 * 0.1;` both literals are dnum and the

@@ -1,6 +1,6 @@
 MODULE literal_mixed_arith_unstreamed
-    ! Run with --virtual-io, which compiles every body without the checker's
-    ! facts (nothing is streamed): the compiler's own typing must agree.
+    ! Run with --virtual-io, which once compiled every body without the checker's
+    ! facts; it is streamed now like any load, and must still agree.
     ! A literal takes the type of the other operand, and num + dnum is a dnum,
     ! as is dnum DIV num (manual §1.3.5, arithmetic table). So in n + d + 0.1 the
     ! 0.1 is a dnum: 2 + 0.1 in double precision prints 2.1000000000 with 10

@@ -15,8 +15,7 @@ use rapid_motion::kinematics::yumi;
 use rapid_motion::{Joints, Kinematics, MotionError, Pose};
 
 use super::robot::RobotState;
-use rapid_vm::builtins::Ctx;
-use rapid_vm::error::RapidError;
+use rapid_vm::ext::{Ctx, RapidError};
 
 /// How fast axis 7 may accelerate at AccSet 100 %, °/s²: its top speed reached in the
 /// planner's axis ramp time (0.15 s, `rapid_motion::plan::AccelLimits::nominal`).

@@ -14,10 +14,7 @@ use rapid_motion::{Kinematics, MotionError, Pose};
 
 use super::units::unit_arg;
 use super::{data, frame};
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{present, Ctx, Err, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -27,7 +24,7 @@ type Res = Result<Option<Value>, RapidError>;
 const MIN_TARGETS: f64 = 4.0;
 const MAX_TARGETS: f64 = 100.0;
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static TCP_CALIB: TcpCalibArgs = "MToolTCPCalib" | "SToolTCPCalib" {
         tool: "Tool", max_err: "MaxErr", mean_err: "MeanErr",
     }

@@ -19,9 +19,7 @@ use rapid_motion::kinematics::Opw;
 use rapid_motion::plan::{PlannedMove, Sample};
 use rapid_motion::MotionError;
 
-use rapid_vm::builtins::Ctx;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::{Opaque, OpaqueState, Value};
+use rapid_vm::ext::{Ctx, Opaque, OpaqueState, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 

@@ -11,10 +11,7 @@ use rapid_motion::plan::{SpeedData, ZoneData};
 use rapid_motion::Joints;
 
 use super::frame;
-use rapid_vm::builtins::Ctx;
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::{Record, Value};
+use rapid_vm::ext::{Ctx, Err, RapidError, Record, Value};
 
 /// External axis values at or above this mark an axis that is not used (9E9).
 pub(super) const UNUSED_AXIS: f64 = 9e9;
@@ -183,7 +180,7 @@ pub(super) fn jointtarget(ctx: &Ctx<'_>, value: &Value) -> Result<Joints, RapidE
 
 /// A record of program type `name`.
 fn make(ctx: &Ctx<'_>, name: &str, fields: Vec<Value>) -> Result<Value, RapidError> {
-    let Some(&ty) = ctx.resources.type_names.by_name.get(name) else {
+    let Some(ty) = rapid_vm::ext::type_named(ctx, name) else {
         return Err(RapidError::fatal(format!("the program has no type {name}")));
     };
     Ok(Value::Record(Rc::new(Record { ty, fields })))

@@ -200,9 +200,9 @@ static MOVE_EXT_J: std::sync::LazyLock<super::moves::Layout> =
 // A fly-by point between two moves of the axes alone blends in the axes' zones; next to a
 // move of the TCP it is a stop point (§2.2.3; `rapid_motion::plan::corner`).
 pub(crate) fn move_ext_j(
-    ctx: &mut rapid_vm::builtins::Ctx<'_>,
-    args: &[rapid_vm::value::Value],
-) -> Result<Option<rapid_vm::value::Value>, rapid_vm::error::RapidError> {
+    ctx: &mut rapid_vm::ext::Ctx<'_>,
+    args: &[rapid_vm::ext::Value],
+) -> Result<Option<rapid_vm::ext::Value>, rapid_vm::ext::RapidError> {
     super::moves::require_motion_task(ctx)?;
     ctx.resources.robot_mut().next_axis7 = None;
     let robot = ctx.resources.robot_mut();

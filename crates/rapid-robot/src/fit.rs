@@ -7,10 +7,7 @@
 use nalgebra::{Isometry3, Matrix3, Translation3, UnitQuaternion, Vector3};
 
 use super::frame;
-use rapid_vm::builtins::Ctx;
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{Ctx, Err, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -54,7 +51,7 @@ fn three_point_frame(p: [Vector3<f64>; 3], origin: u8) -> Option<Isometry3<f64>>
     Some(Isometry3::from_parts(Translation3::from(at), rotation))
 }
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static DEF_FRAME: DefFrameArgs = "DefFrame" { p1: "NewP1", p2: "NewP2", p3: "NewP3", origin: "Origin" }
     static DEF_D_FRAME: DefDFrameArgs = "DefDFrame" {
         old1: "OldP1", old2: "OldP2", old3: "OldP3", new1: "NewP1", new2: "NewP2", new3: "NewP3",

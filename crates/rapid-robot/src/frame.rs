@@ -11,10 +11,7 @@ use std::rc::Rc;
 
 use nalgebra::{Isometry3, Matrix3, Quaternion, Rotation3, Translation3, UnitQuaternion, Vector3};
 
-use rapid_vm::builtins::Ctx;
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::{Record, Value};
+use rapid_vm::ext::{Ctx, Err, RapidError, Record, Value};
 
 /// A value's fields, when it is a record of `n` fields.
 fn fields<'v>(ctx: &Ctx<'_>, value: &'v Value, n: usize, what: &str) -> Result<&'v [Value], RapidError> {

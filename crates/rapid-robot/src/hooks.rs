@@ -1,4 +1,4 @@
-//! The robot as an extension of the language (`rapid_vm::embed`): its families and the
+//! The robot as an extension of the language (`rapid_vm::ext`): its families and the
 //! hooks through which the interpreter's loop asks it about the move under way. The
 //! core loop reaches the robot only through these.
 
@@ -7,10 +7,7 @@ use rapid_sema::symbols::Def;
 
 use super::{syncmove, sysdata};
 use super::{MotionLinks, RobotSide};
-use rapid_vm::builtins::{Ctx, Resources};
-use rapid_vm::embed::{Extension, PendingEvent, TaskHooks};
-use rapid_vm::error::RapidError;
-use rapid_vm::exec::storage::Storage;
+use rapid_vm::ext::{Ctx, Extension, PendingEvent, RapidError, Resources, Storage, TaskHooks};
 
 /// The robot's built-ins and hooks.
 pub static EXTENSION: Extension = Extension {
@@ -27,11 +24,11 @@ struct RobotHooks;
 
 /// The warning of a fly-by point run as a stop point at `now`, to be placed at `at`.
 fn corner_failure(now: f64, at: Option<(usize, rapid_syntax::Span)>) -> PendingEvent {
-    let event = rapid_vm::events::Event {
+    let event = rapid_vm::ext::Event {
         seq: 0,
-        domain: rapid_vm::events::MOTION_DOMAIN,
+        domain: rapid_vm::ext::MOTION_DOMAIN,
         number: CORNER_PATH_FAILURE.0,
-        kind: rapid_vm::events::EventKind::Warning,
+        kind: rapid_vm::ext::EventKind::Warning,
         time: now,
         title: CORNER_PATH_FAILURE.1.to_string(),
         details: Vec::new(),

@@ -12,10 +12,7 @@
 use super::units::{external_index as external_unit, own_only, unit_arg};
 use crate::RobotResources;
 use rapid_motion::{Joints, Kinematics};
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{present, Ctx, Err, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -252,7 +249,7 @@ fn start(ctx: &mut Ctx<'_>, axis: usize, goal: Goal, speed: f64, acc: f64) {
     ctx.resources.robot_mut().publish_tail();
 }
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static IND_A: AbsArgs = "IndAMove" { to_pos: "ToAbsPos", to_num: "ToAbsNum", speed: "Speed", ramp: "Ramp" }
     static IND_C: TurnArgs = "IndCMove" { speed: "Speed", ramp: "Ramp" }
     static IND_D: DeltaArgs = "IndDMove" { delta: "Delta", speed: "Speed", ramp: "Ramp" }

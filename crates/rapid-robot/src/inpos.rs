@@ -12,10 +12,7 @@
 //! on as soon as the robot stands at the point.
 
 use crate::RobotResources;
-use rapid_vm::builtins::Ctx;
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{Ctx, Err, RapidError, Value};
 
 /// The stop a move's `\Inpos` asks for.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -50,7 +50,7 @@ impl Layout {
     /// its declaration (`ToPoint` or `ToJointPos`, `\NoEOffs`/`\UseEOffs` for the
     /// external axes' offsets); built once per instruction, see `signature.rs`.
     pub(super) fn of(name: &str) -> Layout {
-        let sig = rapid_vm::builtins::signature::of(name);
+        let sig = rapid_vm::ext::signature(name);
         let eoffs = match (sig.opt("NoEOffs"), sig.opt("UseEOffs")) {
             (Some(at), _) => EOffsRule::Unless(at),
             (None, Some(at)) => EOffsRule::Only(at),
@@ -98,7 +98,7 @@ layouts! {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rapid_vm::builtins::signature::ABSENT;
+    use rapid_vm::ext::ABSENT;
 
     // Positions counted by hand from the manual's syntax of each instruction (every
     // parameter and every alternative counts one):

@@ -1,5 +1,5 @@
 //! rapid-robot: the robot's side of RAPID, an extension of the interpreter core
-//! (`rapid_vm::embed::Extension`, [`EXTENSION`]). It holds the task's robot state
+//! (`rapid_vm::ext::Extension`, [`EXTENSION`]). It holds the task's robot state
 //! ([`robot::RobotState`]: its model, planned motion and where it is), the motion
 //! settings ([`MotionState`]), the built-ins that move the robot or read where it is
 //! (§1.7 motion settings, §1.8 motion: moves, read-backs, search, triggers, world
@@ -70,8 +70,7 @@ use std::rc::Rc;
 use nalgebra::Isometry3;
 use rapid_sema::types::TypeId;
 
-use rapid_vm::builtins::{native, Ctx, Family};
-use rapid_vm::value::Value;
+use rapid_vm::ext::{native, Ctx, Family, Value};
 
 pub(crate) static FAMILY: Family = Family {
     file: file!(),
@@ -341,7 +340,7 @@ pub struct RobotSide {
     pub motion: MotionState,
 }
 
-impl rapid_vm::embed::TaskState for RobotSide {
+impl rapid_vm::ext::TaskState for RobotSide {
     fn close_all(&mut self) {
         self.motion.reset();
     }
@@ -362,7 +361,7 @@ pub trait RobotResources {
     fn motion_mut(&mut self) -> &mut MotionState;
 }
 
-impl RobotResources for rapid_vm::builtins::Resources {
+impl RobotResources for rapid_vm::ext::Resources {
     fn robot(&self) -> &robot::RobotState {
         &side(self).robot
     }
@@ -380,18 +379,18 @@ impl RobotResources for rapid_vm::builtins::Resources {
     }
 }
 
-fn side(resources: &rapid_vm::builtins::Resources) -> &RobotSide {
+fn side(resources: &rapid_vm::ext::Resources) -> &RobotSide {
     // Invariant, not input: see `RobotResources::robot`.
     resources.extensions.get::<RobotSide>().expect("a task asked about its robot has the robot extension")
 }
 
 /// The robot in `extensions` (a task's `Resources::extensions`), to change beside
 /// the task's other resources (its I/O system).
-pub fn robot_in(extensions: &mut rapid_vm::embed::Extensions) -> &mut robot::RobotState {
+pub fn robot_in(extensions: &mut rapid_vm::ext::Extensions) -> &mut robot::RobotState {
     &mut side_in(extensions).robot
 }
 
-fn side_in(extensions: &mut rapid_vm::embed::Extensions) -> &mut RobotSide {
+fn side_in(extensions: &mut rapid_vm::ext::Extensions) -> &mut RobotSide {
     extensions.get_or_default::<RobotSide>()
 }
 

@@ -6,16 +6,14 @@ use crate::RobotResources;
 use nalgebra::{Matrix3, Translation3, UnitQuaternion, Vector3};
 
 use super::frame;
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{present, Ctx, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
 /// External axis values at or above this mark an axis that is not used (9E9).
 const UNUSED_AXIS: f64 = 8.9e9;
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static OFFS: OffsArgs = "Offs" { x: "XOffset", y: "YOffset", z: "ZOffset" }
     static REL_TOOL: RelToolArgs = "RelTool" { dx: "Dx", dy: "Dy", dz: "Dz", rx: "Rx", ry: "Ry", rz: "Rz" }
 }

@@ -23,9 +23,7 @@ use rapid_motion::{Joints, Kinematics, Pose};
 
 use super::moves::motion_error;
 use super::robot::RobotState;
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::error::RapidError;
-use rapid_vm::value::{Opaque, OpaqueState, Value};
+use rapid_vm::ext::{present, Ctx, Opaque, OpaqueState, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -178,7 +176,7 @@ fn tool_offset(ctx: &Ctx<'_>, arg: Option<&Value>) -> Result<Option<Pose>, Rapid
     let Some(arg) = arg.filter(|a| present(Some(a))) else { return Ok(None) };
     let value = ctx.value(arg)?;
     let Value::Record(pos) = &value else {
-        return Err(ctx.error(rapid_vm::errnames::Err::ArgValue, "\\ToolOffs: a pos was expected"));
+        return Err(ctx.error(rapid_vm::ext::Err::ArgValue, "\\ToolOffs: a pos was expected"));
     };
     let n = |i: usize| pos.fields.get(i).and_then(Value::as_f64).unwrap_or(0.0);
     Ok(Some(Isometry3::from_parts(Translation3::new(n(0), n(1), -n(2)), Default::default())))

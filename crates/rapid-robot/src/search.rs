@@ -19,10 +19,7 @@ use rapid_motion::plan::{MoveRequest, Target};
 use super::data;
 use super::moves::EOffsRule;
 use rapid_signals::IoAccess;
-use rapid_vm::builtins::{present, Ctx, StopKind};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{present, Ctx, Err, RapidError, StopKind, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -46,7 +43,7 @@ struct Head {
 
 impl Head {
     fn of(name: &str) -> Head {
-        let sig = rapid_vm::builtins::signature::of(name);
+        let sig = rapid_vm::ext::signature(name);
         Head {
             stop: sig.at("Stop"),
             pstop: sig.at("PStop"),
@@ -86,7 +83,7 @@ impl Places {
     /// Where search instruction `name`'s arguments after SearchPoint are, by the
     /// parameter names of its declaration (see `signature.rs`).
     fn of(name: &str) -> Places {
-        let sig = rapid_vm::builtins::signature::of(name);
+        let sig = rapid_vm::ext::signature(name);
         let ext_only = sig.opt("UseEOffs");
         Places {
             cir: sig.opt("CirPoint"),
@@ -384,7 +381,7 @@ fn store_hit(ctx: &mut Ctx<'_>, args: &[Value], t: f64) -> Result<(), RapidError
 #[cfg(test)]
 mod layout_tests {
     use super::*;
-    use rapid_vm::builtins::signature::ABSENT;
+    use rapid_vm::ext::ABSENT;
 
     // SearchL [\Stop]|[\PStop]|[\SStop]|[\Sup] Signal|PersBool [\Flanks]|[\PosFlank]|
     // [\NegFlank]|[\HighLevel]|[\LowLevel] SearchPoint ToPoint [\ID] Speed [\V]|[\T] Tool

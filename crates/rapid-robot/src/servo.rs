@@ -12,10 +12,7 @@
 
 use super::units::{axis_arg, opt_unit_arg, own_only, unit_arg, ROBOT_AXES};
 use crate::RobotResources;
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{present, Ctx, Err, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -105,7 +102,7 @@ pub(crate) fn motion_sup(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static SOFT_ACT: SoftActArgs = "SoftAct" { axis: "Axis", softness: "Softness", ramp: "Ramp" }
     static TUNE_SERVO: TuneServoArgs = "TuneServo" { axis: "Axis", tune_value: "TuneValue", ty: "Type" }
     static SPEED_LIM_AXIS: SpeedLimAxisArgs = "SpeedLimAxis" { axis_no: "AxisNo", axis_speed: "AxisSpeed" }

@@ -8,10 +8,7 @@ use crate::RobotResources;
 use nalgebra::{Isometry3, Translation3};
 
 use super::{frame, mirror, CirPathMode, Load, Settings, SingMode};
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{present, Ctx, Err, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 

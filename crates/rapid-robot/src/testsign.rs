@@ -12,10 +12,7 @@
 
 use super::units::{axis_arg, own_only, unit_arg};
 use crate::RobotResources;
-use rapid_vm::builtins::Ctx;
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{Ctx, Err, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -54,7 +51,7 @@ fn channel(ctx: &Ctx<'_>, value: f64) -> Result<usize, RapidError> {
     Err(ctx.error(Err::ArgValue, format!("test signal channel {value} is not 1..12")))
 }
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static TEST_SIGN_DEFINE: TestSignDefineArgs = "TestSignDefine" {
         mech_unit: "MechUnit", axis: "Axis", sample_time: "SampleTime",
     }

@@ -14,10 +14,7 @@ use rapid_motion::dynamics::{moving_torques, PointLoad};
 
 use super::frame;
 use super::units::{axis_arg, opt_unit_arg, own_only, ROBOT_AXES};
-use rapid_vm::builtins::Ctx;
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::{Place, Root, Value};
+use rapid_vm::ext::{Ctx, Err, Place, RapidError, Root, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 

@@ -64,7 +64,7 @@ pub(super) fn track_speed_scale(
     target: &rapid_motion::plan::Target,
     chain: &rapid_motion::frames::FrameChain,
     ext: &ExternalMove,
-) -> Result<f64, rapid_vm::error::RapidError> {
+) -> Result<f64, rapid_vm::ext::RapidError> {
     use rapid_motion::plan::Target;
     use rapid_motion::Kinematics as _;
     let Some((axis, dir)) = robot.external.track() else { return Ok(1.0) };
@@ -76,7 +76,7 @@ pub(super) fn track_speed_scale(
     let to = match target {
         Target::Joints(_) => return Ok(1.0),
         Target::Linear(_) | Target::Circular { .. } if chain.stationary_tool => {
-            return Err(rapid_vm::error::RapidError::fatal("a stationary tool on a moving track is not supported yet"))
+            return Err(rapid_vm::ext::RapidError::fatal("a stationary tool on a moving track is not supported yet"))
         }
         Target::Circular { .. } => return Ok(1.0),
         Target::Linear(to) => to.translation.vector,

@@ -4,10 +4,7 @@
 use super::conveyor::{Fade, Mover, Span};
 use crate::RobotResources;
 use rapid_signals::IoAccess;
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{present, Ctx, Err, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -137,12 +134,12 @@ pub(crate) fn wait_wobj(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// The wait goes on until the next input change, the object's arrival or `\MaxTime`.
 fn keep_waiting(ctx: &mut Ctx<'_>, args: &[Value], arrival: Option<f64>) -> Res {
-    let started = rapid_vm::builtins::wait::wait_started(ctx);
+    let started = rapid_vm::ext::wait_started(ctx);
     let deadline = ctx.opt_num(args.get(2))?.map(|max| started + max);
     if deadline.is_some_and(|d| ctx.time >= d) {
         return end_wait(ctx, args, true);
     }
-    rapid_vm::builtins::wait::wait_again(ctx, started, deadline, arrival);
+    rapid_vm::ext::wait_again(ctx, started, deadline, arrival);
     Ok(None)
 }
 

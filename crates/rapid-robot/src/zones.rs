@@ -9,10 +9,7 @@ use nalgebra::Vector3;
 
 use super::data;
 use super::frame;
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::{Opaque, OpaqueState, Record, Value};
+use rapid_vm::ext::{present, Ctx, Err, Opaque, OpaqueState, RapidError, Record, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -105,7 +102,7 @@ fn pos(ctx: &Ctx<'_>, arg: &Value) -> Result<[f64; 3], RapidError> {
     Ok([v.x, v.y, v.z])
 }
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     /// `[\Inside] | [\Outside] Shape`, first in every WZ…Def.
     static DEF: DefArgs = "WZBoxDef" | "WZCylDef" | "WZSphDef" | "WZHomeJointDef" | "WZLimJointDef" {
         outside: "Outside", shape: "Shape",

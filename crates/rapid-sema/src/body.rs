@@ -105,6 +105,7 @@ impl Checker<'_> {
 
     fn routine_data(&mut self, decl: &DataDecl, arena: &Arena) {
         let ty = self.resolve_type_name(decl.ty, false);
+        self.facts.set_declared(ty);
         let data = self.data_info(decl, ty, false, true, arena, &self.files[self.file].text);
         let idx = self.add_routine_data(decl.name, data);
         self.check_data_decl(decl, arena, idx, true);
@@ -496,7 +497,9 @@ impl Checker<'_> {
         }
         let text = self.text(trap.span);
         match self.lookup(trap.sym) {
-            Some(Def::Routine(idx)) if self.routine(idx).kind == RoutineKind::Trap => {}
+            Some(Def::Routine(idx)) if self.routine(idx).kind == RoutineKind::Trap => {
+                self.facts.set_procedure(trap.span.start, crate::facts::Denotes::Decl(Def::Routine(idx)));
+            }
             Some(_) => self.diag(Code::NotATrap, trap.span, format!("`{text}` is not a TRAP routine")),
             None => self.diag(Code::NotATrap, trap.span, format!("no TRAP routine `{text}` is defined in this task")),
         }

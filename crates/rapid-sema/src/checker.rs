@@ -53,7 +53,11 @@ pub(crate) struct Checker<'a> {
     pub(crate) virtual_found: Vec<crate::PredefinedData>,
     /// Such names met in the routine being checked: declared when it ends (its own
     /// data is dropped from `datas` then, so global data cannot be added before).
-    pub(crate) virtual_pending: Vec<(rapid_syntax::Symbol, String, crate::types::TypeId)>,
+    pub(crate) virtual_pending: Vec<rapid_syntax::Symbol>,
+    /// What each of `virtual_pending` will be declared as, in the same order: global
+    /// data number `data_mark + k` (the k-th pending), as a compiler sees it already
+    /// ([`crate::Tables::data`]).
+    pub(crate) virtual_datas: Vec<DataInfo>,
     /// What the body item being checked resolved, for a [`crate::BodySink`].
     pub(crate) facts: crate::facts::ItemFacts,
 }
@@ -91,6 +95,7 @@ impl<'a> Checker<'a> {
             virtual_signals: false,
             virtual_found: Vec::new(),
             virtual_pending: Vec::new(),
+            virtual_datas: Vec::new(),
             facts: Default::default(),
         }
     }
@@ -145,11 +150,12 @@ impl<'a> Checker<'a> {
         res
     }
 
-    /// Whether an error was reported since `seen` diagnostics (moved to the end).
-    pub(crate) fn errors_since(&self, seen: &mut usize) -> bool {
+    /// Whether an error other than `tolerated` ones was reported since `seen`
+    /// diagnostics (moved to the end).
+    pub(crate) fn errors_since(&self, seen: &mut usize, tolerated: &[Code]) -> bool {
         let from = (*seen).min(self.diags.len());
         *seen = self.diags.len();
-        self.diags[from..].iter().any(|d| d.severity() == Severity::Error)
+        self.diags[from..].iter().any(|d| d.severity() == Severity::Error && !tolerated.contains(&d.code))
     }
 
     /// The declarations as a compiler reads them (module-level data only: the data
@@ -160,6 +166,7 @@ impl<'a> Checker<'a> {
             types: &self.types,
             core: &self.core,
             datas: &self.datas[..globals],
+            pending: &self.virtual_datas,
             routines: &self.routines,
             scopes: &self.scopes,
         }
@@ -178,6 +185,14 @@ impl<'a> Checker<'a> {
             Some(def) => Denotes::Decl(def),
             None => Denotes::Nothing,
         }
+    }
+
+    /// The global data number pending virtual signal `k` will have: after the
+    /// module-level data and the virtual signals declared so far, where the routine's
+    /// own data starts now (it is dropped before they are declared).
+    pub(crate) fn virtual_data(&self, k: usize) -> Denotes {
+        let mark = self.ctx.as_ref().map_or(self.datas.len(), |ctx| ctx.data_mark);
+        Denotes::Decl(Def::Data((mark + k) as u32))
     }
 
     /// Records what name (or call) expression `id` denotes, when facts are recorded.

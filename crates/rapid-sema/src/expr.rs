@@ -193,13 +193,15 @@ impl Checker<'_> {
                 Ty::ERROR
             }
             None if sym == self.known.placeholder_id => Ty::ERROR,
-            None if self.virtual_signals && self.virtual_pending.iter().any(|(s, _, _)| *s == sym) => {
-                let ty = self.virtual_pending.iter().find(|(s, _, _)| *s == sym).map_or(types::ERROR, |p| p.2);
-                Ty::scalar(ty)
+            None if self.virtual_signals && self.virtual_pending.contains(&sym) => {
+                let k = self.virtual_pending.iter().position(|s| *s == sym).unwrap_or(0);
+                self.note_virtual(id, k);
+                Ty::scalar(self.virtual_datas.get(k).map_or(types::ERROR, |d| d.ty))
             }
             None if self.virtual_signals && expect.is_some_and(|e| e.dims.is_empty() && self.is_signal_type(e.ty)) => {
                 let ty = expect.map_or(types::ERROR, |e| e.ty);
                 self.declare_virtual_signal(sym, span, ty);
+                self.note_virtual(id, self.virtual_pending.len() - 1);
                 Ty::scalar(ty)
             }
             None => {
@@ -390,27 +392,37 @@ impl Checker<'_> {
     /// signal of the cell's I/O configuration, which is not at hand. Declared when the
     /// routine ends; until then its uses find it here.
     fn declare_virtual_signal(&mut self, sym: rapid_syntax::Symbol, span: Span, ty: TypeId) {
-        if self.virtual_pending.iter().any(|(s, _, _)| *s == sym) {
+        if self.virtual_pending.contains(&sym) {
             return;
         }
-        let name = self.text(span).to_string();
-        self.virtual_pending.push((sym, name, ty));
+        self.virtual_pending.push(sym);
+        self.virtual_datas.push(crate::symbols::DataInfo {
+            display: self.text(span).to_string(),
+            ty,
+            rank: 0,
+            dims: [0; 3],
+            kind: crate::symbols::DataKind::Var,
+            const_value: None,
+            optional: false,
+            origin: crate::symbols::DeclOrigin::CONFIGURED,
+            system_global: false,
+        });
+    }
+
+    /// Records that name `id` is pending virtual signal `k`, by the number it will have.
+    fn note_virtual(&mut self, id: ExprId, k: usize) {
+        if self.facts.recording {
+            let denotes = self.virtual_data(k);
+            self.facts.set_name(id, denotes);
+        }
     }
 
     /// Declares the names [`Checker::declare_virtual_signal`] took as global signal data.
     pub(crate) fn declare_virtual_signals(&mut self) {
-        for (sym, name, ty) in std::mem::take(&mut self.virtual_pending) {
-            self.datas.push(crate::symbols::DataInfo {
-                display: name.clone(),
-                ty,
-                rank: 0,
-                dims: [0; 3],
-                kind: crate::symbols::DataKind::Var,
-                const_value: None,
-                optional: false,
-                origin: crate::symbols::DeclOrigin::CONFIGURED,
-                system_global: false,
-            });
+        let datas = std::mem::take(&mut self.virtual_datas);
+        for (sym, data) in std::mem::take(&mut self.virtual_pending).into_iter().zip(datas) {
+            let (name, ty) = (data.display.clone(), data.ty);
+            self.datas.push(data);
             self.scopes.builtins.insert(sym, Def::Data(self.datas.len() as u32 - 1));
             let type_name = self.types.name(ty).to_string();
             self.virtual_found.push(crate::PredefinedData { name, type_name });

@@ -1,6 +1,8 @@
-//! What the checker resolved in one top-level body item, for the compiler: the
-//! declaration each name and call denotes, the type of each expression and the
-//! parameter each argument was bound to. Kept by index into the item's arena and cleared with it, so it costs memory
+//! What the checker resolved in one top-level body item (or module data declaration),
+//! for the compiler: the declaration each name and call denotes (and the routine a
+//! statement names: a procedure call's, CONNECT's TRAP), the type of each expression,
+//! the type a routine data declaration declares and the parameter each argument was
+//! bound to. Kept by index into the item's arena and cleared with it, so it costs memory
 //! per item, never per program; a [`crate::BodySink`] reads it beside the arena.
 
 use rapid_syntax::ast::{ArgList, ExprId};
@@ -51,8 +53,11 @@ pub struct ItemFacts {
     types: Vec<Option<ExprType>>,
     /// By index into the arena's arguments: the parameter each was bound to.
     params: Vec<u32>,
-    /// Procedure calls (statements) by the start of their name: the routine called.
+    /// Routines a statement names, by the start of their name: the routine a
+    /// procedure call calls, the TRAP routine CONNECT connects.
     procedures: Vec<(u32, Denotes)>,
+    /// The type of the data a declaration item declares, when the checker resolved it.
+    declared: Option<TypeId>,
     /// The entries of `names` and `params` written for the item, reset when the next
     /// one starts. Items of a long body share one arena (the parser hands them over
     /// in batches), so resetting the whole table per item would cost the batch's size.
@@ -72,8 +77,14 @@ impl ItemFacts {
         self.types.get(id.0 as usize).copied().flatten()
     }
 
-    /// What the procedure call whose name starts at byte `name_start` calls, when the
-    /// checker resolved it.
+    /// The type of the data the item declares (routine data), when it is a
+    /// declaration whose type the checker resolved.
+    pub fn declared(&self) -> Option<TypeId> {
+        self.declared
+    }
+
+    /// What the routine name starting at byte `name_start` of a statement denotes (a
+    /// procedure call's callee, CONNECT's TRAP routine), when the checker resolved it.
     pub fn procedure(&self, name_start: u32) -> Option<Denotes> {
         let at = self.procedures.binary_search_by_key(&name_start, |&(start, _)| start).ok()?;
         Some(self.procedures[at].1)
@@ -107,6 +118,7 @@ impl ItemFacts {
             self.params[idx as usize] = UNSEEN;
         }
         self.procedures.clear();
+        self.declared = None;
         if self.recording {
             if self.names.len() < n_exprs {
                 self.names.resize(n_exprs, None);
@@ -138,6 +150,12 @@ impl ItemFacts {
         if let Some(slot) = self.params.get_mut(arg) {
             *slot = param.map_or(UNBOUND, |p| p as u32);
             self.written_params.push(arg as u32);
+        }
+    }
+
+    pub(crate) fn set_declared(&mut self, ty: TypeId) {
+        if self.recording && ty != crate::types::ERROR {
+            self.declared = Some(ty);
         }
     }
 

@@ -29,7 +29,7 @@ pub mod types;
 
 use std::sync::OnceLock;
 
-use rapid_syntax::ast::{Arena, BodyItem, Item, Routine};
+use rapid_syntax::ast::{Arena, BodyItem, DataDecl, Item, Routine};
 use rapid_syntax::{cap_errors, for_each_body_item, parse_body, parse_outline, Interner, Parse, Span, SyntaxError};
 
 pub use codes::{Code, Severity};
@@ -118,6 +118,7 @@ impl Program {
             types: &self.types,
             core: &self.core,
             datas: &self.datas,
+            pending: &[],
             routines: &self.routines,
             scopes: &self.scopes,
         }
@@ -132,8 +133,23 @@ pub struct Tables<'a> {
     pub core: &'a types::CoreTypes,
     /// Built-in and module-level data (a routine's own data is the compiler's business).
     pub datas: &'a [symbols::DataInfo],
+    /// Global data declared once the routine being checked ends, numbered after
+    /// `datas`: the signals `--virtual-io` took from it so far
+    /// ([`Options::virtual_signals`]). Empty in a finished program's tables.
+    pub pending: &'a [symbols::DataInfo],
     pub routines: &'a [symbols::RoutineInfo],
     pub scopes: &'a symbols::Scopes,
+}
+
+impl<'a> Tables<'a> {
+    /// Global data number `idx`: built-in or module-level data, or a pending one.
+    pub fn data(&self, idx: u32) -> Option<&'a symbols::DataInfo> {
+        let idx = idx as usize;
+        match self.datas.get(idx) {
+            Some(data) => Some(data),
+            None => self.pending.get(idx - self.datas.len()),
+        }
+    }
 }
 
 /// Receives each routine body while the checker works through it, one top-level item
@@ -141,6 +157,15 @@ pub struct Tables<'a> {
 /// held whole. Only bodies checked without error reach it: after the first error
 /// (in this body or anywhere before it) no more are handed over.
 pub trait BodySink {
+    /// A module-level data declaration, checked without error, with what the checker
+    /// resolved in it (its initial value). Every one comes before any routine body,
+    /// in declaration order (the order of their global numbers).
+    fn data(&mut self, _tables: Tables<'_>, _data: DataItem<'_>, _facts: &ItemFacts) {}
+    /// Errors that do not stop the stream: what the sink can take with them (a name
+    /// that resolves to nothing is `Denotes::Nothing` in the facts). None by default.
+    fn tolerated(&self) -> &'static [Code] {
+        &[]
+    }
     /// The body of the routine declared by item `item` of module `module` (the
     /// indices of [`symbols::DeclOrigin::Module`]), in file `file`, starts.
     fn begin(&mut self, tables: Tables<'_>, file: usize, module: usize, item: usize, routine: &Routine);
@@ -150,6 +175,19 @@ pub trait BodySink {
     /// The body ends; `clean` is false when an error was found in it (what the sink
     /// made of it is then to be dropped).
     fn end(&mut self, tables: Tables<'_>, clean: bool);
+}
+
+/// A module-level data declaration handed to a [`BodySink`].
+#[derive(Debug, Clone, Copy)]
+pub struct DataItem<'a> {
+    /// The file and module (index of [`symbols::DeclOrigin::Module`]) declaring it.
+    pub file: usize,
+    pub module: usize,
+    /// Its global data number (an index into [`Tables::datas`]).
+    pub data: u32,
+    pub decl: &'a DataDecl,
+    /// The module's arena, which holds its initial value.
+    pub arena: &'a Arena,
 }
 
 /// Checks a task like [`check`] and keeps the resolved declarations.
@@ -273,18 +311,20 @@ fn check_semantics<'a>(
     ck.declare_predefined(&options.predefined, interner);
     ck.virtual_signals = options.virtual_signals;
     ck.declare_modules(modules);
-    check_module_items(&mut ck, modules);
-    // Bodies go to the sink while nothing so far is an error. A virtual signal is
-    // declared only once the pass is over, so then nothing is handed over.
-    let mut seen = 0;
-    let mut clean = !options.virtual_signals
-        && !diags.iter().any(|d| d.severity() == Severity::Error)
-        && pass.syntax_errors.iter().all(Vec::is_empty);
+    // Items go to the sink while nothing so far is an error. A virtual signal is
+    // declared when the routine that first names it ends; until then its uses denote
+    // it by the number it will have (`Tables::pending`).
+    let mut looked = 0;
+    let tolerated = pass.sink.as_deref().map_or(&[][..], |sink| sink.tolerated());
+    let mut clean =
+        !diags.iter().any(|d| d.severity() == Severity::Error) && pass.syntax_errors.iter().all(Vec::is_empty);
+    let mut seen = Seen { count: &mut looked, tolerated };
+    check_module_items(&mut ck, modules, pass.sink.as_deref_mut(), &mut clean, &mut seen);
     for (idx, m) in modules.iter().enumerate() {
         ck.enter(m.file, idx);
         for (item, routine) in routines(m) {
             ck.begin_routine(routine);
-            clean = clean && !ck.errors_since(&mut seen);
+            clean = clean && !seen.errors_in(&ck);
             let mut sink = pass.sink.as_deref_mut().filter(|_| clean);
             if let Some(sink) = sink.as_deref_mut() {
                 sink.begin(ck.tables(), m.file, idx, item, routine);
@@ -295,7 +335,7 @@ fn check_semantics<'a>(
                 // What the item resolves is recorded only for a sink that takes it.
                 ck.facts.recording = streamed && clean;
                 ck.body_item(item, arena);
-                clean = clean && !ck.errors_since(&mut seen);
+                clean = clean && !seen.errors_in(&ck);
                 if let Some(sink) = sink.as_deref_mut().filter(|_| clean) {
                     sink.item(ck.tables(), item, arena, &ck.facts);
                 }
@@ -304,7 +344,7 @@ fn check_semantics<'a>(
             clean = clean && errors.is_empty();
             pass.syntax_errors[m.file].extend(errors);
             ck.end_routine();
-            clean = clean && !ck.errors_since(&mut seen);
+            clean = clean && !seen.errors_in(&ck);
             if let Some(sink) = sink {
                 sink.end(ck.tables(), clean);
             }
@@ -315,21 +355,79 @@ fn check_semantics<'a>(
     ck
 }
 
-/// Module-level declarations: data initialisers and routine headers.
-fn check_module_items(ck: &mut Checker<'_>, modules: &[ModuleRef<'_>]) {
+/// The number of the data item `item` of module `module` declares, searched from
+/// `from` on (moved past it): module data is numbered in declaration order.
+fn own_data(datas: &[symbols::DataInfo], from: &mut usize, module: usize, item: usize) -> Option<u32> {
+    for (idx, data) in datas.iter().enumerate().skip(*from) {
+        let symbols::DeclOrigin::Module { module: m, item: i } = data.origin else { continue };
+        if (m, i) == (module, item) {
+            *from = idx + 1;
+            return Some(idx as u32);
+        }
+        if (m, i) > (module, item) {
+            return None;
+        }
+    }
+    None
+}
+
+/// The diagnostics the stream has looked at, and the errors it goes on past.
+struct Seen<'a> {
+    count: &'a mut usize,
+    tolerated: &'static [Code],
+}
+
+impl Seen<'_> {
+    /// Whether `ck` reported an error since the last look, one not tolerated.
+    fn errors_in(&mut self, ck: &Checker<'_>) -> bool {
+        ck.errors_since(self.count, self.tolerated)
+    }
+}
+
+/// Module-level declarations: data initialisers and routine headers. Each data
+/// declaration checked while nothing so far is an error goes to `sink` with its facts.
+fn check_module_items(
+    ck: &mut Checker<'_>,
+    modules: &[ModuleRef<'_>],
+    mut sink: Option<&mut (dyn BodySink + '_)>,
+    clean: &mut bool,
+    seen: &mut Seen<'_>,
+) {
+    // The data declared by each item, found going forward: declared in this order.
+    let mut own = 0;
     for (idx, m) in modules.iter().enumerate() {
         ck.enter(m.file, idx);
-        for item in &m.module.items {
+        for (item_idx, item) in m.module.items.iter().enumerate() {
             match item {
                 Item::Data(decl) => {
                     let Some(symbols::Def::Data(data)) = ck.scopes.lookup_module_level(idx, decl.name.sym) else {
                         continue;
                     };
-                    ck.check_data_decl(decl, &m.module.arena, data, false);
+                    // A global PERS declared before in the task is what its name
+                    // finds; the sink compiles the declaration's own data.
+                    let declared = own_data(&ck.datas, &mut own, idx, item_idx);
+                    let arena = &m.module.arena;
+                    *clean = *clean && !seen.errors_in(ck);
+                    let streamed = sink.is_some() && *clean;
+                    if streamed {
+                        ck.facts.recording = true;
+                        ck.facts.start(arena.exprs.len(), arena.args.len());
+                    }
+                    ck.check_data_decl(decl, arena, data, false);
+                    ck.facts.recording = false;
+                    *clean = *clean && !seen.errors_in(ck);
+                    if let (Some(sink), Some(data)) = (sink.as_deref_mut().filter(|_| streamed && *clean), declared) {
+                        let item = DataItem { file: m.file, module: idx, data, decl, arena };
+                        sink.data(ck.tables(), item, &ck.facts);
+                    }
                 }
                 Item::Routine(routine) => ck.check_routine_header(routine),
                 _ => {}
             }
         }
+    }
+    // Sized for a module's arena, the largest: not kept for the bodies' items.
+    if sink.is_some() {
+        ck.facts = Default::default();
     }
 }

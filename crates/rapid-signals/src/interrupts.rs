@@ -4,17 +4,16 @@
 //! sets the interrupt's source, and the executor matches the changes the I/O hands it
 //! (`TaskHooks::signal_changes`, in `io.rs`) against it.
 
-use rapid_vm::builtins::interrupts::{AnalogTrigger, SampleTrigger};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::ext::{interrupt_number, present, Ctx, Family, InterruptSource as Source};
-use rapid_vm::value::Value;
+use rapid_vm::ext::{
+    interrupt_number, present, AnalogTrigger, Ctx, Err, Family, InterruptSource as Source, RapidError, SampleTrigger,
+    Value,
+};
 
 use crate::io::{connected, IoAccess};
 
 type Res = Result<Option<Value>, RapidError>;
 
-rapid_vm::layout! {
+rapid_vm::ext::layout! {
     static ISIGNAL_D: DigitalArgs = "ISignalDI" | "ISignalDO" {
         single: "Single", single_safe: "SingleSafe", signal: "Signal", trigg_value: "TriggValue", interrupt: "Interrupt",
     }

@@ -14,13 +14,10 @@
 use rapid_io::{IoSystem, SignalKind};
 use rapid_sema::types::TypeId;
 
-use rapid_vm::builtins::Shared;
-use rapid_vm::embed::{Extensions, TaskHooks, TaskState};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::exec::storage::Storage;
-use rapid_vm::ext::{native, present, Ctx, Family, Resources};
-use rapid_vm::value::{Opaque, OpaqueState, Value};
+use rapid_vm::ext::{
+    native, present, Ctx, Err, Extensions, Family, Opaque, OpaqueState, RapidError, Resources, Shared, Storage,
+    TaskHooks, TaskState, Value,
+};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -145,7 +142,7 @@ impl IoState {
     }
 }
 
-/// What the interpreter's loop asks of the I/O (`rapid_vm::embed::TaskHooks`): signals
+/// What the interpreter's loop asks of the I/O (`rapid_vm::ext::TaskHooks`): signals
 /// read in expressions, the changes signal interrupts look at, the next scheduled
 /// change (waits and interrupts look again then), the configuration's signals
 /// connected at load and after PP to Main.
@@ -418,7 +415,7 @@ fn reset(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     order(ctx, |io, t| io.set(id, 0.0, t))
 }
 
-rapid_vm::layout! {
+rapid_vm::ext::layout! {
     static SET_DO: SetDoArgs = "SetDO" { s_delay: "SDelay", signal: "Signal", value: "Value" }
     static SET_GO: SetGoArgs = "SetGO" { s_delay: "SDelay", signal: "Signal", value: "Value", dvalue: "Dvalue" }
     static PULSE_DO: PulseDoArgs = "PulseDO" { high: "High", p_length: "PLength", signal: "Signal" }
@@ -660,8 +657,7 @@ pub(crate) static FAMILY: Family = Family {
 #[cfg(test)]
 mod tests {
     use rapid_io::{IoSystem, SignalDef, SignalKind};
-    use rapid_vm::embed::TaskHooks;
-    use rapid_vm::ext::Resources;
+    use rapid_vm::ext::{Resources, TaskHooks};
 
     use super::{IoAccess, HOOKS};
 

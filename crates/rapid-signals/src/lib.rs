@@ -1,12 +1,12 @@
 //! rapid-signals: RAPID's I/O signals (§1.9), an extension of the interpreter core
-//! (`rapid_vm::embed::Extension`, [`EXTENSION`]) on the task's I/O system
+//! (`rapid_vm::ext::Extension`, [`EXTENSION`]) on the task's I/O system
 //! (`rapid_io::IoSystem`). It holds the task's I/O state ([`IoState`], in the task's
 //! extension slot, reached through [`IoAccess`]) and the part every task of a
-//! controller shares ([`SharedIo`], in `rapid_vm::builtins::Shared::extensions`), the
+//! controller shares ([`SharedIo`], in `rapid_vm::ext::Shared::extensions`), the
 //! signal built-ins (`io.rs`: AliasIO, Set, SetDO, TestDI, …), the waits on signals
 //! (`waits.rs`: WaitDI … WaitAO), the I/O devices and networks (`units.rs`), the
 //! signal interrupts (`interrupts.rs`: ISignalDI … ISignalAO), and what the
-//! interpreter's loop asks of signals through `rapid_vm::embed::TaskHooks` (signal
+//! interpreter's loop asks of signals through `rapid_vm::ext::TaskHooks` (signal
 //! data read in expressions, the changes signal interrupts look at, the next
 //! scheduled change).
 //!
@@ -30,7 +30,7 @@ pub use io::{
 };
 pub use vm::SignalsVm;
 
-use rapid_vm::embed::Extension;
+use rapid_vm::ext::Extension;
 
 /// The I/O signals as an extension of the interpreter: registered before the robot's
 /// (which reads and sets signals).

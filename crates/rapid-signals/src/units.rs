@@ -10,10 +10,7 @@
 //! (ERR_IODISABLE cannot happen; uncertain). Every network runs, so IOBusStart has
 //! nothing to start. Unknown names raise ERR_NAME_INVALID.
 
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::ext::{native, present, Ctx, Family, StopKind};
-use rapid_vm::value::Value;
+use rapid_vm::ext::{native, present, Ctx, Err, Family, RapidError, StopKind, Value};
 
 use crate::io::IoAccess;
 
@@ -169,7 +166,7 @@ fn io_bus_start(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(None)
 }
 
-rapid_vm::layout! {
+rapid_vm::ext::layout! {
     static EVENT_MESSAGE: EventMessageArgs = "IOEventMessage" { device_name: "DeviceName" }
 }
 

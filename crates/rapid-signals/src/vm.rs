@@ -1,7 +1,7 @@
 //! A task's side of the I/O system, for the controller that builds it: installing it
 //! and connecting the configuration's signals (their program data) to it.
 
-use rapid_vm::value::Value;
+use rapid_vm::ext::Value;
 use rapid_vm::Vm;
 
 use crate::io::IoAccess;

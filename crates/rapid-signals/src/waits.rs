@@ -9,10 +9,9 @@
 
 use std::sync::LazyLock;
 
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::ext::{native, present, visualize_step, wait_again, wait_started, BoxArgs, Ctx, Family};
-use rapid_vm::value::Value;
+use rapid_vm::ext::{
+    native, present, visualize_step, wait_again, wait_started, BoxArgs, Ctx, Err, Family, RapidError, Value,
+};
 
 use crate::io::{signal, IoAccess};
 
@@ -174,7 +173,7 @@ pub(crate) static FAMILY: Family = Family {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rapid_vm::builtins::signature::ABSENT;
+    use rapid_vm::ext::ABSENT;
 
     // Positions counted by hand from the manual's syntax:
     // WaitDI Signal Value [\MaxTime] [\TimeFlag] [\Visualize] …

@@ -1,5 +1,5 @@
 //! rapid-tasks: RAPID's multitasking (§1.20), an extension of the interpreter core
-//! (`rapid_vm::embed::Extension`, [`EXTENSION`]). It holds what a task knows of the
+//! (`rapid_vm::ext::Extension`, [`EXTENSION`]). It holds what a task knows of the
 //! other tasks of its system: their kinds and states ([`TaskInfo`]: motion task,
 //! robot, NORMAL, executing), the robots' numbering, the sync points of WaitSyncTask
 //! and of synchronized movement, each task's RAPID Message Queue configuration
@@ -9,7 +9,7 @@
 //! GetTSPStatus, MotionPlannerNo, GetMecUnitName, GetServiceInfo). Its state is the
 //! task's [`TaskingState`] (in the task's extension slot, reached through
 //! [`TaskingAccess`]) and the part every task of a controller shares
-//! ([`SharedTasking`], in `rapid_vm::builtins::Shared::lent`, reached through
+//! ([`SharedTasking`], in `rapid_vm::ext::Shared::lent`, reached through
 //! [`SharedTaskingAccess`]), which the core lends the running task whole
 //! (`Resources::lent`): no hook runs around a statement for it.
 //!
@@ -34,7 +34,7 @@ pub use tasking::{
 };
 pub use units::planner_no;
 
-use rapid_vm::embed::Extension;
+use rapid_vm::ext::Extension;
 use rapid_vm::ext::Resources;
 
 /// Multitasking as an extension of the interpreter: registered before the robot's

@@ -220,13 +220,13 @@ impl TaskingState {
     }
 }
 
-impl rapid_vm::embed::TaskState for TaskingState {
-    fn close_all_lent(&mut self, lent: &mut rapid_vm::embed::Extensions) {
+impl rapid_vm::ext::TaskState for TaskingState {
+    fn close_all_lent(&mut self, lent: &mut rapid_vm::ext::Extensions) {
         self.end_waits(lent.get_or_default::<SharedTasking>());
     }
 }
 
-impl rapid_vm::embed::TaskState for SharedTasking {}
+impl rapid_vm::ext::TaskState for SharedTasking {}
 
 /// A task's multitasking state as it reads it: its own ([`TaskingState`], through
 /// `Deref`) and what the tasks share (`shared`, lent to the task while it runs).
@@ -296,7 +296,7 @@ pub trait SharedTaskingAccess {
     fn tasking_mut(&mut self) -> &mut SharedTasking;
 }
 
-impl SharedTaskingAccess for rapid_vm::builtins::Shared {
+impl SharedTaskingAccess for rapid_vm::ext::Shared {
     #[inline]
     fn tasking(&self) -> &SharedTasking {
         self.lent.get::<SharedTasking>().unwrap_or(&ALONE.1)
@@ -551,7 +551,7 @@ mod tests {
     /// task leaves the shared list of tasks in sync, which is in the state lent to it.
     #[test]
     fn closing_a_task_takes_it_out_of_synchronized_movement() {
-        use rapid_vm::embed::{Extensions, TaskState};
+        use rapid_vm::ext::{Extensions, TaskState};
         let mut lent = Extensions::default();
         lent.get_or_default::<SharedTasking>().in_sync = vec!["T_ROB1".into(), "T_ROB2".into()];
         let members = vec!["T_ROB1".to_string(), "T_ROB2".to_string()];

@@ -300,13 +300,7 @@ fn compile_modules(
     builtins: &builtins::Builtins,
     streamed: compile::Streamed,
 ) -> Result<compile::Compiled, LoadError> {
-    let (_, catalogue) = rapid_sema::catalogue();
-    // The compiler reads the program while the bodies' parser spells names with its
-    // interner: lent out for the while.
-    let mut interner = std::mem::take(&mut prog.interner);
-    let compiled =
-        compile::compile(prog, modules, builtins, &catalogue.module, &catalogue.text, &mut interner, streamed);
-    prog.interner = interner;
+    let compiled = compile::compile(prog, modules, builtins, streamed);
     compiled.map_err(|errors| LoadError::Unsupported(refusals::one_per_option(errors)))
 }
 

@@ -20,12 +20,10 @@
 use std::any::Any;
 use std::path::Path;
 
-use rapid_vm::embed::{Extension, TaskState};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::ext::{devices, native, present, Ctx, Family, Resources};
-use rapid_vm::value::Value;
-use rapid_vm::world::{FileKind, FileSystem};
+use rapid_vm::ext::{
+    devices, native, present, Ctx, Err, Extension, Family, FileKind, FileSystem, RapidError, Resources, TaskState,
+    Value,
+};
 
 type Res = Result<Option<Value>, RapidError>;
 

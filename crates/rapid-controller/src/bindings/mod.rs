@@ -1,7 +1,7 @@
 //! The built-in families of the controller's side: what a RAPID program reaches of
 //! the controller beyond the language (its file devices, its network, its configuration, the message queues
 //! between tasks ...). Each is an extension of
-//! the interpreter (`rapid_vm::embed::Extension`): its built-ins, the state it keeps
+//! the interpreter (`rapid_vm::ext::Extension`): its built-ins, the state it keeps
 //! per task in the task's extension slot, and the hooks the interpreter's loop calls
 //! (closing at PP to Main through `TaskState::close_all`). [`crate::builtin_set`] puts
 //! them together with the language's own.

@@ -7,12 +7,9 @@ use super::super::robot::{Action, PathEvent};
 use super::{check_value, define, inhib_place, place, refuse, Relation, Res, Special};
 use crate::RobotResources;
 use rapid_signals::IoAccess;
-use rapid_vm::builtins::{present, Ctx, Resources};
-use rapid_vm::errnames::Err;
-use rapid_vm::exec::storage::Storage;
-use rapid_vm::value::{Place, Value};
+use rapid_vm::ext::{present, Ctx, Err, Place, Resources, Storage, Value};
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static TRIGG_CHECK: CheckArgs = "TriggCheckIO" {
         data: "TriggData", distance: "Distance", start: "Start", next: "Next", time: "Time", signal: "Signal",
         relation: "Relation", value: "CheckValue", dvalue: "CheckDvalue", stop_move: "StopMove",
@@ -39,7 +36,7 @@ pub(crate) fn trigg_check_io(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     };
     let value = if present(args.get(ch.dvalue)) { ctx.num(&args[ch.dvalue])? } else { ctx.num(&args[ch.value])? };
     check_value(ctx, signal, value)?;
-    let interrupt = rapid_vm::builtins::interrupts::interrupt_number(ctx, &args[ch.interrupt])?;
+    let interrupt = rapid_vm::ext::interrupt_number(ctx, &args[ch.interrupt])?;
     let stop = present(args.get(ch.stop_move));
     let special = Special::Check { signal, relation, value, stop, interrupt, inhib: inhib_place(args, ch.inhib) };
     define(ctx, &args[ch.data], PathEvent { at, shift: 0.0, action: Action::Special(0) }, Some(special))

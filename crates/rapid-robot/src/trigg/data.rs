@@ -4,11 +4,10 @@
 
 use super::{define, Res};
 use crate::RobotResources;
-use rapid_vm::builtins::Ctx;
-use rapid_vm::value::{Opaque, OpaqueState, Value};
+use rapid_vm::ext::{Ctx, Opaque, OpaqueState, Value};
 
 /// The definition slot a triggdata argument holds, if it holds one.
-fn slot(ctx: &Ctx<'_>, arg: &Value) -> Result<(Opaque, Option<usize>), rapid_vm::error::RapidError> {
+fn slot(ctx: &Ctx<'_>, arg: &Value) -> Result<(Opaque, Option<usize>), rapid_vm::ext::RapidError> {
     let (opaque, handle) = ctx.handle_arg(arg, "a triggdata")?;
     let len = ctx.resources.robot().triggers.len();
     Ok((opaque, handle.map(|h| h as usize).filter(|&h| h < len)))

@@ -5,13 +5,9 @@
 
 use super::super::robot::{Action, At, PathEvent};
 use super::{check_value, define, inhib_place, place, refuse, Res, Special};
-use rapid_vm::builtins::signature::ABSENT;
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{present, Ctx, Err, RapidError, Value, ABSENT};
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static TRIGG_IO: IoArgs = "TriggIO" {
         data: "TriggData", distance: "Distance", start: "Start", time: "Time", dop: "DOp", gop: "GOp", aop: "AOp",
         proc_id: "ProcID", set_value: "SetValue", set_dvalue: "SetDvalue", delay: "DODelay", inhib: "Inhib",
@@ -97,7 +93,7 @@ pub(crate) fn trigg_int(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let int = *TRIGG_INT;
     refuse(args, &[(int.next, "\\Next"), (int.mode, "\\Mode")])?;
     let at = place(ctx, args, (int.distance, int.start, int.time))?;
-    let number = rapid_vm::builtins::interrupts::interrupt_number(ctx, &args[int.interrupt])?;
+    let number = rapid_vm::ext::interrupt_number(ctx, &args[int.interrupt])?;
     let (action, special) = match inhib_place(args, int.inhib) {
         Some(inhib) => (Action::Special(0), Some(Special::InhibitedInterrupt { interrupt: number, inhib })),
         None => (Action::Interrupt(number), None),

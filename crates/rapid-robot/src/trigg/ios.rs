@@ -7,10 +7,7 @@ use super::super::robot::{Action, At, PathEvent};
 use super::moves::{TRIGG_J_IOS, TRIGG_L_IOS};
 use super::{check_value, Res};
 use rapid_signals::IoAccess;
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{present, Ctx, Err, RapidError, Value};
 
 /// The output events of one element of a trigger array (None when `used` is FALSE).
 fn element(ctx: &mut Ctx<'_>, elem: &Value) -> Result<Option<PathEvent>, RapidError> {

@@ -32,10 +32,7 @@ pub(crate) use stopproc::{program_stopped, trigg_stop_proc};
 use super::robot::{At, PathEvent};
 use crate::RobotResources;
 use rapid_signals::IoAccess;
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::{Opaque, OpaqueState, Place, Value};
+use rapid_vm::ext::{present, Ctx, Err, Opaque, OpaqueState, Place, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 

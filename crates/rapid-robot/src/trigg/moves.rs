@@ -2,15 +2,12 @@
 //! (Trigg_1 or every element of TriggArray, and T2 … T8).
 
 use crate::RobotResources;
-use rapid_vm::builtins::{present, Ctx};
+use rapid_vm::ext::{present, Ctx, Err, OpaqueState, RapidError, Value};
 use std::sync::LazyLock;
 
 use super::super::moves::{abs_joint_move, circular_move, joint_move, linear_move, Layout};
 use super::super::robot::{Action, PathEvent};
 use super::{value_after_orders, Res, Special};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::{OpaqueState, Value};
 
 /// The trigger handles of the triggdata arguments: Trigg_1 up to Zone (Trigg_1,
 /// TriggArray, T2 … T8).

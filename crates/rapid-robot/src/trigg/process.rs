@@ -3,12 +3,9 @@
 
 use super::super::robot::{Action, PathEvent};
 use super::{analog_max, check_value, define, place, refuse, Res, Special};
-use rapid_vm::builtins::signature::ABSENT;
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::errnames::Err;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{present, Ctx, Err, Value, ABSENT};
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static TRIGG_RAMP: RampArgs = "TriggRampAO" {
         data: "TriggData", distance: "Distance", start: "Start", next: "Next", lag: "EquipLag", signal: "AOutput",
         value: "SetValue", length: "RampLength", time: "Time", inhib: "Inhib", inhib_value: "InhibSetValue",

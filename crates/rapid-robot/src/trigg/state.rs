@@ -5,7 +5,7 @@
 
 use std::collections::BTreeMap;
 
-use rapid_vm::value::Place;
+use rapid_vm::ext::Place;
 
 /// The relation of TriggCheckIO (opnum LT=1 … GT=6).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -14,10 +14,7 @@ use std::rc::Rc;
 
 use super::Res;
 use rapid_signals::IoAccess;
-use rapid_vm::builtins::{present, Ctx, Resources};
-use rapid_vm::errnames::Err;
-use rapid_vm::exec::storage::Storage;
-use rapid_vm::value::{Place, Value};
+use rapid_vm::ext::{present, Ctx, Err, Place, Resources, Storage, Value};
 
 /// The supervision TriggStopProc set up.
 #[derive(Debug, Clone, PartialEq)]
@@ -29,7 +26,7 @@ pub struct StopProc {
     shadow: u32,
 }
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static TRIGG_STOP_PROC: TriggStopProcArgs = "TriggStopProc" {
         do1: "DO1", go1: "GO1", go2: "GO2", go3: "GO3", go4: "GO4", shadow: "ShadowDO",
     }
@@ -44,7 +41,7 @@ pub(crate) fn trigg_stop_proc(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         return Err(ctx.error(Err::ArgValue, "TriggStopProc's RestartRef must be a persistent restartdata"));
     };
     let restart = (**restart).clone();
-    let mut signal = |idx: usize| -> Result<Option<u32>, rapid_vm::error::RapidError> {
+    let mut signal = |idx: usize| -> Result<Option<u32>, rapid_vm::ext::RapidError> {
         if present(args.get(idx)) {
             rapid_signals::signal(ctx, &args[idx]).map(Some)
         } else {

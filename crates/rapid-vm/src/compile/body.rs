@@ -1,64 +1,24 @@
 //! A routine compiled item by item in source order: its declarations, statements and
-//! handler keywords, from a parsed tree or from the items the parser hands over while it
-//! works through the routine's text (`rapid_syntax::for_each_body_item`, which parses a
-//! long body on a second thread). Both give the same code; the second never holds a
-//! whole body's tree, which for a CAM program is millions of moves.
+//! handler keywords, as the checker hands them over while the parser works through the
+//! routine's text (`rapid_syntax::for_each_body_item`, which parses a long body on a
+//! second thread; `stream.rs`). No whole body's tree is held, which for a CAM program
+//! is millions of moves.
 
+use rapid_sema::types::TypeId;
 use rapid_syntax::ast::{Arena, BodyItem, DataDecl, ExprId, Routine, RoutineKind, Section};
-use rapid_syntax::Interner;
 
-use super::{numeric_like, CompileError, Resolved, RoutineCompiler};
+use super::{numeric_like, CompileError, RoutineCompiler};
 use crate::ir::{Code, Handler, Instr};
 
 impl RoutineCompiler<'_> {
-    /// Compiles a routine whose body the tree holds.
-    pub(crate) fn routine(&mut self, routine: &Routine) -> Result<Code, Vec<CompileError>> {
-        self.header(routine);
-        let Some(body) = &routine.body else { return Ok(self.st.code.clone()) };
-        self.declare_params(routine);
-        let mut errors = Vec::new();
-        for decl in &body.decls {
-            self.decl(decl, &body.arena, &mut errors);
-        }
-        self.stmt_list(&body.arena, &body.stmts, &mut errors);
-        // The handlers in the order the language writes them.
-        let handlers =
-            [(Section::Backward, &body.backward), (Section::Error, &body.error), (Section::Undo, &body.undo)];
-        for (section, handler) in handlers {
-            let Some(handler) = handler else { continue };
-            self.enter_section(section, &handler.error_numbers, &body.arena);
-            self.stmt_list(&body.arena, &handler.stmts, &mut errors);
-        }
-        self.finish_routine(errors)
-    }
-
-    /// Compiles a routine of an outline, parsing its body from the text as it goes.
-    pub(crate) fn routine_from_text(
-        &mut self,
-        routine: &Routine,
-        interner: &mut Interner,
-    ) -> Result<Code, Vec<CompileError>> {
-        self.header(routine);
-        self.declare_params(routine);
-        let mut errors = Vec::new();
-        let text = self.text;
-        // The checker parsed this body already and found no syntax error in it.
-        let _ = rapid_syntax::for_each_body_item(text, routine.body_span, interner, |item, arena| {
-            self.body_item(item, arena, &mut errors)
-        });
-        self.finish_routine(errors)
-    }
-
     /// What the routine's head says: its name, kind and return type.
-    pub(super) fn header(&mut self, routine: &Routine) {
+    /// `ret` is the return type the checker resolved.
+    pub(super) fn header(&mut self, routine: &Routine, ret: Option<TypeId>) {
         self.st.code.name = routine.name.span.text(self.text).to_string();
         self.st.code.span = routine.span;
         self.st.code.is_func = routine.kind == RoutineKind::Func;
         self.st.code.is_trap = routine.kind == RoutineKind::Trap;
-        self.st.ret_ty = routine.ret_ty.and_then(|t| match self.resolve(t.sym) {
-            Some(Resolved::Type(ty)) => Some(ty),
-            _ => None,
-        });
+        self.st.ret_ty = ret.filter(|&ty| ty != rapid_sema::types::ERROR);
         self.st.code.ret_like = self.st.ret_ty.and_then(|ty| numeric_like(self.prog.types, ty, 0));
     }
 

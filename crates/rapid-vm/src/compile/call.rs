@@ -1,11 +1,10 @@
-//! Calls: arguments matched to parameters by position and name (the program is
-//! checked, so the match exists), then passed as values (IN), places (VAR, INOUT,
-//! PERS), absent, switches, or conditionally forwarded optional parameters.
+//! Calls: the callee and the parameter each argument goes to as the checker resolved
+//! them (`rapid_sema::ItemFacts`), then arguments passed as values (IN), places (VAR,
+//! INOUT, PERS), absent, switches, or conditionally forwarded optional parameters.
 
-use rapid_sema::bind::bind_args;
 use rapid_sema::symbols::{ParamInfo, RoutineInfo};
 use rapid_syntax::ast::{Arena, Arg, ArgKind, ArgList, ExprKind, ParamMode};
-use rapid_syntax::{Span, Symbol};
+use rapid_syntax::Span;
 
 use super::expr::expected_dims;
 use super::{CompileError, LocalKind, Resolved, RoutineCompiler};
@@ -39,16 +38,9 @@ pub(crate) static FAMILY: builtins::Family = builtins::Family {
 impl RoutineCompiler<'_> {
     /// A call of `name` with `args`, written as `of` says: a function call in an
     /// expression pushes its result.
-    pub(crate) fn call(
-        &mut self,
-        arena: &Arena,
-        name: Symbol,
-        args: ArgList,
-        span: Span,
-        of: CallOf,
-    ) -> Result<(), CompileError> {
+    pub(crate) fn call(&mut self, arena: &Arena, args: ArgList, span: Span, of: CallOf) -> Result<(), CompileError> {
         let in_expr = matches!(of, CallOf::Expr(_));
-        let Some(Resolved::Routine(idx)) = self.callee(of, name) else {
+        let Some(Resolved::Routine(idx)) = self.callee(of) else {
             if in_expr {
                 // A function defined nowhere raises ERR_REFUNKFUN when the call is
                 // executed (its arguments are not evaluated).
@@ -99,12 +91,12 @@ impl RoutineCompiler<'_> {
                     }
                     Some(Compiled::Type) => return self.type_name(arena, args, span),
                     Some(Compiled::WaitUntil) => return self.wait_until(arena, &info, args, span),
-                    Some(Compiled::ArgName) => return self.arg_name(arena, &info, id, args),
+                    Some(Compiled::ArgName) => return self.arg_name(arena, &info, id, args, span),
                     Some(Compiled::Break) | None => Callee::Builtin(id),
                 }
             }
         };
-        let bound = self.bound_args(arena, &info, args);
+        let bound = self.bound_args(arena, &info, args, span)?;
         let mut specs = Vec::with_capacity(info.params.len());
         let mut n_pushed = 0u16;
         let takes_signals = info.flags.takes_signals;
@@ -131,27 +123,31 @@ impl RoutineCompiler<'_> {
         Ok(())
     }
 
-    /// What the routine name of a call denotes: what the checker found, when it
-    /// streamed the call, else the name looked up here.
-    pub(crate) fn callee(&self, of: CallOf, name: Symbol) -> Option<Resolved> {
+    /// What the routine name of a call denotes: what the checker found.
+    pub(crate) fn callee(&self, of: CallOf) -> Option<Resolved> {
         let found = self.facts.and_then(|facts| match of {
             CallOf::Expr(id) => facts.name(id),
             CallOf::Stmt(name_start) => facts.procedure(name_start),
         });
-        match found {
-            Some(denotes) => self.denoted(denotes),
-            None => self.resolve(name),
-        }
+        found.and_then(|denotes| self.denoted(denotes))
     }
 
-    /// The argument each parameter of `info` gets from `args`: as the checker bound
-    /// them, when it streamed the call, else bound here by the same rule.
-    fn bound_args<'a>(&self, arena: &'a Arena, info: &RoutineInfo, args: ArgList) -> Vec<Option<&'a Arg>> {
-        let from_facts = self.facts.and_then(|facts| facts.bound(args, info.params.len()));
-        match from_facts {
-            Some(bound) => bound.into_iter().map(|arg| arg.and_then(|idx| arena.args.get(idx as usize))).collect(),
-            None => bind_args(info, arena.args(args), |id, param| self.arg_fits(arena, id, param)),
-        }
+    /// The argument each parameter of `info` gets from `args`, as the checker bound
+    /// them (`rapid_sema::bind`).
+    fn bound_args<'a>(
+        &self,
+        arena: &'a Arena,
+        info: &RoutineInfo,
+        args: ArgList,
+        span: Span,
+    ) -> Result<Vec<Option<&'a Arg>>, CompileError> {
+        let Some(bound) = self.facts.and_then(|facts| facts.bound(args, info.params.len())) else {
+            // The checker bound every argument of a call it checked without error.
+            return Err(
+                self.error(span, format!("the arguments of `{}` were not matched by the checker", info.display))
+            );
+        };
+        Ok(bound.into_iter().map(|arg| arg.and_then(|idx| arena.args.get(idx as usize))).collect())
     }
 
     /// A call of WaitRob (no arguments): the program waits for the robot to stand still.
@@ -176,8 +172,9 @@ impl RoutineCompiler<'_> {
         info: &RoutineInfo,
         id: builtins::BuiltinId,
         args: ArgList,
+        span: Span,
     ) -> Result<(), CompileError> {
-        let bound = self.bound_args(arena, info, args);
+        let bound = self.bound_args(arena, info, args, span)?;
         let mut specs = Vec::with_capacity(info.params.len());
         let mut n_pushed = 0u16;
         for (idx, (param, arg)) in info.params.iter().zip(&bound).enumerate() {
@@ -221,15 +218,15 @@ impl RoutineCompiler<'_> {
     // module data by its declaration.
     fn data_origin(&self, arena: &Arena, value: rapid_syntax::ast::ExprId) -> ArgOrigin {
         let mut id = value;
-        let sym = loop {
+        loop {
             match arena.expr(id).kind {
                 ExprKind::Index { base, .. } | ExprKind::Field { base, .. } => id = base,
-                ExprKind::Name(sym) => break sym,
+                ExprKind::Name(_) => break,
                 _ => return ArgOrigin::None,
             }
-        };
-        match self.name(id, sym) {
-            Some(Resolved::Global(idx)) => match self.prog.datas.get(idx as usize) {
+        }
+        match self.name(id) {
+            Some(Resolved::Global(idx)) => match self.prog.data(idx) {
                 Some(data) => ArgOrigin::Data(data.display.as_str().into()),
                 None => ArgOrigin::None,
             },
@@ -276,10 +273,10 @@ impl RoutineCompiler<'_> {
             ArgKind::Optional if arg.value.is_none() => return Ok(ArgSpec::Switch),
             ArgKind::Conditional => {
                 let Some(value) = arg.value else { return Ok(ArgSpec::Absent) };
-                let ExprKind::Name(sym) = arena.expr(value).kind else {
+                let ExprKind::Name(_) = arena.expr(value).kind else {
                     return Err(self.unsupported(arg.span, "a conditional argument that is not a parameter name"));
                 };
-                return match self.name(value, sym) {
+                return match self.name(value) {
                     Some(Resolved::Local(local)) if matches!(local.kind, LocalKind::Param { optional: true, .. }) => {
                         Ok(ArgSpec::Conditional { slot: local.slot, by_ref })
                     }
@@ -334,15 +331,6 @@ impl RoutineCompiler<'_> {
         Ok(())
     }
 
-    /// Whether an argument expression is known at compile time to fit `param` among
-    /// alternatives (the checker's rule, `rapid_sema::bind::fits`).
-    fn arg_fits(&self, arena: &Arena, id: rapid_syntax::ast::ExprId, param: &ParamInfo) -> bool {
-        self.static_type(arena, id).is_some_and(|(ty, dims)| {
-            let rank = dims.iter().filter(|&&d| d > 0).count() as u8;
-            rapid_sema::bind::fits(self.prog.types, param, ty, rank)
-        })
-    }
-
     /// `Present(p)`: whether optional parameter `p` was passed.
     fn present(&mut self, arena: &Arena, args: ArgList, span: Span) -> Result<(), CompileError> {
         let value = arena.args(args).first().and_then(|a| a.value);
@@ -350,7 +338,7 @@ impl RoutineCompiler<'_> {
             ExprKind::Name(sym) => Some((v, sym)),
             _ => None,
         });
-        match name.and_then(|(v, sym)| self.name(v, sym)) {
+        match name.and_then(|(v, _)| self.name(v)) {
             Some(Resolved::Local(local)) => {
                 self.st.code.emit(Instr::Present(local.slot));
                 Ok(())
@@ -365,7 +353,7 @@ impl RoutineCompiler<'_> {
     /// execution goes on. `\Visualize` shows a message box while it waits
     /// (`builtins/io_visualize.rs`).
     fn wait_until(&mut self, arena: &Arena, info: &RoutineInfo, args: ArgList, span: Span) -> Result<(), CompileError> {
-        let bound = self.bound_args(arena, info, args);
+        let bound = self.bound_args(arena, info, args, span)?;
         let arg_of = |name: &str| {
             info.params
                 .iter()
@@ -559,7 +547,7 @@ impl RoutineCompiler<'_> {
     fn conditional_slot(&self, arena: &Arena, value: rapid_syntax::ast::ExprId) -> Result<u32, CompileError> {
         let expr = arena.expr(value);
         match expr.kind {
-            ExprKind::Name(sym) => match self.name(value, sym) {
+            ExprKind::Name(_) => match self.name(value) {
                 Some(Resolved::Local(local)) if matches!(local.kind, LocalKind::Param { optional: true, .. }) => {
                     Ok(local.slot)
                 }

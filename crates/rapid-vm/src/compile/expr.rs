@@ -48,7 +48,7 @@ impl RoutineCompiler<'_> {
                 let idx = self.st.code.constant(Value::Bool(b));
                 self.st.code.emit(Instr::Const(idx));
             }
-            ExprKind::Name(sym) => match self.name(id, sym) {
+            ExprKind::Name(_) => match self.name(id) {
                 Some(Resolved::Local(local)) => {
                     self.st.code.emit(Instr::LoadLocal(local.slot));
                 }
@@ -69,7 +69,7 @@ impl RoutineCompiler<'_> {
                 self.place(arena, id)?;
                 self.st.code.emit(Instr::LoadPlace);
             }
-            ExprKind::Call { name, args } => self.call(arena, name, args, expr.span, super::call::CallOf::Expr(id))?,
+            ExprKind::Call { args, .. } => self.call(arena, args, expr.span, super::call::CallOf::Expr(id))?,
             ExprKind::Unary { op, operand } => {
                 let start = self.mark();
                 self.expr(arena, operand, expect)?;
@@ -127,7 +127,7 @@ impl RoutineCompiler<'_> {
     fn leaf_operand(&mut self, arena: &Arena, id: ExprId, expect: Expected) -> Option<Operand> {
         let expr = *arena.expr(id);
         match expr.kind {
-            ExprKind::Name(sym) => match self.name(id, sym)? {
+            ExprKind::Name(_) => match self.name(id)? {
                 Resolved::Local(local) => Some(Operand::Local(local.slot)),
                 _ => None,
             },
@@ -265,7 +265,7 @@ impl RoutineCompiler<'_> {
     /// An array named directly (`a` in `a{i}`): (global?, slot).
     pub(crate) fn elem_root(&self, arena: &Arena, base: ExprId) -> Option<(bool, u32)> {
         match arena.expr(base).kind {
-            ExprKind::Name(sym) => match self.name(base, sym)? {
+            ExprKind::Name(_) => match self.name(base)? {
                 Resolved::Local(local) => Some((false, local.slot)),
                 Resolved::Global(idx) => Some((true, idx)),
                 _ => None,
@@ -278,7 +278,7 @@ impl RoutineCompiler<'_> {
     pub(crate) fn place(&mut self, arena: &Arena, id: ExprId) -> Result<(), CompileError> {
         let expr = *arena.expr(id);
         match expr.kind {
-            ExprKind::Name(sym) => match self.name(id, sym) {
+            ExprKind::Name(_) => match self.name(id) {
                 Some(Resolved::Local(local)) => {
                     self.st.code.emit(Instr::PlaceLocal(local.slot));
                 }
@@ -331,12 +331,12 @@ impl RoutineCompiler<'_> {
             Some(ExprType::Of { ty, rank }) => return Some((ty, expected_dims(rank, [0; 3]))),
             None => {}
         }
-        // Compiled without the checker's facts (or the checker gave no type).
+        // Data references and calls: through what the checker resolved.
         match expr.kind {
-            ExprKind::Name(sym) => match self.name(id, sym)? {
+            ExprKind::Name(_) => match self.name(id)? {
                 Resolved::Local(local) => Some((local.ty, expected_dims(local.rank, local.dims))),
                 Resolved::Global(idx) => {
-                    let data = &self.prog.datas[idx as usize];
+                    let data = self.prog.data(idx)?;
                     Some((data.ty, expected_dims(data.rank, data.dims)))
                 }
                 _ => None,
@@ -350,34 +350,7 @@ impl RoutineCompiler<'_> {
                 }
             }
             ExprKind::Paren(inner) => self.static_type(arena, inner),
-            // An operator on an alias gives the alias's base type, as the checker
-            // says (§1.3.5, footnote ii of the arithmetic table: -d of a distance d
-            // is a num).
-            ExprKind::Unary { operand, .. } => {
-                self.static_type(arena, operand).map(|(ty, dims)| (self.prog.types.value_of(ty), dims))
-            }
-            // Arithmetic keeps a record operand's type (pos * num is a pos, orient *
-            // orient an orient), as its base type; num with dnum is a dnum (§1.3.5,
-            // as the checker says). Comparisons and logic give no aggregate context.
-            ExprKind::Binary { op, lhs, rhs } => {
-                use rapid_syntax::ast::BinaryOp as B;
-                if !matches!(op, B::Add | B::Sub | B::Mul | B::Div | B::IntDiv | B::Mod) {
-                    return None;
-                }
-                let (l, r) = (self.static_type(arena, lhs), self.static_type(arena, rhs));
-                let types = self.prog.types;
-                let is_record = |t: &Expected| t.is_some_and(|(ty, _)| types.record_fields(ty).is_some());
-                let is_dnum = |t: &Expected| t.is_some_and(|(ty, _)| types.atomic(ty) == Some(Atomic::Dnum));
-                let operand = if is_record(&l) {
-                    l
-                } else if is_record(&r) || is_dnum(&r) {
-                    r
-                } else {
-                    l.or(r)
-                };
-                operand.map(|(ty, dims)| (types.value_of(ty), dims))
-            }
-            ExprKind::Call { name, .. } => match self.callee(super::call::CallOf::Expr(id), name)? {
+            ExprKind::Call { .. } => match self.callee(super::call::CallOf::Expr(id))? {
                 Resolved::Routine(idx) => self.prog.routines[idx as usize].ret.map(|t| (t, [0; 3])),
                 _ => None,
             },

@@ -71,13 +71,13 @@ impl RoutineCompiler<'_> {
     /// to the general code.
     fn kernel_target(&self, arena: &Arena, target: ExprId, ops: &mut Vec<KernelOp>) -> Option<KernelTarget> {
         match arena.expr(target).kind {
-            ExprKind::Name(sym) => match self.name(target, sym)? {
+            ExprKind::Name(_) => match self.name(target)? {
                 Resolved::Local(local) if self.is_num(local.ty) && local.rank == 0 => {
                     (!matches!(local.kind, LocalKind::Param { mode: ParamMode::Pers, .. }))
                         .then_some(KernelTarget::Local(local.slot))
                 }
                 Resolved::Global(idx) => {
-                    let data = &self.prog.datas[idx as usize];
+                    let data = self.prog.data(idx)?;
                     (data.kind == DataKind::Var && data.rank == 0 && self.is_num(data.ty))
                         .then_some(KernelTarget::Global(idx))
                 }
@@ -101,7 +101,7 @@ impl RoutineCompiler<'_> {
                 let value = num_value(expr.span.text(self.text))?;
                 ops.push(KernelOp::Const(value as f32));
             }
-            (ExprKind::Name(sym), Kind::Num) => ops.push(self.kernel_leaf(id, sym)?),
+            (ExprKind::Name(_), Kind::Num) => ops.push(self.kernel_leaf(id)?),
             (ExprKind::Index { base, indices }, Kind::Num) => {
                 let (global, slot) = self.num_array_1d(arena, base, false)?;
                 let [index] = arena.list(indices) else { return None };
@@ -135,11 +135,11 @@ impl RoutineCompiler<'_> {
     }
 
     /// A num datum read by name.
-    fn kernel_leaf(&self, id: ExprId, sym: rapid_syntax::Symbol) -> Option<KernelOp> {
-        match self.name(id, sym)? {
+    fn kernel_leaf(&self, id: ExprId) -> Option<KernelOp> {
+        match self.name(id)? {
             Resolved::Local(local) if self.is_num(local.ty) && local.rank == 0 => Some(KernelOp::Local(local.slot)),
             Resolved::Global(idx) => {
-                let data = &self.prog.datas[idx as usize];
+                let data = self.prog.data(idx)?;
                 (data.rank == 0
                     && self.is_num(data.ty)
                     && matches!(data.kind, DataKind::Var | DataKind::Pers | DataKind::Const))
@@ -152,11 +152,11 @@ impl RoutineCompiler<'_> {
     /// A one-dimensional num array named directly: (global?, slot). For writes, module
     /// data must be a VAR.
     fn num_array_1d(&self, arena: &Arena, base: ExprId, write: bool) -> Option<(bool, u32)> {
-        let ExprKind::Name(sym) = arena.expr(base).kind else { return None };
-        match self.name(base, sym)? {
+        let ExprKind::Name(_) = arena.expr(base).kind else { return None };
+        match self.name(base)? {
             Resolved::Local(local) => (self.is_num(local.ty) && local.rank == 1).then_some((false, local.slot)),
             Resolved::Global(idx) => {
-                let data = &self.prog.datas[idx as usize];
+                let data = self.prog.data(idx)?;
                 let kind_ok = if write { data.kind == DataKind::Var } else { data.kind != DataKind::LoopVar };
                 (kind_ok && data.rank == 1 && self.is_num(data.ty)).then_some((true, idx))
             }

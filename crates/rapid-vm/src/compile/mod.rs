@@ -1,8 +1,11 @@
 //! From checked syntax trees to `Code`: names become slots, data references become
 //! places, calls become call sites, statements become jumps (§1.1–§1.5).
 //!
-//! The program has passed `rapid_sema::analyze` without errors, so the compiler
-//! trusts types and arity; what it cannot run yet it refuses with a clear message.
+//! The compiler is the checker's `rapid_sema::BodySink` (`stream.rs`): each item comes
+//! with what the checker resolved in it (`rapid_sema::ItemFacts`: what each name and
+//! call denotes, the parameter of each argument, the type of each expression), and
+//! the compiler resolves nothing itself. The program has no errors, so it trusts
+//! types and arity; what it cannot run yet it refuses with a clear message.
 
 mod body;
 pub(crate) mod call;
@@ -17,7 +20,7 @@ use rapid_sema::symbols::{DataKind, DeclOrigin, Def};
 use rapid_sema::types::{Atomic, TypeId, TypeKind, Types};
 use rapid_sema::{ItemFacts, Program, Tables};
 use rapid_syntax::ast::{Arena, DataDecl, Item, Module, ParamMode, Routine, Section};
-use rapid_syntax::{Interner, Span, Symbol};
+use rapid_syntax::{Span, Symbol};
 use rustc_hash::FxHashMap;
 
 use crate::ir::{Code, Instr};
@@ -65,18 +68,13 @@ pub(crate) enum LocalKind {
     Temp,
 }
 
-/// Compiles every user routine and the global initialisers.
-/// Routines compiled while the checker worked through their bodies (`streamed`, from a
-/// [`StreamCompiler`]) are taken as they are; those whose bodies the trees leave out (an
-/// outline, `rapid_syntax::parse_outline`) are parsed from their text as they are
-/// compiled, with `interner`, the one that spelled the program.
+/// Puts together every user routine and the global initialisers, as they were compiled
+/// while the checker worked through the program (`streamed`, from a
+/// [`StreamCompiler`]): the compiler resolves nothing itself.
 pub fn compile(
     prog: &Program,
     modules: &[ModuleSource<'_>],
     builtins: &crate::builtins::Builtins,
-    builtin_module: &Module,
-    builtin_text: &str,
-    interner: &mut Interner,
     mut streamed: Streamed,
 ) -> Result<Compiled, Vec<CompileError>> {
     let mut errors = Vec::new();
@@ -104,27 +102,22 @@ pub fn compile(
     }
     let global_defaults: Vec<Value> =
         prog.datas.iter().map(|d| default_value(prog, d.ty, &d.dims[..d.rank as usize])).collect();
-    let init = compile_init(prog, modules, builtins, builtin_module, builtin_text, &mut errors, None);
+    let init = match streamed.take_init() {
+        Some((state, mut init_errors)) => {
+            errors.append(&mut init_errors);
+            state
+        }
+        // No module data has an initial value: the catalogue's alone.
+        None => catalogue_init(prog.tables(), builtins, &mut errors),
+    };
+    let init = finish_init(prog.tables(), builtins, init);
     let mut routines: Vec<Option<Code>> = vec![None; prog.routines.len()];
     for (idx, info) in prog.routines.iter().enumerate() {
-        let DeclOrigin::Module { module, item } = info.origin else { continue };
-        let Some(source) = modules.get(module) else { continue };
-        let Some(Item::Routine(routine)) = source.module.items.get(item) else { continue };
-        if let Some(compiled) = streamed.take(idx) {
-            match compiled {
-                Ok(code) => routines[idx] = Some(code),
-                Err(mut errs) => errors.append(&mut errs),
-            }
-            continue;
-        }
-        let mut rc = RoutineCompiler::new(prog.tables(), builtins, module, source.file, source.text);
-        let compiled = match routine.body {
-            Some(_) => rc.routine(routine),
-            None => rc.routine_from_text(routine, interner),
-        };
-        match compiled {
-            Ok(code) => routines[idx] = Some(code),
-            Err(mut errs) => errors.append(&mut errs),
+        let DeclOrigin::Module { module, .. } = info.origin else { continue };
+        match streamed.take(idx) {
+            Some(Ok(code)) => routines[idx] = Some(code),
+            Some(Err(mut errs)) => errors.append(&mut errs),
+            None => errors.push(not_streamed(modules, module, &info.display)),
         }
     }
     if errors.is_empty() {
@@ -144,15 +137,15 @@ pub struct CompiledModule {
 }
 
 /// Compiles module `module` (an index into `modules`) of a program that is already
-/// running: only its routines and its data's initial values (Load, WaitLoad).
+/// running: only its routines and its data's initial values (Load, WaitLoad), as
+/// the checker's stream compiled them ([`StreamCompiler::for_modules`]).
 pub fn compile_module(
     prog: &Program,
     modules: &[ModuleSource<'_>],
     module: usize,
     builtins: &crate::builtins::Builtins,
+    streamed: &mut Streamed,
 ) -> Result<CompiledModule, Vec<CompileError>> {
-    let (_, catalogue) = rapid_sema::catalogue();
-    let (builtin_module, builtin_text) = (&catalogue.module, catalogue.text.as_str());
     let mut errors = Vec::new();
     let mine = |origin: DeclOrigin| matches!(origin, DeclOrigin::Module { module: m, .. } if m == module);
     let mut defaults = Vec::new();
@@ -169,16 +162,19 @@ pub fn compile_module(
     if !errors.is_empty() {
         return Err(errors);
     }
-    let init = compile_init(prog, modules, builtins, builtin_module, builtin_text, &mut errors, Some(module));
+    let init = match streamed.take_module_init(module) {
+        Some((state, mut init_errors)) => {
+            errors.append(&mut init_errors);
+            finish_init(prog.tables(), builtins, state)
+        }
+        None => finish_init(prog.tables(), builtins, load_state()),
+    };
     let mut routines = Vec::new();
     for (idx, info) in prog.routines.iter().enumerate().filter(|(_, r)| mine(r.origin)) {
-        let DeclOrigin::Module { module, item } = info.origin else { continue };
-        let Some(source) = modules.get(module) else { continue };
-        let Some(Item::Routine(routine)) = source.module.items.get(item) else { continue };
-        let mut rc = RoutineCompiler::new(prog.tables(), builtins, module, source.file, source.text);
-        match rc.routine(routine) {
-            Ok(code) => routines.push((idx as u32, code)),
-            Err(mut errs) => errors.append(&mut errs),
+        match streamed.take(idx) {
+            Some(Ok(code)) => routines.push((idx as u32, code)),
+            Some(Err(mut errs)) => errors.append(&mut errs),
+            None => errors.push(not_streamed(modules, module, &info.display)),
         }
     }
     if errors.is_empty() {
@@ -188,50 +184,49 @@ pub fn compile_module(
     }
 }
 
-/// The code run at load: initial values of predefined and module data, in order
-/// (of module `only`'s data alone when given).
-fn compile_init(
-    prog: &Program,
-    modules: &[ModuleSource<'_>],
-    builtins: &crate::builtins::Builtins,
-    builtin_module: &Module,
-    builtin_text: &str,
-    errors: &mut Vec<CompileError>,
-    only: Option<usize>,
-) -> Code {
-    let mut init = RoutineCompiler::new(prog.tables(), builtins, usize::MAX, usize::MAX, builtin_text);
-    init.st.code.name = "<load>".into();
-    for (idx, data) in prog.datas.iter().enumerate() {
-        if only.is_some_and(|m| !matches!(data.origin, DeclOrigin::Module { module, .. } if module == m)) {
-            continue;
-        }
-        let (decl, arena, text, module, file) = match data.origin {
-            DeclOrigin::Builtin(item) => match builtin_module.items.get(item) {
-                Some(Item::Data(decl)) => (decl, &builtin_module.arena, builtin_text, usize::MAX, usize::MAX),
-                _ => continue,
-            },
-            DeclOrigin::Module { module, item } => match modules.get(module).map(|m| (m, m.module.items.get(item))) {
-                Some((m, Some(Item::Data(decl)))) => (decl, &m.module.arena, m.text, module, m.file),
-                _ => continue,
-            },
-            DeclOrigin::Routine => continue,
-        };
-        let Some(init_expr) = decl.init else { continue };
-        init.module = module;
-        init.file = file;
-        init.st.code.file = file;
-        init.text = text;
-        let expect = Some((data.ty, data.dims));
-        match init.expr(arena, init_expr, expect) {
-            Ok(()) => {
-                init.st.code.emit(Instr::StoreGlobal(idx as u32));
-            }
-            Err(e) => errors.push(e),
-        }
+/// A routine the checker did not hand over: it stopped at an error before it (one
+/// the stream does not go past), so the task does not load.
+fn not_streamed(modules: &[ModuleSource<'_>], module: usize, name: &str) -> CompileError {
+    CompileError {
+        file: modules.get(module).map_or(usize::MAX, |m| m.file),
+        span: Span::default(),
+        message: format!("`{name}` was not compiled: the program does not check"),
     }
-    init.st.code.emit(Instr::Return);
-    init.finish_locals();
-    init.st.code
+}
+
+/// The load code before anything is compiled into it.
+pub(crate) fn load_state() -> RoutineState {
+    let mut st = RoutineState::new(usize::MAX);
+    st.code.name = "<load>".into();
+    st
+}
+
+/// The start of the code run at load: the initial values of predefined (catalogue)
+/// data, in order. They are literals (the catalogue's declarations), so nothing in
+/// them is resolved.
+pub(crate) fn catalogue_init(
+    prog: Tables<'_>,
+    builtins: &crate::builtins::Builtins,
+    errors: &mut Vec<CompileError>,
+) -> RoutineState {
+    let (_, catalogue) = rapid_sema::catalogue();
+    let mut init = RoutineCompiler::new(prog, builtins, usize::MAX, &catalogue.text);
+    init.st = load_state();
+    for (idx, data) in prog.datas.iter().enumerate() {
+        let DeclOrigin::Builtin(item) = data.origin else { continue };
+        let Some(Item::Data(decl)) = catalogue.module.items.get(item) else { continue };
+        let Some(value) = decl.init else { continue };
+        init.data_init(idx as u32, value, &catalogue.module.arena, errors);
+    }
+    init.st
+}
+
+/// The code run at load, its initial values compiled in `init`.
+fn finish_init(prog: Tables<'_>, builtins: &crate::builtins::Builtins, init: RoutineState) -> Code {
+    let mut rc = RoutineCompiler { prog, builtins, file: usize::MAX, text: "", facts: None, st: init };
+    rc.st.code.emit(Instr::Return);
+    rc.finish_locals();
+    rc.st.code
 }
 
 /// Arrays may hold at most this many elements (the one table of limits; the checker
@@ -313,7 +308,6 @@ pub(crate) struct RoutineCompiler<'p> {
     pub(crate) prog: Tables<'p>,
     /// The built-ins call sites are resolved in (the set the task runs with).
     pub(crate) builtins: &'p crate::builtins::Builtins,
-    pub(crate) module: usize,
     pub(crate) file: usize,
     pub(crate) text: &'p str,
     /// What the checker resolved in the body item being compiled, when it streams it.
@@ -326,11 +320,9 @@ pub(crate) struct RoutineCompiler<'p> {
 /// What a routine's compilation owns, apart from what it borrows of the program.
 pub(crate) struct RoutineState {
     pub(crate) code: Code,
-    pub(crate) locals: FxHashMap<Symbol, Local>,
     /// The routine's own data (parameters, data declarations, FOR variables) in the
     /// order they are declared: the checker's numbering (`rapid_sema::Denotes::Local`).
     pub(crate) own_data: Vec<Local>,
-    pub(crate) loop_vars: Vec<(Symbol, Local)>,
     pub(crate) labels: FxHashMap<Symbol, u32>,
     pub(crate) gotos: Vec<(u32, Symbol, Span)>,
     pub(crate) n_locals: u32,
@@ -360,9 +352,7 @@ impl RoutineState {
     fn new(file: usize) -> RoutineState {
         RoutineState {
             code: Code { file, ..Code::default() },
-            locals: FxHashMap::default(),
             own_data: Vec::new(),
-            loop_vars: Vec::new(),
             labels: FxHashMap::default(),
             gotos: Vec::new(),
             n_locals: 0,
@@ -393,11 +383,10 @@ impl<'p> RoutineCompiler<'p> {
     pub(crate) fn new(
         prog: Tables<'p>,
         builtins: &'p crate::builtins::Builtins,
-        module: usize,
         file: usize,
         text: &'p str,
     ) -> RoutineCompiler<'p> {
-        RoutineCompiler { prog, builtins, module, file, text, facts: None, st: RoutineState::new(file) }
+        RoutineCompiler { prog, builtins, file, text, facts: None, st: RoutineState::new(file) }
     }
 
     pub(crate) fn error(&self, span: Span, message: impl Into<String>) -> CompileError {
@@ -426,33 +415,10 @@ impl<'p> RoutineCompiler<'p> {
             .collect();
     }
 
-    /// What a name denotes here: a local slot, or a global definition.
-    pub(crate) fn resolve(&self, sym: Symbol) -> Option<Resolved> {
-        if let Some((_, local)) = self.st.loop_vars.iter().rev().find(|(s, _)| *s == sym) {
-            return Some(Resolved::Local(*local));
-        }
-        if let Some(local) = self.st.locals.get(&sym) {
-            return Some(Resolved::Local(*local));
-        }
-        let def = if self.module == usize::MAX {
-            self.prog.scopes.builtins.get(&sym).copied().or_else(|| self.prog.scopes.globals.get(&sym).map(|o| o.def))
-        } else {
-            self.prog.scopes.lookup_module_level(self.module, sym)
-        };
-        match def? {
-            Def::Data(idx) => Some(Resolved::Global(idx)),
-            Def::Routine(idx) => Some(Resolved::Routine(idx)),
-            Def::Type(ty) => Some(Resolved::Type(ty)),
-        }
-    }
-
-    /// What name expression `id`, spelled `sym`, denotes: what the checker found,
-    /// when it streamed the item, else the name looked up here.
-    pub(crate) fn name(&self, id: rapid_syntax::ast::ExprId, sym: Symbol) -> Option<Resolved> {
-        match self.facts.and_then(|facts| facts.name(id)) {
-            Some(denotes) => self.denoted(denotes),
-            None => self.resolve(sym),
-        }
+    /// What name expression `id` denotes: what the checker found (nothing when it
+    /// found nothing, or compiled no facts: the catalogue's literals).
+    pub(crate) fn name(&self, id: rapid_syntax::ast::ExprId) -> Option<Resolved> {
+        self.facts.and_then(|facts| facts.name(id)).and_then(|denotes| self.denoted(denotes))
     }
 
     /// What the checker's `denotes` is here.
@@ -462,19 +428,20 @@ impl<'p> RoutineCompiler<'p> {
             rapid_sema::Denotes::Local(n) => self.st.own_data.get(n as usize).map(|local| Resolved::Local(*local)),
             rapid_sema::Denotes::Decl(Def::Data(idx)) => Some(Resolved::Global(idx)),
             rapid_sema::Denotes::Decl(Def::Routine(idx)) => Some(Resolved::Routine(idx)),
-            rapid_sema::Denotes::Decl(Def::Type(ty)) => Some(Resolved::Type(ty)),
+            rapid_sema::Denotes::Decl(Def::Type(_)) => Some(Resolved::Type),
         }
     }
 
-    pub(crate) fn declare_params(&mut self, routine: &Routine) {
-        for param in routine.params.iter().filter(|p| p.placeholder.is_none()) {
-            let ty = match self.resolve(param.ty.sym) {
-                Some(Resolved::Type(ty)) => ty,
-                _ => rapid_sema::types::SWITCH,
-            };
+    /// The routine's parameters, `params` as the checker declared them (placeholders
+    /// left out, as here).
+    pub(crate) fn declare_params(&mut self, routine: &Routine, params: &[rapid_sema::symbols::ParamInfo]) {
+        let declared = routine.params.iter().filter(|p| p.placeholder.is_none());
+        for (param, info) in declared.zip(params) {
+            // A type that resolves to nothing is taken as a switch (what the compiler
+            // did when it looked the name up itself); such a routine does not check.
+            let ty = if info.ty == rapid_sema::types::ERROR { rapid_sema::types::SWITCH } else { info.ty };
             let kind = LocalKind::Param { mode: param.mode, optional: param.optional };
             let local = self.new_local(ty, [0; 3], param.rank, kind);
-            self.st.locals.insert(param.name.sym, local);
             self.st.own_data.push(local);
             self.st.code.local_names.push((param.name.span.text(self.text).to_owned(), local.slot));
             let by_ref = param.mode != ParamMode::In;
@@ -491,9 +458,8 @@ impl<'p> RoutineCompiler<'p> {
     }
 
     fn routine_data(&mut self, decl: &DataDecl, arena: &Arena) -> Result<(), CompileError> {
-        let ty = match self.resolve(decl.ty.sym) {
-            Some(Resolved::Type(ty)) => ty,
-            _ => return Err(self.error(decl.ty.span, "unknown data type")),
+        let Some(ty) = self.facts.and_then(|facts| facts.declared()) else {
+            return Err(self.error(decl.ty.span, "unknown data type"));
         };
         let mut dims = [0u32; 3];
         for (slot, &dim) in dims.iter_mut().zip(&decl.dims) {
@@ -504,7 +470,6 @@ impl<'p> RoutineCompiler<'p> {
             return Err(self.error(decl.span, array_too_large(decl.name.span.text(self.text), n)));
         }
         let local = self.new_local(ty, dims, rank, LocalKind::Data);
-        self.st.locals.insert(decl.name.sym, local);
         self.st.own_data.push(local);
         self.st.code.local_names.push((decl.name.span.text(self.text).to_owned(), local.slot));
         if decl.storage == rapid_syntax::ast::Storage::Const {
@@ -517,12 +482,31 @@ impl<'p> RoutineCompiler<'p> {
         Ok(())
     }
 
+    /// Code storing the initial value `value` (in `arena`) of global data `data`
+    /// into it, in the load code being compiled.
+    pub(crate) fn data_init(
+        &mut self,
+        data: u32,
+        value: rapid_syntax::ast::ExprId,
+        arena: &Arena,
+        errors: &mut Vec<CompileError>,
+    ) {
+        self.st.code.file = self.file;
+        let Some(info) = self.prog.data(data) else { return };
+        match self.expr(arena, value, Some((info.ty, info.dims))) {
+            Ok(()) => {
+                self.st.code.emit(Instr::StoreGlobal(data));
+            }
+            Err(e) => errors.push(e),
+        }
+    }
+
     fn const_dim(&self, arena: &Arena, dim: rapid_syntax::ast::ExprId) -> Result<u32, CompileError> {
         let expr = arena.expr(dim);
         let value = match expr.kind {
             rapid_syntax::ast::ExprKind::Num => rapid_syntax::literal::num_value(expr.span.text(self.text)),
-            rapid_syntax::ast::ExprKind::Name(sym) => match self.name(dim, sym) {
-                Some(Resolved::Global(idx)) => self.prog.datas[idx as usize].const_value,
+            rapid_syntax::ast::ExprKind::Name(_) => match self.name(dim) {
+                Some(Resolved::Global(idx)) => self.prog.data(idx).and_then(|d| d.const_value),
                 _ => None,
             },
             _ => None,
@@ -539,9 +523,9 @@ impl<'p> RoutineCompiler<'p> {
             rapid_syntax::ast::ExprKind::Num => {
                 rapid_syntax::literal::num_value(expr.span.text(self.text)).map(|v| v as i32)
             }
-            rapid_syntax::ast::ExprKind::Name(sym) => match self.name(id, sym) {
+            rapid_syntax::ast::ExprKind::Name(_) => match self.name(id) {
                 Some(Resolved::Global(idx)) => {
-                    let data = &self.prog.datas[idx as usize];
+                    let data = self.prog.data(idx)?;
                     if data.kind == DataKind::Const {
                         data.const_value.map(|v| v as i32).or(Some(-(idx as i32) - 1))
                     } else {
@@ -582,5 +566,5 @@ pub(crate) enum Resolved {
     Local(Local),
     Global(u32),
     Routine(u32),
-    Type(TypeId),
+    Type,
 }

@@ -21,7 +21,7 @@ impl RoutineCompiler<'_> {
         let range_idx = self.st.code.stmts.len();
         let start = self.st.code.here();
         let calls = match &stmt.kind {
-            StmtKind::Call { name, .. } => match self.callee(CallOf::Stmt(name.span.start), name.sym) {
+            StmtKind::Call { name, .. } => match self.callee(CallOf::Stmt(name.span.start)) {
                 Some(Resolved::Routine(idx)) if self.prog.routines[idx as usize].chapter.is_none() => Some(idx),
                 _ => None,
             },
@@ -39,9 +39,7 @@ impl RoutineCompiler<'_> {
     fn stmt_kind(&mut self, arena: &Arena, stmt: &Stmt, errors: &mut Vec<CompileError>) -> Result<(), CompileError> {
         match &stmt.kind {
             StmtKind::Assign { target, value } => self.assign(arena, *target, *value)?,
-            StmtKind::Call { name, args } => {
-                self.call(arena, name.sym, *args, stmt.span, CallOf::Stmt(name.span.start))?
-            }
+            StmtKind::Call { name, args } => self.call(arena, *args, stmt.span, CallOf::Stmt(name.span.start))?,
             StmtKind::LateCall { callee, args } => {
                 self.expr(arena, *callee, None)?;
                 let site = CallSite { callee: Callee::Late, args: Vec::new(), n_pushed: 0, late_args: Vec::new() };
@@ -85,7 +83,7 @@ impl RoutineCompiler<'_> {
                 let here = self.st.code.here();
                 self.patch_all(&skip, here);
             }
-            StmtKind::For { var, from, to, step, body } => {
+            StmtKind::For { from, to, step, body, .. } => {
                 let num = self.prog.core.num;
                 self.expr(arena, *from, None)?;
                 self.expr(arena, *to, None)?;
@@ -97,11 +95,9 @@ impl RoutineCompiler<'_> {
                 self.new_local(num, [0; 3], 0, LocalKind::Temp);
                 self.st.code.emit(Instr::ForInit { var: local.slot, has_step: step.is_some() });
                 let check = self.st.code.emit(Instr::ForCheck { var: local.slot, exit: 0 });
-                self.st.loop_vars.push((var.sym, local));
                 self.st.own_data.push(local);
                 self.st.loops.push(super::LoopJumps::default());
                 self.stmt_list(arena, body, errors);
-                self.st.loop_vars.pop();
                 let next = self.st.code.emit(Instr::ForNext { var: local.slot, check });
                 let exit = self.st.code.here();
                 self.st.code.patch(check, exit);
@@ -193,7 +189,8 @@ impl RoutineCompiler<'_> {
                 self.st.code.emit(Instr::Exit);
             }
             StmtKind::Connect { target, trap } => {
-                let Some(super::Resolved::Routine(idx)) = self.resolve(trap.sym) else {
+                let found = self.facts.and_then(|facts| facts.procedure(trap.span.start));
+                let Some(super::Resolved::Routine(idx)) = found.and_then(|denotes| self.denoted(denotes)) else {
                     return Err(self.error(trap.span, "CONNECT needs a TRAP routine"));
                 };
                 self.place(arena, *target)?;
@@ -260,7 +257,7 @@ impl RoutineCompiler<'_> {
     ) -> Result<(), CompileError> {
         let expect = self.static_type(arena, target);
         match arena.expr(target).kind {
-            ExprKind::Name(sym) => match self.name(target, sym) {
+            ExprKind::Name(_) => match self.name(target) {
                 Some(Resolved::Local(local)) => {
                     self.expr(arena, value, expect)?;
                     self.st.code.emit(Instr::StoreLocal(local.slot));

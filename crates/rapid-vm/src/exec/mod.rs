@@ -21,6 +21,7 @@ mod interrupts;
 mod kernel;
 mod late;
 mod log;
+mod module_check;
 pub mod modules;
 mod num;
 mod repeat;

@@ -3,9 +3,11 @@
 //! are in `builtins::modules`).
 //!
 //! The task's program is kept as sources: the files it started with, then every module
-//! loaded since, in load order. Linking a module checks and compiles that list again
-//! with the new file last, so the module is checked against the task's global scope plus
-//! itself. The checker numbers types, module-level data and routines in module order and
+//! loaded since, in load order. Linking a module checks that list again with the new
+//! file last, so the module is checked against the task's global scope plus itself, and
+//! compiles it (and the loaded modules, linked again) as the checker goes through them
+//! (`compile::StreamCompiler::for_modules`): with the checker's resolution, and no
+//! module's tree held whole. The checker numbers types, module-level data and routines in module order and
 //! routine data after all of them; so with the new module last, everything that existed
 //! keeps its number and the module's declarations get the next ones. Its global data
 //! takes slots that the previous check gave to routine data, which the VM never keeps in
@@ -21,9 +23,10 @@ use std::path::PathBuf;
 use std::rc::Rc;
 
 use rapid_sema::symbols::{DataKind, DeclOrigin, Def};
-use rapid_sema::{analyze, Code as DiagCode, Diagnostic, Options, Program, Severity, SourceInput};
+use rapid_sema::{Code as DiagCode, Diagnostic, Options, Program, Severity, SourceInput};
 use rapid_syntax::ast::{Item, Module, RoutineKind};
 
+use super::module_check::{check, Checked};
 use super::{Exit, Unhandled, Vm};
 use crate::builtins::modules::{LoadFile, ModuleRequest};
 use crate::compile::{self, ModuleSource};
@@ -76,42 +79,6 @@ struct Unit {
     init: Rc<Code>,
     /// Persistent values when loaded or last saved (UnLoad \ErrIfChanged).
     saved_pers: Vec<(u32, Value)>,
-}
-
-/// A program checked and parsed again, ready to compile one module of.
-struct Checked {
-    prog: Program,
-    diagnostics: Vec<Diagnostic>,
-    files: Vec<SourceInput>,
-    parses: Vec<(usize, rapid_syntax::Parse)>,
-}
-
-impl Checked {
-    fn modules(&self) -> Vec<ModuleSource<'_>> {
-        self.parses
-            .iter()
-            .flat_map(|(file, parse)| {
-                parse.file.modules.iter().map(move |module| ModuleSource {
-                    file: *file,
-                    text: &self.files[*file].text,
-                    module,
-                })
-            })
-            .collect()
-    }
-}
-
-/// Checks `files` as one task; `None` when the checker gave up.
-fn check(files: Vec<SourceInput>, options: &Options) -> Result<Checked, Vec<Diagnostic>> {
-    let analysis = analyze(&files, options);
-    let Some(mut prog) = analysis.program else { return Err(analysis.diagnostics) };
-    let parses = files
-        .iter()
-        .enumerate()
-        .filter(|(_, f)| f.unreadable.is_none())
-        .map(|(idx, f)| (idx, rapid_syntax::parse(&f.text, &mut prog.interner)))
-        .collect();
-    Ok(Checked { prog, diagnostics: analysis.diagnostics, files, parses })
 }
 
 /// A name the checker could not resolve: a link error, not a syntax error.
@@ -329,15 +296,20 @@ impl Vm {
         let mut files = self.modules.sources();
         files.push(file.source.clone());
         let new_file = files.len() - 1;
-        let checked = match check(files.clone(), &self.modules.options) {
+        let module_idx = self.modules.base_modules.len() + self.modules.units.len();
+        // The new module, and the loaded ones linked again (`relink_units`).
+        let mut wanted = self.live_unit_modules();
+        wanted.push(module_idx);
+        let builtins = self.builtins.clone();
+        let mut checked = match check(files.clone(), &self.modules.options, Some((&builtins, &wanted))) {
             Ok(checked) => checked,
             Err(diags) => return Err(self.error(Err::Syntax, self.no_check(&name, &files, &diags, new_file))),
         };
         self.refuse_diagnostics(&name, &checked, new_file, check_ref)?;
-        let module_idx = self.modules.base_modules.len() + self.modules.units.len();
+        let mut streamed = std::mem::take(&mut checked.streamed);
         let modules = checked.modules();
-        let compiled =
-            compile::compile_module(&checked.prog, &modules, module_idx, &self.builtins).map_err(|errs| {
+        let compiled = compile::compile_module(&checked.prog, &modules, module_idx, &self.builtins, &mut streamed)
+            .map_err(|errs| {
                 let why: Vec<String> = errs.iter().take(QUOTED_DIAGNOSTICS).map(|e| e.message.clone()).collect();
                 self.error(Err::Syntax, format!("module `{name}` cannot be run: {}", why.join("; ")))
             })?;
@@ -346,7 +318,7 @@ impl Vm {
         self.install(&checked.prog, compiled.routines, &compiled.defaults, &routines, &datas);
         let qualified = crate::qualified_procs(&checked.prog, &modules);
         self.procs_by_name.extend(qualified.into_iter().filter(|(_, idx)| routines.contains(idx)));
-        self.relink_units(&checked, &modules);
+        self.relink_units(&checked, &modules, &mut streamed);
         let init = Rc::new(compiled.init);
         self.resources.devices.set_modules(
             self.resources
@@ -380,11 +352,10 @@ impl Vm {
     /// Compiles the other loaded modules again: a name they use may now be declared by
     /// the new module (one unloaded and loaded again has new data slots). Frames already
     /// running keep the code they started with.
-    fn relink_units(&mut self, checked: &Checked, modules: &[ModuleSource<'_>]) {
-        let n_base = self.modules.base_modules.len();
-        let live: Vec<usize> = (0..self.modules.units.len()).filter(|&u| self.modules.units[u].live).collect();
-        for unit in live {
-            let Ok(compiled) = compile::compile_module(&checked.prog, modules, n_base + unit, &self.builtins) else {
+    fn relink_units(&mut self, checked: &Checked, modules: &[ModuleSource<'_>], streamed: &mut compile::Streamed) {
+        for module in self.live_unit_modules() {
+            let compiled = compile::compile_module(&checked.prog, modules, module, &self.builtins, streamed);
+            let Ok(compiled) = compiled else {
                 continue;
             };
             for (idx, code) in compiled.routines {
@@ -393,6 +364,12 @@ impl Vm {
                 }
             }
         }
+    }
+
+    /// The module indices (in the checker's order) of the modules loaded and still live.
+    fn live_unit_modules(&self) -> Vec<usize> {
+        let n_base = self.modules.base_modules.len();
+        (0..self.modules.units.len()).filter(|&u| self.modules.units[u].live).map(|u| n_base + u).collect()
     }
 
     /// The ERR_SYNTAX message of a module the checker rejected outright.
@@ -587,10 +564,12 @@ impl Vm {
         // Loaded modules compiled again without it: a call of one of its procedures then
         // raises ERR_REFUNKPRC, as a call of a procedure defined nowhere does. (Code
         // using its data no longer compiles and is kept; CheckProgRef reports it.)
-        match check(self.modules.sources(), &self.modules.options) {
-            Ok(checked) => {
+        let (wanted, builtins) = (self.live_unit_modules(), self.builtins.clone());
+        match check(self.modules.sources(), &self.modules.options, Some((&builtins, &wanted))) {
+            Ok(mut checked) => {
+                let mut streamed = std::mem::take(&mut checked.streamed);
                 let modules = checked.modules();
-                self.relink_units(&checked, &modules);
+                self.relink_units(&checked, &modules, &mut streamed);
                 self.refresh_symbols(Some(&checked));
             }
             Err(_) => self.refresh_symbols(None),
@@ -620,7 +599,7 @@ impl Vm {
             // uncertain: erasing a module that is not in the task raises ERR_MODULE.
             return Err(self.error(Err::Module, format!("no module `{name}` is loaded")));
         };
-        let checked = check(self.modules.sources(), &self.modules.options)
+        let checked = check(self.modules.sources(), &self.modules.options, None)
             .map_err(|_| self.error(Err::Module, "the task's program does not check"))?;
         let (routines, datas) = members(&checked.prog, idx);
         if self.runs_any(&routines) {
@@ -669,7 +648,7 @@ impl Vm {
                 .find(|m| m.live && m.name.eq_ignore_ascii_case(name))
                 .map(|m| (m.file, m.index))?,
         };
-        let checked = check(self.modules.sources(), &self.modules.options).ok()?;
+        let checked = check(self.modules.sources(), &self.modules.options, None).ok()?;
         Some(self.module_text(&checked, file, index, unit.is_some()))
     }
 
@@ -702,7 +681,7 @@ impl Vm {
             }
         };
         let (host, shown) = dest.unwrap_or(own);
-        let checked = check(self.modules.sources(), &self.modules.options)
+        let checked = check(self.modules.sources(), &self.modules.options, None)
             .map_err(|_| self.error(Err::IoError, "the task's program does not check"))?;
         let text = self.module_text(&checked, file, index, unit.is_some());
         self.resources
@@ -749,7 +728,7 @@ impl Vm {
     /// `CheckProgRef`: ERR_LINKREF when some reference of the task does not resolve.
     fn check_prog_ref(&mut self) -> Result<(), RapidError> {
         let files = self.modules.sources();
-        let diags = match check(files.clone(), &self.modules.options) {
+        let diags = match check(files.clone(), &self.modules.options, None) {
             Ok(checked) => checked.diagnostics,
             Err(diags) => diags,
         };

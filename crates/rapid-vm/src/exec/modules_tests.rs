@@ -4,7 +4,7 @@ use super::*;
 
 /// Types, data and routines a program declares (the checker's numbering).
 fn counts(text: &str) -> (rapid_sema::types::TypeId, usize, usize) {
-    let mut checked = check(vec![SourceInput::from_text("m.mod", text)], &Options::default())
+    let mut checked = check(vec![SourceInput::from_text("m.mod", text)], &Options::default(), None)
         .unwrap_or_else(|_| panic!("no program"));
     let errors = checked.diagnostics.iter().filter(|d| d.severity() == Severity::Error).count();
     assert_eq!(errors, 0, "{:?}", checked.diagnostics);

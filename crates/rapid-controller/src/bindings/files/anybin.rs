@@ -18,8 +18,7 @@
 //! corrupt transfer: ERR_RANYBIN_CHK (uncertain: the manual only says the types must
 //! match).
 
-use rapid_vm::errnames::Err;
-use rapid_vm::value::{Array, Record, Value};
+use rapid_vm::ext::{Array, Err, Record, Value};
 
 type Fault = (Err, String);
 

@@ -12,13 +12,11 @@
 use std::path::Path;
 use std::time::SystemTime;
 
-use rapid_vm::world::{FileKind, FileMeta, FileSystem};
+use rapid_vm::ext::{
+    present, Ctx, Err, FileKind, FileMeta, FileSystem, OpaqueState, RapidError, Value, MAX_STRING_CHARS,
+};
 
 use super::{handle_of, resolve, set_handle, table, Res};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::ext::{present, Ctx};
-use rapid_vm::value::{OpaqueState, Value, MAX_STRING_CHARS};
 
 /// The largest integer a num holds exactly: sizes beyond it raise ERR_FILESIZE.
 const NUM_INT_LIMIT: f64 = 8_388_608.0;
@@ -270,7 +268,7 @@ pub(super) fn file_time_dnum(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 const NO_TIME: &str = "the file system keeps no such time for it";
 
 /// The loaded module named `name` (any letter case).
-fn module<'a>(ctx: &'a Ctx<'_>, name: &str) -> Option<&'a rapid_vm::world::devices::ModuleFile> {
+fn module<'a>(ctx: &'a Ctx<'_>, name: &str) -> Option<&'a rapid_vm::ext::devices::ModuleFile> {
     ctx.resources.devices.modules().iter().find(|m| m.name.eq_ignore_ascii_case(name))
 }
 

@@ -12,10 +12,7 @@
 use super::iodev::{check_time, with_file, Need};
 use super::text::{bytes_of, delimiters, latin1, parse_num, push_latin1, read_field, skip_lines};
 use super::{anybin, fault, io_fault, opt_string, Fault, Res};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::ext::{present, Ctx};
-use rapid_vm::value::{Opaque, OpaqueState, Value, MAX_STRING_CHARS};
+use rapid_vm::ext::{present, Ctx, Err, Opaque, OpaqueState, RapidError, Value, MAX_STRING_CHARS};
 
 /// What ReadNum returns at end of file: EOF_NUM (manual ReadNum; the catalogue's
 /// constant).

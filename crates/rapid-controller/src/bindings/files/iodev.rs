@@ -12,11 +12,7 @@ use std::io::{self, SeekFrom};
 
 use super::text::ByteSource;
 use super::{fault, handle_of, io_fault, opt_string, resolve, set_handle, table, Fault, Res};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::ext::{present, Ctx};
-use rapid_vm::value::{OpaqueState, Value};
-use rapid_vm::world::{FileKind, HostFile, OpenMode};
+use rapid_vm::ext::{present, Ctx, Err, FileKind, HostFile, OpaqueState, OpenMode, RapidError, Value};
 
 /// Bytes read ahead from the host file at a time.
 const READ_AHEAD: usize = 4096;
@@ -188,7 +184,7 @@ pub(super) fn open(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         present(args.get(at.append)),
         present(args.get(at.bin)),
     );
-    let path_text = rapid_vm::world::devices::join_object(&object, file_name.as_deref());
+    let path_text = rapid_vm::ext::devices::join_object(&object, file_name.as_deref());
     let resolved = resolve(ctx, &path_text, Err::FileOpen)?;
     // Only regular files: a directory cannot be read as a file, and opening a FIFO or a
     // device placed in the root would block the controller or reach hardware.

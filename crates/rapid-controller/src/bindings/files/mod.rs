@@ -8,7 +8,7 @@
 //! * `text` and `anybin`: the pure parts (fields of text files, WriteAnyBin's format).
 //!
 //! The devices themselves (`HOME:` ... on the world's disk, the sandbox) are the
-//! interpreter's (`rapid_vm::world::devices`): the language's own Load and
+//! interpreter's (`rapid_vm::ext::devices`): the language's own Load and
 //! TextTabInstall resolve paths there too. This family keeps what the task holds open.
 //!
 //! An iodev or dir variable holds `OpaqueState::Handle(n)`; `n` keys this family's tables
@@ -23,11 +23,10 @@ mod text;
 
 use rustc_hash::FxHashMap;
 
-use rapid_vm::embed::{Extension, TaskHooks, TaskState};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::ext::{devices, native, Ctx, Family, Resources};
-use rapid_vm::value::{Opaque, OpaqueState, Value};
+use rapid_vm::ext::{
+    devices, native, Ctx, Err, Extension, Family, Opaque, OpaqueState, RapidError, Resources, TaskHooks, TaskState,
+    Value,
+};
 
 type Res = Result<Option<Value>, RapidError>;
 /// An error before it becomes a RAPID error (the tables are borrowed while it is made).

@@ -10,7 +10,7 @@
 
 use std::io;
 
-use rapid_vm::value::MAX_STRING_CHARS;
+use rapid_vm::ext::MAX_STRING_CHARS;
 
 /// Where the bytes of a field come from (an open file, or a slice in tests).
 pub(super) trait ByteSource {

@@ -33,14 +33,11 @@ use std::collections::VecDeque;
 
 use datum::{size, to_datum, to_value, type_of};
 use rapid_tasks::{RmqKind, SharedTaskingAccess, TaskingAccess};
-use rapid_vm::builtins::Shared;
-use rapid_vm::embed::{Extension, PendingEvent, TaskHooks, TaskState};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
 use rapid_vm::ext::TypeNames;
 use rapid_vm::ext::{call_site, interrupt_number, native, next_due, present, read_literal, task_index};
 use rapid_vm::ext::{Ctx, Family, InterruptSource, Resources, StopKind};
-use rapid_vm::value::{Opaque, OpaqueState, Record, Value};
+use rapid_vm::ext::{Err, Extension, PendingEvent, RapidError, Shared, TaskHooks, TaskState};
+use rapid_vm::ext::{Opaque, OpaqueState, Record, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -396,7 +393,7 @@ fn array_literal(literal: &str, template: &Value) -> Option<Value> {
         return None;
     }
     let shape =
-        Value::Array(Box::new(rapid_vm::value::Array { dims: [n as u32, 0, 0], elems: vec![template.clone(); n] }));
+        Value::Array(Box::new(rapid_vm::ext::Array { dims: [n as u32, 0, 0], elems: vec![template.clone(); n] }));
     read_literal(literal, &shape)
 }
 

@@ -66,4 +66,4 @@ impl SharedRmq {
     }
 }
 
-impl rapid_vm::embed::TaskState for SharedRmq {}
+impl rapid_vm::ext::TaskState for SharedRmq {}

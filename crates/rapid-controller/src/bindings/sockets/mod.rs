@@ -1,7 +1,7 @@
 //! Socket Messaging (§1.10): SocketCreate, SocketConnect, SocketBind, SocketListen,
 //! SocketAccept, SocketSend, SocketSendTo, SocketReceive, SocketReceiveFrom,
 //! SocketClose, SocketGetStatus, SocketPeek, on the TCP and UDP sockets of the task's
-//! world (`rapid_vm::world::Network`: std::net in the controller's std world), an extension
+//! world (`rapid_vm::ext::Network`: std::net in the controller's std world), an extension
 //! of the interpreter ([`EXTENSION`]).
 //!
 //! A `socketdev` holds `OpaqueState::Handle(n)`, the number of its entry in the task's
@@ -38,12 +38,10 @@ use std::rc::Rc;
 use std::str::FromStr;
 use std::time::Duration;
 
-use rapid_vm::embed::{Extension, TaskHooks, TaskState};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::ext::{native, present, wait_again, wait_over, wait_started, Ctx, Family, Resources};
-use rapid_vm::value::{Opaque, OpaqueState, Value};
-use rapid_vm::world::{Clock, Network};
+use rapid_vm::ext::{
+    native, present, wait_again, wait_over, wait_started, Clock, Ctx, Err, Extension, Family, Network, Opaque,
+    OpaqueState, RapidError, Resources, TaskHooks, TaskState, Value,
+};
 pub use table::{SocketState, Status, SERVICE_PORT_ADDR};
 
 type Res = Result<Option<Value>, RapidError>;

@@ -5,10 +5,7 @@
 //! its valid bytes in `OpaqueState::RawBytes` (as in rawbytes.rs); a `byte` array holds
 //! one byte per element.
 
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::ext::{present, Ctx};
-use rapid_vm::value::{OpaqueState, Value, MAX_STRING_CHARS};
+use rapid_vm::ext::{present, Ctx, Err, OpaqueState, RapidError, Value, MAX_STRING_CHARS};
 
 /// At most this many bytes are sent or received in one call (the manual's limit).
 pub(super) const MAX_BYTES: usize = 1024;
@@ -182,7 +179,7 @@ mod tests {
 
     #[test]
     fn byte_arrays_must_hold_bytes() {
-        let array = |elems: Vec<Value>| Value::Array(Box::new(rapid_vm::value::Array { dims: [3, 0, 0], elems }));
+        let array = |elems: Vec<Value>| Value::Array(Box::new(rapid_vm::ext::Array { dims: [3, 0, 0], elems }));
         let good = array(vec![Value::Num(0.0), Value::Num(255.0), Value::Num(7.0)]);
         assert_eq!(byte_array(&good), Ok(vec![0, 255, 7]));
         let bad = array(vec![Value::Num(256.0), Value::Num(1.5), Value::Num(-1.0)]);

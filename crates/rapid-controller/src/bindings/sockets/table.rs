@@ -1,5 +1,5 @@
 //! The task's socket table: one entry per created `socketdev`, holding the endpoint
-//! the world's network made (`rapid_vm::world::Network`) and the state SocketGetStatus
+//! the world's network made (`rapid_vm::ext::Network`) and the state SocketGetStatus
 //! reports. Every operation that can wait takes a deadline on the world's clock and
 //! never blocks past it.
 //!
@@ -16,8 +16,7 @@ use std::time::Duration;
 
 use rustc_hash::FxHashMap;
 
-use rapid_vm::errnames::Err;
-use rapid_vm::world::{Clock, Network, NoNetwork, StoppedClock, TcpConn, TcpListen, UdpConn};
+use rapid_vm::ext::{Clock, Err, Network, NoNetwork, StoppedClock, TcpConn, TcpListen, UdpConn};
 
 /// A moment on the world's monotonic clock ([`Clock::elapsed`]).
 pub(super) type Deadline = Duration;
@@ -652,7 +651,7 @@ mod tests {
     fn silent_table() -> SocketState {
         let clock = Rc::new(StoppedClock::default());
         let mut table = SocketState::default();
-        table.set_network(Box::new(rapid_vm::world::memory::SilentNetwork::new(clock.clone())), clock);
+        table.set_network(Box::new(rapid_vm::ext::SilentNetwork::new(clock.clone())), clock);
         table
     }
 
