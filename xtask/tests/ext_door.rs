@@ -1,5 +1,5 @@
 //! One door into the interpreter for the extension crates (issue 19,
-//! docs/architecture.md): the built-in families defined outside rapid-vm (rapid-robot,
+//! docs/architecture.md): the built-in families defined outside rapid-vm (rapid-tasks, rapid-robot,
 //! rapid-signals, rapid-controller's bindings) take what they use of the interpreter
 //! from `rapid_vm::ext` only, never from its modules (`rapid_vm::value::Value`,
 //! `rapid_vm::builtins::Ctx`…). What they need and ext lacks is added to ext on
@@ -13,25 +13,15 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 /// Where the extension crates' source is, from the workspace root.
-const SCANNED: &[&str] =
-    &["crates/rapid-robot/src", "crates/rapid-signals/src", "crates/rapid-controller/src/bindings"];
+const SCANNED: &[&str] = &[
+    "crates/rapid-tasks/src",
+    "crates/rapid-robot/src",
+    "crates/rapid-signals/src",
+    "crates/rapid-controller/src/bindings",
+];
 
 /// The files that may still name `rapid_vm::` paths other than `rapid_vm::ext`, and why.
 const ALLOWED: &[(&str, &str)] = &[
-    // The tasking move (rapid-vm's tasking family becoming a crate of its own) rewrites
-    // these nine and pays them.
-    ("crates/rapid-robot/src/foreign.rs", "tasking move"),
-    ("crates/rapid-robot/src/moves.rs", "tasking move"),
-    ("crates/rapid-robot/src/pause.rs", "tasking move"),
-    ("crates/rapid-robot/src/readback.rs", "tasking move"),
-    ("crates/rapid-robot/src/stepbwd.rs", "tasking move"),
-    ("crates/rapid-robot/src/store.rs", "tasking move"),
-    ("crates/rapid-robot/src/syncmove.rs", "tasking move"),
-    ("crates/rapid-robot/src/sysdata.rs", "tasking move"),
-    ("crates/rapid-robot/src/units.rs", "tasking move"),
-    // The RMQ bindings reach rapid-vm's RMQ data and the shared tasking state
-    // (`builtins::rmq`, `builtins::tasking`), which stay in the VM until tasking moves.
-    ("crates/rapid-controller/src/bindings/rmq.rs", "RMQ data and shared tasking state in rapid-vm"),
     // The embedder door, not the extension door: `SignalsVm` is implemented for
     // `rapid_vm::Vm`, for the controller that builds a task's I/O.
     ("crates/rapid-signals/src/vm.rs", "embedder door (SignalsVm for Vm)"),

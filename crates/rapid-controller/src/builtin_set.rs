@@ -1,6 +1,7 @@
 //! The built-ins every task of the controller runs with: the language's own
 //! (`rapid_vm`'s core families) and those of the extensions the controller installs —
-//! the robot (`rapid_robot`) and the controller's bindings (files, sockets,
+//! multitasking (`rapid_tasks`), I/O signals (`rapid_signals`), the robot
+//! (`rapid_robot`) and the controller's bindings (files, sockets,
 //! configuration data, RMQ). Every front end loads its tasks through the assembly
 //! (`crate::assembly::system`), and every test or tool that loads a program of its own
 //! loads through [`load_with`]: one place decides what a task can call, so a program
@@ -15,6 +16,7 @@ use rapid_vm::{LoadError, Loaded};
 
 /// The extensions the controller installs, one a line, in registration order.
 static EXTENSIONS: &[&Extension] = &[
+    &rapid_tasks::EXTENSION,              // multitasking (the robot reads the task list)
     &rapid_signals::EXTENSION,            // I/O signals (the robot reads and sets them)
     &rapid_robot::EXTENSION,              // the robot
     &crate::bindings::files::EXTENSION,   // files and folders
@@ -61,6 +63,18 @@ mod tests {
         "WaitDI",
         "ISignalDI",
         "IOEnable",
+        "WaitSyncTask",
+        "TestAndSet",
+        "WaitTestAndSet",
+        "GetTaskName",
+        "TaskRunMec",
+        "TaskRunRob",
+        "TaskIsActive",
+        "TaskIsExecuting",
+        "GetTSPStatus",
+        "MotionPlannerNo",
+        "GetMecUnitName",
+        "GetServiceInfo",
     ];
 
     #[test]

@@ -16,6 +16,7 @@
 use rapid_config::eio::{Eio, SysAction, SysStatus};
 use rapid_robot::RobotResources;
 use rapid_signals::SharedIoAccess;
+use rapid_tasks::SharedTaskingAccess;
 use rapid_vm::builtins::controller::RunMode;
 use rapid_vm::Host;
 
@@ -198,7 +199,7 @@ impl Controller {
     /// system output.
     fn unit_task(&self, unit: &str, output: &rapid_config::eio::syssig::SysOutput) -> Result<usize, String> {
         let number = unit.to_ascii_uppercase().strip_prefix("ROB_").and_then(|n| n.parse::<usize>().ok());
-        let robot = self.shared.tasking.robots().into_iter().find(|&(n, _)| Some(n) == number);
+        let robot = self.shared.tasking().robots().into_iter().find(|&(n, _)| Some(n) == number);
         if let Some((_, task)) = robot {
             return Ok(task);
         }

@@ -21,6 +21,7 @@
 
 use rapid_robot::RobotResources;
 use rapid_signals::SharedIoAccess;
+use rapid_tasks::TaskingAccess;
 use rapid_vm::value::Value;
 use rapid_vm::Vm;
 
@@ -133,7 +134,7 @@ impl Controller {
         };
         if word == "waitsynctask" {
             let list = task_list(vm, args.get(1)?)?;
-            wait.since = vm.resources().tasking.sync_wait_started().unwrap_or(self.time);
+            wait.since = vm.resources().tasking().sync_wait_started().unwrap_or(self.time);
             wait.why = format!("its sync point's tasks {} wait too", list.join(", "));
             return Some(Wait::Sync(wait, list.iter().map(|t| t.to_ascii_lowercase()).collect()));
         }

@@ -4,7 +4,8 @@
 //! that polls in a loop does not stop the clock for the others.
 
 use rapid_signals::{SharedIoAccess, SignalsVm};
-use rapid_vm::builtins::tasking::{SharedTasking, TaskInfo};
+use rapid_tasks::{SharedTasking, SharedTaskingAccess, TaskInfo};
+use rapid_vm::builtins::tasks::SharedTasks;
 use rapid_vm::builtins::Shared;
 use rapid_vm::{Exit, Host, Loaded};
 
@@ -129,7 +130,7 @@ impl Controller {
     /// tasks disagree on a global persistent's type or size, or a task names a
     /// foreground task the system does not have.
     pub fn new(tasks: Vec<(TaskSpec, Loaded)>, io: Option<rapid_io::IoSystem>) -> Result<Controller, String> {
-        let infos = tasks
+        let infos: Vec<TaskInfo> = tasks
             .iter()
             .map(|(spec, _)| TaskInfo {
                 name: spec.name.clone(),
@@ -142,7 +143,9 @@ impl Controller {
                 robot_of: spec.robot_of.clone(),
             })
             .collect();
-        let mut shared = Shared { tasking: SharedTasking::new(infos), ..Shared::default() };
+        let names = infos.iter().map(|t| t.name.clone()).collect();
+        let mut shared = Shared { tasks: SharedTasks::new(names), ..Shared::default() };
+        shared.lent.insert(SharedTasking::new(infos));
         shared.io_mut().system = io;
         let maps = tasks
             .iter()
@@ -152,7 +155,7 @@ impl Controller {
         let mut built = Vec::with_capacity(tasks.len());
         for (idx, (spec, mut loaded)) in tasks.into_iter().enumerate() {
             let view = pers.register(idx, &spec.name, &loaded, &spec.shared_files)?;
-            loaded.vm.resources_mut().tasking.me = spec.name.clone();
+            loaded.vm.resources_mut().tasks.me = spec.name.clone();
             // The host's disk, network and clocks, unless the embedder gave its own.
             crate::host_std::install(&mut loaded.vm);
             // A socket wait must not block the process: the other tasks run meanwhile.
@@ -273,8 +276,8 @@ impl Controller {
     /// Answers the request a task made of the controller (another task's data or
     /// robot), if one waits; the asking task is woken to read the reply.
     pub(crate) fn serve_request(&mut self, host: &mut dyn Host) {
-        use rapid_vm::builtins::tasking::{Reply, Request};
-        let Some((who, request)) = self.shared.tasking.request.take() else { return };
+        use rapid_vm::builtins::tasks::{Reply, Request};
+        let Some((who, request)) = self.shared.tasks.request.take() else { return };
         let reply = match request {
             Request::ReadData { task, name } => self.read_data(who, task, &name),
             Request::WriteData { task, name, value } => self.write_data(who, task, &name, &value),
@@ -290,8 +293,8 @@ impl Controller {
                 Reply::Done
             }
         };
-        self.shared.tasking.reply = Some((who, reply));
-        self.shared.tasking.epoch += 1;
+        self.shared.tasks.reply = Some((who, reply));
+        self.shared.tasks.epoch += 1;
     }
 
     /// StopMove/StartMove/StopMoveReset `\AllMotionTasks` of task `who`: the same for
@@ -311,8 +314,8 @@ impl Controller {
     }
 
     /// GetDataVal from task `who` of task `task`'s module data `name`.
-    fn read_data(&self, who: usize, task: usize, name: &str) -> rapid_vm::builtins::tasking::Reply {
-        use rapid_vm::builtins::tasking::Reply;
+    fn read_data(&self, who: usize, task: usize, name: &str) -> rapid_vm::builtins::tasks::Reply {
+        use rapid_vm::builtins::tasks::Reply;
         let vm = &self.tasks[task].loaded.vm;
         match vm.global_by_name(name).and_then(|(global, _)| vm.global(global)) {
             Some(value) => Reply::Value(crate::types::renumber(value, &self.maps[task][who])),
@@ -328,8 +331,8 @@ impl Controller {
         task: usize,
         name: &str,
         value: &rapid_vm::value::Value,
-    ) -> rapid_vm::builtins::tasking::Reply {
-        use rapid_vm::builtins::tasking::Reply;
+    ) -> rapid_vm::builtins::tasks::Reply {
+        use rapid_vm::builtins::tasks::Reply;
         let value = crate::types::renumber(value, &self.maps[who][task]);
         let target = &mut self.tasks[task];
         // Up to date first, so that marking the store seen below skips nothing.
@@ -359,8 +362,8 @@ impl Controller {
             return;
         }
         task.events_copied = last.seq + 1;
-        if self.shared.tasking.events.len() < MAX_SHARED_EVENTS {
-            self.shared.tasking.log_events(idx, &entries[start..]);
+        if self.shared.tasks.events.len() < MAX_SHARED_EVENTS {
+            self.shared.tasks.log_events(idx, &entries[start..]);
         }
     }
 
@@ -549,7 +552,7 @@ impl Controller {
     pub(crate) fn after_end(&mut self, idx: usize) {
         self.ops.outputs_stale = true;
         let name = self.tasks[idx].spec.name.clone();
-        self.shared.tasking.set_executing(&name, false);
+        self.shared.tasking_mut().set_executing(&name, false);
         // A task that asked for a warm start did not fail: its trust level is not applied.
         let warm_start = self.tasks[idx].loaded.vm.resources_mut().controller.warm_start;
         let spec = &self.tasks[idx].spec;
@@ -561,7 +564,7 @@ impl Controller {
             if self.tasks[other].spec.kind == TaskKind::Normal && !matches!(self.tasks[other].state, State::Ended(_)) {
                 self.tasks[other].state = State::Ended(TaskEnd::Halted);
                 let other_name = self.tasks[other].spec.name.clone();
-                self.shared.tasking.set_executing(&other_name, false);
+                self.shared.tasking_mut().set_executing(&other_name, false);
             }
         }
     }
@@ -569,7 +572,8 @@ impl Controller {
     /// Everything a waiting task may be waiting for: signal changes, sync points,
     /// semaphores and shared persistents.
     pub(crate) fn epoch(&self) -> u64 {
-        self.shared.io().change_count() as u64 + self.shared.tasking.epoch + self.pers.generation
+        let tasks = self.shared.tasks.epoch + self.shared.tasking().epoch;
+        self.shared.io().change_count() as u64 + tasks + self.pers.generation
     }
 
     /// Waiting tasks whose time has come, or whose condition may now hold.

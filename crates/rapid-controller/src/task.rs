@@ -77,9 +77,9 @@ pub struct TaskSpec {
 
 impl TaskSpec {
     /// Its message queue as the VM's task state holds it.
-    pub fn rmq_config(&self) -> rapid_vm::builtins::rmq::RmqConfig {
+    pub fn rmq_config(&self) -> rapid_tasks::RmqConfig {
         use rapid_config::sys::RmqType;
-        use rapid_vm::builtins::rmq::{RmqConfig, RmqKind};
+        use rapid_tasks::{RmqConfig, RmqKind};
         let kind = match self.rmq.rmq_type {
             RmqType::None => RmqKind::None,
             RmqType::Internal => RmqKind::Internal,

@@ -24,8 +24,8 @@ use std::sync::{Arc, RwLock, RwLockReadGuard};
 use rapid_motion::external::{Eax, UnitChain};
 use rapid_motion::plan::PlannedMove;
 
-use rapid_vm::builtins::Ctx;
-use rapid_vm::error::RapidError;
+use rapid_tasks::TaskingAccess;
+use rapid_vm::ext::{Ctx, RapidError};
 
 /// How far apart two axis values may be and still be one position.
 const SAME_POSITION: f64 = 1e-9;
@@ -297,7 +297,7 @@ impl super::robot::RobotState {
 /// Whether this task moves synchronized with task `other` now (both after SyncMoveOn
 /// with each other in the task list, neither suspended).
 fn synchronized_with(ctx: &Ctx<'_>, other: &str) -> bool {
-    let tasking = &ctx.resources.tasking;
+    let tasking = ctx.resources.tasking();
     let Some(mode) = tasking.sync_move.as_ref().filter(|m| !m.suspended) else { return false };
     mode.members.iter().any(|m| m.eq_ignore_ascii_case(other))
         && tasking.shared.in_sync.iter().any(|t| t.eq_ignore_ascii_case(other))

@@ -17,9 +17,7 @@ use super::layout::{
     MOVE_J_SYNC, MOVE_L, MOVE_L_AO, MOVE_L_DO, MOVE_L_GO, MOVE_L_SYNC,
 };
 use rapid_signals::IoAccess;
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{present, Ctx, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -119,17 +117,17 @@ pub(super) fn check_sing_mode(ctx: &Ctx<'_>) -> Result<(), RapidError> {
 
 /// Only a motion task (`-MotionTask`) runs move instructions (§1.20).
 pub(super) fn require_motion_task(ctx: &Ctx<'_>) -> Result<(), RapidError> {
-    if rapid_vm::builtins::tasking::my_task(ctx).is_none_or(|t| t.motion) {
+    if rapid_tasks::my_task(ctx).is_none_or(|t| t.motion) {
         return Ok(());
     }
-    let name = ctx.resources.tasking.name();
+    let name = ctx.resources.tasks.name();
     Err(RapidError::fatal(format!("task {name} is no motion task (-MotionTask): it cannot move the robot")))
 }
 
 /// Whether this task moves a robot (a positioner's motion task moves external units
 /// only).
 pub(super) fn moves_robot(ctx: &Ctx<'_>) -> bool {
-    rapid_vm::builtins::tasking::my_task(ctx).is_none_or(|t| t.robot)
+    rapid_tasks::my_task(ctx).is_none_or(|t| t.robot)
 }
 
 /// A move of the TCP runs only in a motion task that moves a robot.
@@ -143,7 +141,7 @@ pub(super) fn require_robot(ctx: &Ctx<'_>) -> Result<(), RapidError> {
     Err(RapidError::fatal(format!(
         "task {} moves no robot (its mechanical units are external axes only): it cannot move a TCP; MoveExtJ \
          and MoveAbsJ move its axes",
-        ctx.resources.tasking.name()
+        ctx.resources.tasks.name()
     )))
 }
 
@@ -284,7 +282,7 @@ fn count_conc(ctx: &mut Ctx<'_>, conc: bool, now: f64) -> Result<(), RapidError>
     }
     if robot.conc_run >= MAX_CONC {
         let message = format!("more than {MAX_CONC} consecutive movement instructions with \\Conc");
-        return Err(ctx.error(rapid_vm::errnames::Err::ConcMax, message));
+        return Err(ctx.error(rapid_vm::ext::Err::ConcMax, message));
     }
     robot.conc_run += 1;
     Ok(())
@@ -308,7 +306,7 @@ pub(super) fn wait_for_robot(ctx: &mut Ctx<'_>, resume: f64) {
     ctx.resources.robot_mut().hold_until = Some(resume);
     if ctx.resources.interrupts.active() {
         // Interrupts may come while the robot moves: wait until the next one may.
-        let next = rapid_vm::builtins::interrupts::next_due(ctx).map_or(resume, |due| due.min(resume));
+        let next = rapid_vm::ext::next_due(ctx).map_or(resume, |due| due.min(resume));
         ctx.wait = Some((next - now).max(1e-6));
     } else {
         ctx.wait = Some(resume - now);
@@ -584,13 +582,11 @@ pub(crate) fn move_c_sync(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 fn sync_event(ctx: &mut Ctx<'_>, name: &Value) -> Result<Vec<super::robot::PathEvent>, RapidError> {
     let name = ctx.string(name)?;
     let Some(&routine) = ctx.procs_by_name.get(&name.to_lowercase()) else {
-        return Err(ctx.error(rapid_vm::errnames::Err::RefUnknownProc, format!("no procedure `{name}` is loaded")));
+        return Err(ctx.error(rapid_vm::ext::Err::RefUnknownProc, format!("no procedure `{name}` is loaded")));
     };
     let callable = ctx.routines.get(routine as usize).and_then(|c| c.as_ref());
     if !callable.is_some_and(|c| !c.is_func && !c.is_trap && c.n_params == 0) {
-        return Err(
-            ctx.error(rapid_vm::errnames::Err::CallProc, format!("`{name}` is no procedure without parameters"))
-        );
+        return Err(ctx.error(rapid_vm::ext::Err::CallProc, format!("`{name}` is no procedure without parameters")));
     }
     let number = ctx.resources.interrupts.once(routine);
     let action = super::robot::Action::Interrupt(number);

@@ -13,10 +13,7 @@ use rapid_motion::plan::{AccelLimits, MoveRequest, PlannedMove, Planner, SpeedDa
 use rapid_motion::{Joints, Kinematics};
 
 use rapid_signals::IoAccess;
-use rapid_vm::builtins::{present, Ctx, Resources, StopKind};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{present, Ctx, Err, RapidError, Resources, StopKind, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -82,7 +79,7 @@ fn all_motion_tasks(ctx: &mut Ctx<'_>, args: &[Value], idx: usize, name: &'stati
     if !present(args.get(idx)) {
         return true;
     }
-    rapid_vm::builtins::tasking::ask(ctx, rapid_vm::builtins::tasking::Request::AllMotionTasks { name }).is_some()
+    rapid_vm::ext::ask(ctx, rapid_vm::ext::Request::AllMotionTasks { name }).is_some()
 }
 
 /// The robot's path stops at `since` (now for StopMove; the end of the move it is on
@@ -345,7 +342,7 @@ pub(crate) fn clear_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 // uncertain: the manual's "on-going robot movements stop" taken as an immediate stop,
 // as StopMove's.
 pub(crate) fn abandon_paths(ctx: &mut Ctx<'_>) -> Result<(), RapidError> {
-    if rapid_vm::builtins::tasking::my_task(ctx).is_some_and(|t| !t.motion) {
+    if rapid_tasks::my_task(ctx).is_some_and(|t| !t.motion) {
         return Ok(());
     }
     ctx.resources.robot_mut().stored = None;

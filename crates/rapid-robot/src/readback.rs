@@ -8,10 +8,8 @@ use rapid_motion::frames::FrameChain;
 use rapid_motion::{Kinematics, MotionError};
 
 use super::data;
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_tasks::TaskingAccess;
+use rapid_vm::ext::{present, Ctx, Err, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -46,7 +44,7 @@ struct RobotReport {
 
 /// The controller's reply to another task's `Request::Robot` about the robot of the
 /// task whose resources these are, at `time`.
-pub fn robot_reply(resources: &mut rapid_vm::builtins::Resources, time: f64) -> rapid_vm::builtins::tasking::Reply {
+pub fn robot_reply(resources: &mut rapid_vm::ext::Resources, time: f64) -> rapid_vm::ext::Reply {
     let robot = resources.robot_mut();
     // Its frames with its base where it stands in the world now (MOC.cfg's base
     // frame, on a track where the track has it).
@@ -60,20 +58,20 @@ pub fn robot_reply(resources: &mut rapid_vm::builtins::Resources, time: f64) -> 
     let extax = robot.extax_read(time);
     let robtarget_extax = robot.robtarget_extax(&joints, eax.as_ref(), extax);
     let report = RobotReport { joints, frames, extax, robtarget_extax, flange, conf };
-    rapid_vm::builtins::tasking::Reply::Extension(rapid_vm::builtins::tasking::ExtensionReply(std::rc::Rc::new(report)))
+    rapid_vm::ext::Reply::Extension(rapid_vm::ext::ExtensionReply(std::rc::Rc::new(report)))
 }
 
 /// The robot a read-back is about: this task's (None), or another task's
 /// (`Some(None)`: wait for the reply).
 fn robot_of(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Option<OtherRobot>>, RapidError> {
-    use rapid_vm::builtins::tasking::{ask, other_task, Reply, Request};
+    use rapid_vm::ext::{ask, other_task, Reply, Request};
     let Some(task) = other_task(ctx, args, 0)?.or_else(|| linked_motion_task(ctx)) else { return Ok(None) };
     Ok(Some(match ask(ctx, Request::Robot { task }) {
         Some(Reply::Extension(reply)) => {
             let Some(robot) = reply.0.downcast_ref::<RobotReport>().cloned() else {
                 return Err(RapidError::fatal("the task has no robot"));
             };
-            let tcp = ctx.resources.tasking.shared.tasks.get(task).is_none_or(|t| t.robot);
+            let tcp = ctx.resources.tasking().shared.tasks.get(task).is_none_or(|t| t.robot);
             Some(OtherRobot {
                 joints: robot.joints,
                 frames: robot.frames,
@@ -92,8 +90,8 @@ fn robot_of(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Option<OtherRobo
 /// A task that is no motion task reads the robot of the motion task whose mechanical
 /// unit group it uses (SYS.cfg `-UseMechanicalUnitGroup`), as if named by `\TaskName`.
 fn linked_motion_task(ctx: &Ctx<'_>) -> Option<usize> {
-    let name = rapid_vm::builtins::tasking::my_task(ctx)?.robot_of.as_deref()?;
-    ctx.resources.tasking.shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(name))
+    let name = rapid_tasks::my_task(ctx)?.robot_of.as_deref()?;
+    ctx.resources.tasking().shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(name))
 }
 
 /// The frames a read-back uses: the given tool and work object, else the active ones.
@@ -213,7 +211,7 @@ fn tool0_like(ctx: &Ctx<'_>) -> Result<Value, RapidError> {
         .ok_or_else(|| RapidError::fatal("the program has no tool0"))
 }
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static CROBT: CRobTArgs = "CRobT" { tool: "Tool", wobj: "WObj" }
     static CPOS: CPosArgs = "CPos" { tool: "Tool", wobj: "WObj" }
     static CALC_ROB_T: CalcRobTArgs = "CalcRobT" { target: "Joint_target", tool: "Tool", wobj: "WObj" }
@@ -252,7 +250,7 @@ fn require_tcp(ctx: &Ctx<'_>, other: Option<&OtherRobot>, what: &str) -> Result<
     if tcp {
         return Ok(());
     }
-    let motion = rapid_vm::builtins::tasking::my_task(ctx).is_none_or(|t| t.motion);
+    let motion = rapid_tasks::my_task(ctx).is_none_or(|t| t.motion);
     Err(RapidError::fatal(if other.is_none() && !motion {
         format!(
             "{what}: the task is no motion task and uses no motion task's mechanical unit group \

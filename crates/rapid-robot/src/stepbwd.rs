@@ -15,10 +15,7 @@ use rapid_motion::{Joints, Kinematics};
 
 use super::pause::Pause;
 use super::robot::RobotState;
-use rapid_vm::builtins::Ctx;
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_vm::ext::{Ctx, Err, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -57,7 +54,7 @@ impl StepBack {
 // back along the path (the path itself on linear segments), a stop point of the
 // timing model.
 pub(crate) fn step_bwd_path(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    if ctx.resources.tasking.event != EVENT_RESTART {
+    if ctx.resources.tasks.event != EVENT_RESTART {
         return Err(RapidError::fatal("StepBwdPath can only be used in a RESTART event routine"));
     }
     let (length, time) = (ctx.num(&args[0])?, ctx.num(&args[1])?);

@@ -17,9 +17,8 @@ use rapid_motion::Joints;
 
 use super::pause::{pause_at, Pause};
 use super::robot::{Action, Queued, RobotState};
-use rapid_vm::builtins::Ctx;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::Value;
+use rapid_tasks::TaskingAccess;
+use rapid_vm::ext::{Ctx, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -58,7 +57,7 @@ pub(crate) fn store_path(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if ctx.resources.robot_mut().stored.is_some() {
         return Err(RapidError::fatal("StorePath: a path is stored already (one at a time: RestoPath first)"));
     }
-    let keep_sync = rapid_vm::builtins::present(args.first());
+    let keep_sync = rapid_vm::ext::present(args.first());
     let now = ctx.time;
     if ctx.resources.robot_mut().pause.is_none() {
         let since = end_of_current_move(ctx.resources.robot_mut(), now);
@@ -104,7 +103,7 @@ pub(crate) fn store_path(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         facts: robot.set_facts_aside(since),
     };
     robot.stored = Some(Box::new(stored));
-    if let Some(mode) = ctx.resources.tasking.sync_move.as_mut() {
+    if let Some(mode) = ctx.resources.tasking_mut().sync_move.as_mut() {
         mode.suspended = !keep_sync;
     }
     if since > now {
@@ -226,7 +225,7 @@ pub(crate) fn resto_path(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     robot.path_rec.forget_back();
     // The base path was synchronized: so is the task again.
     // uncertain: also when the level 2 moves ended suspended (no SyncMoveResume).
-    if let Some(mode) = ctx.resources.tasking.sync_move.as_mut() {
+    if let Some(mode) = ctx.resources.tasking_mut().sync_move.as_mut() {
         mode.suspended = false;
     }
     if level2_end > now {

@@ -12,11 +12,8 @@
 use crate::RobotResources;
 use rapid_motion::external::ExternalMove;
 use rapid_motion::plan::{AccelLimits, MotionSettings, MoveRequest, Planner};
-use rapid_vm::builtins::tasking::{meet, sync_point, task_list, SyncMode};
-use rapid_vm::builtins::{native, present, Ctx, Family, StopKind};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::{Record, Value};
+use rapid_tasks::{meet, sync_point, task_list, SharedTasking, SyncMode, TaskingAccess};
+use rapid_vm::ext::{native, present, Ctx, Err, Family, RapidError, Record, StopKind, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -42,7 +39,7 @@ pub(crate) fn robot_stands(ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
     if end > ctx.time {
         // The instruction looks again when the robot stands, or earlier when an
         // interrupt may come (its trap runs meanwhile, §1.11).
-        let next = rapid_vm::builtins::interrupts::next_due(ctx).map_or(end, |due| due.min(end));
+        let next = rapid_vm::ext::next_due(ctx).map_or(end, |due| due.min(end));
         ctx.wait = Some((next - ctx.time).max(1e-6));
         ctx.stop = StopKind::Repeat;
         return Ok(false);
@@ -53,7 +50,7 @@ pub(crate) fn robot_stands(ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
 /// `SyncMoveOn SyncID, TaskList [\TimeOut]`: meets the tasks of the list, then they
 /// move synchronized. ERR_SYNCMOVEON when they do not all come within TimeOut.
 fn sync_move_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    if ctx.resources.tasking.sync_move.is_some() {
+    if ctx.resources.tasking().sync_move.is_some() {
         // uncertain: a second SyncMoveOn before SyncMoveOff stops execution.
         return Err(RapidError::fatal("SyncMoveOn: the task already moves synchronized (SyncMoveOff first)"));
     }
@@ -67,19 +64,19 @@ fn sync_move_on(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if !meet(ctx, &point, &list, timeout, timed_out)? {
         return Ok(None);
     }
-    let tasking = &mut ctx.resources.tasking;
-    let me = tasking.name().to_string();
+    let me = ctx.resources.tasks.name().to_string();
+    let mut tasking = ctx.resources.tasking_mut();
     tasking.shared.in_sync.retain(|t| !t.eq_ignore_ascii_case(&me));
-    tasking.shared.in_sync.push(me);
+    tasking.shared.in_sync.push(me.clone());
     tasking.shared.epoch += 1;
-    tasking.sync_move = Some(SyncMode { point, members: list, suspended: false });
+    tasking.sync_move = Some(SyncMode { task: me, point, members: list, suspended: false });
     Ok(None)
 }
 
 /// `SyncMoveOff SyncID [\TimeOut]`: meets the tasks moving synchronized with this one,
 /// then each moves on its own. ERR_SYNCMOVEOFF when they do not all come in time.
 fn sync_move_off(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let Some(mode) = ctx.resources.tasking.sync_move.clone() else {
+    let Some(mode) = ctx.resources.tasking().sync_move.clone() else {
         // uncertain: SyncMoveOff outside synchronized movement stops execution.
         return Err(RapidError::fatal("SyncMoveOff: the task does not move synchronized (no SyncMoveOn)"));
     };
@@ -105,8 +102,8 @@ fn sync_move_undo(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 
 /// Ends the task's synchronized movement.
 fn leave(ctx: &mut Ctx<'_>) {
-    let tasking = &mut ctx.resources.tasking;
-    let me = tasking.name().to_string();
+    let me = ctx.resources.tasks.name().to_string();
+    let mut tasking = ctx.resources.tasking_mut();
     if let Some(mode) = tasking.sync_move.take() {
         if let Some(meet) = tasking.shared.move_meets.get_mut(&mode.point) {
             meet.entries.retain(|(t, _, _)| !t.eq_ignore_ascii_case(&me));
@@ -123,7 +120,7 @@ fn leave(ctx: &mut Ctx<'_>) {
 /// `IsSyncMoveOn()`: whether the task moves synchronized (not while suspended).
 // uncertain: a suspended synchronized movement answers FALSE.
 fn is_sync_move_on(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
-    Ok(Some(Value::Bool(ctx.resources.tasking.sync_move.as_ref().is_some_and(|m| !m.suspended))))
+    Ok(Some(Value::Bool(ctx.resources.tasking().sync_move.as_ref().is_some_and(|m| !m.suspended))))
 }
 
 /// `SyncMoveSuspend`: on the StorePath level (path level 2) the task moves on its own,
@@ -142,7 +139,8 @@ fn set_suspended(ctx: &mut Ctx<'_>, suspended: bool, what: &str) -> Res {
     if ctx.resources.robot_mut().stored.is_none() {
         return Err(RapidError::fatal(format!("{what} is only allowed on the StorePath level (after StorePath)")));
     }
-    let Some(mode) = ctx.resources.tasking.sync_move.as_mut() else {
+    let mut tasking = ctx.resources.tasking_mut();
+    let Some(mode) = tasking.sync_move.as_mut() else {
         return Err(RapidError::fatal(format!("{what}: the task does not move synchronized (no SyncMoveOn)")));
     };
     mode.suspended = suspended;
@@ -152,7 +150,7 @@ fn set_suspended(ctx: &mut Ctx<'_>, suspended: bool, what: &str) -> Res {
 /// `TasksInSync(TaskList)`: how many tasks move synchronized now; their names fill
 /// the list from the start, the rest of it is emptied.
 fn tasks_in_sync(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let names = ctx.resources.tasking.shared.in_sync.clone();
+    let names = ctx.resources.tasking().shared.in_sync.clone();
     if let Value::Array(mut array) = ctx.value(&args[0])? {
         let mut given = names.iter();
         for elem in &mut array.elems {
@@ -178,7 +176,7 @@ pub(crate) fn coordinate(
     settings: &MotionSettings,
     external: Option<&ExternalMove>,
 ) -> Result<Coordination, RapidError> {
-    let Some(mode) = ctx.resources.tasking.sync_move.clone().filter(|m| !m.suspended) else {
+    let Some(mode) = ctx.resources.tasking().sync_move.clone().filter(|m| !m.suspended) else {
         // uncertain: `\ID` outside synchronized movement (or while it is suspended) is
         // ignored.
         return Ok(Coordination::Alone);
@@ -191,25 +189,25 @@ pub(crate) fn coordinate(
         Some(t) => t,
         None => time_alone(ctx, request, settings, external)?,
     };
-    let tasking = &mut ctx.resources.tasking;
-    let me = tasking.name().to_string();
-    let meeting = tasking.shared.move_meets.entry(mode.point.clone()).or_default();
-    let round = match tasking.move_round {
+    let me = ctx.resources.tasks.name().to_string();
+    let rapid_tasks::TaskingMut { shared, own } = ctx.resources.tasking_mut();
+    let meeting = shared.move_meets.entry(mode.point.clone()).or_default();
+    let round = match own.move_round {
         Some(round) => round,
         None => {
             meeting.entries.retain(|(t, _, _)| !t.eq_ignore_ascii_case(&me));
             meeting.entries.push((me, id, alone));
-            tasking.move_round = Some(meeting.round);
-            tasking.shared.epoch += 1;
+            own.move_round = Some(meeting.round);
+            shared.epoch += 1;
             meeting.round
         }
     };
-    complete_if_all_given(tasking, &mode);
-    let meeting = tasking.shared.move_meets.entry(mode.point.clone()).or_default();
+    complete_if_all_given(shared, &mode);
+    let meeting = shared.move_meets.entry(mode.point.clone()).or_default();
     match &meeting.last {
         Some((done, outcome)) if *done == round => {
             let outcome = outcome.clone();
-            tasking.move_round = None;
+            own.move_round = None;
             outcome.map(Coordination::Time).map_err(RapidError::fatal)
         }
         _ => {
@@ -222,8 +220,7 @@ pub(crate) fn coordinate(
 
 /// Ends a round of coordinated moves once every executing task of the group gave its
 /// move: the common time is the longest; different IDs are an error for all.
-fn complete_if_all_given(tasking: &mut rapid_vm::builtins::tasking::TaskingState, mode: &SyncMode) {
-    let shared = &mut tasking.shared;
+fn complete_if_all_given(shared: &mut SharedTasking, mode: &SyncMode) {
     let executing = |name: &String| shared.tasks.iter().any(|t| t.name.eq_ignore_ascii_case(name) && t.executing);
     let members: Vec<&String> = mode.members.iter().filter(|m| executing(m)).collect();
     let Some(meeting) = shared.move_meets.get_mut(&mode.point) else { return };

@@ -15,10 +15,8 @@
 use crate::RobotResources;
 use std::rc::Rc;
 
-use rapid_vm::builtins::{native, present, tasking, Ctx, Family};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::{Place, Root, Value};
+use rapid_tasks::TaskingAccess;
+use rapid_vm::ext::{ask, native, present, Ctx, Err, Family, Place, RapidError, Reply, Request, Root, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -82,9 +80,8 @@ pub(crate) fn activate_arg(ctx: &mut Ctx<'_>, arg: &Value, param: usize, kind: u
 
 /// Makes `name` at `place` the active object of its kind, and tells the other tasks.
 fn activate(ctx: &mut Ctx<'_>, kind: usize, name: Rc<str>, place: Place) {
-    let tasking = &mut ctx.resources.tasking;
-    let me = tasking.name().to_ascii_lowercase();
-    tasking.shared.sysdata.entry(me).or_default()[kind] = Some(name.clone());
+    let me = ctx.resources.tasks.name().to_ascii_lowercase();
+    ctx.resources.tasking_mut().shared.sysdata.entry(me).or_default()[kind] = Some(std::sync::Arc::from(&*name));
     ctx.resources.motion_mut().active[kind] = Some((name, place));
 }
 
@@ -96,24 +93,24 @@ fn activate(ctx: &mut Ctx<'_>, kind: usize, name: Rc<str>, place: Place) {
 // task (as GetTaskName \MecTaskNo does); in a system where no task is configured
 // with -MotionTask every task keeps its own data.
 fn data_owner(ctx: &Ctx<'_>, args: &[Value]) -> Result<Option<String>, RapidError> {
-    let tasking = &ctx.resources.tasking;
+    let me = ctx.resources.tasks.name();
     let named = if present(args.first()) || present(args.get(1)) {
-        tasking::named_task(ctx, args)?.name
+        rapid_tasks::named_task(ctx, args)?.name
     } else {
-        tasking.name().to_string()
+        me.to_string()
     };
-    let tasks = &tasking.shared.tasks;
+    let tasks = &ctx.resources.tasking().shared.tasks;
     let owner = match tasks.iter().find(|t| t.name.eq_ignore_ascii_case(&named)) {
         Some(task) if !task.motion => tasks.iter().find(|t| t.motion).map_or(named, |t| t.name.clone()),
         _ => named,
     };
-    Ok(Some(owner).filter(|owner| !owner.eq_ignore_ascii_case(tasking.name())))
+    Ok(Some(owner).filter(|owner| !owner.eq_ignore_ascii_case(me)))
 }
 
 /// The name of the active object of a kind in another task.
 fn active_name_in(ctx: &Ctx<'_>, task: &str, kind: usize) -> Rc<str> {
-    let listed = ctx.resources.tasking.shared.sysdata.get(&task.to_ascii_lowercase());
-    listed.and_then(|names| names[kind].clone()).unwrap_or_else(|| DEFAULT_NAMES[kind].into())
+    let listed = ctx.resources.tasking().shared.sysdata.get(&task.to_ascii_lowercase());
+    listed.and_then(|names| names[kind].as_deref().map(Rc::from)).unwrap_or_else(|| DEFAULT_NAMES[kind].into())
 }
 
 /// The global of this task that is the object `name` of another task: a global PERS
@@ -136,18 +133,18 @@ fn value_in(ctx: &mut Ctx<'_>, task: &str, kind: usize) -> Result<Option<(Rc<str
         let value = ctx.storage.get(&place).map_err(|(e, m)| ctx.error(e, m))?.clone();
         return Ok(Some((name, value)));
     }
-    let tasks = &ctx.resources.tasking.shared.tasks;
+    let tasks = &ctx.resources.tasking().shared.tasks;
     let Some(index) = tasks.iter().position(|t| t.name.eq_ignore_ascii_case(task)) else {
         return Err(ctx.error(Err::TaskName, format!("the system has no task {task}")));
     };
-    match tasking::ask(ctx, tasking::Request::ReadData { task: index, name: name.to_string() }) {
+    match ask(ctx, Request::ReadData { task: index, name: name.to_string() }) {
         None => Ok(None),
-        Some(tasking::Reply::Value(value)) => Ok(Some((name, value))),
+        Some(Reply::Value(value)) => Ok(Some((name, value))),
         Some(_) => Err(ctx.error(Err::SymAccess, format!("task {task} has no data `{name}` to read"))),
     }
 }
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static GET_SYS_DATA: GetSysDataArgs = "GetSysData" { dest: "DestObject", object_name: "ObjectName" }
 }
 

@@ -11,10 +11,8 @@
 //! 1, 2, …, this task's external units [`EXTERNAL_BASE`] + their index.
 
 use crate::RobotResources;
-use rapid_vm::builtins::{present, Ctx};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
-use rapid_vm::value::{Opaque, OpaqueState, Value};
+use rapid_tasks::TaskingAccess;
+use rapid_vm::ext::{present, Ctx, Err, Opaque, OpaqueState, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -53,16 +51,16 @@ fn robot_name(ctx: &Ctx<'_>, n: usize) -> String {
 /// from 1 among all tasks, task name). A program run alone is the motion task T_ROB1
 /// with ROB_1.
 fn robot_tasks(ctx: &Ctx<'_>) -> Vec<(usize, usize, String)> {
-    let shared = &ctx.resources.tasking.shared;
+    let shared = &ctx.resources.tasking().shared;
     if shared.tasks.is_empty() {
-        return vec![(1, 1, ctx.resources.tasking.name().to_string())];
+        return vec![(1, 1, ctx.resources.tasks.name().to_string())];
     }
     shared.robots().into_iter().map(|(n, task)| (n, task + 1, shared.tasks[task].name.clone())).collect()
 }
 
 /// The unit number (from 1) of this task's robot, if it has one.
 pub(super) fn own_unit(ctx: &Ctx<'_>) -> Option<usize> {
-    let me = ctx.resources.tasking.name();
+    let me = ctx.resources.tasks.name();
     robot_tasks(ctx).into_iter().find(|(_, _, name)| name.eq_ignore_ascii_case(me)).map(|(n, _, _)| n)
 }
 
@@ -232,8 +230,8 @@ fn external_facts(ctx: &Ctx<'_>, i: usize) -> [Value; 7] {
     let state = &ctx.resources.robot().external.units[i];
     // The unit is this task's: its number in the system, and its motion planner (a
     // positioner's task has a planner of its own after the robots').
-    let task_no = ctx.resources.tasking.index() + 1;
-    let planner = rapid_vm::builtins::controller::planner_no(ctx).max(1);
+    let task_no = ctx.resources.tasks.index() + 1;
+    let planner = rapid_tasks::planner_no(ctx).max(1);
     [
         Value::Bool(false),
         // A conveyor's unit has no axis the moves drive; its one axis is the conveyor's.
@@ -290,7 +288,7 @@ fn set_active(ctx: &mut Ctx<'_>, i: usize, active: bool) {
     super::moves::wait_for_robot(ctx, end);
 }
 
-rapid_vm::builtins::signature::layout! {
+rapid_vm::ext::layout! {
     static MECH_UNIT_LOAD: MechUnitLoadArgs = "MechUnitLoad" { load: "Load" }
 }
 

@@ -147,8 +147,16 @@ pub trait TaskHooks: Sync {
 
     /// Swaps the part of the task's state every task of a controller shares with the
     /// controller's (`Vm::exchange_shared`): `shared` holds the extensions' shared
-    /// state, one value per type, as [`Extensions`] holds a task's.
+    /// state, one value per type, as [`Extensions`] holds a task's. (State an extension
+    /// keeps whole in `Shared::lent` needs no hook: the core swaps that map whole.)
     fn exchange_shared(&self, _resources: &mut Resources, _shared: &mut Extensions) {}
+
+    /// Interrupts for what reached the task from other tasks or from outside (the
+    /// messages of its RAPID Message Queue): fired at the start of a run (what came
+    /// while the task did not run) and where the loop looks for interrupts, whenever
+    /// the shared change count (`builtins::tasks::SharedTasks::epoch`) moved since the
+    /// last call: an extension that puts something into a task's reach bumps it.
+    fn deliver(&self, _resources: &mut Resources) {}
 
     /// For signal interrupts (`Source::Signal`, `Source::Analog`): brings the signals
     /// up to `now` and hands the changes logged from entry `from` of the extension's
@@ -177,6 +185,13 @@ pub struct PendingEvent {
 /// task holds open (end of program, PP to Main: files, sockets, waits under way).
 pub trait TaskState: Any {
     fn close_all(&mut self) {}
+
+    /// [`TaskState::close_all`] with the shared state lent to the task at hand
+    /// (`Resources::lent`): for state that must also leave what the tasks share
+    /// (a task in synchronized movement leaves the list of such tasks).
+    fn close_all_lent(&mut self, _lent: &mut Extensions) {
+        self.close_all();
+    }
 }
 
 /// The extensions' per-task state, one value per type.
@@ -185,53 +200,69 @@ pub trait TaskState: Any {
 /// plain function pointers in static family tables, which a type parameter would turn
 /// into generic tables and monomorphise the whole interpreter per embedder; a
 /// controller installs several extensions that know nothing of each other (the robot,
-/// I/O), each finding its own state by type. The map holds a handful of entries: a
-/// lookup is a scan comparing `TypeId`s, made only by the built-ins that need the
-/// state, never by the core loop (which goes through [`TaskHooks`]).
+/// I/O, multitasking), each finding its own state by type. The map holds a handful of
+/// entries, each beside its `TypeId`: a lookup is a scan comparing ids (no call
+/// through the trait object until the one that matches), made by the built-ins that
+/// need the state and by the hooks that swap the shared state in and out before and
+/// after every statement of a controller's task.
 #[derive(Default)]
 pub struct Extensions {
-    entries: Vec<Box<dyn TaskState>>,
+    entries: Vec<(TypeId, Box<dyn TaskState>)>,
 }
 
 impl Extensions {
+    /// Where the state of type `T` is, if an extension put one in.
+    #[inline]
+    fn position<T: TaskState>(&self) -> Option<usize> {
+        let id = TypeId::of::<T>();
+        self.entries.iter().position(|(entry, _)| *entry == id)
+    }
+
     /// Puts `state` in, replacing a value of its type.
     pub fn insert<T: TaskState>(&mut self, state: T) {
-        match self.entries.iter_mut().find(|e| (***e).type_id() == TypeId::of::<T>()) {
-            Some(entry) => *entry = Box::new(state),
-            None => self.entries.push(Box::new(state)),
+        match self.position::<T>() {
+            Some(at) => self.entries[at].1 = Box::new(state),
+            None => self.entries.push((TypeId::of::<T>(), Box::new(state))),
         }
     }
 
     /// The state of type `T`, if an extension put one in.
+    #[inline]
     pub fn get<T: TaskState>(&self) -> Option<&T> {
-        self.entries.iter().find_map(|e| (&**e as &dyn Any).downcast_ref::<T>())
+        let at = self.position::<T>()?;
+        (&*self.entries[at].1 as &dyn Any).downcast_ref::<T>()
     }
 
     /// The state of type `T` to change, if an extension put one in.
+    #[inline]
     pub fn get_mut<T: TaskState>(&mut self) -> Option<&mut T> {
-        self.entries.iter_mut().find_map(|e| (&mut **e as &mut dyn Any).downcast_mut::<T>())
+        let at = self.position::<T>()?;
+        (&mut *self.entries[at].1 as &mut dyn Any).downcast_mut::<T>()
     }
 
     /// The state of type `T` to change, put in at its default first if there was none.
+    #[inline]
     pub fn get_or_default<T: TaskState + Default>(&mut self) -> &mut T {
-        let at = match self.entries.iter().position(|e| (**e).type_id() == TypeId::of::<T>()) {
+        let at = match self.position::<T>() {
             Some(at) => at,
             None => {
-                self.entries.push(Box::<T>::default());
+                self.entries.push((TypeId::of::<T>(), Box::<T>::default()));
                 self.entries.len() - 1
             }
         };
-        (&mut *self.entries[at] as &mut dyn Any).downcast_mut::<T>().expect("the entry at `at` is a T")
+        (&mut *self.entries[at].1 as &mut dyn Any).downcast_mut::<T>().expect("the entry at `at` is a T")
     }
 
     /// Whether an extension put in state of type `T`.
     pub fn contains<T: TaskState>(&self) -> bool {
-        self.get::<T>().is_some()
+        self.position::<T>().is_some()
     }
 
-    pub(crate) fn close_all(&mut self) {
-        for entry in &mut self.entries {
-            entry.close_all();
+    /// Closes every entry (`TaskState::close_all_lent`), `lent` being the shared
+    /// state lent to the task.
+    pub(crate) fn close_all(&mut self, lent: &mut Extensions) {
+        for (_, entry) in &mut self.entries {
+            entry.close_all_lent(lent);
         }
     }
 }
@@ -272,7 +303,7 @@ mod tests {
     fn closing_reaches_every_state() {
         let mut slot = Extensions::default();
         slot.insert(Counter(5));
-        slot.close_all();
+        slot.close_all(&mut Extensions::default());
         assert_eq!(slot.get::<Counter>(), Some(&Counter(0)));
     }
 }

@@ -33,7 +33,8 @@ pub use crate::value::{Array, Opaque, OpaqueState, Place, Record, Root, Value, M
 // The extension itself: its families and hooks, the state it keeps per task and
 // shares between tasks, and the event-log entries its hooks hand back. `Shared` is
 // the controller's shared state: an extension keeps its shared part in
-// `Shared::extensions` and may give the embedder a typed view of it.
+// `Shared::extensions` (swapped by its hook) or `Shared::lent` (lent to the running
+// task whole) and may give the embedder a typed view of it.
 pub use crate::builtins::Shared;
 pub use crate::embed::{Extension, Extensions, PendingEvent, TaskHooks, TaskState};
 pub use crate::events::{Event, EventKind, MOTION_DOMAIN};
@@ -69,11 +70,24 @@ pub fn call_site(ctx: &Ctx<'_>) -> (usize, u32) {
 
 /// The index of the task in the task system (its place in the configuration, from 0).
 pub fn task_index(ctx: &Ctx<'_>) -> usize {
-    ctx.resources.tasking.index()
+    ctx.resources.tasks.index()
 }
 
 /// The program's type named `name` (any letter case), by its number in this task:
 /// what a family building a record of a declared type (`pos`, `robtarget`) gives it.
 pub fn type_named(ctx: &Ctx<'_>, name: &str) -> Option<rapid_sema::types::TypeId> {
-    ctx.resources.rmq.names.by_name.get(&name.to_ascii_lowercase()).copied()
+    ctx.resources.type_names.by_name.get(&name.to_ascii_lowercase()).copied()
 }
+
+// used by the tasks crate (rapid-tasks) and the robot's tasking users: which task this
+// is and the task names are the core's (`builtins::tasks`), as are the requests to
+// the controller (another task's data or robot).
+pub use crate::builtins::stands_still;
+pub use crate::builtins::tasks::{
+    ask, named_task as task_named, other_task, ExtensionReply, Reply, Request, SharedTasks, TaskPlace,
+};
+
+// used by the controller's RMQ binding: a message's data travels by its type's name
+// and is written as a RAPID literal for a client.
+pub use crate::builtins::typenames::TypeNames;
+pub use crate::format::{aggregate_to_text, bool_to_text, dnum_to_text, num_to_text, string_to_literal};

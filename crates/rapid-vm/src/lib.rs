@@ -4,10 +4,11 @@
 //! file system, the network and the clocks through the [`world::World`] its embedder
 //! gives each task (the std ones live in `rapid_controller::host_std`); the sandbox
 //! of the file devices is the VM's own. It knows no configuration file format: the
-//! controller hands it its own types (a task's `builtins::rmq::RmqConfig`); the I/O
-//! signals are the crate rapid-signals, and the configuration data, the files and the
-//! sockets the controller's bindings (`rapid_controller::bindings`): extensions that
-//! reach the interpreter through [`ext`]. It knows no I/O system (no rapid-io): signal
+//! controller hands it what it needs in the core's own terms (the task names of
+//! `builtins::tasks`); multitasking is the crate rapid-tasks, the I/O signals the
+//! crate rapid-signals, and the configuration data, the files, the sockets and the
+//! RAPID Message Queue the controller's bindings (`rapid_controller::bindings`):
+//! extensions that reach the interpreter through [`ext`]. It knows no I/O system (no rapid-io): signal
 //! data is a handle an extension gave, and the loop asks the extension through
 //! [`embed::TaskHooks`] (`read_signal`, `signal_changes`, `next_event`). RAPID call depth lives in explicit frames, never on
 //! the Rust stack.
@@ -21,9 +22,11 @@
 //! extension's families use of the core is public on purpose: [`builtins::Ctx`] and
 //! its argument readers (`arg_name`, `call_place`, `in_trap`, `instruction_here`),
 //! [`builtins::Family`] with `builtins::native`, the catalogue argument layouts
-//! ([`builtins::signature`], the `layout!` macro), and the multitasking, interrupt and
-//! waiting helpers of `builtins::tasking`, `builtins::interrupts` and
-//! `builtins::wait`.
+//! ([`builtins::signature`], the `layout!` macro), and the task, interrupt and
+//! waiting helpers of `builtins::tasks`, `builtins::interrupts` and
+//! `builtins::wait`. Multitasking (sync points, semaphores, the tasks' kinds) is the
+//! extension crate rapid-tasks; the core keeps of tasks only what its own built-ins
+//! need (`builtins::tasks`).
 
 pub mod builtins;
 pub mod compile;
@@ -189,9 +192,9 @@ pub fn load_in(
     };
     vm.set_data_names(module_data.map(named).collect());
     vm.resources_mut().symsearch = builtins::symsearch::catalog::task_symbols(&prog, &modules);
-    let mut type_names = builtins::rmq::TypeNames::new(prog.types.named());
-    type_names.templates = rmq_templates(&prog);
-    vm.resources_mut().rmq.names = type_names;
+    let mut type_names = builtins::typenames::TypeNames::new(prog.types.named());
+    type_names.templates = type_templates(&prog);
+    vm.resources_mut().type_names = type_names;
     vm.extensions_loaded(&prog);
     vm.set_pers_globals(prog.datas.iter().map(|d| d.kind == rapid_sema::symbols::DataKind::Pers).collect());
     vm.set_program_sources(files.to_vec());
@@ -384,7 +387,7 @@ fn module_vars(prog: &Program, modules: &[compile::ModuleSource<'_>]) -> Vec<Mod
 
 /// The value before anything is assigned of each declared or predefined record and
 /// alias type (RMQ messages from outside the tasks are read into that shape).
-fn rmq_templates(prog: &Program) -> FxHashMap<rapid_sema::types::TypeId, value::Value> {
+fn type_templates(prog: &Program) -> FxHashMap<rapid_sema::types::TypeId, value::Value> {
     use rapid_sema::types::TypeKind;
     prog.types
         .named()

@@ -187,7 +187,7 @@ impl Session {
             return Err(ApiError::NotFound(format!("no prompt {id} waits for an answer")));
         }
         // The waiting dialog re-checks when the shared state changes.
-        self.controller.shared_mut().tasking.epoch += 1;
+        self.controller.shared_mut().tasks.epoch += 1;
         self.gather();
         Ok(())
     }

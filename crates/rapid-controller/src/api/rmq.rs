@@ -55,9 +55,9 @@ impl Session {
         }
         // The receiving task's types: a record travels by its name and is read as
         // that task declares it.
-        let names = &self.controller.tasks[idx].loaded.vm.resources().rmq.names;
+        let names = &self.controller.tasks[idx].loaded.vm.resources().type_names;
         let message = OutsideMessage { data, userdef, from };
-        let sent = rmq::send_from_outside(&mut self.controller.shared.tasking, idx, message, names);
+        let sent = rmq::send_from_outside(&mut self.controller.shared, idx, message, names);
         self.gather();
         sent.map_err(|refusal| match refusal {
             OutsideRefusal::BadData(why) => ApiError::BadLiteral(why),
@@ -69,20 +69,20 @@ impl Session {
     /// Opens a client's queue `name` for the tasks to send to (messages of at most
     /// `max_msg_size` bytes, as RMQ counts them); false when it is open already.
     pub fn open_client_queue(&mut self, name: &str, max_msg_size: usize) -> bool {
-        rmq::open_outside_queue(&mut self.controller.shared.tasking, name, max_msg_size)
+        rmq::open_outside_queue(&mut self.controller.shared, name, max_msg_size)
     }
 
     /// Closes a client's queue, the messages in it dropped; false when none was open.
     pub fn close_client_queue(&mut self, name: &str) -> bool {
-        rmq::close_outside_queue(&mut self.controller.shared.tasking, name)
+        rmq::close_outside_queue(&mut self.controller.shared, name)
     }
 
     /// Takes the oldest message the tasks sent to client queue `name`, if any.
     pub fn read_client_queue(&mut self, name: &str) -> Option<ClientMessage> {
-        let shared = &mut self.controller.shared.tasking;
+        let shared = &mut self.controller.shared;
         let message = rmq::take_outside_message(shared, name)?;
         Some(ClientMessage {
-            data: format!("{};{}", message.datatype, rapid_vm::builtins::rmq::literal(&message.data)),
+            data: format!("{};{}", message.datatype, rmq::literal(&message.data)),
             userdef: message.userdef,
             from: rmq::sender_name(shared, message.sender),
         })

@@ -11,6 +11,7 @@ use rapid_robot::RobotResources;
 use rapid_sema::SourceInput;
 use rapid_signals::IoAccess;
 use rapid_signals::{SharedIoAccess, SignalsVm};
+use rapid_tasks::SharedTaskingAccess;
 use rapid_vm::Loaded;
 
 use super::cell::Cell;
@@ -284,7 +285,7 @@ pub fn boot(
     let mut controller = Controller::new(tasks, io).map_err(BootError::Refused)?;
     controller.set_cycles(options.cycles);
     controller.set_step_bound(options.max_steps);
-    if let Err(message) = controller.shared_mut().tasking.number_robots(numbers.clone()) {
+    if let Err(message) = controller.shared_mut().tasking_mut().number_robots(numbers.clone()) {
         return Err(if alone { BootError::Internal(message) } else { BootError::Refused(message) });
     }
     if let Some((orders, reactions, answers)) = stimulus {

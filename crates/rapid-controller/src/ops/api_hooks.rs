@@ -3,6 +3,7 @@
 //! PP to a routine. Kept apart from `ops.rs` so that the operations' own rules stay
 //! in one place; these only move the program pointer and forget a held wait.
 
+use rapid_tasks::SharedTaskingAccess;
 use rapid_vm::Host;
 
 use super::ProgramState;
@@ -69,7 +70,7 @@ impl Controller {
         let name = self.tasks[idx].spec.name.clone();
         self.tasks[idx].state = match outcome {
             Ok(_) => {
-                self.shared.tasking.set_executing(&name, true);
+                self.shared.tasking_mut().set_executing(&name, true);
                 State::Ready
             }
             Err(unhandled) => {

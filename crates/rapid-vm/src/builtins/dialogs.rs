@@ -262,7 +262,7 @@ fn answer(
         let text = ctx.resources.answers.pop_front().map(|(_, text)| text).unwrap_or_default();
         return Ok(Some(text.trim().to_string()));
     }
-    let task = ctx.resources.tasking.me.clone();
+    let task = ctx.resources.tasks.me.clone();
     match ctx.host.tp_prompt(&crate::host::Prompt { task: &task, text: prompt }) {
         crate::host::PromptReply::Answer(text) => {
             ctx.resources.waiting = None;

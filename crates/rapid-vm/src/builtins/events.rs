@@ -29,7 +29,7 @@ fn event_number(ctx: &Ctx<'_>, arg: &Value) -> Result<u32, RapidError> {
 fn user_event(ctx: &Ctx<'_>, number: u32, kind: EventKind, texts: &[Value]) -> Result<Event, RapidError> {
     let mut expanded = Vec::with_capacity(texts.len());
     for text in texts {
-        expanded.push(expand_errstr(&ctx.string(text)?, ctx.resources.tasking.name(), ctx.routine));
+        expanded.push(expand_errstr(&ctx.string(text)?, ctx.resources.tasks.name(), ctx.routine));
     }
     let mut expanded = expanded.into_iter();
     let title = expanded.next().flatten().unwrap_or_default();

@@ -42,7 +42,10 @@ pub enum Source {
     /// and `kind` (0 any, 1 state, 2 warning, 3 error).
     Error { domain: u32, id: Option<u32>, kind: u32 },
     /// IRMQMessage: a message of this data type (name as declared, array sizes)
-    /// arrived in the task's queue.
+    /// arrived in the task's queue. The one piece of RMQ the core keeps: interrupts
+    /// are the language's mechanism, and a trap is ordered by the data type; the
+    /// queues and the hand-over of a message are the controller's RMQ binding's
+    /// (`TaskHooks::deliver`).
     Rmq { datatype: String, dims: [u32; 3] },
 }
 
@@ -353,7 +356,7 @@ fn ierror(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let n = interrupt_number(ctx, &args[at.interrupt])?;
     // Only entries from now on count (this task's and the other tasks').
     let next = ctx.events.entries().last().map_or(0, |e| e.seq + 1);
-    let foreign = ctx.resources.tasking.shared.events.len();
+    let foreign = ctx.resources.tasks.shared.events.len();
     let interrupts = &mut ctx.resources.interrupts;
     interrupts.next_event = interrupts.next_event.max(next);
     interrupts.next_foreign = interrupts.next_foreign.max(foreign);
@@ -390,7 +393,7 @@ fn read_err_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let event = seq.and_then(|seq| {
         if seq & FOREIGN_EVENT != 0 {
             let index = (seq & !FOREIGN_EVENT) as usize;
-            return ctx.resources.tasking.shared.events.get(index).map(|(_, e)| e.clone());
+            return ctx.resources.tasks.shared.events.get(index).map(|(_, e)| e.clone());
         }
         ctx.events.entries().iter().find(|e| e.seq == seq).cloned()
     });

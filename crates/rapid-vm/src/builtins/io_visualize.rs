@@ -123,14 +123,14 @@ fn open(ctx: &mut Ctx<'_>, args: &[Value], at: &BoxArgs, depth: usize) -> Result
         _ => None,
     };
     let shown = ShownBox { depth, open: true, text: lines.join("\n"), close_at, ui_active };
-    let task = ctx.resources.tasking.me.clone();
+    let task = ctx.resources.tasks.me.clone();
     ctx.host.visualize_open(&crate::host::Prompt { task: &task, text: &shown.text });
     set_active(ctx, shown.ui_active, 1.0)?;
     Ok(shown)
 }
 
 fn close(ctx: &mut Ctx<'_>, shown: &ShownBox) -> Result<(), RapidError> {
-    let task = ctx.resources.tasking.me.clone();
+    let task = ctx.resources.tasks.me.clone();
     ctx.host.visualize_close(&crate::host::Prompt { task: &task, text: &shown.text });
     set_active(ctx, shown.ui_active, 0.0)
 }

@@ -26,7 +26,6 @@ mod rawbytes;
 mod registry;
 pub mod signature;
 pub use registry::{compiled, native, out_of_step, Builtin, Builtins, Compiled, Family};
-pub mod rmq;
 pub mod spy;
 mod strdig;
 mod strformat;
@@ -38,8 +37,9 @@ pub use symbols::same_type;
 pub mod symsearch;
 mod sysinfo;
 mod system;
-pub mod tasking;
+pub mod tasks;
 pub mod texttab;
+pub mod typenames;
 
 use rapid_sema::types::TypeId;
 
@@ -133,15 +133,22 @@ pub struct Resources {
     pub(crate) boxes: Vec<io_visualize::ShownBox>,
     /// The task's interrupts (deleted at PP to Main).
     pub interrupts: interrupts::InterruptState,
-    /// Which task this is and what the tasks share (sync points).
-    pub tasking: tasking::TaskingState,
-    /// The task's types a RAPID Message Queue message travels by (the RMQ built-ins
-    /// are the controller's; the robot's read the types too).
-    pub rmq: rmq::RmqState,
+    /// Which task this is, and what the core shares with the other tasks (the task
+    /// names, the requests to the controller); the rest of multitasking is an
+    /// extension's (rapid-tasks).
+    pub tasks: tasks::TaskPlace,
+    /// The task's types by name, by which a value leaves the task (a RAPID Message
+    /// Queue message: the controller's RMQ binding) or is built by type name (the
+    /// robot's data).
+    pub type_names: typenames::TypeNames,
     /// The operating mode, speed override and PP flags (kept at PP to Main).
     pub controller: controller::ControllerState,
     /// The embedder's extensions' own state (`crate::embed`).
     pub extensions: crate::embed::Extensions,
+    /// The extensions' state every task of a controller shares, lent to the task
+    /// while it runs (`Shared::lent`, swapped whole by [`Resources::exchange_shared`]);
+    /// a task alone keeps its own here.
+    pub lent: crate::embed::Extensions,
 }
 
 /// What the tasks of one controller share: handed to the task that runs, so each
@@ -153,7 +160,12 @@ pub struct Shared {
     pub extensions: crate::embed::Extensions,
     /// The operator's timed answers to pendant dialogs (a stimulus).
     pub answers: std::collections::VecDeque<(f64, String)>,
-    pub tasking: tasking::SharedTasking,
+    /// The task names, the requests to the controller, the controller-wide event log.
+    pub tasks: tasks::SharedTasks,
+    /// The extensions' shared state the core hands over whole (one swap of the map
+    /// per exchange, however many extensions keep theirs here: multitasking's
+    /// `SharedTasking`, the RMQ queues), each found by type.
+    pub lent: crate::embed::Extensions,
 }
 
 impl Resources {
@@ -165,15 +177,15 @@ impl Resources {
         self.spy.stop();
         self.modules.close_all();
         self.interrupts.clear();
-        self.tasking.end_waits();
-        self.extensions.close_all();
+        self.extensions.close_all(&mut self.lent);
     }
 
     /// Swaps the controller's shared state with the task's (hand in, take back): the
     /// core's part; the extensions' part goes with it in `Vm::exchange_shared`.
     pub fn exchange_shared(&mut self, shared: &mut Shared) {
         std::mem::swap(&mut self.answers, &mut shared.answers);
-        std::mem::swap(&mut self.tasking.shared, &mut shared.tasking);
+        std::mem::swap(&mut self.tasks.shared, &mut shared.tasks);
+        std::mem::swap(&mut self.lent, &mut shared.lent);
     }
 
     /// The waiting instruction under way is over (it ended or timed out).
@@ -383,7 +395,7 @@ pub enum StopKind {
 /// Whether every extension stands still before a stop-point instruction goes on
 /// (WaitTime and WaitSyncTask with `\InPos`): `false` (the extension set a wait and
 /// a repeat) while the robot still moves.
-pub(crate) fn stands_still(ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
+pub fn stands_still(ctx: &mut Ctx<'_>) -> Result<bool, RapidError> {
     let set: &Builtins = ctx.builtins;
     for hooks in set.hooks() {
         if !hooks.stands_still(ctx)? {
@@ -436,7 +448,6 @@ pub(crate) static CORE_FAMILIES: &[&Family] = &[
     &random::FAMILY,
     &interrupts::FAMILY,
     &spy::FAMILY,
-    &tasking::FAMILY,
     &controller::FAMILY,
 ];
 

@@ -266,7 +266,7 @@ fn check_prog_ref(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 fn save(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let at = *SAVE;
     // \TaskRef | \TaskName: `other_task` reads the pair from the first.
-    let other = super::tasking::other_task(ctx, args, at.task_ref)?;
+    let other = super::tasks::other_task(ctx, args, at.task_ref)?;
     let module = ctx.string(&args[at.module_name])?;
     let dest = match args.get(at.file_path) {
         Some(path) if present(Some(path)) => {
@@ -278,7 +278,7 @@ fn save(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     };
     if let Some(task) = other {
         // Another task saves its own module; this one waits for it (the controller).
-        use super::tasking::{ask, Reply, Request};
+        use super::tasks::{ask, Reply, Request};
         return match ask(ctx, Request::SaveModule { task, module, dest }) {
             Some(Reply::Failed(error)) => Err(*error),
             _ => Ok(None),

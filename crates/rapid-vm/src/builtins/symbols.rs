@@ -4,7 +4,7 @@
 //! routine's own data is not in the public record: uncertain). With `\Block` (a datapos
 //! from GetNextSym) the name is looked up as seen from that module: its LOCAL data too.
 
-use super::tasking::{Reply, Request};
+use super::tasks::{Reply, Request};
 use super::{present, Ctx, NamedData};
 use crate::errnames::Err;
 use crate::error::RapidError;
@@ -74,10 +74,10 @@ super::signature::layout! {
 /// into Value, which must be of the same type (else ERR_SYMBOL_TYPE).
 pub(super) fn get_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let at = *DATA_VAL;
-    let found = match super::tasking::other_task(ctx, args, at.task_ref)? {
+    let found = match super::tasks::other_task(ctx, args, at.task_ref)? {
         Some(task) => {
             let name = ctx.string(&args[0])?;
-            match super::tasking::ask(ctx, Request::ReadData { task, name: name.clone() }) {
+            match super::tasks::ask(ctx, Request::ReadData { task, name: name.clone() }) {
                 None => return Ok(None),
                 Some(Reply::Value(value)) => value,
                 Some(_) => return Err(ctx.error(Err::SymAccess, format!("the task has no module data named `{name}`"))),
@@ -100,7 +100,7 @@ pub(super) fn get_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 /// named data. A constant cannot be written (ERR_SYM_ACCESS).
 pub(super) fn set_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let at = *DATA_VAL;
-    if let Some(task) = super::tasking::other_task(ctx, args, at.task_ref)? {
+    if let Some(task) = super::tasks::other_task(ctx, args, at.task_ref)? {
         return set_in_other_task(ctx, args, task);
     }
     let named = lookup(ctx, args)?;
@@ -123,7 +123,7 @@ pub(super) fn set_data_val(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 fn set_in_other_task(ctx: &mut Ctx<'_>, args: &[Value], task: usize) -> Res {
     let name = ctx.string(&args[0])?;
     let value = ctx.value(&args[DATA_VAL.value])?;
-    match super::tasking::ask(ctx, Request::WriteData { task, name: name.clone(), value }) {
+    match super::tasks::ask(ctx, Request::WriteData { task, name: name.clone(), value }) {
         None | Some(Reply::Done) => Ok(None),
         Some(Reply::Constant) => Err(ctx.error(Err::SymAccess, format!("`{name}` is a constant"))),
         Some(Reply::WrongType) => Err(type_error(ctx, &name)),

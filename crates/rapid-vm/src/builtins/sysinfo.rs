@@ -105,7 +105,7 @@ fn prog_mem_free(_: &mut Ctx<'_>, _: &[Value]) -> Res {
 
 /// `EventType()`: the event routine running now (EVENT_NONE outside one).
 fn event_type(ctx: &mut Ctx<'_>, _: &[Value]) -> Res {
-    Ok(Some(Value::Num(f32::from(ctx.resources.tasking.event))))
+    Ok(Some(Value::Num(f32::from(ctx.resources.tasks.event))))
 }
 
 /// `GetNextOption(ListNumber, Name)`: the option at ListNumber (from 0) in Name and

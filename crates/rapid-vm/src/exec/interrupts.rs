@@ -89,38 +89,20 @@ impl Vm {
         }
     }
 
-    /// Interrupt mode of the RAPID Message Queue: each new message of the task's queue
-    /// fires the IRMQMessage interrupt ordered for its data type; one that none is
-    /// ordered for is discarded.
-    // uncertain: the controller also logs a warning for a discarded message; not yet.
+    /// Interrupts for what reached the task from other tasks or from outside (RMQ
+    /// messages, which the extension keeping the queues hands to the IRMQMessage trap
+    /// ordered for their type: `TaskHooks::deliver`). Whatever reaches a task changes
+    /// the shared change count (`SharedTasks::epoch`), so the extensions are asked
+    /// only when it moved since they were last asked: once per run of a controller's
+    /// task is a look at one number.
     pub(super) fn dispatch_messages(&mut self) {
-        if !self.resources.tasking.has_undispatched() {
+        let epoch = self.resources.tasks.shared.epoch;
+        if self.resources.tasks.delivered_at == Some(epoch) {
             return;
         }
-        let me = self.resources.tasking.index();
-        let mut fired = Vec::new();
-        let table = &self.resources.interrupts.table;
-        let Some(queue) = self.resources.tasking.shared.queues.get_mut(me) else { return };
-        queue.retain_mut(|message| {
-            if message.dispatched {
-                return true;
-            }
-            message.dispatched = true;
-            let wanted = table.iter().enumerate().find(|(_, slot)| {
-                matches!(slot.as_ref().and_then(|i| i.source.as_ref()),
-                    Some(Source::Rmq { datatype, dims })
-                        if datatype.eq_ignore_ascii_case(&message.datatype) && *dims == message.dims)
-            });
-            match wanted {
-                Some((idx, _)) => {
-                    fired.push(idx as u32 + 1);
-                    true
-                }
-                None => false,
-            }
-        });
-        for number in fired {
-            self.resources.interrupts.fire(number);
+        self.resources.tasks.delivered_at = Some(epoch);
+        for hooks in self.builtins.hooks() {
+            hooks.deliver(&mut self.resources);
         }
     }
 
@@ -148,8 +130,8 @@ impl Vm {
     /// IError on the other tasks' entries of the controller-wide log: (interrupt,
     /// entry named with [`FOREIGN_EVENT`]).
     fn foreign_error_events(&mut self) -> Vec<(u32, u64)> {
-        let me = self.resources.tasking.index();
-        let shared = &self.resources.tasking.shared.events;
+        let me = self.resources.tasks.index();
+        let shared = &self.resources.tasks.shared.events;
         let start = self.resources.interrupts.next_foreign.min(shared.len());
         let mut fired = Vec::new();
         for (offset, (task, event)) in shared[start..].iter().enumerate() {

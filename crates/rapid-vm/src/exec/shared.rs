@@ -90,7 +90,7 @@ impl Vm {
         if !self.start_routine(idx) {
             return Ok(false);
         }
-        self.resources.tasking.event = event;
+        self.resources.tasks.event = event;
         let outcome = loop {
             match self.run(host, u64::MAX) {
                 super::Exit::Wait(seconds) => self.time += seconds,
@@ -99,7 +99,7 @@ impl Vm {
                 super::Exit::Done | super::Exit::Stopped | super::Exit::CycleEnded => break Ok(true),
             }
         };
-        self.resources.tasking.event = 0;
+        self.resources.tasks.event = 0;
         self.start_routine(entry);
         outcome
     }

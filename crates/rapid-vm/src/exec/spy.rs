@@ -68,7 +68,7 @@ impl Vm {
     fn spy_close_last(&mut self, code: SpyCode) {
         let Some(open) = self.spy_open.pop() else { return };
         let code = if code == SpyCode::Ready && open.waited { SpyCode::Wait } else { code };
-        let task = self.resources.tasking.name().to_owned();
+        let task = self.resources.tasks.name().to_owned();
         self.resources.spy.record(&task, &open.text, open.time_in, code, self.time);
     }
 

@@ -136,7 +136,7 @@ impl Vm {
             }
         }
         let disabled = std::mem::replace(&mut self.resources.interrupts.disabled, true);
-        self.resources.tasking.event = event;
+        self.resources.tasks.event = event;
         let mut outcome = Ok(true);
         for _ in 0..MAX_EVENT_ROUTINE_STEPS {
             match self.run(host, 1) {
@@ -149,7 +149,7 @@ impl Vm {
                 _ => break,
             }
         }
-        self.resources.tasking.event = 0;
+        self.resources.tasks.event = 0;
         self.resources.interrupts.disabled = disabled;
         outcome
     }

@@ -3,16 +3,13 @@
 //! pointer flags, a requested warm start — and the built-ins that read or change it:
 //! OpMode's answer (sysinfo.rs reads [`ControllerState::mode`]), CSpeedOverride's
 //! (motion reads [`ControllerState::speed_override`]), ResetPPMoved,
-//! PPMovedInManMode, IsStopStateEvent and WarmStart here; task and mechanical unit
-//! information in [`units`]. (The active tool, work object and payload are the
-//! robot's: `motion::sysdata`.)
+//! PPMovedInManMode, IsStopStateEvent and WarmStart here. (Task and mechanical unit
+//! information is the tasks extension's, rapid-tasks; the active tool, work object and
+//! payload are the robot's.)
 //!
 //! `rapid run` sets the mode and the override once, before the program starts
 //! (`--mode`, `--speed-override`); nothing changes them while it runs, as on a real
 //! controller where only the operator turns the key or moves the override.
-
-mod units;
-pub use units::planner_no;
 
 use super::{native, present, Ctx, Family, StopKind};
 use crate::errnames::Err;
@@ -28,10 +25,6 @@ pub(super) static FAMILY: Family = Family {
         native("PPMovedInManMode", pp_moved_in_man_mode),
         native("IsStopStateEvent", is_stop_state_event),
         native("WarmStart", warm_start),
-        native("GetTSPStatus", units::get_tsp_status),
-        native("MotionPlannerNo", units::motion_planner_no),
-        native("GetMecUnitName", units::get_mec_unit_name),
-        native("GetServiceInfo", units::get_service_info),
     ],
 };
 

@@ -2,10 +2,7 @@
 //! program numbers its types itself, so a record travels by its type's name and is
 //! rebuilt with the receiver's numbers.
 
-use rapid_sema::types::TypeId;
-use rustc_hash::FxHashMap;
-
-use crate::value::{Array, Record, Value};
+use rapid_vm::ext::{Array, Record, TypeNames, Value};
 
 /// A value on its way between tasks.
 #[derive(Debug, Clone, PartialEq)]
@@ -19,40 +16,10 @@ pub enum Datum {
     Array([u32; 3], Vec<Datum>),
 }
 
-/// The task's types: names as declared by number, numbers by lower-case name.
-#[derive(Debug, Default, Clone)]
-pub struct TypeNames {
-    pub by_id: FxHashMap<TypeId, String>,
-    pub by_name: FxHashMap<String, TypeId>,
-    /// The value before anything is assigned of each record and alias type, by
-    /// number: the shape a message's literal from outside the tasks is read into.
-    pub templates: FxHashMap<TypeId, Value>,
-}
-
-impl TypeNames {
-    /// From every (id, name) of a program's type table.
-    pub fn new<'a>(types: impl Iterator<Item = (TypeId, &'a str)>) -> TypeNames {
-        let mut names = TypeNames::default();
-        for (id, name) in types {
-            names.by_id.insert(id, name.to_owned());
-            names.by_name.entry(name.to_ascii_lowercase()).or_insert(id);
-        }
-        names
-    }
-}
-
-impl TypeNames {
-    /// The value of type `name` (any letter case) before anything is assigned, as the
-    /// task declares the type: `None` for a type it has no template of.
-    pub fn template(&self, name: &str) -> Option<Value> {
-        self.templates.get(self.by_name.get(&name.to_ascii_lowercase())?).cloned()
-    }
-}
-
 /// A datum as RAPID literal text (ValToStr's syntax): what an RWS client reads of a
 /// message a task sent it.
 pub fn literal(datum: &Datum) -> String {
-    use crate::format::{aggregate_to_text, bool_to_text, dnum_to_text, num_to_text, string_to_literal};
+    use rapid_vm::ext::{aggregate_to_text, bool_to_text, dnum_to_text, num_to_text, string_to_literal};
     match datum {
         Datum::Num(n) => num_to_text(*n),
         Datum::Dnum(d) => dnum_to_text(*d),
@@ -68,7 +35,7 @@ pub fn literal(datum: &Datum) -> String {
 /// array sizes (all 0 for a scalar). Aliases are not seen: a value declared `errnum`
 /// is a `num` here.
 // uncertain: the controller may send an alias type's own name in the message header.
-pub fn type_of(value: &Value, names: &TypeNames) -> Option<(String, [u32; 3])> {
+pub(super) fn type_of(value: &Value, names: &TypeNames) -> Option<(String, [u32; 3])> {
     match value {
         Value::Num(_) => Some(("num".into(), [0; 3])),
         Value::Dnum(_) => Some(("dnum".into(), [0; 3])),
@@ -84,7 +51,7 @@ pub fn type_of(value: &Value, names: &TypeNames) -> Option<(String, [u32; 3])> {
 }
 
 /// The datum of a value; `None` for data that cannot travel (non-value data).
-pub fn to_datum(value: &Value, names: &TypeNames) -> Option<Datum> {
+pub(super) fn to_datum(value: &Value, names: &TypeNames) -> Option<Datum> {
     Some(match value {
         Value::Num(n) => Datum::Num(*n),
         Value::Dnum(d) => Datum::Dnum(*d),
@@ -104,7 +71,7 @@ pub fn to_datum(value: &Value, names: &TypeNames) -> Option<Datum> {
 
 /// The value of a datum in the receiving task; `None` when the task has no type of a
 /// record's name.
-pub fn to_value(datum: &Datum, names: &TypeNames) -> Option<Value> {
+pub(super) fn to_value(datum: &Datum, names: &TypeNames) -> Option<Value> {
     Some(match datum {
         Datum::Num(n) => Value::Num(*n),
         Datum::Dnum(d) => Value::Dnum(*d),
@@ -126,7 +93,7 @@ pub fn to_value(datum: &Datum, names: &TypeNames) -> Option<Value> {
 /// string's characters.
 // uncertain: the controller's message encoding is not public; this is what RmqMaxMsgSize
 // is compared with.
-pub fn size(datum: &Datum) -> usize {
+pub(super) fn size(datum: &Datum) -> usize {
     match datum {
         Datum::Num(_) => 4,
         Datum::Dnum(_) => 8,

@@ -1,16 +1,27 @@
 //! Tasks and mechanical units as the controller reports them (§1.17, §1.20):
 //! GetTSPStatus, MotionPlannerNo, GetMecUnitName, GetServiceInfo. TaskIsActive and
-//! TaskIsExecuting are in tasking.rs.
+//! TaskIsExecuting are in tasking.rs. (They read the tasks' kinds and the robots'
+//! numbering, which this crate keeps; the robot reads [`planner_no`].)
 //!
 //! A motion task's robot is the ROB_n its mechanical unit group names, else the n-th
 //! motion task's with a robot in configuration order (`SharedTasking::robot_number`);
 //! its motion planner is number n (a one-task run has T_ROB1, ROB_1, planner 1).
 
-use super::super::{argname, present, tasking, Ctx};
-use super::Res;
-use crate::errnames::Err;
-use crate::error::RapidError;
-use crate::value::Value;
+use rapid_vm::ext::{native, present, Ctx, Err, Family, RapidError, Value};
+
+use crate::tasking::{self, TaskingAccess};
+
+type Res = Result<Option<Value>, RapidError>;
+
+pub(crate) static FAMILY: Family = Family {
+    file: file!(),
+    builtins: &[
+        native("GetTSPStatus", get_tsp_status),
+        native("MotionPlannerNo", motion_planner_no),
+        native("GetMecUnitName", get_mec_unit_name),
+        native("GetServiceInfo", get_service_info),
+    ],
+};
 
 // The values of the tsp_status constants (catalogue data.rs).
 const TSP_STATUS_NOT_NORMAL_TASK: f32 = 0.0;
@@ -23,7 +34,7 @@ const TSP_STATUS_ACT: f32 = 3.0;
 /// selected, and no task is deselected to run service routines, so
 /// TSP_STATUS_DEACT_SERV_ROUT never comes. A task the system does not have is
 /// ERR_TASKNAME.
-pub(crate) fn get_tsp_status(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+fn get_tsp_status(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let task = tasking::named_task(ctx, args)?;
     let status = match (task.normal, task.active) {
         (false, _) => TSP_STATUS_NOT_NORMAL_TASK,
@@ -42,9 +53,8 @@ pub(crate) fn get_tsp_status(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // on; a task that is no motion task is taken to be connected to the first motion task
 // (as GetTaskName \MecTaskNo does); the controller follows -UseMechanicalUnitGroup.
 pub fn planner_no(ctx: &Ctx<'_>) -> usize {
-    let tasking = &ctx.resources.tasking;
-    let shared = &tasking.shared;
-    let mine = shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(tasking.name()));
+    let shared = &ctx.resources.tasking().shared;
+    let mine = shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(ctx.resources.tasks.name()));
     let motion = mine.filter(|&i| shared.tasks[i].motion).or_else(|| shared.tasks.iter().position(|t| t.motion));
     let Some(task) = motion else { return 0 };
     if let Some(n) = shared.robot_number(task) {
@@ -55,7 +65,7 @@ pub fn planner_no(ctx: &Ctx<'_>) -> usize {
 }
 
 /// `MotionPlannerNo()`: the number of the motion planner the task's movements use.
-pub(crate) fn motion_planner_no(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+fn motion_planner_no(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     Ok(Some(Value::Num(planner_no(ctx) as f32)))
 }
 
@@ -64,24 +74,24 @@ pub(crate) fn motion_planner_no(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 // uncertain: ROB_ID in a task without a robot is undefined on the controller; using
 // it raises ERR_ARGVALERR here.
 fn unit_name(ctx: &Ctx<'_>, param: usize) -> Result<String, RapidError> {
-    let Some(name) = argname::original_name(ctx.chain, param) else {
+    let Some(name) = ctx.arg_name(param) else {
         return Err(ctx.error(Err::ArgValue, "MechUnit must be a mecunit data object (ROB_1, ROB_ID ...)"));
     };
     if !name.eq_ignore_ascii_case("ROB_ID") {
         return Ok(name.to_string());
     }
-    let tasking = &ctx.resources.tasking;
-    let mine = tasking.shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(tasking.name()));
-    match mine.and_then(|task| tasking.shared.robot_number(task)) {
+    let shared = &ctx.resources.tasking().shared;
+    let mine = shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(ctx.resources.tasks.name()));
+    match mine.and_then(|task| shared.robot_number(task)) {
         Some(n) => Ok(format!("ROB_{n}")),
         // A program run alone is T_ROB1's, with ROB_1.
-        None if tasking.shared.tasks.is_empty() => Ok("ROB_1".to_owned()),
+        None if shared.tasks.is_empty() => Ok("ROB_1".to_owned()),
         None => Err(ctx.error(Err::ArgValue, "ROB_ID: this task controls no robot")),
     }
 }
 
 /// `GetMecUnitName(MechUnit)`: the mechanical unit's configured name ("ROB_1").
-pub(crate) fn get_mec_unit_name(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
+fn get_mec_unit_name(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     Ok(Some(Value::Str(unit_name(ctx, 0)?.into())))
 }
 
@@ -92,7 +102,7 @@ pub(crate) fn get_mec_unit_name(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 // uncertain: the manual does not show the text's form; we give the whole hours as
 // digits ("2" after 2 h 10 min). Without \DutyTimeCnt no item is chosen:
 // ERR_ARGVALERR, as GetSysInfo without a switch.
-pub(crate) fn get_service_info(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
+fn get_service_info(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     unit_name(ctx, 0)?;
     if !present(args.get(1)) {
         return Err(ctx.error(Err::ArgValue, "GetServiceInfo needs \\DutyTimeCnt"));

@@ -4,31 +4,40 @@
 //!
 //! Each task configured with `-RmqType Internal` or `Remote` has a queue, slot
 //! `RMQ_<task>`, holding at most `-RmqMaxNoOfMsg` messages of at most `-RmqMaxMsgSize`
-//! bytes. The queues are part of the state all tasks share (`tasking::SharedTasking`).
+//! bytes. The queues are part of the state all tasks share ([`SharedRmq`], in
+//! `Shared::lent`, which the core lends the running task whole); which tasks have a queue, and how it is configured,
+//! is the task list's (`rapid_tasks::TaskInfo::rmq`).
 //! In interrupt mode (the default) a message is handed to the trap IRMQMessage ordered
 //! for its data type, and discarded when none is; in synchronous mode it waits for
 //! RMQReadWait (or RMQSendWait's answer). rmqslot data holds a task's number,
 //! rmqmessage data a message the task keeps in its own table ([`RmqWaits`], in the
 //! task's extension slot).
 //!
-//! The family is an extension of the interpreter ([`EXTENSION`]). The message model
-//! (`rapid_vm::builtins::rmq`), the shared queues (`tasking::SharedTasking`) and the
-//! hand-over of a message to its trap stay the interpreter's: the task system and
-//! the interrupts are.
+//! The family is an extension of the interpreter ([`EXTENSION`]): the message model
+//! (`model.rs`, `datum.rs`), the queues and the hand-over of a message to its trap
+//! ([`RmqHooks`]: `TaskHooks::deliver`) are its own. The interpreter keeps the
+//! interrupt mechanism and its source kind (`rapid_vm::ext::InterruptSource::Rmq`,
+//! the data type IRMQMessage orders a trap for) and the task's types by name
+//! (`rapid_vm::ext::TypeNames`), which only its loader knows.
 //!
 //! The front ends' side (an RWS client's messages and queues) is here too:
 //! [`send_from_outside`], [`open_outside_queue`], [`take_outside_message`] ...
 
+mod datum;
+mod model;
+
+pub use datum::{literal, Datum};
+pub use model::{OutsideQueue, RmqMessage, SharedRmq};
+
 use std::collections::VecDeque;
 
-use rapid_vm::builtins::rmq::{size, to_datum, to_value, type_of, OutsideQueue, RmqKind, RmqMessage, TypeNames};
-use rapid_vm::builtins::tasking::SharedTasking;
-use rapid_vm::embed::{Extension, TaskState};
-use rapid_vm::errnames::Err;
-use rapid_vm::error::RapidError;
+use datum::{size, to_datum, to_value, type_of};
+use rapid_tasks::{RmqKind, SharedTaskingAccess, TaskingAccess};
+use rapid_vm::ext::TypeNames;
 use rapid_vm::ext::{call_site, interrupt_number, native, next_due, present, read_literal, task_index};
 use rapid_vm::ext::{Ctx, Family, InterruptSource, Resources, StopKind};
-use rapid_vm::value::{Opaque, OpaqueState, Record, Value};
+use rapid_vm::ext::{Err, Extension, PendingEvent, RapidError, Shared, TaskHooks, TaskState};
+use rapid_vm::ext::{Opaque, OpaqueState, Record, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -54,8 +63,8 @@ enum Dest {
     Outside(usize),
 }
 
-/// The task's side of RMQ: the messages its rmqmessage data holds and the wait
-/// under way.
+/// The task's side of RMQ: the messages its rmqmessage data holds and the wait under
+/// way.
 #[derive(Debug, Default)]
 pub struct RmqWaits {
     /// Messages rmqmessage data holds: `Handle(n)` is `held[n - 1]`.
@@ -72,7 +81,76 @@ impl TaskState for RmqWaits {
 }
 
 /// The RMQ built-ins and the task's held messages.
-pub static EXTENSION: Extension = Extension { name: "rmq", families: &[&FAMILY], hooks: None, init: Some(init) };
+pub static EXTENSION: Extension =
+    Extension { name: "rmq", families: &[&FAMILY], hooks: Some(&HOOKS), init: Some(init) };
+
+/// What the interpreter's loop asks of RMQ: the messages of the task's queue handed to
+/// their traps.
+pub struct RmqHooks;
+
+/// The hooks of [`EXTENSION`].
+pub static HOOKS: RmqHooks = RmqHooks;
+
+impl TaskHooks for RmqHooks {
+    /// RMQ logs no events and owes no wait: answered at once, as the fast loop asks
+    /// after every built-in call.
+    fn after_builtin(&self, _resources: &mut Resources, _now: f64, _events: &mut Vec<PendingEvent>) -> bool {
+        false
+    }
+
+    /// Interrupt mode of the RAPID Message Queue: each new message of the task's queue
+    /// fires the IRMQMessage interrupt ordered for its data type; one that none is
+    /// ordered for is discarded.
+    // uncertain: the controller also logs a warning for a discarded message; not yet.
+    fn deliver(&self, resources: &mut Resources) {
+        let Some(rmq) = resources.lent.get::<SharedRmq>() else { return };
+        // The common case (no message anywhere) costs no look at the task list.
+        if rmq.queues.iter().all(VecDeque::is_empty) {
+            return;
+        }
+        let me = resources.tasks.index();
+        let synchronous = resources.tasking().shared.tasks.get(me).is_some_and(|t| t.rmq.synchronous);
+        let Some(rmq) = resources.lent.get_mut::<SharedRmq>() else { return };
+        if !rmq.has_undispatched(me, synchronous) {
+            return;
+        }
+        let mut fired = Vec::new();
+        let table = &resources.interrupts.table;
+        let Some(queue) = rmq.queues.get_mut(me) else { return };
+        queue.retain_mut(|message| {
+            if message.dispatched {
+                return true;
+            }
+            message.dispatched = true;
+            let wanted = table.iter().enumerate().find(|(_, slot)| {
+                matches!(slot.as_ref().and_then(|i| i.source.as_ref()),
+                    Some(InterruptSource::Rmq { datatype, dims })
+                        if datatype.eq_ignore_ascii_case(&message.datatype) && *dims == message.dims)
+            });
+            match wanted {
+                Some((idx, _)) => {
+                    fired.push(idx as u32 + 1);
+                    true
+                }
+                None => false,
+            }
+        });
+        for number in fired {
+            resources.interrupts.fire(number);
+        }
+    }
+}
+
+/// The queues all tasks share, while the task runs.
+fn queues<'a>(ctx: &'a Ctx<'_>) -> &'a SharedRmq {
+    static NONE: std::sync::LazyLock<SharedRmq> = std::sync::LazyLock::new(SharedRmq::default);
+    ctx.resources.lent.get::<SharedRmq>().unwrap_or(&NONE)
+}
+
+/// The queues all tasks share, to change.
+fn queues_mut<'a>(ctx: &'a mut Ctx<'_>) -> &'a mut SharedRmq {
+    ctx.resources.lent.get_or_default::<SharedRmq>()
+}
 
 fn init(resources: &mut Resources) {
     resources.extensions.insert(RmqWaits::default());
@@ -97,12 +175,12 @@ fn me(ctx: &Ctx<'_>) -> usize {
 /// client's queue closed since counts as none).
 fn slot(ctx: &Ctx<'_>, arg: &Value) -> Result<Dest, RapidError> {
     let (_, handle) = ctx.handle_arg(arg, "an rmqslot")?;
-    let shared = &ctx.resources.tasking.shared;
+    let (tasks, outside) = (&ctx.resources.tasking().shared.tasks, &queues(ctx).outside);
     handle
         .and_then(|h| (h as usize).checked_sub(1))
         .and_then(|n| match n.checked_sub(OUTSIDE_SLOTS) {
-            Some(k) => shared.outside.get(k).and_then(Option::as_ref).map(|_| Dest::Outside(k)),
-            None => (n < shared.tasks.len()).then_some(Dest::Task(n)),
+            Some(k) => outside.get(k).and_then(Option::as_ref).map(|_| Dest::Outside(k)),
+            None => (n < tasks.len()).then_some(Dest::Task(n)),
         })
         .ok_or_else(|| ctx.error(Err::RmqInvalid, "the rmqslot names no queue (RMQFindSlot first)"))
 }
@@ -118,14 +196,14 @@ fn store_slot(ctx: &mut Ctx<'_>, arg: &Value, task: usize) -> Result<(), RapidEr
 /// `RMQFindSlot Slot, Name`: the slot of the queue named `RMQ_<task>`.
 fn find_slot(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let name = ctx.string(&args[1])?;
-    let tasks = &ctx.resources.tasking.shared.tasks;
+    let tasks = &ctx.resources.tasking().shared.tasks;
     let found =
         tasks.iter().position(|t| t.rmq.kind != RmqKind::None && format!("RMQ_{}", t.name).eq_ignore_ascii_case(&name));
     // A client's queue is found by its name as the client gave it.
     // uncertain: whether RobotWare compares a client queue's name with letter case.
     let outside = || {
-        let queues = &ctx.resources.tasking.shared.outside;
-        queues.iter().position(|q| q.as_ref().is_some_and(|q| q.name.eq_ignore_ascii_case(&name)))
+        let outside = &queues(ctx).outside;
+        outside.iter().position(|q| q.as_ref().is_some_and(|q| q.name.eq_ignore_ascii_case(&name)))
     };
     let Some(slot) = found.or_else(|| outside().map(|k| OUTSIDE_SLOTS + k)) else {
         return Err(ctx.error(Err::RmqName, format!("no RAPID message queue is named `{name}`")));
@@ -136,10 +214,9 @@ fn find_slot(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// `RMQGetSlotName(Slot)`: the slot's name.
 fn get_slot_name(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let shared = &ctx.resources.tasking.shared;
     let name = match slot(ctx, &args[0])? {
-        Dest::Task(task) => format!("RMQ_{}", shared.tasks[task].name),
-        Dest::Outside(k) => shared.outside[k].as_ref().map(|q| q.name.clone()).unwrap_or_default(),
+        Dest::Task(task) => format!("RMQ_{}", ctx.resources.tasking().shared.tasks[task].name),
+        Dest::Outside(k) => queues(ctx).outside[k].as_ref().map(|q| q.name.clone()).unwrap_or_default(),
     };
     Ok(Some(Value::Str(name.into())))
 }
@@ -155,7 +232,7 @@ fn send_message(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// Puts a message into the queue of `dest`, as the controller checks it.
 fn send(ctx: &mut Ctx<'_>, dest: Dest, data: &Value, userdef: f64) -> Result<(), RapidError> {
-    let names = &ctx.resources.rmq.names;
+    let names = &ctx.resources.type_names;
     let (Some((datatype, dims)), Some(datum)) = (type_of(data, names), to_datum(data, names)) else {
         return Err(ctx.error(Err::RmqValue, "only value data can be sent in a message"));
     };
@@ -166,8 +243,7 @@ fn send(ctx: &mut Ctx<'_>, dest: Dest, data: &Value, userdef: f64) -> Result<(),
             return send_outside(ctx, k, RmqMessage { datatype, dims, data: datum, sender, userdef, dispatched: false })
         }
     };
-    let shared = &ctx.resources.tasking.shared;
-    let config = shared.tasks[task].rmq;
+    let config = ctx.resources.tasking().shared.tasks[task].rmq;
     if config.kind == RmqKind::None {
         return Err(ctx.error(Err::RmqInvalid, "the receiving task has no message queue"));
     }
@@ -176,21 +252,18 @@ fn send(ctx: &mut Ctx<'_>, dest: Dest, data: &Value, userdef: f64) -> Result<(),
         let message = format!("a {size}-byte message is larger than the queue's {} bytes", config.max_msg_size);
         return Err(ctx.error(Err::RmqMsgSize, message));
     }
-    if shared.queues.get(task).map_or(0, |q| q.len()) >= config.max_no_of_msg as usize {
+    if queues(ctx).len_of(task) >= config.max_no_of_msg as usize {
         return Err(ctx.error(Err::RmqFull, "the receiving queue is full"));
     }
     let message = RmqMessage { datatype, dims, data: datum, sender, userdef, dispatched: false };
-    let shared = &mut ctx.resources.tasking.shared;
-    if let Some(queue) = shared.queues.get_mut(task) {
-        queue.push_back(message);
-    }
-    shared.epoch += 1;
+    queues_mut(ctx).queue_mut(task).push_back(message);
+    ctx.resources.tasks.shared.epoch += 1;
     Ok(())
 }
 
 /// Puts a task's message into client queue `k`: its size limit is the client's.
 fn send_outside(ctx: &mut Ctx<'_>, k: usize, message: RmqMessage) -> Result<(), RapidError> {
-    let shared = &mut ctx.resources.tasking.shared;
+    let shared = queues_mut(ctx);
     let Some(queue) = shared.outside.get_mut(k).and_then(Option::as_mut) else {
         return Err(ctx.error(Err::RmqInvalid, "the client's queue has been closed"));
     };
@@ -203,8 +276,19 @@ fn send_outside(ctx: &mut Ctx<'_>, k: usize, message: RmqMessage) -> Result<(), 
         return Err(ctx.error(Err::RmqFull, "the receiving queue is full"));
     }
     queue.messages.push_back(message);
-    shared.epoch += 1;
+    ctx.resources.tasks.shared.epoch += 1;
     Ok(())
+}
+
+/// The controller's queues (outside any task's run).
+fn rmq_of(shared: &Shared) -> &SharedRmq {
+    static NONE: std::sync::LazyLock<SharedRmq> = std::sync::LazyLock::new(SharedRmq::default);
+    shared.lent.get::<SharedRmq>().unwrap_or(&NONE)
+}
+
+/// The controller's queues to change (put in at their default first).
+fn rmq_of_mut(shared: &mut Shared) -> &mut SharedRmq {
+    shared.lent.get_or_default::<SharedRmq>()
 }
 
 /// Who sent a message that came from outside the tasks (a client of the controller):
@@ -212,8 +296,8 @@ fn send_outside(ctx: &mut Ctx<'_>, k: usize, message: RmqMessage) -> Result<(), 
 /// it raises ERR_RMQ_INVALID.
 // uncertain: the manual does not say what the sender slot of a message from a PC
 // application holds.
-fn outside_sender(shared: &SharedTasking) -> usize {
-    shared.tasks.len()
+fn outside_sender(shared: &Shared) -> usize {
+    shared.tasking().tasks.len()
 }
 
 /// Why a message from outside the tasks was not queued.
@@ -238,7 +322,7 @@ pub enum OutsideRefusal {
 // aggregate that is no literal of the type is read as an array of it, and arrays of
 // two or three dimensions are refused.
 pub fn send_from_outside(
-    shared: &mut SharedTasking,
+    shared: &mut Shared,
     task: usize,
     message: OutsideMessage<'_>,
     names: &TypeNames,
@@ -264,7 +348,9 @@ pub fn send_from_outside(
     let (Some((datatype, dims)), Some(datum)) = (type_of(&value, names), to_datum(&value, names)) else {
         return Err(BadData(format!("`{data}` cannot be sent")));
     };
-    let Some(config) = shared.tasks.get(task).map(|t| t.rmq) else { return Err(Queue("no such task".to_owned())) };
+    let Some(config) = shared.tasking().tasks.get(task).map(|t| t.rmq) else {
+        return Err(Queue("no such task".to_owned()));
+    };
     if config.kind == RmqKind::None {
         return Err(Queue("the task has no message queue (its RmqType is None)".to_owned()));
     }
@@ -272,19 +358,17 @@ pub fn send_from_outside(
     if size > config.max_msg_size as usize {
         return Err(Queue(format!("a {size}-byte message is larger than the queue's {} bytes", config.max_msg_size)));
     }
-    if shared.queues.get(task).map_or(0, |q| q.len()) >= config.max_no_of_msg as usize {
+    if rmq_of(shared).len_of(task) >= config.max_no_of_msg as usize {
         return Err(Queue("the queue is full".to_owned()));
     }
     let sender = message
         .from
-        .and_then(|name| outside_queue(shared, name))
+        .and_then(|name| outside_queue(rmq_of(shared), name))
         .map_or_else(|| outside_sender(shared), |k| OUTSIDE_SLOTS + k);
     let userdef = message.userdef;
     let message = RmqMessage { datatype, dims, data: datum, sender, userdef, dispatched: false };
-    if let Some(queue) = shared.queues.get_mut(task) {
-        queue.push_back(message);
-    }
-    shared.epoch += 1;
+    rmq_of_mut(shared).queue_mut(task).push_back(message);
+    shared.tasks.epoch += 1;
     Ok(())
 }
 
@@ -309,7 +393,7 @@ fn array_literal(literal: &str, template: &Value) -> Option<Value> {
         return None;
     }
     let shape =
-        Value::Array(Box::new(rapid_vm::value::Array { dims: [n as u32, 0, 0], elems: vec![template.clone(); n] }));
+        Value::Array(Box::new(rapid_vm::ext::Array { dims: [n as u32, 0, 0], elems: vec![template.clone(); n] }));
     read_literal(literal, &shape)
 }
 
@@ -335,13 +419,14 @@ fn top_level_items(text: &str) -> Option<usize> {
 }
 
 /// The index of the open client queue named `name` (any letter case).
-fn outside_queue(shared: &SharedTasking, name: &str) -> Option<usize> {
+fn outside_queue(shared: &SharedRmq, name: &str) -> Option<usize> {
     shared.outside.iter().position(|q| q.as_ref().is_some_and(|q| q.name.eq_ignore_ascii_case(name)))
 }
 
 /// Opens client queue `name` (its messages at most `max_msg_size` bytes) for the tasks
 /// to send to; false when one of that name is open already.
-pub fn open_outside_queue(shared: &mut SharedTasking, name: &str, max_msg_size: usize) -> bool {
+pub fn open_outside_queue(shared: &mut Shared, name: &str, max_msg_size: usize) -> bool {
+    let shared = rmq_of_mut(shared);
     if outside_queue(shared, name).is_some() {
         return false;
     }
@@ -355,7 +440,8 @@ pub fn open_outside_queue(shared: &mut SharedTasking, name: &str, max_msg_size: 
 }
 
 /// Closes client queue `name`, its messages dropped; false when none is open.
-pub fn close_outside_queue(shared: &mut SharedTasking, name: &str) -> bool {
+pub fn close_outside_queue(shared: &mut Shared, name: &str) -> bool {
+    let shared = rmq_of_mut(shared);
     let Some(k) = outside_queue(shared, name) else { return false };
     shared.outside[k] = None;
     true
@@ -363,17 +449,18 @@ pub fn close_outside_queue(shared: &mut SharedTasking, name: &str) -> bool {
 
 /// Takes the oldest message the tasks sent to client queue `name`: `None` when the
 /// queue is empty or not open.
-pub fn take_outside_message(shared: &mut SharedTasking, name: &str) -> Option<RmqMessage> {
+pub fn take_outside_message(shared: &mut Shared, name: &str) -> Option<RmqMessage> {
+    let shared = rmq_of_mut(shared);
     let k = outside_queue(shared, name)?;
     shared.outside[k].as_mut()?.messages.pop_front()
 }
 
 /// The name of the queue a message's sender slot names: `RMQ_<task>`, a client's
 /// queue, or empty for a client without one.
-pub fn sender_name(shared: &SharedTasking, sender: usize) -> String {
+pub fn sender_name(shared: &Shared, sender: usize) -> String {
     match sender.checked_sub(OUTSIDE_SLOTS) {
-        Some(k) => shared.outside.get(k).and_then(Option::as_ref).map(|q| q.name.clone()).unwrap_or_default(),
-        None => shared.tasks.get(sender).map(|t| format!("RMQ_{}", t.name)).unwrap_or_default(),
+        Some(k) => rmq_of(shared).outside.get(k).and_then(Option::as_ref).map(|q| q.name.clone()).unwrap_or_default(),
+        None => shared.tasking().tasks.get(sender).map(|t| format!("RMQ_{}", t.name)).unwrap_or_default(),
     }
 }
 
@@ -409,8 +496,8 @@ fn held(ctx: &Ctx<'_>, arg: &Value) -> Result<RmqMessage, RapidError> {
 /// the one that interrupted); ERR_RMQ_NOMSG when there is none.
 fn get_message(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let me = me(ctx);
-    let synchronous = ctx.resources.tasking.shared.tasks[me].rmq.synchronous;
-    let queue = &mut ctx.resources.tasking.shared.queues[me];
+    let synchronous = ctx.resources.tasking().shared.tasks[me].rmq.synchronous;
+    let queue = queues_mut(ctx).queue_mut(me);
     let at = queue.iter().position(|m| synchronous || m.dispatched);
     let Some(message) = at.and_then(|i| queue.remove(i)) else {
         return Err(ctx.error(Err::RmqNoMsg, "the task's message queue is empty"));
@@ -423,7 +510,7 @@ fn get_message(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 fn get_msg_header(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let message = held(ctx, &args[0])?;
     if present(args.get(1)) {
-        let Some(&ty) = ctx.resources.rmq.names.by_name.get("rmqheader") else {
+        let Some(&ty) = ctx.resources.type_names.by_name.get("rmqheader") else {
             return Err(RapidError::fatal("the program has no rmqheader type"));
         };
         let [d1, d2, d3] = message.dims;
@@ -451,7 +538,7 @@ fn get_msg_header(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 fn get_msg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let message = held(ctx, &args[0])?;
     let target = ctx.value(&args[1])?;
-    let Some((datatype, dims)) = type_of(&target, &ctx.resources.rmq.names) else {
+    let Some((datatype, dims)) = type_of(&target, &ctx.resources.type_names) else {
         return Err(ctx.error(Err::RmqValue, "the data to receive into is not value data"));
     };
     if !datatype.eq_ignore_ascii_case(&message.datatype) {
@@ -461,7 +548,7 @@ fn get_msg_data(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if dims != message.dims {
         return Err(ctx.error(Err::RmqDim, "the message's array sizes differ from the data's"));
     }
-    let Some(value) = to_value(&message.data, &ctx.resources.rmq.names) else {
+    let Some(value) = to_value(&message.data, &ctx.resources.type_names) else {
         return Err(ctx.error(Err::RmqValue, format!("this task has no type {}", message.datatype)));
     };
     ctx.store(&args[1], value)?;
@@ -491,7 +578,7 @@ fn send_wait(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         send(ctx, dest, &data, userdef)?;
     }
     let answer = ctx.value(&args[4])?;
-    let Some(want) = type_of(&answer, &ctx.resources.rmq.names) else {
+    let Some(want) = type_of(&answer, &ctx.resources.type_names) else {
         return Err(ctx.error(Err::RmqValue, "ReceiveDataType is not value data"));
     };
     let timeout = ctx.opt_num(args.get(5))?.unwrap_or(DEFAULT_TIMEOUT);
@@ -503,7 +590,7 @@ fn send_wait(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 fn require_synchronous(ctx: &Ctx<'_>, what: &str) -> Result<(), RapidError> {
     let me = me(ctx);
-    if ctx.resources.tasking.shared.tasks[me].rmq.synchronous {
+    if ctx.resources.tasking().shared.tasks[me].rmq.synchronous {
         return Ok(());
     }
     // uncertain: the controller's error for this misuse is not public; execution stops.
@@ -532,7 +619,7 @@ fn wait_for(
         _ => ctx.time,
     };
     let me = me(ctx);
-    let queue = &mut ctx.resources.tasking.shared.queues[me];
+    let queue = queues_mut(ctx).queue_mut(me);
     let matches = |m: &RmqMessage| {
         want.as_ref().is_none_or(|(name, dims)| m.datatype.eq_ignore_ascii_case(name) && m.dims == *dims)
     };
@@ -555,7 +642,7 @@ fn wait_for(
 /// `RMQEmptyQueue`: drops every message of the task's queue.
 fn empty_queue(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
     let me = me(ctx);
-    ctx.resources.tasking.shared.queues[me].clear();
+    queues_mut(ctx).queue_mut(me).clear();
     Ok(None)
 }
 
@@ -563,7 +650,7 @@ fn empty_queue(ctx: &mut Ctx<'_>, _args: &[Value]) -> Res {
 /// sample's data type (interrupt mode).
 fn irmq_message(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let sample = ctx.value(&args[0])?;
-    let Some((datatype, dims)) = type_of(&sample, &ctx.resources.rmq.names) else {
+    let Some((datatype, dims)) = type_of(&sample, &ctx.resources.type_names) else {
         return Err(ctx.error(Err::RmqValue, "InterruptDataType is not value data"));
     };
     let n = interrupt_number(ctx, &args[1])?;

@@ -3,21 +3,19 @@
 //! TasksInSync.
 //!
 //! What the tasks of a controller share (the task list, the sync points) is a
-//! [`SharedTasking`] the controller hands to whichever task runs (see
-//! `Vm::exchange_shared`); a task alone has the one-task list of `Default`. Waits here
+//! [`SharedTasking`] the controller lends to whichever task runs (in `Shared::lent`,
+//! which `Vm::exchange_shared` swaps whole with the task's `Resources::lent`); a task
+//! alone has the one-task list of `Default`. Which task this is, the task names and the requests to the
+//! controller are the interpreter core's (`rapid_vm::ext::TaskPlace`). Waits here
 //! are re-checked (`StopKind::Repeat`): the controller wakes a waiting task whenever
 //! another task changes the shared state, so nothing depends on a polling period.
 
-use std::collections::VecDeque;
+use std::sync::Arc;
 
+use rapid_vm::ext::{
+    call_site, native, next_due, present, stands_still, Ctx, Err, Family, RapidError, Resources, StopKind, Value,
+};
 use rustc_hash::FxHashMap;
-
-use super::rmq::RmqMessage;
-
-use super::{native, present, Ctx, Family, StopKind};
-use crate::errnames::Err;
-use crate::error::RapidError;
-use crate::value::Value;
 
 type Res = Result<Option<Value>, RapidError>;
 
@@ -41,7 +39,7 @@ pub struct TaskInfo {
     /// Executing now (started, not stopped or ended): TaskIsExecuting.
     pub executing: bool,
     /// Its RAPID Message Queue (none by default).
-    pub rmq: crate::builtins::rmq::RmqConfig,
+    pub rmq: crate::rmq::RmqConfig,
     /// A task that is no motion task: the motion task whose mechanical unit group it
     /// uses, whose robot it reads (CJointT, CRobT).
     pub robot_of: Option<String>,
@@ -55,58 +53,12 @@ struct SyncPoint {
     arrived: Vec<String>,
 }
 
-/// A service a task asks of the controller: another task's data or robot. The task
-/// waits (re-checking) until the controller has put the reply in the shared state.
-#[derive(Debug, Clone)]
-pub enum Request {
-    /// GetDataVal with `\TaskName`/`\TaskRef`: module data `name` of task `task`.
-    ReadData { task: usize, name: String },
-    /// SetDataVal with `\TaskName`/`\TaskRef`: `value` (in the asking task's types).
-    WriteData { task: usize, name: String, value: crate::value::Value },
-    /// CJointT/CRobT with `\TaskName`/`\TaskRef`: where task `task`'s robot is.
-    Robot { task: usize },
-    /// StopMove, StartMove or StopMoveReset with `\AllMotionTasks`: the same
-    /// built-in (`name`) for the robots of every other motion task.
-    AllMotionTasks { name: &'static str },
-    /// Save with `\TaskName`/`\TaskRef`: task `task` saves its module `module`, to
-    /// `dest` (host path, path as the program wrote it) or to its own file.
-    SaveModule { task: usize, module: String, dest: Option<(std::path::PathBuf, String)> },
-}
-
-/// The controller's answer to a [`Request`].
-#[derive(Debug, Clone)]
-pub enum Reply {
-    /// The data's value, in the asking task's types.
-    Value(crate::value::Value),
-    /// Written.
-    Done,
-    /// No module data of that name; or it is a constant (for a write); or of
-    /// another type than the value written.
-    Missing,
-    Constant,
-    WrongType,
-    /// What an extension answers for another task (where that task's robot is): the
-    /// core hands it over without looking inside.
-    Extension(ExtensionReply),
-    /// The other task could not do it: the error to raise in the asking task.
-    Failed(Box<crate::error::RapidError>),
-}
-
-/// An extension's answer to a request another task made (an `Rc`, as the reply is
-/// cloned when it is read): only the extension that asked knows its type.
-#[derive(Clone)]
-pub struct ExtensionReply(pub std::rc::Rc<dyn std::any::Any>);
-
-impl std::fmt::Debug for ExtensionReply {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("ExtensionReply(..)")
-    }
-}
-
 /// A task in synchronized movement: its SyncMoveOn's sync point and task list (the
 /// robot's SyncMoveOn sets it; PP to Main ends it).
 #[derive(Debug, Clone, PartialEq)]
 pub struct SyncMode {
+    /// The task in synchronized movement (PP to Main takes it out of the shared list).
+    pub task: String,
     pub point: String,
     pub members: Vec<String>,
     /// SyncMoveSuspend: on the StorePath level the task moves on its own until
@@ -130,23 +82,13 @@ pub struct MoveMeet {
 pub struct SharedTasking {
     pub tasks: Vec<TaskInfo>,
     sync: FxHashMap<String, SyncPoint>,
-    /// Each task's RAPID Message Queue, by task index.
-    pub queues: Vec<VecDeque<RmqMessage>>,
-    /// The queues of the controller's clients the tasks may send to (RWS DIPC
-    /// queues), by slot; a closed one's place is empty until another opens.
-    pub outside: Vec<Option<super::rmq::OutsideQueue>>,
-    /// The event-log entries of every task, as the controller's one event log holds
-    /// them (IError in one task sees another's errors): (task index, entry).
-    pub events: Vec<(usize, crate::events::Event)>,
-    /// A request a task made of the controller, and the reply: (asking task, …).
-    pub request: Option<(usize, Request)>,
-    pub reply: Option<(usize, Reply)>,
-    /// Bumped on every change a waiting task could be waiting for.
+    /// Bumped on every change a waiting task could be waiting for (the controller
+    /// adds it to the core's `SharedTasks::epoch`).
     pub epoch: u64,
     /// The names of the tool, work object and payload each task activated, by task
     /// name in lower case (GetSysData \TaskName from another task); a task not listed
     /// uses tool0, wobj0 and load0 (`motion::sysdata`).
-    pub sysdata: FxHashMap<String, [Option<std::rc::Rc<str>>; 3]>,
+    pub sysdata: FxHashMap<String, [Option<Arc<str>>; 3]>,
     /// The tasks in synchronized movement (SyncMoveOn … SyncMoveOff), by name.
     pub in_sync: Vec<String>,
     /// The coordinated moves under way, by the sync point of their SyncMoveOn.
@@ -161,7 +103,7 @@ pub struct SharedTasking {
 impl Default for SharedTasking {
     /// A system of one task, T_ROB1, moving the robot.
     fn default() -> Self {
-        let rmq = crate::builtins::rmq::RmqConfig::default();
+        let rmq = crate::rmq::RmqConfig::default();
         let t_rob1 = TaskInfo {
             name: "T_ROB1".into(),
             motion: true,
@@ -179,15 +121,9 @@ impl Default for SharedTasking {
 impl SharedTasking {
     /// The system's tasks, in configuration order.
     pub fn new(tasks: Vec<TaskInfo>) -> SharedTasking {
-        let queues = tasks.iter().map(|_| VecDeque::new()).collect();
         SharedTasking {
             tasks,
             sync: FxHashMap::default(),
-            queues,
-            outside: Vec::new(),
-            events: Vec::new(),
-            request: None,
-            reply: None,
             epoch: 0,
             sysdata: FxHashMap::default(),
             in_sync: Vec::new(),
@@ -238,17 +174,9 @@ impl SharedTasking {
         robots
     }
 
-    fn task(&self, name: &str) -> Option<&TaskInfo> {
+    /// The task of this name (any letter case).
+    pub fn task(&self, name: &str) -> Option<&TaskInfo> {
         self.tasks.iter().find(|t| t.name.eq_ignore_ascii_case(name))
-    }
-
-    /// Adds entries task `task` logged to the controller-wide log.
-    pub fn log_events(&mut self, task: usize, entries: &[crate::events::Event]) {
-        if entries.is_empty() {
-            return;
-        }
-        self.events.extend(entries.iter().map(|e| (task, e.clone())));
-        self.epoch += 1;
     }
 
     /// Marks a task executing or not (the controller, as tasks start and end).
@@ -262,17 +190,13 @@ impl SharedTasking {
     }
 }
 
-/// The task's own side: who it is, its shared view, the sync wait under way.
+/// The task's own side (in its extension slot): its shared view, the sync wait under
+/// way. Who it is is the core's (`Resources::tasks`).
 #[derive(Debug, Clone, Default)]
 pub struct TaskingState {
-    /// The task's name; empty means T_ROB1 (a program run alone).
-    pub me: String,
-    pub shared: SharedTasking,
     /// The WaitSyncTask under way: (sync point, round it arrived in, started at,
     /// call depth, pc).
     waiting: Option<(String, u64, f64, usize, u32)>,
-    /// The event routine running now (EventType: EVENT_POWERON 1 … EVENT_STEP 7; 0 none).
-    pub event: u8,
     /// Synchronized movement (SyncMoveOn): its sync point and the tasks moving together.
     pub sync_move: Option<SyncMode>,
     /// The coordinated move this task waits at: the round of its meeting it joined.
@@ -285,50 +209,105 @@ impl TaskingState {
         self.waiting.as_ref().map(|w| w.2)
     }
 
-    /// The task's name (T_ROB1 when run alone).
-    pub fn name(&self) -> &str {
-        if self.me.is_empty() {
-            "T_ROB1"
-        } else {
-            &self.me
-        }
-    }
-
     /// Forgets a wait under way (PP to Main).
-    pub(crate) fn end_waits(&mut self) {
+    pub(crate) fn end_waits(&mut self, shared: &mut SharedTasking) {
         self.waiting = None;
         self.move_round = None;
         // PP to Main ends synchronized movement, as SyncMoveUndo does.
-        if self.sync_move.take().is_some() {
-            let me = self.name().to_string();
-            self.shared.in_sync.retain(|t| !t.eq_ignore_ascii_case(&me));
+        if let Some(mode) = self.sync_move.take() {
+            shared.in_sync.retain(|t| !t.eq_ignore_ascii_case(&mode.task));
         }
-    }
-
-    /// Its number: its place in the configuration, from 1.
-    fn number(&self) -> usize {
-        self.index() + 1
-    }
-
-    /// Its index in the task list.
-    pub fn index(&self) -> usize {
-        self.shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(self.name())).unwrap_or(0)
-    }
-
-    /// Messages in the task's queue no trap has been looked for yet (interrupt mode).
-    pub(crate) fn has_undispatched(&self) -> bool {
-        // Checked before every run of the task: the common case (no message anywhere)
-        // costs no search for the task's own index.
-        if self.shared.queues.iter().all(|q| q.is_empty()) {
-            return false;
-        }
-        let me = self.index();
-        let synchronous = self.shared.tasks.get(me).is_some_and(|t| t.rmq.synchronous);
-        !synchronous && self.shared.queues.get(me).is_some_and(|q| q.iter().any(|m| !m.dispatched))
     }
 }
 
-crate::builtins::signature::layout! {
+impl rapid_vm::ext::TaskState for TaskingState {
+    fn close_all_lent(&mut self, lent: &mut rapid_vm::ext::Extensions) {
+        self.end_waits(lent.get_or_default::<SharedTasking>());
+    }
+}
+
+impl rapid_vm::ext::TaskState for SharedTasking {}
+
+/// A task's multitasking state as it reads it: its own ([`TaskingState`], through
+/// `Deref`) and what the tasks share (`shared`, lent to the task while it runs).
+pub struct Tasking<'a> {
+    pub shared: &'a SharedTasking,
+    pub own: &'a TaskingState,
+}
+
+impl std::ops::Deref for Tasking<'_> {
+    type Target = TaskingState;
+    fn deref(&self) -> &TaskingState {
+        self.own
+    }
+}
+
+/// [`Tasking`] to change.
+pub struct TaskingMut<'a> {
+    pub shared: &'a mut SharedTasking,
+    pub own: &'a mut TaskingState,
+}
+
+impl std::ops::Deref for TaskingMut<'_> {
+    type Target = TaskingState;
+    fn deref(&self) -> &TaskingState {
+        self.own
+    }
+}
+
+impl std::ops::DerefMut for TaskingMut<'_> {
+    fn deref_mut(&mut self) -> &mut TaskingState {
+        self.own
+    }
+}
+
+/// A task without the tasks extension's state reads this (one task, T_ROB1).
+static ALONE: std::sync::LazyLock<(TaskingState, SharedTasking)> = std::sync::LazyLock::new(Default::default);
+
+/// The task's multitasking state: its own in its extension slot
+/// (`Resources::extensions`), the shared part in the state lent to it
+/// (`Resources::lent`, which the core swaps whole with the controller's).
+pub trait TaskingAccess {
+    /// The task's state (that of a task alone when it has none yet).
+    fn tasking(&self) -> Tasking<'_>;
+    /// The task's state to change (put in at its default first).
+    fn tasking_mut(&mut self) -> TaskingMut<'_>;
+}
+
+impl TaskingAccess for Resources {
+    #[inline]
+    fn tasking(&self) -> Tasking<'_> {
+        let own = self.extensions.get::<TaskingState>().unwrap_or(&ALONE.0);
+        Tasking { shared: self.lent.get::<SharedTasking>().unwrap_or(&ALONE.1), own }
+    }
+
+    #[inline]
+    fn tasking_mut(&mut self) -> TaskingMut<'_> {
+        let own = self.extensions.get_or_default::<TaskingState>();
+        TaskingMut { shared: self.lent.get_or_default::<SharedTasking>(), own }
+    }
+}
+
+/// The controller's shared multitasking state (in `Shared::lent`).
+pub trait SharedTaskingAccess {
+    /// The shared state (a system of one task when there is none yet).
+    fn tasking(&self) -> &SharedTasking;
+    /// The shared state to change (put in at its default first).
+    fn tasking_mut(&mut self) -> &mut SharedTasking;
+}
+
+impl SharedTaskingAccess for rapid_vm::ext::Shared {
+    #[inline]
+    fn tasking(&self) -> &SharedTasking {
+        self.lent.get::<SharedTasking>().unwrap_or(&ALONE.1)
+    }
+
+    fn tasking_mut(&mut self) -> &mut SharedTasking {
+        self.lent.get_or_default::<SharedTasking>()
+    }
+}
+
+rapid_vm::ext::layout! {
     static WAIT_SYNC_TASK: WaitSyncTaskArgs = "WaitSyncTask" {
         in_pos: "InPos", sync_id: "SyncID", task_list: "TaskList", time_out: "TimeOut",
     }
@@ -346,7 +325,7 @@ fn wait_sync_task(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     let point = sync_point(ctx, at.sync_id)?;
     let list = task_list(ctx, &args[at.task_list])?;
     let timeout = ctx.opt_num(args.get(at.time_out))?;
-    if present(args.get(at.in_pos)) && !super::stands_still(ctx)? {
+    if present(args.get(at.in_pos)) && !stands_still(ctx)? {
         return Ok(None);
     }
     meet(
@@ -361,7 +340,7 @@ fn wait_sync_task(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 
 /// The name of the syncident argument at `index` (its identity across tasks).
 pub fn sync_point(ctx: &Ctx<'_>, index: usize) -> Result<String, RapidError> {
-    match super::argname::original_name(ctx.chain, index) {
+    match ctx.arg_name(index) {
         Some(point) => Ok(point.to_ascii_lowercase()),
         None => Err(ctx.error(Err::ArgValue, "the sync point must be a syncident variable")),
     }
@@ -378,15 +357,15 @@ pub fn meet(
     timeout: Option<f64>,
     on_timeout: (Err, &str),
 ) -> Result<bool, RapidError> {
-    let me = ctx.resources.tasking.name().to_string();
+    let me = ctx.resources.tasks.name().to_string();
     for name in list {
-        if ctx.resources.tasking.shared.task(name).is_none() {
+        if ctx.resources.tasking().shared.task(name).is_none() {
             return Err(ctx.error(Err::TaskName, format!("the system has no task `{name}`")));
         }
     }
-    let here = (ctx.chain.len(), ctx.chain.last().map_or(0, |f| f.position().1));
+    let here = call_site(ctx);
     let now = ctx.time;
-    let tasking = &mut ctx.resources.tasking;
+    let mut tasking = ctx.resources.tasking_mut();
     let waiting = tasking.waiting.clone().filter(|w| w.0 == point && (w.3, w.4) == here);
     let (round, started) = match waiting {
         Some((_, round, started, _, _)) => (round, started),
@@ -399,7 +378,7 @@ pub fn meet(
             (sync.round, now)
         }
     };
-    complete_round_if_all_arrived(tasking, point, list);
+    complete_round_if_all_arrived(tasking.shared, point, list);
     if tasking.shared.sync.get(point).is_some_and(|s| s.round > round) {
         tasking.waiting = None;
         return Ok(true);
@@ -413,15 +392,14 @@ pub fn meet(
         return Err(ctx.error(on_timeout.0, on_timeout.1));
     }
     tasking.waiting = Some((point.to_string(), round, started, here.0, here.1));
-    let next = [deadline, super::interrupts::next_due(ctx)].into_iter().flatten().min_by(f64::total_cmp);
+    let next = [deadline, next_due(ctx)].into_iter().flatten().min_by(f64::total_cmp);
     ctx.wait = Some(next.map_or(IDLE_POLL, |t| (t - now).max(1e-6)));
     ctx.stop = StopKind::Repeat;
     Ok(false)
 }
 
 /// Ends the round of a sync point once every executing task of the list is there.
-fn complete_round_if_all_arrived(tasking: &mut TaskingState, point: &str, list: &[String]) {
-    let shared = &mut tasking.shared;
+fn complete_round_if_all_arrived(shared: &mut SharedTasking, point: &str, list: &[String]) {
     let Some(sync) = shared.sync.get(point) else { return };
     let all_there = list.iter().all(|name| {
         let executing = shared.tasks.iter().any(|t| t.name.eq_ignore_ascii_case(name) && t.executing);
@@ -460,7 +438,7 @@ fn test_and_set(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         return Ok(Some(Value::Bool(false)));
     }
     ctx.store(&args[0], Value::Bool(true))?;
-    ctx.resources.tasking.shared.epoch += 1;
+    ctx.resources.tasking_mut().shared.epoch += 1;
     Ok(Some(Value::Bool(true)))
 }
 
@@ -469,7 +447,7 @@ fn wait_test_and_set(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     if let Some(Value::Bool(true)) = test_and_set(ctx, args)? {
         return Ok(None);
     }
-    let next = super::interrupts::next_due(ctx);
+    let next = next_due(ctx);
     ctx.wait = Some(next.map_or(IDLE_POLL, |t| (t - ctx.time).max(1e-6)));
     ctx.stop = StopKind::Repeat;
     Ok(None)
@@ -481,9 +459,10 @@ fn wait_test_and_set(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
 // uncertain: a task that is no motion task is taken to be connected to the first
 // motion task of the system (the controller follows -UseMechanicalUnitGroup).
 fn get_task_name(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
-    let tasking = &ctx.resources.tasking;
+    let tasking = ctx.resources.tasking();
+    let place = &ctx.resources.tasks;
     if present(args.get(1)) {
-        let me = tasking.number();
+        let me = place.index() + 1;
         let motion = match tasking.shared.tasks.get(me - 1) {
             Some(task) if task.motion => Some(me),
             _ => tasking.shared.tasks.iter().position(|t| t.motion).map(|i| i + 1),
@@ -495,51 +474,16 @@ fn get_task_name(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         ctx.store(&args[1], Value::Num(number as f32))?;
         return Ok(Some(Value::Str(name.into())));
     }
-    let (name, number) = (tasking.name().to_string(), tasking.number());
+    let (name, number) = (place.name().to_string(), place.index() + 1);
     if present(args.first()) {
         ctx.store(&args[0], Value::Num(number as f32))?;
     }
     Ok(Some(Value::Str(name.into())))
 }
 
-/// The controller's reply to this task's request, or (first time) the request made:
-/// `None` means wait and look again (the instruction is re-run).
-pub fn ask(ctx: &mut Ctx<'_>, request: Request) -> Option<Reply> {
-    let me = ctx.resources.tasking.index();
-    let shared = &mut ctx.resources.tasking.shared;
-    if let Some((who, _)) = &shared.reply {
-        if *who == me {
-            return shared.reply.take().map(|(_, reply)| reply);
-        }
-    }
-    if shared.request.is_none() {
-        shared.request = Some((me, request));
-    }
-    // The controller serves the request after this instruction; a short wait that
-    // re-checks lets it (and gives way to a task holding the request slot).
-    ctx.wait = Some(1e-6);
-    ctx.stop = StopKind::Repeat;
-    None
-}
-
-/// The index of another task of the system a `taskid | string` pair names, or `None`
-/// for the task itself (or no such argument). ERR_TASKNAME for a name the system
-/// does not have.
-pub fn other_task(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<Option<usize>, RapidError> {
-    if !present(args.get(first)) && !present(args.get(first + 1)) {
-        return Ok(None);
-    }
-    let task = named_task_at(ctx, args, first)?;
-    let tasking = &ctx.resources.tasking;
-    if task.name.eq_ignore_ascii_case(tasking.name()) {
-        return Ok(None);
-    }
-    Ok(tasking.shared.tasks.iter().position(|t| t.name.eq_ignore_ascii_case(&task.name)))
-}
-
 /// This task's entry in the system's task list.
 pub fn my_task<'c>(ctx: &'c Ctx<'_>) -> Option<&'c TaskInfo> {
-    ctx.resources.tasking.shared.task(ctx.resources.tasking.name())
+    ctx.resources.tasking().shared.task(ctx.resources.tasks.name())
 }
 
 /// `TaskRunRob()`: the task controls a robot with a TCP (it is a motion task).
@@ -559,23 +503,13 @@ pub fn named_task(ctx: &Ctx<'_>, args: &[Value]) -> Result<TaskInfo, RapidError>
     named_task_at(ctx, args, 0)
 }
 
-/// [`named_task`] for the `taskid | string` pair at parameters `first`, `first + 1`.
+/// [`named_task`] for the `taskid | string` pair at parameters `first`, `first + 1`
+/// (the core finds the task by name: `rapid_vm::ext::task_named`).
 pub(crate) fn named_task_at(ctx: &Ctx<'_>, args: &[Value], first: usize) -> Result<TaskInfo, RapidError> {
-    let pair = args.get(first..).unwrap_or(&[]);
-    let text = pair.iter().take(2).find(|arg| matches!(ctx.value(arg), Ok(Value::Str(_))));
-    let name = if let Some(text) = text {
-        ctx.string(text)?
-    } else {
-        let data = super::argname::original_name(ctx.chain, first).unwrap_or_default();
-        let lower = data.to_ascii_lowercase();
-        lower.strip_suffix("id").map_or(data.to_string(), |stem| data[..stem.len()].to_string())
-    };
-    ctx.resources
-        .tasking
-        .shared
-        .task(&name)
-        .cloned()
-        .ok_or_else(|| ctx.error(Err::TaskName, format!("the system has no task `{name}`")))
+    let index = rapid_vm::ext::task_named(ctx, args, first)?;
+    let name = &ctx.resources.tasks.shared.names[index];
+    let task = ctx.resources.tasking().shared.task(name).cloned();
+    task.ok_or_else(|| ctx.error(Err::TaskName, format!("the system has no task `{name}`")))
 }
 
 /// `TaskIsActive(TaskRef | TaskName)`: the task is selected in the task selection
@@ -589,7 +523,7 @@ fn task_is_executing(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     Ok(Some(Value::Bool(named_task(ctx, args)?.executing)))
 }
 
-pub(super) static FAMILY: Family = Family {
+pub(crate) static FAMILY: Family = Family {
     file: file!(),
     builtins: &[
         native("WaitSyncTask", wait_sync_task),
@@ -608,9 +542,25 @@ mod tests {
     use super::*;
 
     fn task(name: &str, robot: bool) -> TaskInfo {
-        let rmq = crate::builtins::rmq::RmqConfig::default();
+        let rmq = crate::rmq::RmqConfig::default();
         let (motion, normal, active, executing, robot_of) = (true, true, true, true, None);
         TaskInfo { name: name.into(), motion, robot, normal, active, executing, rmq, robot_of }
+    }
+
+    /// PP to Main (`close_all`) ends synchronized movement as SyncMoveUndo does: the
+    /// task leaves the shared list of tasks in sync, which is in the state lent to it.
+    #[test]
+    fn closing_a_task_takes_it_out_of_synchronized_movement() {
+        use rapid_vm::ext::{Extensions, TaskState};
+        let mut lent = Extensions::default();
+        lent.get_or_default::<SharedTasking>().in_sync = vec!["T_ROB1".into(), "T_ROB2".into()];
+        let members = vec!["T_ROB1".to_string(), "T_ROB2".to_string()];
+        let mode = SyncMode { task: "T_ROB2".into(), point: "sync1".into(), members, suspended: false };
+        let mut own = TaskingState { sync_move: Some(mode), move_round: Some(3), ..TaskingState::default() };
+        own.close_all_lent(&mut lent);
+        assert_eq!(own.sync_move, None);
+        assert_eq!(own.move_round, None);
+        assert_eq!(lent.get::<SharedTasking>().map(|s| s.in_sync.clone()), Some(vec!["T_ROB1".to_string()]));
     }
 
     #[test]
