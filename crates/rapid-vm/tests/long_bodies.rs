@@ -67,7 +67,7 @@ fn a_short_body_runs_the_same() {
 /// compiles every `n := n + 1` of `main` alike. (The compiler no longer compiles a
 /// whole tree of its own to compare with: the stream is the only way code is made.)
 #[test]
-fn streamed_and_tree_compile_to_the_same_code() {
+fn each_like_statement_of_a_streamed_body_compiles_alike() {
     streamed_statements_agree(5);
 }
 
@@ -75,7 +75,7 @@ fn streamed_and_tree_compile_to_the_same_code() {
 /// checker resolved in one item is not taken for another's, so every increment still
 /// compiles to the same instructions.
 #[test]
-fn a_long_streamed_body_compiles_to_the_code_of_its_tree() {
+fn each_like_statement_of_a_long_batched_body_compiles_alike() {
     streamed_statements_agree(PIPELINE_THRESHOLD as usize / 14 + 1000);
 }
 
