@@ -13,18 +13,10 @@ use rapid_vm::ext::{present, Ctx, Err, RapidError, Value};
 
 type Res = Result<Option<Value>, RapidError>;
 
-/// Another task's robot as the controller reports it: its axes, active frames and
-/// external axes (`extjoint`, 9E9 where it has none).
+/// Another task's robot as the controller reports it ([`RobotReport`]), and whether
+/// that task moves a robot (a positioner's task moves its external axes only).
 struct OtherRobot {
-    joints: rapid_motion::Joints,
-    frames: FrameChain,
-    extax: [f64; 6],
-    /// `extax` as CRobT reads it (a 7-axis arm's eax_a: its arm angle).
-    robtarget_extax: [f64; 6],
-    /// Its flange in its base frame and its configuration, by its own kinematics.
-    flange: rapid_motion::Pose,
-    conf: rapid_motion::confdata::ConfData,
-    /// The task moves a robot (a positioner's task moves its external axes only).
+    report: RobotReport,
     tcp: bool,
 }
 
@@ -36,7 +28,9 @@ struct OtherRobot {
 struct RobotReport {
     joints: rapid_motion::Joints,
     frames: FrameChain,
+    /// Its external axes (`extjoint`, 9E9 where it has none).
     extax: [f64; 6],
+    /// `extax` as CRobT reads it (a 7-axis arm's eax_a: its arm angle).
     robtarget_extax: [f64; 6],
     flange: rapid_motion::Pose,
     conf: rapid_motion::confdata::ConfData,
@@ -68,19 +62,11 @@ fn robot_of(ctx: &mut Ctx<'_>, args: &[Value]) -> Result<Option<Option<OtherRobo
     let Some(task) = other_task(ctx, args, 0)?.or_else(|| linked_motion_task(ctx)) else { return Ok(None) };
     Ok(Some(match ask(ctx, Request::Robot { task }) {
         Some(Reply::Extension(reply)) => {
-            let Some(robot) = reply.0.downcast_ref::<RobotReport>().cloned() else {
+            let Some(report) = reply.0.downcast_ref::<RobotReport>().cloned() else {
                 return Err(RapidError::fatal("the task has no robot"));
             };
             let tcp = ctx.resources.tasking().shared.tasks.get(task).is_none_or(|t| t.robot);
-            Some(OtherRobot {
-                joints: robot.joints,
-                frames: robot.frames,
-                extax: robot.extax,
-                robtarget_extax: robot.robtarget_extax,
-                flange: robot.flange,
-                conf: robot.conf,
-                tcp,
-            })
+            Some(OtherRobot { report, tcp })
         }
         Some(_) => return Err(RapidError::fatal("the task has no robot")),
         None => None,
@@ -228,7 +214,7 @@ rapid_vm::ext::layout! {
 pub(crate) fn c_joint_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
     super::tracking::refresh(ctx);
     let (joints, extax, tcp) = match robot_of(ctx, args)? {
-        Some(Some(other)) => (other.joints, other.extax, other.tcp),
+        Some(Some(other)) => (other.report.joints, other.report.extax, other.tcp),
         Some(None) => return Ok(Some(data::jointtarget_value(ctx, &[0.0; 6])?)),
         None => {
             let now = ctx.time;
@@ -278,13 +264,13 @@ pub(crate) fn c_rob_t(ctx: &mut Ctx<'_>, args: &[Value]) -> Res {
         // The other task's active frames stand in for the arguments not given.
         Some(Some(other)) => {
             if !present(args.get(at.tool)) && !present(args.get(at.wobj)) {
-                chain = other.frames;
+                chain = other.report.frames;
             } else {
                 // The given tool and work object on the other robot, which stands where
                 // its base frame is.
-                chain.base = other.frames.base;
+                chain.base = other.report.frames.base;
             }
-            (other.flange, other.conf, other.robtarget_extax)
+            (other.report.flange, other.report.conf, other.report.robtarget_extax)
         }
         Some(None) => return Ok(Some(data::robtarget_value(ctx, &nalgebra::Isometry3::identity(), [0; 4])?)),
         None => {
