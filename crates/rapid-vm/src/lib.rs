@@ -267,9 +267,7 @@ fn checked(
             if !opaque.is_empty() {
                 return Err(LoadError::Unsupported(opaque));
             }
-            let outlines =
-                analysis.outlines.into_iter().enumerate().filter_map(|(idx, p)| p.map(|p| (idx, p))).collect();
-            Ok((prog, analysis.diagnostics, outlines, streamed))
+            Ok((prog, analysis.diagnostics, indexed(analysis.outlines), streamed))
         }
         None => Err(LoadError::Diagnostics(analysis.diagnostics)),
     }
@@ -277,6 +275,12 @@ fn checked(
 
 /// Each readable file's outline with the index of the file.
 type Outlines = Vec<(usize, rapid_syntax::Parse)>;
+
+/// The checker's outlines (one per file, `None` for an unreadable one) as
+/// [`Outlines`].
+fn indexed(outlines: Vec<Option<rapid_syntax::Parse>>) -> Outlines {
+    outlines.into_iter().enumerate().filter_map(|(idx, parse)| parse.map(|parse| (idx, parse))).collect()
+}
 
 fn module_sources<'a>(
     files: &'a [SourceInput],

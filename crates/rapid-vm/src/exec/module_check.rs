@@ -18,16 +18,7 @@ pub(super) struct Checked {
 
 impl Checked {
     pub(super) fn modules(&self) -> Vec<ModuleSource<'_>> {
-        self.parses
-            .iter()
-            .flat_map(|(file, parse)| {
-                parse.file.modules.iter().map(move |module| ModuleSource {
-                    file: *file,
-                    text: &self.files[*file].text,
-                    module,
-                })
-            })
-            .collect()
+        crate::module_sources(&self.files, &self.parses)
     }
 }
 
@@ -51,6 +42,6 @@ pub(super) fn check(
         None => (analyze_with(&files, options, None), compile::Streamed::default()),
     };
     let Some(prog) = analysis.program else { return Err(analysis.diagnostics) };
-    let parses = analysis.outlines.into_iter().enumerate().filter_map(|(idx, p)| p.map(|p| (idx, p))).collect();
+    let parses = crate::indexed(analysis.outlines);
     Ok(Checked { prog, diagnostics: analysis.diagnostics, files, parses, streamed })
 }
